@@ -1,0 +1,113 @@
+//! Errors and warnings as data, and their rendering.
+//!
+//! Every stage (parse, check, evaluate) reports a [`Diagnostic`]: a kind from
+//! the contract's list (`syntax name type frame domain arity`), a message, a
+//! primary span, secondary labels (a frame error labels both operands and
+//! the operator) and an optional `help:` line. Rendering to text (with
+//! carets) and JSON lives in [`render`].
+
+use crate::syntax::ast::Span;
+
+pub mod render;
+
+/// The error kinds of LANGUAGE.md §1, as they appear in JSON and in the
+/// `kind error:` header.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ErrorKind {
+    Syntax,
+    Name,
+    Type,
+    Frame,
+    Domain,
+    Arity,
+}
+
+impl ErrorKind {
+    /// The word used in `FILE:LINE:COL: kind error:` and in JSON.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            ErrorKind::Syntax => "syntax",
+            ErrorKind::Name => "name",
+            ErrorKind::Type => "type",
+            ErrorKind::Frame => "frame",
+            ErrorKind::Domain => "domain",
+            ErrorKind::Arity => "arity",
+        }
+    }
+}
+
+/// Whether a diagnostic stops the statement or is only reported.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Severity {
+    Error,
+    Warning,
+}
+
+/// A secondary label: a span with a short note under it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Label {
+    pub span: Span,
+    pub message: String,
+}
+
+/// One error or warning, pointing into the source.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Diagnostic {
+    pub kind: ErrorKind,
+    pub severity: Severity,
+    pub message: String,
+    /// Where the caret goes.
+    pub span: Span,
+    /// A note under the primary caret (may be empty).
+    pub primary_label: String,
+    pub labels: Vec<Label>,
+    pub help: Option<String>,
+}
+
+impl Diagnostic {
+    /// An error of `kind` at `span`.
+    pub fn error(kind: ErrorKind, span: Span, message: impl Into<String>) -> Diagnostic {
+        Diagnostic {
+            kind,
+            severity: Severity::Error,
+            message: message.into(),
+            span,
+            primary_label: String::new(),
+            labels: Vec::new(),
+            help: None,
+        }
+    }
+
+    /// A warning of `kind` at `span` (printed, does not stop the statement).
+    pub fn warning(kind: ErrorKind, span: Span, message: impl Into<String>) -> Diagnostic {
+        Diagnostic {
+            severity: Severity::Warning,
+            ..Diagnostic::error(kind, span, message)
+        }
+    }
+
+    /// Adds the note under the primary caret.
+    pub fn with_primary_label(mut self, text: impl Into<String>) -> Diagnostic {
+        self.primary_label = text.into();
+        self
+    }
+
+    /// Adds a secondary label.
+    pub fn with_label(mut self, span: Span, text: impl Into<String>) -> Diagnostic {
+        self.labels.push(Label {
+            span,
+            message: text.into(),
+        });
+        self
+    }
+
+    /// Adds the `help:` line.
+    pub fn with_help(mut self, text: impl Into<String>) -> Diagnostic {
+        self.help = Some(text.into());
+        self
+    }
+
+    pub fn is_error(&self) -> bool {
+        self.severity == Severity::Error
+    }
+}

@@ -1,0 +1,1 @@
+//! Rendering of diagnostics (text with carets, JSON).

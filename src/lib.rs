@@ -1,0 +1,19 @@
+//! chasles — a calculator language for the mathematics of rigid-body motion
+//! (Modern Robotics, Lynch & Park, chapters 2 and 3).
+//!
+//! The layers, each a module:
+//! - [`syntax`]: the pest grammar (`grammar/chasles.pest`) and the AST with spans;
+//! - [`check`]: types and frame tags, inferred without evaluating;
+//! - [`eval`]: values, the session environment and evaluation;
+//! - [`builtins`]: the one table of builtin functions;
+//! - [`lie`]: SO(3), SE(3), SO(2), SE(2) and their algebras — plain nalgebra,
+//!   no knowledge of the language, usable as a library;
+//! - [`mech`]: Grübler's formula and C-space topology (chapter 2);
+//! - [`diagnostics`], [`output`]: errors and values for people and for JSON;
+//! - [`repl`]: the library side of the interactive session.
+#![forbid(unsafe_code)]
+
+pub mod diagnostics;
+pub mod lie;
+pub mod mech;
+pub mod syntax;

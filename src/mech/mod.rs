@@ -1,0 +1,1 @@
+//! Mechanisms (chapter 2): joints, Grübler's formula, C-space topology.

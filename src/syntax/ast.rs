@@ -1,0 +1,170 @@
+//! The abstract syntax tree of a chasles program.
+//!
+//! Every node carries a [`Span`] (byte offsets into the source), so every
+//! later stage — the frame checker, the evaluator, the diagnostics — can point
+//! at the text the user typed. The tree is deliberately small: the book's
+//! notation (juxtaposition, `[w]`, `30 deg`) is resolved by the parser into
+//! ordinary products, brackets and calls.
+
+/// A half-open byte range `start..end` into the source text.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub struct Span {
+    pub start: usize,
+    pub end: usize,
+}
+
+impl Span {
+    pub fn new(start: usize, end: usize) -> Span {
+        Span { start, end }
+    }
+    /// The smallest span covering both.
+    pub fn join(self, other: Span) -> Span {
+        Span {
+            start: self.start.min(other.start),
+            end: self.end.max(other.end),
+        }
+    }
+}
+
+/// A name as written, e.g. `T_sb`, `theta_1`, `T_{world,cam}`, `ω_s`.
+/// Frame subscripts are read from the text by [`super::ident::name_frames`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct Ident {
+    pub name: String,
+    pub span: Span,
+}
+
+/// One statement of a script or one REPL entry.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Stmt {
+    pub kind: StmtKind,
+    /// The whole statement, without its terminator.
+    pub span: Span,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub enum StmtKind {
+    /// `expr` — evaluate and print.
+    Expr(Expr),
+    /// `name = expr` — bind; the name's frame subscript is checked against
+    /// the value's frames.
+    Assign { target: Ident, value: Expr },
+    /// `(w, theta) = axis_ang3(expc)` — destructure a tuple of any arity.
+    Destructure { targets: Vec<Ident>, value: Expr },
+    /// `given T_ab, T_bc : SE3` — symbols with a type and frames, no numbers.
+    /// `ty` is the type name as written (`scalar vec3 vec6 SO3 SE3 SO2 SE2
+    /// so3 se3 twist screw wrench`); the checker validates it.
+    Given { names: Vec<Ident>, ty: Ident },
+    /// `f(x, y) = expr` — a user function.
+    FnDef {
+        name: Ident,
+        params: Vec<Ident>,
+        body: Expr,
+    },
+    /// `derive T_ce` — search the known transforms for a chain from {c} to {e}.
+    Derive { target: Ident },
+}
+
+/// An expression node with its span.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Expr {
+    pub kind: ExprKind,
+    pub span: Span,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum UnOp {
+    /// `-x`
+    Neg,
+    /// `+x`
+    Pos,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum BinOp {
+    Add,
+    Sub,
+    /// `*`, and juxtaposition (`2 pi`, `[S] theta`) with `implicit: true`.
+    Mul,
+    Div,
+    /// `^`, right-associative; `T^-1` is the inverse.
+    Pow,
+}
+
+/// One subscript of an index expression: `M[i, :]`.
+#[derive(Debug, Clone, PartialEq)]
+pub enum IndexArg {
+    /// An expression giving a 1-based index.
+    Expr(Expr),
+    /// `:` — the whole row or column.
+    All(Span),
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub enum ExprKind {
+    /// A numeric literal, `pi`/`π` already resolved to 3.14159….
+    Number(f64),
+    /// `true` / `false`.
+    Bool(bool),
+    /// A name (variable, symbol, or `ans`).
+    Var(String),
+    /// `-x`, `+x`.
+    Unary { op: UnOp, operand: Box<Expr> },
+    /// `a + b`, `a * b`, `a b` (implicit), `a ^ b`.
+    Binary {
+        op: BinOp,
+        lhs: Box<Expr>,
+        rhs: Box<Expr>,
+        /// The operator token; for juxtaposition, the gap between operands.
+        op_span: Span,
+        /// True for juxtaposition (`2 pi`, `[S] theta`).
+        implicit: bool,
+    },
+    /// `x deg` or `x°`: degrees to radians.
+    Degrees(Box<Expr>),
+    /// `f(a, b)`.
+    Call { func: Ident, args: Vec<Expr> },
+    /// `x.T`, `T.R`, `T.p`, `V.w`, `V.v`, `F.m`, `F.f`.
+    Member { base: Box<Expr>, member: Ident },
+    /// `x[i]`, `M[i, j]`, `M[:, j]` — 1-based.
+    Index {
+        base: Box<Expr>,
+        args: Vec<IndexArg>,
+    },
+    /// `(a, b, c)` with two or more elements: a vector when all are scalars
+    /// (as the book writes them), a tuple otherwise. `(x)` is just `x`.
+    Paren(Vec<Expr>),
+    /// `[ ... ]`: rows of elements, rows split by `;` or newline.
+    /// One element → the book's bracket `[w]`, `[V]` (or a 1-vector);
+    /// one row of scalars → a column vector; otherwise MATLAB block
+    /// concatenation (`[R, p; 0, 0, 0, 1]`).
+    Brackets(Vec<Vec<Expr>>),
+    /// `mech < links 4; joints R R R R; planar >` (chapter 2).
+    Mech(MechSpec),
+}
+
+/// The body of a `mech < ... >` literal, as written; validated by
+/// [`crate::mech`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct MechSpec {
+    /// `links N`
+    pub links: Option<(i64, Span)>,
+    /// `joints 8R P RP` — each group as written.
+    pub joints: Vec<JointGroupSyntax>,
+    /// `legs K CHAIN`, e.g. `legs 6 UPS`.
+    pub legs: Option<(i64, String, Span)>,
+    /// `planar`, `spatial` or `spherical` as written.
+    pub space: Option<(String, Span)>,
+    /// Any other item, kept so the validator can name it in an error.
+    pub unknown: Vec<(String, Span)>,
+}
+
+/// One joint token: `R`, `8R`, `RP` (a compound joint), `6UPS`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct JointGroupSyntax {
+    /// The leading count (1 when absent).
+    pub count: i64,
+    /// The joint letters, e.g. `"RP"`.
+    pub letters: String,
+    pub span: Span,
+}
