@@ -1,0 +1,686 @@
+//! A mechanism of links and joints, its degrees of freedom by Grübler's
+//! formula (Proposition 2.1, equation (2.4)) and, for an open chain, the
+//! topology of its C-space (§2.3.1).
+
+use std::fmt;
+
+use super::joint::{Factor, Joint, JointType, Space};
+
+/// Largest count, link number or leg number accepted in a spec; anything
+/// bigger is a typo, not a mechanism.
+pub const MAX_COUNT: i64 = 1_000_000;
+
+/// Longest compound joint or leg chain accepted (in letters).
+pub const MAX_LETTERS: usize = 1_000;
+
+/// Which written item of a `mech < … >` spec an error is about, so the
+/// language layer can put the caret under it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum MechPart {
+    /// The `links N` item (or its absence).
+    Links,
+    /// The joint group at this index of the `joints` list (0-based).
+    Joint(usize),
+    /// The `legs K CHAIN` item.
+    Legs,
+    /// The space word `planar`, `spatial` or `spherical` (or its absence).
+    Space,
+    /// The spec as a whole.
+    Whole,
+}
+
+/// An error in a mechanism spec: the item it is about, a message, and an
+/// optional `help:` line.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct MechError {
+    /// Which written item is wrong.
+    pub part: MechPart,
+    /// What is wrong, in the book's terms.
+    pub message: String,
+    /// How to fix it, where that helps.
+    pub help: Option<String>,
+}
+
+impl MechError {
+    fn new(part: MechPart, message: impl Into<String>) -> MechError {
+        MechError {
+            part,
+            message: message.into(),
+            help: None,
+        }
+    }
+
+    fn help(mut self, help: impl Into<String>) -> MechError {
+        self.help = Some(help.into());
+        self
+    }
+}
+
+impl fmt::Display for MechError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.message)?;
+        if let Some(h) = &self.help {
+            write!(f, " (help: {h})")?;
+        }
+        Ok(())
+    }
+}
+
+impl std::error::Error for MechError {}
+
+/// A parallel mechanism written as `legs K CHAIN` (Examples 2.5 and 2.6,
+/// Exercises 6, 10, 11, 15): a fixed platform (ground) and a moving platform
+/// joined by `K` identical legs, each a serial chain of separate joints.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Legs {
+    /// `K`, the number of legs.
+    pub count: i64,
+    /// The joints of one leg, from the fixed platform to the moving one.
+    pub chain: Vec<JointType>,
+}
+
+impl Legs {
+    /// The chain's letters, e.g. `UPS`.
+    pub fn chain_text(&self) -> String {
+        self.chain.iter().map(|k| k.letter()).collect()
+    }
+}
+
+/// A mechanism: `N` links (ground counted as a link), `J` joints, each
+/// joint `i` providing `f_i` freedoms, moving in a space with `m` freedoms
+/// per rigid body (Proposition 2.1).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Mechanism {
+    space: Space,
+    /// The joint groups: as written for `joints`, one group per chain
+    /// letter (with count `K`) for `legs`.
+    groups: Vec<(i64, Joint)>,
+    legs: Option<Legs>,
+    n: i64,
+    j: i64,
+    sum_f: i64,
+    dof: i64,
+}
+
+fn too_big(what: &str, value: i64) -> String {
+    format!("{what} {value} is absurdly large (at most {MAX_COUNT})")
+}
+
+/// The letters of a joint group or leg chain, checked against Table 2.1
+/// and the space. `part` is where errors point; `what` names the item.
+fn parse_letters(
+    letters: &str,
+    space: Space,
+    part: MechPart,
+    what: &str,
+) -> Result<Vec<JointType>, MechError> {
+    let letters = letters.trim();
+    if letters.is_empty() {
+        return Err(MechError::new(part, format!("{what} has no joint letters"))
+            .help("write joints by their letters in Table 2.1: R P H C U S"));
+    }
+    if letters.chars().count() > MAX_LETTERS {
+        return Err(MechError::new(
+            part,
+            format!("{what} has more than {MAX_LETTERS} joint letters"),
+        ));
+    }
+    let mut kinds = Vec::new();
+    for c in letters.chars() {
+        let Some(kind) = JointType::from_letter(c) else {
+            return Err(MechError::new(
+                part,
+                format!(
+                    "unknown joint letter `{c}` in `{letters}`: the joints of Table 2.1 are R P H C U S"
+                ),
+            )
+            .help(
+                "R revolute, P prismatic, H screw (helical), C cylindrical, U universal, S spherical",
+            ));
+        };
+        if !kind.allowed_in(space) {
+            return Err(not_in_space(kind, space, part));
+        }
+        kinds.push(kind);
+    }
+    Ok(kinds)
+}
+
+fn not_in_space(kind: JointType, space: Space, part: MechPart) -> MechError {
+    let l = kind.letter();
+    let name = kind.name();
+    match space {
+        Space::Planar => MechError::new(
+            part,
+            format!(
+                "a {name} joint ({l}) does not exist in a planar mechanism: Table 2.1 lists only R and P between planar rigid bodies ({l}: N/A)"
+            ),
+        )
+        .help("planar joints are R and P; write `spatial` for H, C, U or S"),
+        Space::Spherical => MechError::new(
+            part,
+            format!(
+                "a {name} joint ({l}) does not belong in a spherical mechanism: every link only rotates about the common point, so its joints are revolute (R) with axes through that point"
+            ),
+        )
+        .help("write `spatial` for a mechanism with other joints"),
+        // Every joint of Table 2.1 exists between spatial bodies.
+        Space::Spatial => MechError::new(part, format!("{name} joint ({l})")),
+    }
+}
+
+/// Written count and letters, e.g. `8R`, `P`, `7RP`.
+fn group_text(count: i64, letters: &str) -> String {
+    if count == 1 {
+        letters.to_string()
+    } else {
+        format!("{count}{letters}")
+    }
+}
+
+/// An integer with a true minus sign, as in the book's typeset formulas.
+fn signed(v: i64) -> String {
+    if v < 0 {
+        format!("−{}", v.unsigned_abs())
+    } else {
+        v.to_string()
+    }
+}
+
+impl Mechanism {
+    /// Builds a mechanism from a `mech < … >` spec (LANGUAGE.md §9).
+    ///
+    /// - `space`: `Some("planar" | "spatial" | "spherical")`; required, since
+    ///   `m` changes the answer for every closed chain.
+    /// - `links`: `Some(N)` from `links N`, ground included (Proposition 2.1).
+    /// - `joints`: the groups as written, `(count, letters)`: `(8, "R")` is
+    ///   eight separate R joints, `(1, "RP")` one compound RP joint with
+    ///   `f = 2` (Examples 2.1(ii), 2.3(ii)), `(8, "RP")` eight RP joints.
+    /// - `legs`: `Some((K, "UPS"))` from `legs K CHAIN`: a parallel mechanism
+    ///   of `K` legs, each the serial chain of *separate* joints `U`, `P`,
+    ///   `S` between ground and a moving platform, so
+    ///   `N = 2 + K·(len − 1)` and `J = K·len` (Example 2.6: `N = 14`,
+    ///   `J = 18`). `legs` replaces `joints`; if `links` is also given it
+    ///   must equal that `N`.
+    ///
+    /// With `links N` and no joints at all, only `N = 2` is accepted: a
+    /// single free rigid body (§2.1), `dof = m`.
+    ///
+    /// Counts, `N` and `K` must lie in `1..=1_000_000`; all arithmetic is
+    /// done in `i128`, so no spec can overflow or panic.
+    pub fn from_spec(
+        space: Option<&str>,
+        links: Option<i64>,
+        joints: &[(i64, &str)],
+        legs: Option<(i64, &str)>,
+    ) -> Result<Mechanism, MechError> {
+        let space = match space {
+            None => {
+                return Err(MechError::new(
+                    MechPart::Space,
+                    "the mechanism's space is missing: say planar, spatial or spherical",
+                )
+                .help("m = 3 for planar and spherical mechanisms, 6 for spatial ones (Proposition 2.1)"));
+            }
+            Some(word) => Space::parse(word).ok_or_else(|| {
+                MechError::new(
+                    MechPart::Space,
+                    format!(
+                        "unknown space `{}`: say planar, spatial or spherical",
+                        word.trim()
+                    ),
+                )
+            })?,
+        };
+        let m = space.m();
+
+        if let Some(n) = links {
+            if n <= 0 {
+                return Err(MechError::new(
+                    MechPart::Links,
+                    format!("links {n}: a mechanism has at least one link (the ground)"),
+                )
+                .help("N counts every link, ground included (Proposition 2.1)"));
+            }
+            if n > MAX_COUNT {
+                return Err(MechError::new(MechPart::Links, too_big("links", n)));
+            }
+        }
+
+        let mut groups: Vec<(i64, Joint)> = Vec::new();
+        let legs_info = match legs {
+            Some((k, chain_text)) => {
+                if !joints.is_empty() {
+                    return Err(MechError::new(
+                        MechPart::Legs,
+                        "both `joints` and `legs` given: the legs already are the joints",
+                    )
+                    .help("write either `joints …` with `links N`, or `legs K CHAIN`"));
+                }
+                if k <= 0 {
+                    return Err(MechError::new(
+                        MechPart::Legs,
+                        format!("legs {k}: a parallel mechanism has at least one leg"),
+                    ));
+                }
+                if k > MAX_COUNT {
+                    return Err(MechError::new(MechPart::Legs, too_big("legs", k)));
+                }
+                let chain = parse_letters(chain_text, space, MechPart::Legs, "the leg chain")?;
+                Some(Legs { count: k, chain })
+            }
+            None => None,
+        };
+
+        for (i, &(count, letters)) in joints.iter().enumerate() {
+            let part = MechPart::Joint(i);
+            if count <= 0 {
+                return Err(MechError::new(
+                    part,
+                    format!(
+                        "joint count {count} in `{count}{}`: a count must be at least 1",
+                        letters.trim()
+                    ),
+                ));
+            }
+            if count > MAX_COUNT {
+                return Err(MechError::new(part, too_big("joint count", count)));
+            }
+            let kinds = parse_letters(letters, space, part, "a joint")?;
+            let joint = Joint { kinds };
+            if joint.freedoms() > m {
+                return Err(MechError::new(
+                    part,
+                    format!(
+                        "the compound joint {} would provide f = {} freedoms, more than a {space} rigid body has (m = {m})",
+                        joint.letters(),
+                        joint.freedoms()
+                    ),
+                )
+                .help("separate joints are written with spaces: `R P`, not `RP`"));
+            }
+            groups.push((count, joint));
+        }
+
+        // N, J and Σf in i128: no spec can overflow.
+        let (n, j, sum_f): (i128, i128, i128) = match &legs_info {
+            Some(l) => {
+                let k = i128::from(l.count);
+                let len = l.chain.len() as i128;
+                let n = 2 + k * (len - 1);
+                if let Some(written) = links
+                    && i128::from(written) != n
+                {
+                    return Err(MechError::new(
+                        MechPart::Links,
+                        format!(
+                            "links {written} disagrees with legs {} {}: that parallel mechanism has N = 2 + {}·({} − 1) = {n} links (fixed and moving platform, {} per leg)",
+                            l.count,
+                            l.chain_text(),
+                            l.count,
+                            len,
+                            len - 1
+                        ),
+                    )
+                    .help("leave out `links`: legs K CHAIN determines N"));
+                }
+                // One group per letter of the chain, K joints each.
+                for &kind in &l.chain {
+                    match groups.iter_mut().find(|(_, jt)| jt.kinds == [kind]) {
+                        Some((c, _)) => *c += l.count,
+                        None => groups.push((l.count, Joint::single(kind))),
+                    }
+                }
+                let f: i128 = l.chain.iter().map(|t| i128::from(t.freedoms())).sum();
+                (n, k * len, k * f)
+            }
+            None => {
+                let Some(n) = links else {
+                    if groups.is_empty() {
+                        return Err(MechError::new(
+                            MechPart::Whole,
+                            "no links and no joints: nothing to count",
+                        )
+                        .help(
+                            "write e.g. `links 4; joints 4R; planar`, or `legs 6 UPS; spatial`",
+                        ));
+                    }
+                    return Err(MechError::new(MechPart::Links, "the number of links is missing: write `links N`")
+                        .help("N counts every link, ground included; an open chain of J joints has N = J + 1"));
+                };
+                if groups.is_empty() && n != 2 {
+                    return Err(MechError::new(
+                        MechPart::Whole,
+                        format!("no joints: links {n} with nothing connecting them"),
+                    )
+                    .help("write the joints, e.g. `joints 4R`; a single free rigid body is `links 2` with no joints"));
+                }
+                let j: i128 = groups.iter().map(|(c, _)| i128::from(*c)).sum();
+                let f: i128 = groups
+                    .iter()
+                    .map(|(c, jt)| i128::from(*c) * i128::from(jt.freedoms()))
+                    .sum();
+                (i128::from(n), j, f)
+            }
+        };
+        let dof = i128::from(m) * (n - 1 - j) + sum_f;
+        let fit = |v: i128| {
+            i64::try_from(v)
+                .map_err(|_| MechError::new(MechPart::Whole, "the mechanism is too large to count"))
+        };
+
+        Ok(Mechanism {
+            space,
+            groups,
+            legs: legs_info,
+            n: fit(n)?,
+            j: fit(j)?,
+            sum_f: fit(sum_f)?,
+            dof: fit(dof)?,
+        })
+    }
+
+    /// The degrees of freedom by Grübler's formula (2.4),
+    /// `dof = m(N − 1 − J) + Σ f_i`; only a lower bound when the joint
+    /// constraints are dependent (see [`Mechanism::is_lower_bound`]).
+    pub fn dof(&self) -> i64 {
+        self.dof
+    }
+
+    /// `m`, the freedoms of one rigid body: 3 planar or spherical, 6 spatial.
+    pub fn m(&self) -> i64 {
+        self.space.m()
+    }
+
+    /// The space the mechanism moves in.
+    pub fn space(&self) -> Space {
+        self.space
+    }
+
+    /// `N`, the number of links, ground included (Proposition 2.1).
+    pub fn links(&self) -> i64 {
+        self.n
+    }
+
+    /// `J`, the number of joints (a compound joint such as RP counts once).
+    pub fn joint_count(&self) -> i64 {
+        self.j
+    }
+
+    /// `Σ f_i`, the freedoms provided by all the joints.
+    pub fn sum_f(&self) -> i64 {
+        self.sum_f
+    }
+
+    /// `Σ c_i = Σ (m − f_i) = mJ − Σ f_i`, the joint constraints of (2.4).
+    pub fn sum_c(&self) -> i64 {
+        self.m() * self.j - self.sum_f
+    }
+
+    /// The joint groups: as written for `joints`; for `legs K CHAIN` one
+    /// group per joint type of the chain with its total count.
+    pub fn joint_groups(&self) -> &[(i64, Joint)] {
+        &self.groups
+    }
+
+    /// The legs of a parallel mechanism written as `legs K CHAIN`.
+    pub fn legs(&self) -> Option<&Legs> {
+        self.legs.as_ref()
+    }
+
+    /// A closed-chain mechanism (§2.2.2): it has a closed loop, which for
+    /// connected links means `J > N − 1` (every `legs` mechanism with two or
+    /// more legs).
+    pub fn is_closed_chain(&self) -> bool {
+        self.j > self.n - 1
+    }
+
+    /// Whether the result is only a lower bound on the true dof: Grübler's
+    /// formula assumes independent joint constraints, which a closed chain
+    /// may violate (Proposition 2.1, Example 2.4).
+    pub fn is_lower_bound(&self) -> bool {
+        self.is_closed_chain()
+    }
+
+    /// Grübler's formula (2.4) with the numbers substituted, e.g.
+    /// `dof = 3(4 − 1 − 4) + 4·1 = 1`.
+    ///
+    /// Σ f_i is written the way the book writes it in Examples 2.3, 2.5 and
+    /// 2.6: the joints grouped by their freedoms `f`, ascending, each group
+    /// as `count·f` — `8R P` gives `9·1` (Example 2.3(i): "9(1)"),
+    /// `7R RP` gives `7·1 + 1·2`, `6U 6P 6S` gives `6·1 + 6·2 + 6·3`.
+    /// With no joints the sum is written `0`. Minus signs are `−`.
+    pub fn formula(&self) -> String {
+        let mut by_f: Vec<(i64, i128)> = Vec::new();
+        for (count, joint) in &self.groups {
+            let f = joint.freedoms();
+            match by_f.iter_mut().find(|(g, _)| *g == f) {
+                Some((_, c)) => *c += i128::from(*count),
+                None => by_f.push((f, i128::from(*count))),
+            }
+        }
+        by_f.sort_by_key(|&(f, _)| f);
+        let sum = if by_f.is_empty() {
+            "0".to_string()
+        } else {
+            by_f.iter()
+                .map(|(f, c)| format!("{c}·{f}"))
+                .collect::<Vec<_>>()
+                .join(" + ")
+        };
+        format!(
+            "dof = {}({} − 1 − {}) + {} = {}",
+            self.m(),
+            self.n,
+            self.j,
+            sum,
+            signed(self.dof)
+        )
+    }
+
+    /// The topology of the C-space where this can be read off the joints
+    /// (§2.3.1), else `None` (closed chains: their C-space is cut out by
+    /// loop-closure equations, §2.4).
+    ///
+    /// - An open chain, `J = N − 1` (a serial chain or tree from ground —
+    ///   links assumed connected): the product of the joints' own C-spaces,
+    ///   R → `S^1`, P and H → `R^1`, C → `S^1 × R^1`, U → `T^2`, S → `SO(3)`
+    ///   (the rotations, Chapter 3). Like factors are collected, in order of
+    ///   first appearance, as the book writes them: `n` circles are `T^n`
+    ///   (one is `S^1`), `k` lines `R^k`: RRRP → `T^3 × R^1`,
+    ///   PR → `R^1 × S^1`, 2R → `T^2`.
+    /// - A single free rigid body (`links 2`, no joints): planar
+    ///   `R^2 × S^1`; spatial `R^3 × SO(3)`; spherical `SO(3)`. The book's
+    ///   §2.3.1 writes the spatial one `R^3 × S^2 × S^1`, counting the three
+    ///   rotation coordinates of §2.1 as a point on `S^2` and an angle; that
+    ///   product has the right dimension but is not the space of rotations
+    ///   `SO(3)`, so the spherical joint and the free body are written with
+    ///   `SO(3)` alike (a note says so).
+    pub fn topology(&self) -> Option<String> {
+        if self.j == 0 && self.n == 2 {
+            return Some(
+                match self.space {
+                    Space::Planar => "R^2 × S^1",
+                    Space::Spatial => "R^3 × SO(3)",
+                    Space::Spherical => "SO(3)",
+                }
+                .to_string(),
+            );
+        }
+        if self.j == 0 || self.j != self.n - 1 {
+            return None;
+        }
+        // Count factors: each group contributes count × its factors.
+        let mut order: Vec<Factor> = Vec::new();
+        let mut totals: Vec<i128> = Vec::new();
+        let mut add = |f: Factor, n: i128| match order.iter().position(|&g| g == f) {
+            Some(i) => totals[i] += n,
+            None => {
+                order.push(f);
+                totals.push(n);
+            }
+        };
+        match &self.legs {
+            Some(l) => {
+                for kind in &l.chain {
+                    for &f in kind.factors() {
+                        add(f, i128::from(l.count));
+                    }
+                }
+            }
+            None => {
+                for (count, jt) in &self.groups {
+                    for kind in &jt.kinds {
+                        for &f in kind.factors() {
+                            add(f, i128::from(*count));
+                        }
+                    }
+                }
+            }
+        }
+        let parts: Vec<String> = order
+            .iter()
+            .zip(&totals)
+            .map(|(f, &n)| match (f, n) {
+                (Factor::Circle, 1) => "S^1".to_string(),
+                (Factor::Circle, n) => format!("T^{n}"),
+                (Factor::Line, n) => format!("R^{n}"),
+                (Factor::Rotations, 1) => "SO(3)".to_string(),
+                (Factor::Rotations, n) => format!("SO(3)^{n}"),
+            })
+            .collect();
+        Some(parts.join(" × "))
+    }
+
+    /// Remarks on the result, in the book's terms: a closed chain gives only
+    /// a lower bound (Proposition 2.1, Examples 2.4 and 2.5); `dof ≤ 0` is a
+    /// structure by the formula; idle spins of legs with two S joints
+    /// (Example 2.6); links not all connected; the free rigid body and the
+    /// `SO(3)` convention of [`Mechanism::topology`].
+    pub fn notes(&self) -> Vec<String> {
+        let mut notes = Vec::new();
+        if self.is_closed_chain() {
+            notes.push(
+                "closed chain, so this is a lower bound: constraints may be dependent (Grübler counts independent constraints; examples 2.4 and 2.5 show it undercounting)"
+                    .to_string(),
+            );
+        }
+        if self.dof == 0 {
+            notes.push(
+                "by the formula a structure (dof ≤ 0): it cannot move unless its constraints are dependent, as for the parallelogram linkage of example 2.4, which moves with one dof"
+                    .to_string(),
+            );
+        } else if self.dof < 0 {
+            notes.push(format!(
+                "by the formula a structure (dof ≤ 0), overconstrained by {}: special geometry can still let it move, as the Delta robot of example 2.5 (−9 counted naively, 3 in fact)",
+                self.dof.unsigned_abs()
+            ));
+        }
+        if let Some(l) = &self.legs {
+            let s_joints = l.chain.iter().filter(|&&k| k == JointType::S).count();
+            if s_joints >= 2 && l.count >= 1 {
+                let spins = if l.count == 1 {
+                    "1 of the dof is this idle spin".to_string()
+                } else {
+                    format!("{} of the dof are such idle spins", l.count)
+                };
+                notes.push(format!(
+                    "each {} leg has two S joints: the links between them can spin about the line through the two ball centres without moving the platform (example 2.6, U replaced by S); {spins}",
+                    l.chain_text()
+                ));
+            }
+        }
+        if self.j > 0 && self.j < self.n - 1 {
+            notes.push(format!(
+                "J = {} < N − 1 = {}: the joints cannot connect all the links, so some move as free bodies",
+                self.j,
+                self.n - 1
+            ));
+        }
+        if self.j == 0 {
+            notes.push(format!(
+                "no joints: a single free {} rigid body, dof = m = {} (§2.1)",
+                self.space,
+                self.m()
+            ));
+        }
+        if let Some(t) = self.topology()
+            && t.contains("SO(3)")
+        {
+            notes.push(
+                "SO(3) is the space of rotations (Chapter 3); the book's §2.3.1 writes it S^2 × S^1, which counts its three coordinates but is not the same space"
+                    .to_string(),
+            );
+        }
+        notes
+    }
+
+    /// The joints as written, e.g. `8R P`, `7R RP`, `4R`; for
+    /// `legs K CHAIN` the joints that makes, grouped by type in chain order
+    /// (`legs 6 UPS` → `6U 6P 6S`, `legs 3 UPU` → `6U 3P`).
+    pub fn joints_text(&self) -> String {
+        self.groups
+            .iter()
+            .map(|(c, jt)| group_text(*c, &jt.letters()))
+            .collect::<Vec<_>>()
+            .join(" ")
+    }
+
+    /// The mechanism as a JSON object (LANGUAGE.md §1:
+    /// `{"dof":1,"m":3,"links":4,"joints":4,...}`), adding `space`, `sum_f`,
+    /// `joints_text`, `legs`, `formula`, `topology`, `closed_chain`,
+    /// `lower_bound` and `notes`.
+    pub fn to_json(&self) -> serde_json::Value {
+        serde_json::json!({
+            "dof": self.dof,
+            "m": self.m(),
+            "links": self.n,
+            "joints": self.j,
+            "space": self.space.name(),
+            "sum_f": self.sum_f,
+            "joints_text": self.joints_text(),
+            "legs": self.legs.as_ref().map(|l| serde_json::json!({
+                "count": l.count,
+                "chain": l.chain_text(),
+            })),
+            "formula": self.formula(),
+            "topology": self.topology(),
+            "closed_chain": self.is_closed_chain(),
+            "lower_bound": self.is_lower_bound(),
+            "notes": self.notes(),
+        })
+    }
+}
+
+impl fmt::Display for Mechanism {
+    /// Several lines: the space and `m`, `N`, `J` with the joints, `Σf`,
+    /// the substituted formula, the C-space topology where known, notes.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        writeln!(f, "{} mechanism, m = {}", self.space, self.m())?;
+        writeln!(f, "  N = {} links (ground included)", self.n)?;
+        match &self.legs {
+            Some(l) => writeln!(
+                f,
+                "  J = {} joints: {} legs {} ({})",
+                self.j,
+                l.count,
+                l.chain_text(),
+                self.joints_text()
+            )?,
+            None if self.j == 0 => writeln!(f, "  J = 0 joints")?,
+            None => writeln!(f, "  J = {} joints: {}", self.j, self.joints_text())?,
+        }
+        writeln!(f, "  Σf = {}", self.sum_f)?;
+        write!(f, "  {}", self.formula())?;
+        if self.is_lower_bound() {
+            write!(f, " (lower bound)")?;
+        }
+        if let Some(t) = self.topology() {
+            write!(f, "\n  C-space: {t}")?;
+        }
+        for note in self.notes() {
+            write!(f, "\n  note: {note}")?;
+        }
+        Ok(())
+    }
+}
