@@ -3,17 +3,25 @@
 //!
 //! The layers, each a module:
 //! - [`syntax`]: the pest grammar (`grammar/chasles.pest`) and the AST with spans;
-//! - [`check`]: types and frame tags, inferred without evaluating;
+//! - [`check`]: kinds and frame tags, inferred without evaluating;
 //! - [`eval`]: values, the session environment and evaluation;
 //! - [`builtins`]: the one table of builtin functions;
 //! - [`lie`]: SO(3), SE(3), SO(2), SE(2) and their algebras — plain nalgebra,
 //!   no knowledge of the language, usable as a library;
 //! - [`mech`]: Grübler's formula and C-space topology (chapter 2);
 //! - [`diagnostics`], [`output`]: errors and values for people and for JSON;
-//! - [`repl`]: the library side of the interactive session.
+//! - [`session`]: the pipeline parse → check → evaluate over a source text;
+//! - [`cli`], [`repl`]: the front ends.
 #![forbid(unsafe_code)]
 
+pub mod builtins;
+pub mod check;
+pub mod cli;
 pub mod diagnostics;
+pub mod eval;
 pub mod lie;
 pub mod mech;
+pub mod output;
+pub mod repl;
+pub mod session;
 pub mod syntax;

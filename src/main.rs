@@ -1,3 +1,15 @@
+//! The `chasles` binary: the command line of [`chasles::cli`], run on a
+//! thread with a generous stack.
+
 fn main() {
-    println!("chasles");
+    let args: Vec<String> = std::env::args().collect();
+    let worker = std::thread::Builder::new()
+        .name("chasles".into())
+        .stack_size(256 * 1024 * 1024)
+        .spawn(move || chasles::cli::main_with_args(args));
+    let code = match worker {
+        Ok(handle) => handle.join().unwrap_or(101),
+        Err(_) => chasles::cli::main_with_args(std::env::args().collect()),
+    };
+    std::process::exit(code);
 }

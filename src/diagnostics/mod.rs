@@ -9,6 +9,7 @@
 use crate::syntax::ast::Span;
 
 pub mod render;
+pub mod suggest;
 
 /// The error kinds of LANGUAGE.md §1, as they appear in JSON and in the
 /// `kind error:` header.

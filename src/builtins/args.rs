@@ -1,0 +1,257 @@
+//! Arguments of a builtin call at run time: typed accessors that read a
+//! value as a 3-vector, a rotation, a transform…, with errors pointing at
+//! the argument and warnings for projected near-group matrices.
+
+use nalgebra::{DMatrix, DVector};
+
+use crate::check::ty::Kind;
+use crate::diagnostics::{Diagnostic, ErrorKind};
+use crate::eval::convert::{Group, Membership, membership};
+use crate::eval::value::Value;
+use crate::lie::{Mat2, Mat3, Mat4, Vec3, Vec4, Vec6, so3};
+use crate::mech::Mechanism;
+use crate::syntax::ast::Span;
+
+/// A static argument error: which argument (None: the whole call), the
+/// error kind and the message. The interpreter adds the span and signature.
+#[derive(Debug, Clone)]
+pub struct ArgError {
+    pub arg: Option<usize>,
+    pub kind: ErrorKind,
+    pub message: String,
+}
+
+impl ArgError {
+    /// A type error about argument `i`.
+    pub fn type_of(i: usize, message: impl Into<String>) -> ArgError {
+        ArgError {
+            arg: Some(i),
+            kind: ErrorKind::Type,
+            message: message.into(),
+        }
+    }
+}
+
+/// The evaluated arguments of one call.
+pub struct Args<'a> {
+    pub name: &'static str,
+    pub signature: &'static str,
+    pub vals: Vec<Value>,
+    pub spans: Vec<Span>,
+    pub call_span: Span,
+    pub warnings: &'a mut Vec<Diagnostic>,
+}
+
+impl Args<'_> {
+    pub fn len(&self) -> usize {
+        self.vals.len()
+    }
+    pub fn is_empty(&self) -> bool {
+        self.vals.is_empty()
+    }
+
+    fn span(&self, i: usize) -> Span {
+        self.spans.get(i).copied().unwrap_or(self.call_span)
+    }
+
+    /// An error of `kind` pointing at argument `i`.
+    pub fn error(&self, i: usize, kind: ErrorKind, message: impl Into<String>) -> Diagnostic {
+        Diagnostic::error(kind, self.span(i), message)
+            .with_help(format!("signature: {}", self.signature))
+    }
+
+    /// A domain error about the whole call.
+    pub fn domain(&self, message: impl Into<String>) -> Diagnostic {
+        Diagnostic::error(ErrorKind::Domain, self.call_span, message)
+    }
+
+    fn wrong(&self, i: usize, want: &str) -> Diagnostic {
+        let found = self.vals.get(i).map_or(Kind::Unknown, Value::kind);
+        self.error(
+            i,
+            ErrorKind::Type,
+            format!(
+                "argument {} of {} must be a {want}, not a {found}",
+                i + 1,
+                self.name
+            ),
+        )
+    }
+
+    /// The value of argument `i`.
+    pub fn value(&self, i: usize) -> &Value {
+        &self.vals[i]
+    }
+
+    /// Argument `i` as a number.
+    pub fn scalar(&self, i: usize) -> Result<f64, Diagnostic> {
+        self.vals[i].as_scalar().ok_or_else(|| self.wrong(i, "scalar"))
+    }
+
+    /// Argument `i` as a whole number in `lo..=hi`.
+    pub fn int(&self, i: usize, lo: i64, hi: i64) -> Result<i64, Diagnostic> {
+        let x = self.scalar(i)?;
+        if x.fract() != 0.0 || !x.is_finite() || x < lo as f64 || x > hi as f64 {
+            return Err(self.error(
+                i,
+                ErrorKind::Domain,
+                format!("expected a whole number from {lo} to {hi}, got {x}"),
+            ));
+        }
+        Ok(x as i64)
+    }
+
+    /// Argument `i` as a matrix of any shape.
+    pub fn mat(&self, i: usize) -> Result<&DMatrix<f64>, Diagnostic> {
+        self.vals[i].as_matrix().ok_or_else(|| self.wrong(i, "matrix"))
+    }
+
+    /// Argument `i` as a column vector of any length.
+    pub fn vec(&self, i: usize) -> Result<DVector<f64>, Diagnostic> {
+        let m = self.mat(i)?;
+        if m.ncols() != 1 {
+            return Err(self.wrong(i, "vector"));
+        }
+        Ok(m.column(0).into_owned())
+    }
+
+    fn vec_n(&self, i: usize, n: usize) -> Result<DVector<f64>, Diagnostic> {
+        let v = self.vec(i).map_err(|_| self.wrong(i, &format!("{n}-vector")))?;
+        if v.len() != n {
+            return Err(self.wrong(i, &format!("{n}-vector")));
+        }
+        Ok(v)
+    }
+
+    pub fn vec3(&self, i: usize) -> Result<Vec3, Diagnostic> {
+        Ok(Vec3::from_iterator(self.vec_n(i, 3)?.iter().copied()))
+    }
+    pub fn vec4(&self, i: usize) -> Result<Vec4, Diagnostic> {
+        Ok(Vec4::from_iterator(self.vec_n(i, 4)?.iter().copied()))
+    }
+    pub fn vec6(&self, i: usize) -> Result<Vec6, Diagnostic> {
+        Ok(Vec6::from_iterator(self.vec_n(i, 6)?.iter().copied()))
+    }
+
+    /// Argument `i` read as an element of `group`: projected with a warning
+    /// when close, a domain error with the distance when not.
+    pub fn group(&mut self, i: usize, group: Group) -> Result<DMatrix<f64>, Diagnostic> {
+        let n = group.size();
+        let m = self.mat(i).map_err(|_| self.wrong(i, group.name()))?;
+        if m.nrows() != n || m.ncols() != n {
+            return Err(self.wrong(i, group.name()));
+        }
+        if self.vals[i].kind() == group.kind() {
+            return Ok(m.clone());
+        }
+        let span = self.span(i);
+        read_group(m, group, span, self.warnings)
+    }
+
+    pub fn so3(&mut self, i: usize) -> Result<Mat3, Diagnostic> {
+        Ok(Mat3::from_iterator(self.group(i, Group::SO3)?.iter().copied()))
+    }
+    pub fn se3(&mut self, i: usize) -> Result<Mat4, Diagnostic> {
+        Ok(Mat4::from_iterator(self.group(i, Group::SE3)?.iter().copied()))
+    }
+    pub fn so2(&mut self, i: usize) -> Result<Mat2, Diagnostic> {
+        Ok(Mat2::from_iterator(self.group(i, Group::SO2)?.iter().copied()))
+    }
+    pub fn se2(&mut self, i: usize) -> Result<Mat3, Diagnostic> {
+        Ok(Mat3::from_iterator(self.group(i, Group::SE2)?.iter().copied()))
+    }
+
+    /// Exponential coordinates ω̂θ: a 3-vector, or an so(3) matrix (vee'd).
+    pub fn expc3(&self, i: usize) -> Result<Vec3, Diagnostic> {
+        let m = self.mat(i)?;
+        match m.shape() {
+            (3, 1) => self.vec3(i),
+            (3, 3) => {
+                let m3 = Mat3::from_iterator(m.iter().copied());
+                self.check_skew(i, (m3 + m3.transpose()).abs().max(), m3.abs().max())?;
+                Ok(so3::vee(&m3))
+            }
+            _ => Err(self.wrong(i, "3-vector or so(3) matrix")),
+        }
+    }
+
+    /// Exponential coordinates Sθ: a 6-vector, or an se(3) matrix (vee'd).
+    pub fn expc6(&self, i: usize) -> Result<Vec6, Diagnostic> {
+        let m = self.mat(i)?;
+        match m.shape() {
+            (6, 1) => self.vec6(i),
+            (4, 4) => {
+                let m4 = Mat4::from_iterator(m.iter().copied());
+                let w = m4.fixed_view::<3, 3>(0, 0).into_owned();
+                let asym = (w + w.transpose()).abs().max().max(m4.row(3).abs().max());
+                self.check_skew(i, asym, m4.abs().max())?;
+                Ok(crate::lie::se3::vee(&m4))
+            }
+            _ => Err(self.wrong(i, "6-vector or se(3) matrix")),
+        }
+    }
+
+    fn check_skew(&self, i: usize, asym: f64, scale: f64) -> Result<(), Diagnostic> {
+        if asym > 1e-9 * scale.max(1.0) {
+            return Err(self.error(
+                i,
+                ErrorKind::Domain,
+                format!("not in the Lie algebra: the symmetric part is {asym:.3e} (it must be 0)"),
+            ));
+        }
+        Ok(())
+    }
+
+    /// Argument `i` as a mechanism.
+    pub fn mech(&self, i: usize) -> Result<&Mechanism, Diagnostic> {
+        match &self.vals[i] {
+            Value::Mech(m) => Ok(m),
+            _ => Err(self.wrong(i, "mechanism")),
+        }
+    }
+}
+
+/// Reads `m` (of the right shape) as an element of `group` per LANGUAGE.md §5.
+pub fn read_group(
+    m: &DMatrix<f64>,
+    group: Group,
+    span: Span,
+    warnings: &mut Vec<Diagnostic>,
+) -> Result<DMatrix<f64>, Diagnostic> {
+    match membership(m, group) {
+        Membership::Exact(x) => Ok(x),
+        Membership::Projected(p, d) => {
+            warnings.push(
+                Diagnostic::warning(
+                    ErrorKind::Domain,
+                    span,
+                    format!(
+                        "not exactly in {}: distance {d:.2e}; projected to the nearest element",
+                        group.name()
+                    ),
+                )
+                .with_help("book values are rounded; ProjectToSO3/ProjectToSE3 (§3.6) is applied"),
+            );
+            Ok(p)
+        }
+        Membership::Outside { distance, det } => {
+            let why = if det.is_finite() && det <= 0.0 {
+                format!("its determinant is {} (must be +1)", crate::output::number::fmt_num(det, 6))
+            } else if distance.is_finite() {
+                format!("distance from {} is {}", group.name(), crate::output::number::fmt_num(distance, 6))
+            } else {
+                "it has entries that are not finite".to_string()
+            };
+            Err(Diagnostic::error(
+                ErrorKind::Domain,
+                span,
+                format!("not {}: {why}", group.noun()),
+            )
+            .with_help(format!(
+                "{} needs MᵀM = I and det = +1 (within 1e-2 it is projected); see DistanceTo{}",
+                group.name(),
+                group.name().replace(['(', ')'], "")
+            )))
+        }
+    }
+}

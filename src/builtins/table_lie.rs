@@ -1,0 +1,577 @@
+//! Builtins of section 3.6 (the book's software) and the constructors of
+//! LANGUAGE.md §8: rotations, transforms, twists, screws, wrenches.
+
+use super::{Area, ArgError, Args, Builtin, FrameRule, Param, Typing};
+use crate::check::ty::{Frames, Kind, Ty};
+use crate::diagnostics::{Diagnostic, ErrorKind};
+use crate::eval::value::Value;
+use crate::lie::{Vec3, se3, so3};
+
+fn v3() -> Kind {
+    Kind::Vector(Some(3))
+}
+fn v6() -> Kind {
+    Kind::Vector(Some(6))
+}
+fn so3k() -> Kind {
+    Kind::SO3
+}
+fn se3k() -> Kind {
+    Kind::SE3
+}
+fn twist() -> Kind {
+    Kind::Twist
+}
+fn screw() -> Kind {
+    Kind::Screw
+}
+fn wrench() -> Kind {
+    Kind::Wrench
+}
+
+fn rot_of_axis_tuple() -> Kind {
+    Kind::Tuple(vec![v3(), Kind::Scalar])
+}
+
+/// (q, ŝ, h) of a screw: frames (Same, Same, none).
+fn screw_params_rule(args: &[Ty]) -> Result<Ty, ArgError> {
+    if !Param::Vec(6).accepts(&args[0].kind) && !Param::Expc6.accepts(&args[0].kind) {
+        return Err(ArgError::type_of(
+            0,
+            format!("screw_params takes a screw axis or twist, not a {}", args[0].kind),
+        ));
+    }
+    Ok(Ty::new(
+        Kind::Tuple(vec![v3(), v3(), Kind::Scalar]),
+        args[0].frames.clone(),
+    ))
+}
+
+/// `Rot(axis, θ)`: the axis is a 3-vector (or `x`, `y`, `z`, resolved by
+/// the interpreter before the call).
+fn eval_rot(a: &mut Args) -> Result<Value, Diagnostic> {
+    let axis = a.vec3(0)?;
+    if axis.norm() == 0.0 || !axis.norm().is_finite() {
+        return Err(a.error(0, ErrorKind::Domain, "the rotation axis is the zero vector"));
+    }
+    Ok(Value::num(Kind::SO3, &so3::rot(&axis, a.scalar(1)?)))
+}
+
+fn displacement_rule(args: &[Ty]) -> Result<Ty, ArgError> {
+    for (i, t) in args.iter().enumerate() {
+        if !Param::Trans.accepts(&t.kind) {
+            return Err(ArgError::type_of(
+                i,
+                format!("displacement takes two transforms, not a {}", t.kind),
+            ));
+        }
+    }
+    let frames = match (args[0].frames.outer(), args[1].frames.outer()) {
+        (Some(a), Some(b)) if a != b => {
+            return Err(ArgError {
+                arg: Some(1),
+                kind: ErrorKind::Frame,
+                message: format!(
+                    "both transforms must start in the same frame: {{{a}}} and {{{b}}}"
+                ),
+            });
+        }
+        (Some(a), _) | (None, Some(a)) => Frames::Disp(a.clone()),
+        _ => Frames::None,
+    };
+    Ok(Ty::new(Kind::SE3, frames))
+}
+
+/// RpToTrans(R_ab, p_ab): {a}←{b}; p must be in {a}.
+fn rp_rule(args: &[Ty]) -> Result<Ty, ArgError> {
+    if !Param::Rot.accepts(&args[0].kind) {
+        return Err(ArgError::type_of(0, format!("R must be SO(3), not a {}", args[0].kind)));
+    }
+    if !Param::Vec(3).accepts(&args[1].kind) {
+        return Err(ArgError::type_of(1, format!("p must be a 3-vector, not a {}", args[1].kind)));
+    }
+    let frames = match (&args[0].frames, &args[1].frames) {
+        (Frames::Pair(a, _), Frames::One(p)) if a != p => {
+            return Err(ArgError {
+                arg: Some(1),
+                kind: ErrorKind::Frame,
+                message: format!("R maps into {{{a}}} but p is in {{{p}}}"),
+            });
+        }
+        (Frames::Pair(..), _) => args[0].frames.clone(),
+        (_, Frames::One(p)) => Frames::Pair(p.clone(), crate::check::ty::Frame::named("?").moved()),
+        _ => Frames::None,
+    };
+    let frames = match frames {
+        Frames::Pair(_, ref b) if b.name == "?" => Frames::None,
+        f => f,
+    };
+    Ok(Ty::new(Kind::SE3, frames))
+}
+
+fn trans_to_rp_rule(args: &[Ty]) -> Result<Ty, ArgError> {
+    if !Param::Trans.accepts(&args[0].kind) {
+        return Err(ArgError::type_of(0, format!("TransToRp takes SE(3), not a {}", args[0].kind)));
+    }
+    Ok(Ty::new(Kind::Tuple(vec![Kind::SO3, v3()]), args[0].frames.clone()))
+}
+
+/// Twist/velocity from a configuration and its derivative, frames of T_sb:
+/// body twist in {b}, space twist in {s}.
+fn velocity_rule(space: bool, kind: Kind) -> impl Fn(&[Ty]) -> Result<Ty, ArgError> {
+    move |args: &[Ty]| {
+        let f = match &args[0].frames {
+            Frames::Pair(s, b) => Frames::One(if space { s.clone() } else { b.clone() }),
+            _ => Frames::None,
+        };
+        Ok(Ty::new(kind.clone(), f))
+    }
+}
+
+fn space_twist_rule(a: &[Ty]) -> Result<Ty, ArgError> {
+    velocity_rule(true, Kind::Twist)(a)
+}
+fn body_twist_rule(a: &[Ty]) -> Result<Ty, ArgError> {
+    velocity_rule(false, Kind::Twist)(a)
+}
+fn space_w_rule(a: &[Ty]) -> Result<Ty, ArgError> {
+    velocity_rule(true, Kind::Vector(Some(3)))(a)
+}
+fn body_w_rule(a: &[Ty]) -> Result<Ty, ArgError> {
+    velocity_rule(false, Kind::Vector(Some(3)))(a)
+}
+
+fn v3val(v: &Vec3) -> Value {
+    Value::num(v3(), v)
+}
+
+pub(super) fn builtins() -> Vec<Builtin> {
+    use Area::*;
+    use Param::*;
+    vec![
+        Builtin {
+            name: "RotInv",
+            aliases: &["rot_inv"],
+            signature: "RotInv(R: SO3) -> SO3",
+            section: "§3.2.1",
+            doc: "inverse of a rotation matrix, R⁻¹ = Rᵀ (Prop. 3.3)",
+            example: "RotInv([0, 0, 1; 1, 0, 0; 0, 1, 0])",
+            area: Rotations,
+            typing: Typing::Fixed { params: &[Rot], ret: so3k, frames: FrameRule::Swap(0) },
+            eval: |a| Ok(Value::num(Kind::SO3, &so3::inv(&a.so3(0)?))),
+        },
+        Builtin {
+            name: "VecToso3",
+            aliases: &["vec_to_so3", "skew"],
+            signature: "VecToso3(omg: 3-vector) -> so3",
+            section: "§3.2.2 (3.30)",
+            doc: "the skew-symmetric matrix [ω] of a 3-vector ω",
+            example: "VecToso3((1, 2, 3))",
+            area: Rotations,
+            typing: Typing::Fixed { params: &[Vec(3)], ret: || Kind::So3, frames: FrameRule::Same(0) },
+            eval: |a| Ok(Value::num(Kind::So3, &so3::hat(&a.vec3(0)?))),
+        },
+        Builtin {
+            name: "so3ToVec",
+            aliases: &["so3_to_vec", "unskew"],
+            signature: "so3ToVec(so3mat: so3) -> 3-vector",
+            section: "§3.2.2 (3.30)",
+            doc: "the 3-vector ω of a skew-symmetric matrix [ω]",
+            example: "so3ToVec([0, -3, 2; 3, 0, -1; -2, 1, 0])",
+            area: Rotations,
+            typing: Typing::Fixed { params: &[Expc3], ret: v3, frames: FrameRule::Same(0) },
+            eval: |a| Ok(v3val(&a.expc3(0)?)),
+        },
+        Builtin {
+            name: "AxisAng3",
+            aliases: &["axis_ang3"],
+            signature: "AxisAng3(expc3: 3-vector) -> (omghat: 3-vector, theta: scalar)",
+            section: "§3.2.3.2",
+            doc: "unit axis ω̂ and angle θ of exponential coordinates ω̂θ",
+            example: "(w, theta) = AxisAng3((1, 2, 3))",
+            area: Rotations,
+            typing: Typing::Fixed { params: &[Vec(3)], ret: rot_of_axis_tuple, frames: FrameRule::Same(0) },
+            eval: |a| {
+                let (w, t) = so3::axis_angle(&a.vec3(0)?);
+                Ok(Value::Tuple(vec![v3val(&w), Value::scalar(t)]))
+            },
+        },
+        Builtin {
+            name: "MatrixExp3",
+            aliases: &["matrix_exp3"],
+            signature: "MatrixExp3(expc3: 3-vector or so3) -> SO3",
+            section: "§3.2.3.2 (3.51)",
+            doc: "the rotation e^[ω̂]θ of exponential coordinates (Rodrigues' formula)",
+            example: "MatrixExp3((1, 2, 3))",
+            area: Rotations,
+            typing: Typing::Fixed { params: &[Expc3], ret: so3k, frames: FrameRule::Disp(0) },
+            eval: |a| Ok(Value::num(Kind::SO3, &so3::exp(&a.expc3(0)?))),
+        },
+        Builtin {
+            name: "MatrixLog3",
+            aliases: &["matrix_log3"],
+            signature: "MatrixLog3(R: SO3) -> 3-vector",
+            section: "§3.2.3.3",
+            doc: "exponential coordinates ω̂θ of a rotation, θ ∈ [0, π]",
+            example: "MatrixLog3([0, 0, 1; 1, 0, 0; 0, 1, 0])",
+            area: Rotations,
+            typing: Typing::Fixed { params: &[Rot], ret: v3, frames: FrameRule::Outer(0) },
+            eval: |a| Ok(v3val(&so3::log(&a.so3(0)?))),
+        },
+        Builtin {
+            name: "Rot",
+            aliases: &["rot"],
+            signature: "Rot(axis: 3-vector or x|y|z, theta: scalar) -> SO3",
+            section: "§3.2.3.2",
+            doc: "rotation by θ about an axis (normalized): Rot(ω̂, θ) = e^[ω̂]θ",
+            example: "Rot((0, 0.866, 0.5), 30 deg)",
+            area: Rotations,
+            typing: Typing::Fixed { params: &[Vec(3), Scalar], ret: so3k, frames: FrameRule::None },
+            eval: eval_rot,
+        },
+        Builtin {
+            name: "Rotx",
+            aliases: &["rotx", "RotX"],
+            signature: "Rotx(theta: scalar) -> SO3",
+            section: "§3.2.1",
+            doc: "rotation by θ about x̂",
+            example: "Rotx(90 deg)",
+            area: Rotations,
+            typing: Typing::Fixed { params: &[Scalar], ret: so3k, frames: FrameRule::None },
+            eval: |a| Ok(Value::num(Kind::SO3, &so3::rotx(a.scalar(0)?))),
+        },
+        Builtin {
+            name: "Roty",
+            aliases: &["roty", "RotY"],
+            signature: "Roty(theta: scalar) -> SO3",
+            section: "§3.2.1",
+            doc: "rotation by θ about ŷ",
+            example: "Roty(90 deg)",
+            area: Rotations,
+            typing: Typing::Fixed { params: &[Scalar], ret: so3k, frames: FrameRule::None },
+            eval: |a| Ok(Value::num(Kind::SO3, &so3::roty(a.scalar(0)?))),
+        },
+        Builtin {
+            name: "Rotz",
+            aliases: &["rotz", "RotZ"],
+            signature: "Rotz(theta: scalar) -> SO3",
+            section: "§3.2.1",
+            doc: "rotation by θ about ẑ",
+            example: "Rotz(90 deg)",
+            area: Rotations,
+            typing: Typing::Fixed { params: &[Scalar], ret: so3k, frames: FrameRule::None },
+            eval: |a| Ok(Value::num(Kind::SO3, &so3::rotz(a.scalar(0)?))),
+        },
+        Builtin {
+            name: "SO3",
+            aliases: &[],
+            signature: "SO3(M: 3×3 matrix) -> SO3",
+            section: "§3.2.1",
+            doc: "reads a 3×3 matrix as a rotation (projected within 1e-2, else an error)",
+            example: "SO3([0, -1, 0; 1, 0, 0; 0, 0, 1])",
+            area: Rotations,
+            typing: Typing::Fixed { params: &[Rot], ret: so3k, frames: FrameRule::Same(0) },
+            eval: |a| Ok(Value::num(Kind::SO3, &a.so3(0)?)),
+        },
+        Builtin {
+            name: "AngVelSpace",
+            aliases: &["space_angvel", "ang_vel_space"],
+            signature: "AngVelSpace(R: SO3, Rdot: 3×3) -> 3-vector",
+            section: "§3.2.2 (3.29)",
+            doc: "spatial angular velocity ω_s from [ω_s] = Ṙ Rᵀ",
+            example: "AngVelSpace(Rotz(0), [0, -1, 0; 1, 0, 0; 0, 0, 0])",
+            area: Rotations,
+            typing: Typing::Custom { arity: (2, 2), rule: space_w_rule },
+            eval: |a| {
+                let (r, rd) = (a.so3(0)?, mat3(a, 1)?);
+                Ok(v3val(&so3::angular_velocities(&r, &rd).0))
+            },
+        },
+        Builtin {
+            name: "AngVelBody",
+            aliases: &["body_angvel", "ang_vel_body"],
+            signature: "AngVelBody(R: SO3, Rdot: 3×3) -> 3-vector",
+            section: "§3.2.2 (3.31)",
+            doc: "body angular velocity ω_b from [ω_b] = Rᵀ Ṙ",
+            example: "AngVelBody(Rotz(0), [0, -1, 0; 1, 0, 0; 0, 0, 0])",
+            area: Rotations,
+            typing: Typing::Custom { arity: (2, 2), rule: body_w_rule },
+            eval: |a| {
+                let (r, rd) = (a.so3(0)?, mat3(a, 1)?);
+                Ok(v3val(&so3::angular_velocities(&r, &rd).1))
+            },
+        },
+        // ---- transforms ----
+        Builtin {
+            name: "RpToTrans",
+            aliases: &["rp_to_trans", "SE3"],
+            signature: "RpToTrans(R: SO3, p: 3-vector) -> SE3",
+            section: "§3.3.1 (3.62)",
+            doc: "the transform T = [R, p; 0, 1]",
+            example: "RpToTrans(Rotz(pi/2), (1, 2, 3))",
+            area: Transforms,
+            typing: Typing::Custom { arity: (2, 2), rule: rp_rule },
+            eval: |a| Ok(Value::num(Kind::SE3, &se3::from_rp(&a.so3(0)?, &a.vec3(1)?))),
+        },
+        Builtin {
+            name: "TransToRp",
+            aliases: &["trans_to_rp"],
+            signature: "TransToRp(T: SE3) -> (R: SO3, p: 3-vector)",
+            section: "§3.3.1",
+            doc: "the rotation and position of a transform",
+            example: "(R, p) = TransToRp(RpToTrans(Rotz(pi/2), (1, 2, 3)))",
+            area: Transforms,
+            typing: Typing::Custom { arity: (1, 1), rule: trans_to_rp_rule },
+            eval: |a| {
+                let (r, p) = se3::to_rp(&a.se3(0)?);
+                Ok(Value::Tuple(vec![Value::num(Kind::SO3, &r), v3val(&p)]))
+            },
+        },
+        Builtin {
+            name: "TransInv",
+            aliases: &["trans_inv"],
+            signature: "TransInv(T: SE3) -> SE3",
+            section: "§3.3.1.1 (3.64)",
+            doc: "T⁻¹ = [Rᵀ, −Rᵀp; 0, 1]",
+            example: "TransInv(RpToTrans(Rotz(pi/2), (1, 2, 3)))",
+            area: Transforms,
+            typing: Typing::Fixed { params: &[Trans], ret: se3k, frames: FrameRule::Swap(0) },
+            eval: |a| Ok(Value::num(Kind::SE3, &se3::inv(&a.se3(0)?))),
+        },
+        Builtin {
+            name: "Trans",
+            aliases: &["trans"],
+            signature: "Trans(p: 3-vector) -> SE3",
+            section: "§3.3.1",
+            doc: "pure translation by p: [I, p; 0, 1]",
+            example: "Trans((1, 2, 3))",
+            area: Transforms,
+            typing: Typing::Fixed { params: &[Vec(3)], ret: se3k, frames: FrameRule::None },
+            eval: |a| Ok(Value::num(Kind::SE3, &se3::from_rp(&crate::lie::Mat3::identity(), &a.vec3(0)?))),
+        },
+        Builtin {
+            name: "displacement",
+            aliases: &["Displacement"],
+            signature: "displacement(T_sb: SE3, T_sc: SE3) -> SE3",
+            section: "§3.3.1.2",
+            doc: "T_sc T_sb⁻¹: the displacement, expressed in the fixed frame {s}, that takes {b} to {c}",
+            example: "displacement(Trans((1, 0, 0)), Trans((1, 2, 0)))",
+            area: Transforms,
+            typing: Typing::Custom { arity: (2, 2), rule: displacement_rule },
+            eval: |a| {
+                let (tb, tc) = (a.se3(0)?, a.se3(1)?);
+                Ok(Value::num(Kind::SE3, &(tc * se3::inv(&tb))))
+            },
+        },
+        Builtin {
+            name: "VecTose3",
+            aliases: &["vec_to_se3"],
+            signature: "VecTose3(V: 6-vector) -> se3",
+            section: "§3.3.2 (3.70)",
+            doc: "the 4×4 matrix [V] = [[ω], v; 0, 0] of a twist",
+            example: "VecTose3((1, 2, 3, 4, 5, 6))",
+            area: Twists,
+            typing: Typing::Fixed { params: &[Vec(6)], ret: || Kind::Se3, frames: FrameRule::Same(0) },
+            eval: |a| Ok(Value::num(Kind::Se3, &se3::hat(&a.vec6(0)?))),
+        },
+        Builtin {
+            name: "se3ToVec",
+            aliases: &["se3_to_vec"],
+            signature: "se3ToVec(se3mat: se3) -> twist",
+            section: "§3.3.2 (3.70)",
+            doc: "the twist V = (ω, v) of an se(3) matrix",
+            example: "se3ToVec([0, -3, 2, 4; 3, 0, -1, 5; -2, 1, 0, 6; 0, 0, 0, 0])",
+            area: Twists,
+            typing: Typing::Fixed { params: &[Expc6], ret: twist, frames: FrameRule::Same(0) },
+            eval: |a| Ok(Value::num(Kind::Twist, &a.expc6(0)?)),
+        },
+        Builtin {
+            name: "Adjoint",
+            aliases: &["adjoint", "Ad"],
+            signature: "Adjoint(T: SE3) -> adjoint",
+            section: "§3.3.2 Def. 3.20",
+            doc: "the 6×6 [Ad_T] = [R, 0; [p]R, R]: V_a = [Ad_Tab] V_b",
+            example: "Ad(RpToTrans(Rotz(pi/2), (1, 0, 0)))",
+            area: Twists,
+            typing: Typing::Fixed {
+                params: &[Trans],
+                ret: || Kind::Adjoint { transposed: false },
+                frames: FrameRule::Same(0),
+            },
+            eval: |a| Ok(Value::num(Kind::Adjoint { transposed: false }, &se3::adjoint(&a.se3(0)?))),
+        },
+        Builtin {
+            name: "ad",
+            aliases: &["lie_bracket"],
+            signature: "ad(V: 6-vector) -> 6×6 matrix",
+            section: "§8.2 (used with twists)",
+            doc: "the small adjoint [ad_V] = [[ω], 0; [v], [ω]]",
+            example: "ad((0, 0, 1, 1, 0, 0))",
+            area: Twists,
+            typing: Typing::Fixed {
+                params: &[Vec(6)],
+                ret: || Kind::Matrix(Some(6), Some(6)),
+                frames: FrameRule::None,
+            },
+            eval: |a| Ok(Value::num(Kind::Matrix(Some(6), Some(6)), &se3::ad(&a.vec6(0)?))),
+        },
+        Builtin {
+            name: "ScrewToAxis",
+            aliases: &["screw_to_axis"],
+            signature: "ScrewToAxis(q: 3-vector, s: 3-vector, h: scalar) -> screw",
+            section: "§3.3.2.2",
+            doc: "the screw axis S = (ŝ, −ŝ×q + hŝ) through q along ŝ with pitch h",
+            example: "ScrewToAxis((3, 0, 0), (0, 0, 1), 2)",
+            area: Twists,
+            typing: Typing::Fixed { params: &[Vec(3), Vec(3), Scalar], ret: screw, frames: FrameRule::Shared },
+            eval: |a| Ok(Value::num(Kind::Screw, &se3::screw_to_axis(&a.vec3(0)?, &a.vec3(1)?, a.scalar(2)?))),
+        },
+        Builtin {
+            name: "screw",
+            aliases: &[],
+            signature: "screw(q: 3-vector, s: 3-vector, h: scalar) -> screw",
+            section: "§3.3.2.2",
+            doc: "screw axis through q along s (normalized) with pitch h; h = inf gives the pure translation (0, ŝ)",
+            example: "screw((0, 0, 0), (1, 0, 0), inf)",
+            area: Twists,
+            typing: Typing::Fixed { params: &[Vec(3), Vec(3), Scalar], ret: screw, frames: FrameRule::Shared },
+            eval: |a| {
+                let (q, s, h) = (a.vec3(0)?, a.vec3(1)?, a.scalar(2)?);
+                let n = s.norm();
+                if n == 0.0 || !n.is_finite() {
+                    return Err(a.error(1, ErrorKind::Domain, "the screw direction is the zero vector"));
+                }
+                let s = s / n;
+                if h.is_infinite() {
+                    let v = crate::lie::Vec6::new(0.0, 0.0, 0.0, s.x, s.y, s.z);
+                    return Ok(Value::num(Kind::Screw, &v));
+                }
+                Ok(Value::num(Kind::Screw, &se3::screw_to_axis(&q, &s, h)))
+            },
+        },
+        Builtin {
+            name: "screw_params",
+            aliases: &["ScrewParams"],
+            signature: "screw_params(S: 6-vector) -> (q: 3-vector, s: 3-vector, h: scalar)",
+            section: "§3.3.2.2",
+            doc: "point q nearest the origin, unit direction ŝ and pitch h of a screw axis or twist (h = inf for a pure translation)",
+            example: "(q, s, h) = screw_params((0, 0, 1, 0, -3, 2))",
+            area: Twists,
+            typing: Typing::Custom { arity: (1, 1), rule: screw_params_rule },
+            eval: |a| {
+                let (q, s, h) = se3::screw_params(&a.expc6(0)?);
+                Ok(Value::Tuple(vec![v3val(&q), v3val(&s), Value::scalar(h)]))
+            },
+        },
+        Builtin {
+            name: "AxisAng6",
+            aliases: &["axis_ang6"],
+            signature: "AxisAng6(expc6: 6-vector) -> (S: screw, theta: scalar)",
+            section: "§3.3.3.1",
+            doc: "screw axis S and distance θ of exponential coordinates Sθ",
+            example: "(S, theta) = AxisAng6((1, 0, 0, 1, 2, 3))",
+            area: Twists,
+            typing: Typing::Fixed {
+                params: &[Vec(6)],
+                ret: || Kind::Tuple(vec![Kind::Screw, Kind::Scalar]),
+                frames: FrameRule::Same(0),
+            },
+            eval: |a| {
+                let (s, t) = se3::axis_angle(&a.vec6(0)?);
+                Ok(Value::Tuple(vec![Value::num(Kind::Screw, &s), Value::scalar(t)]))
+            },
+        },
+        Builtin {
+            name: "MatrixExp6",
+            aliases: &["matrix_exp6"],
+            signature: "MatrixExp6(expc6: 6-vector or se3) -> SE3",
+            section: "§3.3.3.1 Prop. 3.25",
+            doc: "the transform e^[S]θ of exponential coordinates Sθ",
+            example: "MatrixExp6((0, 0, 1, 0, -3, 2) * pi/2)",
+            area: Twists,
+            typing: Typing::Fixed { params: &[Expc6], ret: se3k, frames: FrameRule::Disp(0) },
+            eval: |a| Ok(Value::num(Kind::SE3, &se3::exp(&a.expc6(0)?))),
+        },
+        Builtin {
+            name: "MatrixLog6",
+            aliases: &["matrix_log6"],
+            signature: "MatrixLog6(T: SE3) -> 6-vector",
+            section: "§3.3.3.2",
+            doc: "exponential coordinates Sθ of a transform, θ ∈ [0, π] for the rotation",
+            example: "MatrixLog6([1, 0, 0, 0; 0, 0, -1, 0; 0, 1, 0, 3; 0, 0, 0, 1])",
+            area: Twists,
+            typing: Typing::Fixed { params: &[Trans], ret: v6, frames: FrameRule::Outer(0) },
+            eval: |a| Ok(Value::num(v6(), &se3::log(&a.se3(0)?))),
+        },
+        Builtin {
+            name: "twist",
+            aliases: &["Twist"],
+            signature: "twist(w: 3-vector, v: 3-vector) -> twist",
+            section: "§3.3.2",
+            doc: "the twist V = (ω, v)",
+            example: "twist((0, 0, 2), (-2, -4, 0))",
+            area: Twists,
+            typing: Typing::Fixed { params: &[Vec(3), Vec(3)], ret: twist, frames: FrameRule::Shared },
+            eval: |a| Ok(Value::num(Kind::Twist, &stack(&a.vec3(0)?, &a.vec3(1)?))),
+        },
+        Builtin {
+            name: "wrench",
+            aliases: &["Wrench"],
+            signature: "wrench(m: 3-vector, f: 3-vector) -> wrench",
+            section: "§3.4 (3.94)",
+            doc: "the wrench F = (m, f): moment and force",
+            example: "wrench((0, 0, 0), (0, -5, 0))",
+            area: Twists,
+            typing: Typing::Fixed { params: &[Vec(3), Vec(3)], ret: wrench, frames: FrameRule::Shared },
+            eval: |a| Ok(Value::num(Kind::Wrench, &stack(&a.vec3(0)?, &a.vec3(1)?))),
+        },
+        Builtin {
+            name: "TwistSpace",
+            aliases: &["space_twist", "twist_space"],
+            signature: "TwistSpace(T: SE3, Tdot: 4×4) -> twist",
+            section: "§3.3.2 (3.75)",
+            doc: "spatial twist V_s from [V_s] = Ṫ T⁻¹",
+            example: "TwistSpace(Trans((1, 0, 0)), [0, -1, 0, 0; 1, 0, 0, 1; 0, 0, 0, 0; 0, 0, 0, 0])",
+            area: Twists,
+            typing: Typing::Custom { arity: (2, 2), rule: space_twist_rule },
+            eval: |a| {
+                let (t, td) = (a.se3(0)?, mat4(a, 1)?);
+                Ok(Value::num(Kind::Twist, &se3::twists_from_derivative(&t, &td).0))
+            },
+        },
+        Builtin {
+            name: "TwistBody",
+            aliases: &["body_twist", "twist_body"],
+            signature: "TwistBody(T: SE3, Tdot: 4×4) -> twist",
+            section: "§3.3.2 (3.68)",
+            doc: "body twist V_b from [V_b] = T⁻¹ Ṫ",
+            example: "TwistBody(Trans((1, 0, 0)), [0, -1, 0, 0; 1, 0, 0, 1; 0, 0, 0, 0; 0, 0, 0, 0])",
+            area: Twists,
+            typing: Typing::Custom { arity: (2, 2), rule: body_twist_rule },
+            eval: |a| {
+                let (t, td) = (a.se3(0)?, mat4(a, 1)?);
+                Ok(Value::num(Kind::Twist, &se3::twists_from_derivative(&t, &td).1))
+            },
+        },
+    ]
+}
+
+fn stack(a: &Vec3, b: &Vec3) -> crate::lie::Vec6 {
+    crate::lie::Vec6::new(a.x, a.y, a.z, b.x, b.y, b.z)
+}
+
+fn mat3(a: &Args, i: usize) -> Result<crate::lie::Mat3, Diagnostic> {
+    let m = a.mat(i)?;
+    if m.shape() != (3, 3) {
+        return Err(a.error(i, ErrorKind::Type, "expected a 3×3 matrix"));
+    }
+    Ok(crate::lie::Mat3::from_iterator(m.iter().copied()))
+}
+
+fn mat4(a: &Args, i: usize) -> Result<crate::lie::Mat4, Diagnostic> {
+    let m = a.mat(i)?;
+    if m.shape() != (4, 4) {
+        return Err(a.error(i, ErrorKind::Type, "expected a 4×4 matrix"));
+    }
+    Ok(crate::lie::Mat4::from_iterator(m.iter().copied()))
+}

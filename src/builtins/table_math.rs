@@ -1,0 +1,487 @@
+//! The mathematical maps `exp` and `log` (§3.2.3, §3.3.3, and e^{At} of
+//! exercises 3.33–3.35), linear algebra, scalar functions, and the small
+//! helpers of §3.6 (NearZero, Normalize).
+
+use nalgebra::DMatrix;
+
+use super::{Area, ArgError, Args, Builtin, FrameRule, Param, Typing};
+use crate::check::ty::{Frames, Kind, Ty};
+use crate::diagnostics::{Diagnostic, ErrorKind};
+use crate::eval::convert::{self, Group};
+use crate::eval::ops;
+use crate::eval::value::Value;
+use crate::lie::{self, Mat2, Mat3, Mat4, Vec3, Vec6, matexp, se2, se3, so2, so3};
+
+fn scalar() -> Kind {
+    Kind::Scalar
+}
+
+/// `exp`: so(3) → SO(3), se(3) → SE(3), so(2), se(2), any square matrix, a number.
+fn exp_rule(args: &[Ty]) -> Result<Ty, ArgError> {
+    let t = &args[0];
+    let kind = match &t.kind {
+        Kind::Scalar => Kind::Scalar,
+        Kind::So3 => Kind::SO3,
+        Kind::Se3 => Kind::SE3,
+        Kind::So2 => Kind::SO2,
+        Kind::Se2 => Kind::SE2,
+        Kind::Unknown => Kind::Unknown,
+        k if k.is_vector() => {
+            return Err(ArgError::type_of(
+                0,
+                format!(
+                    "exp takes a matrix such as [ω]θ or [S]θ, not a {k}; write exp([x]) or MatrixExp3/MatrixExp6(x)"
+                ),
+            ));
+        }
+        k => match k.shape() {
+            Some((r, c)) if r == c || r.is_none() || c.is_none() => Kind::Matrix(r, c),
+            _ => return Err(ArgError::type_of(0, format!("exp needs a square matrix, not a {k}"))),
+        },
+    };
+    let frames = match &t.frames {
+        Frames::One(a) | Frames::Disp(a) => Frames::Disp(a.clone()),
+        _ => Frames::None,
+    };
+    Ok(Ty::new(kind, frames))
+}
+
+fn eval_exp(a: &mut Args) -> Result<Value, Diagnostic> {
+    if let Some(x) = a.value(0).as_scalar() {
+        return Ok(Value::scalar(x.exp()));
+    }
+    let m = a.mat(0)?.clone();
+    if m.iter().any(|x| !x.is_finite()) {
+        return Err(a.error(0, ErrorKind::Domain, "exp of a matrix with entries that are not finite"));
+    }
+    let kind = a.value(0).kind();
+    let skew3 = |m: &DMatrix<f64>| (m + m.transpose()).abs().max() <= 1e-12 * m.abs().max().max(1.0);
+    match (kind, m.shape()) {
+        (Kind::So3, _) | (_, (3, 3)) if skew3(&m) => {
+            let w = so3::vee(&Mat3::from_iterator(m.iter().copied()));
+            Ok(Value::num(Kind::SO3, &so3::exp(&w)))
+        }
+        (_, (4, 4)) if is_se3(&m) => {
+            let v = se3::vee(&Mat4::from_iterator(m.iter().copied()));
+            Ok(Value::num(Kind::SE3, &se3::exp(&v)))
+        }
+        (Kind::So2, _) | (_, (2, 2)) if skew3(&m) => Ok(Value::num(Kind::SO2, &so2::exp(m[(1, 0)]))),
+        (Kind::Se2, _) => {
+            let v = se2::vee(&Mat3::from_iterator(m.iter().copied()));
+            Ok(Value::num(Kind::SE2, &se2::exp(&v)))
+        }
+        (_, (r, c)) if r == c => {
+            if r > ops::MAX_DIM {
+                return Err(a.domain(format!("matrix too large for exp ({r}×{r})")));
+            }
+            let e = matexp::expm(&m);
+            Ok(Value::Num { kind: convert::classify(&e), m: e })
+        }
+        _ => Err(a.error(0, ErrorKind::Type, "exp needs a square matrix")),
+    }
+}
+
+fn is_se3(m: &DMatrix<f64>) -> bool {
+    let scale = m.abs().max().max(1.0);
+    let w = m.view((0, 0), (3, 3));
+    (w + w.transpose()).abs().max() <= 1e-12 * scale && m.row(3).abs().max() == 0.0
+}
+
+/// `log`: SO(3) → so(3) tagged {a} for R_ab, SE(3) → se(3), SO(2), SE(2), a number.
+fn log_rule(args: &[Ty]) -> Result<Ty, ArgError> {
+    let t = &args[0];
+    let kind = match &t.kind {
+        Kind::Scalar => Kind::Scalar,
+        Kind::SO3 => Kind::So3,
+        Kind::SE3 => Kind::Se3,
+        Kind::SO2 => Kind::So2,
+        Kind::SE2 => Kind::Se2,
+        Kind::Unknown => Kind::Unknown,
+        Kind::Matrix(Some(4), Some(4)) => Kind::Se3,
+        Kind::Matrix(Some(2), Some(2)) => Kind::So2,
+        Kind::Matrix(r, c) if r.is_none_or(|r| r == 3) && c.is_none_or(|c| c == 3) => Kind::Matrix(*r, *c),
+        k => {
+            return Err(ArgError::type_of(
+                0,
+                format!("log takes a rotation or transform (SO(3), SE(3), SO(2), SE(2)), not a {k}"),
+            ));
+        }
+    };
+    let frames = match t.frames.outer() {
+        Some(a) if t.kind != Kind::Scalar => Frames::One(a.clone()),
+        _ => Frames::None,
+    };
+    Ok(Ty::new(kind, frames))
+}
+
+fn eval_log(a: &mut Args) -> Result<Value, Diagnostic> {
+    if let Some(x) = a.value(0).as_scalar() {
+        if x <= 0.0 {
+            return Err(a.error(0, ErrorKind::Domain, format!("log of {x}: the logarithm needs a positive number")));
+        }
+        return Ok(Value::scalar(x.ln()));
+    }
+    let kind = a.value(0).kind();
+    let shape = a.mat(0)?.shape();
+    match (kind, shape) {
+        (Kind::SE2, _) => Ok(Value::num(Kind::Se2, &se2::hat(&se2::log(&a.se2(0)?)))),
+        (_, (3, 3)) => {
+            // Read as SO(3) if it is (or nearly is) one, else as SE(2) (§5).
+            let m = a.mat(0)?.clone();
+            let d3 = convert::distance(&m, Group::SO3).unwrap_or(f64::INFINITY);
+            let d2 = convert::distance(&m, Group::SE2).unwrap_or(f64::INFINITY);
+            if d2 < d3 && d2 <= convert::PROJECT_TOL {
+                Ok(Value::num(Kind::Se2, &se2::hat(&se2::log(&a.se2(0)?))))
+            } else {
+                Ok(Value::num(Kind::So3, &so3::hat(&so3::log(&a.so3(0)?))))
+            }
+        }
+        (_, (4, 4)) => Ok(Value::num(Kind::Se3, &se3::hat(&se3::log(&a.se3(0)?)))),
+        (_, (2, 2)) => Ok(Value::num(Kind::So2, &so2::hat(so2::log(&a.so2(0)?)))),
+        _ => Err(a.error(0, ErrorKind::Type, "log takes SO(3), SE(3), SO(2) or SE(2)")),
+    }
+}
+
+fn inv_rule(args: &[Ty]) -> Result<Ty, ArgError> {
+    crate::check::rules::inverse(&args[0]).map_err(|e| ArgError::type_of(0, e.message))
+}
+
+fn transpose_rule(args: &[Ty]) -> Result<Ty, ArgError> {
+    crate::check::rules::transpose(&args[0]).map_err(|e| ArgError::type_of(0, e.message))
+}
+
+fn pair_rule(what: &'static str, ret: fn(&[Ty]) -> Kind) -> impl Fn(&[Ty]) -> Result<Ty, ArgError> {
+    move |args: &[Ty]| {
+        for (i, t) in args.iter().enumerate() {
+            if !Param::AnyVec.accepts(&t.kind) {
+                return Err(ArgError::type_of(i, format!("{what} takes vectors, not a {}", t.kind)));
+            }
+        }
+        let frames = crate::check::rules::vector_pair(what, &args[0], &args[1]).map_err(|e| ArgError {
+            arg: Some(1),
+            kind: ErrorKind::Frame,
+            message: format!("{}: {} and {}", e.message, e.lhs, e.rhs),
+        })?;
+        let kind = ret(args);
+        let frames = if kind == Kind::Scalar { Frames::None } else { frames };
+        Ok(Ty::new(kind, frames))
+    }
+}
+
+fn cross_rule(args: &[Ty]) -> Result<Ty, ArgError> {
+    pair_rule("cross", |a| match &a[0].kind {
+        Kind::Vector(_) => Kind::Vector(Some(3)),
+        _ => Kind::Vector(Some(3)),
+    })(args)
+}
+
+fn dot_rule(args: &[Ty]) -> Result<Ty, ArgError> {
+    pair_rule("dot", |_| Kind::Scalar)(args)
+}
+
+fn vee_rule(args: &[Ty]) -> Result<Ty, ArgError> {
+    let kind = match args[0].kind.shape() {
+        Some((Some(4), Some(4))) => Kind::Twist,
+        Some((Some(3), Some(3))) => Kind::Vector(Some(3)),
+        _ if args[0].kind == Kind::Unknown => Kind::Unknown,
+        _ => return Err(ArgError::type_of(0, format!("vee takes so(3) or se(3), not a {}", args[0].kind))),
+    };
+    Ok(Ty::new(kind, args[0].frames.clone()))
+}
+
+fn same_rule(args: &[Ty]) -> Result<Ty, ArgError> {
+    let k = &args[0].kind;
+    if k.shape().is_none() {
+        return Err(ArgError::type_of(0, format!("expected numbers, not a {k}")));
+    }
+    Ok(args[0].clone())
+}
+
+fn untag_rule(args: &[Ty]) -> Result<Ty, ArgError> {
+    Ok(Ty::plain(args[0].kind.clone()))
+}
+
+fn matrix_ctor_rule(args: &[Ty]) -> Result<Ty, ArgError> {
+    for (i, t) in args.iter().enumerate() {
+        if !t.kind.maybe_scalar() {
+            return Err(ArgError::type_of(i, format!("sizes are numbers, not a {}", t.kind)));
+        }
+    }
+    Ok(Ty::plain(Kind::Matrix(None, None)))
+}
+
+fn sized(a: &Args) -> Result<(usize, usize), Diagnostic> {
+    let r = a.int(0, 0, ops::MAX_DIM as i64)? as usize;
+    let c = if a.len() > 1 { a.int(1, 0, ops::MAX_DIM as i64)? as usize } else { r };
+    if r * c > ops::MAX_ELEMENTS {
+        return Err(a.domain(format!("{r}×{c} is too large (at most {} entries)", ops::MAX_ELEMENTS)));
+    }
+    Ok((r, c))
+}
+
+/// A scalar function with a domain check.
+fn unary(a: &Args, f: fn(f64) -> f64, ok: fn(f64) -> bool, why: &str) -> Result<Value, Diagnostic> {
+    let x = a.scalar(0)?;
+    if !ok(x) {
+        return Err(a.error(0, ErrorKind::Domain, format!("{}({x}): {why}", a.name)));
+    }
+    Ok(Value::scalar(f(x)))
+}
+
+fn any(_: f64) -> bool {
+    true
+}
+
+macro_rules! scalar_fn {
+    ($name:literal, $doc:literal, $f:expr, $ok:expr, $why:literal) => {
+        Builtin {
+            name: $name,
+            aliases: &[],
+            signature: concat!($name, "(x: scalar) -> scalar"),
+            section: "—",
+            doc: $doc,
+            example: concat!($name, "(0.5)"),
+            area: Area::Scalars,
+            typing: Typing::Fixed { params: &[Param::Scalar], ret: scalar, frames: FrameRule::None },
+            eval: |a| unary(a, $f, $ok, $why),
+        }
+    };
+}
+
+pub(super) fn builtins() -> Vec<Builtin> {
+    use Area::*;
+    use Param::*;
+    vec![
+        Builtin {
+            name: "exp",
+            aliases: &["expm"],
+            signature: "exp(X: so3 | se3 | so2 | se2 | square matrix | scalar) -> SO3 | SE3 | SO2 | SE2 | matrix | scalar",
+            section: "§3.2.3, §3.3.3, Ex. 3.33–3.35",
+            doc: "the matrix exponential: e^[ω]θ ∈ SO(3), e^[S]θ ∈ SE(3), e^{At} for any square A",
+            example: "exp([(0, 0, 1)] (pi/2))",
+            area: LinearAlgebra,
+            typing: Typing::Custom { arity: (1, 1), rule: exp_rule },
+            eval: eval_exp,
+        },
+        Builtin {
+            name: "log",
+            aliases: &["logm", "ln"],
+            signature: "log(X: SO3 | SE3 | SO2 | SE2 | scalar) -> so3 | se3 | so2 | se2 | scalar",
+            section: "§3.2.3.3, §3.3.3.2",
+            doc: "the matrix logarithm [ω̂]θ or [S]θ with θ ∈ [0, π] (the book's three cases), or ln x",
+            example: "log([0, 0, 1; 1, 0, 0; 0, 1, 0])",
+            area: LinearAlgebra,
+            typing: Typing::Custom { arity: (1, 1), rule: log_rule },
+            eval: eval_log,
+        },
+        Builtin {
+            name: "inv",
+            aliases: &["inverse"],
+            signature: "inv(X: square matrix | scalar) -> same",
+            section: "§3.2.1, §3.3.1.1",
+            doc: "inverse; X_ab⁻¹ = X_ba (closed forms for SO(3) and SE(3))",
+            example: "inv(RpToTrans(Rotz(pi/2), (1, 2, 3)))",
+            area: LinearAlgebra,
+            typing: Typing::Custom { arity: (1, 1), rule: inv_rule },
+            eval: |a| ops::inverse(a.value(0)).map_err(|e| a.error(0, ErrorKind::Domain, e)),
+        },
+        Builtin {
+            name: "transpose",
+            aliases: &[],
+            signature: "transpose(X: matrix) -> matrix",
+            section: "—",
+            doc: "the transpose, X.T",
+            example: "transpose([1, 2; 3, 4])",
+            area: LinearAlgebra,
+            typing: Typing::Custom { arity: (1, 1), rule: transpose_rule },
+            eval: |a| Ok(ops::transpose(a.value(0))),
+        },
+        Builtin {
+            name: "det",
+            aliases: &[],
+            signature: "det(X: square matrix) -> scalar",
+            section: "§3.2.1",
+            doc: "the determinant (+1 for a rotation)",
+            example: "det(Rotz(1))",
+            area: LinearAlgebra,
+            typing: Typing::Fixed { params: &[Square], ret: scalar, frames: FrameRule::None },
+            eval: |a| {
+                let m = a.mat(0)?;
+                if !m.is_square() {
+                    return Err(a.error(0, ErrorKind::Type, "det needs a square matrix"));
+                }
+                Ok(Value::scalar(m.determinant()))
+            },
+        },
+        Builtin {
+            name: "trace",
+            aliases: &["tr"],
+            signature: "trace(X: square matrix) -> scalar",
+            section: "§3.2.3.3",
+            doc: "the sum of the diagonal (tr R = 1 + 2 cos θ)",
+            example: "trace(Rotz(1))",
+            area: LinearAlgebra,
+            typing: Typing::Fixed { params: &[Square], ret: scalar, frames: FrameRule::None },
+            eval: |a| {
+                let m = a.mat(0)?;
+                if !m.is_square() {
+                    return Err(a.error(0, ErrorKind::Type, "trace needs a square matrix"));
+                }
+                Ok(Value::scalar(m.trace()))
+            },
+        },
+        Builtin {
+            name: "norm",
+            aliases: &[],
+            signature: "norm(x: vector | matrix) -> scalar",
+            section: "—",
+            doc: "the Euclidean (Frobenius) norm",
+            example: "norm((3, 4, 0))",
+            area: LinearAlgebra,
+            typing: Typing::Fixed { params: &[Mat], ret: scalar, frames: FrameRule::None },
+            eval: |a| Ok(Value::scalar(a.mat(0)?.norm())),
+        },
+        Builtin {
+            name: "cross",
+            aliases: &[],
+            signature: "cross(u: 3-vector, v: 3-vector) -> 3-vector",
+            section: "§3.2.2",
+            doc: "the cross product u × v = [u] v (same frame)",
+            example: "cross((1, 0, 0), (0, 1, 0))",
+            area: LinearAlgebra,
+            typing: Typing::Custom { arity: (2, 2), rule: cross_rule },
+            eval: |a| {
+                let (u, v): (Vec3, Vec3) = (a.vec3(0)?, a.vec3(1)?);
+                Ok(Value::num(Kind::Vector(Some(3)), &u.cross(&v)))
+            },
+        },
+        Builtin {
+            name: "dot",
+            aliases: &[],
+            signature: "dot(u: vector, v: vector) -> scalar",
+            section: "§3.4",
+            doc: "the dot product uᵀv (same frame); power is dot(V, F)",
+            example: "dot((1, 2, 3), (4, 5, 6))",
+            area: LinearAlgebra,
+            typing: Typing::Custom { arity: (2, 2), rule: dot_rule },
+            eval: |a| {
+                let (u, v) = (a.vec(0)?, a.vec(1)?);
+                if u.len() != v.len() {
+                    return Err(a.error(1, ErrorKind::Type, format!("dot of a {}-vector and a {}-vector", u.len(), v.len())));
+                }
+                Ok(Value::scalar(u.dot(&v)))
+            },
+        },
+        Builtin {
+            name: "vee",
+            aliases: &[],
+            signature: "vee(X: so3 | se3) -> 3-vector | twist",
+            section: "§3.2.2, §3.3.2",
+            doc: "so3ToVec for 3×3, se3ToVec for 4×4",
+            example: "vee([0, -3, 2; 3, 0, -1; -2, 1, 0])",
+            area: Rotations,
+            typing: Typing::Custom { arity: (1, 1), rule: vee_rule },
+            eval: |a| match a.mat(0)?.shape() {
+                (4, 4) => Ok(Value::num(Kind::Twist, &a.expc6(0)?)),
+                _ => Ok(Value::num(Kind::Vector(Some(3)), &a.expc3(0)?)),
+            },
+        },
+        Builtin {
+            name: "eye",
+            aliases: &["I"],
+            signature: "eye(n: scalar) -> n×n identity",
+            section: "—",
+            doc: "the n×n identity matrix",
+            example: "eye(3)",
+            area: LinearAlgebra,
+            typing: Typing::Custom { arity: (1, 1), rule: matrix_ctor_rule },
+            eval: |a| {
+                let (n, _) = sized(a)?;
+                let m = DMatrix::identity(n, n);
+                Ok(Value::Num { kind: convert::classify(&m), m })
+            },
+        },
+        Builtin {
+            name: "zeros",
+            aliases: &[],
+            signature: "zeros(rows: scalar, cols: scalar) -> matrix",
+            section: "—",
+            doc: "a matrix of zeros (zeros(n) is n×n)",
+            example: "zeros(3, 1)",
+            area: LinearAlgebra,
+            typing: Typing::Custom { arity: (1, 2), rule: matrix_ctor_rule },
+            eval: |a| {
+                let (r, c) = sized(a)?;
+                let m = DMatrix::zeros(r, c);
+                Ok(Value::Num { kind: convert::classify(&m), m })
+            },
+        },
+        Builtin {
+            name: "NearZero",
+            aliases: &["near_zero"],
+            signature: "NearZero(z: scalar) -> bool",
+            section: "§3.6",
+            doc: "true if |z| < 1e-6",
+            example: "NearZero(1e-7)",
+            area: Tests,
+            typing: Typing::Fixed { params: &[Scalar], ret: || Kind::Bool, frames: FrameRule::None },
+            eval: |a| Ok(Value::Bool(lie::near_zero(a.scalar(0)?))),
+        },
+        Builtin {
+            name: "Normalize",
+            aliases: &["normalize"],
+            signature: "Normalize(V: vector) -> vector",
+            section: "§3.6",
+            doc: "the unit vector V/‖V‖",
+            example: "Normalize((1, 2, 3))",
+            area: LinearAlgebra,
+            typing: Typing::Fixed { params: &[AnyVec], ret: || Kind::Vector(None), frames: FrameRule::Same(0) },
+            eval: |a| {
+                let v = a.vec(0)?;
+                match lie::normalize(&v) {
+                    Some(u) => Ok(Value::Num { kind: a.value(0).kind(), m: DMatrix::from_column_slice(u.len(), 1, u.as_slice()) }),
+                    None => Err(a.error(0, ErrorKind::Domain, "cannot normalize the zero vector (its norm is 0)")),
+                }
+            },
+        },
+        Builtin {
+            name: "untag",
+            aliases: &[],
+            signature: "untag(x) -> x without frames",
+            section: "LANGUAGE §6",
+            doc: "the same value with no frames, to use a framed value as a plain operator",
+            example: "untag(Rotz(1))",
+            area: LinearAlgebra,
+            typing: Typing::Custom { arity: (1, 1), rule: untag_rule },
+            eval: |a| Ok(a.value(0).clone()),
+        },
+        Builtin {
+            name: "atan2",
+            aliases: &[],
+            signature: "atan2(y: scalar, x: scalar) -> scalar",
+            section: "§3.2.3.3",
+            doc: "the angle of (x, y), in (−π, π]",
+            example: "atan2(1, 1)",
+            area: Scalars,
+            typing: Typing::Fixed { params: &[Scalar, Scalar], ret: scalar, frames: FrameRule::None },
+            eval: |a| Ok(Value::scalar(a.scalar(0)?.atan2(a.scalar(1)?))),
+        },
+        scalar_fn!("sin", "sine (radians)", f64::sin, any, ""),
+        scalar_fn!("cos", "cosine (radians)", f64::cos, any, ""),
+        scalar_fn!("tan", "tangent (radians)", f64::tan, any, ""),
+        scalar_fn!("asin", "arcsine, in [−π/2, π/2]", f64::asin, |x| (-1.0..=1.0).contains(&x), "the argument must be in [−1, 1]"),
+        scalar_fn!("acos", "arccosine, in [0, π]", f64::acos, |x| (-1.0..=1.0).contains(&x), "the argument must be in [−1, 1]"),
+        scalar_fn!("atan", "arctangent", f64::atan, any, ""),
+        scalar_fn!("sqrt", "square root", f64::sqrt, |x| x >= 0.0, "the square root of a negative number is not real"),
+        scalar_fn!("abs", "absolute value", f64::abs, any, ""),
+        scalar_fn!("rad2deg", "radians to degrees", f64::to_degrees, any, ""),
+    ]
+}
+
+#[allow(dead_code)]
+fn unused(_: Mat2, _: Vec6) {}
+
+/// Exposed for the interpreter: the kind of `x.T` etc. without a table entry.
+pub fn same(args: &[Ty]) -> Result<Ty, ArgError> {
+    same_rule(args)
+}

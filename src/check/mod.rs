@@ -1,0 +1,9 @@
+//! The check layer: kinds and frame tags of expressions, inferred without
+//! numbers (LANGUAGE.md §5–7). [`ty`] holds the types, [`rules`] the frame
+//! table of §6 and its error texts, [`bind`] the rule for names with frame
+//! subscripts. The interpreter ([`crate::eval`]) applies these rules in the
+//! same pass for `chasles check` (no numbers) and `chasles run`.
+
+pub mod bind;
+pub mod rules;
+pub mod ty;

@@ -1,0 +1,298 @@
+//! Static types and frame tags: what the checker knows about an expression
+//! without its numbers (LANGUAGE.md §5–6).
+
+use std::fmt;
+
+/// What kind of mathematical object a value is (LANGUAGE.md §5). `None`
+/// dimensions are unknown until evaluation (e.g. `zeros(n, m)`).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Kind {
+    Scalar,
+    Bool,
+    /// A column n-vector.
+    Vector(Option<usize>),
+    /// An r×c matrix that is not (known to be) a group element.
+    Matrix(Option<usize>, Option<usize>),
+    /// A rotation matrix R ∈ SO(3) (§3.2.1).
+    SO3,
+    /// A homogeneous transform T ∈ SE(3) (§3.3.1).
+    SE3,
+    /// A skew-symmetric [ω] ∈ so(3) (§3.2.2).
+    So3,
+    /// A twist matrix [V] ∈ se(3) (§3.3.2).
+    Se3,
+    SO2,
+    SE2,
+    So2,
+    Se2,
+    /// A twist V = (ω, v) (§3.3.2).
+    Twist,
+    /// A screw axis S: a unit twist (§3.3.2.2).
+    Screw,
+    /// A wrench F = (m, f) (§3.4).
+    Wrench,
+    /// The 6×6 adjoint [Ad_T] (Definition 3.20); `transposed` for
+    /// [Ad_T]ᵀ, which acts on wrenches (Prop. 3.17).
+    Adjoint { transposed: bool },
+    /// A mechanism (chapter 2).
+    Mechanism,
+    Tuple(Vec<Kind>),
+    /// A user function.
+    Function,
+    /// Not known statically (e.g. the element of a tuple of unknown shape).
+    Unknown,
+}
+
+impl Kind {
+    /// The type name of the JSON schema (LANGUAGE.md §1).
+    pub fn json_name(&self) -> &'static str {
+        match self {
+            Kind::Scalar => "scalar",
+            Kind::Bool => "bool",
+            Kind::Vector(_) => "vector",
+            Kind::Matrix(..) | Kind::Unknown | Kind::Function => "matrix",
+            Kind::SO3 => "SO3",
+            Kind::SE3 => "SE3",
+            Kind::So3 => "so3",
+            Kind::Se3 => "se3",
+            Kind::SO2 => "SO2",
+            Kind::SE2 => "SE2",
+            Kind::So2 => "so2",
+            Kind::Se2 => "se2",
+            Kind::Twist => "twist",
+            Kind::Screw => "screw",
+            Kind::Wrench => "wrench",
+            Kind::Adjoint { .. } => "adjoint",
+            Kind::Mechanism => "mechanism",
+            Kind::Tuple(_) => "tuple",
+        }
+    }
+
+    /// Rows and columns when the kind is matrix-shaped and known.
+    pub fn shape(&self) -> Option<(Option<usize>, Option<usize>)> {
+        Some(match self {
+            Kind::Scalar => (Some(1), Some(1)),
+            Kind::Vector(n) => (*n, Some(1)),
+            Kind::Matrix(r, c) => (*r, *c),
+            Kind::SO3 | Kind::So3 | Kind::SE2 | Kind::Se2 => (Some(3), Some(3)),
+            Kind::SE3 | Kind::Se3 => (Some(4), Some(4)),
+            Kind::SO2 | Kind::So2 => (Some(2), Some(2)),
+            Kind::Twist | Kind::Screw | Kind::Wrench => (Some(6), Some(1)),
+            Kind::Adjoint { .. } => (Some(6), Some(6)),
+            Kind::Unknown => (None, None),
+            _ => return None,
+        })
+    }
+
+    /// True for column vectors of any flavour (plain, twist, screw, wrench).
+    pub fn is_vector(&self) -> bool {
+        matches!(
+            self,
+            Kind::Vector(_) | Kind::Twist | Kind::Screw | Kind::Wrench
+        )
+    }
+
+    /// Length of a vector kind, if known.
+    pub fn vec_len(&self) -> Option<usize> {
+        match self {
+            Kind::Vector(n) => *n,
+            Kind::Twist | Kind::Screw | Kind::Wrench => Some(6),
+            _ => None,
+        }
+    }
+
+    /// True for square matrix-like kinds that act on vectors by `*`
+    /// (operators: rotations, transforms, adjoints, plain square matrices).
+    pub fn is_operator(&self) -> bool {
+        match self {
+            Kind::SO3 | Kind::SE3 | Kind::SO2 | Kind::SE2 | Kind::Adjoint { .. } => true,
+            Kind::So3 | Kind::Se3 | Kind::So2 | Kind::Se2 => true,
+            Kind::Matrix(..) | Kind::Unknown => true,
+            _ => false,
+        }
+    }
+
+    /// True for group elements (SO(n), SE(n)).
+    pub fn is_group(&self) -> bool {
+        matches!(self, Kind::SO3 | Kind::SE3 | Kind::SO2 | Kind::SE2)
+    }
+
+    /// True for Lie-algebra matrices (so(n), se(n)).
+    pub fn is_algebra(&self) -> bool {
+        matches!(self, Kind::So3 | Kind::Se3 | Kind::So2 | Kind::Se2)
+    }
+
+    /// True when the kind may stand where a number is needed.
+    pub fn maybe_scalar(&self) -> bool {
+        matches!(self, Kind::Scalar | Kind::Unknown)
+    }
+}
+
+impl fmt::Display for Kind {
+    /// The book's names: `SE(3)`, `so(3)`, `twist`, `3-vector`, `4×4 matrix`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let dim = |d: &Option<usize>| d.map_or("n".to_string(), |n| n.to_string());
+        match self {
+            Kind::Scalar => write!(f, "scalar"),
+            Kind::Bool => write!(f, "bool"),
+            Kind::Vector(n) => write!(f, "{}-vector", dim(n)),
+            Kind::Matrix(r, c) => write!(f, "{}×{} matrix", dim(r), dim(c)),
+            Kind::SO3 => write!(f, "SO(3)"),
+            Kind::SE3 => write!(f, "SE(3)"),
+            Kind::So3 => write!(f, "so(3)"),
+            Kind::Se3 => write!(f, "se(3)"),
+            Kind::SO2 => write!(f, "SO(2)"),
+            Kind::SE2 => write!(f, "SE(2)"),
+            Kind::So2 => write!(f, "so(2)"),
+            Kind::Se2 => write!(f, "se(2)"),
+            Kind::Twist => write!(f, "twist"),
+            Kind::Screw => write!(f, "screw axis"),
+            Kind::Wrench => write!(f, "wrench"),
+            Kind::Adjoint { transposed: false } => write!(f, "adjoint"),
+            Kind::Adjoint { transposed: true } => write!(f, "adjoint transpose"),
+            Kind::Mechanism => write!(f, "mechanism"),
+            Kind::Tuple(ks) => {
+                write!(f, "(")?;
+                for (i, k) in ks.iter().enumerate() {
+                    if i > 0 {
+                        write!(f, ", ")?;
+                    }
+                    write!(f, "{k}")?;
+                }
+                write!(f, ")")
+            }
+            Kind::Function => write!(f, "function"),
+            Kind::Unknown => write!(f, "value"),
+        }
+    }
+}
+
+/// One reference frame. `moved` marks the frame reached by a displacement
+/// (`exp([S_s] θ) * T_sb` is {s}←{b'}): printed with a prime, and a binding
+/// may give it a new name.
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+pub struct Frame {
+    pub name: String,
+    pub moved: bool,
+}
+
+impl Frame {
+    pub fn named(name: impl Into<String>) -> Frame {
+        Frame {
+            name: name.into(),
+            moved: false,
+        }
+    }
+    /// The frame after a displacement.
+    pub fn moved(&self) -> Frame {
+        Frame {
+            name: self.name.clone(),
+            moved: true,
+        }
+    }
+}
+
+impl fmt::Display for Frame {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.moved {
+            write!(f, "{}'", self.name)
+        } else {
+            write!(f, "{}", self.name)
+        }
+    }
+}
+
+/// The frame tag of a value (LANGUAGE.md §6).
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub enum Frames {
+    /// Untagged: matches anything.
+    #[default]
+    None,
+    /// A vector quantity expressed in {a}: point, twist, wrench, [ω]…
+    One(Frame),
+    /// {a}←{b}: R_ab, T_ab, Ad(T_ab) map {b} coordinates to {a}.
+    Pair(Frame, Frame),
+    /// A displacement expressed in {a}: `exp([S_a] θ)`. Premultiplies
+    /// X_a? (moving its inner frame) or postmultiplies X_?a.
+    Disp(Frame),
+}
+
+impl Frames {
+    pub fn pair(a: &str, b: &str) -> Frames {
+        Frames::Pair(Frame::named(a), Frame::named(b))
+    }
+    pub fn one(a: &str) -> Frames {
+        Frames::One(Frame::named(a))
+    }
+    pub fn is_none(&self) -> bool {
+        matches!(self, Frames::None)
+    }
+    /// The frames as the JSON list: `[]`, `["a"]`, `["a","b"]`.
+    pub fn to_list(&self) -> Vec<String> {
+        match self {
+            Frames::None => vec![],
+            Frames::One(a) | Frames::Disp(a) => vec![a.to_string()],
+            Frames::Pair(a, b) => vec![a.to_string(), b.to_string()],
+        }
+    }
+    /// The outer frame: {a} of X_ab, v_a, or the displacement's frame.
+    pub fn outer(&self) -> Option<&Frame> {
+        match self {
+            Frames::None => None,
+            Frames::One(a) | Frames::Disp(a) | Frames::Pair(a, _) => Some(a),
+        }
+    }
+    /// `inv(X_ab)` = X_ba; a displacement's inverse is a displacement.
+    pub fn swapped(&self) -> Frames {
+        match self {
+            Frames::Pair(a, b) => Frames::Pair(b.clone(), a.clone()),
+            other => other.clone(),
+        }
+    }
+}
+
+impl fmt::Display for Frames {
+    /// `{a}`, `{a}←{b}`, `displacement in {a}`; empty when untagged.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Frames::None => Ok(()),
+            Frames::One(a) => write!(f, "{{{a}}}"),
+            Frames::Pair(a, b) => write!(f, "{{{a}}}←{{{b}}}"),
+            Frames::Disp(a) => write!(f, "displacement in {{{a}}}"),
+        }
+    }
+}
+
+/// The checker's knowledge of an expression: kind and frames.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Ty {
+    pub kind: Kind,
+    pub frames: Frames,
+}
+
+impl Ty {
+    pub fn new(kind: Kind, frames: Frames) -> Ty {
+        Ty { kind, frames }
+    }
+    /// An untagged value of `kind`.
+    pub fn plain(kind: Kind) -> Ty {
+        Ty {
+            kind,
+            frames: Frames::None,
+        }
+    }
+    pub fn scalar() -> Ty {
+        Ty::plain(Kind::Scalar)
+    }
+}
+
+impl fmt::Display for Ty {
+    /// `SE(3) {a}←{c}`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.frames.is_none() {
+            write!(f, "{}", self.kind)
+        } else {
+            write!(f, "{} {}", self.kind, self.frames)
+        }
+    }
+}

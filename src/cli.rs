@@ -1,0 +1,219 @@
+//! The command line (LANGUAGE.md §1): `chasles`, `chasles run FILE...`,
+//! `chasles check FILE...`, `chasles -e 'STATEMENTS'`, with `--json`,
+//! `--frames`, `--digits`, `--keep-going`. Exit codes: 0 success, 1 a
+//! script error, 2 bad usage or an unreadable file.
+
+use std::io::{IsTerminal, Read, Write};
+
+use clap::{Parser, Subcommand};
+
+use crate::eval::env::{FrameMode, Mode};
+use crate::session::{Session, Settings};
+
+/// Largest script accepted (bytes).
+pub const MAX_SOURCE_BYTES: u64 = 100 * 1024 * 1024;
+
+#[derive(Parser, Debug)]
+#[command(
+    name = "chasles",
+    version,
+    about = "A calculator for rigid-body motion (Modern Robotics, chapters 2–3)",
+    long_about = "A calculator for rigid-body motion (Modern Robotics, chapters 2–3).\n\
+                  With no command: the REPL (or, with stdin not a terminal, runs stdin)."
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+    /// Evaluate one string of statements.
+    #[arg(short = 'e', long = "eval", value_name = "STATEMENTS")]
+    eval: Option<String>,
+    #[command(flatten)]
+    opts: Opts,
+}
+
+#[derive(clap::Args, Debug, Clone)]
+struct Opts {
+    /// One JSON object per statement instead of text.
+    #[arg(long, global = true)]
+    json: bool,
+    /// Frame mismatches: an error, a warning, or ignored.
+    #[arg(long, global = true, value_name = "strict|warn|off", default_value = "strict", value_parser = parse_frames)]
+    frames: FrameMode,
+    /// Decimals in text output (trailing zeros trimmed).
+    #[arg(long, global = true, value_name = "N", default_value_t = 4, value_parser = clap::value_parser!(u16).range(0..=17))]
+    digits: u16,
+    /// Keep running after an error.
+    #[arg(long, global = true)]
+    keep_going: bool,
+}
+
+fn parse_frames(s: &str) -> Result<FrameMode, String> {
+    FrameMode::parse(s).ok_or_else(|| format!("'{s}' is not one of strict, warn, off"))
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Run scripts in order, printing each result (`-` reads stdin).
+    Run {
+        #[arg(required = true, value_name = "FILE")]
+        files: Vec<String>,
+    },
+    /// Type- and frame-check scripts without evaluating; report every error.
+    Check {
+        #[arg(required = true, value_name = "FILE")]
+        files: Vec<String>,
+    },
+}
+
+/// Writes to stdout; a closed pipe ends the program quietly.
+fn emit(out: &mut impl Write, s: &str) {
+    if writeln!(out, "{s}").is_err() {
+        std::process::exit(0);
+    }
+}
+
+fn emit_err(s: &str) {
+    let mut e = std::io::stderr().lock();
+    let _ = e.write_all(s.as_bytes());
+}
+
+/// Reads a script; Err is the message for exit code 2.
+pub fn read_source(path: &str) -> Result<String, String> {
+    let bytes = if path == "-" {
+        let mut buf = Vec::new();
+        std::io::stdin()
+            .lock()
+            .take(MAX_SOURCE_BYTES + 1)
+            .read_to_end(&mut buf)
+            .map_err(|e| format!("cannot read standard input: {e}"))?;
+        buf
+    } else {
+        let meta = std::fs::metadata(path).map_err(|e| format!("cannot read '{path}': {}", io_reason(&e)))?;
+        if meta.is_dir() {
+            return Err(format!("cannot read '{path}': it is a directory"));
+        }
+        if meta.len() > MAX_SOURCE_BYTES {
+            return Err(format!(
+                "'{path}' is {} bytes; scripts are limited to {MAX_SOURCE_BYTES} bytes",
+                meta.len()
+            ));
+        }
+        std::fs::read(path).map_err(|e| format!("cannot read '{path}': {}", io_reason(&e)))?
+    };
+    if bytes.len() as u64 > MAX_SOURCE_BYTES {
+        return Err(format!("input is larger than {MAX_SOURCE_BYTES} bytes"));
+    }
+    String::from_utf8(bytes).map_err(|e| {
+        let at = e.utf8_error().valid_up_to();
+        format!("'{path}' is not UTF-8 text: invalid byte at offset {at}")
+    })
+}
+
+fn io_reason(e: &std::io::Error) -> String {
+    match e.kind() {
+        std::io::ErrorKind::NotFound => "no such file".into(),
+        std::io::ErrorKind::PermissionDenied => "permission denied".into(),
+        _ => e.to_string(),
+    }
+}
+
+/// Runs the sources through one session; returns the exit code.
+fn run_sources(sources: &[(String, String)], mode: Mode, opts: &Opts) -> i32 {
+    let settings = Settings {
+        frames: opts.frames,
+        digits: opts.digits as usize,
+        json: opts.json,
+    };
+    let mut session = Session::new(settings);
+    let stdout = std::io::stdout();
+    let mut out = std::io::BufWriter::new(stdout.lock());
+    let mut errors = 0;
+    let mut statements = 0;
+    for (file, src) in sources {
+        let keep_going = opts.keep_going || mode == Mode::Check;
+        errors += session.run(src, mode, keep_going, |r| {
+            statements += 1;
+            let text = r.stdout(&settings, src);
+            if !text.is_empty() && (mode == Mode::Run || settings.json) {
+                emit(&mut out, &text);
+            }
+            let err = r.stderr(&settings, file, src);
+            if !err.is_empty() {
+                let _ = out.flush();
+                emit_err(&err);
+            }
+        });
+        if errors > 0 && !opts.keep_going && mode == Mode::Run {
+            break;
+        }
+    }
+    if mode == Mode::Check && !settings.json {
+        let files: Vec<&str> = sources.iter().map(|(f, _)| f.as_str()).collect();
+        let summary = if errors == 0 {
+            format!("{}: {statements} statements checked, frames consistent", files.join(", "))
+        } else {
+            format!("{}: {errors} error{}", files.join(", "), if errors == 1 { "" } else { "s" })
+        };
+        emit(&mut out, &summary);
+    }
+    if out.flush().is_err() {
+        return 0;
+    }
+    i32::from(errors > 0)
+}
+
+/// Loads files, reporting unreadable ones (exit 2).
+fn load(files: &[String]) -> Result<Vec<(String, String)>, i32> {
+    let mut sources = Vec::new();
+    for f in files {
+        match read_source(f) {
+            Ok(s) => sources.push((if f == "-" { "<stdin>".to_string() } else { f.clone() }, s)),
+            Err(msg) => {
+                emit_err(&format!("chasles: {msg}\n"));
+                return Err(2);
+            }
+        }
+    }
+    Ok(sources)
+}
+
+/// The whole program; returns the exit code.
+pub fn main_with_args(args: Vec<String>) -> i32 {
+    let cli = match Cli::try_parse_from(args) {
+        Ok(c) => c,
+        Err(e) => {
+            let code = if e.use_stderr() { 2 } else { 0 };
+            let _ = e.print();
+            return code;
+        }
+    };
+    match (&cli.command, &cli.eval) {
+        (Some(_), Some(_)) => {
+            emit_err("chasles: -e cannot be combined with run or check\n");
+            2
+        }
+        (None, Some(src)) => run_sources(&[("<-e>".into(), src.clone())], Mode::Run, &cli.opts),
+        (Some(Command::Run { files }), None) => match load(files) {
+            Ok(s) => run_sources(&s, Mode::Run, &cli.opts),
+            Err(code) => code,
+        },
+        (Some(Command::Check { files }), None) => match load(files) {
+            Ok(s) => run_sources(&s, Mode::Check, &cli.opts),
+            Err(code) => code,
+        },
+        (None, None) => {
+            if std::io::stdin().is_terminal() {
+                crate::repl::run_terminal(&Settings {
+                    frames: cli.opts.frames,
+                    digits: cli.opts.digits as usize,
+                    json: cli.opts.json,
+                })
+            } else {
+                match load(&["-".to_string()]) {
+                    Ok(s) => run_sources(&s, Mode::Run, &cli.opts),
+                    Err(code) => code,
+                }
+            }
+        }
+    }
+}

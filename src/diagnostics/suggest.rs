@@ -1,0 +1,46 @@
+//! "Did you mean …?" by edit distance, for unknown names and functions.
+
+/// Levenshtein distance between two strings (by characters).
+pub fn edit_distance(a: &str, b: &str) -> usize {
+    let a: Vec<char> = a.chars().collect();
+    let b: Vec<char> = b.chars().collect();
+    let mut prev: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.iter().enumerate() {
+        let mut cur = vec![i + 1; b.len() + 1];
+        for (j, cb) in b.iter().enumerate() {
+            let sub = prev[j] + usize::from(!ca.eq_ignore_ascii_case(cb));
+            cur[j + 1] = sub.min(prev[j + 1] + 1).min(cur[j] + 1);
+        }
+        prev = cur;
+    }
+    prev[b.len()]
+}
+
+/// The closest candidate within a third of the name's length (at least 1),
+/// or one that differs only in case or underscores.
+pub fn did_you_mean<'a>(name: &str, candidates: &[&'a str]) -> Option<&'a str> {
+    let squash = |s: &str| s.to_lowercase().replace('_', "");
+    if let Some(c) = candidates.iter().find(|c| squash(c) == squash(name)) {
+        return Some(c);
+    }
+    let limit = (name.chars().count() / 3).max(1);
+    candidates
+        .iter()
+        .map(|c| (edit_distance(name, c), *c))
+        .filter(|(d, _)| *d <= limit)
+        .min_by_key(|(d, c)| (*d, c.len()))
+        .map(|(_, c)| c)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn suggests_close_names() {
+        assert_eq!(did_you_mean("MatrixLog", &["MatrixLog3", "MatrixLog6", "Ad"]), Some("MatrixLog3"));
+        assert_eq!(did_you_mean("matrixlog6", &["MatrixLog3", "MatrixLog6"]), Some("MatrixLog6"));
+        assert_eq!(did_you_mean("T_ab", &["T_ac", "zzz"]), Some("T_ac"));
+        assert_eq!(did_you_mean("qqqq", &["MatrixLog3"]), None);
+    }
+}

@@ -1,0 +1,137 @@
+//! Reading a plain matrix as a group element (LANGUAGE.md §5): accepted
+//! silently within 1e-9 of the group, projected (SVD, ProjectToSO3) with a
+//! warning within 1e-2 (the book prints 3 digits), refused beyond, with the
+//! book's DistanceToSO3/DistanceToSE3 measure in the message.
+
+use nalgebra::DMatrix;
+
+use crate::check::ty::Kind;
+use crate::lie::{Mat2, Mat3, Mat4, project};
+
+/// Within this distance a matrix is taken as a group element as it is.
+pub const ACCEPT_TOL: f64 = 1e-9;
+/// Within this distance a matrix is projected onto the group, with a warning.
+pub const PROJECT_TOL: f64 = 1e-2;
+
+/// A group a plain matrix can be read as.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Group {
+    SO3,
+    SE3,
+    SO2,
+    SE2,
+}
+
+impl Group {
+    pub fn kind(self) -> Kind {
+        match self {
+            Group::SO3 => Kind::SO3,
+            Group::SE3 => Kind::SE3,
+            Group::SO2 => Kind::SO2,
+            Group::SE2 => Kind::SE2,
+        }
+    }
+    pub fn size(self) -> usize {
+        match self {
+            Group::SO3 | Group::SE2 => 3,
+            Group::SE3 => 4,
+            Group::SO2 => 2,
+        }
+    }
+    pub fn name(self) -> &'static str {
+        match self {
+            Group::SO3 => "SO(3)",
+            Group::SE3 => "SE(3)",
+            Group::SO2 => "SO(2)",
+            Group::SE2 => "SE(2)",
+        }
+    }
+    /// What a member is called in an error message.
+    pub fn noun(self) -> &'static str {
+        match self {
+            Group::SO3 | Group::SO2 => "a rotation matrix",
+            Group::SE3 | Group::SE2 => "a homogeneous transformation",
+        }
+    }
+}
+
+/// How a matrix relates to a group.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Membership {
+    /// Within [`ACCEPT_TOL`].
+    Exact(DMatrix<f64>),
+    /// Within [`PROJECT_TOL`]: the projection and the distance.
+    Projected(DMatrix<f64>, f64),
+    /// Too far: the distance (and the determinant of the rotation block).
+    Outside { distance: f64, det: f64 },
+}
+
+/// The distance of `m` from `group` (DistanceToSO3/SE3, §3.6), or None if
+/// the shape is wrong or an entry is not finite.
+pub fn distance(m: &DMatrix<f64>, group: Group) -> Option<f64> {
+    let n = group.size();
+    if m.nrows() != n || m.ncols() != n || m.iter().any(|x| !x.is_finite()) {
+        return None;
+    }
+    Some(match group {
+        Group::SO3 => project::distance_to_so3(&Mat3::from_iterator(m.iter().copied())),
+        Group::SE3 => project::distance_to_se3(&Mat4::from_iterator(m.iter().copied())),
+        Group::SO2 => project::distance_to_so2(&Mat2::from_iterator(m.iter().copied())),
+        Group::SE2 => project::distance_to_se2(&Mat3::from_iterator(m.iter().copied())),
+    })
+}
+
+/// The projection of `m` onto `group` (ProjectToSO3/SE3, §3.6).
+pub fn project(m: &DMatrix<f64>, group: Group) -> DMatrix<f64> {
+    let it = m.iter().copied();
+    match group {
+        Group::SO3 => dm(&project::project_to_so3(&Mat3::from_iterator(it))),
+        Group::SE3 => dm(&project::project_to_se3(&Mat4::from_iterator(it))),
+        Group::SO2 => dm(&project::project_to_so2(&Mat2::from_iterator(it))),
+        Group::SE2 => dm(&project::project_to_se2(&Mat3::from_iterator(it))),
+    }
+}
+
+/// Any fixed-size matrix as a dynamic one.
+pub fn dm<R: nalgebra::Dim, C: nalgebra::Dim, S: nalgebra::RawStorage<f64, R, C>>(
+    m: &nalgebra::Matrix<f64, R, C, S>,
+) -> DMatrix<f64> {
+    let (r, c) = m.shape();
+    DMatrix::from_iterator(r, c, m.iter().copied())
+}
+
+/// Classifies `m` against `group` (shape must already match).
+pub fn membership(m: &DMatrix<f64>, group: Group) -> Membership {
+    let dist = distance(m, group).unwrap_or(f64::INFINITY);
+    if dist <= ACCEPT_TOL {
+        Membership::Exact(m.clone())
+    } else if dist <= PROJECT_TOL {
+        Membership::Projected(project(m, group), dist)
+    } else {
+        let k = if matches!(group, Group::SO2 | Group::SE2) { 2 } else { 3 };
+        let det = if m.nrows() >= k && m.ncols() >= k {
+            m.view((0, 0), (k, k)).determinant()
+        } else {
+            f64::NAN
+        };
+        Membership::Outside {
+            distance: dist,
+            det,
+        }
+    }
+}
+
+/// The kind a freshly written matrix gets: SO(3) if it is a rotation, else
+/// SE(2) if it is a planar transform (3×3); SE(3) (4×4), SO(2) (2×2); else a
+/// plain matrix (LANGUAGE.md §5).
+pub fn classify(m: &DMatrix<f64>) -> Kind {
+    let is = |g: Group| distance(m, g).is_some_and(|d| d <= ACCEPT_TOL);
+    match (m.nrows(), m.ncols()) {
+        (3, 3) if is(Group::SO3) => Kind::SO3,
+        (3, 3) if is(Group::SE2) => Kind::SE2,
+        (4, 4) if is(Group::SE3) => Kind::SE3,
+        (2, 2) if is(Group::SO2) => Kind::SO2,
+        (r, 1) => Kind::Vector(Some(r)),
+        (r, c) => Kind::Matrix(Some(r), Some(c)),
+    }
+}

@@ -1,0 +1,148 @@
+//! `derive T_ce` (LANGUAGE.md §6): a breadth-first search over the known
+//! transforms — numeric or `given` — for a chain of frames from {c} to {e},
+//! using inverses where an edge points the other way.
+
+use std::collections::{HashMap, VecDeque};
+
+use super::interp::{Interp, Typed};
+use super::ops;
+use super::value::Value;
+use crate::check::ty::{Frame, Frames, Kind, Ty};
+use crate::diagnostics::{Diagnostic, ErrorKind};
+use crate::syntax::ast::Ident;
+use crate::syntax::ident::{NameFrames, base_name, name_frames};
+
+/// One step of a chain: a known name, used as is or inverted.
+#[derive(Debug, Clone)]
+struct Step {
+    name: String,
+    inverted: bool,
+}
+
+impl Interp<'_> {
+    /// Finds and evaluates a chain for `target`; returns its text and value.
+    pub(super) fn derive(&mut self, target: &Ident) -> Result<(String, Typed), Diagnostic> {
+        let NameFrames::Pair(from, to) = name_frames(&target.name) else {
+            return Err(Diagnostic::error(
+                ErrorKind::Name,
+                target.span,
+                format!("derive needs a name with two frames, like T_ce; '{}' has none", target.name),
+            ));
+        };
+        let rotations = base_name(&target.name).starts_with('R');
+        // Edges: x → y for each X_xy, both ways.
+        let mut edges: HashMap<String, Vec<(String, Step)>> = HashMap::new();
+        for name in self.env.names() {
+            if name == "ans" {
+                continue;
+            }
+            let b = &self.env.vars[name];
+            let fits = match b.ty.kind {
+                Kind::SE3 | Kind::SE2 => !rotations,
+                Kind::SO3 | Kind::SO2 => rotations,
+                _ => false,
+            };
+            if let (true, Frames::Pair(a, c)) = (fits, &b.ty.frames) {
+                if a.moved || c.moved {
+                    continue;
+                }
+                edges.entry(a.name.clone()).or_default().push((c.name.clone(), Step { name: name.clone(), inverted: false }));
+                edges.entry(c.name.clone()).or_default().push((a.name.clone(), Step { name: name.clone(), inverted: true }));
+            }
+        }
+        let Some(steps) = shortest_path(&edges, &from, &to) else {
+            let reach = |f: &str| {
+                let mut r: Vec<String> = reachable(&edges, f);
+                r.sort();
+                r.iter().map(|x| format!("{{{x}}}")).collect::<Vec<_>>().join(", ")
+            };
+            return Err(Diagnostic::error(
+                ErrorKind::Frame,
+                target.span,
+                format!("no chain of known transforms from {{{from}}} to {{{to}}}"),
+            )
+            .with_help(format!(
+                "from {{{from}}} the known transforms reach {}; from {{{to}}} they reach {}",
+                reach(&from),
+                reach(&to)
+            )));
+        };
+        let text = steps
+            .iter()
+            .map(|s| if s.inverted { format!("inv({})", s.name) } else { s.name.clone() })
+            .collect::<Vec<_>>()
+            .join(" * ");
+        let kind = self.env.vars[&steps[0].name].ty.kind.clone();
+        let ty = Ty::new(kind.clone(), Frames::Pair(Frame::named(from), Frame::named(to)));
+        if self.mode == super::env::Mode::Check {
+            return Ok((text, Typed { ty, val: None }));
+        }
+        let mut acc: Option<Value> = None;
+        for s in &steps {
+            let v = self.env.vars[&s.name].val.clone().ok_or_else(|| {
+                Diagnostic::error(ErrorKind::Name, target.span, format!("{} has no value", s.name))
+            })?;
+            let v = match (&v, s.inverted) {
+                (Value::Sym(x), true) => Value::Sym(x.clone().inverse()),
+                (_, true) => ops::inverse(&v).map_err(|m| Diagnostic::error(ErrorKind::Domain, target.span, m))?,
+                _ => v,
+            };
+            acc = Some(match acc {
+                None => v,
+                Some(Value::Sym(a)) => Value::Sym(super::symbolic::Sym::mul(a, to_sym(&v))),
+                Some(a) if v.is_symbolic() => Value::Sym(super::symbolic::Sym::mul(to_sym(&a), to_sym(&v))),
+                Some(a) => ops::mul(&a, &v, &kind).map_err(|m| Diagnostic::error(ErrorKind::Domain, target.span, m))?,
+            });
+        }
+        Ok((text, Typed { ty, val: acc }))
+    }
+}
+
+fn to_sym(v: &Value) -> super::symbolic::Sym {
+    match v {
+        Value::Sym(s) => s.clone(),
+        other => super::symbolic::Sym::Const(Box::new(other.clone()), crate::output::text::inline(other, 4)),
+    }
+}
+
+fn shortest_path(edges: &HashMap<String, Vec<(String, Step)>>, from: &str, to: &str) -> Option<Vec<Step>> {
+    if from == to {
+        return None;
+    }
+    let mut prev: HashMap<String, (String, Step)> = HashMap::new();
+    let mut queue = VecDeque::from([from.to_string()]);
+    while let Some(x) = queue.pop_front() {
+        for (y, step) in edges.get(&x).into_iter().flatten() {
+            if y != from && !prev.contains_key(y) {
+                prev.insert(y.clone(), (x.clone(), step.clone()));
+                if y == to {
+                    let mut path = Vec::new();
+                    let mut cur = to.to_string();
+                    while cur != from {
+                        let (p, s) = prev[&cur].clone();
+                        path.push(s);
+                        cur = p;
+                    }
+                    path.reverse();
+                    return Some(path);
+                }
+                queue.push_back(y.clone());
+            }
+        }
+    }
+    None
+}
+
+fn reachable(edges: &HashMap<String, Vec<(String, Step)>>, from: &str) -> Vec<String> {
+    let mut seen = vec![from.to_string()];
+    let mut queue = VecDeque::from([from.to_string()]);
+    while let Some(x) = queue.pop_front() {
+        for (y, _) in edges.get(&x).into_iter().flatten() {
+            if !seen.contains(y) {
+                seen.push(y.clone());
+                queue.push_back(y.clone());
+            }
+        }
+    }
+    seen
+}

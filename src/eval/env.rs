@@ -1,0 +1,79 @@
+//! The session state: bindings with their static type (kind and frames)
+//! and, when running, their value; user functions; settings.
+
+use std::collections::HashMap;
+use std::rc::Rc;
+
+use super::value::{UserFn, Value};
+use crate::check::ty::Ty;
+
+/// What to do with a frame mismatch (`--frames strict|warn|off`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum FrameMode {
+    /// An error (the default).
+    #[default]
+    Strict,
+    /// A warning; the result is untagged.
+    Warn,
+    /// Ignored; the result is untagged.
+    Off,
+}
+
+impl FrameMode {
+    pub fn parse(s: &str) -> Option<FrameMode> {
+        match s {
+            "strict" => Some(FrameMode::Strict),
+            "warn" => Some(FrameMode::Warn),
+            "off" => Some(FrameMode::Off),
+            _ => None,
+        }
+    }
+    pub fn as_str(self) -> &'static str {
+        match self {
+            FrameMode::Strict => "strict",
+            FrameMode::Warn => "warn",
+            FrameMode::Off => "off",
+        }
+    }
+}
+
+/// Check only (no numbers) or check and evaluate.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Mode {
+    /// `chasles check`: types and frames only.
+    Check,
+    /// `chasles run`, `-e`, the REPL: types, frames and values.
+    Run,
+}
+
+/// A name's binding: its static type and (when running) its value.
+#[derive(Debug, Clone)]
+pub struct Binding {
+    pub ty: Ty,
+    pub val: Option<Value>,
+    /// True for `given` symbols.
+    pub symbolic: bool,
+}
+
+/// All bindings of a session. Statements only insert after they succeed,
+/// so an error never leaves a partial change behind.
+#[derive(Debug, Clone, Default)]
+pub struct Env {
+    pub vars: HashMap<String, Binding>,
+    pub fns: HashMap<String, Rc<UserFn>>,
+}
+
+impl Env {
+    pub fn get(&self, name: &str) -> Option<&Binding> {
+        self.vars.get(name)
+    }
+    pub fn set(&mut self, name: &str, b: Binding) {
+        self.vars.insert(name.to_string(), b);
+    }
+    /// Names in sorted order (for `:vars` and derive's deterministic search).
+    pub fn names(&self) -> Vec<&String> {
+        let mut v: Vec<&String> = self.vars.keys().collect();
+        v.sort();
+        v
+    }
+}

@@ -1,0 +1,486 @@
+//! Expressions: each node's kind and frames by the rules of
+//! [`crate::check::rules`], and its value through [`super::ops`] and the
+//! builtin table. Symbolic operands give symbolic results.
+
+use std::f64::consts::PI;
+
+use super::env::Mode;
+use super::interp::{Interp, MAX_CALL_DEPTH, Typed};
+use super::ops::{self, Sel};
+use super::symbolic::Sym;
+use super::value::Value;
+use crate::builtins::{self, Args};
+use crate::check::rules::{self, Operands};
+use crate::check::ty::{Frames, Kind, Ty};
+use crate::diagnostics::{Diagnostic, ErrorKind, suggest};
+use crate::syntax::ast::{BinOp, Expr, ExprKind, IndexArg, Span, UnOp};
+
+fn strip(t: &Ty) -> Ty {
+    Ty::plain(t.kind.clone())
+}
+
+/// A value as a symbolic operand (numbers become constants).
+fn to_sym(v: &Value) -> Sym {
+    match v {
+        Value::Sym(s) => s.clone(),
+        other => Sym::Const(Box::new(other.clone()), crate::output::text::inline(other, 4)),
+    }
+}
+
+/// The runtime kind refines the static one (a literal that is a rotation
+/// is SO(3)); frames stay as the checker found them.
+fn refine(ty: Ty, val: &Option<Value>) -> Ty {
+    match val {
+        Some(v @ (Value::Num { .. } | Value::Tuple(_))) => Ty::new(v.kind(), ty.frames),
+        _ => ty,
+    }
+}
+
+impl Interp<'_> {
+    fn running(&self) -> bool {
+        self.mode == Mode::Run
+    }
+
+    fn domain(&self, span: Span, msg: impl Into<String>) -> Diagnostic {
+        Diagnostic::error(ErrorKind::Domain, span, msg)
+    }
+
+    /// Checks (and evaluates) an expression.
+    pub fn expr(&mut self, e: &Expr) -> Result<Typed, Diagnostic> {
+        match &e.kind {
+            ExprKind::Number(x) => Ok(Typed { ty: Ty::scalar(), val: self.running().then(|| Value::scalar(*x)) }),
+            ExprKind::Bool(b) => Ok(Typed { ty: Ty::plain(Kind::Bool), val: self.running().then_some(Value::Bool(*b)) }),
+            ExprKind::Var(name) => self.var(name, e.span),
+            ExprKind::Unary { op, operand } => {
+                let t = self.expr(operand)?;
+                if *op == UnOp::Pos {
+                    return Ok(t);
+                }
+                let ty = match rules::neg(&t.ty) {
+                    Ok(ty) => ty,
+                    Err(err) => {
+                        self.rule_failure(err, e.span, None, Some(operand.span), None)?;
+                        strip(&t.ty)
+                    }
+                };
+                let val = match t.val {
+                    Some(Value::Sym(s)) => Some(Value::Sym(Sym::Neg(Box::new(s)))),
+                    Some(v) => Some(ops::neg(&v, &ty.kind).map_err(|m| self.domain(e.span, m))?),
+                    None => None,
+                };
+                Ok(Typed { ty, val })
+            }
+            ExprKind::Degrees(inner) => {
+                let t = self.expr(inner)?;
+                if !t.ty.kind.maybe_scalar() {
+                    return Err(Diagnostic::error(
+                        ErrorKind::Type,
+                        inner.span,
+                        format!("degrees apply to a number, not a {}", t.ty.kind),
+                    ));
+                }
+                let val = match t.val {
+                    Some(Value::Sym(s)) => Some(Value::Sym(Sym::mul(s, Sym::Name("deg".into())))),
+                    Some(v) => Some(Value::scalar(v.as_scalar().unwrap_or(f64::NAN) * PI / 180.0)),
+                    None => None,
+                };
+                Ok(Typed { ty: Ty::scalar(), val })
+            }
+            ExprKind::Binary { op, lhs, rhs, op_span, .. } => self.binary(*op, lhs, rhs, *op_span, e.span),
+            ExprKind::Call { func, args } => self.call(&func.name, func.span, args, e.span),
+            ExprKind::Member { base, member } => {
+                let t = self.expr(base)?;
+                let ty = match rules::member(&t.ty, &member.name) {
+                    Ok(ty) => ty,
+                    Err(err) => {
+                        self.rule_failure(err, member.span, None, None, None)?;
+                        unreachable_type()
+                    }
+                };
+                let val = match t.val {
+                    Some(Value::Sym(s)) => Some(Value::Sym(if member.name == "T" {
+                        Sym::Transpose(Box::new(s))
+                    } else {
+                        Sym::Member(Box::new(s), member.name.clone())
+                    })),
+                    Some(v) => Some(ops::member(&v, &member.name).map_err(|m| {
+                        Diagnostic::error(ErrorKind::Type, member.span, m)
+                    })?),
+                    None => None,
+                };
+                let ty = refine(ty, &val);
+                Ok(Typed { ty, val })
+            }
+            ExprKind::Index { base, args } => self.index(base, args, e.span),
+            ExprKind::Paren(items) => self.paren(items, e.span),
+            ExprKind::Brackets(rows) => self.brackets(rows, e.span),
+            ExprKind::Mech(spec) => self.mech(spec, e.span),
+        }
+    }
+
+    fn var(&mut self, name: &str, span: Span) -> Result<Typed, Diagnostic> {
+        if let Some(b) = self.env.get(name) {
+            return Ok(Typed { ty: b.ty.clone(), val: if self.running() { b.val.clone() } else { None } });
+        }
+        match name {
+            "inf" | "Inf" | "∞" => return Ok(Typed { ty: Ty::scalar(), val: self.running().then(|| Value::scalar(f64::INFINITY)) }),
+            "e" => return Ok(Typed { ty: Ty::scalar(), val: self.running().then(|| Value::scalar(std::f64::consts::E)) }),
+            _ => {}
+        }
+        if builtins::lookup(name).is_some() || self.env.fns.contains_key(name) {
+            return Err(Diagnostic::error(ErrorKind::Name, span, format!("'{name}' is a function"))
+                .with_help(format!("call it: {name}(...)")));
+        }
+        let mut d = Diagnostic::error(ErrorKind::Name, span, format!("unknown name '{name}'"));
+        let mut candidates: Vec<&str> = self.env.vars.keys().map(String::as_str).collect();
+        candidates.extend(builtins::all_names());
+        if let Some(s) = suggest::did_you_mean(name, &candidates) {
+            d = d.with_help(format!("did you mean '{s}'?"));
+        } else if self.mode == Mode::Check || name.contains('_') {
+            d = d.with_help(format!("give it a value first ({name} = ...) or declare it: given {name} : SE3"));
+        }
+        Err(d)
+    }
+
+    fn binary(&mut self, op: BinOp, lhs: &Expr, rhs: &Expr, op_span: Span, span: Span) -> Result<Typed, Diagnostic> {
+        let l = self.expr(lhs)?;
+        let r = self.expr(rhs)?;
+        let ops_text = Operands { lhs: self.text(lhs.span), rhs: self.text(rhs.span) };
+        let literal = literal_number(rhs).or_else(|| r.val.as_ref().and_then(Value::as_scalar));
+        let rule = |a: &Ty, b: &Ty| match op {
+            BinOp::Mul => rules::mul(a, b, ops_text),
+            BinOp::Add | BinOp::Sub => rules::add(a, b),
+            BinOp::Div => rules::div(a, b),
+            BinOp::Pow => rules::pow(a, b, literal),
+        };
+        let ty = match rule(&l.ty, &r.ty) {
+            Ok(ty) => ty,
+            Err(err) => {
+                self.rule_failure(err, span, Some(lhs.span), Some(rhs.span), Some(op_span))?;
+                rule(&strip(&l.ty), &strip(&r.ty)).map_err(|e| Diagnostic::error(ErrorKind::Type, op_span, e.message))?
+            }
+        };
+        let val = match (l.val, r.val) {
+            (Some(a), Some(b)) if a.is_symbolic() || b.is_symbolic() => {
+                let (a, b) = (to_sym(&a), to_sym(&b));
+                Some(Value::Sym(match op {
+                    BinOp::Mul => Sym::mul(a, b),
+                    BinOp::Add => Sym::Add(Box::new(a), Box::new(b)),
+                    BinOp::Sub => Sym::Sub(Box::new(a), Box::new(b)),
+                    BinOp::Div => Sym::Div(Box::new(a), Box::new(b)),
+                    BinOp::Pow if literal == Some(-1.0) => a.inverse(),
+                    BinOp::Pow => Sym::Pow(Box::new(a), Box::new(b)),
+                }))
+            }
+            (Some(a), Some(b)) => {
+                let res = match op {
+                    BinOp::Mul => ops::mul(&a, &b, &ty.kind),
+                    BinOp::Add => ops::add(&a, &b, false, &ty.kind),
+                    BinOp::Sub => ops::add(&a, &b, true, &ty.kind),
+                    BinOp::Div => ops::div(&a, &b, &ty.kind),
+                    BinOp::Pow => match b.as_scalar() {
+                        Some(x) => ops::pow(&a, x, &ty.kind),
+                        None => Err("the exponent must be a number".into()),
+                    },
+                };
+                Some(res.map_err(|m| self.domain(op_span, m))?)
+            }
+            _ => None,
+        };
+        Ok(Typed { ty: refine(ty, &val), val })
+    }
+
+    fn call(&mut self, name: &str, name_span: Span, args: &[Expr], span: Span) -> Result<Typed, Diagnostic> {
+        if let Some(f) = self.env.fns.get(name).cloned() {
+            return self.user_call(&f, args, span);
+        }
+        let Some(b) = builtins::lookup(name) else {
+            let mut d = Diagnostic::error(ErrorKind::Name, name_span, format!("unknown function '{name}'"));
+            let mut names = builtins::all_names();
+            names.extend(self.env.fns.keys().map(String::as_str));
+            if let Some(s) = suggest::did_you_mean(name, &names) {
+                d = d.with_help(format!("did you mean {s}?"));
+            }
+            return Err(d);
+        };
+        let mut typed = Vec::with_capacity(args.len());
+        for (i, a) in args.iter().enumerate() {
+            // Rot(x, θ): the axis may be written as a bare x, y or z.
+            if i == 0 && matches!(b.name, "Rot") {
+                if let ExprKind::Var(axis) = &a.kind {
+                    if self.env.get(axis).is_none() {
+                        if let Some(v) = match axis.as_str() {
+                            "x" => Some([1.0, 0.0, 0.0]),
+                            "y" => Some([0.0, 1.0, 0.0]),
+                            "z" => Some([0.0, 0.0, 1.0]),
+                            _ => None,
+                        } {
+                            let val = self.running().then(|| Value::vector(Kind::Vector(Some(3)), &v));
+                            typed.push(Typed { ty: Ty::plain(Kind::Vector(Some(3))), val });
+                            continue;
+                        }
+                    }
+                }
+            }
+            typed.push(self.expr(a)?);
+        }
+        let tys: Vec<Ty> = typed.iter().map(|t| t.ty.clone()).collect();
+        let ty = match b.check(&tys) {
+            Ok(ty) => ty,
+            Err(err) => {
+                let at = err.arg.and_then(|i| args.get(i)).map_or(span, |a| a.span);
+                let d = Diagnostic::error(err.kind, at, err.message).with_help(format!("signature: {}", b.signature));
+                if err.kind == ErrorKind::Frame && self.frames != super::env::FrameMode::Strict {
+                    if self.frames == super::env::FrameMode::Warn {
+                        let mut w = d;
+                        w.severity = crate::diagnostics::Severity::Warning;
+                        self.warnings.push(w);
+                    }
+                    let plain: Vec<Ty> = tys.iter().map(strip).collect();
+                    b.check(&plain).map_err(|e| Diagnostic::error(e.kind, at, e.message))?
+                } else {
+                    return Err(d);
+                }
+            }
+        };
+        if !self.running() {
+            return Ok(Typed { ty, val: None });
+        }
+        let vals: Vec<Value> = typed.into_iter().map(|t| t.val.unwrap_or_else(|| Value::scalar(f64::NAN))).collect();
+        if vals.iter().any(Value::is_symbolic) {
+            let sym = match b.name {
+                "inv" | "RotInv" | "TransInv" => to_sym(&vals[0]).inverse(),
+                _ => Sym::Call(name.to_string(), vals.iter().map(to_sym).collect()),
+            };
+            return Ok(Typed { ty, val: Some(Value::Sym(sym)) });
+        }
+        let mut a = Args {
+            name: b.name,
+            signature: b.signature,
+            vals,
+            spans: args.iter().map(|a| a.span).collect(),
+            call_span: span,
+            warnings: &mut self.warnings,
+        };
+        let v = (b.eval)(&mut a)?;
+        let val = Some(v);
+        Ok(Typed { ty: refine(ty, &val), val })
+    }
+
+    fn user_call(&mut self, f: &super::value::UserFn, args: &[Expr], span: Span) -> Result<Typed, Diagnostic> {
+        if args.len() != f.params.len() {
+            return Err(Diagnostic::error(
+                ErrorKind::Arity,
+                span,
+                format!("{} takes {} argument(s), got {}", f.name, f.params.len(), args.len()),
+            )
+            .with_help(format!("signature: {}({})", f.name, f.params.join(", "))));
+        }
+        if self.depth >= MAX_CALL_DEPTH {
+            return Err(self.domain(span, format!("function calls nested deeper than {MAX_CALL_DEPTH} (recursion?)")));
+        }
+        let mut bound = Vec::new();
+        for (p, a) in f.params.iter().zip(args) {
+            let t = self.expr(a)?;
+            bound.push((p.clone(), t));
+        }
+        let saved: Vec<(String, Option<super::env::Binding>)> =
+            f.params.iter().map(|p| (p.clone(), self.env.vars.get(p).cloned())).collect();
+        for (p, t) in bound {
+            self.env.set(&p, super::env::Binding { ty: t.ty, val: t.val, symbolic: false });
+        }
+        self.depth += 1;
+        let result = self.expr(&f.body);
+        self.depth -= 1;
+        for (p, old) in saved {
+            match old {
+                Some(b) => self.env.set(&p, b),
+                None => {
+                    self.env.vars.remove(&p);
+                }
+            }
+        }
+        result
+    }
+
+    fn index(&mut self, base: &Expr, args: &[IndexArg], span: Span) -> Result<Typed, Diagnostic> {
+        let t = self.expr(base)?;
+        let mut sels = Vec::new();
+        for a in args {
+            match a {
+                IndexArg::All(_) => sels.push(Sel::All),
+                IndexArg::Expr(e) => {
+                    let it = self.expr(e)?;
+                    if !it.ty.kind.maybe_scalar() {
+                        return Err(Diagnostic::error(ErrorKind::Type, e.span, "an index must be a number"));
+                    }
+                    sels.push(Sel::At(it.val.as_ref().and_then(Value::as_scalar).unwrap_or(f64::NAN)));
+                }
+            }
+        }
+        let outer = match t.ty.frames.outer() {
+            Some(a) => Frames::One(a.clone()),
+            None => Frames::None,
+        };
+        let ty = match (&t.ty.kind, sels.as_slice()) {
+            (Kind::Tuple(ks), [Sel::At(i)]) if i.fract() == 0.0 && *i >= 1.0 && (*i as usize) <= ks.len() => {
+                Ty::plain(ks[*i as usize - 1].clone())
+            }
+            (Kind::Tuple(_), _) => Ty::plain(Kind::Unknown),
+            (k, _) if k.shape().is_none() => {
+                return Err(Diagnostic::error(ErrorKind::Type, span, format!("cannot index a {k}")));
+            }
+            (_, [Sel::All, Sel::At(_)]) => Ty::new(Kind::Vector(None), outer),
+            (_, [Sel::At(_), Sel::All]) => Ty::plain(Kind::Matrix(Some(1), None)),
+            _ => Ty::scalar(),
+        };
+        let val = match t.val {
+            Some(Value::Sym(s)) => Some(Value::Sym(Sym::Call(format!("{s}[]"), vec![]))),
+            Some(v) => Some(ops::index(&v, &sels).map_err(|m| self.domain(span, m))?),
+            None => None,
+        };
+        Ok(Typed { ty: refine(ty, &val), val })
+    }
+
+    fn paren(&mut self, items: &[Expr], _span: Span) -> Result<Typed, Diagnostic> {
+        let mut ts = Vec::with_capacity(items.len());
+        for i in items {
+            ts.push(self.expr(i)?);
+        }
+        let all_scalar = ts.iter().all(|t| t.ty.kind.maybe_scalar() && t.ty.kind == Kind::Scalar);
+        if all_scalar {
+            let ty = Ty::plain(Kind::Vector(Some(ts.len())));
+            let val = if self.running() {
+                if ts.iter().any(|t| t.val.as_ref().is_some_and(Value::is_symbolic)) {
+                    let parts = ts.iter().map(|t| t.val.as_ref().map_or(Sym::Identity, to_sym)).collect();
+                    Some(Value::Sym(Sym::Call(String::new(), parts)))
+                } else {
+                    let xs: Vec<f64> = ts.iter().map(|t| t.val.as_ref().and_then(Value::as_scalar).unwrap_or(f64::NAN)).collect();
+                    Some(Value::vector(Kind::Vector(Some(xs.len())), &xs))
+                }
+            } else {
+                None
+            };
+            return Ok(Typed { ty, val });
+        }
+        let ty = Ty::plain(Kind::Tuple(ts.iter().map(|t| t.ty.kind.clone()).collect()));
+        let val = ts.iter().map(|t| t.val.clone()).collect::<Option<Vec<_>>>().map(Value::Tuple);
+        Ok(Typed { ty, val })
+    }
+
+    fn brackets(&mut self, rows: &[Vec<Expr>], span: Span) -> Result<Typed, Diagnostic> {
+        let mut trows = Vec::with_capacity(rows.len());
+        for row in rows {
+            let mut tr = Vec::with_capacity(row.len());
+            for e in row {
+                let t = self.expr(e)?;
+                if t.ty.kind.shape().is_none() {
+                    return Err(Diagnostic::error(
+                        ErrorKind::Type,
+                        e.span,
+                        format!("a {} cannot go inside [ ]", t.ty.kind),
+                    ));
+                }
+                tr.push(t);
+            }
+            trows.push(tr);
+        }
+        let ty = bracket_type(&trows);
+        if !self.running() {
+            return Ok(Typed { ty, val: None });
+        }
+        let any_sym = trows.iter().flatten().any(|t| t.val.as_ref().is_some_and(Value::is_symbolic));
+        if any_sym {
+            let sym = if trows.len() == 1 && trows[0].len() == 1 {
+                Sym::Bracket(Box::new(to_sym(trows[0][0].val.as_ref().unwrap_or(&Value::scalar(f64::NAN)))))
+            } else {
+                Sym::Call("block".into(), trows.iter().flatten().filter_map(|t| t.val.as_ref()).map(to_sym).collect())
+            };
+            return Ok(Typed { ty, val: Some(Value::Sym(sym)) });
+        }
+        let vrows: Vec<Vec<Value>> = trows
+            .into_iter()
+            .map(|r| r.into_iter().map(|t| t.val.unwrap_or_else(|| Value::scalar(f64::NAN))).collect())
+            .collect();
+        let v = ops::brackets(&vrows).map_err(|m| Diagnostic::error(ErrorKind::Type, span, m))?;
+        let val = Some(v);
+        Ok(Typed { ty: refine(ty, &val), val })
+    }
+
+    fn mech(&mut self, spec: &crate::syntax::ast::MechSpec, span: Span) -> Result<Typed, Diagnostic> {
+        use crate::mech::{MechPart, Mechanism};
+        if let Some((word, s)) = spec.unknown.first() {
+            return Err(Diagnostic::error(ErrorKind::Syntax, *s, format!("unknown mechanism item '{word}'"))
+                .with_help("items: links N; joints …; legs K CHAIN; planar | spatial | spherical"));
+        }
+        let joints: Vec<(i64, &str)> = spec.joints.iter().map(|j| (j.count, j.letters.as_str())).collect();
+        let m = Mechanism::from_spec(
+            spec.space.as_ref().map(|(s, _)| s.as_str()),
+            spec.links.map(|(n, _)| n),
+            &joints,
+            spec.legs.as_ref().map(|(k, c, _)| (*k, c.as_str())),
+        )
+        .map_err(|e| {
+            let at = match e.part {
+                MechPart::Links => spec.links.map(|(_, s)| s),
+                MechPart::Joint(i) => spec.joints.get(i).map(|j| j.span),
+                MechPart::Legs => spec.legs.as_ref().map(|(_, _, s)| *s),
+                MechPart::Space => spec.space.as_ref().map(|(_, s)| *s),
+                MechPart::Whole => None,
+            };
+            let mut d = Diagnostic::error(ErrorKind::Domain, at.unwrap_or(span), e.message.clone());
+            if let Some(h) = &e.help {
+                d = d.with_help(h.clone());
+            }
+            d
+        })?;
+        let val = self.running().then(|| Value::Mech(std::rc::Rc::new(m)));
+        Ok(Typed { ty: Ty::plain(Kind::Mechanism), val })
+    }
+}
+
+fn unreachable_type() -> Ty {
+    Ty::plain(Kind::Unknown)
+}
+
+/// `2`, `-1`: the exponent of `X^-1` without evaluating.
+fn literal_number(e: &Expr) -> Option<f64> {
+    match &e.kind {
+        ExprKind::Number(x) => Some(*x),
+        ExprKind::Unary { op: UnOp::Neg, operand } => literal_number(operand).map(|x| -x),
+        _ => None,
+    }
+}
+
+/// The static type of `[ ... ]`: the book's bracket of one vector, a column
+/// vector of one row of numbers, else a block matrix whose frames are the
+/// one pair tag inside it (`[R_sb, p_sb; 0, 0, 0, 1]` is {s}←{b}).
+fn bracket_type(rows: &[Vec<Typed>]) -> Ty {
+    if rows.len() == 1 && rows[0].len() == 1 {
+        let t = &rows[0][0].ty;
+        return match t.kind.vec_len() {
+            Some(3) => Ty::new(Kind::So3, t.frames.clone()),
+            Some(6) => Ty::new(Kind::Se3, t.frames.clone()),
+            _ => t.clone(),
+        };
+    }
+    let all_scalar = rows.iter().flatten().all(|t| t.ty.kind == Kind::Scalar);
+    if all_scalar && rows.len() == 1 {
+        return Ty::plain(Kind::Vector(Some(rows[0].len())));
+    }
+    let mut frames = Frames::None;
+    for t in rows.iter().flatten() {
+        if let Frames::Pair(..) = t.ty.frames {
+            if frames.is_none() {
+                frames = t.ty.frames.clone();
+            } else if frames != t.ty.frames {
+                frames = Frames::None;
+                break;
+            }
+        }
+    }
+    // Shape: sum of widths of the first row, sum of heights of the first column.
+    let width: Option<usize> = rows[0].iter().map(|t| t.ty.kind.shape().and_then(|s| s.1)).sum();
+    let height: Option<usize> = rows.iter().map(|r| r[0].ty.kind.shape().and_then(|s| s.0)).sum();
+    Ty::new(Kind::Matrix(height, width), frames)
+}

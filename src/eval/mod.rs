@@ -1,0 +1,12 @@
+//! Evaluation: values, the session environment, and the interpreter that
+//! walks each statement once, checking kinds and frames by
+//! [`crate::check`]'s rules and computing values through [`crate::lie`].
+
+pub mod convert;
+mod derive;
+pub mod env;
+mod expr;
+pub mod interp;
+pub mod ops;
+pub mod symbolic;
+pub mod value;

@@ -1,0 +1,324 @@
+//! Arithmetic on values: products (including `T * p` for a point), sums,
+//! powers, inverses in closed form, members, indexing and MATLAB-style
+//! block concatenation. Errors are plain messages; the interpreter adds
+//! spans. Sizes are bounded so that no input can exhaust memory.
+
+use nalgebra::DMatrix;
+
+use super::convert::{self, dm};
+use super::value::Value;
+use crate::check::ty::Kind;
+use crate::lie::{Mat2, Mat3, Mat4, Vec6, se2, se3};
+
+/// Largest matrix side accepted anywhere.
+pub const MAX_DIM: usize = 10_000;
+/// Largest number of entries of one matrix.
+pub const MAX_ELEMENTS: usize = 4_000_000;
+
+fn num(v: &Value) -> Result<(&Kind, &DMatrix<f64>), String> {
+    match v {
+        Value::Num { kind, m } => Ok((kind, m)),
+        other => Err(format!("expected numbers, found a {}", other.kind())),
+    }
+}
+
+/// The value of kind `kind` holding `m`; plain matrices that are exactly
+/// group elements are recognized (a product of rotations stays a rotation).
+fn out(kind: &Kind, m: DMatrix<f64>) -> Value {
+    let kind = match kind {
+        Kind::Matrix(..) | Kind::Unknown => convert::classify(&m),
+        Kind::Vector(_) => Kind::Vector(Some(m.nrows())),
+        k => k.clone(),
+    };
+    let kind = if m.shape() == (1, 1) && !matches!(kind, Kind::Scalar) && kind.vec_len().is_none() {
+        Kind::Scalar
+    } else {
+        kind
+    };
+    Value::Num { kind, m }
+}
+
+/// `l * r` with the result kind the checker found.
+pub fn mul(l: &Value, r: &Value, kind: &Kind) -> Result<Value, String> {
+    let (lk, lm) = num(l)?;
+    let (rk, rm) = num(r)?;
+    if lm.shape() == (1, 1) && *lk == Kind::Scalar {
+        return Ok(Value::Num { kind: kind.clone(), m: rm * lm[0] });
+    }
+    if rm.shape() == (1, 1) && *rk == Kind::Scalar {
+        return Ok(Value::Num { kind: kind.clone(), m: lm * rm[0] });
+    }
+    // A point transformed by a homogeneous transform: T p = R p + t.
+    if lm.shape() == (4, 4) && rm.shape() == (3, 1) {
+        let t = Mat4::from_iterator(lm.iter().copied());
+        let p = t.fixed_view::<3, 3>(0, 0) * crate::lie::Vec3::from_iterator(rm.iter().copied())
+            + t.fixed_view::<3, 1>(0, 3);
+        return Ok(Value::Num { kind: kind.clone(), m: dm(&p) });
+    }
+    if lm.shape() == (3, 3) && rm.shape() == (2, 1) && matches!(lk, Kind::SE2 | Kind::Se2) {
+        let t = Mat3::from_iterator(lm.iter().copied());
+        let p = t.fixed_view::<2, 2>(0, 0) * nalgebra::Vector2::new(rm[0], rm[1]) + t.fixed_view::<2, 1>(0, 2);
+        return Ok(Value::Num { kind: kind.clone(), m: dm(&p) });
+    }
+    if lm.ncols() != rm.nrows() {
+        return Err(format!(
+            "cannot multiply a {}×{} by a {}×{}",
+            lm.nrows(),
+            lm.ncols(),
+            rm.nrows(),
+            rm.ncols()
+        ));
+    }
+    check_size(lm.nrows(), rm.ncols())?;
+    Ok(out(kind, lm * rm))
+}
+
+/// Refuses results larger than [`MAX_ELEMENTS`].
+pub fn check_size(r: usize, c: usize) -> Result<(), String> {
+    if r > MAX_DIM || c > MAX_DIM || r.saturating_mul(c) > MAX_ELEMENTS {
+        return Err(format!("a {r}×{c} result is too large (at most {MAX_ELEMENTS} entries)"));
+    }
+    Ok(())
+}
+
+/// `l + r` or `l - r`.
+pub fn add(l: &Value, r: &Value, subtract: bool, kind: &Kind) -> Result<Value, String> {
+    let (_, lm) = num(l)?;
+    let (_, rm) = num(r)?;
+    if lm.shape() != rm.shape() {
+        return Err(format!(
+            "cannot add a {}×{} and a {}×{}",
+            lm.nrows(),
+            lm.ncols(),
+            rm.nrows(),
+            rm.ncols()
+        ));
+    }
+    Ok(out(kind, if subtract { lm - rm } else { lm + rm }))
+}
+
+/// `-x`.
+pub fn neg(v: &Value, kind: &Kind) -> Result<Value, String> {
+    let (_, m) = num(v)?;
+    Ok(Value::Num { kind: kind.clone(), m: -m })
+}
+
+/// `l / r` with a scalar divisor.
+pub fn div(l: &Value, r: &Value, kind: &Kind) -> Result<Value, String> {
+    let (_, lm) = num(l)?;
+    let d = r.as_scalar().ok_or("the divisor must be a number")?;
+    if d == 0.0 {
+        return Err("division by zero".into());
+    }
+    Ok(Value::Num { kind: kind.clone(), m: lm / d })
+}
+
+/// `b ^ e`: real powers of numbers, integer powers of square matrices
+/// (by repeated squaring; `X^-1` is the inverse).
+pub fn pow(b: &Value, e: f64, kind: &Kind) -> Result<Value, String> {
+    let (bk, bm) = num(b)?;
+    if *bk == Kind::Scalar {
+        let x = bm[0].powf(e);
+        if x.is_nan() && !bm[0].is_nan() && !e.is_nan() {
+            return Err(format!("{}^{e} is not a real number", bm[0]));
+        }
+        return Ok(Value::scalar(x));
+    }
+    if !bm.is_square() {
+        return Err("powers need a square matrix".into());
+    }
+    if e.fract() != 0.0 || !e.is_finite() || e.abs() > 1e15 {
+        return Err(format!("a matrix power needs a whole exponent, got {e}"));
+    }
+    let mut base = if e < 0.0 { num_inverse(bk, bm)? } else { bm.clone() };
+    let mut n = e.abs() as u64;
+    let mut acc = DMatrix::identity(bm.nrows(), bm.ncols());
+    while n > 0 {
+        if n & 1 == 1 {
+            acc = &acc * &base;
+        }
+        n >>= 1;
+        if n > 0 {
+            base = &base * &base;
+        }
+    }
+    Ok(out(kind, acc))
+}
+
+/// The inverse: closed forms for group elements (Prop. 3.3, (3.64)),
+/// LU for other square matrices, an error for singular ones.
+pub fn inverse(v: &Value) -> Result<Value, String> {
+    let (k, m) = num(v)?;
+    if *k == Kind::Scalar {
+        if m[0] == 0.0 {
+            return Err("inverse of zero".into());
+        }
+        return Ok(Value::scalar(1.0 / m[0]));
+    }
+    Ok(out(k, num_inverse(k, m)?))
+}
+
+fn num_inverse(k: &Kind, m: &DMatrix<f64>) -> Result<DMatrix<f64>, String> {
+    Ok(match (k, m.shape()) {
+        (Kind::SO3 | Kind::SO2, _) => m.transpose(),
+        (Kind::SE3, _) => dm(&se3::inv(&Mat4::from_iterator(m.iter().copied()))),
+        (Kind::SE2, _) => dm(&se2::inv(&Mat3::from_iterator(m.iter().copied()))),
+        (_, (r, c)) if r == c => {
+            let det = m.determinant();
+            let scale = m.abs().max().max(f64::MIN_POSITIVE).powi(r as i32);
+            if det == 0.0 || !det.is_finite() || det.abs() <= 1e-14 * scale {
+                return Err(format!(
+                    "the matrix is singular (determinant {}); it has no inverse",
+                    crate::output::number::fmt_num(det, 6)
+                ));
+            }
+            m.clone().try_inverse().ok_or("the matrix is singular; it has no inverse")?
+        }
+        _ => return Err(format!("only square matrices have inverses, not {}×{}", m.nrows(), m.ncols())),
+    })
+}
+
+/// `x.T`.
+pub fn transpose(v: &Value) -> Value {
+    match v {
+        Value::Num { kind, m } => {
+            let kind = match kind {
+                Kind::SO3 | Kind::SO2 | Kind::Scalar => kind.clone(),
+                Kind::Adjoint { transposed } => Kind::Adjoint { transposed: !transposed },
+                _ if m.nrows() == 1 => Kind::Vector(Some(m.ncols())),
+                _ => Kind::Matrix(Some(m.ncols()), Some(m.nrows())),
+            };
+            Value::Num { kind, m: m.transpose() }
+        }
+        other => other.clone(),
+    }
+}
+
+/// `x.member` (`.R .p .w .v .m .f`; `.T` is [`transpose`]).
+pub fn member(v: &Value, name: &str) -> Result<Value, String> {
+    if name == "T" {
+        return Ok(transpose(v));
+    }
+    let (k, m) = num(v)?;
+    let v3 = |a: f64, b: f64, c: f64| Value::vector(Kind::Vector(Some(3)), &[a, b, c]);
+    match (name, m.shape()) {
+        ("R", (4, 4)) => Ok(Value::Num { kind: Kind::SO3, m: m.view((0, 0), (3, 3)).into_owned() }),
+        ("R", (3, 3)) if *k == Kind::SE2 => Ok(Value::Num { kind: Kind::SO2, m: m.view((0, 0), (2, 2)).into_owned() }),
+        ("p", (4, 4)) => Ok(v3(m[(0, 3)], m[(1, 3)], m[(2, 3)])),
+        ("p", (3, 3)) if *k == Kind::SE2 => Ok(Value::vector(Kind::Vector(Some(2)), &[m[(0, 2)], m[(1, 2)]])),
+        ("w" | "m", (6, 1)) => Ok(v3(m[0], m[1], m[2])),
+        ("v" | "f", (6, 1)) => Ok(v3(m[3], m[4], m[5])),
+        ("w" | "v", (4, 4)) => {
+            let t = se3::vee(&Mat4::from_iterator(m.iter().copied()));
+            let s: Vec6 = t;
+            Ok(if name == "w" { v3(s[0], s[1], s[2]) } else { v3(s[3], s[4], s[5]) })
+        }
+        _ => Err(format!("a {k} has no member .{name}")),
+    }
+}
+
+/// One subscript after evaluation: a 1-based index or `:`.
+#[derive(Debug, Clone, Copy)]
+pub enum Sel {
+    At(f64),
+    All,
+}
+
+fn position(x: f64, n: usize) -> Result<usize, String> {
+    if x.fract() != 0.0 || x < 1.0 || x > n as f64 {
+        return Err(format!("index {x} is out of range 1..{n} (indices start at 1, as in the book)"));
+    }
+    Ok(x as usize - 1)
+}
+
+/// `x[i]`, `M[i, j]`, `M[i, :]`, `M[:, j]` — 1-based.
+pub fn index(v: &Value, sels: &[Sel]) -> Result<Value, String> {
+    if let Value::Tuple(items) = v {
+        return match sels {
+            [Sel::At(i)] => Ok(items[position(*i, items.len())?].clone()),
+            _ => Err("a tuple takes one index".into()),
+        };
+    }
+    let (_, m) = num(v)?;
+    match sels {
+        [Sel::At(i)] if m.ncols() == 1 => Ok(Value::scalar(m[position(*i, m.nrows())?])),
+        [Sel::At(i)] if m.nrows() == 1 => Ok(Value::scalar(m[position(*i, m.ncols())?])),
+        [Sel::At(_)] => Err("a matrix takes two indices: M[i, j], M[i, :] or M[:, j]".into()),
+        [Sel::At(i), Sel::At(j)] => Ok(Value::scalar(m[(position(*i, m.nrows())?, position(*j, m.ncols())?)])),
+        [Sel::At(i), Sel::All] => {
+            let row = m.row(position(*i, m.nrows())?).into_owned();
+            Ok(Value::Num { kind: Kind::Matrix(Some(1), Some(m.ncols())), m: DMatrix::from_row_slice(1, m.ncols(), row.as_slice()) })
+        }
+        [Sel::All, Sel::At(j)] => {
+            let col = m.column(position(*j, m.ncols())?).into_owned();
+            Ok(Value::Num { kind: Kind::Vector(Some(m.nrows())), m: DMatrix::from_column_slice(m.nrows(), 1, col.as_slice()) })
+        }
+        [Sel::All, Sel::All] | [Sel::All] => Ok(v.clone()),
+        _ => Err("at most two indices".into()),
+    }
+}
+
+/// `[ ... ]` after evaluation: the book's bracket for one 3- or 6-vector,
+/// a column vector for one row of numbers, MATLAB block concatenation
+/// otherwise (LANGUAGE.md §4).
+pub fn brackets(rows: &[Vec<Value>]) -> Result<Value, String> {
+    if rows.len() == 1 && rows[0].len() == 1 {
+        let (k, m) = num(&rows[0][0])?;
+        return Ok(match m.shape() {
+            (3, 1) => Value::num(Kind::So3, &crate::lie::so3::hat(&crate::lie::Vec3::from_iterator(m.iter().copied()))),
+            (6, 1) => Value::num(Kind::Se3, &se3::hat(&Vec6::from_iterator(m.iter().copied()))),
+            _ => Value::Num { kind: k.clone(), m: m.clone() },
+        });
+    }
+    let all_scalars = rows.iter().flatten().all(|v| v.as_scalar().is_some() && matches!(v.kind(), Kind::Scalar));
+    if all_scalars && rows.len() == 1 {
+        let xs: Vec<f64> = rows[0].iter().filter_map(Value::as_scalar).collect();
+        return Ok(Value::vector(Kind::Vector(Some(xs.len())), &xs));
+    }
+    let mut blocks: Vec<DMatrix<f64>> = Vec::with_capacity(rows.len());
+    for (ri, row) in rows.iter().enumerate() {
+        let mut parts = Vec::with_capacity(row.len());
+        for v in row {
+            parts.push(num(v)?.1);
+        }
+        let h = parts[0].nrows();
+        if let Some(bad) = parts.iter().find(|p| p.nrows() != h) {
+            return Err(format!(
+                "row {} of the bracket joins blocks of {} and {} rows",
+                ri + 1,
+                h,
+                bad.nrows()
+            ));
+        }
+        let w: usize = parts.iter().map(|p| p.ncols()).sum();
+        check_size(h, w)?;
+        let mut block = DMatrix::zeros(h, w);
+        let mut c0 = 0;
+        for p in parts {
+            block.view_mut((0, c0), (h, p.ncols())).copy_from(p);
+            c0 += p.ncols();
+        }
+        blocks.push(block);
+    }
+    let w = blocks[0].ncols();
+    if let Some((i, bad)) = blocks.iter().enumerate().find(|(_, b)| b.ncols() != w) {
+        return Err(format!(
+            "rows of the bracket have different widths: {} and {} (row {})",
+            w,
+            bad.ncols(),
+            i + 1
+        ));
+    }
+    let h: usize = blocks.iter().map(|b| b.nrows()).sum();
+    check_size(h, w)?;
+    let mut m = DMatrix::zeros(h, w);
+    let mut r0 = 0;
+    for b in &blocks {
+        m.view_mut((r0, 0), (b.nrows(), w)).copy_from(b);
+        r0 += b.nrows();
+    }
+    Ok(Value::Num { kind: convert::classify(&m), m })
+}
+
+/// Vectors of the same flavour: a twist stays a twist after `+`.
+pub fn unused_kinds(_: Mat2) {}

@@ -1,0 +1,200 @@
+//! Symbolic expressions over `given` names (LANGUAGE.md §7): products of
+//! transforms simplify (inverse pairs and identities cancel) and print as
+//! the book writes them, `T_ab T_bc T_cd`.
+
+use std::fmt;
+
+use super::value::Value;
+
+/// An expression over symbols. Products are kept flat so that
+/// `inv(T_ab) * T_ab` cancels to `I`.
+#[derive(Debug, Clone)]
+pub enum Sym {
+    /// A `given` name.
+    Name(String),
+    /// A number or matrix inside a symbolic expression, printed compactly.
+    Const(Box<Value>, String),
+    /// The identity (what cancelled products leave).
+    Identity,
+    Product(Vec<Sym>),
+    Inv(Box<Sym>),
+    Neg(Box<Sym>),
+    Add(Box<Sym>, Box<Sym>),
+    Sub(Box<Sym>, Box<Sym>),
+    Div(Box<Sym>, Box<Sym>),
+    Pow(Box<Sym>, Box<Sym>),
+    /// `[x]`, the book's bracket.
+    Bracket(Box<Sym>),
+    Transpose(Box<Sym>),
+    Member(Box<Sym>, String),
+    Call(String, Vec<Sym>),
+}
+
+impl PartialEq for Sym {
+    /// Structural equality; constants compare by their printed text.
+    fn eq(&self, other: &Sym) -> bool {
+        use Sym::*;
+        match (self, other) {
+            (Name(a), Name(b)) => a == b,
+            (Const(_, a), Const(_, b)) => a == b,
+            (Identity, Identity) => true,
+            (Product(a), Product(b)) => a == b,
+            (Inv(a), Inv(b))
+            | (Neg(a), Neg(b))
+            | (Bracket(a), Bracket(b))
+            | (Transpose(a), Transpose(b)) => a == b,
+            (Add(a, b), Add(c, d))
+            | (Sub(a, b), Sub(c, d))
+            | (Div(a, b), Div(c, d))
+            | (Pow(a, b), Pow(c, d)) => a == c && b == d,
+            (Member(a, m), Member(b, n)) => a == b && m == n,
+            (Call(f, a), Call(g, b)) => f == g && a == b,
+            _ => false,
+        }
+    }
+}
+
+impl Sym {
+    /// The inverse, pushed through products: inv(A B) = inv(B) inv(A).
+    pub fn inverse(self) -> Sym {
+        match self {
+            Sym::Inv(x) => *x,
+            Sym::Identity => Sym::Identity,
+            Sym::Product(fs) => Sym::product(fs.into_iter().rev().map(Sym::inverse).collect()),
+            other => Sym::Inv(Box::new(other)),
+        }
+    }
+
+    /// `a b`, flattened and simplified.
+    pub fn mul(a: Sym, b: Sym) -> Sym {
+        Sym::product(vec![a, b])
+    }
+
+    /// A simplified product: nested products flattened, identities dropped,
+    /// adjacent `X inv(X)` pairs cancelled.
+    pub fn product(factors: Vec<Sym>) -> Sym {
+        let mut out: Vec<Sym> = Vec::new();
+        let mut stack: Vec<Sym> = factors.into_iter().rev().collect();
+        while let Some(f) = stack.pop() {
+            match f {
+                Sym::Product(inner) => stack.extend(inner.into_iter().rev()),
+                Sym::Identity => {}
+                f => {
+                    if out.last().is_some_and(|last| last.cancels(&f)) {
+                        out.pop();
+                    } else {
+                        out.push(f);
+                    }
+                }
+            }
+        }
+        match out.len() {
+            0 => Sym::Identity,
+            1 => out.pop().unwrap_or(Sym::Identity),
+            _ => Sym::Product(out),
+        }
+    }
+
+    fn cancels(&self, other: &Sym) -> bool {
+        match (self, other) {
+            (Sym::Inv(a), b) | (b, Sym::Inv(a)) => **a == *b,
+            _ => false,
+        }
+    }
+
+    fn needs_parens_in_product(&self) -> bool {
+        matches!(self, Sym::Add(..) | Sym::Sub(..) | Sym::Neg(_) | Sym::Div(..))
+    }
+}
+
+impl fmt::Display for Sym {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Sym::Name(n) => write!(f, "{n}"),
+            Sym::Const(_, text) => write!(f, "{text}"),
+            Sym::Identity => write!(f, "I"),
+            Sym::Product(fs) => {
+                for (i, x) in fs.iter().enumerate() {
+                    if i > 0 {
+                        write!(f, " ")?;
+                    }
+                    if x.needs_parens_in_product() {
+                        write!(f, "({x})")?;
+                    } else {
+                        write!(f, "{x}")?;
+                    }
+                }
+                Ok(())
+            }
+            Sym::Inv(x) => write!(f, "inv({x})"),
+            Sym::Neg(x) => match **x {
+                Sym::Add(..) | Sym::Sub(..) => write!(f, "-({x})"),
+                _ => write!(f, "-{x}"),
+            },
+            Sym::Add(a, b) => write!(f, "{a} + {b}"),
+            Sym::Sub(a, b) => match **b {
+                Sym::Add(..) | Sym::Sub(..) => write!(f, "{a} - ({b})"),
+                _ => write!(f, "{a} - {b}"),
+            },
+            Sym::Div(a, b) => {
+                let wrap = |s: &Sym| matches!(s, Sym::Add(..) | Sym::Sub(..) | Sym::Product(_));
+                let (l, r) = (a.to_string(), b.to_string());
+                let l = if wrap(a) { format!("({l})") } else { l };
+                let r = if wrap(b) || matches!(**b, Sym::Div(..)) {
+                    format!("({r})")
+                } else {
+                    r
+                };
+                write!(f, "{l}/{r}")
+            }
+            Sym::Pow(a, b) => match **a {
+                Sym::Name(_) | Sym::Const(..) => write!(f, "{a}^{b}"),
+                _ => write!(f, "({a})^{b}"),
+            },
+            Sym::Bracket(x) => write!(f, "[{x}]"),
+            Sym::Transpose(x) => match **x {
+                Sym::Name(_) | Sym::Call(..) | Sym::Bracket(_) => write!(f, "{x}.T"),
+                _ => write!(f, "({x}).T"),
+            },
+            Sym::Member(x, m) => match **x {
+                Sym::Name(_) | Sym::Call(..) => write!(f, "{x}.{m}"),
+                _ => write!(f, "({x}).{m}"),
+            },
+            Sym::Call(name, args) => {
+                write!(f, "{name}(")?;
+                for (i, a) in args.iter().enumerate() {
+                    if i > 0 {
+                        write!(f, ", ")?;
+                    }
+                    write!(f, "{a}")?;
+                }
+                write!(f, ")")
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn n(s: &str) -> Sym {
+        Sym::Name(s.into())
+    }
+
+    #[test]
+    fn inverse_pairs_cancel() {
+        let e = Sym::mul(n("T_ab").inverse(), n("T_ab"));
+        assert_eq!(e.to_string(), "I");
+        let chain = Sym::product(vec![n("T_ab"), n("T_bc"), n("T_cd")]);
+        assert_eq!(chain.to_string(), "T_ab T_bc T_cd");
+    }
+
+    #[test]
+    fn inverse_of_product_reverses_and_cancels() {
+        // Example 3.2: inv(T_ad T_db T_bc) T_ad T_de = inv(T_bc) inv(T_db) T_de
+        let p = Sym::product(vec![n("T_ad"), n("T_db"), n("T_bc")]).inverse();
+        let e = Sym::product(vec![p, n("T_ad"), n("T_de")]);
+        assert_eq!(e.to_string(), "inv(T_bc) inv(T_db) T_de");
+    }
+}

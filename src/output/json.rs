@@ -1,0 +1,82 @@
+//! JSON lines (LANGUAGE.md §1): one object per statement that yields a
+//! value or an error, numbers at full precision.
+
+use serde_json::{Value as J, json};
+
+use crate::check::ty::Kind;
+use crate::diagnostics::Diagnostic;
+use crate::eval::interp::Outcome;
+use crate::eval::value::Value;
+
+fn number(x: f64) -> J {
+    if x.is_finite() {
+        // Integers print without a fraction; -0 as 0.
+        if x == x.trunc() && x.abs() < 1e15 {
+            json!(x as i64)
+        } else {
+            json!(x)
+        }
+    } else if x.is_nan() {
+        json!("NaN")
+    } else if x > 0.0 {
+        json!("inf")
+    } else {
+        json!("-inf")
+    }
+}
+
+/// A value as JSON: number, vector list, matrix as a list of rows, tuple
+/// as a list, mechanism as an object, symbolic as its printed expression.
+pub fn value(v: &Value) -> J {
+    match v {
+        Value::Num { m, .. } if m.len() == 1 => number(m[0]),
+        Value::Num { m, .. } if m.ncols() == 1 => J::Array(m.iter().map(|x| number(*x)).collect()),
+        Value::Num { m, .. } => J::Array(m.row_iter().map(|r| J::Array(r.iter().map(|x| number(*x)).collect())).collect()),
+        Value::Bool(b) => json!(b),
+        Value::Tuple(vs) => J::Array(vs.iter().map(value).collect()),
+        Value::Mech(m) => m.to_json(),
+        Value::Func(f) => json!(format!("{}({})", f.name, f.params.join(", "))),
+        Value::Sym(s) => json!(s.to_string()),
+    }
+}
+
+/// The JSON object for a successful statement (None when it prints nothing).
+pub fn outcome(o: &Outcome, line: usize) -> Option<J> {
+    if !o.prints {
+        return None;
+    }
+    let name = match o.names.len() {
+        0 => J::Null,
+        1 => json!(o.names[0]),
+        _ => json!(format!("({})", o.names.join(", "))),
+    };
+    let ty = match &o.val {
+        Some(Value::Sym(_)) => "symbolic",
+        Some(v) => type_name(&v.kind()),
+        None => type_name(&o.ty.kind),
+    };
+    Some(json!({
+        "line": line,
+        "name": name,
+        "type": ty,
+        "frames": o.ty.frames.to_list(),
+        "value": o.val.as_ref().map_or(J::Null, value),
+    }))
+}
+
+fn type_name(k: &Kind) -> &'static str {
+    k.json_name()
+}
+
+/// The JSON object for an error.
+pub fn error(d: &Diagnostic, line: usize, col: usize) -> J {
+    json!({
+        "line": line,
+        "error": {
+            "kind": d.kind.as_str(),
+            "message": d.message,
+            "col": col,
+            "help": d.help,
+        }
+    })
+}

@@ -1,0 +1,154 @@
+//! Values for people (LANGUAGE.md §10): matrices in aligned columns that
+//! parse back (`[1, 0; 0, 1]` with one row per line), vectors as the book
+//! writes them `(1, 2, 3)`, and the type and frames after the value.
+
+use super::number::fmt_num;
+use crate::check::ty::{Kind, Ty};
+use crate::eval::interp::Outcome;
+use crate::eval::value::Value;
+
+/// A value on one line: `2`, `(1, 2, 3)`, `[1, 2; 3, 4]`.
+pub fn inline(v: &Value, digits: usize) -> String {
+    match v {
+        Value::Num { m, .. } if m.len() == 1 && m.ncols() == 1 && m.nrows() == 1 => fmt_num(m[0], digits),
+        Value::Num { m, .. } if m.ncols() == 1 => {
+            let xs: Vec<String> = m.iter().map(|x| fmt_num(*x, digits)).collect();
+            format!("({})", xs.join(", "))
+        }
+        Value::Num { m, .. } => {
+            let rows: Vec<String> = m
+                .row_iter()
+                .map(|r| r.iter().map(|x| fmt_num(*x, digits)).collect::<Vec<_>>().join(", "))
+                .collect();
+            format!("[{}]", rows.join("; "))
+        }
+        Value::Bool(b) => b.to_string(),
+        Value::Tuple(vs) => {
+            let xs: Vec<String> = vs.iter().map(|x| inline(x, digits)).collect();
+            format!("({})", xs.join(", "))
+        }
+        Value::Mech(m) => format!("mech < {} >", m.joints_text()),
+        Value::Func(f) => format!("{}({})", f.name, f.params.join(", ")),
+        Value::Sym(s) => s.to_string(),
+    }
+}
+
+/// A matrix in aligned columns, decimal points lined up, one row per line;
+/// `indent` is the column where the `[` stands.
+pub fn matrix_block(m: &nalgebra::DMatrix<f64>, digits: usize, indent: usize) -> String {
+    let cells: Vec<Vec<String>> = m.row_iter().map(|r| r.iter().map(|x| fmt_num(*x, digits)).collect()).collect();
+    let ncols = m.ncols();
+    let split = |s: &str| -> (String, String) {
+        match s.find(['.', 'e']) {
+            Some(i) => (s[..i].to_string(), s[i..].to_string()),
+            None => (s.to_string(), String::new()),
+        }
+    };
+    let mut int_w = vec![0; ncols];
+    let mut frac_w = vec![0; ncols];
+    for row in &cells {
+        for (j, c) in row.iter().enumerate() {
+            let (i, f) = split(c);
+            int_w[j] = int_w[j].max(i.chars().count());
+            frac_w[j] = frac_w[j].max(f.chars().count());
+        }
+    }
+    let mut out = String::from("[");
+    for (ri, row) in cells.iter().enumerate() {
+        if ri > 0 {
+            out.push('\n');
+            out.push_str(&" ".repeat(indent + 1));
+        }
+        let parts: Vec<String> = row
+            .iter()
+            .enumerate()
+            .map(|(j, c)| {
+                let (i, f) = split(c);
+                let last = j + 1 == ncols;
+                let pad_r = if last { 0 } else { frac_w[j] - f.chars().count() };
+                format!("{}{}{}{}", " ".repeat(int_w[j] - i.chars().count()), i, f, " ".repeat(pad_r))
+            })
+            .collect();
+        out.push_str(parts.join(", ").trim_end());
+    }
+    out.push(']');
+    out
+}
+
+/// The type label: `SE(3) {a}←{c}`; empty for plain numbers and bools.
+pub fn type_label(ty: &Ty, val: Option<&Value>) -> String {
+    let kind = val.map_or_else(|| ty.kind.clone(), Value::kind);
+    let kind = if matches!(val, Some(Value::Sym(_))) { ty.kind.clone() } else { kind };
+    match kind {
+        Kind::Scalar | Kind::Bool if ty.frames.is_none() => String::new(),
+        Kind::Mechanism | Kind::Function => String::new(),
+        Kind::Tuple(_) => String::new(),
+        k => {
+            let t = Ty::new(k, ty.frames.clone());
+            t.to_string()
+        }
+    }
+}
+
+/// One value with its label, after `prefix` (e.g. `T_ac = `).
+pub fn show_value(prefix: &str, ty: &Ty, v: &Value, digits: usize) -> String {
+    let label = type_label(ty, Some(v));
+    let tail = if label.is_empty() { String::new() } else { format!("  : {label}") };
+    match v {
+        Value::Num { m, .. } if m.ncols() > 1 => {
+            let indent = prefix.chars().count();
+            format!("{prefix}{}{tail}", matrix_block(m, digits, indent))
+        }
+        Value::Mech(mech) => {
+            let body = mech.to_string();
+            if prefix.is_empty() { body } else { format!("{prefix}\n{body}") }
+        }
+        _ => format!("{prefix}{}{tail}", inline(v, digits)),
+    }
+}
+
+/// The text printed for a statement's outcome (empty when it prints nothing).
+pub fn show_outcome(o: &Outcome, digits: usize) -> String {
+    if !o.prints {
+        return String::new();
+    }
+    let mut out = String::new();
+    if let Some(note) = &o.note {
+        out.push_str(note);
+        out.push('\n');
+    }
+    let Some(v) = &o.val else {
+        // check mode: the type only
+        let names = o.names.join(", ");
+        let label = o.ty.to_string();
+        out.push_str(&if names.is_empty() { label } else { format!("{names} : {label}") });
+        return out;
+    };
+    match (o.names.len(), v) {
+        (0, Value::Tuple(items)) => {
+            let parts: Vec<String> = items.iter().map(|x| show_value("", &Ty::plain(x.kind()), x, digits)).collect();
+            out.push_str(&parts.join("\n"));
+        }
+        (0, _) => out.push_str(&show_value("", &o.ty, v, digits)),
+        (1, _) => out.push_str(&show_value(&format!("{} = ", o.names[0]), &o.ty, v, digits)),
+        (_, Value::Tuple(items)) => {
+            let kinds = match &o.ty.kind {
+                Kind::Tuple(ks) => ks.clone(),
+                _ => vec![],
+            };
+            let parts: Vec<String> = o
+                .names
+                .iter()
+                .zip(items)
+                .enumerate()
+                .map(|(i, (n, x))| {
+                    let _ = kinds.get(i);
+                    show_value(&format!("{n} = "), &Ty::plain(x.kind()), x, digits)
+                })
+                .collect();
+            out.push_str(&parts.join("\n"));
+        }
+        _ => out.push_str(&show_value("", &o.ty, v, digits)),
+    }
+    out
+}
