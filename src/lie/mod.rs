@@ -1,6 +1,28 @@
 //! The Lie-group core: SO(3), SE(3), SO(2), SE(2), their algebras, adjoints,
 //! exponentials and logarithms, and other representations of orientation.
 //! Plain Rust on nalgebra; knows nothing of the chasles language.
+//!
+//! Section and equation numbers refer to Modern Robotics (Lynch & Park),
+//! chapter 3, as in the seed text of the book (e.g. Rodrigues' formula
+//! (3.51), the SO(3) logarithm algorithm of §3.2.3.3, the SE(3) exponential
+//! of Proposition 3.16 / (3.89), the SE(3) logarithm of §3.3.3.2, the adjoint
+//! of Definition 3.6, the software list of §3.6).
+//!
+//! Submodules:
+//! - [`so3`]: rotations, so(3), Rodrigues, the logarithm (§3.2);
+//! - [`se3`]: rigid-body motions, twists, screws, wrenches (§3.3, §3.4);
+//! - [`so2`], [`se2`]: the planar groups (Definitions 3.2, 3.5, Example 3.4);
+//! - [`repr`]: Euler angles, roll-pitch-yaw, quaternions, Cayley parameters;
+//! - [`project`]: projection onto and distance to the groups (§3.6 software);
+//! - [`matexp`]: the exponential of a general square matrix (§3.2.3.1).
+
+pub mod matexp;
+pub mod project;
+pub mod repr;
+pub mod se2;
+pub mod se3;
+pub mod so2;
+pub mod so3;
 
 /// A 3-vector (angular velocity, position, exponential coordinates).
 pub type Vec3 = nalgebra::Vector3<f64>;
@@ -18,3 +40,48 @@ pub type Mat3 = nalgebra::Matrix3<f64>;
 pub type Mat4 = nalgebra::Matrix4<f64>;
 /// 6×6 (the adjoint representation `[Ad_T]`).
 pub type Mat6 = nalgebra::Matrix6<f64>;
+
+/// The tolerance of the book's `NearZero` (§3.6 software): `|x| < 1e-6`.
+pub const NEAR_ZERO_TOL: f64 = 1e-6;
+
+/// `NearZero(z)` of the book's software (§3.6): true when `|z| < 1e-6`
+/// ([`NEAR_ZERO_TOL`]), i.e. the scalar is small enough to be treated as zero.
+pub fn near_zero(x: f64) -> bool {
+    x.abs() < NEAR_ZERO_TOL
+}
+
+/// `Normalize(V)` of the book's software (§3.6): the unit vector `V/‖V‖` in
+/// the direction of `V`. `None` when the norm is zero or not finite (the
+/// direction is then undefined).
+pub fn normalize(v: &nalgebra::DVector<f64>) -> Option<nalgebra::DVector<f64>> {
+    let n = v.norm();
+    if n > 0.0 && n.is_finite() {
+        Some(v / n)
+    } else {
+        None
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn near_zero_book_example() {
+        // NearZero(-1e-7) = True (Python docstring).
+        assert!(near_zero(-1e-7));
+        assert!(!near_zero(1e-6));
+    }
+
+    #[test]
+    fn normalize_book_example() {
+        let v = nalgebra::DVector::from_vec(vec![1.0, 2.0, 3.0]);
+        let n = normalize(&v).unwrap();
+        let want = [0.26726124, 0.53452248, 0.80178373];
+        for i in 0..3 {
+            assert!((n[i] - want[i]).abs() < 1e-8);
+        }
+        assert!(normalize(&nalgebra::DVector::zeros(3)).is_none());
+        assert!(normalize(&nalgebra::DVector::from_vec(vec![f64::NAN, 1.0])).is_none());
+    }
+}

@@ -1,0 +1,286 @@
+//! SE(3) and se(3): homogeneous transformations (§3.3.1), twists and the
+//! adjoint representation (§3.3.2), screw axes (§3.3.2.2), exponential
+//! coordinates of rigid-body motion (§3.3.3) and wrenches (§3.4).
+//!
+//! Twists and screw axes are ordered `(ω, v)`; wrenches `(m, f)` (3.97).
+
+use super::{Mat3, Mat4, Mat6, Vec3, Vec6, near_zero, so3};
+
+/// Below this angle the coefficients of (3.89) and (3.94) come from their
+/// Taylor series (see [`exp`] and [`log`]).
+const SERIES_THETA: f64 = 1e-2;
+
+fn split(v: &Vec6) -> (Vec3, Vec3) {
+    (Vec3::new(v[0], v[1], v[2]), Vec3::new(v[3], v[4], v[5]))
+}
+
+fn join(w: &Vec3, v: &Vec3) -> Vec6 {
+    Vec6::new(w.x, w.y, w.z, v.x, v.y, v.z)
+}
+
+/// `VecTose3(V)`: the 4×4 matrix `[V] = [[ω], v; 0, 0] ∈ se(3)` of a twist
+/// (or screw axis) `V = (ω, v)` (3.73, 3.86).
+pub fn hat(v: &Vec6) -> Mat4 {
+    let (w, lin) = split(v);
+    let mut m = Mat4::zeros();
+    m.fixed_view_mut::<3, 3>(0, 0).copy_from(&so3::hat(&w));
+    m.fixed_view_mut::<3, 1>(0, 3).copy_from(&lin);
+    m
+}
+
+/// `se3ToVec([V])`: the 6-vector twist `(ω, v)` of an se(3) matrix (inverse
+/// of (3.73)); ω is read as in [`so3::vee`], v from the last column.
+pub fn vee(m: &Mat4) -> Vec6 {
+    let w = so3::vee(&m.fixed_view::<3, 3>(0, 0).into_owned());
+    Vec6::new(w.x, w.y, w.z, m[(0, 3)], m[(1, 3)], m[(2, 3)])
+}
+
+/// `RpToTrans(R, p)`: the homogeneous transformation `T = [R, p; 0, 1]`
+/// (Definition 3.4, (3.62)).
+pub fn from_rp(r: &Mat3, p: &Vec3) -> Mat4 {
+    let mut t = Mat4::identity();
+    t.fixed_view_mut::<3, 3>(0, 0).copy_from(r);
+    t.fixed_view_mut::<3, 1>(0, 3).copy_from(p);
+    t
+}
+
+/// `Trans(p)`: the pure translation `[I, p; 0, 1]` (a convenience; §3.3.1).
+pub fn trans(p: &Vec3) -> Mat4 {
+    from_rp(&Mat3::identity(), p)
+}
+
+/// `TransToRp(T)`: the rotation `R` and position `p` of `T = [R, p; 0, 1]`.
+pub fn to_rp(t: &Mat4) -> (Mat3, Vec3) {
+    (
+        t.fixed_view::<3, 3>(0, 0).into_owned(),
+        t.fixed_view::<3, 1>(0, 3).into_owned(),
+    )
+}
+
+/// `TransInv(T)`: `T⁻¹ = [Rᵀ, −Rᵀp; 0, 1]` (Proposition 3.10, (3.64)),
+/// computed in this exact form rather than by a general matrix inverse.
+pub fn inv(t: &Mat4) -> Mat4 {
+    let (r, p) = to_rp(t);
+    let rt = r.transpose();
+    from_rp(&rt, &(-(rt * p)))
+}
+
+/// The coefficients `((1−cosθ)/θ², (θ−sinθ)/θ³)` of (3.88)–(3.89) written
+/// for exponential coordinates: `G(θ)v = ρ + ((1−cosθ)/θ²)[φ]ρ +
+/// ((θ−sinθ)/θ³)[φ]²ρ` with φ = ω̂θ, ρ = vθ.
+///
+/// (1−cosθ) is evaluated as 2 sin²(θ/2) (no cancellation); (θ − sinθ)/θ³
+/// cancels catastrophically for small θ, so below θ = 1e-2 it comes from its
+/// series 1/6 − θ²/120 + θ⁴/5040 − θ⁶/362880 (truncation < 1e-24).
+fn g_coeffs(theta: f64) -> (f64, f64) {
+    let (_, b) = so3::rodrigues_coeffs(theta);
+    let c = if theta < SERIES_THETA {
+        let t2 = theta * theta;
+        1.0 / 6.0 - t2 / 120.0 + t2 * t2 / 5040.0 - t2 * t2 * t2 / 362_880.0
+    } else {
+        (theta - theta.sin()) / (theta * theta * theta)
+    };
+    (b, c)
+}
+
+/// `MatrixExp6(Sθ)`: the homogeneous transformation `e^{[S]θ}` of
+/// Proposition 3.16 from exponential coordinates `Sθ = (ω̂θ, vθ) ∈ ℝ⁶`:
+/// `[e^{[ω̂]θ}, G(θ)v; 0, 1]` with `G(θ) = Iθ + (1−cosθ)[ω̂] +
+/// (θ−sinθ)[ω̂]²` (3.88)–(3.89), and `[I, vθ; 0, 1]` when ω = 0 (3.90).
+///
+/// Evaluated without dividing by θ (see the private `g_coeffs`), so the
+/// pure-translation case (3.90) is the θ → 0 limit of the same formula and
+/// small rotations keep full precision.
+pub fn exp(expc: &Vec6) -> Mat4 {
+    let (phi, rho) = split(expc);
+    let theta = phi.norm();
+    let r = so3::exp(&phi);
+    let (b, c) = g_coeffs(theta);
+    let wr = phi.cross(&rho);
+    let wwr = phi.cross(&wr);
+    let p = rho + wr * b + wwr * c;
+    from_rp(&r, &p)
+}
+
+/// The coefficient `(1 − (θ/2)cot(θ/2))/θ²` of `[φ]²p` in `θG⁻¹(θ)p`, i.e.
+/// (3.94) multiplied by θ and written for φ = ω̂θ:
+/// `θG⁻¹(θ)p = p − ½[φ]p + ((1/θ − ½cot(θ/2))/θ)[φ]²p`.
+///
+/// 1 − (θ/2)cot(θ/2) ≈ θ²/12 cancels catastrophically for small θ (relative
+/// error ε/θ²), so below θ = 1e-2 the series
+/// 1/12 + θ²/720 + θ⁴/30240 + θ⁶/1209600 is used (truncation < 1e-20).
+/// At θ = π, cot(π/2) = 0 and the coefficient is 1/π²: no singularity on
+/// [0, π].
+fn ginv_coeff(theta: f64) -> f64 {
+    if theta < SERIES_THETA {
+        let t2 = theta * theta;
+        1.0 / 12.0 + t2 / 720.0 + t2 * t2 / 30_240.0 + t2 * t2 * t2 / 1_209_600.0
+    } else {
+        let h = 0.5 * theta;
+        (1.0 - h * h.cos() / h.sin()) / (theta * theta)
+    }
+}
+
+/// `MatrixLog6(T)`: the exponential coordinates `Sθ ∈ ℝ⁶`, θ ∈ [0, π], of
+/// the matrix logarithm `[S]θ = log T` (algorithm of §3.3.3.2).
+///
+/// The three cases of the book are one formula here:
+/// (i) R = I: ω = 0 and Sθ = (0, p), i.e. v = p/‖p‖, θ = ‖p‖;
+/// (ii) tr R = −1: θ = π and ω̂ from the SO(3) logarithm, v = G⁻¹(π)p;
+/// (iii) otherwise [ω̂]θ from the SO(3) logarithm and v = G⁻¹(θ)p (3.93).
+/// The rotation part is [`so3::log`] (accurate at θ → 0 and θ → π), and
+/// `vθ = θG⁻¹(θ)p = p − ½[φ]p + k(θ)[φ]²p` with φ = ω̂θ and
+/// k(θ) = (1/θ − ½cot(θ/2))/θ from (3.94), by series for small θ. At
+/// φ = 0 this is exactly case (i), so a nearly-identity rotation loses
+/// nothing (the book's software rounds such rotations to zero).
+pub fn log(t: &Mat4) -> Vec6 {
+    let (r, p) = to_rp(t);
+    let phi = so3::log(&r);
+    let theta = phi.norm();
+    let wp = phi.cross(&p);
+    let wwp = phi.cross(&wp);
+    let v = p - 0.5 * wp + ginv_coeff(theta) * wwp;
+    join(&phi, &v)
+}
+
+/// `Adjoint(T)`: the adjoint representation
+/// `[Ad_T] = [R, 0; [p]R, R] ∈ ℝ⁶ˣ⁶` of `T = (R, p)` (Definition 3.6), so
+/// that `[Ad_T]V` is the twist `V` in the other frame (Proposition 3.14).
+pub fn adjoint(t: &Mat4) -> Mat6 {
+    let (r, p) = to_rp(t);
+    let mut a = Mat6::zeros();
+    a.fixed_view_mut::<3, 3>(0, 0).copy_from(&r);
+    a.fixed_view_mut::<3, 3>(3, 3).copy_from(&r);
+    a.fixed_view_mut::<3, 3>(3, 0)
+        .copy_from(&(so3::hat(&p) * r));
+    a
+}
+
+/// `ad(V)`: the small adjoint `[ad_V] = [[ω], 0; [v], [ω]] ∈ ℝ⁶ˣ⁶` of a twist
+/// `V = (ω, v)`, so that `[ad_V₁]V₂` is the Lie bracket `[V₁, V₂]` (the
+/// derivative of `[Ad_T]` at the identity; the book's software `ad`).
+pub fn ad(v: &Vec6) -> Mat6 {
+    let (w, lin) = split(v);
+    let wm = so3::hat(&w);
+    let mut a = Mat6::zeros();
+    a.fixed_view_mut::<3, 3>(0, 0).copy_from(&wm);
+    a.fixed_view_mut::<3, 3>(3, 3).copy_from(&wm);
+    a.fixed_view_mut::<3, 3>(3, 0).copy_from(&so3::hat(&lin));
+    a
+}
+
+/// `ScrewToAxis(q, ŝ, h)`: the screw axis `S = (ŝ, −ŝ × q + hŝ)` of a screw
+/// through the point `q` with unit direction `ŝ` and finite pitch `h`
+/// (§3.3.2.2, Definition 3.7, §3.5 table). `ŝ` is used as given, like the
+/// book's software: pass a unit vector to get a normalized axis.
+pub fn screw_to_axis(q: &Vec3, s: &Vec3, h: f64) -> Vec6 {
+    let v = q.cross(s) + h * s;
+    join(s, &v)
+}
+
+/// `AxisAng6(Sθ)`: splits exponential coordinates into the normalized screw
+/// axis `S` and the distance θ travelled along it (§3.3.3.1, Definition
+/// 3.7): θ = ‖ω‖, or θ = ‖v‖ when ω is near zero (`NearZero`, a pure
+/// translation). The zero vector gives `(0, 0.0)`.
+pub fn axis_angle(expc: &Vec6) -> (Vec6, f64) {
+    let (w, v) = split(expc);
+    let mut theta = w.norm();
+    if near_zero(theta) {
+        theta = v.norm();
+    }
+    if theta > 0.0 {
+        (expc / theta, theta)
+    } else {
+        (Vec6::zeros(), 0.0)
+    }
+}
+
+/// The screw parameters `(q, ŝ, h)` of a twist or screw axis `V = (ω, v)`
+/// (§3.3.2.2): `ŝ = ω/‖ω‖`, pitch `h = ŝᵀv/‖ω‖`, and `q = ω × v/‖ω‖²`, the
+/// point of the axis nearest the origin (so that `v = −ω × q + hω`). For a
+/// pure translation (ω near zero, `NearZero`) the pitch is infinite:
+/// `h = f64::INFINITY`, `q = 0`, `ŝ = v/‖v‖`. The zero twist gives
+/// `(0, 0, 0.0)`.
+pub fn screw_params(v: &Vec6) -> (Vec3, Vec3, f64) {
+    let (w, lin) = split(v);
+    let wn = w.norm();
+    if near_zero(wn) {
+        let ln = lin.norm();
+        if ln > 0.0 {
+            (Vec3::zeros(), lin / ln, f64::INFINITY)
+        } else {
+            (Vec3::zeros(), Vec3::zeros(), 0.0)
+        }
+    } else {
+        let w2 = wn * wn;
+        let q = w.cross(&lin) / w2;
+        let h = w.dot(&lin) / w2;
+        (q, w / wn, h)
+    }
+}
+
+/// The spatial and body twists `(V_s, V_b)` of a moving frame from `T` and
+/// `Ṫ` (Proposition 3.15, §3.3.2): `[V_s] = ṪT⁻¹` (3.83) and
+/// `[V_b] = T⁻¹Ṫ` (3.82). ω is read from the skew-symmetric part of the
+/// rotation block ([`so3::vee_skew`]), exact for a consistent `(T, Ṫ)`.
+pub fn twists_from_derivative(t: &Mat4, tdot: &Mat4) -> (Vec6, Vec6) {
+    let ti = inv(t);
+    let read = |m: Mat4| {
+        let w = so3::vee_skew(&m.fixed_view::<3, 3>(0, 0).into_owned());
+        Vec6::new(w.x, w.y, w.z, m[(0, 3)], m[(1, 3)], m[(2, 3)])
+    };
+    (read(tdot * ti), read(ti * tdot))
+}
+
+/// Change of frame of a wrench `F = (m, f)` (3.97): `F_b = [Ad_{T_ab}]ᵀ F_a`
+/// (Proposition 3.17, (3.99)/(3.101)), from the power invariance
+/// `V_bᵀF_b = V_aᵀF_a` (3.98).
+pub fn wrench_change(t_ab: &Mat4, f_a: &Vec6) -> Vec6 {
+    adjoint(t_ab).transpose() * f_a
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn exp_pure_translation() {
+        let t = exp(&Vec6::new(0.0, 0.0, 0.0, 1.0, 2.0, 3.0));
+        assert_eq!(t, trans(&Vec3::new(1.0, 2.0, 3.0)));
+    }
+
+    #[test]
+    fn log_identity_and_translation() {
+        assert_eq!(log(&Mat4::identity()), Vec6::zeros());
+        let s = log(&trans(&Vec3::new(1.0, -2.0, 0.5)));
+        assert_eq!(s, Vec6::new(0.0, 0.0, 0.0, 1.0, -2.0, 0.5));
+    }
+
+    #[test]
+    fn screw_params_cases() {
+        let s = screw_to_axis(&Vec3::new(3.0, 0.0, 0.0), &Vec3::z(), 2.0);
+        let (q, sh, h) = screw_params(&s);
+        assert!((q - Vec3::new(3.0, 0.0, 0.0)).norm() < 1e-15);
+        assert_eq!(sh, Vec3::z());
+        assert_eq!(h, 2.0);
+        let (q, sh, h) = screw_params(&Vec6::new(0.0, 0.0, 0.0, 0.0, 3.0, 4.0));
+        assert_eq!(
+            (q, sh, h),
+            (Vec3::zeros(), Vec3::new(0.0, 0.6, 0.8), f64::INFINITY)
+        );
+        assert_eq!(
+            screw_params(&Vec6::zeros()),
+            (Vec3::zeros(), Vec3::zeros(), 0.0)
+        );
+    }
+
+    #[test]
+    fn ginv_series_matches_direct() {
+        let t: f64 = SERIES_THETA;
+        let h = 0.5 * t;
+        let direct = (1.0 - h * h.cos() / h.sin()) / (t * t);
+        assert!((ginv_coeff(t * 0.999_999) - direct).abs() < 1e-12);
+        let direct_c = (t - t.sin()) / (t * t * t);
+        assert!((g_coeffs(t * 0.999_999).1 - direct_c).abs() < 1e-10);
+    }
+}

@@ -1,0 +1,255 @@
+//! SO(3) and so(3): rotation matrices (§3.2.1), angular velocities (§3.2.2),
+//! and the exponential coordinates of rotation (§3.2.3): Rodrigues' formula
+//! (3.51) and the matrix logarithm (§3.2.3.3).
+//!
+//! Accuracy: `exp(log(R))` reproduces `R` to a few units in the last place
+//! for every rotation angle θ ∈ [0, π], including θ → 0 and θ → π, where the
+//! book's formulas (3.54) and (3.61) lose all their digits. See [`log`].
+
+use super::{Mat3, Vec3};
+
+/// Below this angle the coefficients sinθ/θ and (1−cosθ)/θ² of Rodrigues'
+/// formula are evaluated by their Taylor series (truncation error < 1e-24).
+const SERIES_THETA: f64 = 1e-4;
+
+/// `VecToso3(ω)`: the 3×3 skew-symmetric matrix `[ω] ∈ so(3)` of
+/// Definition 3.3 (3.30), so that `[ω] x = ω × x`.
+pub fn hat(w: &Vec3) -> Mat3 {
+    Mat3::new(0.0, -w.z, w.y, w.z, 0.0, -w.x, -w.y, w.x, 0.0)
+}
+
+/// `so3ToVec([ω])`: the 3-vector ω of a skew-symmetric matrix `[ω] ∈ so(3)`
+/// (inverse of (3.30)); reads the entries `(m₃₂, m₁₃, m₂₁)` as the book's
+/// software does.
+pub fn vee(m: &Mat3) -> Vec3 {
+    Vec3::new(m[(2, 1)], m[(0, 2)], m[(1, 0)])
+}
+
+/// The ω of the skew-symmetric part `(M − Mᵀ)/2` of a matrix: equal to
+/// [`vee`] for an exact element of so(3), and the least-squares answer for a
+/// matrix that is only nearly skew-symmetric (rounding, finite differences).
+pub fn vee_skew(m: &Mat3) -> Vec3 {
+    0.5 * Vec3::new(
+        m[(2, 1)] - m[(1, 2)],
+        m[(0, 2)] - m[(2, 0)],
+        m[(1, 0)] - m[(0, 1)],
+    )
+}
+
+/// The coefficients `(sinθ/θ, (1−cosθ)/θ²)` of Rodrigues' formula written
+/// for exponential coordinates φ = ω̂θ: `e^{[φ]} = I + (sinθ/θ)[φ] +
+/// ((1−cosθ)/θ²)[φ]²`, which is (3.51) with `[ω̂] = [φ]/θ`.
+///
+/// Both are evaluated stably: (1−cosθ) is computed as 2 sin²(θ/2), which has
+/// no cancellation (1 − cosθ loses all digits below θ ≈ 1e-8), and for
+/// θ < 1e-4 both come from their Taylor series
+/// sinθ/θ = 1 − θ²/6 + θ⁴/120 and (1−cosθ)/θ² = 1/2 − θ²/24 + θ⁴/720,
+/// so θ = 0 needs no special case.
+pub fn rodrigues_coeffs(theta: f64) -> (f64, f64) {
+    if theta < SERIES_THETA {
+        let t2 = theta * theta;
+        (
+            1.0 - t2 / 6.0 * (1.0 - t2 / 20.0),
+            0.5 - t2 / 24.0 * (1.0 - t2 / 30.0),
+        )
+    } else {
+        let h = (0.5 * theta).sin() / theta;
+        (theta.sin() / theta, 2.0 * h * h)
+    }
+}
+
+/// `MatrixExp3(ω̂θ)`: the rotation `e^{[ω̂]θ} = I + sinθ[ω̂] + (1−cosθ)[ω̂]²`
+/// of Rodrigues' formula (3.51, Proposition 3.9), from exponential
+/// coordinates `ω̂θ ∈ ℝ³`. Zero coordinates give the identity.
+///
+/// Written entry by entry as (3.52) with `[φ]² = φφᵀ − θ²I` so that the
+/// diagonal is `1 − b(φⱼ² + φₖ²)` without cancellation; the coefficients
+/// come from [`rodrigues_coeffs`] (series for small θ).
+pub fn exp(expc: &Vec3) -> Mat3 {
+    let (x, y, z) = (expc.x, expc.y, expc.z);
+    let theta = expc.norm();
+    let (a, b) = rodrigues_coeffs(theta);
+    let (xx, yy, zz) = (x * x, y * y, z * z);
+    let (bxy, bxz, byz) = (b * x * y, b * x * z, b * y * z);
+    let (ax, ay, az) = (a * x, a * y, a * z);
+    Mat3::new(
+        1.0 - b * (yy + zz),
+        bxy - az,
+        bxz + ay,
+        bxy + az,
+        1.0 - b * (xx + zz),
+        byz - ax,
+        bxz - ay,
+        byz + ax,
+        1.0 - b * (xx + yy),
+    )
+}
+
+/// `MatrixLog3(R)`: the exponential coordinates `ω̂θ ∈ ℝ³`, θ ∈ [0, π], of
+/// the matrix logarithm `[ω̂]θ = log R` (algorithm of §3.2.3.3). The identity
+/// gives the zero vector (case (i): ω̂ undefined, θ = 0). At θ = π (case
+/// (ii)) both ±ω̂π are logarithms; one of them is returned, consistently.
+///
+/// Why not the book's formulas verbatim: θ = cos⁻¹((tr R − 1)/2) (3.54) has
+/// an infinite derivative at θ = 0 and θ = π, so an O(ε) rounding error in
+/// tr R becomes an O(√ε) ≈ 1e-8 error in θ; and [ω̂] = (R − Rᵀ)/(2 sinθ)
+/// (3.61) divides a vanishing O(sinθ) quantity by sinθ near π, so the axis
+/// error grows like ε/sinθ. Instead:
+///
+/// * θ = atan2(‖vee(R − Rᵀ)‖/2, (tr R − 1)/2), i.e. atan2(sinθ, cosθ) from
+///   (3.54) and the skew part of (3.52): accurate to O(ε) everywhere.
+/// * For θ < π/2 (cosθ > 0) the axis comes from the skew part as in (3.61):
+///   ω̂θ = vee(R − Rᵀ)/2 · θ/sinθ, with θ/sinθ by its series
+///   1 + θ²/6 + 7θ⁴/360 for tiny θ, so θ → 0 needs no special case.
+/// * For θ ≥ π/2 the axis comes from the symmetric part: by (3.52),
+///   (R + Rᵀ)/2 − cosθ·I = (1 − cosθ) ω̂ω̂ᵀ, whose column with the largest
+///   diagonal entry is the best-conditioned multiple of ω̂ (this generalises
+///   the book's case (ii), (3.58)–(3.60), to all θ near π). Its sign is
+///   fixed by the skew part (sinθ ω̂ = vee(R − Rᵀ)/2); at θ = π exactly,
+///   where the skew part vanishes, the sign with positive largest component
+///   is kept.
+pub fn log(r: &Mat3) -> Vec3 {
+    let s_vec = vee_skew(r); // = sinθ · ω̂
+    let s = s_vec.norm();
+    let c = 0.5 * (r.trace() - 1.0); // = cosθ (3.54)
+    let theta = s.atan2(c);
+    if c > 0.0 {
+        // θ ∈ [0, π/2): skew part, (3.61).
+        let k = if theta < SERIES_THETA {
+            let t2 = theta * theta;
+            1.0 + t2 / 6.0 + 7.0 * t2 * t2 / 360.0
+        } else {
+            theta / s
+        };
+        s_vec * k
+    } else {
+        // θ ∈ [π/2, π]: symmetric part, generalising (3.58)–(3.60).
+        let mut b = 0.5 * (r + r.transpose());
+        for i in 0..3 {
+            b[(i, i)] -= c;
+        }
+        let k = (0..3)
+            .max_by(|&i, &j| b[(i, i)].total_cmp(&b[(j, j)]))
+            .unwrap_or(0);
+        let col: Vec3 = b.column(k).into_owned();
+        let n = col.norm();
+        if n.is_nan() || n == 0.0 {
+            return Vec3::zeros(); // not a rotation (e.g. NaN input)
+        }
+        let mut w = col / n;
+        if w.dot(&s_vec) < 0.0 {
+            w = -w;
+        }
+        w * theta
+    }
+}
+
+/// `AxisAng3(ω̂θ)`: splits exponential coordinates into the unit rotation
+/// axis ω̂ and the angle θ = ‖ω̂θ‖ (§3.2.3.2). The zero vector gives
+/// `(0, 0.0)`: the axis is undefined for θ = 0 (case (i) of §3.2.3.3).
+pub fn axis_angle(expc: &Vec3) -> (Vec3, f64) {
+    let theta = expc.norm();
+    if theta > 0.0 {
+        (expc / theta, theta)
+    } else {
+        (Vec3::zeros(), 0.0)
+    }
+}
+
+/// `RotInv(R)`: the inverse of a rotation, `R⁻¹ = Rᵀ` (Proposition 3.1).
+pub fn inv(r: &Mat3) -> Mat3 {
+    r.transpose()
+}
+
+/// `Rot(ω̂, θ) = e^{[ω̂]θ}` (3.51): the rotation by θ about `axis`, which is
+/// normalized here. A zero (or non-finite) axis gives the identity.
+pub fn rot(axis: &Vec3, theta: f64) -> Mat3 {
+    let n = axis.norm();
+    if n > 0.0 && n.is_finite() {
+        exp(&(axis * (theta / n)))
+    } else {
+        Mat3::identity()
+    }
+}
+
+/// `Rot(x̂, θ)`: rotation by θ about the x-axis (§3.2.1.2).
+pub fn rotx(theta: f64) -> Mat3 {
+    let (s, c) = theta.sin_cos();
+    Mat3::new(1.0, 0.0, 0.0, 0.0, c, -s, 0.0, s, c)
+}
+
+/// `Rot(ŷ, θ)`: rotation by θ about the y-axis (§3.2.1.2).
+pub fn roty(theta: f64) -> Mat3 {
+    let (s, c) = theta.sin_cos();
+    Mat3::new(c, 0.0, s, 0.0, 1.0, 0.0, -s, 0.0, c)
+}
+
+/// `Rot(ẑ, θ)`: rotation by θ about the z-axis (§3.2.1.2).
+pub fn rotz(theta: f64) -> Mat3 {
+    let (s, c) = theta.sin_cos();
+    Mat3::new(c, -s, 0.0, s, c, 0.0, 0.0, 0.0, 1.0)
+}
+
+/// The spatial and body angular velocities `(ω_s, ω_b)` of a rotating frame
+/// from `R` and `Ṙ` (§3.2.2, Proposition 3.6): `[ω_s] = ṘR⁻¹ = ṘRᵀ` (3.37)
+/// and `[ω_b] = R⁻¹Ṙ = RᵀṘ` (3.38). The vectors are read from the
+/// skew-symmetric parts ([`vee_skew`]), exact for a consistent `(R, Ṙ)`.
+pub fn angular_velocities(r: &Mat3, rdot: &Mat3) -> (Vec3, Vec3) {
+    let ws = vee_skew(&(rdot * r.transpose()));
+    let wb = vee_skew(&(r.transpose() * rdot));
+    (ws, wb)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn close(a: &Mat3, b: &Mat3, tol: f64) -> bool {
+        (a - b).amax() <= tol
+    }
+
+    #[test]
+    fn hat_vee_book_example() {
+        let m = hat(&Vec3::new(1.0, 2.0, 3.0));
+        assert_eq!(m, Mat3::new(0.0, -3.0, 2.0, 3.0, 0.0, -1.0, -2.0, 1.0, 0.0));
+        assert_eq!(vee(&m), Vec3::new(1.0, 2.0, 3.0));
+    }
+
+    #[test]
+    fn exp_zero_and_pi() {
+        assert_eq!(exp(&Vec3::zeros()), Mat3::identity());
+        let r = exp(&Vec3::new(std::f64::consts::PI, 0.0, 0.0));
+        assert!(close(
+            &r,
+            &Mat3::new(1.0, 0.0, 0.0, 0.0, -1.0, 0.0, 0.0, 0.0, -1.0),
+            1e-15
+        ));
+    }
+
+    #[test]
+    fn log_identity_is_zero() {
+        assert_eq!(log(&Mat3::identity()), Vec3::zeros());
+    }
+
+    #[test]
+    fn log_at_pi_on_axes() {
+        let pi = std::f64::consts::PI;
+        for r in [rotx(pi), roty(pi), rotz(pi)] {
+            let w = log(&r);
+            assert!((w.norm() - pi).abs() < 1e-15);
+            assert!(close(&exp(&w), &r, 2e-15));
+        }
+    }
+
+    #[test]
+    fn axis_angle_zero() {
+        assert_eq!(axis_angle(&Vec3::zeros()), (Vec3::zeros(), 0.0));
+    }
+
+    #[test]
+    fn rot_matches_rotx() {
+        let r = rot(&Vec3::new(2.0, 0.0, 0.0), 0.7);
+        assert!(close(&r, &rotx(0.7), 1e-15));
+        assert_eq!(rot(&Vec3::zeros(), 1.0), Mat3::identity());
+    }
+}
