@@ -137,15 +137,15 @@ impl Args<'_> {
     /// when close, a domain error with the distance when not.
     pub fn group(&mut self, i: usize, group: Group) -> Result<DMatrix<f64>, Diagnostic> {
         let n = group.size();
-        let m = self.mat(i).map_err(|_| self.wrong(i, group.name()))?;
+        let m = self.mat(i).map_err(|_| self.wrong(i, group.name()))?.clone();
         if m.nrows() != n || m.ncols() != n {
             return Err(self.wrong(i, group.name()));
         }
         if self.vals[i].kind() == group.kind() {
-            return Ok(m.clone());
+            return Ok(m);
         }
         let span = self.span(i);
-        read_group(m, group, span, self.warnings)
+        read_group(&m, group, span, self.warnings)
     }
 
     pub fn so3(&mut self, i: usize) -> Result<Mat3, Diagnostic> {

@@ -10,7 +10,7 @@ use crate::diagnostics::{Diagnostic, ErrorKind};
 use crate::eval::convert::{self, Group};
 use crate::eval::ops;
 use crate::eval::value::Value;
-use crate::lie::{self, Mat2, Mat3, Mat4, Vec3, Vec6, matexp, se2, se3, so2, so3};
+use crate::lie::{self, Mat3, Mat4, Vec3, matexp, se2, se3, so2, so3};
 
 fn scalar() -> Kind {
     Kind::Scalar
@@ -187,14 +187,6 @@ fn vee_rule(args: &[Ty]) -> Result<Ty, ArgError> {
         _ => return Err(ArgError::type_of(0, format!("vee takes so(3) or se(3), not a {}", args[0].kind))),
     };
     Ok(Ty::new(kind, args[0].frames.clone()))
-}
-
-fn same_rule(args: &[Ty]) -> Result<Ty, ArgError> {
-    let k = &args[0].kind;
-    if k.shape().is_none() {
-        return Err(ArgError::type_of(0, format!("expected numbers, not a {k}")));
-    }
-    Ok(args[0].clone())
 }
 
 fn untag_rule(args: &[Ty]) -> Result<Ty, ArgError> {
@@ -478,10 +470,3 @@ pub(super) fn builtins() -> Vec<Builtin> {
     ]
 }
 
-#[allow(dead_code)]
-fn unused(_: Mat2, _: Vec6) {}
-
-/// Exposed for the interpreter: the kind of `x.T` etc. without a table entry.
-pub fn same(args: &[Ty]) -> Result<Ty, ArgError> {
-    same_rule(args)
-}

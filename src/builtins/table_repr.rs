@@ -3,7 +3,7 @@
 //! membership tests and projections of §3.6, and mechanisms (chapter 2).
 
 use super::{Area, ArgError, Args, Builtin, FrameRule, Param, Typing};
-use crate::check::ty::{Frames, Kind, Ty};
+use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
 use crate::eval::convert::{self, Group};
 use crate::eval::value::Value;
@@ -325,7 +325,3 @@ pub(super) fn builtins() -> Vec<Builtin> {
     ]
 }
 
-/// The frames of a plain argument, for rules that only pass them on.
-pub fn passthrough(t: &Ty) -> Frames {
-    t.frames.clone()
-}

@@ -59,17 +59,18 @@ pub fn matrix_block(m: &nalgebra::DMatrix<f64>, digits: usize, indent: usize) ->
             out.push('\n');
             out.push_str(&" ".repeat(indent + 1));
         }
-        let parts: Vec<String> = row
-            .iter()
-            .enumerate()
-            .map(|(j, c)| {
-                let (i, f) = split(c);
-                let last = j + 1 == ncols;
-                let pad_r = if last { 0 } else { frac_w[j] - f.chars().count() };
-                format!("{}{}{}{}", " ".repeat(int_w[j] - i.chars().count()), i, f, " ".repeat(pad_r))
-            })
-            .collect();
-        out.push_str(parts.join(", ").trim_end());
+        let mut line = String::new();
+        for (j, c) in row.iter().enumerate() {
+            let (i, f) = split(c);
+            line.push_str(&" ".repeat(int_w[j] - i.chars().count()));
+            line.push_str(&i);
+            line.push_str(&f);
+            if j + 1 < ncols {
+                line.push(',');
+                line.push_str(&" ".repeat(frac_w[j] - f.chars().count() + 1));
+            }
+        }
+        out.push_str(&line);
     }
     out.push(']');
     out
@@ -101,7 +102,7 @@ pub fn show_value(prefix: &str, ty: &Ty, v: &Value, digits: usize) -> String {
         }
         Value::Mech(mech) => {
             let body = mech.to_string();
-            if prefix.is_empty() { body } else { format!("{prefix}\n{body}") }
+            if prefix.is_empty() { body } else { format!("{}\n{body}", prefix.trim_end()) }
         }
         _ => format!("{prefix}{}{tail}", inline(v, digits)),
     }
