@@ -71,9 +71,11 @@ impl Args<'_> {
             i,
             ErrorKind::Type,
             format!(
-                "argument {} of {} must be a {want}, not a {found}",
+                "argument {} of {} must be {}, not {}",
                 i + 1,
-                self.name
+                self.name,
+                article(want),
+                found.a()
             ),
         )
     }
@@ -235,23 +237,38 @@ pub fn read_group(
             Ok(p)
         }
         Membership::Outside { distance, det } => {
-            let why = if det.is_finite() && det <= 0.0 {
-                format!("its determinant is {} (must be +1)", crate::output::number::fmt_num(det, 6))
-            } else if distance.is_finite() {
-                format!("distance from {} is {}", group.name(), crate::output::number::fmt_num(distance, 6))
-            } else {
+            let gap = orthogonality_gap(m, group);
+            let why = if !gap.is_finite() {
                 "it has entries that are not finite".to_string()
+            } else if det <= 0.0 {
+                format!(
+                    "det = {} (must be +1), ‖RᵀR − I‖ = {}",
+                    crate::output::number::fmt_num(det, 4),
+                    crate::output::number::fmt_num(gap, 4)
+                )
+            } else {
+                format!("distance from {} is {}", group.name(), crate::output::number::fmt_num(distance, 4))
             };
-            Err(Diagnostic::error(
-                ErrorKind::Domain,
-                span,
-                format!("not {}: {why}", group.noun()),
-            )
-            .with_help(format!(
-                "{} needs MᵀM = I and det = +1 (within 1e-2 it is projected); see DistanceTo{}",
+            Err(Diagnostic::error(ErrorKind::Domain, span, format!("not {}: {why}", group.noun())).with_help(format!(
+                "{} needs RᵀR = I and det R = +1 (within 1e-2 it is projected, with a warning); see DistanceTo{}",
                 group.name(),
                 group.name().replace(['(', ')'], "")
             )))
         }
     }
+}
+
+/// ‖RᵀR − I‖_F of the rotation block.
+fn orthogonality_gap(m: &DMatrix<f64>, group: Group) -> f64 {
+    let k = if matches!(group, Group::SO2 | Group::SE2) { 2 } else { 3 };
+    let r = m.view((0, 0), (k, k));
+    (r.transpose() * r - DMatrix::<f64>::identity(k, k)).norm()
+}
+
+/// `a 3-vector`, `an SO(3)`.
+pub fn article(what: &str) -> String {
+    let vowel = what.starts_with(['a', 'e', 'i', 'o', 'u', 'S', 's', '8'])
+        && !what.starts_with("screw")
+        && !what.starts_with("scalar");
+    format!("{} {what}", if vowel { "an" } else { "a" })
 }

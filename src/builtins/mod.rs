@@ -103,6 +103,11 @@ impl Param {
         }
     }
 
+    /// The description with its article: `a 3-vector`, `an SO(3)`.
+    pub fn describe_a(self) -> String {
+        args::article(self.describe())
+    }
+
     /// Whether a value of kind `k` may be passed (unknown kinds may).
     pub fn accepts(self, k: &Kind) -> bool {
         use Kind::*;
@@ -233,11 +238,11 @@ impl Builtin {
                         return Err(ArgError::type_of(
                             i,
                             format!(
-                                "argument {} of {} must be a {}, not a {}",
+                                "argument {} of {} must be {}, not {}",
                                 i + 1,
                                 self.name,
-                                p.describe(),
-                                a.kind
+                                p.describe_a(),
+                                a.kind.a()
                             ),
                         ));
                     }

@@ -38,7 +38,7 @@ fn screw_params_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     if !Param::Vec(6).accepts(&args[0].kind) && !Param::Expc6.accepts(&args[0].kind) {
         return Err(ArgError::type_of(
             0,
-            format!("screw_params takes a screw axis or twist, not a {}", args[0].kind),
+            format!("screw_params takes a screw axis or twist, not {}", args[0].kind.a()),
         ));
     }
     Ok(Ty::new(
@@ -58,11 +58,12 @@ fn eval_rot(a: &mut Args) -> Result<Value, Diagnostic> {
 }
 
 fn displacement_rule(args: &[Ty]) -> Result<Ty, ArgError> {
+    let planar = args.iter().all(|t| matches!(t.kind, Kind::SE2 | Kind::Matrix(Some(3), Some(3))));
     for (i, t) in args.iter().enumerate() {
-        if !Param::Trans.accepts(&t.kind) {
+        if !Param::Trans.accepts(&t.kind) && !planar {
             return Err(ArgError::type_of(
                 i,
-                format!("displacement takes two transforms, not a {}", t.kind),
+                format!("displacement takes two transforms (SE(3) or SE(2)), not {}", t.kind.a()),
             ));
         }
     }
@@ -79,16 +80,25 @@ fn displacement_rule(args: &[Ty]) -> Result<Ty, ArgError> {
         (Some(a), _) | (None, Some(a)) => Frames::Disp(a.clone()),
         _ => Frames::None,
     };
-    Ok(Ty::new(Kind::SE3, frames))
+    Ok(Ty::new(if planar { Kind::SE2 } else { Kind::SE3 }, frames))
+}
+
+fn eval_displacement(a: &mut Args) -> Result<Value, Diagnostic> {
+    if a.mat(0)?.shape() == (3, 3) {
+        let (tb, tc) = (a.se2(0)?, a.se2(1)?);
+        return Ok(Value::num(Kind::SE2, &(tc * crate::lie::se2::inv(&tb))));
+    }
+    let (tb, tc) = (a.se3(0)?, a.se3(1)?);
+    Ok(Value::num(Kind::SE3, &(tc * se3::inv(&tb))))
 }
 
 /// RpToTrans(R_ab, p_ab): {a}←{b}; p must be in {a}.
 fn rp_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     if !Param::Rot.accepts(&args[0].kind) {
-        return Err(ArgError::type_of(0, format!("R must be SO(3), not a {}", args[0].kind)));
+        return Err(ArgError::type_of(0, format!("R must be SO(3), not {}", args[0].kind.a())));
     }
     if !Param::Vec(3).accepts(&args[1].kind) {
-        return Err(ArgError::type_of(1, format!("p must be a 3-vector, not a {}", args[1].kind)));
+        return Err(ArgError::type_of(1, format!("p must be a 3-vector, not {}", args[1].kind.a())));
     }
     let frames = match (&args[0].frames, &args[1].frames) {
         (Frames::Pair(a, _), Frames::One(p)) if a != p => {
@@ -99,19 +109,14 @@ fn rp_rule(args: &[Ty]) -> Result<Ty, ArgError> {
             });
         }
         (Frames::Pair(..), _) => args[0].frames.clone(),
-        (_, Frames::One(p)) => Frames::Pair(p.clone(), crate::check::ty::Frame::named("?").moved()),
         _ => Frames::None,
-    };
-    let frames = match frames {
-        Frames::Pair(_, ref b) if b.name == "?" => Frames::None,
-        f => f,
     };
     Ok(Ty::new(Kind::SE3, frames))
 }
 
 fn trans_to_rp_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     if !Param::Trans.accepts(&args[0].kind) {
-        return Err(ArgError::type_of(0, format!("TransToRp takes SE(3), not a {}", args[0].kind)));
+        return Err(ArgError::type_of(0, format!("TransToRp takes SE(3), not {}", args[0].kind.a())));
     }
     Ok(Ty::new(Kind::Tuple(vec![Kind::SO3, v3()]), args[0].frames.clone()))
 }
@@ -358,10 +363,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
             example: "displacement(Trans((1, 0, 0)), Trans((1, 2, 0)))",
             area: Transforms,
             typing: Typing::Custom { arity: (2, 2), rule: displacement_rule },
-            eval: |a| {
-                let (tb, tc) = (a.se3(0)?, a.se3(1)?);
-                Ok(Value::num(Kind::SE3, &(tc * se3::inv(&tb))))
-            },
+            eval: eval_displacement,
         },
         Builtin {
             name: "VecTose3",

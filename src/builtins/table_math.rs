@@ -30,13 +30,14 @@ fn exp_rule(args: &[Ty]) -> Result<Ty, ArgError> {
             return Err(ArgError::type_of(
                 0,
                 format!(
-                    "exp takes a matrix such as [ω]θ or [S]θ, not a {k}; write exp([x]) or MatrixExp3/MatrixExp6(x)"
+                    "exp takes a matrix such as [ω]θ or [S]θ, not {}; write exp([x]) or MatrixExp3/MatrixExp6(x)",
+                    k.a()
                 ),
             ));
         }
         k => match k.shape() {
             Some((r, c)) if r == c || r.is_none() || c.is_none() => Kind::Matrix(r, c),
-            _ => return Err(ArgError::type_of(0, format!("exp needs a square matrix, not a {k}"))),
+            _ => return Err(ArgError::type_of(0, format!("exp needs a square matrix, not {}", k.a()))),
         },
     };
     let frames = match &t.frames {
@@ -103,7 +104,7 @@ fn log_rule(args: &[Ty]) -> Result<Ty, ArgError> {
         k => {
             return Err(ArgError::type_of(
                 0,
-                format!("log takes a rotation or transform (SO(3), SE(3), SO(2), SE(2)), not a {k}"),
+                format!("log takes a rotation or transform (SO(3), SE(3), SO(2), SE(2)), not {}", k.a()),
             ));
         }
     };
@@ -154,7 +155,7 @@ fn pair_rule(what: &'static str, ret: fn(&[Ty]) -> Kind) -> impl Fn(&[Ty]) -> Re
     move |args: &[Ty]| {
         for (i, t) in args.iter().enumerate() {
             if !Param::AnyVec.accepts(&t.kind) {
-                return Err(ArgError::type_of(i, format!("{what} takes vectors, not a {}", t.kind)));
+                return Err(ArgError::type_of(i, format!("{what} takes vectors, not {}", t.kind.a())));
             }
         }
         let frames = crate::check::rules::vector_pair(what, &args[0], &args[1]).map_err(|e| ArgError {
@@ -184,7 +185,7 @@ fn vee_rule(args: &[Ty]) -> Result<Ty, ArgError> {
         Some((Some(4), Some(4))) => Kind::Twist,
         Some((Some(3), Some(3))) => Kind::Vector(Some(3)),
         _ if args[0].kind == Kind::Unknown => Kind::Unknown,
-        _ => return Err(ArgError::type_of(0, format!("vee takes so(3) or se(3), not a {}", args[0].kind))),
+        _ => return Err(ArgError::type_of(0, format!("vee takes so(3) or se(3), not {}", args[0].kind.a()))),
     };
     Ok(Ty::new(kind, args[0].frames.clone()))
 }
@@ -196,15 +197,25 @@ fn untag_rule(args: &[Ty]) -> Result<Ty, ArgError> {
 fn matrix_ctor_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     for (i, t) in args.iter().enumerate() {
         if !t.kind.maybe_scalar() {
-            return Err(ArgError::type_of(i, format!("sizes are numbers, not a {}", t.kind)));
+            return Err(ArgError::type_of(i, format!("sizes are numbers, not {}", t.kind.a())));
         }
     }
     Ok(Ty::plain(Kind::Matrix(None, None)))
 }
 
 fn sized(a: &Args) -> Result<(usize, usize), Diagnostic> {
-    let r = a.int(0, 0, ops::MAX_DIM as i64)? as usize;
-    let c = if a.len() > 1 { a.int(1, 0, ops::MAX_DIM as i64)? as usize } else { r };
+    let side = |i: usize| -> Result<usize, Diagnostic> {
+        let x = a.scalar(i)?;
+        if x.fract() != 0.0 || x < 0.0 || !x.is_finite() {
+            return Err(a.error(i, ErrorKind::Domain, format!("a size must be a whole number ≥ 0, got {x}")));
+        }
+        if x > ops::MAX_DIM as f64 {
+            return Err(a.error(i, ErrorKind::Domain, format!("a side of {x} is too large (at most {})", ops::MAX_DIM)));
+        }
+        Ok(x as usize)
+    };
+    let r = side(0)?;
+    let c = if a.len() > 1 { side(1)? } else { r };
     if r * c > ops::MAX_ELEMENTS {
         return Err(a.domain(format!("{r}×{c} is too large (at most {} entries)", ops::MAX_ELEMENTS)));
     }

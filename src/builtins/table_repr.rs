@@ -39,14 +39,14 @@ fn se2_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     match args.len() {
         1 => {
             if !Param::Square.accepts(&args[0].kind) {
-                return Err(ArgError::type_of(0, format!("SE2 takes a 3×3 matrix, not a {}", args[0].kind)));
+                return Err(ArgError::type_of(0, format!("SE2 takes a 3×3 matrix, not {}", args[0].kind.a())));
             }
             Ok(Ty::new(Kind::SE2, args[0].frames.clone()))
         }
         _ => {
             for (i, t) in args.iter().enumerate() {
                 if !Param::Scalar.accepts(&t.kind) {
-                    return Err(ArgError::type_of(i, format!("SE2(theta, x, y) takes numbers, not a {}", t.kind)));
+                    return Err(ArgError::type_of(i, format!("SE2(theta, x, y) takes numbers, not {}", t.kind.a())));
                 }
             }
             Ok(Ty::plain(Kind::SE2))
@@ -56,7 +56,7 @@ fn se2_rule(args: &[Ty]) -> Result<Ty, ArgError> {
 
 fn dof_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     if args[0].kind != Kind::Mechanism && args[0].kind != Kind::Unknown {
-        return Err(ArgError::type_of(0, format!("dof takes a mechanism, not a {}", args[0].kind)));
+        return Err(ArgError::type_of(0, format!("dof takes a mechanism, not {}", args[0].kind.a())));
     }
     Ok(Ty::scalar())
 }

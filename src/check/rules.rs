@@ -107,7 +107,7 @@ pub fn mul(l: &Ty, r: &Ty, ops: Operands) -> Result<Ty, RuleError> {
 }
 
 fn shape_error(l: &Kind, r: &Kind) -> RuleError {
-    RuleError::typ(format!("cannot multiply a {l} by a {r}"))
+    RuleError::typ(format!("cannot multiply {} by {}", l.a(), r.a()))
 }
 
 /// The kind of a product of two non-scalars.
@@ -404,7 +404,7 @@ fn add_kind(l: &Kind, r: &Kind) -> Result<Kind, RuleError> {
         (Unknown, k) | (k, Unknown) => Ok(scaled_kind(k)),
         (Twist | Screw, Twist | Screw | Vector(_)) | (Vector(_), Twist | Screw) => {
             if r.vec_len().is_some_and(|n| n != 6) || l.vec_len().is_some_and(|n| n != 6) {
-                Err(RuleError::typ(format!("cannot add a {l} and a {r}")))
+                Err(RuleError::typ(format!("cannot add {} and {}", l.a(), r.a())))
             } else {
                 Ok(Twist)
             }
@@ -422,7 +422,7 @@ fn add_kind(l: &Kind, r: &Kind) -> Result<Kind, RuleError> {
                         Ok(Matrix(lr.or(rr), lc.or(rc)))
                     }
                 }
-                _ => Err(RuleError::typ(format!("cannot add a {l} and a {r}"))
+                _ => Err(RuleError::typ(format!("cannot add {} and {}", l.a(), r.a()))
                     .with_help("sums need operands of the same size")),
             }
         }
@@ -433,7 +433,7 @@ fn add_kind(l: &Kind, r: &Kind) -> Result<Kind, RuleError> {
 pub fn neg(t: &Ty) -> Result<Ty, RuleError> {
     match t.kind {
         Kind::Mechanism | Kind::Tuple(_) | Kind::Bool | Kind::Function => {
-            Err(RuleError::typ(format!("cannot negate a {}", t.kind)))
+            Err(RuleError::typ(format!("cannot negate {}", t.kind.a())))
         }
         _ => Ok(Ty::new(scaled_kind(&t.kind), t.frames.clone())),
     }
@@ -442,7 +442,7 @@ pub fn neg(t: &Ty) -> Result<Ty, RuleError> {
 /// `l / r`: only division by a scalar.
 pub fn div(l: &Ty, r: &Ty) -> Result<Ty, RuleError> {
     if !r.kind.maybe_scalar() {
-        return Err(RuleError::typ(format!("cannot divide by a {}", r.kind))
+        return Err(RuleError::typ(format!("cannot divide by {}", r.kind.a()))
             .with_help("to undo a matrix, multiply by inv(M)"));
     }
     if !r.frames.is_none() {
@@ -462,7 +462,7 @@ pub fn inverse(t: &Ty) -> Result<Ty, RuleError> {
             Ok(Ty::new(Kind::Matrix(*r, *c), t.frames.swapped()))
         }
         Kind::Unknown => Ok(Ty::new(Kind::Unknown, t.frames.swapped())),
-        k => Err(RuleError::typ(format!("cannot invert a {k}"))
+        k => Err(RuleError::typ(format!("cannot invert {}", k.a()))
             .with_help("only square matrices have inverses")),
     }
 }
@@ -485,7 +485,7 @@ pub fn transpose(t: &Ty) -> Result<Ty, RuleError> {
                     Kind::Matrix(c, r)
                 }
             }
-            None => return Err(RuleError::typ(format!("cannot transpose a {k}"))),
+            None => return Err(RuleError::typ(format!("cannot transpose {}", k.a()))),
         },
     };
     let frames = if t.kind.is_vector() {
@@ -500,8 +500,8 @@ pub fn transpose(t: &Ty) -> Result<Ty, RuleError> {
 pub fn pow(base: &Ty, exp: &Ty, literal: Option<f64>) -> Result<Ty, RuleError> {
     if !exp.kind.maybe_scalar() {
         return Err(RuleError::typ(format!(
-            "the exponent must be a number, not a {}",
-            exp.kind
+            "the exponent must be a number, not {}",
+            exp.kind.a()
         )));
     }
     if base.kind.maybe_scalar() && base.kind == Kind::Scalar {
@@ -512,7 +512,7 @@ pub fn pow(base: &Ty, exp: &Ty, literal: Option<f64>) -> Result<Ty, RuleError> {
         None => false,
     };
     if !square {
-        return Err(RuleError::typ(format!("cannot raise a {} to a power", base.kind))
+        return Err(RuleError::typ(format!("cannot raise {} to a power", base.kind.a()))
             .with_help("powers need a square matrix"));
     }
     match literal {
@@ -580,8 +580,8 @@ pub fn member(t: &Ty, name: &str) -> Result<Ty, RuleError> {
                 k if k.shape().is_some() => ".T",
                 _ => "none",
             };
-            Err(RuleError::typ(format!("a {} has no member .{name}", t.kind))
-                .with_help(format!("members of a {}: {known}", t.kind)))
+            Err(RuleError::typ(format!("{} has no member .{name}", t.kind.a()))
+                .with_help(format!("members of {}: {known}", t.kind.a())))
         }
     }
 }

@@ -128,6 +128,18 @@ impl Kind {
     }
 }
 
+impl Kind {
+    /// The kind with its article: `a 3-vector`, `an SO(3)`, `an adjoint`.
+    pub fn a(&self) -> String {
+        let name = self.to_string();
+        let vowel = name.starts_with(['a', 'e', 'i', 'o', 'u', 'S', 's'])
+            && !name.starts_with("screw")
+            && !name.starts_with("scalar");
+        let vowel = vowel || name.starts_with("8-") || name.starts_with("11-") || name.starts_with("18-");
+        format!("{} {name}", if vowel { "an" } else { "a" })
+    }
+}
+
 impl fmt::Display for Kind {
     /// The book's names: `SE(3)`, `so(3)`, `twist`, `3-vector`, `4×4 matrix`.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {

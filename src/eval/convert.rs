@@ -131,7 +131,15 @@ pub fn classify(m: &DMatrix<f64>) -> Kind {
         (3, 3) if is(Group::SE2) => Kind::SE2,
         (4, 4) if is(Group::SE3) => Kind::SE3,
         (2, 2) if is(Group::SO2) => Kind::SO2,
+        (3, 3) if is_skew(m) => Kind::So3,
+        (4, 4) if is_skew(&m.view((0, 0), (3, 3)).into_owned()) && m.row(3).iter().all(|x| *x == 0.0) && m.iter().any(|x| *x != 0.0) => Kind::Se3,
         (r, 1) => Kind::Vector(Some(r)),
         (r, c) => Kind::Matrix(Some(r), Some(c)),
     }
+}
+
+/// A nonzero matrix equal to minus its transpose (an element of so(3)).
+fn is_skew(m: &DMatrix<f64>) -> bool {
+    let scale = m.abs().max();
+    scale > 0.0 && (m + m.transpose()).abs().max() <= 1e-12 * scale
 }

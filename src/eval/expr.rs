@@ -76,7 +76,7 @@ impl Interp<'_> {
                     return Err(Diagnostic::error(
                         ErrorKind::Type,
                         inner.span,
-                        format!("degrees apply to a number, not a {}", t.ty.kind),
+                        format!("degrees apply to a number, not {}", t.ty.kind.a()),
                     ));
                 }
                 let val = match t.val {

@@ -1,0 +1,2 @@
+# too few arguments
+RpToTrans(Rotz(1))

@@ -1,0 +1,2 @@
+# wrong number of arguments: the signature is printed
+MatrixExp3((1, 2, 3), 2)

@@ -1,0 +1,2 @@
+# absurd sizes are refused, not allocated
+zeros(100000000, 100000000)

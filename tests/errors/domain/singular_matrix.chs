@@ -1,0 +1,2 @@
+# inverting a singular matrix
+inv([1, 2; 2, 4])

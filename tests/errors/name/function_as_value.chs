@@ -1,0 +1,2 @@
+# a function used as a value
+x = RotInv

@@ -1,0 +1,2 @@
+# a typo in a builtin
+MatrixLog(Rotz(1))

@@ -1,0 +1,2 @@
+# a stray operator
+x = 2 * * 3

@@ -1,0 +1,2 @@
+# power written as **
+x = 2 ** 3

@@ -1,0 +1,2 @@
+# a member that does not exist
+Rotz(1).p

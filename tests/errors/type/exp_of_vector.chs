@@ -1,0 +1,2 @@
+# exp of a vector: the book writes exp([w] theta)
+exp((0, 0, 1))

@@ -1,0 +1,49 @@
+//! The book as tests: every script under `examples/` runs through the real
+//! binary and its whole output (stdout, stderr, exit code) is snapshotted.
+//! The numbers in the snapshots are checked against the book by the header
+//! comments of each script. Error scripts under `tests/errors/<kind>/` are
+//! snapshotted the same way, one folder per error kind.
+
+use std::path::Path;
+use std::process::Command;
+
+fn run(args: &[&str]) -> String {
+    let out = Command::new(env!("CARGO_BIN_EXE_chasles"))
+        .args(args)
+        .env("NO_COLOR", "1")
+        .output()
+        .expect("the chasles binary runs");
+    format!(
+        "exit: {}\n--- stdout\n{}--- stderr\n{}",
+        out.status.code().map_or("signal".to_string(), |c| c.to_string()),
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    )
+}
+
+fn rel(path: &Path) -> String {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    path.strip_prefix(root).unwrap_or(path).to_string_lossy().replace('\\', "/")
+}
+
+#[test]
+fn example_scripts() {
+    insta::glob!("../examples", "*.chs", |path| {
+        let out = run(&["run", &rel(path)]);
+        assert!(out.starts_with("exit: 0\n"), "{} failed:\n{out}", rel(path));
+        insta::assert_snapshot!(out);
+    });
+}
+
+#[test]
+fn error_scripts() {
+    insta::glob!("errors", "*/*.chs", |path| {
+        let out = run(&["run", "--keep-going", &rel(path)]);
+        let kind = path.parent().and_then(|p| p.file_name()).map(|k| k.to_string_lossy().to_string()).unwrap_or_default();
+        assert!(out.starts_with("exit: 1\n"), "{} should fail:\n{out}", rel(path));
+        if ["syntax", "name", "type", "frame", "domain", "arity"].contains(&kind.as_str()) {
+            assert!(out.contains(&format!("{kind} error")), "{} should report a {kind} error:\n{out}", rel(path));
+        }
+        insta::assert_snapshot!(out);
+    });
+}
