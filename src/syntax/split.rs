@@ -299,7 +299,7 @@ mod tests {
     fn brackets_keep_rows_and_parens_continue() {
         assert_eq!(texts("M = [1, 2\n 3, 4]\nf(1,\n 2)"), [
             "M = [1, 2\n 3, 4]",
-            "f(1,   2)"
+            "f(1,  2)"
         ]);
         assert_eq!(texts("mech < links 4; joints 4R; planar >; x"), [
             "mech < links 4; joints 4R; planar >",
@@ -320,7 +320,9 @@ mod tests {
         assert_eq!(s.chunks.len(), 2);
         assert!(s.chunks[0].error.is_some());
         assert!(s.chunks[1].error.is_none());
-        assert!(!s.open_at_end);
+        // For the REPL the `(` is still open: keep reading.
+        assert!(s.open_at_end);
         assert!(split("[1, 2\n").open_at_end);
+        assert!(!split("x)\n[1, 2\n").open_at_end);
     }
 }
