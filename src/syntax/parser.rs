@@ -1,0 +1,665 @@
+//! One statement's text → [`Stmt`], through the pest grammar.
+//!
+//! The grammar (`grammar/chasles.pest`) gives an expression as a flat
+//! sequence of operands and operators; a Pratt parser builds the tree. Every
+//! step is fallible — a malformed pair becomes a diagnostic, never a panic —
+//! and the depth of the tree is bounded by [`MAX_DEPTH`]: operator chains are
+//! measured before the (recursive) Pratt parser runs, and every node built
+//! checks its own depth.
+
+use std::cell::Cell;
+use std::sync::LazyLock;
+
+use pest::Parser as _;
+use pest::iterators::Pair;
+use pest::pratt_parser::{Assoc, Op, PrattParser};
+use pest_derive::Parser;
+
+use super::MAX_DEPTH;
+use super::ast::{
+    BinOp, Expr, ExprKind, Ident, IndexArg, JointGroupSyntax, MechSpec, Span, Stmt, StmtKind,
+    UnOp,
+};
+use super::rules;
+use crate::diagnostics::{Diagnostic, ErrorKind};
+
+#[derive(Parser)]
+#[grammar = "grammar/chasles.pest"]
+pub(crate) struct ChaslesParser;
+
+/// Precedence levels, loosest first; the same order as [`PRATT`].
+const PREC_ADD: u8 = 1;
+const PREC_MUL: u8 = 2;
+const PREC_PREFIX: u8 = 3;
+const PREC_POW: u8 = 4;
+
+static PRATT: LazyLock<PrattParser<Rule>> = LazyLock::new(|| {
+    PrattParser::new()
+        .op(Op::infix(Rule::add, Assoc::Left) | Op::infix(Rule::sub, Assoc::Left))
+        .op(Op::infix(Rule::mul, Assoc::Left)
+            | Op::infix(Rule::div, Assoc::Left)
+            | Op::infix(Rule::juxt, Assoc::Left)
+            | Op::infix(Rule::starstar, Assoc::Left))
+        .op(Op::prefix(Rule::neg) | Op::prefix(Rule::pos))
+        .op(Op::infix(Rule::pow, Assoc::Right))
+        .op(Op::postfix(Rule::index) | Op::postfix(Rule::member) | Op::postfix(Rule::degrees))
+});
+
+/// Parses the statement at `span` of `text` (the blanked source).
+pub(crate) fn parse_statement(text: &str, span: Span) -> Result<Stmt, Diagnostic> {
+    let chunk = text.get(span.start..span.end).unwrap_or("");
+    let cx = Cx {
+        off: span.start,
+        text: chunk,
+        above: Cell::new(0),
+    };
+    pest::set_error_detail(true);
+    let mut pairs =
+        ChaslesParser::parse(Rule::statement, chunk).map_err(|e| rules::pest_error(e, &cx))?;
+    let stmt = pairs.next().ok_or_else(|| cx.internal(span))?;
+    let form = stmt
+        .into_inner()
+        .find(|p| p.as_rule() != Rule::EOI)
+        .ok_or_else(|| cx.internal(span))?;
+    let kind = cx.statement(form)?;
+    Ok(Stmt { kind, span })
+}
+
+/// Where the statement sits in the source.
+pub(crate) struct Cx<'a> {
+    /// Byte offset of the statement in the whole source.
+    pub off: usize,
+    /// The statement's text.
+    pub text: &'a str,
+    /// How many tree levels lie above the expression being built (open
+    /// operators and brackets of the enclosing expressions). Bounds the
+    /// recursion of the Pratt parser across nested brackets.
+    above: Cell<usize>,
+}
+
+type Built = Result<(Expr, usize), Diagnostic>;
+
+/// How a pair takes part in the operator sequence of an expression.
+enum Role {
+    Prefix,
+    Operand,
+    Postfix,
+    Infix { prec: u8, right: bool },
+}
+
+fn role(rule: Rule) -> Role {
+    match rule {
+        Rule::neg | Rule::pos => Role::Prefix,
+        Rule::add | Rule::sub => Role::Infix {
+            prec: PREC_ADD,
+            right: false,
+        },
+        Rule::mul | Rule::div | Rule::juxt | Rule::starstar => Role::Infix {
+            prec: PREC_MUL,
+            right: false,
+        },
+        Rule::pow => Role::Infix {
+            prec: PREC_POW,
+            right: true,
+        },
+        Rule::index | Rule::member | Rule::degrees => Role::Postfix,
+        _ => Role::Operand,
+    }
+}
+
+pub(crate) fn too_deep(span: Span) -> Diagnostic {
+    Diagnostic::error(
+        ErrorKind::Syntax,
+        span,
+        format!("expression nested too deeply (limit {MAX_DEPTH})"),
+    )
+    .with_help("split it into several statements with intermediate names")
+}
+
+fn check_depth(depth: usize, span: Span) -> Result<(), Diagnostic> {
+    if depth > MAX_DEPTH {
+        Err(too_deep(span))
+    } else {
+        Ok(())
+    }
+}
+
+impl Cx<'_> {
+    pub(crate) fn span(&self, s: pest::Span<'_>) -> Span {
+        Span::new(self.off + s.start(), self.off + s.end())
+    }
+
+    fn internal(&self, span: Span) -> Diagnostic {
+        Diagnostic::error(ErrorKind::Syntax, span, "internal parser error")
+    }
+
+    fn unexpected(&self, pair: &Pair<'_, Rule>) -> Diagnostic {
+        Diagnostic::error(
+            ErrorKind::Syntax,
+            self.span(pair.as_span()),
+            format!("internal parser error: unexpected {:?}", pair.as_rule()),
+        )
+    }
+
+    fn ident(&self, pair: Pair<'_, Rule>) -> Result<Ident, Diagnostic> {
+        if pair.as_rule() != Rule::ident {
+            return Err(self.unexpected(&pair));
+        }
+        Ok(Ident {
+            name: pair.as_str().to_string(),
+            span: self.span(pair.as_span()),
+        })
+    }
+
+    fn statement(&self, form: Pair<'_, Rule>) -> Result<StmtKind, Diagnostic> {
+        let whole = self.span(form.as_span());
+        match form.as_rule() {
+            Rule::expr => Ok(StmtKind::Expr(self.expr(form)?.0)),
+            Rule::assign => {
+                let mut it = form.into_inner();
+                let target = self.ident(it.next().ok_or_else(|| self.internal(whole))?)?;
+                let value = self.expr(it.next().ok_or_else(|| self.internal(whole))?)?.0;
+                Ok(StmtKind::Assign { target, value })
+            }
+            Rule::destructure => {
+                let mut targets = Vec::new();
+                let mut value = None;
+                for p in form.into_inner() {
+                    match p.as_rule() {
+                        Rule::ident => targets.push(self.ident(p)?),
+                        Rule::expr => value = Some(self.expr(p)?.0),
+                        _ => return Err(self.unexpected(&p)),
+                    }
+                }
+                let value = value.ok_or_else(|| self.internal(whole))?;
+                Ok(StmtKind::Destructure { targets, value })
+            }
+            Rule::fn_def => {
+                let mut name = None;
+                let mut params = Vec::new();
+                let mut body = None;
+                for p in form.into_inner() {
+                    match p.as_rule() {
+                        Rule::ident => name = Some(self.ident(p)?),
+                        Rule::params => {
+                            for q in p.into_inner() {
+                                params.push(self.ident(q)?);
+                            }
+                        }
+                        Rule::expr => body = Some(self.expr(p)?.0),
+                        _ => return Err(self.unexpected(&p)),
+                    }
+                }
+                match (name, body) {
+                    (Some(name), Some(body)) => Ok(StmtKind::FnDef { name, params, body }),
+                    _ => Err(self.internal(whole)),
+                }
+            }
+            Rule::given_stmt => {
+                let mut names = Vec::new();
+                for p in form.into_inner() {
+                    match p.as_rule() {
+                        Rule::kw_given => {}
+                        _ => names.push(self.ident(p)?),
+                    }
+                }
+                let ty = names.pop().ok_or_else(|| self.internal(whole))?;
+                Ok(StmtKind::Given { names, ty })
+            }
+            Rule::derive_stmt => {
+                let p = form
+                    .into_inner()
+                    .find(|p| p.as_rule() == Rule::ident)
+                    .ok_or_else(|| self.internal(whole))?;
+                Ok(StmtKind::Derive {
+                    target: self.ident(p)?,
+                })
+            }
+            _ => Err(self.unexpected(&form)),
+        }
+    }
+
+    /// An `expr` pair → its tree and depth.
+    fn expr(&self, pair: Pair<'_, Rule>) -> Built {
+        let whole = self.span(pair.as_span());
+        let children: Vec<Pair<'_, Rule>> = pair.into_inner().collect();
+
+        // Juxtaposition is only legal after a number or a bracket.
+        for (k, child) in children.iter().enumerate() {
+            match child.as_rule() {
+                Rule::juxt => {
+                    let (Some(left), Some(right)) = (children.get(k.wrapping_sub(1)), children.get(k + 1))
+                    else {
+                        return Err(self.unexpected(child));
+                    };
+                    self.check_juxtaposition(left, right)?;
+                }
+                Rule::starstar => {
+                    return Err(Diagnostic::error(
+                        ErrorKind::Syntax,
+                        self.span(child.as_span()),
+                        "`**` is not an operator",
+                    )
+                    .with_help("use ^ for powers: x^2"));
+                }
+                _ => {}
+            }
+        }
+
+        // The flat operator sequence the Pratt parser reads.
+        let mut stream: Vec<Pair<'_, Rule>> = Vec::with_capacity(children.len());
+        for child in children {
+            if child.as_rule() == Rule::operand {
+                stream.extend(child.into_inner());
+            } else {
+                stream.push(child);
+            }
+        }
+        let above = self.check_sequence(&stream, whole)?;
+        let mut next_operand = 0;
+        // Levels above the operand last built, for its index arguments.
+        let last_above = Cell::new(self.above.get());
+
+        PRATT
+            .map_primary(|p| {
+                let here = above.get(next_operand).copied().unwrap_or(0);
+                next_operand += 1;
+                last_above.set(here);
+                self.nested(here, || self.primary(p))
+            })
+            .map_prefix(|op, rhs| {
+                let (operand, d) = rhs?;
+                let span = self.span(op.as_span()).join(operand.span);
+                check_depth(d + 1, self.span(op.as_span()))?;
+                let op = match op.as_rule() {
+                    Rule::neg => UnOp::Neg,
+                    Rule::pos => UnOp::Pos,
+                    _ => return Err(self.unexpected(&op)),
+                };
+                let kind = ExprKind::Unary {
+                    op,
+                    operand: Box::new(operand),
+                };
+                Ok((Expr { kind, span }, d + 1))
+            })
+            .map_postfix(|lhs, op| {
+                let (base, d) = lhs?;
+                self.nested(last_above.get(), || self.postfix(base, d, op))
+            })
+            .map_infix(|lhs, op, rhs| {
+                let (l, dl) = lhs?;
+                let (r, dr) = rhs?;
+                let depth = dl.max(dr) + 1;
+                let op_span = self.span(op.as_span());
+                check_depth(depth, op_span)?;
+                let (bop, implicit, op_span) = match op.as_rule() {
+                    Rule::add => (BinOp::Add, false, op_span),
+                    Rule::sub => (BinOp::Sub, false, op_span),
+                    Rule::mul => (BinOp::Mul, false, op_span),
+                    Rule::div => (BinOp::Div, false, op_span),
+                    Rule::pow => (BinOp::Pow, false, op_span),
+                    Rule::juxt => (
+                        BinOp::Mul,
+                        true,
+                        Span::new(l.span.end, r.span.start.max(l.span.end)),
+                    ),
+                    _ => return Err(self.unexpected(&op)),
+                };
+                let span = l.span.join(r.span);
+                let kind = ExprKind::Binary {
+                    op: bop,
+                    lhs: Box::new(l),
+                    rhs: Box::new(r),
+                    op_span,
+                    implicit,
+                };
+                Ok((Expr { kind, span }, depth))
+            })
+            .parse(stream.into_iter())
+    }
+
+    /// Runs `f` with `levels` more tree levels above it.
+    fn nested<T>(&self, levels: usize, f: impl FnOnce() -> T) -> T {
+        let outer = self.above.get();
+        self.above.set(outer + levels);
+        let out = f();
+        self.above.set(outer);
+        out
+    }
+
+    /// Checks that `stream` alternates operands and operators as the Pratt
+    /// parser expects (so it cannot panic) and that its operator stack —
+    /// the Pratt parser's recursion depth — stays within [`MAX_DEPTH`]
+    /// together with the levels above this expression. Returns, for each
+    /// operand in order, the number of operators waiting above it.
+    fn check_sequence(
+        &self,
+        stream: &[Pair<'_, Rule>],
+        whole: Span,
+    ) -> Result<Vec<usize>, Diagnostic> {
+        let above = self.above.get();
+        let mut want_operand = true;
+        // Precedences of the operators waiting for their right operand.
+        let mut pending: Vec<u8> = Vec::new();
+        let mut operands = Vec::new();
+        for pair in stream {
+            match (role(pair.as_rule()), want_operand) {
+                (Role::Prefix, true) => pending.push(PREC_PREFIX),
+                (Role::Operand, true) => {
+                    operands.push(pending.len() + 1);
+                    want_operand = false;
+                }
+                (Role::Postfix, false) => {}
+                (Role::Infix { prec, right }, false) => {
+                    while let Some(&top) = pending.last() {
+                        if top > prec || (top == prec && !right) {
+                            pending.pop();
+                        } else {
+                            break;
+                        }
+                    }
+                    pending.push(prec);
+                    want_operand = true;
+                }
+                _ => return Err(self.unexpected(pair)),
+            }
+            if above + pending.len() > MAX_DEPTH {
+                return Err(too_deep(self.span(pair.as_span())));
+            }
+        }
+        if want_operand {
+            return Err(self.internal(whole));
+        }
+        Ok(operands)
+    }
+
+    /// `left right` with nothing between: legal only after a number, `pi`,
+    /// an angle, `[..]` or `(..)`, and never number after number.
+    fn check_juxtaposition(
+        &self,
+        left: &Pair<'_, Rule>,
+        right: &Pair<'_, Rule>,
+    ) -> Result<(), Diagnostic> {
+        let last = left.clone().into_inner().last().map(|p| p.as_rule());
+        let first = right.clone().into_inner().next().map(|p| p.as_rule());
+        let left_text = short(left.as_str());
+        let right_text = short(right.as_str());
+        let at = self.span(right.as_span());
+        let left_ok = matches!(
+            last,
+            Some(Rule::number | Rule::pi | Rule::degrees | Rule::brackets | Rule::paren)
+        );
+        let numeric_left = matches!(last, Some(Rule::number | Rule::pi | Rule::degrees));
+        if left_ok && !(numeric_left && first == Some(Rule::number)) {
+            return Ok(());
+        }
+        let err = Diagnostic::error(
+            ErrorKind::Syntax,
+            at,
+            format!("missing operator between `{left_text}` and `{right_text}`"),
+        );
+        let indexable = matches!(last, Some(Rule::ident | Rule::call | Rule::index));
+        let err = if numeric_left {
+            err.with_help(
+                "separate elements with `,` ([1, 2, 3]) or multiply with `*`".to_string(),
+            )
+        } else if indexable && first == Some(Rule::brackets) && left.as_span().end() == right.as_span().start() {
+            // `M[1; 2]`, `M[1,]`: brackets right after a name that are not a
+            // valid index.
+            Diagnostic::error(
+                ErrorKind::Syntax,
+                at,
+                "an index takes one or two subscripts separated by `,`",
+            )
+            .with_help("write M[i], M[i, j], M[i, :] or M[:, j]")
+        } else if indexable && first == Some(Rule::brackets) {
+            let args: Vec<String> = right
+                .clone()
+                .into_inner()
+                .flat_map(|b| b.into_inner())
+                .flat_map(|row| row.into_inner())
+                .map(|e| e.as_str().trim().to_string())
+                .collect();
+            err.with_help(format!(
+                "index with no space: {}[{}]",
+                left.as_str(),
+                args.join(", ")
+            ))
+        } else if last == Some(Rule::ident)
+            && matches!(first, Some(Rule::ident | Rule::call))
+        {
+            err.with_help(format!(
+                "put `*` between the two names: {left_text} * {right_text}"
+            ))
+        } else {
+            err.with_help(format!(
+                "put `*` between them to multiply: {left_text} * {right_text}"
+            ))
+        };
+        Err(err)
+    }
+
+    fn postfix(&self, base: Expr, depth: usize, op: Pair<'_, Rule>) -> Built {
+        let op_span = self.span(op.as_span());
+        let span = base.span.join(op_span);
+        check_depth(depth + 1, op_span)?;
+        let kind = match op.as_rule() {
+            Rule::degrees => ExprKind::Degrees(Box::new(base)),
+            Rule::member => {
+                let name = op
+                    .into_inner()
+                    .next()
+                    .ok_or_else(|| self.internal(op_span))?;
+                ExprKind::Member {
+                    base: Box::new(base),
+                    member: self.ident(name)?,
+                }
+            }
+            Rule::index => {
+                let mut args = Vec::new();
+                let mut d = 0;
+                for a in op.into_inner() {
+                    match a.as_rule() {
+                        Rule::all => args.push(IndexArg::All(self.span(a.as_span()))),
+                        Rule::expr => {
+                            let (e, ed) = self.expr(a)?;
+                            d = d.max(ed);
+                            args.push(IndexArg::Expr(e));
+                        }
+                        _ => return Err(self.unexpected(&a)),
+                    }
+                }
+                check_depth(d + 1, op_span)?;
+                let kind = ExprKind::Index {
+                    base: Box::new(base),
+                    args,
+                };
+                return Ok((Expr { kind, span }, (depth + 1).max(d + 1)));
+            }
+            _ => return Err(self.unexpected(&op)),
+        };
+        Ok((Expr { kind, span }, depth + 1))
+    }
+
+    /// Elements of `( )`, `[ ]` rows and call arguments.
+    fn exprs<'i>(
+        &self,
+        pairs: impl Iterator<Item = Pair<'i, Rule>>,
+    ) -> Result<(Vec<Expr>, usize), Diagnostic> {
+        let mut out = Vec::new();
+        let mut depth = 0;
+        for p in pairs {
+            let (e, d) = self.expr(p)?;
+            depth = depth.max(d);
+            out.push(e);
+        }
+        Ok((out, depth))
+    }
+
+    fn primary(&self, pair: Pair<'_, Rule>) -> Built {
+        let span = self.span(pair.as_span());
+        let leaf = |kind| Ok((Expr { kind, span }, 1));
+        match pair.as_rule() {
+            Rule::number => match pair.as_str().parse::<f64>() {
+                Ok(x) => leaf(ExprKind::Number(x)),
+                Err(_) => Err(Diagnostic::error(
+                    ErrorKind::Syntax,
+                    span,
+                    format!("invalid number `{}`", pair.as_str()),
+                )),
+            },
+            Rule::pi => leaf(ExprKind::Number(std::f64::consts::PI)),
+            Rule::bool_lit => leaf(ExprKind::Bool(pair.as_str() == "true")),
+            Rule::ident => leaf(ExprKind::Var(pair.as_str().to_string())),
+            Rule::call => {
+                let mut it = pair.into_inner();
+                let func = self.ident(it.next().ok_or_else(|| self.internal(span))?)?;
+                let args = it.next().ok_or_else(|| self.internal(span))?;
+                let (args, d) = self.exprs(args.into_inner())?;
+                check_depth(d + 1, span)?;
+                Ok((
+                    Expr {
+                        kind: ExprKind::Call { func, args },
+                        span,
+                    },
+                    d + 1,
+                ))
+            }
+            Rule::paren => {
+                let (mut items, d) = self.exprs(pair.into_inner())?;
+                if items.len() == 1 {
+                    // `(x)` is x, spanning its parentheses.
+                    let mut e = items.pop().ok_or_else(|| self.internal(span))?;
+                    e.span = span;
+                    return Ok((e, d));
+                }
+                check_depth(d + 1, span)?;
+                Ok((
+                    Expr {
+                        kind: ExprKind::Paren(items),
+                        span,
+                    },
+                    d + 1,
+                ))
+            }
+            Rule::brackets => {
+                let mut rows = Vec::new();
+                let mut depth = 0;
+                for row in pair.into_inner() {
+                    let (items, d) = self.exprs(row.into_inner())?;
+                    depth = depth.max(d);
+                    rows.push(items);
+                }
+                check_depth(depth + 1, span)?;
+                Ok((
+                    Expr {
+                        kind: ExprKind::Brackets(rows),
+                        span,
+                    },
+                    depth + 1,
+                ))
+            }
+            Rule::mech => leaf(ExprKind::Mech(self.mech(pair)?)),
+            _ => Err(self.unexpected(&pair)),
+        }
+    }
+
+    fn int(&self, pair: &Pair<'_, Rule>) -> Result<i64, Diagnostic> {
+        pair.as_str().parse::<i64>().map_err(|_| {
+            Diagnostic::error(
+                ErrorKind::Syntax,
+                self.span(pair.as_span()),
+                format!("number too large: {}", pair.as_str()),
+            )
+        })
+    }
+
+    fn mech(&self, pair: Pair<'_, Rule>) -> Result<MechSpec, Diagnostic> {
+        let mut spec = MechSpec {
+            links: None,
+            joints: Vec::new(),
+            legs: None,
+            space: None,
+            unknown: Vec::new(),
+        };
+        let mut joints_at: Option<Span> = None;
+        for item in pair.into_inner() {
+            let span = self.span(item.as_span());
+            let first = |prev: Option<Span>, what: &str| match prev {
+                Some(prev) => Err(Diagnostic::error(
+                    ErrorKind::Syntax,
+                    span,
+                    format!("`{what}` appears twice in this mech"),
+                )
+                .with_label(prev, "first given here")),
+                None => Ok(()),
+            };
+            match item.as_rule() {
+                Rule::kw_mech => {}
+                Rule::mech_links => {
+                    first(spec.links.as_ref().map(|l| l.1), "links")?;
+                    let n = item
+                        .into_inner()
+                        .find(|p| p.as_rule() == Rule::int)
+                        .ok_or_else(|| self.internal(span))?;
+                    spec.links = Some((self.int(&n)?, span));
+                }
+                Rule::mech_joints => {
+                    first(joints_at, "joints")?;
+                    joints_at = Some(span);
+                    for j in item.into_inner().filter(|p| p.as_rule() == Rule::joint) {
+                        let text = j.as_str();
+                        let digits = text.len() - text.trim_start_matches(|c: char| c.is_ascii_digit()).len();
+                        let count = if digits == 0 {
+                            1
+                        } else {
+                            text[..digits].parse::<i64>().map_err(|_| {
+                                Diagnostic::error(
+                                    ErrorKind::Syntax,
+                                    self.span(j.as_span()),
+                                    format!("joint count too large: {text}"),
+                                )
+                            })?
+                        };
+                        spec.joints.push(JointGroupSyntax {
+                            count,
+                            letters: text[digits..].to_string(),
+                            span: self.span(j.as_span()),
+                        });
+                    }
+                }
+                Rule::mech_legs => {
+                    first(spec.legs.as_ref().map(|l| l.2), "legs")?;
+                    let mut it = item.into_inner().filter(|p| p.as_rule() != Rule::kw_legs);
+                    let (Some(n), Some(chain)) = (it.next(), it.next()) else {
+                        return Err(self.internal(span));
+                    };
+                    spec.legs = Some((self.int(&n)?, chain.as_str().to_string(), span));
+                }
+                Rule::mech_space => {
+                    first(spec.space.as_ref().map(|s| s.1), "planar/spatial/spherical")?;
+                    spec.space = Some((item.as_str().to_string(), span));
+                }
+                Rule::mech_unknown => {
+                    let text = item.as_str().trim_end();
+                    let span = Span::new(span.start, span.start + text.len());
+                    spec.unknown.push((text.to_string(), span));
+                }
+                _ => return Err(self.unexpected(&item)),
+            }
+        }
+        Ok(spec)
+    }
+}
+
+/// `text`, cut short for a message.
+fn short(text: &str) -> String {
+    let text = text.trim();
+    if text.chars().count() <= 24 {
+        text.to_string()
+    } else {
+        let head: String = text.chars().take(20).collect();
+        format!("{head}…")
+    }
+}
+

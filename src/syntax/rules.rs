@@ -1,0 +1,256 @@
+//! Friendly syntax errors from pest's.
+//!
+//! Every grammar rule has a human name in [`rule_name`], one exhaustive
+//! `match` (as Tera does): adding a rule to the grammar does not compile
+//! until it is named. A pest error becomes `expected X or Y, found 'c'`
+//! with the caret on the offending character (the last character when the
+//! statement ended too early), plus a `help:` line where one helps.
+
+use pest::error::{ErrorVariant, InputLocation};
+
+use super::ast::Span;
+use super::parser::{Cx, Rule, too_deep};
+use crate::diagnostics::{Diagnostic, ErrorKind};
+
+const EXPRESSION: &str = "an expression";
+const OPERATOR: &str = "an operator";
+const END: &str = "end of input";
+const MECH_ITEM: &str = "a mech item (links N, joints .., legs N CHAIN, planar/spatial/spherical)";
+
+/// What a rule is called in an error message.
+pub(crate) fn rule_name(rule: Rule) -> &'static str {
+    match rule {
+        Rule::EOI => END,
+        Rule::WHITESPACE => "a space",
+        Rule::COMMENT => "a comment",
+        Rule::statement => "a statement",
+        Rule::given_stmt => "a `given` statement",
+        Rule::derive_stmt => "a `derive` statement",
+        Rule::fn_def => "a function definition",
+        Rule::params => "a parameter name",
+        Rule::destructure => "a destructuring assignment",
+        Rule::assign => "an assignment",
+        Rule::expr
+        | Rule::prefix_op
+        | Rule::neg
+        | Rule::pos
+        | Rule::operand
+        | Rule::primary
+        | Rule::call
+        | Rule::paren
+        | Rule::brackets
+        | Rule::row
+        | Rule::bool_lit
+        | Rule::number
+        | Rule::pi
+        | Rule::mech
+        | Rule::kw_mech
+        | Rule::juxt_start
+        | Rule::index_arg => EXPRESSION,
+        Rule::infix_op
+        | Rule::add
+        | Rule::sub
+        | Rule::starstar
+        | Rule::mul
+        | Rule::div
+        | Rule::pow
+        | Rule::juxt
+        | Rule::postfix
+        | Rule::index
+        | Rule::member
+        | Rule::degrees => OPERATOR,
+        Rule::all => "':'",
+        Rule::call_args => "'('",
+        Rule::row_sep => "';' or a new line",
+        Rule::mech_sep => "';'",
+        Rule::mech_item
+        | Rule::mech_links
+        | Rule::mech_joints
+        | Rule::mech_legs
+        | Rule::mech_space
+        | Rule::mech_unknown
+        | Rule::mech_keyword
+        | Rule::kw_links
+        | Rule::kw_joints
+        | Rule::kw_legs => MECH_ITEM,
+        Rule::joint => "a joint such as R, P, 8R or RP",
+        Rule::chain => "the joints of a leg, such as UPS",
+        Rule::int => "a whole number",
+        Rule::ident => "a name",
+        Rule::brace_subscript | Rule::frame_word => "a frame name",
+        Rule::keyword => "a keyword",
+        Rule::kw_given => "`given`",
+        Rule::kw_derive => "`derive`",
+    }
+}
+
+/// Literal tokens worth naming when pest expected them.
+const TOKENS: &[&str] = &[")", "]", ",", ":", ";", "=", "(", "<", ">"];
+
+/// Orders the entries of an "expected …" list.
+fn rank(name: &str) -> u8 {
+    match name {
+        EXPRESSION => 0,
+        "a name" => 1,
+        OPERATOR => 2,
+        END => 9,
+        _ if name.starts_with('\'') => 5,
+        _ => 3,
+    }
+}
+
+/// A pest error → a syntax diagnostic pointing into the whole source.
+pub(crate) fn pest_error(err: pest::error::Error<Rule>, cx: &Cx<'_>) -> Diagnostic {
+    let mut pos = match err.location {
+        InputLocation::Pos(p) => p,
+        InputLocation::Span((s, _)) => s,
+    };
+    let mut names: Vec<&str> = Vec::new();
+    let mut tokens: Vec<String> = Vec::new();
+    match &err.variant {
+        ErrorVariant::ParsingError { positives, .. } => {
+            names.extend(positives.iter().map(|r| rule_name(*r)));
+        }
+        ErrorVariant::CustomError { message } => {
+            let span = char_span(cx, pos);
+            if message.contains("limit") {
+                return too_deep(span);
+            }
+            return Diagnostic::error(ErrorKind::Syntax, span, message.clone());
+        }
+    }
+    // With error detail on, pest knows the farthest position it reached and
+    // what it expected there (rules and literal tokens) — more precise than
+    // the rule-only positives.
+    if let Some(attempts) = err.parse_attempts() {
+        if attempts.max_position > pos {
+            // The positives are from an earlier position; use the rules
+            // that failed at the farthest one, but not whole statements or
+            // bracketed groups (their closing token is in the tokens).
+            names.clear();
+            pos = attempts.max_position;
+            for stack in attempts.call_stacks() {
+                if let Some(rule) = stack.deepest.get_rule() {
+                    if !matches!(
+                        rule,
+                        Rule::statement
+                            | Rule::given_stmt
+                            | Rule::derive_stmt
+                            | Rule::fn_def
+                            | Rule::destructure
+                            | Rule::assign
+                            | Rule::mech
+                            | Rule::paren
+                            | Rule::brackets
+                            | Rule::call_args
+                            | Rule::index
+                    ) {
+                        names.push(rule_name(*rule));
+                    }
+                }
+            }
+        }
+        if attempts.max_position == pos {
+            for t in attempts.expected_tokens() {
+                let t = t.to_string();
+                if TOKENS.contains(&t.as_str()) {
+                    tokens.push(format!("'{t}'"));
+                }
+            }
+        }
+    }
+    let pos = pos.min(cx.text.len());
+    let found_char = cx.text.get(pos..).and_then(|s| s.chars().next());
+    let span = char_span(cx, pos);
+
+    let mut names: Vec<String> = names
+        .into_iter()
+        // At the start, a statement is expected: say "an expression". Later
+        // pest names the whole statement only as a fallback.
+        .filter(|n| pos == 0 || *n != "a statement")
+        .map(|n| if n == "a statement" { EXPRESSION } else { n })
+        .map(str::to_string)
+        .collect();
+    names.extend(tokens);
+    names.sort_by(|a, b| (rank(a), a).cmp(&(rank(b), b)));
+    names.dedup();
+    // A `(` is already part of "an expression" and of "an operator".
+    if names.iter().any(|n| n == EXPRESSION || n == OPERATOR) {
+        names.retain(|n| n != "'('" && n != "a name");
+    }
+    if found_char.is_none() {
+        names.retain(|n| n != END);
+    }
+
+    let found = match found_char {
+        None => "end of input".to_string(),
+        Some('\n') => "end of line".to_string(),
+        Some(' ' | '\t') => "a space".to_string(),
+        Some(c) => format!("'{c}'"),
+    };
+    let message = if names.is_empty() {
+        format!("unexpected {found}")
+    } else {
+        format!("expected {}, found {found}", or_list(&names))
+    };
+    let diag = Diagnostic::error(ErrorKind::Syntax, span, message);
+    match help(cx.text, pos, found_char, &names) {
+        Some(h) => diag.with_help(h),
+        None => diag,
+    }
+}
+
+/// The character at `pos` of the statement, or its last character when
+/// `pos` is the end.
+fn char_span(cx: &Cx<'_>, pos: usize) -> Span {
+    let pos = pos.min(cx.text.len());
+    match cx.text.get(pos..).and_then(|s| s.chars().next()) {
+        Some(c) => Span::new(cx.off + pos, cx.off + pos + c.len_utf8()),
+        None => {
+            let last = cx.text.chars().next_back().map_or(0, char::len_utf8);
+            let end = cx.off + cx.text.len();
+            Span::new(end - last, end)
+        }
+    }
+}
+
+/// `a, b or c`
+fn or_list(items: &[String]) -> String {
+    match items {
+        [] => String::new(),
+        [one] => one.clone(),
+        [init @ .., last] => format!("{} or {last}", init.join(", ")),
+    }
+}
+
+/// A hint for common mistakes at `pos`.
+fn help(text: &str, pos: usize, found: Option<char>, expected: &[String]) -> Option<String> {
+    let before = text.get(..pos).unwrap_or("").trim_end();
+    let wants = |s: &str| expected.iter().any(|e| e == s);
+    match found? {
+        '*' if before.ends_with('*') => Some("use ^ for powers: x^2".into()),
+        '=' if text.get(pos..).is_some_and(|s| s.starts_with("==")) => {
+            Some("`==` is not supported; to bind a name write `name = expr`".into())
+        }
+        '=' if before.ends_with("given") => {
+            Some("`given` declares symbols: given T_ab, T_bc : SE3".into())
+        }
+        '=' if wants(OPERATOR) || wants(END) => Some(
+            "only a name, a tuple of names `(a, b)` or a function `f(x)` can be assigned to"
+                .into(),
+        ),
+        ',' if wants(END) => {
+            Some("to write a vector, put it in parentheses or brackets: (1, 2, 3)".into())
+        }
+        '\'' => Some("`'` is part of a name (T_sb'); to transpose write x.T".into()),
+        '<' | '>' if wants(OPERATOR) || wants(END) => Some(
+            "there are no comparisons; `<` only opens a mechanism: mech < links 4; joints 4R; planar >"
+                .into(),
+        ),
+        '{' | '}' => Some("braces only appear in frame subscripts: T_{world,cam}".into()),
+        '.' if before.ends_with(|c: char| c.is_ascii_digit()) => {
+            Some("write decimals with digits after the point: 2.0 or 2".into())
+        }
+        _ => None,
+    }
+}

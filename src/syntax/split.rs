@@ -1,0 +1,328 @@
+//! Cutting source text into statements before the grammar sees it.
+//!
+//! A small byte scanner (every significant character is ASCII, so UTF-8
+//! text can be scanned byte by byte) that tracks open brackets and decides
+//! where each statement ends: at a newline or `;` outside all brackets.
+//! It also blanks what the grammar should not see, keeping byte offsets:
+//! comments become spaces, and so do newlines inside `( )` and `{ }` (inside
+//! `[ ]` and `mech < >` a newline separates rows or items and is kept).
+//!
+//! Bracket errors (unmatched, mismatched, unclosed, nested deeper than
+//! [`MAX_DEPTH`]) are found here, so the recursive grammar never sees text
+//! nested deep enough to exhaust the stack.
+
+use super::MAX_DEPTH;
+use super::ast::Span;
+use crate::diagnostics::{Diagnostic, ErrorKind};
+
+/// One statement: its trimmed span, or the bracket error found in it.
+#[derive(Debug)]
+pub(crate) struct Chunk {
+    pub span: Span,
+    pub error: Option<Diagnostic>,
+    /// The deepest bracket nesting in the statement.
+    pub depth: usize,
+}
+
+/// The result of [`split`].
+#[derive(Debug)]
+pub(crate) struct Split {
+    /// The source with comments and continuation newlines replaced by
+    /// spaces; same length and offsets as the source.
+    pub text: String,
+    pub chunks: Vec<Chunk>,
+    /// A bracket (or `mech <`) is still open at the end of the source and no
+    /// bracket error was found.
+    pub open_at_end: bool,
+}
+
+/// How many times an unclosed bracket is recovered from by restarting after
+/// its line; beyond this the rest of the source stays one statement (keeps
+/// the scan linear on pathological input).
+const MAX_RECOVERIES: usize = 32;
+
+/// Splits `src` into statements.
+pub(crate) fn split(src: &str) -> Split {
+    let bytes = src.as_bytes();
+    let n = bytes.len();
+    let mut buf = bytes.to_vec();
+    let mut chunks = Vec::new();
+    let mut open_at_end = false;
+    let mut any_error = false;
+    let mut recoveries = 0;
+
+    let mut start = 0;
+    let mut i = 0;
+    // Open brackets: the byte (`(`, `[`, `{`, or `<` for `mech <`) and offset.
+    let mut stack: Vec<(u8, usize)> = Vec::new();
+    let mut error: Option<Diagnostic> = None;
+    // The deepest nesting in the current statement.
+    let mut depth = 0;
+
+    loop {
+        if i >= n {
+            if stack.is_empty() {
+                push_chunk(&mut chunks, &buf, (start, n, depth), error.take());
+                break;
+            }
+            // Something is still open at the end of the input.
+            if error.is_none() && !any_error {
+                open_at_end = true;
+            }
+            // Report the outermost: the statement is cut at its line.
+            let &(open, at) = stack.first().unwrap_or(&(b'(', start));
+            let err = error.take().unwrap_or_else(|| unclosed(open, at));
+            any_error = true;
+            // Recover: end this statement at the end of the line of the
+            // outermost open bracket and scan the rest afresh.
+            let outer = stack.first().map_or(start, |&(_, at)| at);
+            let line_end = bytes[outer..].iter().position(|&b| b == b'\n');
+            match line_end {
+                Some(off) if recoveries < MAX_RECOVERIES => {
+                    recoveries += 1;
+                    let nl = outer + off;
+                    push_chunk(&mut chunks, &buf, (start, nl, depth), Some(err));
+                    depth = 0;
+                    // Undo the blanking done under the wrong assumption.
+                    buf[nl..].copy_from_slice(&bytes[nl..]);
+                    stack.clear();
+                    start = nl + 1;
+                    i = nl + 1;
+                    continue;
+                }
+                _ => {
+                    push_chunk(&mut chunks, &buf, (start, n, depth), Some(err));
+                    break;
+                }
+            }
+        }
+
+        let b = bytes[i];
+        match b {
+            b'#' => {
+                while i < n && bytes[i] != b'\n' {
+                    buf[i] = b' ';
+                    i += 1;
+                }
+                continue;
+            }
+            b'\n' | b';' => match stack.last() {
+                None => {
+                    any_error |= error.is_some();
+                    push_chunk(&mut chunks, &buf, (start, i, depth), error.take());
+                    start = i + 1;
+                    depth = 0;
+                }
+                Some((b'(' | b'{', _)) if b == b'\n' => buf[i] = b' ',
+                Some(_) => {}
+            },
+            b'(' | b'[' | b'{' => {
+                open(&mut stack, &mut error, b, i);
+                depth = depth.max(stack.len());
+            }
+            b'<' if follows_mech(&buf[start..i]) => {
+                open(&mut stack, &mut error, b, i);
+                depth = depth.max(stack.len());
+            }
+            b'>' => {
+                if let Some((b'<', _)) = stack.last() {
+                    stack.pop();
+                }
+            }
+            b')' | b']' | b'}' => {
+                match stack.last() {
+                    Some(&(o, _)) if closer_of(o) == b => {}
+                    Some(&(o, at)) => {
+                        if error.is_none() {
+                            error = Some(
+                                Diagnostic::error(
+                                    ErrorKind::Syntax,
+                                    Span::new(i, i + 1),
+                                    format!("mismatched '{}'", b as char),
+                                )
+                                .with_primary_label(format!(
+                                    "expected '{}'",
+                                    closer_of(o) as char
+                                ))
+                                .with_label(
+                                    Span::new(at, at + 1),
+                                    format!("'{}' opened here", opener_name(o)),
+                                ),
+                            );
+                        }
+                    }
+                    None => {
+                        if error.is_none() {
+                            error = Some(
+                                Diagnostic::error(
+                                    ErrorKind::Syntax,
+                                    Span::new(i, i + 1),
+                                    format!("unmatched '{}'", b as char),
+                                )
+                                .with_primary_label(format!(
+                                    "no '{}' is open here",
+                                    opener_of(b) as char
+                                )),
+                            );
+                        }
+                    }
+                }
+                stack.pop();
+            }
+            _ => {}
+        }
+        i += 1;
+    }
+
+    let text = String::from_utf8(buf).unwrap_or_else(|_| src.to_string());
+    Split {
+        text,
+        chunks,
+        open_at_end,
+    }
+}
+
+fn open(stack: &mut Vec<(u8, usize)>, error: &mut Option<Diagnostic>, b: u8, at: usize) {
+    stack.push((b, at));
+    if stack.len() > MAX_DEPTH && error.is_none() {
+        *error = Some(
+            Diagnostic::error(
+                ErrorKind::Syntax,
+                Span::new(at, at + 1),
+                format!("expression nested too deeply (limit {MAX_DEPTH})"),
+            )
+            .with_help("split it into several statements with intermediate names"),
+        );
+    }
+}
+
+fn unclosed(open: u8, at: usize) -> Diagnostic {
+    Diagnostic::error(
+        ErrorKind::Syntax,
+        Span::new(at, at + 1),
+        format!("unclosed '{}' opened here", opener_name(open)),
+    )
+    .with_help(format!("close it with '{}'", closer_of(open) as char))
+}
+
+fn closer_of(open: u8) -> u8 {
+    match open {
+        b'(' => b')',
+        b'[' => b']',
+        b'{' => b'}',
+        _ => b'>',
+    }
+}
+
+fn opener_of(close: u8) -> u8 {
+    match close {
+        b')' => b'(',
+        b']' => b'[',
+        b'}' => b'{',
+        _ => b'<',
+    }
+}
+
+fn opener_name(open: u8) -> &'static str {
+    match open {
+        b'(' => "(",
+        b'[' => "[",
+        b'{' => "{",
+        _ => "mech <",
+    }
+}
+
+/// Whether the text before a `<` ends with the keyword `mech`.
+fn follows_mech(before: &[u8]) -> bool {
+    let mut end = before.len();
+    while end > 0 && matches!(before[end - 1], b' ' | b'\t' | b'\r' | b'\n') {
+        end -= 1;
+    }
+    let Some(word_start) = end.checked_sub(4) else {
+        return false;
+    };
+    if &before[word_start..end] != b"mech" {
+        return false;
+    }
+    // `mech` must be a whole word, not the end of `my_mech`.
+    word_start == 0 || {
+        let p = before[word_start - 1];
+        !(p.is_ascii_alphanumeric() || p == b'_' || p == b'\'' || p >= 0x80)
+    }
+}
+
+/// Records the statement `buf[start..end]` (nested `depth` deep), trimmed;
+/// blank ones are dropped.
+fn push_chunk(
+    chunks: &mut Vec<Chunk>,
+    buf: &[u8],
+    (mut start, mut end, depth): (usize, usize, usize),
+    error: Option<Diagnostic>,
+) {
+    let blank = |b: u8| matches!(b, b' ' | b'\t' | b'\r' | b'\n' | b'\x0C');
+    while start < end && blank(buf[start]) {
+        start += 1;
+    }
+    while end > start && blank(buf[end - 1]) {
+        end -= 1;
+    }
+    if start == end && error.is_none() {
+        return;
+    }
+    chunks.push(Chunk {
+        span: Span::new(start, end),
+        error,
+        depth,
+    });
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn texts(src: &str) -> Vec<String> {
+        let s = split(src);
+        s.chunks
+            .iter()
+            .map(|c| s.text[c.span.start..c.span.end].to_string())
+            .collect()
+    }
+
+    #[test]
+    fn splits_on_newlines_and_semicolons() {
+        assert_eq!(texts("a = 1; b = 2\n\n c = 3 # hi\n"), [
+            "a = 1", "b = 2", "c = 3"
+        ]);
+    }
+
+    #[test]
+    fn brackets_keep_rows_and_parens_continue() {
+        assert_eq!(texts("M = [1, 2\n 3, 4]\nf(1,\n 2)"), [
+            "M = [1, 2\n 3, 4]",
+            "f(1,  2)"
+        ]);
+        assert_eq!(texts("mech < links 4; joints 4R; planar >; x"), [
+            "mech < links 4; joints 4R; planar >",
+            "x"
+        ]);
+    }
+
+    #[test]
+    fn comments_are_blanked() {
+        assert_eq!(texts("[1, 2 # first (row\n 3, 4]"), [
+            "[1, 2             \n 3, 4]"
+        ]);
+    }
+
+    #[test]
+    fn unclosed_recovers_after_its_line() {
+        let s = split("x = f(1\ny = 2\n");
+        assert_eq!(s.chunks.len(), 2);
+        assert!(s.chunks[0].error.is_some());
+        assert!(s.chunks[1].error.is_none());
+        // For the REPL the `(` is still open: keep reading.
+        assert!(s.open_at_end);
+        assert!(split("[1, 2\n").open_at_end);
+        assert!(!split("x)\n[1, 2\n").open_at_end);
+    }
+}
