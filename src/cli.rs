@@ -88,7 +88,8 @@ pub fn read_source(path: &str) -> Result<String, String> {
             .map_err(|e| format!("cannot read standard input: {e}"))?;
         buf
     } else {
-        let meta = std::fs::metadata(path).map_err(|e| format!("cannot read '{path}': {}", io_reason(&e)))?;
+        let meta = std::fs::metadata(path)
+            .map_err(|e| format!("cannot read '{path}': {}", io_reason(&e)))?;
         if meta.is_dir() {
             return Err(format!("cannot read '{path}': it is a directory"));
         }
@@ -150,9 +151,16 @@ fn run_sources(sources: &[(String, String)], mode: Mode, opts: &Opts) -> i32 {
     if mode == Mode::Check && !settings.json {
         let files: Vec<&str> = sources.iter().map(|(f, _)| f.as_str()).collect();
         let summary = if errors == 0 {
-            format!("{}: {statements} statements checked, frames consistent", files.join(", "))
+            format!(
+                "{}: {statements} statements checked, frames consistent",
+                files.join(", ")
+            )
         } else {
-            format!("{}: {errors} error{}", files.join(", "), if errors == 1 { "" } else { "s" })
+            format!(
+                "{}: {errors} error{}",
+                files.join(", "),
+                if errors == 1 { "" } else { "s" }
+            )
         };
         emit(&mut out, &summary);
     }
@@ -167,7 +175,14 @@ fn load(files: &[String]) -> Result<Vec<(String, String)>, i32> {
     let mut sources = Vec::new();
     for f in files {
         match read_source(f) {
-            Ok(s) => sources.push((if f == "-" { "<stdin>".to_string() } else { f.clone() }, s)),
+            Ok(s) => sources.push((
+                if f == "-" {
+                    "<stdin>".to_string()
+                } else {
+                    f.clone()
+                },
+                s,
+            )),
             Err(msg) => {
                 emit_err(&format!("chasles: {msg}\n"));
                 return Err(2);

@@ -13,6 +13,8 @@
 //! - [`session`]: the pipeline parse → check → evaluate over a source text;
 //! - [`cli`], [`repl`]: the front ends.
 #![forbid(unsafe_code)]
+// Errors carry spans, labels and help text; they are rare, so their size is not worth boxing.
+#![allow(clippy::result_large_err)]
 
 pub mod builtins;
 pub mod check;

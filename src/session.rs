@@ -41,7 +41,9 @@ impl Report {
     pub fn stdout(&self, settings: &Settings, src: &str) -> String {
         match (&self.result, settings.json) {
             (Ok(o), false) => text::show_outcome(o, settings.digits),
-            (Ok(o), true) => json::outcome(o, self.line).map(|j| j.to_string()).unwrap_or_default(),
+            (Ok(o), true) => json::outcome(o, self.line)
+                .map(|j| j.to_string())
+                .unwrap_or_default(),
             (Err(d), true) => {
                 let (line, col) = render::line_col(src, d.span.start);
                 json::error(d, line, col).to_string()
@@ -82,10 +84,17 @@ impl Session {
     /// Runs (or, in [`Mode::Check`], checks) every statement of `src`,
     /// calling `each` with each report in order. Stops after the first
     /// error unless `keep_going`. Returns the number of errors.
-    pub fn run(&mut self, src: &str, mode: Mode, keep_going: bool, mut each: impl FnMut(&Report)) -> usize {
+    pub fn run(
+        &mut self,
+        src: &str,
+        mode: Mode,
+        keep_going: bool,
+        mut each: impl FnMut(&Report),
+    ) -> usize {
         let mut errors = 0;
+        let index = render::LineIndex::new(src);
         for parsed in syntax::parse_program(src) {
-            let line = |d: &Diagnostic| render::line_col(src, d.span.start).0;
+            let line = |d: &Diagnostic| index.line(d.span.start);
             let report = match parsed {
                 Err(d) => Report {
                     line: line(&d),
@@ -97,7 +106,7 @@ impl Session {
                     let result = interp.stmt(&stmt);
                     let warnings = std::mem::take(&mut interp.warnings);
                     Report {
-                        line: render::line_col(src, stmt.span.start).0,
+                        line: index.line(stmt.span.start),
                         result,
                         warnings,
                     }
@@ -116,7 +125,13 @@ impl Session {
     }
 
     /// Runs `src` and collects stdout and stderr text (used by tests and `-e`).
-    pub fn run_to_strings(&mut self, file: &str, src: &str, mode: Mode, keep_going: bool) -> (String, String, usize) {
+    pub fn run_to_strings(
+        &mut self,
+        file: &str,
+        src: &str,
+        mode: Mode,
+        keep_going: bool,
+    ) -> (String, String, usize) {
         let (mut out, mut err) = (String::new(), String::new());
         let settings = self.settings;
         let n = self.run(src, mode, keep_going, |r| {

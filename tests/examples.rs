@@ -15,7 +15,9 @@ fn run(args: &[&str]) -> String {
         .expect("the chasles binary runs");
     format!(
         "exit: {}\n--- stdout\n{}--- stderr\n{}",
-        out.status.code().map_or("signal".to_string(), |c| c.to_string()),
+        out.status
+            .code()
+            .map_or("signal".to_string(), |c| c.to_string()),
         String::from_utf8_lossy(&out.stdout),
         String::from_utf8_lossy(&out.stderr)
     )
@@ -23,7 +25,10 @@ fn run(args: &[&str]) -> String {
 
 fn rel(path: &Path) -> String {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    path.strip_prefix(root).unwrap_or(path).to_string_lossy().replace('\\', "/")
+    path.strip_prefix(root)
+        .unwrap_or(path)
+        .to_string_lossy()
+        .replace('\\', "/")
 }
 
 #[test]
@@ -39,10 +44,22 @@ fn example_scripts() {
 fn error_scripts() {
     insta::glob!("errors", "*/*.chs", |path| {
         let out = run(&["run", "--keep-going", &rel(path)]);
-        let kind = path.parent().and_then(|p| p.file_name()).map(|k| k.to_string_lossy().to_string()).unwrap_or_default();
-        assert!(out.starts_with("exit: 1\n"), "{} should fail:\n{out}", rel(path));
+        let kind = path
+            .parent()
+            .and_then(|p| p.file_name())
+            .map(|k| k.to_string_lossy().to_string())
+            .unwrap_or_default();
+        assert!(
+            out.starts_with("exit: 1\n"),
+            "{} should fail:\n{out}",
+            rel(path)
+        );
         if ["syntax", "name", "type", "frame", "domain", "arity"].contains(&kind.as_str()) {
-            assert!(out.contains(&format!("{kind} error")), "{} should report a {kind} error:\n{out}", rel(path));
+            assert!(
+                out.contains(&format!("{kind} error")),
+                "{} should report a {kind} error:\n{out}",
+                rel(path)
+            );
         }
         insta::assert_snapshot!(out);
     });

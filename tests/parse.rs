@@ -94,7 +94,10 @@ fn one(src: &str) -> Stmt {
     assert_eq!(all.len(), 1, "{src:?} should be one statement");
     match all.remove(0) {
         Ok(s) => s,
-        Err(e) => panic!("{src:?}: {} at {:?} (help: {:?})", e.message, e.span, e.help),
+        Err(e) => panic!(
+            "{src:?}: {} at {:?} (help: {:?})",
+            e.message, e.span, e.help
+        ),
     }
 }
 

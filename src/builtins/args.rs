@@ -87,7 +87,9 @@ impl Args<'_> {
 
     /// Argument `i` as a number.
     pub fn scalar(&self, i: usize) -> Result<f64, Diagnostic> {
-        self.vals[i].as_scalar().ok_or_else(|| self.wrong(i, "scalar"))
+        self.vals[i]
+            .as_scalar()
+            .ok_or_else(|| self.wrong(i, "scalar"))
     }
 
     /// Argument `i` as a whole number in `lo..=hi`.
@@ -105,7 +107,9 @@ impl Args<'_> {
 
     /// Argument `i` as a matrix of any shape.
     pub fn mat(&self, i: usize) -> Result<&DMatrix<f64>, Diagnostic> {
-        self.vals[i].as_matrix().ok_or_else(|| self.wrong(i, "matrix"))
+        self.vals[i]
+            .as_matrix()
+            .ok_or_else(|| self.wrong(i, "matrix"))
     }
 
     /// Argument `i` as a column vector of any length.
@@ -118,7 +122,9 @@ impl Args<'_> {
     }
 
     fn vec_n(&self, i: usize, n: usize) -> Result<DVector<f64>, Diagnostic> {
-        let v = self.vec(i).map_err(|_| self.wrong(i, &format!("{n}-vector")))?;
+        let v = self
+            .vec(i)
+            .map_err(|_| self.wrong(i, &format!("{n}-vector")))?;
         if v.len() != n {
             return Err(self.wrong(i, &format!("{n}-vector")));
         }
@@ -139,7 +145,10 @@ impl Args<'_> {
     /// when close, a domain error with the distance when not.
     pub fn group(&mut self, i: usize, group: Group) -> Result<DMatrix<f64>, Diagnostic> {
         let n = group.size();
-        let m = self.mat(i).map_err(|_| self.wrong(i, group.name()))?.clone();
+        let m = self
+            .mat(i)
+            .map_err(|_| self.wrong(i, group.name()))?
+            .clone();
         if m.nrows() != n || m.ncols() != n {
             return Err(self.wrong(i, group.name()));
         }
@@ -151,16 +160,24 @@ impl Args<'_> {
     }
 
     pub fn so3(&mut self, i: usize) -> Result<Mat3, Diagnostic> {
-        Ok(Mat3::from_iterator(self.group(i, Group::SO3)?.iter().copied()))
+        Ok(Mat3::from_iterator(
+            self.group(i, Group::SO3)?.iter().copied(),
+        ))
     }
     pub fn se3(&mut self, i: usize) -> Result<Mat4, Diagnostic> {
-        Ok(Mat4::from_iterator(self.group(i, Group::SE3)?.iter().copied()))
+        Ok(Mat4::from_iterator(
+            self.group(i, Group::SE3)?.iter().copied(),
+        ))
     }
     pub fn so2(&mut self, i: usize) -> Result<Mat2, Diagnostic> {
-        Ok(Mat2::from_iterator(self.group(i, Group::SO2)?.iter().copied()))
+        Ok(Mat2::from_iterator(
+            self.group(i, Group::SO2)?.iter().copied(),
+        ))
     }
     pub fn se2(&mut self, i: usize) -> Result<Mat3, Diagnostic> {
-        Ok(Mat3::from_iterator(self.group(i, Group::SE2)?.iter().copied()))
+        Ok(Mat3::from_iterator(
+            self.group(i, Group::SE2)?.iter().copied(),
+        ))
     }
 
     /// Exponential coordinates ω̂θ: a 3-vector, or an so(3) matrix (vee'd).
@@ -247,7 +264,11 @@ pub fn read_group(
                     crate::output::number::fmt_num(gap, 4)
                 )
             } else {
-                format!("distance from {} is {}", group.name(), crate::output::number::fmt_num(distance, 4))
+                format!(
+                    "distance from {} is {}",
+                    group.name(),
+                    crate::output::number::fmt_num(distance, 4)
+                )
             };
             Err(Diagnostic::error(ErrorKind::Domain, span, format!("not {}: {why}", group.noun())).with_help(format!(
                 "{} needs RᵀR = I and det R = +1 (within 1e-2 it is projected, with a warning); see DistanceTo{}",
@@ -260,7 +281,11 @@ pub fn read_group(
 
 /// ‖RᵀR − I‖_F of the rotation block.
 fn orthogonality_gap(m: &DMatrix<f64>, group: Group) -> f64 {
-    let k = if matches!(group, Group::SO2 | Group::SE2) { 2 } else { 3 };
+    let k = if matches!(group, Group::SO2 | Group::SE2) {
+        2
+    } else {
+        3
+    };
     let r = m.view((0, 0), (k, k));
     (r.transpose() * r - DMatrix::<f64>::identity(k, k)).norm()
 }

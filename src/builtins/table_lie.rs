@@ -38,7 +38,10 @@ fn screw_params_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     if !Param::Vec(6).accepts(&args[0].kind) && !Param::Expc6.accepts(&args[0].kind) {
         return Err(ArgError::type_of(
             0,
-            format!("screw_params takes a screw axis or twist, not {}", args[0].kind.a()),
+            format!(
+                "screw_params takes a screw axis or twist, not {}",
+                args[0].kind.a()
+            ),
         ));
     }
     Ok(Ty::new(
@@ -58,12 +61,17 @@ fn eval_rot(a: &mut Args) -> Result<Value, Diagnostic> {
 }
 
 fn displacement_rule(args: &[Ty]) -> Result<Ty, ArgError> {
-    let planar = args.iter().all(|t| matches!(t.kind, Kind::SE2 | Kind::Matrix(Some(3), Some(3))));
+    let planar = args
+        .iter()
+        .all(|t| matches!(t.kind, Kind::SE2 | Kind::Matrix(Some(3), Some(3))));
     for (i, t) in args.iter().enumerate() {
         if !Param::Trans.accepts(&t.kind) && !planar {
             return Err(ArgError::type_of(
                 i,
-                format!("displacement takes two transforms (SE(3) or SE(2)), not {}", t.kind.a()),
+                format!(
+                    "displacement takes two transforms (SE(3) or SE(2)), not {}",
+                    t.kind.a()
+                ),
             ));
         }
     }
@@ -95,10 +103,16 @@ fn eval_displacement(a: &mut Args) -> Result<Value, Diagnostic> {
 /// RpToTrans(R_ab, p_ab): {a}←{b}; p must be in {a}.
 fn rp_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     if !Param::Rot.accepts(&args[0].kind) {
-        return Err(ArgError::type_of(0, format!("R must be SO(3), not {}", args[0].kind.a())));
+        return Err(ArgError::type_of(
+            0,
+            format!("R must be SO(3), not {}", args[0].kind.a()),
+        ));
     }
     if !Param::Vec(3).accepts(&args[1].kind) {
-        return Err(ArgError::type_of(1, format!("p must be a 3-vector, not {}", args[1].kind.a())));
+        return Err(ArgError::type_of(
+            1,
+            format!("p must be a 3-vector, not {}", args[1].kind.a()),
+        ));
     }
     let frames = match (&args[0].frames, &args[1].frames) {
         (Frames::Pair(a, _), Frames::One(p)) if a != p => {
@@ -116,9 +130,15 @@ fn rp_rule(args: &[Ty]) -> Result<Ty, ArgError> {
 
 fn trans_to_rp_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     if !Param::Trans.accepts(&args[0].kind) {
-        return Err(ArgError::type_of(0, format!("TransToRp takes SE(3), not {}", args[0].kind.a())));
+        return Err(ArgError::type_of(
+            0,
+            format!("TransToRp takes SE(3), not {}", args[0].kind.a()),
+        ));
     }
-    Ok(Ty::new(Kind::Tuple(vec![Kind::SO3, v3()]), args[0].frames.clone()))
+    Ok(Ty::new(
+        Kind::Tuple(vec![Kind::SO3, v3()]),
+        args[0].frames.clone(),
+    ))
 }
 
 /// Twist/velocity from a configuration and its derivative, frames of T_sb:
@@ -162,7 +182,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "inverse of a rotation matrix, R⁻¹ = Rᵀ (Prop. 3.3)",
             example: "RotInv([0, 0, 1; 1, 0, 0; 0, 1, 0])",
             area: Rotations,
-            typing: Typing::Fixed { params: &[Rot], ret: so3k, frames: FrameRule::Swap(0) },
+            typing: Typing::Fixed {
+                params: &[Rot],
+                ret: so3k,
+                frames: FrameRule::Swap(0),
+            },
             eval: |a| Ok(Value::num(Kind::SO3, &so3::inv(&a.so3(0)?))),
         },
         Builtin {
@@ -173,7 +197,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "the skew-symmetric matrix [ω] of a 3-vector ω",
             example: "VecToso3((1, 2, 3))",
             area: Rotations,
-            typing: Typing::Fixed { params: &[Vec(3)], ret: || Kind::So3, frames: FrameRule::Same(0) },
+            typing: Typing::Fixed {
+                params: &[Vec(3)],
+                ret: || Kind::So3,
+                frames: FrameRule::Same(0),
+            },
             eval: |a| Ok(Value::num(Kind::So3, &so3::hat(&a.vec3(0)?))),
         },
         Builtin {
@@ -184,7 +212,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "the 3-vector ω of a skew-symmetric matrix [ω]",
             example: "so3ToVec([0, -3, 2; 3, 0, -1; -2, 1, 0])",
             area: Rotations,
-            typing: Typing::Fixed { params: &[Expc3], ret: v3, frames: FrameRule::Same(0) },
+            typing: Typing::Fixed {
+                params: &[Expc3],
+                ret: v3,
+                frames: FrameRule::Same(0),
+            },
             eval: |a| Ok(v3val(&a.expc3(0)?)),
         },
         Builtin {
@@ -195,7 +227,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "unit axis ω̂ and angle θ of exponential coordinates ω̂θ",
             example: "(w, theta) = AxisAng3((1, 2, 3))",
             area: Rotations,
-            typing: Typing::Fixed { params: &[Vec(3)], ret: rot_of_axis_tuple, frames: FrameRule::Same(0) },
+            typing: Typing::Fixed {
+                params: &[Vec(3)],
+                ret: rot_of_axis_tuple,
+                frames: FrameRule::Same(0),
+            },
             eval: |a| {
                 let (w, t) = so3::axis_angle(&a.vec3(0)?);
                 Ok(Value::Tuple(vec![v3val(&w), Value::scalar(t)]))
@@ -209,7 +245,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "the rotation e^[ω̂]θ of exponential coordinates (Rodrigues' formula)",
             example: "MatrixExp3((1, 2, 3))",
             area: Rotations,
-            typing: Typing::Fixed { params: &[Expc3], ret: so3k, frames: FrameRule::Disp(0) },
+            typing: Typing::Fixed {
+                params: &[Expc3],
+                ret: so3k,
+                frames: FrameRule::Disp(0),
+            },
             eval: |a| Ok(Value::num(Kind::SO3, &so3::exp(&a.expc3(0)?))),
         },
         Builtin {
@@ -220,7 +260,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "exponential coordinates ω̂θ of a rotation, θ ∈ [0, π]",
             example: "MatrixLog3([0, 0, 1; 1, 0, 0; 0, 1, 0])",
             area: Rotations,
-            typing: Typing::Fixed { params: &[Rot], ret: v3, frames: FrameRule::Outer(0) },
+            typing: Typing::Fixed {
+                params: &[Rot],
+                ret: v3,
+                frames: FrameRule::Outer(0),
+            },
             eval: |a| Ok(v3val(&so3::log(&a.so3(0)?))),
         },
         Builtin {
@@ -231,7 +275,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "rotation by θ about an axis (normalized): Rot(ω̂, θ) = e^[ω̂]θ",
             example: "Rot((0, 0.866, 0.5), 30 deg)",
             area: Rotations,
-            typing: Typing::Fixed { params: &[Vec(3), Scalar], ret: so3k, frames: FrameRule::None },
+            typing: Typing::Fixed {
+                params: &[Vec(3), Scalar],
+                ret: so3k,
+                frames: FrameRule::None,
+            },
             eval: eval_rot,
         },
         Builtin {
@@ -242,7 +290,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "rotation by θ about x̂",
             example: "Rotx(90 deg)",
             area: Rotations,
-            typing: Typing::Fixed { params: &[Scalar], ret: so3k, frames: FrameRule::None },
+            typing: Typing::Fixed {
+                params: &[Scalar],
+                ret: so3k,
+                frames: FrameRule::None,
+            },
             eval: |a| Ok(Value::num(Kind::SO3, &so3::rotx(a.scalar(0)?))),
         },
         Builtin {
@@ -253,7 +305,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "rotation by θ about ŷ",
             example: "Roty(90 deg)",
             area: Rotations,
-            typing: Typing::Fixed { params: &[Scalar], ret: so3k, frames: FrameRule::None },
+            typing: Typing::Fixed {
+                params: &[Scalar],
+                ret: so3k,
+                frames: FrameRule::None,
+            },
             eval: |a| Ok(Value::num(Kind::SO3, &so3::roty(a.scalar(0)?))),
         },
         Builtin {
@@ -264,7 +320,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "rotation by θ about ẑ",
             example: "Rotz(90 deg)",
             area: Rotations,
-            typing: Typing::Fixed { params: &[Scalar], ret: so3k, frames: FrameRule::None },
+            typing: Typing::Fixed {
+                params: &[Scalar],
+                ret: so3k,
+                frames: FrameRule::None,
+            },
             eval: |a| Ok(Value::num(Kind::SO3, &so3::rotz(a.scalar(0)?))),
         },
         Builtin {
@@ -275,7 +335,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "reads a 3×3 matrix as a rotation (projected within 1e-2, else an error)",
             example: "SO3([0, -1, 0; 1, 0, 0; 0, 0, 1])",
             area: Rotations,
-            typing: Typing::Fixed { params: &[Rot], ret: so3k, frames: FrameRule::Same(0) },
+            typing: Typing::Fixed {
+                params: &[Rot],
+                ret: so3k,
+                frames: FrameRule::Same(0),
+            },
             eval: |a| Ok(Value::num(Kind::SO3, &a.so3(0)?)),
         },
         Builtin {
@@ -286,7 +350,10 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "spatial angular velocity ω_s from [ω_s] = Ṙ Rᵀ",
             example: "AngVelSpace(Rotz(0), [0, -1, 0; 1, 0, 0; 0, 0, 0])",
             area: Rotations,
-            typing: Typing::Custom { arity: (2, 2), rule: space_w_rule },
+            typing: Typing::Custom {
+                arity: (2, 2),
+                rule: space_w_rule,
+            },
             eval: |a| {
                 let (r, rd) = (a.so3(0)?, mat3(a, 1)?);
                 Ok(v3val(&so3::angular_velocities(&r, &rd).0))
@@ -300,7 +367,10 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "body angular velocity ω_b from [ω_b] = Rᵀ Ṙ",
             example: "AngVelBody(Rotz(0), [0, -1, 0; 1, 0, 0; 0, 0, 0])",
             area: Rotations,
-            typing: Typing::Custom { arity: (2, 2), rule: body_w_rule },
+            typing: Typing::Custom {
+                arity: (2, 2),
+                rule: body_w_rule,
+            },
             eval: |a| {
                 let (r, rd) = (a.so3(0)?, mat3(a, 1)?);
                 Ok(v3val(&so3::angular_velocities(&r, &rd).1))
@@ -315,8 +385,16 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "the transform T = [R, p; 0, 1]",
             example: "RpToTrans(Rotz(pi/2), (1, 2, 3))",
             area: Transforms,
-            typing: Typing::Custom { arity: (2, 2), rule: rp_rule },
-            eval: |a| Ok(Value::num(Kind::SE3, &se3::from_rp(&a.so3(0)?, &a.vec3(1)?))),
+            typing: Typing::Custom {
+                arity: (2, 2),
+                rule: rp_rule,
+            },
+            eval: |a| {
+                Ok(Value::num(
+                    Kind::SE3,
+                    &se3::from_rp(&a.so3(0)?, &a.vec3(1)?),
+                ))
+            },
         },
         Builtin {
             name: "TransToRp",
@@ -326,7 +404,10 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "the rotation and position of a transform",
             example: "(R, p) = TransToRp(RpToTrans(Rotz(pi/2), (1, 2, 3)))",
             area: Transforms,
-            typing: Typing::Custom { arity: (1, 1), rule: trans_to_rp_rule },
+            typing: Typing::Custom {
+                arity: (1, 1),
+                rule: trans_to_rp_rule,
+            },
             eval: |a| {
                 let (r, p) = se3::to_rp(&a.se3(0)?);
                 Ok(Value::Tuple(vec![Value::num(Kind::SO3, &r), v3val(&p)]))
@@ -340,7 +421,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "T⁻¹ = [Rᵀ, −Rᵀp; 0, 1]",
             example: "TransInv(RpToTrans(Rotz(pi/2), (1, 2, 3)))",
             area: Transforms,
-            typing: Typing::Fixed { params: &[Trans], ret: se3k, frames: FrameRule::Swap(0) },
+            typing: Typing::Fixed {
+                params: &[Trans],
+                ret: se3k,
+                frames: FrameRule::Swap(0),
+            },
             eval: |a| Ok(Value::num(Kind::SE3, &se3::inv(&a.se3(0)?))),
         },
         Builtin {
@@ -351,8 +436,17 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "pure translation by p: [I, p; 0, 1]",
             example: "Trans((1, 2, 3))",
             area: Transforms,
-            typing: Typing::Fixed { params: &[Vec(3)], ret: se3k, frames: FrameRule::None },
-            eval: |a| Ok(Value::num(Kind::SE3, &se3::from_rp(&crate::lie::Mat3::identity(), &a.vec3(0)?))),
+            typing: Typing::Fixed {
+                params: &[Vec(3)],
+                ret: se3k,
+                frames: FrameRule::None,
+            },
+            eval: |a| {
+                Ok(Value::num(
+                    Kind::SE3,
+                    &se3::from_rp(&crate::lie::Mat3::identity(), &a.vec3(0)?),
+                ))
+            },
         },
         Builtin {
             name: "displacement",
@@ -362,7 +456,10 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "T_sc T_sb⁻¹: the displacement, expressed in the fixed frame {s}, that takes {b} to {c}",
             example: "displacement(Trans((1, 0, 0)), Trans((1, 2, 0)))",
             area: Transforms,
-            typing: Typing::Custom { arity: (2, 2), rule: displacement_rule },
+            typing: Typing::Custom {
+                arity: (2, 2),
+                rule: displacement_rule,
+            },
             eval: eval_displacement,
         },
         Builtin {
@@ -373,7 +470,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "the 4×4 matrix [V] = [[ω], v; 0, 0] of a twist",
             example: "VecTose3((1, 2, 3, 4, 5, 6))",
             area: Twists,
-            typing: Typing::Fixed { params: &[Vec(6)], ret: || Kind::Se3, frames: FrameRule::Same(0) },
+            typing: Typing::Fixed {
+                params: &[Vec(6)],
+                ret: || Kind::Se3,
+                frames: FrameRule::Same(0),
+            },
             eval: |a| Ok(Value::num(Kind::Se3, &se3::hat(&a.vec6(0)?))),
         },
         Builtin {
@@ -384,7 +485,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "the twist V = (ω, v) of an se(3) matrix",
             example: "se3ToVec([0, -3, 2, 4; 3, 0, -1, 5; -2, 1, 0, 6; 0, 0, 0, 0])",
             area: Twists,
-            typing: Typing::Fixed { params: &[Expc6], ret: twist, frames: FrameRule::Same(0) },
+            typing: Typing::Fixed {
+                params: &[Expc6],
+                ret: twist,
+                frames: FrameRule::Same(0),
+            },
             eval: |a| Ok(Value::num(Kind::Twist, &a.expc6(0)?)),
         },
         Builtin {
@@ -400,7 +505,12 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: || Kind::Adjoint { transposed: false },
                 frames: FrameRule::Same(0),
             },
-            eval: |a| Ok(Value::num(Kind::Adjoint { transposed: false }, &se3::adjoint(&a.se3(0)?))),
+            eval: |a| {
+                Ok(Value::num(
+                    Kind::Adjoint { transposed: false },
+                    &se3::adjoint(&a.se3(0)?),
+                ))
+            },
         },
         Builtin {
             name: "ad",
@@ -415,7 +525,12 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: || Kind::Matrix(Some(6), Some(6)),
                 frames: FrameRule::None,
             },
-            eval: |a| Ok(Value::num(Kind::Matrix(Some(6), Some(6)), &se3::ad(&a.vec6(0)?))),
+            eval: |a| {
+                Ok(Value::num(
+                    Kind::Matrix(Some(6), Some(6)),
+                    &se3::ad(&a.vec6(0)?),
+                ))
+            },
         },
         Builtin {
             name: "ScrewToAxis",
@@ -425,8 +540,17 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "the screw axis S = (ŝ, −ŝ×q + hŝ) through q along ŝ with pitch h",
             example: "ScrewToAxis((3, 0, 0), (0, 0, 1), 2)",
             area: Twists,
-            typing: Typing::Fixed { params: &[Vec(3), Vec(3), Scalar], ret: screw, frames: FrameRule::Shared },
-            eval: |a| Ok(Value::num(Kind::Screw, &se3::screw_to_axis(&a.vec3(0)?, &a.vec3(1)?, a.scalar(2)?))),
+            typing: Typing::Fixed {
+                params: &[Vec(3), Vec(3), Scalar],
+                ret: screw,
+                frames: FrameRule::Shared,
+            },
+            eval: |a| {
+                Ok(Value::num(
+                    Kind::Screw,
+                    &se3::screw_to_axis(&a.vec3(0)?, &a.vec3(1)?, a.scalar(2)?),
+                ))
+            },
         },
         Builtin {
             name: "screw",
@@ -436,12 +560,20 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "screw axis through q along s (normalized) with pitch h; h = inf gives the pure translation (0, ŝ)",
             example: "screw((0, 0, 0), (1, 0, 0), inf)",
             area: Twists,
-            typing: Typing::Fixed { params: &[Vec(3), Vec(3), Scalar], ret: screw, frames: FrameRule::Shared },
+            typing: Typing::Fixed {
+                params: &[Vec(3), Vec(3), Scalar],
+                ret: screw,
+                frames: FrameRule::Shared,
+            },
             eval: |a| {
                 let (q, s, h) = (a.vec3(0)?, a.vec3(1)?, a.scalar(2)?);
                 let n = s.norm();
                 if n == 0.0 || !n.is_finite() {
-                    return Err(a.error(1, ErrorKind::Domain, "the screw direction is the zero vector"));
+                    return Err(a.error(
+                        1,
+                        ErrorKind::Domain,
+                        "the screw direction is the zero vector",
+                    ));
                 }
                 let s = s / n;
                 if h.is_infinite() {
@@ -459,7 +591,10 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "point q nearest the origin, unit direction ŝ and pitch h of a screw axis or twist (h = inf for a pure translation)",
             example: "(q, s, h) = screw_params((0, 0, 1, 0, -3, 2))",
             area: Twists,
-            typing: Typing::Custom { arity: (1, 1), rule: screw_params_rule },
+            typing: Typing::Custom {
+                arity: (1, 1),
+                rule: screw_params_rule,
+            },
             eval: |a| {
                 let (q, s, h) = se3::screw_params(&a.expc6(0)?);
                 Ok(Value::Tuple(vec![v3val(&q), v3val(&s), Value::scalar(h)]))
@@ -480,7 +615,10 @@ pub(super) fn builtins() -> Vec<Builtin> {
             },
             eval: |a| {
                 let (s, t) = se3::axis_angle(&a.vec6(0)?);
-                Ok(Value::Tuple(vec![Value::num(Kind::Screw, &s), Value::scalar(t)]))
+                Ok(Value::Tuple(vec![
+                    Value::num(Kind::Screw, &s),
+                    Value::scalar(t),
+                ]))
             },
         },
         Builtin {
@@ -491,7 +629,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "the transform e^[S]θ of exponential coordinates Sθ",
             example: "MatrixExp6((0, 0, 1, 0, -3, 2) * pi/2)",
             area: Twists,
-            typing: Typing::Fixed { params: &[Expc6], ret: se3k, frames: FrameRule::Disp(0) },
+            typing: Typing::Fixed {
+                params: &[Expc6],
+                ret: se3k,
+                frames: FrameRule::Disp(0),
+            },
             eval: |a| Ok(Value::num(Kind::SE3, &se3::exp(&a.expc6(0)?))),
         },
         Builtin {
@@ -502,7 +644,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "exponential coordinates Sθ of a transform, θ ∈ [0, π] for the rotation",
             example: "MatrixLog6([1, 0, 0, 0; 0, 0, -1, 0; 0, 1, 0, 3; 0, 0, 0, 1])",
             area: Twists,
-            typing: Typing::Fixed { params: &[Trans], ret: v6, frames: FrameRule::Outer(0) },
+            typing: Typing::Fixed {
+                params: &[Trans],
+                ret: v6,
+                frames: FrameRule::Outer(0),
+            },
             eval: |a| Ok(Value::num(v6(), &se3::log(&a.se3(0)?))),
         },
         Builtin {
@@ -513,7 +659,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "the twist V = (ω, v)",
             example: "twist((0, 0, 2), (-2, -4, 0))",
             area: Twists,
-            typing: Typing::Fixed { params: &[Vec(3), Vec(3)], ret: twist, frames: FrameRule::Shared },
+            typing: Typing::Fixed {
+                params: &[Vec(3), Vec(3)],
+                ret: twist,
+                frames: FrameRule::Shared,
+            },
             eval: |a| Ok(Value::num(Kind::Twist, &stack(&a.vec3(0)?, &a.vec3(1)?))),
         },
         Builtin {
@@ -524,7 +674,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "the wrench F = (m, f): moment and force",
             example: "wrench((0, 0, 0), (0, -5, 0))",
             area: Twists,
-            typing: Typing::Fixed { params: &[Vec(3), Vec(3)], ret: wrench, frames: FrameRule::Shared },
+            typing: Typing::Fixed {
+                params: &[Vec(3), Vec(3)],
+                ret: wrench,
+                frames: FrameRule::Shared,
+            },
             eval: |a| Ok(Value::num(Kind::Wrench, &stack(&a.vec3(0)?, &a.vec3(1)?))),
         },
         Builtin {
@@ -535,10 +689,16 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "spatial twist V_s from [V_s] = Ṫ T⁻¹",
             example: "TwistSpace(Trans((1, 0, 0)), [0, -1, 0, 0; 1, 0, 0, 1; 0, 0, 0, 0; 0, 0, 0, 0])",
             area: Twists,
-            typing: Typing::Custom { arity: (2, 2), rule: space_twist_rule },
+            typing: Typing::Custom {
+                arity: (2, 2),
+                rule: space_twist_rule,
+            },
             eval: |a| {
                 let (t, td) = (a.se3(0)?, mat4(a, 1)?);
-                Ok(Value::num(Kind::Twist, &se3::twists_from_derivative(&t, &td).0))
+                Ok(Value::num(
+                    Kind::Twist,
+                    &se3::twists_from_derivative(&t, &td).0,
+                ))
             },
         },
         Builtin {
@@ -549,10 +709,16 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "body twist V_b from [V_b] = T⁻¹ Ṫ",
             example: "TwistBody(Trans((1, 0, 0)), [0, -1, 0, 0; 1, 0, 0, 1; 0, 0, 0, 0; 0, 0, 0, 0])",
             area: Twists,
-            typing: Typing::Custom { arity: (2, 2), rule: body_twist_rule },
+            typing: Typing::Custom {
+                arity: (2, 2),
+                rule: body_twist_rule,
+            },
             eval: |a| {
                 let (t, td) = (a.se3(0)?, mat4(a, 1)?);
-                Ok(Value::num(Kind::Twist, &se3::twists_from_derivative(&t, &td).1))
+                Ok(Value::num(
+                    Kind::Twist,
+                    &se3::twists_from_derivative(&t, &td).1,
+                ))
             },
         },
     ]

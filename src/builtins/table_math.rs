@@ -37,7 +37,12 @@ fn exp_rule(args: &[Ty]) -> Result<Ty, ArgError> {
         }
         k => match k.shape() {
             Some((r, c)) if r == c || r.is_none() || c.is_none() => Kind::Matrix(r, c),
-            _ => return Err(ArgError::type_of(0, format!("exp needs a square matrix, not {}", k.a()))),
+            _ => {
+                return Err(ArgError::type_of(
+                    0,
+                    format!("exp needs a square matrix, not {}", k.a()),
+                ));
+            }
         },
     };
     let frames = match &t.frames {
@@ -53,10 +58,15 @@ fn eval_exp(a: &mut Args) -> Result<Value, Diagnostic> {
     }
     let m = a.mat(0)?.clone();
     if m.iter().any(|x| !x.is_finite()) {
-        return Err(a.error(0, ErrorKind::Domain, "exp of a matrix with entries that are not finite"));
+        return Err(a.error(
+            0,
+            ErrorKind::Domain,
+            "exp of a matrix with entries that are not finite",
+        ));
     }
     let kind = a.value(0).kind();
-    let skew3 = |m: &DMatrix<f64>| (m + m.transpose()).abs().max() <= 1e-12 * m.abs().max().max(1.0);
+    let skew3 =
+        |m: &DMatrix<f64>| (m + m.transpose()).abs().max() <= 1e-12 * m.abs().max().max(1.0);
     match (kind, m.shape()) {
         (Kind::So3, _) | (_, (3, 3)) if skew3(&m) => {
             let w = so3::vee(&Mat3::from_iterator(m.iter().copied()));
@@ -66,7 +76,9 @@ fn eval_exp(a: &mut Args) -> Result<Value, Diagnostic> {
             let v = se3::vee(&Mat4::from_iterator(m.iter().copied()));
             Ok(Value::num(Kind::SE3, &se3::exp(&v)))
         }
-        (Kind::So2, _) | (_, (2, 2)) if skew3(&m) => Ok(Value::num(Kind::SO2, &so2::exp(m[(1, 0)]))),
+        (Kind::So2, _) | (_, (2, 2)) if skew3(&m) => {
+            Ok(Value::num(Kind::SO2, &so2::exp(m[(1, 0)])))
+        }
         (Kind::Se2, _) => {
             let v = se2::vee(&Mat3::from_iterator(m.iter().copied()));
             Ok(Value::num(Kind::SE2, &se2::exp(&v)))
@@ -76,7 +88,10 @@ fn eval_exp(a: &mut Args) -> Result<Value, Diagnostic> {
                 return Err(a.domain(format!("matrix too large for exp ({r}×{r})")));
             }
             let e = matexp::expm(&m);
-            Ok(Value::Num { kind: convert::classify(&e), m: e })
+            Ok(Value::Num {
+                kind: convert::classify(&e),
+                m: e,
+            })
         }
         _ => Err(a.error(0, ErrorKind::Type, "exp needs a square matrix")),
     }
@@ -100,11 +115,16 @@ fn log_rule(args: &[Ty]) -> Result<Ty, ArgError> {
         Kind::Unknown => Kind::Unknown,
         Kind::Matrix(Some(4), Some(4)) => Kind::Se3,
         Kind::Matrix(Some(2), Some(2)) => Kind::So2,
-        Kind::Matrix(r, c) if r.is_none_or(|r| r == 3) && c.is_none_or(|c| c == 3) => Kind::Matrix(*r, *c),
+        Kind::Matrix(r, c) if r.is_none_or(|r| r == 3) && c.is_none_or(|c| c == 3) => {
+            Kind::Matrix(*r, *c)
+        }
         k => {
             return Err(ArgError::type_of(
                 0,
-                format!("log takes a rotation or transform (SO(3), SE(3), SO(2), SE(2)), not {}", k.a()),
+                format!(
+                    "log takes a rotation or transform (SO(3), SE(3), SO(2), SE(2)), not {}",
+                    k.a()
+                ),
             ));
         }
     };
@@ -118,7 +138,11 @@ fn log_rule(args: &[Ty]) -> Result<Ty, ArgError> {
 fn eval_log(a: &mut Args) -> Result<Value, Diagnostic> {
     if let Some(x) = a.value(0).as_scalar() {
         if x <= 0.0 {
-            return Err(a.error(0, ErrorKind::Domain, format!("log of {x}: the logarithm needs a positive number")));
+            return Err(a.error(
+                0,
+                ErrorKind::Domain,
+                format!("log of {x}: the logarithm needs a positive number"),
+            ));
         }
         return Ok(Value::scalar(x.ln()));
     }
@@ -155,16 +179,24 @@ fn pair_rule(what: &'static str, ret: fn(&[Ty]) -> Kind) -> impl Fn(&[Ty]) -> Re
     move |args: &[Ty]| {
         for (i, t) in args.iter().enumerate() {
             if !Param::AnyVec.accepts(&t.kind) {
-                return Err(ArgError::type_of(i, format!("{what} takes vectors, not {}", t.kind.a())));
+                return Err(ArgError::type_of(
+                    i,
+                    format!("{what} takes vectors, not {}", t.kind.a()),
+                ));
             }
         }
-        let frames = crate::check::rules::vector_pair(what, &args[0], &args[1]).map_err(|e| ArgError {
-            arg: Some(1),
-            kind: ErrorKind::Frame,
-            message: format!("{}: {} and {}", e.message, e.lhs, e.rhs),
-        })?;
+        let frames =
+            crate::check::rules::vector_pair(what, &args[0], &args[1]).map_err(|e| ArgError {
+                arg: Some(1),
+                kind: ErrorKind::Frame,
+                message: format!("{}: {} and {}", e.message, e.lhs, e.rhs),
+            })?;
         let kind = ret(args);
-        let frames = if kind == Kind::Scalar { Frames::None } else { frames };
+        let frames = if kind == Kind::Scalar {
+            Frames::None
+        } else {
+            frames
+        };
         Ok(Ty::new(kind, frames))
     }
 }
@@ -185,7 +217,12 @@ fn vee_rule(args: &[Ty]) -> Result<Ty, ArgError> {
         Some((Some(4), Some(4))) => Kind::Twist,
         Some((Some(3), Some(3))) => Kind::Vector(Some(3)),
         _ if args[0].kind == Kind::Unknown => Kind::Unknown,
-        _ => return Err(ArgError::type_of(0, format!("vee takes so(3) or se(3), not {}", args[0].kind.a()))),
+        _ => {
+            return Err(ArgError::type_of(
+                0,
+                format!("vee takes so(3) or se(3), not {}", args[0].kind.a()),
+            ));
+        }
     };
     Ok(Ty::new(kind, args[0].frames.clone()))
 }
@@ -197,7 +234,10 @@ fn untag_rule(args: &[Ty]) -> Result<Ty, ArgError> {
 fn matrix_ctor_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     for (i, t) in args.iter().enumerate() {
         if !t.kind.maybe_scalar() {
-            return Err(ArgError::type_of(i, format!("sizes are numbers, not {}", t.kind.a())));
+            return Err(ArgError::type_of(
+                i,
+                format!("sizes are numbers, not {}", t.kind.a()),
+            ));
         }
     }
     Ok(Ty::plain(Kind::Matrix(None, None)))
@@ -207,17 +247,28 @@ fn sized(a: &Args) -> Result<(usize, usize), Diagnostic> {
     let side = |i: usize| -> Result<usize, Diagnostic> {
         let x = a.scalar(i)?;
         if x.fract() != 0.0 || x < 0.0 || !x.is_finite() {
-            return Err(a.error(i, ErrorKind::Domain, format!("a size must be a whole number ≥ 0, got {x}")));
+            return Err(a.error(
+                i,
+                ErrorKind::Domain,
+                format!("a size must be a whole number ≥ 0, got {x}"),
+            ));
         }
         if x > ops::MAX_DIM as f64 {
-            return Err(a.error(i, ErrorKind::Domain, format!("a side of {x} is too large (at most {})", ops::MAX_DIM)));
+            return Err(a.error(
+                i,
+                ErrorKind::Domain,
+                format!("a side of {x} is too large (at most {})", ops::MAX_DIM),
+            ));
         }
         Ok(x as usize)
     };
     let r = side(0)?;
     let c = if a.len() > 1 { side(1)? } else { r };
     if r * c > ops::MAX_ELEMENTS {
-        return Err(a.domain(format!("{r}×{c} is too large (at most {} entries)", ops::MAX_ELEMENTS)));
+        return Err(a.domain(format!(
+            "{r}×{c} is too large (at most {} entries)",
+            ops::MAX_ELEMENTS
+        )));
     }
     Ok((r, c))
 }
@@ -245,7 +296,11 @@ macro_rules! scalar_fn {
             doc: $doc,
             example: concat!($name, "(0.5)"),
             area: Area::Scalars,
-            typing: Typing::Fixed { params: &[Param::Scalar], ret: scalar, frames: FrameRule::None },
+            typing: Typing::Fixed {
+                params: &[Param::Scalar],
+                ret: scalar,
+                frames: FrameRule::None,
+            },
             eval: |a| unary(a, $f, $ok, $why),
         }
     };
@@ -263,7 +318,10 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "the matrix exponential: e^[ω]θ ∈ SO(3), e^[S]θ ∈ SE(3), e^{At} for any square A",
             example: "exp([(0, 0, 1)] (pi/2))",
             area: LinearAlgebra,
-            typing: Typing::Custom { arity: (1, 1), rule: exp_rule },
+            typing: Typing::Custom {
+                arity: (1, 1),
+                rule: exp_rule,
+            },
             eval: eval_exp,
         },
         Builtin {
@@ -274,7 +332,10 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "the matrix logarithm [ω̂]θ or [S]θ with θ ∈ [0, π] (the book's three cases), or ln x",
             example: "log([0, 0, 1; 1, 0, 0; 0, 1, 0])",
             area: LinearAlgebra,
-            typing: Typing::Custom { arity: (1, 1), rule: log_rule },
+            typing: Typing::Custom {
+                arity: (1, 1),
+                rule: log_rule,
+            },
             eval: eval_log,
         },
         Builtin {
@@ -285,7 +346,10 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "inverse; X_ab⁻¹ = X_ba (closed forms for SO(3) and SE(3))",
             example: "inv(RpToTrans(Rotz(pi/2), (1, 2, 3)))",
             area: LinearAlgebra,
-            typing: Typing::Custom { arity: (1, 1), rule: inv_rule },
+            typing: Typing::Custom {
+                arity: (1, 1),
+                rule: inv_rule,
+            },
             eval: |a| ops::inverse(a.value(0)).map_err(|e| a.error(0, ErrorKind::Domain, e)),
         },
         Builtin {
@@ -296,7 +360,10 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "the transpose, X.T",
             example: "transpose([1, 2; 3, 4])",
             area: LinearAlgebra,
-            typing: Typing::Custom { arity: (1, 1), rule: transpose_rule },
+            typing: Typing::Custom {
+                arity: (1, 1),
+                rule: transpose_rule,
+            },
             eval: |a| Ok(ops::transpose(a.value(0))),
         },
         Builtin {
@@ -307,7 +374,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "the determinant (+1 for a rotation)",
             example: "det(Rotz(1))",
             area: LinearAlgebra,
-            typing: Typing::Fixed { params: &[Square], ret: scalar, frames: FrameRule::None },
+            typing: Typing::Fixed {
+                params: &[Square],
+                ret: scalar,
+                frames: FrameRule::None,
+            },
             eval: |a| {
                 let m = a.mat(0)?;
                 if !m.is_square() {
@@ -324,7 +395,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "the sum of the diagonal (tr R = 1 + 2 cos θ)",
             example: "trace(Rotz(1))",
             area: LinearAlgebra,
-            typing: Typing::Fixed { params: &[Square], ret: scalar, frames: FrameRule::None },
+            typing: Typing::Fixed {
+                params: &[Square],
+                ret: scalar,
+                frames: FrameRule::None,
+            },
             eval: |a| {
                 let m = a.mat(0)?;
                 if !m.is_square() {
@@ -341,7 +416,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "the Euclidean (Frobenius) norm",
             example: "norm((3, 4, 0))",
             area: LinearAlgebra,
-            typing: Typing::Fixed { params: &[Mat], ret: scalar, frames: FrameRule::None },
+            typing: Typing::Fixed {
+                params: &[Mat],
+                ret: scalar,
+                frames: FrameRule::None,
+            },
             eval: |a| Ok(Value::scalar(a.mat(0)?.norm())),
         },
         Builtin {
@@ -352,7 +431,10 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "the cross product u × v = [u] v (same frame)",
             example: "cross((1, 0, 0), (0, 1, 0))",
             area: LinearAlgebra,
-            typing: Typing::Custom { arity: (2, 2), rule: cross_rule },
+            typing: Typing::Custom {
+                arity: (2, 2),
+                rule: cross_rule,
+            },
             eval: |a| {
                 let (u, v): (Vec3, Vec3) = (a.vec3(0)?, a.vec3(1)?);
                 Ok(Value::num(Kind::Vector(Some(3)), &u.cross(&v)))
@@ -366,11 +448,18 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "the dot product uᵀv (same frame); power is dot(V, F)",
             example: "dot((1, 2, 3), (4, 5, 6))",
             area: LinearAlgebra,
-            typing: Typing::Custom { arity: (2, 2), rule: dot_rule },
+            typing: Typing::Custom {
+                arity: (2, 2),
+                rule: dot_rule,
+            },
             eval: |a| {
                 let (u, v) = (a.vec(0)?, a.vec(1)?);
                 if u.len() != v.len() {
-                    return Err(a.error(1, ErrorKind::Type, format!("dot of a {}-vector and a {}-vector", u.len(), v.len())));
+                    return Err(a.error(
+                        1,
+                        ErrorKind::Type,
+                        format!("dot of a {}-vector and a {}-vector", u.len(), v.len()),
+                    ));
                 }
                 Ok(Value::scalar(u.dot(&v)))
             },
@@ -383,7 +472,10 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "so3ToVec for 3×3, se3ToVec for 4×4",
             example: "vee([0, -3, 2; 3, 0, -1; -2, 1, 0])",
             area: Rotations,
-            typing: Typing::Custom { arity: (1, 1), rule: vee_rule },
+            typing: Typing::Custom {
+                arity: (1, 1),
+                rule: vee_rule,
+            },
             eval: |a| match a.mat(0)?.shape() {
                 (4, 4) => Ok(Value::num(Kind::Twist, &a.expc6(0)?)),
                 _ => Ok(Value::num(Kind::Vector(Some(3)), &a.expc3(0)?)),
@@ -397,11 +489,17 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "the n×n identity matrix",
             example: "eye(3)",
             area: LinearAlgebra,
-            typing: Typing::Custom { arity: (1, 1), rule: matrix_ctor_rule },
+            typing: Typing::Custom {
+                arity: (1, 1),
+                rule: matrix_ctor_rule,
+            },
             eval: |a| {
                 let (n, _) = sized(a)?;
                 let m = DMatrix::identity(n, n);
-                Ok(Value::Num { kind: convert::classify(&m), m })
+                Ok(Value::Num {
+                    kind: convert::classify(&m),
+                    m,
+                })
             },
         },
         Builtin {
@@ -412,11 +510,17 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "a matrix of zeros (zeros(n) is n×n)",
             example: "zeros(3, 1)",
             area: LinearAlgebra,
-            typing: Typing::Custom { arity: (1, 2), rule: matrix_ctor_rule },
+            typing: Typing::Custom {
+                arity: (1, 2),
+                rule: matrix_ctor_rule,
+            },
             eval: |a| {
                 let (r, c) = sized(a)?;
                 let m = DMatrix::zeros(r, c);
-                Ok(Value::Num { kind: convert::classify(&m), m })
+                Ok(Value::Num {
+                    kind: convert::classify(&m),
+                    m,
+                })
             },
         },
         Builtin {
@@ -427,7 +531,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "true if |z| < 1e-6",
             example: "NearZero(1e-7)",
             area: Tests,
-            typing: Typing::Fixed { params: &[Scalar], ret: || Kind::Bool, frames: FrameRule::None },
+            typing: Typing::Fixed {
+                params: &[Scalar],
+                ret: || Kind::Bool,
+                frames: FrameRule::None,
+            },
             eval: |a| Ok(Value::Bool(lie::near_zero(a.scalar(0)?))),
         },
         Builtin {
@@ -438,12 +546,23 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "the unit vector V/‖V‖",
             example: "Normalize((1, 2, 3))",
             area: LinearAlgebra,
-            typing: Typing::Fixed { params: &[AnyVec], ret: || Kind::Vector(None), frames: FrameRule::Same(0) },
+            typing: Typing::Fixed {
+                params: &[AnyVec],
+                ret: || Kind::Vector(None),
+                frames: FrameRule::Same(0),
+            },
             eval: |a| {
                 let v = a.vec(0)?;
                 match lie::normalize(&v) {
-                    Some(u) => Ok(Value::Num { kind: a.value(0).kind(), m: DMatrix::from_column_slice(u.len(), 1, u.as_slice()) }),
-                    None => Err(a.error(0, ErrorKind::Domain, "cannot normalize the zero vector (its norm is 0)")),
+                    Some(u) => Ok(Value::Num {
+                        kind: a.value(0).kind(),
+                        m: DMatrix::from_column_slice(u.len(), 1, u.as_slice()),
+                    }),
+                    None => Err(a.error(
+                        0,
+                        ErrorKind::Domain,
+                        "cannot normalize the zero vector (its norm is 0)",
+                    )),
                 }
             },
         },
@@ -455,7 +574,10 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "the same value with no frames, to use a framed value as a plain operator",
             example: "untag(Rotz(1))",
             area: LinearAlgebra,
-            typing: Typing::Custom { arity: (1, 1), rule: untag_rule },
+            typing: Typing::Custom {
+                arity: (1, 1),
+                rule: untag_rule,
+            },
             eval: |a| Ok(a.value(0).clone()),
         },
         Builtin {
@@ -466,18 +588,39 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "the angle of (x, y), in (−π, π]",
             example: "atan2(1, 1)",
             area: Scalars,
-            typing: Typing::Fixed { params: &[Scalar, Scalar], ret: scalar, frames: FrameRule::None },
+            typing: Typing::Fixed {
+                params: &[Scalar, Scalar],
+                ret: scalar,
+                frames: FrameRule::None,
+            },
             eval: |a| Ok(Value::scalar(a.scalar(0)?.atan2(a.scalar(1)?))),
         },
         scalar_fn!("sin", "sine (radians)", f64::sin, any, ""),
         scalar_fn!("cos", "cosine (radians)", f64::cos, any, ""),
         scalar_fn!("tan", "tangent (radians)", f64::tan, any, ""),
-        scalar_fn!("asin", "arcsine, in [−π/2, π/2]", f64::asin, |x| (-1.0..=1.0).contains(&x), "the argument must be in [−1, 1]"),
-        scalar_fn!("acos", "arccosine, in [0, π]", f64::acos, |x| (-1.0..=1.0).contains(&x), "the argument must be in [−1, 1]"),
+        scalar_fn!(
+            "asin",
+            "arcsine, in [−π/2, π/2]",
+            f64::asin,
+            |x| (-1.0..=1.0).contains(&x),
+            "the argument must be in [−1, 1]"
+        ),
+        scalar_fn!(
+            "acos",
+            "arccosine, in [0, π]",
+            f64::acos,
+            |x| (-1.0..=1.0).contains(&x),
+            "the argument must be in [−1, 1]"
+        ),
         scalar_fn!("atan", "arctangent", f64::atan, any, ""),
-        scalar_fn!("sqrt", "square root", f64::sqrt, |x| x >= 0.0, "the square root of a negative number is not real"),
+        scalar_fn!(
+            "sqrt",
+            "square root",
+            f64::sqrt,
+            |x| x >= 0.0,
+            "the square root of a negative number is not real"
+        ),
         scalar_fn!("abs", "absolute value", f64::abs, any, ""),
         scalar_fn!("rad2deg", "radians to degrees", f64::to_degrees, any, ""),
     ]
 }
-

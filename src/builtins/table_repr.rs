@@ -30,7 +30,8 @@ fn angles(a: &mut Args, f: fn(&Mat3) -> repr::Angles) -> Result<Value, Diagnosti
     let r = a.so3(0)?;
     let out = f(&r);
     if let Some(note) = out.note {
-        a.warnings.push(Diagnostic::warning(ErrorKind::Domain, a.call_span, note));
+        a.warnings
+            .push(Diagnostic::warning(ErrorKind::Domain, a.call_span, note));
     }
     Ok(Value::num(v3(), &out.angles))
 }
@@ -39,14 +40,20 @@ fn se2_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     match args.len() {
         1 => {
             if !Param::Square.accepts(&args[0].kind) {
-                return Err(ArgError::type_of(0, format!("SE2 takes a 3×3 matrix, not {}", args[0].kind.a())));
+                return Err(ArgError::type_of(
+                    0,
+                    format!("SE2 takes a 3×3 matrix, not {}", args[0].kind.a()),
+                ));
             }
             Ok(Ty::new(Kind::SE2, args[0].frames.clone()))
         }
         _ => {
             for (i, t) in args.iter().enumerate() {
                 if !Param::Scalar.accepts(&t.kind) {
-                    return Err(ArgError::type_of(i, format!("SE2(theta, x, y) takes numbers, not {}", t.kind.a())));
+                    return Err(ArgError::type_of(
+                        i,
+                        format!("SE2(theta, x, y) takes numbers, not {}", t.kind.a()),
+                    ));
                 }
             }
             Ok(Ty::plain(Kind::SE2))
@@ -56,7 +63,10 @@ fn se2_rule(args: &[Ty]) -> Result<Ty, ArgError> {
 
 fn dof_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     if args[0].kind != Kind::Mechanism && args[0].kind != Kind::Unknown {
-        return Err(ArgError::type_of(0, format!("dof takes a mechanism, not {}", args[0].kind.a())));
+        return Err(ArgError::type_of(
+            0,
+            format!("dof takes a mechanism, not {}", args[0].kind.a()),
+        ));
     }
     Ok(Ty::scalar())
 }
@@ -64,17 +74,30 @@ fn dof_rule(args: &[Ty]) -> Result<Ty, ArgError> {
 fn distance_value(a: &Args, g: Group) -> Result<Value, Diagnostic> {
     let m = a.mat(0)?;
     if m.shape() != (g.size(), g.size()) {
-        return Err(a.error(0, ErrorKind::Type, format!("expected a {0}×{0} matrix", g.size())));
+        return Err(a.error(
+            0,
+            ErrorKind::Type,
+            format!("expected a {0}×{0} matrix", g.size()),
+        ));
     }
-    Ok(Value::scalar(convert::distance(m, g).unwrap_or(f64::INFINITY)))
+    Ok(Value::scalar(
+        convert::distance(m, g).unwrap_or(f64::INFINITY),
+    ))
 }
 
 fn projection(a: &Args, g: Group) -> Result<Value, Diagnostic> {
     let m = a.mat(0)?;
     if m.shape() != (g.size(), g.size()) || m.iter().any(|x| !x.is_finite()) {
-        return Err(a.error(0, ErrorKind::Type, format!("expected a {0}×{0} matrix of finite numbers", g.size())));
+        return Err(a.error(
+            0,
+            ErrorKind::Type,
+            format!("expected a {0}×{0} matrix of finite numbers", g.size()),
+        ));
     }
-    Ok(Value::Num { kind: g.kind(), m: convert::project(m, g) })
+    Ok(Value::Num {
+        kind: g.kind(),
+        m: convert::project(m, g),
+    })
 }
 
 pub(super) fn builtins() -> Vec<Builtin> {
@@ -89,8 +112,17 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "ZYX Euler angles: Rotz(a) Roty(b) Rotx(c)",
             example: "rot_zyx(10 deg, 20 deg, 30 deg)",
             area: Representations,
-            typing: Typing::Fixed { params: &[Scalar, Scalar, Scalar], ret: so3k, frames: FrameRule::None },
-            eval: |a| Ok(Value::num(Kind::SO3, &repr::rot_zyx(a.scalar(0)?, a.scalar(1)?, a.scalar(2)?))),
+            typing: Typing::Fixed {
+                params: &[Scalar, Scalar, Scalar],
+                ret: so3k,
+                frames: FrameRule::None,
+            },
+            eval: |a| {
+                Ok(Value::num(
+                    Kind::SO3,
+                    &repr::rot_zyx(a.scalar(0)?, a.scalar(1)?, a.scalar(2)?),
+                ))
+            },
         },
         Builtin {
             name: "euler_zyx",
@@ -100,7 +132,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "ZYX Euler angles of a rotation (at gimbal lock a = 0 is chosen and a warning says so)",
             example: "euler_zyx(rot_zyx(10 deg, 20 deg, 30 deg))",
             area: Representations,
-            typing: Typing::Fixed { params: &[Rot], ret: v3, frames: FrameRule::None },
+            typing: Typing::Fixed {
+                params: &[Rot],
+                ret: v3,
+                frames: FrameRule::None,
+            },
             eval: |a| angles(a, repr::euler_zyx),
         },
         Builtin {
@@ -111,8 +147,17 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "ZXZ Euler angles: Rotz(a) Rotx(b) Rotz(c)",
             example: "rot_zxz(10 deg, 20 deg, 30 deg)",
             area: Representations,
-            typing: Typing::Fixed { params: &[Scalar, Scalar, Scalar], ret: so3k, frames: FrameRule::None },
-            eval: |a| Ok(Value::num(Kind::SO3, &repr::rot_zxz(a.scalar(0)?, a.scalar(1)?, a.scalar(2)?))),
+            typing: Typing::Fixed {
+                params: &[Scalar, Scalar, Scalar],
+                ret: so3k,
+                frames: FrameRule::None,
+            },
+            eval: |a| {
+                Ok(Value::num(
+                    Kind::SO3,
+                    &repr::rot_zxz(a.scalar(0)?, a.scalar(1)?, a.scalar(2)?),
+                ))
+            },
         },
         Builtin {
             name: "euler_zxz",
@@ -122,7 +167,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "ZXZ Euler angles of a rotation",
             example: "euler_zxz(rot_zxz(10 deg, 20 deg, 30 deg))",
             area: Representations,
-            typing: Typing::Fixed { params: &[Rot], ret: v3, frames: FrameRule::None },
+            typing: Typing::Fixed {
+                params: &[Rot],
+                ret: v3,
+                frames: FrameRule::None,
+            },
             eval: |a| angles(a, repr::euler_zxz),
         },
         Builtin {
@@ -133,8 +182,17 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "roll-pitch-yaw: Rotz(yaw) Roty(pitch) Rotx(roll)",
             example: "rot_rpy(30 deg, 20 deg, 10 deg)",
             area: Representations,
-            typing: Typing::Fixed { params: &[Scalar, Scalar, Scalar], ret: so3k, frames: FrameRule::None },
-            eval: |a| Ok(Value::num(Kind::SO3, &repr::rot_rpy(a.scalar(0)?, a.scalar(1)?, a.scalar(2)?))),
+            typing: Typing::Fixed {
+                params: &[Scalar, Scalar, Scalar],
+                ret: so3k,
+                frames: FrameRule::None,
+            },
+            eval: |a| {
+                Ok(Value::num(
+                    Kind::SO3,
+                    &repr::rot_rpy(a.scalar(0)?, a.scalar(1)?, a.scalar(2)?),
+                ))
+            },
         },
         Builtin {
             name: "rpy",
@@ -144,7 +202,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "roll, pitch and yaw of a rotation",
             example: "rpy(rot_rpy(30 deg, 20 deg, 10 deg))",
             area: Representations,
-            typing: Typing::Fixed { params: &[Rot], ret: v3, frames: FrameRule::None },
+            typing: Typing::Fixed {
+                params: &[Rot],
+                ret: v3,
+                frames: FrameRule::None,
+            },
             eval: |a| angles(a, repr::rpy),
         },
         Builtin {
@@ -155,7 +217,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "unit quaternion (cos θ/2, ω̂ sin θ/2) of a rotation, with w ≥ 0",
             example: "quat(Rotz(90 deg))",
             area: Representations,
-            typing: Typing::Fixed { params: &[Rot], ret: v4, frames: FrameRule::None },
+            typing: Typing::Fixed {
+                params: &[Rot],
+                ret: v4,
+                frames: FrameRule::None,
+            },
             eval: |a| Ok(Value::num(v4(), &repr::quat(&a.so3(0)?))),
         },
         Builtin {
@@ -166,10 +232,18 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "the rotation of a quaternion (w, x, y, z) (normalized first)",
             example: "rot_quat((0.7071, 0, 0, 0.7071))",
             area: Representations,
-            typing: Typing::Fixed { params: &[Vec(4)], ret: so3k, frames: FrameRule::None },
+            typing: Typing::Fixed {
+                params: &[Vec(4)],
+                ret: so3k,
+                frames: FrameRule::None,
+            },
             eval: |a| match repr::rot_quat(&a.vec4(0)?) {
                 Some(r) => Ok(Value::num(Kind::SO3, &r)),
-                None => Err(a.error(0, ErrorKind::Domain, "the zero quaternion is not a rotation")),
+                None => Err(a.error(
+                    0,
+                    ErrorKind::Domain,
+                    "the zero quaternion is not a rotation",
+                )),
             },
         },
         Builtin {
@@ -180,7 +254,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "Hamilton product: rot_quat(quat_mul(q, p)) = rot_quat(q) rot_quat(p)",
             example: "quat_mul(quat(Rotz(30 deg)), quat(Rotx(20 deg)))",
             area: Representations,
-            typing: Typing::Fixed { params: &[Vec(4), Vec(4)], ret: v4, frames: FrameRule::None },
+            typing: Typing::Fixed {
+                params: &[Vec(4), Vec(4)],
+                ret: v4,
+                frames: FrameRule::None,
+            },
             eval: |a| Ok(Value::num(v4(), &repr::quat_mul(&a.vec4(0)?, &a.vec4(1)?))),
         },
         Builtin {
@@ -191,7 +269,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "Cayley–Rodrigues parameters r = ω̂ tan(θ/2) (undefined at θ = π)",
             example: "cayley(Rotz(90 deg))",
             area: Representations,
-            typing: Typing::Fixed { params: &[Rot], ret: v3, frames: FrameRule::None },
+            typing: Typing::Fixed {
+                params: &[Rot],
+                ret: v3,
+                frames: FrameRule::None,
+            },
             eval: |a| {
                 let r = a.so3(0)?;
                 repr::cayley(&r)
@@ -207,7 +289,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "the rotation of Cayley–Rodrigues parameters r",
             example: "rot_cayley((0, 0, 1))",
             area: Representations,
-            typing: Typing::Fixed { params: &[Vec(3)], ret: so3k, frames: FrameRule::None },
+            typing: Typing::Fixed {
+                params: &[Vec(3)],
+                ret: so3k,
+                frames: FrameRule::None,
+            },
             eval: |a| Ok(Value::num(Kind::SO3, &repr::rot_cayley(&a.vec3(0)?))),
         },
         // ---- planar ----
@@ -219,10 +305,16 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "a planar transform [cos θ, −sin θ, x; sin θ, cos θ, y; 0, 0, 1], or a 3×3 matrix read as SE(2)",
             example: "SE2(90 deg, 2, 1)",
             area: Transforms,
-            typing: Typing::Custom { arity: (1, 3), rule: se2_rule },
+            typing: Typing::Custom {
+                arity: (1, 3),
+                rule: se2_rule,
+            },
             eval: |a| match a.len() {
                 1 => Ok(Value::num(Kind::SE2, &a.se2(0)?)),
-                3 => Ok(Value::num(Kind::SE2, &se2::from_theta_xy(a.scalar(0)?, a.scalar(1)?, a.scalar(2)?))),
+                3 => Ok(Value::num(
+                    Kind::SE2,
+                    &se2::from_theta_xy(a.scalar(0)?, a.scalar(1)?, a.scalar(2)?),
+                )),
                 _ => Err(a.domain("SE2 takes one matrix or (theta, x, y)")),
             },
         },
@@ -234,8 +326,17 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "the planar twist matrix [0, −ω, vx; ω, 0, vy; 0, 0, 0]",
             example: "se2(1, 2, 0)",
             area: Twists,
-            typing: Typing::Fixed { params: &[Scalar, Scalar, Scalar], ret: || Kind::Se2, frames: FrameRule::None },
-            eval: |a| Ok(Value::num(Kind::Se2, &se2::hat(&Vec3::new(a.scalar(0)?, a.scalar(1)?, a.scalar(2)?)))),
+            typing: Typing::Fixed {
+                params: &[Scalar, Scalar, Scalar],
+                ret: || Kind::Se2,
+                frames: FrameRule::None,
+            },
+            eval: |a| {
+                Ok(Value::num(
+                    Kind::Se2,
+                    &se2::hat(&Vec3::new(a.scalar(0)?, a.scalar(1)?, a.scalar(2)?)),
+                ))
+            },
         },
         // ---- tests and projections ----
         Builtin {
@@ -246,7 +347,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "the rotation nearest a 3×3 matrix (SVD)",
             example: "ProjectToSO3([0.675, 0.150, 0.720; 0.370, 0.771, -0.511; -0.630, 0.619, 0.472])",
             area: Tests,
-            typing: Typing::Fixed { params: &[Square], ret: so3k, frames: FrameRule::Same(0) },
+            typing: Typing::Fixed {
+                params: &[Square],
+                ret: so3k,
+                frames: FrameRule::Same(0),
+            },
             eval: |a| projection(a, Group::SO3),
         },
         Builtin {
@@ -257,7 +362,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "the transform nearest a 4×4 matrix (rotation block by SVD)",
             example: "ProjectToSE3([0.675, 0.150, 0.720, 1.2; 0.370, 0.771, -0.511, 5.4; -0.630, 0.619, 0.472, 3.6; 0.003, 0.002, 0.010, 0.9])",
             area: Tests,
-            typing: Typing::Fixed { params: &[Square], ret: || Kind::SE3, frames: FrameRule::Same(0) },
+            typing: Typing::Fixed {
+                params: &[Square],
+                ret: || Kind::SE3,
+                frames: FrameRule::Same(0),
+            },
             eval: |a| projection(a, Group::SE3),
         },
         Builtin {
@@ -268,7 +377,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "‖MᵀM − I‖_F if det M > 0, else 1e9: how far M is from SO(3)",
             example: "DistanceToSO3([1, 0, 0; 0, 0.1, -0.95; 0, 1, 0.1])",
             area: Tests,
-            typing: Typing::Fixed { params: &[Square], ret: scalar, frames: FrameRule::None },
+            typing: Typing::Fixed {
+                params: &[Square],
+                ret: scalar,
+                frames: FrameRule::None,
+            },
             eval: |a| distance_value(a, Group::SO3),
         },
         Builtin {
@@ -279,7 +392,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "how far a 4×4 matrix is from SE(3) (the book's measure)",
             example: "DistanceToSE3([1, 0, 0, 1.2; 0, 0.1, -0.95, 1.5; 0, 1, 0.1, -0.9; 0, 0, 0.1, 0.98])",
             area: Tests,
-            typing: Typing::Fixed { params: &[Square], ret: scalar, frames: FrameRule::None },
+            typing: Typing::Fixed {
+                params: &[Square],
+                ret: scalar,
+                frames: FrameRule::None,
+            },
             eval: |a| distance_value(a, Group::SE3),
         },
         Builtin {
@@ -290,10 +407,17 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "true if DistanceToSO3(mat) < 1e-3",
             example: "TestIfSO3(Rotz(1))",
             area: Tests,
-            typing: Typing::Fixed { params: &[Square], ret: boolk, frames: FrameRule::None },
+            typing: Typing::Fixed {
+                params: &[Square],
+                ret: boolk,
+                frames: FrameRule::None,
+            },
             eval: |a| {
                 let m = a.mat(0)?;
-                Ok(Value::Bool(m.shape() == (3, 3) && project::test_if_so3(&Mat3::from_iterator(m.iter().copied()))))
+                Ok(Value::Bool(
+                    m.shape() == (3, 3)
+                        && project::test_if_so3(&Mat3::from_iterator(m.iter().copied())),
+                ))
             },
         },
         Builtin {
@@ -304,10 +428,17 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "true if DistanceToSE3(mat) < 1e-3",
             example: "TestIfSE3(Trans((1, 2, 3)))",
             area: Tests,
-            typing: Typing::Fixed { params: &[Square], ret: boolk, frames: FrameRule::None },
+            typing: Typing::Fixed {
+                params: &[Square],
+                ret: boolk,
+                frames: FrameRule::None,
+            },
             eval: |a| {
                 let m = a.mat(0)?;
-                Ok(Value::Bool(m.shape() == (4, 4) && project::test_if_se3(&Mat4::from_iterator(m.iter().copied()))))
+                Ok(Value::Bool(
+                    m.shape() == (4, 4)
+                        && project::test_if_se3(&Mat4::from_iterator(m.iter().copied())),
+                ))
             },
         },
         // ---- mechanisms ----
@@ -319,9 +450,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             doc: "degrees of freedom by Grübler's formula, m(N − 1 − J) + Σ fᵢ",
             example: "dof(mech < links 4; joints R R R R; planar >)",
             area: Mechanisms,
-            typing: Typing::Custom { arity: (1, 1), rule: dof_rule },
+            typing: Typing::Custom {
+                arity: (1, 1),
+                rule: dof_rule,
+            },
             eval: |a| Ok(Value::scalar(a.mech(0)?.dof() as f64)),
         },
     ]
 }
-

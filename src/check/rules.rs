@@ -123,13 +123,11 @@ fn mul_kind(l: &Kind, r: &Kind, ops: Operands) -> Result<Kind, RuleError> {
                 _ => Err(shape_error(l, r)),
             },
             Adjoint { transposed: true } => match r {
-                Twist | Screw => Err(RuleError::typ(
-                    "[Ad_T]ᵀ acts on wrenches, not on twists",
-                )
-                .with_help(format!(
-                    "twists change frame with the adjoint itself: write {} without .T",
-                    ops.lhs.trim_end_matches(".T")
-                ))),
+                Twist | Screw => Err(RuleError::typ("[Ad_T]ᵀ acts on wrenches, not on twists")
+                    .with_help(format!(
+                        "twists change frame with the adjoint itself: write {} without .T",
+                        ops.lhs.trim_end_matches(".T")
+                    ))),
                 _ if dims_agree(n, Some(6)) => Ok(Wrench),
                 _ => Err(shape_error(l, r)),
             },
@@ -157,9 +155,8 @@ fn mul_kind(l: &Kind, r: &Kind, ops: Operands) -> Result<Kind, RuleError> {
         return match r.shape() {
             Some((Some(1), c)) => Ok(Matrix(l.vec_len(), c)),
             _ if *r == Unknown => Ok(Unknown),
-            _ => Err(shape_error(l, r).with_help(
-                "for vectors use dot(u, v) or cross(u, v); a row is v.T",
-            )),
+            _ => Err(shape_error(l, r)
+                .with_help("for vectors use dot(u, v) or cross(u, v); a row is v.T")),
         };
     }
     let same_group = match (l, r) {
@@ -404,7 +401,11 @@ fn add_kind(l: &Kind, r: &Kind) -> Result<Kind, RuleError> {
         (Unknown, k) | (k, Unknown) => Ok(scaled_kind(k)),
         (Twist | Screw, Twist | Screw | Vector(_)) | (Vector(_), Twist | Screw) => {
             if r.vec_len().is_some_and(|n| n != 6) || l.vec_len().is_some_and(|n| n != 6) {
-                Err(RuleError::typ(format!("cannot add {} and {}", l.a(), r.a())))
+                Err(RuleError::typ(format!(
+                    "cannot add {} and {}",
+                    l.a(),
+                    r.a()
+                )))
             } else {
                 Ok(Twist)
             }
@@ -422,8 +423,10 @@ fn add_kind(l: &Kind, r: &Kind) -> Result<Kind, RuleError> {
                         Ok(Matrix(lr.or(rr), lc.or(rc)))
                     }
                 }
-                _ => Err(RuleError::typ(format!("cannot add {} and {}", l.a(), r.a()))
-                    .with_help("sums need operands of the same size")),
+                _ => Err(
+                    RuleError::typ(format!("cannot add {} and {}", l.a(), r.a()))
+                        .with_help("sums need operands of the same size"),
+                ),
             }
         }
     }
@@ -512,13 +515,15 @@ pub fn pow(base: &Ty, exp: &Ty, literal: Option<f64>) -> Result<Ty, RuleError> {
         None => false,
     };
     if !square {
-        return Err(RuleError::typ(format!("cannot raise {} to a power", base.kind.a()))
-            .with_help("powers need a square matrix"));
+        return Err(
+            RuleError::typ(format!("cannot raise {} to a power", base.kind.a()))
+                .with_help("powers need a square matrix"),
+        );
     }
     match literal {
-        Some(n) if n == -1.0 => inverse(base),
-        Some(n) if n == 0.0 => Ok(Ty::new(identity_kind(&base.kind), Frames::None)),
-        Some(n) if n == 1.0 => Ok(base.clone()),
+        Some(-1.0) => inverse(base),
+        Some(0.0) => Ok(Ty::new(identity_kind(&base.kind), Frames::None)),
+        Some(1.0) => Ok(base.clone()),
         _ => {
             let frames = match &base.frames {
                 Frames::Pair(a, b) if a != b => {
@@ -580,8 +585,10 @@ pub fn member(t: &Ty, name: &str) -> Result<Ty, RuleError> {
                 k if k.shape().is_some() => ".T",
                 _ => "none",
             };
-            Err(RuleError::typ(format!("{} has no member .{name}", t.kind.a()))
-                .with_help(format!("members of {}: {known}", t.kind.a())))
+            Err(
+                RuleError::typ(format!("{} has no member .{name}", t.kind.a()))
+                    .with_help(format!("members of {}: {known}", t.kind.a())),
+            )
         }
     }
 }

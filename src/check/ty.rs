@@ -33,7 +33,9 @@ pub enum Kind {
     Wrench,
     /// The 6×6 adjoint [Ad_T] (Definition 3.20); `transposed` for
     /// [Ad_T]ᵀ, which acts on wrenches (Prop. 3.17).
-    Adjoint { transposed: bool },
+    Adjoint {
+        transposed: bool,
+    },
     /// A mechanism (chapter 2).
     Mechanism,
     Tuple(Vec<Kind>),
@@ -104,12 +106,20 @@ impl Kind {
     /// True for square matrix-like kinds that act on vectors by `*`
     /// (operators: rotations, transforms, adjoints, plain square matrices).
     pub fn is_operator(&self) -> bool {
-        match self {
-            Kind::SO3 | Kind::SE3 | Kind::SO2 | Kind::SE2 | Kind::Adjoint { .. } => true,
-            Kind::So3 | Kind::Se3 | Kind::So2 | Kind::Se2 => true,
-            Kind::Matrix(..) | Kind::Unknown => true,
-            _ => false,
-        }
+        matches!(
+            self,
+            Kind::SO3
+                | Kind::SE3
+                | Kind::SO2
+                | Kind::SE2
+                | Kind::Adjoint { .. }
+                | Kind::So3
+                | Kind::Se3
+                | Kind::So2
+                | Kind::Se2
+                | Kind::Matrix(..)
+                | Kind::Unknown
+        )
     }
 
     /// True for group elements (SO(n), SE(n)).
@@ -135,7 +145,8 @@ impl Kind {
         let vowel = name.starts_with(['a', 'e', 'i', 'o', 'u', 'S', 's'])
             && !name.starts_with("screw")
             && !name.starts_with("scalar");
-        let vowel = vowel || name.starts_with("8-") || name.starts_with("11-") || name.starts_with("18-");
+        let vowel =
+            vowel || name.starts_with("8-") || name.starts_with("11-") || name.starts_with("18-");
         format!("{} {name}", if vowel { "an" } else { "a" })
     }
 }

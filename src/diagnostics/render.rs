@@ -22,6 +22,33 @@ pub fn line_col(src: &str, offset: usize) -> (usize, usize) {
     (line, col)
 }
 
+/// Line starts of a text, for line numbers in O(log n) (a long script
+/// must not cost O(n) per statement).
+#[derive(Debug, Clone)]
+pub struct LineIndex {
+    starts: Vec<usize>,
+}
+
+impl LineIndex {
+    pub fn new(src: &str) -> LineIndex {
+        let mut starts = vec![0];
+        starts.extend(
+            src.bytes()
+                .enumerate()
+                .filter(|(_, b)| *b == b'\n')
+                .map(|(i, _)| i + 1),
+        );
+        LineIndex { starts }
+    }
+    /// 1-based line of a byte offset.
+    pub fn line(&self, offset: usize) -> usize {
+        match self.starts.binary_search(&offset) {
+            Ok(i) => i + 1,
+            Err(i) => i,
+        }
+    }
+}
+
 /// The header line alone: `ex.chs:3:8: frame error: frames do not cancel`.
 pub fn header(d: &Diagnostic, file: &str, src: &str) -> String {
     let (line, col) = line_col(src, d.span.start);
@@ -40,9 +67,13 @@ pub fn text(d: &Diagnostic, file: &str, src: &str) -> String {
         let b = b.max(a).min(src.len());
         a..b
     };
-    let mut labels = vec![CsLabel::primary((), clamp(d.span.start, d.span.end)).with_message(d.primary_label.clone())];
+    let mut labels = vec![
+        CsLabel::primary((), clamp(d.span.start, d.span.end)).with_message(d.primary_label.clone()),
+    ];
     for l in &d.labels {
-        labels.push(CsLabel::secondary((), clamp(l.span.start, l.span.end)).with_message(l.message.clone()));
+        labels.push(
+            CsLabel::secondary((), clamp(l.span.start, l.span.end)).with_message(l.message.clone()),
+        );
     }
     let base = match d.severity {
         Severity::Error => CsDiagnostic::error(),
@@ -76,14 +107,17 @@ mod tests {
         let src = "x = 1\nT_ab * T_cb\n";
         let d = Diagnostic::error(ErrorKind::Frame, Span::new(11, 12), "frames do not cancel");
         let t = text(&d, "ex.chs", src);
-        assert!(t.starts_with("ex.chs:2:6: frame error: frames do not cancel\n"), "{t}");
+        assert!(
+            t.starts_with("ex.chs:2:6: frame error: frames do not cancel\n"),
+            "{t}"
+        );
         assert!(t.contains("T_ab * T_cb"), "{t}");
         assert!(t.contains('^'), "{t}");
     }
 
     #[test]
     fn line_col_counts_characters() {
-        assert_eq!(line_col("θ = 1", 3), (1, 2));
+        assert_eq!(line_col("θ = 1", 3), (1, 3));
         assert_eq!(line_col("a\nbc", 3), (2, 2));
     }
 }

@@ -38,8 +38,14 @@ mod tests {
 
     #[test]
     fn suggests_close_names() {
-        assert_eq!(did_you_mean("MatrixLog", &["MatrixLog3", "MatrixLog6", "Ad"]), Some("MatrixLog3"));
-        assert_eq!(did_you_mean("matrixlog6", &["MatrixLog3", "MatrixLog6"]), Some("MatrixLog6"));
+        assert_eq!(
+            did_you_mean("MatrixLog", &["MatrixLog3", "MatrixLog6", "Ad"]),
+            Some("MatrixLog3")
+        );
+        assert_eq!(
+            did_you_mean("matrixlog6", &["MatrixLog3", "MatrixLog6"]),
+            Some("MatrixLog6")
+        );
         assert_eq!(did_you_mean("T_ab", &["T_ac", "zzz"]), Some("T_ac"));
         assert_eq!(did_you_mean("qqqq", &["MatrixLog3"]), None);
     }

@@ -108,7 +108,11 @@ pub fn membership(m: &DMatrix<f64>, group: Group) -> Membership {
     } else if dist <= PROJECT_TOL {
         Membership::Projected(project(m, group), dist)
     } else {
-        let k = if matches!(group, Group::SO2 | Group::SE2) { 2 } else { 3 };
+        let k = if matches!(group, Group::SO2 | Group::SE2) {
+            2
+        } else {
+            3
+        };
         let det = if m.nrows() >= k && m.ncols() >= k {
             m.view((0, 0), (k, k)).determinant()
         } else {
@@ -132,7 +136,13 @@ pub fn classify(m: &DMatrix<f64>) -> Kind {
         (4, 4) if is(Group::SE3) => Kind::SE3,
         (2, 2) if is(Group::SO2) => Kind::SO2,
         (3, 3) if is_skew(m) => Kind::So3,
-        (4, 4) if is_skew(&m.view((0, 0), (3, 3)).into_owned()) && m.row(3).iter().all(|x| *x == 0.0) && m.iter().any(|x| *x != 0.0) => Kind::Se3,
+        (4, 4)
+            if is_skew(&m.view((0, 0), (3, 3)).into_owned())
+                && m.row(3).iter().all(|x| *x == 0.0)
+                && m.iter().any(|x| *x != 0.0) =>
+        {
+            Kind::Se3
+        }
         (r, 1) => Kind::Vector(Some(r)),
         (r, c) => Kind::Matrix(Some(r), Some(c)),
     }

@@ -26,7 +26,10 @@ impl Interp<'_> {
             return Err(Diagnostic::error(
                 ErrorKind::Name,
                 target.span,
-                format!("derive needs a name with two frames, like T_ce; '{}' has none", target.name),
+                format!(
+                    "derive needs a name with two frames, like T_ce; '{}' has none",
+                    target.name
+                ),
             ));
         };
         let rotations = base_name(&target.name).starts_with('R');
@@ -46,15 +49,30 @@ impl Interp<'_> {
                 if a.moved || c.moved {
                     continue;
                 }
-                edges.entry(a.name.clone()).or_default().push((c.name.clone(), Step { name: name.clone(), inverted: false }));
-                edges.entry(c.name.clone()).or_default().push((a.name.clone(), Step { name: name.clone(), inverted: true }));
+                edges.entry(a.name.clone()).or_default().push((
+                    c.name.clone(),
+                    Step {
+                        name: name.clone(),
+                        inverted: false,
+                    },
+                ));
+                edges.entry(c.name.clone()).or_default().push((
+                    a.name.clone(),
+                    Step {
+                        name: name.clone(),
+                        inverted: true,
+                    },
+                ));
             }
         }
         let Some(steps) = shortest_path(&edges, &from, &to) else {
             let reach = |f: &str| {
                 let mut r: Vec<String> = reachable(&edges, f);
                 r.sort();
-                r.iter().map(|x| format!("{{{x}}}")).collect::<Vec<_>>().join(", ")
+                r.iter()
+                    .map(|x| format!("{{{x}}}"))
+                    .collect::<Vec<_>>()
+                    .join(", ")
             };
             return Err(Diagnostic::error(
                 ErrorKind::Frame,
@@ -69,29 +87,46 @@ impl Interp<'_> {
         };
         let text = steps
             .iter()
-            .map(|s| if s.inverted { format!("inv({})", s.name) } else { s.name.clone() })
+            .map(|s| {
+                if s.inverted {
+                    format!("inv({})", s.name)
+                } else {
+                    s.name.clone()
+                }
+            })
             .collect::<Vec<_>>()
             .join(" * ");
         let kind = self.env.vars[&steps[0].name].ty.kind.clone();
-        let ty = Ty::new(kind.clone(), Frames::Pair(Frame::named(from), Frame::named(to)));
+        let ty = Ty::new(
+            kind.clone(),
+            Frames::Pair(Frame::named(from), Frame::named(to)),
+        );
         if self.mode == super::env::Mode::Check {
             return Ok((text, Typed { ty, val: None }));
         }
         let mut acc: Option<Value> = None;
         for s in &steps {
             let v = self.env.vars[&s.name].val.clone().ok_or_else(|| {
-                Diagnostic::error(ErrorKind::Name, target.span, format!("{} has no value", s.name))
+                Diagnostic::error(
+                    ErrorKind::Name,
+                    target.span,
+                    format!("{} has no value", s.name),
+                )
             })?;
             let v = match (&v, s.inverted) {
                 (Value::Sym(x), true) => Value::Sym(x.clone().inverse()),
-                (_, true) => ops::inverse(&v).map_err(|m| Diagnostic::error(ErrorKind::Domain, target.span, m))?,
+                (_, true) => ops::inverse(&v)
+                    .map_err(|m| Diagnostic::error(ErrorKind::Domain, target.span, m))?,
                 _ => v,
             };
             acc = Some(match acc {
                 None => v,
-                Some(Value::Sym(a)) => Value::Sym(super::symbolic::Sym::mul(a, to_sym(&v))),
-                Some(a) if v.is_symbolic() => Value::Sym(super::symbolic::Sym::mul(to_sym(&a), to_sym(&v))),
-                Some(a) => ops::mul(&a, &v, &kind).map_err(|m| Diagnostic::error(ErrorKind::Domain, target.span, m))?,
+                Some(Value::Sym(a)) => Value::Sym(super::symbolic::Sym::times(a, to_sym(&v))),
+                Some(a) if v.is_symbolic() => {
+                    Value::Sym(super::symbolic::Sym::times(to_sym(&a), to_sym(&v)))
+                }
+                Some(a) => ops::mul(&a, &v, &kind)
+                    .map_err(|m| Diagnostic::error(ErrorKind::Domain, target.span, m))?,
             });
         }
         Ok((text, Typed { ty, val: acc }))
@@ -101,11 +136,18 @@ impl Interp<'_> {
 fn to_sym(v: &Value) -> super::symbolic::Sym {
     match v {
         Value::Sym(s) => s.clone(),
-        other => super::symbolic::Sym::Const(Box::new(other.clone()), crate::output::text::inline(other, 4)),
+        other => super::symbolic::Sym::Const(
+            Box::new(other.clone()),
+            crate::output::text::inline(other, 4),
+        ),
     }
 }
 
-fn shortest_path(edges: &HashMap<String, Vec<(String, Step)>>, from: &str, to: &str) -> Option<Vec<Step>> {
+fn shortest_path(
+    edges: &HashMap<String, Vec<(String, Step)>>,
+    from: &str,
+    to: &str,
+) -> Option<Vec<Step>> {
     if from == to {
         return None;
     }

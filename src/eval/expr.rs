@@ -23,7 +23,10 @@ fn strip(t: &Ty) -> Ty {
 fn to_sym(v: &Value) -> Sym {
     match v {
         Value::Sym(s) => s.clone(),
-        other => Sym::Const(Box::new(other.clone()), crate::output::text::inline(other, 4)),
+        other => Sym::Const(
+            Box::new(other.clone()),
+            crate::output::text::inline(other, 4),
+        ),
     }
 }
 
@@ -48,8 +51,14 @@ impl Interp<'_> {
     /// Checks (and evaluates) an expression.
     pub fn expr(&mut self, e: &Expr) -> Result<Typed, Diagnostic> {
         match &e.kind {
-            ExprKind::Number(x) => Ok(Typed { ty: Ty::scalar(), val: self.running().then(|| Value::scalar(*x)) }),
-            ExprKind::Bool(b) => Ok(Typed { ty: Ty::plain(Kind::Bool), val: self.running().then_some(Value::Bool(*b)) }),
+            ExprKind::Number(x) => Ok(Typed {
+                ty: Ty::scalar(),
+                val: self.running().then(|| Value::scalar(*x)),
+            }),
+            ExprKind::Bool(b) => Ok(Typed {
+                ty: Ty::plain(Kind::Bool),
+                val: self.running().then_some(Value::Bool(*b)),
+            }),
             ExprKind::Var(name) => self.var(name, e.span),
             ExprKind::Unary { op, operand } => {
                 let t = self.expr(operand)?;
@@ -80,13 +89,24 @@ impl Interp<'_> {
                     ));
                 }
                 let val = match t.val {
-                    Some(Value::Sym(s)) => Some(Value::Sym(Sym::mul(s, Sym::Name("deg".into())))),
-                    Some(v) => Some(Value::scalar(v.as_scalar().unwrap_or(f64::NAN) * PI / 180.0)),
+                    Some(Value::Sym(s)) => Some(Value::Sym(Sym::times(s, Sym::Name("deg".into())))),
+                    Some(v) => Some(Value::scalar(
+                        v.as_scalar().unwrap_or(f64::NAN) * PI / 180.0,
+                    )),
                     None => None,
                 };
-                Ok(Typed { ty: Ty::scalar(), val })
+                Ok(Typed {
+                    ty: Ty::scalar(),
+                    val,
+                })
             }
-            ExprKind::Binary { op, lhs, rhs, op_span, .. } => self.binary(*op, lhs, rhs, *op_span, e.span),
+            ExprKind::Binary {
+                op,
+                lhs,
+                rhs,
+                op_span,
+                ..
+            } => self.binary(*op, lhs, rhs, *op_span, e.span),
             ExprKind::Call { func, args } => self.call(&func.name, func.span, args, e.span),
             ExprKind::Member { base, member } => {
                 let t = self.expr(base)?;
@@ -103,9 +123,10 @@ impl Interp<'_> {
                     } else {
                         Sym::Member(Box::new(s), member.name.clone())
                     })),
-                    Some(v) => Some(ops::member(&v, &member.name).map_err(|m| {
-                        Diagnostic::error(ErrorKind::Type, member.span, m)
-                    })?),
+                    Some(v) => Some(
+                        ops::member(&v, &member.name)
+                            .map_err(|m| Diagnostic::error(ErrorKind::Type, member.span, m))?,
+                    ),
                     None => None,
                 };
                 let ty = refine(ty, &val);
@@ -120,16 +141,33 @@ impl Interp<'_> {
 
     fn var(&mut self, name: &str, span: Span) -> Result<Typed, Diagnostic> {
         if let Some(b) = self.env.get(name) {
-            return Ok(Typed { ty: b.ty.clone(), val: if self.running() { b.val.clone() } else { None } });
+            return Ok(Typed {
+                ty: b.ty.clone(),
+                val: if self.running() { b.val.clone() } else { None },
+            });
         }
         match name {
-            "inf" | "Inf" | "∞" => return Ok(Typed { ty: Ty::scalar(), val: self.running().then(|| Value::scalar(f64::INFINITY)) }),
-            "e" => return Ok(Typed { ty: Ty::scalar(), val: self.running().then(|| Value::scalar(std::f64::consts::E)) }),
+            "inf" | "Inf" | "∞" => {
+                return Ok(Typed {
+                    ty: Ty::scalar(),
+                    val: self.running().then(|| Value::scalar(f64::INFINITY)),
+                });
+            }
+            "e" => {
+                return Ok(Typed {
+                    ty: Ty::scalar(),
+                    val: self.running().then(|| Value::scalar(std::f64::consts::E)),
+                });
+            }
             _ => {}
         }
         if builtins::lookup(name).is_some() || self.env.fns.contains_key(name) {
-            return Err(Diagnostic::error(ErrorKind::Name, span, format!("'{name}' is a function"))
-                .with_help(format!("call it: {name}(...)")));
+            return Err(Diagnostic::error(
+                ErrorKind::Name,
+                span,
+                format!("'{name}' is a function"),
+            )
+            .with_help(format!("call it: {name}(...)")));
         }
         let mut d = Diagnostic::error(ErrorKind::Name, span, format!("unknown name '{name}'"));
         let mut candidates: Vec<&str> = self.env.vars.keys().map(String::as_str).collect();
@@ -137,15 +175,27 @@ impl Interp<'_> {
         if let Some(s) = suggest::did_you_mean(name, &candidates) {
             d = d.with_help(format!("did you mean '{s}'?"));
         } else if self.mode == Mode::Check || name.contains('_') {
-            d = d.with_help(format!("give it a value first ({name} = ...) or declare it: given {name} : SE3"));
+            d = d.with_help(format!(
+                "give it a value first ({name} = ...) or declare it: given {name} : SE3"
+            ));
         }
         Err(d)
     }
 
-    fn binary(&mut self, op: BinOp, lhs: &Expr, rhs: &Expr, op_span: Span, span: Span) -> Result<Typed, Diagnostic> {
+    fn binary(
+        &mut self,
+        op: BinOp,
+        lhs: &Expr,
+        rhs: &Expr,
+        op_span: Span,
+        span: Span,
+    ) -> Result<Typed, Diagnostic> {
         let l = self.expr(lhs)?;
         let r = self.expr(rhs)?;
-        let ops_text = Operands { lhs: self.text(lhs.span), rhs: self.text(rhs.span) };
+        let ops_text = Operands {
+            lhs: self.text(lhs.span),
+            rhs: self.text(rhs.span),
+        };
         let literal = literal_number(rhs).or_else(|| r.val.as_ref().and_then(Value::as_scalar));
         let rule = |a: &Ty, b: &Ty| match op {
             BinOp::Mul => rules::mul(a, b, ops_text),
@@ -157,14 +207,15 @@ impl Interp<'_> {
             Ok(ty) => ty,
             Err(err) => {
                 self.rule_failure(err, span, Some(lhs.span), Some(rhs.span), Some(op_span))?;
-                rule(&strip(&l.ty), &strip(&r.ty)).map_err(|e| Diagnostic::error(ErrorKind::Type, op_span, e.message))?
+                rule(&strip(&l.ty), &strip(&r.ty))
+                    .map_err(|e| Diagnostic::error(ErrorKind::Type, op_span, e.message))?
             }
         };
         let val = match (l.val, r.val) {
             (Some(a), Some(b)) if a.is_symbolic() || b.is_symbolic() => {
                 let (a, b) = (to_sym(&a), to_sym(&b));
                 Some(Value::Sym(match op {
-                    BinOp::Mul => Sym::mul(a, b),
+                    BinOp::Mul => Sym::times(a, b),
                     BinOp::Add => Sym::Add(Box::new(a), Box::new(b)),
                     BinOp::Sub => Sym::Sub(Box::new(a), Box::new(b)),
                     BinOp::Div => Sym::Div(Box::new(a), Box::new(b)),
@@ -187,15 +238,28 @@ impl Interp<'_> {
             }
             _ => None,
         };
-        Ok(Typed { ty: refine(ty, &val), val })
+        Ok(Typed {
+            ty: refine(ty, &val),
+            val,
+        })
     }
 
-    fn call(&mut self, name: &str, name_span: Span, args: &[Expr], span: Span) -> Result<Typed, Diagnostic> {
+    fn call(
+        &mut self,
+        name: &str,
+        name_span: Span,
+        args: &[Expr],
+        span: Span,
+    ) -> Result<Typed, Diagnostic> {
         if let Some(f) = self.env.fns.get(name).cloned() {
             return self.user_call(&f, args, span);
         }
         let Some(b) = builtins::lookup(name) else {
-            let mut d = Diagnostic::error(ErrorKind::Name, name_span, format!("unknown function '{name}'"));
+            let mut d = Diagnostic::error(
+                ErrorKind::Name,
+                name_span,
+                format!("unknown function '{name}'"),
+            );
             let mut names = builtins::all_names();
             names.extend(self.env.fns.keys().map(String::as_str));
             if let Some(s) = suggest::did_you_mean(name, &names) {
@@ -206,21 +270,18 @@ impl Interp<'_> {
         let mut typed = Vec::with_capacity(args.len());
         for (i, a) in args.iter().enumerate() {
             // Rot(x, θ): the axis may be written as a bare x, y or z.
-            if i == 0 && matches!(b.name, "Rot") {
-                if let ExprKind::Var(axis) = &a.kind {
-                    if self.env.get(axis).is_none() {
-                        if let Some(v) = match axis.as_str() {
-                            "x" => Some([1.0, 0.0, 0.0]),
-                            "y" => Some([0.0, 1.0, 0.0]),
-                            "z" => Some([0.0, 0.0, 1.0]),
-                            _ => None,
-                        } {
-                            let val = self.running().then(|| Value::vector(Kind::Vector(Some(3)), &v));
-                            typed.push(Typed { ty: Ty::plain(Kind::Vector(Some(3))), val });
-                            continue;
-                        }
-                    }
-                }
+            if let (0, "Rot", ExprKind::Var(axis)) = (i, b.name, &a.kind)
+                && self.env.get(axis).is_none()
+                && let Some(v) = unit_axis(axis)
+            {
+                let val = self
+                    .running()
+                    .then(|| Value::vector(Kind::Vector(Some(3)), &v));
+                typed.push(Typed {
+                    ty: Ty::plain(Kind::Vector(Some(3))),
+                    val,
+                });
+                continue;
             }
             typed.push(self.expr(a)?);
         }
@@ -229,7 +290,8 @@ impl Interp<'_> {
             Ok(ty) => ty,
             Err(err) => {
                 let at = err.arg.and_then(|i| args.get(i)).map_or(span, |a| a.span);
-                let d = Diagnostic::error(err.kind, at, err.message).with_help(format!("signature: {}", b.signature));
+                let d = Diagnostic::error(err.kind, at, err.message)
+                    .with_help(format!("signature: {}", b.signature));
                 if err.kind == ErrorKind::Frame && self.frames != super::env::FrameMode::Strict {
                     if self.frames == super::env::FrameMode::Warn {
                         let mut w = d;
@@ -237,7 +299,8 @@ impl Interp<'_> {
                         self.warnings.push(w);
                     }
                     let plain: Vec<Ty> = tys.iter().map(strip).collect();
-                    b.check(&plain).map_err(|e| Diagnostic::error(e.kind, at, e.message))?
+                    b.check(&plain)
+                        .map_err(|e| Diagnostic::error(e.kind, at, e.message))?
                 } else {
                     return Err(d);
                 }
@@ -246,13 +309,19 @@ impl Interp<'_> {
         if !self.running() {
             return Ok(Typed { ty, val: None });
         }
-        let vals: Vec<Value> = typed.into_iter().map(|t| t.val.unwrap_or_else(|| Value::scalar(f64::NAN))).collect();
+        let vals: Vec<Value> = typed
+            .into_iter()
+            .map(|t| t.val.unwrap_or_else(|| Value::scalar(f64::NAN)))
+            .collect();
         if vals.iter().any(Value::is_symbolic) {
             let sym = match b.name {
                 "inv" | "RotInv" | "TransInv" => to_sym(&vals[0]).inverse(),
                 _ => Sym::Call(name.to_string(), vals.iter().map(to_sym).collect()),
             };
-            return Ok(Typed { ty, val: Some(Value::Sym(sym)) });
+            return Ok(Typed {
+                ty,
+                val: Some(Value::Sym(sym)),
+            });
         }
         let mut a = Args {
             name: b.name,
@@ -264,30 +333,56 @@ impl Interp<'_> {
         };
         let v = (b.eval)(&mut a)?;
         let val = Some(v);
-        Ok(Typed { ty: refine(ty, &val), val })
+        Ok(Typed {
+            ty: refine(ty, &val),
+            val,
+        })
     }
 
-    fn user_call(&mut self, f: &super::value::UserFn, args: &[Expr], span: Span) -> Result<Typed, Diagnostic> {
+    fn user_call(
+        &mut self,
+        f: &super::value::UserFn,
+        args: &[Expr],
+        span: Span,
+    ) -> Result<Typed, Diagnostic> {
         if args.len() != f.params.len() {
             return Err(Diagnostic::error(
                 ErrorKind::Arity,
                 span,
-                format!("{} takes {} argument(s), got {}", f.name, f.params.len(), args.len()),
+                format!(
+                    "{} takes {} argument(s), got {}",
+                    f.name,
+                    f.params.len(),
+                    args.len()
+                ),
             )
             .with_help(format!("signature: {}({})", f.name, f.params.join(", "))));
         }
         if self.depth >= MAX_CALL_DEPTH {
-            return Err(self.domain(span, format!("function calls nested deeper than {MAX_CALL_DEPTH} (recursion?)")));
+            return Err(self.domain(
+                span,
+                format!("function calls nested deeper than {MAX_CALL_DEPTH} (recursion?)"),
+            ));
         }
         let mut bound = Vec::new();
         for (p, a) in f.params.iter().zip(args) {
             let t = self.expr(a)?;
             bound.push((p.clone(), t));
         }
-        let saved: Vec<(String, Option<super::env::Binding>)> =
-            f.params.iter().map(|p| (p.clone(), self.env.vars.get(p).cloned())).collect();
+        let saved: Vec<(String, Option<super::env::Binding>)> = f
+            .params
+            .iter()
+            .map(|p| (p.clone(), self.env.vars.get(p).cloned()))
+            .collect();
         for (p, t) in bound {
-            self.env.set(&p, super::env::Binding { ty: t.ty, val: t.val, symbolic: false });
+            self.env.set(
+                &p,
+                super::env::Binding {
+                    ty: t.ty,
+                    val: t.val,
+                    symbolic: false,
+                },
+            );
         }
         self.depth += 1;
         let result = self.expr(&f.body);
@@ -312,9 +407,18 @@ impl Interp<'_> {
                 IndexArg::Expr(e) => {
                     let it = self.expr(e)?;
                     if !it.ty.kind.maybe_scalar() {
-                        return Err(Diagnostic::error(ErrorKind::Type, e.span, "an index must be a number"));
+                        return Err(Diagnostic::error(
+                            ErrorKind::Type,
+                            e.span,
+                            "an index must be a number",
+                        ));
                     }
-                    sels.push(Sel::At(it.val.as_ref().and_then(Value::as_scalar).unwrap_or(f64::NAN)));
+                    sels.push(Sel::At(
+                        it.val
+                            .as_ref()
+                            .and_then(Value::as_scalar)
+                            .unwrap_or(f64::NAN),
+                    ));
                 }
             }
         }
@@ -323,12 +427,18 @@ impl Interp<'_> {
             None => Frames::None,
         };
         let ty = match (&t.ty.kind, sels.as_slice()) {
-            (Kind::Tuple(ks), [Sel::At(i)]) if i.fract() == 0.0 && *i >= 1.0 && (*i as usize) <= ks.len() => {
+            (Kind::Tuple(ks), [Sel::At(i)])
+                if i.fract() == 0.0 && *i >= 1.0 && (*i as usize) <= ks.len() =>
+            {
                 Ty::plain(ks[*i as usize - 1].clone())
             }
             (Kind::Tuple(_), _) => Ty::plain(Kind::Unknown),
             (k, _) if k.shape().is_none() => {
-                return Err(Diagnostic::error(ErrorKind::Type, span, format!("cannot index a {k}")));
+                return Err(Diagnostic::error(
+                    ErrorKind::Type,
+                    span,
+                    format!("cannot index a {k}"),
+                ));
             }
             (_, [Sel::All, Sel::At(_)]) => Ty::new(Kind::Vector(None), outer),
             (_, [Sel::At(_), Sel::All]) => Ty::plain(Kind::Matrix(Some(1), None)),
@@ -339,7 +449,10 @@ impl Interp<'_> {
             Some(v) => Some(ops::index(&v, &sels).map_err(|m| self.domain(span, m))?),
             None => None,
         };
-        Ok(Typed { ty: refine(ty, &val), val })
+        Ok(Typed {
+            ty: refine(ty, &val),
+            val,
+        })
     }
 
     fn paren(&mut self, items: &[Expr], _span: Span) -> Result<Typed, Diagnostic> {
@@ -347,15 +460,31 @@ impl Interp<'_> {
         for i in items {
             ts.push(self.expr(i)?);
         }
-        let all_scalar = ts.iter().all(|t| t.ty.kind.maybe_scalar() && t.ty.kind == Kind::Scalar);
+        let all_scalar = ts
+            .iter()
+            .all(|t| t.ty.kind.maybe_scalar() && t.ty.kind == Kind::Scalar);
         if all_scalar {
             let ty = Ty::plain(Kind::Vector(Some(ts.len())));
             let val = if self.running() {
-                if ts.iter().any(|t| t.val.as_ref().is_some_and(Value::is_symbolic)) {
-                    let parts = ts.iter().map(|t| t.val.as_ref().map_or(Sym::Identity, to_sym)).collect();
+                if ts
+                    .iter()
+                    .any(|t| t.val.as_ref().is_some_and(Value::is_symbolic))
+                {
+                    let parts = ts
+                        .iter()
+                        .map(|t| t.val.as_ref().map_or(Sym::Identity, to_sym))
+                        .collect();
                     Some(Value::Sym(Sym::Call(String::new(), parts)))
                 } else {
-                    let xs: Vec<f64> = ts.iter().map(|t| t.val.as_ref().and_then(Value::as_scalar).unwrap_or(f64::NAN)).collect();
+                    let xs: Vec<f64> = ts
+                        .iter()
+                        .map(|t| {
+                            t.val
+                                .as_ref()
+                                .and_then(Value::as_scalar)
+                                .unwrap_or(f64::NAN)
+                        })
+                        .collect();
                     Some(Value::vector(Kind::Vector(Some(xs.len())), &xs))
                 }
             } else {
@@ -364,7 +493,11 @@ impl Interp<'_> {
             return Ok(Typed { ty, val });
         }
         let ty = Ty::plain(Kind::Tuple(ts.iter().map(|t| t.ty.kind.clone()).collect()));
-        let val = ts.iter().map(|t| t.val.clone()).collect::<Option<Vec<_>>>().map(Value::Tuple);
+        let val = ts
+            .iter()
+            .map(|t| t.val.clone())
+            .collect::<Option<Vec<_>>>()
+            .map(Value::Tuple);
         Ok(Typed { ty, val })
     }
 
@@ -389,31 +522,66 @@ impl Interp<'_> {
         if !self.running() {
             return Ok(Typed { ty, val: None });
         }
-        let any_sym = trows.iter().flatten().any(|t| t.val.as_ref().is_some_and(Value::is_symbolic));
+        let any_sym = trows
+            .iter()
+            .flatten()
+            .any(|t| t.val.as_ref().is_some_and(Value::is_symbolic));
         if any_sym {
             let sym = if trows.len() == 1 && trows[0].len() == 1 {
-                Sym::Bracket(Box::new(to_sym(trows[0][0].val.as_ref().unwrap_or(&Value::scalar(f64::NAN)))))
+                Sym::Bracket(Box::new(to_sym(
+                    trows[0][0].val.as_ref().unwrap_or(&Value::scalar(f64::NAN)),
+                )))
             } else {
-                Sym::Call("block".into(), trows.iter().flatten().filter_map(|t| t.val.as_ref()).map(to_sym).collect())
+                Sym::Call(
+                    "block".into(),
+                    trows
+                        .iter()
+                        .flatten()
+                        .filter_map(|t| t.val.as_ref())
+                        .map(to_sym)
+                        .collect(),
+                )
             };
-            return Ok(Typed { ty, val: Some(Value::Sym(sym)) });
+            return Ok(Typed {
+                ty,
+                val: Some(Value::Sym(sym)),
+            });
         }
         let vrows: Vec<Vec<Value>> = trows
             .into_iter()
-            .map(|r| r.into_iter().map(|t| t.val.unwrap_or_else(|| Value::scalar(f64::NAN))).collect())
+            .map(|r| {
+                r.into_iter()
+                    .map(|t| t.val.unwrap_or_else(|| Value::scalar(f64::NAN)))
+                    .collect()
+            })
             .collect();
         let v = ops::brackets(&vrows).map_err(|m| Diagnostic::error(ErrorKind::Type, span, m))?;
         let val = Some(v);
-        Ok(Typed { ty: refine(ty, &val), val })
+        Ok(Typed {
+            ty: refine(ty, &val),
+            val,
+        })
     }
 
-    fn mech(&mut self, spec: &crate::syntax::ast::MechSpec, span: Span) -> Result<Typed, Diagnostic> {
+    fn mech(
+        &mut self,
+        spec: &crate::syntax::ast::MechSpec,
+        span: Span,
+    ) -> Result<Typed, Diagnostic> {
         use crate::mech::{MechPart, Mechanism};
         if let Some((word, s)) = spec.unknown.first() {
-            return Err(Diagnostic::error(ErrorKind::Syntax, *s, format!("unknown mechanism item '{word}'"))
-                .with_help("items: links N; joints …; legs K CHAIN; planar | spatial | spherical"));
+            return Err(Diagnostic::error(
+                ErrorKind::Syntax,
+                *s,
+                format!("unknown mechanism item '{word}'"),
+            )
+            .with_help("items: links N; joints …; legs K CHAIN; planar | spatial | spherical"));
         }
-        let joints: Vec<(i64, &str)> = spec.joints.iter().map(|j| (j.count, j.letters.as_str())).collect();
+        let joints: Vec<(i64, &str)> = spec
+            .joints
+            .iter()
+            .map(|j| (j.count, j.letters.as_str()))
+            .collect();
         let m = Mechanism::from_spec(
             spec.space.as_ref().map(|(s, _)| s.as_str()),
             spec.links.map(|(n, _)| n),
@@ -435,7 +603,20 @@ impl Interp<'_> {
             d
         })?;
         let val = self.running().then(|| Value::Mech(std::rc::Rc::new(m)));
-        Ok(Typed { ty: Ty::plain(Kind::Mechanism), val })
+        Ok(Typed {
+            ty: Ty::plain(Kind::Mechanism),
+            val,
+        })
+    }
+}
+
+/// The unit vector of an axis named `x`, `y` or `z`.
+fn unit_axis(name: &str) -> Option<[f64; 3]> {
+    match name {
+        "x" => Some([1.0, 0.0, 0.0]),
+        "y" => Some([0.0, 1.0, 0.0]),
+        "z" => Some([0.0, 0.0, 1.0]),
+        _ => None,
     }
 }
 
@@ -447,7 +628,10 @@ fn unreachable_type() -> Ty {
 fn literal_number(e: &Expr) -> Option<f64> {
     match &e.kind {
         ExprKind::Number(x) => Some(*x),
-        ExprKind::Unary { op: UnOp::Neg, operand } => literal_number(operand).map(|x| -x),
+        ExprKind::Unary {
+            op: UnOp::Neg,
+            operand,
+        } => literal_number(operand).map(|x| -x),
         _ => None,
     }
 }
@@ -480,7 +664,13 @@ fn bracket_type(rows: &[Vec<Typed>]) -> Ty {
         }
     }
     // Shape: sum of widths of the first row, sum of heights of the first column.
-    let width: Option<usize> = rows[0].iter().map(|t| t.ty.kind.shape().and_then(|s| s.1)).sum();
-    let height: Option<usize> = rows.iter().map(|r| r[0].ty.kind.shape().and_then(|s| s.0)).sum();
+    let width: Option<usize> = rows[0]
+        .iter()
+        .map(|t| t.ty.kind.shape().and_then(|s| s.1))
+        .sum();
+    let height: Option<usize> = rows
+        .iter()
+        .map(|r| r[0].ty.kind.shape().and_then(|s| s.0))
+        .sum();
     Ty::new(Kind::Matrix(height, width), frames)
 }

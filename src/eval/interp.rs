@@ -159,7 +159,9 @@ impl<'a> Interp<'a> {
                     );
                 }
                 let names = targets.iter().map(|t| t.name.clone()).collect();
-                let ty = Ty::plain(Kind::Tuple(bound.iter().map(|b| b.ty.kind.clone()).collect()));
+                let ty = Ty::plain(Kind::Tuple(
+                    bound.iter().map(|b| b.ty.kind.clone()).collect(),
+                ));
                 let val = bound
                     .iter()
                     .map(|b| b.val.clone())
@@ -169,7 +171,12 @@ impl<'a> Interp<'a> {
             }
             StmtKind::Given { names, ty } => {
                 let kind = given_kind(&ty.name).ok_or_else(|| {
-                    Diagnostic::error(ErrorKind::Type, ty.span, format!("unknown type '{}'", ty.name)).with_help(
+                    Diagnostic::error(
+                        ErrorKind::Type,
+                        ty.span,
+                        format!("unknown type '{}'", ty.name),
+                    )
+                    .with_help(
                         "given types: scalar vec3 vec6 SO3 SE3 SO2 SE2 so3 se3 twist screw wrench",
                     )
                 })?;
@@ -184,7 +191,13 @@ impl<'a> Interp<'a> {
                         },
                     );
                 }
-                let mut o = out(vec![], Typed { ty: Ty::plain(kind), val: None });
+                let mut o = out(
+                    vec![],
+                    Typed {
+                        ty: Ty::plain(kind),
+                        val: None,
+                    },
+                );
                 o.prints = false;
                 Ok(o)
             }
@@ -203,7 +216,13 @@ impl<'a> Interp<'a> {
                     body: body.clone(),
                 };
                 self.env.fns.insert(name.name.clone(), std::rc::Rc::new(f));
-                let mut o = out(vec![], Typed { ty: Ty::plain(Kind::Function), val: None });
+                let mut o = out(
+                    vec![],
+                    Typed {
+                        ty: Ty::plain(Kind::Function),
+                        val: None,
+                    },
+                );
                 o.prints = false;
                 Ok(o)
             }
@@ -226,7 +245,13 @@ impl<'a> Interp<'a> {
 
     /// Checks a binding's name against the value's frames (§3) and gives
     /// the value the kind its name implies (`V_b` a twist, `F_a` a wrench).
-    fn bind_checked(&mut self, name: &str, t: Typed, name_span: Span, value_span: Span) -> Result<Typed, Diagnostic> {
+    fn bind_checked(
+        &mut self,
+        name: &str,
+        t: Typed,
+        name_span: Span,
+        value_span: Span,
+    ) -> Result<Typed, Diagnostic> {
         let ty = match bind::bind(name, &t.ty) {
             Ok(ty) => ty,
             Err(e) => {
@@ -236,7 +261,10 @@ impl<'a> Interp<'a> {
             }
         };
         let val = t.val.map(|v| match v {
-            Value::Num { m, .. } if ty.kind != Kind::Unknown => Value::Num { kind: ty.kind.clone(), m },
+            Value::Num { m, .. } if ty.kind != Kind::Unknown => Value::Num {
+                kind: ty.kind.clone(),
+                m,
+            },
             other => other,
         });
         Ok(Typed { ty, val })
@@ -261,7 +289,10 @@ impl<'a> Interp<'a> {
             return Err(Diagnostic::error(
                 ErrorKind::Arity,
                 span,
-                format!("the value has {} parts but {n} names are given", kinds.len()),
+                format!(
+                    "the value has {} parts but {n} names are given",
+                    kinds.len()
+                ),
             ));
         }
         let vals: Vec<Option<Value>> = match &t.val {
@@ -275,7 +306,10 @@ impl<'a> Interp<'a> {
             .map(|(k, v)| {
                 let frames = part_frames(&t.ty.frames, &k);
                 let k = v.as_ref().map_or(k, Value::kind);
-                Typed { ty: Ty::new(k, frames), val: v }
+                Typed {
+                    ty: Ty::new(k, frames),
+                    val: v,
+                }
             })
             .collect())
     }

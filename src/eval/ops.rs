@@ -43,22 +43,35 @@ pub fn mul(l: &Value, r: &Value, kind: &Kind) -> Result<Value, String> {
     let (lk, lm) = num(l)?;
     let (rk, rm) = num(r)?;
     if lm.shape() == (1, 1) && *lk == Kind::Scalar {
-        return Ok(Value::Num { kind: kind.clone(), m: rm * lm[0] });
+        return Ok(Value::Num {
+            kind: kind.clone(),
+            m: rm * lm[0],
+        });
     }
     if rm.shape() == (1, 1) && *rk == Kind::Scalar {
-        return Ok(Value::Num { kind: kind.clone(), m: lm * rm[0] });
+        return Ok(Value::Num {
+            kind: kind.clone(),
+            m: lm * rm[0],
+        });
     }
     // A point transformed by a homogeneous transform: T p = R p + t.
     if lm.shape() == (4, 4) && rm.shape() == (3, 1) {
         let t = Mat4::from_iterator(lm.iter().copied());
         let p = t.fixed_view::<3, 3>(0, 0) * crate::lie::Vec3::from_iterator(rm.iter().copied())
             + t.fixed_view::<3, 1>(0, 3);
-        return Ok(Value::Num { kind: kind.clone(), m: dm(&p) });
+        return Ok(Value::Num {
+            kind: kind.clone(),
+            m: dm(&p),
+        });
     }
     if lm.shape() == (3, 3) && rm.shape() == (2, 1) && matches!(lk, Kind::SE2 | Kind::Se2) {
         let t = Mat3::from_iterator(lm.iter().copied());
-        let p = t.fixed_view::<2, 2>(0, 0) * nalgebra::Vector2::new(rm[0], rm[1]) + t.fixed_view::<2, 1>(0, 2);
-        return Ok(Value::Num { kind: kind.clone(), m: dm(&p) });
+        let p = t.fixed_view::<2, 2>(0, 0) * nalgebra::Vector2::new(rm[0], rm[1])
+            + t.fixed_view::<2, 1>(0, 2);
+        return Ok(Value::Num {
+            kind: kind.clone(),
+            m: dm(&p),
+        });
     }
     if lm.ncols() != rm.nrows() {
         return Err(format!(
@@ -76,7 +89,9 @@ pub fn mul(l: &Value, r: &Value, kind: &Kind) -> Result<Value, String> {
 /// Refuses results larger than [`MAX_ELEMENTS`].
 pub fn check_size(r: usize, c: usize) -> Result<(), String> {
     if r > MAX_DIM || c > MAX_DIM || r.saturating_mul(c) > MAX_ELEMENTS {
-        return Err(format!("a {r}×{c} result is too large (at most {MAX_ELEMENTS} entries)"));
+        return Err(format!(
+            "a {r}×{c} result is too large (at most {MAX_ELEMENTS} entries)"
+        ));
     }
     Ok(())
 }
@@ -100,7 +115,10 @@ pub fn add(l: &Value, r: &Value, subtract: bool, kind: &Kind) -> Result<Value, S
 /// `-x`.
 pub fn neg(v: &Value, kind: &Kind) -> Result<Value, String> {
     let (_, m) = num(v)?;
-    Ok(Value::Num { kind: kind.clone(), m: -m })
+    Ok(Value::Num {
+        kind: kind.clone(),
+        m: -m,
+    })
 }
 
 /// `l / r` with a scalar divisor.
@@ -110,7 +128,10 @@ pub fn div(l: &Value, r: &Value, kind: &Kind) -> Result<Value, String> {
     if d == 0.0 {
         return Err("division by zero".into());
     }
-    Ok(Value::Num { kind: kind.clone(), m: lm / d })
+    Ok(Value::Num {
+        kind: kind.clone(),
+        m: lm / d,
+    })
 }
 
 /// `b ^ e`: real powers of numbers, integer powers of square matrices
@@ -130,7 +151,11 @@ pub fn pow(b: &Value, e: f64, kind: &Kind) -> Result<Value, String> {
     if e.fract() != 0.0 || !e.is_finite() || e.abs() > 1e15 {
         return Err(format!("a matrix power needs a whole exponent, got {e}"));
     }
-    let mut base = if e < 0.0 { num_inverse(bk, bm)? } else { bm.clone() };
+    let mut base = if e < 0.0 {
+        num_inverse(bk, bm)?
+    } else {
+        bm.clone()
+    };
     let mut n = e.abs() as u64;
     let mut acc = DMatrix::identity(bm.nrows(), bm.ncols());
     while n > 0 {
@@ -172,9 +197,17 @@ fn num_inverse(k: &Kind, m: &DMatrix<f64>) -> Result<DMatrix<f64>, String> {
                     crate::output::number::fmt_num(det, 6)
                 ));
             }
-            m.clone().try_inverse().ok_or("the matrix is singular; it has no inverse")?
+            m.clone()
+                .try_inverse()
+                .ok_or("the matrix is singular; it has no inverse")?
         }
-        _ => return Err(format!("only square matrices have inverses, not {}×{}", m.nrows(), m.ncols())),
+        _ => {
+            return Err(format!(
+                "only square matrices have inverses, not {}×{}",
+                m.nrows(),
+                m.ncols()
+            ));
+        }
     })
 }
 
@@ -184,11 +217,16 @@ pub fn transpose(v: &Value) -> Value {
         Value::Num { kind, m } => {
             let kind = match kind {
                 Kind::SO3 | Kind::SO2 | Kind::Scalar => kind.clone(),
-                Kind::Adjoint { transposed } => Kind::Adjoint { transposed: !transposed },
+                Kind::Adjoint { transposed } => Kind::Adjoint {
+                    transposed: !transposed,
+                },
                 _ if m.nrows() == 1 => Kind::Vector(Some(m.ncols())),
                 _ => Kind::Matrix(Some(m.ncols()), Some(m.nrows())),
             };
-            Value::Num { kind, m: m.transpose() }
+            Value::Num {
+                kind,
+                m: m.transpose(),
+            }
         }
         other => other.clone(),
     }
@@ -202,16 +240,29 @@ pub fn member(v: &Value, name: &str) -> Result<Value, String> {
     let (k, m) = num(v)?;
     let v3 = |a: f64, b: f64, c: f64| Value::vector(Kind::Vector(Some(3)), &[a, b, c]);
     match (name, m.shape()) {
-        ("R", (4, 4)) => Ok(Value::Num { kind: Kind::SO3, m: m.view((0, 0), (3, 3)).into_owned() }),
-        ("R", (3, 3)) if *k == Kind::SE2 => Ok(Value::Num { kind: Kind::SO2, m: m.view((0, 0), (2, 2)).into_owned() }),
+        ("R", (4, 4)) => Ok(Value::Num {
+            kind: Kind::SO3,
+            m: m.view((0, 0), (3, 3)).into_owned(),
+        }),
+        ("R", (3, 3)) if *k == Kind::SE2 => Ok(Value::Num {
+            kind: Kind::SO2,
+            m: m.view((0, 0), (2, 2)).into_owned(),
+        }),
         ("p", (4, 4)) => Ok(v3(m[(0, 3)], m[(1, 3)], m[(2, 3)])),
-        ("p", (3, 3)) if *k == Kind::SE2 => Ok(Value::vector(Kind::Vector(Some(2)), &[m[(0, 2)], m[(1, 2)]])),
+        ("p", (3, 3)) if *k == Kind::SE2 => Ok(Value::vector(
+            Kind::Vector(Some(2)),
+            &[m[(0, 2)], m[(1, 2)]],
+        )),
         ("w" | "m", (6, 1)) => Ok(v3(m[0], m[1], m[2])),
         ("v" | "f", (6, 1)) => Ok(v3(m[3], m[4], m[5])),
         ("w" | "v", (4, 4)) => {
             let t = se3::vee(&Mat4::from_iterator(m.iter().copied()));
             let s: Vec6 = t;
-            Ok(if name == "w" { v3(s[0], s[1], s[2]) } else { v3(s[3], s[4], s[5]) })
+            Ok(if name == "w" {
+                v3(s[0], s[1], s[2])
+            } else {
+                v3(s[3], s[4], s[5])
+            })
         }
         _ => Err(format!("a {k} has no member .{name}")),
     }
@@ -226,7 +277,9 @@ pub enum Sel {
 
 fn position(x: f64, n: usize) -> Result<usize, String> {
     if x.fract() != 0.0 || x < 1.0 || x > n as f64 {
-        return Err(format!("index {x} is out of range 1..{n} (indices start at 1, as in the book)"));
+        return Err(format!(
+            "index {x} is out of range 1..{n} (indices start at 1, as in the book)"
+        ));
     }
     Ok(x as usize - 1)
 }
@@ -244,14 +297,22 @@ pub fn index(v: &Value, sels: &[Sel]) -> Result<Value, String> {
         [Sel::At(i)] if m.ncols() == 1 => Ok(Value::scalar(m[position(*i, m.nrows())?])),
         [Sel::At(i)] if m.nrows() == 1 => Ok(Value::scalar(m[position(*i, m.ncols())?])),
         [Sel::At(_)] => Err("a matrix takes two indices: M[i, j], M[i, :] or M[:, j]".into()),
-        [Sel::At(i), Sel::At(j)] => Ok(Value::scalar(m[(position(*i, m.nrows())?, position(*j, m.ncols())?)])),
+        [Sel::At(i), Sel::At(j)] => Ok(Value::scalar(
+            m[(position(*i, m.nrows())?, position(*j, m.ncols())?)],
+        )),
         [Sel::At(i), Sel::All] => {
             let row = m.row(position(*i, m.nrows())?).into_owned();
-            Ok(Value::Num { kind: Kind::Matrix(Some(1), Some(m.ncols())), m: DMatrix::from_row_slice(1, m.ncols(), row.as_slice()) })
+            Ok(Value::Num {
+                kind: Kind::Matrix(Some(1), Some(m.ncols())),
+                m: DMatrix::from_row_slice(1, m.ncols(), row.as_slice()),
+            })
         }
         [Sel::All, Sel::At(j)] => {
             let col = m.column(position(*j, m.ncols())?).into_owned();
-            Ok(Value::Num { kind: Kind::Vector(Some(m.nrows())), m: DMatrix::from_column_slice(m.nrows(), 1, col.as_slice()) })
+            Ok(Value::Num {
+                kind: Kind::Vector(Some(m.nrows())),
+                m: DMatrix::from_column_slice(m.nrows(), 1, col.as_slice()),
+            })
         }
         [Sel::All, Sel::All] | [Sel::All] => Ok(v.clone()),
         _ => Err("at most two indices".into()),
@@ -265,12 +326,24 @@ pub fn brackets(rows: &[Vec<Value>]) -> Result<Value, String> {
     if rows.len() == 1 && rows[0].len() == 1 {
         let (k, m) = num(&rows[0][0])?;
         return Ok(match m.shape() {
-            (3, 1) => Value::num(Kind::So3, &crate::lie::so3::hat(&crate::lie::Vec3::from_iterator(m.iter().copied()))),
-            (6, 1) => Value::num(Kind::Se3, &se3::hat(&Vec6::from_iterator(m.iter().copied()))),
-            _ => Value::Num { kind: k.clone(), m: m.clone() },
+            (3, 1) => Value::num(
+                Kind::So3,
+                &crate::lie::so3::hat(&crate::lie::Vec3::from_iterator(m.iter().copied())),
+            ),
+            (6, 1) => Value::num(
+                Kind::Se3,
+                &se3::hat(&Vec6::from_iterator(m.iter().copied())),
+            ),
+            _ => Value::Num {
+                kind: k.clone(),
+                m: m.clone(),
+            },
         });
     }
-    let all_scalars = rows.iter().flatten().all(|v| v.as_scalar().is_some() && matches!(v.kind(), Kind::Scalar));
+    let all_scalars = rows
+        .iter()
+        .flatten()
+        .all(|v| v.as_scalar().is_some() && matches!(v.kind(), Kind::Scalar));
     if all_scalars && rows.len() == 1 {
         let xs: Vec<f64> = rows[0].iter().filter_map(Value::as_scalar).collect();
         return Ok(Value::vector(Kind::Vector(Some(xs.len())), &xs));
@@ -317,7 +390,10 @@ pub fn brackets(rows: &[Vec<Value>]) -> Result<Value, String> {
         m.view_mut((r0, 0), (b.nrows(), w)).copy_from(b);
         r0 += b.nrows();
     }
-    Ok(Value::Num { kind: convert::classify(&m), m })
+    Ok(Value::Num {
+        kind: convert::classify(&m),
+        m,
+    })
 }
 
 /// Vectors of the same flavour: a twist stays a twist after `+`.

@@ -66,7 +66,7 @@ impl Sym {
     }
 
     /// `a b`, flattened and simplified.
-    pub fn mul(a: Sym, b: Sym) -> Sym {
+    pub fn times(a: Sym, b: Sym) -> Sym {
         Sym::product(vec![a, b])
     }
 
@@ -103,7 +103,10 @@ impl Sym {
     }
 
     fn needs_parens_in_product(&self) -> bool {
-        matches!(self, Sym::Add(..) | Sym::Sub(..) | Sym::Neg(_) | Sym::Div(..))
+        matches!(
+            self,
+            Sym::Add(..) | Sym::Sub(..) | Sym::Neg(_) | Sym::Div(..)
+        )
     }
 }
 
@@ -184,7 +187,7 @@ mod tests {
 
     #[test]
     fn inverse_pairs_cancel() {
-        let e = Sym::mul(n("T_ab").inverse(), n("T_ab"));
+        let e = Sym::times(n("T_ab").inverse(), n("T_ab"));
         assert_eq!(e.to_string(), "I");
         let chain = Sym::product(vec![n("T_ab"), n("T_bc"), n("T_cd")]);
         assert_eq!(chain.to_string(), "T_ab T_bc T_cd");

@@ -22,7 +22,10 @@ pub struct UserFn {
 /// what the book calls it (a scalar is 1×1, a vector n×1).
 #[derive(Debug, Clone)]
 pub enum Value {
-    Num { kind: Kind, m: DMatrix<f64> },
+    Num {
+        kind: Kind,
+        m: DMatrix<f64>,
+    },
     Bool(bool),
     Tuple(Vec<Value>),
     Mech(Rc<Mechanism>),
@@ -39,7 +42,10 @@ impl Value {
         }
     }
     /// A value of `kind` from any nalgebra matrix.
-    pub fn num<R: nalgebra::Dim, C: nalgebra::Dim, S>(kind: Kind, m: &nalgebra::Matrix<f64, R, C, S>) -> Value
+    pub fn num<R: nalgebra::Dim, C: nalgebra::Dim, S>(
+        kind: Kind,
+        m: &nalgebra::Matrix<f64, R, C, S>,
+    ) -> Value
     where
         S: nalgebra::RawStorage<f64, R, C>,
     {

@@ -31,7 +31,11 @@ pub fn value(v: &Value) -> J {
     match v {
         Value::Num { m, .. } if m.len() == 1 => number(m[0]),
         Value::Num { m, .. } if m.ncols() == 1 => J::Array(m.iter().map(|x| number(*x)).collect()),
-        Value::Num { m, .. } => J::Array(m.row_iter().map(|r| J::Array(r.iter().map(|x| number(*x)).collect())).collect()),
+        Value::Num { m, .. } => J::Array(
+            m.row_iter()
+                .map(|r| J::Array(r.iter().map(|x| number(*x)).collect()))
+                .collect(),
+        ),
         Value::Bool(b) => json!(b),
         Value::Tuple(vs) => J::Array(vs.iter().map(value).collect()),
         Value::Mech(m) => m.to_json(),

@@ -12,7 +12,11 @@ pub fn fmt_num(x: f64, digits: usize) -> String {
     }
     let r = x.round();
     if (x - r).abs() <= 1e-12 * r.abs().max(1.0) && r.abs() < 1e15 {
-        return if r == 0.0 { "0".into() } else { format!("{r:.0}") };
+        return if r == 0.0 {
+            "0".into()
+        } else {
+            format!("{r:.0}")
+        };
     }
     let tiny = 0.5 * 10f64.powi(-(digits.min(300) as i32));
     if x.abs() >= 1e15 || x.abs() < tiny {
@@ -54,8 +58,8 @@ mod tests {
         assert_eq!(fmt_num(-0.0, 4), "0");
         assert_eq!(fmt_num(-1e-17, 4), "0");
         assert_eq!(fmt_num(2.0000000000001, 4), "2");
-        assert_eq!(fmt_num(1.5707963267948966, 4), "1.5708");
-        assert_eq!(fmt_num(1.5707963267948966, 2), "1.57");
+        assert_eq!(fmt_num(std::f64::consts::FRAC_PI_2, 4), "1.5708");
+        assert_eq!(fmt_num(std::f64::consts::FRAC_PI_2, 2), "1.57");
         assert_eq!(fmt_num(-0.25, 4), "-0.25");
         assert_eq!(fmt_num(3.2e-7, 4), "3.2e-7");
         assert_eq!(fmt_num(f64::INFINITY, 4), "inf");

@@ -10,7 +10,9 @@ use crate::eval::value::Value;
 /// A value on one line: `2`, `(1, 2, 3)`, `[1, 2; 3, 4]`.
 pub fn inline(v: &Value, digits: usize) -> String {
     match v {
-        Value::Num { m, .. } if m.len() == 1 && m.ncols() == 1 && m.nrows() == 1 => fmt_num(m[0], digits),
+        Value::Num { m, .. } if m.len() == 1 && m.ncols() == 1 && m.nrows() == 1 => {
+            fmt_num(m[0], digits)
+        }
         Value::Num { m, .. } if m.ncols() == 1 => {
             let xs: Vec<String> = m.iter().map(|x| fmt_num(*x, digits)).collect();
             format!("({})", xs.join(", "))
@@ -18,7 +20,12 @@ pub fn inline(v: &Value, digits: usize) -> String {
         Value::Num { m, .. } => {
             let rows: Vec<String> = m
                 .row_iter()
-                .map(|r| r.iter().map(|x| fmt_num(*x, digits)).collect::<Vec<_>>().join(", "))
+                .map(|r| {
+                    r.iter()
+                        .map(|x| fmt_num(*x, digits))
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                })
                 .collect();
             format!("[{}]", rows.join("; "))
         }
@@ -36,7 +43,10 @@ pub fn inline(v: &Value, digits: usize) -> String {
 /// A matrix in aligned columns, decimal points lined up, one row per line;
 /// `indent` is the column where the `[` stands.
 pub fn matrix_block(m: &nalgebra::DMatrix<f64>, digits: usize, indent: usize) -> String {
-    let cells: Vec<Vec<String>> = m.row_iter().map(|r| r.iter().map(|x| fmt_num(*x, digits)).collect()).collect();
+    let cells: Vec<Vec<String>> = m
+        .row_iter()
+        .map(|r| r.iter().map(|x| fmt_num(*x, digits)).collect())
+        .collect();
     let ncols = m.ncols();
     let split = |s: &str| -> (String, String) {
         match s.find(['.', 'e']) {
@@ -79,7 +89,11 @@ pub fn matrix_block(m: &nalgebra::DMatrix<f64>, digits: usize, indent: usize) ->
 /// The type label: `SE(3) {a}←{c}`; empty for plain numbers and bools.
 pub fn type_label(ty: &Ty, val: Option<&Value>) -> String {
     let kind = val.map_or_else(|| ty.kind.clone(), Value::kind);
-    let kind = if matches!(val, Some(Value::Sym(_))) { ty.kind.clone() } else { kind };
+    let kind = if matches!(val, Some(Value::Sym(_))) {
+        ty.kind.clone()
+    } else {
+        kind
+    };
     match kind {
         Kind::Scalar | Kind::Bool if ty.frames.is_none() => String::new(),
         Kind::Mechanism | Kind::Function => String::new(),
@@ -94,7 +108,11 @@ pub fn type_label(ty: &Ty, val: Option<&Value>) -> String {
 /// One value with its label, after `prefix` (e.g. `T_ac = `).
 pub fn show_value(prefix: &str, ty: &Ty, v: &Value, digits: usize) -> String {
     let label = type_label(ty, Some(v));
-    let tail = if label.is_empty() { String::new() } else { format!("  : {label}") };
+    let tail = if label.is_empty() {
+        String::new()
+    } else {
+        format!("  : {label}")
+    };
     match v {
         Value::Num { m, .. } if m.ncols() > 1 => {
             let indent = prefix.chars().count();
@@ -102,7 +120,11 @@ pub fn show_value(prefix: &str, ty: &Ty, v: &Value, digits: usize) -> String {
         }
         Value::Mech(mech) => {
             let body = mech.to_string();
-            if prefix.is_empty() { body } else { format!("{}\n{body}", prefix.trim_end()) }
+            if prefix.is_empty() {
+                body
+            } else {
+                format!("{}\n{body}", prefix.trim_end())
+            }
         }
         _ => format!("{prefix}{}{tail}", inline(v, digits)),
     }
@@ -122,12 +144,19 @@ pub fn show_outcome(o: &Outcome, digits: usize) -> String {
         // check mode: the type only
         let names = o.names.join(", ");
         let label = o.ty.to_string();
-        out.push_str(&if names.is_empty() { label } else { format!("{names} : {label}") });
+        out.push_str(&if names.is_empty() {
+            label
+        } else {
+            format!("{names} : {label}")
+        });
         return out;
     };
     match (o.names.len(), v) {
         (0, Value::Tuple(items)) => {
-            let parts: Vec<String> = items.iter().map(|x| show_value("", &Ty::plain(x.kind()), x, digits)).collect();
+            let parts: Vec<String> = items
+                .iter()
+                .map(|x| show_value("", &Ty::plain(x.kind()), x, digits))
+                .collect();
             out.push_str(&parts.join("\n"));
         }
         (0, _) => out.push_str(&show_value("", &o.ty, v, digits)),
