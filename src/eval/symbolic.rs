@@ -95,10 +95,19 @@ impl Sym {
         }
     }
 
+    /// True when `self other` is the identity: `X inv(X)`, `Ad(X) Ad(inv(X))`
+    /// ([Ad_T]⁻¹ = [Ad_T⁻¹], §3.3.2), and their transposes.
     fn cancels(&self, other: &Sym) -> bool {
-        match (self, other) {
-            (Sym::Inv(a), b) | (b, Sym::Inv(a)) => **a == *b,
+        let inverse_pair = |a: &Sym, b: &Sym| match (a, b) {
+            (Sym::Inv(x), y) | (y, Sym::Inv(x)) => **x == *y,
             _ => false,
+        };
+        match (self, other) {
+            (Sym::Call(f, a), Sym::Call(g, b)) if is_adjoint(f) && is_adjoint(g) && a.len() == 1 && b.len() == 1 => {
+                inverse_pair(&a[0], &b[0])
+            }
+            (Sym::Transpose(a), Sym::Transpose(b)) => a.cancels(b),
+            (a, b) => inverse_pair(a, b),
         }
     }
 
@@ -108,6 +117,10 @@ impl Sym {
             Sym::Add(..) | Sym::Sub(..) | Sym::Neg(_) | Sym::Div(..)
         )
     }
+}
+
+fn is_adjoint(name: &str) -> bool {
+    matches!(name, "Ad" | "Adjoint" | "adjoint")
 }
 
 impl fmt::Display for Sym {
@@ -191,6 +204,16 @@ mod tests {
         assert_eq!(e.to_string(), "I");
         let chain = Sym::product(vec![n("T_ab"), n("T_bc"), n("T_cd")]);
         assert_eq!(chain.to_string(), "T_ab T_bc T_cd");
+    }
+
+    #[test]
+    fn adjoints_of_inverse_pairs_cancel() {
+        let ad = |x: Sym| Sym::Call("Ad".into(), vec![x]);
+        let e = Sym::product(vec![ad(n("T_sb").inverse()), ad(n("T_sb")), n("V_b")]);
+        assert_eq!(e.to_string(), "V_b");
+        let t = |x: Sym| Sym::Transpose(Box::new(x));
+        let e = Sym::product(vec![t(ad(n("T_ab").inverse())), t(ad(n("T_ab"))), n("F_a")]);
+        assert_eq!(e.to_string(), "F_a");
     }
 
     #[test]
