@@ -91,7 +91,11 @@ fn short_frames(sub: &str) -> Option<Vec<String>> {
             return None;
         }
     }
-    if frames.is_empty() { None } else { Some(frames) }
+    if frames.is_empty() {
+        None
+    } else {
+        Some(frames)
+    }
 }
 
 /// A braced frame name: a letter, then letters, digits, `_` or primes.

@@ -17,8 +17,7 @@ use pest_derive::Parser;
 
 use super::MAX_DEPTH;
 use super::ast::{
-    BinOp, Expr, ExprKind, Ident, IndexArg, JointGroupSyntax, MechSpec, Span, Stmt, StmtKind,
-    UnOp,
+    BinOp, Expr, ExprKind, Ident, IndexArg, JointGroupSyntax, MechSpec, Span, Stmt, StmtKind, UnOp,
 };
 use super::rules;
 use crate::diagnostics::{Diagnostic, ErrorKind};
@@ -228,7 +227,8 @@ impl Cx<'_> {
         for (k, child) in children.iter().enumerate() {
             match child.as_rule() {
                 Rule::juxt => {
-                    let (Some(left), Some(right)) = (children.get(k.wrapping_sub(1)), children.get(k + 1))
+                    let (Some(left), Some(right)) =
+                        (children.get(k.wrapping_sub(1)), children.get(k + 1))
                     else {
                         return Err(self.unexpected(child));
                     };
@@ -400,10 +400,11 @@ impl Cx<'_> {
         );
         let indexable = matches!(last, Some(Rule::ident | Rule::call | Rule::index));
         let err = if numeric_left {
-            err.with_help(
-                "separate elements with `,` ([1, 2, 3]) or multiply with `*`".to_string(),
-            )
-        } else if indexable && first == Some(Rule::brackets) && left.as_span().end() == right.as_span().start() {
+            err.with_help("separate elements with `,` ([1, 2, 3]) or multiply with `*`".to_string())
+        } else if indexable
+            && first == Some(Rule::brackets)
+            && left.as_span().end() == right.as_span().start()
+        {
             // `M[1; 2]`, `M[1,]`: brackets right after a name that are not a
             // valid index.
             Diagnostic::error(
@@ -425,9 +426,7 @@ impl Cx<'_> {
                 left.as_str(),
                 args.join(", ")
             ))
-        } else if last == Some(Rule::ident)
-            && matches!(first, Some(Rule::ident | Rule::call))
-        {
+        } else if last == Some(Rule::ident) && matches!(first, Some(Rule::ident | Rule::call)) {
             err.with_help(format!(
                 "put `*` between the two names: {left_text} * {right_text}"
             ))
@@ -609,7 +608,8 @@ impl Cx<'_> {
                     joints_at = Some(span);
                     for j in item.into_inner().filter(|p| p.as_rule() == Rule::joint) {
                         let text = j.as_str();
-                        let digits = text.len() - text.trim_start_matches(|c: char| c.is_ascii_digit()).len();
+                        let digits = text.len()
+                            - text.trim_start_matches(|c: char| c.is_ascii_digit()).len();
                         let count = if digits == 0 {
                             1
                         } else {
@@ -662,4 +662,3 @@ fn short(text: &str) -> String {
         format!("{head}…")
     }
 }
-

@@ -130,23 +130,10 @@ pub(crate) fn pest_error(err: pest::error::Error<Rule>, cx: &Cx<'_>) -> Diagnost
             names.clear();
             pos = attempts.max_position;
             for stack in attempts.call_stacks() {
-                if let Some(rule) = stack.deepest.get_rule() {
-                    if !matches!(
-                        rule,
-                        Rule::statement
-                            | Rule::given_stmt
-                            | Rule::derive_stmt
-                            | Rule::fn_def
-                            | Rule::destructure
-                            | Rule::assign
-                            | Rule::mech
-                            | Rule::paren
-                            | Rule::brackets
-                            | Rule::call_args
-                            | Rule::index
-                    ) {
-                        names.push(rule_name(*rule));
-                    }
+                if let Some(rule) = stack.deepest.get_rule()
+                    && !is_container(*rule)
+                {
+                    names.push(rule_name(*rule));
                 }
             }
         }
@@ -198,6 +185,25 @@ pub(crate) fn pest_error(err: pest::error::Error<Rule>, cx: &Cx<'_>) -> Diagnost
         Some(h) => diag.with_help(h),
         None => diag,
     }
+}
+
+/// Statements and bracketed groups: when pest stopped inside one, what it
+/// wanted is its next token, not the rule itself.
+fn is_container(rule: Rule) -> bool {
+    matches!(
+        rule,
+        Rule::statement
+            | Rule::given_stmt
+            | Rule::derive_stmt
+            | Rule::fn_def
+            | Rule::destructure
+            | Rule::assign
+            | Rule::mech
+            | Rule::paren
+            | Rule::brackets
+            | Rule::call_args
+            | Rule::index
+    )
 }
 
 /// The character at `pos` of the statement, or its last character when

@@ -140,10 +140,7 @@ pub(crate) fn split(src: &str) -> Split {
                                     Span::new(i, i + 1),
                                     format!("mismatched '{}'", b as char),
                                 )
-                                .with_primary_label(format!(
-                                    "expected '{}'",
-                                    closer_of(o) as char
-                                ))
+                                .with_primary_label(format!("expected '{}'", closer_of(o) as char))
                                 .with_label(
                                     Span::new(at, at + 1),
                                     format!("'{}' opened here", opener_name(o)),
@@ -290,28 +287,30 @@ mod tests {
 
     #[test]
     fn splits_on_newlines_and_semicolons() {
-        assert_eq!(texts("a = 1; b = 2\n\n c = 3 # hi\n"), [
-            "a = 1", "b = 2", "c = 3"
-        ]);
+        assert_eq!(
+            texts("a = 1; b = 2\n\n c = 3 # hi\n"),
+            ["a = 1", "b = 2", "c = 3"]
+        );
     }
 
     #[test]
     fn brackets_keep_rows_and_parens_continue() {
-        assert_eq!(texts("M = [1, 2\n 3, 4]\nf(1,\n 2)"), [
-            "M = [1, 2\n 3, 4]",
-            "f(1,  2)"
-        ]);
-        assert_eq!(texts("mech < links 4; joints 4R; planar >; x"), [
-            "mech < links 4; joints 4R; planar >",
-            "x"
-        ]);
+        assert_eq!(
+            texts("M = [1, 2\n 3, 4]\nf(1,\n 2)"),
+            ["M = [1, 2\n 3, 4]", "f(1,  2)"]
+        );
+        assert_eq!(
+            texts("mech < links 4; joints 4R; planar >; x"),
+            ["mech < links 4; joints 4R; planar >", "x"]
+        );
     }
 
     #[test]
     fn comments_are_blanked() {
-        assert_eq!(texts("[1, 2 # first (row\n 3, 4]"), [
-            "[1, 2             \n 3, 4]"
-        ]);
+        assert_eq!(
+            texts("[1, 2 # first (row\n 3, 4]"),
+            ["[1, 2             \n 3, 4]"]
+        );
     }
 
     #[test]
