@@ -667,6 +667,8 @@ fn friendly_errors() {
     assert_eq!(e.labels[0].span, Span::new(1, 2));
 }
 
+/// A debugging aid: `CHASLES_SRC='a b' cargo test --test parse debug_print
+/// -- --nocapture` prints how each statement parses. Does nothing otherwise.
 #[test]
 fn debug_print() {
     if let Ok(src) = std::env::var("CHASLES_SRC") {
@@ -753,6 +755,15 @@ fn nesting_up_to_the_limit_parses() {
         one(&vec!["1"; n].join("+"));
         one(&vec!["2"; n].join("^"));
         one(&format!("{}x", "-".repeat(n - 1)));
+        // Brackets and operator chains together, up to the limit.
+        let levels = MAX_DEPTH / 5;
+        let chain = format!("{}x{}", "2^2^2^2^(".repeat(levels), ")".repeat(levels));
+        one(&chain);
+        too_deep(format!(
+            "{}x{}",
+            "2^2^2^2^2^(".repeat(levels),
+            ")".repeat(levels)
+        ));
         // A deep mix: every level of brackets holding an operator.
         let mut s = String::from("x");
         for _ in 0..(n / 2 - 1) {

@@ -168,6 +168,15 @@ pub(crate) fn pest_error(err: pest::error::Error<Rule>, cx: &Cx<'_>) -> Diagnost
     if found_char.is_none() {
         names.retain(|n| n != END);
     }
+    // Right after a word, a name cannot start (it would continue the word):
+    // pest's attempt there comes from a keyword's lookahead.
+    let after_word = cx.text[..pos]
+        .chars()
+        .next_back()
+        .is_some_and(|c| c.is_alphanumeric() || c == '_');
+    if after_word && names.len() > 1 {
+        names.retain(|n| n != "a name");
+    }
 
     let found = match found_char {
         None => "end of input".to_string(),
@@ -235,7 +244,7 @@ fn help(text: &str, pos: usize, found: Option<char>, expected: &[String]) -> Opt
     let wants = |s: &str| expected.iter().any(|e| e == s);
     match found? {
         '*' if before.ends_with('*') => Some("use ^ for powers: x^2".into()),
-        '=' if text.get(pos..).is_some_and(|s| s.starts_with("==")) => {
+        '=' if text.get(pos..).is_some_and(|s| s.starts_with("==")) || before.ends_with('=') => {
             Some("`==` is not supported; to bind a name write `name = expr`".into())
         }
         '=' if before.ends_with("given") => {
@@ -247,6 +256,9 @@ fn help(text: &str, pos: usize, found: Option<char>, expected: &[String]) -> Opt
         ),
         ',' if wants(END) => {
             Some("to write a vector, put it in parentheses or brackets: (1, 2, 3)".into())
+        }
+        ',' if before.rfind("_{") > before.rfind('}') => {
+            Some("a braced subscript names one or two frames: T_{world,cam}".into())
         }
         '\'' => Some("`'` is part of a name (T_sb'); to transpose write x.T".into()),
         '<' | '>' if wants(OPERATOR) || wants(END) => Some(
