@@ -18,6 +18,7 @@
 
 pub mod ast;
 pub mod ident;
+mod mech;
 mod parser;
 mod rules;
 mod split;
