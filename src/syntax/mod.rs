@@ -1,6 +1,6 @@
 //! Parsing: source text → AST with spans.
 //!
-//! The pipeline: [`split`] cuts the source into statements (newline or `;`
+//! The pipeline: `split` cuts the source into statements (newline or `;`
 //! outside brackets; comments blanked; bracket errors and nesting depth
 //! checked), then each statement is parsed with the pest grammar
 //! `grammar/chasles.pest` and turned into an [`ast::Stmt`] by `parser`,
