@@ -122,6 +122,553 @@ fn err(src: &str) -> Diagnostic {
     }
 }
 
+// ---------------------------------------------------------------------------
+// Precedence
+// ---------------------------------------------------------------------------
+
+#[test]
+fn precedence() {
+    let table = [
+        ("-2^2", "(neg (^ 2 2))"),
+        ("2^3^2", "(^ 2 (^ 3 2))"),
+        ("T^-1", "(^ T (neg 1))"),
+        ("2^-1", "(^ 2 (neg 1))"),
+        ("2^-1 * 3", "(* (^ 2 (neg 1)) 3)"),
+        ("1-2-3", "(- (- 1 2) 3)"),
+        ("1 - 2 * 3", "(- 1 (* 2 3))"),
+        ("8 / 2 / 2", "(/ (/ 8 2) 2)"),
+        ("2 pi / 3", "(/ (j* 2 π) 3)"),
+        ("[S] theta * 2", "(* (j* [S] theta) 2)"),
+        ("a / 2 pi", "(j* (/ a 2) π)"),
+        ("-x.T", "(neg (. x T))"),
+        ("-x^2", "(neg (^ x 2))"),
+        ("+x", "(pos x)"),
+        ("--x", "(neg (neg x))"),
+        ("2 * -x", "(* 2 (neg x))"),
+        ("x[1]^2", "(^ (idx x 1) 2)"),
+        ("2 * 30 deg", "(* 2 (deg 30))"),
+        ("-30 deg", "(neg (deg 30))"),
+        ("T_ab * T_bc * T_cd", "(* (* T_ab T_bc) T_cd)"),
+        ("inv(T_ab) * T_ab", "(* inv(T_ab) T_ab)"),
+        ("(T_ab * T_bc).T", "(. (* T_ab T_bc) T)"),
+        ("Ad(T_ab).T * F_a", "(* (. Ad(T_ab) T) F_a)"),
+    ];
+    for (src, want) in table {
+        assert_eq!(p(src), want, "{src}");
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Juxtaposition
+// ---------------------------------------------------------------------------
+
+#[test]
+fn juxtaposition_after_numbers_and_brackets() {
+    let table = [
+        ("2 pi", "(j* 2 π)"),
+        ("2pi", "(j* 2 π)"),
+        ("2 x", "(j* 2 x)"),
+        ("[S] theta", "(j* [S] theta)"),
+        ("[w] (pi/2)", "(j* [w] (/ π 2))"),
+        ("[S_1] theta_1", "(j* [S_1] theta_1)"),
+        ("exp([S] theta)", "exp((j* [S] theta))"),
+        ("0.5 [w]", "(j* 0.5 [w])"),
+        ("2[w]", "(j* 2 [w])"),
+        ("[S] [w]", "(j* [S] [w])"),
+        ("(a + b) c", "(j* (+ a b) c)"),
+        ("2 pi r^2", "(j* (j* 2 π) (^ r 2))"),
+        ("30 deg x", "(j* (deg 30) x)"),
+        ("2 sin(x)", "(j* 2 sin(x))"),
+    ];
+    for (src, want) in table {
+        assert_eq!(p(src), want, "{src}");
+    }
+}
+
+#[test]
+fn juxtaposition_after_names_is_an_error() {
+    // A call ends in `)` but is not a parenthesized group: write `*`.
+    for src in [
+        "a b",
+        "T_sb T_bc",
+        "x 2",
+        "f(x) y",
+        "x (1, 2) y",
+        "R [1, 2]",
+        "x[1] y",
+        "exp([S_1] t_1) exp([S_2] t_2)",
+        "x.T y",
+    ] {
+        let e = err(src);
+        assert!(
+            e.message.starts_with("missing operator between"),
+            "{src}: {}",
+            e.message
+        );
+    }
+    // Two numbers side by side: a MATLAB-style row, not a product.
+    let e = err("[1 0 0]");
+    assert_eq!(e.message, "missing operator between `1` and `0`");
+}
+
+#[test]
+fn index_needs_no_space() {
+    assert_eq!(p("T_sb[1, 2]"), "(idx T_sb 1 2)");
+    assert_eq!(p("M[i, :]"), "(idx M i :)");
+    assert_eq!(p("M[:, j]"), "(idx M : j)");
+    assert_eq!(p("(1, 2, 3)[2]"), "(idx (1, 2, 3) 2)");
+    assert_eq!(p("[1, 2][1]"), "(idx [1, 2] 1)");
+    assert_eq!(p("f(x)[1]"), "(idx f(x) 1)");
+    assert_eq!(p("M[1][2]"), "(idx (idx M 1) 2)");
+    assert_eq!(p("x[i + 1]"), "(idx x (+ i 1))");
+}
+
+// ---------------------------------------------------------------------------
+// Atoms
+// ---------------------------------------------------------------------------
+
+#[test]
+fn numbers_and_constants() {
+    let table = [
+        ("2", "2"),
+        ("0.866", "0.866"),
+        ("1e-3", "0.001"),
+        ("2.5E+2", "250"),
+        (".5", "0.5"),
+        ("pi", "π"),
+        ("π", "π"),
+        ("true", "true"),
+        ("false", "false"),
+        ("30 deg", "(deg 30)"),
+        ("30°", "(deg 30)"),
+        ("30deg", "(deg 30)"),
+        ("x deg", "(deg x)"),
+        ("Rotz(30 deg)", "Rotz((deg 30))"),
+    ];
+    for (src, want) in table {
+        assert_eq!(p(src), want, "{src}");
+    }
+}
+
+#[test]
+fn names() {
+    for name in [
+        "T_sb",
+        "T_sb'",
+        "theta_1",
+        "x_max",
+        "θ",
+        "ω_s",
+        "T_{world,cam}",
+        "p_{cam}",
+        "R_sa'",
+        "ans",
+    ] {
+        assert_eq!(p(name), name);
+    }
+    // Reserved words are not names.
+    for src in ["deg = 1", "pi = 3", "given = 3", "mech = 1"] {
+        err(src);
+    }
+}
+
+#[test]
+fn vectors_matrices_and_tuples() {
+    let table = [
+        ("(1, 2, 3)", "(1, 2, 3)"),
+        ("(x)", "x"),
+        ("((x))", "x"),
+        ("(1, 2, 3,)", "(1, 2, 3)"),
+        ("[1, 2, 3]", "[1, 2, 3]"),
+        ("[w]", "[w]"),
+        ("[]", "[]"),
+        ("[1, 0; 0, 1]", "[1, 0; 0, 1]"),
+        ("[1, 0;\n 0, 1]", "[1, 0; 0, 1]"),
+        ("[1, 0\n 0, 1]", "[1, 0; 0, 1]"),
+        ("[\n  1, 0\n  0, 1\n]", "[1, 0; 0, 1]"),
+        ("[1, 0;\n\n 0, 1;]", "[1, 0; 0, 1]"),
+        ("[1, 2,\n 3, 4,\n]", "[1, 2; 3, 4]"),
+        ("[R, p; 0, 0, 0, 1]", "[R, p; 0, 0, 0, 1]"),
+        ("[1, 0 # first row\n 0, 1] # done", "[1, 0; 0, 1]"),
+        ("(1,\n 2,\n 3)", "(1, 2, 3)"),
+        ("f()", "f()"),
+        ("f(a, b)", "f(a, b)"),
+        ("sin (x)", "sin(x)"),
+        ("f(\n  a,\n  b\n)", "f(a, b)"),
+    ];
+    for (src, want) in table {
+        assert_eq!(p(src), want, "{src:?}");
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Statements
+// ---------------------------------------------------------------------------
+
+#[test]
+fn statement_forms() {
+    let table = [
+        ("x = 1", "x = 1"),
+        ("T_ad = T_ab * T_bd", "T_ad = (* T_ab T_bd)"),
+        (
+            "T_sb' = exp([S] theta) * T_sb",
+            "T_sb' = (* exp((j* [S] theta)) T_sb)",
+        ),
+        (
+            "(w, theta) = axis_ang3(expc)",
+            "(w, theta) = axis_ang3(expc)",
+        ),
+        ("(q, s, h) = screw_params(S)", "(q, s, h) = screw_params(S)"),
+        ("given T_ab, T_bc : SE3", "given T_ab, T_bc : SE3"),
+        ("given theta : scalar", "given theta : scalar"),
+        ("f(x, y) = x^2 + y", "fn f(x, y) = (+ (^ x 2) y)"),
+        ("g() = 1", "fn g() = 1"),
+        ("derive T_ce", "derive T_ce"),
+        (
+            "m = mech < links 4; joints 4R; planar >",
+            "m = MechSpec { links: Some((4, Span { start: 11, end: 18 })), joints: [JointGroupSyntax { count: 4, letters: \"R\", span: Span { start: 27, end: 29 } }], legs: None, space: Some((\"planar\", Span { start: 31, end: 37 })), unknown: [] }",
+        ),
+        ("(1, 2)", "(1, 2)"),
+        ("f(1, 2)", "f(1, 2)"),
+    ];
+    for (src, want) in table {
+        assert_eq!(p(src), want, "{src}");
+    }
+}
+
+#[test]
+fn statement_idents_have_spans() {
+    let s = one("given T_ab, T_bc : SE3");
+    let StmtKind::Given { names, ty } = s.kind else {
+        panic!("not given")
+    };
+    assert_eq!(names[0].span, Span::new(6, 10));
+    assert_eq!(names[1].span, Span::new(12, 16));
+    assert_eq!(ty.span, Span::new(19, 22));
+    let s = one("(w, theta) = axis_ang3(expc)");
+    let StmtKind::Destructure { targets, value } = s.kind else {
+        panic!("not destructure")
+    };
+    assert_eq!(targets[1].span, Span::new(4, 9));
+    assert_eq!(value.span, Span::new(13, 28));
+}
+
+// ---------------------------------------------------------------------------
+// Spans
+// ---------------------------------------------------------------------------
+
+#[test]
+fn spans_are_byte_ranges_into_the_source() {
+    let e = expr("T_ab * T_bc");
+    assert_eq!(e.span, Span::new(0, 11));
+    let ExprKind::Binary {
+        lhs,
+        rhs,
+        op_span,
+        implicit,
+        ..
+    } = &e.kind
+    else {
+        panic!()
+    };
+    assert_eq!(
+        (lhs.span, rhs.span, *op_span, *implicit),
+        (Span::new(0, 4), Span::new(7, 11), Span::new(5, 6), false)
+    );
+
+    // Juxtaposition: the operator span is the gap.
+    let e = expr("2  pi");
+    let ExprKind::Binary {
+        op_span, implicit, ..
+    } = &e.kind
+    else {
+        panic!()
+    };
+    assert_eq!((*op_span, *implicit), (Span::new(1, 3), true));
+
+    // `(x)` spans its parentheses; calls, members and indices their text.
+    assert_eq!(expr("(x) ").span, Span::new(0, 3));
+    assert_eq!(expr("(a + b) * c").span, Span::new(0, 11));
+    assert_eq!(expr("Rotz(30 deg)").span, Span::new(0, 12));
+    assert_eq!(expr("T_sb.R").span, Span::new(0, 6));
+    assert_eq!(expr("M[1, :]").span, Span::new(0, 7));
+    assert_eq!(expr("-x").span, Span::new(0, 2));
+
+    // Unicode: offsets are bytes.
+    let s = one("θ = 30°");
+    assert_eq!(s.span, Span::new(0, 9));
+    let StmtKind::Assign { target, value } = s.kind else {
+        panic!()
+    };
+    assert_eq!(target.span, Span::new(0, 2));
+    assert_eq!(value.span, Span::new(5, 9));
+
+    // Later statements are offset into the whole source.
+    let all = parse_program("# setup\nx = 1;  y = T_ab * T_bc  # comment\n");
+    let spans: Vec<Span> = all.iter().map(|s| s.as_ref().unwrap().span).collect();
+    assert_eq!(spans, [Span::new(8, 13), Span::new(16, 31)]);
+    let StmtKind::Assign { value, .. } = &all[1].as_ref().unwrap().kind else {
+        panic!()
+    };
+    let ExprKind::Binary { op_span, .. } = &value.kind else {
+        panic!()
+    };
+    assert_eq!(*op_span, Span::new(25, 26));
+}
+
+// ---------------------------------------------------------------------------
+// Mechanisms
+// ---------------------------------------------------------------------------
+
+fn mech(src: &str) -> chasles::syntax::ast::MechSpec {
+    match expr(src).kind {
+        ExprKind::Mech(m) => m,
+        other => panic!("{src}: not a mech: {other:?}"),
+    }
+}
+
+fn joints(m: &chasles::syntax::ast::MechSpec) -> Vec<(i64, &str)> {
+    m.joints
+        .iter()
+        .map(|j| (j.count, j.letters.as_str()))
+        .collect()
+}
+
+#[test]
+fn mech_literals() {
+    let m = mech("mech < links 4; joints R R R R; planar >");
+    assert_eq!(m.links.map(|l| l.0), Some(4));
+    assert_eq!(joints(&m), [(1, "R"), (1, "R"), (1, "R"), (1, "R")]);
+    assert_eq!(m.space.as_ref().map(|s| s.0.as_str()), Some("planar"));
+    assert_eq!(m.links.map(|l| l.1), Some(Span::new(7, 14)));
+    assert_eq!(m.joints[0].span, Span::new(23, 24));
+
+    let m = mech("mech < links 8; joints 8R P; planar >");
+    assert_eq!(joints(&m), [(8, "R"), (1, "P")]);
+    let m = mech("mech < links 7; joints 7R RP; planar >");
+    assert_eq!(joints(&m), [(7, "R"), (1, "RP")]);
+    let m = mech("mech < links 14; joints 6U 6P 6S; spatial >");
+    assert_eq!(m.links.map(|l| l.0), Some(14));
+    assert_eq!(joints(&m), [(6, "U"), (6, "P"), (6, "S")]);
+    let m = mech("mech < legs 6 UPS; spatial >");
+    assert_eq!(
+        m.legs.as_ref().map(|l| (l.0, l.1.as_str())),
+        Some((6, "UPS"))
+    );
+    assert!(m.links.is_none() && m.joints.is_empty());
+    let m = mech("mech < links 4; joints 4R; spherical >");
+    assert_eq!(m.space.as_ref().map(|s| s.0.as_str()), Some("spherical"));
+
+    // Any order, newlines as separators, unknown items kept with spans.
+    let m = mech("mech <\n  planar\n  joints 4R   # four revolute\n  links 4\n  wheels 3  \n>");
+    assert_eq!(m.links.map(|l| l.0), Some(4));
+    assert_eq!(joints(&m), [(4, "R")]);
+    assert_eq!(m.unknown.len(), 1);
+    assert_eq!(m.unknown[0].0, "wheels 3");
+    assert_eq!(m.unknown[0].1, Span::new(58, 66));
+    // Letters are kept as written; the validator judges them.
+    let m = mech("mech<joints 2X q>");
+    assert_eq!(joints(&m), [(2, "X"), (1, "q")]);
+
+    // mech is an expression.
+    assert!(p("dof(mech<links 4; joints 4R; planar>)").starts_with("dof(MechSpec"));
+    assert!(p("m = mech < links 4; joints 4R; planar >").starts_with("m = MechSpec"));
+}
+
+#[test]
+fn mech_errors() {
+    let e = err("mech < links 4; links 5 >");
+    assert_eq!(e.message, "`links` appears twice in this mech");
+    assert_eq!(e.span, Span::new(16, 23));
+    let e = err("mech < links >");
+    assert_eq!(e.message, "expected a whole number, found '>'");
+    let e = err("mech < links 4 ; planar x >");
+    assert_eq!(e.message, "expected ';' or '>', found 'x'");
+}
+
+// ---------------------------------------------------------------------------
+// Splitting a program into statements
+// ---------------------------------------------------------------------------
+
+#[test]
+fn programs_split_into_statements() {
+    let src = "# Example 3.18\n\
+               T_sb = [1, 0, 0, 1\n\
+                       0, 1, 0, 2   # second row\n\
+                       0, 0, 1, 0\n\
+                       0, 0, 0, 1]\n\
+               \n\
+               w = (0, 0, 1); theta = 30 deg\n\
+               ; ;\n\
+               V_s = Ad(T_sb) * V_b   # body to space\n";
+    let all: Vec<String> = parse_program(src)
+        .iter()
+        .map(|r| stmt_sexp(r.as_ref().expect("parses")))
+        .collect();
+    assert_eq!(
+        all,
+        [
+            "T_sb = [1, 0, 0, 1; 0, 1, 0, 2; 0, 0, 1, 0; 0, 0, 0, 1]",
+            "w = (0, 0, 1)",
+            "theta = (deg 30)",
+            "V_s = (* Ad(T_sb) V_b)",
+        ]
+    );
+    assert!(parse_program("").is_empty());
+    assert!(parse_program("  # only a comment\n\n;\n").is_empty());
+    // `;` inside a comment does not end anything; CRLF line ends work.
+    assert_eq!(parse_program("x = 1 # a; b\r\ny = 2\r\n").len(), 2);
+}
+
+#[test]
+fn one_bad_statement_does_not_hide_the_others() {
+    let all = parse_program("a = 1 +\nb = 2; c = )\nd = f(1\ne = [1, 2\n  3, 4]\nf = 3");
+    let ok: Vec<bool> = all.iter().map(Result::is_ok).collect();
+    assert_eq!(ok, [false, true, false, false, true, true]);
+    assert_eq!(all[2].as_ref().unwrap_err().message, "unmatched ')'");
+    assert_eq!(
+        all[3].as_ref().unwrap_err().message,
+        "unclosed '(' opened here"
+    );
+}
+
+#[test]
+fn needs_more_input_while_open() {
+    for src in [
+        "[1, 2",
+        "[1, 2\n 3, 4",
+        "f(",
+        "x = (1,\n",
+        "m = mech <",
+        "m = mech < links 4;",
+        "T_{world,",
+    ] {
+        assert!(needs_more_input(src), "{src:?}");
+    }
+    for src in [
+        "",
+        "x = 1",
+        "[1, 2]",
+        ")",
+        "x)",
+        "[1)",
+        "# [",
+        "x = 1 # (",
+        "a < b",
+        "]\n[",
+        "[1, 2]\n",
+    ] {
+        assert!(!needs_more_input(src), "{src:?}");
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Error messages
+// ---------------------------------------------------------------------------
+
+#[test]
+fn friendly_errors() {
+    // (source, message, span text, help)
+    let table: &[(&str, &str, &str, Option<&str>)] = &[
+        (
+            "a b",
+            "missing operator between `a` and `b`",
+            "b",
+            Some("put `*` between the two names: a * b"),
+        ),
+        (
+            "T_sb [1,2]",
+            "missing operator between `T_sb` and `[1,2]`",
+            "[1,2]",
+            Some("index with no space: T_sb[1, 2]"),
+        ),
+        (
+            "2 ** 3",
+            "`**` is not an operator",
+            "**",
+            Some("use ^ for powers: x^2"),
+        ),
+        (
+            "x = ",
+            "expected an expression, found end of input",
+            "=",
+            None,
+        ),
+        ("(1 + )", "expected an expression, found ')'", ")", None),
+        ("f(1, 2]", "mismatched ']'", "]", None),
+        ("x = 1)", "unmatched ')'", ")", None),
+        (
+            "M = [1, 2",
+            "unclosed '[' opened here",
+            "[",
+            Some("close it with ']'"),
+        ),
+        (
+            "given T_ab SE3",
+            "expected ',' or ':', found 'S'",
+            "S",
+            None,
+        ),
+        ("x.", "expected a name, found end of input", ".", None),
+        (
+            "x, y",
+            "expected an operator, '=' or end of input, found ','",
+            ",",
+            Some("to write a vector, put it in parentheses or brackets: (1, 2, 3)"),
+        ),
+        (
+            "1 = x",
+            "expected an operator or end of input, found '='",
+            "=",
+            Some("only a name, a tuple of names `(a, b)` or a function `f(x)` can be assigned to"),
+        ),
+        (
+            "x @ y",
+            "expected an operator, '=' or end of input, found '@'",
+            "@",
+            None,
+        ),
+        (
+            "[1, +\n 2]",
+            "expected an expression, found end of line",
+            "\n",
+            None,
+        ),
+        (
+            "M[1; 2]",
+            "an index takes one or two subscripts separated by `,`",
+            "[1; 2]",
+            Some("write M[i], M[i, j], M[i, :] or M[:, j]"),
+        ),
+        (
+            "x < 3",
+            "expected an operator, '=' or end of input, found '<'",
+            "<",
+            Some(
+                "there are no comparisons; `<` only opens a mechanism: mech < links 4; joints 4R; planar >",
+            ),
+        ),
+        (
+            "θ = 1 +",
+            "expected an expression, found end of input",
+            "+",
+            None,
+        ),
+    ];
+    for &(src, message, at, help) in table {
+        let e = err(src);
+        assert_eq!(e.message, message, "{src:?}");
+        assert_eq!(&src[e.span.start..e.span.end], at, "{src:?}");
+        assert_eq!(e.help.as_deref(), help, "{src:?}");
+        assert_eq!(e.kind, chasles::diagnostics::ErrorKind::Syntax);
+    }
+    // The mismatched closer also points at its opener.
+    let e = err("f(1, 2]");
+    assert_eq!(e.labels[0].span, Span::new(1, 2));
+}
+
+/// A debugging aid: `CHASLES_SRC='a b' cargo test --test parse debug_print
+/// -- --nocapture` prints how each statement parses. Does nothing otherwise.
 #[test]
 fn debug_print() {
     if let Ok(src) = std::env::var("CHASLES_SRC") {
@@ -208,6 +755,15 @@ fn nesting_up_to_the_limit_parses() {
         one(&vec!["1"; n].join("+"));
         one(&vec!["2"; n].join("^"));
         one(&format!("{}x", "-".repeat(n - 1)));
+        // Brackets and operator chains together, up to the limit.
+        let levels = MAX_DEPTH / 5;
+        let chain = format!("{}x{}", "2^2^2^2^(".repeat(levels), ")".repeat(levels));
+        one(&chain);
+        too_deep(format!(
+            "{}x{}",
+            "2^2^2^2^2^(".repeat(levels),
+            ")".repeat(levels)
+        ));
         // A deep mix: every level of brackets holding an operator.
         let mut s = String::from("x");
         for _ in 0..(n / 2 - 1) {
@@ -215,4 +771,69 @@ fn nesting_up_to_the_limit_parses() {
         }
         one(&s);
     });
+}
+
+// ---------------------------------------------------------------------------
+// No input panics the parser
+// ---------------------------------------------------------------------------
+
+mod never_panics {
+    use super::*;
+    use proptest::prelude::*;
+
+    const TOKENS: &[&str] = &[
+        "(", ")", "[", "]", ",", ";", "+", "-", "*", "/", "^", ".", "'", "deg", "°", "pi", "1",
+        "2.5", "T_ab", "x", "=", "given", ":", "mech", "<", ">", "R", "P", "#", "\n", " ", "{",
+        "}", "_{", "links", "joints", "4R", "planar", "derive", ".5", "1e", "θ", "f(", "**",
+    ];
+
+    fn program() -> impl Strategy<Value = String> {
+        prop::collection::vec((prop::sample::select(TOKENS), prop::bool::ANY), 0..48).prop_map(
+            |parts| {
+                parts
+                    .into_iter()
+                    .map(|(t, space)| {
+                        if space {
+                            format!("{t} ")
+                        } else {
+                            t.to_string()
+                        }
+                    })
+                    .collect()
+            },
+        )
+    }
+
+    fn check(src: &str) {
+        let _ = needs_more_input(src);
+        for r in parse_program(src) {
+            let span = match &r {
+                Ok(s) => s.span,
+                Err(e) => e.span,
+            };
+            assert!(
+                span.start <= span.end && span.end <= src.len(),
+                "{src:?}: {span:?}"
+            );
+            assert!(src.is_char_boundary(span.start) && src.is_char_boundary(span.end));
+            if let Err(e) = r {
+                assert!(!e.message.is_empty());
+                assert!(!e.message.contains("internal"), "{src:?}: {}", e.message);
+            }
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 1500, ..ProptestConfig::default() })]
+
+        #[test]
+        fn random_token_strings(src in program()) {
+            check(&src);
+        }
+
+        #[test]
+        fn random_text(src in "\\PC{0,40}") {
+            check(&src);
+        }
+    }
 }

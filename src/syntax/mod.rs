@@ -1,6 +1,6 @@
 //! Parsing: source text → AST with spans.
 //!
-//! The pipeline: [`split`] cuts the source into statements (newline or `;`
+//! The pipeline: `split` cuts the source into statements (newline or `;`
 //! outside brackets; comments blanked; bracket errors and nesting depth
 //! checked), then each statement is parsed with the pest grammar
 //! `grammar/chasles.pest` and turned into an [`ast::Stmt`] by `parser`,
@@ -18,6 +18,7 @@
 
 pub mod ast;
 pub mod ident;
+mod mech;
 mod parser;
 mod rules;
 mod split;
@@ -39,17 +40,21 @@ pub fn parse_program(src: &str) -> Vec<Result<ast::Stmt, Diagnostic>> {
         .into_iter()
         .map(|chunk| match chunk.error {
             Some(error) => Err(error),
-            None if chunk.depth > SHALLOW => parse_on_big_stack(&split.text, chunk.span),
+            None if chunk.depth > SHALLOW || chunk.span.end - chunk.span.start > SHORT => {
+                parse_on_big_stack(&split.text, chunk.span)
+            }
             None => parser::parse_statement(&split.text, chunk.span),
         })
         .collect()
 }
 
-/// Statements nested deeper than this many brackets are parsed on a thread
-/// of their own with a large stack: building the tree costs several
-/// kilobytes of stack per bracket level in debug builds, and the caller's
-/// thread may have as little as 2 MB.
-const SHALLOW: usize = 48;
+/// Statements nested deeper than this many brackets, or longer than
+/// [`SHORT`] bytes (long enough for deep operator chains), are parsed on a
+/// thread of their own with a large stack: building the tree costs
+/// kilobytes of stack per level in debug builds, and the caller's thread
+/// may have as little as 2 MB.
+const SHALLOW: usize = 16;
+const SHORT: usize = 256;
 
 fn parse_on_big_stack(text: &str, span: ast::Span) -> Result<ast::Stmt, Diagnostic> {
     std::thread::scope(|scope| {

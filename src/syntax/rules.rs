@@ -130,23 +130,10 @@ pub(crate) fn pest_error(err: pest::error::Error<Rule>, cx: &Cx<'_>) -> Diagnost
             names.clear();
             pos = attempts.max_position;
             for stack in attempts.call_stacks() {
-                if let Some(rule) = stack.deepest.get_rule() {
-                    if !matches!(
-                        rule,
-                        Rule::statement
-                            | Rule::given_stmt
-                            | Rule::derive_stmt
-                            | Rule::fn_def
-                            | Rule::destructure
-                            | Rule::assign
-                            | Rule::mech
-                            | Rule::paren
-                            | Rule::brackets
-                            | Rule::call_args
-                            | Rule::index
-                    ) {
-                        names.push(rule_name(*rule));
-                    }
+                if let Some(rule) = stack.deepest.get_rule()
+                    && !is_container(*rule)
+                {
+                    names.push(rule_name(*rule));
                 }
             }
         }
@@ -181,6 +168,15 @@ pub(crate) fn pest_error(err: pest::error::Error<Rule>, cx: &Cx<'_>) -> Diagnost
     if found_char.is_none() {
         names.retain(|n| n != END);
     }
+    // Right after a word, a name cannot start (it would continue the word):
+    // pest's attempt there comes from a keyword's lookahead.
+    let after_word = cx.text[..pos]
+        .chars()
+        .next_back()
+        .is_some_and(|c| c.is_alphanumeric() || c == '_');
+    if after_word && names.len() > 1 {
+        names.retain(|n| n != "a name");
+    }
 
     let found = match found_char {
         None => "end of input".to_string(),
@@ -198,6 +194,25 @@ pub(crate) fn pest_error(err: pest::error::Error<Rule>, cx: &Cx<'_>) -> Diagnost
         Some(h) => diag.with_help(h),
         None => diag,
     }
+}
+
+/// Statements and bracketed groups: when pest stopped inside one, what it
+/// wanted is its next token, not the rule itself.
+fn is_container(rule: Rule) -> bool {
+    matches!(
+        rule,
+        Rule::statement
+            | Rule::given_stmt
+            | Rule::derive_stmt
+            | Rule::fn_def
+            | Rule::destructure
+            | Rule::assign
+            | Rule::mech
+            | Rule::paren
+            | Rule::brackets
+            | Rule::call_args
+            | Rule::index
+    )
 }
 
 /// The character at `pos` of the statement, or its last character when
@@ -229,7 +244,7 @@ fn help(text: &str, pos: usize, found: Option<char>, expected: &[String]) -> Opt
     let wants = |s: &str| expected.iter().any(|e| e == s);
     match found? {
         '*' if before.ends_with('*') => Some("use ^ for powers: x^2".into()),
-        '=' if text.get(pos..).is_some_and(|s| s.starts_with("==")) => {
+        '=' if text.get(pos..).is_some_and(|s| s.starts_with("==")) || before.ends_with('=') => {
             Some("`==` is not supported; to bind a name write `name = expr`".into())
         }
         '=' if before.ends_with("given") => {
@@ -241,6 +256,9 @@ fn help(text: &str, pos: usize, found: Option<char>, expected: &[String]) -> Opt
         ),
         ',' if wants(END) => {
             Some("to write a vector, put it in parentheses or brackets: (1, 2, 3)".into())
+        }
+        ',' if before.rfind("_{") > before.rfind('}') => {
+            Some("a braced subscript names one or two frames: T_{world,cam}".into())
         }
         '\'' => Some("`'` is part of a name (T_sb'); to transpose write x.T".into()),
         '<' | '>' if wants(OPERATOR) || wants(END) => Some(
