@@ -103,7 +103,9 @@ impl Sym {
             _ => false,
         };
         match (self, other) {
-            (Sym::Call(f, a), Sym::Call(g, b)) if is_adjoint(f) && is_adjoint(g) && a.len() == 1 && b.len() == 1 => {
+            (Sym::Call(f, a), Sym::Call(g, b))
+                if is_adjoint(f) && is_adjoint(g) && a.len() == 1 && b.len() == 1 =>
+            {
                 inverse_pair(&a[0], &b[0])
             }
             (Sym::Transpose(a), Sym::Transpose(b)) => a.cancels(b),

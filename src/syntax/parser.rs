@@ -50,9 +50,10 @@ pub(crate) fn parse_statement(text: &str, span: Span) -> Result<Stmt, Diagnostic
         text: chunk,
         above: Cell::new(0),
     };
-    pest::set_error_detail(true);
-    let mut pairs =
-        ChaslesParser::parse(Rule::statement, chunk).map_err(|e| rules::pest_error(e, &cx))?;
+    let mut pairs = match ChaslesParser::parse(Rule::statement, chunk) {
+        Ok(pairs) => pairs,
+        Err(_) => return Err(rules::pest_error(parse_with_detail(chunk), &cx)),
+    };
     let stmt = pairs.next().ok_or_else(|| cx.internal(span))?;
     let form = stmt
         .into_inner()
@@ -60,6 +61,28 @@ pub(crate) fn parse_statement(text: &str, span: Span) -> Result<Stmt, Diagnostic
         .ok_or_else(|| cx.internal(span))?;
     let kind = cx.statement(form)?;
     Ok(Stmt { kind, span })
+}
+
+/// Parses again with pest's error details (which rules were tried where),
+/// for the message of a statement that failed. Details cost about 40% of
+/// parse speed, so a successful parse runs without them. The setting is
+/// process-wide: a lock keeps detailed re-parses from switching it off
+/// under each other.
+fn parse_with_detail(chunk: &str) -> pest::error::Error<Rule> {
+    static DETAIL: std::sync::Mutex<()> = std::sync::Mutex::new(());
+    let _guard = DETAIL.lock().unwrap_or_else(|e| e.into_inner());
+    pest::set_error_detail(true);
+    let result = ChaslesParser::parse(Rule::statement, chunk);
+    pest::set_error_detail(false);
+    match result {
+        Err(e) => e,
+        Ok(_) => pest::error::Error::new_from_pos(
+            pest::error::ErrorVariant::CustomError {
+                message: "the statement parses only with error details on".into(),
+            },
+            pest::Position::from_start(chunk),
+        ),
+    }
 }
 
 /// Where the statement sits in the source.
