@@ -62,26 +62,37 @@ pub fn rodrigues_coeffs(theta: f64) -> (f64, f64) {
 /// of Rodrigues' formula (3.51, Proposition 3.9), from exponential
 /// coordinates `ω̂θ ∈ ℝ³`. Zero coordinates give the identity.
 ///
-/// Written entry by entry as (3.52) with `[φ]² = φφᵀ − θ²I` so that the
-/// diagonal is `1 − b(φⱼ² + φₖ²)` without cancellation; the coefficients
-/// come from [`rodrigues_coeffs`] (series for small θ).
+/// Written entry by entry as (3.52) with φ = ω̂θ, a = sinθ/θ and
+/// b = (1−cosθ)/θ² from [`rodrigues_coeffs`] (series for small θ):
+/// off-diagonal `b φᵢφⱼ ∓ a φₖ`; diagonal either `1 − b(φⱼ² + φₖ²)` or the
+/// equal `cosθ + b φᵢ²`, whichever adds the smaller correction term (its
+/// rounding error is proportional to its size), which keeps the result
+/// orthogonal to a couple of ulps even at θ → π.
 pub fn exp(expc: &Vec3) -> Mat3 {
     let (x, y, z) = (expc.x, expc.y, expc.z);
     let theta = expc.norm();
     let (a, b) = rodrigues_coeffs(theta);
+    let c = theta.cos();
     let (xx, yy, zz) = (x * x, y * y, z * z);
+    let diag = |ii: f64, rest: f64| {
+        if ii <= rest {
+            c + b * ii
+        } else {
+            1.0 - b * rest
+        }
+    };
     let (bxy, bxz, byz) = (b * x * y, b * x * z, b * y * z);
     let (ax, ay, az) = (a * x, a * y, a * z);
     Mat3::new(
-        1.0 - b * (yy + zz),
+        diag(xx, yy + zz),
         bxy - az,
         bxz + ay,
         bxy + az,
-        1.0 - b * (xx + zz),
+        diag(yy, xx + zz),
         byz - ax,
         bxz - ay,
         byz + ax,
-        1.0 - b * (xx + yy),
+        diag(zz, xx + yy),
     )
 }
 
