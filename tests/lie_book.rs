@@ -2,6 +2,9 @@
 //! and the docstring examples of the Modern Robotics software library for
 //! each function of §3.6.
 
+// The book's printed numbers (e.g. 1.57079632 for π/2) are used verbatim.
+#![allow(clippy::approx_constant)]
+
 use chasles::lie::{Mat3, Mat4, Mat6, Vec3, Vec6, near_zero, project, se2, se3, so3};
 use std::f64::consts::PI;
 
