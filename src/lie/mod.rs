@@ -15,6 +15,7 @@
 //! - [`repr`]: Euler angles, roll-pitch-yaw, quaternions, Cayley parameters;
 //! - [`project`]: projection onto and distance to the groups (§3.6 software);
 //! - [`matexp`]: the exponential of a general square matrix (§3.2.3.1).
+#![deny(missing_docs)]
 
 pub mod matexp;
 pub mod project;

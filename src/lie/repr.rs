@@ -12,8 +12,12 @@ use super::so3::{hat, rotx, rotz};
 use super::{Mat3, Vec3, Vec4};
 
 /// Below this `cos b` (ZYX) or `sin b` (ZXZ) the first and third axes are
-/// treated as aligned (gimbal lock).
-const GIMBAL_TOL: f64 = 1e-12;
+/// treated as aligned (gimbal lock). It is at the rounding-noise level
+/// (cos(π/2) = 6e-17 in f64): at gimbal lock the split of the rotation
+/// between a and c is arbitrary and setting c = 0 loses at most this much,
+/// while just above it the regular formulas (through `R' = Rz(−a)R`) are
+/// still accurate to a few ulps.
+const GIMBAL_TOL: f64 = 1e-15;
 
 /// Below this quaternion w = cos(θ/2) the Cayley parameters ω̂ tan(θ/2) are
 /// treated as infinite (θ ≈ π).

@@ -86,7 +86,7 @@ pub fn log(t: &Mat3) -> Vec3 {
         let t2 = theta * theta;
         1.0 - t2 / 12.0 - t2 * t2 / 720.0
     } else {
-        h * h.cos() / h.sin()
+        h / h.tan()
     };
     Vec3::new(theta, a * p.x + h * p.y, a * p.y - h * p.x)
 }

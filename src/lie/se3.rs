@@ -65,22 +65,21 @@ pub fn inv(t: &Mat4) -> Mat4 {
     from_rp(&rt, &(-(rt * p)))
 }
 
-/// The coefficients `((1−cosθ)/θ², (θ−sinθ)/θ³)` of (3.88)–(3.89) written
+/// The coefficient `(θ−sinθ)/θ³ = (1 − sinθ/θ)/θ²` of (3.88)–(3.89) written
 /// for exponential coordinates: `G(θ)v = ρ + ((1−cosθ)/θ²)[φ]ρ +
-/// ((θ−sinθ)/θ³)[φ]²ρ` with φ = ω̂θ, ρ = vθ.
+/// ((θ−sinθ)/θ³)[φ]²ρ` with φ = ω̂θ, ρ = vθ; `a` is sinθ/θ.
 ///
-/// (1−cosθ) is evaluated as 2 sin²(θ/2) (no cancellation); (θ − sinθ)/θ³
-/// cancels catastrophically for small θ, so below θ = 1e-2 it comes from its
-/// series 1/6 − θ²/120 + θ⁴/5040 − θ⁶/362880 (truncation < 1e-24).
-fn g_coeffs(theta: f64) -> (f64, f64) {
-    let (_, b) = so3::rodrigues_coeffs(theta);
-    let c = if theta < SERIES_THETA {
+/// 1 − sinθ/θ cancels catastrophically for small θ, so below θ = 1e-2 it
+/// comes from the series 1/6 − θ²/120 + θ⁴/5040 − θ⁶/362880 (truncation
+/// < 1e-24); above, its absolute error ε/θ² is multiplied by
+/// ‖[φ]²ρ‖ ≤ θ²‖ρ‖, i.e. costs only O(ε‖ρ‖).
+fn g_coeff(theta: f64, a: f64) -> f64 {
+    if theta < SERIES_THETA {
         let t2 = theta * theta;
         1.0 / 6.0 - t2 / 120.0 + t2 * t2 / 5040.0 - t2 * t2 * t2 / 362_880.0
     } else {
-        (theta - theta.sin()) / (theta * theta * theta)
-    };
-    (b, c)
+        (1.0 - a) / (theta * theta)
+    }
 }
 
 /// `MatrixExp6(Sθ)`: the homogeneous transformation `e^{[S]θ}` of
@@ -88,14 +87,15 @@ fn g_coeffs(theta: f64) -> (f64, f64) {
 /// `[e^{[ω̂]θ}, G(θ)v; 0, 1]` with `G(θ) = Iθ + (1−cosθ)[ω̂] +
 /// (θ−sinθ)[ω̂]²` (3.88)–(3.89), and `[I, vθ; 0, 1]` when ω = 0 (3.90).
 ///
-/// Evaluated without dividing by θ (see the private `g_coeffs`), so the
+/// Evaluated without dividing by θ (see the private `g_coeff`), so the
 /// pure-translation case (3.90) is the θ → 0 limit of the same formula and
 /// small rotations keep full precision.
 pub fn exp(expc: &Vec6) -> Mat4 {
     let (phi, rho) = split(expc);
     let theta = phi.norm();
-    let r = so3::exp(&phi);
-    let (b, c) = g_coeffs(theta);
+    let (a, b, cos) = so3::coeffs(theta);
+    let r = so3::exp_with(&phi, a, b, cos);
+    let c = g_coeff(theta, a);
     let wr = phi.cross(&rho);
     let wwr = phi.cross(&wr);
     let p = rho + wr * b + wwr * c;
@@ -117,7 +117,7 @@ fn ginv_coeff(theta: f64) -> f64 {
         1.0 / 12.0 + t2 / 720.0 + t2 * t2 / 30_240.0 + t2 * t2 * t2 / 1_209_600.0
     } else {
         let h = 0.5 * theta;
-        (1.0 - h * h.cos() / h.sin()) / (theta * theta)
+        (1.0 - h / h.tan()) / (theta * theta)
     }
 }
 
@@ -278,9 +278,10 @@ mod tests {
     fn ginv_series_matches_direct() {
         let t: f64 = SERIES_THETA;
         let h = 0.5 * t;
-        let direct = (1.0 - h * h.cos() / h.sin()) / (t * t);
+        let direct = (1.0 - h / h.tan()) / (t * t);
         assert!((ginv_coeff(t * 0.999_999) - direct).abs() < 1e-12);
         let direct_c = (t - t.sin()) / (t * t * t);
-        assert!((g_coeffs(t * 0.999_999).1 - direct_c).abs() < 1e-10);
+        let s = t * 0.999_999;
+        assert!((g_coeff(s, s.sin() / s) - direct_c).abs() < 1e-10);
     }
 }

@@ -46,15 +46,27 @@ pub fn vee_skew(m: &Mat3) -> Vec3 {
 /// sinθ/θ = 1 − θ²/6 + θ⁴/120 and (1−cosθ)/θ² = 1/2 − θ²/24 + θ⁴/720,
 /// so θ = 0 needs no special case.
 pub fn rodrigues_coeffs(theta: f64) -> (f64, f64) {
+    let (a, b, _) = coeffs(theta);
+    (a, b)
+}
+
+/// `(sinθ/θ, (1−cosθ)/θ², cosθ)`: sinθ = 2 sin(θ/2)cos(θ/2) and
+/// 1 − cosθ = 2 sin²(θ/2) from one sin/cos of θ/2 (relative accuracy of a
+/// couple of ulps, also near 0 and π), and cosθ itself directly (the
+/// diagonal of [`exp`] near π relies on its correct rounding). Series
+/// below θ = 1e-4.
+pub(crate) fn coeffs(theta: f64) -> (f64, f64, f64) {
     if theta < SERIES_THETA {
         let t2 = theta * theta;
         (
             1.0 - t2 / 6.0 * (1.0 - t2 / 20.0),
             0.5 - t2 / 24.0 * (1.0 - t2 / 30.0),
+            1.0 - t2 / 2.0 * (1.0 - t2 / 12.0),
         )
     } else {
-        let h = (0.5 * theta).sin() / theta;
-        (theta.sin() / theta, 2.0 * h * h)
+        let (sh, ch) = (0.5 * theta).sin_cos();
+        let h = sh / theta;
+        (2.0 * h * ch, 2.0 * h * h, theta.cos())
     }
 }
 
@@ -62,26 +74,41 @@ pub fn rodrigues_coeffs(theta: f64) -> (f64, f64) {
 /// of Rodrigues' formula (3.51, Proposition 3.9), from exponential
 /// coordinates `ω̂θ ∈ ℝ³`. Zero coordinates give the identity.
 ///
-/// Written entry by entry as (3.52) with `[φ]² = φφᵀ − θ²I` so that the
-/// diagonal is `1 − b(φⱼ² + φₖ²)` without cancellation; the coefficients
-/// come from [`rodrigues_coeffs`] (series for small θ).
+/// Written entry by entry as (3.52) with φ = ω̂θ, a = sinθ/θ and
+/// b = (1−cosθ)/θ² from [`rodrigues_coeffs`] (series for small θ):
+/// off-diagonal `b φᵢφⱼ ∓ a φₖ`; diagonal either `1 − b(φⱼ² + φₖ²)` or the
+/// equal `cosθ + b φᵢ²`, whichever adds the smaller correction term (its
+/// rounding error is proportional to its size), which keeps the result
+/// orthogonal to a couple of ulps even at θ → π.
 pub fn exp(expc: &Vec3) -> Mat3 {
+    let (a, b, c) = coeffs(expc.norm());
+    exp_with(expc, a, b, c)
+}
+
+/// [`exp`] with the coefficients of [`coeffs`] already computed (shared
+/// with the SE(3) exponential).
+pub(crate) fn exp_with(expc: &Vec3, a: f64, b: f64, c: f64) -> Mat3 {
     let (x, y, z) = (expc.x, expc.y, expc.z);
-    let theta = expc.norm();
-    let (a, b) = rodrigues_coeffs(theta);
     let (xx, yy, zz) = (x * x, y * y, z * z);
+    let diag = |ii: f64, rest: f64| {
+        if ii <= rest {
+            c + b * ii
+        } else {
+            1.0 - b * rest
+        }
+    };
     let (bxy, bxz, byz) = (b * x * y, b * x * z, b * y * z);
     let (ax, ay, az) = (a * x, a * y, a * z);
     Mat3::new(
-        1.0 - b * (yy + zz),
+        diag(xx, yy + zz),
         bxy - az,
         bxz + ay,
         bxy + az,
-        1.0 - b * (xx + zz),
+        diag(yy, xx + zz),
         byz - ax,
         bxz - ay,
         byz + ax,
-        1.0 - b * (xx + yy),
+        diag(zz, xx + yy),
     )
 }
 
