@@ -16,6 +16,10 @@
 // Errors carry spans, labels and help text; they are rare, so their size is not worth boxing.
 #![allow(clippy::result_large_err)]
 
+// pest_derive without its `std` feature (which adds a costly stack probe to
+// every rule call; our own depth limits guard the stack) refers to `alloc`.
+extern crate alloc;
+
 pub mod builtins;
 pub mod check;
 pub mod cli;

@@ -87,7 +87,13 @@ fn eval_exp(a: &mut Args) -> Result<Value, Diagnostic> {
             if r > ops::MAX_DIM {
                 return Err(a.domain(format!("matrix too large for exp ({r}×{r})")));
             }
-            let e = matexp::expm(&m);
+            let Some(e) = matexp::try_expm(&m) else {
+                return Err(a.error(
+                    0,
+                    ErrorKind::Domain,
+                    "exp needs a square matrix of finite numbers",
+                ));
+            };
             Ok(Value::Num {
                 kind: convert::classify(&e),
                 m: e,

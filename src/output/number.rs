@@ -19,12 +19,48 @@ pub fn fmt_num(x: f64, digits: usize) -> String {
         };
     }
     let tiny = 0.5 * 10f64.powi(-(digits.min(300) as i32));
-    if x.abs() >= 1e15 || x.abs() < tiny {
+    if x.abs() >= 1e15 || (digits > 0 && x.abs() < tiny) {
         return sci(x, digits);
+    }
+    if let Some(s) = fixed_fast(x, digits) {
+        return s;
     }
     let s = format!("{x:.digits$}");
     let s = trim(&s);
     if s == "-0" { "0".into() } else { s }
+}
+
+/// `x` rounded to `digits` decimals with integer arithmetic — much faster
+/// than the exact float formatter, and the same text except at exact
+/// decimal ties. None when the scaled value does not fit exactly.
+fn fixed_fast(x: f64, digits: usize) -> Option<String> {
+    if digits > 9 {
+        return None;
+    }
+    let scale = 10u64.pow(digits as u32);
+    let scaled = (x.abs() * scale as f64).round();
+    if scaled >= 9.0e15 {
+        return None;
+    }
+    let n = scaled as u64;
+    let (int, mut frac) = (n / scale, n % scale);
+    let mut out = String::with_capacity(24);
+    if x < 0.0 && n != 0 {
+        out.push('-');
+    }
+    out.push_str(&int.to_string());
+    if frac != 0 {
+        let mut width = digits;
+        while frac % 10 == 0 {
+            frac /= 10;
+            width -= 1;
+        }
+        out.push('.');
+        let f = frac.to_string();
+        out.extend(std::iter::repeat_n('0', width - f.len()));
+        out.push_str(&f);
+    }
+    Some(out)
 }
 
 fn trim(s: &str) -> String {
@@ -64,5 +100,11 @@ mod tests {
         assert_eq!(fmt_num(3.2e-7, 4), "3.2e-7");
         assert_eq!(fmt_num(f64::INFINITY, 4), "inf");
         assert_eq!(fmt_num(113.13708498984761, 4), "113.1371");
+        assert_eq!(fmt_num(-0.00004, 4), "-4e-5");
+        assert_eq!(fmt_num(0.3, 0), "0");
+        assert_eq!(fmt_num(0.0509, 4), "0.0509");
+        assert_eq!(fmt_num(-2.5, 0), "-3");
+        assert_eq!(fmt_num(12.30001, 3), "12.3");
+        assert_eq!(fmt_num(1.0005e-3, 3), "0.001");
     }
 }
