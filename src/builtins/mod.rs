@@ -119,7 +119,10 @@ impl Param {
             Param::Scalar => *k == Scalar,
             Param::Vec(n) => k.is_vector() && k.vec_len().is_none_or(|m| m == n),
             Param::AnyVec => k.is_vector(),
-            Param::Rot => *k == SO3 || matches!(shape, Some((Some(3), Some(3)))) && !k.is_algebra(),
+            Param::Rot => {
+                *k == SO3
+                    || matches!(k, Matrix(r, c) if r.is_none_or(|r| r == 3) && c.is_none_or(|c| c == 3))
+            }
             Param::Trans => {
                 *k == SE3
                     || matches!(k, Matrix(r, c) if r.is_none_or(|r| r == 4) && c.is_none_or(|c| c == 4))

@@ -131,8 +131,10 @@ fn mul_kind(l: &Kind, r: &Kind, ops: Operands) -> Result<Kind, RuleError> {
                 _ if dims_agree(n, Some(6)) => Ok(Wrench),
                 _ => Err(shape_error(l, r)),
             },
-            SE3 | Se3 if dims_agree(n, Some(3)) && n == Some(3) => Ok(Vector(Some(3))),
+            // T p with a 3-vector p: the point transformed (homogeneous, (3.59)).
+            SE3 | Se3 | Matrix(Some(4), Some(4)) if n == Some(3) => Ok(Vector(Some(3))),
             SE3 | Se3 if dims_agree(n, Some(4)) => Ok(Vector(Some(4))),
+            Matrix(None, _) | Matrix(_, None) => Ok(Vector(None)),
             SE2 | Se2 if n == Some(2) => Ok(Vector(Some(2))),
             _ => {
                 let (rows, cols) = l.shape().ok_or_else(|| shape_error(l, r))?;
@@ -565,7 +567,10 @@ pub fn member(t: &Ty, name: &str) -> Result<Ty, RuleError> {
     let is6 = |k: &Kind| matches!(k, Twist | Screw | Wrench | Unknown) || k.vec_len() == Some(6);
     match (name, &t.kind) {
         ("T", _) => transpose(t),
-        ("R", SE3) => Ok(Ty::new(SO3, t.frames.clone())),
+        ("R", SE3 | Matrix(Some(4), Some(4))) => Ok(Ty::new(SO3, t.frames.clone())),
+        ("R", Matrix(None, _) | Matrix(_, None)) => Ok(Ty::new(Unknown, t.frames.clone())),
+        ("p", Matrix(Some(4), Some(4))) => Ok(Ty::new(v3.clone(), outer())),
+        ("p", Matrix(None, _) | Matrix(_, None)) => Ok(Ty::new(Unknown, outer())),
         ("R", SE2) => Ok(Ty::new(SO2, t.frames.clone())),
         ("R", Unknown) => Ok(Ty::new(Unknown, t.frames.clone())),
         ("p", SE3) => Ok(Ty::new(v3, outer())),
