@@ -22,7 +22,6 @@ pub(crate) fn rule_name(rule: Rule) -> &'static str {
     match rule {
         Rule::EOI => END,
         Rule::WHITESPACE => "a space",
-        Rule::COMMENT => "a comment",
         Rule::statement => "a statement",
         Rule::given_stmt => "a `given` statement",
         Rule::derive_stmt => "a `derive` statement",
