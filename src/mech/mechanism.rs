@@ -657,7 +657,8 @@ impl fmt::Display for Mechanism {
     /// the substituted formula, the C-space topology where known, notes.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         writeln!(f, "{} mechanism, m = {}", self.space, self.m())?;
-        writeln!(f, "  N = {} links (ground included)", self.n)?;
+        let s = |n: i64| if n == 1 { "" } else { "s" };
+        writeln!(f, "  N = {} link{} (ground included)", self.n, s(self.n))?;
         match &self.legs {
             Some(l) => writeln!(
                 f,
@@ -668,7 +669,7 @@ impl fmt::Display for Mechanism {
                 self.joints_text()
             )?,
             None if self.j == 0 => writeln!(f, "  J = 0 joints")?,
-            None => writeln!(f, "  J = {} joints: {}", self.j, self.joints_text())?,
+            None => writeln!(f, "  J = {} joint{}: {}", self.j, s(self.j), self.joints_text())?,
         }
         writeln!(f, "  Σf = {}", self.sum_f)?;
         write!(f, "  {}", self.formula())?;
