@@ -20,7 +20,12 @@ fn last(src: &str, mode: Mode) -> Result<(Vec<String>, String), (String, String)
             e["message"].as_str().unwrap().to_string(),
         ));
     }
-    let frames = v["frames"].as_array().unwrap().iter().map(|f| f.as_str().unwrap().to_string()).collect();
+    let frames = v["frames"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|f| f.as_str().unwrap().to_string())
+        .collect();
     Ok((frames, v["type"].as_str().unwrap_or("").to_string()))
 }
 

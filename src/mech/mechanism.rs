@@ -669,7 +669,13 @@ impl fmt::Display for Mechanism {
                 self.joints_text()
             )?,
             None if self.j == 0 => writeln!(f, "  J = 0 joints")?,
-            None => writeln!(f, "  J = {} joint{}: {}", self.j, s(self.j), self.joints_text())?,
+            None => writeln!(
+                f,
+                "  J = {} joint{}: {}",
+                self.j,
+                s(self.j),
+                self.joints_text()
+            )?,
         }
         writeln!(f, "  Σf = {}", self.sum_f)?;
         write!(f, "  {}", self.formula())?;
