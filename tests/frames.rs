@@ -4,9 +4,12 @@
 use chasles::eval::env::Mode;
 use chasles::session::{Session, Settings};
 
+/// The frames and JSON type of a result, or an error's kind and message.
+type Outcome = Result<(Vec<String>, String), (String, String)>;
+
 /// Runs `src` and returns the frames and type of the last statement's JSON
 /// line, or the error kind and message.
-fn last(src: &str, mode: Mode) -> Result<(Vec<String>, String), (String, String)> {
+fn last(src: &str, mode: Mode) -> Outcome {
     let mut s = Session::new(Settings {
         json: true,
         ..Settings::default()
@@ -35,7 +38,7 @@ F_b = wrench((1, 0, 0), (0, 0, 1))\nS_a = (0, 0, 1, 0, 0, 0)\nR_ab = Rotx(0.2)\n
 const SYMBOLS: &str = "given T_ab, T_bc, T_cb : SE3\ngiven p_b, p_c : vec3\ngiven V_b : twist\n\
 given F_a, F_b : wrench\ngiven S_a : screw\ngiven R_ab : SO3\n";
 
-fn both(expr: &str) -> [Result<(Vec<String>, String), (String, String)>; 2] {
+fn both(expr: &str) -> [Outcome; 2] {
     [
         last(&format!("{NUMBERS}{expr}\n"), Mode::Run),
         last(&format!("{SYMBOLS}{expr}\n"), Mode::Check),
