@@ -309,14 +309,14 @@ pub fn frame_graph(env: &Env, mode: FrameMode) -> String {
     }
     for (a, c, name) in edges {
         let r = root(&mut parent, index(&a));
-        let key = if a <= c { (a, c) } else { (c, a) };
-        comps
-            .entry(r)
-            .or_default()
-            .edges
-            .entry(key)
-            .or_default()
-            .push(name);
+        let comp = comps.entry(r).or_default();
+        // One line per pair of frames, in the direction first seen.
+        let key = if comp.edges.contains_key(&(c.clone(), a.clone())) {
+            (c, a)
+        } else {
+            (a, c)
+        };
+        comp.edges.entry(key).or_default().push(name);
     }
     for (a, name) in singles {
         let r = root(&mut parent, index(&a));

@@ -214,7 +214,7 @@ pub fn preview(session: &Session, line: &str) -> Option<String> {
     }
     let flat = out
         .lines()
-        .map(str::trim)
+        .map(|l| squeeze_after_commas(l.trim()))
         .filter(|l| !l.is_empty())
         .collect::<Vec<_>>()
         .join("; ");
@@ -246,6 +246,24 @@ fn identifiers(line: &str) -> Vec<&str> {
 fn numbers(line: &str) -> impl Iterator<Item = f64> + '_ {
     line.split(|c: char| !(c.is_ascii_digit() || c == '.' || c == 'e'))
         .filter_map(|w| w.trim_matches('e').parse::<f64>().ok())
+}
+
+/// Column alignment dropped: one space after each comma.
+fn squeeze_after_commas(line: &str) -> String {
+    let mut out = String::with_capacity(line.len());
+    let mut after_comma = false;
+    for c in line.chars() {
+        if !(after_comma && c == ' ') {
+            out.push(c);
+        }
+        if c == ',' {
+            out.push(' ');
+            after_comma = true;
+        } else if c != ' ' {
+            after_comma = false;
+        }
+    }
+    out
 }
 
 /// `s` cut to `max` characters with an ellipsis.

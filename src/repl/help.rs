@@ -96,7 +96,7 @@ fn overview() -> String {
     let mut out = String::from("commands:\n");
     for c in COMMANDS {
         let head = format!(":{} {}", c.name, c.args);
-        out.push_str(&format!("  {:<24}{}\n", head.trim_end(), c.doc));
+        out.push_str(&format!("  {:<27}{}\n", head.trim_end(), c.doc));
     }
     let topics: Vec<&str> = TOPICS.iter().map(|(t, _)| *t).collect();
     out.push_str(&format!("topics: :help {}\n", topics.join(" | ")));
