@@ -71,7 +71,12 @@ T * T_cb
 fn errors_keep_bindings() {
     let mut s = Session::new(Settings::default());
     let before = execute(&mut s, "T_ab = Trans((1, 2, 3))").out;
-    for bad in ["T_ab * T_cb", "inv(", "T_ab = Rotz(1) * T_cd", "x = 1; y = T_ab * T_ab"] {
+    for bad in [
+        "T_ab * T_cb",
+        "inv(",
+        "T_ab = Rotz(1) * T_cd",
+        "x = 1; y = T_ab * T_ab",
+    ] {
         let r = execute(&mut s, bad);
         assert!(!r.err.is_empty(), "{bad} should fail");
     }
@@ -177,7 +182,11 @@ fn load_scripts() {
     let r = execute(&mut s, &format!(":load {}", good.display()));
     assert!(r.out.contains("loaded"), "{r:?}");
     assert!(r.err.is_empty(), "{r:?}");
-    assert!(execute(&mut s, ":vars").out.contains("T_ab : SE(3) {a}←{b}"));
+    assert!(
+        execute(&mut s, ":vars")
+            .out
+            .contains("T_ab : SE(3) {a}←{b}")
+    );
     let r = execute(&mut s, &format!(":load {}", bad.display()));
     assert!(r.err.contains("unknown name 'T_zz'"), "{r:?}");
     assert!(r.err.contains("stopped at the error"), "{r:?}");
@@ -242,7 +251,10 @@ fn load_completes_file_names() {
         "{cands:?}"
     );
     let (_, cands) = complete(&s, ":load exam", 10);
-    assert!(cands.iter().any(|c| c.replacement == "examples/"), "{cands:?}");
+    assert!(
+        cands.iter().any(|c| c.replacement == "examples/"),
+        "{cands:?}"
+    );
 }
 
 #[test]
@@ -284,9 +296,20 @@ fn hints() {
     assert_eq!(preview(&s, "y = 1 + 1").as_deref(), Some("y = 2"));
     assert!(execute(&mut s, "y").err.contains("unknown name"));
     // no preview for errors, user functions, big sizes, commands, the cursor mid-line
-    for line in ["T * T_cb", "f(2)", "eye(100 * 100)", "zeros(2000, 2)", ":vars", "2", "Rotz("] {
+    for line in [
+        "T * T_cb",
+        "f(2)",
+        "eye(100 * 100)",
+        "zeros(2000, 2)",
+        ":vars",
+        "2",
+        "Rotz(",
+    ] {
         assert!(preview(&s, line).is_none() || line == "Rotz(", "{line}");
-        assert!(!hint(&s, line, line.len()).is_some_and(|h| h.contains('⇒')), "{line}");
+        assert!(
+            !hint(&s, line, line.len()).is_some_and(|h| h.contains('⇒')),
+            "{line}"
+        );
     }
     assert_eq!(hint(&s, "Rotz(1)", 3), None);
 }

@@ -63,11 +63,7 @@ fn times(p: i64, q: i64, symbol: &str, root: Option<i64>) -> String {
     if root == Some(q) && p == 1 {
         return format!("{sign}1/{symbol}");
     }
-    let coef = if p == 1 {
-        String::new()
-    } else {
-        p.to_string()
-    };
+    let coef = if p == 1 { String::new() } else { p.to_string() };
     if q == 1 {
         format!("{sign}{coef}{symbol}")
     } else {

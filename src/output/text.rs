@@ -41,9 +41,7 @@ impl From<usize> for Style {
 pub fn inline(v: &Value, style: impl Into<Style>) -> String {
     let style = style.into();
     match v {
-        Value::Num { m, .. } if m.len() == 1 && m.ncols() == 1 && m.nrows() == 1 => {
-            style.num(m[0])
-        }
+        Value::Num { m, .. } if m.len() == 1 && m.ncols() == 1 && m.nrows() == 1 => style.num(m[0]),
         Value::Num { m, .. } if m.ncols() == 1 => {
             let xs: Vec<String> = m.iter().map(|x| style.num(*x)).collect();
             format!("({})", xs.join(", "))
@@ -73,11 +71,7 @@ pub fn inline(v: &Value, style: impl Into<Style>) -> String {
 
 /// A matrix in aligned columns, decimal points lined up, one row per line;
 /// `indent` is the column where the `[` stands.
-pub fn matrix_block(
-    m: &nalgebra::DMatrix<f64>,
-    style: impl Into<Style>,
-    indent: usize,
-) -> String {
+pub fn matrix_block(m: &nalgebra::DMatrix<f64>, style: impl Into<Style>, indent: usize) -> String {
     let style = style.into();
     let cells: Vec<Vec<String>> = m
         .row_iter()

@@ -220,11 +220,7 @@ pub fn vars(env: &Env, digits: usize) -> String {
         .collect();
     fns.sort_by(|a, b| a.name.cmp(&b.name));
     for f in fns {
-        out.push_str(&format!(
-            "{}({}) : function\n",
-            f.name,
-            f.params.join(", ")
-        ));
+        out.push_str(&format!("{}({}) : function\n", f.name, f.params.join(", ")));
     }
     out.trim_end().to_string()
 }

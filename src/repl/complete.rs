@@ -234,7 +234,8 @@ fn cheap(session: &Session, line: &str) -> bool {
     }
     let sized = idents.iter().any(|i| matches!(*i, "eye" | "zeros"));
     let big_literal = numbers(line).any(|x| x > 1000.0);
-    !big_literal && !(sized && (line.contains('*') || line.contains('^') || numbers(line).any(|x| x > 64.0)))
+    !big_literal
+        && !(sized && (line.contains('*') || line.contains('^') || numbers(line).any(|x| x > 64.0)))
 }
 
 fn identifiers(line: &str) -> Vec<&str> {
