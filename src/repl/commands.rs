@@ -328,7 +328,7 @@ pub fn frame_graph(env: &Env, mode: FrameMode) -> String {
     for comp in comps.values() {
         let braced: Vec<String> = comp.frames.iter().map(|f| format!("{{{f}}}")).collect();
         out.push_str(&format!("frames {}\n", braced.join(", ")));
-        for ((a, c), names) in &comp.edges {
+        for ((a, c), names) in chain_order(comp) {
             out.push_str(&format!("  {{{a}}} — {{{c}}}  ({})\n", names.join(", ")));
         }
         for (f, names) in &comp.quantities {
@@ -337,6 +337,44 @@ pub fn frame_graph(env: &Env, mode: FrameMode) -> String {
     }
     out.push_str(&format!("frame checking: {}", mode.as_str()));
     out
+}
+
+/// The edges of a component in the order a walk from its root meets
+/// them: the root is the first frame that is never an inner frame (the
+/// space frame {s} of T_sb, T_sc), so chains read from the outside in.
+fn chain_order(comp: &Component) -> Vec<(&(String, String), &Vec<String>)> {
+    let inner: Vec<&String> = comp.edges.keys().map(|(_, c)| c).collect();
+    let root = comp
+        .frames
+        .iter()
+        .find(|f| !inner.contains(f))
+        .or(comp.frames.first());
+    let mut depth: BTreeMap<&str, usize> = BTreeMap::new();
+    let mut queue: std::collections::VecDeque<&str> =
+        root.map(String::as_str).into_iter().collect();
+    if let Some(r) = root {
+        depth.insert(r, 0);
+    }
+    while let Some(f) = queue.pop_front() {
+        let d = depth[f];
+        for (a, c) in comp.edges.keys() {
+            let next = if a == f {
+                c
+            } else if c == f {
+                a
+            } else {
+                continue;
+            };
+            if !depth.contains_key(next.as_str()) {
+                depth.insert(next, d + 1);
+                queue.push_back(next);
+            }
+        }
+    }
+    let at = |f: &String| depth.get(f.as_str()).copied().unwrap_or(usize::MAX);
+    let mut edges: Vec<_> = comp.edges.iter().collect();
+    edges.sort_by_key(|((a, c), _)| at(a).min(at(c)));
+    edges
 }
 
 /// `:load FILE`: runs a script into the session, stopping at its first
