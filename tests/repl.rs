@@ -30,9 +30,11 @@ fn transcript(inputs: &[&str]) -> String {
 
 #[test]
 fn piped_session() {
+    let history =
+        std::env::temp_dir().join(format!("chasles-piped-history-{}", std::process::id()));
     let mut child = Command::new(env!("CARGO_BIN_EXE_chasles"))
         .env("NO_COLOR", "1")
-        .env("CHASLES_HISTORY", "/nonexistent/never/written")
+        .env("CHASLES_HISTORY", &history)
         .stdin(Stdio::piped())
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
@@ -65,6 +67,7 @@ T * T_cb
         String::from_utf8_lossy(&out.stderr)
     );
     insta::assert_snapshot!(text);
+    assert!(!history.exists(), "history is only written on a terminal");
 }
 
 #[test]

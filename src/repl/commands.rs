@@ -133,7 +133,7 @@ pub fn command(session: &mut Session, input: &str) -> Reply {
             Ok(text) => Reply::out(text),
             Err(msg) => Reply::err(msg),
         },
-        "vars" => Reply::out(vars(&session.env, session.settings.digits)),
+        "vars" => Reply::out(vars(&session.env, session.settings.text_style())),
         "frames" => frames(session, arg),
         "load" => load(session, arg),
         "reset" => {
@@ -191,7 +191,7 @@ fn type_of(ty: &Ty, val: Option<&Value>) -> String {
 
 /// `:vars`: each binding with its type and frames, and its value when
 /// that fits on a short line.
-pub fn vars(env: &Env, digits: usize) -> String {
+pub fn vars(env: &Env, style: text::Style) -> String {
     let names = env.names();
     if names.is_empty() && env.fns.is_empty() {
         return "no bindings yet (bind one with `name = expr`)".into();
@@ -205,7 +205,7 @@ pub fn vars(env: &Env, digits: usize) -> String {
         if b.symbolic {
             row.push_str("  (given)");
         } else if let Some(v) = &b.val {
-            let shown = text::inline(v, digits);
+            let shown = text::inline(v, style);
             if shown.chars().count() <= 48 && !matches!(v, Value::Func(_)) {
                 row.push_str(&format!(" = {shown}"));
             }
