@@ -129,6 +129,7 @@ fn run_sources(sources: &[(String, String)], mode: Mode, opts: &Opts) -> i32 {
         frames: opts.frames,
         digits: opts.digits as usize,
         json: opts.json,
+        ..Settings::default()
     };
     let mut session = Session::new(settings);
     let stdout = std::io::stdout();
@@ -227,6 +228,7 @@ pub fn main_with_args(args: Vec<String>) -> i32 {
                     frames: cli.opts.frames,
                     digits: cli.opts.digits as usize,
                     json: cli.opts.json,
+                    ..Settings::default()
                 })
             } else {
                 match load(&["-".to_string()]) {

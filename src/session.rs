@@ -15,6 +15,9 @@ pub struct Settings {
     /// Decimals in text output (LANGUAGE.md §10).
     pub digits: usize,
     pub json: bool,
+    /// Print values near simple closed forms as `1/√2`, `π/6` (the REPL's
+    /// `:exact`; text output only).
+    pub exact: bool,
 }
 
 impl Default for Settings {
@@ -23,6 +26,17 @@ impl Default for Settings {
             frames: FrameMode::Strict,
             digits: 4,
             json: false,
+            exact: false,
+        }
+    }
+}
+
+impl Settings {
+    /// How text output prints numbers under these settings.
+    pub fn text_style(&self) -> text::Style {
+        text::Style {
+            digits: self.digits,
+            exact: self.exact,
         }
     }
 }
@@ -40,7 +54,7 @@ impl Report {
     /// What goes to stdout: the value text or JSON line (empty if nothing).
     pub fn stdout(&self, settings: &Settings, src: &str) -> String {
         match (&self.result, settings.json) {
-            (Ok(o), false) => text::show_outcome(o, settings.digits),
+            (Ok(o), false) => text::show_outcome(o, settings.text_style()),
             (Ok(o), true) => json::outcome(o, self.line)
                 .map(|j| j.to_string())
                 .unwrap_or_default(),

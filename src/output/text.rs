@@ -7,14 +7,43 @@ use crate::check::ty::{Kind, Ty};
 use crate::eval::interp::Outcome;
 use crate::eval::value::Value;
 
-/// A value on one line: `2`, `(1, 2, 3)`, `[1, 2; 3, 4]`.
-pub fn inline(v: &Value, digits: usize) -> String {
-    match v {
-        Value::Num { m, .. } if m.len() == 1 && m.ncols() == 1 && m.nrows() == 1 => {
-            fmt_num(m[0], digits)
+/// How numbers print: `digits` decimals (trailing zeros trimmed), or with
+/// `exact`, a closed form such as `1/√2` or `π/6` where one is within
+/// 1e-12 (the REPL's `:exact`). A plain `usize` converts to decimals only.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Style {
+    /// Decimals.
+    pub digits: usize,
+    /// Print simple closed forms (`√3/2`, `-π/2`) instead of decimals.
+    pub exact: bool,
+}
+
+impl Style {
+    /// One number in this style.
+    pub fn num(self, x: f64) -> String {
+        self.exact
+            .then(|| super::exact::closed_form(x))
+            .flatten()
+            .unwrap_or_else(|| fmt_num(x, self.digits))
+    }
+}
+
+impl From<usize> for Style {
+    fn from(digits: usize) -> Style {
+        Style {
+            digits,
+            exact: false,
         }
+    }
+}
+
+/// A value on one line: `2`, `(1, 2, 3)`, `[1, 2; 3, 4]`.
+pub fn inline(v: &Value, style: impl Into<Style>) -> String {
+    let style = style.into();
+    match v {
+        Value::Num { m, .. } if m.len() == 1 && m.ncols() == 1 && m.nrows() == 1 => style.num(m[0]),
         Value::Num { m, .. } if m.ncols() == 1 => {
-            let xs: Vec<String> = m.iter().map(|x| fmt_num(*x, digits)).collect();
+            let xs: Vec<String> = m.iter().map(|x| style.num(*x)).collect();
             format!("({})", xs.join(", "))
         }
         Value::Num { m, .. } => {
@@ -22,7 +51,7 @@ pub fn inline(v: &Value, digits: usize) -> String {
                 .row_iter()
                 .map(|r| {
                     r.iter()
-                        .map(|x| fmt_num(*x, digits))
+                        .map(|x| style.num(*x))
                         .collect::<Vec<_>>()
                         .join(", ")
                 })
@@ -31,7 +60,7 @@ pub fn inline(v: &Value, digits: usize) -> String {
         }
         Value::Bool(b) => b.to_string(),
         Value::Tuple(vs) => {
-            let xs: Vec<String> = vs.iter().map(|x| inline(x, digits)).collect();
+            let xs: Vec<String> = vs.iter().map(|x| inline(x, style)).collect();
             format!("({})", xs.join(", "))
         }
         Value::Mech(m) => format!("mech < {} >", m.joints_text()),
@@ -42,10 +71,11 @@ pub fn inline(v: &Value, digits: usize) -> String {
 
 /// A matrix in aligned columns, decimal points lined up, one row per line;
 /// `indent` is the column where the `[` stands.
-pub fn matrix_block(m: &nalgebra::DMatrix<f64>, digits: usize, indent: usize) -> String {
+pub fn matrix_block(m: &nalgebra::DMatrix<f64>, style: impl Into<Style>, indent: usize) -> String {
+    let style = style.into();
     let cells: Vec<Vec<String>> = m
         .row_iter()
-        .map(|r| r.iter().map(|x| fmt_num(*x, digits)).collect())
+        .map(|r| r.iter().map(|x| style.num(*x)).collect())
         .collect();
     let ncols = m.ncols();
     let split = |s: &str| -> (String, String) {
@@ -106,7 +136,8 @@ pub fn type_label(ty: &Ty, val: Option<&Value>) -> String {
 }
 
 /// One value with its label, after `prefix` (e.g. `T_ac = `).
-pub fn show_value(prefix: &str, ty: &Ty, v: &Value, digits: usize) -> String {
+pub fn show_value(prefix: &str, ty: &Ty, v: &Value, style: impl Into<Style>) -> String {
+    let style = style.into();
     let label = type_label(ty, Some(v));
     let tail = if label.is_empty() {
         String::new()
@@ -116,7 +147,7 @@ pub fn show_value(prefix: &str, ty: &Ty, v: &Value, digits: usize) -> String {
     match v {
         Value::Num { m, .. } if m.ncols() > 1 => {
             let indent = prefix.chars().count();
-            format!("{prefix}{}{tail}", matrix_block(m, digits, indent))
+            format!("{prefix}{}{tail}", matrix_block(m, style, indent))
         }
         Value::Mech(mech) => {
             let body = mech.to_string();
@@ -126,12 +157,13 @@ pub fn show_value(prefix: &str, ty: &Ty, v: &Value, digits: usize) -> String {
                 format!("{}\n{body}", prefix.trim_end())
             }
         }
-        _ => format!("{prefix}{}{tail}", inline(v, digits)),
+        _ => format!("{prefix}{}{tail}", inline(v, style)),
     }
 }
 
 /// The text printed for a statement's outcome (empty when it prints nothing).
-pub fn show_outcome(o: &Outcome, digits: usize) -> String {
+pub fn show_outcome(o: &Outcome, style: impl Into<Style>) -> String {
+    let style = style.into();
     if !o.prints {
         return String::new();
     }
@@ -155,12 +187,12 @@ pub fn show_outcome(o: &Outcome, digits: usize) -> String {
         (0, Value::Tuple(items)) => {
             let parts: Vec<String> = items
                 .iter()
-                .map(|x| show_value("", &Ty::plain(x.kind()), x, digits))
+                .map(|x| show_value("", &Ty::plain(x.kind()), x, style))
                 .collect();
             out.push_str(&parts.join("\n"));
         }
-        (0, _) => out.push_str(&show_value("", &o.ty, v, digits)),
-        (1, _) => out.push_str(&show_value(&format!("{} = ", o.names[0]), &o.ty, v, digits)),
+        (0, _) => out.push_str(&show_value("", &o.ty, v, style)),
+        (1, _) => out.push_str(&show_value(&format!("{} = ", o.names[0]), &o.ty, v, style)),
         (_, Value::Tuple(items)) => {
             let kinds = match &o.ty.kind {
                 Kind::Tuple(ks) => ks.clone(),
@@ -173,12 +205,12 @@ pub fn show_outcome(o: &Outcome, digits: usize) -> String {
                 .enumerate()
                 .map(|(i, (n, x))| {
                     let _ = kinds.get(i);
-                    show_value(&format!("{n} = "), &Ty::plain(x.kind()), x, digits)
+                    show_value(&format!("{n} = "), &Ty::plain(x.kind()), x, style)
                 })
                 .collect();
             out.push_str(&parts.join("\n"));
         }
-        _ => out.push_str(&show_value("", &o.ty, v, digits)),
+        _ => out.push_str(&show_value("", &o.ty, v, style)),
     }
     out
 }

@@ -1,36 +1,127 @@
 //! The interactive session (LANGUAGE.md §11).
+//!
+//! Everything but the line editor lives in the library and is tested
+//! without a terminal: [`commands`] runs an input (statements or a `:`
+//! command), [`help`] answers `:help` from the builtin table, [`complete`]
+//! computes Tab completions and hints. `editor` adapts those to rustyline;
+//! [`run_terminal`] is the loop, with persistent history.
 
-use crate::eval::env::Mode;
+pub mod commands;
+pub mod complete;
+mod editor;
+pub mod help;
+
+use std::io::{IsTerminal, Write};
+use std::path::PathBuf;
+
+use rustyline::error::ReadlineError;
+use rustyline::history::DefaultHistory;
+use rustyline::{ColorMode, CompletionType, Config, Editor};
+
 use crate::session::{Session, Settings};
+use editor::ReplHelper;
 
-/// Runs the REPL on a terminal; returns the exit code.
+/// The prompt.
+pub const PROMPT: &str = ">>> ";
+
+/// Where history is kept: `$CHASLES_HISTORY` if set and not empty, else
+/// `chasles/history.txt` in the user's data directory.
+pub fn history_path() -> Option<PathBuf> {
+    match std::env::var_os("CHASLES_HISTORY") {
+        Some(p) if !p.is_empty() => Some(PathBuf::from(p)),
+        _ => dirs::data_dir().map(|d| d.join("chasles").join("history.txt")),
+    }
+}
+
+/// Colours only on a terminal, and never with `NO_COLOR` set.
+pub fn colour_enabled() -> bool {
+    std::io::stdout().is_terminal() && std::env::var_os("NO_COLOR").is_none()
+}
+
+/// The line shown when the REPL starts.
+pub fn banner() -> String {
+    format!(
+        "chasles {} — rigid-body motion as in Modern Robotics, ch. 2–3\n\
+         :help for help, Tab completes, Ctrl-D quits",
+        env!("CARGO_PKG_VERSION")
+    )
+}
+
+/// Runs the REPL on a terminal; returns the exit code (0 on Ctrl-D or
+/// `:quit`).
 pub fn run_terminal(settings: &Settings) -> i32 {
-    let mut session = Session::new(*settings);
-    let mut rl = match rustyline::DefaultEditor::new() {
+    let mut session = Session::new(Settings {
+        json: false,
+        ..*settings
+    });
+    let colour = colour_enabled();
+    let config = Config::builder()
+        .completion_type(CompletionType::List)
+        .completion_show_all_if_ambiguous(true)
+        .auto_add_history(false)
+        .color_mode(if colour {
+            ColorMode::Enabled
+        } else {
+            ColorMode::Disabled
+        })
+        .build();
+    let mut rl: Editor<ReplHelper, DefaultHistory> = match Editor::with_config(config) {
         Ok(rl) => rl,
         Err(e) => {
             eprintln!("chasles: cannot start the line editor: {e}");
             return 2;
         }
     };
-    let mut pending = String::new();
+    rl.set_helper(Some(ReplHelper {
+        session: session.clone(),
+        colour,
+    }));
+    let history = history_path();
+    if let Some(path) = &history {
+        let _ = rl.load_history(path);
+    }
+    println!("{}", banner());
     loop {
-        let prompt = if pending.is_empty() { ">>> " } else { "... " };
-        match rl.readline(prompt) {
-            Ok(line) => {
-                pending.push_str(&line);
-                pending.push('\n');
-                if crate::syntax::needs_more_input(&pending) {
+        match rl.readline(PROMPT) {
+            Ok(input) => {
+                if input.trim().is_empty() {
                     continue;
                 }
-                let src = std::mem::take(&mut pending);
-                let _ = rl.add_history_entry(src.trim_end());
-                let (out, err, _) = session.run_to_strings("<input>", &src, Mode::Run, true);
-                print!("{out}");
-                eprint!("{err}");
+                let _ = rl.add_history_entry(input.trim_end());
+                save_history(&mut rl, history.as_ref());
+                let reply = commands::execute(&mut session, &input);
+                let mut out = std::io::stdout().lock();
+                let _ = out.write_all(reply.out.as_bytes());
+                let _ = out.flush();
+                drop(out);
+                let _ = std::io::stderr().write_all(reply.err.as_bytes());
+                if reply.quit {
+                    break;
+                }
+                if let Some(h) = rl.helper_mut() {
+                    h.session = session.clone();
+                }
             }
-            Err(rustyline::error::ReadlineError::Interrupted) => pending.clear(),
-            Err(_) => return 0,
+            // Ctrl-C: the line is dropped; start a fresh one.
+            Err(ReadlineError::Interrupted) => continue,
+            // Ctrl-D on an empty line.
+            Err(ReadlineError::Eof) => break,
+            Err(e) => {
+                eprintln!("chasles: cannot read the terminal: {e}");
+                break;
+            }
         }
     }
+    save_history(&mut rl, history.as_ref());
+    0
+}
+
+/// Appends the new history entries to the history file (creating its
+/// directory); a failure is silent — history is a convenience.
+fn save_history(rl: &mut Editor<ReplHelper, DefaultHistory>, path: Option<&PathBuf>) {
+    let Some(path) = path else { return };
+    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+        let _ = std::fs::create_dir_all(dir);
+    }
+    let _ = rl.append_history(path);
 }

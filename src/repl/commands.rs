@@ -1,0 +1,442 @@
+//! One REPL input, as the library sees it (no line editor here, so every
+//! command is testable without a terminal): statements run in the session
+//! — a failing statement binds nothing — and `:` commands (LANGUAGE.md §11)
+//! inspect or change it.
+
+use std::collections::BTreeMap;
+
+use super::help;
+use crate::check::ty::{Frames, Ty};
+use crate::diagnostics::suggest::did_you_mean;
+use crate::eval::env::{Env, FrameMode, Mode};
+use crate::eval::value::Value;
+use crate::output::text;
+use crate::session::Session;
+
+/// One `:` command for help and completion.
+#[derive(Debug, Clone, Copy)]
+pub struct Command {
+    /// The name without the colon.
+    pub name: &'static str,
+    /// The arguments, as a synopsis (`[N]`, `FILE`).
+    pub args: &'static str,
+    /// One line of meaning.
+    pub doc: &'static str,
+}
+
+/// Every `:` command, in help order.
+pub const COMMANDS: &[Command] = &[
+    Command {
+        name: "help",
+        args: "[name]",
+        doc: "topics and functions by area; one function's signature and example",
+    },
+    Command {
+        name: "vars",
+        args: "",
+        doc: "the bindings with their types and frames",
+    },
+    Command {
+        name: "frames",
+        args: "[strict|warn|off]",
+        doc: "the graph of known frames, or set frame checking",
+    },
+    Command {
+        name: "load",
+        args: "FILE",
+        doc: "run a script into this session",
+    },
+    Command {
+        name: "reset",
+        args: "",
+        doc: "forget every binding",
+    },
+    Command {
+        name: "digits",
+        args: "[N]",
+        doc: "decimals in text output (0 to 17; default 4)",
+    },
+    Command {
+        name: "exact",
+        args: "[on|off]",
+        doc: "toggle closed forms: 1/√2, √3/2, π/6 instead of decimals",
+    },
+    Command {
+        name: "quit",
+        args: "",
+        doc: "leave the REPL (also Ctrl-D)",
+    },
+];
+
+/// What one input produced: text for stdout and stderr, and whether the
+/// REPL should end.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct Reply {
+    /// For stdout (each line ends in a newline).
+    pub out: String,
+    /// For stderr: errors and warnings.
+    pub err: String,
+    /// True after `:quit`.
+    pub quit: bool,
+}
+
+impl Reply {
+    fn out(text: impl Into<String>) -> Reply {
+        Reply {
+            out: line(text.into()),
+            ..Reply::default()
+        }
+    }
+    fn err(text: impl Into<String>) -> Reply {
+        Reply {
+            err: line(text.into()),
+            ..Reply::default()
+        }
+    }
+}
+
+fn line(mut s: String) -> String {
+    if !s.is_empty() && !s.ends_with('\n') {
+        s.push('\n');
+    }
+    s
+}
+
+/// Whether `input` is a `:` command rather than statements.
+pub fn is_command(input: &str) -> bool {
+    input.trim_start().starts_with(':')
+}
+
+/// Runs one REPL input: a `:` command, or statements (stopping at the
+/// first error; what failed binds nothing, so earlier bindings survive).
+pub fn execute(session: &mut Session, input: &str) -> Reply {
+    if is_command(input) {
+        return command(session, input.trim());
+    }
+    let (out, err, _) = session.run_to_strings("<input>", input, Mode::Run, false);
+    Reply {
+        out,
+        err,
+        quit: false,
+    }
+}
+
+/// Runs one `:` command (`input` starts with `:`).
+pub fn command(session: &mut Session, input: &str) -> Reply {
+    let body = input.trim().trim_start_matches(':');
+    let (name, arg) = match body.split_once(char::is_whitespace) {
+        Some((n, a)) => (n, a.trim()),
+        None => (body, ""),
+    };
+    match name {
+        "help" | "h" | "?" => match help::help(arg, &session.settings) {
+            Ok(text) => Reply::out(text),
+            Err(msg) => Reply::err(msg),
+        },
+        "vars" => Reply::out(vars(&session.env, session.settings.text_style())),
+        "frames" => frames(session, arg),
+        "load" => load(session, arg),
+        "reset" => {
+            session.env = Env::default();
+            Reply::out("bindings cleared")
+        }
+        "digits" => digits(session, arg),
+        "exact" => exact(session, arg),
+        "quit" | "q" | "exit" => Reply {
+            quit: true,
+            ..Reply::default()
+        },
+        "" => Reply::err("a command name must follow ':' (:help lists them)"),
+        _ => {
+            let mut msg = format!("unknown command ':{name}'");
+            if let Some(s) = suggest_command(name) {
+                msg.push_str(&format!("; did you mean ':{s}'?"));
+            }
+            msg.push_str(" (:help lists the commands)");
+            Reply::err(msg)
+        }
+    }
+}
+
+/// The command closest to a mistyped `name`: by edit distance, then two
+/// swapped letters (`hepl`), then a unique prefix (`:dig`).
+pub fn suggest_command(name: &str) -> Option<&'static str> {
+    let names: Vec<&str> = COMMANDS.iter().map(|c| c.name).collect();
+    if let Some(s) = did_you_mean(name, &names) {
+        return Some(s);
+    }
+    let sorted = |s: &str| {
+        let mut v: Vec<char> = s.to_lowercase().chars().collect();
+        v.sort_unstable();
+        v
+    };
+    if let Some(s) = names.iter().find(|n| sorted(n) == sorted(name)) {
+        return Some(s);
+    }
+    let mut prefixed = names.iter().filter(|n| n.starts_with(name));
+    match (prefixed.next(), prefixed.next()) {
+        (Some(s), None) if !name.is_empty() => Some(s),
+        _ => None,
+    }
+}
+
+/// The type and frames of a binding as `:vars` shows them.
+fn type_of(ty: &Ty, val: Option<&Value>) -> String {
+    let kind = match val {
+        Some(Value::Sym(_)) | None => ty.kind.clone(),
+        Some(v) => v.kind(),
+    };
+    Ty::new(kind, ty.frames.clone()).to_string()
+}
+
+/// `:vars`: each binding with its type and frames, and its value when
+/// that fits on a short line.
+pub fn vars(env: &Env, style: text::Style) -> String {
+    let names = env.names();
+    if names.is_empty() && env.fns.is_empty() {
+        return "no bindings yet (bind one with `name = expr`)".into();
+    }
+    let width = names.iter().map(|n| n.chars().count()).max().unwrap_or(0);
+    let mut out = String::new();
+    for name in names {
+        let b = &env.vars[name];
+        let pad = " ".repeat(width - name.chars().count());
+        let mut row = format!("{name}{pad} : {}", type_of(&b.ty, b.val.as_ref()));
+        if b.symbolic {
+            row.push_str("  (given)");
+        } else if let Some(v) = &b.val {
+            let shown = text::inline(v, style);
+            if shown.chars().count() <= 48 && !matches!(v, Value::Func(_)) {
+                row.push_str(&format!(" = {shown}"));
+            }
+        }
+        out.push_str(row.trim_end());
+        out.push('\n');
+    }
+    let mut fns: Vec<_> = env
+        .fns
+        .values()
+        .filter(|f| !env.vars.contains_key(&f.name))
+        .collect();
+    fns.sort_by(|a, b| a.name.cmp(&b.name));
+    for f in fns {
+        out.push_str(&format!("{}({}) : function\n", f.name, f.params.join(", ")));
+    }
+    out.trim_end().to_string()
+}
+
+/// `:frames` with no argument shows the graph; with `strict|warn|off` it
+/// sets frame checking.
+fn frames(session: &mut Session, arg: &str) -> Reply {
+    if arg.is_empty() {
+        return Reply::out(frame_graph(&session.env, session.settings.frames));
+    }
+    match FrameMode::parse(arg) {
+        Some(mode) => {
+            session.settings.frames = mode;
+            Reply::out(format!("frame checking: {}", mode.as_str()))
+        }
+        None => Reply::err(format!(
+            "':frames {arg}': expected strict, warn or off (or nothing, to show the frame graph)"
+        )),
+    }
+}
+
+/// A component of the frame graph: its frames, its edges (frame pair →
+/// names of the transforms joining them) and the quantities per frame.
+#[derive(Default)]
+struct Component {
+    frames: Vec<String>,
+    edges: BTreeMap<(String, String), Vec<String>>,
+    quantities: BTreeMap<String, Vec<String>>,
+}
+
+/// `:frames`: which frames the known rotations and transforms connect,
+/// one connected component at a time, plus the vectors expressed in each
+/// frame. `ans` is left out (it repeats a named value).
+pub fn frame_graph(env: &Env, mode: FrameMode) -> String {
+    let mut edges: Vec<(String, String, String)> = Vec::new();
+    let mut singles: Vec<(String, String)> = Vec::new();
+    for name in env.names() {
+        if name == "ans" {
+            continue;
+        }
+        let b = &env.vars[name];
+        match &b.ty.frames {
+            Frames::Pair(a, c) if a != c => {
+                edges.push((a.to_string(), c.to_string(), name.clone()));
+            }
+            Frames::Pair(a, _) => singles.push((a.to_string(), name.clone())),
+            Frames::One(a) | Frames::Disp(a) => singles.push((a.to_string(), name.clone())),
+            _ => {}
+        }
+    }
+    let mut all: Vec<String> = edges
+        .iter()
+        .flat_map(|(a, c, _)| [a.clone(), c.clone()])
+        .chain(singles.iter().map(|(a, _)| a.clone()))
+        .collect();
+    all.sort();
+    all.dedup();
+    if all.is_empty() {
+        return format!(
+            "no framed values yet (name them like T_ab = …, p_s = …)\nframe checking: {}",
+            mode.as_str()
+        );
+    }
+    // Union-find over frame indices.
+    let index = |f: &str| all.binary_search_by(|x| x.as_str().cmp(f)).unwrap_or(0);
+    let mut parent: Vec<usize> = (0..all.len()).collect();
+    fn root(parent: &mut [usize], mut i: usize) -> usize {
+        while parent[i] != i {
+            parent[i] = parent[parent[i]];
+            i = parent[i];
+        }
+        i
+    }
+    for (a, c, _) in &edges {
+        let (ra, rc) = (root(&mut parent, index(a)), root(&mut parent, index(c)));
+        parent[ra.max(rc)] = ra.min(rc);
+    }
+    let mut comps: BTreeMap<usize, Component> = BTreeMap::new();
+    for (i, f) in all.iter().enumerate() {
+        let r = root(&mut parent, i);
+        comps.entry(r).or_default().frames.push(f.clone());
+    }
+    for (a, c, name) in edges {
+        let r = root(&mut parent, index(&a));
+        let comp = comps.entry(r).or_default();
+        // One line per pair of frames, in the direction first seen.
+        let key = if comp.edges.contains_key(&(c.clone(), a.clone())) {
+            (c, a)
+        } else {
+            (a, c)
+        };
+        comp.edges.entry(key).or_default().push(name);
+    }
+    for (a, name) in singles {
+        let r = root(&mut parent, index(&a));
+        comps
+            .entry(r)
+            .or_default()
+            .quantities
+            .entry(a)
+            .or_default()
+            .push(name);
+    }
+    let mut out = String::new();
+    for comp in comps.values() {
+        let braced: Vec<String> = comp.frames.iter().map(|f| format!("{{{f}}}")).collect();
+        out.push_str(&format!("frames {}\n", braced.join(", ")));
+        for ((a, c), names) in chain_order(comp) {
+            out.push_str(&format!("  {{{a}}} — {{{c}}}  ({})\n", names.join(", ")));
+        }
+        for (f, names) in &comp.quantities {
+            out.push_str(&format!("  in {{{f}}}: {}\n", names.join(", ")));
+        }
+    }
+    out.push_str(&format!("frame checking: {}", mode.as_str()));
+    out
+}
+
+/// The edges of a component in the order a walk from its root meets
+/// them: the root is the first frame that is never an inner frame (the
+/// space frame {s} of T_sb, T_sc), so chains read from the outside in.
+fn chain_order(comp: &Component) -> Vec<(&(String, String), &Vec<String>)> {
+    let inner: Vec<&String> = comp.edges.keys().map(|(_, c)| c).collect();
+    let root = comp
+        .frames
+        .iter()
+        .find(|f| !inner.contains(f))
+        .or(comp.frames.first());
+    let mut depth: BTreeMap<&str, usize> = BTreeMap::new();
+    let mut queue: std::collections::VecDeque<&str> =
+        root.map(String::as_str).into_iter().collect();
+    if let Some(r) = root {
+        depth.insert(r, 0);
+    }
+    while let Some(f) = queue.pop_front() {
+        let d = depth[f];
+        for (a, c) in comp.edges.keys() {
+            let next = if a == f {
+                c
+            } else if c == f {
+                a
+            } else {
+                continue;
+            };
+            if !depth.contains_key(next.as_str()) {
+                depth.insert(next, d + 1);
+                queue.push_back(next);
+            }
+        }
+    }
+    let at = |f: &String| depth.get(f.as_str()).copied().unwrap_or(usize::MAX);
+    let mut edges: Vec<_> = comp.edges.iter().collect();
+    edges.sort_by_key(|((a, c), _)| at(a).min(at(c)));
+    edges
+}
+
+/// `:load FILE`: runs a script into the session, stopping at its first
+/// error (what ran before the error stays bound).
+fn load(session: &mut Session, arg: &str) -> Reply {
+    let path = arg.trim().trim_matches(|c| c == '"' || c == '\'');
+    if path.is_empty() {
+        return Reply::err(":load needs a file name, e.g. :load examples/ch3_ex3_2_camera.chs");
+    }
+    let path = match (path.strip_prefix("~/"), dirs::home_dir()) {
+        (Some(rest), Some(home)) => home.join(rest).to_string_lossy().into_owned(),
+        _ => path.to_string(),
+    };
+    let src = match crate::cli::read_source(&path) {
+        Ok(s) => s,
+        Err(msg) => return Reply::err(format!(":load: {msg}")),
+    };
+    let (out, mut err, errors) = session.run_to_strings(&path, &src, Mode::Run, false);
+    let mut reply = Reply {
+        out,
+        err: String::new(),
+        quit: false,
+    };
+    if errors == 0 {
+        reply.out.push_str(&format!("loaded {path}\n"));
+    } else {
+        err.push_str(&format!(
+            "{path}: stopped at the error; the statements before it stay bound\n"
+        ));
+    }
+    reply.err = err;
+    reply
+}
+
+/// `:digits [N]`.
+fn digits(session: &mut Session, arg: &str) -> Reply {
+    if arg.is_empty() {
+        return Reply::out(format!("digits: {}", session.settings.digits));
+    }
+    match arg.parse::<usize>() {
+        Ok(n) if n <= 17 => {
+            session.settings.digits = n;
+            Reply::out(format!("digits: {n}"))
+        }
+        _ => Reply::err(format!(
+            "':digits {arg}': expected a whole number from 0 to 17"
+        )),
+    }
+}
+
+/// `:exact [on|off]`: toggles (or sets) closed-form printing.
+fn exact(session: &mut Session, arg: &str) -> Reply {
+    let on = match arg {
+        "" => !session.settings.exact,
+        "on" => true,
+        "off" => false,
+        _ => return Reply::err(format!("':exact {arg}': expected on, off or nothing")),
+    };
+    session.settings.exact = on;
+    Reply::out(if on {
+        "exact: on (values within 1e-12 of forms like 1/√2, √3/2, π/6 print as those)"
+    } else {
+        "exact: off"
+    })
+}

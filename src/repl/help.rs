@@ -1,0 +1,224 @@
+//! `:help` (LANGUAGE.md §11), generated from the one builtin table: the
+//! overview lists the topics and every function by area; `:help NAME`
+//! gives a function's signature, meaning, book section and example, with
+//! the example's result.
+
+use super::commands::COMMANDS;
+use crate::builtins::{self, Area, Builtin};
+use crate::diagnostics::suggest::did_you_mean;
+use crate::eval::env::Mode;
+use crate::session::{Session, Settings};
+
+/// Help topics other than functions: (name, text).
+pub const TOPICS: &[(&str, &str)] = &[
+    (
+        "syntax",
+        "\
+statements end at a newline or `;`; a newline inside ( ) or [ ] continues
+  x = 2 pi / 3              bind a name (juxtaposition multiplies)
+  (1, 2, 3)   [1, 2, 3]     column vectors
+  [1, 0; 0, 1]              a matrix; rows split by `;` or newline
+  [R, p; 0, 0, 0, 1]        block matrices, as in MATLAB
+  [w]   [V]                 the book's bracket: so(3), se(3)
+  30 deg   30°   pi   π     angles in radians
+  T.R  T.p  V.w  V.v  M.T   parts of a transform or twist; transpose
+  M[1, 2]  M[:, 1]  v[3]    1-based indexing, as in the book
+  (w, th) = AxisAng3(v)     destructure a tuple
+  f(x) = x^2                a user function
+  ans                       the last result",
+    ),
+    (
+        "frames",
+        "\
+a name's subscript gives its frames: T_sb is {s}←{b}, p_b and V_s one frame
+  T_ab * T_bc  → {a}←{c}     inner frames must cancel, else a frame error
+  inv(T_ab), T_ab.T → {b}←{a}
+  Ad(T_ab) * V_b → V_a      Ad(T_ab).T * F_a → F_b (wrenches, Prop. 3.17)
+  exp([S_s] θ) * T_sb       a displacement in {s}: {s}←{b'}
+  untag(x)                  drop the frames of a value
+  derive T_ce               find a chain of known transforms from {c} to {e}
+:frames shows the graph of known transforms; :frames strict|warn|off sets
+whether a mismatch is an error, a warning, or ignored",
+    ),
+    (
+        "symbols",
+        "\
+given T_ab, T_bc : SE3      symbols with a type and frames but no numbers
+  types: scalar vec3 vec6 SO3 SE3 SO2 SE2 so3 se3 twist screw wrench
+  T_ab * T_bc               → T_ab T_bc : SE(3) {a}←{c}, checked like numbers
+  inv(T_ab) * T_ab          → I
+binding numbers later makes them numeric",
+    ),
+];
+
+/// The syntax of mechanisms, shown with `:help mechanisms`.
+const MECH_SYNTAX: &str = "\
+mech < links 4; joints 4R; planar >        Grübler's formula, step by step
+mech < links 8; joints 8R P; planar >      8R = eight R joints
+mech < legs 6 UPS; spatial >               a parallel mechanism
+  joints R P H (f = 1), C U (f = 2), S (f = 3); planar, spherical, spatial
+dof(m) gives the number";
+
+/// The whole `:help` answer for `arg` (trimmed); Err is the message for
+/// an unknown name, with a did-you-mean.
+pub fn help(arg: &str, settings: &Settings) -> Result<String, String> {
+    let arg = arg.trim();
+    if arg.is_empty() {
+        return Ok(overview());
+    }
+    if let Some(b) = builtins::lookup(arg) {
+        return Ok(function(b, settings));
+    }
+    if let Some((_, text)) = TOPICS.iter().find(|(t, _)| *t == arg) {
+        return Ok(text.to_string());
+    }
+    if let Some(area) = area_named(arg) {
+        return Ok(area_listing(area));
+    }
+    let bare = arg.trim_start_matches(':');
+    if let Some(c) = COMMANDS.iter().find(|c| c.name == bare) {
+        let head = format!(":{} {}", c.name, c.args);
+        return Ok(format!("{}\n  {}", head.trim_end(), c.doc));
+    }
+    let mut names = builtins::all_names();
+    names.extend(TOPICS.iter().map(|(t, _)| *t));
+    names.extend(COMMANDS.iter().map(|c| c.name));
+    let mut msg = format!("no help for '{arg}'");
+    if let Some(s) = did_you_mean(bare, &names) {
+        msg.push_str(&format!("; did you mean '{s}'?"));
+    }
+    msg.push_str(" (:help lists everything)");
+    Err(msg)
+}
+
+/// The overview: commands, topics, then every function by area.
+fn overview() -> String {
+    let mut out = String::from("commands:\n");
+    for c in COMMANDS {
+        let head = format!(":{} {}", c.name, c.args);
+        out.push_str(&format!("  {:<27}{}\n", head.trim_end(), c.doc));
+    }
+    let topics: Vec<&str> = TOPICS.iter().map(|(t, _)| *t).collect();
+    out.push_str(&format!("topics: :help {}\n", topics.join(" | ")));
+    out.push_str("functions by area (:help NAME for one, :help AREA for an area):\n");
+    for area in Area::ALL {
+        let names: Vec<&str> = in_area(area).map(|b| b.name).collect();
+        if names.is_empty() {
+            continue;
+        }
+        out.push_str(&format!("  {} — {}\n", area_key(area), area.title()));
+        out.push_str(&wrap(&names, "    ", 78));
+    }
+    out.trim_end().to_string()
+}
+
+/// The functions of one area with their one-line meanings.
+fn area_listing(area: Area) -> String {
+    let mut out = format!("{}\n", area.title());
+    if area == Area::Mechanisms {
+        out.push_str(MECH_SYNTAX);
+        out.push('\n');
+    }
+    let items: Vec<&Builtin> = in_area(area).collect();
+    let width = items.iter().map(|b| b.name.len()).max().unwrap_or(0);
+    for b in items {
+        out.push_str(&format!("  {:<width$}  {}\n", b.name, b.doc));
+    }
+    out.trim_end().to_string()
+}
+
+/// One function: signature and section, meaning, aliases, example and
+/// the example's result (run in a fresh session with these settings).
+pub fn function(b: &Builtin, settings: &Settings) -> String {
+    let mut out = b.signature.to_string();
+    if !b.section.is_empty() && b.section != "—" {
+        out.push_str(&format!("    {}", b.section));
+    }
+    out.push_str(&format!("\n  {}", b.doc));
+    if !b.aliases.is_empty() {
+        out.push_str(&format!("\n  also: {}", b.aliases.join(", ")));
+    }
+    if !b.example.is_empty() {
+        out.push_str(&format!("\n  example: {}", b.example));
+        let mut fresh = Session::new(Settings {
+            json: false,
+            ..*settings
+        });
+        let (res, _, errors) = fresh.run_to_strings("<example>", b.example, Mode::Run, false);
+        if errors == 0 && !res.trim().is_empty() {
+            for line in res.trim_end().lines() {
+                out.push_str(&format!("\n    {line}"));
+            }
+        }
+    }
+    out
+}
+
+/// The builtins of an area, in table order.
+fn in_area(area: Area) -> impl Iterator<Item = &'static Builtin> {
+    builtins::table()
+        .iter()
+        .filter(move |b| b.area == area && !b.name.is_empty())
+}
+
+/// The one-word name of an area for `:help AREA`.
+pub fn area_key(area: Area) -> &'static str {
+    match area {
+        Area::Rotations => "rotations",
+        Area::Transforms => "transforms",
+        Area::Twists => "twists",
+        Area::Representations => "representations",
+        Area::Tests => "tests",
+        Area::LinearAlgebra => "linear",
+        Area::Scalars => "scalars",
+        Area::Mechanisms => "mechanisms",
+    }
+}
+
+fn area_named(name: &str) -> Option<Area> {
+    Area::ALL
+        .into_iter()
+        .find(|a| area_key(*a).eq_ignore_ascii_case(name))
+}
+
+/// Words joined by spaces, wrapped at `width` columns after `indent`.
+fn wrap(words: &[&str], indent: &str, width: usize) -> String {
+    let mut out = String::new();
+    let mut line = String::from(indent);
+    for w in words {
+        if line.len() > indent.len() && line.chars().count() + 1 + w.chars().count() > width {
+            out.push_str(line.trim_end());
+            out.push('\n');
+            line = String::from(indent);
+        }
+        if line.len() > indent.len() {
+            line.push(' ');
+        }
+        line.push_str(w);
+    }
+    if line.len() > indent.len() {
+        out.push_str(&line);
+        out.push('\n');
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_area_key_is_found() {
+        for a in Area::ALL {
+            assert_eq!(area_named(area_key(a)), Some(a));
+        }
+    }
+
+    #[test]
+    fn wrap_keeps_lines_short() {
+        let words = ["alpha"; 40];
+        for line in wrap(&words, "  ", 30).lines() {
+            assert!(line.len() <= 30, "{line}");
+        }
+    }
+}
