@@ -170,6 +170,18 @@ impl Interp<'_> {
             .with_help(format!("call it: {name}(...)")));
         }
         let mut d = Diagnostic::error(ErrorKind::Name, span, format!("unknown name '{name}'"));
+        // T_cb unknown but T_bc known: the inverse is one step away.
+        if let crate::syntax::ident::NameFrames::Pair(a, b) = crate::syntax::ident::name_frames(name) {
+            let base = crate::syntax::ident::base_name(name);
+            let reversed = if name.contains('{') {
+                format!("{base}_{{{b},{a}}}")
+            } else {
+                format!("{base}_{b}{a}")
+            };
+            if self.env.get(&reversed).is_some() {
+                return Err(d.with_help(format!("{reversed} is known: {name} = inv({reversed})")));
+            }
+        }
         let mut candidates: Vec<&str> = self.env.vars.keys().map(String::as_str).collect();
         candidates.extend(builtins::all_names());
         if let Some(s) = suggest::did_you_mean(name, &candidates) {
