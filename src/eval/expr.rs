@@ -171,7 +171,9 @@ impl Interp<'_> {
         }
         let mut d = Diagnostic::error(ErrorKind::Name, span, format!("unknown name '{name}'"));
         // T_cb unknown but T_bc known: the inverse is one step away.
-        if let crate::syntax::ident::NameFrames::Pair(a, b) = crate::syntax::ident::name_frames(name) {
+        if let crate::syntax::ident::NameFrames::Pair(a, b) =
+            crate::syntax::ident::name_frames(name)
+        {
             let base = crate::syntax::ident::base_name(name);
             let reversed = if name.contains('{') {
                 format!("{base}_{{{b},{a}}}")

@@ -21,6 +21,7 @@
 
 mod joint;
 mod mechanism;
+mod report;
 
 #[cfg(test)]
 mod tests;
