@@ -5,5 +5,6 @@
 //! same pass for `chasles check` (no numbers) and `chasles run`.
 
 pub mod bind;
+mod product;
 pub mod rules;
 pub mod ty;

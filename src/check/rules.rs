@@ -13,10 +13,13 @@
 //! | `u_a + v_a`, `cross`  | same frame              | frame error                |
 //! | untagged operand      | matches anything        |                            |
 //!
-//! The functions here know only [`Ty`]s; the interpreter attaches spans and
+//! Products (`*`) live in [`super::product`] and are re-exported here as
+//! [`mul`]. The functions know only [`Ty`]s; the interpreter attaches spans and
 //! source text to the [`RuleError`]s they return.
 
-use super::ty::{Frame, Frames, Kind, Ty};
+use super::product::dims_agree;
+pub use super::product::mul;
+use super::ty::{Frames, Kind, Ty};
 use crate::diagnostics::ErrorKind;
 
 /// Why an operation is refused, with the text for each part of the
@@ -32,21 +35,21 @@ pub struct RuleError {
 }
 
 impl RuleError {
-    fn typ(message: impl Into<String>) -> RuleError {
+    pub(super) fn typ(message: impl Into<String>) -> RuleError {
         RuleError {
             kind: Some(ErrorKind::Type),
             message: message.into(),
             ..Default::default()
         }
     }
-    fn frame(message: impl Into<String>) -> RuleError {
+    pub(super) fn frame(message: impl Into<String>) -> RuleError {
         RuleError {
             kind: Some(ErrorKind::Frame),
             message: message.into(),
             ..Default::default()
         }
     }
-    fn with_help(mut self, help: impl Into<String>) -> RuleError {
+    pub(super) fn with_help(mut self, help: impl Into<String>) -> RuleError {
         self.help = Some(help.into());
         self
     }
@@ -81,294 +84,7 @@ pub fn scaled_kind(kind: &Kind) -> Kind {
     }
 }
 
-fn dims_agree(a: Option<usize>, b: Option<usize>) -> bool {
-    match (a, b) {
-        (Some(x), Some(y)) => x == y,
-        _ => true,
-    }
-}
-
-/// `l * r` (and juxtaposition): kind and frames.
-pub fn mul(l: &Ty, r: &Ty, ops: Operands) -> Result<Ty, RuleError> {
-    // Scalars scale anything and leave frames alone.
-    if l.kind == Kind::Scalar {
-        return Ok(Ty::new(scaled_kind(&r.kind), r.frames.clone()));
-    }
-    if r.kind == Kind::Scalar {
-        return Ok(Ty::new(scaled_kind(&l.kind), l.frames.clone()));
-    }
-    let kind = mul_kind(&l.kind, &r.kind, ops)?;
-    let frames = if kind.is_vector() || matches!(kind, Kind::Vector(_)) {
-        apply_frames(l, r, ops)?
-    } else {
-        compose_frames(l, r, ops)?
-    };
-    Ok(Ty::new(kind, frames))
-}
-
-fn shape_error(l: &Kind, r: &Kind) -> RuleError {
-    RuleError::typ(format!("cannot multiply {} by {}", l.a(), r.a()))
-}
-
-/// The kind of a product of two non-scalars.
-fn mul_kind(l: &Kind, r: &Kind, ops: Operands) -> Result<Kind, RuleError> {
-    use Kind::*;
-    if r.is_vector() {
-        let n = r.vec_len();
-        return match l {
-            Adjoint { transposed: false } => match r {
-                Wrench => Err(wrench_through_ad(ops)),
-                Screw => Ok(Screw),
-                _ if dims_agree(n, Some(6)) => Ok(Twist),
-                _ => Err(shape_error(l, r)),
-            },
-            Adjoint { transposed: true } => match r {
-                Twist | Screw => Err(RuleError::typ("[Ad_T]ᵀ acts on wrenches, not on twists")
-                    .with_help(format!(
-                        "twists change frame with the adjoint itself: write {} without .T",
-                        ops.lhs.trim_end_matches(".T")
-                    ))),
-                _ if dims_agree(n, Some(6)) => Ok(Wrench),
-                _ => Err(shape_error(l, r)),
-            },
-            // T p with a 3-vector p: the point transformed (homogeneous, (3.59)).
-            SE3 | Se3 | Matrix(Some(4), Some(4)) if n == Some(3) => Ok(Vector(Some(3))),
-            SE3 | Se3 if dims_agree(n, Some(4)) => Ok(Vector(Some(4))),
-            Matrix(None, _) | Matrix(_, None) => Ok(Vector(None)),
-            SE2 | Se2 if n == Some(2) => Ok(Vector(Some(2))),
-            _ => {
-                let (rows, cols) = l.shape().ok_or_else(|| shape_error(l, r))?;
-                if !dims_agree(cols, n) {
-                    return Err(shape_error(l, r).with_help(format!(
-                        "a {}-column matrix needs a {}-vector",
-                        cols.unwrap_or(0),
-                        cols.unwrap_or(0)
-                    )));
-                }
-                Ok(match (l, rows) {
-                    (Unknown, _) => Unknown,
-                    (_, rows) => Vector(rows),
-                })
-            }
-        };
-    }
-    if l.is_vector() {
-        // A column vector times a matrix: only a 1-row matrix makes sense.
-        return match r.shape() {
-            Some((Some(1), c)) => Ok(Matrix(l.vec_len(), c)),
-            _ if *r == Unknown => Ok(Unknown),
-            _ => Err(shape_error(l, r)
-                .with_help("for vectors use dot(u, v) or cross(u, v); a row is v.T")),
-        };
-    }
-    let same_group = match (l, r) {
-        (SO3, SO3) => Some(SO3),
-        (SE3, SE3) => Some(SE3),
-        (SO2, SO2) => Some(SO2),
-        (SE2, SE2) => Some(SE2),
-        (Adjoint { transposed: a }, Adjoint { transposed: b }) if a == b => Some(l.clone()),
-        _ => None,
-    };
-    if let Some(k) = same_group {
-        return Ok(k);
-    }
-    match (l.shape(), r.shape()) {
-        (Some((lr, lc)), Some((rr, rc))) => {
-            if !dims_agree(lc, rr) {
-                return Err(shape_error(l, r).with_help(format!(
-                    "inner dimensions differ: {}×{} times {}×{}",
-                    dim(lr),
-                    dim(lc),
-                    dim(rr),
-                    dim(rc)
-                )));
-            }
-            if *l == Unknown || *r == Unknown {
-                Ok(Unknown)
-            } else if lr == Some(1) && rc == Some(1) {
-                Ok(Scalar)
-            } else if rc == Some(1) {
-                Ok(Vector(lr))
-            } else {
-                Ok(Matrix(lr, rc))
-            }
-        }
-        _ => Err(shape_error(l, r)),
-    }
-}
-
-fn dim(d: Option<usize>) -> String {
-    d.map_or("n".into(), |n| n.to_string())
-}
-
-fn wrench_through_ad(ops: Operands) -> RuleError {
-    let t = ops
-        .lhs
-        .strip_prefix("Ad(")
-        .or_else(|| ops.lhs.strip_prefix("Adjoint("))
-        .and_then(|s| s.strip_suffix(')'))
-        .unwrap_or("T");
-    RuleError::frame("a wrench does not change frame through [Ad_T]")
-        .with_help(format!(
-            "Prop. 3.17: wrenches change frame with the transpose, F_b = [Ad_T_ab]ᵀ F_a; write Ad({t}).T * F"
-        ))
-}
-
-fn inner_mismatch(l: &Ty, r: &Ty, a_in: &Frame, b_out: &Frame, ops: Operands) -> RuleError {
-    let mut e = RuleError::frame("frames do not cancel");
-    e.lhs = describe(&l.frames);
-    e.rhs = describe(&r.frames);
-    e.op = format!("inner frames must agree: {a_in} ≠ {b_out}");
-    e.help = Some(product_help(l, r, ops));
-    e
-}
-
-/// The fix for a product whose inner frames differ.
-fn product_help(l: &Ty, r: &Ty, ops: Operands) -> String {
-    let rule = "X_xy maps coordinates in {y} to {x}";
-    match (&l.frames, &r.frames) {
-        (Frames::Pair(a, b), Frames::Pair(c, d)) => {
-            if b == d && a != c {
-                format!(
-                    "{rule}; did you mean inv({}) = X_{}{}?",
-                    ops.rhs.trim(),
-                    d,
-                    c
-                )
-            } else if c == a && b != d {
-                // T_sc * inv(T_sb): both from {s}.
-                let hint = displacement_hint(ops);
-                format!(
-                    "{rule}; both start in {{{a}}}: the body-frame form is inv({}) * {} = X_{}{}{}",
-                    ops.lhs.trim(),
-                    ops.rhs.trim(),
-                    b,
-                    d,
-                    hint
-                )
-            } else if d == a {
-                format!(
-                    "{rule}; the other order cancels: {} * {} = X_{}{}{}",
-                    ops.rhs.trim(),
-                    ops.lhs.trim(),
-                    c,
-                    b,
-                    displacement_hint(ops)
-                )
-            } else {
-                format!("{rule}; find a transform from {{{b}}} to {{{c}}} (try derive)")
-            }
-        }
-        (Frames::Pair(_, b), Frames::One(c)) => format!(
-            "{} takes coordinates in {{{b}}}, but the vector is in {{{c}}}; express it in {{{b}}} first",
-            ops.lhs.trim()
-        ),
-        (Frames::Disp(a), Frames::Pair(c, _)) => format!(
-            "a displacement in {{{a}}} premultiplies a transform from {{{a}}} (X_{a}?); {} starts in {{{c}}}",
-            ops.rhs.trim()
-        ),
-        (Frames::Pair(_, b), Frames::Disp(d)) => format!(
-            "a displacement in {{{d}}} postmultiplies a transform into {{{d}}} (X_?{d}); {} ends in {{{b}}}",
-            ops.lhs.trim()
-        ),
-        _ => rule.to_string(),
-    }
-}
-
-/// For `T_sc * inv(T_sb)`: name the space-frame displacement.
-fn displacement_hint(ops: Operands) -> String {
-    let r = ops.rhs.trim();
-    if let Some(inner) = r.strip_prefix("inv(").and_then(|s| s.strip_suffix(')')) {
-        format!(
-            "; the displacement in the fixed frame taking {inner} to {} is displacement({inner}, {}) = {} * inv({inner})",
-            ops.lhs.trim(),
-            ops.lhs.trim(),
-            ops.lhs.trim()
-        )
-    } else {
-        String::new()
-    }
-}
-
-/// Frames of `operator * operator`.
-fn compose_frames(l: &Ty, r: &Ty, ops: Operands) -> Result<Frames, RuleError> {
-    use Frames::*;
-    Ok(match (&l.frames, &r.frames) {
-        (None, None) => None,
-        (Pair(a, b), Pair(c, d)) => {
-            if b != c {
-                return Err(inner_mismatch(l, r, b, c, ops));
-            }
-            Pair(a.clone(), d.clone())
-        }
-        // An untagged operator is a displacement: R * R_sb = {s}←{b'}.
-        (None, Pair(a, b)) | (Pair(a, b), None) => Pair(a.clone(), b.moved()),
-        (None, One(a)) | (One(a), None) => One(a.clone()),
-        (None, Disp(a)) | (Disp(a), None) => Disp(a.clone()),
-        (Disp(a), Pair(c, d)) => {
-            if a != c {
-                return Err(inner_mismatch(l, r, a, c, ops));
-            }
-            Pair(c.clone(), d.moved())
-        }
-        (Pair(a, b), Disp(d)) => {
-            if b != d {
-                return Err(inner_mismatch(l, r, b, d, ops));
-            }
-            Pair(a.clone(), b.moved())
-        }
-        (Disp(a), Disp(b)) | (One(a), One(b)) | (Disp(a), One(b)) | (One(a), Disp(b)) => {
-            if a != b {
-                return Err(same_frame_error("multiply", l, r));
-            }
-            l.frames.clone()
-        }
-        // [V_s] T_sb = Ṫ_sb ; T_sb [V_b] = Ṫ_sb.
-        (One(a), Pair(c, _)) => {
-            if a != c {
-                return Err(inner_mismatch(l, r, a, c, ops));
-            }
-            r.frames.clone()
-        }
-        (Pair(_, b), One(c)) => {
-            if b != c {
-                return Err(inner_mismatch(l, r, b, c, ops));
-            }
-            l.frames.clone()
-        }
-    })
-}
-
-/// Frames of `operator * vector`.
-fn apply_frames(l: &Ty, r: &Ty, ops: Operands) -> Result<Frames, RuleError> {
-    use Frames::*;
-    Ok(match (&l.frames, &r.frames) {
-        (_, _) if l.kind.is_vector() => None,
-        (None, f) => f.clone(),
-        (Pair(a, _), None) => One(a.clone()),
-        (Pair(a, b), One(c)) => {
-            if b != c {
-                return Err(inner_mismatch(l, r, b, c, ops));
-            }
-            One(a.clone())
-        }
-        (One(a) | Disp(a), One(c)) => {
-            if a != c {
-                let mut e = inner_mismatch(l, r, a, c, ops);
-                e.help = Some(format!(
-                    "{} is in {{{a}}}; the vector must be expressed in {{{a}}} too",
-                    ops.lhs.trim()
-                ));
-                return Err(e);
-            }
-            One(a.clone())
-        }
-        (One(a) | Disp(a), None) => One(a.clone()),
-        (_, Pair(..) | Disp(_)) => r.frames.clone(),
-    })
-}
-
-fn same_frame_error(what: &str, l: &Ty, r: &Ty) -> RuleError {
+pub(super) fn same_frame_error(what: &str, l: &Ty, r: &Ty) -> RuleError {
     let mut e = RuleError::frame(format!("cannot {what} quantities in different frames"));
     e.lhs = describe(&l.frames);
     e.rhs = describe(&r.frames);
