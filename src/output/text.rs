@@ -41,10 +41,16 @@ impl From<usize> for Style {
 pub fn inline(v: &Value, style: impl Into<Style>) -> String {
     let style = style.into();
     match v {
+        Value::Num { m, .. } if m.is_empty() => format!("zeros({}, {})", m.nrows(), m.ncols()),
         Value::Num { m, .. } if m.len() == 1 && m.ncols() == 1 && m.nrows() == 1 => style.num(m[0]),
         Value::Num { m, .. } if m.ncols() == 1 => {
             let xs: Vec<String> = m.iter().map(|x| style.num(*x)).collect();
             format!("({})", xs.join(", "))
+        }
+        // A row: `[a, b]` would read back as a column, so print its transpose.
+        Value::Num { m, .. } if m.nrows() == 1 => {
+            let xs: Vec<String> = m.iter().map(|x| style.num(*x)).collect();
+            format!("({}).T", xs.join(", "))
         }
         Value::Num { m, .. } => {
             let rows: Vec<String> = m
@@ -145,7 +151,7 @@ pub fn show_value(prefix: &str, ty: &Ty, v: &Value, style: impl Into<Style>) -> 
         format!("  : {label}")
     };
     match v {
-        Value::Num { m, .. } if m.ncols() > 1 => {
+        Value::Num { m, .. } if m.ncols() > 1 && m.nrows() > 1 => {
             let indent = prefix.chars().count();
             format!("{prefix}{}{tail}", matrix_block(m, style, indent))
         }
