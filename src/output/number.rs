@@ -10,6 +10,15 @@ pub fn fmt_num(x: f64, digits: usize) -> String {
     if x.is_infinite() {
         return if x > 0.0 { "inf".into() } else { "-inf".into() };
     }
+    if digits >= 17 {
+        // Full precision: the shortest text that reads back as the same f64
+        // (no snapping to integers; -0 is still written 0).
+        return if x == 0.0 {
+            "0".into()
+        } else {
+            trim_point_zero(format!("{x:?}"))
+        };
+    }
     let r = x.round();
     if (x - r).abs() <= 1e-12 * r.abs().max(1.0) && r.abs() < 1e15 {
         return if r == 0.0 {
@@ -61,6 +70,14 @@ fn fixed_fast(x: f64, digits: usize) -> Option<String> {
         out.push_str(&f);
     }
     Some(out)
+}
+
+/// `2.0` → `2` (Rust's shortest form keeps a `.0` on whole numbers).
+fn trim_point_zero(s: String) -> String {
+    match s.strip_suffix(".0") {
+        Some(t) => t.to_string(),
+        None => s,
+    }
 }
 
 fn trim(s: &str) -> String {
