@@ -45,7 +45,7 @@ proptest! {
     }
 
     #[test]
-    fn rotations_and_transforms_read_back(ax in -1.0..1.0f64, ay in -1.0..1.0f64, az in 0.1..1.0f64, th in 0.0..3.14f64, px in -100.0..100.0f64) {
+    fn rotations_and_transforms_read_back(ax in -1.0..1.0f64, ay in -1.0..1.0f64, az in 0.1..1.0f64, th in 0.0..3.1f64, px in -100.0..100.0f64) {
         let src = format!("T = RpToTrans(Rot(({ax}, {ay}, {az}), {th}), ({px}, 1, 2))");
         let mut s = Session::new(Settings::default());
         s.run_to_strings("t", &src, Mode::Run, false);
