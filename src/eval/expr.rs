@@ -502,6 +502,15 @@ impl Interp<'_> {
     }
 
     fn brackets(&mut self, rows: &[Vec<Expr>], span: Span) -> Result<Typed, Diagnostic> {
+        if rows.iter().all(Vec::is_empty) {
+            return Err(Diagnostic::error(
+                ErrorKind::Syntax,
+                span,
+                "empty brackets: a vector or matrix needs at least one entry",
+            )
+            .with_help("write the entries, e.g. [1, 2, 3] or [1, 0; 0, 1]"));
+        }
+        let rows: Vec<&Vec<Expr>> = rows.iter().filter(|r| !r.is_empty()).collect();
         let mut trows = Vec::with_capacity(rows.len());
         for row in rows {
             let mut tr = Vec::with_capacity(row.len());
