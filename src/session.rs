@@ -34,6 +34,9 @@ pub struct Report {
     pub line: usize,
     pub result: Result<Outcome, Diagnostic>,
     pub warnings: Vec<Diagnostic>,
+    /// A known line before the statement, to number the lines of its
+    /// diagnostics without rescanning the source from its start.
+    pub anchor: render::Anchor,
 }
 
 impl Report {
@@ -45,7 +48,7 @@ impl Report {
                 .map(|j| j.to_string())
                 .unwrap_or_default(),
             (Err(d), true) => {
-                let (line, col) = render::line_col(src, d.span.start);
+                let (line, col) = render::line_col_from(src, d.span.start, self.anchor);
                 json::error(d, line, col).to_string()
             }
             (Err(_), false) => String::new(),
@@ -56,10 +59,10 @@ impl Report {
     pub fn stderr(&self, settings: &Settings, file: &str, src: &str) -> String {
         let mut out = String::new();
         for w in &self.warnings {
-            out.push_str(&render::text(w, file, src));
+            out.push_str(&render::text_from(w, file, src, self.anchor));
         }
         if let (Err(d), false) = (&self.result, settings.json) {
-            out.push_str(&render::text(d, file, src));
+            out.push_str(&render::text_from(d, file, src, self.anchor));
         }
         out
     }
@@ -92,21 +95,23 @@ impl Session {
         mut each: impl FnMut(&Report),
     ) -> usize {
         let mut errors = 0;
-        let index = render::LineIndex::new(src);
-        for parsed in syntax::parse_program(src) {
-            let line = |d: &Diagnostic| index.line(d.span.start);
+        let mut lines = Lines::new(src);
+        for parsed in syntax::statements(src) {
             let report = match parsed {
                 Err(d) => Report {
-                    line: line(&d),
+                    line: lines.line(d.span.start),
+                    anchor: lines.anchor(),
                     result: Err(d),
                     warnings: Vec::new(),
                 },
                 Ok(stmt) => {
+                    let line = lines.line(stmt.span.start);
                     let mut interp = Interp::new(&mut self.env, src, mode, self.settings.frames);
                     let result = interp.stmt(&stmt);
                     let warnings = std::mem::take(&mut interp.warnings);
                     Report {
-                        line: index.line(stmt.span.start),
+                        line,
+                        anchor: lines.anchor(),
                         result,
                         warnings,
                     }
@@ -143,5 +148,47 @@ impl Session {
             err.push_str(&r.stderr(&settings, file, src));
         });
         (out, err, n)
+    }
+}
+
+/// Line numbers of the statements of a source, counted as they go by
+/// (statements come in order), so a long script costs no index of its lines.
+struct Lines<'a> {
+    src: &'a [u8],
+    /// The start of the line the last counted offset lies on.
+    start: usize,
+    line: usize,
+}
+
+impl<'a> Lines<'a> {
+    fn new(src: &'a str) -> Lines<'a> {
+        Lines {
+            src: src.as_bytes(),
+            start: 0,
+            line: 1,
+        }
+    }
+
+    /// The 1-based line of `offset`.
+    fn line(&mut self, offset: usize) -> usize {
+        let offset = offset.min(self.src.len());
+        if offset < self.start {
+            self.start = 0;
+            self.line = 1;
+        }
+        let seg = &self.src[self.start..offset];
+        if let Some(last) = seg.iter().rposition(|&b| b == b'\n') {
+            self.line += seg.iter().filter(|&&b| b == b'\n').count();
+            self.start += last + 1;
+        }
+        self.line
+    }
+
+    /// The last counted line, as an anchor for rendering.
+    fn anchor(&self) -> render::Anchor {
+        render::Anchor {
+            offset: self.start,
+            line: self.line,
+        }
     }
 }
