@@ -130,8 +130,8 @@ pub(crate) fn pest_error(err: pest::error::Error<Rule>, cx: &Cx<'_>) -> Diagnost
             names.clear();
             pos = attempts.max_position;
             for stack in attempts.call_stacks() {
-                if let Some(rule) = stack.deepest.get_rule() {
-                    if !matches!(
+                if let Some(rule) = stack.deepest.get_rule()
+                    && !matches!(
                         rule,
                         Rule::statement
                             | Rule::given_stmt
@@ -144,9 +144,9 @@ pub(crate) fn pest_error(err: pest::error::Error<Rule>, cx: &Cx<'_>) -> Diagnost
                             | Rule::brackets
                             | Rule::call_args
                             | Rule::index
-                    ) {
-                        names.push(rule_name(*rule));
-                    }
+                    )
+                {
+                    names.push(rule_name(*rule));
                 }
             }
         }
