@@ -2,9 +2,10 @@
 //! check → evaluate applied to a whole source text, statement by statement.
 //! The CLI, the REPL and the tests all drive chasles through this.
 
-use crate::diagnostics::{Diagnostic, render};
+use crate::diagnostics::{Diagnostic, ErrorKind, render};
 use crate::eval::env::{Env, FrameMode, Mode};
 use crate::eval::interp::{Interp, Outcome};
+use crate::eval::value::Value;
 use crate::output::{json, text};
 use crate::syntax;
 
@@ -108,7 +109,10 @@ impl Session {
                     let line = lines.line(stmt.span.start);
                     let mut interp = Interp::new(&mut self.env, src, mode, self.settings.frames);
                     let result = interp.stmt(&stmt);
-                    let warnings = std::mem::take(&mut interp.warnings);
+                    let mut warnings = std::mem::take(&mut interp.warnings);
+                    if let Ok(o) = &result {
+                        warnings.extend(not_finite_warning(o));
+                    }
                     Report {
                         line,
                         anchor: lines.anchor(),
@@ -149,6 +153,33 @@ impl Session {
         });
         (out, err, n)
     }
+}
+
+/// A warning when a result holds NaN (an undefined operation such as
+/// inf − inf) or, outside a tuple, ±inf (an overflow such as `2^1e308`, or
+/// inf in the input): IEEE values are printed, never silently. Tuples may
+/// hold inf by design (`screw_params` gives h = inf for a pure translation).
+fn not_finite_warning(o: &crate::eval::interp::Outcome) -> Option<Diagnostic> {
+    fn scan(v: &Value, top: bool, nan: &mut bool, inf: &mut bool) {
+        match v {
+            Value::Num { m, .. } => {
+                *nan |= m.iter().any(|x| x.is_nan());
+                *inf |= top && m.iter().any(|x| x.is_infinite());
+            }
+            Value::Tuple(vs) => vs.iter().for_each(|v| scan(v, false, nan, inf)),
+            _ => {}
+        }
+    }
+    let (mut nan, mut inf) = (false, false);
+    scan(o.val.as_ref()?, true, &mut nan, &mut inf);
+    let message = if nan {
+        "the result has NaN entries: an undefined operation (inf − inf, 0·inf, an angle of inf)"
+    } else if inf {
+        "the result is infinite: an overflow (the number exceeds 1.8e308) or inf in the input"
+    } else {
+        return None;
+    };
+    Some(Diagnostic::warning(ErrorKind::Domain, o.span, message))
 }
 
 /// Line numbers of the statements of a source, counted as they go by

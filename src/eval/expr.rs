@@ -332,6 +332,7 @@ impl Interp<'_> {
             warnings: &mut self.warnings,
         };
         let v = (b.eval)(&mut a)?;
+        not_finite_group(&v, b.name, span)?;
         let val = Some(v);
         Ok(Typed {
             ty: refine(ty, &val),
@@ -682,4 +683,32 @@ fn bracket_type(rows: &[Vec<Typed>]) -> Ty {
         .map(|r| r[0].ty.kind.shape().and_then(|s| s.0))
         .sum();
     Ty::new(Kind::Matrix(height, width), frames)
+}
+
+/// A rotation, transform, Lie-algebra element or adjoint with an inf or NaN
+/// entry is not one: a domain error (`Rotz(inf)`), rather than a NaN matrix
+/// labelled SO(3).
+fn not_finite_group(v: &Value, name: &str, span: Span) -> Result<(), Diagnostic> {
+    if let Value::Num { kind, m } = v
+        && matches!(
+            kind,
+            Kind::SO3
+                | Kind::SE3
+                | Kind::SO2
+                | Kind::SE2
+                | Kind::So3
+                | Kind::Se3
+                | Kind::So2
+                | Kind::Se2
+                | Kind::Adjoint { .. }
+        )
+        && m.iter().any(|x| !x.is_finite())
+    {
+        return Err(Diagnostic::error(
+            ErrorKind::Domain,
+            span,
+            format!("{name} gives no finite {kind}: an argument is inf or NaN"),
+        ));
+    }
+    Ok(())
 }

@@ -189,6 +189,12 @@ fn num_inverse(k: &Kind, m: &DMatrix<f64>) -> Result<DMatrix<f64>, String> {
         (Kind::SE3, _) => dm(&se3::inv(&Mat4::from_iterator(m.iter().copied()))),
         (Kind::SE2, _) => dm(&se2::inv(&Mat3::from_iterator(m.iter().copied()))),
         (_, (r, c)) if r == c => {
+            if m.iter().any(|x| !x.is_finite()) {
+                return Err(
+                    "the matrix has entries that are not finite (inf or NaN); it has no inverse"
+                        .into(),
+                );
+            }
             let det = m.determinant();
             let scale = m.abs().max().max(f64::MIN_POSITIVE).powi(r as i32);
             if det == 0.0 || !det.is_finite() || det.abs() <= 1e-14 * scale {
