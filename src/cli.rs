@@ -25,7 +25,12 @@ struct Cli {
     #[command(subcommand)]
     command: Option<Command>,
     /// Evaluate one string of statements.
-    #[arg(short = 'e', long = "eval", value_name = "STATEMENTS")]
+    #[arg(
+        short = 'e',
+        long = "eval",
+        value_name = "STATEMENTS",
+        allow_hyphen_values = true
+    )]
     eval: Option<String>,
     #[command(flatten)]
     opts: Opts,
