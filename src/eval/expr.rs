@@ -49,7 +49,17 @@ impl Interp<'_> {
     }
 
     /// Checks (and evaluates) an expression.
+    ///
+    /// The recursion is as deep as the tree ([`crate::syntax::MAX_DEPTH`])
+    /// times the user-function calls ([`super::interp::MAX_CALL_DEPTH`]):
+    /// more than a thread's stack may hold, so the stack grows on the heap
+    /// when it runs low.
     pub fn expr(&mut self, e: &Expr) -> Result<Typed, Diagnostic> {
+        let t = stacker::maybe_grow(256 * 1024, 4 * 1024 * 1024, || self.expr_node(e))?;
+        Ok(t)
+    }
+
+    fn expr_node(&mut self, e: &Expr) -> Result<Typed, Diagnostic> {
         match &e.kind {
             ExprKind::Number(x) => Ok(Typed {
                 ty: Ty::scalar(),
