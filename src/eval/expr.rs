@@ -53,9 +53,24 @@ impl Interp<'_> {
     /// The recursion is as deep as the tree ([`crate::syntax::MAX_DEPTH`])
     /// times the user-function calls ([`super::interp::MAX_CALL_DEPTH`]):
     /// more than a thread's stack may hold, so the stack grows on the heap
-    /// when it runs low.
+    /// when it runs low. A symbolic result beyond the size limits of
+    /// [`Sym::too_large`] is a domain error.
     pub fn expr(&mut self, e: &Expr) -> Result<Typed, Diagnostic> {
         let t = stacker::maybe_grow(256 * 1024, 4 * 1024 * 1024, || self.expr_node(e))?;
+        if let Some(Value::Sym(s)) = &t.val
+            && s.too_large()
+        {
+            return Err(self
+                .domain(
+                    e.span,
+                    format!(
+                        "symbolic expression too large (more than {} terms or nested deeper than {})",
+                        super::symbolic::MAX_SYM_NODES,
+                        super::symbolic::MAX_SYM_DEPTH
+                    ),
+                )
+                .with_help("bind numbers to the given names, or simplify step by step"));
+        }
         Ok(t)
     }
 
