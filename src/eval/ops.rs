@@ -148,7 +148,12 @@ pub fn pow(b: &Value, e: f64, kind: &Kind) -> Result<Value, String> {
     if !bm.is_square() {
         return Err("powers need a square matrix".into());
     }
-    if e.fract() != 0.0 || !e.is_finite() || e.abs() > 1e15 {
+    if e.is_finite() && e.fract() == 0.0 && e.abs() > 1e15 {
+        return Err(format!(
+            "a matrix power's exponent must be at most 1e15 in size, got {e:e}"
+        ));
+    }
+    if e.fract() != 0.0 || !e.is_finite() {
         return Err(format!("a matrix power needs a whole exponent, got {e}"));
     }
     let mut base = if e < 0.0 {
