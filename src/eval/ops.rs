@@ -83,7 +83,29 @@ pub fn mul(l: &Value, r: &Value, kind: &Kind) -> Result<Value, String> {
         ));
     }
     check_size(lm.nrows(), rm.ncols())?;
+    check_work(lm.nrows(), lm.ncols(), rm.ncols(), 1)?;
     Ok(out(kind, lm * rm))
+}
+
+/// The most multiply-adds one operation may cost: about a second of work
+/// (a 1000×1000 product). A larger product or matrix power would run for
+/// minutes or hours.
+pub const MAX_WORK: u128 = 1_000_000_000;
+
+/// Refuses `times` products of an r×k by a k×c matrix beyond [`MAX_WORK`].
+pub fn check_work(r: usize, k: usize, c: usize, times: u64) -> Result<(), String> {
+    let work = r as u128 * k as u128 * c as u128 * times as u128;
+    if work > MAX_WORK {
+        return Err(format!(
+            "too much work: {work:.1e} multiply-adds (a {r}×{k} by {k}×{c} product{}; at most {MAX_WORK:.0e})",
+            if times > 1 {
+                format!(", {times} times")
+            } else {
+                String::new()
+            }
+        ));
+    }
+    Ok(())
 }
 
 /// Refuses results larger than [`MAX_ELEMENTS`].
@@ -162,6 +184,9 @@ pub fn pow(b: &Value, e: f64, kind: &Kind) -> Result<Value, String> {
         bm.clone()
     };
     let mut n = e.abs() as u64;
+    // Squaring: at most two products per bit of the exponent.
+    let side = bm.nrows();
+    check_work(side, side, side, 2 * u64::from(64 - n.leading_zeros()))?;
     let mut acc = DMatrix::identity(bm.nrows(), bm.ncols());
     while n > 0 {
         if n & 1 == 1 {
