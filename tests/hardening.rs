@@ -527,6 +527,17 @@ fn huge_powers_and_products_stay_bounded() {
         out.stderr.contains("warning: the result has NaN entries"),
         "{out:#?}"
     );
+    // Products whose work would take minutes are refused.
+    assert_fails(
+        &eval("eye(1500) * eye(1500)"),
+        1,
+        "domain error: too much work: 3.4e9 multiply-adds",
+    );
+    assert_fails(
+        &eval("eye(2000)^1000000000"),
+        1,
+        "domain error: too much work: 4.8e11 multiply-adds",
+    );
     // A long product of transforms is evaluated in linear time.
     let product = format!("T = Trans((1, 0, 0)); {}", vec!["T"; 150].join(" * "));
     let out = eval(&product);
