@@ -219,6 +219,7 @@ fn num_inverse(k: &Kind, m: &DMatrix<f64>) -> Result<DMatrix<f64>, String> {
         (Kind::SE3, _) => dm(&se3::inv(&Mat4::from_iterator(m.iter().copied()))),
         (Kind::SE2, _) => dm(&se2::inv(&Mat3::from_iterator(m.iter().copied()))),
         (_, (r, c)) if r == c => {
+            check_work(r, r, r, 1)?;
             if m.iter().any(|x| !x.is_finite()) {
                 return Err(
                     "the matrix has entries that are not finite (inf or NaN); it has no inverse"
