@@ -538,6 +538,11 @@ fn huge_powers_and_products_stay_bounded() {
         1,
         "domain error: too much work: 4.8e11 multiply-adds",
     );
+    assert_fails(
+        &eval("inv(2 * eye(2000))"),
+        1,
+        "domain error: too much work: 8.0e9 multiply-adds",
+    );
     // A long product of transforms is evaluated in linear time.
     let product = format!("T = Trans((1, 0, 0)); {}", vec!["T"; 150].join(" * "));
     let out = eval(&product);
