@@ -111,7 +111,12 @@ pub fn read_source(path: &str) -> Result<String, String> {
     }
     String::from_utf8(bytes).map_err(|e| {
         let at = e.utf8_error().valid_up_to();
-        format!("'{path}' is not UTF-8 text: invalid byte at offset {at}")
+        let what = if path == "-" {
+            "standard input".to_string()
+        } else {
+            format!("'{path}'")
+        };
+        format!("{what} is not UTF-8 text: invalid byte at offset {at}")
     })
 }
 

@@ -2,9 +2,10 @@
 //! check → evaluate applied to a whole source text, statement by statement.
 //! The CLI, the REPL and the tests all drive chasles through this.
 
-use crate::diagnostics::{Diagnostic, render};
+use crate::diagnostics::{Diagnostic, ErrorKind, render};
 use crate::eval::env::{Env, FrameMode, Mode};
 use crate::eval::interp::{Interp, Outcome};
+use crate::eval::value::Value;
 use crate::output::{json, text};
 use crate::syntax;
 
@@ -48,6 +49,9 @@ pub struct Report {
     pub line: usize,
     pub result: Result<Outcome, Diagnostic>,
     pub warnings: Vec<Diagnostic>,
+    /// A known line before the statement, to number the lines of its
+    /// diagnostics without rescanning the source from its start.
+    pub anchor: render::Anchor,
 }
 
 impl Report {
@@ -59,7 +63,7 @@ impl Report {
                 .map(|j| j.to_string())
                 .unwrap_or_default(),
             (Err(d), true) => {
-                let (line, col) = render::line_col(src, d.span.start);
+                let (line, col) = render::line_col_from(src, d.span.start, self.anchor);
                 json::error(d, line, col).to_string()
             }
             (Err(_), false) => String::new(),
@@ -70,10 +74,10 @@ impl Report {
     pub fn stderr(&self, settings: &Settings, file: &str, src: &str) -> String {
         let mut out = String::new();
         for w in &self.warnings {
-            out.push_str(&render::text(w, file, src));
+            out.push_str(&render::text_from(w, file, src, self.anchor));
         }
         if let (Err(d), false) = (&self.result, settings.json) {
-            out.push_str(&render::text(d, file, src));
+            out.push_str(&render::text_from(d, file, src, self.anchor));
         }
         out
     }
@@ -106,21 +110,26 @@ impl Session {
         mut each: impl FnMut(&Report),
     ) -> usize {
         let mut errors = 0;
-        let index = render::LineIndex::new(src);
-        for parsed in syntax::parse_program(src) {
-            let line = |d: &Diagnostic| index.line(d.span.start);
+        let mut lines = Lines::new(src);
+        for parsed in syntax::statements(src) {
             let report = match parsed {
                 Err(d) => Report {
-                    line: line(&d),
+                    line: lines.line(d.span.start),
+                    anchor: lines.anchor(),
                     result: Err(d),
                     warnings: Vec::new(),
                 },
                 Ok(stmt) => {
+                    let line = lines.line(stmt.span.start);
                     let mut interp = Interp::new(&mut self.env, src, mode, self.settings.frames);
                     let result = interp.stmt(&stmt);
-                    let warnings = std::mem::take(&mut interp.warnings);
+                    let mut warnings = std::mem::take(&mut interp.warnings);
+                    if let Ok(o) = &result {
+                        warnings.extend(not_finite_warning(o));
+                    }
                     Report {
-                        line: index.line(stmt.span.start),
+                        line,
+                        anchor: lines.anchor(),
                         result,
                         warnings,
                     }
@@ -157,5 +166,74 @@ impl Session {
             err.push_str(&r.stderr(&settings, file, src));
         });
         (out, err, n)
+    }
+}
+
+/// A warning when a result holds NaN (an undefined operation such as
+/// inf − inf) or, outside a tuple, ±inf (an overflow such as `2^1e308`, or
+/// inf in the input): IEEE values are printed, never silently. Tuples may
+/// hold inf by design (`screw_params` gives h = inf for a pure translation).
+fn not_finite_warning(o: &crate::eval::interp::Outcome) -> Option<Diagnostic> {
+    fn scan(v: &Value, top: bool, nan: &mut bool, inf: &mut bool) {
+        match v {
+            Value::Num { m, .. } => {
+                *nan |= m.iter().any(|x| x.is_nan());
+                *inf |= top && m.iter().any(|x| x.is_infinite());
+            }
+            Value::Tuple(vs) => vs.iter().for_each(|v| scan(v, false, nan, inf)),
+            _ => {}
+        }
+    }
+    let (mut nan, mut inf) = (false, false);
+    scan(o.val.as_ref()?, true, &mut nan, &mut inf);
+    let message = if nan {
+        "the result has NaN entries: an undefined operation (inf − inf, 0·inf, an angle of inf)"
+    } else if inf {
+        "the result is infinite: an overflow (the number exceeds 1.8e308) or inf in the input"
+    } else {
+        return None;
+    };
+    Some(Diagnostic::warning(ErrorKind::Domain, o.span, message))
+}
+
+/// Line numbers of the statements of a source, counted as they go by
+/// (statements come in order), so a long script costs no index of its lines.
+struct Lines<'a> {
+    src: &'a [u8],
+    /// The start of the line the last counted offset lies on.
+    start: usize,
+    line: usize,
+}
+
+impl<'a> Lines<'a> {
+    fn new(src: &'a str) -> Lines<'a> {
+        Lines {
+            src: src.as_bytes(),
+            start: 0,
+            line: 1,
+        }
+    }
+
+    /// The 1-based line of `offset`.
+    fn line(&mut self, offset: usize) -> usize {
+        let offset = offset.min(self.src.len());
+        if offset < self.start {
+            self.start = 0;
+            self.line = 1;
+        }
+        let seg = &self.src[self.start..offset];
+        if let Some(last) = seg.iter().rposition(|&b| b == b'\n') {
+            self.line += seg.iter().filter(|&&b| b == b'\n').count();
+            self.start += last + 1;
+        }
+        self.line
+    }
+
+    /// The last counted line, as an anchor for rendering.
+    fn anchor(&self) -> render::Anchor {
+        render::Anchor {
+            offset: self.start,
+            line: self.line,
+        }
     }
 }

@@ -101,10 +101,12 @@ fn one(src: &str) -> Stmt {
     }
 }
 
+#[allow(dead_code)] // helper for the parser tests
 fn p(src: &str) -> String {
     stmt_sexp(&one(src))
 }
 
+#[allow(dead_code)] // helper for the parser tests
 fn expr(src: &str) -> Expr {
     match one(src).kind {
         StmtKind::Expr(e) => e,
@@ -113,6 +115,7 @@ fn expr(src: &str) -> Expr {
 }
 
 /// Parses one statement that must fail.
+#[allow(dead_code)] // helper for the parser tests
 fn err(src: &str) -> Diagnostic {
     let mut all = parse_program(src);
     assert_eq!(all.len(), 1, "{src:?} should be one statement");

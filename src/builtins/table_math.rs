@@ -559,6 +559,13 @@ pub(super) fn builtins() -> Vec<Builtin> {
             },
             eval: |a| {
                 let v = a.vec(0)?;
+                if v.iter().any(|x| !x.is_finite()) {
+                    return Err(a.error(
+                        0,
+                        ErrorKind::Domain,
+                        "cannot normalize a vector with entries that are not finite (inf or NaN)",
+                    ));
+                }
                 match lie::normalize(&v) {
                     Some(u) => Ok(Value::Num {
                         kind: a.value(0).kind(),

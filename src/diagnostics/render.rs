@@ -3,21 +3,63 @@
 //! and labels (codespan-reporting), then `= help: …`.
 
 use codespan_reporting::diagnostic::{Diagnostic as CsDiagnostic, Label as CsLabel};
-use codespan_reporting::files::SimpleFile;
+use std::ops::Range;
+
+use codespan_reporting::files::{Error as FilesError, Files, SimpleFile};
 use codespan_reporting::term::{self, Config};
 
 use super::{Diagnostic, Severity};
 
 /// 1-based line and column (in characters) of a byte offset.
 pub fn line_col(src: &str, offset: usize) -> (usize, usize) {
-    let offset = offset.min(src.len());
-    let mut offset = offset;
+    line_col_from(src, offset, Anchor::START)
+}
+
+/// A place whose line is known: `offset` lies on line `line` (1-based).
+/// Line numbers after it are counted from there, so reporting an error near
+/// the end of a long script does not rescan the whole script.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Anchor {
+    pub offset: usize,
+    pub line: usize,
+}
+
+impl Anchor {
+    pub const START: Anchor = Anchor { offset: 0, line: 1 };
+}
+
+impl Default for Anchor {
+    fn default() -> Anchor {
+        Anchor::START
+    }
+}
+
+/// The largest char boundary at or before `offset` (clamped to the text).
+fn floor_boundary(src: &str, offset: usize) -> usize {
+    let mut offset = offset.min(src.len());
     while !src.is_char_boundary(offset) {
         offset -= 1;
     }
-    let before = &src[..offset];
-    let line = before.matches('\n').count() + 1;
-    let line_start = before.rfind('\n').map_or(0, |i| i + 1);
+    offset
+}
+
+fn newlines(bytes: &[u8]) -> usize {
+    bytes.iter().filter(|&&b| b == b'\n').count()
+}
+
+/// [`line_col`], counting lines from `anchor` when the offset lies after it.
+pub fn line_col_from(src: &str, offset: usize, anchor: Anchor) -> (usize, usize) {
+    let offset = floor_boundary(src, offset);
+    let anchor = if anchor.offset <= offset {
+        Anchor {
+            offset: floor_boundary(src, anchor.offset),
+            ..anchor
+        }
+    } else {
+        Anchor::START
+    };
+    let line = anchor.line + newlines(&src.as_bytes()[anchor.offset..offset]);
+    let line_start = src[..offset].rfind('\n').map_or(0, |i| i + 1);
     let col = src[line_start..offset].chars().count() + 1;
     (line, col)
 }
@@ -51,7 +93,11 @@ impl LineIndex {
 
 /// The header line alone: `ex.chs:3:8: frame error: frames do not cancel`.
 pub fn header(d: &Diagnostic, file: &str, src: &str) -> String {
-    let (line, col) = line_col(src, d.span.start);
+    header_from(d, file, src, Anchor::START)
+}
+
+fn header_from(d: &Diagnostic, file: &str, src: &str, anchor: Anchor) -> String {
+    let (line, col) = line_col_from(src, d.span.start, anchor);
     let what = match d.severity {
         Severity::Error => format!("{} error", d.kind.as_str()),
         Severity::Warning => "warning".to_string(),
@@ -61,33 +107,84 @@ pub fn header(d: &Diagnostic, file: &str, src: &str) -> String {
 
 /// The full text of a diagnostic, ending in a newline.
 pub fn text(d: &Diagnostic, file: &str, src: &str) -> String {
-    let files = SimpleFile::new(file, src);
+    text_from(d, file, src, Anchor::START)
+}
+
+/// The lines of the source a diagnostic shows, for codespan: only they are
+/// indexed, and their line numbers start at `first_line` (a long script is
+/// not indexed again for every error).
+struct Window<'a> {
+    file: SimpleFile<&'a str, &'a str>,
+    first_line: usize,
+}
+
+impl<'a> Files<'a> for Window<'a> {
+    type FileId = ();
+    type Name = &'a str;
+    type Source = &'a str;
+    fn name(&'a self, _: ()) -> Result<&'a str, FilesError> {
+        Ok(self.file.name())
+    }
+    fn source(&'a self, _: ()) -> Result<&'a str, FilesError> {
+        Ok(self.file.source())
+    }
+    fn line_index(&'a self, id: (), byte_index: usize) -> Result<usize, FilesError> {
+        self.file.line_index(id, byte_index)
+    }
+    fn line_number(&'a self, _: (), line_index: usize) -> Result<usize, FilesError> {
+        Ok(self.first_line + line_index)
+    }
+    fn line_range(&'a self, id: (), line_index: usize) -> Result<Range<usize>, FilesError> {
+        self.file.line_range(id, line_index)
+    }
+}
+
+/// [`text`], counting line numbers from `anchor` (see [`Anchor`]).
+pub fn text_from(d: &Diagnostic, file: &str, src: &str, anchor: Anchor) -> String {
     let clamp = |a: usize, b: usize| {
-        let a = a.min(src.len());
-        let b = b.max(a).min(src.len());
+        let a = floor_boundary(src, a);
+        let b = floor_boundary(src, b.max(a));
         a..b
     };
+    let spans = std::iter::once(d.span).chain(d.labels.iter().map(|l| l.span));
+    let lo = spans.clone().map(|s| clamp(s.start, s.end).start).min();
+    let hi = spans.map(|s| clamp(s.start, s.end).end).max();
+    let (lo, hi) = (lo.unwrap_or(0), hi.unwrap_or(0));
+    // The window: whole lines from the first label to the last.
+    let base = src[..lo].rfind('\n').map_or(0, |i| i + 1);
+    let end = src[hi..].find('\n').map_or(src.len(), |i| hi + i);
+    let first_line = line_col_from(src, base, anchor).0;
+    let window = Window {
+        file: SimpleFile::new(file, &src[base..end]),
+        first_line,
+    };
+    let shift = |a: usize, b: usize| {
+        let r = clamp(a, b);
+        r.start - base..r.end - base
+    };
     let mut labels = vec![
-        CsLabel::primary((), clamp(d.span.start, d.span.end)).with_message(d.primary_label.clone()),
+        CsLabel::primary((), shift(d.span.start, d.span.end)).with_message(d.primary_label.clone()),
     ];
     for l in &d.labels {
         labels.push(
-            CsLabel::secondary((), clamp(l.span.start, l.span.end)).with_message(l.message.clone()),
+            CsLabel::secondary((), shift(l.span.start, l.span.end)).with_message(l.message.clone()),
         );
     }
-    let base = match d.severity {
+    let base_diag = match d.severity {
         Severity::Error => CsDiagnostic::error(),
         Severity::Warning => CsDiagnostic::warning(),
     };
-    let mut cs = base.with_message(d.message.clone()).with_labels(labels);
+    let mut cs = base_diag
+        .with_message(d.message.clone())
+        .with_labels(labels);
     if let Some(h) = &d.help {
         cs = cs.with_notes(vec![format!("help: {h}")]);
     }
     let config = Config::default();
-    let body = term::emit_into_string(&config, &files, &cs).unwrap_or_default();
+    let body = term::emit_into_string(&config, &window, &cs).unwrap_or_default();
     // codespan's own first line repeats the message; the contract's header replaces it.
     let body = body.split_once('\n').map_or("", |(_, rest)| rest);
-    let mut out = header(d, file, src);
+    let mut out = header_from(d, file, src, anchor);
     out.push('\n');
     out.push_str(body);
     if !out.ends_with('\n') {

@@ -49,7 +49,32 @@ impl Interp<'_> {
     }
 
     /// Checks (and evaluates) an expression.
+    ///
+    /// The recursion is as deep as the tree ([`crate::syntax::MAX_DEPTH`])
+    /// times the user-function calls ([`super::interp::MAX_CALL_DEPTH`]):
+    /// more than a thread's stack may hold, so the stack grows on the heap
+    /// when it runs low. A symbolic result beyond the size limits of
+    /// [`Sym::too_large`] is a domain error.
     pub fn expr(&mut self, e: &Expr) -> Result<Typed, Diagnostic> {
+        let t = stacker::maybe_grow(256 * 1024, 4 * 1024 * 1024, || self.expr_node(e))?;
+        if let Some(Value::Sym(s)) = &t.val
+            && s.too_large()
+        {
+            return Err(self
+                .domain(
+                    e.span,
+                    format!(
+                        "symbolic expression too large (more than {} terms or nested deeper than {})",
+                        super::symbolic::MAX_SYM_NODES,
+                        super::symbolic::MAX_SYM_DEPTH
+                    ),
+                )
+                .with_help("bind numbers to the given names, or simplify step by step"));
+        }
+        Ok(t)
+    }
+
+    fn expr_node(&mut self, e: &Expr) -> Result<Typed, Diagnostic> {
         match &e.kind {
             ExprKind::Number(x) => Ok(Typed {
                 ty: Ty::scalar(),
@@ -346,6 +371,7 @@ impl Interp<'_> {
             warnings: &mut self.warnings,
         };
         let v = (b.eval)(&mut a)?;
+        not_finite_group(&v, b.name, span)?;
         let val = Some(v);
         Ok(Typed {
             ty: refine(ty, &val),
@@ -516,6 +542,15 @@ impl Interp<'_> {
     }
 
     fn brackets(&mut self, rows: &[Vec<Expr>], span: Span) -> Result<Typed, Diagnostic> {
+        if rows.iter().all(Vec::is_empty) {
+            return Err(Diagnostic::error(
+                ErrorKind::Syntax,
+                span,
+                "empty brackets: a vector or matrix needs at least one entry",
+            )
+            .with_help("write the entries, e.g. [1, 2, 3] or [1, 0; 0, 1]"));
+        }
+        let rows: Vec<&Vec<Expr>> = rows.iter().filter(|r| !r.is_empty()).collect();
         let mut trows = Vec::with_capacity(rows.len());
         for row in rows {
             let mut tr = Vec::with_capacity(row.len());
@@ -687,4 +722,32 @@ fn bracket_type(rows: &[Vec<Typed>]) -> Ty {
         .map(|r| r[0].ty.kind.shape().and_then(|s| s.0))
         .sum();
     Ty::new(Kind::Matrix(height, width), frames)
+}
+
+/// A rotation, transform, Lie-algebra element or adjoint with an inf or NaN
+/// entry is not one: a domain error (`Rotz(inf)`), rather than a NaN matrix
+/// labelled SO(3).
+fn not_finite_group(v: &Value, name: &str, span: Span) -> Result<(), Diagnostic> {
+    if let Value::Num { kind, m } = v
+        && matches!(
+            kind,
+            Kind::SO3
+                | Kind::SE3
+                | Kind::SO2
+                | Kind::SE2
+                | Kind::So3
+                | Kind::Se3
+                | Kind::So2
+                | Kind::Se2
+                | Kind::Adjoint { .. }
+        )
+        && m.iter().any(|x| !x.is_finite())
+    {
+        return Err(Diagnostic::error(
+            ErrorKind::Domain,
+            span,
+            format!("{name} gives no finite {kind}: an argument is inf or NaN"),
+        ));
+    }
+    Ok(())
 }

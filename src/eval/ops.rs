@@ -83,7 +83,29 @@ pub fn mul(l: &Value, r: &Value, kind: &Kind) -> Result<Value, String> {
         ));
     }
     check_size(lm.nrows(), rm.ncols())?;
+    check_work(lm.nrows(), lm.ncols(), rm.ncols(), 1)?;
     Ok(out(kind, lm * rm))
+}
+
+/// The most multiply-adds one operation may cost: about a second of work
+/// (a 1000×1000 product). A larger product or matrix power would run for
+/// minutes or hours.
+pub const MAX_WORK: u128 = 1_000_000_000;
+
+/// Refuses `times` products of an r×k by a k×c matrix beyond [`MAX_WORK`].
+pub fn check_work(r: usize, k: usize, c: usize, times: u64) -> Result<(), String> {
+    let work = r as u128 * k as u128 * c as u128 * times as u128;
+    if work > MAX_WORK {
+        return Err(format!(
+            "too much work: {work:.1e} multiply-adds (a {r}×{k} by {k}×{c} product{}; at most {MAX_WORK:.0e})",
+            if times > 1 {
+                format!(", {times} times")
+            } else {
+                String::new()
+            }
+        ));
+    }
+    Ok(())
 }
 
 /// Refuses results larger than [`MAX_ELEMENTS`].
@@ -148,7 +170,12 @@ pub fn pow(b: &Value, e: f64, kind: &Kind) -> Result<Value, String> {
     if !bm.is_square() {
         return Err("powers need a square matrix".into());
     }
-    if e.fract() != 0.0 || !e.is_finite() || e.abs() > 1e15 {
+    if e.is_finite() && e.fract() == 0.0 && e.abs() > 1e15 {
+        return Err(format!(
+            "a matrix power's exponent must be at most 1e15 in size, got {e:e}"
+        ));
+    }
+    if e.fract() != 0.0 || !e.is_finite() {
         return Err(format!("a matrix power needs a whole exponent, got {e}"));
     }
     let mut base = if e < 0.0 {
@@ -157,6 +184,9 @@ pub fn pow(b: &Value, e: f64, kind: &Kind) -> Result<Value, String> {
         bm.clone()
     };
     let mut n = e.abs() as u64;
+    // Squaring: at most two products per bit of the exponent.
+    let side = bm.nrows();
+    check_work(side, side, side, 2 * u64::from(64 - n.leading_zeros()))?;
     let mut acc = DMatrix::identity(bm.nrows(), bm.ncols());
     while n > 0 {
         if n & 1 == 1 {
@@ -189,6 +219,13 @@ fn num_inverse(k: &Kind, m: &DMatrix<f64>) -> Result<DMatrix<f64>, String> {
         (Kind::SE3, _) => dm(&se3::inv(&Mat4::from_iterator(m.iter().copied()))),
         (Kind::SE2, _) => dm(&se2::inv(&Mat3::from_iterator(m.iter().copied()))),
         (_, (r, c)) if r == c => {
+            check_work(r, r, r, 1)?;
+            if m.iter().any(|x| !x.is_finite()) {
+                return Err(
+                    "the matrix has entries that are not finite (inf or NaN); it has no inverse"
+                        .into(),
+                );
+            }
             let det = m.determinant();
             let scale = m.abs().max().max(f64::MIN_POSITIVE).powi(r as i32);
             if det == 0.0 || !det.is_finite() || det.abs() <= 1e-14 * scale {

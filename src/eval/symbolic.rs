@@ -54,7 +54,42 @@ impl PartialEq for Sym {
     }
 }
 
+/// The largest symbolic expression kept, in nodes and in depth: beyond it
+/// a statement is a domain error. Without a bound, `x = x * x + t`
+/// repeated doubles the expression each time (memory and time explode),
+/// and printing a very deep one would exhaust the stack.
+pub const MAX_SYM_NODES: usize = 10_000;
+pub const MAX_SYM_DEPTH: usize = 1_000;
+
 impl Sym {
+    /// True when the expression has more than [`MAX_SYM_NODES`] nodes or is
+    /// deeper than [`MAX_SYM_DEPTH`] (counted without recursion, stopping
+    /// at the limit).
+    pub fn too_large(&self) -> bool {
+        let mut todo = vec![(self, 1)];
+        let mut nodes = 0;
+        while let Some((s, depth)) = todo.pop() {
+            nodes += 1;
+            if nodes > MAX_SYM_NODES || depth > MAX_SYM_DEPTH {
+                return true;
+            }
+            match s {
+                Sym::Name(_) | Sym::Const(..) | Sym::Identity => {}
+                Sym::Product(v) | Sym::Call(_, v) => todo.extend(v.iter().map(|c| (c, depth + 1))),
+                Sym::Inv(a)
+                | Sym::Neg(a)
+                | Sym::Bracket(a)
+                | Sym::Transpose(a)
+                | Sym::Member(a, _) => todo.push((a, depth + 1)),
+                Sym::Add(a, b) | Sym::Sub(a, b) | Sym::Div(a, b) | Sym::Pow(a, b) => {
+                    todo.push((a, depth + 1));
+                    todo.push((b, depth + 1));
+                }
+            }
+        }
+        false
+    }
+
     /// The inverse, pushed through products: inv(A B) = inv(B) inv(A).
     pub fn inverse(self) -> Sym {
         match self {

@@ -26,7 +26,7 @@ mod parser;
 mod rules;
 mod split;
 
-use crate::diagnostics::Diagnostic;
+use crate::diagnostics::{Diagnostic, ErrorKind};
 
 /// The deepest nesting accepted, both for brackets and for the expression
 /// tree (`1+1+…` with more terms, or `2^2^…`, `----x` chained further, is a
@@ -37,41 +37,63 @@ pub const MAX_DEPTH: usize = 200;
 /// Parses a script or REPL entry: one entry per statement, in order. Blank
 /// and comment-only lines produce no entry.
 pub fn parse_program(src: &str) -> Vec<Result<ast::Stmt, Diagnostic>> {
-    let split = split::split(src);
-    split
-        .chunks
-        .into_iter()
-        .map(|chunk| match chunk.error {
+    statements(src).collect()
+}
+
+/// [`parse_program`] one statement at a time: each statement is split off
+/// and parsed only when asked for, so a long script needs memory for its
+/// text and one statement, not for every statement's tree at once.
+pub fn statements(src: &str) -> impl Iterator<Item = Result<ast::Stmt, Diagnostic>> + '_ {
+    let mut splitter = split::Splitter::new(src);
+    std::iter::from_fn(move || {
+        let chunk = splitter.next()?;
+        let text = splitter.text(chunk.span);
+        Some(match chunk.error {
             Some(error) => Err(error),
+            None if text.len() > MAX_STATEMENT_BYTES => Err(too_long(chunk.span, text.len())),
             // Most statements take the fast path; it leaves errors and rare
             // forms to pest.
-            None if chunk.depth <= SHALLOW
-                && let Some(stmt) = fast::parse_statement(&split.text, chunk.span) =>
+            None if chunk.depth <= FAST_DEPTH
+                && let Some(stmt) = fast::parse_statement(text, chunk.span) =>
             {
                 Ok(stmt)
             }
-            None if chunk.depth > SHALLOW || chunk.span.end - chunk.span.start > SHORT => {
-                parse_on_big_stack(&split.text, chunk.span)
-            }
-            None => parser::parse_statement(&split.text, chunk.span),
+            None if chunk.depth > SHALLOW => parse_on_big_stack(text, chunk.span),
+            None => parser::parse_chunk(text, chunk.span),
         })
-        .collect()
+    })
 }
 
-/// Statements nested deeper than this many brackets, or longer than
-/// [`SHORT`] bytes (long enough for deep operator chains), are parsed on a
-/// thread of their own with a large stack: building the tree costs
-/// kilobytes of stack per level in debug builds, and the caller's thread
-/// may have as little as 2 MB.
-const SHALLOW: usize = 16;
-const SHORT: usize = 256;
+/// The longest statement accepted (bytes). The grammar needs memory
+/// proportional to the statement (about a hundred bytes per byte of
+/// text), so a runaway line is refused rather than parsed.
+pub const MAX_STATEMENT_BYTES: usize = 1 << 20;
 
-fn parse_on_big_stack(text: &str, span: ast::Span) -> Result<ast::Stmt, Diagnostic> {
+fn too_long(span: ast::Span, len: usize) -> Diagnostic {
+    let at = ast::Span::new(span.start, span.start + 1);
+    Diagnostic::error(
+        ErrorKind::Syntax,
+        at,
+        format!("statement too long ({len} bytes; the limit is {MAX_STATEMENT_BYTES})"),
+    )
+    .with_help("split it into several statements with intermediate names")
+}
+
+/// Statements nested deeper than this many brackets are parsed on a thread
+/// of their own with a large stack: building the tree costs several
+/// kilobytes of stack per bracket level in debug builds, and the caller's
+/// thread may have as little as 2 MB.
+const SHALLOW: usize = 48;
+
+/// The fast path ([`fast`]) takes statements nested at most this deep.
+const FAST_DEPTH: usize = 16;
+
+fn parse_on_big_stack(chunk: &str, span: ast::Span) -> Result<ast::Stmt, Diagnostic> {
     std::thread::scope(|scope| {
         std::thread::Builder::new()
             .name("chasles-parse".into())
             .stack_size(64 << 20)
-            .spawn_scoped(scope, || parser::parse_statement(text, span))
+            .spawn_scoped(scope, || parser::parse_chunk(chunk, span))
             .ok()
             .and_then(|handle| handle.join().ok())
     })
@@ -82,5 +104,7 @@ fn parse_on_big_stack(text: &str, span: ast::Span) -> Result<ast::Stmt, Diagnost
 /// (the REPL should read another line). False when everything is closed
 /// and also when a bracket is unbalanced the other way (an error to report).
 pub fn needs_more_input(src: &str) -> bool {
-    split::split(src).open_at_end
+    let mut splitter = split::Splitter::new(src);
+    splitter.by_ref().for_each(drop);
+    splitter.open_at_end
 }

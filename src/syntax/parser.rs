@@ -42,9 +42,8 @@ static PRATT: LazyLock<PrattParser<Rule>> = LazyLock::new(|| {
         .op(Op::postfix(Rule::index) | Op::postfix(Rule::member) | Op::postfix(Rule::degrees))
 });
 
-/// Parses the statement at `span` of `text` (the blanked source).
-pub(crate) fn parse_statement(text: &str, span: Span) -> Result<Stmt, Diagnostic> {
-    let chunk = text.get(span.start..span.end).unwrap_or("");
+/// Parses `chunk`, the blanked text of the statement at `span`.
+pub(crate) fn parse_chunk(chunk: &str, span: Span) -> Result<Stmt, Diagnostic> {
     let cx = Cx {
         off: span.start,
         text: chunk,

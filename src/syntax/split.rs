@@ -25,6 +25,7 @@ pub(crate) struct Chunk {
 }
 
 /// The result of [`split`].
+#[cfg(test)]
 #[derive(Debug)]
 pub(crate) struct Split {
     /// The source with comments and continuation newlines replaced by
@@ -42,140 +43,206 @@ pub(crate) struct Split {
 const MAX_RECOVERIES: usize = 32;
 
 /// Splits `src` into statements.
+#[cfg(test)]
 pub(crate) fn split(src: &str) -> Split {
-    let bytes = src.as_bytes();
-    let n = bytes.len();
-    let mut buf = bytes.to_vec();
-    let mut chunks = Vec::new();
-    let mut open_at_end = false;
-    let mut any_error = false;
-    let mut recoveries = 0;
-
-    let mut start = 0;
-    let mut i = 0;
-    // Open brackets: the byte (`(`, `[`, `{`, or `<` for `mech <`) and offset.
-    let mut stack: Vec<(u8, usize)> = Vec::new();
-    let mut error: Option<Diagnostic> = None;
-    // The deepest nesting in the current statement.
-    let mut depth = 0;
-
-    loop {
-        if i >= n {
-            if stack.is_empty() {
-                push_chunk(&mut chunks, &buf, (start, n, depth), error.take());
-                break;
-            }
-            // Something is still open at the end of the input.
-            if error.is_none() && !any_error {
-                open_at_end = true;
-            }
-            // Report the outermost: the statement is cut at its line.
-            let &(open, at) = stack.first().unwrap_or(&(b'(', start));
-            let err = error.take().unwrap_or_else(|| unclosed(open, at));
-            any_error = true;
-            // Recover: end this statement at the end of the line of the
-            // outermost open bracket and scan the rest afresh.
-            let outer = stack.first().map_or(start, |&(_, at)| at);
-            let line_end = bytes[outer..].iter().position(|&b| b == b'\n');
-            match line_end {
-                Some(off) if recoveries < MAX_RECOVERIES => {
-                    recoveries += 1;
-                    let nl = outer + off;
-                    push_chunk(&mut chunks, &buf, (start, nl, depth), Some(err));
-                    depth = 0;
-                    // Undo the blanking done under the wrong assumption.
-                    buf[nl..].copy_from_slice(&bytes[nl..]);
-                    stack.clear();
-                    start = nl + 1;
-                    i = nl + 1;
-                    continue;
-                }
-                _ => {
-                    push_chunk(&mut chunks, &buf, (start, n, depth), Some(err));
-                    break;
-                }
-            }
-        }
-
-        let b = bytes[i];
-        match b {
-            b'#' => {
-                while i < n && bytes[i] != b'\n' {
-                    buf[i] = b' ';
-                    i += 1;
-                }
-                continue;
-            }
-            b'\n' | b';' => match stack.last() {
-                None => {
-                    any_error |= error.is_some();
-                    push_chunk(&mut chunks, &buf, (start, i, depth), error.take());
-                    start = i + 1;
-                    depth = 0;
-                }
-                Some((b'(' | b'{', _)) if b == b'\n' => buf[i] = b' ',
-                Some(_) => {}
-            },
-            b'(' | b'[' | b'{' => {
-                open(&mut stack, &mut error, b, i);
-                depth = depth.max(stack.len());
-            }
-            b'<' if follows_mech(&buf[start..i]) => {
-                open(&mut stack, &mut error, b, i);
-                depth = depth.max(stack.len());
-            }
-            b'>' => {
-                if let Some((b'<', _)) = stack.last() {
-                    stack.pop();
-                }
-            }
-            b')' | b']' | b'}' => {
-                match stack.last() {
-                    Some(&(o, _)) if closer_of(o) == b => {}
-                    Some(&(o, at)) => {
-                        if error.is_none() {
-                            error = Some(
-                                Diagnostic::error(
-                                    ErrorKind::Syntax,
-                                    Span::new(i, i + 1),
-                                    format!("mismatched '{}'", b as char),
-                                )
-                                .with_primary_label(format!("expected '{}'", closer_of(o) as char))
-                                .with_label(
-                                    Span::new(at, at + 1),
-                                    format!("'{}' opened here", opener_name(o)),
-                                ),
-                            );
-                        }
-                    }
-                    None => {
-                        if error.is_none() {
-                            error = Some(
-                                Diagnostic::error(
-                                    ErrorKind::Syntax,
-                                    Span::new(i, i + 1),
-                                    format!("unmatched '{}'", b as char),
-                                )
-                                .with_primary_label(format!(
-                                    "no '{}' is open here",
-                                    opener_of(b) as char
-                                )),
-                            );
-                        }
-                    }
-                }
-                stack.pop();
-            }
-            _ => {}
-        }
-        i += 1;
-    }
-
-    let text = String::from_utf8(buf).unwrap_or_else(|_| src.to_string());
+    let mut splitter = Splitter::new(src);
+    let chunks: Vec<Chunk> = splitter.by_ref().collect();
+    let open_at_end = splitter.open_at_end;
+    let text = String::from_utf8(splitter.buf).unwrap_or_else(|_| src.to_string());
     Split {
         text,
         chunks,
         open_at_end,
+    }
+}
+
+/// The scanner of [`split`] as an iterator: yields one statement at a time,
+/// so a long script is processed in memory bounded by its size plus one
+/// statement (not one chunk per statement up front).
+pub(crate) struct Splitter<'a> {
+    bytes: &'a [u8],
+    /// The blanked text; `buf[chunk.span]` is final once a chunk is yielded.
+    buf: Vec<u8>,
+    /// See [`Split::open_at_end`] (valid once the iterator is exhausted).
+    pub open_at_end: bool,
+    any_error: bool,
+    recoveries: usize,
+    start: usize,
+    i: usize,
+    /// Open brackets: the byte (`(`, `[`, `{`, or `<` for `mech <`) and offset.
+    stack: Vec<(u8, usize)>,
+    error: Option<Diagnostic>,
+    /// The deepest nesting in the current statement.
+    depth: usize,
+    done: bool,
+}
+
+impl<'a> Splitter<'a> {
+    pub(crate) fn new(src: &'a str) -> Splitter<'a> {
+        Splitter {
+            bytes: src.as_bytes(),
+            buf: src.as_bytes().to_vec(),
+            open_at_end: false,
+            any_error: false,
+            recoveries: 0,
+            start: 0,
+            i: 0,
+            stack: Vec::new(),
+            error: None,
+            depth: 0,
+            done: false,
+        }
+    }
+
+    /// The blanked text of a yielded chunk.
+    pub(crate) fn text(&self, span: Span) -> &str {
+        self.buf
+            .get(span.start..span.end)
+            .and_then(|b| std::str::from_utf8(b).ok())
+            .unwrap_or("")
+    }
+
+    /// The statement `buf[start..end]` (nested `depth` deep), trimmed;
+    /// None for a blank one.
+    fn chunk(&self, start: usize, end: usize, error: Option<Diagnostic>) -> Option<Chunk> {
+        make_chunk(&self.buf, (start, end, self.depth), error)
+    }
+}
+
+impl Iterator for Splitter<'_> {
+    type Item = Chunk;
+
+    fn next(&mut self) -> Option<Chunk> {
+        let bytes = self.bytes;
+        let n = bytes.len();
+        loop {
+            if self.done {
+                return None;
+            }
+            let i = self.i;
+            if i >= n {
+                if self.stack.is_empty() {
+                    self.done = true;
+                    let error = self.error.take();
+                    return self.chunk(self.start, n, error);
+                }
+                // Something is still open at the end of the input.
+                if self.error.is_none() && !self.any_error {
+                    self.open_at_end = true;
+                }
+                // Report the outermost: the statement is cut at its line.
+                let &(open, at) = self.stack.first().unwrap_or(&(b'(', self.start));
+                let err = self.error.take().unwrap_or_else(|| unclosed(open, at));
+                self.any_error = true;
+                // Recover: end this statement at the end of the line of the
+                // outermost open bracket and scan the rest afresh.
+                let outer = self.stack.first().map_or(self.start, |&(_, at)| at);
+                let line_end = bytes[outer..].iter().position(|&b| b == b'\n');
+                match line_end {
+                    Some(off) if self.recoveries < MAX_RECOVERIES => {
+                        self.recoveries += 1;
+                        let nl = outer + off;
+                        let chunk = self.chunk(self.start, nl, Some(err));
+                        self.depth = 0;
+                        // Undo the blanking done under the wrong assumption.
+                        self.buf[nl..].copy_from_slice(&bytes[nl..]);
+                        self.stack.clear();
+                        self.start = nl + 1;
+                        self.i = nl + 1;
+                        if chunk.is_some() {
+                            return chunk;
+                        }
+                        continue;
+                    }
+                    _ => {
+                        self.done = true;
+                        return self.chunk(self.start, n, Some(err));
+                    }
+                }
+            }
+
+            let b = bytes[i];
+            match b {
+                b'#' => {
+                    while self.i < n && bytes[self.i] != b'\n' {
+                        self.buf[self.i] = b' ';
+                        self.i += 1;
+                    }
+                    continue;
+                }
+                b'\n' | b';' => match self.stack.last() {
+                    None => {
+                        self.any_error |= self.error.is_some();
+                        let error = self.error.take();
+                        let chunk = self.chunk(self.start, i, error);
+                        self.start = i + 1;
+                        self.depth = 0;
+                        self.i = i + 1;
+                        if chunk.is_some() {
+                            return chunk;
+                        }
+                        continue;
+                    }
+                    Some((b'(' | b'{', _)) if b == b'\n' => self.buf[i] = b' ',
+                    Some(_) => {}
+                },
+                b'(' | b'[' | b'{' => {
+                    open(&mut self.stack, &mut self.error, b, i);
+                    self.depth = self.depth.max(self.stack.len());
+                }
+                b'<' if follows_mech(&self.buf[self.start..i]) => {
+                    open(&mut self.stack, &mut self.error, b, i);
+                    self.depth = self.depth.max(self.stack.len());
+                }
+                b'>' => {
+                    if let Some((b'<', _)) = self.stack.last() {
+                        self.stack.pop();
+                    }
+                }
+                b')' | b']' | b'}' => {
+                    let error = &mut self.error;
+                    match self.stack.last() {
+                        Some(&(o, _)) if closer_of(o) == b => {}
+                        Some(&(o, at)) => {
+                            if error.is_none() {
+                                *error = Some(
+                                    Diagnostic::error(
+                                        ErrorKind::Syntax,
+                                        Span::new(i, i + 1),
+                                        format!("mismatched '{}'", b as char),
+                                    )
+                                    .with_primary_label(format!(
+                                        "expected '{}'",
+                                        closer_of(o) as char
+                                    ))
+                                    .with_label(
+                                        Span::new(at, at + 1),
+                                        format!("'{}' opened here", opener_name(o)),
+                                    ),
+                                );
+                            }
+                        }
+                        None => {
+                            if error.is_none() {
+                                *error = Some(
+                                    Diagnostic::error(
+                                        ErrorKind::Syntax,
+                                        Span::new(i, i + 1),
+                                        format!("unmatched '{}'", b as char),
+                                    )
+                                    .with_primary_label(
+                                        format!("no '{}' is open here", opener_of(b) as char),
+                                    ),
+                                );
+                            }
+                        }
+                    }
+                    self.stack.pop();
+                }
+                _ => {}
+            }
+            self.i = i + 1;
+        }
     }
 }
 
@@ -248,14 +315,13 @@ fn follows_mech(before: &[u8]) -> bool {
     }
 }
 
-/// Records the statement `buf[start..end]` (nested `depth` deep), trimmed;
-/// blank ones are dropped.
-fn push_chunk(
-    chunks: &mut Vec<Chunk>,
+/// The statement `buf[start..end]` (nested `depth` deep), trimmed; None
+/// for a blank one.
+fn make_chunk(
     buf: &[u8],
     (mut start, mut end, depth): (usize, usize, usize),
     error: Option<Diagnostic>,
-) {
+) -> Option<Chunk> {
     let blank = |b: u8| matches!(b, b' ' | b'\t' | b'\r' | b'\n' | b'\x0C');
     while start < end && blank(buf[start]) {
         start += 1;
@@ -264,13 +330,13 @@ fn push_chunk(
         end -= 1;
     }
     if start == end && error.is_none() {
-        return;
+        return None;
     }
-    chunks.push(Chunk {
+    Some(Chunk {
         span: Span::new(start, end),
         error,
         depth,
-    });
+    })
 }
 
 #[cfg(test)]

@@ -1,0 +1,5 @@
+# empty brackets are an error, not a crash (fuzz finding)
+x = 1
+[]
+log([ ])
+x
