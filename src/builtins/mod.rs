@@ -6,9 +6,10 @@
 //! the checker with no numbers), and its implementation on values.
 
 mod args;
-mod table_lie;
 mod table_math;
 mod table_repr;
+mod table_rotations;
+mod table_screw;
 
 use std::sync::OnceLock;
 
@@ -311,7 +312,8 @@ pub fn table() -> &'static [Builtin] {
     static TABLE: OnceLock<Vec<Builtin>> = OnceLock::new();
     TABLE.get_or_init(|| {
         let mut t = Vec::new();
-        t.extend(table_lie::builtins());
+        t.extend(table_rotations::builtins());
+        t.extend(table_screw::builtins());
         t.extend(table_repr::builtins());
         t.extend(table_math::builtins());
         t

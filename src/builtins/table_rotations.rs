@@ -1,0 +1,285 @@
+//! Builtins for rotations (§3.2): the SO(3) functions of section 3.6 and
+//! the constructors of LANGUAGE.md §8. Transforms, twists, screws and
+//! wrenches are in [`super::table_screw`].
+
+use super::{Area, ArgError, Args, Builtin, FrameRule, Param, Typing};
+use crate::check::ty::{Frames, Kind, Ty};
+use crate::diagnostics::{Diagnostic, ErrorKind};
+use crate::eval::value::Value;
+use crate::lie::{Vec3, so3};
+
+pub(super) fn v3() -> Kind {
+    Kind::Vector(Some(3))
+}
+pub(super) fn v6() -> Kind {
+    Kind::Vector(Some(6))
+}
+pub(super) fn so3k() -> Kind {
+    Kind::SO3
+}
+pub(super) fn se3k() -> Kind {
+    Kind::SE3
+}
+pub(super) fn twist() -> Kind {
+    Kind::Twist
+}
+pub(super) fn screw() -> Kind {
+    Kind::Screw
+}
+pub(super) fn wrench() -> Kind {
+    Kind::Wrench
+}
+
+fn rot_of_axis_tuple() -> Kind {
+    Kind::Tuple(vec![v3(), Kind::Scalar])
+}
+
+/// `Rot(axis, θ)`: the axis is a 3-vector (or `x`, `y`, `z`, resolved by
+/// the interpreter before the call).
+fn eval_rot(a: &mut Args) -> Result<Value, Diagnostic> {
+    let axis = a.vec3(0)?;
+    if axis.norm() == 0.0 || !axis.norm().is_finite() {
+        return Err(a.error(0, ErrorKind::Domain, "the rotation axis is the zero vector"));
+    }
+    Ok(Value::num(Kind::SO3, &so3::rot(&axis, a.scalar(1)?)))
+}
+
+/// Twist/velocity from a configuration and its derivative, frames of T_sb:
+/// body twist in {b}, space twist in {s}.
+pub(super) fn velocity_rule(space: bool, kind: Kind) -> impl Fn(&[Ty]) -> Result<Ty, ArgError> {
+    move |args: &[Ty]| {
+        let f = match &args[0].frames {
+            Frames::Pair(s, b) => Frames::One(if space { s.clone() } else { b.clone() }),
+            _ => Frames::None,
+        };
+        Ok(Ty::new(kind.clone(), f))
+    }
+}
+
+fn space_w_rule(a: &[Ty]) -> Result<Ty, ArgError> {
+    velocity_rule(true, Kind::Vector(Some(3)))(a)
+}
+fn body_w_rule(a: &[Ty]) -> Result<Ty, ArgError> {
+    velocity_rule(false, Kind::Vector(Some(3)))(a)
+}
+
+pub(super) fn v3val(v: &Vec3) -> Value {
+    Value::num(v3(), v)
+}
+
+pub(super) fn builtins() -> Vec<Builtin> {
+    use Area::*;
+    use Param::*;
+    vec![
+        Builtin {
+            name: "RotInv",
+            aliases: &["rot_inv"],
+            signature: "RotInv(R: SO3) -> SO3",
+            section: "§3.2.1",
+            doc: "inverse of a rotation matrix, R⁻¹ = Rᵀ (Prop. 3.3)",
+            example: "RotInv([0, 0, 1; 1, 0, 0; 0, 1, 0])",
+            area: Rotations,
+            typing: Typing::Fixed {
+                params: &[Rot],
+                ret: so3k,
+                frames: FrameRule::Swap(0),
+            },
+            eval: |a| Ok(Value::num(Kind::SO3, &so3::inv(&a.so3(0)?))),
+        },
+        Builtin {
+            name: "VecToso3",
+            aliases: &["vec_to_so3", "skew"],
+            signature: "VecToso3(omg: 3-vector) -> so3",
+            section: "§3.2.2 (3.30)",
+            doc: "the skew-symmetric matrix [ω] of a 3-vector ω",
+            example: "VecToso3((1, 2, 3))",
+            area: Rotations,
+            typing: Typing::Fixed {
+                params: &[Vec(3)],
+                ret: || Kind::So3,
+                frames: FrameRule::Same(0),
+            },
+            eval: |a| Ok(Value::num(Kind::So3, &so3::hat(&a.vec3(0)?))),
+        },
+        Builtin {
+            name: "so3ToVec",
+            aliases: &["so3_to_vec", "unskew"],
+            signature: "so3ToVec(so3mat: so3) -> 3-vector",
+            section: "§3.2.2 (3.30)",
+            doc: "the 3-vector ω of a skew-symmetric matrix [ω]",
+            example: "so3ToVec([0, -3, 2; 3, 0, -1; -2, 1, 0])",
+            area: Rotations,
+            typing: Typing::Fixed {
+                params: &[Expc3],
+                ret: v3,
+                frames: FrameRule::Same(0),
+            },
+            eval: |a| Ok(v3val(&a.expc3(0)?)),
+        },
+        Builtin {
+            name: "AxisAng3",
+            aliases: &["axis_ang3"],
+            signature: "AxisAng3(expc3: 3-vector) -> (omghat: 3-vector, theta: scalar)",
+            section: "§3.2.3.2",
+            doc: "unit axis ω̂ and angle θ of exponential coordinates ω̂θ",
+            example: "(w, theta) = AxisAng3((1, 2, 3))",
+            area: Rotations,
+            typing: Typing::Fixed {
+                params: &[Vec(3)],
+                ret: rot_of_axis_tuple,
+                frames: FrameRule::Same(0),
+            },
+            eval: |a| {
+                let (w, t) = so3::axis_angle(&a.vec3(0)?);
+                Ok(Value::Tuple(vec![v3val(&w), Value::scalar(t)]))
+            },
+        },
+        Builtin {
+            name: "MatrixExp3",
+            aliases: &["matrix_exp3"],
+            signature: "MatrixExp3(expc3: 3-vector or so3) -> SO3",
+            section: "§3.2.3.2 (3.51)",
+            doc: "the rotation e^[ω̂]θ of exponential coordinates (Rodrigues' formula)",
+            example: "MatrixExp3((1, 2, 3))",
+            area: Rotations,
+            typing: Typing::Fixed {
+                params: &[Expc3],
+                ret: so3k,
+                frames: FrameRule::Disp(0),
+            },
+            eval: |a| Ok(Value::num(Kind::SO3, &so3::exp(&a.expc3(0)?))),
+        },
+        Builtin {
+            name: "MatrixLog3",
+            aliases: &["matrix_log3"],
+            signature: "MatrixLog3(R: SO3) -> 3-vector",
+            section: "§3.2.3.3",
+            doc: "exponential coordinates ω̂θ of a rotation, θ ∈ [0, π]",
+            example: "MatrixLog3([0, 0, 1; 1, 0, 0; 0, 1, 0])",
+            area: Rotations,
+            typing: Typing::Fixed {
+                params: &[Rot],
+                ret: v3,
+                frames: FrameRule::Outer(0),
+            },
+            eval: |a| Ok(v3val(&so3::log(&a.so3(0)?))),
+        },
+        Builtin {
+            name: "Rot",
+            aliases: &["rot"],
+            signature: "Rot(axis: 3-vector or x|y|z, theta: scalar) -> SO3",
+            section: "§3.2.3.2",
+            doc: "rotation by θ about an axis (normalized): Rot(ω̂, θ) = e^[ω̂]θ",
+            example: "Rot((0, 0.866, 0.5), 30 deg)",
+            area: Rotations,
+            typing: Typing::Fixed {
+                params: &[Vec(3), Scalar],
+                ret: so3k,
+                frames: FrameRule::None,
+            },
+            eval: eval_rot,
+        },
+        Builtin {
+            name: "Rotx",
+            aliases: &["rotx", "RotX"],
+            signature: "Rotx(theta: scalar) -> SO3",
+            section: "§3.2.1",
+            doc: "rotation by θ about x̂",
+            example: "Rotx(90 deg)",
+            area: Rotations,
+            typing: Typing::Fixed {
+                params: &[Scalar],
+                ret: so3k,
+                frames: FrameRule::None,
+            },
+            eval: |a| Ok(Value::num(Kind::SO3, &so3::rotx(a.scalar(0)?))),
+        },
+        Builtin {
+            name: "Roty",
+            aliases: &["roty", "RotY"],
+            signature: "Roty(theta: scalar) -> SO3",
+            section: "§3.2.1",
+            doc: "rotation by θ about ŷ",
+            example: "Roty(90 deg)",
+            area: Rotations,
+            typing: Typing::Fixed {
+                params: &[Scalar],
+                ret: so3k,
+                frames: FrameRule::None,
+            },
+            eval: |a| Ok(Value::num(Kind::SO3, &so3::roty(a.scalar(0)?))),
+        },
+        Builtin {
+            name: "Rotz",
+            aliases: &["rotz", "RotZ"],
+            signature: "Rotz(theta: scalar) -> SO3",
+            section: "§3.2.1",
+            doc: "rotation by θ about ẑ",
+            example: "Rotz(90 deg)",
+            area: Rotations,
+            typing: Typing::Fixed {
+                params: &[Scalar],
+                ret: so3k,
+                frames: FrameRule::None,
+            },
+            eval: |a| Ok(Value::num(Kind::SO3, &so3::rotz(a.scalar(0)?))),
+        },
+        Builtin {
+            name: "SO3",
+            aliases: &[],
+            signature: "SO3(M: 3×3 matrix) -> SO3",
+            section: "§3.2.1",
+            doc: "reads a 3×3 matrix as a rotation (projected within 1e-2, else an error)",
+            example: "SO3([0, -1, 0; 1, 0, 0; 0, 0, 1])",
+            area: Rotations,
+            typing: Typing::Fixed {
+                params: &[Rot],
+                ret: so3k,
+                frames: FrameRule::Same(0),
+            },
+            eval: |a| Ok(Value::num(Kind::SO3, &a.so3(0)?)),
+        },
+        Builtin {
+            name: "AngVelSpace",
+            aliases: &["space_angvel", "ang_vel_space"],
+            signature: "AngVelSpace(R: SO3, Rdot: 3×3) -> 3-vector",
+            section: "§3.2.2 (3.29)",
+            doc: "spatial angular velocity ω_s from [ω_s] = Ṙ Rᵀ",
+            example: "AngVelSpace(Rotz(0), [0, -1, 0; 1, 0, 0; 0, 0, 0])",
+            area: Rotations,
+            typing: Typing::Custom {
+                arity: (2, 2),
+                rule: space_w_rule,
+            },
+            eval: |a| {
+                let (r, rd) = (a.so3(0)?, mat3(a, 1)?);
+                Ok(v3val(&so3::angular_velocities(&r, &rd).0))
+            },
+        },
+        Builtin {
+            name: "AngVelBody",
+            aliases: &["body_angvel", "ang_vel_body"],
+            signature: "AngVelBody(R: SO3, Rdot: 3×3) -> 3-vector",
+            section: "§3.2.2 (3.31)",
+            doc: "body angular velocity ω_b from [ω_b] = Rᵀ Ṙ",
+            example: "AngVelBody(Rotz(0), [0, -1, 0; 1, 0, 0; 0, 0, 0])",
+            area: Rotations,
+            typing: Typing::Custom {
+                arity: (2, 2),
+                rule: body_w_rule,
+            },
+            eval: |a| {
+                let (r, rd) = (a.so3(0)?, mat3(a, 1)?);
+                Ok(v3val(&so3::angular_velocities(&r, &rd).1))
+            },
+        },
+    ]
+}
+
+pub(super) fn mat3(a: &Args, i: usize) -> Result<crate::lie::Mat3, Diagnostic> {
+    let m = a.mat(i)?;
+    if m.shape() != (3, 3) {
+        return Err(a.error(i, ErrorKind::Type, "expected a 3×3 matrix"));
+    }
+    Ok(crate::lie::Mat3::from_iterator(m.iter().copied()))
+}
