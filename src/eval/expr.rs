@@ -6,21 +6,21 @@ use std::f64::consts::PI;
 
 use super::env::Mode;
 use super::interp::{Interp, MAX_CALL_DEPTH, Typed};
-use super::ops::{self, Sel};
+use super::ops;
 use super::symbolic::Sym;
 use super::value::Value;
 use crate::builtins::{self, Args};
 use crate::check::rules::{self, Operands};
-use crate::check::ty::{Frames, Kind, Ty};
+use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind, suggest};
-use crate::syntax::ast::{BinOp, Expr, ExprKind, IndexArg, Span, UnOp};
+use crate::syntax::ast::{BinOp, Expr, ExprKind, Span, UnOp};
 
 fn strip(t: &Ty) -> Ty {
     Ty::plain(t.kind.clone())
 }
 
 /// A value as a symbolic operand (numbers become constants).
-fn to_sym(v: &Value) -> Sym {
+pub(super) fn to_sym(v: &Value) -> Sym {
     match v {
         Value::Sym(s) => s.clone(),
         other => Sym::Const(
@@ -32,7 +32,7 @@ fn to_sym(v: &Value) -> Sym {
 
 /// The runtime kind refines the static one (a literal that is a rotation
 /// is SO(3)); frames stay as the checker found them.
-fn refine(ty: Ty, val: &Option<Value>) -> Ty {
+pub(super) fn refine(ty: Ty, val: &Option<Value>) -> Ty {
     match val {
         Some(v @ (Value::Num { .. } | Value::Tuple(_))) => Ty::new(v.kind(), ty.frames),
         _ => ty,
@@ -40,11 +40,11 @@ fn refine(ty: Ty, val: &Option<Value>) -> Ty {
 }
 
 impl Interp<'_> {
-    fn running(&self) -> bool {
+    pub(super) fn running(&self) -> bool {
         self.mode == Mode::Run
     }
 
-    fn domain(&self, span: Span, msg: impl Into<String>) -> Diagnostic {
+    pub(super) fn domain(&self, span: Span, msg: impl Into<String>) -> Diagnostic {
         Diagnostic::error(ErrorKind::Domain, span, msg)
     }
 
@@ -437,226 +437,6 @@ impl Interp<'_> {
         }
         result
     }
-
-    fn index(&mut self, base: &Expr, args: &[IndexArg], span: Span) -> Result<Typed, Diagnostic> {
-        let t = self.expr(base)?;
-        let mut sels = Vec::new();
-        for a in args {
-            match a {
-                IndexArg::All(_) => sels.push(Sel::All),
-                IndexArg::Expr(e) => {
-                    let it = self.expr(e)?;
-                    if !it.ty.kind.maybe_scalar() {
-                        return Err(Diagnostic::error(
-                            ErrorKind::Type,
-                            e.span,
-                            "an index must be a number",
-                        ));
-                    }
-                    sels.push(Sel::At(
-                        it.val
-                            .as_ref()
-                            .and_then(Value::as_scalar)
-                            .unwrap_or(f64::NAN),
-                    ));
-                }
-            }
-        }
-        let outer = match t.ty.frames.outer() {
-            Some(a) => Frames::One(a.clone()),
-            None => Frames::None,
-        };
-        let ty = match (&t.ty.kind, sels.as_slice()) {
-            (Kind::Tuple(ks), [Sel::At(i)])
-                if i.fract() == 0.0 && *i >= 1.0 && (*i as usize) <= ks.len() =>
-            {
-                Ty::plain(ks[*i as usize - 1].clone())
-            }
-            (Kind::Tuple(_), _) => Ty::plain(Kind::Unknown),
-            (k, _) if k.shape().is_none() => {
-                return Err(Diagnostic::error(
-                    ErrorKind::Type,
-                    span,
-                    format!("cannot index a {k}"),
-                ));
-            }
-            (_, [Sel::All, Sel::At(_)]) => Ty::new(Kind::Vector(None), outer),
-            (_, [Sel::At(_), Sel::All]) => Ty::plain(Kind::Matrix(Some(1), None)),
-            _ => Ty::scalar(),
-        };
-        let val = match t.val {
-            Some(Value::Sym(s)) => Some(Value::Sym(Sym::Call(format!("{s}[]"), vec![]))),
-            Some(v) => Some(ops::index(&v, &sels).map_err(|m| self.domain(span, m))?),
-            None => None,
-        };
-        Ok(Typed {
-            ty: refine(ty, &val),
-            val,
-        })
-    }
-
-    fn paren(&mut self, items: &[Expr], _span: Span) -> Result<Typed, Diagnostic> {
-        let mut ts = Vec::with_capacity(items.len());
-        for i in items {
-            ts.push(self.expr(i)?);
-        }
-        let all_scalar = ts
-            .iter()
-            .all(|t| t.ty.kind.maybe_scalar() && t.ty.kind == Kind::Scalar);
-        if all_scalar {
-            let ty = Ty::plain(Kind::Vector(Some(ts.len())));
-            let val = if self.running() {
-                if ts
-                    .iter()
-                    .any(|t| t.val.as_ref().is_some_and(Value::is_symbolic))
-                {
-                    let parts = ts
-                        .iter()
-                        .map(|t| t.val.as_ref().map_or(Sym::Identity, to_sym))
-                        .collect();
-                    Some(Value::Sym(Sym::Call(String::new(), parts)))
-                } else {
-                    let xs: Vec<f64> = ts
-                        .iter()
-                        .map(|t| {
-                            t.val
-                                .as_ref()
-                                .and_then(Value::as_scalar)
-                                .unwrap_or(f64::NAN)
-                        })
-                        .collect();
-                    Some(Value::vector(Kind::Vector(Some(xs.len())), &xs))
-                }
-            } else {
-                None
-            };
-            return Ok(Typed { ty, val });
-        }
-        let ty = Ty::plain(Kind::Tuple(ts.iter().map(|t| t.ty.kind.clone()).collect()));
-        let val = ts
-            .iter()
-            .map(|t| t.val.clone())
-            .collect::<Option<Vec<_>>>()
-            .map(Value::Tuple);
-        Ok(Typed { ty, val })
-    }
-
-    fn brackets(&mut self, rows: &[Vec<Expr>], span: Span) -> Result<Typed, Diagnostic> {
-        if rows.iter().all(Vec::is_empty) {
-            return Err(Diagnostic::error(
-                ErrorKind::Syntax,
-                span,
-                "empty brackets: a vector or matrix needs at least one entry",
-            )
-            .with_help("write the entries, e.g. [1, 2, 3] or [1, 0; 0, 1]"));
-        }
-        let rows: Vec<&Vec<Expr>> = rows.iter().filter(|r| !r.is_empty()).collect();
-        let mut trows = Vec::with_capacity(rows.len());
-        for row in rows {
-            let mut tr = Vec::with_capacity(row.len());
-            for e in row {
-                let t = self.expr(e)?;
-                if t.ty.kind.shape().is_none() {
-                    return Err(Diagnostic::error(
-                        ErrorKind::Type,
-                        e.span,
-                        format!("a {} cannot go inside [ ]", t.ty.kind),
-                    ));
-                }
-                tr.push(t);
-            }
-            trows.push(tr);
-        }
-        let ty = bracket_type(&trows);
-        if !self.running() {
-            return Ok(Typed { ty, val: None });
-        }
-        let any_sym = trows
-            .iter()
-            .flatten()
-            .any(|t| t.val.as_ref().is_some_and(Value::is_symbolic));
-        if any_sym {
-            let sym = if trows.len() == 1 && trows[0].len() == 1 {
-                Sym::Bracket(Box::new(to_sym(
-                    trows[0][0].val.as_ref().unwrap_or(&Value::scalar(f64::NAN)),
-                )))
-            } else {
-                Sym::Call(
-                    "block".into(),
-                    trows
-                        .iter()
-                        .flatten()
-                        .filter_map(|t| t.val.as_ref())
-                        .map(to_sym)
-                        .collect(),
-                )
-            };
-            return Ok(Typed {
-                ty,
-                val: Some(Value::Sym(sym)),
-            });
-        }
-        let vrows: Vec<Vec<Value>> = trows
-            .into_iter()
-            .map(|r| {
-                r.into_iter()
-                    .map(|t| t.val.unwrap_or_else(|| Value::scalar(f64::NAN)))
-                    .collect()
-            })
-            .collect();
-        let v = ops::brackets(&vrows).map_err(|m| Diagnostic::error(ErrorKind::Type, span, m))?;
-        let val = Some(v);
-        Ok(Typed {
-            ty: refine(ty, &val),
-            val,
-        })
-    }
-
-    fn mech(
-        &mut self,
-        spec: &crate::syntax::ast::MechSpec,
-        span: Span,
-    ) -> Result<Typed, Diagnostic> {
-        use crate::mech::{MechPart, Mechanism};
-        if let Some((word, s)) = spec.unknown.first() {
-            return Err(Diagnostic::error(
-                ErrorKind::Syntax,
-                *s,
-                format!("unknown mechanism item '{word}'"),
-            )
-            .with_help("items: links N; joints …; legs K CHAIN; planar | spatial | spherical"));
-        }
-        let joints: Vec<(i64, &str)> = spec
-            .joints
-            .iter()
-            .map(|j| (j.count, j.letters.as_str()))
-            .collect();
-        let m = Mechanism::from_spec(
-            spec.space.as_ref().map(|(s, _)| s.as_str()),
-            spec.links.map(|(n, _)| n),
-            &joints,
-            spec.legs.as_ref().map(|(k, c, _)| (*k, c.as_str())),
-        )
-        .map_err(|e| {
-            let at = match e.part {
-                MechPart::Links => spec.links.map(|(_, s)| s),
-                MechPart::Joint(i) => spec.joints.get(i).map(|j| j.span),
-                MechPart::Legs => spec.legs.as_ref().map(|(_, _, s)| *s),
-                MechPart::Space => spec.space.as_ref().map(|(_, s)| *s),
-                MechPart::Whole => None,
-            };
-            let mut d = Diagnostic::error(ErrorKind::Domain, at.unwrap_or(span), e.message.clone());
-            if let Some(h) = &e.help {
-                d = d.with_help(h.clone());
-            }
-            d
-        })?;
-        let val = self.running().then(|| Value::Mech(std::rc::Rc::new(m)));
-        Ok(Typed {
-            ty: Ty::plain(Kind::Mechanism),
-            val,
-        })
-    }
 }
 
 /// The unit vector of an axis named `x`, `y` or `z`.
@@ -683,45 +463,6 @@ fn literal_number(e: &Expr) -> Option<f64> {
         } => literal_number(operand).map(|x| -x),
         _ => None,
     }
-}
-
-/// The static type of `[ ... ]`: the book's bracket of one vector, a column
-/// vector of one row of numbers, else a block matrix whose frames are the
-/// one pair tag inside it (`[R_sb, p_sb; 0, 0, 0, 1]` is {s}←{b}).
-fn bracket_type(rows: &[Vec<Typed>]) -> Ty {
-    if rows.len() == 1 && rows[0].len() == 1 {
-        let t = &rows[0][0].ty;
-        return match t.kind.vec_len() {
-            Some(3) => Ty::new(Kind::So3, t.frames.clone()),
-            Some(6) => Ty::new(Kind::Se3, t.frames.clone()),
-            _ => t.clone(),
-        };
-    }
-    let all_scalar = rows.iter().flatten().all(|t| t.ty.kind == Kind::Scalar);
-    if all_scalar && rows.len() == 1 {
-        return Ty::plain(Kind::Vector(Some(rows[0].len())));
-    }
-    let mut frames = Frames::None;
-    for t in rows.iter().flatten() {
-        if let Frames::Pair(..) = t.ty.frames {
-            if frames.is_none() {
-                frames = t.ty.frames.clone();
-            } else if frames != t.ty.frames {
-                frames = Frames::None;
-                break;
-            }
-        }
-    }
-    // Shape: sum of widths of the first row, sum of heights of the first column.
-    let width: Option<usize> = rows[0]
-        .iter()
-        .map(|t| t.ty.kind.shape().and_then(|s| s.1))
-        .sum();
-    let height: Option<usize> = rows
-        .iter()
-        .map(|r| r[0].ty.kind.shape().and_then(|s| s.0))
-        .sum();
-    Ty::new(Kind::Matrix(height, width), frames)
 }
 
 /// A rotation, transform, Lie-algebra element or adjoint with an inf or NaN
