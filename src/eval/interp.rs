@@ -102,6 +102,19 @@ impl<'a> Interp<'a> {
         Err(d)
     }
 
+    /// Binds a checked value to `name` (statements call this only after
+    /// they have succeeded).
+    fn bind_value(&mut self, name: &str, t: &Typed) {
+        self.env.set(
+            name,
+            Binding {
+                ty: t.ty.clone(),
+                val: t.val.clone(),
+                symbolic: false,
+            },
+        );
+    }
+
     /// Runs one statement. On error nothing is bound.
     pub fn stmt(&mut self, s: &Stmt) -> Result<Outcome, Diagnostic> {
         self.warnings.clear();
@@ -117,28 +130,14 @@ impl<'a> Interp<'a> {
             StmtKind::Expr(e) => {
                 let t = self.expr(e)?;
                 if t.ty.kind != Kind::Function {
-                    self.env.set(
-                        "ans",
-                        Binding {
-                            ty: t.ty.clone(),
-                            val: t.val.clone(),
-                            symbolic: false,
-                        },
-                    );
+                    self.bind_value("ans", &t);
                 }
                 Ok(out(vec![], t))
             }
             StmtKind::Assign { target, value } => {
                 let t = self.expr(value)?;
                 let t = self.bind_checked(&target.name, t, target.span, value.span)?;
-                self.env.set(
-                    &target.name,
-                    Binding {
-                        ty: t.ty.clone(),
-                        val: t.val.clone(),
-                        symbolic: false,
-                    },
-                );
+                self.bind_value(&target.name, &t);
                 Ok(out(vec![target.name.clone()], t))
             }
             StmtKind::Destructure { targets, value } => {
@@ -149,14 +148,7 @@ impl<'a> Interp<'a> {
                     bound.push(self.bind_checked(&target.name, part, target.span, value.span)?);
                 }
                 for (target, b) in targets.iter().zip(&bound) {
-                    self.env.set(
-                        &target.name,
-                        Binding {
-                            ty: b.ty.clone(),
-                            val: b.val.clone(),
-                            symbolic: false,
-                        },
-                    );
+                    self.bind_value(&target.name, b);
                 }
                 let names = targets.iter().map(|t| t.name.clone()).collect();
                 let ty = Ty::plain(Kind::Tuple(
@@ -228,14 +220,7 @@ impl<'a> Interp<'a> {
             }
             StmtKind::Derive { target } => {
                 let (chain, t) = self.derive(target)?;
-                self.env.set(
-                    &target.name,
-                    Binding {
-                        ty: t.ty.clone(),
-                        val: t.val.clone(),
-                        symbolic: false,
-                    },
-                );
+                self.bind_value(&target.name, &t);
                 let mut o = out(vec![target.name.clone()], t);
                 o.note = Some(format!("{} = {chain}", target.name));
                 Ok(o)
