@@ -112,6 +112,24 @@ impl Args<'_> {
             .ok_or_else(|| self.wrong(i, "matrix"))
     }
 
+    /// Argument `i` as a square matrix.
+    pub fn square(&self, i: usize) -> Result<&DMatrix<f64>, Diagnostic> {
+        let m = self.mat(i)?;
+        if !m.is_square() {
+            return Err(self.error(
+                i,
+                ErrorKind::Type,
+                format!(
+                    "{} needs a square matrix, not {}×{}",
+                    self.name,
+                    m.nrows(),
+                    m.ncols()
+                ),
+            ));
+        }
+        Ok(m)
+    }
+
     /// Argument `i` as a column vector of any length.
     pub fn vec(&self, i: usize) -> Result<DVector<f64>, Diagnostic> {
         let m = self.mat(i)?;
@@ -292,8 +310,10 @@ fn orthogonality_gap(m: &DMatrix<f64>, group: Group) -> f64 {
 
 /// `a 3-vector`, `an SO(3)`.
 pub fn article(what: &str) -> String {
-    let vowel = what.starts_with(['a', 'e', 'i', 'o', 'u', 'S', 's', '8'])
-        && !what.starts_with("screw")
-        && !what.starts_with("scalar");
+    // "an SO(3)", "an se(3)" (letters read as "ess"), but "a square matrix".
+    let lie = ["SO", "SE", "so(", "se("]
+        .iter()
+        .any(|p| what.starts_with(p));
+    let vowel = lie || what.starts_with(['a', 'e', 'i', 'o', 'u', '8']);
     format!("{} {what}", if vowel { "an" } else { "a" })
 }

@@ -385,13 +385,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: scalar,
                 frames: FrameRule::None,
             },
-            eval: |a| {
-                let m = a.mat(0)?;
-                if !m.is_square() {
-                    return Err(a.error(0, ErrorKind::Type, "det needs a square matrix"));
-                }
-                Ok(Value::scalar(m.determinant()))
-            },
+            eval: |a| Ok(Value::scalar(a.square(0)?.determinant())),
         },
         Builtin {
             name: "trace",
@@ -406,13 +400,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: scalar,
                 frames: FrameRule::None,
             },
-            eval: |a| {
-                let m = a.mat(0)?;
-                if !m.is_square() {
-                    return Err(a.error(0, ErrorKind::Type, "trace needs a square matrix"));
-                }
-                Ok(Value::scalar(m.trace()))
-            },
+            eval: |a| Ok(Value::scalar(a.square(0)?.trace())),
         },
         Builtin {
             name: "norm",

@@ -99,17 +99,7 @@ pub fn distance_to_so2(m: &Mat2) -> f64 {
 pub fn project_to_se2(m: &Mat3) -> Mat3 {
     let r = project_to_so2(&m.fixed_view::<2, 2>(0, 0).into_owned());
     let p = Vec2::new(m[(0, 2)], m[(1, 2)]);
-    Mat3::new(
-        r[(0, 0)],
-        r[(0, 1)],
-        p.x,
-        r[(1, 0)],
-        r[(1, 1)],
-        p.y,
-        0.0,
-        0.0,
-        1.0,
-    )
+    super::se2::from_rp(&r, &p)
 }
 
 /// The planar `DistanceToSE3`: `‖[RᵀR, 0; M₃,:] − I‖_F` if det R > 0, else

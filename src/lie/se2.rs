@@ -15,7 +15,8 @@ fn rp(t: &Mat3) -> (Mat2, Vec2) {
     )
 }
 
-fn from_rp(r: &Mat2, p: &Vec2) -> Mat3 {
+/// The planar transform `[R, p; 0, 1]` of a rotation and a position.
+pub(crate) fn from_rp(r: &Mat2, p: &Vec2) -> Mat3 {
     Mat3::new(
         r[(0, 0)],
         r[(0, 1)],
