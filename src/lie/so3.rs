@@ -7,6 +7,11 @@
 //! book's formulas (3.54) and (3.61) lose all their digits. See [`log`].
 
 use super::{Mat3, Vec3};
+use nalgebra::{Matrix, U3, storage::Storage};
+
+/// A 3×3 block of any nalgebra storage: a `Mat3`, or the rotation block of a
+/// 4×4 transform viewed in place (`t.fixed_view::<3, 3>(0, 0)`).
+pub(crate) type Block3<S> = Matrix<f64, U3, U3, S>;
 
 /// Below this angle the coefficients sinθ/θ and (1−cosθ)/θ² of Rodrigues'
 /// formula are evaluated by their Taylor series (truncation error < 1e-24).
@@ -29,6 +34,12 @@ pub fn vee(m: &Mat3) -> Vec3 {
 /// [`vee`] for an exact element of so(3), and the least-squares answer for a
 /// matrix that is only nearly skew-symmetric (rounding, finite differences).
 pub fn vee_skew(m: &Mat3) -> Vec3 {
+    skew_part(m)
+}
+
+/// [`vee_skew`] of any 3×3 block (see [`Block3`]).
+#[inline]
+pub(crate) fn skew_part<S: Storage<f64, U3, U3>>(m: &Block3<S>) -> Vec3 {
     0.5 * Vec3::new(
         m[(2, 1)] - m[(1, 2)],
         m[(0, 2)] - m[(2, 0)],
@@ -136,11 +147,36 @@ pub(crate) fn exp_with(expc: &Vec3, a: f64, b: f64, c: f64) -> Mat3 {
 ///   where the skew part vanishes, the sign with positive largest component
 ///   is kept.
 pub fn log(r: &Mat3) -> Vec3 {
-    let s_vec = vee_skew(r); // = sinθ · ω̂
+    log_parts(r).phi
+}
+
+/// What [`log`] computes on the way to ω̂θ, kept for callers that need the
+/// angle's sine and cosine too (the SE(3) logarithm's G⁻¹, (3.94)).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct LogParts {
+    /// The exponential coordinates ω̂θ.
+    pub phi: Vec3,
+    /// θ ∈ [0, π].
+    pub theta: f64,
+    /// sinθ, read from the skew part of R: ‖vee(R − Rᵀ)‖/2.
+    pub sin: f64,
+    /// cosθ = (tr R − 1)/2 (3.54).
+    pub cos: f64,
+}
+
+/// The body of [`log`]; see there for the formulation.
+///
+/// Generic over the storage so that the SE(3) logarithm reads the rotation
+/// block of T in place: copying it into a temporary `Mat3` first costs
+/// ~25 ns per call in store-forwarding stalls (measured), more than the
+/// arithmetic.
+#[inline]
+pub(crate) fn log_parts<S: Storage<f64, U3, U3>>(r: &Block3<S>) -> LogParts {
+    let s_vec = skew_part(r); // = sinθ · ω̂
     let s = s_vec.norm();
     let c = 0.5 * (r.trace() - 1.0); // = cosθ (3.54)
     let theta = s.atan2(c);
-    if c > 0.0 {
+    let phi = if c > 0.0 {
         // θ ∈ [0, π/2): skew part, (3.61).
         let k = if theta < SERIES_THETA {
             let t2 = theta * theta;
@@ -151,24 +187,44 @@ pub fn log(r: &Mat3) -> Vec3 {
         s_vec * k
     } else {
         // θ ∈ [π/2, π]: symmetric part, generalising (3.58)–(3.60).
-        let mut b = 0.5 * (r + r.transpose());
-        for i in 0..3 {
-            b[(i, i)] -= c;
-        }
-        let k = (0..3)
-            .max_by(|&i, &j| b[(i, i)].total_cmp(&b[(j, j)]))
-            .unwrap_or(0);
-        let col: Vec3 = b.column(k).into_owned();
-        let n = col.norm();
-        if n.is_nan() || n == 0.0 {
-            return Vec3::zeros(); // not a rotation (e.g. NaN input)
-        }
-        let mut w = col / n;
-        if w.dot(&s_vec) < 0.0 {
-            w = -w;
-        }
-        w * theta
+        near_pi_axis(r, c, &s_vec) * theta
+    };
+    LogParts {
+        phi,
+        theta,
+        sin: s,
+        cos: c,
     }
+}
+
+/// The unit axis ω̂ of a rotation with cosθ = `c` ≤ 0, from the symmetric
+/// part (R + Rᵀ)/2 − cosθ·I = (1 − cosθ) ω̂ω̂ᵀ (3.52): its column with the
+/// largest diagonal entry, signed to agree with `s_vec` = sinθ ω̂. Zero for
+/// input that is not a rotation (e.g. NaN entries).
+fn near_pi_axis<S: Storage<f64, U3, U3>>(r: &Block3<S>, c: f64, s_vec: &Vec3) -> Vec3 {
+    let d = [r[(0, 0)] - c, r[(1, 1)] - c, r[(2, 2)] - c];
+    // The largest diagonal entry; on a tie the later one.
+    let k = if d[2] >= d[1] && d[2] >= d[0] {
+        2
+    } else if d[1] >= d[0] {
+        1
+    } else {
+        0
+    };
+    let sym = |i: usize| {
+        if i == k {
+            d[k]
+        } else {
+            0.5 * (r[(i, k)] + r[(k, i)])
+        }
+    };
+    let col = Vec3::new(sym(0), sym(1), sym(2));
+    let n = col.norm();
+    if n.is_nan() || n == 0.0 {
+        return Vec3::zeros();
+    }
+    let w = col / n;
+    if w.dot(s_vec) < 0.0 { -w } else { w }
 }
 
 /// `AxisAng3(ω̂θ)`: splits exponential coordinates into the unit rotation
