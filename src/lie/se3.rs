@@ -160,13 +160,20 @@ pub fn log(t: &Mat4) -> Vec6 {
 /// `Adjoint(T)`: the adjoint representation
 /// `[Ad_T] = [R, 0; [p]R, R] ∈ ℝ⁶ˣ⁶` of `T = (R, p)` (Definition 3.6), so
 /// that `[Ad_T]V` is the twist `V` in the other frame (Proposition 3.14).
+///
+/// Built column by column from T in place: column j of `[p]R` is p × rⱼ.
 pub fn adjoint(t: &Mat4) -> Mat6 {
-    let (r, p) = to_rp(t);
+    let p = Vec3::new(t[(0, 3)], t[(1, 3)], t[(2, 3)]);
     let mut a = Mat6::zeros();
-    a.fixed_view_mut::<3, 3>(0, 0).copy_from(&r);
-    a.fixed_view_mut::<3, 3>(3, 3).copy_from(&r);
-    a.fixed_view_mut::<3, 3>(3, 0)
-        .copy_from(&(so3::hat(&p) * r));
+    for j in 0..3 {
+        let rj = Vec3::new(t[(0, j)], t[(1, j)], t[(2, j)]);
+        let prj = p.cross(&rj);
+        for i in 0..3 {
+            a[(i, j)] = rj[i];
+            a[(i + 3, j + 3)] = rj[i];
+            a[(i + 3, j)] = prj[i];
+        }
+    }
     a
 }
 
