@@ -541,8 +541,36 @@ fn huge_powers_and_products_stay_bounded() {
     assert_fails(
         &eval("inv(2 * eye(2000))"),
         1,
-        "domain error: too much work: 8.0e9 multiply-adds",
+        "domain error: too much work: 8.0e9 multiply-adds (the inverse of a 2000×2000 matrix",
     );
+    assert_fails(
+        &eval("det(eye(2000))"),
+        1,
+        "domain error: too much work: 2.7e9 multiply-adds (the determinant of a 2000×2000 matrix",
+    );
+    assert_fails(
+        &eval("exp(zeros(600, 600))"),
+        1,
+        "domain error: too much work: 1.7e9 multiply-adds (exp of a 600×600 matrix: about 8 products",
+    );
+    // The squarings of a large norm count too: ‖A‖₁ = 1e6 needs 18, so a
+    // 350×350 exp that is cheap at norm 0 is refused at norm 1e6.
+    let out = eval("trace(exp(zeros(350, 350)))");
+    assert_eq!(out.stdout.trim(), "350", "{out:#?}");
+    assert_fails(
+        &eval("exp(1e6 * eye(350))"),
+        1,
+        "domain error: too much work: 1.1e9 multiply-adds (exp of a 350×350 matrix: about 26 products",
+    );
+    // An exp that overflows says so.
+    assert_fails(
+        &eval("exp(1e3 * eye(3))"),
+        1,
+        "domain error: exp of this matrix overflows",
+    );
+    // Just under the limits, the same operations run.
+    let out = eval("det(2 * eye(1000))");
+    assert_eq!(out.stdout.trim(), "1.0715e301", "{out:#?}");
     // A long product of transforms is evaluated in linear time.
     let product = format!("T = Trans((1, 0, 0)); {}", vec!["T"; 150].join(" * "));
     let out = eval(&product);

@@ -87,11 +87,17 @@ fn eval_exp(a: &mut Args) -> Result<Value, Diagnostic> {
             if r > ops::MAX_DIM {
                 return Err(a.domain(format!("matrix too large for exp ({r}×{r})")));
             }
+            let products = matexp::cost_in_products(&m);
+            ops::check_cost(ops::cube(r) * u128::from(products), || {
+                format!("exp of a {r}×{r} matrix: about {products} products of its size")
+            })
+            .map_err(|e| a.domain(e))?;
+            // The input is finite (checked above): None means overflow.
             let Some(e) = matexp::try_expm(&m) else {
                 return Err(a.error(
                     0,
                     ErrorKind::Domain,
-                    "exp needs a square matrix of finite numbers",
+                    "exp of this matrix overflows (an entry of the result exceeds 1.8e308)",
                 ));
             };
             Ok(Value::Num {
@@ -385,7 +391,16 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: scalar,
                 frames: FrameRule::None,
             },
-            eval: |a| Ok(Value::scalar(a.square(0)?.determinant())),
+            eval: |a| {
+                let m = a.square(0)?;
+                let n = m.nrows();
+                // LU: about n³/3 multiply-adds.
+                ops::check_cost(ops::cube(n) / 3, || {
+                    format!("the determinant of a {n}×{n} matrix")
+                })
+                .map_err(|e| a.domain(e))?;
+                Ok(Value::scalar(m.determinant()))
+            },
         },
         Builtin {
             name: "trace",

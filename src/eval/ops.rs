@@ -95,17 +95,34 @@ pub const MAX_WORK: u128 = 1_000_000_000;
 /// Refuses `times` products of an r×k by a k×c matrix beyond [`MAX_WORK`].
 pub fn check_work(r: usize, k: usize, c: usize, times: u64) -> Result<(), String> {
     let work = r as u128 * k as u128 * c as u128 * times as u128;
-    if work > MAX_WORK {
-        return Err(format!(
-            "too much work: {work:.1e} multiply-adds (a {r}×{k} by {k}×{c} product{}; at most {MAX_WORK:.0e})",
+    check_cost(work, || {
+        format!(
+            "a {r}×{k} by {k}×{c} product{}",
             if times > 1 {
                 format!(", {times} times")
             } else {
                 String::new()
             }
+        )
+    })
+}
+
+/// Refuses an operation that costs `work` multiply-adds beyond
+/// [`MAX_WORK`]; `what` names the operation in the message.
+pub fn check_cost(work: u128, what: impl FnOnce() -> String) -> Result<(), String> {
+    if work > MAX_WORK {
+        return Err(format!(
+            "too much work: {work:.1e} multiply-adds ({}; at most {MAX_WORK:.0e})",
+            what()
         ));
     }
     Ok(())
+}
+
+/// The cube n³ of a matrix side, the unit of cost of LU and products.
+pub fn cube(n: usize) -> u128 {
+    let n = n as u128;
+    n * n * n
 }
 
 /// Refuses results larger than [`MAX_ELEMENTS`].
@@ -219,7 +236,7 @@ fn num_inverse(k: &Kind, m: &DMatrix<f64>) -> Result<DMatrix<f64>, String> {
         (Kind::SE3, _) => dm(&se3::inv(&Mat4::from_iterator(m.iter().copied()))),
         (Kind::SE2, _) => dm(&se2::inv(&Mat3::from_iterator(m.iter().copied()))),
         (_, (r, c)) if r == c => {
-            check_work(r, r, r, 1)?;
+            check_cost(cube(r), || format!("the inverse of a {r}×{r} matrix"))?;
             if m.iter().any(|x| !x.is_finite()) {
                 return Err(
                     "the matrix has entries that are not finite (inf or NaN); it has no inverse"

@@ -27,6 +27,26 @@ pub fn try_expm(a: &DMatrix<f64>) -> Option<DMatrix<f64>> {
     e.iter().all(|x| x.is_finite()).then_some(e)
 }
 
+/// About how many n×n products (and solves) [`expm`] spends on `a`: the
+/// degree-13 Padé approximant (6 products and one LU solve, counted as 8)
+/// plus one squaring for each halving that brings ‖A‖₁ below θ₁₃ ≈ 5.37
+/// (Higham 2005, Table 2.3). An upper estimate for small norms, where a
+/// lower degree is used.
+pub fn cost_in_products(a: &DMatrix<f64>) -> u64 {
+    const THETA_13: f64 = 5.371_920_351_148_152;
+    let norm1 = a
+        .column_iter()
+        .map(|c| c.iter().map(|x| x.abs()).sum::<f64>())
+        .fold(0.0, f64::max);
+    let squarings = if norm1 > THETA_13 {
+        // Finite input has ‖A‖₁ < 1.8e308: at most ~1025 halvings.
+        (norm1 / THETA_13).log2().ceil().min(2048.0) as u64
+    } else {
+        0
+    };
+    8 + squarings
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -60,5 +80,15 @@ mod tests {
         let a = DMatrix::from_row_slice(2, 2, &[30.0, 0.0, 0.0, -30.0]);
         let e = expm(&a);
         assert!((e[(0, 0)] / 30f64.exp() - 1.0).abs() < 1e-13);
+    }
+
+    #[test]
+    fn cost_counts_squarings() {
+        assert_eq!(cost_in_products(&DMatrix::identity(4, 4)), 8);
+        // ‖A‖₁ = 60: 60/5.37 ≈ 11.2 → 4 halvings.
+        let a = DMatrix::from_row_slice(2, 2, &[30.0, 0.0, 30.0, -30.0]);
+        assert_eq!(cost_in_products(&a), 12);
+        let huge = DMatrix::from_row_slice(1, 1, &[1e300]);
+        assert_eq!(cost_in_products(&huge), 8 + 995);
     }
 }
