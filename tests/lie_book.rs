@@ -1,4 +1,4 @@
-//! The book's numbers: Examples 3.1, 3.3 and 3.4, the MatrixLog3 of §3.2.3.3,
+//! The book's numbers: Examples 3.1–3.4, the MatrixLog3 of §3.2.3.3,
 //! and the docstring examples of the Modern Robotics software library for
 //! each function of §3.6.
 
@@ -73,6 +73,77 @@ fn matrix_log3_of_cyclic_permutation() {
         ),
         1e-8,
     );
+}
+
+/// Example 3.2 (Figure 3.15): T_ce = (T_ad T_db T_bc)⁻¹ T_ad T_de, with the
+/// book's intermediate products. The book prints (T_ce)₃₄ = 130/√2; the
+/// product is 160/√2 (a slip: see examples/ch3_ex3_2_camera.chs), which the
+/// chain T_bc⁻¹ T_db⁻¹ T_de that avoids {a} confirms.
+#[test]
+fn example_3_2_camera() {
+    let r = std::f64::consts::FRAC_1_SQRT_2;
+    let t_db = Mat4::new(
+        0.0, 0.0, -1.0, 250.0, 0.0, -1.0, 0.0, -150.0, -1.0, 0.0, 0.0, 200.0, 0.0, 0.0, 0.0, 1.0,
+    );
+    let t_de = Mat4::new(
+        0.0, 0.0, -1.0, 300.0, 0.0, -1.0, 0.0, 100.0, -1.0, 0.0, 0.0, 120.0, 0.0, 0.0, 0.0, 1.0,
+    );
+    let t_ad = Mat4::new(
+        0.0, 0.0, -1.0, 400.0, 0.0, -1.0, 0.0, 50.0, -1.0, 0.0, 0.0, 300.0, 0.0, 0.0, 0.0, 1.0,
+    );
+    let t_bc = Mat4::new(
+        0.0, -r, -r, 30.0, 0.0, r, -r, -40.0, 1.0, 0.0, 0.0, 25.0, 0.0, 0.0, 0.0, 1.0,
+    );
+    let t_ae = Mat4::new(
+        1.0, 0.0, 0.0, 280.0, 0.0, 1.0, 0.0, -50.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0,
+    );
+    close4(&(t_ad * t_de), &t_ae, 1e-13);
+    let t_ac = t_ad * t_db * t_bc;
+    let want_ac = Mat4::new(
+        0.0, -r, -r, 230.0, 0.0, r, -r, 160.0, 1.0, 0.0, 0.0, 75.0, 0.0, 0.0, 0.0, 1.0,
+    );
+    close4(&t_ac, &want_ac, 1e-13);
+    let t_ca = se3::inv(&t_ac);
+    let want_ca = Mat4::new(
+        0.0,
+        0.0,
+        1.0,
+        -75.0,
+        -r,
+        r,
+        0.0,
+        70.0 * r,
+        -r,
+        -r,
+        0.0,
+        390.0 * r,
+        0.0,
+        0.0,
+        0.0,
+        1.0,
+    );
+    close4(&t_ca, &want_ca, 1e-13);
+    let t_ce = t_ca * t_ad * t_de;
+    let want_ce = Mat4::new(
+        0.0,
+        0.0,
+        1.0,
+        -75.0,
+        -r,
+        r,
+        0.0,
+        -260.0 * r,
+        -r,
+        -r,
+        0.0,
+        160.0 * r,
+        0.0,
+        0.0,
+        0.0,
+        1.0,
+    );
+    close4(&t_ce, &want_ce, 1e-12);
+    close4(&(se3::inv(&t_bc) * se3::inv(&t_db) * t_de), &want_ce, 1e-12);
 }
 
 #[test]
