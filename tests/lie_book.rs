@@ -82,67 +82,28 @@ fn matrix_log3_of_cyclic_permutation() {
 #[test]
 fn example_3_2_camera() {
     let r = std::f64::consts::FRAC_1_SQRT_2;
-    let t_db = Mat4::new(
-        0.0, 0.0, -1.0, 250.0, 0.0, -1.0, 0.0, -150.0, -1.0, 0.0, 0.0, 200.0, 0.0, 0.0, 0.0, 1.0,
+    let t = |rot: &Mat3, x: f64, y: f64, z: f64| se3::from_rp(rot, &Vec3::new(x, y, z));
+    // T_db, T_de and T_ad share one rotation.
+    let flip = Mat3::new(0.0, 0.0, -1.0, 0.0, -1.0, 0.0, -1.0, 0.0, 0.0);
+    let t_db = t(&flip, 250.0, -150.0, 200.0);
+    let t_de = t(&flip, 300.0, 100.0, 120.0);
+    let t_ad = t(&flip, 400.0, 50.0, 300.0);
+    let r_bc = Mat3::new(0.0, -r, -r, 0.0, r, -r, 1.0, 0.0, 0.0);
+    let t_bc = t(&r_bc, 30.0, -40.0, 25.0);
+
+    close4(
+        &(t_ad * t_de),
+        &t(&Mat3::identity(), 280.0, -50.0, 0.0),
+        1e-13,
     );
-    let t_de = Mat4::new(
-        0.0, 0.0, -1.0, 300.0, 0.0, -1.0, 0.0, 100.0, -1.0, 0.0, 0.0, 120.0, 0.0, 0.0, 0.0, 1.0,
-    );
-    let t_ad = Mat4::new(
-        0.0, 0.0, -1.0, 400.0, 0.0, -1.0, 0.0, 50.0, -1.0, 0.0, 0.0, 300.0, 0.0, 0.0, 0.0, 1.0,
-    );
-    let t_bc = Mat4::new(
-        0.0, -r, -r, 30.0, 0.0, r, -r, -40.0, 1.0, 0.0, 0.0, 25.0, 0.0, 0.0, 0.0, 1.0,
-    );
-    let t_ae = Mat4::new(
-        1.0, 0.0, 0.0, 280.0, 0.0, 1.0, 0.0, -50.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0,
-    );
-    close4(&(t_ad * t_de), &t_ae, 1e-13);
     let t_ac = t_ad * t_db * t_bc;
-    let want_ac = Mat4::new(
-        0.0, -r, -r, 230.0, 0.0, r, -r, 160.0, 1.0, 0.0, 0.0, 75.0, 0.0, 0.0, 0.0, 1.0,
-    );
-    close4(&t_ac, &want_ac, 1e-13);
+    close4(&t_ac, &t(&r_bc, 230.0, 160.0, 75.0), 1e-13);
     let t_ca = se3::inv(&t_ac);
-    let want_ca = Mat4::new(
-        0.0,
-        0.0,
-        1.0,
-        -75.0,
-        -r,
-        r,
-        0.0,
-        70.0 * r,
-        -r,
-        -r,
-        0.0,
-        390.0 * r,
-        0.0,
-        0.0,
-        0.0,
-        1.0,
-    );
-    close4(&t_ca, &want_ca, 1e-13);
-    let t_ce = t_ca * t_ad * t_de;
-    let want_ce = Mat4::new(
-        0.0,
-        0.0,
-        1.0,
-        -75.0,
-        -r,
-        r,
-        0.0,
-        -260.0 * r,
-        -r,
-        -r,
-        0.0,
-        160.0 * r,
-        0.0,
-        0.0,
-        0.0,
-        1.0,
-    );
-    close4(&t_ce, &want_ce, 1e-12);
+    let r_cb = r_bc.transpose();
+    close4(&t_ca, &t(&r_cb, -75.0, 70.0 * r, 390.0 * r), 1e-13);
+    // (T_ce)₃₄ = 160/√2, where the book prints 130/√2.
+    let want_ce = t(&r_cb, -75.0, -260.0 * r, 160.0 * r);
+    close4(&(t_ca * t_ad * t_de), &want_ce, 1e-12);
     close4(&(se3::inv(&t_bc) * se3::inv(&t_db) * t_de), &want_ce, 1e-12);
 }
 

@@ -64,33 +64,43 @@ fn pscale(t: &Mat4) -> f64 {
 
 // ------------------------------------------------------- hard θ, exact bound
 
+/// The axes of the brief ((1,1,0)/√2, (1,2,3)/√14, ẑ, …), not normalized.
+fn hard_axes() -> [Vec3; 5] {
+    [
+        Vec3::new(1.0, 1.0, 0.0),
+        Vec3::new(1.0, 2.0, 3.0),
+        Vec3::new(0.0, 0.0, 1.0),
+        Vec3::new(-1.0, 2.0, -0.5),
+        Vec3::new(0.3, -0.9, 0.2),
+    ]
+}
+
+/// Positions from zero to large, for the SE(3) bounds scaled by max(1, ‖p‖).
+fn positions() -> [Vec3; 4] {
+    [
+        Vec3::zeros(),
+        Vec3::new(1.0, 2.0, 3.0),
+        Vec3::new(-40.0, 7.5, 1e3),
+        Vec3::new(0.1, -0.2, 0.05),
+    ]
+}
+
 /// exp(log(R)) at each hard θ of the brief on each listed axis: the max
 /// entry error is at most 2e-15 (SO(3)), and exp(log(T)) within
 /// 1e-14·max(1, ‖p‖) (SE(3)).
 #[test]
 fn hard_angles_round_trip_bound() {
-    let axes = [
-        Vec3::new(1.0, 1.0, 0.0),
-        Vec3::new(1.0, 2.0, 3.0),
-        Vec3::new(0.0, 0.0, 1.0),
-        Vec3::new(-1.0, 2.0, -0.5),
-    ];
     let thetas = [1e-12, PI - 1e-6, PI - 1e-9, PI];
-    let ps = [
-        Vec3::zeros(),
-        Vec3::new(1.0, 2.0, 3.0),
-        Vec3::new(-40.0, 7.5, 1e3),
-    ];
     for &t in &thetas {
         let mut worst3: f64 = 0.0;
         let mut worst6: f64 = 0.0;
-        for a in &axes {
+        for a in &hard_axes() {
             let w = a.normalize() * t;
             let r = so3::exp(&w);
             let l = so3::log(&r);
             assert!(l.norm() <= PI * (1.0 + 4.0 * f64::EPSILON), "θ ∈ [0, π]");
             worst3 = worst3.max(max_abs(&(so3::exp(&l) - r)));
-            for p in &ps {
+            for p in &positions() {
                 let tr = se3::from_rp(&r, p);
                 let back = se3::exp(&se3::log(&tr));
                 worst6 = worst6.max(max_abs(&(back - tr)) / p.norm().max(1.0));
@@ -111,18 +121,6 @@ fn hard_angles_round_trip_bound() {
 /// Measured worst cases: 6.7e-16 for exp∘log, 5.9e-16 for log∘exp.
 #[test]
 fn se3_log_theta_sweep() {
-    let axes = [
-        Vec3::new(1.0, 1.0, 0.0),
-        Vec3::new(1.0, 2.0, 3.0),
-        Vec3::new(0.0, 0.0, 1.0),
-        Vec3::new(-1.0, 2.0, -0.5),
-        Vec3::new(0.3, -0.9, 0.2),
-    ];
-    let ps = [
-        Vec3::new(1.0, 2.0, 3.0),
-        Vec3::new(-40.0, 7.5, 1e3),
-        Vec3::new(0.1, -0.2, 0.05),
-    ];
     let mut thetas: Vec<f64> = (0..=600)
         .map(|i| 10f64.powf(-12.0 + 12.5 * f64::from(i) / 600.0))
         .filter(|t| *t <= PI)
@@ -144,8 +142,8 @@ fn se3_log_theta_sweep() {
         PI,
     ]);
     for &t in &thetas {
-        for a in &axes {
-            for p in &ps {
+        for a in &hard_axes() {
+            for p in &positions() {
                 let w = a.normalize() * t;
                 let st = Vec6::new(w.x, w.y, w.z, p.x, p.y, p.z);
                 let tr = se3::exp(&st);
