@@ -5,7 +5,7 @@
 use super::rules::{RuleError, describe};
 use super::ty::{Frame, Frames, Kind, Ty};
 use crate::diagnostics::ErrorKind;
-use crate::syntax::ident::{NameFrames, base_name, name_frames};
+use crate::syntax::ident::{NameFrames, base_name, name_frames, tagged_name};
 
 /// The frames a name claims, as a tag for a value of `kind`: `p_sb` (a
 /// vector named with two frames) is the position of {b} in {s}, tagged {s}.
@@ -70,9 +70,15 @@ pub fn bind(name: &str, ty: &Ty) -> Result<Ty, RuleError> {
 fn suggest_name(name: &str, frames: &Frames) -> String {
     let base = base_name(name);
     match frames {
-        Frames::Pair(a, b) => format!("name it {base}_{a}{b}, or check the product's order"),
-        Frames::One(a) => format!("name it {base}_{a}"),
-        Frames::Disp(a) => format!("a displacement in {{{a}}}: name it {base}_{a}…"),
+        Frames::Pair(a, b) => format!(
+            "name it {}, or check the product's order",
+            tagged_name(base, &[&a.to_string(), &b.to_string()])
+        ),
+        Frames::One(a) => format!("name it {}", tagged_name(base, &[&a.to_string()])),
+        Frames::Disp(a) => format!(
+            "a displacement in {{{a}}}: name it {}…",
+            tagged_name(base, &[&a.to_string()])
+        ),
         Frames::None => String::new(),
     }
 }

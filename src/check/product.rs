@@ -6,6 +6,7 @@
 
 use super::rules::{Operands, RuleError, describe, same_frame_error, scaled_kind};
 use super::ty::{Frame, Frames, Kind, Ty};
+use crate::syntax::ident::{NameFrames, base_name, name_frames, tagged_name};
 
 pub(super) fn dims_agree(a: Option<usize>, b: Option<usize>) -> bool {
     match (a, b) {
@@ -149,6 +150,28 @@ fn inner_mismatch(l: &Ty, r: &Ty, a_in: &Frame, b_out: &Frame, ops: Operands) ->
     e
 }
 
+/// The letter of a framed name written as an operand, `T` of `T_sb` or
+/// `inv(T_sb)`; None for any other expression.
+fn operand_base(op: &str) -> Option<&str> {
+    let op = op.trim();
+    let name = op
+        .strip_prefix("inv(")
+        .and_then(|s| s.strip_suffix(')'))
+        .unwrap_or(op)
+        .trim();
+    (name_frames(name) != NameFrames::None).then(|| base_name(name))
+}
+
+/// The name of a product's result in the help: `T_bc` when both operands
+/// are `T_…` names, else the generic `X_bc`.
+fn result_name(ops: Operands, outer: &Frame, inner: &Frame) -> String {
+    let base = match (operand_base(ops.lhs), operand_base(ops.rhs)) {
+        (Some(a), Some(b)) if a == b => a,
+        _ => "X",
+    };
+    tagged_name(base, &[&outer.to_string(), &inner.to_string()])
+}
+
 /// The fix for a product whose inner frames differ.
 fn product_help(l: &Ty, r: &Ty, ops: Operands) -> String {
     let rule = "X_xy maps coordinates in {y} to {x}";
@@ -156,29 +179,25 @@ fn product_help(l: &Ty, r: &Ty, ops: Operands) -> String {
         (Frames::Pair(a, b), Frames::Pair(c, d)) => {
             if b == d && a != c {
                 format!(
-                    "{rule}; did you mean inv({}) = X_{}{}?",
+                    "{rule}; did you mean inv({}) = {}?",
                     ops.rhs.trim(),
-                    d,
-                    c
+                    result_name(ops, d, c)
                 )
             } else if c == a && b != d {
                 // T_sc * inv(T_sb): both from {s}.
-                let hint = displacement_hint(ops);
                 format!(
-                    "{rule}; both start in {{{a}}}: the body-frame form is inv({}) * {} = X_{}{}{}",
+                    "{rule}; both start in {{{a}}}: the body-frame form is inv({}) * {} = {}{}",
                     ops.lhs.trim(),
                     ops.rhs.trim(),
-                    b,
-                    d,
-                    hint
+                    result_name(ops, b, d),
+                    displacement_hint(ops)
                 )
             } else if d == a {
                 format!(
-                    "{rule}; the other order cancels: {} * {} = X_{}{}{}",
+                    "{rule}; the other order cancels: {} * {} = {}{}",
                     ops.rhs.trim(),
                     ops.lhs.trim(),
-                    c,
-                    b,
+                    result_name(ops, c, b),
                     displacement_hint(ops)
                 )
             } else {

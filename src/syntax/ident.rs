@@ -37,6 +37,23 @@ pub fn base_name(name: &str) -> &str {
     }
 }
 
+/// The name with base `base` and frame subscript `frames` (outer first), as
+/// [`name_frames`] reads it back: `T` + (s, b) → `T_sb`, `T` + (b1, c) →
+/// `T_b1c`, but `T` + (world, cam) → `T_{world,cam}`: braces as soon as one
+/// frame is not a single letter with digits and primes.
+pub fn tagged_name(base: &str, frames: &[&str]) -> String {
+    let short = |f: &&str| {
+        let mut chars = f.chars();
+        matches!(chars.next(), Some(c) if c.is_alphabetic())
+            && chars.all(|c| c.is_numeric() || c == '\'')
+    };
+    if frames.iter().all(short) {
+        format!("{base}_{}", frames.concat())
+    } else {
+        format!("{base}_{{{}}}", frames.join(","))
+    }
+}
+
 /// Splits `name` into its base and frame subscript, if it has one.
 fn split_subscript(name: &str) -> Option<(&str, NameFrames)> {
     // Braced form: `T_{world,cam}`, optionally followed by primes.
@@ -114,6 +131,28 @@ mod tests {
     }
     fn pair(a: &str, b: &str) -> NameFrames {
         NameFrames::Pair(a.into(), b.into())
+    }
+
+    #[test]
+    fn tagged_names_read_back() {
+        for (base, frames, want) in [
+            ("T", vec!["s", "b"], "T_sb"),
+            ("T", vec!["b1", "c"], "T_b1c"),
+            ("T", vec!["s", "b'"], "T_sb'"),
+            ("p", vec!["b"], "p_b"),
+            ("T", vec!["world", "cam"], "T_{world,cam}"),
+            ("T", vec!["s", "cam"], "T_{s,cam}"),
+            ("p", vec!["cam"], "p_{cam}"),
+        ] {
+            let name = tagged_name(base, &frames);
+            assert_eq!(name, want);
+            let back = match frames.as_slice() {
+                [a] => one(a),
+                [a, b] => pair(a, b),
+                _ => unreachable!(),
+            };
+            assert_eq!(name_frames(&name), back, "{name}");
+        }
     }
 
     #[test]
