@@ -66,3 +66,4 @@ V_a = Ad(T_af) * V_f
 dot(V_h, F_h)                    # −0.5 W: power of gravity on the hand
 dot(V_a, F_a)                    # −0.25 W: on the apple
 dot(V_f, F_f)                    # −0.75 W: the sum, computed in {f}
+V_f.T * F_f                      # −0.75 W again, as the book writes it: V_fᵀ F_f

@@ -92,6 +92,13 @@ fn adjoint_and_wrenches() {
     frames("Ad(T_ab) * V_b", &["a"]);
     frames("Ad(T_ab).T * F_a", &["b"]);
     frame_error("Ad(T_ab) * F_b", "wrench");
+    // The power V_bᵀF_b is a plain scalar (the frame cancels), and both
+    // factors must be in the same frame.
+    for r in both("V_b.T * F_b") {
+        assert_eq!(r, Ok((vec![], "scalar".to_string())));
+    }
+    frames("(Ad(T_ab) * V_b).T * F_a", &[]);
+    frame_error("V_b.T * F_a", "frames do not cancel");
 }
 
 #[test]

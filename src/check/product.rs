@@ -24,7 +24,17 @@ pub fn mul(l: &Ty, r: &Ty, ops: Operands) -> Result<Ty, RuleError> {
     if r.kind == Kind::Scalar {
         return Ok(Ty::new(scaled_kind(&l.kind), l.frames.clone()));
     }
+    if l.kind == (Kind::Adjoint { transposed: false }) && r.kind == Kind::Wrench {
+        return Err(wrench_through_ad(l, r, ops));
+    }
     let kind = mul_kind(&l.kind, &r.kind, ops)?;
+    // A row times a column, uᵀv: an inner product. Its frames must agree
+    // and then cancel, like `dot`: V_bᵀF_b is the power, a plain scalar
+    // (§3.4: the same in every frame).
+    if matches!(l.kind, Kind::Matrix(Some(1), _)) && r.kind.is_vector() {
+        apply_frames(l, r, ops)?;
+        return Ok(Ty::new(Kind::Scalar, Frames::None));
+    }
     let frames = if kind.is_vector() || matches!(kind, Kind::Vector(_)) {
         apply_frames(l, r, ops)?
     } else {
@@ -43,8 +53,8 @@ fn mul_kind(l: &Kind, r: &Kind, ops: Operands) -> Result<Kind, RuleError> {
     if r.is_vector() {
         let n = r.vec_len();
         return match l {
+            // (A wrench here is refused by `mul`: `wrench_through_ad`.)
             Adjoint { transposed: false } => match r {
-                Wrench => Err(wrench_through_ad(ops)),
                 Screw => Ok(Screw),
                 _ if dims_agree(n, Some(6)) => Ok(Twist),
                 _ => Err(shape_error(l, r)),
@@ -128,17 +138,28 @@ fn dim(d: Option<usize>) -> String {
     d.map_or("n".into(), |n| n.to_string())
 }
 
-fn wrench_through_ad(ops: Operands) -> RuleError {
+/// `Ad(T_ab) * F`: wrenches change frame with the transposed adjoint,
+/// F_b = [Ad_T_ab]ᵀ F_a (Prop. 3.17). The help writes the product that
+/// expresses the given wrench in the adjoint's outer frame, which is what
+/// `Ad(T_ab) * F_b` was reaching for, and the one that goes the other way.
+fn wrench_through_ad(l: &Ty, r: &Ty, ops: Operands) -> RuleError {
     let t = ops
         .lhs
+        .trim()
         .strip_prefix("Ad(")
-        .or_else(|| ops.lhs.strip_prefix("Adjoint("))
+        .or_else(|| ops.lhs.trim().strip_prefix("Adjoint("))
         .and_then(|s| s.strip_suffix(')'))
         .unwrap_or("T");
-    RuleError::frame("a wrench does not change frame through [Ad_T]")
-        .with_help(format!(
-            "Prop. 3.17: wrenches change frame with the transpose, F_b = [Ad_T_ab]ᵀ F_a; write Ad({t}).T * F"
-        ))
+    let f = ops.rhs.trim();
+    let rule =
+        "Prop. 3.17: wrenches change frame with the transposed adjoint, F_b = [Ad_T_ab]ᵀ F_a";
+    let help = match (&l.frames, &r.frames) {
+        (Frames::Pair(a, b), Frames::One(c)) if b == c => format!(
+            "{rule}; {f} in {{{a}}} is Ad(inv({t})).T * {f}, and a wrench in {{{a}}} comes to {{{b}}} by Ad({t}).T * F_{a}"
+        ),
+        _ => format!("{rule}; write Ad({t}).T * F for F in the outer frame of {t}"),
+    };
+    RuleError::frame("a wrench does not change frame through [Ad_T]").with_help(help)
 }
 
 fn inner_mismatch(l: &Ty, r: &Ty, a_in: &Frame, b_out: &Frame, ops: Operands) -> RuleError {
