@@ -60,6 +60,8 @@ Ad(inv(T_sb)) * V_s                          # back to {b}
 F_b = Ad(T_ab).T * F_a                       # Prop. 3.17: {b}
 Ad(inv(T_ab)).T * F_b                        # back to {a}
 dot(V_b, F_b)                                # power, in {b}
+F_s = Ad(inv(T_sb)).T * F_b                  # the wrench in {s}
+V_s.T * F_s                                  # the power in {s}: V_b.T F_b, the same (3.98)
 
 # --- Example 3.2 with its numbers -----------------------------------------------
 T_db = [0, 0, -1, 250; 0, -1, 0, -150; -1, 0, 0, 200; 0, 0, 0, 1]

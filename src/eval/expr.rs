@@ -144,7 +144,7 @@ impl Interp<'_> {
                 };
                 let val = match t.val {
                     Some(Value::Sym(s)) => Some(Value::Sym(if member.name == "T" {
-                        Sym::Transpose(Box::new(s))
+                        s.transpose()
                     } else {
                         Sym::Member(Box::new(s), member.name.clone())
                     })),

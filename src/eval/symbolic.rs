@@ -100,6 +100,18 @@ impl Sym {
         }
     }
 
+    /// The transpose, pushed through products: (A B)ᵀ = Bᵀ Aᵀ, so that the
+    /// power (Ad(T_ab) V_b)ᵀ Ad(inv(T_ab))ᵀ F_b simplifies to V_bᵀ F_b
+    /// (3.98); (Aᵀ)ᵀ = A and Iᵀ = I.
+    pub fn transpose(self) -> Sym {
+        match self {
+            Sym::Transpose(x) => *x,
+            Sym::Identity => Sym::Identity,
+            Sym::Product(fs) => Sym::product(fs.into_iter().rev().map(Sym::transpose).collect()),
+            other => Sym::Transpose(Box::new(other)),
+        }
+    }
+
     /// `a b`, flattened and simplified.
     pub fn times(a: Sym, b: Sym) -> Sym {
         Sym::product(vec![a, b])
@@ -251,6 +263,19 @@ mod tests {
         let t = |x: Sym| Sym::Transpose(Box::new(x));
         let e = Sym::product(vec![t(ad(n("T_ab").inverse())), t(ad(n("T_ab"))), n("F_a")]);
         assert_eq!(e.to_string(), "F_a");
+    }
+
+    #[test]
+    fn transpose_of_product_reverses_and_cancels() {
+        let ad = |x: Sym| Sym::Call("Ad".into(), vec![x]);
+        // Power invariance (3.98): V_aᵀF_a with V_a = Ad(T_ab) V_b and
+        // F_a = Ad(T_ba)ᵀ F_b.
+        let v_a = Sym::times(ad(n("T_ab")), n("V_b"));
+        let f_a = Sym::times(ad(n("T_ab").inverse()).transpose(), n("F_b"));
+        let power = Sym::times(v_a.transpose(), f_a);
+        assert_eq!(power.to_string(), "V_b.T F_b");
+        assert_eq!(n("R").transpose().transpose(), n("R"));
+        assert_eq!(Sym::Identity.transpose().to_string(), "I");
     }
 
     #[test]
