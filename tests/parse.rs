@@ -215,6 +215,42 @@ fn juxtaposition_after_names_is_an_error() {
 }
 
 #[test]
+fn matlab_sign_in_brackets_is_an_error() {
+    // `[1 -2]` is two entries in MATLAB and 1 − 2 here: refused, with the
+    // caret on the sign and both fixes.
+    for (src, col, what) in [
+        ("[1 -2]", 3, "`1 -2`"),
+        ("[1 -2 -3]", 3, "`1 -2`"),
+        ("[x -1, 0]", 3, "`x -1`"),
+        ("[1, 2; 3 +4, 5]", 9, "`3 +4`"),
+        ("[2 pi -1]", 6, "`2 pi -1`"),
+    ] {
+        let e = err(src);
+        assert_eq!(
+            e.message,
+            format!("{what} inside brackets is ambiguous (MATLAB reads two entries)"),
+            "{src}"
+        );
+        assert_eq!(e.span.start, col, "{src}");
+    }
+    assert_eq!(
+        err("[1 -2]").help.as_deref(),
+        Some("write `1, -2` for two entries or `1 - 2` for the difference")
+    );
+    // Spaced both sides or neither, a comma, or outside a bracket row: fine.
+    for (src, want) in [
+        ("[1 - 2]", "[(- 1 2)]"),
+        ("[1-2]", "[(- 1 2)]"),
+        ("[1, -2]", "[1, (neg 2)]"),
+        ("[2*(1 -2)]", "[(* 2 (- 1 2))]"),
+        ("(1 -2, 3)", "((- 1 2), 3)"),
+        ("2 -1", "(- 2 1)"),
+    ] {
+        assert_eq!(p(src), want, "{src}");
+    }
+}
+
+#[test]
 fn index_needs_no_space() {
     assert_eq!(p("T_sb[1, 2]"), "(idx T_sb 1 2)");
     assert_eq!(p("M[i, :]"), "(idx M i :)");

@@ -7,7 +7,8 @@
 //! which resolves precedence with a Pratt parser and rejects trees deeper
 //! than [`MAX_DEPTH`]. Ordinary statements first take `fast`, a
 //! hand-written parser of the same grammar, ten times quicker, which
-//! leaves every error (and a few rare forms) to pest. Syntax errors are
+//! leaves every error (and a few rare forms) to pest. `spacing` then
+//! refuses `[1 -2]`, which MATLAB reads as two entries. Syntax errors are
 //! `ErrorKind::Syntax` diagnostics with friendly messages (`rules`). Spans
 //! are byte offsets into the whole source.
 //!
@@ -24,6 +25,7 @@ pub mod ident;
 mod mech;
 mod parser;
 mod rules;
+mod spacing;
 mod split;
 
 use crate::diagnostics::{Diagnostic, ErrorKind};
@@ -48,7 +50,7 @@ pub fn statements(src: &str) -> impl Iterator<Item = Result<ast::Stmt, Diagnosti
     std::iter::from_fn(move || {
         let chunk = splitter.next()?;
         let text = splitter.text(chunk.span);
-        Some(match chunk.error {
+        let parsed = match chunk.error {
             Some(error) => Err(error),
             None if text.len() > MAX_STATEMENT_BYTES => Err(too_long(chunk.span, text.len())),
             // Most statements take the fast path; it leaves errors and rare
@@ -60,7 +62,8 @@ pub fn statements(src: &str) -> impl Iterator<Item = Result<ast::Stmt, Diagnosti
             }
             None if chunk.depth > SHALLOW => parse_on_big_stack(text, chunk.span),
             None => parser::parse_chunk(text, chunk.span),
-        })
+        };
+        Some(parsed.and_then(|stmt| spacing::check(&stmt, src).map(|()| stmt)))
     })
 }
 
