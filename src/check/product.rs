@@ -167,8 +167,27 @@ fn inner_mismatch(l: &Ty, r: &Ty, a_in: &Frame, b_out: &Frame, ops: Operands) ->
     e.lhs = describe(&l.frames);
     e.rhs = describe(&r.frames);
     e.op = format!("inner frames must agree: {a_in} ≠ {b_out}");
-    e.help = Some(product_help(l, r, ops));
+    let plain = [(ops.lhs, l), (ops.rhs, r)]
+        .into_iter()
+        .filter_map(|(op, t)| plain_name_hint(op, t))
+        .collect::<String>();
+    e.help = Some(product_help(l, r, ops) + &plain);
     e
+}
+
+/// A plain name (no frame subscript) that carries frames from what it was
+/// bound to (`R = R_sb`): the hint to drop them when it is meant as an
+/// operator (`R_sa * R`, exercise 3.1(e)).
+fn plain_name_hint(op: &str, t: &Ty) -> Option<String> {
+    let op = op.trim();
+    let is_name = op.chars().all(|c| c.is_alphanumeric() || c == '_')
+        && op.chars().next().is_some_and(char::is_alphabetic);
+    (is_name && name_frames(op) == NameFrames::None && t.frames != Frames::None).then(|| {
+        format!(
+            "; {op} keeps the frames {} of the value bound to it: untag({op}) uses it as a plain operator",
+            t.frames
+        )
+    })
 }
 
 /// The letter of a framed name written as an operand, `T` of `T_sb` or
