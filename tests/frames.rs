@@ -147,3 +147,22 @@ fn symbols_simplify() {
     assert_eq!(n, 0, "{err}");
     assert_eq!(out, "I  : SE(3) {b}←{b}\nT_ab T_bc T_cd  : SE(3) {a}←{d}\n");
 }
+
+#[test]
+fn destructured_parts_keep_their_frames() {
+    let mut s = Session::new(Settings::default());
+    let (out, err, n) = s.run_to_strings(
+        "t.chs",
+        "T_ab = SE3(Rotz(1), (1, 2, 3))\n(R, p) = TransToRp(T_ab)\n(w, theta) = AxisAng3(MatrixLog3(R))\n(w_s, t) = AxisAng3((0, 0, 2))\n",
+        Mode::Run,
+        false,
+    );
+    assert_eq!(n, 0, "{err}");
+    for want in [
+        "]  : SO(3) {a}←{b}\np = (1, 2, 3)  : 3-vector {a}\n",
+        "w = (0, 0, 1)  : 3-vector {a}\ntheta = 1\n",
+        "w_s = (0, 0, 1)  : 3-vector {s}\nt = 2\n",
+    ] {
+        assert!(out.contains(want), "{want:?} not in\n{out}");
+    }
+}

@@ -241,6 +241,18 @@ pub enum Frames {
 }
 
 impl Frames {
+    /// The frames of one part of a tuple tagged `self`: none for a scalar
+    /// (θ of `AxisAng3`), the outer frame for a vector part of a
+    /// pair-tagged tuple (p of `TransToRp(T_ab)` is in {a}), else the same
+    /// (ω̂ of coordinates in {s} is in {s}; R of T_ab is {a}←{b}).
+    pub fn part(&self, k: &Kind) -> Frames {
+        match (self, k) {
+            (_, Kind::Scalar) => Frames::None,
+            (Frames::Pair(a, _), k) if k.is_vector() => Frames::One(a.clone()),
+            (f, _) => f.clone(),
+        }
+    }
+
     pub fn pair(a: &str, b: &str) -> Frames {
         Frames::Pair(Frame::named(a), Frame::named(b))
     }

@@ -7,7 +7,7 @@ use super::env::{Binding, Env, FrameMode, Mode};
 use super::value::{UserFn, Value};
 use crate::check::bind;
 use crate::check::rules::RuleError;
-use crate::check::ty::{Frames, Kind, Ty};
+use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
 use crate::syntax::ast::{Span, Stmt, StmtKind};
 
@@ -31,6 +31,9 @@ pub struct Outcome {
     pub note: Option<String>,
     /// False for statements that print nothing (`given`, function definitions).
     pub prints: bool,
+    /// For `(a, b) = ..`, the type of each bound part, with the frames it
+    /// took from the value or from its name; empty otherwise.
+    pub parts: Vec<Ty>,
 }
 
 /// Runs statements against an environment.
@@ -125,6 +128,7 @@ impl<'a> Interp<'a> {
             val: t.val,
             note: None,
             prints: true,
+            parts: Vec::new(),
         };
         match &s.kind {
             StmtKind::Expr(e) => {
@@ -159,7 +163,9 @@ impl<'a> Interp<'a> {
                     .map(|b| b.val.clone())
                     .collect::<Option<Vec<_>>>()
                     .map(Value::Tuple);
-                Ok(out(names, Typed { ty, val }))
+                let mut o = out(names, Typed { ty, val });
+                o.parts = bound.into_iter().map(|b| b.ty).collect();
+                Ok(o)
             }
             StmtKind::Given { names, ty } => {
                 let kind = given_kind(&ty.name).ok_or_else(|| {
@@ -289,7 +295,7 @@ impl<'a> Interp<'a> {
             .into_iter()
             .zip(vals)
             .map(|(k, v)| {
-                let frames = part_frames(&t.ty.frames, &k);
+                let frames = t.ty.frames.part(&k);
                 let k = v.as_ref().map_or(k, Value::kind);
                 Typed {
                     ty: Ty::new(k, frames),
@@ -297,16 +303,6 @@ impl<'a> Interp<'a> {
                 }
             })
             .collect())
-    }
-}
-
-/// The frames of one part of a tuple whose whole is tagged `f`: a vector
-/// part of T_ab's (R, p) is in {a}; operator parts keep the pair.
-fn part_frames(f: &Frames, k: &Kind) -> Frames {
-    match (f, k) {
-        (_, Kind::Scalar) => Frames::None,
-        (Frames::Pair(a, _), k) if k.is_vector() => Frames::One(a.clone()),
-        (f, _) => f.clone(),
     }
 }
 

@@ -193,25 +193,28 @@ pub fn show_outcome(o: &Outcome, style: impl Into<Style>) -> String {
         (0, Value::Tuple(items)) => {
             let parts: Vec<String> = items
                 .iter()
-                .map(|x| show_value("", &Ty::plain(x.kind()), x, style))
+                .map(|x| {
+                    let k = x.kind();
+                    show_value("", &Ty::new(k.clone(), o.ty.frames.part(&k)), x, style)
+                })
                 .collect();
             out.push_str(&parts.join("\n"));
         }
         (0, _) => out.push_str(&show_value("", &o.ty, v, style)),
         (1, _) => out.push_str(&show_value(&format!("{} = ", o.names[0]), &o.ty, v, style)),
         (_, Value::Tuple(items)) => {
-            let kinds = match &o.ty.kind {
-                Kind::Tuple(ks) => ks.clone(),
-                _ => vec![],
-            };
             let parts: Vec<String> = o
                 .names
                 .iter()
                 .zip(items)
                 .enumerate()
                 .map(|(i, (n, x))| {
-                    let _ = kinds.get(i);
-                    show_value(&format!("{n} = "), &Ty::plain(x.kind()), x, style)
+                    let ty = o
+                        .parts
+                        .get(i)
+                        .cloned()
+                        .unwrap_or_else(|| Ty::plain(x.kind()));
+                    show_value(&format!("{n} = "), &ty, x, style)
                 })
                 .collect();
             out.push_str(&parts.join("\n"));
