@@ -135,29 +135,26 @@ fn untagged_values_match_anything() {
     frames("untag(T_ab) * T_bc", &["b", "c'"]);
 }
 
+/// The text output of running `src`, which must have no error.
+fn text(src: &str) -> String {
+    let mut s = Session::new(Settings::default());
+    let (out, err, n) = s.run_to_strings("t.chs", src, Mode::Run, false);
+    assert_eq!(n, 0, "{err}");
+    out
+}
+
 #[test]
 fn symbols_simplify() {
-    let mut s = Session::new(Settings::default());
-    let (out, err, n) = s.run_to_strings(
-        "t.chs",
-        "given T_ab, T_bc, T_cd : SE3\ninv(T_ab) * T_ab\nT_ab * T_bc * T_cd\n",
-        Mode::Run,
-        false,
-    );
-    assert_eq!(n, 0, "{err}");
+    let out = text("given T_ab, T_bc, T_cd : SE3\ninv(T_ab) * T_ab\nT_ab * T_bc * T_cd\n");
     assert_eq!(out, "I  : SE(3) {b}←{b}\nT_ab T_bc T_cd  : SE(3) {a}←{d}\n");
 }
 
 #[test]
 fn destructured_parts_keep_their_frames() {
-    let mut s = Session::new(Settings::default());
-    let (out, err, n) = s.run_to_strings(
-        "t.chs",
-        "T_ab = SE3(Rotz(1), (1, 2, 3))\n(R, p) = TransToRp(T_ab)\n(w, theta) = AxisAng3(MatrixLog3(R))\n(w_s, t) = AxisAng3((0, 0, 2))\n",
-        Mode::Run,
-        false,
+    let out = text(
+        "T_ab = SE3(Rotz(1), (1, 2, 3))\n(R, p) = TransToRp(T_ab)\n\
+         (w, theta) = AxisAng3(MatrixLog3(R))\n(w_s, t) = AxisAng3((0, 0, 2))\n",
     );
-    assert_eq!(n, 0, "{err}");
     for want in [
         "]  : SO(3) {a}←{b}\np = (1, 2, 3)  : 3-vector {a}\n",
         "w = (0, 0, 1)  : 3-vector {a}\ntheta = 1\n",
