@@ -17,7 +17,9 @@ pub fn edit_distance(a: &str, b: &str) -> usize {
 }
 
 /// The closest candidate within a third of the name's length (at least 1),
-/// or one that differs only in case or underscores.
+/// or one that differs only in case or underscores. A candidate that
+/// shares nothing with the name (`S` → `I`: every character replaced) is
+/// no suggestion.
 pub fn did_you_mean<'a>(name: &str, candidates: &[&'a str]) -> Option<&'a str> {
     let squash = |s: &str| s.to_lowercase().replace('_', "");
     if let Some(c) = candidates.iter().find(|c| squash(c) == squash(name)) {
@@ -27,7 +29,7 @@ pub fn did_you_mean<'a>(name: &str, candidates: &[&'a str]) -> Option<&'a str> {
     candidates
         .iter()
         .map(|c| (edit_distance(name, c), *c))
-        .filter(|(d, _)| *d <= limit)
+        .filter(|(d, c)| *d <= limit && *d < name.chars().count().max(c.chars().count()))
         .min_by_key(|(d, c)| (*d, c.len()))
         .map(|(_, c)| c)
 }
@@ -48,5 +50,7 @@ mod tests {
         );
         assert_eq!(did_you_mean("T_ab", &["T_ac", "zzz"]), Some("T_ac"));
         assert_eq!(did_you_mean("qqqq", &["MatrixLog3"]), None);
+        assert_eq!(did_you_mean("S", &["I", "e"]), None);
+        assert_eq!(did_you_mean("x", &["x1", "I"]), Some("x1"));
     }
 }
