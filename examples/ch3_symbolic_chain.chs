@@ -12,7 +12,8 @@
 #   - twists and wrenches (Prop. 3.15, Prop. 3.17): V_s = [Ad_T_sb] V_b,
 #     F_b = [Ad_T_ab]^T F_a, and the power V^T F (3.98);
 #   - then the numbers of Example 3.2 are bound to the same names, and the
-#     book's formula evaluates to T_ce.
+#     book's formula evaluates to T_ce; so does T_ce as `derive` bound it
+#     over the symbols (binding numbers later makes them numeric, §7).
 #
 # Expected results (frames are the point here):
 #   T_ad T_db                → T_ab-like, SE(3) {a}←{b}
@@ -69,3 +70,4 @@ T_de = [0, 0, -1, 300; 0, -1, 0, 100; -1, 0, 0, 120; 0, 0, 0, 1]
 T_ad = [0, 0, -1, 400; 0, -1, 0, 50; -1, 0, 0, 300; 0, 0, 0, 1]
 T_bc = [0, -1/sqrt(2), -1/sqrt(2), 30; 0, 1/sqrt(2), -1/sqrt(2), -40; 1, 0, 0, 25; 0, 0, 0, 1]
 inv(T_ad * T_db * T_bc) * T_ad * T_de        # T_ce, now numeric
+T_ce                                         # bound by derive over symbols; the numbers count now

@@ -163,3 +163,33 @@ fn destructured_parts_keep_their_frames() {
         assert!(out.contains(want), "{want:?} not in\n{out}");
     }
 }
+
+#[test]
+fn numbers_bound_later_reach_derived_symbols() {
+    // §7: X is built over symbols; once they have numbers, X has them too,
+    // partly numeric first, then fully.
+    let out = text(
+        "given T_ab, T_bc : SE3\ngiven theta : scalar\ngiven V_b : twist\n\
+         X = T_ab * T_bc\nY = Rotz(theta) * Rotx(2 * theta)\nW = Ad(T_ab) * V_b\n\
+         T_ab = Trans((1, 0, 0))\nX\nT_bc = Trans((0, 1, 0))\nX\n\
+         theta = pi/2\nY\nV_b = (0, 0, 1, 1, 0, 0)\nW\n",
+    );
+    for want in [
+        "\n[1, 0, 0, 1; 0, 1, 0, 0; 0, 0, 1, 0; 0, 0, 0, 1] T_bc  : SE(3) {a}←{c}\n",
+        "\n[1, 0, 0, 1\n 0, 1, 0, 1\n 0, 0, 1, 0\n 0, 0, 0, 1]  : SE(3) {a}←{c}\n",
+        "\n[0, 1,  0\n 1, 0,  0\n 0, 0, -1]  : SO(3)\n",
+        "\n(0, 0, 1, 1, -1, 0)  : twist {a}\n",
+    ] {
+        assert!(out.contains(want), "{want:?} not in\n{out}");
+    }
+}
+
+#[test]
+fn derive_again_shows_the_chain() {
+    let out = text(
+        "given T_ab, T_bc : SE3\nderive T_ac\nderive T_ac\nT_xy = Trans((1, 2, 3))\nderive T_xy\n",
+    );
+    assert_eq!(out.matches("T_ac = T_ab * T_bc\n").count(), 2, "{out}");
+    // With nothing else linking {x} and {y}, the name itself is the chain.
+    assert!(out.contains("T_xy = T_xy\n"), "{out}");
+}

@@ -35,8 +35,11 @@ impl Interp<'_> {
         let rotations = base_name(&target.name).starts_with('R');
         // Edges: x → y for each X_xy, both ways.
         let mut edges: HashMap<String, Vec<(String, Step)>> = HashMap::new();
+        // The target itself is left out, so that a second `derive T_ce`
+        // shows the chain again rather than `T_ce = T_ce`; it is the
+        // answer only when nothing else connects its frames.
         for name in self.env.names() {
-            if name == "ans" {
+            if name == "ans" || *name == target.name {
                 continue;
             }
             let b = &self.env.vars[name];
@@ -65,7 +68,13 @@ impl Interp<'_> {
                 ));
             }
         }
-        let Some(steps) = shortest_path(&edges, &from, &to) else {
+        let itself = self.env.get(&target.name).map(|_| {
+            vec![Step {
+                name: target.name.clone(),
+                inverted: false,
+            }]
+        });
+        let Some(steps) = shortest_path(&edges, &from, &to).or(itself) else {
             let reach = |f: &str| {
                 let mut r: Vec<String> = reachable(&edges, f);
                 r.sort();
@@ -106,7 +115,8 @@ impl Interp<'_> {
         }
         let mut acc: Option<Value> = None;
         for s in &steps {
-            let v = self.env.vars[&s.name].val.clone().ok_or_else(|| {
+            let b = &self.env.vars[&s.name];
+            let v = super::substitute::current(b, self.env).ok_or_else(|| {
                 Diagnostic::error(
                     ErrorKind::Name,
                     target.span,
@@ -121,25 +131,18 @@ impl Interp<'_> {
             };
             acc = Some(match acc {
                 None => v,
-                Some(Value::Sym(a)) => Value::Sym(super::symbolic::Sym::times(a, to_sym(&v))),
-                Some(a) if v.is_symbolic() => {
-                    Value::Sym(super::symbolic::Sym::times(to_sym(&a), to_sym(&v)))
+                Some(Value::Sym(a)) => {
+                    Value::Sym(super::symbolic::Sym::times(a, super::expr::to_sym(&v)))
                 }
+                Some(a) if v.is_symbolic() => Value::Sym(super::symbolic::Sym::times(
+                    super::expr::to_sym(&a),
+                    super::expr::to_sym(&v),
+                )),
                 Some(a) => ops::mul(&a, &v, &kind)
                     .map_err(|m| Diagnostic::error(ErrorKind::Domain, target.span, m))?,
             });
         }
         Ok((text, Typed { ty, val: acc }))
-    }
-}
-
-fn to_sym(v: &Value) -> super::symbolic::Sym {
-    match v {
-        Value::Sym(s) => s.clone(),
-        other => super::symbolic::Sym::Const(
-            Box::new(other.clone()),
-            crate::output::text::inline(other, 4),
-        ),
     }
 }
 

@@ -168,7 +168,11 @@ impl Interp<'_> {
         if let Some(b) = self.env.get(name) {
             return Ok(Typed {
                 ty: b.ty.clone(),
-                val: if self.running() { b.val.clone() } else { None },
+                val: if self.running() {
+                    super::substitute::current(b, self.env)
+                } else {
+                    None
+                },
             });
         }
         match name {

@@ -9,5 +9,6 @@ pub mod env;
 mod expr;
 pub mod interp;
 pub mod ops;
+mod substitute;
 pub mod symbolic;
 pub mod value;
