@@ -172,7 +172,18 @@ fn numbers_bound_later_reach_derived_symbols() {
         "given T_ab, T_bc : SE3\ngiven theta : scalar\ngiven V_b : twist\n\
          X = T_ab * T_bc\nY = Rotz(theta) * Rotx(2 * theta)\nW = Ad(T_ab) * V_b\n\
          T_ab = Trans((1, 0, 0))\nX\nT_bc = Trans((0, 1, 0))\nX\n\
-         theta = pi/2\nY\nV_b = (0, 0, 1, 1, 0, 0)\nW\n",
+         A = [cos(theta), -sin(theta), 0; sin(theta), cos(theta), 0; 0, 0, 1]\n\
+         theta = pi/2\nY\nV_b = (0, 0, 1, 1, 0, 0)\nW\nA\n",
+    );
+    assert!(
+        out.contains(
+            "A = [cos(theta), -sin(theta), 0; sin(theta), cos(theta), 0; 0, 0, 1]  : 3×3 matrix\n"
+        ),
+        "{out}"
+    );
+    assert!(
+        out.ends_with("\n[0, -1, 0\n 1,  0, 0\n 0,  0, 1]  : SO(3)\n"),
+        "{out}"
     );
     for want in [
         "\n[1, 0, 0, 1; 0, 1, 0, 0; 0, 0, 1, 0; 0, 0, 0, 1] T_bc  : SE(3) {a}←{c}\n",

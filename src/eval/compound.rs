@@ -160,13 +160,15 @@ impl Interp<'_> {
                     trows[0][0].val.as_ref().unwrap_or(&Value::scalar(f64::NAN)),
                 )))
             } else {
-                Sym::Call(
-                    "block".into(),
+                Sym::Block(
                     trows
                         .iter()
-                        .flatten()
-                        .filter_map(|t| t.val.as_ref())
-                        .map(to_sym)
+                        .map(|r| {
+                            r.iter()
+                                .filter_map(|t| t.val.as_ref())
+                                .map(to_sym)
+                                .collect()
+                        })
                         .collect(),
                 )
             };

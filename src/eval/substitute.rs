@@ -115,6 +115,19 @@ pub fn resolve(s: &Sym, env: &Env) -> Sym {
             },
             Sym::Pow,
         ),
+        Sym::Block(rows) => {
+            let rows: Vec<Vec<Sym>> = rows
+                .iter()
+                .map(|r| r.iter().map(|x| resolve(x, env)).collect())
+                .collect();
+            let vals: Option<Vec<Vec<Value>>> = rows
+                .iter()
+                .map(|r| r.iter().map(|x| num(x).cloned()).collect())
+                .collect();
+            vals.and_then(|v| ops::brackets(&v).ok())
+                .map(constant)
+                .unwrap_or(Sym::Block(rows))
+        }
         Sym::Call(name, args) => {
             let args: Vec<Sym> = args.iter().map(|a| resolve(a, env)).collect();
             let vals: Option<Vec<Value>> = args.iter().map(|a| num(a).cloned()).collect();

@@ -28,6 +28,9 @@ pub enum Sym {
     Transpose(Box<Sym>),
     Member(Box<Sym>, String),
     Call(String, Vec<Sym>),
+    /// A matrix literal with a symbol among its entries, `[1, theta; 0, 1]`,
+    /// row by row (MATLAB block concatenation, LANGUAGE.md §4).
+    Block(Vec<Vec<Sym>>),
 }
 
 impl PartialEq for Sym {
@@ -49,6 +52,7 @@ impl PartialEq for Sym {
             | (Pow(a, b), Pow(c, d)) => a == c && b == d,
             (Member(a, m), Member(b, n)) => a == b && m == n,
             (Call(f, a), Call(g, b)) => f == g && a == b,
+            (Block(a), Block(b)) => a == b,
             _ => false,
         }
     }
@@ -76,6 +80,7 @@ impl Sym {
             match s {
                 Sym::Name(_) | Sym::Const(..) | Sym::Identity => {}
                 Sym::Product(v) | Sym::Call(_, v) => todo.extend(v.iter().map(|c| (c, depth + 1))),
+                Sym::Block(rows) => todo.extend(rows.iter().flatten().map(|c| (c, depth + 1))),
                 Sym::Inv(a)
                 | Sym::Neg(a)
                 | Sym::Bracket(a)
@@ -218,13 +223,22 @@ impl fmt::Display for Sym {
             },
             Sym::Bracket(x) => write!(f, "[{x}]"),
             Sym::Transpose(x) => match **x {
-                Sym::Name(_) | Sym::Call(..) | Sym::Bracket(_) => write!(f, "{x}.T"),
+                Sym::Name(_) | Sym::Call(..) | Sym::Bracket(_) | Sym::Block(_) => {
+                    write!(f, "{x}.T")
+                }
                 _ => write!(f, "({x}).T"),
             },
             Sym::Member(x, m) => match **x {
                 Sym::Name(_) | Sym::Call(..) => write!(f, "{x}.{m}"),
                 _ => write!(f, "({x}).{m}"),
             },
+            Sym::Block(rows) => {
+                let rows: Vec<String> = rows
+                    .iter()
+                    .map(|r| r.iter().map(Sym::to_string).collect::<Vec<_>>().join(", "))
+                    .collect();
+                write!(f, "[{}]", rows.join("; "))
+            }
             Sym::Call(name, args) => {
                 write!(f, "{name}(")?;
                 for (i, a) in args.iter().enumerate() {
