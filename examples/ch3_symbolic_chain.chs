@@ -71,3 +71,9 @@ T_ad = [0, 0, -1, 400; 0, -1, 0, 50; -1, 0, 0, 300; 0, 0, 0, 1]
 T_bc = [0, -1/sqrt(2), -1/sqrt(2), 30; 0, 1/sqrt(2), -1/sqrt(2), -40; 1, 0, 0, 25; 0, 0, 0, 1]
 inv(T_ad * T_db * T_bc) * T_ad * T_de        # T_ce, now numeric
 T_ce                                         # bound by derive over symbols; the numbers count now
+
+# --- A matrix written over a symbol (§3.2.1.2: Rot(ẑ, φ)) ------------------------
+given phi : scalar
+Rot_phi = [cos(phi), -sin(phi), 0; sin(phi), cos(phi), 0; 0, 0, 1]
+phi = 30 deg
+Rot_phi                                      # now Rotz(30°): [0.866 -0.5 0; 0.5 0.866 0; 0 0 1], SO(3)
