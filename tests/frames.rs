@@ -135,6 +135,13 @@ fn untagged_values_match_anything() {
     frames("untag(T_ab) * T_bc", &["b", "c'"]);
 }
 
+/// Asserts that `out` contains every piece of `wants`.
+fn contains_all(out: &str, wants: &[&str]) {
+    for want in wants {
+        assert!(out.contains(want), "{want:?} not in\n{out}");
+    }
+}
+
 /// The text output of running `src`, which must have no error.
 fn text(src: &str) -> String {
     let mut s = Session::new(Settings::default());
@@ -155,13 +162,14 @@ fn destructured_parts_keep_their_frames() {
         "T_ab = SE3(Rotz(1), (1, 2, 3))\n(R, p) = TransToRp(T_ab)\n\
          (w, theta) = AxisAng3(MatrixLog3(R))\n(w_s, t) = AxisAng3((0, 0, 2))\n",
     );
-    for want in [
-        "]  : SO(3) {a}←{b}\np = (1, 2, 3)  : 3-vector {a}\n",
-        "w = (0, 0, 1)  : 3-vector {a}\ntheta = 1\n",
-        "w_s = (0, 0, 1)  : 3-vector {s}\nt = 2\n",
-    ] {
-        assert!(out.contains(want), "{want:?} not in\n{out}");
-    }
+    contains_all(
+        &out,
+        &[
+            "]  : SO(3) {a}←{b}\np = (1, 2, 3)  : 3-vector {a}\n",
+            "w = (0, 0, 1)  : 3-vector {a}\ntheta = 1\n",
+            "w_s = (0, 0, 1)  : 3-vector {s}\nt = 2\n",
+        ],
+    );
 }
 
 #[test]
@@ -185,14 +193,15 @@ fn numbers_bound_later_reach_derived_symbols() {
         out.ends_with("\n[0, -1, 0\n 1,  0, 0\n 0,  0, 1]  : SO(3)\n"),
         "{out}"
     );
-    for want in [
-        "\n[1, 0, 0, 1; 0, 1, 0, 0; 0, 0, 1, 0; 0, 0, 0, 1] T_bc  : SE(3) {a}←{c}\n",
-        "\n[1, 0, 0, 1\n 0, 1, 0, 1\n 0, 0, 1, 0\n 0, 0, 0, 1]  : SE(3) {a}←{c}\n",
-        "\n[0, 1,  0\n 1, 0,  0\n 0, 0, -1]  : SO(3)\n",
-        "\n(0, 0, 1, 1, -1, 0)  : twist {a}\n",
-    ] {
-        assert!(out.contains(want), "{want:?} not in\n{out}");
-    }
+    contains_all(
+        &out,
+        &[
+            "\n[1, 0, 0, 1; 0, 1, 0, 0; 0, 0, 1, 0; 0, 0, 0, 1] T_bc  : SE(3) {a}←{c}\n",
+            "\n[1, 0, 0, 1\n 0, 1, 0, 1\n 0, 0, 1, 0\n 0, 0, 0, 1]  : SE(3) {a}←{c}\n",
+            "\n[0, 1,  0\n 1, 0,  0\n 0, 0, -1]  : SO(3)\n",
+            "\n(0, 0, 1, 1, -1, 0)  : twist {a}\n",
+        ],
+    );
 }
 
 #[test]
