@@ -3,12 +3,10 @@
 //! [`crate::check`]'s rules and computing values through [`crate::lie`].
 
 mod compound;
-pub mod convert;
 mod derive;
 pub mod env;
 mod expr;
 pub mod interp;
-pub mod ops;
 mod substitute;
-pub mod symbolic;
-pub mod value;
+
+pub use crate::values::{convert, ops, symbolic, value};

@@ -2,78 +2,10 @@
 //! parse back (`[1, 0; 0, 1]` with one row per line), vectors as the book
 //! writes them `(1, 2, 3)`, and the type and frames after the value.
 
-use super::number::fmt_num;
 use crate::check::ty::{Kind, Ty};
 use crate::eval::interp::Outcome;
-use crate::eval::value::Value;
-
-/// How numbers print: `digits` decimals (trailing zeros trimmed), or with
-/// `exact`, a closed form such as `1/√2` or `π/6` where one is within
-/// 1e-12 (the REPL's `:exact`). A plain `usize` converts to decimals only.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Style {
-    /// Decimals.
-    pub digits: usize,
-    /// Print simple closed forms (`√3/2`, `-π/2`) instead of decimals.
-    pub exact: bool,
-}
-
-impl Style {
-    /// One number in this style.
-    pub fn num(self, x: f64) -> String {
-        self.exact
-            .then(|| super::exact::closed_form(x))
-            .flatten()
-            .unwrap_or_else(|| fmt_num(x, self.digits))
-    }
-}
-
-impl From<usize> for Style {
-    fn from(digits: usize) -> Style {
-        Style {
-            digits,
-            exact: false,
-        }
-    }
-}
-
-/// A value on one line: `2`, `(1, 2, 3)`, `[1, 2; 3, 4]`.
-pub fn inline(v: &Value, style: impl Into<Style>) -> String {
-    let style = style.into();
-    match v {
-        Value::Num { m, .. } if m.is_empty() => format!("zeros({}, {})", m.nrows(), m.ncols()),
-        Value::Num { m, .. } if m.len() == 1 && m.ncols() == 1 && m.nrows() == 1 => style.num(m[0]),
-        Value::Num { m, .. } if m.ncols() == 1 => {
-            let xs: Vec<String> = m.iter().map(|x| style.num(*x)).collect();
-            format!("({})", xs.join(", "))
-        }
-        // A row: `[a, b]` would read back as a column, so print its transpose.
-        Value::Num { m, .. } if m.nrows() == 1 => {
-            let xs: Vec<String> = m.iter().map(|x| style.num(*x)).collect();
-            format!("({}).T", xs.join(", "))
-        }
-        Value::Num { m, .. } => {
-            let rows: Vec<String> = m
-                .row_iter()
-                .map(|r| {
-                    r.iter()
-                        .map(|x| style.num(*x))
-                        .collect::<Vec<_>>()
-                        .join(", ")
-                })
-                .collect();
-            format!("[{}]", rows.join("; "))
-        }
-        Value::Bool(b) => b.to_string(),
-        Value::Tuple(vs) => {
-            let xs: Vec<String> = vs.iter().map(|x| inline(x, style)).collect();
-            format!("({})", xs.join(", "))
-        }
-        Value::Mech(m) => format!("mech < {} >", m.joints_text()),
-        Value::Func(f) => format!("{}({})", f.name, f.params.join(", ")),
-        Value::Sym(s) => s.to_string(),
-    }
-}
+pub use crate::values::format::{Style, inline};
+use crate::values::value::Value;
 
 /// A matrix in aligned columns, decimal points lined up, one row per line;
 /// `indent` is the column where the `[` stands.

@@ -206,7 +206,7 @@ pub fn vars(env: &Env, style: text::Style) -> String {
             row.push_str("  (given)");
         } else if let Some(v) = &b.val {
             let shown = text::inline(v, style);
-            if shown.chars().count() <= 48 && !matches!(v, Value::Func(_)) {
+            if shown.chars().count() <= 48 {
                 row.push_str(&format!(" = {shown}"));
             }
         }
@@ -388,7 +388,7 @@ fn load(session: &mut Session, arg: &str) -> Reply {
         (Some(rest), Some(home)) => home.join(rest).to_string_lossy().into_owned(),
         _ => path.to_string(),
     };
-    let src = match crate::cli::read_source(&path) {
+    let src = match crate::session::read_source(&path) {
         Ok(s) => s,
         Err(msg) => return Reply::err(format!(":load: {msg}")),
     };

@@ -6,25 +6,7 @@
 //! notation (juxtaposition, `[w]`, `30 deg`) is resolved by the parser into
 //! ordinary products, brackets and calls.
 
-/// A half-open byte range `start..end` into the source text.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
-pub struct Span {
-    pub start: usize,
-    pub end: usize,
-}
-
-impl Span {
-    pub fn new(start: usize, end: usize) -> Span {
-        Span { start, end }
-    }
-    /// The smallest span covering both.
-    pub fn join(self, other: Span) -> Span {
-        Span {
-            start: self.start.min(other.start),
-            end: self.end.max(other.end),
-        }
-    }
-}
+pub use crate::span::Span;
 
 /// A name as written, e.g. `T_sb`, `theta_1`, `T_{world,cam}`, `ω_s`.
 /// Frame subscripts are read from the text by [`super::ident::name_frames`].

@@ -8,7 +8,7 @@ use nalgebra::DMatrix;
 use super::convert::{self, dm};
 use super::value::Value;
 use crate::check::ty::Kind;
-use crate::lie::{Mat2, Mat3, Mat4, Vec6, se2, se3};
+use crate::lie::{Mat3, Mat4, Vec6, se2, se3};
 
 /// Largest matrix side accepted anywhere.
 pub const MAX_DIM: usize = 10_000;
@@ -248,7 +248,7 @@ fn num_inverse(k: &Kind, m: &DMatrix<f64>) -> Result<DMatrix<f64>, String> {
             if det == 0.0 || !det.is_finite() || det.abs() <= 1e-14 * scale {
                 return Err(format!(
                     "the matrix is singular (determinant {}); it has no inverse",
-                    crate::output::number::fmt_num(det, 6)
+                    super::number::fmt_num(det, 6)
                 ));
             }
             m.clone()
@@ -449,6 +449,3 @@ pub fn brackets(rows: &[Vec<Value>]) -> Result<Value, String> {
         m,
     })
 }
-
-/// Vectors of the same flavour: a twist stays a twist after `+`.
-pub fn unused_kinds(_: Mat2) {}
