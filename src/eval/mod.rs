@@ -6,6 +6,7 @@ mod compound;
 mod derive;
 pub mod env;
 mod expr;
+pub mod graph;
 pub mod interp;
 mod substitute;
 
