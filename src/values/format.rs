@@ -4,7 +4,9 @@
 //! expressions. Below evaluation, so the evaluator can print without
 //! importing the output layer; multi-line blocks and JSON are in `output`.
 
-use super::number::fmt_num;
+use std::fmt::Write;
+
+use super::number::write_num;
 use super::value::Value;
 
 /// How numbers print: `digits` decimals (trailing zeros trimmed), or with
@@ -21,10 +23,16 @@ pub struct Style {
 impl Style {
     /// One number in this style.
     pub fn num(self, x: f64) -> String {
-        self.exact
-            .then(|| super::exact::closed_form(x))
-            .flatten()
-            .unwrap_or_else(|| fmt_num(x, self.digits))
+        let mut s = String::new();
+        self.write(&mut s, x);
+        s
+    }
+    /// One number in this style, appended to `out`.
+    pub fn write(self, out: &mut String, x: f64) {
+        match self.exact.then(|| super::exact::closed_form(x)).flatten() {
+            Some(form) => out.push_str(&form),
+            None => write_num(out, x, self.digits),
+        }
     }
 }
 
@@ -39,37 +47,67 @@ impl From<usize> for Style {
 
 /// A value on one line: `2`, `(1, 2, 3)`, `[1, 2; 3, 4]`.
 pub fn inline(v: &Value, style: impl Into<Style>) -> String {
-    let style = style.into();
+    let mut s = String::new();
+    write_inline(&mut s, v, style.into());
+    s
+}
+
+/// Numbers separated by `, `.
+fn write_list<'a>(out: &mut String, xs: impl Iterator<Item = &'a f64>, style: Style) {
+    for (i, x) in xs.enumerate() {
+        if i > 0 {
+            out.push_str(", ");
+        }
+        style.write(out, *x);
+    }
+}
+
+/// [`inline`], appended to `out`.
+pub fn write_inline(out: &mut String, v: &Value, style: Style) {
     match v {
-        Value::Num { m, .. } if m.is_empty() => format!("zeros({}, {})", m.nrows(), m.ncols()),
-        Value::Num { m, .. } if m.len() == 1 && m.ncols() == 1 && m.nrows() == 1 => style.num(m[0]),
+        Value::Num { m, .. } if m.is_empty() => {
+            let _ = write!(out, "zeros({}, {})", m.nrows(), m.ncols());
+        }
+        Value::Num { m, .. } if m.len() == 1 && m.ncols() == 1 && m.nrows() == 1 => {
+            style.write(out, m[0])
+        }
         Value::Num { m, .. } if m.ncols() == 1 => {
-            let xs: Vec<String> = m.iter().map(|x| style.num(*x)).collect();
-            format!("({})", xs.join(", "))
+            out.push('(');
+            write_list(out, m.iter(), style);
+            out.push(')');
         }
         // A row: `[a, b]` would read back as a column, so print its transpose.
         Value::Num { m, .. } if m.nrows() == 1 => {
-            let xs: Vec<String> = m.iter().map(|x| style.num(*x)).collect();
-            format!("({}).T", xs.join(", "))
+            out.push('(');
+            write_list(out, m.iter(), style);
+            out.push_str(").T");
         }
         Value::Num { m, .. } => {
-            let rows: Vec<String> = m
-                .row_iter()
-                .map(|r| {
-                    r.iter()
-                        .map(|x| style.num(*x))
-                        .collect::<Vec<_>>()
-                        .join(", ")
-                })
-                .collect();
-            format!("[{}]", rows.join("; "))
+            out.push('[');
+            for (i, r) in m.row_iter().enumerate() {
+                if i > 0 {
+                    out.push_str("; ");
+                }
+                write_list(out, r.iter(), style);
+            }
+            out.push(']');
         }
-        Value::Bool(b) => b.to_string(),
+        Value::Bool(b) => out.push_str(if *b { "true" } else { "false" }),
         Value::Tuple(vs) => {
-            let xs: Vec<String> = vs.iter().map(|x| inline(x, style)).collect();
-            format!("({})", xs.join(", "))
+            out.push('(');
+            for (i, x) in vs.iter().enumerate() {
+                if i > 0 {
+                    out.push_str(", ");
+                }
+                write_inline(out, x, style);
+            }
+            out.push(')');
         }
-        Value::Mech(m) => format!("mech < {} >", m.joints_text()),
-        Value::Sym(s) => s.to_string(),
+        Value::Mech(m) => {
+            let _ = write!(out, "mech < {} >", m.joints_text());
+        }
+        Value::Sym(s) => {
+            let _ = write!(out, "{s}");
+        }
     }
 }
