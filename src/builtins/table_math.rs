@@ -56,7 +56,7 @@ fn eval_exp(a: &mut Args) -> Result<Value, Diagnostic> {
     if let Some(x) = a.value(0).as_scalar() {
         return Ok(Value::scalar(x.exp()));
     }
-    let m = a.mat(0)?.clone();
+    let m = a.mat(0)?;
     if m.iter().any(|x| !x.is_finite()) {
         return Err(a.error(
             0,
@@ -64,6 +64,14 @@ fn eval_exp(a: &mut Args) -> Result<Value, Diagnostic> {
             "exp of a matrix with entries that are not finite",
         ));
     }
+    // The common case, [S]θ ∈ se(3) (3.88), on the stack.
+    if m.shape() == (4, 4) {
+        let f = Mat4::from_iterator(m.iter().copied());
+        if is_se3_fixed(&f) {
+            return Ok(Value::num(Kind::SE3, &se3::exp(&se3::vee(&f))));
+        }
+    }
+    let m = m.clone();
     let kind = a.value(0).kind();
     let skew3 =
         |m: &DMatrix<f64>| (m + m.transpose()).abs().max() <= 1e-12 * m.abs().max().max(1.0);
@@ -107,6 +115,14 @@ fn eval_exp(a: &mut Args) -> Result<Value, Diagnostic> {
         }
         _ => Err(a.error(0, ErrorKind::Type, "exp needs a square matrix")),
     }
+}
+
+/// [`is_se3`] for a 4×4 matrix on the stack: [ω] skew-symmetric, the
+/// last row zero.
+fn is_se3_fixed(m: &Mat4) -> bool {
+    let scale = m.amax().max(1.0);
+    let w = m.fixed_view::<3, 3>(0, 0);
+    (w + w.transpose()).amax() <= 1e-12 * scale && m.row(3).amax() == 0.0
 }
 
 fn is_se3(m: &DMatrix<f64>) -> bool {

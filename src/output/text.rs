@@ -26,20 +26,53 @@ fn width(s: &str) -> usize {
     }
 }
 
+/// Reusable scratch space of [`write_matrix_block`]: the cells' text, the
+/// cells' (start, fraction start, end) in it, and the column widths.
+#[derive(Default)]
+struct Scratch {
+    buf: String,
+    cells: Vec<(usize, usize, usize)>,
+    int_w: Vec<usize>,
+    frac_w: Vec<usize>,
+}
+
+thread_local! {
+    static SCRATCH: std::cell::RefCell<Scratch> = std::cell::RefCell::default();
+}
+
 /// [`matrix_block`], appended to `out`: the cells are written once into
-/// one buffer, then aligned.
+/// one buffer (reused from call to call), then aligned.
 fn write_matrix_block(out: &mut String, m: &nalgebra::DMatrix<f64>, style: Style, indent: usize) {
+    SCRATCH.with(|s| match s.try_borrow_mut() {
+        Ok(mut s) => align(out, m, style, indent, &mut s),
+        Err(_) => align(out, m, style, indent, &mut Scratch::default()),
+    });
+}
+
+fn align(
+    out: &mut String,
+    m: &nalgebra::DMatrix<f64>,
+    style: Style,
+    indent: usize,
+    s: &mut Scratch,
+) {
     let (nrows, ncols) = m.shape();
-    // Each cell: where it starts in `buf`, where its fraction (`.` or `e`)
-    // starts, and where it ends.
-    let mut buf = String::with_capacity(8 * nrows * ncols);
-    let mut cells: Vec<(usize, usize, usize)> = Vec::with_capacity(nrows * ncols);
-    let mut int_w = vec![0; ncols];
-    let mut frac_w = vec![0; ncols];
+    let Scratch {
+        buf,
+        cells,
+        int_w,
+        frac_w,
+    } = s;
+    buf.clear();
+    cells.clear();
+    int_w.clear();
+    int_w.resize(ncols, 0);
+    frac_w.clear();
+    frac_w.resize(ncols, 0);
     for r in 0..nrows {
         for (j, (iw, fw)) in int_w.iter_mut().zip(frac_w.iter_mut()).enumerate() {
             let start = buf.len();
-            style.write(&mut buf, m[(r, j)]);
+            style.write(buf, m[(r, j)]);
             let split = buf.as_bytes()[start..]
                 .iter()
                 .position(|&b| b == b'.' || b == b'e')
@@ -153,7 +186,9 @@ pub fn show_outcome(o: &Outcome, style: impl Into<Style>) -> String {
     if !o.prints {
         return String::new();
     }
-    let mut out = String::new();
+    // Room for a 4×4 matrix with its name and label, so printing one
+    // rarely grows the string.
+    let mut out = String::with_capacity(192);
     if let Some(note) = &o.note {
         out.push_str(note);
         out.push('\n');
