@@ -17,81 +17,15 @@
 //! [`mul`]. The functions know only [`Ty`]s; the interpreter attaches spans and
 //! source text to the [`RuleError`]s they return.
 
+use super::error::same_frame_error;
+pub use super::error::{Operands, RuleError, describe};
 use super::product::dims_agree;
 pub use super::product::mul;
 use super::ty::{Frames, Kind, Ty};
-use crate::diagnostics::ErrorKind;
 
-/// Why an operation is refused, with the text for each part of the
-/// diagnostic. `lhs`/`rhs` label the operands, `op` the operator.
-#[derive(Debug, Clone, Default)]
-pub struct RuleError {
-    pub kind: Option<ErrorKind>,
-    pub message: String,
-    pub lhs: String,
-    pub rhs: String,
-    pub op: String,
-    pub help: Option<String>,
-}
-
-impl RuleError {
-    pub(super) fn typ(message: impl Into<String>) -> RuleError {
-        RuleError {
-            kind: Some(ErrorKind::Type),
-            message: message.into(),
-            ..Default::default()
-        }
-    }
-    pub(super) fn frame(message: impl Into<String>) -> RuleError {
-        RuleError {
-            kind: Some(ErrorKind::Frame),
-            message: message.into(),
-            ..Default::default()
-        }
-    }
-    pub(super) fn with_help(mut self, help: impl Into<String>) -> RuleError {
-        self.help = Some(help.into());
-        self
-    }
-}
-
-/// The source text of the operands, for help lines (`did you mean inv(T_cb)?`).
-#[derive(Debug, Clone, Copy, Default)]
-pub struct Operands<'a> {
-    pub lhs: &'a str,
-    pub rhs: &'a str,
-}
-
-/// How a frame tag reads in a label: `{b} in {a}`, `in {a}`.
-pub fn describe(frames: &Frames) -> String {
-    match frames {
-        Frames::None => "untagged".to_string(),
-        Frames::One(a) => format!("in {{{a}}}"),
-        Frames::Pair(a, b) => format!("{{{b}}} in {{{a}}}"),
-        Frames::Disp(a) => format!("displacement in {{{a}}}"),
-    }
-}
-
-/// What multiplying by a scalar does to a kind: group elements stop being
-/// group elements, a screw axis times θ is a twist (exponential coordinates).
+/// What multiplying by a scalar does to a kind ([`Kind::scaled`]).
 pub fn scaled_kind(kind: &Kind) -> Kind {
-    match kind {
-        Kind::SO3 | Kind::SE2 => Kind::Matrix(Some(3), Some(3)),
-        Kind::SE3 => Kind::Matrix(Some(4), Some(4)),
-        Kind::SO2 => Kind::Matrix(Some(2), Some(2)),
-        Kind::Screw => Kind::Twist,
-        other => other.clone(),
-    }
-}
-
-pub(super) fn same_frame_error(what: &str, l: &Ty, r: &Ty) -> RuleError {
-    let mut e = RuleError::frame(format!("cannot {what} quantities in different frames"));
-    e.lhs = describe(&l.frames);
-    e.rhs = describe(&r.frames);
-    e.help = Some(
-        "express both in one frame first (an adjoint for twists, a rotation for vectors)".into(),
-    );
-    e
+    kind.scaled()
 }
 
 /// Frames shared by a sum, `cross` or `dot`: same frame, or one untagged.
@@ -188,7 +122,12 @@ pub fn inverse(t: &Ty) -> Result<Ty, RuleError> {
     }
 }
 
-/// `x.T` — transposes swap frames; [Ad_T]ᵀ acts on wrenches.
+/// `x.T` — the transpose of a rotation is its inverse (Prop. 3.1), so
+/// `R_ab.T` is R_ba; [Ad_T]ᵀ acts on wrenches (Prop. 3.17) and maps them
+/// the other way; a vector's transpose is a row in the same frame, a
+/// one-frame matrix's transpose stays in its frame. The transpose of any
+/// other map {a}←{b} (a transform, a product) maps no frame to another: it
+/// is tagged [`Frames::Transposed`], and a product with it is refused.
 pub fn transpose(t: &Ty) -> Result<Ty, RuleError> {
     let kind = match &t.kind {
         Kind::SO3 | Kind::SO2 => t.kind.clone(),
@@ -209,10 +148,20 @@ pub fn transpose(t: &Ty) -> Result<Ty, RuleError> {
             None => return Err(RuleError::typ(format!("cannot transpose {}", k.a()))),
         },
     };
-    let frames = if t.kind.is_vector() {
-        t.frames.clone()
-    } else {
-        t.frames.swapped()
+    let inverse_is_transpose = matches!(
+        t.kind,
+        Kind::SO3 | Kind::SO2 | Kind::Adjoint { .. } | Kind::Unknown
+    );
+    let frames = match &t.frames {
+        _ if t.kind.is_vector() => t.frames.clone(),
+        Frames::Pair(a, b)
+            if !inverse_is_transpose && !matches!(kind, Kind::Matrix(Some(1), _)) =>
+        {
+            Frames::Transposed(a.clone(), b.clone())
+        }
+        Frames::Disp(a) if !inverse_is_transpose => Frames::Transposed(a.clone(), a.moved()),
+        Frames::Transposed(a, b) => Frames::Pair(a.clone(), b.clone()),
+        f => f.swapped(),
     };
     Ok(Ty::new(kind, frames))
 }
@@ -254,8 +203,13 @@ pub fn pow(base: &Ty, exp: &Ty, literal: Option<f64>) -> Result<Ty, RuleError> {
                 }
                 f => f.clone(),
             };
+            // Powers of group elements stay in the group; a power of an
+            // so(3)/se(3) matrix is not in the algebra in general ([ω]² is
+            // symmetric), so it is a plain matrix.
             let kind = if base.kind.is_group() || matches!(base.kind, Kind::Adjoint { .. }) {
                 base.kind.clone()
+            } else if base.kind.is_algebra() {
+                plain_matrix(&base.kind)
             } else {
                 scaled_kind(&base.kind)
             };
@@ -264,11 +218,21 @@ pub fn pow(base: &Ty, exp: &Ty, literal: Option<f64>) -> Result<Ty, RuleError> {
     }
 }
 
+/// `X^0`: the identity in X's group, else a plain matrix (`[1, 2; 3, 4]^0`
+/// is the 2×2 identity, not labelled SO(2)).
 fn identity_kind(k: &Kind) -> Kind {
     if k.is_group() {
         k.clone()
     } else {
-        scaled_kind(k)
+        plain_matrix(k)
+    }
+}
+
+/// The plain matrix of the shape of `k`.
+fn plain_matrix(k: &Kind) -> Kind {
+    match k.shape() {
+        Some((r, c)) => Kind::Matrix(r, c),
+        None => k.scaled(),
     }
 }
 

@@ -132,6 +132,19 @@ impl Kind {
         matches!(self, Kind::So3 | Kind::Se3 | Kind::So2 | Kind::Se2)
     }
 
+    /// What multiplying by a scalar does to a kind: group elements stop
+    /// being group elements, a screw axis times θ is a twist (exponential
+    /// coordinates, §3.3.3.2).
+    pub fn scaled(&self) -> Kind {
+        match self {
+            Kind::SO3 | Kind::SE2 => Kind::Matrix(Some(3), Some(3)),
+            Kind::SE3 => Kind::Matrix(Some(4), Some(4)),
+            Kind::SO2 => Kind::Matrix(Some(2), Some(2)),
+            Kind::Screw => Kind::Twist,
+            other => other.clone(),
+        }
+    }
+
     /// True when the kind may stand where a number is needed.
     pub fn maybe_scalar(&self) -> bool {
         matches!(self, Kind::Scalar | Kind::Unknown)
@@ -190,38 +203,57 @@ impl fmt::Display for Kind {
     }
 }
 
-/// One reference frame. `moved` marks the frame reached by a displacement
-/// (`exp([S_s] θ) * T_sb` is {s}←{b'}): printed with a prime, and a binding
-/// may give it a new name.
+/// One reference frame: a name and how many displacements have moved it
+/// (LANGUAGE.md §6). `exp([S_s] θ) * T_sb` is {s}←{b'}: {b} moved once,
+/// printed with one prime; a name's primes count the same way (`T_sb''`
+/// names {b} moved twice), so `T_sb'` and `exp([S_s] θ) * T_sb` carry the
+/// same frames. A binding may give a moved frame a new name.
 #[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub struct Frame {
+    /// The name without its primes.
     pub name: String,
-    pub moved: bool,
+    /// The number of displacements applied (primes).
+    pub moved: u32,
 }
 
 impl Frame {
+    /// The frame a name's subscript names: `b''` is {b} moved twice.
     pub fn named(name: impl Into<String>) -> Frame {
+        let name: String = name.into();
+        let base = name.trim_end_matches('\'');
+        let moved = (name.len() - base.len()) as u32;
         Frame {
-            name: name.into(),
-            moved: false,
+            name: base.to_string(),
+            moved,
         }
     }
-    /// The frame after a displacement.
+    /// The frame after one more displacement.
     pub fn moved(&self) -> Frame {
+        self.lifted(1)
+    }
+    /// The frame after `k` more displacements.
+    pub fn lifted(&self, k: u32) -> Frame {
         Frame {
             name: self.name.clone(),
-            moved: true,
+            moved: self.moved.saturating_add(k),
         }
+    }
+    /// True when this frame has been displaced (printed with a prime).
+    pub fn is_moved(&self) -> bool {
+        self.moved > 0
     }
 }
 
 impl fmt::Display for Frame {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        if self.moved {
-            write!(f, "{}'", self.name)
-        } else {
-            write!(f, "{}", self.name)
+        write!(f, "{}", self.name)?;
+        for _ in 0..self.moved.min(8) {
+            write!(f, "'")?;
         }
+        if self.moved > 8 {
+            write!(f, "^({})", self.moved)?;
+        }
+        Ok(())
     }
 }
 
@@ -236,8 +268,13 @@ pub enum Frames {
     /// {a}←{b}: R_ab, T_ab, Ad(T_ab) map {b} coordinates to {a}.
     Pair(Frame, Frame),
     /// A displacement expressed in {a}: `exp([S_a] θ)`. Premultiplies
-    /// X_a? (moving its inner frame) or postmultiplies X_?a.
+    /// X_a? (moving its inner frame) or postmultiplies X_?a; in the frame
+    /// algebra ([`super::algebra`]) it is the map {a}←{a'}.
     Disp(Frame),
+    /// The transpose of a map {a}←{b} that is not a rotation (`T_ab.T`):
+    /// not a map between frames at all, since the transpose is the inverse
+    /// only for rotations (Prop. 3.1). Using it as an operator is an error.
+    Transposed(Frame, Frame),
 }
 
 impl Frames {
@@ -268,12 +305,13 @@ impl Frames {
             Frames::None => vec![],
             Frames::One(a) | Frames::Disp(a) => vec![a.to_string()],
             Frames::Pair(a, b) => vec![a.to_string(), b.to_string()],
+            Frames::Transposed(..) => vec![],
         }
     }
     /// The outer frame: {a} of X_ab, v_a, or the displacement's frame.
     pub fn outer(&self) -> Option<&Frame> {
         match self {
-            Frames::None => None,
+            Frames::None | Frames::Transposed(..) => None,
             Frames::One(a) | Frames::Disp(a) | Frames::Pair(a, _) => Some(a),
         }
     }
@@ -281,6 +319,7 @@ impl Frames {
     pub fn swapped(&self) -> Frames {
         match self {
             Frames::Pair(a, b) => Frames::Pair(b.clone(), a.clone()),
+            Frames::Transposed(a, b) => Frames::Transposed(b.clone(), a.clone()),
             other => other.clone(),
         }
     }
@@ -294,6 +333,7 @@ impl fmt::Display for Frames {
             Frames::One(a) => write!(f, "{{{a}}}"),
             Frames::Pair(a, b) => write!(f, "{{{a}}}←{{{b}}}"),
             Frames::Disp(a) => write!(f, "displacement in {{{a}}}"),
+            Frames::Transposed(a, b) => write!(f, "({{{a}}}←{{{b}}})ᵀ"),
         }
     }
 }

@@ -49,18 +49,15 @@ impl Interp<'_> {
                 _ => false,
             };
             if let (true, Frames::Pair(a, c)) = (fits, &b.ty.frames) {
-                if a.moved || c.moved {
-                    continue;
-                }
-                edges.entry(a.name.clone()).or_default().push((
-                    c.name.clone(),
+                edges.entry(a.to_string()).or_default().push((
+                    c.to_string(),
                     Step {
                         name: name.clone(),
                         inverted: false,
                     },
                 ));
-                edges.entry(c.name.clone()).or_default().push((
-                    a.name.clone(),
+                edges.entry(c.to_string()).or_default().push((
+                    a.to_string(),
                     Step {
                         name: name.clone(),
                         inverted: true,

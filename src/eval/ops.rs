@@ -214,6 +214,17 @@ pub fn pow(b: &Value, e: f64, kind: &Kind) -> Result<Value, String> {
             base = &base * &base;
         }
     }
+    // A power of a plain matrix is a plain matrix, even when it happens to
+    // be a group element (`[1, 2; 3, 4]^0` is I, not labelled SO(2)).
+    if let Kind::Matrix(..) = kind
+        && convert::classify(&acc).is_group()
+    {
+        let (r, c) = acc.shape();
+        return Ok(Value::Num {
+            kind: Kind::Matrix(Some(r), Some(c)),
+            m: acc,
+        });
+    }
     Ok(out(kind, acc))
 }
 
