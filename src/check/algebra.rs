@@ -157,8 +157,19 @@ pub fn compose(l: &Factor, r: &Factor) -> Result<Factor, Clash> {
         (Transposed(..), _) => Err(Clash::Transposed { left: true }),
         (_, Transposed(..)) => Err(Clash::Transposed { left: false }),
         (Untagged, Untagged) => Ok(Untagged),
-        // An untagged operator displaces the frame it meets.
-        (Untagged, Map(a)) => Ok(Map(Arrow::new(a.out.clone(), a.inn.lifted(1)))),
+        // An untagged operator displaces the frame it meets: on the left of
+        // {a'}←{b} it is the step {a}←{a'} (the fewest displacements that
+        // make the frames meet), on the left of {a}←{b} it moves {b}.
+        (Untagged, Map(a)) => Ok(Map(match &a.out {
+            End::At(f) if f.moved > 0 => Arrow::new(
+                End::At(Frame {
+                    name: f.name.clone(),
+                    moved: f.moved - 1,
+                }),
+                a.inn.clone(),
+            ),
+            _ => Arrow::new(a.out.clone(), a.inn.lifted(1)),
+        })),
         (Map(a), Untagged) => Ok(Map(Arrow::new(a.out.clone(), a.inn.lifted(1)))),
         (Map(x), Map(y)) => compose_maps(x, y).map(Map),
     }
@@ -220,6 +231,44 @@ pub fn product(l: (&Frames, &Kind), r: (&Frames, &Kind), kind: &Kind) -> Result<
     let lf = factor(l.0, Shape::of(l.1));
     let rf = factor(r.0, Shape::of(r.1));
     compose(&lf, &rf).map(|f| to_frames(&f, kind))
+}
+
+/// The frames of `X^n` (n a whole number, |n| ≥ 2; None when not known
+/// before evaluation), as the product X·X·…·X: a map from a frame to a
+/// moved copy of itself composes with itself, moving the copy n times
+/// (`exp([S_a] θ)^2` is {a}←{a''}); a one-frame quantity stays in its
+/// frame; a map between two frames has no power.
+pub fn power(frames: &Frames, n: Option<i64>, kind: &Kind) -> Result<Frames, Clash> {
+    let (a, b) = match factor(frames, Shape::Operator) {
+        Factor::Transposed(..) => return Err(Clash::Transposed { left: true }),
+        Factor::Map(Arrow {
+            out: End::At(a),
+            inn: End::At(b),
+        }) => (a, b),
+        _ => return Ok(frames.clone()),
+    };
+    if a.name != b.name {
+        return Err(Clash::Inner(b, a));
+    }
+    let Some(n) = n else {
+        return Ok(frames.clone());
+    };
+    // X^-n = inv(X)^n.
+    let (a, b) = if n < 0 { (b, a) } else { (a, b) };
+    let n = u32::try_from(n.unsigned_abs()).unwrap_or(u32::MAX);
+    let grow = |base: u32, step: u32| base.saturating_add(step.saturating_mul(n));
+    let (out, inn) = if b.moved >= a.moved {
+        (a.moved, grow(a.moved, b.moved - a.moved))
+    } else {
+        (grow(b.moved, a.moved - b.moved), b.moved)
+    };
+    let at = |k| {
+        End::At(Frame {
+            name: a.name.clone(),
+            moved: k,
+        })
+    };
+    Ok(to_frames(&Factor::Map(Arrow::new(at(out), at(inn))), kind))
 }
 
 #[cfg(test)]

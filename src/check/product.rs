@@ -298,8 +298,13 @@ fn product_help(l: &Ty, r: &Ty, ops: Operands) -> String {
             }
         }
         (Frames::Pair(_, b), Frames::One(c)) => format!(
-            "{} takes coordinates in {{{b}}}, but the vector is in {{{c}}}; express it in {{{b}}} first",
-            ops.lhs.trim()
+            "{} takes coordinates in {{{b}}}, but {} is in {{{c}}}; express it in {{{b}}} first",
+            ops.lhs.trim(),
+            if r.kind.is_vector() {
+                "the vector".to_string()
+            } else {
+                format!("{} ({})", ops.rhs.trim(), r.kind.a())
+            }
         ),
         (Frames::Disp(a), Frames::Pair(c, _)) => format!(
             "a displacement in {{{a}}} premultiplies a transform from {{{a}}} (X_{a}?); {} starts in {{{c}}}",

@@ -17,6 +17,7 @@
 //! [`mul`]. The functions know only [`Ty`]s; the interpreter attaches spans and
 //! source text to the [`RuleError`]s they return.
 
+use super::algebra::{self, Clash};
 use super::error::same_frame_error;
 pub use super::error::{Operands, RuleError, describe};
 use super::product::dims_agree;
@@ -192,16 +193,27 @@ pub fn pow(base: &Ty, exp: &Ty, literal: Option<f64>) -> Result<Ty, RuleError> {
         Some(0.0) => Ok(Ty::new(identity_kind(&base.kind), Frames::None)),
         Some(1.0) => Ok(base.clone()),
         _ => {
-            let frames = match &base.frames {
-                Frames::Pair(a, b) if a != b => {
+            let n = literal
+                .filter(|x| x.fract() == 0.0 && x.abs() < 1e15)
+                .map(|x| x as i64);
+            let frames = match algebra::power(&base.frames, n, &base.kind) {
+                Ok(f) => f,
+                Err(Clash::Inner(..)) => {
                     let mut e = RuleError::frame("frames do not cancel in a power");
                     e.lhs = describe(&base.frames);
-                    e.help = Some(format!(
-                        "X_{a}{b} * X_{a}{b} needs {{{b}}} = {{{a}}}; powers are for displacements (X_{a}{a}) or untagged matrices"
-                    ));
+                    if let Frames::Pair(a, b) = &base.frames {
+                        e.help = Some(format!(
+                            "X_{a}{b} * X_{a}{b} needs {{{b}}} = {{{a}}}; powers are for displacements (X_{a}{a}) or untagged matrices"
+                        ));
+                    }
                     return Err(e);
                 }
-                f => f.clone(),
+                Err(Clash::Transposed { .. }) => {
+                    return Err(RuleError::frame(
+                        "the transpose of a transform is not a transform: the transpose is the inverse only for rotations",
+                    )
+                    .with_help("write inv(T) for the inverse of a transform (Prop. 3.10)"));
+                }
             };
             // Powers of group elements stay in the group; a power of an
             // so(3)/se(3) matrix is not in the algebra in general ([ω]² is

@@ -323,10 +323,10 @@ impl<'a> Interp<'a> {
                         ErrorKind::Domain,
                         span,
                         format!(
-                            "{name} names {} in {}, and the matrix is {:.2e} from it ({measure}); projected to the nearest element",
+                            "{name} names {}, and the matrix is {:.2e} from {} ({measure}); projected to the nearest element",
                             group.noun(),
-                            group.name(),
-                            d
+                            d,
+                            group.name()
                         ),
                     )
                     .with_help("book values are rounded to 3 digits: within 1e-2 the name's group is assumed (ProjectTo, §3.6)"),
@@ -337,10 +337,10 @@ impl<'a> Interp<'a> {
                 ErrorKind::Domain,
                 span,
                 format!(
-                    "{name} names {} in {}, but the matrix is {} from it ({measure})",
+                    "{name} names {}, but the matrix is {} from {} ({measure})",
                     group.noun(),
-                    group.name(),
-                    if distance.is_finite() { fmt(distance) } else { "infinitely far".into() }
+                    if distance.is_finite() { fmt(distance) } else { "infinitely far".into() },
+                    group.name()
                 ),
             )
             .with_help(format!(

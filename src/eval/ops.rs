@@ -56,6 +56,14 @@ pub fn mul(l: &Value, r: &Value, kind: &Kind) -> Result<Value, String> {
     }
     // A point transformed by a homogeneous transform: T p = R p + t.
     if lm.shape() == (4, 4) && rm.shape() == (3, 1) {
+        let homogeneous = (0..4).all(|j| (lm[(3, j)] - f64::from(j == 3)).abs() <= 1e-9);
+        if !homogeneous {
+            return Err(
+                "a 4×4 matrix moves a point, T x = R x + p (3.65), only when its last row is (0, 0, 0, 1); \
+                 this one is not a transform (the transpose of a transform is not its inverse: use inv)"
+                    .into(),
+            );
+        }
         let t = Mat4::from_iterator(lm.iter().copied());
         let p = t.fixed_view::<3, 3>(0, 0) * crate::lie::Vec3::from_iterator(rm.iter().copied())
             + t.fixed_view::<3, 1>(0, 3);
