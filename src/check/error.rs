@@ -47,6 +47,9 @@ pub struct Operands<'a> {
 
 /// How a frame tag reads in a label: `{b} in {a}`, `in {a}`.
 pub fn describe(frames: &Frames) -> String {
+    if let Some(a) = frames.displacement_frame() {
+        return format!("displacement in {{{a}}}");
+    }
     match frames {
         Frames::None => "untagged".to_string(),
         Frames::One(a) => format!("in {{{a}}}"),

@@ -1,17 +1,23 @@
 //! The frame and type rules of LANGUAGE.md §6, in one place: for each
 //! operation, the resulting kind and frames, or the error with its text.
+//! The frames of products and powers come from the frame algebra of
+//! [`super::algebra`] (its tables are the detail of the first rows here).
 //!
-//! | expression            | result                  | else                       |
-//! |-----------------------|-------------------------|----------------------------|
-//! | `X_ab * X_bc`         | `X_ac`                  | frame error, both frames   |
-//! | `X_ab * v_b`          | `v_a`                   | frame error                |
-//! | `inv(X_ab)`, `X_ab.T` | `X_ba`                  |                            |
-//! | `Ad(T_ab) * V_b`      | `V_a`                   | a wrench: cite Prop. 3.17  |
-//! | `Ad(T_ab).T * F_a`    | `F_b` (Prop. 3.17)      |                            |
-//! | `exp([S_a] θ) * T_ab` | {a}←{b'} (moved)        | `T_cb`: frame error        |
-//! | `T_ba * exp([S_a] θ)` | {b}←{a'}                |                            |
-//! | `u_a + v_a`, `cross`  | same frame              | frame error                |
-//! | untagged operand      | matches anything        |                            |
+//! | expression              | result                    | else                          |
+//! |-------------------------|---------------------------|-------------------------------|
+//! | `X_ab * X_bc`           | `X_ac`                    | frame error, both frames      |
+//! | `X_ab * v_b`            | `v_a`                     | frame error                   |
+//! | `T_ab [V_b] inv(T_ab)`  | `[V_a]` in {a} (3.77)     |                               |
+//! | `inv(X_ab)`, `R_ab.T`   | `X_ba`                    |                               |
+//! | `T_ab.T`                | no frames (transposed)    | as a factor: frame error      |
+//! | `Ad(T_ab) * V_b`        | `V_a`                     | a wrench: cite Prop. 3.17     |
+//! | `Ad(T_ab).T * F_a`      | `F_b` (Prop. 3.17)        | a twist: frame error          |
+//! | `exp([S_a] θ) * T_ab`   | {a}←{b'} (moved)          | `T_cb`: frame error           |
+//! | `T_ba * exp([S_a] θ)`   | {b}←{a'}                  |                               |
+//! | `X_ab' * X_bc`          | `X_ac'` ({c} moves with {b}) |                            |
+//! | `X^n`                   | `X * … * X`               | `X_ab`, a ≠ b: frame error    |
+//! | `u_a + v_a`, `cross`    | same frame                | frame error                   |
+//! | untagged operand        | matches anything          |                               |
 //!
 //! Products (`*`) live in [`super::product`] and are re-exported here as
 //! [`mul`]. The functions know only [`Ty`]s; the interpreter attaches spans and

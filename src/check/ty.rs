@@ -299,8 +299,21 @@ impl Frames {
     pub fn is_none(&self) -> bool {
         matches!(self, Frames::None)
     }
+    /// The frame {a} of a displacement in {a}: `Disp(a)`, or a map
+    /// {a}←{a''} from a frame to a copy of itself moved more than once
+    /// (`exp([S_a] t1) * exp([S_a] t2)`), printed alike.
+    pub fn displacement_frame(&self) -> Option<&Frame> {
+        match self {
+            Frames::Disp(a) => Some(a),
+            Frames::Pair(a, b) if a.name == b.name && b.moved > a.moved => Some(a),
+            _ => None,
+        }
+    }
     /// The frames as the JSON list: `[]`, `["a"]`, `["a","b"]`.
     pub fn to_list(&self) -> Vec<String> {
+        if let Some(a) = self.displacement_frame() {
+            return vec![a.to_string()];
+        }
         match self {
             Frames::None => vec![],
             Frames::One(a) | Frames::Disp(a) => vec![a.to_string()],
@@ -328,6 +341,9 @@ impl Frames {
 impl fmt::Display for Frames {
     /// `{a}`, `{a}←{b}`, `displacement in {a}`; empty when untagged.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if let Some(a) = self.displacement_frame() {
+            return write!(f, "displacement in {{{a}}}");
+        }
         match self {
             Frames::None => Ok(()),
             Frames::One(a) => write!(f, "{{{a}}}"),
