@@ -65,13 +65,16 @@ fn operator(untagged: bool) -> impl Strategy<Value = Ty> {
     let one = frame().prop_map(|a| Ty::new(Kind::Se3, Frames::One(a)));
     let transposed = (frame(), frame())
         .prop_map(|(a, b)| Ty::new(Kind::Matrix(Some(4), Some(4)), Frames::Transposed(a, b)));
-    let plain = Just(Ty::new(Kind::SE3, Frames::None));
+    let plain = prop_oneof![
+        Just(Ty::new(Kind::SE3, Frames::None)),
+        Just(Ty::new(Kind::Se3, Frames::None)),
+    ];
     prop_oneof![
         6 => pair,
         3 => disp,
         2 => one,
         1 => transposed,
-        (if untagged { 1 } else { 0 }) => plain,
+        (if untagged { 2 } else { 0 }) => plain,
     ]
 }
 
@@ -222,5 +225,89 @@ fn the_books_products_in_every_bracketing() {
     ] {
         let outs = all_bracketings(&factors);
         assert_eq!(outs, vec![Ok(Ty::new(Kind::SE3, want))], "{factors:?}");
+    }
+}
+
+// The same property through the interpreter: scripts with numbers (run) and
+// with symbols only (check) give every bracketing the same type and frames.
+
+use chasles::eval::env::Mode;
+use chasles::session::{Session, Settings};
+
+const PRELUDE_RUN: &str = "T_ab = RpToTrans(Rotz(0.3), (1, 2, 0))\nT_bc = RpToTrans(Rotx(0.2), (0, 1, 0))\n\
+T_ca = inv(T_ab * T_bc)\nS_a = (0, 0, 1, 0, 1, 0)\nB_b = (1, 0, 0, 0, 0, 1)\nV_b = (0, 0, 1, 1, 0, 0)\n\
+T_ab' = exp([S_a] 0.4) * T_ab\np_b = (1, 2, 3)\n";
+const PRELUDE_CHECK: &str = "given T_ab, T_bc, T_ca, T_ab' : SE3\ngiven S_a, B_b : screw\n\
+given V_b : twist\ngiven p_b : vec3\n";
+
+/// Every bracketing of `factors` joined by `*`, as source text.
+fn bracketings(factors: &[&str]) -> Vec<String> {
+    if factors.len() == 1 {
+        return vec![factors[0].to_string()];
+    }
+    let mut out = Vec::new();
+    for k in 1..factors.len() {
+        for l in bracketings(&factors[..k]) {
+            for r in bracketings(&factors[k..]) {
+                out.push(format!("({l}) * ({r})"));
+            }
+        }
+    }
+    out
+}
+
+/// The type and frames of each JSON line, or the error's kind.
+fn outcomes(prelude: &str, lines: &[String], mode: Mode) -> Vec<String> {
+    let mut s = Session::new(Settings {
+        json: true,
+        ..Settings::default()
+    });
+    let src = format!("{prelude}{}\n", lines.join("\n"));
+    let (out, _, _) = s.run_to_strings("t.chs", &src, mode, true);
+    out.lines()
+        .map(|l| serde_json::from_str::<serde_json::Value>(l).unwrap())
+        .filter(|v| v["line"].as_u64().unwrap_or(0) as usize > prelude.lines().count())
+        .map(|v| match v.get("error") {
+            Some(e) => format!("error {}", e["kind"]),
+            None => format!("{} {}", v["type"], v["frames"]),
+        })
+        .collect()
+}
+
+fn script_factor() -> impl Strategy<Value = &'static str> {
+    prop::sample::select(vec![
+        "T_ab",
+        "T_bc",
+        "T_ca",
+        "inv(T_ab)",
+        "inv(T_bc)",
+        "exp([S_a] 0.3)",
+        "exp([B_b] 0.2)",
+        "T_ab'",
+        "inv(T_ab')",
+        "[V_b]",
+        "T_ab.T",
+    ])
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    #[test]
+    fn scripts_give_every_bracketing_the_same_frames(
+        mut factors in prop::collection::vec(script_factor(), 2..5),
+        point in prop::sample::select(vec!["", "p_b", "(1, 2, 3)"]),
+    ) {
+        if !point.is_empty() {
+            factors.push(point);
+        }
+        let lines = bracketings(&factors);
+        for (prelude, mode) in [(PRELUDE_RUN, Mode::Run), (PRELUDE_CHECK, Mode::Check)] {
+            let outs = outcomes(prelude, &lines, mode);
+            prop_assert_eq!(outs.len(), lines.len());
+            for o in &outs {
+                prop_assert_eq!(o, &outs[0], "{:?} in {:?}: {:?}", factors, mode, outs);
+            }
+        }
     }
 }

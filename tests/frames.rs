@@ -237,6 +237,10 @@ fn conjugation_closes_on_one_frame() {
     assert_eq!(run_type("T_ab * [V_b] * inv(T_ab)"), "se3");
     assert_eq!(run_type("se3ToVec(T_ab * [V_b] * inv(T_ab))"), "twist");
     assert_eq!(run_type("R_ab * [w_b] * R_ab.T"), "so3");
+    // An untagged [ω] is in the frame it meets.
+    frames("R_ab * [(0, 0, 1)] * R_ab.T", &["a"]);
+    // A vector of a map between two frames is refused (a twist is in one).
+    frame_error("se3ToVec(T_ab * [V_b])", "a quantity in one frame");
     // Conjugating the wrong frame's quantity is refused.
     frame_error("T_ab * [V_a] * inv(T_ab)", "frames do not cancel");
 }

@@ -16,6 +16,7 @@
 //! | displacement `exp([S_a] θ)`             | {a} ← {a'}                   |
 //! | column vector `v_a` / row `v_aᵀ`        | {a} ← line / line ← {a}      |
 //! | untagged operator                       | a displacement of the frame it meets |
+//! | untagged so(3)/se(3) matrix `[ω]`       | a quantity in the frame it meets |
 //! | untagged vector or row                  | line ← any / any ← line      |
 //! | transposed transform `T_abᵀ`            | none: an error in a product  |
 //!
@@ -92,6 +93,9 @@ pub enum Factor {
     Map(Arrow),
     /// An untagged operator: a displacement of whichever frame it meets.
     Untagged,
+    /// An untagged so(3)/se(3) matrix: a quantity in whichever frame it
+    /// meets (`R_ab [ω] R_abᵀ` is [ω_a] for ω in {b}).
+    Wildcard,
     /// The transpose of a transform {a}←{b}: no map between frames.
     Transposed(Frame, Frame),
 }
@@ -105,6 +109,8 @@ pub enum Shape {
     Row,
     /// A square (or other) matrix acting by `*`.
     Operator,
+    /// A Lie-algebra matrix [ω], [V]: a one-frame quantity acting by `*`.
+    Quantity,
 }
 
 impl Shape {
@@ -114,6 +120,8 @@ impl Shape {
             Shape::Column
         } else if matches!(kind, Kind::Matrix(Some(1), _)) {
             Shape::Row
+        } else if kind.is_algebra() {
+            Shape::Quantity
         } else {
             Shape::Operator
         }
@@ -139,14 +147,17 @@ pub fn factor(frames: &Frames, shape: Shape) -> Factor {
         (Frames::None, Shape::Column) => map(Any, Line),
         (Frames::None, Shape::Row) => map(Line, Any),
         (Frames::None, Shape::Operator) => Factor::Untagged,
+        (Frames::None, Shape::Quantity) => Factor::Wildcard,
         (Frames::One(a) | Frames::Pair(a, _) | Frames::Disp(a), Shape::Column) => {
             map(At(a.clone()), Line)
         }
         (Frames::One(a) | Frames::Disp(a), Shape::Row) => map(Line, At(a.clone())),
         (Frames::Pair(_, b), Shape::Row) => map(Line, At(b.clone())),
-        (Frames::One(a), Shape::Operator) => map(At(a.clone()), At(a.clone())),
-        (Frames::Pair(a, b), Shape::Operator) => map(At(a.clone()), At(b.clone())),
-        (Frames::Disp(a), Shape::Operator) => map(At(a.clone()), At(a.moved())),
+        (Frames::One(a), Shape::Operator | Shape::Quantity) => map(At(a.clone()), At(a.clone())),
+        (Frames::Pair(a, b), Shape::Operator | Shape::Quantity) => {
+            map(At(a.clone()), At(b.clone()))
+        }
+        (Frames::Disp(a), Shape::Operator | Shape::Quantity) => map(At(a.clone()), At(a.moved())),
     }
 }
 
@@ -156,6 +167,7 @@ pub fn compose(l: &Factor, r: &Factor) -> Result<Factor, Clash> {
     match (l, r) {
         (Transposed(..), _) => Err(Clash::Transposed { left: true }),
         (_, Transposed(..)) => Err(Clash::Transposed { left: false }),
+        (Wildcard, x) | (x, Wildcard) => Ok(x.clone()),
         (Untagged, Untagged) => Ok(Untagged),
         // An untagged operator displaces the frame it meets: on the left of
         // {a'}←{b} it is the step {a}←{a'} (the fewest displacements that
@@ -202,7 +214,7 @@ fn group_like(kind: &Kind) -> bool {
 /// The tag of a result of `kind` that is the factor `f`.
 pub fn to_frames(f: &Factor, kind: &Kind) -> Frames {
     let arrow = match f {
-        Factor::Untagged => return Frames::None,
+        Factor::Untagged | Factor::Wildcard => return Frames::None,
         Factor::Transposed(a, b) => return Frames::Transposed(a.clone(), b.clone()),
         Factor::Map(a) => a,
     };

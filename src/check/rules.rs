@@ -296,6 +296,31 @@ pub fn member(t: &Ty, name: &str) -> Result<Ty, RuleError> {
     }
 }
 
+/// The tag a result of a builtin `name` may carry for its kind (§6): a
+/// scalar none, a vector or so(3)/se(3) matrix one frame — the map {a}←{a}
+/// is the quantity in {a}; a vector of a map between two frames
+/// (`se3ToVec(T_ab * [V_b])`) is a frame error.
+pub fn settle(t: &Ty, name: &str) -> Result<Ty, RuleError> {
+    let one = t.kind.is_vector() || t.kind.is_algebra();
+    let frames = match &t.frames {
+        _ if t.kind == Kind::Scalar => Frames::None,
+        Frames::Pair(a, b) if one && a == b => Frames::One(a.clone()),
+        Frames::Pair(a, b) if one => {
+            let mut e = RuleError::frame(format!(
+                "{name} gives {}, a quantity in one frame, but its argument maps {{{b}}} to {{{a}}}",
+                t.kind.a()
+            ));
+            e.lhs = describe(&t.frames);
+            e.help = Some(format!(
+                "a twist [V_{a}] in {{{a}}} is T [V_{b}] T⁻¹ (3.77), not T [V_{b}]; a transform's own coordinates are log(T_{a}{b}) (in {{{a}}})"
+            ));
+            return Err(e);
+        }
+        f => f.clone(),
+    };
+    Ok(Ty::new(t.kind.clone(), frames))
+}
+
 /// `cross(u, v)`, `dot(u, v)`: frames must agree.
 pub fn vector_pair(what: &str, l: &Ty, r: &Ty) -> Result<Frames, RuleError> {
     same_frames(what, l, r)

@@ -56,8 +56,10 @@ pub fn mul(l: &Value, r: &Value, kind: &Kind) -> Result<Value, String> {
     }
     // A point transformed by a homogeneous transform: T p = R p + t.
     if lm.shape() == (4, 4) && rm.shape() == (3, 1) {
-        let homogeneous = (0..4).all(|j| (lm[(3, j)] - f64::from(j == 3)).abs() <= 1e-9);
-        if !homogeneous {
+        // A transform moves the point (T x = R x + p, (3.65)); an se(3)
+        // matrix gives its velocity ([V] x = [ω] x + v, last row zero).
+        let last = |w: f64| (0..4).all(|j| (lm[(3, j)] - w * f64::from(j == 3)).abs() <= 1e-9);
+        if !last(1.0) && !last(0.0) {
             return Err(
                 "a 4×4 matrix moves a point, T x = R x + p (3.65), only when its last row is (0, 0, 0, 1); \
                  this one is not a transform (the transpose of a transform is not its inverse: use inv)"

@@ -74,6 +74,17 @@ fn row_untagged_operator_displaces_what_it_meets() {
 }
 
 #[test]
+fn row_untagged_lie_algebra_matrix_is_in_the_frame_it_meets() {
+    assert_eq!(factor(&Frames::None, Shape::of(&SE3M)), Factor::Wildcard);
+    let left = mul((&pair("a", "b"), &SE3), (&Frames::None, &SE3M), &M4).unwrap();
+    assert_eq!(left, pair("a", "b"));
+    assert_eq!(
+        mul((&left, &M4), (&pair("b", "a"), &SE3), &M4),
+        Ok(one("a"))
+    );
+}
+
+#[test]
 fn row_untagged_vector_matches_any_frame() {
     assert_eq!(
         mul((&pair("a", "b"), &SE3), (&Frames::None, &V3), &V3),
