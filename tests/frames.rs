@@ -237,6 +237,12 @@ fn conjugation_closes_on_one_frame() {
     assert_eq!(run_type("T_ab * [V_b] * inv(T_ab)"), "se3");
     assert_eq!(run_type("se3ToVec(T_ab * [V_b] * inv(T_ab))"), "twist");
     assert_eq!(run_type("R_ab * [w_b] * R_ab.T"), "so3");
+    // Conjugating by a displacement keeps the frame too.
+    frames("exp([S_a] 0.3) * [V_a] * inv(exp([S_a] 0.3))", &["a"]);
+    assert_eq!(
+        run_type("se3ToVec(exp([S_a] 0.3) * [V_a] * exp(-[S_a] 0.3))"),
+        "twist"
+    );
     // An untagged [ω] is in the frame it meets.
     frames("R_ab * [(0, 0, 1)] * R_ab.T", &["a"]);
     // A vector of a map between two frames is refused (a twist is in one).

@@ -297,28 +297,43 @@ pub fn member(t: &Ty, name: &str) -> Result<Ty, RuleError> {
 }
 
 /// The tag a result of a builtin `name` may carry for its kind (§6): a
-/// scalar none, a vector or so(3)/se(3) matrix one frame — the map {a}←{a}
-/// is the quantity in {a}; a vector of a map between two frames
-/// (`se3ToVec(T_ab * [V_b])`) is a frame error.
+/// scalar none, a vector or so(3)/se(3) matrix one frame ([`settled`]); a
+/// vector of a map between two frames (`se3ToVec(T_ab * [V_b])`) is a frame
+/// error.
 pub fn settle(t: &Ty, name: &str) -> Result<Ty, RuleError> {
-    let one = t.kind.is_vector() || t.kind.is_algebra();
-    let frames = match &t.frames {
+    let settled = settled(t);
+    if let (true, Frames::Pair(a, b)) = (one_frame_kind(&t.kind), &settled.frames) {
+        let mut e = RuleError::frame(format!(
+            "{name} gives {}, a quantity in one frame, but its argument maps {{{b}}} to {{{a}}}",
+            t.kind.a()
+        ));
+        e.lhs = describe(&t.frames);
+        e.help = Some(format!(
+            "a twist [V_{a}] in {{{a}}} is T [V_{b}] T⁻¹ (3.77), not T [V_{b}]; a transform's own coordinates are log(T_{a}{b}) (in {{{a}}})"
+        ));
+        return Err(e);
+    }
+    Ok(settled)
+}
+
+fn one_frame_kind(k: &Kind) -> bool {
+    k.is_vector() || k.is_algebra()
+}
+
+/// A value's tag made consistent with its kind, as it is printed or bound:
+/// a scalar has no frames; a vector or so(3)/se(3) matrix tagged with a
+/// frame and a moved copy of it (`exp([S_a] θ) [V_a] exp(−[S_a] θ)`, whose
+/// two displacements chasles cannot tell apart) is a quantity in that frame.
+pub fn settled(t: &Ty) -> Ty {
+    let frames = match t.frames.displacement_frame() {
         _ if t.kind == Kind::Scalar => Frames::None,
-        Frames::Pair(a, b) if one && a == b => Frames::One(a.clone()),
-        Frames::Pair(a, b) if one => {
-            let mut e = RuleError::frame(format!(
-                "{name} gives {}, a quantity in one frame, but its argument maps {{{b}}} to {{{a}}}",
-                t.kind.a()
-            ));
-            e.lhs = describe(&t.frames);
-            e.help = Some(format!(
-                "a twist [V_{a}] in {{{a}}} is T [V_{b}] T⁻¹ (3.77), not T [V_{b}]; a transform's own coordinates are log(T_{a}{b}) (in {{{a}}})"
-            ));
-            return Err(e);
-        }
-        f => f.clone(),
+        Some(a) if one_frame_kind(&t.kind) => Frames::One(a.clone()),
+        _ => match &t.frames {
+            Frames::Pair(a, b) if one_frame_kind(&t.kind) && a == b => Frames::One(a.clone()),
+            f => f.clone(),
+        },
     };
-    Ok(Ty::new(t.kind.clone(), frames))
+    Ty::new(t.kind.clone(), frames)
 }
 
 /// `cross(u, v)`, `dot(u, v)`: frames must agree.

@@ -132,14 +132,16 @@ impl<'a> Interp<'a> {
         };
         match &s.kind {
             StmtKind::Expr(e) => {
-                let t = self.expr(e)?;
+                let mut t = self.expr(e)?;
+                t.ty = crate::check::rules::settled(&t.ty);
                 if t.ty.kind != Kind::Function {
                     self.bind_value("ans", &t);
                 }
                 Ok(out(vec![], t))
             }
             StmtKind::Assign { target, value } => {
-                let t = self.expr(value)?;
+                let mut t = self.expr(value)?;
+                t.ty = crate::check::rules::settled(&t.ty);
                 let t = self.bind_checked(&target.name, t, target.span, value.span)?;
                 self.bind_value(&target.name, &t);
                 Ok(out(vec![target.name.clone()], t))
