@@ -66,9 +66,10 @@ fn transposed_factor(l: &Ty, r: &Ty, left: bool, ops: Operands) -> RuleError {
         .unwrap_or(text)
         .trim();
     let (name, frames) = match &t.frames {
-        Frames::Transposed(b, a) => (
-            result_name_of(base, a, b),
-            format!("{{{b}}}←{{{a}}} is not the map {{{a}}}←{{{b}}}"),
+        // The transpose of {outer}←{inner}; its inverse is {inner}←{outer}.
+        Frames::Transposed(outer, inner) => (
+            result_name_of(base, inner, outer),
+            format!("{{{outer}}}←{{{inner}}} is not the map {{{inner}}}←{{{outer}}}"),
         ),
         _ => (String::new(), String::new()),
     };
@@ -120,7 +121,7 @@ fn mul_kind(l: &Kind, r: &Kind, ops: Operands) -> Result<Kind, RuleError> {
                 _ if dims_agree(n, Some(6)) => Ok(Wrench),
                 _ => Err(shape_error(l, r)),
             },
-            // T p with a 3-vector p: the point transformed (homogeneous, (3.59)).
+            // T p with a 3-vector p: the point transformed (homogeneous, (3.65)).
             SE3 | Se3 | Matrix(Some(4), Some(4)) if n == Some(3) => Ok(Vector(Some(3))),
             SE3 | Se3 if dims_agree(n, Some(4)) => Ok(Vector(Some(4))),
             Matrix(None, _) | Matrix(_, None) => Ok(Vector(None)),
