@@ -156,12 +156,13 @@ proptest! {
     fn conjugation_closes_on_one_frame(a in frame(), b in frame(), rotation in prop::bool::ANY) {
         let (group, algebra) = if rotation { (Kind::SO3, Kind::So3) } else { (Kind::SE3, Kind::Se3) };
         let x = Ty::new(group, Frames::Pair(a.clone(), b.clone()));
-        let q = Ty::new(algebra, Frames::One(b.clone()));
+        let q = Ty::new(algebra.clone(), Frames::One(b.clone()));
         let inv = if rotation { rules::transpose(&x) } else { rules::inverse(&x) }.unwrap();
         let outs = all_bracketings(&[x, q, inv]);
         prop_assert_eq!(outs.len(), 1);
         let t = outs[0].clone().unwrap();
         prop_assert_eq!(t.frames, Frames::One(a));
+        prop_assert_eq!(t.kind, algebra);
     }
 
     /// X^n has the frames of X·X·…·X (or the same kind of error).

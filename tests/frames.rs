@@ -235,6 +235,13 @@ fn conjugation_closes_on_one_frame() {
     frames("se3ToVec(T_ab * [V_b] * inv(T_ab))", &["a"]);
     frames("R_ab * [w_b] * R_ab.T", &["a"]);
     assert_eq!(run_type("T_ab * [V_b] * inv(T_ab)"), "se3");
+    // Also with symbols only: g [X] g⁻¹ is back in the Lie algebra.
+    for r in both("X = T_ab * [V_b]\nX * inv(T_ab)") {
+        assert_eq!(r, Ok((vec!["a".to_string()], "se3".to_string())));
+    }
+    for r in both("R_ab * [w_b] * R_ab.T") {
+        assert_eq!(r, Ok((vec!["a".to_string()], "so3".to_string())));
+    }
     assert_eq!(run_type("se3ToVec(T_ab * [V_b] * inv(T_ab))"), "twist");
     assert_eq!(run_type("R_ab * [w_b] * R_ab.T"), "so3");
     // Conjugating by a displacement keeps the frame too.

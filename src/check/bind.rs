@@ -127,10 +127,9 @@ pub fn bind(name: &str, ty: &Ty) -> Result<Bound, RuleError> {
         (Frames::One(x), Frames::One(a) | Frames::Disp(a)) if x == a => ty.frames.clone(),
         _ => return Err(mismatch(name, &claim, &ty.frames)),
     };
-    Ok(Bound {
-        ty: Ty::new(kind, frames),
-        warning,
-    })
+    let mut bound = Ty::new(kind, frames);
+    bound.algebra = ty.algebra.clone();
+    Ok(Bound { ty: bound, warning })
 }
 
 fn mismatch(name: &str, claim: &Frames, frames: &Frames) -> RuleError {

@@ -20,10 +20,10 @@ pub(super) fn dims_agree(a: Option<usize>, b: Option<usize>) -> bool {
 pub fn mul(l: &Ty, r: &Ty, ops: Operands) -> Result<Ty, RuleError> {
     // Scalars scale anything and leave frames alone.
     if l.kind == Kind::Scalar {
-        return Ok(Ty::new(r.kind.scaled(), r.frames.clone()));
+        return Ok(r.scaled());
     }
     if r.kind == Kind::Scalar {
-        return Ok(Ty::new(l.kind.scaled(), l.frames.clone()));
+        return Ok(l.scaled());
     }
     if l.kind == (Kind::Adjoint { transposed: false }) && r.kind == Kind::Wrench {
         return Err(wrench_through_ad(l, r, ops));
@@ -48,7 +48,60 @@ pub fn mul(l: &Ty, r: &Ty, ops: Operands) -> Result<Ty, RuleError> {
         }
         Err(Clash::Transposed { left }) => return Err(transposed_factor(l, r, left, ops)),
     };
-    Ok(Ty::new(kind, frames))
+    Ok(conjugation(l, r, Ty::new(kind, frames)))
+}
+
+/// What a factor contributes to a product of group elements and one
+/// element of their Lie algebra.
+#[derive(Debug, Clone, PartialEq)]
+enum Content {
+    Group(Kind),
+    Algebra(Kind),
+    Other,
+}
+
+fn content(t: &Ty) -> Content {
+    match (&t.kind, &t.algebra) {
+        (k, _) if k.is_group() => Content::Group(k.clone()),
+        (k, _) if k.is_algebra() => Content::Algebra(k.clone()),
+        (Kind::Matrix(..), Some(a)) => Content::Algebra(a.clone()),
+        _ => Content::Other,
+    }
+}
+
+/// The group whose Lie algebra `alg` is.
+fn group_of(alg: &Kind) -> Option<Kind> {
+    Some(match alg {
+        Kind::So3 => Kind::SO3,
+        Kind::Se3 => Kind::SE3,
+        Kind::So2 => Kind::SO2,
+        Kind::Se2 => Kind::SE2,
+        _ => return None,
+    })
+}
+
+/// g·X, X·g and g·X·g⁻¹ (associative: the content of a product is the one
+/// algebra element among group elements of its group). A product that is
+/// g·X with frames closed on one frame is back in the algebra (3.77): its
+/// kind is the algebra's; otherwise a plain matrix that remembers it.
+fn conjugation(l: &Ty, r: &Ty, mut out: Ty) -> Ty {
+    if !matches!(out.kind, Kind::Matrix(..)) {
+        return out;
+    }
+    let alg = match (content(l), content(r)) {
+        (Content::Group(g), Content::Algebra(a)) | (Content::Algebra(a), Content::Group(g))
+            if group_of(&a).as_ref() == Some(&g) =>
+        {
+            a
+        }
+        _ => return out,
+    };
+    if matches!(out.frames, Frames::One(_)) {
+        out.kind = alg;
+    } else {
+        out.algebra = Some(alg);
+    }
+    out
 }
 
 /// `T_ab.T` used as a factor: the transpose of a transform is not its
@@ -331,5 +384,40 @@ fn displacement_hint(ops: Operands) -> String {
         )
     } else {
         String::new()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn t(kind: Kind, frames: Frames) -> Ty {
+        Ty::new(kind, frames)
+    }
+
+    #[test]
+    fn conjugation_is_back_in_the_lie_algebra_under_both_bracketings() {
+        let g = t(Kind::SE3, Frames::pair("a", "b"));
+        let x = t(Kind::Se3, Frames::one("b"));
+        let gi = t(Kind::SE3, Frames::pair("b", "a"));
+        let ops = Operands::default();
+        let left = mul(&mul(&g, &x, ops).unwrap(), &gi, ops).unwrap();
+        let right = mul(&g, &mul(&x, &gi, ops).unwrap(), ops).unwrap();
+        assert_eq!(left, t(Kind::Se3, Frames::one("a")));
+        assert_eq!(left, right);
+        // g·X alone is a plain matrix that remembers its algebra.
+        let gx = mul(&g, &x, ops).unwrap();
+        assert_eq!(gx.kind, Kind::Matrix(Some(4), Some(4)));
+        assert_eq!(gx.algebra, Some(Kind::Se3));
+        // X·X is no longer anything of the algebra.
+        let xx = mul(&x, &x, ops).unwrap();
+        assert_eq!(
+            mul(&mul(&g, &xx, ops).unwrap(), &gi, ops).unwrap().kind,
+            xx.kind
+        );
+        // A rotation does not conjugate se(3), nor SE(2) so(3).
+        let se2 = t(Kind::SE2, Frames::pair("a", "b"));
+        let w = t(Kind::So3, Frames::one("b"));
+        assert_eq!(mul(&se2, &w, ops).unwrap().algebra, None);
     }
 }

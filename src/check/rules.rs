@@ -97,7 +97,7 @@ pub fn neg(t: &Ty) -> Result<Ty, RuleError> {
         Kind::Mechanism | Kind::Tuple(_) | Kind::Bool | Kind::Function => {
             Err(RuleError::typ(format!("cannot negate {}", t.kind.a())))
         }
-        _ => Ok(Ty::new(scaled_kind(&t.kind), t.frames.clone())),
+        _ => Ok(t.scaled()),
     }
 }
 
@@ -110,7 +110,7 @@ pub fn div(l: &Ty, r: &Ty) -> Result<Ty, RuleError> {
     if !r.frames.is_none() {
         return Err(RuleError::frame("cannot divide by a framed quantity"));
     }
-    neg(l).map(|_| Ty::new(scaled_kind(&l.kind), l.frames.clone()))
+    neg(l)
 }
 
 /// `inv(X_ab)` = X_ba.
@@ -333,7 +333,10 @@ pub fn settled(t: &Ty) -> Ty {
             f => f.clone(),
         },
     };
-    Ty::new(t.kind.clone(), frames)
+    Ty {
+        frames,
+        ..t.clone()
+    }
 }
 
 /// `cross(u, v)`, `dot(u, v)`: frames must agree.

@@ -359,21 +359,36 @@ impl fmt::Display for Frames {
 pub struct Ty {
     pub kind: Kind,
     pub frames: Frames,
+    /// For a plain matrix that is a group element times an element of its
+    /// Lie algebra, g·X or X·g (`T_sb [V_b]` = Ṫ_sb, (3.75)), the algebra:
+    /// conjugation g·X·g⁻¹ lands back in it when the frames close on one
+    /// ([V_s] = T [V_b] T⁻¹, (3.77); Prop. 3.5). Known without numbers only.
+    pub algebra: Option<Kind>,
 }
 
 impl Ty {
     pub fn new(kind: Kind, frames: Frames) -> Ty {
-        Ty { kind, frames }
+        Ty {
+            kind,
+            frames,
+            algebra: None,
+        }
     }
     /// An untagged value of `kind`.
     pub fn plain(kind: Kind) -> Ty {
-        Ty {
-            kind,
-            frames: Frames::None,
-        }
+        Ty::new(kind, Frames::None)
     }
     pub fn scalar() -> Ty {
         Ty::plain(Kind::Scalar)
+    }
+    /// The type of a multiple `c x` or `-x` ([`Kind::scaled`]): the same
+    /// frames, and a g·X stays one.
+    pub fn scaled(&self) -> Ty {
+        Ty {
+            kind: self.kind.scaled(),
+            frames: self.frames.clone(),
+            algebra: self.algebra.clone(),
+        }
     }
 }
 
