@@ -306,7 +306,7 @@ fn products_with_moved_frames_are_associative() {
 fn a_transposed_transform_is_not_a_transform() {
     frame_error(
         "T_ab.T * p_a",
-        "T_ab.T is not a transform: the transpose is the inverse only for rotations",
+        "T_ab.T is the transpose of a transform, not a transform: the transpose is the inverse only for rotations",
     );
     frame_error(
         "transpose(T_ab) * T_ab",

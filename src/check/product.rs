@@ -127,13 +127,19 @@ fn transposed_factor(l: &Ty, r: &Ty, left: bool, ops: Operands) -> RuleError {
         _ => (String::new(), String::new()),
     };
     let mut e = RuleError::frame(format!(
-        "{text} is not a transform: the transpose is the inverse only for rotations"
+        "{text} is the transpose of a transform, not a transform: the transpose is the inverse only for rotations"
     ));
     e.lhs = describe(&l.frames);
     e.rhs = describe(&r.frames);
+    // The fix names the inverse of what was transposed, when the operand
+    // is written as a transpose (`T_ab.T`, `T_ab^T`, `transpose(T_ab)`).
+    let fix = if base == text {
+        "inv(T) for the inverse of a transform T".to_string()
+    } else {
+        format!("{}{name}", inverse_text(base))
+    };
     e.help = Some(format!(
-        "R⁻¹ = Rᵀ for a rotation (Prop. 3.1), but T⁻¹ = [Rᵀ, −Rᵀp; 0, 1] (Prop. 3.10): write {}{name}; the transpose of {frames}",
-        inverse_text(base),
+        "R⁻¹ = Rᵀ for a rotation (Prop. 3.1), but T⁻¹ = [Rᵀ, −Rᵀp; 0, 1] (Prop. 3.10): write {fix}; the transpose of {frames}"
     ));
     e
 }
