@@ -51,10 +51,7 @@ fn all_bracketings(factors: &[Ty]) -> Vec<Outcome> {
 }
 
 fn frame() -> impl Strategy<Value = Frame> {
-    (prop::sample::select(vec!["a", "b", "c"]), 0u32..3).prop_map(|(n, k)| Frame {
-        name: n.to_string(),
-        moved: k,
-    })
+    (prop::sample::select(vec!["a", "b", "c"]), 0u32..3).prop_map(|(n, k)| Frame::at(n, k))
 }
 
 /// A 4×4 factor: a transform (maybe between moved frames), a displacement,
@@ -180,7 +177,7 @@ proptest! {
     #[test]
     fn conjugation_in_the_wrong_frame_is_refused(a in frame(), b in frame(), k in 0u32..3) {
         // A frame with another name than {b}.
-        let c = Frame { name: format!("{}x", b.name), moved: k };
+        let c = Frame::at(format!("{}x", b.name), k);
         let x = Ty::new(Kind::SE3, Frames::Pair(a, b));
         let q = Ty::new(Kind::Se3, Frames::One(c));
         let inv = rules::inverse(&x).unwrap();

@@ -279,7 +279,7 @@ fn products_with_moved_frames_are_associative() {
         (
             "T_ab * exp([B_b] 0.3) * exp([B_b] 0.2)",
             "T_ab * (exp([B_b] 0.3) * exp([B_b] 0.2))",
-            vec!["a", "b''"],
+            vec!["a", "b'"],
         ),
     ] {
         frames(a, &want);
@@ -293,9 +293,15 @@ fn products_with_moved_frames_are_associative() {
         "T_ab' = exp([S_a] 0.3) * T_ab\nT_ac = T_ab * T_bc\nT_b'c = inv(T_ab') * T_ac\nT_ab' * T_b'c",
         &["a", "c"],
     );
-    // Powers are products: exp([S_a] θ)² moves {a} twice, as the product does.
-    frames("exp([S_a] 0.3)^2 * T_ab", &["a", "b''"]);
-    frames("exp([S_a] 0.3) * exp([S_a] 0.3) * T_ab", &["a", "b''"]);
+    // Powers are products: exp([S_a] θ)² moves {b} twice, as the product
+    // does ({b} moved, printed {b'}; a name's primes are kept as written).
+    frames("exp([S_a] 0.3)^2 * T_ab", &["a", "b'"]);
+    frames("exp([S_a] 0.3) * exp([S_a] 0.3) * T_ab", &["a", "b'"]);
+    frames("T_ab'' = T_ab * exp([B_b] 0.3)\nT_ab''", &["a", "b''"]);
+    frames(
+        "T_ab'' = T_ab * exp([B_b] 0.3)\nT_ab'' * exp([B_b] 0.3)",
+        &["a", "b'''"],
+    );
     frames(
         "T_ab' = exp([S_a] 0.3) * T_ab\nexp([S_a] 0.3) * T_ab * inv(T_ab')",
         &["a", "a"],

@@ -30,7 +30,8 @@
 //! | line ← {b} · {b} ← line (uᵀv)           | a plain scalar                |
 //! | `Tᵀ` · anything, anything · `Tᵀ`         | frame error naming `inv(T)`   |
 //!
-//! A moved frame counts its displacements ({b''} is {b} moved twice). When
+//! A moved frame counts its displacements ({b} moved twice is printed {b'},
+//! like a frame moved once, but the algebra tells them apart). When
 //! the inner ends name the same frame moved a different number of times, the
 //! less-moved factor is moved to match: frames rigidly attached to a moved
 //! frame move with it (`T_ab' = T_ab`'s frames displaced, so `T_ab' T_bc` is
@@ -173,13 +174,7 @@ pub fn compose(l: &Factor, r: &Factor) -> Result<Factor, Clash> {
         // {a'}←{b} it is the step {a}←{a'} (the fewest displacements that
         // make the frames meet), on the left of {a}←{b} it moves {b}.
         (Untagged, Map(a)) => Ok(Map(match &a.out {
-            End::At(f) if f.moved > 0 => Arrow::new(
-                End::At(Frame {
-                    name: f.name.clone(),
-                    moved: f.moved - 1,
-                }),
-                a.inn.clone(),
-            ),
+            End::At(f) if f.moved > 0 => Arrow::new(End::At(f.lowered()), a.inn.clone()),
             _ => Arrow::new(a.out.clone(), a.inn.lifted(1)),
         })),
         (Map(a), Untagged) => Ok(Map(Arrow::new(a.out.clone(), a.inn.lifted(1)))),
@@ -195,7 +190,15 @@ fn compose_maps(x: &Arrow, y: &Arrow) -> Result<Arrow, Clash> {
             }
             // The less-moved side moves with the other (rigid attachment).
             if b.moved >= c.moved {
-                Ok(Arrow::new(x.out.clone(), y.lifted(b.moved - c.moved).inn))
+                let inn = match y.lifted(b.moved - c.moved).inn {
+                    // {b''} of `T_ab''` moved once more prints {b'''}.
+                    End::At(f) if f.name == b.name && f.written.is_none() => End::At(Frame {
+                        written: b.written.clone(),
+                        ..f
+                    }),
+                    inn => inn,
+                };
+                Ok(Arrow::new(x.out.clone(), inn))
             } else {
                 Ok(Arrow::new(x.lifted(c.moved - b.moved).out, y.inn.clone()))
             }
@@ -274,12 +277,7 @@ pub fn power(frames: &Frames, n: Option<i64>, kind: &Kind) -> Result<Frames, Cla
     } else {
         (grow(b.moved, a.moved - b.moved), b.moved)
     };
-    let at = |k| {
-        End::At(Frame {
-            name: a.name.clone(),
-            moved: k,
-        })
-    };
+    let at = |k| End::At(Frame::at(a.name.clone(), k));
     Ok(to_frames(&Factor::Map(Arrow::new(at(out), at(inn))), kind))
 }
 

@@ -204,16 +204,36 @@ impl fmt::Display for Kind {
 }
 
 /// One reference frame: a name and how many displacements have moved it
-/// (LANGUAGE.md §6). `exp([S_s] θ) * T_sb` is {s}←{b'}: {b} moved once,
-/// printed with one prime; a name's primes count the same way (`T_sb''`
-/// names {b} moved twice), so `T_sb'` and `exp([S_s] θ) * T_sb` carry the
-/// same frames. A binding may give a moved frame a new name.
-#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+/// (LANGUAGE.md §6). `exp([S_s] θ) * T_sb` is {s}←{b'}: {b} moved once. A
+/// name's primes count the same way, so `T_sb'` and `exp([S_s] θ) * T_sb`
+/// carry the same frames; a binding may give a moved frame a new name.
+///
+/// Printing: a frame is written as its name wrote it (`b''` of `T_sb''`),
+/// with one more prime once it has moved further; a frame no name wrote is
+/// printed with one prime however often it moved ({b'} is "{b} moved").
+#[derive(Debug, Clone, Eq)]
 pub struct Frame {
     /// The name without its primes.
     pub name: String,
     /// The number of displacements applied (primes).
     pub moved: u32,
+    /// The name's spelling (`b''`) when a name with primes wrote it.
+    pub written: Option<String>,
+}
+
+impl PartialEq for Frame {
+    /// Frames are equal when their names and moves are: `T_sb'` names the
+    /// frame that `exp([S_s] θ) * T_sb` moved.
+    fn eq(&self, other: &Frame) -> bool {
+        self.name == other.name && self.moved == other.moved
+    }
+}
+
+impl std::hash::Hash for Frame {
+    fn hash<H: std::hash::Hasher>(&self, state: &mut H) {
+        self.name.hash(state);
+        self.moved.hash(state);
+    }
 }
 
 impl Frame {
@@ -225,6 +245,15 @@ impl Frame {
         Frame {
             name: base.to_string(),
             moved,
+            written: (moved > 0).then(|| name.clone()),
+        }
+    }
+    /// {name} moved `moved` times.
+    pub fn at(name: impl Into<String>, moved: u32) -> Frame {
+        Frame {
+            name: name.into(),
+            moved,
+            written: None,
         }
     }
     /// The frame after one more displacement.
@@ -234,8 +263,15 @@ impl Frame {
     /// The frame after `k` more displacements.
     pub fn lifted(&self, k: u32) -> Frame {
         Frame {
-            name: self.name.clone(),
             moved: self.moved.saturating_add(k),
+            ..self.clone()
+        }
+    }
+    /// The frame one displacement earlier (`moved` must be positive).
+    pub fn lowered(&self) -> Frame {
+        Frame {
+            moved: self.moved.saturating_sub(1),
+            ..self.clone()
         }
     }
     /// True when this frame has been displaced (printed with a prime).
@@ -246,12 +282,18 @@ impl Frame {
 
 impl fmt::Display for Frame {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}", self.name)?;
-        for _ in 0..self.moved.min(8) {
-            write!(f, "'")?;
+        if let Some(w) = &self.written {
+            let at = (w.len() - w.trim_end_matches('\'').len()) as u32;
+            if self.moved == at {
+                return write!(f, "{w}");
+            }
+            if self.moved > at {
+                return write!(f, "{w}'");
+            }
         }
-        if self.moved > 8 {
-            write!(f, "^({})", self.moved)?;
+        write!(f, "{}", self.name)?;
+        if self.moved > 0 {
+            write!(f, "'")?;
         }
         Ok(())
     }
