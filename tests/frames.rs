@@ -380,6 +380,7 @@ fn naming_a_moved_frame_by_its_unmoved_letter_warns() {
     // The book's primes (T_sb', T_sb'') and another letter do not warn.
     for ok in [
         "T_ab' = exp([S_a] 0.3) * T_ab",
+        "T_ab' = exp([S_a] 0.3) * exp([S_a] 0.3) * T_ab",
         "T_ab'' = T_ab * exp([B_b] 0.3)",
         "T_ac = T_ab * T_bc",
     ] {

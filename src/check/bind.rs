@@ -113,7 +113,7 @@ pub fn bind(name: &str, ty: &Ty) -> Result<Bound, RuleError> {
         (Frames::None, f) => f.clone(),
         (c, Frames::None) => c.clone(),
         (Frames::Pair(x, y), Frames::Pair(a, b)) if x == a && (y == b || b.is_moved()) => {
-            if y != b && y.name == b.name && y.moved < b.moved {
+            if y.name == b.name && y.moved == 0 && b.moved > 0 {
                 warning = Some(renamed_moved_frame(name, &ty.frames, b, y));
             }
             claim.clone()
