@@ -349,6 +349,15 @@ impl Interp<'_> {
                 }
             }
         };
+        // A vector or Lie-algebra result is in one frame (§6).
+        let ty = match rules::settle(&ty, b.name) {
+            Ok(ty) => ty,
+            Err(err) => {
+                let at = args.first().map_or(span, |a| a.span);
+                self.rule_failure(err, span, Some(at), None, None)?;
+                strip(&ty)
+            }
+        };
         if !self.running() {
             return Ok(Typed { ty, val: None });
         }
