@@ -21,6 +21,7 @@
 
 pub mod ast;
 mod fast;
+mod grammar;
 pub mod ident;
 mod mech;
 mod parser;
@@ -100,7 +101,7 @@ fn parse_on_big_stack(chunk: &str, span: ast::Span) -> Result<ast::Stmt, Diagnos
             .ok()
             .and_then(|handle| handle.join().ok())
     })
-    .unwrap_or_else(|| Err(parser::too_deep(span)))
+    .unwrap_or_else(|| Err(rules::too_deep(span)))
 }
 
 /// True while a `(`, `[`, `{` or `mech <` is still open at the end of `src`

@@ -13,16 +13,12 @@ use std::sync::LazyLock;
 use pest::Parser as _;
 use pest::iterators::Pair;
 use pest::pratt_parser::{Assoc, Op, PrattParser};
-use pest_derive::Parser;
 
 use super::MAX_DEPTH;
 use super::ast::{BinOp, Expr, ExprKind, Ident, IndexArg, Span, Stmt, StmtKind, UnOp};
-use super::rules;
+use super::grammar::{ChaslesParser, Rule};
+use super::rules::{self, too_deep};
 use crate::diagnostics::{Diagnostic, ErrorKind};
-
-#[derive(Parser)]
-#[grammar = "grammar/chasles.pest"]
-pub(crate) struct ChaslesParser;
 
 /// Precedence levels, loosest first; the same order as [`PRATT`].
 const PREC_ADD: u8 = 1;
@@ -46,12 +42,17 @@ static PRATT: LazyLock<PrattParser<Rule>> = LazyLock::new(|| {
 pub(crate) fn parse_chunk(chunk: &str, span: Span) -> Result<Stmt, Diagnostic> {
     let cx = Cx {
         off: span.start,
-        text: chunk,
         above: Cell::new(0),
     };
     let mut pairs = match ChaslesParser::parse(Rule::statement, chunk) {
         Ok(pairs) => pairs,
-        Err(_) => return Err(rules::pest_error(parse_with_detail(chunk), &cx)),
+        Err(_) => {
+            return Err(rules::pest_error(
+                parse_with_detail(chunk),
+                chunk,
+                span.start,
+            ));
+        }
     };
     let stmt = pairs.next().ok_or_else(|| cx.internal(span))?;
     let form = stmt
@@ -85,11 +86,9 @@ fn parse_with_detail(chunk: &str) -> pest::error::Error<Rule> {
 }
 
 /// Where the statement sits in the source.
-pub(crate) struct Cx<'a> {
+pub(crate) struct Cx {
     /// Byte offset of the statement in the whole source.
     pub off: usize,
-    /// The statement's text.
-    pub text: &'a str,
     /// How many tree levels lie above the expression being built (open
     /// operators and brackets of the enclosing expressions). Bounds the
     /// recursion of the Pratt parser across nested brackets.
@@ -126,15 +125,6 @@ fn role(rule: Rule) -> Role {
     }
 }
 
-pub(crate) fn too_deep(span: Span) -> Diagnostic {
-    Diagnostic::error(
-        ErrorKind::Syntax,
-        span,
-        format!("expression nested too deeply (limit {MAX_DEPTH})"),
-    )
-    .with_help("split it into several statements with intermediate names")
-}
-
 fn check_depth(depth: usize, span: Span) -> Result<(), Diagnostic> {
     if depth > MAX_DEPTH {
         Err(too_deep(span))
@@ -143,7 +133,7 @@ fn check_depth(depth: usize, span: Span) -> Result<(), Diagnostic> {
     }
 }
 
-impl Cx<'_> {
+impl Cx {
     pub(crate) fn span(&self, s: pest::Span<'_>) -> Span {
         Span::new(self.off + s.start(), self.off + s.end())
     }

@@ -8,9 +8,26 @@
 
 use pest::error::{ErrorVariant, InputLocation};
 
+use super::MAX_DEPTH;
 use super::ast::Span;
-use super::parser::{Cx, Rule, too_deep};
+use super::grammar::Rule;
 use crate::diagnostics::{Diagnostic, ErrorKind};
+
+/// The error for a statement nested deeper than [`MAX_DEPTH`].
+pub(crate) fn too_deep(span: Span) -> Diagnostic {
+    Diagnostic::error(
+        ErrorKind::Syntax,
+        span,
+        format!("expression nested too deeply (limit {MAX_DEPTH})"),
+    )
+    .with_help("split it into several statements with intermediate names")
+}
+
+/// The statement being reported on: its text and its offset in the source.
+struct Cx<'a> {
+    off: usize,
+    text: &'a str,
+}
 
 const EXPRESSION: &str = "an expression";
 const OPERATOR: &str = "an operator";
@@ -98,8 +115,10 @@ fn rank(name: &str) -> u8 {
     }
 }
 
-/// A pest error → a syntax diagnostic pointing into the whole source.
-pub(crate) fn pest_error(err: pest::error::Error<Rule>, cx: &Cx<'_>) -> Diagnostic {
+/// A pest error in the statement `text` (at byte `off` of the source) →
+/// a syntax diagnostic pointing into the whole source.
+pub(crate) fn pest_error(err: pest::error::Error<Rule>, text: &str, off: usize) -> Diagnostic {
+    let cx = &Cx { off, text };
     let mut pos = match err.location {
         InputLocation::Pos(p) => p,
         InputLocation::Span((s, _)) => s,
