@@ -18,6 +18,11 @@ impl Interp<'_> {
         args: &[IndexArg],
         span: Span,
     ) -> Result<Typed, Diagnostic> {
+        if let [IndexArg::Expr(arg)] = args
+            && let Some(product) = self.bracket_index(base, arg, span)?
+        {
+            return Ok(product);
+        }
         let t = self.expr(base)?;
         let mut sels = Vec::new();
         for a in args {
@@ -131,9 +136,9 @@ impl Interp<'_> {
         }
         let rows: Vec<&Vec<Expr>> = rows.iter().filter(|r| !r.is_empty()).collect();
         let mut trows = Vec::with_capacity(rows.len());
-        for row in rows {
+        for row in &rows {
             let mut tr = Vec::with_capacity(row.len());
-            for e in row {
+            for e in row.iter() {
                 let t = self.expr(e)?;
                 if t.ty.kind.shape().is_none() {
                     return Err(Diagnostic::error(
@@ -177,7 +182,7 @@ impl Interp<'_> {
                 val: Some(Value::Sym(sym)),
             });
         }
-        let vrows: Vec<Vec<Value>> = trows
+        let mut vrows: Vec<Vec<Value>> = trows
             .into_iter()
             .map(|r| {
                 r.into_iter()
@@ -185,6 +190,7 @@ impl Interp<'_> {
                     .collect()
             })
             .collect();
+        super::notation::zero_blocks(&rows, &mut vrows);
         let v = ops::brackets(&vrows).map_err(|m| Diagnostic::error(ErrorKind::Type, span, m))?;
         let val = Some(v);
         Ok(Typed {

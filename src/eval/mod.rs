@@ -8,6 +8,7 @@ mod derive;
 pub mod env;
 mod expr;
 pub mod interp;
+mod notation;
 pub mod ops;
 mod substitute;
 pub mod symbolic;

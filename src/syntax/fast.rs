@@ -21,6 +21,7 @@ use lex::{is_ws, xid_start};
 
 mod atoms;
 mod lex;
+mod plain;
 #[cfg(test)]
 mod tests;
 
@@ -34,22 +35,6 @@ const BP_ADD: u8 = 10;
 const BP_MUL: u8 = 20;
 const BP_PREFIX: u8 = 30;
 const BP_POW: u8 = 40;
-
-/// The grammar rule an operand starts or ends with (the first and last
-/// inner pair of pest's `operand`), for the juxtaposition check.
-#[derive(Clone, Copy, PartialEq, Eq)]
-enum Kind {
-    Number,
-    Pi,
-    Degrees,
-    Brackets,
-    Paren,
-    Ident,
-    Call,
-    Bool,
-    Index,
-    Member,
-}
 
 /// Parses the statement at `span` of `text`, or `None` to leave it to pest.
 /// `chunk` is the statement's text (comments blanked), `span` its place in
@@ -65,8 +50,7 @@ pub(crate) fn parse_statement(chunk: &str, span: Span) -> Option<Stmt> {
         pos: 0,
         off: span.start,
         budget: BUDGET,
-        last: Kind::Number,
-        juxt_left: None,
+        sup: false,
     };
     let kind = p.statement()?;
     p.ws();
@@ -82,11 +66,8 @@ struct P<'a> {
     /// Offset of the statement in the source.
     off: usize,
     budget: usize,
-    /// The last kind of the operand parsed last.
-    last: Kind,
-    /// Set by a juxtaposition: the last kind of its left operand, checked
-    /// against the first kind of the next operand.
-    juxt_left: Option<Kind>,
+    /// Just after `^`: a `{` opens a superscript group (`sup_group`).
+    sup: bool,
 }
 
 impl P<'_> {
@@ -209,7 +190,10 @@ impl P<'_> {
     fn expr(&mut self, rbp: u8) -> Built {
         self.ws();
         let start = self.pos;
+        let sup = std::mem::take(&mut self.sup);
         let (mut lhs, mut depth) = match self.byte(start) {
+            // `R^{T}`, `R^{-1}`: the group is the whole exponent.
+            Some(b'{') if sup => self.group(b'}')?,
             Some(b @ (b'-' | b'+')) => {
                 self.spend()?;
                 self.pos += 1;
@@ -252,10 +236,7 @@ impl P<'_> {
             }
             self.spend()?;
             self.pos = at + width;
-            let left_last = self.last;
-            if op.is_none() {
-                self.juxt_left = Some(left_last);
-            }
+            self.sup = op == Some(BinOp::Pow);
             let (rhs, dr) = self.expr(if op == Some(BinOp::Pow) { bp - 1 } else { bp })?;
             let (op, implicit, op_span) = match op {
                 Some(op) => (op, false, self.span(at, at + 1)),
@@ -286,18 +267,5 @@ impl P<'_> {
             Some(b'.') => self.byte(at + 1).is_some_and(|b| b.is_ascii_digit()),
             _ => self.char_at(at).is_some_and(xid_start),
         }
-    }
-
-    /// Checks a juxtaposition `left right` as `check_juxtaposition` does,
-    /// once the right operand's first pair is known.
-    fn check_juxt(&mut self, first: Kind) -> Option<()> {
-        if let Some(last) = self.juxt_left.take() {
-            let numeric_left = matches!(last, Kind::Number | Kind::Pi | Kind::Degrees);
-            let left_ok = numeric_left || matches!(last, Kind::Brackets | Kind::Paren);
-            if !left_ok || (numeric_left && first == Kind::Number) {
-                return None;
-            }
-        }
-        Some(())
     }
 }

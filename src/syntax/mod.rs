@@ -20,11 +20,13 @@
 //! - [`ident::name_frames`]: the frame subscript of a name (`T_sb` → s, b).
 
 pub mod ast;
+mod book;
 mod fast;
 mod grammar;
 pub mod ident;
 mod mech;
 mod parser;
+mod rewrite;
 mod rules;
 mod spacing;
 mod split;
@@ -64,7 +66,7 @@ pub fn statements(src: &str) -> impl Iterator<Item = Result<ast::Stmt, Diagnosti
             None if chunk.depth > SHALLOW => parse_on_big_stack(text, chunk.span),
             None => parser::parse_chunk(text, chunk.span),
         };
-        Some(parsed.and_then(|stmt| spacing::check(&stmt, src).map(|()| stmt)))
+        Some(parsed.and_then(|stmt| spacing::check(&stmt, src).map(|()| rewrite::stmt(stmt))))
     })
 }
 

@@ -46,6 +46,8 @@ pub(crate) fn rule_name(rule: Rule) -> &'static str {
         Rule::params => "a parameter name",
         Rule::destructure => "a destructuring assignment",
         Rule::assign => "an assignment",
+        Rule::given_type => "a type such as SE3 or SE(3)",
+        Rule::sup_group => "a superscript {..}",
         Rule::expr
         | Rule::prefix_op
         | Rule::neg
@@ -60,6 +62,13 @@ pub(crate) fn rule_name(rule: Rule) -> &'static str {
         | Rule::number
         | Rule::pi
         | Rule::mech
+        | Rule::bare_call
+        | Rule::bare_fn
+        | Rule::bare_arg
+        | Rule::deg_unit
+        | Rule::plain_row
+        | Rule::plain_list
+        | Rule::plain_number
         | Rule::kw_mech
         | Rule::juxt_start
         | Rule::index_arg => EXPRESSION,
@@ -74,7 +83,8 @@ pub(crate) fn rule_name(rule: Rule) -> &'static str {
         | Rule::postfix
         | Rule::index
         | Rule::member
-        | Rule::degrees => OPERATOR,
+        | Rule::degrees
+        | Rule::transpose_mark => OPERATOR,
         Rule::all => "':'",
         Rule::call_args => "'('",
         Rule::row_sep => "';' or a new line",
@@ -283,7 +293,9 @@ fn help(text: &str, pos: usize, found: Option<char>, expected: &[String]) -> Opt
             "there are no comparisons; `<` only opens a mechanism: mech < links 4; joints 4R; planar >"
                 .into(),
         ),
-        '{' | '}' => Some("braces only appear in frame subscripts: T_{world,cam}".into()),
+        '{' | '}' => Some(
+            "braces only appear in frame subscripts, T_{world,cam}, and superscripts, R^{T}".into(),
+        ),
         '.' if before.ends_with(|c: char| c.is_ascii_digit()) => {
             Some("write decimals with digits after the point: 2.0 or 2".into())
         }

@@ -2,9 +2,12 @@
 //! with their postfix operators, as the grammar's `operand`, `primary`,
 //! `postfix`, `paren`, `brackets` and `index` rules read them.
 
-use super::{Built, Kind, P};
+use super::{Built, P};
 use crate::syntax::MAX_DEPTH;
-use crate::syntax::ast::{Expr, ExprKind, IndexArg};
+use crate::syntax::ast::{Expr, ExprKind, Ident, IndexArg};
+
+/// The scalar functions the book writes without parentheses (`bare_fn`).
+const BARE_FNS: [&str; 7] = ["asin", "acos", "atan", "sin", "cos", "tan", "sqrt"];
 
 impl P<'_> {
     pub(super) fn leaf(&self, kind: ExprKind, start: usize, end: usize) -> (Expr, usize) {
@@ -12,124 +15,177 @@ impl P<'_> {
         (Expr { kind, span }, 1)
     }
 
-    /// `operand`: an atom with its postfix operators. Sets `self.last`.
-    pub(super) fn operand(&mut self) -> Built {
+    /// `(number | pi) ~ (WHITESPACE* ~ degrees)*` at the current position.
+    pub(super) fn numeric(&mut self) -> Option<Built> {
         let start = self.pos;
-        // `(number | pi) ~ (WHITESPACE* ~ degrees)*`
-        let numeric = if let Some(end) = self.number_at(start) {
-            let x = self.src[start..end].parse::<f64>().ok()?;
-            Some((ExprKind::Number(x), end, Kind::Number))
+        let kind = if let Some(end) = self.number_at(start) {
+            self.src[start..end]
+                .parse::<f64>()
+                .ok()
+                .map(|x| (ExprKind::Number(x), end))
         } else {
             self.keyword_at(start, "pi")
                 .or_else(|| self.keyword_at(start, "π"))
-                .map(|end| (ExprKind::Number(std::f64::consts::PI), end, Kind::Pi))
+                .map(|end| (ExprKind::Number(std::f64::consts::PI), end))
         };
-        if let Some((kind, end, first)) = numeric {
-            self.check_juxt(first)?;
-            self.pos = end;
-            let (mut e, mut d) = self.leaf(kind, start, end);
-            let mut last = first;
-            loop {
-                let save = self.pos;
-                self.ws();
-                match self.degrees_at(self.pos) {
-                    Some(end) => {
-                        (e, d) = self.degrees(e, d, self.pos, end)?;
-                        last = Kind::Degrees;
-                    }
-                    None => {
-                        self.pos = save;
-                        break;
-                    }
+        let (kind, end) = kind?;
+        self.pos = end;
+        let (e, d) = self.leaf(kind, start, end);
+        Some(self.units(e, d))
+    }
+
+    /// `(WHITESPACE* ~ degrees)*` after `e`.
+    fn units(&mut self, mut e: Expr, mut d: usize) -> Built {
+        loop {
+            let save = self.pos;
+            self.ws();
+            match self.degrees_at(self.pos) {
+                Some(end) => (e, d) = self.degrees(e, d, self.pos, end)?,
+                None => {
+                    self.pos = save;
+                    return Some((e, d));
                 }
             }
-            self.last = last;
-            return Some((e, d));
+        }
+    }
+
+    /// `operand`: an atom with its postfix operators.
+    pub(super) fn operand(&mut self) -> Built {
+        let start = self.pos;
+        if let Some(built) = self.numeric() {
+            return built;
         }
 
-        // primary = mech | call | bool_lit | ident | paren | brackets
+        // primary = mech | call | bare_call | bool_lit | ident | paren | brackets | deg_unit
         if self.keyword_at(start, "mech").is_some() {
             return None;
         }
         let name = self.ident_at(start)?;
-        let (mut e, mut d, mut last) = 'primary: {
+        let (mut e, mut d) = 'primary: {
             if let Some(end) = name {
                 self.pos = end;
                 self.ws();
                 if self.byte(self.pos) == Some(b'(') {
-                    self.check_juxt(Kind::Call)?;
                     let func = self.ident(start, end);
                     let (args, d) = self.call_args()?;
                     let span = self.span(start, self.pos);
                     let kind = ExprKind::Call { func, args };
-                    break 'primary (Expr { kind, span }, d + 1, Kind::Call);
+                    break 'primary (Expr { kind, span }, d + 1);
+                }
+                self.pos = start;
+                if let Some(built) = self.bare_call(start, end) {
+                    break 'primary built?;
                 }
                 self.pos = start;
             }
             for (word, value) in [("true", true), ("false", false)] {
                 if let Some(end) = self.keyword_at(start, word) {
-                    self.check_juxt(Kind::Bool)?;
                     self.pos = end;
-                    let (e, d) = self.leaf(ExprKind::Bool(value), start, end);
-                    break 'primary (e, d, Kind::Bool);
+                    break 'primary self.leaf(ExprKind::Bool(value), start, end);
                 }
             }
             if let Some(end) = name {
-                self.check_juxt(Kind::Ident)?;
                 self.pos = end;
                 let var = ExprKind::Var(self.src[start..end].to_string());
-                let (e, d) = self.leaf(var, start, end);
-                break 'primary (e, d, Kind::Ident);
+                break 'primary self.leaf(var, start, end);
+            }
+            if let Some(end) = self.keyword_at(start, "deg") {
+                self.pos = end;
+                let one = self.leaf(ExprKind::Number(1.0), start, end).0;
+                let span = one.span;
+                break 'primary (
+                    Expr {
+                        kind: ExprKind::Degrees(Box::new(one)),
+                        span,
+                    },
+                    2,
+                );
             }
             match self.byte(start)? {
-                b'(' => {
-                    self.check_juxt(Kind::Paren)?;
-                    let (e, d) = self.paren()?;
-                    (e, d, Kind::Paren)
-                }
-                b'[' => {
-                    self.check_juxt(Kind::Brackets)?;
-                    let (e, d) = self.brackets()?;
-                    (e, d, Kind::Brackets)
-                }
+                b'(' => self.paren()?,
+                b'[' => self.brackets()?,
                 _ => return None,
             }
         };
 
-        // postfix = index | WHITESPACE* ~ (member | degrees)
+        // postfix = index | WHITESPACE* ~ (member | degrees | transpose_mark)
         loop {
             let at = self.pos;
             if self.byte(at) == Some(b'[') {
                 (e, d) = self.index(e, d)?;
-                last = Kind::Index;
                 continue;
             }
             self.ws();
             let op = self.pos;
             if self.byte(op) == Some(b'.') {
                 if let Some(end) = self.ident_at(op + 1)? {
-                    self.spend()?;
-                    let span = e.span.join(self.span(op, end));
-                    let kind = ExprKind::Member {
-                        base: Box::new(e),
-                        member: self.ident(op + 1, end),
-                    };
-                    e = Expr { kind, span };
-                    d += 1;
+                    let member = self.ident(op + 1, end);
+                    (e, d) = self.member(e, d, op, member)?;
                     self.pos = end;
-                    last = Kind::Member;
                     continue;
                 }
             } else if let Some(end) = self.degrees_at(op) {
                 (e, d) = self.degrees(e, d, op, end)?;
-                last = Kind::Degrees;
+                continue;
+            } else if self.src[op..].starts_with('ᵀ') {
+                let end = op + 'ᵀ'.len_utf8();
+                let member = Ident {
+                    name: "T".into(),
+                    span: self.span(op, end),
+                };
+                (e, d) = self.member(e, d, op, member)?;
+                self.pos = end;
                 continue;
             }
             self.pos = at;
             break;
         }
-        self.last = last;
         (d <= MAX_DEPTH).then_some((e, d))
+    }
+
+    fn member(&mut self, e: Expr, d: usize, op: usize, member: Ident) -> Built {
+        self.spend()?;
+        let span = e.span.join(self.span(op, member.span.end - self.off));
+        let kind = ExprKind::Member {
+            base: Box::new(e),
+            member,
+        };
+        Some((Expr { kind, span }, d + 1))
+    }
+
+    /// `bare_call` for the name at `start..end`: `sin θ`, `cos 30°`. `None`
+    /// when it does not match (the grammar tries the next alternative).
+    fn bare_call(&mut self, start: usize, end: usize) -> Option<Built> {
+        let word = &self.src[start..end];
+        if !BARE_FNS.contains(&word) || !self.byte(end).is_some_and(super::is_ws) {
+            return None;
+        }
+        self.pos = end;
+        self.ws();
+        let at = self.pos;
+        let arg = match self.numeric() {
+            Some(built) => built,
+            None => {
+                let stop = self.ident_at(at)??;
+                if self.byte(stop) == Some(b'(') {
+                    return None;
+                }
+                self.pos = stop;
+                let var = ExprKind::Var(self.src[at..stop].to_string());
+                let (e, d) = self.leaf(var, at, stop);
+                self.units(e, d)
+            }
+        };
+        Some(arg.and_then(|(arg, d)| {
+            self.spend()?;
+            let func = self.ident(start, end);
+            let span = self.span(start, self.pos);
+            let kind = ExprKind::Call {
+                func,
+                args: vec![arg],
+            };
+            Some((Expr { kind, span }, d + 1))
+        }))
     }
 
     pub(super) fn degrees(&mut self, base: Expr, d: usize, start: usize, end: usize) -> Built {
@@ -181,6 +237,19 @@ impl P<'_> {
         }
         let kind = ExprKind::Paren(items);
         Some((Expr { kind, span }, d + 1))
+    }
+
+    /// `sup_group`: `{ expr }`, the expression spanning its braces.
+    pub(super) fn group(&mut self, close: u8) -> Built {
+        self.spend()?;
+        let start = self.pos;
+        self.pos += 1;
+        let (mut e, d) = self.expr(0)?;
+        if !self.eat(close) {
+            return None;
+        }
+        e.span = self.span(start, self.pos);
+        Some((e, d))
     }
 
     pub(super) fn index(&mut self, base: Expr, depth: usize) -> Built {
@@ -237,20 +306,33 @@ impl P<'_> {
         let mut depth = 0;
         self.row_seps();
         while self.byte(self.pos) != Some(b']') {
-            let mut row = Vec::new();
-            loop {
-                let (e, d) = self.expr(0)?;
-                depth = depth.max(d);
-                row.push(e);
-                if !self.eat(b',') {
-                    break;
+            if let Some(plain) = self.plain_rows() {
+                depth = depth.max(2);
+                rows.extend(plain);
+            } else {
+                let mut row = Vec::new();
+                loop {
+                    let (e, d) = self.expr(0)?;
+                    depth = depth.max(d);
+                    row.push(e);
+                    if !self.eat(b',') {
+                        break;
+                    }
+                    // A newline after a comma continues the row.
+                    let comma = self.pos;
+                    while {
+                        self.ws();
+                        self.byte(self.pos) == Some(b'\n')
+                    } {
+                        self.pos += 1;
+                    }
+                    if matches!(self.byte(self.pos), Some(b';' | b']')) {
+                        self.pos = comma;
+                        break;
+                    }
                 }
-                self.ws();
-                if matches!(self.byte(self.pos), Some(b';' | b'\n' | b']')) {
-                    break;
-                }
+                rows.push(row);
             }
-            rows.push(row);
             if !self.row_seps() && self.byte(self.pos) != Some(b']') {
                 return None;
             }

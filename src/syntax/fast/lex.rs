@@ -42,7 +42,7 @@ impl P<'_> {
     /// pest's `ident` fails, `None` to give up (a braced subscript).
     pub(super) fn ident_at(&self, at: usize) -> Option<Option<usize>> {
         match self.char_at(at) {
-            Some(c) if xid_start(c) => {}
+            Some(c) if xid_start(c) && c != 'ᵀ' => {}
             _ => return Some(None),
         }
         let mut i = at;
@@ -50,7 +50,8 @@ impl P<'_> {
             if c == '_' && self.byte(i + 1) == Some(b'{') {
                 return None;
             }
-            if !(xid_continue(c) || c == '\'') {
+            // `ᵀ` is the transpose mark, never part of a name.
+            if !(xid_continue(c) || c == '\'') || c == 'ᵀ' {
                 break;
             }
             i += c.len_utf8();
@@ -78,6 +79,9 @@ impl P<'_> {
                 let j = digits(i + 1);
                 if j > i + 1 {
                     i = j;
+                } else if self.trailing_point(i + 1) {
+                    // numpy's `0.`, `1.e-3`
+                    i += 1;
                 }
             }
         } else if self.byte(at) == Some(b'.') {
@@ -99,6 +103,18 @@ impl P<'_> {
             }
         }
         Some(i)
+    }
+
+    /// After `2.`: `!("." | XID_START) | &(^"e" ~ ("+" | "-")? ~ ASCII_DIGIT)`.
+    fn trailing_point(&self, at: usize) -> bool {
+        match self.char_at(at) {
+            Some('e' | 'E') => {
+                let j = at + 1 + usize::from(matches!(self.byte(at + 1), Some(b'+' | b'-')));
+                self.byte(j).is_some_and(|b| b.is_ascii_digit())
+            }
+            Some(c) => !(c == '.' || xid_start(c)),
+            None => true,
+        }
     }
 
     /// `degrees` at `at`: its end.

@@ -64,6 +64,22 @@ fn fast_path_agrees_with_pest() {
         "(w, theta) = axis_ang3(expc)",
         "M = [R, p; 0, 0, 0, 1]\n[1, 2,\n 3]",
         "exp([S] theta) * M[1, :] .T + 2 pi - 30° / θ(1) + true",
+        // The book's notation (issue 13).
+        "R_sb = [[0, -1, 0], [1, 0, 0], [0, 0, 1]]",
+        "R = [[ 0. -1.  0.] [ 1.  0.  0.] [ 0.  0.  1.]]",
+        "R = [[ 0. -1.  0.]\n [ 1.  0.  0.]\n [ 0.  0.  1.]]",
+        "R = [0 -1 0; 1 0 0; 0 0 1]",
+        "x = [1.e-3 -2.5E+2 +3 .5]",
+        "[1, 2,\n 3, 4,\n]",
+        "R^T * V_b^T + Ad(T_sb)^T - [w]^T",
+        "Rᵀ * R^{-1} + R^{T} + X^-1 + Rᵀᵀ",
+        "e^(A t) + e^([w] θ)",
+        "exp([S1] θ1) exp([S2] θ2) M",
+        "T_sb T_bc + Ad(T_sb) V_b + sin(θ) W",
+        "I + sin θ [w] + (1 - cos θ)[w]^2",
+        "cos 30° + sqrt 2 + tan pi + asin x deg + acos θ_1'",
+        "ans / deg",
+        "T_01 * T_12 * T_s1",
     ] {
         let (f, o) = agree(src);
         assert!(f == o && o > 0, "{src:?} takes the slow path");
@@ -74,6 +90,8 @@ const TOKENS: &[&str] = &[
     "(", ")", "[", "]", ",", ";", "+", "-", "*", "/", "^", ".", "'", "deg", "°", "pi", "π", "1",
     "2.5", ".5", "1e", "1e-3", "T_ab", "x", "θ", "=", "==", ":", "true", "false", "given",
     "derive", "mech", "<", ">", "\n", " ", "\t", "_{", "}", "f(", "**", ".T", "_",
+    // The book's notation.
+    "ᵀ", "^T", "^{", "sin", "cos ", "sqrt", "e^", "0.", "1.e", "-1.", "[[", "]]", "I", "T_01",
 ];
 
 fn tokens() -> impl Strategy<Value = String> {
@@ -97,20 +115,48 @@ fn tokens() -> impl Strategy<Value = String> {
 fn expr() -> impl Strategy<Value = String> {
     let atom = prop::sample::select(
         &[
-            "1", "2.5", ".5", "3e2", "pi", "π", "x", "T_sb'", "θ", "true", "30 deg", "30°",
-            "M[1, :]", "v.T", "v .R", "f()",
+            "1",
+            "2.5",
+            ".5",
+            "3e2",
+            "pi",
+            "π",
+            "x",
+            "T_sb'",
+            "θ",
+            "true",
+            "30 deg",
+            "30°",
+            "M[1, :]",
+            "v.T",
+            "v .R",
+            "f()",
+            "Rᵀ",
+            "sin θ",
+            "cos 30°",
+            "sqrt 2",
+            "deg",
+            "0.",
+            "[1 -2 3]",
+            "[[1. 2.] [3. 4.]]",
         ][..],
     )
     .prop_map(str::to_string);
     atom.prop_recursive(4, 32, 3, |inner| {
-        let op = prop::sample::select(&["+", "-", "*", "/", "^", " ", "", "^-", " - -"][..]);
+        let op = prop::sample::select(
+            &[
+                "+", "-", "*", "/", "^", " ", "", "^-", " - -", "^T", "^{T}", " [w] ", ",\n",
+            ][..],
+        );
         prop_oneof![
             (inner.clone(), op, inner.clone()).prop_map(|(a, o, b)| format!("{a}{o}{b}")),
             prop::collection::vec(inner.clone(), 1..3).prop_map(|v| format!("({})", v.join(", "))),
             prop::collection::vec(inner.clone(), 0..3).prop_map(|v| format!("[{}]", v.join("; "))),
             prop::collection::vec(inner.clone(), 0..3)
                 .prop_map(|v| format!("g ({},)", v.join(","))),
-            (inner.clone(), inner).prop_map(|(a, b)| format!("{a}[{b}] deg")),
+            (inner.clone(), inner.clone()).prop_map(|(a, b)| format!("{a}[{b}] deg")),
+            (inner.clone(), inner.clone()).prop_map(|(a, b)| format!("{a}^{{{b}}}")),
+            prop::collection::vec(inner, 1..4).prop_map(|v| format!("[{}]", v.join(" "))),
         ]
     })
 }
