@@ -137,9 +137,8 @@ impl Interp<'_> {
         let rows: Vec<&Vec<Expr>> = rows.iter().filter(|r| !r.is_empty()).collect();
         let mut trows = Vec::with_capacity(rows.len());
         for row in &rows {
-            let mut tr = Vec::with_capacity(row.len());
-            for e in row.iter() {
-                let t = self.expr(e)?;
+            let tr = self.bracket_row(row)?;
+            for (t, e) in tr.iter().zip(row.iter()) {
                 if t.ty.kind.shape().is_none() {
                     return Err(Diagnostic::error(
                         ErrorKind::Type,
@@ -147,7 +146,6 @@ impl Interp<'_> {
                         format!("a {} cannot go inside [ ]", t.ty.kind),
                     ));
                 }
-                tr.push(t);
             }
             trows.push(tr);
         }

@@ -95,6 +95,32 @@ impl Interp<'_> {
         out
     }
 
+    /// The entries of a bracket row; an `I` among them (`[I, p; 0, 1]`)
+    /// is as tall as the others.
+    pub(super) fn bracket_row(&mut self, row: &[Expr]) -> Result<Vec<Typed>, Diagnostic> {
+        let free = |e: &Expr| mentions_identity(e);
+        let sized = self.env.get("I").is_none();
+        let mut out: Vec<Option<Typed>> = vec![None; row.len()];
+        for (slot, e) in out.iter_mut().zip(row) {
+            if !(sized && free(e)) {
+                *slot = Some(self.expr(e)?);
+            }
+        }
+        let height = out
+            .iter()
+            .flatten()
+            .filter_map(|t| dims(t).map(|d| d.0))
+            .max();
+        let mut done = Vec::with_capacity(row.len());
+        for (slot, e) in out.into_iter().zip(row) {
+            done.push(match slot {
+                Some(t) => t,
+                None => self.sized_identity(height, e)?,
+            });
+        }
+        Ok(done)
+    }
+
     /// `I` with no binding: the identity of the size its context needs.
     pub(super) fn identity(&mut self, span: Span) -> Result<Typed, Diagnostic> {
         let Some(n) = self.eye else {
