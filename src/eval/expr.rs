@@ -410,10 +410,14 @@ impl Interp<'_> {
         if let [one] = args
             && f.params.len() >= 2
         {
+            let warned = self.warnings.len();
             let t = self.expr(one)?;
             let parts = super::notation::parts(&t);
             if parts.len() == f.params.len() {
                 spread = Some(parts);
+            } else {
+                // Evaluated again below as the one argument.
+                self.warnings.truncate(warned);
             }
         }
         if spread.is_none() && args.len() != f.params.len() {

@@ -121,6 +121,15 @@ impl Interp<'_> {
         Ok(done)
     }
 
+    /// Evaluates `e` to see what it is, before it is evaluated again in
+    /// its place: its warnings are left to the second evaluation.
+    pub(super) fn probe(&mut self, e: &Expr) -> Result<Typed, Diagnostic> {
+        let warned = self.warnings.len();
+        let t = self.expr(e);
+        self.warnings.truncate(warned);
+        t
+    }
+
     /// `I` with no binding: the identity of the size its context needs.
     pub(super) fn identity(&mut self, span: Span) -> Result<Typed, Diagnostic> {
         let Some(n) = self.eye else {
@@ -158,7 +167,7 @@ impl Interp<'_> {
         if !matches!(&lhs.kind, ExprKind::Var(e) if e == "e") || self.env.get("e").is_some() {
             return None;
         }
-        let r = match self.expr(rhs) {
+        let r = match self.probe(rhs) {
             Ok(r) => r,
             Err(e) => return Some(Err(e)),
         };
@@ -175,7 +184,7 @@ impl Interp<'_> {
         arg: &Expr,
         span: Span,
     ) -> Result<Option<Typed>, Diagnostic> {
-        let t = self.expr(arg)?;
+        let t = self.probe(arg)?;
         if !matches!(t.ty.kind.vec_len(), Some(3 | 6)) {
             return Ok(None);
         }
@@ -209,7 +218,7 @@ impl Interp<'_> {
         let [crate::syntax::ast::IndexArg::Expr(arg)] = args.as_slice() else {
             return Ok(None);
         };
-        if !matches!(self.expr(arg)?.ty.kind.vec_len(), Some(3 | 6)) {
+        if !matches!(self.probe(arg)?.ty.kind.vec_len(), Some(3 | 6)) {
             return Ok(None);
         }
         let bracket = Expr {

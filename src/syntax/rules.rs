@@ -288,7 +288,7 @@ fn help(text: &str, pos: usize, found: Option<char>, expected: &[String]) -> Opt
         ',' if before.rfind("_{") > before.rfind('}') => {
             Some("a braced subscript names one or two frames: T_{world,cam}".into())
         }
-        '\'' => Some("`'` is part of a name (T_sb'); to transpose write x.T".into()),
+        '\'' => Some("`'` is part of a name (T_sb'); to transpose write x^T, xᵀ or x.T".into()),
         '<' | '>' if wants(OPERATOR) || wants(END) => Some(
             "there are no comparisons; `<` only opens a mechanism: mech < links 4; joints 4R; planar >"
                 .into(),
