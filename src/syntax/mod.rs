@@ -8,7 +8,9 @@
 //! than [`MAX_DEPTH`]. Ordinary statements first take `fast`, a
 //! hand-written parser of the same grammar, ten times quicker, which
 //! leaves every error (and a few rare forms) to pest. `spacing` then
-//! refuses `[1 -2]`, which MATLAB reads as two entries. Syntax errors are
+//! refuses what reads two ways (`[1 -x]`, `[2 pi]`, `R [1, 2]`, `sin θ^2`,
+//! `T_123`) with both readings, and `rewrite` turns the book's notation into
+//! the plain tree (numpy's nested rows, `R^T` = `R.T`). Syntax errors are
 //! `ErrorKind::Syntax` diagnostics with friendly messages (`rules`). Spans
 //! are byte offsets into the whole source.
 //!
