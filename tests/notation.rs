@@ -105,6 +105,9 @@ fn superscripts_transpose_and_invert() {
     same(SETUP, "V_b^T", "V_b.T");
     same(SETUP, "Ad(T_sb)^T", "Ad(T_sb).T");
     same(SETUP, "[w]^T", "[w].T");
+    same(SETUP, "R⁻¹", "inv(R)");
+    same(SETUP, "[w]²", "[w]^2");
+    same(SETUP, "(1 - cos θ)[w]²", "(1 - cos(θ)) * [w]^2");
     // `^T` transposes even when a name T is bound.
     same(&format!("{SETUP}\nT = 2"), "R^T", "R.T");
     // e^(x) is exp(x) for matrices; a scalar power of e is unchanged.
@@ -147,6 +150,7 @@ fn scalar_functions_without_parentheses() {
     same(SETUP, "cos θ / 2", "cos(θ) / 2");
     for (src, help) in [
         ("sin θ^2", "write (sin θ)^2, or sin(θ^2)"),
+        ("sin θ²", "write (sin θ)², or sin(θ²)"),
         ("sin 2θ", "write sin(2θ), or (sin 2) θ for the product"),
         ("cos θ/2", "write cos(θ/2), or (cos θ)/2"),
     ] {

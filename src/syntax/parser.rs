@@ -38,7 +38,8 @@ static PRATT: LazyLock<PrattParser<Rule>> = LazyLock::new(|| {
         .op(Op::postfix(Rule::index)
             | Op::postfix(Rule::member)
             | Op::postfix(Rule::degrees)
-            | Op::postfix(Rule::transpose_mark))
+            | Op::postfix(Rule::transpose_mark)
+            | Op::postfix(Rule::superscript))
 });
 
 /// Parses `chunk`, the blanked text of the statement at `span`.
@@ -123,7 +124,9 @@ fn role(rule: Rule) -> Role {
             prec: PREC_POW,
             right: true,
         },
-        Rule::index | Rule::member | Rule::degrees | Rule::transpose_mark => Role::Postfix,
+        Rule::index | Rule::member | Rule::degrees | Rule::transpose_mark | Rule::superscript => {
+            Role::Postfix
+        }
         _ => Role::Operand,
     }
 }
@@ -422,6 +425,10 @@ impl Cx {
         check_depth(depth + 1, op_span)?;
         let kind = match op.as_rule() {
             Rule::degrees => ExprKind::Degrees(Box::new(base)),
+            Rule::superscript => {
+                let kind = super::ast::superscript_power(base, op.as_str(), op_span);
+                return Ok((Expr { kind, span }, depth + 2));
+            }
             // `Rᵀ` is `R.T`.
             Rule::transpose_mark => ExprKind::Member {
                 base: Box::new(base),

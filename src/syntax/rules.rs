@@ -84,7 +84,8 @@ pub(crate) fn rule_name(rule: Rule) -> &'static str {
         | Rule::index
         | Rule::member
         | Rule::degrees
-        | Rule::transpose_mark => OPERATOR,
+        | Rule::transpose_mark
+        | Rule::superscript => OPERATOR,
         Rule::all => "':'",
         Rule::call_args => "'('",
         Rule::row_sep => "';' or a new line",

@@ -233,13 +233,17 @@ impl Check<'_> {
                 Ok(())
             }
             BinOp::Pow if bare.is_some() && self.last_operand(lhs).span == lhs.span => {
-                let p = self.text(rhs.span);
+                // `^2`, or a superscript `²`.
+                let p = match self.text(*op_span) {
+                    "^" => format!("^{}", self.text(rhs.span)),
+                    sup => sup.to_string(),
+                };
                 let (name, a) = split_bare(l);
                 Err(two_readings(
                     *op_span,
-                    &format!("{l}^{p}"),
-                    &format!("({l})^{p}"),
-                    &format!("{name}({a}^{p})"),
+                    &format!("{l}{p}"),
+                    &format!("({l}){p}"),
+                    &format!("{name}({a}{p})"),
                 ))
             }
             BinOp::Div

@@ -127,6 +127,15 @@ impl P<'_> {
             } else if let Some(end) = self.degrees_at(op) {
                 (e, d) = self.degrees(e, d, op, end)?;
                 continue;
+            } else if let Some(end) = self.superscript_at(op) {
+                self.spend()?;
+                let sup = self.span(op, end);
+                let span = e.span.join(sup);
+                let kind = crate::syntax::ast::superscript_power(e, &self.src[op..end], sup);
+                e = Expr { kind, span };
+                d += 2;
+                self.pos = end;
+                continue;
             } else if self.src[op..].starts_with('ᵀ') {
                 let end = op + 'ᵀ'.len_utf8();
                 let member = Ident {

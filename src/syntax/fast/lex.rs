@@ -117,6 +117,19 @@ impl P<'_> {
         }
     }
 
+    /// `superscript` at `at` (`²`, `⁻¹`): its end.
+    pub(super) fn superscript_at(&self, at: usize) -> Option<usize> {
+        const DIGITS: &str = "⁰¹²³⁴⁵⁶⁷⁸⁹";
+        let rest = &self.src[at..];
+        let body = rest.strip_prefix('⁻').unwrap_or(rest);
+        let digits: usize = body
+            .chars()
+            .take_while(|&c| DIGITS.contains(c))
+            .map(char::len_utf8)
+            .sum();
+        (digits > 0).then(|| at + (rest.len() - body.len()) + digits)
+    }
+
     /// `degrees` at `at`: its end.
     pub(super) fn degrees_at(&self, at: usize) -> Option<usize> {
         if self.src[at..].starts_with('°') {

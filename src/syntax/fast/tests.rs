@@ -72,7 +72,7 @@ fn fast_path_agrees_with_pest() {
         "x = [1.e-3 -2.5E+2 +3 .5]",
         "[1, 2,\n 3, 4,\n]",
         "R^T * V_b^T + Ad(T_sb)^T - [w]^T",
-        "Rᵀ * R^{-1} + R^{T} + X^-1 + Rᵀᵀ",
+        "Rᵀ * R^{-1} + R^{T} + X^-1 + Rᵀᵀ + R⁻¹ + [w]² - x¹⁰ᵀ",
         "e^(A t) + e^([w] θ)",
         "exp([S1] θ1) exp([S2] θ2) M",
         "T_sb T_bc + Ad(T_sb) V_b + sin(θ) W",
@@ -91,7 +91,8 @@ const TOKENS: &[&str] = &[
     "2.5", ".5", "1e", "1e-3", "T_ab", "x", "θ", "=", "==", ":", "true", "false", "given",
     "derive", "mech", "<", ">", "\n", " ", "\t", "_{", "}", "f(", "**", ".T", "_",
     // The book's notation.
-    "ᵀ", "^T", "^{", "sin", "cos ", "sqrt", "e^", "0.", "1.e", "-1.", "[[", "]]", "I", "T_01",
+    "ᵀ", "^T", "^{", "sin", "cos ", "sqrt", "e^", "0.", "1.e", "-1.", "[[", "]]", "I", "T_01", "²",
+    "⁻¹", "⁻",
 ];
 
 fn tokens() -> impl Strategy<Value = String> {
