@@ -221,11 +221,8 @@ fn numbered_frames() {
 fn statements_as_chasles_prints_them() {
     // given with the spellings chasles prints.
     let lines =
-        run("given T_sa : SE(3)\ngiven W_s : so(3)\ngiven T_ab : SE3\nT_sa T_ab").expect("runs");
-    assert_eq!(
-        lines.last().unwrap()["frames"],
-        serde_json::json!(["s", "b"])
-    );
+        run("given T_sa : SE(3)\ngiven W_s : so(3)\ngiven T_ab : SE3\ngiven p_b : 3-vector\nT_sa T_ab p_b").expect("runs");
+    assert_eq!(lines.last().unwrap()["frames"], serde_json::json!(["s"]));
     // One tuple as a function's arguments.
     same(SETUP, "rot_zyx(euler_zyx(R))", "R");
     same("f(a, b) = a - b", "f((5, 2))", "3");

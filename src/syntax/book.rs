@@ -14,10 +14,16 @@ use crate::diagnostics::Diagnostic;
 type Built = Result<(Expr, usize), Diagnostic>;
 
 impl Cx {
-    /// `SE(3)` → the name `SE3`, spanning what was written.
+    /// `SE(3)` → the name `SE3`, `3-vector` → `vec3`, spanning what was
+    /// written.
     pub(super) fn given_type(&self, pair: &Pair<'_, Rule>) -> Ident {
+        let text = pair.as_str();
+        let name = match text.strip_suffix("-vector") {
+            Some(n) => format!("vec{n}"),
+            None => text.replace(['(', ')'], ""),
+        };
         Ident {
-            name: pair.as_str().replace(['(', ')'], ""),
+            name,
             span: self.span(pair.as_span()),
         }
     }
