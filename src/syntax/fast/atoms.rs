@@ -1,6 +1,8 @@
-//! The fast path's operands: atoms (numbers, names, calls, `( )`, `[ ]`)
-//! with their postfix operators, as the grammar's `operand`, `primary`,
-//! `postfix`, `paren`, `brackets` and `index` rules read them.
+//! The fast path's operands: atoms (numbers, names, calls, `sin θ`, `deg`,
+//! `( )`, `[ ]`, `{ }` superscripts) with their postfix operators (`[i]`,
+//! `.T`, `ᵀ`, `²`, `deg`), as the grammar's `operand`, `primary`,
+//! `bare_call`, `postfix`, `paren`, `sup_group`, `brackets` and `index`
+//! rules read them.
 
 use super::{Built, P};
 use crate::syntax::MAX_DEPTH;
