@@ -156,7 +156,7 @@ impl Cx {
         )
     }
 
-    pub(super) fn ident(&self, pair: Pair<'_, Rule>) -> Result<Ident, Diagnostic> {
+    fn ident(&self, pair: Pair<'_, Rule>) -> Result<Ident, Diagnostic> {
         if pair.as_rule() != Rule::ident {
             return Err(self.unexpected(&pair));
         }
