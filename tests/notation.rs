@@ -212,6 +212,9 @@ fn numbered_frames() {
     // S_1, B_2, theta_1 stay indices.
     let lines = run("S_1 = (0, 0, 1, 0, 0, 0)\ntheta_1 = 1").expect("runs");
     assert_eq!(lines[0]["frames"], serde_json::json!([]));
+    // The same frames spelled otherwise are named in the help.
+    let e = error("T_01 = Trans((1, 0, 0))\nT_{0,1}");
+    assert!(e.contains("T_01 names the same frames"), "{e}");
     // T_123 asks for braces.
     let e = error("T_123 = Trans((1, 0, 0))");
     assert!(e.contains("T_{1,23} or T_{12,3}"), "{e}");

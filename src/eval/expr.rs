@@ -201,6 +201,18 @@ impl Interp<'_> {
             .with_help(format!("call it: {name}(...)")));
         }
         let mut d = Diagnostic::error(ErrorKind::Name, span, format!("unknown name '{name}'"));
+        // T_{0,1} unknown but T_01 known: the same frames spelled otherwise.
+        let frames = crate::syntax::ident::name_frames(name);
+        if frames != crate::syntax::ident::NameFrames::None {
+            let base = crate::syntax::ident::base_name(name);
+            let same = |k: &&String| {
+                crate::syntax::ident::base_name(k) == base
+                    && crate::syntax::ident::name_frames(k) == frames
+            };
+            if let Some(other) = self.env.vars.keys().filter(same).min() {
+                return Err(d.with_help(format!("{other} names the same frames: use {other}")));
+            }
+        }
         // T_cb unknown but T_bc known: the inverse is one step away.
         if let crate::syntax::ident::NameFrames::Pair(a, b) =
             crate::syntax::ident::name_frames(name)
