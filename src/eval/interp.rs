@@ -45,6 +45,8 @@ pub struct Interp<'a> {
     /// Warnings of the current statement.
     pub warnings: Vec<Diagnostic>,
     pub(super) depth: usize,
+    /// The size an unbound `I` takes here (from the operand beside it).
+    pub(super) eye: Option<usize>,
 }
 
 /// How deep user functions may call each other.
@@ -59,6 +61,7 @@ impl<'a> Interp<'a> {
             frames,
             warnings: Vec::new(),
             depth: 0,
+            eye: None,
         }
     }
 
