@@ -45,18 +45,19 @@ impl Interp<'_> {
                 Kind::SO3 | Kind::SO2 => rotations,
                 _ => false,
             };
-            if !fits || e.name == target.name || e.from.moved || e.to.moved {
+            if !fits || e.name == target.name {
                 continue;
             }
-            edges.entry(e.from.name.clone()).or_default().push((
-                e.to.name.clone(),
+            let (from_frame, to_frame) = (e.from.to_string(), e.to.to_string());
+            edges.entry(from_frame.clone()).or_default().push((
+                to_frame.clone(),
                 Step {
                     name: e.name.clone(),
                     inverted: false,
                 },
             ));
-            edges.entry(e.to.name).or_default().push((
-                e.from.name,
+            edges.entry(to_frame).or_default().push((
+                from_frame,
                 Step {
                     name: e.name,
                     inverted: true,

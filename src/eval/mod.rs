@@ -8,6 +8,7 @@ pub mod env;
 mod expr;
 pub mod graph;
 pub mod interp;
+mod notation;
 mod substitute;
 
 pub use crate::values::{convert, ops, symbolic, value};

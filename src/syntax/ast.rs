@@ -125,6 +125,45 @@ pub enum ExprKind {
     Mech(MechSpec),
 }
 
+/// `x²`, `R⁻¹`: the power `x ^ 2`, `R ^ -1` written as a superscript (the
+/// text `sup` at `span`), for both parsers.
+pub(crate) fn superscript_power(base: Expr, sup: &str, span: Span) -> ExprKind {
+    const DIGITS: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
+    let mut n = 0.0;
+    for c in sup.chars() {
+        if let Some(d) = DIGITS.iter().position(|&x| x == c) {
+            n = n * 10.0 + d as f64;
+        }
+    }
+    let minus = sup.starts_with('⁻');
+    let digits = Span::new(
+        span.start + if minus { '⁻'.len_utf8() } else { 0 },
+        span.end,
+    );
+    let number = Expr {
+        kind: ExprKind::Number(n),
+        span: digits,
+    };
+    let rhs = if minus {
+        Expr {
+            kind: ExprKind::Unary {
+                op: UnOp::Neg,
+                operand: Box::new(number),
+            },
+            span,
+        }
+    } else {
+        number
+    };
+    ExprKind::Binary {
+        op: BinOp::Pow,
+        lhs: Box::new(base),
+        rhs: Box::new(rhs),
+        op_span: span,
+        implicit: false,
+    }
+}
+
 /// The body of a `mech < ... >` literal, as written; validated by
 /// [`crate::mech`].
 #[derive(Debug, Clone, PartialEq)]

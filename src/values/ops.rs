@@ -56,6 +56,16 @@ pub fn mul(l: &Value, r: &Value, kind: &Kind) -> Result<Value, String> {
     }
     // A point transformed by a homogeneous transform: T p = R p + t.
     if lm.shape() == (4, 4) && rm.shape() == (3, 1) {
+        // A transform moves the point (T x = R x + p, (3.65)); an se(3)
+        // matrix gives its velocity ([V] x = [ω] x + v, last row zero).
+        let last = |w: f64| (0..4).all(|j| (lm[(3, j)] - w * f64::from(j == 3)).abs() <= 1e-9);
+        if !last(1.0) && !last(0.0) {
+            return Err(
+                "a 4×4 matrix moves a point, T x = R x + p (3.65), only when its last row is (0, 0, 0, 1); \
+                 this one is not a transform (the transpose of a transform is not its inverse: use inv)"
+                    .into(),
+            );
+        }
         let t = Mat4::from_iterator(lm.iter().copied());
         let p = t.fixed_view::<3, 3>(0, 0) * crate::lie::Vec3::from_iterator(rm.iter().copied())
             + t.fixed_view::<3, 1>(0, 3);
@@ -213,6 +223,17 @@ pub fn pow(b: &Value, e: f64, kind: &Kind) -> Result<Value, String> {
         if n > 0 {
             base = &base * &base;
         }
+    }
+    // A power of a plain matrix is a plain matrix, even when it happens to
+    // be a group element (`[1, 2; 3, 4]^0` is I, not labelled SO(2)).
+    if let Kind::Matrix(..) = kind
+        && convert::classify(&acc).is_group()
+    {
+        let (r, c) = acc.shape();
+        return Ok(Value::Num {
+            kind: Kind::Matrix(Some(r), Some(c)),
+            m: acc,
+        });
     }
     Ok(out(kind, acc))
 }
