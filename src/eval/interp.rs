@@ -319,7 +319,7 @@ impl<'a> Interp<'a> {
             return Ok(m);
         }
         let measure = format!("DistanceTo{}", group.name().replace(['(', ')'], ""));
-        let fmt = |d: f64| crate::output::number::fmt_num(d, 4);
+        let fmt = |d: f64| crate::values::number::fmt_num(d, 4);
         match membership(&m, group) {
             Membership::Exact(x) => Ok(x),
             Membership::Projected(p, d) => {
