@@ -320,9 +320,20 @@ pub fn table() -> &'static [Builtin] {
     })
 }
 
-/// The builtin called `name` (book name or alias).
+/// The builtin called `name` (book name or alias); the first in table
+/// order when two share a name.
 pub fn lookup(name: &str) -> Option<&'static Builtin> {
-    table().iter().find(|b| b.names().any(|n| n == name))
+    static INDEX: OnceLock<std::collections::HashMap<&'static str, usize>> = OnceLock::new();
+    let index = INDEX.get_or_init(|| {
+        let mut index = std::collections::HashMap::new();
+        for (i, b) in table().iter().enumerate() {
+            for n in b.names() {
+                index.entry(n).or_insert(i);
+            }
+        }
+        index
+    });
+    index.get(name).map(|&i| &table()[i])
 }
 
 /// Every name that can be called, for completion and did-you-mean.

@@ -70,9 +70,6 @@ pub fn named_kind(name: &str, kind: &Kind) -> Kind {
 /// names, other shapes, and values already of a kind that is not a plain
 /// matrix.
 pub fn named_group(name: &str, kind: &Kind) -> Option<Kind> {
-    if !matches!(name_frames(name), NameFrames::Pair(..)) {
-        return None;
-    }
     let n = match kind {
         Kind::Matrix(Some(r), Some(c)) if r == c => *r,
         Kind::SO3 | Kind::SE2 | Kind::So3 | Kind::Se2 => 3,
@@ -80,6 +77,10 @@ pub fn named_group(name: &str, kind: &Kind) -> Option<Kind> {
         Kind::SO2 | Kind::So2 => 2,
         _ => return None,
     };
+    // The name's frames last: reading them allocates.
+    if !matches!(name_frames(name), NameFrames::Pair(..)) {
+        return None;
+    }
     match (book_letter(name)?, n) {
         ('R', 3) => Some(Kind::SO3),
         ('R', 2) => Some(Kind::SO2),

@@ -27,11 +27,12 @@ fn width(s: &str) -> usize {
 }
 
 /// Reusable scratch space of [`write_matrix_block`]: the cells' text, the
-/// cells' (start, fraction start, end) in it, and the column widths.
+/// cells' (start, end, integer width, fraction width) in it, and the
+/// column widths.
 #[derive(Default)]
 struct Scratch {
     buf: String,
-    cells: Vec<(usize, usize, usize)>,
+    cells: Vec<(usize, usize, usize, usize)>,
     int_w: Vec<usize>,
     frac_w: Vec<usize>,
 }
@@ -77,19 +78,19 @@ fn align(
                 .iter()
                 .position(|&b| b == b'.' || b == b'e')
                 .map_or(buf.len(), |k| start + k);
-            cells.push((start, split, buf.len()));
-            *iw = (*iw).max(width(&buf[start..split]));
-            *fw = (*fw).max(width(&buf[split..]));
+            let (wi, wf) = (width(&buf[start..split]), width(&buf[split..]));
+            cells.push((start, buf.len(), wi, wf));
+            *iw = (*iw).max(wi);
+            *fw = (*fw).max(wf);
         }
     }
     out.reserve(buf.len() + nrows * (2 * ncols + indent + 2) + 2);
     out.push('[');
-    let pad = |out: &mut String, mut n: usize| {
-        const SPACES: &str = "                                ";
-        while n > 0 {
-            let k = n.min(SPACES.len());
-            out.push_str(&SPACES[..k]);
-            n -= k;
+    // Padding is a few spaces at a time: pushed one by one into the
+    // reserved string, which is cheaper than copying slices.
+    let pad = |out: &mut String, n: usize| {
+        for _ in 0..n {
+            out.push(' ');
         }
     };
     for r in 0..nrows {
@@ -98,14 +99,12 @@ fn align(
             pad(out, indent + 1);
         }
         for j in 0..ncols {
-            let (start, split, end) = cells[r * ncols + j];
-            let (int, frac) = (&buf[start..split], &buf[split..end]);
-            pad(out, int_w[j] - width(int));
-            out.push_str(int);
-            out.push_str(frac);
+            let (start, end, wi, wf) = cells[r * ncols + j];
+            pad(out, int_w[j] - wi);
+            out.push_str(&buf[start..end]);
             if j + 1 < ncols {
                 out.push(',');
-                pad(out, frac_w[j] - width(frac) + 1);
+                pad(out, frac_w[j] - wf + 1);
             }
         }
     }
