@@ -98,9 +98,12 @@ fn run_sources(sources: &[(String, String)], mode: Mode, opts: &Opts) -> i32 {
         let keep_going = opts.keep_going || mode == Mode::Check;
         errors += session.run(src, mode, keep_going, |r| {
             statements += 1;
-            let text = r.stdout(&settings, src);
-            if !text.is_empty() && (mode == Mode::Run || settings.json) {
-                emit(&mut out, &text);
+            // `check` prints only errors and its summary (or JSON lines).
+            if mode == Mode::Run || settings.json {
+                let text = r.stdout(&settings, src);
+                if !text.is_empty() {
+                    emit(&mut out, &text);
+                }
             }
             let err = r.stderr(&settings, file, src);
             if !err.is_empty() {
