@@ -39,8 +39,8 @@ pub fn name_frames(name: &str) -> NameFrames {
 /// `T_{world,cam}` → `T`. A name without a frame subscript (`theta_1`,
 /// `x_max`, `alpha`) is returned whole.
 pub fn base_name(name: &str) -> &str {
-    match split_subscript(name) {
-        Some((base, _)) => base,
+    match split_raw(name) {
+        Some((base, _, _)) => base,
         None => name,
     }
 }
@@ -90,6 +90,21 @@ pub fn name_error(name: &str) -> Option<String> {
 
 /// Splits `name` into its base and frame subscript, if it has one.
 fn split_subscript(name: &str) -> Option<(&str, NameFrames)> {
+    let (base, frames, primes) = split_raw(name)?;
+    match frames.as_slice() {
+        [a] => Some((base, NameFrames::One(format!("{a}{primes}")))),
+        [a, b] => Some((
+            base,
+            NameFrames::Pair(a.to_string(), format!("{b}{primes}")),
+        )),
+        _ => None,
+    }
+}
+
+/// [`split_subscript`] without allocating: the base, the frames as slices
+/// of the name, and the primes after a braced subscript (`T_{a,b}''`),
+/// which belong to its last frame.
+fn split_raw(name: &str) -> Option<(&str, Runs<'_>, &str)> {
     // Braced form: `T_{world,cam}`, optionally followed by primes.
     if let Some(open) = name.rfind("_{") {
         let rest = &name[open + 2..];
@@ -98,19 +113,21 @@ fn split_subscript(name: &str) -> Option<(&str, NameFrames)> {
         if !primes.chars().all(|c| c == '\'') {
             return None;
         }
-        let parts: Vec<&str> = rest[..close].split(',').map(str::trim).collect();
-        if !parts.iter().all(|p| is_long_frame(p)) {
-            return None;
+        let mut parts = Runs {
+            n: 0,
+            first: ["", ""],
+        };
+        for p in rest[..close].split(',').map(str::trim) {
+            if !is_long_frame(p) {
+                return None;
+            }
+            if parts.n < 2 {
+                parts.first[parts.n] = p;
+            }
+            parts.n = (parts.n + 1).min(3);
         }
         let base = &name[..open];
-        return match parts.as_slice() {
-            [a] => Some((base, NameFrames::One(format!("{a}{primes}")))),
-            [a, b] => Some((
-                base,
-                NameFrames::Pair(a.to_string(), format!("{b}{primes}")),
-            )),
-            _ => None,
-        };
+        return matches!(parts.n, 1 | 2).then_some((base, parts, primes));
     }
 
     let underscore = name.rfind('_')?;
@@ -128,11 +145,9 @@ fn split_subscript(name: &str) -> Option<(&str, NameFrames)> {
             return None;
         }
     }
-    match frames?.as_slice() {
-        [a] => Some((base, NameFrames::One(a.to_string()))),
-        [a, b] => Some((base, NameFrames::Pair(a.to_string(), b.to_string()))),
-        _ => None,
-    }
+    frames
+        .filter(|f| matches!(f.len(), 1 | 2))
+        .map(|f| (base, f, ""))
 }
 
 /// The frames of a subscript, as slices of it: each frame is a run of
