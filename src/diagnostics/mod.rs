@@ -107,8 +107,4 @@ impl Diagnostic {
         self.help = Some(text.into());
         self
     }
-
-    pub fn is_error(&self) -> bool {
-        self.severity == Severity::Error
-    }
 }
