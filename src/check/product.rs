@@ -331,16 +331,17 @@ fn product_help(l: &Ty, r: &Ty, ops: Operands) -> String {
     match (&l.frames, &r.frames) {
         (Frames::Pair(a, b), Frames::Pair(c, d)) => {
             if b == d && a != c {
-                format!(
-                    "{rule}; did you mean inv({}) = {}?",
-                    ops.rhs.trim(),
-                    result_name(ops, d, c)
-                )
+                let (inverse, name) = (inverse_text(ops.rhs), result_name(ops, d, c));
+                if inverse == name {
+                    format!("{rule}; did you mean {name}?")
+                } else {
+                    format!("{rule}; did you mean {inverse} = {name}?")
+                }
             } else if c == a && b != d {
-                // T_sc * inv(T_sb): both from {s}.
+                // T_sb * T_sc: both from {s}.
                 format!(
-                    "{rule}; both start in {{{a}}}: the body-frame form is inv({}) * {} = {}{}",
-                    ops.lhs.trim(),
+                    "{rule}; both start in {{{a}}}: the body-frame form is {} * {} = {}{}",
+                    inverse_text(ops.lhs),
                     ops.rhs.trim(),
                     result_name(ops, b, d),
                     displacement_hint(ops)
