@@ -31,12 +31,14 @@
 //! | `Tᵀ` · anything, anything · `Tᵀ`         | frame error naming `inv(T)`   |
 //!
 //! A moved frame counts its displacements ({b} moved twice is printed {b'},
-//! like a frame moved once, but the algebra tells them apart). When
-//! the inner ends name the same frame moved a different number of times, the
+//! like a frame moved once, but the algebra tells them apart). When the
+//! inner ends name the same frame moved a different number of times, the
 //! less-moved factor is moved to match: frames rigidly attached to a moved
-//! frame move with it (`T_ab' = T_ab`'s frames displaced, so `T_ab' T_bc` is
-//! T_ac'). Composition thus fails only when the names differ, and the
-//! number of primes of the result is the same under every bracketing.
+//! frame move with it (`T_ab' T_bc` is T_ac'). Composition thus fails only
+//! when the names differ, and the count of the result is the same under
+//! every bracketing: the factors are the maps of a category whose objects
+//! are (frame, count), each factor standing for all its displaced copies,
+//! and a product takes the copies with the fewest displacements that meet.
 //!
 //! Back to tags ([`to_frames`]): a map {a}←{a} of a group element or adjoint
 //! stays the pair (the identity `inv(T_ab) T_ab` is {b}←{b}); of any other
