@@ -43,8 +43,8 @@
 //! Back to tags ([`to_frames`]): a map {a}←{a} of a group element or adjoint
 //! stays the pair (the identity `inv(T_ab) T_ab` is {b}←{b}); of any other
 //! kind it is a one-frame quantity in {a}, so conjugation closes:
-//! `T_ab [V_b] inv(T_ab)` is [V_a] in {a} (3.77) and `R_ab [ω_b] R_abᵀ` is
-//! [ω_a] (Prop. 3.5). A group element {a}←{a'} is a displacement in {a}.
+//! `T_ab [V_b] inv(T_ab)` is `[V_a]` in {a} (3.77) and `R_ab [ω_b] R_abᵀ` is
+//! `[ω_a]` (Prop. 3.5). A group element {a}←{a'} is a displacement in {a}.
 //!
 //! Untagged operators carry no frames, so a product of two of them cannot
 //! count its displacements: with two untagged factors side by side, the
@@ -97,7 +97,7 @@ pub enum Factor {
     /// An untagged operator: a displacement of whichever frame it meets.
     Untagged,
     /// An untagged so(3)/se(3) matrix: a quantity in whichever frame it
-    /// meets (`R_ab [ω] R_abᵀ` is [ω_a] for ω in {b}).
+    /// meets (`R_ab [ω] R_abᵀ` is `[ω_a]` for ω in {b}).
     Wildcard,
     /// The transpose of a transform {a}←{b}: no map between frames.
     Transposed(Frame, Frame),
@@ -112,7 +112,7 @@ pub enum Shape {
     Row,
     /// A square (or other) matrix acting by `*`.
     Operator,
-    /// A Lie-algebra matrix [ω], [V]: a one-frame quantity acting by `*`.
+    /// A Lie-algebra matrix `[ω]`, `[V]`: a one-frame quantity acting by `*`.
     Quantity,
 }
 

@@ -130,7 +130,7 @@ pub fn inverse(t: &Ty) -> Result<Ty, RuleError> {
 }
 
 /// `x.T` — the transpose of a rotation is its inverse (Prop. 3.1), so
-/// `R_ab.T` is R_ba; [Ad_T]ᵀ acts on wrenches (Prop. 3.17) and maps them
+/// `R_ab.T` is R_ba; `[Ad_T]ᵀ` acts on wrenches (Prop. 3.17) and maps them
 /// the other way; a vector's transpose is a row in the same frame, a
 /// one-frame matrix's transpose stays in its frame. The transpose of any
 /// other map {a}←{b} (a transform, a product) maps no frame to another: it
