@@ -128,6 +128,7 @@ pub fn bind(name: &str, ty: &Ty) -> Result<Bound, RuleError> {
     };
     let mut bound = Ty::new(kind, frames);
     bound.algebra = ty.algebra.clone();
+    bound.moves = ty.moves;
     Ok(Bound { ty: bound, warning })
 }
 

@@ -36,7 +36,7 @@ pub fn mul(l: &Ty, r: &Ty, ops: Operands) -> Result<Ty, RuleError> {
     } else {
         mul_kind(&l.kind, &r.kind, ops)?
     };
-    let frames = match algebra::product((&l.frames, &l.kind), (&r.frames, &r.kind), &kind) {
+    let (frames, moves) = match algebra::product(l, r, &kind) {
         Ok(f) => f,
         Err(Clash::Inner(x, y)) => {
             // A displacement in {a} is the map {a}←{a'}: name its frame {a}.
@@ -48,7 +48,9 @@ pub fn mul(l: &Ty, r: &Ty, ops: Operands) -> Result<Ty, RuleError> {
         }
         Err(Clash::Transposed { left }) => return Err(transposed_factor(l, r, left, ops)),
     };
-    Ok(conjugation(l, r, Ty::new(kind, frames)))
+    let mut out = Ty::new(kind, frames);
+    out.moves = moves;
+    Ok(conjugation(l, r, out))
 }
 
 /// What a factor contributes to a product of group elements and one

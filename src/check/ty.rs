@@ -406,6 +406,12 @@ pub struct Ty {
     /// conjugation g·X·g⁻¹ lands back in it when the frames close on one
     /// (`[V_s] = T [V_b] T⁻¹`, (3.77); Prop. 3.5). Known without numbers only.
     pub algebra: Option<Kind>,
+    /// For an untagged operator that is a product of untagged operators,
+    /// how many displacements it stands for when not the usual one (an
+    /// untagged rotation or transform is one displacement of the frame it
+    /// meets, an untagged [`Kind::So3`]/[`Kind::Se3`] matrix none), so that
+    /// `A * B * T_sb` moves {b} alike under every bracketing.
+    pub moves: Option<u32>,
 }
 
 impl Ty {
@@ -414,6 +420,7 @@ impl Ty {
             kind,
             frames,
             algebra: None,
+            moves: None,
         }
     }
     /// An untagged value of `kind`.
@@ -428,8 +435,7 @@ impl Ty {
     pub fn scaled(&self) -> Ty {
         Ty {
             kind: self.kind.scaled(),
-            frames: self.frames.clone(),
-            algebra: self.algebra.clone(),
+            ..self.clone()
         }
     }
 }
