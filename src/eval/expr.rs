@@ -34,7 +34,9 @@ pub(super) fn to_sym(v: &Value) -> Sym {
 /// is SO(3)); frames stay as the checker found them.
 pub(super) fn refine(ty: Ty, val: &Option<Value>) -> Ty {
     match val {
-        Some(v @ (Value::Num { .. } | Value::Tuple(_))) => Ty::new(v.kind(), ty.frames),
+        Some(v @ (Value::Num { .. } | Value::Tuple(_))) => {
+            crate::check::algebra::with_kind(&ty, v.kind())
+        }
         _ => ty,
     }
 }
