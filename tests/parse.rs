@@ -837,7 +837,7 @@ mod never_panics {
         "2.5", "T_ab", "x", "=", "given", ":", "mech", "<", ">", "R", "P", "#", "\n", " ", "{",
         "}", "_{", "links", "joints", "4R", "planar", "derive", ".5", "1e", "θ", "f(", "**",
         // The book's notation.
-        "ᵀ", "^T", "^{", "sin ", "cos", "0.", "1.e", "[[", "I", "T_01", "T_123", "e^",
+        "ᵀ", "^T", "^{", "sin ", "cos", "0.", "1.e", "[[", "I", "T_01", "T_123", "e^", "−", "²",
     ];
 
     fn program() -> impl Strategy<Value = String> {

@@ -283,7 +283,7 @@ impl Check<'_> {
         )
         .with_help(format!(
             "write `{a}, {sign}{b}` for two entries or `{a} {sign} {b}` for the {}",
-            if sign == "-" { "difference" } else { "sum" }
+            if sign == "+" { "sum" } else { "difference" }
         ))
     }
 
