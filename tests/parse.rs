@@ -214,6 +214,8 @@ fn juxtaposition_after_names_multiplies() {
         e.help.as_deref(),
         Some("write R[1, 2] to index, or R * [1, 2] to multiply")
     );
+    // Three entries cannot be an index: a product.
+    assert_eq!(p("R [1, 0, 0]"), "(j* R [1, 0, 0])");
     // Two numbers side by side are neither.
     let e = err("x = 1 0");
     assert_eq!(e.message, "missing operator between `1` and `0`");
