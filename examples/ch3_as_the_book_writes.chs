@@ -56,5 +56,6 @@ V_b = (0, 0, 1, 1, 0, 0)
 F_s = (0, 0, 2, 1, 3, 0)
 V_s = Ad(T_sb) V_b
 F_b = Ad(T_sb)^T F_s
-V_b^T F_b
-V_s^T F_s
+P_b = V_b^T F_b
+P_s = V_s^T F_s
+P_b - P_s

@@ -214,6 +214,8 @@ fn juxtaposition_after_names_multiplies() {
         e.help.as_deref(),
         Some("write R[1, 2] to index, or R * [1, 2] to multiply")
     );
+    // Three entries cannot be an index: a product.
+    assert_eq!(p("R [1, 0, 0]"), "(j* R [1, 0, 0])");
     // Two numbers side by side are neither.
     let e = err("x = 1 0");
     assert_eq!(e.message, "missing operator between `1` and `0`");
@@ -837,7 +839,7 @@ mod never_panics {
         "2.5", "T_ab", "x", "=", "given", ":", "mech", "<", ">", "R", "P", "#", "\n", " ", "{",
         "}", "_{", "links", "joints", "4R", "planar", "derive", ".5", "1e", "θ", "f(", "**",
         // The book's notation.
-        "ᵀ", "^T", "^{", "sin ", "cos", "0.", "1.e", "[[", "I", "T_01", "T_123", "e^",
+        "ᵀ", "^T", "^{", "sin ", "cos", "0.", "1.e", "[[", "I", "T_01", "T_123", "e^", "−", "²",
     ];
 
     fn program() -> impl Strategy<Value = String> {

@@ -194,13 +194,18 @@ impl P<'_> {
         let (mut lhs, mut depth) = match self.byte(start) {
             // `R^{T}`, `R^{-1}`: the group is the whole exponent.
             Some(b'{') if sup => self.group(b'}')?,
-            Some(b @ (b'-' | b'+')) => {
+            Some(b'-' | b'+') | Some(0xE2) if self.sign_at(start).is_some() => {
+                let (op, width) = self.sign_at(start)?;
                 self.spend()?;
-                self.pos += 1;
+                self.pos += width;
                 self.ws();
                 let (operand, d) = self.expr(BP_PREFIX - 1)?;
-                let op = if b == b'-' { UnOp::Neg } else { UnOp::Pos };
-                let span = self.span(start, start + 1).join(operand.span);
+                let op = if op == BinOp::Sub {
+                    UnOp::Neg
+                } else {
+                    UnOp::Pos
+                };
+                let span = self.span(start, start + width).join(operand.span);
                 let kind = ExprKind::Unary {
                     op,
                     operand: Box::new(operand),
@@ -218,8 +223,10 @@ impl P<'_> {
                 break;
             };
             let (op, bp, width) = match b {
-                b'+' => (Some(BinOp::Add), BP_ADD, 1),
-                b'-' => (Some(BinOp::Sub), BP_ADD, 1),
+                b'+' | b'-' | 0xE2 if self.sign_at(at).is_some() => {
+                    let (op, width) = self.sign_at(at)?;
+                    (Some(op), BP_ADD, width)
+                }
                 b'*' if self.byte(at + 1) == Some(b'*') => return None,
                 b'*' => (Some(BinOp::Mul), BP_MUL, 1),
                 b'/' => (Some(BinOp::Div), BP_MUL, 1),
@@ -239,7 +246,7 @@ impl P<'_> {
             self.sup = op == Some(BinOp::Pow);
             let (rhs, dr) = self.expr(if op == Some(BinOp::Pow) { bp - 1 } else { bp })?;
             let (op, implicit, op_span) = match op {
-                Some(op) => (op, false, self.span(at, at + 1)),
+                Some(op) => (op, false, self.span(at, at + width)),
                 None => (
                     BinOp::Mul,
                     true,

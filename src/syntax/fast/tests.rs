@@ -79,6 +79,7 @@ fn fast_path_agrees_with_pest() {
         "I + sin θ [w] + (1 - cos θ)[w]^2",
         "cos 30° + sqrt 2 + tan pi + asin x deg + acos θ_1'",
         "ans / deg",
+        "I + sin θ [w] + (1 − cos θ)[w]² − −x + [1 −2 3] − [1 − x]",
         "T_01 * T_12 * T_s1",
     ] {
         let (f, o) = agree(src);
@@ -92,7 +93,7 @@ const TOKENS: &[&str] = &[
     "derive", "mech", "<", ">", "\n", " ", "\t", "_{", "}", "f(", "**", ".T", "_",
     // The book's notation.
     "ᵀ", "^T", "^{", "sin", "cos ", "sqrt", "e^", "0.", "1.e", "-1.", "[[", "]]", "I", "T_01", "²",
-    "⁻¹", "⁻",
+    "−", " −", "⁻¹", "⁻",
 ];
 
 fn tokens() -> impl Strategy<Value = String> {
