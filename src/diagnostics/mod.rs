@@ -1,7 +1,7 @@
 //! Errors and warnings as data, and their rendering.
 //!
 //! Every stage (parse, check, evaluate) reports a [`Diagnostic`]: a kind from
-//! the contract's list (`syntax name type frame domain arity`), a message, a
+//! the contract's list (`syntax name type frame domain arity assert`), a message, a
 //! primary span, secondary labels (a frame error labels both operands and
 //! the operator) and an optional `help:` line. Rendering to text (with
 //! carets) and JSON lives in [`render`].
@@ -21,6 +21,8 @@ pub enum ErrorKind {
     Frame,
     Domain,
     Arity,
+    /// A failed `assert` (LANGUAGE.md §3).
+    Assert,
 }
 
 impl ErrorKind {
@@ -33,6 +35,7 @@ impl ErrorKind {
             ErrorKind::Frame => "frame",
             ErrorKind::Domain => "domain",
             ErrorKind::Arity => "arity",
+            ErrorKind::Assert => "assert",
         }
     }
 }

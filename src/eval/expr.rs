@@ -161,6 +161,12 @@ impl Interp<'_> {
             ExprKind::Paren(items) => self.paren(items, e.span),
             ExprKind::Brackets(rows) => self.brackets(rows, e.span),
             ExprKind::Mech(spec) => self.mech(spec, e.span),
+            ExprKind::Compare {
+                op,
+                lhs,
+                rhs,
+                op_span,
+            } => self.compare(*op, lhs, rhs, *op_span),
         }
     }
 

@@ -224,6 +224,18 @@ impl<'a> Interp<'a> {
                 o.prints = false;
                 Ok(o)
             }
+            StmtKind::Assert(cond) => {
+                self.assert(cond)?;
+                let mut o = out(
+                    vec![],
+                    Typed {
+                        ty: Ty::plain(Kind::Bool),
+                        val: None,
+                    },
+                );
+                o.prints = false;
+                Ok(o)
+            }
             StmtKind::Derive { target } => {
                 let (chain, t) = self.derive(target)?;
                 self.bind_value(&target.name, &t);

@@ -16,7 +16,7 @@
 //! queue, no backtracking state, no rule calls per character.
 
 use super::MAX_DEPTH;
-use super::ast::{BinOp, Expr, ExprKind, Ident, IndexArg, Span, Stmt, StmtKind, UnOp};
+use super::ast::{BinOp, CmpOp, Expr, ExprKind, Ident, IndexArg, Span, Stmt, StmtKind, UnOp};
 
 /// At most this many operators, postfixes and brackets per statement, so
 /// that both the tree depth and the recursion stay far below
@@ -24,6 +24,7 @@ use super::ast::{BinOp, Expr, ExprKind, Ident, IndexArg, Span, Stmt, StmtKind, U
 const BUDGET: usize = 100;
 
 /// Pratt binding powers, as in `parser.rs`'s `PRATT` (10 per level).
+const BP_CMP: u8 = 5;
 const BP_ADD: u8 = 10;
 const BP_MUL: u8 = 20;
 const BP_PREFIX: u8 = 30;
@@ -197,6 +198,12 @@ impl P<'_> {
     }
 
     fn statement(&mut self) -> Option<StmtKind> {
+        // `assert expr`: pest's `assert_stmt` comes first, so a statement
+        // starting with the keyword is an assertion or nothing.
+        if let Some(end) = self.keyword_at(0, "assert") {
+            self.pos = end;
+            return Some(StmtKind::Assert(self.expr(0)?.0));
+        }
         match self.byte(0)? {
             b'(' => {
                 if let Some(targets) = self.destructure_head() {
@@ -217,7 +224,7 @@ impl P<'_> {
                                 return Some(StmtKind::FnDef { name, params, body });
                             }
                         }
-                        Some(b'=') => {
+                        Some(b'=') if self.byte(self.pos + 1) != Some(b'=') => {
                             self.pos += 1;
                             let target = self.ident(0, end);
                             let value = self.expr(0)?.0;
@@ -288,6 +295,31 @@ impl P<'_> {
                 self.pos = save;
                 break;
             };
+            let cmp = match b {
+                b'=' if self.byte(at + 1) == Some(b'=') => Some((CmpOp::Eq, 2)),
+                b'~' if self.byte(at + 1) == Some(b'=') => Some((CmpOp::Approx, 2)),
+                0xE2 if self.src[at..].starts_with('≈') => Some((CmpOp::Approx, 3)),
+                _ => None,
+            };
+            if let Some((op, width)) = cmp {
+                if rbp >= BP_CMP {
+                    self.pos = save;
+                    break;
+                }
+                self.spend()?;
+                self.pos = at + width;
+                let (rhs, dr) = self.expr(BP_CMP)?;
+                let span = lhs.span.join(rhs.span);
+                let kind = ExprKind::Compare {
+                    op,
+                    lhs: Box::new(lhs),
+                    rhs: Box::new(rhs),
+                    op_span: self.span(at, at + width),
+                };
+                lhs = Expr { kind, span };
+                depth = depth.max(dr) + 1;
+                continue;
+            }
             let (op, bp, width) = match b {
                 b'+' => (Some(BinOp::Add), BP_ADD, 1),
                 b'-' => (Some(BinOp::Sub), BP_ADD, 1),
@@ -720,6 +752,9 @@ mod tests {
             "(w, theta) = axis_ang3(expc)",
             "M = [R, p; 0, 0, 0, 1]\n[1, 2,\n 3]",
             "exp([S] theta) * M[1, :] .T + 2 pi - 30° / θ(1) + true",
+            "assert T_ce ≈ T_ce_book",
+            "assert(x == 1 ~= y)\nb = x == -y",
+            "ok = [1, 2] ~= (1, 2)",
         ] {
             let (f, o) = agree(src);
             assert!(f == o && o > 0, "{src:?} takes the slow path");
@@ -729,7 +764,8 @@ mod tests {
     const TOKENS: &[&str] = &[
         "(", ")", "[", "]", ",", ";", "+", "-", "*", "/", "^", ".", "'", "deg", "°", "pi", "π",
         "1", "2.5", ".5", "1e", "1e-3", "T_ab", "x", "θ", "=", "==", ":", "true", "false", "given",
-        "derive", "mech", "<", ">", "\n", " ", "\t", "_{", "}", "f(", "**", ".T", "_",
+        "derive", "mech", "assert", "~=", "≈", "<", ">", "\n", " ", "\t", "_{", "}", "f(", "**",
+        ".T", "_",
     ];
 
     fn tokens() -> impl Strategy<Value = String> {
@@ -759,7 +795,11 @@ mod tests {
         )
         .prop_map(str::to_string);
         atom.prop_recursive(4, 32, 3, |inner| {
-            let op = prop::sample::select(&["+", "-", "*", "/", "^", " ", "", "^-", " - -"][..]);
+            let op = prop::sample::select(
+                &[
+                    "+", "-", "*", "/", "^", " ", "", "^-", " - -", " == ", "~=", "≈",
+                ][..],
+            );
             prop_oneof![
                 (inner.clone(), op, inner.clone()).prop_map(|(a, o, b)| format!("{a}{o}{b}")),
                 prop::collection::vec(inner.clone(), 1..3)
@@ -782,9 +822,10 @@ mod tests {
         }
 
         #[test]
-        fn random_expressions_agree(e in expr(), form in 0..4usize) {
+        fn random_expressions_agree(e in expr(), form in 0..5usize) {
             let src = match form {
                 0 => e,
+                4 => format!("assert {e}"),
                 1 => format!("y_1 = {e}"),
                 2 => format!("h(a, b) = {e}"),
                 _ => format!("(a, b) = {e}"),

@@ -16,7 +16,7 @@ use pest::pratt_parser::{Assoc, Op, PrattParser};
 use pest_derive::Parser;
 
 use super::MAX_DEPTH;
-use super::ast::{BinOp, Expr, ExprKind, Ident, IndexArg, Span, Stmt, StmtKind, UnOp};
+use super::ast::{BinOp, CmpOp, Expr, ExprKind, Ident, IndexArg, Span, Stmt, StmtKind, UnOp};
 use super::rules;
 use crate::diagnostics::{Diagnostic, ErrorKind};
 
@@ -25,6 +25,7 @@ use crate::diagnostics::{Diagnostic, ErrorKind};
 pub(crate) struct ChaslesParser;
 
 /// Precedence levels, loosest first; the same order as [`PRATT`].
+const PREC_CMP: u8 = 0;
 const PREC_ADD: u8 = 1;
 const PREC_MUL: u8 = 2;
 const PREC_PREFIX: u8 = 3;
@@ -32,6 +33,7 @@ const PREC_POW: u8 = 4;
 
 static PRATT: LazyLock<PrattParser<Rule>> = LazyLock::new(|| {
     PrattParser::new()
+        .op(Op::infix(Rule::eq, Assoc::Left) | Op::infix(Rule::approx, Assoc::Left))
         .op(Op::infix(Rule::add, Assoc::Left) | Op::infix(Rule::sub, Assoc::Left))
         .op(Op::infix(Rule::mul, Assoc::Left)
             | Op::infix(Rule::div, Assoc::Left)
@@ -109,6 +111,10 @@ enum Role {
 fn role(rule: Rule) -> Role {
     match rule {
         Rule::neg | Rule::pos => Role::Prefix,
+        Rule::eq | Rule::approx => Role::Infix {
+            prec: PREC_CMP,
+            right: false,
+        },
         Rule::add | Rule::sub => Role::Infix {
             prec: PREC_ADD,
             right: false,
@@ -225,6 +231,13 @@ impl Cx<'_> {
                 let ty = names.pop().ok_or_else(|| self.internal(whole))?;
                 Ok(StmtKind::Given { names, ty })
             }
+            Rule::assert_stmt => {
+                let p = form
+                    .into_inner()
+                    .find(|p| p.as_rule() == Rule::expr)
+                    .ok_or_else(|| self.internal(whole))?;
+                Ok(StmtKind::Assert(self.expr(p)?.0))
+            }
             Rule::derive_stmt => {
                 let p = form
                     .into_inner()
@@ -312,6 +325,21 @@ impl Cx<'_> {
                 let depth = dl.max(dr) + 1;
                 let op_span = self.span(op.as_span());
                 check_depth(depth, op_span)?;
+                let cmp = match op.as_rule() {
+                    Rule::eq => Some(CmpOp::Eq),
+                    Rule::approx => Some(CmpOp::Approx),
+                    _ => None,
+                };
+                if let Some(op) = cmp {
+                    let span = l.span.join(r.span);
+                    let kind = ExprKind::Compare {
+                        op,
+                        lhs: Box::new(l),
+                        rhs: Box::new(r),
+                        op_span,
+                    };
+                    return Ok((Expr { kind, span }, depth));
+                }
                 let (bop, implicit, op_span) = match op.as_rule() {
                     Rule::add => (BinOp::Add, false, op_span),
                     Rule::sub => (BinOp::Sub, false, op_span),

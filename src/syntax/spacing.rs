@@ -16,7 +16,7 @@ pub fn check(stmt: &Stmt, src: &str) -> Result<(), Diagnostic> {
         StmtKind::Assign { value, .. } | StmtKind::Destructure { value, .. } => {
             expr(value, src, false)
         }
-        StmtKind::FnDef { body, .. } => expr(body, src, false),
+        StmtKind::FnDef { body, .. } | StmtKind::Assert(body) => expr(body, src, false),
         StmtKind::Given { .. } | StmtKind::Derive { .. } => Ok(()),
     }
 }
@@ -44,6 +44,10 @@ fn expr(e: &Expr, src: &str, in_row: bool) -> Result<(), Diagnostic> {
             expr(rhs, src, false)
         }
         ExprKind::Unary { operand, .. } => expr(operand, src, false),
+        ExprKind::Compare { lhs, rhs, .. } => {
+            expr(lhs, src, in_row)?;
+            expr(rhs, src, in_row)
+        }
         ExprKind::Degrees(inner) => expr(inner, src, false),
         ExprKind::Call { args, .. } | ExprKind::Paren(args) => {
             args.iter().try_for_each(|a| expr(a, src, false))

@@ -1,0 +1,341 @@
+//! Comparisons and `assert` (LANGUAGE.md §3): `a == b` is exact, `a ≈ b`
+//! (typed `~=`) holds within 1e-9 relative, both give a bool; `assert cond`
+//! stops a script with an `assert` error that shows both sides. Without
+//! numbers (`chasles check`) only the kinds and frames of the two sides are
+//! checked: they must have the same shape and the same frames.
+//!
+//! [`equal`] is the one place that decides equality of two values; for
+//! symbolic sides it asks [`symbolic_equal`], the hook for a canonical form.
+
+use nalgebra::DMatrix;
+
+use super::expr::to_sym;
+use super::interp::{Interp, Typed};
+use super::symbolic::Sym;
+use super::value::Value;
+use crate::check::rules::{self, RuleError};
+use crate::check::ty::{Kind, Ty};
+use crate::diagnostics::{Diagnostic, ErrorKind};
+use crate::syntax::ast::{CmpOp, Expr, ExprKind, Span};
+
+/// The tolerance of `a ≈ b`: every entry within 1e-9 · max(1, |a|∞, |b|∞).
+pub const APPROX_TOL: f64 = 1e-9;
+
+/// How `op` reads in messages.
+fn op_text(op: CmpOp) -> &'static str {
+    match op {
+        CmpOp::Eq => "==",
+        CmpOp::Approx => "≈",
+    }
+}
+
+/// Whether `a op b` holds: `Ok(Some(..))` decided, `Ok(None)` undecided
+/// (symbolic sides the canonical form cannot settle), `Err` a message when
+/// the two cannot be compared (different shapes, mechanisms).
+pub fn equal(a: &Value, b: &Value, op: CmpOp) -> Result<Option<bool>, String> {
+    match (a, b) {
+        (Value::Sym(_), _) | (_, Value::Sym(_)) => Ok(symbolic_equal(&to_sym(a), &to_sym(b), op)),
+        (Value::Num { m: x, .. }, Value::Num { m: y, .. }) => {
+            if x.shape() != y.shape() {
+                return Err(format!(
+                    "cannot compare {} with {}",
+                    a.kind().a(),
+                    b.kind().a()
+                ));
+            }
+            Ok(Some(match op {
+                CmpOp::Eq => x == y,
+                CmpOp::Approx => approx(x, y),
+            }))
+        }
+        (Value::Bool(x), Value::Bool(y)) => Ok(Some(x == y)),
+        (Value::Tuple(xs), Value::Tuple(ys)) if xs.len() == ys.len() => {
+            let mut all = Some(true);
+            for (x, y) in xs.iter().zip(ys) {
+                match equal(x, y, op)? {
+                    Some(false) => return Ok(Some(false)),
+                    Some(true) => {}
+                    None => all = None,
+                }
+            }
+            Ok(all)
+        }
+        _ => Err(format!(
+            "cannot compare {} with {}",
+            a.kind().a(),
+            b.kind().a()
+        )),
+    }
+}
+
+/// Equality of symbolic expressions (LANGUAGE.md §7). Today it is
+/// structural: equal trees are equal, and anything else is undecided
+/// (`None`). A canonical form decides more pairs by extending this one
+/// function.
+pub fn symbolic_equal(a: &Sym, b: &Sym, _op: CmpOp) -> Option<bool> {
+    (a == b).then_some(true)
+}
+
+/// Entrywise within [`APPROX_TOL`] relative to the larger side (absolute
+/// near zero); infinite entries must agree exactly, NaN never does.
+fn approx(x: &DMatrix<f64>, y: &DMatrix<f64>) -> bool {
+    let scale = x
+        .iter()
+        .chain(y.iter())
+        .filter(|v| v.is_finite())
+        .fold(1.0f64, |s, v| s.max(v.abs()));
+    x.iter().zip(y.iter()).all(|(a, b)| {
+        if a.is_finite() && b.is_finite() {
+            (a - b).abs() <= APPROX_TOL * scale
+        } else {
+            a == b
+        }
+    })
+}
+
+/// The largest entrywise difference of two numeric values of one shape.
+pub fn largest_difference(a: &Value, b: &Value) -> Option<f64> {
+    match (a, b) {
+        (Value::Num { m: x, .. }, Value::Num { m: y, .. }) if x.shape() == y.shape() => {
+            Some(x.iter().zip(y.iter()).fold(0.0f64, |d, (p, q)| {
+                let e = (p - q).abs();
+                if e.is_nan() { f64::NAN } else { d.max(e) }
+            }))
+        }
+        _ => None,
+    }
+}
+
+/// The static rule: both sides of one shape (when known) and one frame
+/// tag (or one untagged); the result is a bool.
+pub fn compare_rule(l: &Ty, r: &Ty) -> Result<Ty, RuleError> {
+    let type_error = |message: String| RuleError {
+        kind: Some(ErrorKind::Type),
+        message,
+        ..RuleError::default()
+    };
+    let comparable = match (&l.kind, &r.kind) {
+        (Kind::Unknown, _) | (_, Kind::Unknown) => true,
+        (Kind::Bool, Kind::Bool) => true,
+        (Kind::Tuple(a), Kind::Tuple(b)) => a.len() == b.len(),
+        (Kind::Mechanism | Kind::Function, _) | (_, Kind::Mechanism | Kind::Function) => false,
+        (a, b) => match (a.shape(), b.shape()) {
+            (Some((ar, ac)), Some((br, bc))) => agree(ar, br) && agree(ac, bc),
+            _ => false,
+        },
+    };
+    if !comparable {
+        let mut e = type_error(format!("cannot compare {} with {}", l.kind.a(), r.kind.a()));
+        if matches!(l.kind, Kind::Mechanism) || matches!(r.kind, Kind::Mechanism) {
+            e.help = Some("compare their degrees of freedom: dof(m1) == dof(m2)".into());
+        } else {
+            e.help = Some("both sides of == and ≈ must have the same shape".into());
+        }
+        return Err(e);
+    }
+    rules::same_frames("compare", l, r)?;
+    Ok(Ty::plain(Kind::Bool))
+}
+
+fn agree(a: Option<usize>, b: Option<usize>) -> bool {
+    a.is_none() || b.is_none() || a == b
+}
+
+/// Both sides of a comparison, checked and evaluated.
+struct Sides {
+    l: Typed,
+    r: Typed,
+    verdict: Option<bool>,
+}
+
+impl Interp<'_> {
+    /// `lhs == rhs`, `lhs ≈ rhs`: a bool.
+    pub(super) fn compare(
+        &mut self,
+        op: CmpOp,
+        lhs: &Expr,
+        rhs: &Expr,
+        op_span: Span,
+    ) -> Result<Typed, Diagnostic> {
+        let sides = self.sides(op, lhs, rhs, op_span)?;
+        Ok(Typed {
+            ty: Ty::plain(Kind::Bool),
+            val: sides.verdict.map(Value::Bool),
+        })
+    }
+
+    fn sides(
+        &mut self,
+        op: CmpOp,
+        lhs: &Expr,
+        rhs: &Expr,
+        op_span: Span,
+    ) -> Result<Sides, Diagnostic> {
+        let l = self.expr(lhs)?;
+        let r = self.expr(rhs)?;
+        if let Err(e) = compare_rule(&l.ty, &r.ty) {
+            self.rule_failure(e, op_span, Some(lhs.span), Some(rhs.span), Some(op_span))?;
+        }
+        let verdict = match (&l.val, &r.val) {
+            (Some(a), Some(b)) => match equal(a, b, op) {
+                Ok(Some(v)) => Some(v),
+                Ok(None) => {
+                    return Err(Diagnostic::error(
+                        ErrorKind::Domain,
+                        op_span,
+                        format!(
+                            "cannot decide `{} {} {}` without numbers",
+                            self.text(lhs.span).trim(),
+                            op_text(op),
+                            self.text(rhs.span).trim()
+                        ),
+                    )
+                    .with_help("bind numbers to the given names, then compare"));
+                }
+                Err(m) => return Err(Diagnostic::error(ErrorKind::Type, op_span, m)),
+            },
+            _ => None,
+        };
+        Ok(Sides { l, r, verdict })
+    }
+
+    /// `assert cond`: Ok when the condition holds (or, in `check`, when it
+    /// is well typed); an `assert` error showing both sides when it fails.
+    pub(super) fn assert(&mut self, cond: &Expr) -> Result<(), Diagnostic> {
+        if let ExprKind::Compare {
+            op,
+            lhs,
+            rhs,
+            op_span,
+        } = &cond.kind
+        {
+            let s = self.sides(*op, lhs, rhs, *op_span)?;
+            if s.verdict != Some(false) {
+                return Ok(());
+            }
+            let (Some(a), Some(b)) = (&s.l.val, &s.r.val) else {
+                return Ok(());
+            };
+            return Err(self.assert_failed(cond, *op, (lhs, a), (rhs, b)));
+        }
+        let t = self.expr(cond)?;
+        if !matches!(t.ty.kind, Kind::Bool | Kind::Unknown) {
+            return Err(Diagnostic::error(
+                ErrorKind::Type,
+                cond.span,
+                format!("assert needs a condition, not {}", t.ty.kind.a()),
+            )
+            .with_help("compare two values: assert a == b, or assert a ≈ b (typed ~=)"));
+        }
+        match t.val {
+            Some(Value::Bool(false)) => Err(Diagnostic::error(
+                ErrorKind::Assert,
+                cond.span,
+                format!(
+                    "assertion failed: `{}` is false",
+                    self.text(cond.span).trim()
+                ),
+            )),
+            _ => Ok(()),
+        }
+    }
+
+    /// The error of a failed comparison: both sides' values under them,
+    /// the largest difference, and both values in the help line (which
+    /// JSON carries too).
+    fn assert_failed(
+        &self,
+        cond: &Expr,
+        op: CmpOp,
+        (lhs, a): (&Expr, &Value),
+        (rhs, b): (&Expr, &Value),
+    ) -> Diagnostic {
+        // `==` failing by a rounding error needs every digit to be seen.
+        let digits = if op == CmpOp::Eq { 17 } else { 10 };
+        let show = |v: &Value| crate::output::text::inline(v, digits);
+        let mut message = format!("assertion failed: `{}`", self.text(cond.span).trim());
+        if let Some(d) = largest_difference(a, b) {
+            let d = if (1e-3..1e6).contains(&d) {
+                crate::output::number::fmt_num(d, 4)
+            } else {
+                format!("{d:.3e}")
+            };
+            message.push_str(&match op {
+                CmpOp::Eq => format!(" (largest difference {d})"),
+                CmpOp::Approx => {
+                    format!(" (largest difference {d}; ≈ allows {APPROX_TOL:e} relative)")
+                }
+            });
+        }
+        // Short values stand under their side; long ones only in the help.
+        let label = |side: &str, v: &Value| {
+            let text = show(v);
+            if text.chars().count() <= 40 {
+                format!("{side}: {text}")
+            } else {
+                side.to_string()
+            }
+        };
+        Diagnostic::error(ErrorKind::Assert, lhs.span, message)
+            .with_primary_label(label("left", a))
+            .with_label(rhs.span, label("right", b))
+            .with_help(format!("left = {}; right = {}", show(a), show(b)))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn v(xs: &[f64]) -> Value {
+        Value::vector(Kind::Vector(Some(xs.len())), xs)
+    }
+
+    #[test]
+    fn exact_and_approximate() {
+        let a = v(&[1.0, 2.0]);
+        let b = v(&[1.0, 2.0 + 1e-12]);
+        assert_eq!(equal(&a, &b, CmpOp::Eq), Ok(Some(false)));
+        assert_eq!(equal(&a, &b, CmpOp::Approx), Ok(Some(true)));
+        let c = v(&[1.0, 2.0 + 1e-6]);
+        assert_eq!(equal(&a, &c, CmpOp::Approx), Ok(Some(false)));
+        // Relative to the larger side: 1e12 and 1e12 + 1 agree.
+        assert_eq!(
+            equal(&v(&[1e12]), &v(&[1e12 + 1.0]), CmpOp::Approx),
+            Ok(Some(true))
+        );
+        assert!(equal(&a, &v(&[1.0, 2.0, 3.0]), CmpOp::Eq).is_err());
+        assert_eq!(
+            equal(&v(&[f64::NAN]), &v(&[f64::NAN]), CmpOp::Approx),
+            Ok(Some(false))
+        );
+        assert_eq!(
+            equal(&v(&[f64::INFINITY]), &v(&[f64::INFINITY]), CmpOp::Approx),
+            Ok(Some(true))
+        );
+    }
+
+    #[test]
+    fn symbols_compare_structurally() {
+        let t = Sym::Name("t".into());
+        assert_eq!(symbolic_equal(&t, &t.clone(), CmpOp::Eq), Some(true));
+        assert_eq!(symbolic_equal(&t, &Sym::Name("u".into()), CmpOp::Eq), None);
+    }
+
+    #[test]
+    fn rule_needs_one_shape_and_frame() {
+        let v3 = Ty::plain(Kind::Vector(Some(3)));
+        assert!(compare_rule(&v3, &Ty::plain(Kind::SO3)).is_err());
+        assert!(
+            compare_rule(
+                &Ty::plain(Kind::SO3),
+                &Ty::plain(Kind::Matrix(Some(3), Some(3)))
+            )
+            .is_ok()
+        );
+        let a = Ty::new(Kind::SE3, crate::check::ty::Frames::pair("a", "b"));
+        let c = Ty::new(Kind::SE3, crate::check::ty::Frames::pair("a", "c"));
+        let e = compare_rule(&a, &c).unwrap_err();
+        assert_eq!(e.kind, Some(ErrorKind::Frame));
+    }
+}
