@@ -637,6 +637,5 @@ pub(super) fn builtins() -> Vec<Builtin> {
             "the square root of a negative number is not real"
         ),
         scalar_fn!("abs", "absolute value", f64::abs, any, ""),
-        scalar_fn!("rad2deg", "radians to degrees", f64::to_degrees, any, ""),
     ]
 }

@@ -194,6 +194,13 @@ impl Interp<'_> {
                     val: self.running().then(|| Value::scalar(std::f64::consts::E)),
                 });
             }
+            // The unit of `pi/6 rad`: angles are in radians already.
+            "rad" => {
+                return Ok(Typed {
+                    ty: Ty::scalar(),
+                    val: self.running().then(|| Value::scalar(1.0)),
+                });
+            }
             _ => {}
         }
         if builtins::lookup(name).is_some() || self.env.fns.contains_key(name) {

@@ -1,0 +1,75 @@
+//! Angle units and conversions (LANGUAGE.md §8): `deg2rad` and `rad2deg`
+//! on numbers, vectors and matrices, entry by entry. The units themselves
+//! are words of the language: `30 deg` and `30°` are postfix (the grammar),
+//! `pi/6 rad` multiplies by `rad` = 1 (the evaluator's constants).
+
+use std::f64::consts::PI;
+
+use super::{Area, ArgError, Args, Builtin, Typing};
+use crate::check::rules::scaled_kind;
+use crate::check::ty::{Kind, Ty};
+use crate::diagnostics::{Diagnostic, ErrorKind};
+use crate::eval::value::Value;
+
+/// A number, vector or matrix in, the same shape out (a group element
+/// scaled is no longer one); frames are kept.
+fn entrywise_rule(args: &[Ty]) -> Result<Ty, ArgError> {
+    let k = &args[0].kind;
+    if k.shape().is_none() {
+        return Err(ArgError::type_of(
+            0,
+            format!("angles are numbers, vectors or matrices, not {}", k.a()),
+        ));
+    }
+    let kind = match k {
+        Kind::Twist | Kind::Screw | Kind::Wrench => Kind::Vector(Some(6)),
+        other => scaled_kind(other),
+    };
+    Ok(Ty::new(kind, args[0].frames.clone()))
+}
+
+/// Every entry of argument 0 times `factor`.
+fn scale(a: &mut Args, factor: f64) -> Result<Value, Diagnostic> {
+    let m = a.mat(0)?.clone() * factor;
+    let kind = match a.value(0).kind() {
+        Kind::Twist | Kind::Screw | Kind::Wrench => Kind::Vector(Some(6)),
+        k => scaled_kind(&k),
+    };
+    if m.iter().any(|x| x.is_nan()) {
+        return Err(a.error(0, ErrorKind::Domain, "an entry is NaN"));
+    }
+    Ok(Value::Num { kind, m })
+}
+
+pub(super) fn builtins() -> Vec<Builtin> {
+    vec![
+        Builtin {
+            name: "deg2rad",
+            aliases: &["radians"],
+            signature: "deg2rad(x: scalar | vector | matrix) -> same shape",
+            section: "—",
+            doc: "degrees to radians, entry by entry (the same as `x deg`)",
+            example: "deg2rad((30, 45, 90))",
+            area: Area::Scalars,
+            typing: Typing::Custom {
+                arity: (1, 1),
+                rule: entrywise_rule,
+            },
+            eval: |a| scale(a, PI / 180.0),
+        },
+        Builtin {
+            name: "rad2deg",
+            aliases: &["degrees"],
+            signature: "rad2deg(x: scalar | vector | matrix) -> same shape",
+            section: "—",
+            doc: "radians to degrees, entry by entry",
+            example: "rad2deg((pi/6, pi/4, pi/2))",
+            area: Area::Scalars,
+            typing: Typing::Custom {
+                arity: (1, 1),
+                rule: entrywise_rule,
+            },
+            eval: |a| scale(a, 180.0 / PI),
+        },
+    ]
+}
