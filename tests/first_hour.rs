@@ -67,3 +67,35 @@ fn angle_units_and_conversions() {
     assert_eq!(j[5]["type"], "matrix");
     assert!((j[5]["value"][0][1].as_f64().unwrap() - std::f64::consts::PI).abs() < 1e-15);
 }
+
+/// At θ = π the logs follow the book's order (3.58), (3.59), (3.60) — the
+/// axis the book's MatrixLog3 gives — and a note says −ω̂ is as valid.
+#[test]
+fn half_turn_logs_follow_the_book() {
+    let (code, out, err) = run(&["--json", "-e", "MatrixLog3(Rot((0.8, 0, -0.6), pi))"]);
+    assert_eq!(code, 0);
+    let j: serde_json::Value = serde_json::from_str(out.trim()).unwrap();
+    let v: Vec<f64> = j["value"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect();
+    let pi = std::f64::consts::PI;
+    // (3.58): ω̂ = (r13, r23, 1 + r33)/√(2(1 + r33)) = (−0.8, 0, 0.6).
+    for (x, want) in v.iter().zip([-0.8 * pi, 0.0, 0.6 * pi]) {
+        assert!((x - want).abs() < 1e-14, "{v:?}");
+    }
+    assert!(
+        err.contains(
+            "note: θ = π: ω̂ is the book's, from (3.58) (§3.2.3.3); −ω̂ is an equally valid answer"
+        ),
+        "{err}"
+    );
+    let (_, _, err) = run(&["-e", "log(RpToTrans(Rot((0.6, -0.8, 0), pi), (1, 2, 3)))"]);
+    assert!(err.contains("from (3.59)"), "{err}");
+    let (_, _, err) = run(&["-e", "log(Rotx(pi))"]);
+    assert!(err.contains("from (3.60)"), "{err}");
+    let (_, _, err) = run(&["-e", "log(Rotx(3))"]);
+    assert!(err.is_empty(), "{err}");
+}

@@ -45,6 +45,8 @@ impl ErrorKind {
 pub enum Severity {
     Error,
     Warning,
+    /// A remark on a correct result (printed as `note:`).
+    Note,
 }
 
 /// A secondary label: a span with a short note under it.
@@ -79,6 +81,14 @@ impl Diagnostic {
             primary_label: String::new(),
             labels: Vec::new(),
             help: None,
+        }
+    }
+
+    /// A note on a correct result at `span` (printed as `note:`).
+    pub fn note(kind: ErrorKind, span: Span, message: impl Into<String>) -> Diagnostic {
+        Diagnostic {
+            severity: Severity::Note,
+            ..Diagnostic::error(kind, span, message)
         }
     }
 

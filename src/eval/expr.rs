@@ -388,6 +388,7 @@ impl Interp<'_> {
             warnings: &mut self.warnings,
         };
         let v = (b.eval)(&mut a)?;
+        builtins::notes::after_call(&mut a, &v);
         not_finite_group(&v, b.name, span)?;
         let val = Some(v);
         Ok(Typed {
