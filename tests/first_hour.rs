@@ -99,3 +99,21 @@ fn half_turn_logs_follow_the_book() {
     let (_, _, err) = run(&["-e", "log(Rotx(3))"]);
     assert!(err.is_empty(), "{err}");
 }
+
+#[test]
+fn screw_to_axis_normalises_with_a_warning() {
+    let (code, out, err) = run(&["-e", "ScrewToAxis((0, 0, 0), (0, 0, 2), 0.5)"]);
+    assert_eq!(code, 0);
+    assert_eq!(out, "(0, 0, 1, 0, 0, 0.5)  : screw axis\n");
+    assert!(
+        err.contains(
+            "warning: ŝ = (0, 0, 2) is not a unit vector (‖ŝ‖ = 2); normalised to (0, 0, 1)"
+        ),
+        "{err}"
+    );
+    let (_, _, err) = run(&["-e", "ScrewToAxis((0, 0, 0), (0, 0, 1), 0.5)"]);
+    assert!(err.is_empty(), "{err}");
+    let (code, _, err) = run(&["-e", "ScrewToAxis((0, 0, 0), (0, 0, 0), 0.5)"]);
+    assert_eq!(code, 1);
+    assert!(err.contains("domain error"), "{err}");
+}

@@ -56,6 +56,40 @@ fn displacement_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     Ok(Ty::new(if planar { Kind::SE2 } else { Kind::SE3 }, frames))
 }
 
+/// ScrewToAxis(q, ŝ, h): a direction that is not a unit vector is
+/// normalised, with a warning (S must be a unit screw axis, §3.3.2.2).
+fn eval_screw_to_axis(a: &mut Args) -> Result<Value, Diagnostic> {
+    let (q, s, h) = (a.vec3(0)?, a.vec3(1)?, a.scalar(2)?);
+    let n = s.norm();
+    if n == 0.0 || !n.is_finite() {
+        return Err(a.error(
+            1,
+            ErrorKind::Domain,
+            "the screw direction ŝ must be a nonzero unit vector",
+        ));
+    }
+    if (n - 1.0).abs() > 1e-12 {
+        let shown = |v: &Vec3| crate::output::text::inline(&v3val(v), 4);
+        a.warnings.push(
+            Diagnostic::warning(
+                ErrorKind::Domain,
+                a.spans.get(1).copied().unwrap_or(a.call_span),
+                format!(
+                    "ŝ = {} is not a unit vector (‖ŝ‖ = {}); normalised to {}",
+                    shown(&s),
+                    crate::output::number::fmt_num(n, 6),
+                    shown(&(s / n))
+                ),
+            )
+            .with_help("a screw axis has a unit direction ŝ (§3.3.2.2)"),
+        );
+    }
+    Ok(Value::num(
+        Kind::Screw,
+        &se3::screw_to_axis(&q, &(s / n), h),
+    ))
+}
+
 fn eval_displacement(a: &mut Args) -> Result<Value, Diagnostic> {
     if a.mat(0)?.shape() == (3, 3) {
         let (tb, tc) = (a.se2(0)?, a.se2(1)?);
@@ -286,12 +320,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: screw,
                 frames: FrameRule::Shared,
             },
-            eval: |a| {
-                Ok(Value::num(
-                    Kind::Screw,
-                    &se3::screw_to_axis(&a.vec3(0)?, &a.vec3(1)?, a.scalar(2)?),
-                ))
-            },
+            eval: eval_screw_to_axis,
         },
         Builtin {
             name: "screw",
