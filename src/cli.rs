@@ -139,7 +139,6 @@ fn run_sources(sources: &[(String, String)], mode: Mode, opts: &Opts) -> i32 {
         digits: opts.digits as usize,
         json: opts.json,
         exact: opts.exact,
-        ..Settings::default()
     };
     let mut session = Session::new(settings);
     let stdout = std::io::stdout();
@@ -239,7 +238,6 @@ pub fn main_with_args(args: Vec<String>) -> i32 {
                     digits: cli.opts.digits as usize,
                     json: cli.opts.json,
                     exact: cli.opts.exact,
-                    ..Settings::default()
                 })
             } else {
                 match load(&["-".to_string()]) {

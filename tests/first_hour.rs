@@ -126,3 +126,132 @@ fn exact_on_the_command_line() {
     let (_, help, _) = run(&["--help"]);
     assert!(help.contains("--exact"), "{help}");
 }
+
+mod repl {
+    use chasles::repl::commands::execute;
+    use chasles::session::{Session, Settings};
+
+    #[test]
+    fn help_exit_and_quit_without_the_colon() {
+        let mut s = Session::new(Settings::default());
+        assert!(execute(&mut s, "help").out.contains("commands:"));
+        assert!(execute(&mut s, "help Ad").out.starts_with("Adjoint("));
+        assert!(execute(&mut s, "quit").quit);
+        assert!(execute(&mut s, "exit").quit);
+        assert!(execute(&mut s, "exit()").quit);
+        // A bound name is a value, not a command.
+        execute(&mut s, "help = 3");
+        assert_eq!(execute(&mut s, "help").out, "3\n");
+    }
+
+    #[test]
+    fn save_writes_a_script_that_reruns_to_the_same_results() {
+        let dir = std::env::temp_dir().join(format!("chasles-save-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let file = dir.join("session.chs");
+        let name = file.display().to_string();
+        let mut s = Session::new(Settings::default());
+        let mut printed = String::new();
+        for input in [
+            "T_sb = RpToTrans(Rotz(30 deg), (1, 2, 0))",
+            "T_sc = T_sb * T_zz",
+            "T_bc = Trans((0, 0, 1)); T_sc = T_sb * T_bc",
+            "M = [1, 2\n3, 4]",
+            "inv(",
+            "M * 2",
+            "ans",
+            "given t : scalar",
+            "f(x) = x^2 + 1",
+            "f(3)",
+        ] {
+            printed.push_str(&execute(&mut s, input).out);
+        }
+        let hist = execute(&mut s, ":history").out;
+        assert!(hist.starts_with("1  T_sb = RpToTrans"), "{hist}");
+        assert!(!hist.contains("T_zz") && !hist.contains("inv("), "{hist}");
+        assert!(hist.contains("4  M = [1, 2\n   3, 4]"), "{hist}");
+
+        let r = execute(&mut s, &format!(":save {name}"));
+        assert_eq!(r.out, format!("saved 9 statements to {name}\n"), "{r:?}");
+        let rerun = std::process::Command::new(env!("CARGO_BIN_EXE_chasles"))
+            .args(["run", &name])
+            .output()
+            .unwrap();
+        assert!(rerun.status.success());
+        assert_eq!(String::from_utf8_lossy(&rerun.stdout), printed);
+
+        // An existing file is kept unless :save! is used.
+        execute(&mut s, "x = 1");
+        let r = execute(&mut s, &format!(":save {name}"));
+        assert!(r.err.contains("exists; :save! "), "{r:?}");
+        assert!(!std::fs::read_to_string(&file).unwrap().contains("x = 1"));
+        let r = execute(&mut s, &format!(":save! {name}"));
+        assert!(r.err.is_empty(), "{r:?}");
+        assert!(std::fs::read_to_string(&file).unwrap().ends_with("x = 1\n"));
+        // No temporary file is left beside it.
+        assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 1);
+        assert!(!execute(&mut s, ":save").err.is_empty());
+        execute(&mut s, ":reset");
+        assert!(execute(&mut s, ":history").out.starts_with("no statements"));
+        std::fs::remove_dir_all(&dir).ok();
+    }
+}
+
+/// Did-you-mean names what does what was asked; habits get the chasles way.
+#[test]
+fn hints_point_the_right_way() {
+    for (src, want) in [
+        ("RotToQuat(Rotz(1))", "did you mean quat(R)?"),
+        ("quat2rotm((1, 0, 0, 0))", "did you mean rot_quat(q)?"),
+        ("rotm2eul(Rotz(1))", "did you mean euler_zyx(R)?"),
+        ("sind(30)", "write sin(30 deg)"),
+        ("syms t1 t2", "given t1, t2 : scalar"),
+        ("format long", ":digits N"),
+        (
+            "np.array([1, 2])",
+            "no `np` prefix: write the array directly",
+        ),
+        ("quit", ":quit"),
+        ("exit", ":quit"),
+        ("help", ":help NAME"),
+        ("import numpy as np", "nothing to import"),
+    ] {
+        let (code, _, err) = run(&["-e", src]);
+        assert_eq!(code, 1, "{src}");
+        let help = err
+            .lines()
+            .find(|l| l.trim_start().starts_with("= help:"))
+            .unwrap_or_default();
+        assert!(help.contains(want), "{src}: {err}");
+    }
+}
+
+/// `:help` cites the seed's numbering, and every keyword, unit and command
+/// has help (LANGUAGE.md §11).
+#[test]
+fn help_for_everything() {
+    use chasles::repl::commands::{COMMANDS, execute};
+    use chasles::session::{Session, Settings};
+    let mut s = Session::new(Settings::default());
+    let mut help = |w: &str| {
+        let r = execute(&mut s, &format!(":help {w}"));
+        assert!(r.err.is_empty(), ":help {w}: {}", r.err);
+        r.out
+    };
+    assert!(help("Ad").contains("Definition 3.6"));
+    assert!(help("MatrixExp6").contains("Proposition 3.16"));
+    assert!(help("RotInv").contains("Prop. 3.1"));
+    assert!(help("exp").contains("Prop. 3.16"));
+    for w in [
+        "deg", "°", "rad", "mech", "given", "ans", "derive", "assert", "==", "≈", "~=", "pi", "π",
+        "e", "inf", "I", "true", "false", "^T", "^-1",
+    ] {
+        assert!(!help(w).trim().is_empty(), "{w}");
+    }
+    for c in COMMANDS {
+        assert!(!help(c.name).trim().is_empty(), "{}", c.name);
+        assert!(help(&format!(":{}", c.name)).starts_with(':'), "{}", c.name);
+    }
+    assert!(help("deg").contains("Rotz(30 deg)"));
+    assert!(help("").contains("words:  :help given"));
+}

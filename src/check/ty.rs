@@ -31,7 +31,7 @@ pub enum Kind {
     Screw,
     /// A wrench F = (m, f) (§3.4).
     Wrench,
-    /// The 6×6 adjoint [Ad_T] (Definition 3.20); `transposed` for
+    /// The 6×6 adjoint [Ad_T] (Definition 3.6); `transposed` for
     /// [Ad_T]ᵀ, which acts on wrenches (Prop. 3.17).
     Adjoint {
         transposed: bool,

@@ -8,6 +8,7 @@
 
 use crate::syntax::ast::Span;
 
+pub mod habits;
 pub mod render;
 pub mod suggest;
 

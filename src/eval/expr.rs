@@ -212,6 +212,9 @@ impl Interp<'_> {
             .with_help(format!("call it: {name}(...)")));
         }
         let mut d = Diagnostic::error(ErrorKind::Name, span, format!("unknown name '{name}'"));
+        if let Some(h) = crate::diagnostics::habits::name(name) {
+            return Err(d.with_help(h));
+        }
         // T_cb unknown but T_bc known: the inverse is one step away.
         if let crate::syntax::ident::NameFrames::Pair(a, b) =
             crate::syntax::ident::name_frames(name)
@@ -316,6 +319,13 @@ impl Interp<'_> {
                 name_span,
                 format!("unknown function '{name}'"),
             );
+            let args_text = match (args.first(), args.last()) {
+                (Some(a), Some(b)) => self.text(Span::new(a.span.start, b.span.end)),
+                _ => "",
+            };
+            if let Some(h) = crate::diagnostics::habits::function(name, args_text) {
+                return Err(d.with_help(h));
+            }
             let mut names = builtins::all_names();
             names.extend(self.env.fns.keys().map(String::as_str));
             if let Some(s) = suggest::did_you_mean(name, &names) {

@@ -8,7 +8,7 @@ use std::collections::BTreeMap;
 use super::help;
 use crate::check::ty::{Frames, Ty};
 use crate::diagnostics::suggest::did_you_mean;
-use crate::eval::env::{Env, FrameMode, Mode};
+use crate::eval::env::{Env, FrameMode};
 use crate::eval::value::Value;
 use crate::output::text;
 use crate::session::Session;
@@ -47,6 +47,16 @@ pub const COMMANDS: &[Command] = &[
         doc: "run a script into this session",
     },
     Command {
+        name: "save",
+        args: "FILE",
+        doc: "write the statements that ran as a script that reruns them (:save! FILE overwrites)",
+    },
+    Command {
+        name: "history",
+        args: "",
+        doc: "the statements of this session that ran without error",
+    },
+    Command {
         name: "reset",
         args: "",
         doc: "forget every binding",
@@ -64,7 +74,7 @@ pub const COMMANDS: &[Command] = &[
     Command {
         name: "quit",
         args: "",
-        doc: "leave the REPL (also Ctrl-D)",
+        doc: "leave the REPL (also Ctrl-D, or quit / exit without the colon)",
     },
 ];
 
@@ -113,11 +123,33 @@ pub fn execute(session: &mut Session, input: &str) -> Reply {
     if is_command(input) {
         return command(session, input.trim());
     }
-    let (out, err, _) = session.run_to_strings("<input>", input, Mode::Run, false);
+    if let Some(cmd) = bare_command(session, input) {
+        return command(session, &cmd);
+    }
+    let (out, err, _) = super::save::run_recording(session, "<input>", input);
     Reply {
         out,
         err,
         quit: false,
+    }
+}
+
+/// `help`, `help NAME`, `exit`, `quit` (and Python's `exit()`, `quit()`)
+/// typed without the colon, as the command they mean — unless the word is
+/// bound as a variable.
+fn bare_command(session: &Session, input: &str) -> Option<String> {
+    let t = input.trim();
+    let (word, rest) = t.split_once(char::is_whitespace).unwrap_or((t, ""));
+    let word = word.trim_end_matches("()");
+    if session.env.get(word).is_some() {
+        return None;
+    }
+    match word {
+        "help" if rest.trim().chars().all(|c| !"=(),;[]".contains(c)) => {
+            Some(format!(":help {}", rest.trim()))
+        }
+        "exit" | "quit" if rest.is_empty() => Some(":quit".into()),
+        _ => None,
     }
 }
 
@@ -138,8 +170,14 @@ pub fn command(session: &mut Session, input: &str) -> Reply {
         "load" => load(session, arg),
         "reset" => {
             session.env = Env::default();
+            session.accepted.clear();
             Reply::out("bindings cleared")
         }
+        "save" | "save!" => match super::save::save(session, arg, name == "save!") {
+            Ok(msg) => Reply::out(msg),
+            Err(msg) => Reply::err(msg),
+        },
+        "history" => Reply::out(super::save::history(session)),
         "digits" => digits(session, arg),
         "exact" => exact(session, arg),
         "quit" | "q" | "exit" => Reply {
@@ -392,7 +430,7 @@ fn load(session: &mut Session, arg: &str) -> Reply {
         Ok(s) => s,
         Err(msg) => return Reply::err(format!(":load: {msg}")),
     };
-    let (out, mut err, errors) = session.run_to_strings(&path, &src, Mode::Run, false);
+    let (out, mut err, errors) = super::save::run_recording(session, &path, &src);
     let mut reply = Reply {
         out,
         err: String::new(),

@@ -121,6 +121,7 @@ fn complete_command(before: &str) -> (usize, Vec<Candidate>) {
             w.extend(TOPICS.iter().map(|(t, _)| t.to_string()));
             w.extend(Area::ALL.iter().map(|a| super::help::area_key(*a).into()));
             w.extend(COMMANDS.iter().map(|c| c.name.to_string()));
+            w.extend(super::keywords::words().map(String::from));
             w
         }
         "frames" => vec!["strict".into(), "warn".into(), "off".into()],

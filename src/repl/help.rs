@@ -1,7 +1,8 @@
 //! `:help` (LANGUAGE.md §11), generated from the one builtin table: the
 //! overview lists the topics and every function by area; `:help NAME`
 //! gives a function's signature, meaning, book section and example, with
-//! the example's result.
+//! the example's result; keywords, units and operators are answered from
+//! [`super::keywords`], commands from their table.
 
 use super::commands::COMMANDS;
 use crate::builtins::{self, Area, Builtin};
@@ -69,6 +70,9 @@ pub fn help(arg: &str, settings: &Settings) -> Result<String, String> {
     if let Some(b) = builtins::lookup(arg) {
         return Ok(function(b, settings));
     }
+    if let Some(text) = super::keywords::keyword(arg) {
+        return Ok(text.to_string());
+    }
     if let Some((_, text)) = TOPICS.iter().find(|(t, _)| *t == arg) {
         return Ok(text.to_string());
     }
@@ -81,6 +85,7 @@ pub fn help(arg: &str, settings: &Settings) -> Result<String, String> {
         return Ok(format!("{}\n  {}", head.trim_end(), c.doc));
     }
     let mut names = builtins::all_names();
+    names.extend(super::keywords::words());
     names.extend(TOPICS.iter().map(|(t, _)| *t));
     names.extend(COMMANDS.iter().map(|c| c.name));
     let mut msg = format!("no help for '{arg}'");
@@ -100,6 +105,11 @@ fn overview() -> String {
     }
     let topics: Vec<&str> = TOPICS.iter().map(|(t, _)| *t).collect();
     out.push_str(&format!("topics: :help {}\n", topics.join(" | ")));
+    let words: Vec<&str> = super::keywords::KEYWORDS
+        .iter()
+        .map(|(names, _)| names[0])
+        .collect();
+    out.push_str(&format!("words:  :help {}\n", words.join(" | ")));
     out.push_str("functions by area (:help NAME for one, :help AREA for an area):\n");
     for area in Area::ALL {
         let names: Vec<&str> = in_area(area).map(|b| b.name).collect();

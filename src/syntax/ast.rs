@@ -94,6 +94,20 @@ pub enum BinOp {
     Pow,
 }
 
+impl Expr {
+    /// `lhs op rhs` for a comparison, spanning both sides.
+    pub fn compare(op: CmpOp, lhs: Expr, rhs: Expr, op_span: Span) -> Expr {
+        let span = lhs.span.join(rhs.span);
+        let kind = ExprKind::Compare {
+            op,
+            lhs: Box::new(lhs),
+            rhs: Box::new(rhs),
+            op_span,
+        };
+        Expr { kind, span }
+    }
+}
+
 /// A comparison operator (LANGUAGE.md §3); both give a bool.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum CmpOp {

@@ -309,14 +309,7 @@ impl P<'_> {
                 self.spend()?;
                 self.pos = at + width;
                 let (rhs, dr) = self.expr(BP_CMP)?;
-                let span = lhs.span.join(rhs.span);
-                let kind = ExprKind::Compare {
-                    op,
-                    lhs: Box::new(lhs),
-                    rhs: Box::new(rhs),
-                    op_span: self.span(at, at + width),
-                };
-                lhs = Expr { kind, span };
+                lhs = Expr::compare(op, lhs, rhs, self.span(at, at + width));
                 depth = depth.max(dr) + 1;
                 continue;
             }

@@ -16,7 +16,7 @@ use pest::pratt_parser::{Assoc, Op, PrattParser};
 use pest_derive::Parser;
 
 use super::MAX_DEPTH;
-use super::ast::{BinOp, CmpOp, Expr, ExprKind, Ident, IndexArg, Span, Stmt, StmtKind, UnOp};
+use super::ast::{BinOp, Expr, ExprKind, Ident, IndexArg, Span, Stmt, StmtKind, UnOp};
 use super::rules;
 use crate::diagnostics::{Diagnostic, ErrorKind};
 
@@ -231,13 +231,10 @@ impl Cx<'_> {
                 let ty = names.pop().ok_or_else(|| self.internal(whole))?;
                 Ok(StmtKind::Given { names, ty })
             }
-            Rule::assert_stmt => {
-                let p = form
-                    .into_inner()
-                    .find(|p| p.as_rule() == Rule::expr)
-                    .ok_or_else(|| self.internal(whole))?;
-                Ok(StmtKind::Assert(self.expr(p)?.0))
-            }
+            Rule::assert_stmt => match form.into_inner().find(|p| p.as_rule() == Rule::expr) {
+                Some(p) => Ok(StmtKind::Assert(self.expr(p)?.0)),
+                None => Err(self.internal(whole)),
+            },
             Rule::derive_stmt => {
                 let p = form
                     .into_inner()
@@ -325,20 +322,8 @@ impl Cx<'_> {
                 let depth = dl.max(dr) + 1;
                 let op_span = self.span(op.as_span());
                 check_depth(depth, op_span)?;
-                let cmp = match op.as_rule() {
-                    Rule::eq => Some(CmpOp::Eq),
-                    Rule::approx => Some(CmpOp::Approx),
-                    _ => None,
-                };
-                if let Some(op) = cmp {
-                    let span = l.span.join(r.span);
-                    let kind = ExprKind::Compare {
-                        op,
-                        lhs: Box::new(l),
-                        rhs: Box::new(r),
-                        op_span,
-                    };
-                    return Ok((Expr { kind, span }, depth));
+                if let Some(op) = rules::cmp_op(op.as_rule()) {
+                    return Ok((Expr::compare(op, l, r, op_span), depth));
                 }
                 let (bop, implicit, op_span) = match op.as_rule() {
                     Rule::add => (BinOp::Add, false, op_span),
@@ -430,8 +415,8 @@ impl Cx<'_> {
     ) -> Result<(), Diagnostic> {
         let last = left.clone().into_inner().last().map(|p| p.as_rule());
         let first = right.clone().into_inner().next().map(|p| p.as_rule());
-        let left_text = short(left.as_str());
-        let right_text = short(right.as_str());
+        let left_text = rules::short(left.as_str());
+        let right_text = rules::short(right.as_str());
         let at = self.span(right.as_span());
         let left_ok = matches!(
             last,
@@ -609,16 +594,5 @@ impl Cx<'_> {
             Rule::mech => leaf(ExprKind::Mech(self.mech(pair)?)),
             _ => Err(self.unexpected(&pair)),
         }
-    }
-}
-
-/// `text`, cut short for a message.
-fn short(text: &str) -> String {
-    let text = text.trim();
-    if text.chars().count() <= 24 {
-        text.to_string()
-    } else {
-        let head: String = text.chars().take(20).collect();
-        format!("{head}…")
     }
 }

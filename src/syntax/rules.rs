@@ -8,7 +8,7 @@
 
 use pest::error::{ErrorVariant, InputLocation};
 
-use super::ast::Span;
+use super::ast::{CmpOp, Span};
 use super::parser::{Cx, Rule, too_deep};
 use crate::diagnostics::{Diagnostic, ErrorKind};
 
@@ -273,6 +273,26 @@ fn help(text: &str, pos: usize, found: Option<char>, expected: &[String]) -> Opt
         '.' if before.ends_with(|c: char| c.is_ascii_digit()) => {
             Some("write decimals with digits after the point: 2.0 or 2".into())
         }
+        _ => None,
+    }
+}
+
+/// `text`, cut short for a message.
+pub(super) fn short(text: &str) -> String {
+    let text = text.trim();
+    if text.chars().count() <= 24 {
+        text.to_string()
+    } else {
+        let head: String = text.chars().take(20).collect();
+        format!("{head}…")
+    }
+}
+
+/// The comparison a rule stands for (`==`, `≈`/`~=`), if any.
+pub(super) fn cmp_op(rule: Rule) -> Option<CmpOp> {
+    match rule {
+        Rule::eq => Some(CmpOp::Eq),
+        Rule::approx => Some(CmpOp::Approx),
         _ => None,
     }
 }
