@@ -180,7 +180,14 @@ pub fn pow(b: &Value, e: f64, kind: &Kind) -> Result<Value, String> {
     if *bk == Kind::Scalar {
         let x = bm[0].powf(e);
         if x.is_nan() && !bm[0].is_nan() && !e.is_nan() {
-            return Err(format!("{}^{e} is not a real number", bm[0]));
+            return Err(format!(
+                "({})^{} is not a real number: a negative base to a fractional power; \
+                 for the real root of a negative number write -({}^{})",
+                fmt_exp(bm[0]),
+                fmt_exp(e),
+                fmt_exp(-bm[0]),
+                fmt_exp(e)
+            ));
         }
         return Ok(Value::scalar(x));
     }
@@ -452,3 +459,14 @@ pub fn brackets(rows: &[Vec<Value>]) -> Result<Value, String> {
 
 /// Vectors of the same flavour: a twist stays a twist after `+`.
 pub fn unused_kinds(_: Mat2) {}
+
+/// A number in a message: short, and exact fractions of 1/3 shown as such.
+fn fmt_exp(x: f64) -> String {
+    for d in [2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0] {
+        let n = (x * d).round();
+        if (x * d - n).abs() < 1e-12 && n.abs() < 100.0 && n != 0.0 && (n / d).fract() != 0.0 {
+            return format!("({n}/{d})");
+        }
+    }
+    crate::output::number::fmt_num(x, 6)
+}
