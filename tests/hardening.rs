@@ -655,7 +655,7 @@ fn numbers_outside_the_domain_are_domain_errors() {
             "log(-1)",
             "domain error: log of -1: the logarithm needs a positive number",
         ),
-        ("(-1)^0.5", "domain error: -1^0.5 is not a real number"),
+        ("(-1)^0.5", "domain error: (-1)^(1/2) is not a real number"),
         (
             "inv([1, 2; 2, 4])",
             "domain error: the matrix is singular (determinant 0)",

@@ -180,14 +180,22 @@ pub fn pow(b: &Value, e: f64, kind: &Kind) -> Result<Value, String> {
     if *bk == Kind::Scalar {
         let x = bm[0].powf(e);
         if x.is_nan() && !bm[0].is_nan() && !e.is_nan() {
-            return Err(format!(
-                "({})^{} is not a real number: a negative base to a fractional power; \
-                 for the real root of a negative number write -({}^{})",
-                fmt_exp(bm[0]),
-                fmt_exp(e),
-                fmt_exp(-bm[0]),
-                fmt_exp(e)
-            ));
+            let base = format!("({})^{}", fmt_exp(bm[0]), fmt_exp(e));
+            // p/q with q odd has a real root: −(|b|^e) when p is odd.
+            let odd_root = [3.0, 5.0, 7.0, 9.0].into_iter().any(|q: f64| {
+                let p = (e * q).round();
+                (e * q - p).abs() < 1e-12 && p.rem_euclid(2.0) == 1.0
+            });
+            return Err(if odd_root {
+                format!(
+                    "{base} is not a real number (a negative base to a fractional power); \
+                     its real root is -({}^{})",
+                    fmt_exp(-bm[0]),
+                    fmt_exp(e)
+                )
+            } else {
+                format!("{base} is not a real number (a negative base to a fractional power)")
+            });
         }
         return Ok(Value::scalar(x));
     }
