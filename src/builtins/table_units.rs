@@ -1,5 +1,6 @@
 //! Angle units and conversions (LANGUAGE.md §8): `deg2rad` and `rad2deg`
-//! on numbers, vectors and matrices, entry by entry. The units themselves
+//! on numbers, vectors and matrices, entry by entry; and `round`, to
+//! compare a result with the digits the book prints. The units themselves
 //! are words of the language: `30 deg` and `30°` are postfix (the grammar),
 //! `pi/6 rad` multiplies by `rad` = 1 (the evaluator's constants).
 
@@ -41,8 +42,45 @@ fn scale(a: &mut Args, factor: f64) -> Result<Value, Diagnostic> {
     Ok(Value::Num { kind, m })
 }
 
+/// round(x, n): numbers, vectors, matrices; n a whole number of decimals.
+fn round_rule(args: &[Ty]) -> Result<Ty, ArgError> {
+    let t = entrywise_rule(&args[..1])?;
+    if args.len() == 2 && !args[1].kind.maybe_scalar() {
+        return Err(ArgError::type_of(1, "the number of decimals is a number"));
+    }
+    Ok(t)
+}
+
+/// Every entry rounded to `n` decimals (half away from zero): `n = 3`
+/// gives the book's printed digits, so `round(R, 3) == [0.866, …]` holds
+/// exactly (k/10ⁿ is the double nearest the decimal the book prints).
+fn eval_round(a: &mut Args) -> Result<Value, Diagnostic> {
+    let n = if a.len() == 2 { a.int(1, 0, 15)? } else { 0 };
+    let scale = 10f64.powi(n as i32);
+    let m = a.mat(0)?.map(|x| (x * scale).round() / scale);
+    let kind = match a.value(0).kind() {
+        Kind::Twist | Kind::Screw | Kind::Wrench => Kind::Vector(Some(6)),
+        k => scaled_kind(&k),
+    };
+    Ok(Value::Num { kind, m })
+}
+
 pub(super) fn builtins() -> Vec<Builtin> {
     vec![
+        Builtin {
+            name: "round",
+            aliases: &[],
+            signature: "round(x: scalar | vector | matrix, n: scalar = 0) -> same shape",
+            section: "—",
+            doc: "every entry rounded to n decimals, to compare with the book's printed digits",
+            example: "round(Rotz(30 deg), 3)",
+            area: Area::Scalars,
+            typing: Typing::Custom {
+                arity: (1, 2),
+                rule: round_rule,
+            },
+            eval: eval_round,
+        },
         Builtin {
             name: "deg2rad",
             aliases: &["radians"],
