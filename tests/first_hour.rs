@@ -253,5 +253,7 @@ fn help_for_everything() {
         assert!(help(&format!(":{}", c.name)).starts_with(':'), "{}", c.name);
     }
     assert!(help("deg").contains("Rotz(30 deg)"));
+    let r = execute(&mut Session::new(Settings::default()), ":help RotToQuat");
+    assert!(r.err.contains("did you mean quat(R)?"), "{}", r.err);
     assert!(help("").contains("words:  :help given"));
 }

@@ -45,7 +45,7 @@ pub fn function(name: &str, args: &str) -> Option<String> {
         "linalg.inv" | "inverse" | "pinv" => format!("inv({args})"),
         "expm3" => format!("MatrixExp3({args})"),
         "deg" => format!("degrees are a unit after the number: {args} deg"),
-        _ => return conversion(name).map(|s| format!("did you mean {s}")),
+        _ => return conversion(name),
     })
 }
 
@@ -191,10 +191,10 @@ fn repr(word: &str) -> Option<Repr> {
     })
 }
 
-/// The chasles call that converts what a name like `RotToQuat`,
-/// `rotm2quat`, `quat_to_rot` or `eul2rotm` asks for — from the first
-/// representation to the second — or None when the name is no conversion
-/// chasles knows.
+/// Help for a name like `RotToQuat`, `rotm2quat`, `quat_to_rot` or
+/// `eul2rotm` that asks for a conversion from the first representation to
+/// the second: the chasles call that does it (`did you mean quat(R)? …`),
+/// or that none does it in one step; None when the name is no conversion.
 pub fn conversion(name: &str) -> Option<String> {
     let lower = name.to_lowercase().replace('_', "");
     let splits = lower
@@ -204,7 +204,14 @@ pub fn conversion(name: &str) -> Option<String> {
     for (i, width) in splits {
         let (from, to) = (&lower[..i], &lower[i + width..]);
         if let (Some(a), Some(b)) = (repr(from), repr(to)) {
-            return convert(a, b).map(str::to_string);
+            return Some(convert(a, b).map_or_else(
+                || {
+                    "there is no single function for this conversion; \
+                     chain the ones :help representations lists"
+                        .to_string()
+                },
+                |s| format!("did you mean {s}"),
+            ));
         }
     }
     None
@@ -258,9 +265,16 @@ mod tests {
             ("rotm2axang", "AxisAng3(MatrixLog3(R))"),
         ] {
             let got = conversion(name).unwrap_or_default();
-            assert!(got.starts_with(want), "{name}: {got}");
+            let want = format!("did you mean {want}");
+            assert!(got.starts_with(&want), "{name}: {got}");
         }
         assert_eq!(conversion("Rotation"), None);
+        // A conversion with no single function never gets an edit-distance guess.
+        assert!(
+            conversion("rpy2quat")
+                .unwrap()
+                .contains(":help representations")
+        );
         assert_eq!(conversion("total"), None);
     }
 

@@ -89,7 +89,9 @@ pub fn help(arg: &str, settings: &Settings) -> Result<String, String> {
     names.extend(TOPICS.iter().map(|(t, _)| *t));
     names.extend(COMMANDS.iter().map(|c| c.name));
     let mut msg = format!("no help for '{arg}'");
-    if let Some(s) = did_you_mean(bare, &names) {
+    if let Some(s) = crate::diagnostics::habits::conversion(bare) {
+        msg.push_str(&format!("; {s}"));
+    } else if let Some(s) = did_you_mean(bare, &names) {
         msg.push_str(&format!("; did you mean '{s}'?"));
     }
     msg.push_str(" (:help lists everything)");
