@@ -22,7 +22,9 @@ pub struct Candidate {
 }
 
 /// Keywords of the language worth completing.
-const KEYWORDS: &[&str] = &["given", "derive", "mech", "pi", "deg", "true", "false"];
+const KEYWORDS: &[&str] = &[
+    "given", "derive", "mech", "assert", "pi", "deg", "rad", "true", "false",
+];
 
 /// Longest line the preview evaluates.
 const PREVIEW_MAX_CHARS: usize = 300;
@@ -126,7 +128,7 @@ fn complete_command(before: &str) -> (usize, Vec<Candidate>) {
         }
         "frames" => vec!["strict".into(), "warn".into(), "off".into()],
         "exact" => vec!["on".into(), "off".into()],
-        "load" => return complete_path(before, start),
+        "load" | "save" | "save!" => return complete_path(before, start),
         _ => Vec::new(),
     };
     let mut cands: Vec<Candidate> = words

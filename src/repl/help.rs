@@ -25,6 +25,8 @@ statements end at a newline or `;`; a newline inside ( ) or [ ] continues
   T.R  T.p  V.w  V.v  M.T   parts of a transform or twist; transpose
   M[1, 2]  M[:, 1]  v[3]    1-based indexing, as in the book
   (w, th) = AxisAng3(v)     destructure a tuple
+  a == b   a ≈ b (a ~= b)   exactly equal; equal within 1e-9 relative (a bool)
+  assert T ≈ T_book         stop the script, showing both sides, when false
   f(x) = x^2                a user function
   ans                       the last result",
     ),
