@@ -42,8 +42,10 @@ pub fn function(name: &str, args: &str) -> Option<String> {
         "help" => "in the REPL type help or :help NAME; on the command line chasles --help".into(),
         "format" => format_help(),
         "matmul" | "mtimes" => format!("multiply with *: {}", args.replace(',', " *")),
-        "linalg.inv" | "inverse" | "pinv" => format!("inv({args})"),
-        "expm3" => format!("MatrixExp3({args})"),
+        "pinv" => {
+            format!("did you mean inv({args})? (square matrices; there is no pseudo-inverse)")
+        }
+        "transp" | "ctranspose" => format!("did you mean transpose({args}) or ({args}).T?"),
         "deg" => format!("degrees are a unit after the number: {args} deg"),
         _ => return conversion(name),
     })
