@@ -136,6 +136,7 @@ mod repl {
         let mut s = Session::new(Settings::default());
         assert!(execute(&mut s, "help").out.contains("commands:"));
         assert!(execute(&mut s, "help Ad").out.starts_with("Adjoint("));
+        assert!(execute(&mut s, "help(Ad)").out.starts_with("Adjoint("));
         assert!(execute(&mut s, "quit").quit);
         assert!(execute(&mut s, "exit").quit);
         assert!(execute(&mut s, "exit()").quit);

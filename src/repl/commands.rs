@@ -134,11 +134,19 @@ pub fn execute(session: &mut Session, input: &str) -> Reply {
     }
 }
 
-/// `help`, `help NAME`, `exit`, `quit` (and Python's `exit()`, `quit()`)
+/// `help`, `help NAME`, `exit`, `quit` (and Python's `help(NAME)`,
+/// `exit()`, `quit()`)
 /// typed without the colon, as the command they mean — unless the word is
 /// bound as a variable.
 fn bare_command(session: &Session, input: &str) -> Option<String> {
     let t = input.trim();
+    // Python's help(name).
+    if let Some(inner) = t.strip_prefix("help(").and_then(|s| s.strip_suffix(')'))
+        && session.env.get("help").is_none()
+        && !builtins_or_fn(session, "help")
+    {
+        return Some(format!(":help {}", inner.trim()));
+    }
     let (word, rest) = t.split_once(char::is_whitespace).unwrap_or((t, ""));
     let word = word.trim_end_matches("()");
     if session.env.get(word).is_some() {
@@ -151,6 +159,11 @@ fn bare_command(session: &Session, input: &str) -> Option<String> {
         "exit" | "quit" if rest.is_empty() => Some(":quit".into()),
         _ => None,
     }
+}
+
+/// Whether `name` is a user function (or a builtin) of the session.
+fn builtins_or_fn(session: &Session, name: &str) -> bool {
+    session.env.fns.contains_key(name) || crate::builtins::lookup(name).is_some()
 }
 
 /// Runs one `:` command (`input` starts with `:`).
