@@ -5,8 +5,8 @@
 use super::Args;
 use crate::check::ty::Kind;
 use crate::diagnostics::{Diagnostic, ErrorKind};
-use crate::eval::value::Value;
 use crate::lie::{Mat3, so3};
+use crate::values::value::Value;
 
 /// Notes on the call `a` (its arguments still in place) that returned `v`.
 pub fn after_call(a: &mut Args, v: &Value) {

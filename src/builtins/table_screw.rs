@@ -5,8 +5,8 @@ use super::table_rotations::{screw, se3k, twist, v3, v3val, v6, velocity_rule, w
 use super::{Area, ArgError, Args, Builtin, FrameRule, Param, Typing};
 use crate::check::ty::{Frames, Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
-use crate::eval::value::Value;
 use crate::lie::{Vec3, se3};
+use crate::values::value::Value;
 
 /// (q, ŝ, h) of a screw: frames (Same, Same, none).
 fn screw_params_rule(args: &[Ty]) -> Result<Ty, ArgError> {
@@ -69,7 +69,7 @@ fn eval_screw_to_axis(a: &mut Args) -> Result<Value, Diagnostic> {
         ));
     }
     if (n - 1.0).abs() > 1e-12 {
-        let shown = |v: &Vec3| crate::output::text::inline(&v3val(v), 4);
+        let shown = |v: &Vec3| crate::values::format::inline(&v3val(v), 4);
         a.warnings.push(
             Diagnostic::warning(
                 ErrorKind::Domain,
@@ -77,7 +77,7 @@ fn eval_screw_to_axis(a: &mut Args) -> Result<Value, Diagnostic> {
                 format!(
                     "ŝ = {} is not a unit vector (‖ŝ‖ = {}); normalised to {}",
                     shown(&s),
-                    crate::output::number::fmt_num(n, 6),
+                    crate::values::number::fmt_num(n, 6),
                     shown(&(s / n))
                 ),
             )

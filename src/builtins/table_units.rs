@@ -10,7 +10,7 @@ use super::{Area, ArgError, Args, Builtin, Typing};
 use crate::check::rules::scaled_kind;
 use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
-use crate::eval::value::Value;
+use crate::values::value::Value;
 
 /// A number, vector or matrix in, the same shape out (a group element
 /// scaled is no longer one); frames are kept.

@@ -252,11 +252,11 @@ impl Interp<'_> {
     ) -> Diagnostic {
         // `==` failing by a rounding error needs every digit to be seen.
         let digits = if op == CmpOp::Eq { 17 } else { 10 };
-        let show = |v: &Value| crate::output::text::inline(v, digits);
+        let show = |v: &Value| crate::values::format::inline(v, digits);
         let mut message = format!("assertion failed: `{}`", self.text(cond.span).trim());
         if let Some(d) = largest_difference(a, b) {
             let d = if (1e-3..1e6).contains(&d) {
-                crate::output::number::fmt_num(d, 4)
+                crate::values::number::fmt_num(d, 4)
             } else {
                 format!("{d:.3e}")
             };

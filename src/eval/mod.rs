@@ -4,12 +4,12 @@
 
 mod compare;
 mod compound;
-pub mod convert;
 mod derive;
 pub mod env;
 mod expr;
+pub mod graph;
 pub mod interp;
-pub mod ops;
+mod notation;
 mod substitute;
-pub mod symbolic;
-pub mod value;
+
+pub use crate::values::{convert, ops, symbolic, value};
