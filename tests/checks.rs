@@ -110,3 +110,17 @@ fn assert_needs_a_bool() {
         "{err}"
     );
 }
+
+/// `I` takes its size from the other side of a comparison, as in a sum:
+/// the book's R Rᵀ = I.
+#[test]
+fn identity_is_sized_by_the_other_side() {
+    let (code, out, err) = run(&[
+        "--json",
+        "-e",
+        "R = Rot((1, 2, 2)/3, 0.7)\nR Rᵀ ≈ I\nassert Trans((1, 2, 3)) * inv(Trans((1, 2, 3))) == I",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let lines = json(&out);
+    assert_eq!(lines[1]["value"], serde_json::Value::Bool(true));
+}

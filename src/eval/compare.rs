@@ -16,7 +16,7 @@ use super::value::Value;
 use crate::check::rules::{self, RuleError};
 use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
-use crate::syntax::ast::{CmpOp, Expr, ExprKind, Span};
+use crate::syntax::ast::{BinOp, CmpOp, Expr, ExprKind, Span};
 
 /// The tolerance of `a ≈ b`: every entry within 1e-9 · max(1, |a|∞, |b|∞).
 pub const APPROX_TOL: f64 = 1e-9;
@@ -171,8 +171,8 @@ impl Interp<'_> {
         rhs: &Expr,
         op_span: Span,
     ) -> Result<Sides, Diagnostic> {
-        let l = self.expr(lhs)?;
-        let r = self.expr(rhs)?;
+        // `R Rᵀ == I`: an `I` takes its size from the other side, as in a sum.
+        let (l, r) = self.operands(BinOp::Sub, lhs, rhs)?;
         if let Err(e) = compare_rule(&l.ty, &r.ty) {
             self.rule_failure(e, op_span, Some(lhs.span), Some(rhs.span), Some(op_span))?;
         }
