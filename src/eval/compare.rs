@@ -71,9 +71,11 @@ pub fn equal(a: &Value, b: &Value, op: CmpOp) -> Result<Option<bool>, String> {
 /// Equality of symbolic expressions (LANGUAGE.md §7). Today it is
 /// structural: equal trees are equal, and anything else is undecided
 /// (`None`). A canonical form decides more pairs by extending this one
-/// function.
+/// function. `Sym`'s own `==` compares constants by their 4-digit text, so
+/// the trees are also compared in full (their `Debug` form holds every
+/// constant's exact value): `t + 1.00001` is not `t + 1.00002`.
 pub fn symbolic_equal(a: &Sym, b: &Sym, _op: CmpOp) -> Option<bool> {
-    (a == b).then_some(true)
+    (a == b && format!("{a:?}") == format!("{b:?}")).then_some(true)
 }
 
 /// Entrywise within [`APPROX_TOL`] relative to the larger side (absolute
@@ -320,6 +322,13 @@ mod tests {
         let t = Sym::Name("t".into());
         assert_eq!(symbolic_equal(&t, &t.clone(), CmpOp::Eq), Some(true));
         assert_eq!(symbolic_equal(&t, &Sym::Name("u".into()), CmpOp::Eq), None);
+        // Constants that print alike at 4 digits are still told apart.
+        let c = |x: f64| Sym::Const(Box::new(Value::scalar(x)), "1".into());
+        assert_eq!(symbolic_equal(&c(1.00001), &c(1.00002), CmpOp::Eq), None);
+        assert_eq!(
+            symbolic_equal(&c(1.00001), &c(1.00001), CmpOp::Eq),
+            Some(true)
+        );
     }
 
     #[test]
