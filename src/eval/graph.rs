@@ -186,15 +186,13 @@ mod tests {
     #[test]
     fn one_graph_for_derive_and_frames() {
         let mut s = Session::default();
-        let src =
-            "T_sb = Trans((1, 0, 0)); T_bc = Rotz(1); p_c = (1, 2, 3); T_xy = eye(4); ans = T_sb";
+        let src = "T_sb = Trans((1, 0, 0)); T_bc = RpToTrans(Rotz(1), (0, 0, 0)); p_c = (1, 2, 3); T_xy = eye(4); ans = T_sb";
         let (_, err, n) = s.run_to_strings("t", src, Mode::Run, false);
         assert_eq!(n, 0, "{err}");
         let g = FrameGraph::of(&s.env);
         let names: Vec<&str> = g.edges.iter().map(|e| e.name.as_str()).collect();
         assert_eq!(names, ["T_bc", "T_sb", "T_xy"]);
-        // A T_ name with a 3×3 value asserts SE(2) at the binding (issue 13).
-        assert_eq!(g.edges[0].kind, Kind::SE2);
+        assert_eq!(g.edges[0].kind, Kind::SE3);
         assert_eq!(g.quantities, [("c".to_string(), "p_c".to_string())]);
         let comps = g.components();
         assert_eq!(comps.len(), 2);
