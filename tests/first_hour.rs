@@ -145,6 +145,42 @@ mod repl {
         assert_eq!(execute(&mut s, "help").out, "3\n");
     }
 
+    /// Odd inputs near the new commands never panic and answer something.
+    #[test]
+    fn odd_inputs_answer() {
+        let mut s = Session::new(Settings::default());
+        for input in [
+            "help(",
+            "help()",
+            "help(())",
+            "exit(1)",
+            "quit 2",
+            ":save!",
+            ":save! ",
+            ":history x",
+            ":save /",
+            ":save .",
+            "help help",
+            "help = ",
+            "assert",
+            "assert ==",
+            "1 ==",
+            "≈ 1",
+            "1 ~= ",
+            "~=",
+            "a == b == c",
+            "round(1, 99)",
+            "deg2rad()",
+            "rad2deg(mech < links 2; planar >)",
+        ] {
+            let r = execute(&mut s, input);
+            assert!(
+                !(r.out.is_empty() && r.err.is_empty() && !r.quit),
+                "{input:?} says nothing"
+            );
+        }
+    }
+
     #[test]
     fn save_writes_a_script_that_reruns_to_the_same_results() {
         let dir = std::env::temp_dir().join(format!("chasles-save-{}", std::process::id()));
