@@ -290,6 +290,7 @@ fn help_for_everything() {
         assert!(help(&format!(":{}", c.name)).starts_with(':'), "{}", c.name);
     }
     assert!(help("deg").contains("Rotz(30 deg)"));
+    assert!(help(":save!").starts_with(":save FILE"));
     let r = execute(&mut Session::new(Settings::default()), ":help RotToQuat");
     assert!(r.err.contains("did you mean quat(R)?"), "{}", r.err);
     assert!(help("").contains("words:  :help given"));

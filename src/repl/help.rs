@@ -81,7 +81,7 @@ pub fn help(arg: &str, settings: &Settings) -> Result<String, String> {
     if let Some(area) = area_named(arg) {
         return Ok(area_listing(area));
     }
-    let bare = arg.trim_start_matches(':');
+    let bare = arg.trim_start_matches(':').trim_end_matches('!');
     if let Some(c) = COMMANDS.iter().find(|c| c.name == bare) {
         let head = format!(":{} {}", c.name, c.args);
         return Ok(format!("{}\n  {}", head.trim_end(), c.doc));
