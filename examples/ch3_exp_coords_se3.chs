@@ -75,3 +75,7 @@ assert th ≈ pi/2
 assert expc2 ≈ pi * (1/sqrt(2), 0, 1/sqrt(2), -1/sqrt(2), 0, 1/sqrt(2))
 assert th2 ≈ pi
 assert expc3 == (0, 0, 0, 3, 0, 4)
+assert screw_params(S) ≈ ((-1, 1, 0), (0, 0, 1), 0)
+assert screw_params(S2) ≈ ((0, -1, 0), (1, 0, 1) / sqrt(2), 0)
+assert AxisAng6(expc3) ≈ ((0, 0, 0, 0.6, 0, 0.8), 5)
+assert exp(log(T_sb2)) ≈ T_sb2

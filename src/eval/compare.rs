@@ -14,7 +14,7 @@ use super::interp::{Interp, Typed};
 use super::symbolic::Sym;
 use super::value::Value;
 use crate::check::rules::{self, RuleError};
-use crate::check::ty::{Kind, Ty};
+use crate::check::ty::{Frames, Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
 use crate::syntax::ast::{BinOp, CmpOp, Expr, ExprKind, Span};
 
@@ -109,7 +109,8 @@ pub fn largest_difference(a: &Value, b: &Value) -> Option<f64> {
 }
 
 /// The static rule: both sides of one shape (when known) and one frame
-/// tag (or one untagged); the result is a bool.
+/// tag (or one untagged, or a displacement in the outer frame of the
+/// other); the result is a bool.
 pub fn compare_rule(l: &Ty, r: &Ty) -> Result<Ty, RuleError> {
     let type_error = |message: String| RuleError {
         kind: Some(ErrorKind::Type),
@@ -135,7 +136,12 @@ pub fn compare_rule(l: &Ty, r: &Ty) -> Result<Ty, RuleError> {
         }
         return Err(e);
     }
-    rules::same_frames("compare", l, r)?;
+    // A displacement in {a} (`exp(log(T_ab))`) may equal a map out of {a}.
+    let displacement_of =
+        |d: &Frames, f: &Frames| matches!(d, Frames::Disp(a) if f.outer() == Some(a));
+    if !displacement_of(&l.frames, &r.frames) && !displacement_of(&r.frames, &l.frames) {
+        rules::same_frames("compare", l, r)?;
+    }
     Ok(Ty::plain(Kind::Bool))
 }
 
