@@ -352,5 +352,10 @@ mod tests {
         let c = Ty::new(Kind::SE3, crate::check::ty::Frames::pair("a", "c"));
         let e = compare_rule(&a, &c).unwrap_err();
         assert_eq!(e.kind, Some(ErrorKind::Frame));
+        // exp(log(T_ab)) is a displacement in {a}: comparable with T_ab.
+        let d = Ty::new(Kind::SE3, Frames::Disp(crate::check::ty::Frame::named("a")));
+        assert!(compare_rule(&d, &a).is_ok());
+        let d = Ty::new(Kind::SE3, Frames::Disp(crate::check::ty::Frame::named("b")));
+        assert!(compare_rule(&d, &a).is_err());
     }
 }
