@@ -124,3 +124,19 @@ fn identity_is_sized_by_the_other_side() {
     let lines = json(&out);
     assert_eq!(lines[1]["value"], serde_json::Value::Bool(true));
 }
+
+/// Symbols: equal trees are equal, what cancels is `I`, and anything the
+/// structural comparison cannot settle is an honest domain error (the
+/// canonical form of LANGUAGE.md §7 decides more).
+#[test]
+fn symbolic_sides() {
+    let (code, out, err) = run(&[
+        "-e",
+        "given T_ab, T_bc : SE3\nT_ab * T_bc == T_ab * T_bc\ninv(T_ab) * T_ab == I\nassert T_ab * inv(T_ab) == eye(4)",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(out, "true\ntrue\n");
+    let (code, _, err) = run(&["-e", "given t : scalar\nt + 1.00001 == t + 1.00002"]);
+    assert_eq!(code, 1);
+    assert!(err.contains("domain error: cannot decide"), "{err}");
+}
