@@ -278,6 +278,7 @@ fn help(text: &str, pos: usize, found: Option<char>, expected: &[String]) -> Opt
     let wants = |s: &str| expected.iter().any(|e| e == s);
     match found? {
         '*' if before.ends_with('*') => Some("use ^ for powers: x^2".into()),
+        '!' => Some("there is no `!=`: write (a == b) == false".into()),
         '=' if before.ends_with('=') => {
             Some("`==` compares (a bool); to bind a name write `name = expr`".into())
         }
