@@ -106,17 +106,27 @@ fn approx(x: &DMatrix<f64>, y: &DMatrix<f64>) -> bool {
     })
 }
 
-/// The largest entrywise difference of two numeric values of one shape.
-pub fn largest_difference(a: &Value, b: &Value) -> Option<f64> {
-    match (a, b) {
-        (Value::Num { m: x, .. }, Value::Num { m: y, .. }) if x.shape() == y.shape() => {
-            Some(x.iter().zip(y.iter()).fold(0.0f64, |d, (p, q)| {
-                let e = (p - q).abs();
-                if e.is_nan() { f64::NAN } else { d.max(e) }
-            }))
-        }
-        _ => None,
+/// The largest entrywise difference of two numeric values of one shape,
+/// and where it is: the 1-based (row, column) of the first such entry
+/// (NaN counts as the largest).
+pub fn largest_difference(a: &Value, b: &Value) -> Option<(f64, usize, usize)> {
+    let (Value::Num { m: x, .. }, Value::Num { m: y, .. }) = (a, b) else {
+        return None;
+    };
+    if x.shape() != y.shape() {
+        return None;
     }
+    let mut best = (0.0f64, 1, 1);
+    for j in 0..x.ncols() {
+        for i in 0..x.nrows() {
+            let e = (x[(i, j)] - y[(i, j)]).abs();
+            let e = if e.is_nan() { f64::INFINITY } else { e };
+            if e > best.0 {
+                best = (e, i + 1, j + 1);
+            }
+        }
+    }
+    Some(best)
 }
 
 /// The static rule: both sides of one shape (when known) and one frame
@@ -273,16 +283,24 @@ impl Interp<'_> {
         let digits = if op == CmpOp::Eq { 17 } else { 10 };
         let show = |v: &Value| crate::values::format::inline(v, digits);
         let mut message = format!("assertion failed: `{}`", self.text(cond.span).trim());
-        if let Some(d) = largest_difference(a, b) {
-            let d = if (1e-3..1e6).contains(&d) {
+        if let Some((d, i, j)) = largest_difference(a, b) {
+            let d = if d.is_infinite() {
+                "NaN or inf".to_string()
+            } else if (1e-3..1e6).contains(&d) {
                 crate::values::number::fmt_num(d, 4)
             } else {
                 format!("{d:.3e}")
             };
+            // Where: [i, j] in a matrix, [i] in a vector, nothing for a number.
+            let at = match a.as_matrix().map(|m| m.shape()) {
+                Some((1, 1)) | None => String::new(),
+                Some((_, 1)) => format!(" at [{i}]"),
+                Some(_) => format!(" at [{i}, {j}]"),
+            };
             message.push_str(&match op {
-                CmpOp::Eq => format!(" (largest difference {d})"),
+                CmpOp::Eq => format!(" (largest difference {d}{at})"),
                 CmpOp::Approx => {
-                    format!(" (largest difference {d}; ≈ allows {APPROX_TOL:e} relative)")
+                    format!(" (largest difference {d}{at}; ≈ allows {APPROX_TOL:e} relative)")
                 }
             });
         }
