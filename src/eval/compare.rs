@@ -353,6 +353,20 @@ mod tests {
     }
 
     #[test]
+    fn largest_difference_says_where() {
+        let m = |xs: &[f64]| Value::Num {
+            kind: Kind::Matrix(Some(2), Some(2)),
+            m: DMatrix::from_row_slice(2, 2, xs),
+        };
+        let (d, i, j) = largest_difference(&m(&[1.0, 2.0, 3.0, 4.0]), &m(&[1.0, 2.0, 3.5, 4.1]))
+            .expect("same shape");
+        assert_eq!((d, i, j), (0.5, 2, 1));
+        let (d, ..) = largest_difference(&m(&[f64::NAN, 0.0, 0.0, 0.0]), &m(&[0.0; 4])).unwrap();
+        assert!(d.is_infinite());
+        assert!(largest_difference(&v(&[1.0]), &m(&[0.0; 4])).is_none());
+    }
+
+    #[test]
     fn symbols_compare_structurally() {
         let t = Sym::Name("t".into());
         assert_eq!(symbolic_equal(&t, &t.clone(), CmpOp::Eq), Some(true));
