@@ -342,7 +342,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
             name: "exp",
             aliases: &["expm"],
             signature: "exp(X: so3 | se3 | so2 | se2 | square matrix | scalar) -> SO3 | SE3 | SO2 | SE2 | matrix | scalar",
-            section: "§3.2.3, §3.3.3, Ex. 3.33–3.35",
+            section: "§3.2.3.2 (3.51), §3.3.3.1 Prop. 3.16, Exercises 3.33–3.35",
             doc: "the matrix exponential: e^[ω]θ ∈ SO(3), e^[S]θ ∈ SE(3), e^{At} for any square A",
             example: "exp([(0, 0, 1)] (pi/2))",
             area: LinearAlgebra,
@@ -370,7 +370,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
             name: "inv",
             aliases: &["inverse"],
             signature: "inv(X: square matrix | scalar) -> same",
-            section: "§3.2.1, §3.3.1.1",
+            section: "§3.2.1.1 Prop. 3.1, §3.3.1.1 Prop. 3.10",
             doc: "inverse; X_ab⁻¹ = X_ba (closed forms for SO(3) and SE(3))",
             example: "inv(RpToTrans(Rotz(pi/2), (1, 2, 3)))",
             area: LinearAlgebra,
@@ -653,6 +653,5 @@ pub(super) fn builtins() -> Vec<Builtin> {
             "the square root of a negative number is not real"
         ),
         scalar_fn!("abs", "absolute value", f64::abs, any, ""),
-        scalar_fn!("rad2deg", "radians to degrees", f64::to_degrees, any, ""),
     ]
 }
