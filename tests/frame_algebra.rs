@@ -178,7 +178,7 @@ fn the_books_products_in_every_bracketing() {
         // inv(T_ab) exp([S_a] t) T_ab = exp([B_b] t), a displacement in {b}.
         (
             vec![inv(t("a", "b")), disp("a"), t("a", "b")],
-            Frames::Disp(f("b")),
+            Frames::Pair(f("b"), f("b'")),
         ),
         // The body-form product of exponentials (4.16): T_ab e^[B]t1 e^[B]t2.
         (

@@ -45,7 +45,7 @@
 //! stays the pair (the identity `inv(T_ab) T_ab` is {b}←{b}); of any other
 //! kind it is a one-frame quantity in {a}, so conjugation closes:
 //! `T_ab [V_b] inv(T_ab)` is `[V_a]` in {a} (3.77) and `R_ab [ω_b] R_abᵀ` is
-//! `[ω_a]` (Prop. 3.5). A group element {a}←{a'} is a displacement in {a}.
+//! `[ω_a]` (Prop. 3.5). A group element {a}←{a'} prints as a displacement in {a}.
 //!
 //! Untagged operators carry no frames but count their displacements (an
 //! untagged rotation or transform one, an untagged `[ω]` none, a product of
@@ -240,12 +240,9 @@ pub fn to_frames(f: &Factor, kind: &Kind) -> Frames {
     };
     match (&arrow.out, &arrow.inn) {
         (End::At(a), End::At(b)) => {
+            // (A group element {a}←{a'} prints as a displacement in {a}.)
             if group_like(kind) {
-                if a.name == b.name && b.moved == a.moved + 1 {
-                    Frames::Disp(a.clone())
-                } else {
-                    Frames::Pair(a.clone(), b.clone())
-                }
+                Frames::Pair(a.clone(), b.clone())
             } else if a == b {
                 Frames::One(a.clone())
             } else {

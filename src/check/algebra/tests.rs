@@ -181,7 +181,7 @@ fn row_a_displacement_conjugated_is_a_displacement() {
     let left = mul((&pair("b", "a"), &SE3), (&Frames::Disp(f("a")), &SE3), &SE3).unwrap();
     assert_eq!(
         mul((&left, &SE3), (&pair("a", "b"), &SE3), &SE3),
-        Ok(Frames::Disp(f("b")))
+        Ok(pair("b", "b'"))
     );
 }
 
