@@ -9,6 +9,7 @@ mod args;
 mod table_math;
 mod table_repr;
 mod table_rotations;
+mod table_scalar;
 mod table_screw;
 
 use std::hash::BuildHasherDefault;
@@ -317,6 +318,7 @@ pub fn table() -> &'static [Builtin] {
         t.extend(table_screw::builtins());
         t.extend(table_repr::builtins());
         t.extend(table_math::builtins());
+        t.extend(table_scalar::builtins());
         t
     })
 }
