@@ -1,6 +1,6 @@
 //! The command line (LANGUAGE.md §1): `chasles`, `chasles run FILE...`,
 //! `chasles check FILE...`, `chasles -e 'STATEMENTS'`, with `--json`,
-//! `--frames`, `--digits`, `--keep-going`. Exit codes: 0 success, 1 a
+//! `--frames`, `--digits`, `--exact`, `--keep-going`. Exit codes: 0 success, 1 a
 //! script error, 2 bad usage or an unreadable file.
 
 use std::io::{IsTerminal, Write};
@@ -49,6 +49,10 @@ struct Opts {
     /// Keep running after an error.
     #[arg(long, global = true)]
     keep_going: bool,
+    /// Print numbers within 1e-12 of simple closed forms as 1/√2, √3/2,
+    /// π/6 (text output; the REPL's :exact).
+    #[arg(long, global = true)]
+    exact: bool,
 }
 
 fn parse_frames(s: &str) -> Result<FrameMode, String> {
@@ -87,7 +91,7 @@ fn run_sources(sources: &[(String, String)], mode: Mode, opts: &Opts) -> i32 {
         frames: opts.frames,
         digits: opts.digits as usize,
         json: opts.json,
-        ..Settings::default()
+        exact: opts.exact,
     };
     let mut session = Session::new(settings);
     let stdout = std::io::stdout();
@@ -189,7 +193,7 @@ pub fn main_with_args(args: Vec<String>) -> i32 {
                     frames: cli.opts.frames,
                     digits: cli.opts.digits as usize,
                     json: cli.opts.json,
-                    ..Settings::default()
+                    exact: cli.opts.exact,
                 })
             } else {
                 match load(&["-".to_string()]) {

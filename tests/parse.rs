@@ -3,7 +3,7 @@
 //! property test that no input panics the parser.
 
 use chasles::diagnostics::Diagnostic;
-use chasles::syntax::ast::{BinOp, Expr, ExprKind, IndexArg, Span, Stmt, StmtKind, UnOp};
+use chasles::syntax::ast::{BinOp, CmpOp, Expr, ExprKind, IndexArg, Span, Stmt, StmtKind, UnOp};
 use chasles::syntax::{MAX_DEPTH, needs_more_input, parse_program};
 
 /// An expression as an s-expression: `(* 2 pi)`, juxtaposition `(j* 2 pi)`.
@@ -38,6 +38,13 @@ fn sexp(e: &Expr) -> String {
             format!("({op} {} {})", sexp(lhs), sexp(rhs))
         }
         ExprKind::Degrees(x) => format!("(deg {})", sexp(x)),
+        ExprKind::Compare { op, lhs, rhs, .. } => {
+            let op = match op {
+                CmpOp::Eq => "==",
+                CmpOp::Approx => "~=",
+            };
+            format!("({op} {} {})", sexp(lhs), sexp(rhs))
+        }
         ExprKind::Call { func, args } => {
             let args: Vec<String> = args.iter().map(sexp).collect();
             format!("{}({})", func.name, args.join(", "))
@@ -85,6 +92,7 @@ fn stmt_sexp(s: &Stmt) -> String {
             format!("fn {}({}) = {}", name.name, p.join(", "), sexp(body))
         }
         StmtKind::Derive { target } => format!("derive {}", target.name),
+        StmtKind::Assert(e) => format!("assert {}", sexp(e)),
     }
 }
 
@@ -698,7 +706,7 @@ fn friendly_errors() {
             "expected an operator, '=' or end of input, found '<'",
             "<",
             Some(
-                "there are no comparisons; `<` only opens a mechanism: mech < links 4; joints 4R; planar >",
+                "comparisons are `==` and `≈` (typed `~=`); `<` only opens a mechanism: mech < links 4; joints 4R; planar >",
             ),
         ),
         (
@@ -891,4 +899,19 @@ mod never_panics {
             check(&src);
         }
     }
+}
+
+/// Comparisons are the loosest operators and chain to the left; `assert`
+/// takes one expression (LANGUAGE.md §3).
+#[test]
+fn comparisons_and_assert() {
+    assert_eq!(
+        stmt_sexp(&one("a + 1 == b * 2 ~= c")),
+        "(~= (== (+ a 1) (* b 2)) c)"
+    );
+    assert_eq!(stmt_sexp(&one("x = a ≈ b")), "x = (~= a b)");
+    assert_eq!(stmt_sexp(&one("assert T ≈ I")), "assert (~= T I)");
+    assert_eq!(stmt_sexp(&one("assert(a == b)")), "assert (== a b)");
+    // `assert` is not reserved: it can still be a name.
+    assert_eq!(stmt_sexp(&one("assert = 3")), "assert = 3");
 }

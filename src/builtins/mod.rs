@@ -6,11 +6,14 @@
 //! the checker with no numbers), and its implementation on values.
 
 mod args;
+pub mod notes;
+pub mod parts;
 mod table_math;
 mod table_repr;
 mod table_rotations;
 mod table_scalar;
 mod table_screw;
+mod table_units;
 
 use std::hash::BuildHasherDefault;
 use std::sync::OnceLock;
@@ -319,6 +322,7 @@ pub fn table() -> &'static [Builtin] {
         t.extend(table_repr::builtins());
         t.extend(table_math::builtins());
         t.extend(table_scalar::builtins());
+        t.extend(table_units::builtins());
         t
     })
 }

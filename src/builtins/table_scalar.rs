@@ -1,7 +1,7 @@
 //! Scalar functions: the trigonometric functions and their inverses with
 //! their domains (arcsine and arccosine on [−1, 1], §3.2.3.3's angles),
-//! `atan2`, `sqrt`, `abs` and `rad2deg`. Each checks its domain and names
-//! the cause of a refusal (`sqrt(-1)`, `acos(2)`).
+//! `atan2`, `sqrt` and `abs` (angle units are in `table_units`). Each checks
+//! its domain and names the cause of a refusal (`sqrt(-1)`, `acos(2)`).
 
 use super::{Area, Args, Builtin, FrameRule, Param, Typing};
 use crate::check::ty::Kind;
@@ -92,6 +92,5 @@ pub(super) fn builtins() -> Vec<Builtin> {
             "the square root of a negative number is not real"
         ),
         scalar_fn!("abs", "absolute value", f64::abs, any, ""),
-        scalar_fn!("rad2deg", "radians to degrees", f64::to_degrees, any, ""),
     ]
 }

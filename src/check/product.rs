@@ -187,6 +187,13 @@ fn mul_kind(l: &Kind, r: &Kind, ops: Operands) -> Result<Kind, RuleError> {
             SE3 | Se3 if dims_agree(n, Some(4)) => Ok(Vector(Some(4))),
             Matrix(None, _) | Matrix(_, None) => Ok(Vector(None)),
             SE2 | Se2 if n == Some(2) => Ok(Vector(Some(2))),
+            // Two column vectors: the student meant a dot or cross product.
+            _ if l.is_vector() && !dims_agree(n, Some(1)) => {
+                let (u, v) = (ops.lhs.trim(), ops.rhs.trim());
+                Err(shape_error(l, r).with_help(format!(
+                    "for two vectors write dot({u}, {v}) or {u}.T * {v} (a number), or cross({u}, {v}); {u} * {v}.T is the outer product"
+                )))
+            }
             _ => {
                 let (rows, cols) = l.shape().ok_or_else(|| shape_error(l, r))?;
                 if !dims_agree(cols, n) {

@@ -205,11 +205,18 @@ pub fn show_outcome(o: &Outcome, style: impl Into<Style>) -> String {
     };
     match (o.names.len(), v) {
         (0, Value::Tuple(items)) => {
+            let labelled = o.labels.len() == items.len();
             let parts: Vec<String> = items
                 .iter()
-                .map(|x| {
+                .enumerate()
+                .map(|(i, x)| {
                     let k = x.kind();
-                    show_value("", &Ty::new(k.clone(), o.ty.frames.part(&k)), x, style)
+                    let prefix = if labelled {
+                        format!("{} = ", o.labels[i])
+                    } else {
+                        String::new()
+                    };
+                    show_value(&prefix, &Ty::new(k.clone(), o.ty.frames.part(&k)), x, style)
                 })
                 .collect();
             out.push_str(&parts.join("\n"));

@@ -39,6 +39,7 @@ pub fn check(stmt: &Stmt, src: &str) -> Checked {
         }
         StmtKind::Given { names, .. } => names.iter().try_for_each(|t| c.name(t)),
         StmtKind::Derive { target } => c.name(target),
+        StmtKind::Assert(cond) => c.expr(cond),
     }
 }
 
@@ -88,6 +89,10 @@ impl Check<'_> {
             ExprKind::Unary { operand: x, .. }
             | ExprKind::Degrees(x)
             | ExprKind::Member { base: x, .. } => self.expr(x),
+            ExprKind::Compare { lhs, rhs, .. } => {
+                self.expr(lhs)?;
+                self.expr(rhs)
+            }
             ExprKind::Call { args, .. } | ExprKind::Paren(args) => {
                 args.iter().try_for_each(|a| self.expr(a))
             }
