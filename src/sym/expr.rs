@@ -1,0 +1,618 @@
+//! The canonical form of a scalar expression (LANGUAGE.md §7): a sum of
+//! monomials with exact coefficients ([`super::coef`]), where a monomial is a
+//! product of integer powers of variables. An angle θ enters through
+//! z = e^{iθ} (cos θ = (z + z⁻¹)/2, sin θ = (z − z⁻¹)/2i), so that a
+//! trigonometric polynomial is a Laurent polynomial in the z's: its
+//! monomials are unique, angle sums fold by themselves (cos(θ1 + θ2) is the
+//! real part of z1 z2), sin² + cos² = 1 needs no rule, and d/dt z = i θ̇ z.
+//! Two expressions are equal exactly when their term maps are equal.
+//! Functions with no such form (sqrt, atan2, 1/(a + b), sin of a non-linear
+//! argument) are kept as calls whose arguments are canonical in turn.
+
+use std::collections::BTreeMap;
+use std::sync::Arc;
+
+use super::coef::{Coef, Rat};
+
+/// A real symbol: a `given` name, possibly a function of time (`given
+/// theta(t) : scalar`), differentiated `dots` times (θ̇ has one).
+#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct Symbol {
+    pub name: Arc<str>,
+    pub timed: bool,
+    pub dots: u8,
+}
+
+impl Symbol {
+    pub fn new(name: &str) -> Symbol {
+        Symbol {
+            name: name.into(),
+            timed: false,
+            dots: 0,
+        }
+    }
+    /// A function of time, θ(t).
+    pub fn timed(name: &str) -> Symbol {
+        Symbol {
+            timed: true,
+            ..Symbol::new(name)
+        }
+    }
+    /// The time derivative, θ̇.
+    pub fn dot(&self) -> Symbol {
+        Symbol {
+            dots: self.dots.saturating_add(1),
+            ..self.clone()
+        }
+    }
+}
+
+/// A function kept as a call.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Func {
+    Sin,
+    Cos,
+    Tan,
+    Asin,
+    Acos,
+    Atan,
+    Atan2,
+    Sqrt,
+    Abs,
+    Exp,
+    /// 1/x of a sum.
+    Recip,
+}
+
+impl Func {
+    pub fn name(self) -> &'static str {
+        match self {
+            Func::Sin => "sin",
+            Func::Cos => "cos",
+            Func::Tan => "tan",
+            Func::Asin => "asin",
+            Func::Acos => "acos",
+            Func::Atan => "atan",
+            Func::Atan2 => "atan2",
+            Func::Sqrt => "sqrt",
+            Func::Abs => "abs",
+            Func::Exp => "exp",
+            Func::Recip => "1/",
+        }
+    }
+}
+
+/// A call with canonical arguments.
+#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord)]
+pub struct Call {
+    pub f: Func,
+    pub args: Vec<Expr>,
+}
+
+/// A variable of a monomial.
+#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord)]
+pub enum Var {
+    /// π, transcendental, so an independent variable.
+    Pi,
+    /// A real symbol as itself (lengths; θ where G(θ) brings it in).
+    Sym(Symbol),
+    /// e^{iθ} of a symbol θ.
+    Z(Symbol),
+    Call(Arc<Call>),
+}
+
+/// Variables with their nonzero exponents, sorted by variable.
+pub type Mono = Vec<(Var, i32)>;
+
+/// A canonical expression: monomials to nonzero coefficients.
+#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord, Default)]
+pub struct Expr {
+    pub terms: BTreeMap<Mono, Coef>,
+}
+
+/// What to differentiate by: time (θ ↦ θ̇ for functions of time) or a symbol.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Wrt {
+    Time,
+    Sym(Symbol),
+}
+
+fn mono_mul(a: &Mono, b: &Mono) -> Mono {
+    let mut out = Vec::with_capacity(a.len() + b.len());
+    let (mut i, mut j) = (0, 0);
+    while i < a.len() && j < b.len() {
+        match a[i].0.cmp(&b[j].0) {
+            std::cmp::Ordering::Less => {
+                out.push(a[i].clone());
+                i += 1;
+            }
+            std::cmp::Ordering::Greater => {
+                out.push(b[j].clone());
+                j += 1;
+            }
+            std::cmp::Ordering::Equal => {
+                let e = a[i].1 + b[j].1;
+                if e != 0 {
+                    out.push((a[i].0.clone(), e));
+                }
+                i += 1;
+                j += 1;
+            }
+        }
+    }
+    out.extend_from_slice(&a[i..]);
+    out.extend_from_slice(&b[j..]);
+    out
+}
+
+impl Expr {
+    pub fn zero() -> Expr {
+        Expr::default()
+    }
+    pub fn constant(c: Coef) -> Expr {
+        let mut e = Expr::zero();
+        if !c.is_zero() {
+            e.terms.insert(Vec::new(), c);
+        }
+        e
+    }
+    pub fn one() -> Expr {
+        Expr::constant(Coef::one())
+    }
+    pub fn int(n: i64) -> Expr {
+        Expr::constant(Coef::int(n))
+    }
+    /// A number, exact when it is a simple closed form (p/q, p/q·√2, …,
+    /// or a multiple of π with a small denominator).
+    pub fn num(x: f64) -> Expr {
+        let c = Coef::from_f64(x);
+        if let Coef::Approx { .. } = c
+            && let Some(p) = Rat::approximate(x / std::f64::consts::PI, 1000)
+        {
+            return Expr::pi().scale(&Coef::rat(p));
+        }
+        Expr::constant(c)
+    }
+    pub fn var(v: Var) -> Expr {
+        Expr::var_pow(v, 1)
+    }
+    fn var_pow(v: Var, e: i32) -> Expr {
+        let mut x = Expr::zero();
+        x.terms.insert(vec![(v, e)], Coef::one());
+        x
+    }
+    pub fn symbol(s: Symbol) -> Expr {
+        Expr::var(Var::Sym(s))
+    }
+    pub fn pi() -> Expr {
+        Expr::var(Var::Pi)
+    }
+    fn call(f: Func, args: Vec<Expr>) -> Expr {
+        Expr::var(Var::Call(Arc::new(Call { f, args })))
+    }
+    pub fn is_zero(&self) -> bool {
+        self.terms.is_empty()
+    }
+    /// The constant, when there are no variables.
+    pub fn as_const(&self) -> Option<Coef> {
+        match self.terms.len() {
+            0 => Some(Coef::ZERO),
+            1 => self.terms.get(&Vec::new()).copied(),
+            _ => None,
+        }
+    }
+    /// The number, when the expression is constant and real.
+    pub fn as_f64(&self) -> Option<f64> {
+        let (re, im) = self.as_const()?.to_c64();
+        (im.abs() <= 1e-12 * re.abs().max(1.0)).then_some(re)
+    }
+    /// Terms plus nested call arguments: the size that the expression limit
+    /// bounds.
+    pub fn size(&self) -> usize {
+        self.terms
+            .keys()
+            .map(|m| {
+                1 + m
+                    .iter()
+                    .map(|(v, _)| match v {
+                        Var::Call(c) => c.args.iter().map(Expr::size).sum(),
+                        _ => 0,
+                    })
+                    .sum::<usize>()
+            })
+            .sum()
+    }
+
+    fn push(&mut self, m: Mono, c: Coef) {
+        if c.is_zero() {
+            return;
+        }
+        match self.terms.entry(m) {
+            std::collections::btree_map::Entry::Vacant(v) => {
+                v.insert(c);
+            }
+            std::collections::btree_map::Entry::Occupied(mut o) => {
+                let s = o.get().add(&c);
+                if s.is_zero() {
+                    o.remove();
+                } else {
+                    *o.get_mut() = s;
+                }
+            }
+        }
+    }
+    pub fn add(&self, o: &Expr) -> Expr {
+        let mut out = self.clone();
+        for (m, c) in &o.terms {
+            out.push(m.clone(), *c);
+        }
+        out
+    }
+    pub fn neg(&self) -> Expr {
+        self.scale(&Coef::int(-1))
+    }
+    pub fn sub(&self, o: &Expr) -> Expr {
+        self.add(&o.neg())
+    }
+    pub fn scale(&self, c: &Coef) -> Expr {
+        let mut out = Expr::zero();
+        for (m, k) in &self.terms {
+            out.push(m.clone(), k.mul(c));
+        }
+        out
+    }
+    pub fn mul(&self, o: &Expr) -> Expr {
+        let mut out = Expr::zero();
+        for (a, c) in &self.terms {
+            for (b, d) in &o.terms {
+                out.push(mono_mul(a, b), c.mul(d));
+            }
+        }
+        out
+    }
+    /// The complex conjugate (symbols and calls are real; z̄ = z⁻¹).
+    pub fn conj(&self) -> Expr {
+        let mut out = Expr::zero();
+        for (m, c) in &self.terms {
+            let m: Mono = m
+                .iter()
+                .map(|(v, e)| match v {
+                    Var::Z(_) => (v.clone(), -e),
+                    _ => (v.clone(), *e),
+                })
+                .collect();
+            let mut m2 = Vec::new();
+            for f in m {
+                m2 = mono_mul(&m2, &vec![f]);
+            }
+            out.push(m2, c.conj());
+        }
+        out
+    }
+    /// 1/x: exact for a single term, a [`Func::Recip`] call of the sum
+    /// scaled to a leading coefficient of 1 otherwise. None for 0.
+    pub fn recip(&self) -> Option<Expr> {
+        if self.terms.len() == 1 {
+            let (m, c) = self.terms.iter().next()?;
+            let m: Mono = m.iter().map(|(v, e)| (v.clone(), -e)).collect();
+            let mut out = Expr::zero();
+            out.push(m, c.inv()?);
+            return Some(out);
+        }
+        let lead = *self.terms.values().next()?;
+        let inv = lead.inv()?;
+        Some(Expr::call(Func::Recip, vec![self.scale(&inv)]).scale(&inv))
+    }
+    /// a / b; None when b is 0.
+    pub fn div(&self, b: &Expr) -> Option<Expr> {
+        if self == b && !b.is_zero() {
+            return Some(Expr::one());
+        }
+        Some(self.mul(&b.recip()?))
+    }
+    /// An integer power; None for a negative power of 0.
+    pub fn powi(&self, n: i64) -> Option<Expr> {
+        if n < 0 {
+            return self.recip()?.powi(-n);
+        }
+        let mut result = Expr::one();
+        let mut base = self.clone();
+        let mut n = n;
+        while n > 0 {
+            if n & 1 == 1 {
+                result = result.mul(&base);
+            }
+            n >>= 1;
+            if n > 0 {
+                base = base.mul(&base);
+            }
+        }
+        Some(result)
+    }
+
+    /// e^{i·arg} as a monomial in the z's, when `arg` is an integer
+    /// combination of symbols plus a multiple of π/12.
+    pub fn expi(arg: &Expr) -> Option<Expr> {
+        let mut mono: Mono = Vec::new();
+        let mut coef = Coef::one();
+        for (m, c) in &arg.terms {
+            let k = c.as_rat()?;
+            match m.as_slice() {
+                [(Var::Sym(s), 1)] => {
+                    let k = i32::try_from(k.as_int()?).ok()?;
+                    mono = mono_mul(&mono, &vec![(Var::Z(s.clone()), k)]);
+                }
+                [(Var::Pi, 1)] => coef = coef.mul(&Coef::unit_root(k)?),
+                _ => return None,
+            }
+        }
+        let mut e = Expr::zero();
+        e.push(mono, coef);
+        Some(e)
+    }
+    /// cos x: folded into the z's when x is linear, else a call.
+    pub fn cos(x: &Expr) -> Expr {
+        if let Some(e) = Expr::expi(x) {
+            return e
+                .add(&e.conj())
+                .scale(&Coef::rat(Rat::new(1, 2).unwrap_or(Rat::ONE)));
+        }
+        Expr::apply(Func::Cos, x, f64::cos)
+    }
+    /// sin x: folded into the z's when x is linear, else a call.
+    pub fn sin(x: &Expr) -> Expr {
+        if let Some(e) = Expr::expi(x) {
+            // (e − ē)/(2i) = −i/2 (e − ē)
+            let k = Coef::i().mul(&Coef::rat(Rat::new(-1, 2).unwrap_or(Rat::ONE)));
+            return e.sub(&e.conj()).scale(&k);
+        }
+        Expr::apply(Func::Sin, x, f64::sin)
+    }
+    /// A one-argument function: evaluated when the argument is a number,
+    /// else kept as a call.
+    pub fn apply(f: Func, x: &Expr, num: fn(f64) -> f64) -> Expr {
+        match x.as_f64() {
+            Some(v) if num(v).is_finite() => Expr::num(num(v)),
+            _ => Expr::call(f, vec![x.clone()]),
+        }
+    }
+    /// √x: exact for p/q with a square-free part among 1, 2, 3, 6.
+    pub fn sqrt(x: &Expr) -> Expr {
+        if let Some(r) = x.as_const().and_then(|c| c.as_rat())
+            && r.num >= 0
+        {
+            return Expr::num(r.to_f64().sqrt());
+        }
+        Expr::apply(Func::Sqrt, x, f64::sqrt)
+    }
+    /// atan2(y, x), a number when both are.
+    pub fn atan2(y: &Expr, x: &Expr) -> Expr {
+        match (y.as_f64(), x.as_f64()) {
+            (Some(a), Some(b)) => Expr::num(a.atan2(b)),
+            _ => Expr::call(Func::Atan2, vec![y.clone(), x.clone()]),
+        }
+    }
+
+    /// The symbols the expression depends on.
+    pub fn symbols(&self, out: &mut Vec<Symbol>) {
+        for m in self.terms.keys() {
+            for (v, _) in m {
+                match v {
+                    Var::Sym(s) | Var::Z(s) => {
+                        if !out.contains(s) {
+                            out.push(s.clone());
+                        }
+                    }
+                    Var::Call(c) => c.args.iter().for_each(|a| a.symbols(out)),
+                    Var::Pi => {}
+                }
+            }
+        }
+    }
+
+    /// The value with numbers for the symbols (the real part); None when a
+    /// symbol has no number.
+    pub fn eval(&self, at: &dyn Fn(&Symbol) -> Option<f64>) -> Option<f64> {
+        self.eval_c(at).map(|(re, _)| re)
+    }
+
+    fn eval_c(&self, at: &dyn Fn(&Symbol) -> Option<f64>) -> Option<(f64, f64)> {
+        let (mut sre, mut sim) = (0.0, 0.0);
+        for (m, c) in &self.terms {
+            let (mut re, mut im) = c.to_c64();
+            for (v, e) in m {
+                let (a, b) = match v {
+                    Var::Pi => (std::f64::consts::PI.powi(*e), 0.0),
+                    Var::Sym(s) => (at(s)?.powi(*e), 0.0),
+                    Var::Z(s) => {
+                        let t = at(s)? * f64::from(*e);
+                        (t.cos(), t.sin())
+                    }
+                    Var::Call(c) => (eval_call(c, at)?.powi(*e), 0.0),
+                };
+                (re, im) = (re * a - im * b, re * b + im * a);
+            }
+            sre += re;
+            sim += im;
+        }
+        Some((sre, sim))
+    }
+
+    /// The expression with some symbols replaced (by numbers or other
+    /// expressions), re-canonicalized.
+    pub fn subst(&self, by: &dyn Fn(&Symbol) -> Option<Expr>) -> Expr {
+        let mut out = Expr::zero();
+        for (m, c) in &self.terms {
+            let mut t = Expr::constant(*c);
+            for (v, e) in m {
+                let f = match v {
+                    Var::Sym(s) => by(s).unwrap_or_else(|| Expr::var(v.clone())),
+                    Var::Z(s) => match by(s) {
+                        Some(x) => Expr::cos(&x).add(&Expr::sin(&x).scale(&Coef::i())),
+                        None => Expr::var(v.clone()),
+                    },
+                    Var::Pi => Expr::pi(),
+                    Var::Call(c) => {
+                        let args: Vec<Expr> = c.args.iter().map(|a| a.subst(by)).collect();
+                        rebuild(c.f, &args)
+                    }
+                };
+                t = t.mul(&f.powi(i64::from(*e)).unwrap_or_default());
+            }
+            out = out.add(&t);
+        }
+        out
+    }
+
+    /// The derivative (chain rule through every variable).
+    pub fn diff(&self, wrt: &Wrt) -> Expr {
+        let mut out = Expr::zero();
+        for (m, c) in &self.terms {
+            for (i, (v, e)) in m.iter().enumerate() {
+                let dv = var_diff(v, wrt);
+                if dv.is_zero() {
+                    continue;
+                }
+                let mut rest: Mono = m.clone();
+                if *e == 1 {
+                    rest.remove(i);
+                } else {
+                    rest[i].1 = e - 1;
+                }
+                let mut t = Expr::zero();
+                t.push(rest, c.mul(&Coef::int(i64::from(*e))));
+                out = out.add(&t.mul(&dv));
+            }
+        }
+        out
+    }
+}
+
+fn symbol_diff(s: &Symbol, wrt: &Wrt) -> Expr {
+    match wrt {
+        Wrt::Sym(x) if x == s => Expr::one(),
+        Wrt::Time if s.timed => Expr::symbol(s.dot()),
+        _ => Expr::zero(),
+    }
+}
+
+fn var_diff(v: &Var, wrt: &Wrt) -> Expr {
+    match v {
+        Var::Pi => Expr::zero(),
+        Var::Sym(s) => symbol_diff(s, wrt),
+        // d/dt e^{iθ} = i θ̇ e^{iθ}
+        Var::Z(s) => symbol_diff(s, wrt)
+            .mul(&Expr::var(v.clone()))
+            .scale(&Coef::i()),
+        Var::Call(c) => call_diff(c, wrt),
+    }
+}
+
+fn call_diff(c: &Call, wrt: &Wrt) -> Expr {
+    let x = &c.args[0];
+    let dx = x.diff(wrt);
+    let me = Expr::var(Var::Call(Arc::new(c.clone())));
+    let recip = |e: &Expr| e.recip().unwrap_or_default();
+    let one = Expr::one();
+    let outer = match c.f {
+        Func::Sin => Expr::cos(x),
+        Func::Cos => Expr::sin(x).neg(),
+        Func::Tan => one.add(&me.mul(&me)),
+        Func::Exp => me.clone(),
+        Func::Sqrt => recip(&me.scale(&Coef::int(2))),
+        Func::Asin => recip(&Expr::sqrt(&one.sub(&x.mul(x)))),
+        Func::Acos => recip(&Expr::sqrt(&one.sub(&x.mul(x)))).neg(),
+        Func::Atan => recip(&one.add(&x.mul(x))),
+        Func::Abs => x.mul(&recip(&me)),
+        Func::Recip => me.mul(&me).neg(),
+        Func::Atan2 => {
+            // d atan2(y, x) = (x dy − y dx)/(x² + y²)
+            let (y, xx) = (&c.args[0], &c.args[1]);
+            let num = xx.mul(&y.diff(wrt)).sub(&y.mul(&xx.diff(wrt)));
+            return num.mul(&recip(&xx.mul(xx).add(&y.mul(y))));
+        }
+    };
+    outer.mul(&dx)
+}
+
+/// A call rebuilt through its constructor (so numbers fold).
+pub fn rebuild(f: Func, args: &[Expr]) -> Expr {
+    let x = &args[0];
+    match f {
+        Func::Sin => Expr::sin(x),
+        Func::Cos => Expr::cos(x),
+        Func::Tan => Expr::apply(f, x, f64::tan),
+        Func::Asin => Expr::apply(f, x, f64::asin),
+        Func::Acos => Expr::apply(f, x, f64::acos),
+        Func::Atan => Expr::apply(f, x, f64::atan),
+        Func::Abs => Expr::apply(f, x, f64::abs),
+        Func::Exp => Expr::apply(f, x, f64::exp),
+        Func::Sqrt => Expr::sqrt(x),
+        Func::Recip => x.recip().unwrap_or_else(|| Expr::num(f64::INFINITY)),
+        Func::Atan2 => Expr::atan2(x, &args[1]),
+    }
+}
+
+fn eval_call(c: &Call, at: &dyn Fn(&Symbol) -> Option<f64>) -> Option<f64> {
+    let x = c.args[0].eval(at)?;
+    Some(match c.f {
+        Func::Sin => x.sin(),
+        Func::Cos => x.cos(),
+        Func::Tan => x.tan(),
+        Func::Asin => x.asin(),
+        Func::Acos => x.acos(),
+        Func::Atan => x.atan(),
+        Func::Sqrt => x.sqrt(),
+        Func::Abs => x.abs(),
+        Func::Exp => x.exp(),
+        Func::Recip => 1.0 / x,
+        Func::Atan2 => x.atan2(c.args.get(1)?.eval(at)?),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn s(n: &str) -> Expr {
+        Expr::symbol(Symbol::new(n))
+    }
+
+    #[test]
+    fn pythagoras_and_angle_sums_need_no_rule() {
+        let t = s("t");
+        let one = Expr::cos(&t)
+            .powi(2)
+            .unwrap()
+            .add(&Expr::sin(&t).powi(2).unwrap());
+        assert_eq!(one, Expr::one());
+        let (a, b) = (s("a"), s("b"));
+        let lhs = Expr::cos(&a)
+            .mul(&Expr::cos(&b))
+            .sub(&Expr::sin(&a).mul(&Expr::sin(&b)));
+        assert_eq!(lhs, Expr::cos(&a.add(&b)));
+        assert_eq!(
+            Expr::cos(&t.add(&Expr::pi().scale(&Coef::rat(Rat::new(1, 2).unwrap())))),
+            Expr::sin(&t).neg()
+        );
+    }
+
+    #[test]
+    fn time_derivative_by_the_chain_rule() {
+        let th = Expr::symbol(Symbol::timed("theta"));
+        let d = Expr::sin(&th).diff(&Wrt::Time);
+        let want = Expr::cos(&th).mul(&Expr::symbol(Symbol::timed("theta").dot()));
+        assert_eq!(d, want);
+    }
+
+    #[test]
+    fn evaluation_matches_numbers() {
+        let (a, b) = (s("a"), s("b"));
+        let e = Expr::cos(&a.add(&b))
+            .mul(&b)
+            .add(&Expr::sqrt(&a.mul(&a).add(&Expr::one())));
+        let at = |x: &Symbol| Some(if &*x.name == "a" { 0.3 } else { -1.2 });
+        let want = (0.3f64 - 1.2).cos() * -1.2 + (0.09f64 + 1.0).sqrt();
+        assert!((e.eval(&at).unwrap() - want).abs() < 1e-14);
+    }
+}

@@ -1,0 +1,656 @@
+//! Printing canonical expressions as the book writes them (LANGUAGE.md §7):
+//! each z-monomial is paired with its conjugate back into cosines and sines
+//! of angle sums. The angles are split into groups (for the UR5, {θ1},
+//! {θ2, θ3, θ4}, {θ5}): inside a group an angle sum stays one cosine,
+//! `cos(t2 + t3)`, across groups products stay products,
+//! `sin(t1) cos(t5)`; the grouping with the fewest terms is chosen. Output
+//! is plain text `L1 cos(t1) + L2 cos(t1 + t2)`, the book's shorthand
+//! `L1 c₁ + L2 c₁₂`, or LaTeX `L_1 \cos\theta_1 + …`.
+
+use std::collections::BTreeMap;
+
+use super::coef::{Coef, ROOTS, Rat};
+use super::expr::{Expr, Func, Mono, Symbol, Var};
+
+/// The output form.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Mode {
+    #[default]
+    Text,
+    /// The book's shorthand: c₁ = cos θ1, s₁₂ = sin(θ1 + θ2).
+    Short,
+    Latex,
+}
+
+/// How to print: the form and the decimals of inexact coefficients.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Style {
+    pub mode: Mode,
+    pub digits: usize,
+}
+
+impl Default for Style {
+    fn default() -> Style {
+        Style {
+            mode: Mode::Text,
+            digits: 4,
+        }
+    }
+}
+
+/// One trigonometric factor: an integer combination of angles (first
+/// coefficient positive) and whether it is a sine.
+type Trig = (Vec<(Symbol, i32)>, bool);
+/// The real terms: (non-angle monomial, trigonometric factors) → coefficient.
+type Real = BTreeMap<(Mono, Vec<Trig>), Coef>;
+
+/// A grouping of angles, and what printing with it costs (terms, then
+/// fewer groups).
+type Groups = Vec<Vec<Symbol>>;
+type Cost = (usize, usize);
+
+/// The real form of `e` for a grouping of its angles.
+fn realize(e: &Expr, groups: &[Vec<Symbol>]) -> Real {
+    let mut out: Real = BTreeMap::new();
+    let half_i = Coef::i();
+    for (m, c) in &e.terms {
+        let mut poly: Mono = Vec::new();
+        let mut zs: Vec<(&Symbol, i32)> = Vec::new();
+        for (v, k) in m {
+            match v {
+                Var::Z(s) => zs.push((s, *k)),
+                other => poly.push((other.clone(), *k)),
+            }
+        }
+        let mut parts: Vec<(Vec<Trig>, Coef)> = vec![(Vec::new(), *c)];
+        for g in groups {
+            let mut k: Vec<(Symbol, i32)> = zs
+                .iter()
+                .filter(|(s, _)| g.contains(s))
+                .map(|(s, k)| ((*s).clone(), *k))
+                .collect();
+            if k.is_empty() {
+                continue;
+            }
+            k.sort();
+            let sign = if k[0].1 > 0 { 1 } else { -1 };
+            for x in &mut k {
+                x.1 *= sign;
+            }
+            let sin_factor = half_i.mul(&Coef::int(i64::from(sign)));
+            parts = parts
+                .into_iter()
+                .flat_map(|(t, c)| {
+                    let mut ct = t.clone();
+                    ct.push((k.clone(), false));
+                    let mut st = t;
+                    st.push((k.clone(), true));
+                    [(ct, c), (st, c.mul(&sin_factor))]
+                })
+                .collect();
+        }
+        for (t, k) in parts {
+            let key = (poly.clone(), t);
+            let sum = out.get(&key).map_or(k, |old| old.add(&k));
+            out.insert(key, sum);
+        }
+    }
+    out.retain(|_, c| !negligible(c));
+    out
+}
+
+fn negligible(c: &Coef) -> bool {
+    match c {
+        Coef::Exact { re, .. } => re.is_zero(),
+        Coef::Approx { re, .. } => re.abs() < 1e-13,
+    }
+}
+
+/// The grouping of `angles` that prints `e` with the fewest terms (ties:
+/// more groups): every partition up to five angles, greedy merging beyond.
+fn best_groups(e: &Expr, angles: &[Symbol]) -> Vec<Vec<Symbol>> {
+    let cost = |g: &[Vec<Symbol>]| (realize(e, g).len(), usize::MAX - g.len());
+    let n = angles.len();
+    if n <= 5 {
+        let mut best: Option<(Cost, Groups)> = None;
+        let mut code = vec![0usize; n];
+        loop {
+            let k = code.iter().max().map_or(0, |m| m + 1);
+            let mut groups = vec![Vec::new(); k];
+            for (i, &c) in code.iter().enumerate() {
+                groups[c].push(angles[i].clone());
+            }
+            let c = cost(&groups);
+            if best.as_ref().is_none_or(|(b, _)| c < *b) {
+                best = Some((c, groups));
+            }
+            // next restricted growth string
+            let mut i = n;
+            loop {
+                if i <= 1 {
+                    return best.map(|b| b.1).unwrap_or_default();
+                }
+                i -= 1;
+                let max_prev = code[..i].iter().max().copied().unwrap_or(0);
+                if code[i] <= max_prev {
+                    code[i] += 1;
+                    code[i + 1..].iter_mut().for_each(|x| *x = 0);
+                    break;
+                }
+            }
+        }
+    }
+    let mut groups: Vec<Vec<Symbol>> = angles.iter().map(|a| vec![a.clone()]).collect();
+    let mut current = cost(&groups);
+    loop {
+        let mut best: Option<(Cost, Groups)> = None;
+        for i in 0..groups.len() {
+            for j in i + 1..groups.len() {
+                let mut g = groups.clone();
+                let moved = g.remove(j);
+                g[i].extend(moved);
+                let c = cost(&g);
+                if c.0 < current.0 && best.as_ref().is_none_or(|(b, _)| c < *b) {
+                    best = Some((c, g));
+                }
+            }
+        }
+        match best {
+            Some((c, g)) => {
+                current = c;
+                groups = g;
+            }
+            None => return groups,
+        }
+    }
+}
+
+/// The terms of `e`, each with its sign: `("+", "L1 cos(t1)")`.
+pub fn terms(e: &Expr, st: Style) -> Vec<(bool, String)> {
+    let mut angles: Vec<Symbol> = Vec::new();
+    for m in e.terms.keys() {
+        for (v, _) in m {
+            if let Var::Z(s) = v
+                && !angles.contains(s)
+            {
+                angles.push(s.clone());
+            }
+        }
+    }
+    angles.sort();
+    let groups = best_groups(e, &angles);
+    realize(e, &groups)
+        .iter()
+        .map(|((poly, trig), c)| term(c, poly, trig, st))
+        .collect()
+}
+
+/// An expression on one line.
+pub fn expr(e: &Expr, st: Style) -> String {
+    join(&terms(e, st), usize::MAX, 0)
+}
+
+/// Signed terms joined, broken before a `+` or `-` where a line would pass
+/// `width`, continuation lines indented by `indent`.
+pub fn join(ts: &[(bool, String)], width: usize, indent: usize) -> String {
+    if ts.is_empty() {
+        return "0".into();
+    }
+    let mut out = String::new();
+    let mut line = 0usize;
+    for (i, (neg, body)) in ts.iter().enumerate() {
+        let piece = match (i, neg) {
+            (0, false) => body.clone(),
+            (0, true) => format!("-{body}"),
+            (_, false) => format!(" + {body}"),
+            (_, true) => format!(" - {body}"),
+        };
+        let len = piece.chars().count();
+        if i > 0 && line + len > width {
+            out.push('\n');
+            out.push_str(&" ".repeat(indent));
+            let p = piece.trim_start();
+            line = indent + p.chars().count();
+            out.push_str(p);
+        } else {
+            line += len;
+            out.push_str(&piece);
+        }
+    }
+    out
+}
+
+fn term(c: &Coef, poly: &Mono, trig: &[Trig], st: Style) -> (bool, String) {
+    let latex = st.mode == Mode::Latex;
+    let mut num: Vec<String> = Vec::new();
+    let mut den: Vec<String> = Vec::new();
+    for (v, e) in poly {
+        let (into, e) = match (v, *e > 0) {
+            (Var::Call(c), true) if c.f == Func::Recip => (&mut den, *e),
+            (Var::Call(c), false) if c.f == Func::Recip => (&mut num, -*e),
+            (_, true) => (&mut num, *e),
+            (_, false) => (&mut den, -*e),
+        };
+        into.push(power(&var(v, st), e, latex));
+    }
+    for (k, sin) in trig {
+        num.push(trig_factor(k, *sin, st));
+    }
+    let (neg, coef) = coefficient(c, st);
+    let has_factors = !num.is_empty() || !den.is_empty();
+    let sep = " ";
+    let mut body = num.join(sep);
+    if !den.is_empty() {
+        let d = den.join(sep);
+        if latex {
+            body = format!(
+                "\\frac{{{}}}{{{d}}}",
+                if body.is_empty() { "1" } else { &body }
+            );
+        } else {
+            let d = if den.len() > 1 { format!("({d})") } else { d };
+            body = format!("{}/{d}", if body.is_empty() { "1" } else { &body });
+        }
+    }
+    let text = match (coef.as_str(), has_factors) {
+        ("1", true) => body,
+        (_, true) => {
+            let wrap = !latex && coef.contains(['/', ' ']);
+            if wrap {
+                format!("({coef}) {body}")
+            } else {
+                format!("{coef} {body}")
+            }
+        }
+        _ => coef,
+    };
+    (neg, text)
+}
+
+fn power(base: &str, e: i32, latex: bool) -> String {
+    match (e, latex) {
+        (1, _) => base.to_string(),
+        (_, true) => format!("{base}^{{{e}}}"),
+        (_, false) => format!("{base}^{e}"),
+    }
+}
+
+fn var(v: &Var, st: Style) -> String {
+    let latex = st.mode == Mode::Latex;
+    match v {
+        Var::Pi if latex => "\\pi".into(),
+        Var::Pi => "π".into(),
+        Var::Sym(s) | Var::Z(s) => symbol(s, st),
+        Var::Call(c) => {
+            let args: Vec<String> = c.args.iter().map(|a| expr(a, st)).collect();
+            match (c.f, latex) {
+                (Func::Recip, true) => format!("\\left({}\\right)", args[0]),
+                (Func::Recip, false) => format!("({})", args[0]),
+                (Func::Sqrt, true) => format!("\\sqrt{{{}}}", args[0]),
+                (f, true) => format!(
+                    "\\operatorname{{{}}}\\left({}\\right)",
+                    f.name(),
+                    args.join(", ")
+                ),
+                (f, false) => format!("{}({})", f.name(), args.join(", ")),
+            }
+        }
+    }
+}
+
+const GREEK: [(&str, char, &str); 30] = [
+    ("alpha", 'α', "\\alpha"),
+    ("beta", 'β', "\\beta"),
+    ("gamma", 'γ', "\\gamma"),
+    ("delta", 'δ', "\\delta"),
+    ("epsilon", 'ε', "\\epsilon"),
+    ("zeta", 'ζ', "\\zeta"),
+    ("eta", 'η', "\\eta"),
+    ("theta", 'θ', "\\theta"),
+    ("iota", 'ι', "\\iota"),
+    ("kappa", 'κ', "\\kappa"),
+    ("lambda", 'λ', "\\lambda"),
+    ("mu", 'μ', "\\mu"),
+    ("nu", 'ν', "\\nu"),
+    ("xi", 'ξ', "\\xi"),
+    ("rho", 'ρ', "\\rho"),
+    ("sigma", 'σ', "\\sigma"),
+    ("tau", 'τ', "\\tau"),
+    ("phi", 'φ', "\\phi"),
+    ("chi", 'χ', "\\chi"),
+    ("psi", 'ψ', "\\psi"),
+    ("omega", 'ω', "\\omega"),
+    ("Gamma", 'Γ', "\\Gamma"),
+    ("Delta", 'Δ', "\\Delta"),
+    ("Theta", 'Θ', "\\Theta"),
+    ("Lambda", 'Λ', "\\Lambda"),
+    ("Xi", 'Ξ', "\\Xi"),
+    ("Sigma", 'Σ', "\\Sigma"),
+    ("Phi", 'Φ', "\\Phi"),
+    ("Psi", 'Ψ', "\\Psi"),
+    ("Omega", 'Ω', "\\Omega"),
+];
+
+/// A name split into its letters and its subscript: `theta1` → (`theta`,
+/// `1`), `L_2` → (`L`, `2`), `t_{ab}` → (`t`, `ab`).
+fn split_name(name: &str) -> (&str, &str) {
+    if let Some((b, s)) = name.split_once('_') {
+        return (b, s.trim_start_matches('{').trim_end_matches('}'));
+    }
+    let cut = name
+        .char_indices()
+        .rev()
+        .take_while(|(_, c)| c.is_ascii_digit())
+        .last()
+        .map_or(name.len(), |(i, _)| i);
+    (&name[..cut], &name[cut..])
+}
+
+/// A symbol's name: as typed; a time derivative θ̇ with the Greek letter
+/// and a dot (two dots for θ̈, primes beyond).
+pub fn symbol(s: &Symbol, st: Style) -> String {
+    let (base, sub) = split_name(&s.name);
+    if st.mode == Mode::Latex {
+        let b = GREEK
+            .iter()
+            .find(|(w, c, _)| *w == base || base.chars().eq(std::iter::once(*c)))
+            .map_or_else(|| base.to_string(), |g| g.2.to_string());
+        let wrap = |cmd: &str| {
+            if b.starts_with('\\') {
+                format!("{cmd}{b}")
+            } else {
+                format!("{cmd}{{{b}}}")
+            }
+        };
+        let b = match s.dots {
+            0 => b.clone(),
+            1 => wrap("\\dot"),
+            2 => wrap("\\ddot"),
+            n => format!("{b}^{{({n})}}"),
+        };
+        return match sub.chars().count() {
+            0 => b,
+            1 => format!("{b}_{sub}"),
+            _ => format!("{b}_{{{sub}}}"),
+        };
+    }
+    if s.dots == 0 {
+        return s.name.to_string();
+    }
+    if s.dots > 2 {
+        return format!("{}{}", s.name, "'".repeat(s.dots as usize));
+    }
+    let greek = GREEK.iter().find(|(w, _, _)| *w == base).map(|g| g.1);
+    let mut chars = base.chars();
+    let first = greek.or_else(|| chars.next()).unwrap_or('?');
+    let rest: String = if greek.is_some() {
+        String::new()
+    } else {
+        chars.collect()
+    };
+    let mark = if s.dots == 1 { '\u{307}' } else { '\u{308}' };
+    let tail = &s.name[base.len()..];
+    format!("{first}{mark}{rest}{tail}")
+}
+
+fn trig_factor(k: &[(Symbol, i32)], sin: bool, st: Style) -> String {
+    let f = if sin { "sin" } else { "cos" };
+    if st.mode == Mode::Short
+        && let Some(short) = short_trig(k, sin)
+    {
+        return short;
+    }
+    let mut arg = String::new();
+    for (i, (s, c)) in k.iter().enumerate() {
+        let name = symbol(s, st);
+        let mag = c.abs();
+        let piece = if mag == 1 {
+            name
+        } else {
+            format!("{mag} {name}")
+        };
+        match (i, *c < 0) {
+            (0, _) => arg.push_str(&piece),
+            (_, false) => arg.push_str(&format!(" + {piece}")),
+            (_, true) => arg.push_str(&format!(" - {piece}")),
+        }
+    }
+    if st.mode == Mode::Latex {
+        if k.len() == 1 && k[0].1 == 1 {
+            let space = if arg.starts_with('\\') { "" } else { " " };
+            format!("\\{f}{space}{arg}")
+        } else {
+            format!("\\{f}({arg})")
+        }
+    } else {
+        format!("{f}({arg})")
+    }
+}
+
+/// `c₁₂` for cos(θ1 + θ2), `sθ` for sin θ: the book's shorthand, when it
+/// applies (all coefficients 1, indexed names or a single angle).
+fn short_trig(k: &[(Symbol, i32)], sin: bool) -> Option<String> {
+    const SUB: [char; 10] = ['₀', '₁', '₂', '₃', '₄', '₅', '₆', '₇', '₈', '₉'];
+    if k.iter().any(|(s, c)| *c != 1 || s.dots > 0) {
+        return None;
+    }
+    let f = if sin { 's' } else { 'c' };
+    let mut out = String::from(f);
+    for (s, _) in k {
+        let (base, sub) = split_name(&s.name);
+        if sub.is_empty() || !sub.chars().all(|c| c.is_ascii_digit()) {
+            if k.len() == 1 {
+                let g = GREEK
+                    .iter()
+                    .find(|(w, _, _)| *w == base)
+                    .map(|g| g.1.to_string());
+                return Some(format!("{f}{}", g.unwrap_or_else(|| s.name.to_string())));
+            }
+            return None;
+        }
+        out.extend(
+            sub.chars()
+                .map(|c| SUB[c.to_digit(10).unwrap_or(0) as usize]),
+        );
+    }
+    Some(out)
+}
+
+/// A coefficient's sign and magnitude as text ("1" for one).
+fn coefficient(c: &Coef, st: Style) -> (bool, String) {
+    let latex = st.mode == Mode::Latex;
+    match c {
+        Coef::Approx { re, .. } => (*re < 0.0, fmt_float(re.abs(), st.digits)),
+        Coef::Exact { re, .. } => {
+            let neg = re.signum() < 0.0;
+            let s = if neg { re.neg() } else { *re };
+            let parts: Vec<(usize, Rat)> =
+                s.0.iter()
+                    .enumerate()
+                    .filter(|(_, r)| !r.is_zero())
+                    .map(|(i, r)| (i, *r))
+                    .collect();
+            match parts.as_slice() {
+                [] => (false, "0".into()),
+                [(i, r)] => (neg, surd_term(*r, ROOTS[*i], latex)),
+                _ => {
+                    let inner: Vec<String> = parts
+                        .iter()
+                        .map(|(i, r)| surd_term(*r, ROOTS[*i], latex))
+                        .collect();
+                    let sum = inner.join(" + ").replace("+ -", "- ");
+                    let wrapped = if latex {
+                        format!("\\left({sum}\\right)")
+                    } else {
+                        format!("({sum})")
+                    };
+                    (neg, wrapped)
+                }
+            }
+        }
+    }
+}
+
+/// (p/q)√k as text or LaTeX: `3`, `17/40` (or `0.425`), `√2`, `1/√2`, `√3/2`.
+fn surd_term(r: Rat, k: i64, latex: bool) -> String {
+    let (p, q) = (r.num, r.den);
+    let sign = if p < 0 { "-" } else { "" };
+    let p = p.abs();
+    if k == 1 {
+        if q == 1 {
+            return format!("{sign}{p}");
+        }
+        if q > 10 && 1_000_000_000 % q == 0 {
+            return format!("{sign}{}", r.to_f64().abs());
+        }
+        return if latex {
+            format!("{sign}\\frac{{{p}}}{{{q}}}")
+        } else {
+            format!("{sign}{p}/{q}")
+        };
+    }
+    let root = if latex {
+        format!("\\sqrt{{{k}}}")
+    } else {
+        format!("√{k}")
+    };
+    let top = if p == 1 {
+        root.clone()
+    } else {
+        format!("{p}{root}")
+    };
+    match (q, latex) {
+        (1, _) => format!("{sign}{top}"),
+        _ if p == 1 && i128::from(k) == q => {
+            if latex {
+                format!("{sign}\\frac{{1}}{{{root}}}")
+            } else {
+                format!("{sign}1/{root}")
+            }
+        }
+        (_, true) => format!("{sign}\\frac{{{top}}}{{{q}}}"),
+        (_, false) => format!("{sign}{top}/{q}"),
+    }
+}
+
+fn fmt_float(x: f64, digits: usize) -> String {
+    let s = format!("{x:.digits$}");
+    let s = if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s
+    };
+    if s == "-0" { "0".into() } else { s }
+}
+
+/// Cells of a symbolic matrix: text with aligned columns (`[a, b;` …), one
+/// entry per line with long entries wrapped when a row is wider than
+/// `width`, or a LaTeX `bmatrix`. `indent` is the column of the `[`.
+pub fn matrix(cells: &[Vec<Expr>], st: Style, indent: usize, width: usize) -> String {
+    if st.mode == Mode::Latex {
+        let rows: Vec<String> = cells
+            .iter()
+            .map(|r| {
+                r.iter()
+                    .map(|e| expr(e, st))
+                    .collect::<Vec<_>>()
+                    .join(" & ")
+            })
+            .collect();
+        return format!(
+            "\\begin{{bmatrix}} {} \\end{{bmatrix}}",
+            rows.join(" \\\\ ")
+        );
+    }
+    let text: Vec<Vec<Vec<(bool, String)>>> = cells
+        .iter()
+        .map(|r| r.iter().map(|e| terms(e, st)).collect())
+        .collect();
+    let flat: Vec<Vec<String>> = text
+        .iter()
+        .map(|r| r.iter().map(|t| join(t, usize::MAX, 0)).collect())
+        .collect();
+    let ncols = flat.first().map_or(0, Vec::len);
+    let widths: Vec<usize> = (0..ncols)
+        .map(|j| flat.iter().map(|r| r[j].chars().count()).max().unwrap_or(0))
+        .collect();
+    let pad = " ".repeat(indent + 1);
+    let total: usize = widths.iter().sum::<usize>() + 2 * ncols + indent;
+    if total <= width {
+        let rows: Vec<String> = flat
+            .iter()
+            .map(|r| {
+                r.iter()
+                    .enumerate()
+                    .map(|(j, c)| {
+                        if j + 1 < ncols {
+                            format!("{c},{}", " ".repeat(widths[j] - c.chars().count() + 1))
+                        } else {
+                            c.clone()
+                        }
+                    })
+                    .collect::<String>()
+            })
+            .collect();
+        return format!("[{}]", rows.join(&format!("\n{pad}")));
+    }
+    let rows: Vec<String> = text
+        .iter()
+        .map(|r| {
+            r.iter()
+                .map(|t| join(t, width.saturating_sub(indent + 1).max(40), indent + 3))
+                .collect::<Vec<_>>()
+                .join(&format!(",\n{pad}"))
+        })
+        .collect();
+    format!("[{}]", rows.join(&format!(";\n{pad}")))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn s(n: &str) -> Expr {
+        Expr::symbol(Symbol::new(n))
+    }
+
+    #[test]
+    fn planar_arm_prints_as_the_book() {
+        let (t1, t2) = (s("t1"), s("t2"));
+        let x = s("L1")
+            .mul(&Expr::cos(&t1))
+            .add(&s("L2").mul(&Expr::cos(&t1.add(&t2))));
+        assert_eq!(expr(&x, Style::default()), "L1 cos(t1) + L2 cos(t1 + t2)");
+        let short = Style {
+            mode: Mode::Short,
+            digits: 4,
+        };
+        assert_eq!(expr(&x, short), "L1 c₁ + L2 c₁₂");
+        let latex = Style {
+            mode: Mode::Latex,
+            digits: 4,
+        };
+        assert_eq!(expr(&x, latex), "L_1 \\cos t_1 + L_2 \\cos(t_1 + t_2)");
+    }
+
+    #[test]
+    fn products_of_separate_angles_stay_products() {
+        let (a, b) = (s("t1"), s("t5"));
+        let x = Expr::sin(&a)
+            .mul(&Expr::cos(&b))
+            .scale(&Coef::from_f64(-0.082));
+        assert_eq!(expr(&x, Style::default()), "-0.082 sin(t1) cos(t5)");
+    }
+
+    #[test]
+    fn dots_and_exact_constants() {
+        let th = Symbol::timed("theta");
+        let x = Expr::symbol(th.dot()).scale(&Coef::from_f64(0.5f64.sqrt()));
+        assert_eq!(expr(&x, Style::default()), "(1/√2) θ̇");
+        let latex = Style {
+            mode: Mode::Latex,
+            digits: 4,
+        };
+        assert_eq!(expr(&Expr::symbol(th.dot()), latex), "\\dot\\theta");
+    }
+}
