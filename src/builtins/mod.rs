@@ -10,10 +10,12 @@ mod table_math;
 mod table_repr;
 mod table_rotations;
 mod table_screw;
+mod table_sym;
 
 use std::sync::OnceLock;
 
 pub use args::{ArgError, Args};
+pub use table_sym::eval_symbolic;
 
 use crate::check::ty::{Frames, Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
@@ -316,6 +318,7 @@ pub fn table() -> &'static [Builtin] {
         t.extend(table_screw::builtins());
         t.extend(table_repr::builtins());
         t.extend(table_math::builtins());
+        t.extend(table_sym::builtins());
         t
     })
 }

@@ -132,9 +132,9 @@ impl Interp<'_> {
             acc = Some(match acc {
                 None => v,
                 Some(Value::Sym(a)) => {
-                    Value::Sym(super::symbolic::Sym::times(a, super::expr::to_sym(&v)))
+                    Value::Sym(super::value::Sym::times(a, super::expr::to_sym(&v)))
                 }
-                Some(a) if v.is_symbolic() => Value::Sym(super::symbolic::Sym::times(
+                Some(a) if v.is_symbolic() => Value::Sym(super::value::Sym::times(
                     super::expr::to_sym(&a),
                     super::expr::to_sym(&v),
                 )),

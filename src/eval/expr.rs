@@ -7,7 +7,7 @@ use std::f64::consts::PI;
 use super::env::Mode;
 use super::interp::{Interp, MAX_CALL_DEPTH, Typed};
 use super::ops;
-use super::symbolic::Sym;
+use super::value::Sym;
 use super::value::Value;
 use crate::builtins::{self, Args};
 use crate::check::rules::{self, Operands};
@@ -34,7 +34,9 @@ pub(super) fn to_sym(v: &Value) -> Sym {
 /// is SO(3)); frames stay as the checker found them.
 pub(super) fn refine(ty: Ty, val: &Option<Value>) -> Ty {
     match val {
-        Some(v @ (Value::Num { .. } | Value::Tuple(_))) => Ty::new(v.kind(), ty.frames),
+        Some(v @ (Value::Num { .. } | Value::Tuple(_) | Value::Formula { .. })) => {
+            Ty::new(v.kind(), ty.frames)
+        }
         _ => ty,
     }
 }
@@ -99,6 +101,7 @@ impl Interp<'_> {
                 };
                 let val = match t.val {
                     Some(Value::Sym(s)) => Some(Value::Sym(Sym::Neg(Box::new(s)))),
+                    Some(v @ Value::Formula { .. }) => super::formula::neg(&v),
                     Some(v) => Some(ops::neg(&v, &ty.kind).map_err(|m| self.domain(e.span, m))?),
                     None => None,
                 };
@@ -115,6 +118,13 @@ impl Interp<'_> {
                 }
                 let val = match t.val {
                     Some(Value::Sym(s)) => Some(Value::Sym(Sym::times(s, Sym::Name("deg".into())))),
+                    Some(v @ Value::Formula { .. }) => super::formula::scalar_of(&v).map(|x| {
+                        let deg = crate::sym::Expr::pi().scale(&crate::sym::coef::Coef::rat(
+                            crate::sym::coef::Rat::new(1, 180)
+                                .unwrap_or(crate::sym::coef::Rat::ONE),
+                        ));
+                        super::formula::scalar(x.mul(&deg))
+                    }),
                     Some(v) => Some(Value::scalar(
                         v.as_scalar().unwrap_or(f64::NAN) * PI / 180.0,
                     )),
@@ -148,6 +158,10 @@ impl Interp<'_> {
                     } else {
                         Sym::Member(Box::new(s), member.name.clone())
                     })),
+                    Some(v @ Value::Formula { .. }) => Some(
+                        super::formula::member(&v, &member.name)
+                            .map_err(|m| Diagnostic::error(ErrorKind::Type, member.span, m))?,
+                    ),
                     Some(v) => Some(
                         ops::member(&v, &member.name)
                             .map_err(|m| Diagnostic::error(ErrorKind::Type, member.span, m))?,
@@ -174,6 +188,9 @@ impl Interp<'_> {
                     None
                 },
             });
+        }
+        if let Some(d) = self.derivative_symbol(name) {
+            return Ok(d);
         }
         match name {
             "inf" | "Inf" | "∞" => {
@@ -225,6 +242,30 @@ impl Interp<'_> {
         Err(d)
     }
 
+    /// `theta'`: the derivative θ̇ of a function of time `given theta(t)`
+    /// (one prime per derivative), §7.
+    fn derivative_symbol(&self, name: &str) -> Option<Typed> {
+        let base = name.trim_end_matches('\'');
+        let dots = name.len() - base.len();
+        let b = self.env.get(base).filter(|_| dots > 0)?;
+        let Some(Value::Formula { m, .. }) = &b.val else {
+            return None;
+        };
+        let mut s = m.data.first().and_then(crate::sym::expr::as_symbol)?;
+        if !s.timed {
+            return None;
+        }
+        for _ in 0..dots {
+            s = s.dot();
+        }
+        Some(Typed {
+            ty: Ty::scalar(),
+            val: self
+                .running()
+                .then(|| super::formula::scalar(crate::sym::Expr::symbol(s))),
+        })
+    }
+
     fn binary(
         &mut self,
         op: BinOp,
@@ -255,6 +296,10 @@ impl Interp<'_> {
             }
         };
         let val = match (l.val, r.val) {
+            (Some(a), Some(b)) if super::formula::applies(&[&a, &b]) => Some(
+                super::formula::binary(op, &a, &b, &ty.kind)
+                    .map_err(|m| self.domain(op_span, m))?,
+            ),
             (Some(a), Some(b)) if a.is_symbolic() || b.is_symbolic() => {
                 let (a, b) = (to_sym(&a), to_sym(&b));
                 Some(Value::Sym(match op {
@@ -326,6 +371,17 @@ impl Interp<'_> {
                 });
                 continue;
             }
+            // diff(x, t): the variable may be a name with no value (time).
+            if let (1, "diff", ExprKind::Var(t)) = (i, b.name, &a.kind)
+                && self.env.get(t).is_none()
+            {
+                let time = crate::sym::Expr::symbol(crate::sym::Symbol::timed(t));
+                typed.push(Typed {
+                    ty: Ty::scalar(),
+                    val: self.running().then(|| super::formula::scalar(time)),
+                });
+                continue;
+            }
             typed.push(self.expr(a)?);
         }
         let tys: Vec<Ty> = typed.iter().map(|t| t.ty.clone()).collect();
@@ -356,7 +412,20 @@ impl Interp<'_> {
             .into_iter()
             .map(|t| t.val.unwrap_or_else(|| Value::scalar(f64::NAN)))
             .collect();
-        if vals.iter().any(Value::is_symbolic) {
+        let refs: Vec<&Value> = vals.iter().collect();
+        if super::formula::applies(&refs)
+            && let Some(v) = builtins::eval_symbolic(b.name, &vals, &ty.kind)
+        {
+            let val = Some(v.map_err(|m| self.domain(span, m))?);
+            return Ok(Typed {
+                ty: refine(ty, &val),
+                val,
+            });
+        }
+        if vals
+            .iter()
+            .any(|v| v.is_symbolic() || matches!(v, Value::Formula { .. }))
+        {
             let sym = match b.name {
                 "inv" | "RotInv" | "TransInv" => to_sym(&vals[0]).inverse(),
                 _ => Sym::Call(name.to_string(), vals.iter().map(to_sym).collect()),

@@ -7,6 +7,7 @@ pub mod convert;
 mod derive;
 pub mod env;
 mod expr;
+pub mod formula;
 pub mod interp;
 pub mod ops;
 mod substitute;

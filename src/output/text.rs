@@ -16,11 +16,16 @@ pub struct Style {
     pub digits: usize,
     /// Print simple closed forms (`√3/2`, `-π/2`) instead of decimals.
     pub exact: bool,
+    /// Symbolic values: plain text, the book's shorthand or LaTeX (§7).
+    pub sym: crate::sym::print::Mode,
 }
 
 impl Style {
     /// One number in this style.
     pub fn num(self, x: f64) -> String {
+        if self.sym == crate::sym::print::Mode::Latex {
+            return fmt_num(x, self.digits);
+        }
         self.exact
             .then(|| super::exact::closed_form(x))
             .flatten()
@@ -33,6 +38,7 @@ impl From<usize> for Style {
         Style {
             digits,
             exact: false,
+            sym: crate::sym::print::Mode::Text,
         }
     }
 }
@@ -72,6 +78,7 @@ pub fn inline(v: &Value, style: impl Into<Style>) -> String {
         Value::Mech(m) => format!("mech < {} >", m.joints_text()),
         Value::Func(f) => format!("{}({})", f.name, f.params.join(", ")),
         Value::Sym(s) => s.to_string(),
+        Value::Formula { m, .. } => super::formula::inline(m, style),
     }
 }
 
@@ -154,6 +161,10 @@ pub fn show_value(prefix: &str, ty: &Ty, v: &Value, style: impl Into<Style>) -> 
         Value::Num { m, .. } if m.ncols() > 1 && m.nrows() > 1 => {
             let indent = prefix.chars().count();
             format!("{prefix}{}{tail}", matrix_block(m, style, indent))
+        }
+        Value::Formula { m, .. } => {
+            let indent = prefix.chars().count();
+            format!("{prefix}{}{tail}", super::formula::block(m, style, indent))
         }
         Value::Mech(mech) => {
             let body = mech.to_string();

@@ -110,10 +110,11 @@ pub struct Expr {
     pub terms: BTreeMap<Mono, Coef>,
 }
 
-/// What to differentiate by: time (θ ↦ θ̇ for functions of time) or a symbol.
+/// What to differentiate by: the time variable t (t ↦ 1, θ(t) ↦ θ̇) or
+/// a symbol (a partial derivative).
 #[derive(Debug, Clone, PartialEq)]
 pub enum Wrt {
-    Time,
+    Time(Symbol),
     Sym(Symbol),
 }
 
@@ -488,10 +489,19 @@ impl Expr {
     }
 }
 
+/// The symbol, when the expression is exactly one symbol.
+pub fn as_symbol(e: &Expr) -> Option<Symbol> {
+    let (m, c) = e.terms.iter().next()?;
+    match (e.terms.len(), m.as_slice()) {
+        (1, [(Var::Sym(s), 1)]) if c.is_one() => Some(s.clone()),
+        _ => None,
+    }
+}
+
 fn symbol_diff(s: &Symbol, wrt: &Wrt) -> Expr {
     match wrt {
-        Wrt::Sym(x) if x == s => Expr::one(),
-        Wrt::Time if s.timed => Expr::symbol(s.dot()),
+        Wrt::Sym(x) | Wrt::Time(x) if x == s => Expr::one(),
+        Wrt::Time(_) if s.timed => Expr::symbol(s.dot()),
         _ => Expr::zero(),
     }
 }
@@ -600,7 +610,7 @@ mod tests {
     #[test]
     fn time_derivative_by_the_chain_rule() {
         let th = Expr::symbol(Symbol::timed("theta"));
-        let d = Expr::sin(&th).diff(&Wrt::Time);
+        let d = Expr::sin(&th).diff(&Wrt::Time(Symbol::timed("t")));
         let want = Expr::cos(&th).mul(&Expr::symbol(Symbol::timed("theta").dot()));
         assert_eq!(d, want);
     }

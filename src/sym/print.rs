@@ -205,12 +205,12 @@ pub fn join(ts: &[(bool, String)], width: usize, indent: usize) -> String {
             (_, false) => format!(" + {body}"),
             (_, true) => format!(" - {body}"),
         };
-        let len = piece.chars().count();
+        let len = text_width(&piece);
         if i > 0 && line + len > width {
             out.push('\n');
             out.push_str(&" ".repeat(indent));
             let p = piece.trim_start();
-            line = indent + p.chars().count();
+            line = indent + text_width(p);
             out.push_str(p);
         } else {
             line += len;
@@ -543,6 +543,13 @@ fn fmt_float(x: f64, digits: usize) -> String {
     if s == "-0" { "0".into() } else { s }
 }
 
+/// Columns a text takes on screen (combining marks, as in θ̇, take none).
+pub fn text_width(s: &str) -> usize {
+    s.chars()
+        .filter(|c| !('\u{300}'..='\u{36f}').contains(c))
+        .count()
+}
+
 /// Cells of a symbolic matrix: text with aligned columns (`[a, b;` …), one
 /// entry per line with long entries wrapped when a row is wider than
 /// `width`, or a LaTeX `bmatrix`. `indent` is the column of the `[`.
@@ -572,7 +579,7 @@ pub fn matrix(cells: &[Vec<Expr>], st: Style, indent: usize, width: usize) -> St
         .collect();
     let ncols = flat.first().map_or(0, Vec::len);
     let widths: Vec<usize> = (0..ncols)
-        .map(|j| flat.iter().map(|r| r[j].chars().count()).max().unwrap_or(0))
+        .map(|j| flat.iter().map(|r| text_width(&r[j])).max().unwrap_or(0))
         .collect();
     let pad = " ".repeat(indent + 1);
     let total: usize = widths.iter().sum::<usize>() + 2 * ncols + indent;
@@ -584,7 +591,7 @@ pub fn matrix(cells: &[Vec<Expr>], st: Style, indent: usize, width: usize) -> St
                     .enumerate()
                     .map(|(j, c)| {
                         if j + 1 < ncols {
-                            format!("{c},{}", " ".repeat(widths[j] - c.chars().count() + 1))
+                            format!("{c},{}", " ".repeat(widths[j] - text_width(c) + 1))
                         } else {
                             c.clone()
                         }

@@ -215,15 +215,22 @@ impl Cx<'_> {
                 }
             }
             Rule::given_stmt => {
-                let mut names = Vec::new();
+                let (mut names, mut times) = (Vec::new(), Vec::new());
+                let mut ty = None;
                 for p in form.into_inner() {
                     match p.as_rule() {
                         Rule::kw_given => {}
-                        _ => names.push(self.ident(p)?),
+                        Rule::given_name => {
+                            let mut parts = p.into_inner();
+                            let name = parts.next().ok_or_else(|| self.internal(whole))?;
+                            names.push(self.ident(name)?);
+                            times.push(parts.next().map(|t| self.ident(t)).transpose()?);
+                        }
+                        _ => ty = Some(self.ident(p)?),
                     }
                 }
-                let ty = names.pop().ok_or_else(|| self.internal(whole))?;
-                Ok(StmtKind::Given { names, ty })
+                let ty = ty.ok_or_else(|| self.internal(whole))?;
+                Ok(StmtKind::Given { names, ty, times })
             }
             Rule::derive_stmt => {
                 let p = form

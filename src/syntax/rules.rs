@@ -24,6 +24,7 @@ pub(crate) fn rule_name(rule: Rule) -> &'static str {
         Rule::WHITESPACE => "a space",
         Rule::statement => "a statement",
         Rule::given_stmt => "a `given` statement",
+        Rule::given_name => "a name (or a function of time, `theta(t)`)",
         Rule::derive_stmt => "a `derive` statement",
         Rule::fn_def => "a function definition",
         Rule::params => "a parameter name",
