@@ -50,6 +50,24 @@ struct Opts {
     /// Keep running after an error.
     #[arg(long, global = true)]
     keep_going: bool,
+    /// Symbolic values in the book's shorthand (c₁, s₁₂).
+    #[arg(long, global = true, conflicts_with = "latex")]
+    short: bool,
+    /// Symbolic values as LaTeX (bmatrix, \theta_1).
+    #[arg(long, global = true)]
+    latex: bool,
+}
+
+impl Opts {
+    /// How symbolic values print (LANGUAGE.md §7).
+    fn sym_mode(&self) -> crate::sym::print::Mode {
+        use crate::sym::print::Mode;
+        match (self.short, self.latex) {
+            (_, true) => Mode::Latex,
+            (true, _) => Mode::Short,
+            _ => Mode::Text,
+        }
+    }
 }
 
 fn parse_frames(s: &str) -> Result<FrameMode, String> {
@@ -134,6 +152,7 @@ fn run_sources(sources: &[(String, String)], mode: Mode, opts: &Opts) -> i32 {
         frames: opts.frames,
         digits: opts.digits as usize,
         json: opts.json,
+        sym: opts.sym_mode(),
         ..Settings::default()
     };
     let mut session = Session::new(settings);
@@ -233,6 +252,7 @@ pub fn main_with_args(args: Vec<String>) -> i32 {
                     frames: cli.opts.frames,
                     digits: cli.opts.digits as usize,
                     json: cli.opts.json,
+                    sym: cli.opts.sym_mode(),
                     ..Settings::default()
                 })
             } else {

@@ -16,13 +16,30 @@ pub struct Rat {
     pub den: i128,
 }
 
-fn gcd(mut a: i128, mut b: i128) -> i128 {
-    a = a.abs();
-    b = b.abs();
-    while b != 0 {
-        (a, b) = (b, a % b);
+fn gcd(a: i128, b: i128) -> i128 {
+    let (a, b) = (a.unsigned_abs(), b.unsigned_abs());
+    // Word-sized operands (the usual case) divide in hardware.
+    if let (Ok(mut x), Ok(mut y)) = (u64::try_from(a), u64::try_from(b)) {
+        while y != 0 {
+            (x, y) = (y, x % y);
+        }
+        return x as i128;
     }
-    a
+    // Binary gcd: no 128-bit division.
+    let (mut x, mut y) = (a, b);
+    if x == 0 || y == 0 {
+        return (x | y) as i128;
+    }
+    let shift = (x | y).trailing_zeros();
+    x >>= x.trailing_zeros();
+    while y != 0 {
+        y >>= y.trailing_zeros();
+        if x > y {
+            std::mem::swap(&mut x, &mut y);
+        }
+        y -= x;
+    }
+    (x << shift) as i128
 }
 
 /// Magnitude beyond which a fraction is given up for a float (products of
@@ -56,11 +73,28 @@ impl Rat {
         self.num == 0
     }
     pub fn add(self, o: Rat) -> Option<Rat> {
+        if o.num == 0 {
+            return Some(self);
+        }
+        if self.num == 0 {
+            return Some(o);
+        }
+        if self.den == 1 && o.den == 1 {
+            let n = self.num + o.num;
+            return (n.abs() < LIMIT).then_some(Rat { num: n, den: 1 });
+        }
         let g = gcd(self.den, o.den);
         let (a, b) = (self.den / g, o.den / g);
         Rat::new(self.num * b + o.num * a, self.den * b)
     }
     pub fn mul(self, o: Rat) -> Option<Rat> {
+        if self.num == 0 || o.num == 0 {
+            return Some(Rat::ZERO);
+        }
+        if self.den == 1 && o.den == 1 {
+            let n = self.num * o.num;
+            return (n.abs() < LIMIT).then_some(Rat { num: n, den: 1 });
+        }
         let g1 = gcd(self.num, o.den).max(1);
         let g2 = gcd(o.num, self.den).max(1);
         Rat::new(

@@ -284,12 +284,20 @@ pub fn exp6(m: &Mat) -> Option<Mat> {
         t.put(0, 3, &m.block(0..3, 3..4));
         return Some(t);
     }
-    let (ks, theta) = common_factor(&entries)?;
-    let (axis, angle, inv) = axis_angle(&ks[..3], &theta)?;
-    let v: Vec<Expr> = ks[3..]
-        .iter()
-        .map(|k| Expr::constant(*k).mul(&inv))
-        .collect();
+    // ω = ω̂‖ω‖ with a numeric axis; v = v̂ ‖ω‖θ, v̂ found by dividing by
+    // θ (exact when θ is one term, `L1 θ2 / θ2 = L1`).
+    let (ks, theta) = common_factor(&entries[..3])?;
+    let (axis, angle, inv) = axis_angle(&ks, &theta)?;
+    let per_theta = theta.recip()?;
+    let mut v = Vec::with_capacity(3);
+    for e in &entries[3..] {
+        let x = e.mul(&per_theta).mul(&inv);
+        if x.mul(&angle).sub(e).is_zero() {
+            v.push(x);
+        } else {
+            return None;
+        }
+    }
     let w = skew(&axis);
     let w2 = w.mul(&w)?;
     let c = Expr::one().sub(&Expr::cos(&angle));

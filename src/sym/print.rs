@@ -106,10 +106,96 @@ fn negligible(c: &Coef) -> bool {
     }
 }
 
+/// Real terms being counted: (monomial, canonical exponents) → the
+/// coefficient of each cos/sin choice.
+type Cells = std::collections::HashMap<(usize, Vec<i32>), Vec<(f64, f64)>>;
+
+/// An expression reduced to what the choice of grouping needs: per term,
+/// its non-angle monomial (numbered), its angle exponents, and its
+/// coefficient as floats (the search only counts terms; the printed form
+/// is exact).
+struct Compact {
+    terms: Vec<(usize, Vec<i32>, (f64, f64))>,
+}
+
+impl Compact {
+    fn new(e: &Expr, angles: &[Symbol]) -> Compact {
+        let mut polys: Vec<Mono> = Vec::new();
+        let terms = e
+            .terms
+            .iter()
+            .map(|(m, c)| {
+                let mut exps = vec![0; angles.len()];
+                let mut poly: Mono = Vec::new();
+                for (v, k) in m {
+                    match v {
+                        Var::Z(s) => {
+                            if let Some(i) = angles.iter().position(|a| a == s) {
+                                exps[i] = *k;
+                            }
+                        }
+                        other => poly.push((other.clone(), *k)),
+                    }
+                }
+                let id = polys.iter().position(|p| *p == poly).unwrap_or_else(|| {
+                    polys.push(poly);
+                    polys.len() - 1
+                });
+                (id, exps, c.to_c64())
+            })
+            .collect();
+        Compact { terms }
+    }
+
+    /// The number of real terms when angle i is in group `of[i]`.
+    fn count(&self, of: &[usize], groups: usize) -> usize {
+        let mut acc: Cells = std::collections::HashMap::new();
+        let mut scale = 0f64;
+        for (id, exps, (re, im)) in &self.terms {
+            let mut sign = vec![0i32; groups];
+            for (i, &k) in exps.iter().enumerate() {
+                if k != 0 && sign[of[i]] == 0 {
+                    sign[of[i]] = k.signum();
+                }
+            }
+            let canon: Vec<i32> = exps
+                .iter()
+                .enumerate()
+                .map(|(i, &k)| k * sign[of[i]])
+                .collect();
+            let active: Vec<i32> = sign.iter().copied().filter(|&s| s != 0).collect();
+            let slot = acc
+                .entry((*id, canon))
+                .or_insert_with(|| vec![(0.0, 0.0); 1 << active.len()]);
+            for (mask, cell) in slot.iter_mut().enumerate() {
+                // sin choices multiply by i·sign
+                let (mut a, mut b) = (*re, *im);
+                for (g, sg) in active.iter().enumerate() {
+                    if mask >> g & 1 == 1 {
+                        (a, b) = (-b * f64::from(*sg), a * f64::from(*sg));
+                    }
+                }
+                cell.0 += a;
+                cell.1 += b;
+            }
+            scale = scale.max(re.abs()).max(im.abs());
+        }
+        let tol = 1e-9 * scale.max(1e-300);
+        acc.values().flatten().filter(|c| c.0.abs() > tol).count()
+    }
+}
+
 /// The grouping of `angles` that prints `e` with the fewest terms (ties:
 /// more groups): every partition up to five angles, greedy merging beyond.
 fn best_groups(e: &Expr, angles: &[Symbol]) -> Vec<Vec<Symbol>> {
-    let cost = |g: &[Vec<Symbol>]| (realize(e, g).len(), usize::MAX - g.len());
+    let terms = Compact::new(e, angles);
+    let cost = |g: &[Vec<Symbol>]| {
+        let of: Vec<usize> = angles
+            .iter()
+            .map(|a| g.iter().position(|grp| grp.contains(a)).unwrap_or(0))
+            .collect();
+        (terms.count(&of, g.len()), usize::MAX - g.len())
+    };
     let n = angles.len();
     if n <= 5 {
         let mut best: Option<(Cost, Groups)> = None;
