@@ -59,9 +59,12 @@ impl Interp<'_> {
     /// [`Sym::too_large`] is a domain error.
     pub fn expr(&mut self, e: &Expr) -> Result<Typed, Diagnostic> {
         let t = stacker::maybe_grow(256 * 1024, 4 * 1024 * 1024, || self.expr_node(e))?;
-        if let Some(Value::Sym(s)) = &t.val
-            && s.too_large()
-        {
+        let too_large = match &t.val {
+            Some(Value::Sym(s)) => s.too_large(),
+            Some(Value::Formula { m, .. }) => m.size() > super::symbolic::MAX_SYM_NODES,
+            _ => false,
+        };
+        if too_large {
             return Err(self
                 .domain(
                     e.span,

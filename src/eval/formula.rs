@@ -76,6 +76,18 @@ pub fn scalar(e: Expr) -> Value {
     make(&Kind::Scalar, Mat::scalar(e))
 }
 
+/// The most term products one operation may form (the expression limit
+/// of [`super::symbolic::MAX_SYM_NODES`] bounds what is kept; this bounds
+/// the work before it is known).
+pub const MAX_WORK: usize = 4_000_000;
+
+fn too_large() -> String {
+    format!(
+        "symbolic expression too large (more than {} terms)",
+        super::symbolic::MAX_SYM_NODES
+    )
+}
+
 fn sizes(a: &Mat, b: &Mat) -> String {
     format!("{}×{} and {}×{}", a.rows, a.cols, b.rows, b.cols)
 }
@@ -86,6 +98,9 @@ pub fn binary(op: BinOp, a: &Value, b: &Value, kind: &Kind) -> Result<Value, Str
         (Some(x), Some(y)) => (x, y),
         _ => return Err("these operands have no symbolic form".into()),
     };
+    if op == BinOp::Mul && x.size().saturating_mul(y.size()) > MAX_WORK {
+        return Err(too_large());
+    }
     let m = match op {
         BinOp::Mul => mul(&x, &y)?,
         BinOp::Add | BinOp::Sub => x
@@ -128,6 +143,10 @@ fn pow(x: &Mat, y: &Mat, base: Kind, kind: &Kind) -> Result<Value, String> {
         _ => None,
     }
     .ok_or("a symbolic power needs an integer exponent")? as i64;
+    let grows = (x.size() as f64).powf(n.unsigned_abs().min(64) as f64);
+    if n.unsigned_abs() > 1 && grows > MAX_WORK as f64 && x.size() > 1 {
+        return Err(too_large());
+    }
     if x.data.len() == 1 {
         let e = x.data[0].powi(n).ok_or("division by zero")?;
         return Ok(scalar(e));

@@ -132,7 +132,7 @@ fn mono_mul(a: &Mono, b: &Mono) -> Mono {
                 j += 1;
             }
             std::cmp::Ordering::Equal => {
-                let e = a[i].1 + b[j].1;
+                let e = a[i].1.saturating_add(b[j].1);
                 if e != 0 {
                     out.push((a[i].0.clone(), e));
                 }
@@ -278,7 +278,7 @@ impl Expr {
             let m: Mono = m
                 .iter()
                 .map(|(v, e)| match v {
-                    Var::Z(_) => (v.clone(), -e),
+                    Var::Z(_) => (v.clone(), e.saturating_neg()),
                     _ => (v.clone(), *e),
                 })
                 .collect();
@@ -295,7 +295,10 @@ impl Expr {
     pub fn recip(&self) -> Option<Expr> {
         if self.terms.len() == 1 {
             let (m, c) = self.terms.iter().next()?;
-            let m: Mono = m.iter().map(|(v, e)| (v.clone(), -e)).collect();
+            let m: Mono = m
+                .iter()
+                .map(|(v, e)| (v.clone(), e.saturating_neg()))
+                .collect();
             let mut out = Expr::zero();
             out.push(m, c.inv()?);
             return Some(out);
@@ -478,7 +481,7 @@ impl Expr {
                 if *e == 1 {
                     rest.remove(i);
                 } else {
-                    rest[i].1 = e - 1;
+                    rest[i].1 = e.saturating_sub(1);
                 }
                 let mut t = Expr::zero();
                 t.push(rest, c.mul(&Coef::int(i64::from(*e))));

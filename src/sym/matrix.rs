@@ -288,16 +288,25 @@ pub fn exp6(m: &Mat) -> Option<Mat> {
     // θ (exact when θ is one term, `L1 θ2 / θ2 = L1`).
     let (ks, theta) = common_factor(&entries[..3])?;
     let (axis, angle, inv) = axis_angle(&ks, &theta)?;
-    let per_theta = theta.recip()?;
-    let mut v = Vec::with_capacity(3);
-    for e in &entries[3..] {
-        let x = e.mul(&per_theta).mul(&inv);
-        if x.mul(&angle).sub(e).is_zero() {
-            v.push(x);
-        } else {
-            return None;
+    let v = match common_factor(&entries) {
+        // v a numeric multiple of θ as well
+        Some((all, t)) if t == theta => all[3..]
+            .iter()
+            .map(|k| Expr::constant(*k).mul(&inv))
+            .collect(),
+        _ => {
+            let per_theta = theta.recip()?;
+            let mut v = Vec::with_capacity(3);
+            for e in &entries[3..] {
+                let x = e.mul(&per_theta).mul(&inv);
+                if !x.mul(&angle).sub(e).is_zero() {
+                    return None;
+                }
+                v.push(x);
+            }
+            v
         }
-    }
+    };
     let w = skew(&axis);
     let w2 = w.mul(&w)?;
     let c = Expr::one().sub(&Expr::cos(&angle));

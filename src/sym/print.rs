@@ -313,9 +313,9 @@ fn term(c: &Coef, poly: &Mono, trig: &[Trig], st: Style) -> (bool, String) {
     for (v, e) in poly {
         let (into, e) = match (v, *e > 0) {
             (Var::Call(c), true) if c.f == Func::Recip => (&mut den, *e),
-            (Var::Call(c), false) if c.f == Func::Recip => (&mut num, -*e),
+            (Var::Call(c), false) if c.f == Func::Recip => (&mut num, e.saturating_neg()),
             (_, true) => (&mut num, *e),
-            (_, false) => (&mut den, -*e),
+            (_, false) => (&mut den, e.saturating_neg()),
         };
         into.push(power(&var(v, st), e, latex));
     }
