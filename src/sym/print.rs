@@ -687,9 +687,16 @@ pub fn matrix(cells: &[Vec<Expr>], st: Style, indent: usize, width: usize) -> St
             .collect();
         return format!("[{}]", rows.join(&format!("\n{pad}")));
     }
+    // Too wide to align: a row per line where it fits, else an entry per
+    // line, long entries wrapped under themselves.
     let rows: Vec<String> = text
         .iter()
-        .map(|r| {
+        .zip(&flat)
+        .map(|(r, one)| {
+            let line = one.join(", ");
+            if indent + 1 + text_width(&line) < width {
+                return line;
+            }
             r.iter()
                 .map(|t| join(t, width.saturating_sub(indent + 1).max(40), indent + 3))
                 .collect::<Vec<_>>()
