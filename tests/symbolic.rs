@@ -374,17 +374,7 @@ fn expression_limit_is_a_domain_error() {
 // ---------------------------------------------------------------- UR5
 
 /// The UR5 of chapter 4 (`shared/data/ur5.md`) with symbolic joint angles.
-pub const UR5: &str = "given t1, t2, t3, t4, t5, t6 : scalar
-W1 = 0.109; W2 = 0.082; L1 = 0.425; L2 = 0.392; H1 = 0.089; H2 = 0.095
-M = [-1, 0, 0, L1 + L2; 0, 0, 1, W1 + W2; 0, 1, 0, H1 - H2; 0, 0, 0, 1]
-S1 = (0, 0, 1, 0, 0, 0)
-S2 = (0, 1, 0, -H1, 0, 0)
-S3 = (0, 1, 0, -H1, 0, L1)
-S4 = (0, 1, 0, -H1, 0, L1 + L2)
-S5 = (0, 0, -1, -W1, L1 + L2, 0)
-S6 = (0, 1, 0, H2 - H1, 0, L1 + L2)
-T = exp([S1] * t1) * exp([S2] * t2) * exp([S3] * t3) * exp([S4] * t4) * exp([S5] * t5) * exp([S6] * t6) * M
-";
+const UR5: &str = include_str!("../benches/ur5.chs");
 
 #[test]
 fn ur5_product_of_exponentials_matches_numbers() {
