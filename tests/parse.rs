@@ -664,7 +664,7 @@ fn friendly_errors() {
         ),
         (
             "given T_ab SE3",
-            "expected ',' or ':', found 'S'",
+            "expected '(', ',' or ':', found 'S'",
             "S",
             None,
         ),

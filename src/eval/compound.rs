@@ -2,9 +2,10 @@
 //! tuples `(1, 2, 3)`, brackets `[w]` and block matrices `[R, p; 0, 0, 0, 1]`
 //! (LANGUAGE.md §4), and `mech < ... >` literals (chapter 2).
 
-use super::expr::{refine, to_sym};
+use super::expr::refine;
 use super::interp::{Interp, Typed};
 use super::ops::{self, Sel};
+use super::substitute::to_sym;
 use super::value::Sym;
 use super::value::Value;
 use crate::check::ty::{Frames, Kind, Ty};

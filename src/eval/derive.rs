@@ -132,11 +132,11 @@ impl Interp<'_> {
             acc = Some(match acc {
                 None => v,
                 Some(Value::Sym(a)) => {
-                    Value::Sym(super::value::Sym::times(a, super::expr::to_sym(&v)))
+                    Value::Sym(super::value::Sym::times(a, super::substitute::to_sym(&v)))
                 }
                 Some(a) if v.is_symbolic() => Value::Sym(super::value::Sym::times(
-                    super::expr::to_sym(&a),
-                    super::expr::to_sym(&v),
+                    super::substitute::to_sym(&a),
+                    super::substitute::to_sym(&v),
                 )),
                 Some(a) => ops::mul(&a, &v, &kind)
                     .map_err(|m| Diagnostic::error(ErrorKind::Domain, target.span, m))?,

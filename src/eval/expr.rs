@@ -7,6 +7,7 @@ use std::f64::consts::PI;
 use super::env::Mode;
 use super::interp::{Interp, MAX_CALL_DEPTH, Typed};
 use super::ops;
+use super::substitute::to_sym;
 use super::value::Sym;
 use super::value::Value;
 use crate::builtins::{self, Args};
@@ -17,17 +18,6 @@ use crate::syntax::ast::{BinOp, Expr, ExprKind, Span, UnOp};
 
 fn strip(t: &Ty) -> Ty {
     Ty::plain(t.kind.clone())
-}
-
-/// A value as a symbolic operand (numbers become constants).
-pub(super) fn to_sym(v: &Value) -> Sym {
-    match v {
-        Value::Sym(s) => s.clone(),
-        other => Sym::Const(
-            Box::new(other.clone()),
-            crate::output::text::inline(other, 4),
-        ),
-    }
 }
 
 /// The runtime kind refines the static one (a literal that is a rotation
@@ -59,19 +49,23 @@ impl Interp<'_> {
     /// [`Sym::too_large`] is a domain error.
     pub fn expr(&mut self, e: &Expr) -> Result<Typed, Diagnostic> {
         let t = stacker::maybe_grow(256 * 1024, 4 * 1024 * 1024, || self.expr_node(e))?;
-        let too_large = match &t.val {
-            Some(Value::Sym(s)) => s.too_large(),
-            Some(Value::Formula { m, .. }) => m.size() > super::symbolic::MAX_SYM_NODES,
-            _ => false,
+        let depth = match &t.val {
+            Some(Value::Sym(s)) if s.too_large() => Some(super::symbolic::MAX_SYM_DEPTH),
+            Some(Value::Formula { m, .. })
+                if m.size() > super::symbolic::MAX_SYM_NODES
+                    || m.depth() > crate::sym::expr::MAX_DEPTH =>
+            {
+                Some(crate::sym::expr::MAX_DEPTH)
+            }
+            _ => None,
         };
-        if too_large {
+        if let Some(depth) = depth {
             return Err(self
                 .domain(
                     e.span,
                     format!(
-                        "symbolic expression too large (more than {} terms or nested deeper than {})",
+                        "symbolic expression too large (more than {} terms or nested deeper than {depth})",
                         super::symbolic::MAX_SYM_NODES,
-                        super::symbolic::MAX_SYM_DEPTH
                     ),
                 )
                 .with_help("bind numbers to the given names, or simplify step by step"));

@@ -10,11 +10,21 @@ use nalgebra::DMatrix;
 
 use super::convert;
 use super::env::{Binding, Env};
-use super::expr::to_sym;
 use super::ops;
 use super::value::Sym;
 use super::value::Value;
 use crate::check::ty::Kind;
+
+/// A value as a symbolic operand (numbers become constants).
+pub(super) fn to_sym(v: &Value) -> Sym {
+    match v {
+        Value::Sym(s) => s.clone(),
+        other => Sym::Const(
+            Box::new(other.clone()),
+            crate::output::text::inline(other, 4),
+        ),
+    }
+}
 
 /// The value of a binding as of now: a value derived from symbols has the
 /// numbers bound since substituted ([`resolve`]); a numeric result takes

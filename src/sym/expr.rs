@@ -110,6 +110,9 @@ pub struct Expr {
     pub terms: BTreeMap<Mono, Coef>,
 }
 
+/// The deepest nesting of calls kept (see [`Expr::depth`]).
+pub const MAX_DEPTH: usize = 100;
+
 /// What to differentiate by: the time variable t (t ↦ 1, θ(t) ↦ θ̇) or
 /// a symbol (a partial derivative).
 #[derive(Debug, Clone, PartialEq)]
@@ -188,7 +191,7 @@ impl Expr {
     pub fn pi() -> Expr {
         Expr::var(Var::Pi)
     }
-    fn call(f: Func, args: Vec<Expr>) -> Expr {
+    pub(super) fn call(f: Func, args: Vec<Expr>) -> Expr {
         Expr::var(Var::Call(Arc::new(Call { f, args })))
     }
     pub fn is_zero(&self) -> bool {
@@ -224,7 +227,21 @@ impl Expr {
             .sum()
     }
 
-    fn push(&mut self, m: Mono, c: Coef) {
+    /// How deeply calls nest (`sin(sin(t))` is 2): printing and evaluation
+    /// recurse this deep, so the interpreter bounds it by [`MAX_DEPTH`].
+    pub fn depth(&self) -> usize {
+        self.terms
+            .keys()
+            .flatten()
+            .map(|(v, _)| match v {
+                Var::Call(c) => 1 + c.args.iter().map(Expr::depth).max().unwrap_or(0),
+                _ => 0,
+            })
+            .max()
+            .unwrap_or(0)
+    }
+
+    pub(super) fn push(&mut self, m: Mono, c: Coef) {
         if c.is_zero() {
             return;
         }
@@ -467,29 +484,6 @@ impl Expr {
         }
         out
     }
-
-    /// The derivative (chain rule through every variable).
-    pub fn diff(&self, wrt: &Wrt) -> Expr {
-        let mut out = Expr::zero();
-        for (m, c) in &self.terms {
-            for (i, (v, e)) in m.iter().enumerate() {
-                let dv = var_diff(v, wrt);
-                if dv.is_zero() {
-                    continue;
-                }
-                let mut rest: Mono = m.clone();
-                if *e == 1 {
-                    rest.remove(i);
-                } else {
-                    rest[i].1 = e.saturating_sub(1);
-                }
-                let mut t = Expr::zero();
-                t.push(rest, c.mul(&Coef::int(i64::from(*e))));
-                out = out.add(&t.mul(&dv));
-            }
-        }
-        out
-    }
 }
 
 /// The symbol, when the expression is exactly one symbol.
@@ -499,53 +493,6 @@ pub fn as_symbol(e: &Expr) -> Option<Symbol> {
         (1, [(Var::Sym(s), 1)]) if c.is_one() => Some(s.clone()),
         _ => None,
     }
-}
-
-fn symbol_diff(s: &Symbol, wrt: &Wrt) -> Expr {
-    match wrt {
-        Wrt::Sym(x) | Wrt::Time(x) if x == s => Expr::one(),
-        Wrt::Time(_) if s.timed => Expr::symbol(s.dot()),
-        _ => Expr::zero(),
-    }
-}
-
-fn var_diff(v: &Var, wrt: &Wrt) -> Expr {
-    match v {
-        Var::Pi => Expr::zero(),
-        Var::Sym(s) => symbol_diff(s, wrt),
-        // d/dt e^{iθ} = i θ̇ e^{iθ}
-        Var::Z(s) => symbol_diff(s, wrt)
-            .mul(&Expr::var(v.clone()))
-            .scale(&Coef::i()),
-        Var::Call(c) => call_diff(c, wrt),
-    }
-}
-
-fn call_diff(c: &Call, wrt: &Wrt) -> Expr {
-    let x = &c.args[0];
-    let dx = x.diff(wrt);
-    let me = Expr::var(Var::Call(Arc::new(c.clone())));
-    let recip = |e: &Expr| e.recip().unwrap_or_default();
-    let one = Expr::one();
-    let outer = match c.f {
-        Func::Sin => Expr::cos(x),
-        Func::Cos => Expr::sin(x).neg(),
-        Func::Tan => one.add(&me.mul(&me)),
-        Func::Exp => me.clone(),
-        Func::Sqrt => recip(&me.scale(&Coef::int(2))),
-        Func::Asin => recip(&Expr::sqrt(&one.sub(&x.mul(x)))),
-        Func::Acos => recip(&Expr::sqrt(&one.sub(&x.mul(x)))).neg(),
-        Func::Atan => recip(&one.add(&x.mul(x))),
-        Func::Abs => x.mul(&recip(&me)),
-        Func::Recip => me.mul(&me).neg(),
-        Func::Atan2 => {
-            // d atan2(y, x) = (x dy − y dx)/(x² + y²)
-            let (y, xx) = (&c.args[0], &c.args[1]);
-            let num = xx.mul(&y.diff(wrt)).sub(&y.mul(&xx.diff(wrt)));
-            return num.mul(&recip(&xx.mul(xx).add(&y.mul(y))));
-        }
-    };
-    outer.mul(&dx)
 }
 
 /// A call rebuilt through its constructor (so numbers fold).

@@ -147,6 +147,10 @@ impl Mat {
     pub fn size(&self) -> usize {
         self.data.iter().map(Expr::size).sum()
     }
+    /// The deepest nesting of calls in an entry.
+    pub fn depth(&self) -> usize {
+        self.data.iter().map(Expr::depth).max().unwrap_or(0)
+    }
     /// The numbers, when every entry is a real constant.
     pub fn as_f64(&self) -> Option<Vec<f64>> {
         self.data.iter().map(Expr::as_f64).collect()

@@ -6,9 +6,11 @@
 //! adjoint), and [`print`] the book's notation, its shorthand and LaTeX.
 
 pub mod coef;
+pub mod diff;
 pub mod expr;
 pub mod matrix;
 pub mod print;
+pub mod trig;
 
 pub use expr::{Expr, Symbol, Wrt};
 pub use matrix::Mat;

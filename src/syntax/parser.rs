@@ -215,19 +215,15 @@ impl Cx<'_> {
                 }
             }
             Rule::given_stmt => {
-                let (mut names, mut times) = (Vec::new(), Vec::new());
-                let mut ty = None;
-                for p in form.into_inner() {
-                    match p.as_rule() {
-                        Rule::kw_given => {}
-                        Rule::given_name => {
-                            let mut parts = p.into_inner();
-                            let name = parts.next().ok_or_else(|| self.internal(whole))?;
-                            names.push(self.ident(name)?);
-                            times.push(parts.next().map(|t| self.ident(t)).transpose()?);
-                        }
-                        _ => ty = Some(self.ident(p)?),
+                let (mut names, mut times, mut ty) = (Vec::new(), Vec::new(), None);
+                for p in form.into_inner().filter(|p| p.as_rule() != Rule::kw_given) {
+                    if p.as_rule() != Rule::given_name {
+                        ty = Some(self.ident(p)?);
+                        continue;
                     }
+                    let mut parts = p.into_inner().map(|x| self.ident(x));
+                    names.push(parts.next().ok_or_else(|| self.internal(whole))??);
+                    times.push(parts.next().transpose()?); // `theta(t)`
                 }
                 let ty = ty.ok_or_else(|| self.internal(whole))?;
                 Ok(StmtKind::Given { names, ty, times })

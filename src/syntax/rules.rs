@@ -203,6 +203,7 @@ fn is_container(rule: Rule) -> bool {
         rule,
         Rule::statement
             | Rule::given_stmt
+            | Rule::given_name
             | Rule::derive_stmt
             | Rule::fn_def
             | Rule::destructure

@@ -1,0 +1,241 @@
+//! The real form of a canonical expression: each z-monomial paired with
+//! its conjugate back into cosines and sines (e^{ik·θ} = cos k·θ + i sin k·θ).
+//! The angles are split into groups — inside a group an angle sum stays one
+//! cosine, `cos(t2 + t3)`, across groups products stay products,
+//! `sin(t1) cos(t5)` — and the grouping with the fewest terms is chosen
+//! (every partition up to five angles, greedy merging beyond).
+
+use std::collections::BTreeMap;
+
+use super::coef::Coef;
+use super::expr::{Expr, Mono, Symbol, Var};
+
+/// One trigonometric factor: an integer combination of angles (first
+/// coefficient positive) and whether it is a sine.
+pub type Trig = (Vec<(Symbol, i32)>, bool);
+/// The real terms: (non-angle monomial, trigonometric factors) → coefficient.
+pub type Real = BTreeMap<(Mono, Vec<Trig>), Coef>;
+
+/// A grouping of angles, and what printing with it costs (terms, then
+/// fewer groups).
+type Groups = Vec<Vec<Symbol>>;
+type Cost = (usize, usize);
+
+/// The real form of `e` for a grouping of its angles.
+pub fn realize(e: &Expr, groups: &[Vec<Symbol>]) -> Real {
+    let mut out: Real = BTreeMap::new();
+    let half_i = Coef::i();
+    for (m, c) in &e.terms {
+        let mut poly: Mono = Vec::new();
+        let mut zs: Vec<(&Symbol, i32)> = Vec::new();
+        for (v, k) in m {
+            match v {
+                Var::Z(s) => zs.push((s, *k)),
+                other => poly.push((other.clone(), *k)),
+            }
+        }
+        let mut parts: Vec<(Vec<Trig>, Coef)> = vec![(Vec::new(), *c)];
+        for g in groups {
+            let mut k: Vec<(Symbol, i32)> = zs
+                .iter()
+                .filter(|(s, _)| g.contains(s))
+                .map(|(s, k)| ((*s).clone(), *k))
+                .collect();
+            if k.is_empty() {
+                continue;
+            }
+            k.sort();
+            let sign = if k[0].1 > 0 { 1 } else { -1 };
+            for x in &mut k {
+                x.1 *= sign;
+            }
+            let sin_factor = half_i.mul(&Coef::int(i64::from(sign)));
+            parts = parts
+                .into_iter()
+                .flat_map(|(t, c)| {
+                    let mut ct = t.clone();
+                    ct.push((k.clone(), false));
+                    let mut st = t;
+                    st.push((k.clone(), true));
+                    [(ct, c), (st, c.mul(&sin_factor))]
+                })
+                .collect();
+        }
+        for (t, k) in parts {
+            let key = (poly.clone(), t);
+            let sum = out.get(&key).map_or(k, |old| old.add(&k));
+            out.insert(key, sum);
+        }
+    }
+    out.retain(|_, c| !negligible(c));
+    out
+}
+
+fn negligible(c: &Coef) -> bool {
+    match c {
+        Coef::Exact { re, .. } => re.is_zero(),
+        Coef::Approx { re, .. } => re.abs() < 1e-13,
+    }
+}
+
+/// Real terms being counted: (monomial, canonical exponents) → the
+/// coefficient of each cos/sin choice.
+type Cells = std::collections::HashMap<(usize, Vec<i32>), Vec<(f64, f64)>>;
+
+/// An expression reduced to what the choice of grouping needs: per term,
+/// its non-angle monomial (numbered), its angle exponents, and its
+/// coefficient as floats (the search only counts terms; the printed form
+/// is exact).
+struct Compact {
+    terms: Vec<(usize, Vec<i32>, (f64, f64))>,
+}
+
+impl Compact {
+    fn new(e: &Expr, angles: &[Symbol]) -> Compact {
+        let mut polys: Vec<Mono> = Vec::new();
+        let terms = e
+            .terms
+            .iter()
+            .map(|(m, c)| {
+                let mut exps = vec![0; angles.len()];
+                let mut poly: Mono = Vec::new();
+                for (v, k) in m {
+                    match v {
+                        Var::Z(s) => {
+                            if let Some(i) = angles.iter().position(|a| a == s) {
+                                exps[i] = *k;
+                            }
+                        }
+                        other => poly.push((other.clone(), *k)),
+                    }
+                }
+                let id = polys.iter().position(|p| *p == poly).unwrap_or_else(|| {
+                    polys.push(poly);
+                    polys.len() - 1
+                });
+                (id, exps, c.to_c64())
+            })
+            .collect();
+        Compact { terms }
+    }
+
+    /// The number of real terms when angle i is in group `of[i]`.
+    fn count(&self, of: &[usize], groups: usize) -> usize {
+        let mut acc: Cells = std::collections::HashMap::new();
+        let mut scale = 0f64;
+        for (id, exps, (re, im)) in &self.terms {
+            let mut sign = vec![0i32; groups];
+            for (i, &k) in exps.iter().enumerate() {
+                if k != 0 && sign[of[i]] == 0 {
+                    sign[of[i]] = k.signum();
+                }
+            }
+            let canon: Vec<i32> = exps
+                .iter()
+                .enumerate()
+                .map(|(i, &k)| k * sign[of[i]])
+                .collect();
+            let active: Vec<i32> = sign.iter().copied().filter(|&s| s != 0).collect();
+            let slot = acc
+                .entry((*id, canon))
+                .or_insert_with(|| vec![(0.0, 0.0); 1 << active.len()]);
+            for (mask, cell) in slot.iter_mut().enumerate() {
+                // sin choices multiply by i·sign
+                let (mut a, mut b) = (*re, *im);
+                for (g, sg) in active.iter().enumerate() {
+                    if mask >> g & 1 == 1 {
+                        (a, b) = (-b * f64::from(*sg), a * f64::from(*sg));
+                    }
+                }
+                cell.0 += a;
+                cell.1 += b;
+            }
+            scale = scale.max(re.abs()).max(im.abs());
+        }
+        let tol = 1e-9 * scale.max(1e-300);
+        acc.values().flatten().filter(|c| c.0.abs() > tol).count()
+    }
+}
+
+/// The grouping of `angles` that prints `e` with the fewest terms (ties:
+/// more groups): every partition up to five angles, greedy merging beyond.
+pub fn best_groups(e: &Expr, angles: &[Symbol]) -> Vec<Vec<Symbol>> {
+    let terms = Compact::new(e, angles);
+    let cost = |g: &[Vec<Symbol>]| {
+        let of: Vec<usize> = angles
+            .iter()
+            .map(|a| g.iter().position(|grp| grp.contains(a)).unwrap_or(0))
+            .collect();
+        (terms.count(&of, g.len()), usize::MAX - g.len())
+    };
+    let n = angles.len();
+    if n <= 5 {
+        let mut best: Option<(Cost, Groups)> = None;
+        let mut code = vec![0usize; n];
+        loop {
+            let k = code.iter().max().map_or(0, |m| m + 1);
+            let mut groups = vec![Vec::new(); k];
+            for (i, &c) in code.iter().enumerate() {
+                groups[c].push(angles[i].clone());
+            }
+            let c = cost(&groups);
+            if best.as_ref().is_none_or(|(b, _)| c < *b) {
+                best = Some((c, groups));
+            }
+            // next restricted growth string
+            let mut i = n;
+            loop {
+                if i <= 1 {
+                    return best.map(|b| b.1).unwrap_or_default();
+                }
+                i -= 1;
+                let max_prev = code[..i].iter().max().copied().unwrap_or(0);
+                if code[i] <= max_prev {
+                    code[i] += 1;
+                    code[i + 1..].iter_mut().for_each(|x| *x = 0);
+                    break;
+                }
+            }
+        }
+    }
+    let mut groups: Vec<Vec<Symbol>> = angles.iter().map(|a| vec![a.clone()]).collect();
+    let mut current = cost(&groups);
+    loop {
+        let mut best: Option<(Cost, Groups)> = None;
+        for i in 0..groups.len() {
+            for j in i + 1..groups.len() {
+                let mut g = groups.clone();
+                let moved = g.remove(j);
+                g[i].extend(moved);
+                let c = cost(&g);
+                if c.0 < current.0 && best.as_ref().is_none_or(|(b, _)| c < *b) {
+                    best = Some((c, g));
+                }
+            }
+        }
+        match best {
+            Some((c, g)) => {
+                current = c;
+                groups = g;
+            }
+            None => return groups,
+        }
+    }
+}
+
+/// The real terms of `e` with its best grouping of angles.
+pub fn real_form(e: &Expr) -> Real {
+    let mut angles: Vec<Symbol> = Vec::new();
+    for m in e.terms.keys() {
+        for (v, _) in m {
+            if let Var::Z(s) = v
+                && !angles.contains(s)
+            {
+                angles.push(s.clone());
+            }
+        }
+    }
+    angles.sort();
+    let groups = best_groups(e, &angles);
+    realize(e, &groups)
+}
