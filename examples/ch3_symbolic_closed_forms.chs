@@ -7,7 +7,7 @@
 #   - e^{[S]θ} by Proposition 3.16 (G(θ) of (3.88)) for a pure rotation about
 #     an axis through q = (0, 2, 0), a screw of pitch h = 1/2 about the same
 #     axis, and a pure translation (ω = 0);
-#   - planar 2R and 3R arms as products of exponentials: the tip at
+#   - planar 2R and 3R arms (T2R, T3R) as products of exponentials: the tip at
 #     L1 cos θ1 + L2 cos(θ1 + θ2), …, with angle sums folded;
 #   - Example 3.3 (§3.3.2.1): T_sb(t) of the car turning about r_s = (2, -1, 0),
 #     ω_s from Ṙ Rᵀ (§3.2.2), V_s from Ṫ T⁻¹ and V_b from T⁻¹ Ṫ (3.71, 3.74);
@@ -24,48 +24,48 @@ given t1, t2, t3, L1, L2, L3 : scalar
 Rot(z, theta)
 w = (1, 2, 2)/3
 R = Rot(w, theta)
-R * R.T                                      # I
+R R^T                                        # I
 det(R)                                       # 1
-exp([w] * a) * exp([w] * b)                  # = Rot(ŵ, a + b): the angles add
+exp([w] a) exp([w] b)                        # = Rot(ŵ, a + b): the angles add
 
 # --- e^{[S]θ} by Proposition 3.16 ----------------------------------------------------
 S_rot = screw((0, 2, 0), (0, 0, 1), 0)       # pure rotation about ẑ through q = (0, 2, 0)
-exp([S_rot] * theta)
+exp([S_rot] theta)
 S_pitch = screw((0, 2, 0), (0, 0, 1), 0.5)   # the same axis, pitch h = 1/2
-exp([S_pitch] * theta)
+exp([S_pitch] theta)
 S_trans = (0, 0, 0, 0, 0.6, 0.8)             # pure translation along (0, 0.6, 0.8)
-exp([S_trans] * theta)
+exp([S_trans] theta)
 
 # --- Planar arms: products of exponentials -----------------------------------------
 S1 = (0, 0, 1, 0, 0, 0)
 S2 = (0, 0, 1, 0, -L1, 0)
 S3 = (0, 0, 1, 0, -(L1 + L2), 0)
 M2 = [1, 0, 0, L1 + L2; 0, 1, 0, 0; 0, 0, 1, 0; 0, 0, 0, 1]
-T_2R = exp([S1] * t1) * exp([S2] * t2) * M2
+T2R = exp([S1] t1) exp([S2] t2) M2
 M3 = [1, 0, 0, L1 + L2 + L3; 0, 1, 0, 0; 0, 0, 1, 0; 0, 0, 0, 1]
-T_3R = exp([S1] * t1) * exp([S2] * t2) * exp([S3] * t3) * M3
-T_3R[1, 4]                                   # x of the tip
+T3R = exp([S1] t1) exp([S2] t2) exp([S3] t3) M3
+T3R[1, 4]                                    # x of the tip
 
 # --- Example 3.3: velocities from T_sb(t) --------------------------------------------
 given phi(t) : scalar
 S_car = screw((2, -1, 0), (0, 0, 1), 0)      # rotation about r_s = (2, -1, 0)
 T0 = [-1, 0, 0, 4; 0, 1, 0, 0.4; 0, 0, -1, 0; 0, 0, 0, 1]
-T = exp([S_car] * phi) * T0                  # T_sb(t)
+T = exp([S_car] phi) T0                      # T_sb(t)
 R = T.R
-so3ToVec(diff(R, t) * R.T)                   # ω_s = (0, 0, φ̇)
-Vs = se3ToVec(diff(T, t) * inv(T))           # V_s = (0, 0, φ̇, -φ̇, -2φ̇, 0)
-Vb = se3ToVec(inv(T) * diff(T, t))           # V_b = (0, 0, -φ̇, 1.4φ̇, 2φ̇, 0)
+so3ToVec(diff(R, t) R^T)                     # ω_s = (0, 0, φ̇)
+Vs = se3ToVec(diff(T, t) inv(T))             # V_s = (0, 0, φ̇, -φ̇, -2φ̇, 0)
+Vb = se3ToVec(inv(T) diff(T, t))             # V_b = (0, 0, -φ̇, 1.4φ̇, 2φ̇, 0)
 
 # --- Identities, no numbers ---------------------------------------------------------
-T1 = exp([S_pitch] * a)
-T2 = exp([S2] * b)
-Ad(T1 * T2) - Ad(T1) * Ad(T2)                # 0: [Ad_{T1 T2}] = [Ad_{T1}][Ad_{T2}]
+T1 = exp([S_pitch] a)
+T2 = exp([S2] b)
+Ad(T1 T2) - Ad(T1) Ad(T2)                    # 0: [Ad_{T1 T2}] = [Ad_{T1}][Ad_{T2}]
 given w1, w2, w3, v1, v2, v3, m1, m2, m3, f1, f2, f3 : scalar
 V_1 = (w1, w2, w3, v1, v2, v3)
 F_1 = (m1, m2, m3, f1, f2, f3)
-V_0 = Ad(T1) * V_1
-F_0 = Ad(inv(T1)).T * F_1
-V_0.T * F_0 - V_1.T * F_1                    # 0: the power is the same in both frames (3.98)
+V_0 = Ad(T1) V_1
+F_0 = Ad(inv(T1))^T F_1
+V_0^T F_0 - V_1^T F_1                        # 0: the power is the same in both frames (3.98)
 
 # --- Numbers later: φ̇ = 2 rad/s gives the book's twists -----------------------------
 phi' = 2

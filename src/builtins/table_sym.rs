@@ -9,11 +9,11 @@
 use super::{Area, ArgError, Args, Builtin, Typing};
 use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::Diagnostic;
-use crate::eval::formula::{self, make, mat_of, scalar, scalar_of};
-use crate::eval::value::Value;
 use crate::sym::Expr;
 use crate::sym::expr::{Func, Wrt, as_symbol};
 use crate::sym::matrix::{self as sm, Mat};
+use crate::values::formula::{self, make, mat_of, scalar, scalar_of};
+use crate::values::value::Value;
 
 type Out = Option<Result<Value, String>>;
 

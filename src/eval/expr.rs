@@ -49,27 +49,7 @@ impl Interp<'_> {
     /// [`Sym::too_large`] is a domain error.
     pub fn expr(&mut self, e: &Expr) -> Result<Typed, Diagnostic> {
         let t = stacker::maybe_grow(256 * 1024, 4 * 1024 * 1024, || self.expr_node(e))?;
-        let depth = match &t.val {
-            Some(Value::Sym(s)) if s.too_large() => Some(super::symbolic::MAX_SYM_DEPTH),
-            Some(Value::Formula { m, .. })
-                if m.size() > super::symbolic::MAX_SYM_NODES
-                    || m.depth() > crate::sym::expr::MAX_DEPTH =>
-            {
-                Some(crate::sym::expr::MAX_DEPTH)
-            }
-            _ => None,
-        };
-        if let Some(depth) = depth {
-            return Err(self
-                .domain(
-                    e.span,
-                    format!(
-                        "symbolic expression too large (more than {} terms or nested deeper than {depth})",
-                        super::symbolic::MAX_SYM_NODES,
-                    ),
-                )
-                .with_help("bind numbers to the given names, or simplify step by step"));
-        }
+        self.within_limits(&t, e.span)?;
         Ok(t)
     }
 
@@ -202,6 +182,8 @@ impl Interp<'_> {
                     val: self.running().then(|| Value::scalar(std::f64::consts::E)),
                 });
             }
+            // The identity of the size its context needs (LANGUAGE.md §4).
+            "I" => return self.identity(span),
             _ => {}
         }
         if builtins::lookup(name).is_some() || self.env.fns.contains_key(name) {
@@ -213,6 +195,18 @@ impl Interp<'_> {
             .with_help(format!("call it: {name}(...)")));
         }
         let mut d = Diagnostic::error(ErrorKind::Name, span, format!("unknown name '{name}'"));
+        // T_{0,1} unknown but T_01 known: the same frames spelled otherwise.
+        let frames = crate::syntax::ident::name_frames(name);
+        if frames != crate::syntax::ident::NameFrames::None {
+            let base = crate::syntax::ident::base_name(name);
+            let same = |k: &&String| {
+                crate::syntax::ident::base_name(k) == base
+                    && crate::syntax::ident::name_frames(k) == frames
+            };
+            if let Some(other) = self.env.vars.keys().filter(same).min() {
+                return Err(d.with_help(format!("{other} names the same frames: use {other}")));
+            }
+        }
         // T_cb unknown but T_bc known: the inverse is one step away.
         if let crate::syntax::ident::NameFrames::Pair(a, b) =
             crate::syntax::ident::name_frames(name)
@@ -239,30 +233,6 @@ impl Interp<'_> {
         Err(d)
     }
 
-    /// `theta'`: the derivative θ̇ of a function of time `given theta(t)`
-    /// (one prime per derivative), §7.
-    fn derivative_symbol(&self, name: &str) -> Option<Typed> {
-        let base = name.trim_end_matches('\'');
-        let dots = name.len() - base.len();
-        let b = self.env.get(base).filter(|_| dots > 0)?;
-        let Some(Value::Formula { m, .. }) = &b.val else {
-            return None;
-        };
-        let mut s = m.data.first().and_then(crate::sym::expr::as_symbol)?;
-        if !s.timed {
-            return None;
-        }
-        for _ in 0..dots {
-            s = s.dot();
-        }
-        Some(Typed {
-            ty: Ty::scalar(),
-            val: self
-                .running()
-                .then(|| super::formula::scalar(crate::sym::Expr::symbol(s))),
-        })
-    }
-
     fn binary(
         &mut self,
         op: BinOp,
@@ -271,8 +241,15 @@ impl Interp<'_> {
         op_span: Span,
         span: Span,
     ) -> Result<Typed, Diagnostic> {
-        let l = self.expr(lhs)?;
-        let r = self.expr(rhs)?;
+        if op == BinOp::Pow {
+            if let Some(t) = self.e_power(lhs, rhs, span) {
+                return t;
+            }
+            if let Some(t) = self.bracket_power(lhs, rhs, span)? {
+                return Ok(t);
+            }
+        }
+        let (l, r) = self.operands(op, lhs, rhs)?;
         let ops_text = Operands {
             lhs: self.text(lhs.span),
             rhs: self.text(rhs.span),
@@ -329,7 +306,7 @@ impl Interp<'_> {
         })
     }
 
-    fn call(
+    pub(super) fn call(
         &mut self,
         name: &str,
         name_span: Span,
@@ -369,18 +346,19 @@ impl Interp<'_> {
                 continue;
             }
             // diff(x, t): the variable may be a name with no value (time).
-            if let (1, "diff", ExprKind::Var(t)) = (i, b.name, &a.kind)
-                && self.env.get(t).is_none()
-            {
-                let time = crate::sym::Expr::symbol(crate::sym::Symbol::timed(t));
-                typed.push(Typed {
-                    ty: Ty::scalar(),
-                    val: self.running().then(|| super::formula::scalar(time)),
-                });
+            if let Some(t) = self.time_variable(b.name, i, a) {
+                typed.push(t);
                 continue;
             }
             typed.push(self.expr(a)?);
         }
+        // `rot_zyx(euler_zyx(R))`: one tuple as the arguments.
+        let spans: Vec<Span> = if args.len() == 1 {
+            typed = self.spread(b, typed);
+            vec![args[0].span; typed.len()]
+        } else {
+            args.iter().map(|a| a.span).collect()
+        };
         let tys: Vec<Ty> = typed.iter().map(|t| t.ty.clone()).collect();
         let ty = match b.check(&tys) {
             Ok(ty) => ty,
@@ -400,6 +378,15 @@ impl Interp<'_> {
                 } else {
                     return Err(d);
                 }
+            }
+        };
+        // A vector or Lie-algebra result is in one frame (§6).
+        let ty = match rules::settle(&ty, b.name) {
+            Ok(ty) => ty,
+            Err(err) => {
+                let at = args.first().map_or(span, |a| a.span);
+                self.rule_failure(err, span, Some(at), None, None)?;
+                strip(&ty)
             }
         };
         if !self.running() {
@@ -436,7 +423,7 @@ impl Interp<'_> {
             name: b.name,
             signature: b.signature,
             vals,
-            spans: args.iter().map(|a| a.span).collect(),
+            spans,
             call_span: span,
             warnings: &mut self.warnings,
         };
@@ -455,7 +442,22 @@ impl Interp<'_> {
         args: &[Expr],
         span: Span,
     ) -> Result<Typed, Diagnostic> {
-        if args.len() != f.params.len() {
+        // `f((a, b))` with f(x, y): the tuple's parts are the arguments.
+        let mut spread = None;
+        if let [one] = args
+            && f.params.len() >= 2
+        {
+            let warned = self.warnings.len();
+            let t = self.expr(one)?;
+            let parts = super::notation::parts(&t);
+            if parts.len() == f.params.len() {
+                spread = Some(parts);
+            } else {
+                // Evaluated again below as the one argument.
+                self.warnings.truncate(warned);
+            }
+        }
+        if spread.is_none() && args.len() != f.params.len() {
             return Err(Diagnostic::error(
                 ErrorKind::Arity,
                 span,
@@ -475,9 +477,14 @@ impl Interp<'_> {
             ));
         }
         let mut bound = Vec::new();
-        for (p, a) in f.params.iter().zip(args) {
-            let t = self.expr(a)?;
-            bound.push((p.clone(), t));
+        match spread {
+            Some(parts) => bound.extend(f.params.iter().cloned().zip(parts)),
+            None => {
+                for (p, a) in f.params.iter().zip(args) {
+                    let t = self.expr(a)?;
+                    bound.push((p.clone(), t));
+                }
+            }
         }
         let saved: Vec<(String, Option<super::env::Binding>)> = f
             .params

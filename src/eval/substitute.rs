@@ -21,7 +21,7 @@ pub(super) fn to_sym(v: &Value) -> Sym {
         Value::Sym(s) => s.clone(),
         other => Sym::Const(
             Box::new(other.clone()),
-            crate::output::text::inline(other, 4),
+            crate::values::format::inline(other, 4),
         ),
     }
 }

@@ -6,7 +6,7 @@ use serde_json::{Value as J, json};
 use crate::check::ty::Kind;
 use crate::diagnostics::Diagnostic;
 use crate::eval::interp::Outcome;
-use crate::eval::value::Value;
+use crate::values::value::Value;
 
 fn number(x: f64) -> J {
     if x.is_finite() {
@@ -39,9 +39,8 @@ pub fn value(v: &Value) -> J {
         Value::Bool(b) => json!(b),
         Value::Tuple(vs) => J::Array(vs.iter().map(value).collect()),
         Value::Mech(m) => m.to_json(),
-        Value::Func(f) => json!(format!("{}({})", f.name, f.params.join(", "))),
         Value::Sym(s) => json!(s.to_string()),
-        Value::Formula { m, .. } => json!(super::formula::inline(m, 17.into())),
+        Value::Formula { m, .. } => json!(crate::values::format::formula_inline(m, 17.into())),
     }
 }
 
@@ -69,7 +68,10 @@ pub fn outcome(o: &Outcome, line: usize) -> Option<J> {
     });
     // A symbolic value carries its LaTeX and what it is (§7).
     if let (Some(Value::Formula { m, kind }), Some(obj)) = (&o.val, out.as_object_mut()) {
-        obj.insert("latex".into(), json!(super::formula::latex(m, 17.into())));
+        obj.insert(
+            "latex".into(),
+            json!(crate::values::format::formula_latex(m, 17.into())),
+        );
         obj.insert("kind".into(), json!(kind.json_name()));
     }
     Some(out)

@@ -32,7 +32,6 @@ pub enum Value {
     Bool(bool),
     Tuple(Vec<Value>),
     Mech(Rc<Mechanism>),
-    Func(Rc<UserFn>),
     /// An expression over `given` symbols (LANGUAGE.md §7).
     Sym(Sym),
     /// A scalar, vector or matrix whose entries are symbolic scalars in
@@ -52,7 +51,6 @@ impl PartialEq for Value {
             (Value::Bool(a), Value::Bool(b)) => a == b,
             (Value::Tuple(a), Value::Tuple(b)) => a == b,
             (Value::Mech(a), Value::Mech(b)) => Rc::ptr_eq(a, b),
-            (Value::Func(a), Value::Func(b)) => Rc::ptr_eq(a, b),
             (Value::Sym(a), Value::Sym(b)) => a == b,
             (Value::Formula { kind: a, m: x }, Value::Formula { kind: b, m: y }) => {
                 a == b && x == y
@@ -97,7 +95,6 @@ impl Value {
             Value::Bool(_) => Kind::Bool,
             Value::Tuple(vs) => Kind::Tuple(vs.iter().map(Value::kind).collect()),
             Value::Mech(_) => Kind::Mechanism,
-            Value::Func(_) => Kind::Function,
             Value::Sym(_) => Kind::Unknown,
             Value::Formula { kind, .. } => kind.clone(),
         }

@@ -1,0 +1,158 @@
+//! Values and numbers on one line, for people: the [`Style`] of numbers
+//! (LANGUAGE.md §10, `--digits` and the REPL's `:exact`) and [`inline`],
+//! the one-line form of a value that also names constants inside symbolic
+//! expressions, and symbolic values in text, shorthand or LaTeX
+//! ([`formula_inline`], [`formula_latex`]). Below evaluation, so the evaluator can print without
+//! importing the output layer; multi-line blocks and JSON are in `output`.
+
+use std::fmt::Write;
+
+use super::number::write_num;
+use super::value::Value;
+use crate::sym::Mat;
+use crate::sym::print::{self, Mode};
+
+/// How numbers print: `digits` decimals (trailing zeros trimmed), or with
+/// `exact`, a closed form such as `1/√2` or `π/6` where one is within
+/// 1e-12 (the REPL's `:exact`). A plain `usize` converts to decimals only.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Style {
+    /// Decimals.
+    pub digits: usize,
+    /// Print simple closed forms (`√3/2`, `-π/2`) instead of decimals.
+    pub exact: bool,
+    /// Symbolic values: plain text, the book's shorthand or LaTeX (§7).
+    pub sym: Mode,
+}
+
+impl Style {
+    /// One number in this style.
+    pub fn num(self, x: f64) -> String {
+        let mut s = String::new();
+        self.write(&mut s, x);
+        s
+    }
+    /// One number in this style, appended to `out`.
+    pub fn write(self, out: &mut String, x: f64) {
+        let exact = self.exact && self.sym != Mode::Latex;
+        match exact.then(|| super::exact::closed_form(x)).flatten() {
+            Some(form) => out.push_str(&form),
+            None => write_num(out, x, self.digits),
+        }
+    }
+}
+
+impl From<usize> for Style {
+    fn from(digits: usize) -> Style {
+        Style {
+            digits,
+            exact: false,
+            sym: Mode::Text,
+        }
+    }
+}
+
+/// A value on one line: `2`, `(1, 2, 3)`, `[1, 2; 3, 4]`.
+pub fn inline(v: &Value, style: impl Into<Style>) -> String {
+    let mut s = String::new();
+    write_inline(&mut s, v, style.into());
+    s
+}
+
+/// Numbers separated by `, `.
+fn write_list<'a>(out: &mut String, xs: impl Iterator<Item = &'a f64>, style: Style) {
+    for (i, x) in xs.enumerate() {
+        if i > 0 {
+            out.push_str(", ");
+        }
+        style.write(out, *x);
+    }
+}
+
+/// [`inline`], appended to `out`.
+pub fn write_inline(out: &mut String, v: &Value, style: Style) {
+    match v {
+        Value::Num { m, .. } if m.is_empty() => {
+            let _ = write!(out, "zeros({}, {})", m.nrows(), m.ncols());
+        }
+        Value::Num { m, .. } if m.len() == 1 && m.ncols() == 1 && m.nrows() == 1 => {
+            style.write(out, m[0])
+        }
+        Value::Num { m, .. } if m.ncols() == 1 => {
+            out.push('(');
+            write_list(out, m.iter(), style);
+            out.push(')');
+        }
+        // A row: `[a, b]` would read back as a column, so print its transpose.
+        Value::Num { m, .. } if m.nrows() == 1 => {
+            out.push('(');
+            write_list(out, m.iter(), style);
+            out.push_str(").T");
+        }
+        Value::Num { m, .. } => {
+            out.push('[');
+            for (i, r) in m.row_iter().enumerate() {
+                if i > 0 {
+                    out.push_str("; ");
+                }
+                write_list(out, r.iter(), style);
+            }
+            out.push(']');
+        }
+        Value::Bool(b) => out.push_str(if *b { "true" } else { "false" }),
+        Value::Tuple(vs) => {
+            out.push('(');
+            for (i, x) in vs.iter().enumerate() {
+                if i > 0 {
+                    out.push_str(", ");
+                }
+                write_inline(out, x, style);
+            }
+            out.push(')');
+        }
+        Value::Mech(m) => {
+            let _ = write!(out, "mech < {} >", m.joints_text());
+        }
+        Value::Sym(s) => {
+            let _ = write!(out, "{s}");
+        }
+        Value::Formula { m, .. } => out.push_str(&formula_inline(m, style)),
+    }
+}
+
+fn sym_style(style: Style) -> print::Style {
+    print::Style {
+        mode: style.sym,
+        digits: style.digits,
+    }
+}
+
+/// A formula on one line: `cos(t)`, `(L1 cos(t1), L1 sin(t1), 0)`,
+/// `[cos(t), -sin(t); sin(t), cos(t)]`; LaTeX in that mode (§7).
+pub fn formula_inline(m: &Mat, style: Style) -> String {
+    let st = sym_style(style);
+    if st.mode == Mode::Latex {
+        return formula_latex(m, style);
+    }
+    let cells: Vec<String> = m.data.iter().map(|e| print::expr(e, st)).collect();
+    match (m.rows, m.cols) {
+        (1, 1) => cells[0].clone(),
+        (_, 1) => format!("({})", cells.join(", ")),
+        _ => {
+            let rows: Vec<String> = cells.chunks(m.cols).map(|r| r.join(", ")).collect();
+            format!("[{}]", rows.join("; "))
+        }
+    }
+}
+
+/// LaTeX math: an expression, or a `bmatrix` (vectors as a column).
+pub fn formula_latex(m: &Mat, style: Style) -> String {
+    let st = print::Style {
+        mode: Mode::Latex,
+        digits: style.digits,
+    };
+    if m.data.len() == 1 {
+        return print::expr(&m.data[0], st);
+    }
+    print::matrix(&m.row_vecs(), st, 0, usize::MAX)
+}
