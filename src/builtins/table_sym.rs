@@ -80,14 +80,46 @@ fn rot_quat(q: &[Expr]) -> Mat {
 }
 
 /// ZYX Euler angles (a, b, c) of R = Rotz(a) Roty(b) Rotx(c), cos b > 0.
-fn euler_zyx(r: &Mat) -> Vec<Expr> {
+fn euler_zyx(r: &Mat) -> Option<Vec<Expr>> {
     let g = |i: usize, j: usize| r.get(i, j).clone();
+    // cos b ≡ 0 is gimbal lock, where numbers choose one of a, c
+    if g(0, 0).is_zero() && g(1, 0).is_zero() {
+        return None;
+    }
     let c = Expr::sqrt(&g(2, 1).mul(&g(2, 1)).add(&g(2, 2).mul(&g(2, 2))));
-    vec![
+    Some(vec![
         Expr::atan2(&g(1, 0), &g(0, 0)),
         Expr::atan2(&g(2, 0).neg(), &c),
         Expr::atan2(&g(2, 1), &g(2, 2)),
-    ]
+    ])
+}
+
+/// ZXZ Euler angles (a, b, c) of R = Rotz(a) Rotx(b) Rotz(c), sin b > 0.
+fn euler_zxz(r: &Mat) -> Option<Vec<Expr>> {
+    let g = |i: usize, j: usize| r.get(i, j).clone();
+    // sin b ≡ 0 is the singular case, where numbers choose c = 0
+    if g(0, 2).is_zero() && g(1, 2).is_zero() {
+        return None;
+    }
+    let s = Expr::sqrt(&g(0, 2).mul(&g(0, 2)).add(&g(1, 2).mul(&g(1, 2))));
+    Some(vec![
+        Expr::atan2(&g(0, 2), &g(1, 2).neg()),
+        Expr::atan2(&s, &g(2, 2)),
+        Expr::atan2(&g(2, 0), &g(2, 1)),
+    ])
+}
+
+/// The unit quaternion (w, x, y, z) of R, w = √(1 + tr R)/2 ≥ 0 (Appendix B).
+fn quat(r: &Mat) -> Option<Vec<Expr>> {
+    let g = |i: usize, j: usize| r.get(i, j).clone();
+    let w = Expr::sqrt(&Expr::one().add(&r.trace())).mul(&Expr::num(0.5));
+    let k = w.scale(&crate::sym::coef::Coef::int(4)).recip()?;
+    Some(vec![
+        w,
+        g(2, 1).sub(&g(1, 2)).mul(&k),
+        g(0, 2).sub(&g(2, 0)).mul(&k),
+        g(1, 0).sub(&g(0, 1)).mul(&k),
+    ])
 }
 
 fn tuple(parts: Vec<Value>) -> Value {
@@ -174,10 +206,16 @@ pub fn eval_symbolic(name: &str, vals: &[Value], kind: &Kind) -> Out {
             ok(make(&Kind::Vector(Some(4)), Mat::column(out)))
         }
         ("euler_zyx", 1) if shape(0) == (3, 3) => {
-            ok(tuple(euler_zyx(&ms[0]).into_iter().map(scalar).collect()))
+            ok(tuple(euler_zyx(&ms[0])?.into_iter().map(scalar).collect()))
+        }
+        ("euler_zxz", 1) if shape(0) == (3, 3) => {
+            ok(tuple(euler_zxz(&ms[0])?.into_iter().map(scalar).collect()))
+        }
+        ("quat", 1) if shape(0) == (3, 3) => {
+            ok(make(&Kind::Vector(Some(4)), Mat::column(quat(&ms[0])?)))
         }
         ("rpy", 1) if shape(0) == (3, 3) => ok(tuple(
-            euler_zyx(&ms[0]).into_iter().rev().map(scalar).collect(),
+            euler_zyx(&ms[0])?.into_iter().rev().map(scalar).collect(),
         )),
         ("sin", 1) => ok(scalar(Expr::sin(&s(0)?))),
         ("cos", 1) => ok(scalar(Expr::cos(&s(0)?))),

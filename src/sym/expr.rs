@@ -286,6 +286,36 @@ impl Expr {
                 out.push(mono_mul(a, b), c.mul(d));
             }
         }
+        out.fold_roots()
+    }
+
+    /// √x · √x = x: a square root's even powers become powers of x.
+    fn fold_roots(self) -> Expr {
+        let is_root =
+            |v: &Var, e: i32| matches!(v, Var::Call(c) if c.f == Func::Sqrt) && e.abs() >= 2;
+        if !self.terms.keys().flatten().any(|(v, e)| is_root(v, *e)) {
+            return self;
+        }
+        let mut out = Expr::zero();
+        for (m, c) in self.terms {
+            let mut rest: Mono = Vec::new();
+            let mut t = Expr::constant(c);
+            for (v, e) in m {
+                match &v {
+                    Var::Call(call) if is_root(&v, e) => {
+                        let inner = call.args[0].powi(i64::from(e / 2)).unwrap_or_default();
+                        t = t.mul(&inner);
+                        if e % 2 != 0 {
+                            rest.push((v.clone(), e % 2));
+                        }
+                    }
+                    _ => rest.push((v, e)),
+                }
+            }
+            let mut r = Expr::zero();
+            r.push(rest, Coef::one());
+            out = out.add(&t.mul(&r));
+        }
         out
     }
     /// The complex conjugate (symbols and calls are real; z̄ = z⁻¹).

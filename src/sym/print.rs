@@ -97,6 +97,17 @@ fn term(c: &Coef, poly: &Mono, trig: &[Trig], st: Style) -> (bool, String) {
     let has_factors = !num.is_empty() || !den.is_empty();
     let sep = " ";
     let mut body = num.join(sep);
+    if num.is_empty() && !den.is_empty() && coef != "1" && !latex {
+        // (1/2)/(1 + cos(t)), 3/L2
+        let d = den.join(sep);
+        let d = if den.len() > 1 { format!("({d})") } else { d };
+        let c = if coef.contains(['/', ' ']) {
+            format!("({coef})")
+        } else {
+            coef
+        };
+        return (neg, format!("{c}/{d}"));
+    }
     if !den.is_empty() {
         let d = den.join(sep);
         if latex {

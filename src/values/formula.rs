@@ -356,3 +356,78 @@ pub fn substitute(kind: &Kind, m: &Mat, lookup: &dyn Fn(&str) -> Option<f64>) ->
     let by = |s: &Symbol| lookup(&binding_name(s)).map(Expr::num);
     make(kind, m.map(|e| e.subst(&by)))
 }
+
+/// `a == b` (or `a ≈ b` when `approx`) with a formula on a side (§7),
+/// decided by canonical forms: equal forms are equal; forms that differ
+/// by a trigonometric polynomial (no kept call such as sqrt or atan2) are
+/// different functions, since the symbols and the z = e^{iθ} are
+/// algebraically independent; a difference with a kept call is undecided
+/// (`Ok(None)`). Coefficients without a closed form are floats: they count
+/// as zero within 1e-12 (1e-9 for `≈`) of the largest coefficient.
+pub fn equal(a: &Value, b: &Value, approx: bool) -> Result<Option<bool>, String> {
+    let (x, y) = match (mat_of(a), mat_of(b)) {
+        (Some(x), Some(y)) if (x.rows, x.cols) == (y.rows, y.cols) => (x, y),
+        _ => {
+            return Err(format!(
+                "cannot compare {} with {}",
+                a.kind().a(),
+                b.kind().a()
+            ));
+        }
+    };
+    let tol = if approx { 1e-9 } else { 1e-12 };
+    let mut decided = Some(true);
+    for (p, q) in x.data.iter().zip(&y.data) {
+        let d = p.sub(q);
+        let scale = [p, q]
+            .iter()
+            .flat_map(|e| e.terms.values())
+            .map(|c| c.to_c64().0.abs().max(c.to_c64().1.abs()))
+            .fold(1.0f64, f64::max);
+        let residue = d.terms.values().all(|c| match c {
+            crate::sym::coef::Coef::Approx { re, im } => re.abs().max(im.abs()) <= tol * scale,
+            exact => approx && exact.to_c64().0.abs().max(exact.to_c64().1.abs()) <= tol * scale,
+        });
+        if d.is_zero() || residue {
+            continue;
+        }
+        let kept_call = d
+            .terms
+            .keys()
+            .flatten()
+            .any(|(v, _)| matches!(v, crate::sym::expr::Var::Call(_)));
+        if kept_call {
+            decided = None;
+        } else {
+            return Ok(Some(false));
+        }
+    }
+    Ok(decided)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn sym(name: &str) -> Expr {
+        Expr::symbol(Symbol::new(name))
+    }
+
+    #[test]
+    fn canonical_forms_decide_equality() {
+        let t = sym("t");
+        let r = make(&Kind::SO3, matrix::rot_axis(2, &t));
+        let rt = make(&Kind::SO3, matrix::rot_axis(2, &t).transpose());
+        let rrt = binary(BinOp::Mul, &r, &rt, &Kind::SO3).unwrap();
+        let eye = Value::Num {
+            kind: Kind::SO3,
+            m: nalgebra::DMatrix::identity(3, 3),
+        };
+        assert_eq!(equal(&rrt, &eye, false), Ok(Some(true)));
+        assert_eq!(equal(&r, &eye, false), Ok(Some(false)));
+        // sqrt(t²) is kept as a call: not decided either way
+        let root = scalar(Expr::sqrt(&t.mul(&t)));
+        assert_eq!(equal(&root, &scalar(t.clone()), false), Ok(None));
+        assert!(equal(&r, &scalar(t), false).is_err());
+    }
+}
