@@ -50,11 +50,12 @@ T3R[1, 4]                                    # x of the tip
 given phi(t) : scalar
 S_car = screw((2, -1, 0), (0, 0, 1), 0)      # rotation about r_s = (2, -1, 0)
 T0 = [-1, 0, 0, 4; 0, 1, 0, 0.4; 0, 0, -1, 0; 0, 0, 0, 1]
-T = exp([S_car] phi) T0                      # T_sb(t)
-R = T.R
-so3ToVec(diff(R, t) R^T)                     # ω_s = (0, 0, φ̇)
-Vs = se3ToVec(diff(T, t) inv(T))             # V_s = (0, 0, φ̇, -φ̇, -2φ̇, 0)
-Vb = se3ToVec(inv(T) diff(T, t))             # V_b = (0, 0, -φ̇, 1.4φ̇, 2φ̇, 0)
+T_sb = exp([S_car] phi) T0                   # T_sb(t)
+R_sb = T_sb.R
+w_s = so3ToVec(diff(R_sb, t) R_sb^T)         # ω_s = (0, 0, φ̇), in {s}
+w_b = so3ToVec(R_sb^T diff(R_sb, t))         # ω_b = (0, 0, -φ̇), in {b}
+V_s = se3ToVec(diff(T_sb, t) inv(T_sb))      # (0, 0, φ̇, -φ̇, -2φ̇, 0)
+V_b = se3ToVec(inv(T_sb) diff(T_sb, t))      # (0, 0, -φ̇, 1.4φ̇, 2φ̇, 0)
 
 # --- Identities, no numbers ---------------------------------------------------------
 T1 = exp([S_pitch] a)
@@ -69,5 +70,5 @@ V_0^T F_0 - V_1^T F_1                        # 0: the power is the same in both 
 
 # --- Numbers later: φ̇ = 2 rad/s gives the book's twists -----------------------------
 phi' = 2
-Vs                                           # (0, 0, 2, -2, -4, 0)
-Vb                                           # (0, 0, -2, 2.8, 4, 0)
+V_s                                          # (0, 0, 2, -2, -4, 0)
+V_b                                          # (0, 0, -2, 2.8, 4, 0)

@@ -316,16 +316,17 @@ fn angular_velocity_from_r_dot_r_transpose() {
     let out = run(
         &mut s,
         "given theta(t) : scalar
-         R = Rot((1, 2, 2)/3, theta)
-         W = diff(R, t) * R.T
+         R_sb = Rot((1, 2, 2)/3, theta)
+         W = diff(R_sb, t) R_sb^T
          so3ToVec(W)
+         so3ToVec(R_sb^T diff(R_sb, t))
          theta'",
     );
-    assert!(
-        out.contains("((1/3) θ̇, (2/3) θ̇, (2/3) θ̇)  : 3-vector"),
-        "{out}"
-    );
-    assert!(out.contains("so(3)"), "{out}");
+    // [ω_s] = Ṙ Rᵀ in {s} (§3.2.2), [ω_b] = Rᵀ Ṙ in {b}
+    let w = "((1/3) θ̇, (2/3) θ̇, (2/3) θ̇)  : 3-vector";
+    assert!(out.contains(&format!("{w} {{s}}")), "{out}");
+    assert!(out.contains(&format!("{w} {{b}}")), "{out}");
+    assert!(out.contains(": so(3) {s}"), "{out}");
     assert!(out.trim_end().ends_with("θ̇"), "{out}");
 }
 

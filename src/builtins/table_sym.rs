@@ -289,7 +289,7 @@ fn diff_rule(args: &[Ty]) -> Result<Ty, ArgError> {
         Kind::Scalar => Ty::scalar(),
         k if k.is_vector() => Ty::new(k.clone(), t.frames.clone()),
         k => match k.shape() {
-            Some((r, c)) => Ty::plain(Kind::Matrix(r, c)),
+            Some((r, c)) => Ty::new(Kind::Matrix(r, c), t.frames.clone()),
             None => {
                 return Err(ArgError::type_of(
                     0,
