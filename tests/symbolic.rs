@@ -360,6 +360,19 @@ fn repl_toggles_short_and_latex() {
 }
 
 #[test]
+fn powers_and_numbers_print_exactly() {
+    let out = run(
+        &mut session(),
+        "given t : scalar\n(t + 1)^5\n(t + 0.1)^2\n0.12345 t + 0.425\ncos(t + 1e300)\nt/sqrt(2)",
+    );
+    assert_eq!(
+        out,
+        "1 + 5 t + 10 t^2 + 10 t^3 + 5 t^4 + t^5\n0.01 + (1/5) t + t^2\n0.425 + 0.12345 t\n\
+         cos(1e300 + t)\n(1/√2) t\n"
+    );
+}
+
+#[test]
 fn expression_limit_is_a_domain_error() {
     let mut s = session();
     let (_, err, n) = s.run_to_strings(

@@ -368,8 +368,11 @@ fn surd_term(r: Rat, k: i64, latex: bool) -> String {
         if q == 1 {
             return format!("{sign}{p}");
         }
-        if q > 10 && 1_000_000_000 % q == 0 {
-            return format!("{sign}{}", r.to_f64().abs());
+        // a terminating decimal as typed (0.425), in full up to 12 places
+        if q > 10
+            && let Some(k) = (1..=12).find(|k| 10i128.pow(*k) % q == 0)
+        {
+            return format!("{sign}{}", fmt_float(r.to_f64().abs(), k as usize));
         }
         return if latex {
             format!("{sign}\\frac{{{p}}}{{{q}}}")
@@ -402,6 +405,16 @@ fn surd_term(r: Rat, k: i64, latex: bool) -> String {
 }
 
 fn fmt_float(x: f64, digits: usize) -> String {
+    if x != 0.0 && !(1e-6..1e12).contains(&x.abs()) {
+        let s = format!("{x:.digits$e}");
+        let (m, e) = s.split_once('e').unwrap_or((&s, "0"));
+        let m = if m.contains('.') {
+            m.trim_end_matches('0').trim_end_matches('.')
+        } else {
+            m
+        };
+        return format!("{m}e{e}");
+    }
     let s = format!("{x:.digits$}");
     let s = if s.contains('.') {
         s.trim_end_matches('0').trim_end_matches('.').to_string()

@@ -143,32 +143,55 @@ fn pow(x: &Mat, y: &Mat, base: Kind, kind: &Kind) -> Result<Value, String> {
         _ => None,
     }
     .ok_or("a symbolic power needs an integer exponent")? as i64;
-    let grows = (x.size() as f64).powf(n.unsigned_abs().min(64) as f64);
-    if n.unsigned_abs() > 1 && grows > MAX_WORK as f64 && x.size() > 1 {
-        return Err(too_large());
-    }
     if x.data.len() == 1 {
-        let e = x.data[0].powi(n).ok_or("division by zero")?;
-        return Ok(scalar(e));
+        let base = match n {
+            0.. => x.data[0].clone(),
+            _ => x.data[0].recip().ok_or("division by zero")?,
+        };
+        let mut acc = Mat::scalar(Expr::one());
+        let m = checked_power(&Mat::scalar(base), n.unsigned_abs(), &mut acc)?;
+        return Ok(scalar(m.data[0].clone()));
     }
     if x.rows != x.cols {
         return Err("only a square matrix has powers".into());
     }
-    let m = if n < 0 {
-        let inv = inverse(&base, x).ok_or("a symbolic inverse only of a rotation or transform")?;
-        power(&inv, -n)
+    let b = if n < 0 {
+        inverse(&base, x).ok_or("a symbolic inverse only of a rotation or transform")?
     } else {
-        power(x, n)
+        x.clone()
     };
-    Ok(make(kind, m))
+    let mut acc = Mat::identity(x.rows);
+    Ok(make(kind, checked_power(&b, n.unsigned_abs(), &mut acc)?))
 }
 
-fn power(x: &Mat, n: i64) -> Mat {
-    let mut r = Mat::identity(x.rows);
-    for _ in 0..n {
-        r = r.mul(x).unwrap_or_else(|| r.clone());
+/// `acc · xⁿ` by squaring, refusing a product whose work or result passes
+/// the limits ([`MAX_WORK`], [`super::symbolic::MAX_SYM_NODES`]).
+fn checked_power(x: &Mat, mut n: u64, acc: &mut Mat) -> Result<Mat, String> {
+    let step = |a: &Mat, b: &Mat| -> Result<Mat, String> {
+        let work = a
+            .size()
+            .saturating_mul(b.size())
+            .saturating_mul(a.cols.max(1));
+        if work > MAX_WORK {
+            return Err(too_large());
+        }
+        let m = mul(a, b)?;
+        if m.size() > super::symbolic::MAX_SYM_NODES {
+            return Err(too_large());
+        }
+        Ok(m)
+    };
+    let mut base = x.clone();
+    while n > 0 {
+        if n & 1 == 1 {
+            *acc = step(acc, &base)?;
+        }
+        n >>= 1;
+        if n > 0 {
+            base = step(&base, &base)?;
+        }
     }
-    r
+    Ok(acc.clone())
 }
 
 /// The inverse by the book's formulas: Rᵀ (3.23's Rᵀ = R⁻¹), the SE(3)
