@@ -164,6 +164,16 @@ pub fn eval_symbolic(name: &str, vals: &[Value], kind: &Kind) -> Out {
             make(&Kind::SO3, ms[0].block(0..3, 0..3)),
             make(&Kind::Vector(Some(3)), ms[0].block(0..3, 3..4)),
         ])),
+        ("SE2", 3) => {
+            // (3.16): [cos θ, −sin θ, x; sin θ, cos θ, y; 0, 0, 1]
+            let (c, sn) = (Expr::cos(&s(0)?), Expr::sin(&s(0)?));
+            let rows = vec![
+                vec![c.clone(), sn.neg(), s(1)?],
+                vec![sn, c, s(2)?],
+                vec![Expr::zero(), Expr::zero(), Expr::one()],
+            ];
+            ok(make(&Kind::SE2, Mat::from_rows(rows)?))
+        }
         ("Trans", 1) => ok(make(&Kind::SE3, sm::rp_to_trans(&Mat::identity(3), &ms[0]))),
         ("displacement", 2) => {
             let inv = sm::trans_inv(&ms[0])?;
