@@ -145,7 +145,9 @@ fn write_value(out: &mut String, prefix: &str, ty: &Ty, v: &Value, style: Style)
         }
     }
     let at = out.len();
-    out.push_str("  : ");
+    // In LaTeX the label is a comment, so the line stays valid LaTeX (§7).
+    let latex = style.sym == crate::sym::print::Mode::Latex && matches!(v, Value::Formula { .. });
+    out.push_str(if latex { "  % " } else { "  : " });
     if !write_type_label(out, ty, Some(v)) {
         out.truncate(at);
     }
