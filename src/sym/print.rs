@@ -90,8 +90,8 @@ fn term(c: &Coef, poly: &Mono, trig: &[Trig], st: Style) -> (bool, String) {
         };
         into.push(power(&var(v, st), e, latex));
     }
-    for (k, sin) in trig {
-        num.push(trig_factor(k, *sin, st));
+    for (k, sin, p) in trig {
+        num.push(trig_factor(k, *sin, *p, st));
     }
     let (neg, coef) = coefficient(c, st);
     let has_factors = !num.is_empty() || !den.is_empty();
@@ -261,12 +261,21 @@ pub fn symbol(s: &Symbol, st: Style) -> String {
     format!("{first}{mark}{rest}{tail}")
 }
 
-fn trig_factor(k: &[(Symbol, i32)], sin: bool, st: Style) -> String {
+fn trig_factor(k: &[(Symbol, i32)], sin: bool, p: u32, st: Style) -> String {
     let f = if sin { "sin" } else { "cos" };
     if st.mode == Mode::Short
         && let Some(short) = short_trig(k, sin)
     {
-        return short;
+        const SUP: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
+        let sup: String = if p > 1 {
+            p.to_string()
+                .chars()
+                .map(|d| SUP[d.to_digit(10).unwrap_or(0) as usize])
+                .collect()
+        } else {
+            String::new()
+        };
+        return format!("{short}{sup}");
     }
     let mut arg = String::new();
     for (i, (s, c)) in k.iter().enumerate() {
@@ -283,15 +292,20 @@ fn trig_factor(k: &[(Symbol, i32)], sin: bool, st: Style) -> String {
             (_, true) => arg.push_str(&format!(" - {piece}")),
         }
     }
+    let sup = if p > 1 {
+        format!("^{{{p}}}")
+    } else {
+        String::new()
+    };
     if st.mode == Mode::Latex {
         if k.len() == 1 && k[0].1 == 1 {
             let space = if arg.starts_with('\\') { "" } else { " " };
-            format!("\\{f}{space}{arg}")
+            format!("\\{f}{sup}{space}{arg}")
         } else {
-            format!("\\{f}({arg})")
+            format!("\\{f}{sup}({arg})")
         }
     } else {
-        format!("{f}({arg})")
+        power(&format!("{f}({arg})"), p as i32, false)
     }
 }
 
@@ -535,6 +549,16 @@ mod tests {
             .mul(&Expr::cos(&b))
             .scale(&Coef::from_f64(-0.082));
         assert_eq!(expr(&x, Style::default()), "-0.082 sin(t1) cos(t5)");
+    }
+
+    #[test]
+    fn one_angle_prints_in_powers_when_no_longer() {
+        let t = s("t");
+        let (c, sn) = (Expr::cos(&t), Expr::sin(&t));
+        assert_eq!(expr(&sn.mul(&c), Style::default()), "cos(t) sin(t)");
+        let two = Expr::cos(&t.scale(&Coef::int(2)));
+        assert_eq!(expr(&two, Style::default()), "cos(2 t)");
+        assert_eq!(expr(&c.powi(3).unwrap(), Style::default()), "cos(t)^3");
     }
 
     #[test]

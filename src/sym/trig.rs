@@ -11,8 +11,9 @@ use super::coef::Coef;
 use super::expr::{Expr, Mono, Symbol, Var};
 
 /// One trigonometric factor: an integer combination of angles (first
-/// coefficient positive) and whether it is a sine.
-pub type Trig = (Vec<(Symbol, i32)>, bool);
+/// coefficient positive), whether it is a sine, and its power (`cos(t)^2`
+/// where a single angle prints in powers of cos t and sin t).
+pub type Trig = (Vec<(Symbol, i32)>, bool, u32);
 /// The real terms: (non-angle monomial, trigonometric factors) → coefficient.
 pub type Real = BTreeMap<(Mono, Vec<Trig>), Coef>;
 
@@ -21,8 +22,9 @@ pub type Real = BTreeMap<(Mono, Vec<Trig>), Coef>;
 type Groups = Vec<Vec<Symbol>>;
 type Cost = (usize, usize);
 
-/// The real form of `e` for a grouping of its angles.
-pub fn realize(e: &Expr, groups: &[Vec<Symbol>]) -> Real {
+/// The real form of `e` for a grouping of its angles; a group marked in
+/// `powers` (one angle) prints in powers of its cosine and sine.
+pub fn realize(e: &Expr, groups: &[Vec<Symbol>], powers: &[bool]) -> Real {
     let mut out: Real = BTreeMap::new();
     let half_i = Coef::i();
     for (m, c) in &e.terms {
@@ -35,7 +37,28 @@ pub fn realize(e: &Expr, groups: &[Vec<Symbol>]) -> Real {
             }
         }
         let mut parts: Vec<(Vec<Trig>, Coef)> = vec![(Vec::new(), *c)];
-        for g in groups {
+        for (gi, g) in groups.iter().enumerate() {
+            if powers.get(gi).copied().unwrap_or(false)
+                && let Some((s, k)) = zs.iter().find(|(s, _)| g.contains(s))
+            {
+                let expansion = power_form(*k);
+                parts = parts
+                    .into_iter()
+                    .flat_map(|(t, c)| {
+                        expansion.iter().map(move |((a, b), x)| {
+                            let mut t = t.clone();
+                            if *a > 0 {
+                                t.push((vec![((*s).clone(), 1)], false, *a));
+                            }
+                            if *b {
+                                t.push((vec![((*s).clone(), 1)], true, 1));
+                            }
+                            (t, c.mul(x))
+                        })
+                    })
+                    .collect();
+                continue;
+            }
             let mut k: Vec<(Symbol, i32)> = zs
                 .iter()
                 .filter(|(s, _)| g.contains(s))
@@ -54,9 +77,9 @@ pub fn realize(e: &Expr, groups: &[Vec<Symbol>]) -> Real {
                 .into_iter()
                 .flat_map(|(t, c)| {
                     let mut ct = t.clone();
-                    ct.push((k.clone(), false));
+                    ct.push((k.clone(), false, 1));
                     let mut st = t;
-                    st.push((k.clone(), true));
+                    st.push((k.clone(), true, 1));
                     [(ct, c), (st, c.mul(&sin_factor))]
                 })
                 .collect();
@@ -69,6 +92,35 @@ pub fn realize(e: &Expr, groups: &[Vec<Symbol>]) -> Real {
     }
     out.retain(|_, c| !negligible(c));
     out
+}
+
+/// The largest |k| of e^{ikθ} written in powers of cos θ and sin θ.
+const MAX_POWER: i32 = 8;
+
+/// e^{ikθ} = (cos θ + i sin θ)^k in powers of c = cos θ and s = sin θ, with
+/// s² = 1 − c²: (power of c, whether s) → coefficient.
+fn power_form(k: i32) -> Vec<((u32, bool), Coef)> {
+    let n = k.unsigned_abs();
+    let unit = Coef::i().mul(&Coef::int(i64::from(k.signum())));
+    let mut out: BTreeMap<(u32, bool), Coef> = BTreeMap::new();
+    let mut binom = 1i64;
+    let mut ij = Coef::one();
+    for j in 0..=n {
+        // C(n, j) (i sgn)^j c^{n−j} s^j, s^{2m} = (1 − c²)^m
+        let (m, odd) = (j / 2, j % 2 == 1);
+        let mut bm = 1i64;
+        for r in 0..=m {
+            let sign = if r % 2 == 0 { 1 } else { -1 };
+            let x = ij.mul(&Coef::int(binom * bm * sign));
+            let key = (n - j + 2 * r, odd);
+            let sum = out.get(&key).map_or(x, |o| o.add(&x));
+            out.insert(key, sum);
+            bm = bm * i64::from(m - r) / i64::from(r + 1);
+        }
+        ij = ij.mul(&unit);
+        binom = binom * i64::from(n - j) / i64::from(j + 1);
+    }
+    out.into_iter().filter(|(_, c)| !c.is_zero()).collect()
 }
 
 fn negligible(c: &Coef) -> bool {
@@ -237,5 +289,31 @@ pub fn real_form(e: &Expr) -> Real {
     }
     angles.sort();
     let groups = best_groups(e, &angles);
-    realize(e, &groups)
+    let mut powers = vec![false; groups.len()];
+    let mut best = realize(e, &groups, &powers);
+    // A single angle with multiples (sin t cos t as (1/2) sin(2 t)) may read
+    // better in powers of its cosine and sine: kept when no longer.
+    for (gi, g) in groups.iter().enumerate() {
+        let multiples = |k: i32| k.abs() >= 2 && k.abs() <= MAX_POWER;
+        let fits = e.terms.keys().flatten().all(|(v, k)| match v {
+            Var::Z(s) if g.contains(s) => k.abs() <= MAX_POWER,
+            _ => true,
+        });
+        let has = e
+            .terms
+            .keys()
+            .flatten()
+            .any(|(v, k)| matches!(v, Var::Z(s) if g.contains(s)) && multiples(*k));
+        if g.len() != 1 || !fits || !has {
+            continue;
+        }
+        powers[gi] = true;
+        let tried = realize(e, &groups, &powers);
+        if tried.len() <= best.len() {
+            best = tried;
+        } else {
+            powers[gi] = false;
+        }
+    }
+    best
 }
