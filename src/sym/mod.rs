@@ -7,6 +7,7 @@
 
 pub mod coef;
 pub mod diff;
+pub mod eval;
 pub mod expr;
 pub mod matrix;
 pub mod print;
