@@ -373,6 +373,17 @@ fn powers_and_numbers_print_exactly() {
 }
 
 #[test]
+fn derive_multiplies_symbolic_transforms() {
+    let out = run(
+        &mut session(),
+        "given t : scalar\nT_ab = RpToTrans(Rotz(t), (1, 0, 0))\nT_bc = RpToTrans(Rotx(t), (0, 0, 0))\nderive T_ca",
+    );
+    assert!(out.contains("T_ca = inv(T_bc) * inv(T_ab)\n"), "{out}");
+    assert!(out.contains("sin(t)^2,       -cos(t) sin(t)"), "{out}");
+    assert!(out.trim_end().ends_with(": SE(3) {c}←{a}"), "{out}");
+}
+
+#[test]
 fn expression_limit_is_a_domain_error() {
     let mut s = session();
     let (_, err, n) = s.run_to_strings(

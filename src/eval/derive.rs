@@ -121,6 +121,11 @@ impl Interp<'_> {
             })?;
             let v = match (&v, s.inverted) {
                 (Value::Sym(x), true) => Value::Sym(x.clone().inverse()),
+                (Value::Formula { kind, m }, true) => super::formula::inverse(kind, m)
+                    .map(|m| super::formula::make(kind, m))
+                    .ok_or_else(|| {
+                        Diagnostic::error(ErrorKind::Domain, target.span, "no symbolic inverse")
+                    })?,
                 (_, true) => ops::inverse(&v)
                     .map_err(|m| Diagnostic::error(ErrorKind::Domain, target.span, m))?,
                 _ => v,
@@ -134,6 +139,10 @@ impl Interp<'_> {
                     super::substitute::to_sym(&a),
                     super::substitute::to_sym(&v),
                 )),
+                Some(a) if super::formula::applies(&[&a, &v]) => {
+                    super::formula::binary(crate::syntax::ast::BinOp::Mul, &a, &v, &kind)
+                        .map_err(|m| Diagnostic::error(ErrorKind::Domain, target.span, m))?
+                }
                 Some(a) => ops::mul(&a, &v, &kind)
                     .map_err(|m| Diagnostic::error(ErrorKind::Domain, target.span, m))?,
             });

@@ -22,9 +22,18 @@ pub type Real = BTreeMap<(Mono, Vec<Trig>), Coef>;
 type Groups = Vec<Vec<Symbol>>;
 type Cost = (usize, usize);
 
-/// The real form of `e` for a grouping of its angles; a group marked in
-/// `powers` (one angle) prints in powers of its cosine and sine.
-pub fn realize(e: &Expr, groups: &[Vec<Symbol>], powers: &[bool]) -> Real {
+/// How a group of angles prints: cosines and sines of angle sums, or (one
+/// angle) powers of cos θ and sin θ with sin² or with cos² eliminated.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Power {
+    Linear,
+    Cos,
+    Sin,
+}
+
+/// The real form of `e` for a grouping of its angles, each printed as
+/// `powers` says (missing: linear).
+pub fn realize(e: &Expr, groups: &[Vec<Symbol>], powers: &[Power]) -> Real {
     let mut out: Real = BTreeMap::new();
     let half_i = Coef::i();
     for (m, c) in &e.terms {
@@ -38,10 +47,10 @@ pub fn realize(e: &Expr, groups: &[Vec<Symbol>], powers: &[bool]) -> Real {
         }
         let mut parts: Vec<(Vec<Trig>, Coef)> = vec![(Vec::new(), *c)];
         for (gi, g) in groups.iter().enumerate() {
-            if powers.get(gi).copied().unwrap_or(false)
+            if let Some(basis @ (Power::Cos | Power::Sin)) = powers.get(gi).copied()
                 && let Some((s, k)) = zs.iter().find(|(s, _)| g.contains(s))
             {
-                let expansion = power_form(*k);
+                let expansion = power_form(*k, basis == Power::Sin);
                 parts = parts
                     .into_iter()
                     .flat_map(|(t, c)| {
@@ -50,8 +59,8 @@ pub fn realize(e: &Expr, groups: &[Vec<Symbol>], powers: &[bool]) -> Real {
                             if *a > 0 {
                                 t.push((vec![((*s).clone(), 1)], false, *a));
                             }
-                            if *b {
-                                t.push((vec![((*s).clone(), 1)], true, 1));
+                            if *b > 0 {
+                                t.push((vec![((*s).clone(), 1)], true, *b));
                             }
                             (t, c.mul(x))
                         })
@@ -97,22 +106,25 @@ pub fn realize(e: &Expr, groups: &[Vec<Symbol>], powers: &[bool]) -> Real {
 /// The largest |k| of e^{ikθ} written in powers of cos θ and sin θ.
 const MAX_POWER: i32 = 8;
 
-/// e^{ikθ} = (cos θ + i sin θ)^k in powers of c = cos θ and s = sin θ, with
-/// s² = 1 − c²: (power of c, whether s) → coefficient.
-fn power_form(k: i32) -> Vec<((u32, bool), Coef)> {
+/// e^{ikθ} = (cos θ + i sin θ)^k in powers of c = cos θ and s = sin θ:
+/// with s² = 1 − c² (`sin_basis` false) or c² = 1 − s² (true), as
+/// (power of cos, power of sin) → coefficient.
+fn power_form(k: i32, sin_basis: bool) -> Vec<((u32, u32), Coef)> {
     let n = k.unsigned_abs();
     let unit = Coef::i().mul(&Coef::int(i64::from(k.signum())));
-    let mut out: BTreeMap<(u32, bool), Coef> = BTreeMap::new();
+    let mut out: BTreeMap<(u32, u32), Coef> = BTreeMap::new();
     let mut binom = 1i64;
     let mut ij = Coef::one();
     for j in 0..=n {
-        // C(n, j) (i sgn)^j c^{n−j} s^j, s^{2m} = (1 − c²)^m
-        let (m, odd) = (j / 2, j % 2 == 1);
+        // C(n, j) (i sgn)^j c^{n−j} s^j; the reduced one is s (or c)
+        let (kept, reduced) = if sin_basis { (j, n - j) } else { (n - j, j) };
+        let (m, odd) = (reduced / 2, reduced % 2);
         let mut bm = 1i64;
         for r in 0..=m {
             let sign = if r % 2 == 0 { 1 } else { -1 };
             let x = ij.mul(&Coef::int(binom * bm * sign));
-            let key = (n - j + 2 * r, odd);
+            let main = kept + 2 * r;
+            let key = if sin_basis { (odd, main) } else { (main, odd) };
             let sum = out.get(&key).map_or(x, |o| o.add(&x));
             out.insert(key, sum);
             bm = bm * i64::from(m - r) / i64::from(r + 1);
@@ -289,7 +301,7 @@ pub fn real_form(e: &Expr) -> Real {
     }
     angles.sort();
     let groups = best_groups(e, &angles);
-    let mut powers = vec![false; groups.len()];
+    let mut powers = vec![Power::Linear; groups.len()];
     let mut best = realize(e, &groups, &powers);
     // A single angle with multiples (sin t cos t as (1/2) sin(2 t)) may read
     // better in powers of its cosine and sine: kept when no longer.
@@ -307,12 +319,15 @@ pub fn real_form(e: &Expr) -> Real {
         if g.len() != 1 || !fits || !has {
             continue;
         }
-        powers[gi] = true;
-        let tried = realize(e, &groups, &powers);
-        if tried.len() <= best.len() {
-            best = tried;
-        } else {
-            powers[gi] = false;
+        for basis in [Power::Cos, Power::Sin] {
+            let old = powers[gi];
+            powers[gi] = basis;
+            let tried = realize(e, &groups, &powers);
+            if tried.len() <= best.len() && (old == Power::Linear || tried.len() < best.len()) {
+                best = tried;
+            } else {
+                powers[gi] = old;
+            }
         }
     }
     best
