@@ -383,6 +383,47 @@ fn derive_multiplies_symbolic_transforms() {
     assert!(out.trim_end().ends_with(": SE(3) {c}←{a}"), "{out}");
 }
 
+/// Every builtin on symbolic arguments of every shape answers (a value or
+/// an error) and never panics.
+#[test]
+fn every_builtin_takes_symbolic_arguments_without_panicking() {
+    let args = [
+        "t",
+        "(t, 0, 1)",
+        "Rotz(t)",
+        "RpToTrans(Rotx(t), (t, 1, 0))",
+        "(t, 0, 0, 1)",
+        "(0, 0, 1, t, 0, 0)",
+        "[t, 1; 0, t]",
+    ];
+    for b in chasles::builtins::table() {
+        let (lo, hi) = b.arity();
+        for n in lo..=hi.min(3) {
+            let pool = if n == 3 { &args[..3] } else { &args[..] };
+            let mut idx = vec![0usize; n];
+            loop {
+                let call: Vec<&str> = idx.iter().map(|&i| pool[i]).collect();
+                let src = format!("given t : scalar\n{}({})", b.name, call.join(", "));
+                let mut s = session();
+                let _ = s.run_to_strings("t.chs", &src, Mode::Run, false);
+                // the next combination
+                let mut k = 0;
+                while k < n {
+                    idx[k] += 1;
+                    if idx[k] < pool.len() {
+                        break;
+                    }
+                    idx[k] = 0;
+                    k += 1;
+                }
+                if k == n {
+                    break;
+                }
+            }
+        }
+    }
+}
+
 #[test]
 fn expression_limit_is_a_domain_error() {
     let mut s = session();

@@ -137,11 +137,13 @@ pub fn eval_symbolic(name: &str, vals: &[Value], kind: &Kind) -> Out {
             let axis = ["Rotx", "Roty", "Rotz"].iter().position(|n| *n == name)?;
             ok(make(&Kind::SO3, sm::rot_axis(axis, &s(0)?)))
         }
-        ("Rot", 2) => ok(make(&Kind::SO3, sm::rodrigues(&unit(&ms[0])?, &s(1)?))),
+        ("Rot", 2) if shape(0) == (3, 1) => {
+            ok(make(&Kind::SO3, sm::rodrigues(&unit(&ms[0])?, &s(1)?)))
+        }
         ("exp" | "MatrixExp3" | "MatrixExp6", 1) => exp(&ms[0], kind),
         ("inv", 1) => ok(make(kind, formula::inverse(&vals[0].kind(), &ms[0])?)),
-        ("RotInv", 1) => ok(make(&Kind::SO3, ms[0].transpose())),
-        ("TransInv", 1) => ok(make(&Kind::SE3, sm::trans_inv(&ms[0])?)),
+        ("RotInv", 1) if shape(0) == (3, 3) => ok(make(&Kind::SO3, ms[0].transpose())),
+        ("TransInv", 1) if shape(0) == (4, 4) => ok(make(&Kind::SE3, sm::trans_inv(&ms[0])?)),
         ("Adjoint", 1) if shape(0) == (4, 4) => ok(make(kind, sm::adjoint(&ms[0])?)),
         ("VecToso3", 1) if shape(0) == (3, 1) => ok(make(&Kind::So3, sm::skew(&ms[0].data))),
         ("VecTose3", 1) if shape(0) == (6, 1) => {
@@ -153,14 +155,18 @@ pub fn eval_symbolic(name: &str, vals: &[Value], kind: &Kind) -> Out {
             v.extend(ms[0].block(0..3, 3..4).data);
             ok(make(&Kind::Twist, Mat::column(v)))
         }
-        ("cross", 2) => ok(vec3(&cross(&ms[0].data, &ms[1].data))),
-        ("dot", 2) => ok(scalar(dot(&ms[0].data, &ms[1].data))),
+        ("cross", 2) if shape(0) == (3, 1) && shape(1) == (3, 1) => {
+            ok(vec3(&cross(&ms[0].data, &ms[1].data)))
+        }
+        ("dot", 2) if shape(0) == shape(1) => ok(scalar(dot(&ms[0].data, &ms[1].data))),
         ("norm", 1) if ms[0].cols == 1 => ok(scalar(Expr::sqrt(&dot(&ms[0].data, &ms[0].data)))),
         ("det", 1) => ok(scalar(ms[0].det()?)),
         ("trace", 1) => ok(scalar(ms[0].trace())),
         ("transpose", 1) => ok(make(&Kind::Unknown, ms[0].transpose())),
-        ("RpToTrans", 2) => ok(make(&Kind::SE3, sm::rp_to_trans(&ms[0], &ms[1]))),
-        ("TransToRp", 1) => ok(tuple(vec![
+        ("RpToTrans", 2) if shape(0) == (3, 3) && shape(1) == (3, 1) => {
+            ok(make(&Kind::SE3, sm::rp_to_trans(&ms[0], &ms[1])))
+        }
+        ("TransToRp", 1) if shape(0) == (4, 4) => ok(tuple(vec![
             make(&Kind::SO3, ms[0].block(0..3, 0..3)),
             make(&Kind::Vector(Some(3)), ms[0].block(0..3, 3..4)),
         ])),
@@ -174,17 +180,19 @@ pub fn eval_symbolic(name: &str, vals: &[Value], kind: &Kind) -> Out {
             ];
             ok(make(&Kind::SE2, Mat::from_rows(rows)?))
         }
-        ("Trans", 1) => ok(make(&Kind::SE3, sm::rp_to_trans(&Mat::identity(3), &ms[0]))),
-        ("displacement", 2) => {
+        ("Trans", 1) if shape(0) == (3, 1) => {
+            ok(make(&Kind::SE3, sm::rp_to_trans(&Mat::identity(3), &ms[0])))
+        }
+        ("displacement", 2) if shape(0) == (4, 4) && shape(1) == (4, 4) => {
             let inv = sm::trans_inv(&ms[0])?;
             ok(make(&Kind::SE3, ms[1].mul(&inv)?))
         }
-        ("twist" | "wrench", 2) => {
+        ("twist" | "wrench", 2) if shape(0) == (3, 1) && shape(1) == (3, 1) => {
             let mut v = ms[0].data.clone();
             v.extend(ms[1].data.clone());
             ok(make(kind, Mat::column(v)))
         }
-        ("screw" | "ScrewToAxis", 3) => {
+        ("screw" | "ScrewToAxis", 3) if shape(0) == (3, 1) && shape(1) == (3, 1) => {
             // S = (ŝ, −ŝ × q + h ŝ) (§3.3.2.2)
             let (q, sh, h) = (&ms[0].data, &ms[1].data, s(2)?);
             let v = cross(sh, q);
@@ -205,7 +213,7 @@ pub fn eval_symbolic(name: &str, vals: &[Value], kind: &Kind) -> Out {
             rot_chain([2, 1, 0], [&s(2)?, &s(1)?, &s(0)?])?,
         )),
         ("rot_quat", 1) if shape(0) == (4, 1) => ok(make(&Kind::SO3, rot_quat(&ms[0].data))),
-        ("quat_mul", 2) => {
+        ("quat_mul", 2) if shape(0) == (4, 1) && shape(1) == (4, 1) => {
             let (a, b) = (&ms[0].data, &ms[1].data);
             let w = a[0].mul(&b[0]).sub(&dot(&a[1..], &b[1..]));
             let c = cross(&a[1..], &b[1..]);
