@@ -121,10 +121,15 @@ impl Rat {
             .flatten()
     }
     /// The fraction nearest `x` with a denominator at most `max_den`
-    /// (continued fractions), when it is within 1e-12 (relative) of `x`.
+    /// (continued fractions), when it is within 1e-12 (relative) of `x`;
+    /// below 1e-14 a number is rounding noise and reads as 0.
     pub fn approximate(x: f64, max_den: i128) -> Option<Rat> {
         if !x.is_finite() || x.abs() > 1e15 {
             return None;
+        }
+        // rounding noise of a computed zero (cos(π/2) = 6e-17)
+        if x.abs() < 1e-14 {
+            return Some(Rat::ZERO);
         }
         let (mut h0, mut h1, mut k0, mut k1) = (0i128, 1i128, 1i128, 0i128);
         let mut y = x;
@@ -140,7 +145,7 @@ impl Rat {
             }
             (h0, h1, k0, k1) = (h1, h2, k1, k2);
             let r = h1 as f64 / k1 as f64;
-            if (r - x).abs() <= 1e-12 * x.abs().max(1.0) {
+            if (r - x).abs() <= 1e-12 * x.abs() {
                 return Rat::new(h1, k1);
             }
             let f = y - a as f64;

@@ -382,8 +382,9 @@ fn surd_term(r: Rat, k: i64, latex: bool) -> String {
         if q == 1 {
             return format!("{sign}{p}");
         }
-        // a terminating decimal as typed (0.425), in full up to 12 places
-        if q > 10
+        // a decimal as typed (0.1, 0.425), in full up to 12 places; halves,
+        // quarters and fifths stay fractions (0.392 = 49/125 is a decimal)
+        if q > 5
             && let Some(k) = (1..=12).find(|k| 10i128.pow(*k) % q == 0)
         {
             return format!("{sign}{}", fmt_float(r.to_f64().abs(), k as usize));
