@@ -47,7 +47,9 @@ fn gcd(a: i128, b: i128) -> i128 {
 const LIMIT: i128 = 1 << 60;
 
 impl Rat {
+    /// 0.
     pub const ZERO: Rat = Rat { num: 0, den: 1 };
+    /// 1.
     pub const ONE: Rat = Rat { num: 1, den: 1 };
 
     /// `num/den` reduced; None when it does not fit.
@@ -63,15 +65,18 @@ impl Rat {
         }
         (n.abs() < LIMIT && d < LIMIT).then_some(Rat { num: n, den: d })
     }
+    /// The integer n.
     pub fn int(n: i64) -> Rat {
         Rat {
             num: n as i128,
             den: 1,
         }
     }
+    /// True for 0.
     pub fn is_zero(self) -> bool {
         self.num == 0
     }
+    /// The sum; None when it does not fit.
     pub fn add(self, o: Rat) -> Option<Rat> {
         if o.num == 0 {
             return Some(self);
@@ -87,6 +92,7 @@ impl Rat {
         let (a, b) = (self.den / g, o.den / g);
         Rat::new(self.num * b + o.num * a, self.den * b)
     }
+    /// The product; None when it does not fit.
     pub fn mul(self, o: Rat) -> Option<Rat> {
         if self.num == 0 || o.num == 0 {
             return Some(Rat::ZERO);
@@ -102,15 +108,18 @@ impl Rat {
             (self.den / g2) * (o.den / g1),
         )
     }
+    /// −x.
     pub fn neg(self) -> Rat {
         Rat {
             num: -self.num,
             den: self.den,
         }
     }
+    /// 1/x; None for 0.
     pub fn inv(self) -> Option<Rat> {
         Rat::new(self.den, self.num)
     }
+    /// The nearest float.
     pub fn to_f64(self) -> f64 {
         self.num as f64 / self.den as f64
     }
@@ -166,13 +175,17 @@ pub struct Surd(pub [Rat; 4]);
 pub const ROOTS: [i64; 4] = [1, 2, 3, 6];
 
 impl Surd {
+    /// 0.
     pub const ZERO: Surd = Surd([Rat::ZERO; 4]);
+    /// A rational as a field element.
     pub fn rat(r: Rat) -> Surd {
         Surd([r, Rat::ZERO, Rat::ZERO, Rat::ZERO])
     }
+    /// True for 0.
     pub fn is_zero(&self) -> bool {
         self.0.iter().all(|r| r.is_zero())
     }
+    /// The sum; None on overflow.
     pub fn add(&self, o: &Surd) -> Option<Surd> {
         let mut out = [Rat::ZERO; 4];
         for i in 0..4 {
@@ -180,9 +193,11 @@ impl Surd {
         }
         Some(Surd(out))
     }
+    /// −x.
     pub fn neg(&self) -> Surd {
         Surd(self.0.map(Rat::neg))
     }
+    /// The product; None on overflow.
     pub fn mul(&self, o: &Surd) -> Option<Surd> {
         // √a √b = k √c over the basis 1, √2, √3, √6.
         const TABLE: [[(i64, usize); 4]; 4] = [
@@ -231,6 +246,7 @@ impl Surd {
         let n = norm.0[0].inv()?;
         num.mul(&Surd::rat(n))
     }
+    /// The nearest float.
     pub fn to_f64(&self) -> f64 {
         self.0
             .iter()
@@ -303,16 +319,20 @@ impl PartialOrd for Coef {
 }
 
 impl Coef {
+    /// 0.
     pub const ZERO: Coef = Coef::Exact {
         re: Surd::ZERO,
         im: Surd::ZERO,
     };
+    /// A rational coefficient.
     pub fn rat(r: Rat) -> Coef {
         Coef::real(Surd::rat(r))
     }
+    /// An integer coefficient.
     pub fn int(n: i64) -> Coef {
         Coef::rat(Rat::int(n))
     }
+    /// 1.
     pub fn one() -> Coef {
         Coef::int(1)
     }
@@ -323,6 +343,7 @@ impl Coef {
             im: Surd::rat(Rat::ONE),
         }
     }
+    /// A real coefficient.
     pub fn real(s: Surd) -> Coef {
         Coef::Exact {
             re: s,
@@ -336,12 +357,14 @@ impl Coef {
             None => Coef::Approx { re: x, im: 0.0 },
         }
     }
+    /// True for 0.
     pub fn is_zero(&self) -> bool {
         match self {
             Coef::Exact { re, im } => re.is_zero() && im.is_zero(),
             Coef::Approx { re, im } => *re == 0.0 && *im == 0.0,
         }
     }
+    /// True for 1.
     pub fn is_one(&self) -> bool {
         *self == Coef::one()
     }
@@ -366,6 +389,7 @@ impl Coef {
             Coef::Approx { re, im }
         }
     }
+    /// The sum (a float pair when exact arithmetic overflows).
     pub fn add(&self, o: &Coef) -> Coef {
         if let (Coef::Exact { re: a, im: b }, Coef::Exact { re: c, im: d }) = (self, o)
             && let (Some(re), Some(im)) = (a.add(c), b.add(d))
@@ -375,6 +399,7 @@ impl Coef {
         let ((a, b), (c, d)) = (self.to_c64(), o.to_c64());
         Coef::settle(a + c, b + d)
     }
+    /// −c.
     pub fn neg(&self) -> Coef {
         match self {
             Coef::Exact { re, im } => Coef::Exact {
@@ -384,6 +409,7 @@ impl Coef {
             Coef::Approx { re, im } => Coef::Approx { re: -re, im: -im },
         }
     }
+    /// The product (a float pair when exact arithmetic overflows).
     pub fn mul(&self, o: &Coef) -> Coef {
         if let (Coef::Exact { re: a, im: b }, Coef::Exact { re: c, im: d }) = (self, o) {
             let exact = || -> Option<Coef> {

@@ -24,6 +24,7 @@ pub struct Symbol {
 }
 
 impl Symbol {
+    /// A real symbol, `given t1 : scalar`.
     pub fn new(name: &str) -> Symbol {
         Symbol {
             name: name.into(),
@@ -65,6 +66,7 @@ pub enum Func {
 }
 
 impl Func {
+    /// The name as printed.
     pub fn name(self) -> &'static str {
         match self {
             Func::Sin => "sin",
@@ -150,9 +152,11 @@ fn mono_mul(a: &Mono, b: &Mono) -> Mono {
 }
 
 impl Expr {
+    /// 0.
     pub fn zero() -> Expr {
         Expr::default()
     }
+    /// A constant.
     pub fn constant(c: Coef) -> Expr {
         let mut e = Expr::zero();
         if !c.is_zero() {
@@ -160,9 +164,11 @@ impl Expr {
         }
         e
     }
+    /// 1.
     pub fn one() -> Expr {
         Expr::constant(Coef::one())
     }
+    /// An integer.
     pub fn int(n: i64) -> Expr {
         Expr::constant(Coef::int(n))
     }
@@ -177,6 +183,7 @@ impl Expr {
         }
         Expr::constant(c)
     }
+    /// One variable.
     pub fn var(v: Var) -> Expr {
         Expr::var_pow(v, 1)
     }
@@ -185,15 +192,18 @@ impl Expr {
         x.terms.insert(vec![(v, e)], Coef::one());
         x
     }
+    /// A symbol as itself (not as an angle).
     pub fn symbol(s: Symbol) -> Expr {
         Expr::var(Var::Sym(s))
     }
+    /// π.
     pub fn pi() -> Expr {
         Expr::var(Var::Pi)
     }
     pub(super) fn call(f: Func, args: Vec<Expr>) -> Expr {
         Expr::var(Var::Call(Arc::new(Call { f, args })))
     }
+    /// True for 0 (no terms).
     pub fn is_zero(&self) -> bool {
         self.terms.is_empty()
     }
@@ -259,6 +269,7 @@ impl Expr {
             }
         }
     }
+    /// a + b.
     pub fn add(&self, o: &Expr) -> Expr {
         let mut out = self.clone();
         for (m, c) in &o.terms {
@@ -266,12 +277,15 @@ impl Expr {
         }
         out
     }
+    /// −a.
     pub fn neg(&self) -> Expr {
         self.scale(&Coef::int(-1))
     }
+    /// a − b.
     pub fn sub(&self, o: &Expr) -> Expr {
         self.add(&o.neg())
     }
+    /// c·a for a constant c.
     pub fn scale(&self, c: &Coef) -> Expr {
         let mut out = Expr::zero();
         for (m, k) in &self.terms {
@@ -279,6 +293,7 @@ impl Expr {
         }
         out
     }
+    /// a·b, monomial by monomial.
     pub fn mul(&self, o: &Expr) -> Expr {
         let mut out = Expr::zero();
         for (a, c) in &self.terms {

@@ -15,6 +15,7 @@ pub struct Mat {
 }
 
 impl Mat {
+    /// The zero matrix.
     pub fn zeros(rows: usize, cols: usize) -> Mat {
         Mat {
             rows,
@@ -22,6 +23,7 @@ impl Mat {
             data: vec![Expr::zero(); rows * cols],
         }
     }
+    /// The n×n identity.
     pub fn identity(n: usize) -> Mat {
         let mut m = Mat::zeros(n, n);
         for i in 0..n {
@@ -41,6 +43,7 @@ impl Mat {
             data: rows.into_iter().flatten().collect(),
         })
     }
+    /// A column vector.
     pub fn column(v: Vec<Expr>) -> Mat {
         Mat {
             rows: v.len(),
@@ -48,21 +51,26 @@ impl Mat {
             data: v,
         }
     }
+    /// A 1×1 matrix.
     pub fn scalar(e: Expr) -> Mat {
         Mat::column(vec![e])
     }
+    /// Entry (i, j), 0-based.
     pub fn get(&self, i: usize, j: usize) -> &Expr {
         &self.data[i * self.cols + j]
     }
+    /// Sets entry (i, j), 0-based.
     pub fn set(&mut self, i: usize, j: usize, e: Expr) {
         self.data[i * self.cols + j] = e;
     }
+    /// The rows.
     pub fn row_vecs(&self) -> Vec<Vec<Expr>> {
         self.data
             .chunks(self.cols.max(1))
             .map(<[Expr]>::to_vec)
             .collect()
     }
+    /// Entrywise f.
     pub fn map(&self, f: impl Fn(&Expr) -> Expr) -> Mat {
         Mat {
             rows: self.rows,
@@ -70,6 +78,7 @@ impl Mat {
             data: self.data.iter().map(f).collect(),
         }
     }
+    /// Aᵀ.
     pub fn transpose(&self) -> Mat {
         let mut m = Mat::zeros(self.cols, self.rows);
         for i in 0..self.rows {
@@ -92,6 +101,7 @@ impl Mat {
             .collect();
         Some(Mat { data, ..*self })
     }
+    /// k·A for a scalar expression k.
     pub fn scale(&self, k: &Expr) -> Mat {
         self.map(|e| e.mul(k))
     }
@@ -133,6 +143,7 @@ impl Mat {
             }
         }
     }
+    /// tr A.
     pub fn trace(&self) -> Expr {
         (0..self.rows.min(self.cols)).fold(Expr::zero(), |acc, i| acc.add(self.get(i, i)))
     }
