@@ -13,8 +13,9 @@
 #     ω_s from Ṙ Rᵀ (§3.2.2), V_s from Ṫ T⁻¹ and V_b from T⁻¹ Ṫ (3.71, 3.74);
 #     with θ̇ = 2 rad/s they are the book's ω_s = (0, 0, 2), v_s = (-2, -4, 0),
 #     ω_b = (0, 0, -2), v_b = (2.8, 4, 0);
-#   - identities decided without numbers: e^{[ω]a} e^{[ω]b} = e^{[ω](a+b)},
-#     [Ad_{T1 T2}] = [Ad_{T1}][Ad_{T2}], and the power V_aᵀ F_a = V_bᵀ F_b (3.98);
+#   - identities decided by `==` without numbers: R Rᵀ = I, det R = 1,
+#     e^{[ω]a} e^{[ω]b} = e^{[ω](a+b)}, [Ad_{T1 T2}] = [Ad_{T1}][Ad_{T2}], and
+#     the power V_aᵀ F_a = V_bᵀ F_b (3.98);
 #   - `--short` prints the book's shorthand (c₁, s₁₂), `--latex` LaTeX.
 
 given theta, a, b : scalar
@@ -24,9 +25,9 @@ given t1, t2, t3, L1, L2, L3 : scalar
 Rot(z, theta)
 w = (1, 2, 2)/3
 R = Rot(w, theta)
-R R^T                                        # I
-det(R)                                       # 1
-exp([w] a) exp([w] b)                        # = Rot(ŵ, a + b): the angles add
+R R^T == I                                   # true: Rᵀ = R⁻¹ (3.23), no numbers
+det(R) == 1                                  # true
+exp([w] a) exp([w] b) == exp([w] (a + b))    # true: the angles add
 
 # --- e^{[S]θ} by Proposition 3.16 ----------------------------------------------------
 S_rot = screw((0, 2, 0), (0, 0, 1), 0)       # pure rotation about ẑ through q = (0, 2, 0)
@@ -60,15 +61,17 @@ V_b = se3ToVec(inv(T_sb) diff(T_sb, t))      # (0, 0, -φ̇, 1.4φ̇, 2φ̇, 0)
 # --- Identities, no numbers ---------------------------------------------------------
 T1 = exp([S_pitch] a)
 T2 = exp([S2] b)
-Ad(T1 T2) - Ad(T1) Ad(T2)                    # 0: [Ad_{T1 T2}] = [Ad_{T1}][Ad_{T2}]
+Ad(T1 T2) == Ad(T1) Ad(T2)                   # true
 given w1, w2, w3, v1, v2, v3, m1, m2, m3, f1, f2, f3 : scalar
 V_1 = (w1, w2, w3, v1, v2, v3)
 F_1 = (m1, m2, m3, f1, f2, f3)
 V_0 = Ad(T1) V_1
 F_0 = Ad(inv(T1))^T F_1
-V_0^T F_0 - V_1^T F_1                        # 0: the power is the same in both frames (3.98)
+V_0^T F_0 == V_1^T F_1                       # true: the power is frame-free (3.98)
 
 # --- Numbers later: φ̇ = 2 rad/s gives the book's twists -----------------------------
 phi' = 2
 V_s                                          # (0, 0, 2, -2, -4, 0)
 V_b                                          # (0, 0, -2, 2.8, 4, 0)
+assert V_s == (0, 0, 2, -2, -4, 0)           # the book's ω_s and v_s = r_s × ω_s
+assert V_b ≈ (0, 0, -2, 2.8, 4, 0)           # the book's ω_b and v_b

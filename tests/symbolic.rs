@@ -84,6 +84,33 @@ impl E {
     }
 }
 
+impl E {
+    /// The expression as chasles source, fully parenthesized.
+    fn source(&self) -> String {
+        match self {
+            E::Var(i) => NAMES[*i].to_string(),
+            E::Int(n) => format!("({n})"),
+            E::Half => "0.5".into(),
+            E::Sqrt2 => "sqrt(2)".into(),
+            E::Pi => "pi".into(),
+            E::Add(x, y) => format!("({} + {})", x.source(), y.source()),
+            E::Sub(x, y) => format!("({} - {})", x.source(), y.source()),
+            E::Mul(x, y) => format!("({} * {})", x.source(), y.source()),
+            E::Pow(x, n) => format!("({})^{n}", x.source()),
+            E::Trig(sin, k, q) => {
+                let arg: Vec<String> = k
+                    .iter()
+                    .zip(NAMES)
+                    .map(|(c, n)| format!("({c}) * {n}"))
+                    .collect();
+                let f = if *sin { "sin" } else { "cos" };
+                format!("{f}({} + {q} * pi / 4)", arg.join(" + "))
+            }
+            E::SqrtOf(n) => format!("sqrt({n})"),
+        }
+    }
+}
+
 fn expr() -> impl Strategy<Value = E> {
     let leaf = prop_oneof![
         (0..3usize).prop_map(E::Var),
@@ -140,6 +167,27 @@ proptest! {
         }
     }
 
+    /// `x == y` in the language never says true for expressions that
+    /// differ at a point (an undecided comparison is an error, not true).
+    #[test]
+    fn language_equality_is_never_wrongly_true(x in expr(), y in expr(), p in point()) {
+        let src = format!("given a, b, c : scalar\n{} == {}", x.source(), y.source());
+        let mut s = Session::new(Settings { json: true, ..Settings::default() });
+        let (out, _, _) = s.run_to_strings("t.chs", &src, Mode::Run, false);
+        let last: serde_json::Value = serde_json::from_str(out.lines().last().unwrap()).unwrap();
+        if last["value"] == serde_json::Value::Bool(true) {
+            let (u, v) = (x.eval(&p), y.eval(&p));
+            prop_assume!(u.abs() < 1e6);
+            prop_assert!((u - v).abs() <= 1e-9 * u.abs().max(1.0), "{src}");
+        }
+        // an expression always equals itself
+        let same = format!("given a, b, c : scalar\n{} == {}", x.source(), x.source());
+        let mut s = Session::new(Settings { json: true, ..Settings::default() });
+        let (out, _, _) = s.run_to_strings("t.chs", &same, Mode::Run, false);
+        let last: serde_json::Value = serde_json::from_str(out.lines().last().unwrap()).unwrap();
+        prop_assert_eq!(&last["value"], &serde_json::Value::Bool(true), "{}", same);
+    }
+
     /// Known identities are decided true, with no numbers.
     #[test]
     fn identities_are_recognized(p in point(), k in 1..4i64) {
@@ -184,6 +232,47 @@ proptest! {
 }
 
 // ---------------------------------------------------------------- language
+
+/// Identities of chapter 3 that `==` decides true with no numbers.
+#[test]
+fn equality_decides_the_books_identities() {
+    let w = "(0, 0.6, 0.8)";
+    let s1 = "(0, 0, 1, 0, -2, 0.5)";
+    let s2 = "(1, 0, 0, 0, 0, 1)";
+    let pairs = [
+        ("cos(a)^2 + sin(a)^2".to_string(), "1".to_string()),
+        ("cos(a + b)".into(), "cos(a) cos(b) - sin(a) sin(b)".into()),
+        ("sin(2 a)".into(), "2 sin(a) cos(a)".into()),
+        ("Rotz(a) Rotz(b)".into(), "Rotz(a + b)".into()),
+        (
+            "Rot((1, 2, 2)/3, a) Rot((1, 2, 2)/3, a)^T".into(),
+            "I".into(),
+        ),
+        ("det(Rot((1, 2, 2)/3, a))".into(), "1".into()),
+        (
+            format!("exp([{w}] a) exp([{w}] b)"),
+            format!("exp([{w}] (a + b))"),
+        ),
+        (
+            format!("Ad(exp([{s1}] a) exp([{s2}] b))"),
+            format!("Ad(exp([{s1}] a)) Ad(exp([{s2}] b))"),
+        ),
+        (format!("inv(exp([{s1}] a)) exp([{s1}] a)"), "I".into()),
+        ("diff(sin(a)^2, a)".into(), "2 sin(a) cos(a)".into()),
+        ("trace(Rotz(a))".into(), "1 + 2 cos(a)".into()),
+        (
+            "cross((cos(a), sin(a), 0), (0, 0, 1))".into(),
+            "(sin(a), -cos(a), 0)".into(),
+        ),
+    ];
+    for (l, r) in pairs {
+        let src = format!("given a, b : scalar\n{l} == {r}");
+        let out = run(&mut session(), &src);
+        assert_eq!(out.trim_end(), "true", "{src}");
+    }
+    let out = run(&mut session(), "given a : scalar\ncos(a) == sin(a)");
+    assert_eq!(out.trim_end(), "false");
+}
 
 fn session() -> Session {
     Session::new(Settings::default())

@@ -16,7 +16,7 @@ use super::value::Value;
 use crate::check::ty::Kind;
 
 /// A value as a symbolic operand (numbers become constants).
-pub(super) fn to_sym(v: &Value) -> Sym {
+pub(crate) fn to_sym(v: &Value) -> Sym {
     match v {
         Value::Sym(s) => s.clone(),
         other => Sym::Const(

@@ -21,6 +21,7 @@ use super::rules::{self, too_deep};
 use crate::diagnostics::{Diagnostic, ErrorKind};
 
 /// Precedence levels, loosest first; the same order as [`PRATT`].
+const PREC_CMP: u8 = 0;
 const PREC_ADD: u8 = 1;
 const PREC_MUL: u8 = 2;
 const PREC_PREFIX: u8 = 3;
@@ -28,6 +29,7 @@ const PREC_POW: u8 = 4;
 
 static PRATT: LazyLock<PrattParser<Rule>> = LazyLock::new(|| {
     PrattParser::new()
+        .op(Op::infix(Rule::eq, Assoc::Left) | Op::infix(Rule::approx, Assoc::Left))
         .op(Op::infix(Rule::add, Assoc::Left) | Op::infix(Rule::sub, Assoc::Left))
         .op(Op::infix(Rule::mul, Assoc::Left)
             | Op::infix(Rule::div, Assoc::Left)
@@ -112,6 +114,10 @@ enum Role {
 fn role(rule: Rule) -> Role {
     match rule {
         Rule::neg | Rule::pos => Role::Prefix,
+        Rule::eq | Rule::approx => Role::Infix {
+            prec: PREC_CMP,
+            right: false,
+        },
         Rule::add | Rule::sub => Role::Infix {
             prec: PREC_ADD,
             right: false,
@@ -226,6 +232,10 @@ impl Cx {
                 let ty = ty.ok_or_else(|| self.internal(whole))?;
                 Ok(StmtKind::Given { names, ty, times })
             }
+            Rule::assert_stmt => match form.into_inner().find(|p| p.as_rule() == Rule::expr) {
+                Some(p) => Ok(StmtKind::Assert(self.expr(p)?.0)),
+                None => Err(self.internal(whole)),
+            },
             Rule::derive_stmt => {
                 let p = form
                     .into_inner()
@@ -313,6 +323,9 @@ impl Cx {
                 let depth = dl.max(dr) + 1;
                 let op_span = self.span(op.as_span());
                 check_depth(depth, op_span)?;
+                if let Some(op) = rules::cmp_op(op.as_rule()) {
+                    return Ok((Expr::compare(op, l, r, op_span), depth));
+                }
                 let (bop, implicit, op_span) = match op.as_rule() {
                     Rule::add => (BinOp::Add, false, op_span),
                     Rule::sub => (BinOp::Sub, false, op_span),
