@@ -187,7 +187,7 @@ fn numbers_bound_later_reach_derived_symbols() {
     );
     assert!(
         out.contains(
-            "A = [cos(theta), -sin(theta), 0; sin(theta), cos(theta), 0; 0, 0, 1]  : 3×3 matrix\n"
+            "A = [cos(theta), -sin(theta), 0\n     sin(theta), cos(theta),  0\n     0,          0,           1]  : SO(3)\n"
         ),
         "{out}"
     );
