@@ -11,5 +11,6 @@ pub mod graph;
 pub mod interp;
 mod notation;
 mod substitute;
+mod symbols;
 
-pub use crate::values::{convert, ops, symbolic, value};
+pub use crate::values::{convert, formula, ops, symbolic, value};

@@ -5,10 +5,13 @@ use std::rc::Rc;
 
 use nalgebra::DMatrix;
 
-use super::symbolic::Sym;
+use super::symbolic::Tree;
 use crate::check::ty::Kind;
 use crate::mech::Mechanism;
 use crate::syntax::ast::Expr;
+
+/// A symbolic expression over `given` names, with values as constants.
+pub type Sym = Tree<Value>;
 
 /// A user function `f(x, y) = body`.
 #[derive(Debug, Clone, PartialEq)]
@@ -31,6 +34,30 @@ pub enum Value {
     Mech(Rc<Mechanism>),
     /// An expression over `given` symbols (LANGUAGE.md §7).
     Sym(Sym),
+    /// A scalar, vector or matrix whose entries are symbolic scalars in
+    /// canonical form (`Rotz(theta)`), with its kind (LANGUAGE.md §7).
+    Formula {
+        kind: Kind,
+        m: crate::sym::Mat,
+    },
+}
+
+impl PartialEq for Value {
+    /// Structural equality (numbers exactly, symbolic values by their
+    /// trees and canonical forms; mechanisms and functions by identity).
+    fn eq(&self, other: &Value) -> bool {
+        match (self, other) {
+            (Value::Num { kind: a, m: x }, Value::Num { kind: b, m: y }) => a == b && x == y,
+            (Value::Bool(a), Value::Bool(b)) => a == b,
+            (Value::Tuple(a), Value::Tuple(b)) => a == b,
+            (Value::Mech(a), Value::Mech(b)) => Rc::ptr_eq(a, b),
+            (Value::Sym(a), Value::Sym(b)) => a == b,
+            (Value::Formula { kind: a, m: x }, Value::Formula { kind: b, m: y }) => {
+                a == b && x == y
+            }
+            _ => false,
+        }
+    }
 }
 
 impl Value {
@@ -69,6 +96,7 @@ impl Value {
             Value::Tuple(vs) => Kind::Tuple(vs.iter().map(Value::kind).collect()),
             Value::Mech(_) => Kind::Mechanism,
             Value::Sym(_) => Kind::Unknown,
+            Value::Formula { kind, .. } => kind.clone(),
         }
     }
     /// The number of a scalar value.
