@@ -50,6 +50,28 @@ struct Opts {
     /// Keep running after an error.
     #[arg(long, global = true)]
     keep_going: bool,
+    /// Where pictures printed but not saved are written (default: the
+    /// current folder); created if missing.
+    #[arg(long, global = true, value_name = "DIR")]
+    draw_dir: Option<std::path::PathBuf>,
+}
+
+/// The folder for printed pictures, created when asked for by `--draw-dir`.
+fn picture_dir(opts: &Opts) -> Result<std::path::PathBuf, i32> {
+    match &opts.draw_dir {
+        None => Ok(".".into()),
+        Some(d) => match std::fs::create_dir_all(d) {
+            Ok(()) => Ok(d.clone()),
+            Err(e) => {
+                emit_err(&format!(
+                    "chasles: cannot use --draw-dir '{}': {}\n",
+                    d.display(),
+                    io_reason(&e)
+                ));
+                Err(2)
+            }
+        },
+    }
 }
 
 fn parse_frames(s: &str) -> Result<FrameMode, String> {
@@ -137,6 +159,12 @@ fn run_sources(sources: &[(String, String)], mode: Mode, opts: &Opts) -> i32 {
         ..Settings::default()
     };
     let mut session = Session::new(settings);
+    if mode == Mode::Run {
+        match picture_dir(opts) {
+            Ok(d) => session.pictures = Some(d),
+            Err(code) => return code,
+        }
+    }
     let stdout = std::io::stdout();
     let mut out = std::io::BufWriter::new(stdout.lock());
     let mut errors = 0;
@@ -229,12 +257,19 @@ pub fn main_with_args(args: Vec<String>) -> i32 {
         },
         (None, None) => {
             if std::io::stdin().is_terminal() {
-                crate::repl::run_terminal(&Settings {
-                    frames: cli.opts.frames,
-                    digits: cli.opts.digits as usize,
-                    json: cli.opts.json,
-                    ..Settings::default()
-                })
+                let pictures = match picture_dir(&cli.opts) {
+                    Ok(d) => d,
+                    Err(code) => return code,
+                };
+                crate::repl::run_terminal(
+                    &Settings {
+                        frames: cli.opts.frames,
+                        digits: cli.opts.digits as usize,
+                        json: cli.opts.json,
+                        ..Settings::default()
+                    },
+                    pictures,
+                )
             } else {
                 match load(&["-".to_string()]) {
                     Ok(s) => run_sources(&s, Mode::Run, &cli.opts),

@@ -6,6 +6,8 @@
 //! the checker with no numbers), and its implementation on values.
 
 mod args;
+mod table_draw;
+mod table_list;
 mod table_math;
 mod table_repr;
 mod table_rotations;
@@ -30,10 +32,12 @@ pub enum Area {
     LinearAlgebra,
     Scalars,
     Mechanisms,
+    /// Lists, ranges and pictures (LANGUAGE.md §12).
+    Pictures,
 }
 
 impl Area {
-    pub const ALL: [Area; 8] = [
+    pub const ALL: [Area; 9] = [
         Area::Rotations,
         Area::Transforms,
         Area::Twists,
@@ -42,6 +46,7 @@ impl Area {
         Area::LinearAlgebra,
         Area::Scalars,
         Area::Mechanisms,
+        Area::Pictures,
     ];
     pub fn title(self) -> &'static str {
         match self {
@@ -53,6 +58,7 @@ impl Area {
             Area::LinearAlgebra => "linear algebra",
             Area::Scalars => "scalar functions",
             Area::Mechanisms => "mechanisms (chapter 2)",
+            Area::Pictures => "lists, ranges and pictures",
         }
     }
 }
@@ -316,6 +322,8 @@ pub fn table() -> &'static [Builtin] {
         t.extend(table_screw::builtins());
         t.extend(table_repr::builtins());
         t.extend(table_math::builtins());
+        t.extend(table_list::builtins());
+        t.extend(table_draw::builtins());
         t
     })
 }

@@ -161,6 +161,14 @@ impl Interp<'_> {
             ExprKind::Paren(items) => self.paren(items, e.span),
             ExprKind::Brackets(rows) => self.brackets(rows, e.span),
             ExprKind::Mech(spec) => self.mech(spec, e.span),
+            ExprKind::Range { start, step, end } => self.range(start, step.as_deref(), end, e.span),
+            ExprKind::Comprehension { body, vars } => self.comprehension(body, vars, e.span),
+            ExprKind::Str(text) => Ok(Typed {
+                ty: Ty::plain(Kind::Text),
+                val: self
+                    .running()
+                    .then(|| Value::Str(std::rc::Rc::from(text.as_str()))),
+            }),
         }
     }
 
@@ -235,6 +243,17 @@ impl Interp<'_> {
     ) -> Result<Typed, Diagnostic> {
         let l = self.expr(lhs)?;
         let r = self.expr(rhs)?;
+        for (t, side) in [(&l, lhs), (&r, rhs)] {
+            if let Some(help) = super::list::elementwise_help(&t.ty.kind) {
+                return Err(Diagnostic::error(
+                    ErrorKind::Type,
+                    op_span,
+                    format!("no arithmetic on a list ({})", self.text(side.span).trim()),
+                )
+                .with_label(side.span, t.ty.kind.to_string())
+                .with_help(help));
+            }
+        }
         let ops_text = Operands {
             lhs: self.text(lhs.span),
             rhs: self.text(rhs.span),
@@ -366,7 +385,13 @@ impl Interp<'_> {
                 val: Some(Value::Sym(sym)),
             });
         }
+        let typed = tys
+            .into_iter()
+            .zip(args)
+            .map(|(t, e)| (t, self.text(e.span).trim().to_string()))
+            .collect();
         let mut a = Args {
+            typed,
             name: b.name,
             signature: b.signature,
             vals,

@@ -265,6 +265,11 @@ impl<'a> Interp<'a> {
     fn split_tuple(&self, t: &Typed, n: usize, span: Span) -> Result<Vec<Typed>, Diagnostic> {
         let kinds: Vec<Kind> = match &t.ty.kind {
             Kind::Tuple(ks) => ks.clone(),
+            // A list's length is known only from its value.
+            Kind::List(k) => match &t.val {
+                Some(Value::List(vs)) => vs.iter().map(Value::kind).collect(),
+                _ => vec![(**k).clone(); n],
+            },
             Kind::Vector(Some(len)) => vec![Kind::Scalar; *len],
             Kind::Unknown | Kind::Vector(None) => vec![Kind::Unknown; n],
             k => {
@@ -288,6 +293,7 @@ impl<'a> Interp<'a> {
         }
         let vals: Vec<Option<Value>> = match &t.val {
             Some(Value::Tuple(vs)) => vs.iter().cloned().map(Some).collect(),
+            Some(Value::List(vs)) => vs.iter().cloned().map(Some).collect(),
             Some(Value::Num { m, .. }) => m.iter().map(|x| Some(Value::scalar(*x))).collect(),
             _ => vec![None; n],
         };

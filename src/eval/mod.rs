@@ -8,6 +8,7 @@ mod derive;
 pub mod env;
 mod expr;
 pub mod interp;
+pub mod list;
 pub mod ops;
 mod substitute;
 pub mod symbolic;

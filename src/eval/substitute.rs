@@ -206,6 +206,7 @@ fn call(name: &str, vals: Vec<Value>) -> Option<Value> {
         spans,
         call_span: Default::default(),
         warnings: &mut warnings,
+        typed: Vec::new(),
     };
     (b.eval)(&mut args).ok()
 }

@@ -41,6 +41,13 @@ pub fn value(v: &Value) -> J {
         Value::Mech(m) => m.to_json(),
         Value::Func(f) => json!(format!("{}({})", f.name, f.params.join(", "))),
         Value::Sym(s) => json!(s.to_string()),
+        Value::List(vs) => J::Array(vs.iter().map(value).collect()),
+        Value::Str(t) => json!(t.as_ref()),
+        Value::Picture(p) => json!({
+            "file": p.file,
+            "shows": p.summary,
+            "panels": p.panels.len(),
+        }),
     }
 }
 

@@ -72,7 +72,88 @@ pub fn inline(v: &Value, style: impl Into<Style>) -> String {
         Value::Mech(m) => format!("mech < {} >", m.joints_text()),
         Value::Func(f) => format!("{}({})", f.name, f.params.join(", ")),
         Value::Sym(s) => s.to_string(),
+        Value::List(vs) => {
+            let shown = |v: &Value| inline(v, style);
+            let xs: Vec<String> = if vs.len() > LIST_INLINE {
+                let mut xs: Vec<String> = vs[..LIST_HEAD].iter().map(shown).collect();
+                xs.push("…".into());
+                xs.extend(vs[vs.len() - 2..].iter().map(shown));
+                xs
+            } else {
+                vs.iter().map(shown).collect()
+            };
+            format!("[{}]", xs.join(", "))
+        }
+        Value::Str(t) => format!("{t:?}"),
+        Value::Picture(p) => picture(p),
     }
+}
+
+/// Lists longer than this print their first [`LIST_HEAD`] and last two
+/// items.
+const LIST_INLINE: usize = 12;
+const LIST_HEAD: usize = 8;
+
+/// `picture: 5 frames and 1 screw axis in {s} → pic.svg`.
+fn picture(p: &crate::eval::value::Picture) -> String {
+    if p.is_view_only() {
+        return p.summary.clone();
+    }
+    match &p.file {
+        Some(f) => format!("picture: {} → {f}", p.summary),
+        None => format!("picture: {}", p.summary),
+    }
+}
+
+/// The label of a list: `list of 5 SE(3) {s}←{b'}`.
+fn list_label(ty: &Ty, vs: &[Value]) -> String {
+    let kind = crate::eval::value::common_kind(vs);
+    let n = vs.len();
+    let what = match kind {
+        _ if n == 0 => "empty list".to_string(),
+        Kind::Unknown => format!("list of {n} values"),
+        Kind::Scalar if n == 1 => "list of 1 number".to_string(),
+        k => Kind::List(Box::new(k))
+            .to_string()
+            .replacen("list of ", &format!("list of {n} "), 1),
+    };
+    if ty.frames.is_none() {
+        what
+    } else {
+        format!("{what} {}", ty.frames)
+    }
+}
+
+/// A list whose items are matrices: one item per block, numbered.
+fn list_block(prefix: &str, ty: &Ty, vs: &[Value], style: Style) -> String {
+    let mut out = format!("{prefix}{}:", list_label(ty, vs));
+    let numbered: Vec<(usize, &Value)> = vs.iter().enumerate().collect();
+    let shown: Vec<&(usize, &Value)> = if numbered.len() > LIST_INLINE {
+        numbered[..3]
+            .iter()
+            .chain(numbered[numbered.len() - 2..].iter())
+            .collect()
+    } else {
+        numbered.iter().collect()
+    };
+    let mut last = 0;
+    for (i, v) in shown {
+        if *i > last + 1 {
+            out.push_str("\n  …");
+        }
+        last = *i;
+        let head = format!("  [{}] ", i + 1);
+        let body = match v {
+            Value::Num { m, .. } if m.ncols() > 1 && m.nrows() > 1 => {
+                matrix_block(m, style, head.chars().count())
+            }
+            other => inline(other, style),
+        };
+        out.push('\n');
+        out.push_str(&head);
+        out.push_str(&body);
+    }
+    out
 }
 
 /// A matrix in aligned columns, decimal points lined up, one row per line;
@@ -132,7 +213,7 @@ pub fn type_label(ty: &Ty, val: Option<&Value>) -> String {
     };
     match kind {
         Kind::Scalar | Kind::Bool if ty.frames.is_none() => String::new(),
-        Kind::Mechanism | Kind::Function => String::new(),
+        Kind::Mechanism | Kind::Function | Kind::Picture | Kind::Text => String::new(),
         Kind::Tuple(_) => String::new(),
         k => {
             let t = Ty::new(k, ty.frames.clone());
@@ -151,6 +232,14 @@ pub fn show_value(prefix: &str, ty: &Ty, v: &Value, style: impl Into<Style>) -> 
         format!("  : {label}")
     };
     match v {
+        Value::List(vs)
+            if vs
+                .iter()
+                .any(|x| matches!(x, Value::Num { m, .. } if m.ncols() > 1 && m.nrows() > 1)) =>
+        {
+            list_block(prefix, ty, vs, style)
+        }
+        Value::List(vs) => format!("{prefix}{}  : {}", inline(v, style), list_label(ty, vs)),
         Value::Num { m, .. } if m.ncols() > 1 && m.nrows() > 1 => {
             let indent = prefix.chars().count();
             format!("{prefix}{}{tail}", matrix_block(m, style, indent))

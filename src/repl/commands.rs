@@ -62,6 +62,11 @@ pub const COMMANDS: &[Command] = &[
         doc: "toggle closed forms: 1/√2, √3/2, π/6 instead of decimals",
     },
     Command {
+        name: "open",
+        args: "",
+        doc: "open the last picture written with the system viewer (§12)",
+    },
+    Command {
         name: "quit",
         args: "",
         doc: "leave the REPL (also Ctrl-D)",
@@ -81,13 +86,13 @@ pub struct Reply {
 }
 
 impl Reply {
-    fn out(text: impl Into<String>) -> Reply {
+    pub(super) fn out(text: impl Into<String>) -> Reply {
         Reply {
             out: line(text.into()),
             ..Reply::default()
         }
     }
-    fn err(text: impl Into<String>) -> Reply {
+    pub(super) fn err(text: impl Into<String>) -> Reply {
         Reply {
             err: line(text.into()),
             ..Reply::default()
@@ -142,6 +147,7 @@ pub fn command(session: &mut Session, input: &str) -> Reply {
         }
         "digits" => digits(session, arg),
         "exact" => exact(session, arg),
+        "open" => super::open::open(session),
         "quit" | "q" | "exit" => Reply {
             quit: true,
             ..Reply::default()

@@ -172,6 +172,7 @@ pub fn area_key(area: Area) -> &'static str {
         Area::LinearAlgebra => "linear",
         Area::Scalars => "scalars",
         Area::Mechanisms => "mechanisms",
+        Area::Pictures => "pictures",
     }
 }
 

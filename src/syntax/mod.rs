@@ -20,10 +20,12 @@
 //! - [`ident::name_frames`]: the frame subscript of a name (`T_sb` → s, b).
 
 pub mod ast;
+mod comprehension;
 mod fast;
 pub mod ident;
 mod mech;
 mod parser;
+mod ranges;
 mod rules;
 mod spacing;
 mod split;

@@ -17,7 +17,7 @@ use pest_derive::Parser;
 
 use super::MAX_DEPTH;
 use super::ast::{BinOp, Expr, ExprKind, Ident, IndexArg, Span, Stmt, StmtKind, UnOp};
-use super::rules;
+use super::rules::{self, short};
 use crate::diagnostics::{Diagnostic, ErrorKind};
 
 #[derive(Parser)]
@@ -25,6 +25,7 @@ use crate::diagnostics::{Diagnostic, ErrorKind};
 pub(crate) struct ChaslesParser;
 
 /// Precedence levels, loosest first; the same order as [`PRATT`].
+const PREC_RANGE: u8 = 0;
 const PREC_ADD: u8 = 1;
 const PREC_MUL: u8 = 2;
 const PREC_PREFIX: u8 = 3;
@@ -32,6 +33,7 @@ const PREC_POW: u8 = 4;
 
 static PRATT: LazyLock<PrattParser<Rule>> = LazyLock::new(|| {
     PrattParser::new()
+        .op(Op::infix(Rule::range_op, Assoc::Left))
         .op(Op::infix(Rule::add, Assoc::Left) | Op::infix(Rule::sub, Assoc::Left))
         .op(Op::infix(Rule::mul, Assoc::Left)
             | Op::infix(Rule::div, Assoc::Left)
@@ -96,7 +98,7 @@ pub(crate) struct Cx<'a> {
     above: Cell<usize>,
 }
 
-type Built = Result<(Expr, usize), Diagnostic>;
+pub(super) type Built = Result<(Expr, usize), Diagnostic>;
 
 /// How a pair takes part in the operator sequence of an expression.
 enum Role {
@@ -109,6 +111,10 @@ enum Role {
 fn role(rule: Rule) -> Role {
     match rule {
         Rule::neg | Rule::pos => Role::Prefix,
+        Rule::range_op => Role::Infix {
+            prec: PREC_RANGE,
+            right: false,
+        },
         Rule::add | Rule::sub => Role::Infix {
             prec: PREC_ADD,
             right: false,
@@ -135,7 +141,7 @@ pub(crate) fn too_deep(span: Span) -> Diagnostic {
     .with_help("split it into several statements with intermediate names")
 }
 
-fn check_depth(depth: usize, span: Span) -> Result<(), Diagnostic> {
+pub(super) fn check_depth(depth: usize, span: Span) -> Result<(), Diagnostic> {
     if depth > MAX_DEPTH {
         Err(too_deep(span))
     } else {
@@ -160,7 +166,7 @@ impl Cx<'_> {
         )
     }
 
-    fn ident(&self, pair: Pair<'_, Rule>) -> Result<Ident, Diagnostic> {
+    pub(super) fn ident(&self, pair: Pair<'_, Rule>) -> Result<Ident, Diagnostic> {
         if pair.as_rule() != Rule::ident {
             return Err(self.unexpected(&pair));
         }
@@ -239,7 +245,7 @@ impl Cx<'_> {
     }
 
     /// An `expr` pair → its tree and depth.
-    fn expr(&self, pair: Pair<'_, Rule>) -> Built {
+    pub(super) fn expr(&self, pair: Pair<'_, Rule>) -> Built {
         let whole = self.span(pair.as_span());
         let children: Vec<Pair<'_, Rule>> = pair.into_inner().collect();
 
@@ -312,6 +318,9 @@ impl Cx<'_> {
                 let depth = dl.max(dr) + 1;
                 let op_span = self.span(op.as_span());
                 check_depth(depth, op_span)?;
+                if op.as_rule() == Rule::range_op {
+                    return Ok((super::ranges::range(l, r, op_span)?, depth));
+                }
                 let (bop, implicit, op_span) = match op.as_rule() {
                     Rule::add => (BinOp::Add, false, op_span),
                     Rule::sub => (BinOp::Sub, false, op_span),
@@ -565,6 +574,9 @@ impl Cx<'_> {
                 let mut rows = Vec::new();
                 let mut depth = 0;
                 for row in pair.into_inner() {
+                    if row.as_rule() == Rule::comp_tail {
+                        return self.comprehension(rows, row, depth, span);
+                    }
                     let (items, d) = self.exprs(row.into_inner())?;
                     depth = depth.max(d);
                     rows.push(items);
@@ -579,18 +591,8 @@ impl Cx<'_> {
                 ))
             }
             Rule::mech => leaf(ExprKind::Mech(self.mech(pair)?)),
+            Rule::string => leaf(ExprKind::Str(super::ranges::string(pair.as_str()))),
             _ => Err(self.unexpected(&pair)),
         }
-    }
-}
-
-/// `text`, cut short for a message.
-fn short(text: &str) -> String {
-    let text = text.trim();
-    if text.chars().count() <= 24 {
-        text.to_string()
-    } else {
-        let head: String = text.chars().take(20).collect();
-        format!("{head}…")
     }
 }

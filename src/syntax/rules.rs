@@ -53,6 +53,7 @@ pub(crate) fn rule_name(rule: Rule) -> &'static str {
         | Rule::mul
         | Rule::div
         | Rule::pow
+        | Rule::range_op
         | Rule::juxt
         | Rule::postfix
         | Rule::index
@@ -80,6 +81,10 @@ pub(crate) fn rule_name(rule: Rule) -> &'static str {
         Rule::keyword => "a keyword",
         Rule::kw_given => "`given`",
         Rule::kw_derive => "`derive`",
+        Rule::comp_tail | Rule::kw_for => "`for`",
+        Rule::comp_var => "a name and `in`",
+        Rule::kw_in => "`in`",
+        Rule::string => "a string",
     }
 }
 
@@ -163,6 +168,10 @@ pub(crate) fn pest_error(err: pest::error::Error<Rule>, cx: &Cx<'_>) -> Diagnost
     // A `(` is already part of "an expression" and of "an operator".
     if names.iter().any(|n| n == EXPRESSION || n == OPERATOR) {
         names.retain(|n| n != "'('" && n != "a name");
+    }
+    // A range's `:` is an operator (`0:4`).
+    if names.iter().any(|n| n == OPERATOR) {
+        names.retain(|n| n != "':'");
     }
     if found_char.is_none() {
         names.retain(|n| n != END);
@@ -269,5 +278,16 @@ fn help(text: &str, pos: usize, found: Option<char>, expected: &[String]) -> Opt
             Some("write decimals with digits after the point: 2.0 or 2".into())
         }
         _ => None,
+    }
+}
+
+/// `text`, cut short for a message.
+pub(super) fn short(text: &str) -> String {
+    let text = text.trim();
+    if text.chars().count() <= 24 {
+        text.to_string()
+    } else {
+        let head: String = text.chars().take(20).collect();
+        format!("{head}…")
     }
 }

@@ -25,7 +25,11 @@ pub fn check(stmt: &Stmt, src: &str) -> Result<(), Diagnostic> {
 /// chain of `+`/`-` at its top is what MATLAB would split.
 fn expr(e: &Expr, src: &str, in_row: bool) -> Result<(), Diagnostic> {
     match &e.kind {
-        ExprKind::Number(_) | ExprKind::Bool(_) | ExprKind::Var(_) | ExprKind::Mech(_) => Ok(()),
+        ExprKind::Number(_)
+        | ExprKind::Bool(_)
+        | ExprKind::Var(_)
+        | ExprKind::Str(_)
+        | ExprKind::Mech(_) => Ok(()),
         ExprKind::Binary {
             op,
             lhs,
@@ -57,6 +61,15 @@ fn expr(e: &Expr, src: &str, in_row: bool) -> Result<(), Diagnostic> {
             })
         }
         ExprKind::Brackets(rows) => rows.iter().flatten().try_for_each(|x| expr(x, src, true)),
+        ExprKind::Range { start, step, end } => {
+            expr(start, src, false)?;
+            step.iter().try_for_each(|s| expr(s, src, false))?;
+            expr(end, src, false)
+        }
+        ExprKind::Comprehension { body, vars } => {
+            expr(body, src, false)?;
+            vars.iter().try_for_each(|(_, r)| expr(r, src, false))
+        }
     }
 }
 
