@@ -123,6 +123,37 @@ fn check_pixels(name: &str, svg: &str, probes: &[Probe]) {
     );
 }
 
+/// The labels of an SVG as boxes (at the renderer's estimate of 9 pixels a
+/// character, 15 high): no two overlap.
+fn labels_apart(name: &str, svg: &str) {
+    let mut boxes: Vec<(f64, f64, f64, f64, String)> = Vec::new();
+    let mut lines = svg.lines();
+    while let Some(line) = lines.next() {
+        let Some(rest) = line.strip_prefix("<text x=\"") else {
+            continue;
+        };
+        let num = |s: &str| s.split('"').next().and_then(|n| n.parse::<f64>().ok());
+        let x = num(rest).expect("x");
+        let y = num(rest.split("y=\"").nth(1).expect("y")).expect("y");
+        let text = lines
+            .next()
+            .unwrap_or("")
+            .replace("&apos;", "'")
+            .replace("&quot;", "\"")
+            .replace("&lt;", "<")
+            .replace("&gt;", ">")
+            .replace("&amp;", "&");
+        let w = text.chars().count() as f64 * 9.0;
+        boxes.push((x, y, x + w, y + 15.0, text));
+    }
+    for (i, a) in boxes.iter().enumerate() {
+        for b in &boxes[i + 1..] {
+            let apart = a.2 <= b.0 || b.2 <= a.0 || a.3 <= b.1 || b.3 <= a.1;
+            assert!(apart, "{name}: labels '{}' and '{}' overlap", a.4, b.4);
+        }
+    }
+}
+
 #[test]
 fn example_pictures_render_with_their_axes_where_projected() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
@@ -142,6 +173,7 @@ fn example_pictures_render_with_their_axes_where_projected() {
             let (svg, probes) = draw::svg(&p).expect("the picture draws");
             let name = format!("{script}_line{line}");
             check_pixels(&name, &svg, &probes);
+            labels_apart(&name, &svg);
             // The file written is the SVG drawn, byte for byte.
             let file = p.file.clone().expect("the picture was written");
             let written = if Path::new(&file).is_absolute() || Path::new(&file).exists() {
@@ -435,4 +467,109 @@ fn the_grammar_reads_ranges_comprehensions_and_strings() {
     }
     // Indexing and `given` keep their colons.
     assert!(one("M[:, 1]").is_ok() && one("given T_ab : SE3").is_ok());
+}
+
+#[test]
+fn the_repl_writes_pictures_and_opens_the_last_one() {
+    use chasles::repl::commands::execute;
+    let dir = tmp("repl");
+    let mut s = Session::new(Settings::default());
+    s.pictures = Some(dir.clone());
+    let r = execute(&mut s, ":open");
+    assert!(r.err.contains("no picture yet"), "{r:?}");
+    let r = execute(&mut s, "pic = draw(Rotz(pi/4))");
+    assert!(r.out.contains("pic = picture: 1 frame in {s} →"), "{r:?}");
+    assert!(dir.join("pic.svg").is_file());
+    assert_eq!(
+        s.last_picture.as_deref(),
+        Some(dir.join("pic.svg").to_str().unwrap())
+    );
+    let help = execute(&mut s, ":help pictures");
+    assert!(
+        help.out.contains("0:pi/8:pi") && help.out.contains("draw"),
+        "{help:?}"
+    );
+}
+
+/// The marks of the last picture of `src`.
+fn marks(src: &str) -> Vec<draw::marks::Mark> {
+    let mut s = Session::new(Settings::default());
+    let mut last = None;
+    s.run(src, Mode::Run, false, |r| {
+        if let Ok(o) = &r.result
+            && let Some(Value::Picture(p)) = &o.val
+        {
+            last = Some((**p).clone());
+        }
+    });
+    let p = last.expect("a picture");
+    let (scenes, _) = draw::scenes(&p).expect("draws");
+    scenes.into_iter().flat_map(|s| s.marks).collect()
+}
+
+fn close(a: &nalgebra::Vector3<f64>, b: [f64; 3]) -> bool {
+    (a - nalgebra::Vector3::from(b)).norm() < 1e-12
+}
+
+#[test]
+fn marks_follow_the_book() {
+    use draw::marks::Mark;
+    // 3.26: the axis through q = (3, 0, 0) along ẑ, pitch 2.
+    let m = marks("draw(ScrewToAxis((3, 0, 0), (0, 0, 1), 2))");
+    let [Mark::Screw { q, s, pitch, .. }] = m.as_slice() else {
+        panic!("{m:?}")
+    };
+    assert!(close(q, [3.0, 0.0, 0.0]) && close(s, [0.0, 0.0, 1.0]) && (pitch - 2.0).abs() < 1e-12);
+    // 3.27: V = (0, 2, 2, 4, 0, 0): q = ω × v/‖ω‖² = (0, 1, −1), h = 0.
+    let m = marks("draw((0, 2, 2, 4, 0, 0))");
+    let [Mark::Screw { q, s, pitch, .. }] = m.as_slice() else {
+        panic!("{m:?}")
+    };
+    let r = 0.5f64.sqrt();
+    assert!(close(q, [0.0, 1.0, -1.0]) && close(s, [0.0, r, r]) && pitch.abs() < 1e-12);
+    // A pure translation: pitch ∞ along v̂.
+    let m = marks("draw(twist((0, 0, 0), (0, 3, 0)))");
+    let [Mark::Screw { s, pitch, .. }] = m.as_slice() else {
+        panic!("{m:?}")
+    };
+    assert!(close(s, [0.0, 1.0, 0.0]) && pitch.is_infinite());
+    // T_sa draws {a} at its pose, labelled from the tag.
+    let m = marks("T_sa = RpToTrans(Rotz(pi/2), (1, 2, 3))\ndraw(T_sa)");
+    let [
+        Mark::Frame {
+            origin,
+            axes,
+            label,
+        },
+    ] = m.as_slice()
+    else {
+        panic!("{m:?}")
+    };
+    assert!(close(origin, [1.0, 2.0, 3.0]) && close(&axes[0], [0.0, 1.0, 0.0]));
+    assert_eq!(label, "{a}");
+    // The plane: SE(2) at (x, y), and a planar twist's centre of rotation:
+    // V = (ω, vx, vy) = (1, 0, -2) turns about (2, 0), since v = −ω × c.
+    let m = marks("draw(SE2(pi/2, 1, 2), se2(1, 0, -2))");
+    let [Mark::Frame { origin, .. }, Mark::Centre { at, .. }] = m.as_slice() else {
+        panic!("{m:?}")
+    };
+    assert!(close(origin, [1.0, 2.0, 0.0]) && close(at, [2.0, 0.0, 0.0]));
+    // A vector is an arrow; the vectors of a list are points.
+    let m = marks("draw((1, 2, 3), [(k, 0, 0) for k in 1:2], arrow((1, 0, 0), (0, 1, 0)))");
+    assert!(matches!(m[0], Mark::Arrow { .. }));
+    assert!(matches!(m[1], Mark::Dot { .. }) && matches!(m[2], Mark::Dot { .. }));
+    let Mark::Arrow { from, dir, .. } = &m[3] else {
+        panic!("{m:?}")
+    };
+    assert!(close(from, [1.0, 0.0, 0.0]) && close(dir, [0.0, 1.0, 0.0]));
+    // A path of frames is labelled in order ({b} moved by an untagged T).
+    let m = marks("T_sb = Trans((1, 0, 0))\ndraw([T_sb * Trans((0, 0, k)) for k in 0:2])");
+    let labels: Vec<&str> = m
+        .iter()
+        .map(|x| match x {
+            Mark::Frame { label, .. } => label.as_str(),
+            _ => "",
+        })
+        .collect();
+    assert_eq!(labels, ["{b'}₁", "{b'}₂", "{b'}₃"]);
 }
