@@ -90,18 +90,13 @@ fn finite(m: &DMatrix<f64>) -> bool {
 }
 
 impl Builder {
-    fn outer(&mut self, f: &Frames) -> Result<(), String> {
+    /// The reference frame: the first outer frame given. Different outer
+    /// frames were a frame error when `draw` was checked (or, under
+    /// `--frames warn|off`, a warning or nothing).
+    fn outer(&mut self, f: &Frames) {
         if let (Some(a), _) = frame_names(f) {
-            match &self.outer {
-                Some(o) if *o != a => {
-                    return Err(format!(
-                        "draw shows one reference frame, but the values are in {{{o}}} and {{{a}}}; express them in one frame first (T_sa * T_ab is {{b}} in {{s}})"
-                    ));
-                }
-                _ => self.outer = Some(a),
-            }
+            self.outer.get_or_insert(a);
         }
-        Ok(())
     }
 
     fn plane(&mut self, planar: bool) {
@@ -366,7 +361,7 @@ pub fn scene(panel: &Panel) -> Result<Scene, String> {
 
 impl Builder {
     fn drawn(&mut self, d: &Drawn) -> Result<(), String> {
-        self.outer(&d.ty.frames)?;
+        self.outer(&d.ty.frames);
         let label = match frame_names(&d.ty.frames) {
             (_, Some(inner)) => format!("{{{inner}}}"),
             _ => text_label(&d.label),
