@@ -79,7 +79,11 @@ pub(super) fn layout(scene: &Scene) -> Layout {
         };
         extent = extent.max(p.norm());
     }
-    let axis = if extent < 1e-9 { 1.0 } else { 0.25 * extent };
+    let axis = if extent < 1e-9 {
+        1.0
+    } else {
+        (0.25 * extent).max(0.5 * extent.min(2.0))
+    };
     let mut prims = Vec::new();
     let mut labels = Vec::new();
     let mut frames = Vec::new();
