@@ -3,15 +3,14 @@
 //! `--frames`, `--digits`, `--keep-going`. Exit codes: 0 success, 1 a
 //! script error, 2 bad usage or an unreadable file.
 
-use std::io::{IsTerminal, Read, Write};
+use std::io::{IsTerminal, Write};
 
 use clap::{Parser, Subcommand};
 
 use crate::eval::env::{FrameMode, Mode};
 use crate::session::{Session, Settings};
 
-/// Largest script accepted (bytes).
-pub const MAX_SOURCE_BYTES: u64 = 100 * 1024 * 1024;
+pub use crate::session::{MAX_SOURCE_BYTES, read_source};
 
 #[derive(Parser, Debug)]
 #[command(
@@ -66,7 +65,7 @@ fn picture_dir(opts: &Opts) -> Result<std::path::PathBuf, i32> {
                 emit_err(&format!(
                     "chasles: cannot use --draw-dir '{}': {}\n",
                     d.display(),
-                    io_reason(&e)
+                    crate::session::io_reason(&e)
                 ));
                 Err(2)
             }
@@ -102,52 +101,6 @@ fn emit(out: &mut impl Write, s: &str) {
 fn emit_err(s: &str) {
     let mut e = std::io::stderr().lock();
     let _ = e.write_all(s.as_bytes());
-}
-
-/// Reads a script; Err is the message for exit code 2.
-pub fn read_source(path: &str) -> Result<String, String> {
-    let bytes = if path == "-" {
-        let mut buf = Vec::new();
-        std::io::stdin()
-            .lock()
-            .take(MAX_SOURCE_BYTES + 1)
-            .read_to_end(&mut buf)
-            .map_err(|e| format!("cannot read standard input: {e}"))?;
-        buf
-    } else {
-        let meta = std::fs::metadata(path)
-            .map_err(|e| format!("cannot read '{path}': {}", io_reason(&e)))?;
-        if meta.is_dir() {
-            return Err(format!("cannot read '{path}': it is a directory"));
-        }
-        if meta.len() > MAX_SOURCE_BYTES {
-            return Err(format!(
-                "'{path}' is {} bytes; scripts are limited to {MAX_SOURCE_BYTES} bytes",
-                meta.len()
-            ));
-        }
-        std::fs::read(path).map_err(|e| format!("cannot read '{path}': {}", io_reason(&e)))?
-    };
-    if bytes.len() as u64 > MAX_SOURCE_BYTES {
-        return Err(format!("input is larger than {MAX_SOURCE_BYTES} bytes"));
-    }
-    String::from_utf8(bytes).map_err(|e| {
-        let at = e.utf8_error().valid_up_to();
-        let what = if path == "-" {
-            "standard input".to_string()
-        } else {
-            format!("'{path}'")
-        };
-        format!("{what} is not UTF-8 text: invalid byte at offset {at}")
-    })
-}
-
-fn io_reason(e: &std::io::Error) -> String {
-    match e.kind() {
-        std::io::ErrorKind::NotFound => "no such file".into(),
-        std::io::ErrorKind::PermissionDenied => "permission denied".into(),
-        _ => e.to_string(),
-    }
 }
 
 /// Runs the sources through one session; returns the exit code.

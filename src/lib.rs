@@ -1,15 +1,35 @@
 //! chasles — a calculator language for the mathematics of rigid-body motion
 //! (Modern Robotics, Lynch & Park, chapters 2 and 3).
 //!
-//! The layers, each a module:
-//! - [`syntax`]: the pest grammar (`grammar/chasles.pest`) and the AST with spans;
+//! The layers, each a module importing only the layers below it (checked
+//! by `layers.py`; `lie` and `mech` import nothing from the language):
+//!
+//! ```text
+//! cli, repl     front ends (the terminal, flags, `:` commands)
+//! session       parse → check → evaluate over a source text; reading scripts
+//! output        outcomes as text blocks and JSON lines
+//! eval          the environment and the interpreter; symbols, derive
+//! builtins      the one table of builtin functions (help and completion use it)
+//! values        runtime values, symbols, the language's arithmetic, numbers as text
+//! check         kinds and frame tags, inferred without evaluating
+//! syntax        the pest grammar (`grammar/chasles.pest`) and the AST
+//! diagnostics   errors and warnings as data, and their rendering
+//! span          byte spans and line numbers
+//! lie, mech     SO(3), SE(3), SO(2), SE(2); Grübler and C-space (chapter 2)
+//! ```
+//!
+//! - [`syntax`]: the pest grammar and the AST with spans;
 //! - [`check`]: kinds and frame tags, inferred without evaluating;
-//! - [`eval`]: values, the session environment and evaluation;
+//! - [`values`]: values, symbolic expressions, arithmetic on values, and
+//!   numbers on one line (`eval::value`, `eval::ops`, `output::number` are
+//!   re-exports of its modules);
+//! - [`eval`]: the session environment and evaluation;
 //! - [`builtins`]: the one table of builtin functions;
 //! - [`lie`]: SO(3), SE(3), SO(2), SE(2) and their algebras — plain nalgebra,
 //!   no knowledge of the language, usable as a library;
 //! - [`mech`]: Grübler's formula and C-space topology (chapter 2);
-//! - [`diagnostics`], [`output`]: errors and values for people and for JSON;
+//! - [`span`], [`diagnostics`], [`output`]: places in the source, errors,
+//!   and values for people and for JSON;
 //! - [`session`]: the pipeline parse → check → evaluate over a source text;
 //! - [`cli`], [`repl`]: the front ends.
 #![forbid(unsafe_code)]
@@ -31,4 +51,6 @@ pub mod mech;
 pub mod output;
 pub mod repl;
 pub mod session;
+pub mod span;
 pub mod syntax;
+pub mod values;

@@ -2,11 +2,14 @@
 //! check → evaluate applied to a whole source text, statement by statement.
 //! The CLI, the REPL and the tests all drive chasles through this.
 
+use std::io::Read;
+
 use crate::diagnostics::{Diagnostic, ErrorKind, render};
 use crate::eval::env::{Env, FrameMode, Mode};
 use crate::eval::interp::{Interp, Outcome};
 use crate::eval::value::Value;
 use crate::output::{json, text};
+use crate::span::{Anchor, Lines};
 use crate::syntax;
 
 /// Output settings.
@@ -51,7 +54,7 @@ pub struct Report {
     pub warnings: Vec<Diagnostic>,
     /// A known line before the statement, to number the lines of its
     /// diagnostics without rescanning the source from its start.
-    pub anchor: render::Anchor,
+    pub anchor: Anchor,
 }
 
 impl Report {
@@ -247,44 +250,51 @@ fn file_stem(name: &str) -> String {
         .collect()
 }
 
-/// Line numbers of the statements of a source, counted as they go by
-/// (statements come in order), so a long script costs no index of its lines.
-struct Lines<'a> {
-    src: &'a [u8],
-    /// The start of the line the last counted offset lies on.
-    start: usize,
-    line: usize,
+/// Largest script accepted (bytes).
+pub const MAX_SOURCE_BYTES: u64 = 100 * 1024 * 1024;
+
+/// Reads a script; Err is the message for exit code 2.
+pub fn read_source(path: &str) -> Result<String, String> {
+    let bytes = if path == "-" {
+        let mut buf = Vec::new();
+        std::io::stdin()
+            .lock()
+            .take(MAX_SOURCE_BYTES + 1)
+            .read_to_end(&mut buf)
+            .map_err(|e| format!("cannot read standard input: {e}"))?;
+        buf
+    } else {
+        let meta = std::fs::metadata(path)
+            .map_err(|e| format!("cannot read '{path}': {}", io_reason(&e)))?;
+        if meta.is_dir() {
+            return Err(format!("cannot read '{path}': it is a directory"));
+        }
+        if meta.len() > MAX_SOURCE_BYTES {
+            return Err(format!(
+                "'{path}' is {} bytes; scripts are limited to {MAX_SOURCE_BYTES} bytes",
+                meta.len()
+            ));
+        }
+        std::fs::read(path).map_err(|e| format!("cannot read '{path}': {}", io_reason(&e)))?
+    };
+    if bytes.len() as u64 > MAX_SOURCE_BYTES {
+        return Err(format!("input is larger than {MAX_SOURCE_BYTES} bytes"));
+    }
+    String::from_utf8(bytes).map_err(|e| {
+        let at = e.utf8_error().valid_up_to();
+        let what = if path == "-" {
+            "standard input".to_string()
+        } else {
+            format!("'{path}'")
+        };
+        format!("{what} is not UTF-8 text: invalid byte at offset {at}")
+    })
 }
 
-impl<'a> Lines<'a> {
-    fn new(src: &'a str) -> Lines<'a> {
-        Lines {
-            src: src.as_bytes(),
-            start: 0,
-            line: 1,
-        }
-    }
-
-    /// The 1-based line of `offset`.
-    fn line(&mut self, offset: usize) -> usize {
-        let offset = offset.min(self.src.len());
-        if offset < self.start {
-            self.start = 0;
-            self.line = 1;
-        }
-        let seg = &self.src[self.start..offset];
-        if let Some(last) = seg.iter().rposition(|&b| b == b'\n') {
-            self.line += seg.iter().filter(|&&b| b == b'\n').count();
-            self.start += last + 1;
-        }
-        self.line
-    }
-
-    /// The last counted line, as an anchor for rendering.
-    fn anchor(&self) -> render::Anchor {
-        render::Anchor {
-            offset: self.start,
-            line: self.line,
-        }
+pub(crate) fn io_reason(e: &std::io::Error) -> String {
+    match e.kind() {
+        std::io::ErrorKind::NotFound => "no such file".into(),
+        std::io::ErrorKind::PermissionDenied => "permission denied".into(),
+        _ => e.to_string(),
     }
 }

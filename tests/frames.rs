@@ -34,9 +34,11 @@ fn last(src: &str, mode: Mode) -> Outcome {
 
 const NUMBERS: &str = "T_ab = Trans((1, 0, 0))\nT_bc = RpToTrans(Rotz(0.3), (0, 1, 0))\nT_cb = inv(T_bc)\n\
 p_b = (1, 2, 3)\np_c = (3, 2, 1)\nV_b = twist((0, 0, 1), (1, 0, 0))\nF_a = wrench((0, 0, 1), (0, 1, 0))\n\
-F_b = wrench((1, 0, 0), (0, 0, 1))\nS_a = (0, 0, 1, 0, 0, 0)\nR_ab = Rotx(0.2)\n";
+F_b = wrench((1, 0, 0), (0, 0, 1))\nS_a = (0, 0, 1, 0, 0, 0)\nR_ab = Rotx(0.2)\n\
+B_b = (0, 0, 1, 1, 0, 0)\nw_b = (0, 0, 1)\nV_a = Ad(T_ab) * V_b\np_a = (1, 2, 3)\n";
 const SYMBOLS: &str = "given T_ab, T_bc, T_cb : SE3\ngiven p_b, p_c : vec3\ngiven V_b : twist\n\
-given F_a, F_b : wrench\ngiven S_a : screw\ngiven R_ab : SO3\n";
+given F_a, F_b : wrench\ngiven S_a : screw\ngiven R_ab : SO3\n\
+given B_b : screw\ngiven w_b : vec3\ngiven V_a : twist\ngiven p_a : vec3\n";
 
 fn both(expr: &str) -> [Outcome; 2] {
     [
@@ -212,4 +214,253 @@ fn derive_again_shows_the_chain() {
     assert_eq!(out.matches("T_ac = T_ab * T_bc\n").count(), 2, "{out}");
     // With nothing else linking {x} and {y}, the name itself is the chain.
     assert!(out.contains("T_xy = T_xy\n"), "{out}");
+}
+
+// Issue 11: the frame algebra is an algebra.
+
+/// The type of the last result when running with numbers.
+fn run_type(expr: &str) -> String {
+    match last(&format!("{NUMBERS}{expr}\n"), Mode::Run) {
+        Ok((_, t)) => t,
+        Err(e) => panic!("{expr}: {e:?}"),
+    }
+}
+
+#[test]
+fn conjugation_closes_on_one_frame() {
+    // [V_a] = T_ab [V_b] T_ab⁻¹ (3.77) and [ω_a] = R_ab [ω_b] R_abᵀ (Prop. 3.5).
+    frames("T_ab * [V_b] * inv(T_ab)", &["a"]);
+    frames("T_ab * ([V_b] * inv(T_ab))", &["a"]);
+    frames("T_ab * [V_b] * inv(T_ab) + [V_a]", &["a"]);
+    frames("se3ToVec(T_ab * [V_b] * inv(T_ab))", &["a"]);
+    frames("R_ab * [w_b] * R_ab.T", &["a"]);
+    assert_eq!(run_type("T_ab * [V_b] * inv(T_ab)"), "se3");
+    // Also with symbols only: g [X] g⁻¹ is back in the Lie algebra.
+    for r in both("X = T_ab * [V_b]\nX * inv(T_ab)") {
+        assert_eq!(r, Ok((vec!["a".to_string()], "se3".to_string())));
+    }
+    for r in both("R_ab * [w_b] * R_ab.T") {
+        assert_eq!(r, Ok((vec!["a".to_string()], "so3".to_string())));
+    }
+    assert_eq!(run_type("se3ToVec(T_ab * [V_b] * inv(T_ab))"), "twist");
+    assert_eq!(run_type("R_ab * [w_b] * R_ab.T"), "so3");
+    // Conjugating by a displacement keeps the frame too.
+    frames("exp([S_a] 0.3) * [V_a] * inv(exp([S_a] 0.3))", &["a"]);
+    assert_eq!(
+        run_type("se3ToVec(exp([S_a] 0.3) * [V_a] * exp(-[S_a] 0.3))"),
+        "twist"
+    );
+    // An untagged [ω] is in the frame it meets.
+    frames("R_ab * [(0, 0, 1)] * R_ab.T", &["a"]);
+    // A vector of a map between two frames is refused (a twist is in one).
+    frame_error("se3ToVec(T_ab * [V_b])", "a quantity in one frame");
+    // Conjugating the wrong frame's quantity is refused.
+    frame_error("T_ab * [V_a] * inv(T_ab)", "frames do not cancel");
+}
+
+#[test]
+fn products_with_moved_frames_are_associative() {
+    for (a, b, want) in [
+        (
+            "exp([S_a] 0.3) * T_ab * T_bc",
+            "exp([S_a] 0.3) * (T_ab * T_bc)",
+            vec!["a", "c'"],
+        ),
+        (
+            "T_ab * exp([B_b] 0.3) * T_bc",
+            "T_ab * (exp([B_b] 0.3) * T_bc)",
+            vec!["a", "c'"],
+        ),
+        (
+            "inv(T_ab) * exp([S_a] 0.3) * T_ab",
+            "inv(T_ab) * (exp([S_a] 0.3) * T_ab)",
+            vec!["b"],
+        ),
+        (
+            "T_ab * exp([B_b] 0.3) * exp([B_b] 0.2)",
+            "T_ab * (exp([B_b] 0.3) * exp([B_b] 0.2))",
+            vec!["a", "b'"],
+        ),
+    ] {
+        frames(a, &want);
+        frames(b, &want);
+    }
+    // The body-frame displacement is a displacement in {b}: exp([B_b] θ)
+    // with B_b = [Ad_T_ba] S_a.
+    assert_eq!(run_type("inv(T_ab) * exp([S_a] 0.3) * T_ab"), "SE3");
+    // A named moved frame cancels with the computed one.
+    frames(
+        "T_ab' = exp([S_a] 0.3) * T_ab\nT_ac = T_ab * T_bc\nT_b'c = inv(T_ab') * T_ac\nT_ab' * T_b'c",
+        &["a", "c"],
+    );
+    // Powers are products: exp([S_a] θ)² moves {b} twice, as the product
+    // does ({b} moved, printed {b'}; a name's primes are kept as written).
+    frames("exp([S_a] 0.3)^2 * T_ab", &["a", "b'"]);
+    frames("exp([S_a] 0.3) * exp([S_a] 0.3) * T_ab", &["a", "b'"]);
+    frames("T_ab'' = T_ab * exp([B_b] 0.3)\nT_ab''", &["a", "b''"]);
+    frames(
+        "T_ab'' = T_ab * exp([B_b] 0.3)\nT_ab'' * exp([B_b] 0.3)",
+        &["a", "b'''"],
+    );
+    frames(
+        "T_ab' = exp([S_a] 0.3) * T_ab\nexp([S_a] 0.3) * T_ab * inv(T_ab')",
+        &["a", "a"],
+    );
+}
+
+#[test]
+fn a_transposed_transform_is_not_a_transform() {
+    frame_error(
+        "T_ab.T * p_a",
+        "T_ab.T is the transpose of a transform, not a transform: the transpose is the inverse only for rotations",
+    );
+    frame_error(
+        "transpose(T_ab) * T_ab",
+        "the transpose is the inverse only for rotations",
+    );
+    frame_error(
+        "T_bc * T_ab.T",
+        "the transpose is the inverse only for rotations",
+    );
+    // Printed, it is a plain 4×4 matrix with no frames; transposed back, T_ab.
+    for r in both("T_ab.T") {
+        assert_eq!(r, Ok((vec![], "matrix".to_string())));
+    }
+    frames("T_ab.T.T * T_bc", &["a", "c"]);
+    // With frame checks off, the product is still no point transform.
+    let mut s = Session::new(Settings {
+        frames: chasles::eval::env::FrameMode::Off,
+        ..Settings::default()
+    });
+    let (_, err, n) = s.run_to_strings(
+        "t.chs",
+        &format!("{NUMBERS}T_ab.T * p_a\n"),
+        Mode::Run,
+        false,
+    );
+    assert_eq!(n, 1, "{err}");
+    assert!(
+        err.contains("domain error: a 4×4 matrix moves a point"),
+        "{err}"
+    );
+    // For rotations the transpose is the inverse.
+    frames("R_ab.T * R_ab", &["b", "b"]);
+}
+
+#[test]
+fn the_wrong_operator_for_the_quantity_is_one_kind_of_error() {
+    frame_error(
+        "Ad(T_ab).T * V_a",
+        "[Ad_T]ᵀ acts on wrenches, not on twists",
+    );
+    frame_error(
+        "Ad(T_ab) * F_b",
+        "a wrench does not change frame through [Ad_T]",
+    );
+}
+
+/// The text output and the error/warning stream of running `src`.
+fn text_and_err(src: &str) -> (String, String) {
+    let mut s = Session::new(Settings::default());
+    let (out, err, _) = s.run_to_strings("t.chs", src, Mode::Run, false);
+    (out, err)
+}
+
+#[test]
+fn naming_a_moved_frame_by_its_unmoved_letter_warns() {
+    let (out, err) = text_and_err(&format!("{NUMBERS}Tq_ab = exp([S_a] 0.3) * T_ab\n"));
+    assert!(out.contains("]  : SE(3) {a}←{b}\n"), "{out}");
+    contains_all(
+        &err,
+        &[
+            "warning: Tq_ab calls the moved frame {b'} by the name of the unmoved frame {b}",
+            "name it Tq_ab' to keep them apart",
+        ],
+    );
+    // The book's primes (T_sb', T_sb'') and another letter do not warn.
+    for ok in [
+        "T_ab' = exp([S_a] 0.3) * T_ab",
+        "T_ab' = exp([S_a] 0.3) * exp([S_a] 0.3) * T_ab",
+        "T_ab'' = T_ab * exp([B_b] 0.3)",
+        "T_ac = T_ab * T_bc",
+    ] {
+        let (_, err) = text_and_err(&format!("{NUMBERS}{ok}\n"));
+        assert!(!err.contains("warning"), "{ok}: {err}");
+    }
+}
+
+// Issue 13: what a binding makes of a value (LANGUAGE.md §2, §5).
+
+#[test]
+fn scalars_take_no_frames_from_their_name() {
+    for r in both("theta_b = 30 deg") {
+        assert_eq!(r, Ok((vec![], "scalar".to_string())));
+    }
+    // The power is the same in every frame (§3.4): P_b − P_a is fine.
+    for r in both("P_b = V_b.T * F_b\nP_a = V_a.T * F_a\nP_b - P_a") {
+        assert_eq!(r, Ok((vec![], "scalar".to_string())));
+    }
+    frames("theta_b = 2\ntheta_b * p_a", &["a"]);
+}
+
+#[test]
+fn rotation_and_transform_names_assert_their_group() {
+    // Within 1e-9: accepted silently, with the group's type.
+    let (out, err) = text_and_err("R_sb = [0, -1, 0; 1, 0, 0; 0, 0, 1]\n");
+    assert!(
+        out.ends_with(": SO(3) {s}←{b}\n") && err.is_empty(),
+        "{out}{err}"
+    );
+    // Within 1e-2 (book values rounded to 3 digits): projected, with a warning.
+    let (out, err) = text_and_err("R_sb = [0, -1, 0; 1, 0, 0; 0, 0, 1.001]\nR_sb[3, 3]\n");
+    assert!(out.ends_with("\n1\n"), "{out}");
+    contains_all(
+        &err,
+        &[
+            "warning: R_sb names a rotation matrix, and the matrix is 2.00e-3 from SO(3) (DistanceToSO3)",
+        ],
+    );
+    let (out, err) = text_and_err("T_ab = [1, 0, 0, 1; 0, 1, 0, 2; 0, 0, 1, 3; 0, 0, 0, 1.002]\n");
+    assert!(out.contains(": SE(3) {a}←{b}\n"), "{out}");
+    assert!(err.contains("(DistanceToSE3); projected"), "{err}");
+    // A planar transform under a T_ name is SE(2).
+    let (out, _) = text_and_err("T_ab = [0, -1, 1; 1, 0, 2; 0, 0, 1]\n");
+    assert!(out.ends_with(": SE(2) {a}←{b}\n"), "{out}");
+    // Farther: a domain error giving the distance.
+    let (_, err) = text_and_err("R_sb = [1, 0, 0; 0, 1, 0; 0, 0, 2]\n");
+    assert!(
+        err.contains("domain error: R_sb names a rotation matrix, but the matrix is 3 from SO(3) (DistanceToSO3)"),
+        "{err}"
+    );
+}
+
+#[test]
+fn type_labels_only_for_members_of_the_set() {
+    // [ω]² is symmetric, not so(3); a power of a plain matrix is a plain matrix.
+    assert_eq!(run_type("[w_b]^2"), "matrix");
+    assert_eq!(run_type("[1, 2; 3, 4]^0"), "matrix");
+    assert_eq!(run_type("[w_b]^1"), "so3");
+    assert_eq!(run_type("Rotz(0.3)^2"), "SO3");
+    assert_eq!(run_type("exp([S_a] 0.3)^2"), "SE3");
+}
+
+#[test]
+fn only_the_books_letters_name_screws_twists_and_wrenches() {
+    for (name, want) in [
+        ("S", "screw"),
+        ("S1", "screw"),
+        ("S_b", "screw"),
+        ("B2", "screw"),
+        ("V_s", "twist"),
+        ("F_b", "wrench"),
+        ("Sum", "vector"),
+        ("Bq", "vector"),
+        ("Fk", "vector"),
+    ] {
+        assert_eq!(
+            run_type(&format!("{name} = (0, 0, 1, 1, 2, 3)")),
+            want,
+            "{name}"
+        );
+    }
 }

@@ -8,8 +8,18 @@ use nalgebra::DMatrix;
 use proptest::prelude::*;
 use std::f64::consts::{FRAC_PI_2, PI};
 
-/// The round-trip bound of the brief for exp(log(R)) on SO(3).
-const SO3_ROUND_TRIP: f64 = 2e-15;
+/// The round-trip bound the README states: exp(log(R)) reproduces R, and
+/// exp(log(T)) reproduces T scaled by max(1, ‖p‖), to 8 ulps of 1
+/// (1.8e-15) in every entry. Measured worst cases over 300,000 random and
+/// hard samples of `rotation()` and `transform()`: 1.2e-15 and 9.0e-16.
+const ROUND_TRIP: f64 = 8.0 * f64::EPSILON;
+
+/// The bound on log(exp(Sθ)) − Sθ for θ < π: the logarithm's axis is
+/// ill-conditioned as θ → π (its error grows like ε/(π − θ)). Measured
+/// worst case over 300,000 samples: 4.9e-15 + 4.9e-16/(π − θ).
+fn log_bound(theta: f64) -> f64 {
+    1e-14 + 1e-15 / (PI - theta)
+}
 
 // ---------------------------------------------------------------- strategies
 
@@ -86,8 +96,8 @@ fn positions() -> [Vec3; 4] {
 }
 
 /// exp(log(R)) at each hard θ of the brief on each listed axis: the max
-/// entry error is at most 2e-15 (SO(3)), and exp(log(T)) within
-/// 1e-14·max(1, ‖p‖) (SE(3)).
+/// entry error is at most `ROUND_TRIP` (SO(3)), and exp(log(T)) within
+/// `ROUND_TRIP`·max(1, ‖p‖) (SE(3)).
 #[test]
 fn hard_angles_round_trip_bound() {
     let thetas = [1e-12, PI - 1e-6, PI - 1e-9, PI];
@@ -106,11 +116,8 @@ fn hard_angles_round_trip_bound() {
                 worst6 = worst6.max(max_abs(&(back - tr)) / p.norm().max(1.0));
             }
         }
-        assert!(
-            worst3 <= SO3_ROUND_TRIP,
-            "θ = {t:e}: SO(3) error {worst3:e}"
-        );
-        assert!(worst6 <= 1e-14, "θ = {t:e}: SE(3) error {worst6:e}");
+        assert!(worst3 <= ROUND_TRIP, "θ = {t:e}: SO(3) error {worst3:e}");
+        assert!(worst6 <= ROUND_TRIP, "θ = {t:e}: SE(3) error {worst6:e}");
     }
 }
 
@@ -149,7 +156,7 @@ fn se3_log_theta_sweep() {
                 let tr = se3::exp(&st);
                 let scale = p.norm().max(1.0);
                 let rt = max_abs(&(se3::exp(&se3::log(&tr)) - tr)) / scale;
-                assert!(rt <= 2e-15, "exp(log T) at θ = {t:e}: {rt:e}");
+                assert!(rt <= ROUND_TRIP, "exp(log T) at θ = {t:e}: {rt:e}");
                 if t < PI - 1e-3 {
                     let le = max_abs(&(se3::log(&tr) - st)) / scale;
                     assert!(le <= 2e-15, "log(exp Sθ) at θ = {t:e}: {le:e}");
@@ -244,40 +251,61 @@ proptest! {
         prop_assert!(max_abs(&(fa2 - fa)) < 1e-12 * s * s);
     }
 
-    /// exp(log R) = R to 2e-15 on random and hard rotations; θ ∈ [0, π].
+    /// exp(log R) = R to `ROUND_TRIP` on random and hard rotations; θ ∈ [0, π].
     #[test]
     fn so3_exp_log(r in rotation()) {
         let l = so3::log(&r);
         // θ ∈ [0, π], up to the rounding of ‖ω̂θ‖.
         prop_assert!(l.norm() <= PI * (1.0 + 4.0 * f64::EPSILON));
         let err = max_abs(&(so3::exp(&l) - r));
-        prop_assert!(err <= SO3_ROUND_TRIP, "error {:e}", err);
+        prop_assert!(err <= ROUND_TRIP, "error {:e}", err);
     }
 
     /// log(exp(ω̂θ)) = ω̂θ for θ < π.
     #[test]
-    fn so3_log_exp(w in unit_axis(), t in prop_oneof![1e-15..3.1f64, (1e-6..1e-3f64).prop_map(|d| PI - d)]) {
+    fn so3_log_exp(w in unit_axis(), t in prop_oneof![1e-15..PI, (1e-12..1e-3f64).prop_map(|d| PI - d)]) {
         let l = so3::log(&so3::exp(&(w * t)));
-        prop_assert!((l - w * t).norm() < 1e-14 + 1e-15 / (PI - t));
+        prop_assert!((l - w * t).norm() < log_bound(t));
         let (axis, theta) = so3::axis_angle(&l);
-        prop_assert!((theta - t).abs() < 1e-14 + 1e-15 / (PI - t));
-        prop_assert!((axis - w).norm() < 1e-13);
+        prop_assert!((theta - t).abs() < log_bound(t));
+        prop_assert!((axis - w).norm() < 1e-13 + log_bound(t));
     }
 
-    /// exp(log T) = T to 1e-14·max(1, ‖p‖), including pure translations.
+    /// exp(log T) = T to `ROUND_TRIP`·max(1, ‖p‖), including pure translations.
     #[test]
     fn se3_exp_log(t in transform()) {
         let err = max_abs(&(se3::exp(&se3::log(&t)) - t));
-        prop_assert!(err <= 1e-14 * pscale(&t), "error {:e}", err);
+        prop_assert!(err <= ROUND_TRIP * pscale(&t), "error {:e}", err);
     }
 
-    /// log(exp(Sθ)) = Sθ for θ < π, and exp agrees with the series of the
-    /// general matrix exponential (3.87).
+    /// log(exp(Sθ)) = Sθ for θ < π, to `log_bound(θ)`, over all of [0, π]:
+    /// pure translations (θ = 0), θ near π and θ = π exactly, where the
+    /// axis is ±ω̂ and exp(log T) = T is what holds.
     #[test]
-    fn se3_log_exp(w in unit_axis(), t in 0.0..3.0f64, v in vec3(5.0)) {
+    fn se3_log_exp(
+        w in unit_axis(),
+        t in prop_oneof![
+            4 => 0.0..PI,
+            1 => Just(0.0),
+            1 => (1e-12..1e-3f64).prop_map(|d| PI - d),
+            1 => Just(PI),
+        ],
+        v in vec3(5.0),
+    ) {
         let st = Vec6::new(w.x * t, w.y * t, w.z * t, v.x, v.y, v.z);
-        let back = se3::log(&se3::exp(&st));
-        prop_assert!(max_abs(&(back - st)) < 1e-13);
+        let tr = se3::exp(&st);
+        let back = se3::log(&tr);
+        if t < PI {
+            let err = max_abs(&(back - st));
+            prop_assert!(err < log_bound(t), "θ = {:e}: error {:e}", t, err);
+        } else {
+            let w2 = Vec3::new(back[0], back[1], back[2]);
+            // The angle from the trace is ill-conditioned at π (to √ε).
+            prop_assert!(w2.norm() <= PI * (1.0 + 4.0 * f64::EPSILON));
+            prop_assert!((w2 - w * PI).norm() < 1e-7 || (w2 + w * PI).norm() < 1e-7);
+            let err = max_abs(&(se3::exp(&back) - tr)) / pscale(&tr);
+            prop_assert!(err <= ROUND_TRIP, "θ = π: error {:e}", err);
+        }
     }
 
     /// (T1T2)T3 = T1(T2T3) (Propositions 3.3, 3.12).

@@ -201,29 +201,39 @@ fn juxtaposition_after_numbers_and_brackets() {
 }
 
 #[test]
-fn juxtaposition_after_names_is_an_error() {
-    // A call ends in `)` but is not a parenthesized group: write `*`.
-    for src in [
-        "a b",
-        "T_sb T_bc",
-        "x 2",
-        "f(x) y",
-        "x (1, 2) y",
-        "R [1, 2]",
-        "x[1] y",
-        "exp([S_1] t_1) exp([S_2] t_2)",
-        "x.T y",
+fn juxtaposition_after_names_multiplies() {
+    // The book writes products side by side everywhere (LANGUAGE.md §4).
+    for (src, want) in [
+        ("a b", "(j* a b)"),
+        ("T_sb T_bc", "(j* T_sb T_bc)"),
+        ("x 2", "(j* x 2)"),
+        ("f(x) y", "(j* f(x) y)"),
+        ("x (1, 2) y", "(j* x(1, 2) y)"),
+        ("x[1] y", "(j* (idx x 1) y)"),
+        (
+            "exp([S_1] t_1) exp([S_2] t_2)",
+            "(j* exp((j* [S_1] t_1)) exp((j* [S_2] t_2)))",
+        ),
+        ("x.T y", "(j* (. x T) y)"),
+        ("sin(θ) [w]", "(j* sin(θ) [w])"),
     ] {
-        let e = err(src);
-        assert!(
-            e.message.starts_with("missing operator between"),
-            "{src}: {}",
-            e.message
-        );
+        assert_eq!(p(src), want, "{src}");
     }
-    // Two numbers side by side: a MATLAB-style row, not a product.
-    let e = err("[1 0 0]");
+    // A bracket of numbers after a name, with a space: index or product?
+    let e = err("R [1, 2]");
+    assert_eq!(e.message, "`R [1, 2]` reads two ways");
+    assert_eq!(
+        e.help.as_deref(),
+        Some("write R[1, 2] to index, or R * [1, 2] to multiply")
+    );
+    // Two numbers side by side are neither.
+    let e = err("x = 1 0");
     assert_eq!(e.message, "missing operator between `1` and `0`");
+    let e = err("[1 0 x]");
+    assert_eq!(
+        e.message,
+        "`1 0` inside brackets is ambiguous (MATLAB reads two entries)"
+    );
 }
 
 #[test]
@@ -231,11 +241,11 @@ fn matlab_sign_in_brackets_is_an_error() {
     // `[1 -2]` is two entries in MATLAB and 1 − 2 here: refused, with the
     // caret on the sign and both fixes.
     for (src, col, what) in [
-        ("[1 -2]", 3, "`1 -2`"),
-        ("[1 -2 -3]", 3, "`1 -2`"),
+        ("[1 -x]", 3, "`1 -x`"),
+        ("[x -1 -2]", 3, "`x -1`"),
         ("[x -1, 0]", 3, "`x -1`"),
         ("[1, 2; 3 +4, 5]", 9, "`3 +4`"),
-        ("[2 pi -1]", 6, "`2 pi -1`"),
+        ("[2 pi -1]", 2, "`2 pi`"),
     ] {
         let e = err(src);
         assert_eq!(
@@ -246,9 +256,16 @@ fn matlab_sign_in_brackets_is_an_error() {
         assert_eq!(e.span.start, col, "{src}");
     }
     assert_eq!(
-        err("[1 -2]").help.as_deref(),
-        Some("write `1, -2` for two entries or `1 - 2` for the difference")
+        err("[1 -x]").help.as_deref(),
+        Some("write `1, -x` for two entries or `1 - x` for the difference")
     );
+    assert_eq!(
+        err("[2 pi]").help.as_deref(),
+        Some("write `2, pi` for two entries or `2 * pi` for the product")
+    );
+    // Plain numbers read as MATLAB prints them.
+    assert_eq!(p("[1 -2]"), "[1, (neg 2)]");
+    assert_eq!(p("[1 -2 -3]"), "[1, (neg 2), (neg 3)]");
     // Spaced both sides or neither, a comma, or outside a bracket row: fine.
     for (src, want) in [
         ("[1 - 2]", "[(- 1 2)]"),
@@ -338,7 +355,8 @@ fn vectors_matrices_and_tuples() {
         ("[1, 0\n 0, 1]", "[1, 0; 0, 1]"),
         ("[\n  1, 0\n  0, 1\n]", "[1, 0; 0, 1]"),
         ("[1, 0;\n\n 0, 1;]", "[1, 0; 0, 1]"),
-        ("[1, 2,\n 3, 4,\n]", "[1, 2; 3, 4]"),
+        ("[1, 2,\n 3, 4,\n]", "[1, 2, 3, 4]"),
+        ("[1, 2\n 3, 4,\n]", "[1, 2; 3, 4]"),
         ("[R, p; 0, 0, 0, 1]", "[R, p; 0, 0, 0, 1]"),
         ("[1, 0 # first row\n 0, 1] # done", "[1, 0; 0, 1]"),
         ("(1,\n 2,\n 3)", "(1, 2, 3)"),
@@ -622,16 +640,10 @@ fn friendly_errors() {
     // (source, message, span text, help)
     let table: &[(&str, &str, &str, Option<&str>)] = &[
         (
-            "a b",
-            "missing operator between `a` and `b`",
-            "b",
-            Some("put `*` between the two names: a * b"),
-        ),
-        (
             "T_sb [1,2]",
-            "missing operator between `T_sb` and `[1,2]`",
+            "`T_sb [1,2]` reads two ways",
             "[1,2]",
-            Some("index with no space: T_sb[1, 2]"),
+            Some("write T_sb[1,2] to index, or T_sb * [1,2] to multiply"),
         ),
         (
             "2 ** 3",
@@ -836,6 +848,8 @@ mod never_panics {
         "(", ")", "[", "]", ",", ";", "+", "-", "*", "/", "^", ".", "'", "deg", "°", "pi", "1",
         "2.5", "T_ab", "x", "=", "given", ":", "mech", "<", ">", "R", "P", "#", "\n", " ", "{",
         "}", "_{", "links", "joints", "4R", "planar", "derive", ".5", "1e", "θ", "f(", "**",
+        // The book's notation.
+        "ᵀ", "^T", "^{", "sin ", "cos", "0.", "1.e", "[[", "I", "T_01", "T_123", "e^",
     ];
 
     fn program() -> impl Strategy<Value = String> {

@@ -9,6 +9,7 @@ use chasles::output::text;
 use chasles::session::{Session, Settings};
 use nalgebra::DMatrix;
 use proptest::prelude::*;
+use std::f64::consts::PI;
 
 /// Prints `v` as `x = ...` with 17 digits, runs it, and returns the value bound to x.
 fn reread(v: &Value) -> Value {
@@ -44,9 +45,27 @@ proptest! {
         }
     }
 
+    /// Transforms over every θ ∈ [0, π] (θ = 0 and θ = π exactly, θ just
+    /// below π) and pure translations.
     #[test]
-    fn rotations_and_transforms_read_back(ax in -1.0..1.0f64, ay in -1.0..1.0f64, az in 0.1..1.0f64, th in 0.0..3.1f64, px in -100.0..100.0f64) {
-        let src = format!("T = RpToTrans(Rot(({ax}, {ay}, {az}), {th}), ({px}, 1, 2))");
+    fn rotations_and_transforms_read_back(
+        ax in -1.0..1.0f64,
+        ay in -1.0..1.0f64,
+        az in 0.1..1.0f64,
+        th in prop_oneof![
+            4 => (0.0..PI).prop_map(|t| t.to_string()),
+            1 => Just("0".to_string()),
+            1 => Just("pi".to_string()),
+            1 => (1e-12..1e-3f64).prop_map(|d| format!("pi - {d}")),
+        ],
+        pure in proptest::bool::weighted(0.2),
+        px in -100.0..100.0f64,
+    ) {
+        let src = if pure {
+            format!("T = RpToTrans(eye(3), ({px}, 1, 2))")
+        } else {
+            format!("T = RpToTrans(Rot(({ax}, {ay}, {az}), {th}), ({px}, 1, 2))")
+        };
         let mut s = Session::new(Settings::default());
         s.run_to_strings("t", &src, Mode::Run, false);
         let t = s.env.get("T").and_then(|b| b.val.clone()).unwrap();

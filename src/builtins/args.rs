@@ -6,11 +6,11 @@ use nalgebra::{DMatrix, DVector};
 
 use crate::check::ty::Kind;
 use crate::diagnostics::{Diagnostic, ErrorKind};
-use crate::eval::convert::{Group, Membership, membership};
-use crate::eval::value::Value;
 use crate::lie::{Mat2, Mat3, Mat4, Vec3, Vec4, Vec6, so3};
 use crate::mech::Mechanism;
 use crate::syntax::ast::Span;
+use crate::values::convert::{Group, Membership, membership};
+use crate::values::value::Value;
 
 /// A static argument error: which argument (None: the whole call), the
 /// error kind and the message. The interpreter adds the span and signature.
@@ -281,14 +281,14 @@ pub fn read_group(
             } else if det <= 0.0 {
                 format!(
                     "det = {} (must be +1), ‖RᵀR − I‖ = {}",
-                    crate::output::number::fmt_num(det, 4),
-                    crate::output::number::fmt_num(gap, 4)
+                    crate::values::number::fmt_num(det, 4),
+                    crate::values::number::fmt_num(gap, 4)
                 )
             } else {
                 format!(
                     "distance from {} is {}",
                     group.name(),
-                    crate::output::number::fmt_num(distance, 4)
+                    crate::values::number::fmt_num(distance, 4)
                 )
             };
             Err(Diagnostic::error(ErrorKind::Domain, span, format!("not {}: {why}", group.noun())).with_help(format!(

@@ -19,7 +19,7 @@ pub use args::{ArgError, Args};
 
 use crate::check::ty::{Frames, Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
-use crate::eval::value::Value;
+use crate::values::value::Value;
 
 /// The topic a builtin belongs to, for `:help`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -7,10 +7,10 @@ use nalgebra::DMatrix;
 use super::{Area, ArgError, Args, Builtin, FrameRule, Param, Typing};
 use crate::check::ty::{Frames, Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
-use crate::eval::convert::{self, Group};
-use crate::eval::ops;
-use crate::eval::value::Value;
 use crate::lie::{self, Mat3, Mat4, Vec3, matexp, se2, se3, so2, so3};
+use crate::values::convert::{self, Group};
+use crate::values::ops;
+use crate::values::value::Value;
 
 fn scalar() -> Kind {
     Kind::Scalar

@@ -5,9 +5,9 @@
 use super::{Area, ArgError, Args, Builtin, FrameRule, Param, Typing};
 use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
-use crate::eval::convert::{self, Group};
-use crate::eval::value::Value;
 use crate::lie::{Mat3, Mat4, Vec3, project, repr, se2};
+use crate::values::convert::{self, Group};
+use crate::values::value::Value;
 
 fn so3k() -> Kind {
     Kind::SO3

@@ -5,8 +5,8 @@
 use super::{Area, ArgError, Args, Builtin, FrameRule, Param, Typing};
 use crate::check::ty::{Frames, Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
-use crate::eval::value::Value;
 use crate::lie::{Vec3, so3};
+use crate::values::value::Value;
 
 pub(super) fn v3() -> Kind {
     Kind::Vector(Some(3))

@@ -5,8 +5,8 @@ use super::table_rotations::{screw, se3k, twist, v3, v3val, v6, velocity_rule, w
 use super::{Area, ArgError, Args, Builtin, FrameRule, Param, Typing};
 use crate::check::ty::{Frames, Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
-use crate::eval::value::Value;
 use crate::lie::{Vec3, se3};
+use crate::values::value::Value;
 
 /// (q, ŝ, h) of a screw: frames (Same, Same, none).
 fn screw_params_rule(args: &[Ty]) -> Result<Ty, ArgError> {

@@ -1,15 +1,22 @@
 //! Binding a value to a name: the name's frame subscript is a claim about
-//! the value's frames (LANGUAGE.md §3, §6). `T_ad = T_ab * T_bc` fails: the
-//! value is {c} in {a}.
+//! the value's frames (LANGUAGE.md §3, §6), and the book's letters say what
+//! the value is (§5). `T_ad = T_ab * T_bc` fails: the value is {c} in {a}.
+//! Scalars take no frames from their name (`theta_b`, the power `P_b`);
+//! `R_sb`, `T_ab` name group elements ([`named_group`]); only the book's
+//! letters `S`, `B`, `V`, `F` make a 6-vector a screw, twist or wrench.
 
-use super::rules::{RuleError, describe};
+use super::error::{RuleError, describe};
 use super::ty::{Frame, Frames, Kind, Ty};
 use crate::diagnostics::ErrorKind;
 use crate::syntax::ident::{NameFrames, base_name, name_frames, tagged_name};
 
 /// The frames a name claims, as a tag for a value of `kind`: `p_sb` (a
-/// vector named with two frames) is the position of {b} in {s}, tagged {s}.
+/// vector named with two frames) is the position of {b} in {s}, tagged {s};
+/// a scalar claims none (`theta_b = 30 deg` is a plain angle).
 pub fn claimed_frames(name: &str, kind: &Kind) -> Frames {
+    if *kind == Kind::Scalar {
+        return Frames::None;
+    }
     match name_frames(name) {
         NameFrames::None => Frames::None,
         NameFrames::One(a) => Frames::One(Frame::named(a)),
@@ -23,11 +30,30 @@ pub fn claimed_frames(name: &str, kind: &Kind) -> Frames {
     }
 }
 
+/// The book's letter of a name, when the name is one of the book's names
+/// for a 6-vector or a group element: one letter, optionally followed by
+/// digits, then optionally a frame or index subscript (`S`, `S1`, `S_b`,
+/// `S_1`, `B2`, `V_s`, `F_b`, `T3_sb`). `Sum`, `Bq`, `Fk` have none.
+fn book_letter(name: &str) -> Option<char> {
+    let base = base_name(name);
+    let stem = match base.split_once('_') {
+        Some((stem, index)) if !index.is_empty() && index.chars().all(|c| c.is_ascii_digit()) => {
+            stem
+        }
+        Some(_) => return None,
+        None => base,
+    };
+    let mut chars = stem.chars();
+    let letter = chars.next()?;
+    chars.all(|c| c.is_ascii_digit()).then_some(letter)
+}
+
 /// The book's letters name the kind of a plain 6-vector: `V` a twist, `S`
-/// or `B` a screw axis, `F` a wrench.
+/// or `B` a screw axis, `F` a wrench (§3.3.2, §3.4) — for the book's names
+/// only ([`book_letter`]).
 pub fn named_kind(name: &str, kind: &Kind) -> Kind {
-    if kind.vec_len() == Some(6) && *kind == Kind::Vector(Some(6)) {
-        match base_name(name).chars().next() {
+    if *kind == Kind::Vector(Some(6)) {
+        match book_letter(name) {
             Some('V') => Kind::Twist,
             Some('S' | 'B') => Kind::Screw,
             Some('F') => Kind::Wrench,
@@ -38,33 +64,112 @@ pub fn named_kind(name: &str, kind: &Kind) -> Kind {
     }
 }
 
+/// The group a rotation or transform name asserts for a square matrix of
+/// `kind` (LANGUAGE.md §5): `R_sb` a rotation (SO(3), or SO(2) when 2×2),
+/// `T_ab` a transform (SE(3) when 4×4, SE(2) when 3×3). None for other
+/// names, other shapes, and values already of a kind that is not a plain
+/// matrix.
+pub fn named_group(name: &str, kind: &Kind) -> Option<Kind> {
+    if !matches!(name_frames(name), NameFrames::Pair(..)) {
+        return None;
+    }
+    let n = match kind {
+        Kind::Matrix(Some(r), Some(c)) if r == c => *r,
+        Kind::SO3 | Kind::SE2 | Kind::So3 | Kind::Se2 => 3,
+        Kind::SE3 | Kind::Se3 => 4,
+        Kind::SO2 | Kind::So2 => 2,
+        _ => return None,
+    };
+    match (book_letter(name)?, n) {
+        ('R', 3) => Some(Kind::SO3),
+        ('R', 2) => Some(Kind::SO2),
+        ('T', 4) => Some(Kind::SE3),
+        ('T', 3) => Some(Kind::SE2),
+        _ => None,
+    }
+}
+
+/// A binding that succeeded, with a warning when the name renames a moved
+/// frame to its unmoved letter.
+#[derive(Debug, Clone)]
+pub struct Bound {
+    pub ty: Ty,
+    pub warning: Option<RuleError>,
+}
+
 /// The type a binding `name = value` gets, or the frame error.
-pub fn bind(name: &str, ty: &Ty) -> Result<Ty, RuleError> {
+pub fn bind(name: &str, ty: &Ty) -> Result<Bound, RuleError> {
     let kind = named_kind(name, &ty.kind);
+    let kind = named_group(name, &kind).unwrap_or(kind);
+    if kind == Kind::Scalar {
+        return Ok(Bound {
+            ty: Ty::new(kind, Frames::None),
+            warning: None,
+        });
+    }
     let claim = claimed_frames(name, &kind);
+    let mut warning = None;
     let frames = match (&claim, &ty.frames) {
         (Frames::None, f) => f.clone(),
         (c, Frames::None) => c.clone(),
-        (Frames::Pair(x, y), Frames::Pair(a, b)) if x == a && (y == b || b.moved) => claim.clone(),
-        (Frames::Pair(x, _), Frames::Disp(a)) if x == a => claim.clone(),
-        (Frames::One(x), Frames::One(a) | Frames::Disp(a)) if x == a => ty.frames.clone(),
-        _ => {
-            let mut e = RuleError {
-                kind: Some(ErrorKind::Frame),
-                message: format!(
-                    "the value is {}, but the name {name} says {}",
-                    describe(&ty.frames),
-                    describe(&claim)
-                ),
-                ..Default::default()
-            };
-            e.lhs = format!("says {}", describe(&claim));
-            e.rhs = describe(&ty.frames);
-            e.help = Some(suggest_name(name, &ty.frames));
-            return Err(e);
+        (Frames::Pair(x, y), Frames::Pair(a, b)) if x == a && (y == b || b.is_moved()) => {
+            if y.name == b.name && y.moved == 0 && b.moved > 0 {
+                warning = Some(renamed_moved_frame(name, &ty.frames, b, y));
+            }
+            claim.clone()
         }
+        (Frames::Pair(x, y), Frames::Disp(a)) if x == a => {
+            if y.name == a.name && y.moved == 0 {
+                warning = Some(renamed_moved_frame(name, &ty.frames, &a.moved(), y));
+            }
+            claim.clone()
+        }
+        (Frames::One(x), Frames::One(a) | Frames::Disp(a)) if x == a => ty.frames.clone(),
+        _ => return Err(mismatch(name, &claim, &ty.frames)),
     };
-    Ok(Ty::new(kind, frames))
+    let mut bound = Ty::new(kind, frames);
+    bound.algebra = ty.algebra.clone();
+    Ok(Bound { ty: bound, warning })
+}
+
+fn mismatch(name: &str, claim: &Frames, frames: &Frames) -> RuleError {
+    let mut e = RuleError {
+        kind: Some(ErrorKind::Frame),
+        message: format!(
+            "the value is {}, but the name {name} says {}",
+            describe(frames),
+            describe(claim)
+        ),
+        ..Default::default()
+    };
+    e.lhs = format!("says {}", describe(claim));
+    e.rhs = describe(frames);
+    e.help = Some(suggest_name(name, frames));
+    e
+}
+
+/// `Tq_ab = exp([S_a] 0.3) * T_ab`: the value ends in {b'}, and the name
+/// calls that frame {b} — the unmoved frame's own name.
+fn renamed_moved_frame(name: &str, frames: &Frames, moved: &Frame, named: &Frame) -> RuleError {
+    let base = base_name(name);
+    let better = match frames {
+        Frames::Pair(a, _) | Frames::Disp(a) => {
+            tagged_name(base, &[&a.to_string(), &moved.to_string()])
+        }
+        _ => name.to_string(),
+    };
+    let mut e = RuleError {
+        kind: Some(ErrorKind::Frame),
+        message: format!(
+            "{name} calls the moved frame {{{moved}}} by the name of the unmoved frame {{{named}}}"
+        ),
+        ..Default::default()
+    };
+    e.rhs = describe(frames);
+    e.help = Some(format!(
+        "a displacement moved {{{named}}} to {{{moved}}}, and {name} now names {{{moved}}} as {{{named}}}: name it {better} to keep them apart"
+    ));
+    e
 }
 
 fn suggest_name(name: &str, frames: &Frames) -> String {
@@ -79,6 +184,67 @@ fn suggest_name(name: &str, frames: &Frames) -> String {
             "a displacement in {{{a}}}: name it {}…",
             tagged_name(base, &[&a.to_string()])
         ),
+        Frames::Transposed(..) => {
+            "the transpose of a transform is not a transform: write inv(T) for its inverse".into()
+        }
         Frames::None => String::new(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn only_the_books_names_make_screws_twists_and_wrenches() {
+        let v6 = Kind::Vector(Some(6));
+        for (name, want) in [
+            ("S", Kind::Screw),
+            ("S1", Kind::Screw),
+            ("S_b", Kind::Screw),
+            ("S_1", Kind::Screw),
+            ("B2", Kind::Screw),
+            ("V_s", Kind::Twist),
+            ("F_b", Kind::Wrench),
+            ("Sum", v6.clone()),
+            ("Bq", v6.clone()),
+            ("Fk", v6.clone()),
+            ("Vel_b", v6.clone()),
+        ] {
+            assert_eq!(named_kind(name, &v6), want, "{name}");
+        }
+    }
+
+    #[test]
+    fn rotation_and_transform_names_assert_their_group() {
+        let m = |n| Kind::Matrix(Some(n), Some(n));
+        assert_eq!(named_group("R_sb", &m(3)), Some(Kind::SO3));
+        assert_eq!(named_group("R_sb", &m(2)), Some(Kind::SO2));
+        assert_eq!(named_group("T_ab", &m(4)), Some(Kind::SE3));
+        assert_eq!(named_group("T3_sb", &m(3)), Some(Kind::SE2));
+        assert_eq!(named_group("R", &m(3)), None);
+        assert_eq!(named_group("Rq_sb", &m(3)), None);
+        assert_eq!(named_group("M_sb", &m(4)), None);
+    }
+
+    #[test]
+    fn scalars_take_no_frames_from_their_name() {
+        let b = bind("theta_b", &Ty::scalar()).unwrap();
+        assert_eq!(b.ty, Ty::scalar());
+        assert_eq!(claimed_frames("P_b", &Kind::Scalar), Frames::None);
+    }
+
+    #[test]
+    fn renaming_a_moved_frame_to_its_own_letter_warns() {
+        let moved = Ty::new(
+            Kind::SE3,
+            Frames::Pair(Frame::named("a"), Frame::named("b'")),
+        );
+        let b = bind("Tq_ab", &moved).unwrap();
+        assert_eq!(b.ty.frames, Frames::pair("a", "b"));
+        assert!(b.warning.unwrap().help.unwrap().contains("name it Tq_ab'"));
+        assert!(bind("T_ab'", &moved).unwrap().warning.is_none());
+        assert!(bind("T_ab''", &moved).unwrap().warning.is_none());
+        assert!(bind("T_ac", &moved).unwrap().warning.is_none());
     }
 }

@@ -4,7 +4,9 @@
 //! subscripts. The interpreter ([`crate::eval`]) applies these rules in the
 //! same pass for `chasles check` (no numbers) and `chasles run`.
 
+pub mod algebra;
 pub mod bind;
+pub mod error;
 mod product;
 pub mod rules;
 pub mod ty;

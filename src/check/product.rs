@@ -1,10 +1,11 @@
-//! Products (`*` and juxtaposition): the kind of `l * r` and its frames —
-//! composition `X_ab * X_bc = X_ac`, application `X_ab * v_b = v_a`,
-//! displacements `exp([S_a] θ) * T_ab`, the adjoint and its transpose
-//! (Prop. 3.17) — with the help text that names the fix when frames do not
-//! cancel. Part of the rule table of [`super::rules`].
+//! Products (`*` and juxtaposition): the kind of `l * r`, its frames by the
+//! frame algebra of [`super::algebra`] — composition `X_ab * X_bc = X_ac`,
+//! application `X_ab * v_b = v_a`, displacements `exp([S_a] θ) * T_ab` — the
+//! adjoint and its transpose (Prop. 3.17), and the help text that names the
+//! fix when frames do not cancel. Part of the rule table of [`super::rules`].
 
-use super::rules::{Operands, RuleError, describe, same_frame_error, scaled_kind};
+use super::algebra::{self, Clash};
+use super::error::{Operands, RuleError, describe, inverse_text};
 use super::ty::{Frame, Frames, Kind, Ty};
 use crate::syntax::ident::{NameFrames, base_name, name_frames, tagged_name};
 
@@ -19,28 +20,139 @@ pub(super) fn dims_agree(a: Option<usize>, b: Option<usize>) -> bool {
 pub fn mul(l: &Ty, r: &Ty, ops: Operands) -> Result<Ty, RuleError> {
     // Scalars scale anything and leave frames alone.
     if l.kind == Kind::Scalar {
-        return Ok(Ty::new(scaled_kind(&r.kind), r.frames.clone()));
+        return Ok(r.scaled());
     }
     if r.kind == Kind::Scalar {
-        return Ok(Ty::new(scaled_kind(&l.kind), l.frames.clone()));
+        return Ok(l.scaled());
     }
     if l.kind == (Kind::Adjoint { transposed: false }) && r.kind == Kind::Wrench {
         return Err(wrench_through_ad(l, r, ops));
     }
-    let kind = mul_kind(&l.kind, &r.kind, ops)?;
-    // A row times a column, uᵀv: an inner product. Its frames must agree
-    // and then cancel, like `dot`: V_bᵀF_b is the power, a plain scalar
-    // (§3.4: the same in every frame).
-    if matches!(l.kind, Kind::Matrix(Some(1), _)) && r.kind.is_vector() {
-        apply_frames(l, r, ops)?;
-        return Ok(Ty::new(Kind::Scalar, Frames::None));
-    }
-    let frames = if kind.is_vector() || matches!(kind, Kind::Vector(_)) {
-        apply_frames(l, r, ops)?
+    // A row times a column, uᵀv: an inner product (the power V_bᵀF_b is a
+    // plain scalar, §3.4: the same in every frame).
+    let kind = if matches!(l.kind, Kind::Matrix(Some(1), _)) && r.kind.is_vector() {
+        mul_kind(&l.kind, &r.kind, ops)?;
+        Kind::Scalar
     } else {
-        compose_frames(l, r, ops)?
+        mul_kind(&l.kind, &r.kind, ops)?
     };
-    Ok(Ty::new(kind, frames))
+    let frames = match algebra::product((&l.frames, &l.kind), (&r.frames, &r.kind), &kind) {
+        Ok(f) => f,
+        Err(Clash::Inner(x, y)) => {
+            // A displacement in {a} is the map {a}←{a'}: name its frame {a}.
+            let x = match &l.frames {
+                Frames::Disp(a) => a.clone(),
+                _ => x,
+            };
+            return Err(inner_mismatch(l, r, &x, &y, ops));
+        }
+        Err(Clash::Transposed { left }) => return Err(transposed_factor(l, r, left, ops)),
+    };
+    Ok(conjugation(l, r, Ty::new(kind, frames)))
+}
+
+/// What a factor contributes to a product of group elements and one
+/// element of their Lie algebra.
+#[derive(Debug, Clone, PartialEq)]
+enum Content {
+    Group(Kind),
+    Algebra(Kind),
+    Other,
+}
+
+fn content(t: &Ty) -> Content {
+    match (&t.kind, &t.algebra) {
+        (k, _) if k.is_group() => Content::Group(k.clone()),
+        (k, _) if k.is_algebra() => Content::Algebra(k.clone()),
+        (Kind::Matrix(..), Some(a)) => Content::Algebra(a.clone()),
+        _ => Content::Other,
+    }
+}
+
+/// The group whose Lie algebra `alg` is.
+fn group_of(alg: &Kind) -> Option<Kind> {
+    Some(match alg {
+        Kind::So3 => Kind::SO3,
+        Kind::Se3 => Kind::SE3,
+        Kind::So2 => Kind::SO2,
+        Kind::Se2 => Kind::SE2,
+        _ => return None,
+    })
+}
+
+/// g·X, X·g and g·X·g⁻¹ (associative: the content of a product is the one
+/// algebra element among group elements of its group). A product that is
+/// g·X with frames closed on one frame is back in the algebra (3.77): its
+/// kind is the algebra's; otherwise a plain matrix that remembers it.
+fn conjugation(l: &Ty, r: &Ty, mut out: Ty) -> Ty {
+    if !matches!(out.kind, Kind::Matrix(..)) {
+        return out;
+    }
+    let alg = match (content(l), content(r)) {
+        (Content::Group(g), Content::Algebra(a)) | (Content::Algebra(a), Content::Group(g))
+            if group_of(&a).as_ref() == Some(&g) =>
+        {
+            a
+        }
+        _ => return out,
+    };
+    if matches!(out.frames, Frames::One(_)) {
+        out.kind = alg;
+    } else {
+        out.algebra = Some(alg);
+    }
+    out
+}
+
+/// `T_ab.T` used as a factor: the transpose of a transform is not its
+/// inverse (that holds for rotations only, Prop. 3.1).
+fn transposed_factor(l: &Ty, r: &Ty, left: bool, ops: Operands) -> RuleError {
+    let (t, text) = if left { (l, ops.lhs) } else { (r, ops.rhs) };
+    let text = text.trim();
+    let base = ["ᵀ", "^T", "^{T}", ".T"]
+        .iter()
+        .find_map(|suf| text.strip_suffix(suf))
+        .or_else(|| {
+            text.strip_prefix("transpose(")
+                .and_then(|s| s.strip_suffix(')'))
+        })
+        .unwrap_or(text)
+        .trim();
+    let (name, frames) = match &t.frames {
+        // The transpose of {outer}←{inner}; its inverse is {inner}←{outer}.
+        Frames::Transposed(outer, inner) => (
+            result_name_of(base, inner, outer),
+            format!("{{{outer}}}←{{{inner}}} is not the map {{{inner}}}←{{{outer}}}"),
+        ),
+        _ => (String::new(), String::new()),
+    };
+    let mut e = RuleError::frame(format!(
+        "{text} is the transpose of a transform, not a transform: the transpose is the inverse only for rotations"
+    ));
+    e.lhs = describe(&l.frames);
+    e.rhs = describe(&r.frames);
+    // The fix names the inverse of what was transposed, when the operand
+    // is written as a transpose (`T_ab.T`, `T_ab^T`, `transpose(T_ab)`).
+    let fix = if base == text {
+        "inv(T) for the inverse of a transform T".to_string()
+    } else {
+        format!("{}{name}", inverse_text(base))
+    };
+    e.help = Some(format!(
+        "R⁻¹ = Rᵀ for a rotation (Prop. 3.1), but T⁻¹ = [Rᵀ, −Rᵀp; 0, 1] (Prop. 3.10): write {fix}; the transpose of {frames}"
+    ));
+    e
+}
+
+/// ` = T_ba` when `base` is a framed name like `T_ab`, else empty.
+fn result_name_of(base: &str, outer: &Frame, inner: &Frame) -> String {
+    match operand_base(base) {
+        Some(letter) if name_frames(base) != NameFrames::None => format!(
+            " = {}",
+            tagged_name(letter, &[&outer.to_string(), &inner.to_string()])
+        ),
+        _ => String::new(),
+    }
 }
 
 fn shape_error(l: &Kind, r: &Kind) -> RuleError {
@@ -60,15 +172,15 @@ fn mul_kind(l: &Kind, r: &Kind, ops: Operands) -> Result<Kind, RuleError> {
                 _ => Err(shape_error(l, r)),
             },
             Adjoint { transposed: true } => match r {
-                Twist | Screw => Err(RuleError::typ("[Ad_T]ᵀ acts on wrenches, not on twists")
+                Twist | Screw => Err(RuleError::frame("[Ad_T]ᵀ acts on wrenches, not on twists")
                     .with_help(format!(
-                        "twists change frame with the adjoint itself: write {} without .T",
-                        ops.lhs.trim_end_matches(".T")
+                        "twists change frame with the adjoint itself, V_s = [Ad_T_sb] V_b (3.84); write {} without .T",
+                        ops.lhs.trim().trim_end_matches(".T")
                     ))),
                 _ if dims_agree(n, Some(6)) => Ok(Wrench),
                 _ => Err(shape_error(l, r)),
             },
-            // T p with a 3-vector p: the point transformed (homogeneous, (3.59)).
+            // T p with a 3-vector p: the point transformed (homogeneous, (3.65)).
             SE3 | Se3 | Matrix(Some(4), Some(4)) if n == Some(3) => Ok(Vector(Some(3))),
             SE3 | Se3 if dims_agree(n, Some(4)) => Ok(Vector(Some(4))),
             Matrix(None, _) | Matrix(_, None) => Ok(Vector(None)),
@@ -155,7 +267,8 @@ fn wrench_through_ad(l: &Ty, r: &Ty, ops: Operands) -> RuleError {
         "Prop. 3.17: wrenches change frame with the transposed adjoint, F_b = [Ad_T_ab]ᵀ F_a";
     let help = match (&l.frames, &r.frames) {
         (Frames::Pair(a, b), Frames::One(c)) if b == c => format!(
-            "{rule}; {f} in {{{a}}} is Ad(inv({t})).T * {f}, and a wrench in {{{a}}} comes to {{{b}}} by Ad({t}).T * F_{a}"
+            "{rule}; {f} in {{{a}}} is Ad({}).T * {f}, and a wrench in {{{a}}} comes to {{{b}}} by Ad({t}).T * F_{a}",
+            inverse_text(t)
         ),
         _ => format!("{rule}; write Ad({t}).T * F for F in the outer frame of {t}"),
     };
@@ -245,8 +358,13 @@ fn product_help(l: &Ty, r: &Ty, ops: Operands) -> String {
             }
         }
         (Frames::Pair(_, b), Frames::One(c)) => format!(
-            "{} takes coordinates in {{{b}}}, but the vector is in {{{c}}}; express it in {{{b}}} first",
-            ops.lhs.trim()
+            "{} takes coordinates in {{{b}}}, but {} is in {{{c}}}; express it in {{{b}}} first",
+            ops.lhs.trim(),
+            if r.kind.is_vector() {
+                "the vector".to_string()
+            } else {
+                format!("{} ({})", ops.rhs.trim(), r.kind.a())
+            }
         ),
         (Frames::Disp(a), Frames::Pair(c, _)) => format!(
             "a displacement in {{{a}}} premultiplies a transform from {{{a}}} (X_{a}?); {} starts in {{{c}}}",
@@ -275,80 +393,37 @@ fn displacement_hint(ops: Operands) -> String {
     }
 }
 
-/// Frames of `operator * operator`.
-fn compose_frames(l: &Ty, r: &Ty, ops: Operands) -> Result<Frames, RuleError> {
-    use Frames::*;
-    Ok(match (&l.frames, &r.frames) {
-        (None, None) => None,
-        (Pair(a, b), Pair(c, d)) => {
-            if b != c {
-                return Err(inner_mismatch(l, r, b, c, ops));
-            }
-            Pair(a.clone(), d.clone())
-        }
-        // An untagged operator is a displacement: R * R_sb = {s}←{b'}.
-        (None, Pair(a, b)) | (Pair(a, b), None) => Pair(a.clone(), b.moved()),
-        (None, One(a)) | (One(a), None) => One(a.clone()),
-        (None, Disp(a)) | (Disp(a), None) => Disp(a.clone()),
-        (Disp(a), Pair(c, d)) => {
-            if a != c {
-                return Err(inner_mismatch(l, r, a, c, ops));
-            }
-            Pair(c.clone(), d.moved())
-        }
-        (Pair(a, b), Disp(d)) => {
-            if b != d {
-                return Err(inner_mismatch(l, r, b, d, ops));
-            }
-            Pair(a.clone(), b.moved())
-        }
-        (Disp(a), Disp(b)) | (One(a), One(b)) | (Disp(a), One(b)) | (One(a), Disp(b)) => {
-            if a != b {
-                return Err(same_frame_error("multiply", l, r));
-            }
-            l.frames.clone()
-        }
-        // [V_s] T_sb = Ṫ_sb ; T_sb [V_b] = Ṫ_sb.
-        (One(a), Pair(c, _)) => {
-            if a != c {
-                return Err(inner_mismatch(l, r, a, c, ops));
-            }
-            r.frames.clone()
-        }
-        (Pair(_, b), One(c)) => {
-            if b != c {
-                return Err(inner_mismatch(l, r, b, c, ops));
-            }
-            l.frames.clone()
-        }
-    })
-}
+#[cfg(test)]
+mod tests {
+    use super::*;
 
-/// Frames of `operator * vector`.
-fn apply_frames(l: &Ty, r: &Ty, ops: Operands) -> Result<Frames, RuleError> {
-    use Frames::*;
-    Ok(match (&l.frames, &r.frames) {
-        (_, _) if l.kind.is_vector() => None,
-        (None, f) => f.clone(),
-        (Pair(a, _), None) => One(a.clone()),
-        (Pair(a, b), One(c)) => {
-            if b != c {
-                return Err(inner_mismatch(l, r, b, c, ops));
-            }
-            One(a.clone())
-        }
-        (One(a) | Disp(a), One(c)) => {
-            if a != c {
-                let mut e = inner_mismatch(l, r, a, c, ops);
-                e.help = Some(format!(
-                    "{} is in {{{a}}}; the vector must be expressed in {{{a}}} too",
-                    ops.lhs.trim()
-                ));
-                return Err(e);
-            }
-            One(a.clone())
-        }
-        (One(a) | Disp(a), None) => One(a.clone()),
-        (_, Pair(..) | Disp(_)) => r.frames.clone(),
-    })
+    fn t(kind: Kind, frames: Frames) -> Ty {
+        Ty::new(kind, frames)
+    }
+
+    #[test]
+    fn conjugation_is_back_in_the_lie_algebra_under_both_bracketings() {
+        let g = t(Kind::SE3, Frames::pair("a", "b"));
+        let x = t(Kind::Se3, Frames::one("b"));
+        let gi = t(Kind::SE3, Frames::pair("b", "a"));
+        let ops = Operands::default();
+        let left = mul(&mul(&g, &x, ops).unwrap(), &gi, ops).unwrap();
+        let right = mul(&g, &mul(&x, &gi, ops).unwrap(), ops).unwrap();
+        assert_eq!(left, t(Kind::Se3, Frames::one("a")));
+        assert_eq!(left, right);
+        // g·X alone is a plain matrix that remembers its algebra.
+        let gx = mul(&g, &x, ops).unwrap();
+        assert_eq!(gx.kind, Kind::Matrix(Some(4), Some(4)));
+        assert_eq!(gx.algebra, Some(Kind::Se3));
+        // X·X is no longer anything of the algebra.
+        let xx = mul(&x, &x, ops).unwrap();
+        assert_eq!(
+            mul(&mul(&g, &xx, ops).unwrap(), &gi, ops).unwrap().kind,
+            xx.kind
+        );
+        // A rotation does not conjugate se(3), nor SE(2) so(3).
+        let se2 = t(Kind::SE2, Frames::pair("a", "b"));
+        let w = t(Kind::So3, Frames::one("b"));
+        assert_eq!(mul(&se2, &w, ops).unwrap().algebra, None);
+    }
 }

@@ -1,97 +1,38 @@
 //! The frame and type rules of LANGUAGE.md §6, in one place: for each
 //! operation, the resulting kind and frames, or the error with its text.
+//! The frames of products and powers come from the frame algebra of
+//! [`super::algebra`] (its tables are the detail of the first rows here).
 //!
-//! | expression            | result                  | else                       |
-//! |-----------------------|-------------------------|----------------------------|
-//! | `X_ab * X_bc`         | `X_ac`                  | frame error, both frames   |
-//! | `X_ab * v_b`          | `v_a`                   | frame error                |
-//! | `inv(X_ab)`, `X_ab.T` | `X_ba`                  |                            |
-//! | `Ad(T_ab) * V_b`      | `V_a`                   | a wrench: cite Prop. 3.17  |
-//! | `Ad(T_ab).T * F_a`    | `F_b` (Prop. 3.17)      |                            |
-//! | `exp([S_a] θ) * T_ab` | {a}←{b'} (moved)        | `T_cb`: frame error        |
-//! | `T_ba * exp([S_a] θ)` | {b}←{a'}                |                            |
-//! | `u_a + v_a`, `cross`  | same frame              | frame error                |
-//! | untagged operand      | matches anything        |                            |
+//! | expression              | result                    | else                          |
+//! |-------------------------|---------------------------|-------------------------------|
+//! | `X_ab * X_bc`           | `X_ac`                    | frame error, both frames      |
+//! | `X_ab * v_b`            | `v_a`                     | frame error                   |
+//! | `T_ab [V_b] inv(T_ab)`  | `[V_a]` in {a} (3.77)     |                               |
+//! | `inv(X_ab)`, `R_ab.T`   | `X_ba`                    |                               |
+//! | `T_ab.T`                | no frames (transposed)    | as a factor: frame error      |
+//! | `Ad(T_ab) * V_b`        | `V_a`                     | a wrench: cite Prop. 3.17     |
+//! | `Ad(T_ab).T * F_a`      | `F_b` (Prop. 3.17)        | a twist: frame error          |
+//! | `exp([S_a] θ) * T_ab`   | {a}←{b'} (moved)          | `T_cb`: frame error           |
+//! | `T_ba * exp([S_a] θ)`   | {b}←{a'}                  |                               |
+//! | `X_ab' * X_bc`          | `X_ac'` ({c} moves with {b}) |                            |
+//! | `X^n`                   | `X * … * X`               | `X_ab`, a ≠ b: frame error    |
+//! | `u_a + v_a`, `cross`    | same frame                | frame error                   |
+//! | untagged operand        | matches anything          |                               |
 //!
 //! Products (`*`) live in [`super::product`] and are re-exported here as
 //! [`mul`]. The functions know only [`Ty`]s; the interpreter attaches spans and
 //! source text to the [`RuleError`]s they return.
 
+use super::algebra::{self, Clash};
+use super::error::same_frame_error;
+pub use super::error::{Operands, RuleError, describe};
 use super::product::dims_agree;
 pub use super::product::mul;
 use super::ty::{Frames, Kind, Ty};
-use crate::diagnostics::ErrorKind;
 
-/// Why an operation is refused, with the text for each part of the
-/// diagnostic. `lhs`/`rhs` label the operands, `op` the operator.
-#[derive(Debug, Clone, Default)]
-pub struct RuleError {
-    pub kind: Option<ErrorKind>,
-    pub message: String,
-    pub lhs: String,
-    pub rhs: String,
-    pub op: String,
-    pub help: Option<String>,
-}
-
-impl RuleError {
-    pub(super) fn typ(message: impl Into<String>) -> RuleError {
-        RuleError {
-            kind: Some(ErrorKind::Type),
-            message: message.into(),
-            ..Default::default()
-        }
-    }
-    pub(super) fn frame(message: impl Into<String>) -> RuleError {
-        RuleError {
-            kind: Some(ErrorKind::Frame),
-            message: message.into(),
-            ..Default::default()
-        }
-    }
-    pub(super) fn with_help(mut self, help: impl Into<String>) -> RuleError {
-        self.help = Some(help.into());
-        self
-    }
-}
-
-/// The source text of the operands, for help lines (`did you mean inv(T_cb)?`).
-#[derive(Debug, Clone, Copy, Default)]
-pub struct Operands<'a> {
-    pub lhs: &'a str,
-    pub rhs: &'a str,
-}
-
-/// How a frame tag reads in a label: `{b} in {a}`, `in {a}`.
-pub fn describe(frames: &Frames) -> String {
-    match frames {
-        Frames::None => "untagged".to_string(),
-        Frames::One(a) => format!("in {{{a}}}"),
-        Frames::Pair(a, b) => format!("{{{b}}} in {{{a}}}"),
-        Frames::Disp(a) => format!("displacement in {{{a}}}"),
-    }
-}
-
-/// What multiplying by a scalar does to a kind: group elements stop being
-/// group elements, a screw axis times θ is a twist (exponential coordinates).
+/// What multiplying by a scalar does to a kind ([`Kind::scaled`]).
 pub fn scaled_kind(kind: &Kind) -> Kind {
-    match kind {
-        Kind::SO3 | Kind::SE2 => Kind::Matrix(Some(3), Some(3)),
-        Kind::SE3 => Kind::Matrix(Some(4), Some(4)),
-        Kind::SO2 => Kind::Matrix(Some(2), Some(2)),
-        Kind::Screw => Kind::Twist,
-        other => other.clone(),
-    }
-}
-
-pub(super) fn same_frame_error(what: &str, l: &Ty, r: &Ty) -> RuleError {
-    let mut e = RuleError::frame(format!("cannot {what} quantities in different frames"));
-    e.lhs = describe(&l.frames);
-    e.rhs = describe(&r.frames);
-    e.help = Some(
-        "express both in one frame first (an adjoint for twists, a rotation for vectors)".into(),
-    );
-    e
+    kind.scaled()
 }
 
 /// Frames shared by a sum, `cross` or `dot`: same frame, or one untagged.
@@ -156,7 +97,7 @@ pub fn neg(t: &Ty) -> Result<Ty, RuleError> {
         Kind::Mechanism | Kind::Tuple(_) | Kind::Bool | Kind::Function => {
             Err(RuleError::typ(format!("cannot negate {}", t.kind.a())))
         }
-        _ => Ok(Ty::new(scaled_kind(&t.kind), t.frames.clone())),
+        _ => Ok(t.scaled()),
     }
 }
 
@@ -169,7 +110,7 @@ pub fn div(l: &Ty, r: &Ty) -> Result<Ty, RuleError> {
     if !r.frames.is_none() {
         return Err(RuleError::frame("cannot divide by a framed quantity"));
     }
-    neg(l).map(|_| Ty::new(scaled_kind(&l.kind), l.frames.clone()))
+    neg(l)
 }
 
 /// `inv(X_ab)` = X_ba.
@@ -188,7 +129,12 @@ pub fn inverse(t: &Ty) -> Result<Ty, RuleError> {
     }
 }
 
-/// `x.T` — transposes swap frames; [Ad_T]ᵀ acts on wrenches.
+/// `x.T` — the transpose of a rotation is its inverse (Prop. 3.1), so
+/// `R_ab.T` is R_ba; [Ad_T]ᵀ acts on wrenches (Prop. 3.17) and maps them
+/// the other way; a vector's transpose is a row in the same frame, a
+/// one-frame matrix's transpose stays in its frame. The transpose of any
+/// other map {a}←{b} (a transform, a product) maps no frame to another: it
+/// is tagged [`Frames::Transposed`], and a product with it is refused.
 pub fn transpose(t: &Ty) -> Result<Ty, RuleError> {
     let kind = match &t.kind {
         Kind::SO3 | Kind::SO2 => t.kind.clone(),
@@ -209,10 +155,20 @@ pub fn transpose(t: &Ty) -> Result<Ty, RuleError> {
             None => return Err(RuleError::typ(format!("cannot transpose {}", k.a()))),
         },
     };
-    let frames = if t.kind.is_vector() {
-        t.frames.clone()
-    } else {
-        t.frames.swapped()
+    let inverse_is_transpose = matches!(
+        t.kind,
+        Kind::SO3 | Kind::SO2 | Kind::Adjoint { .. } | Kind::Unknown
+    );
+    let frames = match &t.frames {
+        _ if t.kind.is_vector() => t.frames.clone(),
+        Frames::Pair(a, b)
+            if !inverse_is_transpose && !matches!(kind, Kind::Matrix(Some(1), _)) =>
+        {
+            Frames::Transposed(a.clone(), b.clone())
+        }
+        Frames::Disp(a) if !inverse_is_transpose => Frames::Transposed(a.clone(), a.moved()),
+        Frames::Transposed(a, b) => Frames::Pair(a.clone(), b.clone()),
+        f => f.swapped(),
     };
     Ok(Ty::new(kind, frames))
 }
@@ -243,19 +199,35 @@ pub fn pow(base: &Ty, exp: &Ty, literal: Option<f64>) -> Result<Ty, RuleError> {
         Some(0.0) => Ok(Ty::new(identity_kind(&base.kind), Frames::None)),
         Some(1.0) => Ok(base.clone()),
         _ => {
-            let frames = match &base.frames {
-                Frames::Pair(a, b) if a != b => {
+            let n = literal
+                .filter(|x| x.fract() == 0.0 && x.abs() < 1e15)
+                .map(|x| x as i64);
+            let frames = match algebra::power(&base.frames, n, &base.kind) {
+                Ok(f) => f,
+                Err(Clash::Inner(..)) => {
                     let mut e = RuleError::frame("frames do not cancel in a power");
                     e.lhs = describe(&base.frames);
-                    e.help = Some(format!(
-                        "X_{a}{b} * X_{a}{b} needs {{{b}}} = {{{a}}}; powers are for displacements (X_{a}{a}) or untagged matrices"
-                    ));
+                    if let Frames::Pair(a, b) = &base.frames {
+                        e.help = Some(format!(
+                            "X_{a}{b} * X_{a}{b} needs {{{b}}} = {{{a}}}; powers are for displacements (X_{a}{a}) or untagged matrices"
+                        ));
+                    }
                     return Err(e);
                 }
-                f => f.clone(),
+                Err(Clash::Transposed { .. }) => {
+                    return Err(RuleError::frame(
+                        "the transpose of a transform is not a transform: the transpose is the inverse only for rotations",
+                    )
+                    .with_help("write inv(T) for the inverse of a transform (Prop. 3.10)"));
+                }
             };
+            // Powers of group elements stay in the group; a power of an
+            // so(3)/se(3) matrix is not in the algebra in general ([ω]² is
+            // symmetric), so it is a plain matrix.
             let kind = if base.kind.is_group() || matches!(base.kind, Kind::Adjoint { .. }) {
                 base.kind.clone()
+            } else if base.kind.is_algebra() {
+                plain_matrix(&base.kind)
             } else {
                 scaled_kind(&base.kind)
             };
@@ -264,11 +236,21 @@ pub fn pow(base: &Ty, exp: &Ty, literal: Option<f64>) -> Result<Ty, RuleError> {
     }
 }
 
+/// `X^0`: the identity in X's group, else a plain matrix (`[1, 2; 3, 4]^0`
+/// is the 2×2 identity, not labelled SO(2)).
 fn identity_kind(k: &Kind) -> Kind {
     if k.is_group() {
         k.clone()
     } else {
-        scaled_kind(k)
+        plain_matrix(k)
+    }
+}
+
+/// The plain matrix of the shape of `k`.
+fn plain_matrix(k: &Kind) -> Kind {
+    match k.shape() {
+        Some((r, c)) => Kind::Matrix(r, c),
+        None => k.scaled(),
     }
 }
 
@@ -311,6 +293,49 @@ pub fn member(t: &Ty, name: &str) -> Result<Ty, RuleError> {
                     .with_help(format!("members of {}: {known}", t.kind.a())),
             )
         }
+    }
+}
+
+/// The tag a result of a builtin `name` may carry for its kind (§6): a
+/// scalar none, a vector or so(3)/se(3) matrix one frame ([`settled`]); a
+/// vector of a map between two frames (`se3ToVec(T_ab * [V_b])`) is a frame
+/// error.
+pub fn settle(t: &Ty, name: &str) -> Result<Ty, RuleError> {
+    let settled = settled(t);
+    if let (true, Frames::Pair(a, b)) = (one_frame_kind(&t.kind), &settled.frames) {
+        let mut e = RuleError::frame(format!(
+            "{name} gives {}, a quantity in one frame, but its argument maps {{{b}}} to {{{a}}}",
+            t.kind.a()
+        ));
+        e.lhs = describe(&t.frames);
+        e.help = Some(format!(
+            "a twist [V_{a}] in {{{a}}} is T [V_{b}] T⁻¹ (3.77), not T [V_{b}]; a transform's own coordinates are log(T_{a}{b}) (in {{{a}}})"
+        ));
+        return Err(e);
+    }
+    Ok(settled)
+}
+
+fn one_frame_kind(k: &Kind) -> bool {
+    k.is_vector() || k.is_algebra()
+}
+
+/// A value's tag made consistent with its kind, as it is printed or bound:
+/// a scalar has no frames; a vector or so(3)/se(3) matrix tagged with a
+/// frame and a moved copy of it (`exp([S_a] θ) [V_a] exp(−[S_a] θ)`, whose
+/// two displacements chasles cannot tell apart) is a quantity in that frame.
+pub fn settled(t: &Ty) -> Ty {
+    let frames = match t.frames.displacement_frame() {
+        _ if t.kind == Kind::Scalar => Frames::None,
+        Some(a) if one_frame_kind(&t.kind) => Frames::One(a.clone()),
+        _ => match &t.frames {
+            Frames::Pair(a, b) if one_frame_kind(&t.kind) && a == b => Frames::One(a.clone()),
+            f => f.clone(),
+        },
+    };
+    Ty {
+        frames,
+        ..t.clone()
     }
 }
 

@@ -142,6 +142,19 @@ impl Kind {
         matches!(self, Kind::So3 | Kind::Se3 | Kind::So2 | Kind::Se2)
     }
 
+    /// What multiplying by a scalar does to a kind: group elements stop
+    /// being group elements, a screw axis times θ is a twist (exponential
+    /// coordinates, §3.3.3.2).
+    pub fn scaled(&self) -> Kind {
+        match self {
+            Kind::SO3 | Kind::SE2 => Kind::Matrix(Some(3), Some(3)),
+            Kind::SE3 => Kind::Matrix(Some(4), Some(4)),
+            Kind::SO2 => Kind::Matrix(Some(2), Some(2)),
+            Kind::Screw => Kind::Twist,
+            other => other.clone(),
+        }
+    }
+
     /// True when the kind may stand where a number is needed.
     pub fn maybe_scalar(&self) -> bool {
         matches!(self, Kind::Scalar | Kind::Unknown)
@@ -215,38 +228,99 @@ impl fmt::Display for Kind {
     }
 }
 
-/// One reference frame. `moved` marks the frame reached by a displacement
-/// (`exp([S_s] θ) * T_sb` is {s}←{b'}): printed with a prime, and a binding
-/// may give it a new name.
-#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+/// One reference frame: a name and how many displacements have moved it
+/// (LANGUAGE.md §6). `exp([S_s] θ) * T_sb` is {s}←{b'}: {b} moved once. A
+/// name's primes count the same way, so `T_sb'` and `exp([S_s] θ) * T_sb`
+/// carry the same frames; a binding may give a moved frame a new name.
+///
+/// Printing: a frame is written as its name wrote it (`b''` of `T_sb''`),
+/// with one more prime once it has moved further; a frame no name wrote is
+/// printed with one prime however often it moved ({b'} is "{b} moved").
+#[derive(Debug, Clone, Eq)]
 pub struct Frame {
+    /// The name without its primes.
     pub name: String,
-    pub moved: bool,
+    /// The number of displacements applied (primes).
+    pub moved: u32,
+    /// The name's spelling (`b''`) when a name with primes wrote it.
+    pub written: Option<String>,
+}
+
+impl PartialEq for Frame {
+    /// Frames are equal when their names and moves are: `T_sb'` names the
+    /// frame that `exp([S_s] θ) * T_sb` moved.
+    fn eq(&self, other: &Frame) -> bool {
+        self.name == other.name && self.moved == other.moved
+    }
+}
+
+impl std::hash::Hash for Frame {
+    fn hash<H: std::hash::Hasher>(&self, state: &mut H) {
+        self.name.hash(state);
+        self.moved.hash(state);
+    }
 }
 
 impl Frame {
+    /// The frame a name's subscript names: `b''` is {b} moved twice.
     pub fn named(name: impl Into<String>) -> Frame {
+        let name: String = name.into();
+        let base = name.trim_end_matches('\'');
+        let moved = (name.len() - base.len()) as u32;
         Frame {
-            name: name.into(),
-            moved: false,
+            name: base.to_string(),
+            moved,
+            written: (moved > 0).then(|| name.clone()),
         }
     }
-    /// The frame after a displacement.
-    pub fn moved(&self) -> Frame {
+    /// {name} moved `moved` times.
+    pub fn at(name: impl Into<String>, moved: u32) -> Frame {
         Frame {
-            name: self.name.clone(),
-            moved: true,
+            name: name.into(),
+            moved,
+            written: None,
         }
+    }
+    /// The frame after one more displacement.
+    pub fn moved(&self) -> Frame {
+        self.lifted(1)
+    }
+    /// The frame after `k` more displacements.
+    pub fn lifted(&self, k: u32) -> Frame {
+        Frame {
+            moved: self.moved.saturating_add(k),
+            ..self.clone()
+        }
+    }
+    /// The frame one displacement earlier (`moved` must be positive).
+    pub fn lowered(&self) -> Frame {
+        Frame {
+            moved: self.moved.saturating_sub(1),
+            ..self.clone()
+        }
+    }
+    /// True when this frame has been displaced (printed with a prime).
+    pub fn is_moved(&self) -> bool {
+        self.moved > 0
     }
 }
 
 impl fmt::Display for Frame {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        if self.moved {
-            write!(f, "{}'", self.name)
-        } else {
-            write!(f, "{}", self.name)
+        if let Some(w) = &self.written {
+            let at = (w.len() - w.trim_end_matches('\'').len()) as u32;
+            if self.moved == at {
+                return write!(f, "{w}");
+            }
+            if self.moved > at {
+                return write!(f, "{w}'");
+            }
         }
+        write!(f, "{}", self.name)?;
+        if self.moved > 0 {
+            write!(f, "'")?;
+        }
+        Ok(())
     }
 }
 
@@ -261,8 +335,13 @@ pub enum Frames {
     /// {a}←{b}: R_ab, T_ab, Ad(T_ab) map {b} coordinates to {a}.
     Pair(Frame, Frame),
     /// A displacement expressed in {a}: `exp([S_a] θ)`. Premultiplies
-    /// X_a? (moving its inner frame) or postmultiplies X_?a.
+    /// X_a? (moving its inner frame) or postmultiplies X_?a; in the frame
+    /// algebra ([`super::algebra`]) it is the map {a}←{a'}.
     Disp(Frame),
+    /// The transpose of a map {a}←{b} that is not a rotation (`T_ab.T`):
+    /// not a map between frames at all, since the transpose is the inverse
+    /// only for rotations (Prop. 3.1). Using it as an operator is an error.
+    Transposed(Frame, Frame),
 }
 
 impl Frames {
@@ -287,18 +366,32 @@ impl Frames {
     pub fn is_none(&self) -> bool {
         matches!(self, Frames::None)
     }
+    /// The frame {a} of a displacement in {a}: `Disp(a)`, or a map
+    /// {a}←{a''} from a frame to a copy of itself moved more than once
+    /// (`exp([S_a] t1) * exp([S_a] t2)`), printed alike.
+    pub fn displacement_frame(&self) -> Option<&Frame> {
+        match self {
+            Frames::Disp(a) => Some(a),
+            Frames::Pair(a, b) if a.name == b.name && b.moved > a.moved => Some(a),
+            _ => None,
+        }
+    }
     /// The frames as the JSON list: `[]`, `["a"]`, `["a","b"]`.
     pub fn to_list(&self) -> Vec<String> {
+        if let Some(a) = self.displacement_frame() {
+            return vec![a.to_string()];
+        }
         match self {
             Frames::None => vec![],
             Frames::One(a) | Frames::Disp(a) => vec![a.to_string()],
             Frames::Pair(a, b) => vec![a.to_string(), b.to_string()],
+            Frames::Transposed(..) => vec![],
         }
     }
     /// The outer frame: {a} of X_ab, v_a, or the displacement's frame.
     pub fn outer(&self) -> Option<&Frame> {
         match self {
-            Frames::None => None,
+            Frames::None | Frames::Transposed(..) => None,
             Frames::One(a) | Frames::Disp(a) | Frames::Pair(a, _) => Some(a),
         }
     }
@@ -306,6 +399,7 @@ impl Frames {
     pub fn swapped(&self) -> Frames {
         match self {
             Frames::Pair(a, b) => Frames::Pair(b.clone(), a.clone()),
+            Frames::Transposed(a, b) => Frames::Transposed(b.clone(), a.clone()),
             other => other.clone(),
         }
     }
@@ -314,11 +408,15 @@ impl Frames {
 impl fmt::Display for Frames {
     /// `{a}`, `{a}←{b}`, `displacement in {a}`; empty when untagged.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if let Some(a) = self.displacement_frame() {
+            return write!(f, "displacement in {{{a}}}");
+        }
         match self {
             Frames::None => Ok(()),
             Frames::One(a) => write!(f, "{{{a}}}"),
             Frames::Pair(a, b) => write!(f, "{{{a}}}←{{{b}}}"),
             Frames::Disp(a) => write!(f, "displacement in {{{a}}}"),
+            Frames::Transposed(a, b) => write!(f, "({{{a}}}←{{{b}}})ᵀ"),
         }
     }
 }
@@ -328,21 +426,36 @@ impl fmt::Display for Frames {
 pub struct Ty {
     pub kind: Kind,
     pub frames: Frames,
+    /// For a plain matrix that is a group element times an element of its
+    /// Lie algebra, g·X or X·g (`T_sb [V_b]` = Ṫ_sb, (3.75)), the algebra:
+    /// conjugation g·X·g⁻¹ lands back in it when the frames close on one
+    /// ([V_s] = T [V_b] T⁻¹, (3.77); Prop. 3.5). Known without numbers only.
+    pub algebra: Option<Kind>,
 }
 
 impl Ty {
     pub fn new(kind: Kind, frames: Frames) -> Ty {
-        Ty { kind, frames }
+        Ty {
+            kind,
+            frames,
+            algebra: None,
+        }
     }
     /// An untagged value of `kind`.
     pub fn plain(kind: Kind) -> Ty {
-        Ty {
-            kind,
-            frames: Frames::None,
-        }
+        Ty::new(kind, Frames::None)
     }
     pub fn scalar() -> Ty {
         Ty::plain(Kind::Scalar)
+    }
+    /// The type of a multiple `c x` or `-x` ([`Kind::scaled`]): the same
+    /// frames, and a g·X stays one.
+    pub fn scaled(&self) -> Ty {
+        Ty {
+            kind: self.kind.scaled(),
+            frames: self.frames.clone(),
+            algebra: self.algebra.clone(),
+        }
     }
 }
 

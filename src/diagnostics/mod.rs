@@ -6,7 +6,7 @@
 //! the operator) and an optional `help:` line. Rendering to text (with
 //! carets) and JSON lives in [`render`].
 
-use crate::syntax::ast::Span;
+use crate::span::Span;
 
 pub mod render;
 pub mod suggest;

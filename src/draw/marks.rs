@@ -51,7 +51,7 @@ pub struct Scene {
 /// The frame a value is drawn in, and the frame it draws (for `T_sa`: s, a).
 fn frame_names(f: &Frames) -> (Option<String>, Option<String>) {
     match f {
-        Frames::None => (None, None),
+        Frames::None | Frames::Transposed(..) => (None, None),
         Frames::One(a) | Frames::Disp(a) => (Some(a.to_string()), None),
         Frames::Pair(a, b) => (Some(a.to_string()), Some(b.to_string())),
     }

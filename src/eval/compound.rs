@@ -18,6 +18,11 @@ impl Interp<'_> {
         args: &[IndexArg],
         span: Span,
     ) -> Result<Typed, Diagnostic> {
+        if let [IndexArg::Expr(arg)] = args
+            && let Some(product) = self.bracket_index(base, arg, span)?
+        {
+            return Ok(product);
+        }
         let t = self.expr(base)?;
         let mut sels = Vec::new();
         for a in args {
@@ -134,10 +139,9 @@ impl Interp<'_> {
         }
         let rows: Vec<&Vec<Expr>> = rows.iter().filter(|r| !r.is_empty()).collect();
         let mut trows = Vec::with_capacity(rows.len());
-        for row in rows {
-            let mut tr = Vec::with_capacity(row.len());
-            for e in row {
-                let t = self.expr(e)?;
+        for row in &rows {
+            let tr = self.bracket_row(row)?;
+            for (t, e) in tr.iter().zip(row.iter()) {
                 if t.ty.kind.shape().is_none() {
                     return Err(Diagnostic::error(
                         ErrorKind::Type,
@@ -145,7 +149,6 @@ impl Interp<'_> {
                         format!("a {} cannot go inside [ ]", t.ty.kind),
                     ));
                 }
-                tr.push(t);
             }
             trows.push(tr);
         }
@@ -180,7 +183,7 @@ impl Interp<'_> {
                 val: Some(Value::Sym(sym)),
             });
         }
-        let vrows: Vec<Vec<Value>> = trows
+        let mut vrows: Vec<Vec<Value>> = trows
             .into_iter()
             .map(|r| {
                 r.into_iter()
@@ -188,6 +191,7 @@ impl Interp<'_> {
                     .collect()
             })
             .collect();
+        super::notation::zero_blocks(&rows, &mut vrows);
         let v = ops::brackets(&vrows).map_err(|m| Diagnostic::error(ErrorKind::Type, span, m))?;
         let val = Some(v);
         Ok(Typed {

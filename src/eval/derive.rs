@@ -4,6 +4,7 @@
 
 use std::collections::{HashMap, VecDeque};
 
+use super::graph::FrameGraph;
 use super::interp::{Interp, Typed};
 use super::ops;
 use super::value::Value;
@@ -38,35 +39,30 @@ impl Interp<'_> {
         // The target itself is left out, so that a second `derive T_ce`
         // shows the chain again rather than `T_ce = T_ce`; it is the
         // answer only when nothing else connects its frames.
-        for name in self.env.names() {
-            if name == "ans" || *name == target.name {
-                continue;
-            }
-            let b = &self.env.vars[name];
-            let fits = match b.ty.kind {
+        for e in FrameGraph::of(self.env).edges {
+            let fits = match e.kind {
                 Kind::SE3 | Kind::SE2 => !rotations,
                 Kind::SO3 | Kind::SO2 => rotations,
                 _ => false,
             };
-            if let (true, Frames::Pair(a, c)) = (fits, &b.ty.frames) {
-                if a.moved || c.moved {
-                    continue;
-                }
-                edges.entry(a.name.clone()).or_default().push((
-                    c.name.clone(),
-                    Step {
-                        name: name.clone(),
-                        inverted: false,
-                    },
-                ));
-                edges.entry(c.name.clone()).or_default().push((
-                    a.name.clone(),
-                    Step {
-                        name: name.clone(),
-                        inverted: true,
-                    },
-                ));
+            if !fits || e.name == target.name {
+                continue;
             }
+            let (from_frame, to_frame) = (e.from.to_string(), e.to.to_string());
+            edges.entry(from_frame.clone()).or_default().push((
+                to_frame.clone(),
+                Step {
+                    name: e.name.clone(),
+                    inverted: false,
+                },
+            ));
+            edges.entry(to_frame).or_default().push((
+                from_frame,
+                Step {
+                    name: e.name,
+                    inverted: true,
+                },
+            ));
         }
         let itself = self.env.get(&target.name).map(|_| {
             vec![Step {

@@ -25,7 +25,7 @@ pub(super) fn to_sym(v: &Value) -> Sym {
         Value::Sym(s) => s.clone(),
         other => Sym::Const(
             Box::new(other.clone()),
-            crate::output::text::inline(other, 4),
+            crate::values::format::inline(other, 4),
         ),
     }
 }
@@ -196,6 +196,8 @@ impl Interp<'_> {
                     val: self.running().then(|| Value::scalar(std::f64::consts::E)),
                 });
             }
+            // The identity of the size its context needs (LANGUAGE.md §4).
+            "I" => return self.identity(span),
             _ => {}
         }
         if builtins::lookup(name).is_some() || self.env.fns.contains_key(name) {
@@ -207,6 +209,18 @@ impl Interp<'_> {
             .with_help(format!("call it: {name}(...)")));
         }
         let mut d = Diagnostic::error(ErrorKind::Name, span, format!("unknown name '{name}'"));
+        // T_{0,1} unknown but T_01 known: the same frames spelled otherwise.
+        let frames = crate::syntax::ident::name_frames(name);
+        if frames != crate::syntax::ident::NameFrames::None {
+            let base = crate::syntax::ident::base_name(name);
+            let same = |k: &&String| {
+                crate::syntax::ident::base_name(k) == base
+                    && crate::syntax::ident::name_frames(k) == frames
+            };
+            if let Some(other) = self.env.vars.keys().filter(same).min() {
+                return Err(d.with_help(format!("{other} names the same frames: use {other}")));
+            }
+        }
         // T_cb unknown but T_bc known: the inverse is one step away.
         if let crate::syntax::ident::NameFrames::Pair(a, b) =
             crate::syntax::ident::name_frames(name)
@@ -241,8 +255,15 @@ impl Interp<'_> {
         op_span: Span,
         span: Span,
     ) -> Result<Typed, Diagnostic> {
-        let l = self.expr(lhs)?;
-        let r = self.expr(rhs)?;
+        if op == BinOp::Pow {
+            if let Some(t) = self.e_power(lhs, rhs, span) {
+                return t;
+            }
+            if let Some(t) = self.bracket_power(lhs, rhs, span)? {
+                return Ok(t);
+            }
+        }
+        let (l, r) = self.operands(op, lhs, rhs)?;
         for (t, side) in [(&l, lhs), (&r, rhs)] {
             if let Some(help) = super::list::elementwise_help(&t.ty.kind) {
                 return Err(Diagnostic::error(
@@ -306,7 +327,7 @@ impl Interp<'_> {
         })
     }
 
-    fn call(
+    pub(super) fn call(
         &mut self,
         name: &str,
         name_span: Span,
@@ -347,6 +368,13 @@ impl Interp<'_> {
             }
             typed.push(self.expr(a)?);
         }
+        // `rot_zyx(euler_zyx(R))`: one tuple as the arguments.
+        let spans: Vec<Span> = if args.len() == 1 {
+            typed = self.spread(b, typed);
+            vec![args[0].span; typed.len()]
+        } else {
+            args.iter().map(|a| a.span).collect()
+        };
         let tys: Vec<Ty> = typed.iter().map(|t| t.ty.clone()).collect();
         let ty = match b.check(&tys) {
             Ok(ty) => ty,
@@ -366,6 +394,15 @@ impl Interp<'_> {
                 } else {
                     return Err(d);
                 }
+            }
+        };
+        // A vector or Lie-algebra result is in one frame (§6).
+        let ty = match rules::settle(&ty, b.name) {
+            Ok(ty) => ty,
+            Err(err) => {
+                let at = args.first().map_or(span, |a| a.span);
+                self.rule_failure(err, span, Some(at), None, None)?;
+                strip(&ty)
             }
         };
         if !self.running() {
@@ -395,7 +432,7 @@ impl Interp<'_> {
             name: b.name,
             signature: b.signature,
             vals,
-            spans: args.iter().map(|a| a.span).collect(),
+            spans,
             call_span: span,
             warnings: &mut self.warnings,
         };
@@ -414,7 +451,22 @@ impl Interp<'_> {
         args: &[Expr],
         span: Span,
     ) -> Result<Typed, Diagnostic> {
-        if args.len() != f.params.len() {
+        // `f((a, b))` with f(x, y): the tuple's parts are the arguments.
+        let mut spread = None;
+        if let [one] = args
+            && f.params.len() >= 2
+        {
+            let warned = self.warnings.len();
+            let t = self.expr(one)?;
+            let parts = super::notation::parts(&t);
+            if parts.len() == f.params.len() {
+                spread = Some(parts);
+            } else {
+                // Evaluated again below as the one argument.
+                self.warnings.truncate(warned);
+            }
+        }
+        if spread.is_none() && args.len() != f.params.len() {
             return Err(Diagnostic::error(
                 ErrorKind::Arity,
                 span,
@@ -434,9 +486,14 @@ impl Interp<'_> {
             ));
         }
         let mut bound = Vec::new();
-        for (p, a) in f.params.iter().zip(args) {
-            let t = self.expr(a)?;
-            bound.push((p.clone(), t));
+        match spread {
+            Some(parts) => bound.extend(f.params.iter().cloned().zip(parts)),
+            None => {
+                for (p, a) in f.params.iter().zip(args) {
+                    let t = self.expr(a)?;
+                    bound.push((p.clone(), t));
+                }
+            }
         }
         let saved: Vec<(String, Option<super::env::Binding>)> = f
             .params

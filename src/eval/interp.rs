@@ -45,6 +45,8 @@ pub struct Interp<'a> {
     /// Warnings of the current statement.
     pub warnings: Vec<Diagnostic>,
     pub(super) depth: usize,
+    /// The size an unbound `I` takes here (from the operand beside it).
+    pub(super) eye: Option<usize>,
 }
 
 /// How deep user functions may call each other.
@@ -59,6 +61,7 @@ impl<'a> Interp<'a> {
             frames,
             warnings: Vec::new(),
             depth: 0,
+            eye: None,
         }
     }
 
@@ -132,14 +135,16 @@ impl<'a> Interp<'a> {
         };
         match &s.kind {
             StmtKind::Expr(e) => {
-                let t = self.expr(e)?;
+                let mut t = self.expr(e)?;
+                t.ty = crate::check::rules::settled(&t.ty);
                 if t.ty.kind != Kind::Function {
                     self.bind_value("ans", &t);
                 }
                 Ok(out(vec![], t))
             }
             StmtKind::Assign { target, value } => {
-                let t = self.expr(value)?;
+                let mut t = self.expr(value)?;
+                t.ty = crate::check::rules::settled(&t.ty);
                 let t = self.bind_checked(&target.name, t, target.span, value.span)?;
                 self.bind_value(&target.name, &t);
                 Ok(out(vec![target.name.clone()], t))
@@ -244,21 +249,111 @@ impl<'a> Interp<'a> {
         value_span: Span,
     ) -> Result<Typed, Diagnostic> {
         let ty = match bind::bind(name, &t.ty) {
-            Ok(ty) => ty,
+            Ok(b) => {
+                if let Some(w) = b.warning {
+                    self.rule_warning(w, value_span, name_span);
+                }
+                b.ty
+            }
             Err(e) => {
                 self.rule_failure(e, value_span, Some(name_span), Some(value_span), None)?;
-                let claim = bind::claimed_frames(name, &t.ty.kind);
-                Ty::new(bind::named_kind(name, &t.ty.kind), claim)
+                let kind = bind::named_kind(name, &t.ty.kind);
+                let kind = bind::named_group(name, &kind).unwrap_or(kind);
+                let claim = bind::claimed_frames(name, &kind);
+                Ty::new(kind, claim)
             }
         };
-        let val = t.val.map(|v| match v {
-            Value::Num { m, .. } if ty.kind != Kind::Unknown => Value::Num {
-                kind: ty.kind.clone(),
-                m,
-            },
+        let val = match t.val {
+            Some(Value::Num { m, kind }) if ty.kind != Kind::Unknown => {
+                let m = if ty.kind.is_group() && kind != ty.kind {
+                    self.group_at_binding(name, &ty.kind, m, value_span)?
+                } else {
+                    m
+                };
+                Some(Value::Num {
+                    kind: ty.kind.clone(),
+                    m,
+                })
+            }
             other => other,
-        });
+        };
         Ok(Typed { ty, val })
+    }
+
+    /// A warning from a binding rule (the name renames a moved frame).
+    fn rule_warning(&mut self, e: RuleError, value_span: Span, name_span: Span) {
+        if self.frames == FrameMode::Off {
+            return;
+        }
+        let kind = e.kind.unwrap_or(ErrorKind::Frame);
+        let mut d = Diagnostic::warning(kind, name_span, e.message);
+        if !e.rhs.is_empty() {
+            d = d.with_label(value_span, e.rhs);
+        }
+        if let Some(h) = e.help {
+            d = d.with_help(h);
+        }
+        self.warnings.push(d);
+    }
+
+    /// `R_sb = M`, `T_ab = M`: the name asserts the group (LANGUAGE.md §5).
+    /// Within 1e-9 the matrix is taken as it is; within 1e-2 it is projected
+    /// (ProjectToSO3/SE3, §3.6) with a warning giving the distance; farther
+    /// is a domain error giving the distance (DistanceToSO3/SE3).
+    fn group_at_binding(
+        &mut self,
+        name: &str,
+        kind: &Kind,
+        m: nalgebra::DMatrix<f64>,
+        span: Span,
+    ) -> Result<nalgebra::DMatrix<f64>, Diagnostic> {
+        use super::convert::{Group, Membership, membership};
+        let group = match kind {
+            Kind::SO3 => Group::SO3,
+            Kind::SE3 => Group::SE3,
+            Kind::SO2 => Group::SO2,
+            Kind::SE2 => Group::SE2,
+            _ => return Ok(m),
+        };
+        if m.shape() != (group.size(), group.size()) {
+            return Ok(m);
+        }
+        let measure = format!("DistanceTo{}", group.name().replace(['(', ')'], ""));
+        let fmt = |d: f64| crate::output::number::fmt_num(d, 4);
+        match membership(&m, group) {
+            Membership::Exact(x) => Ok(x),
+            Membership::Projected(p, d) => {
+                self.warnings.push(
+                    Diagnostic::warning(
+                        ErrorKind::Domain,
+                        span,
+                        format!(
+                            "{name} names {}, and the matrix is {:.2e} from {} ({measure}); projected to the nearest element",
+                            group.noun(),
+                            d,
+                            group.name()
+                        ),
+                    )
+                    .with_help("book values are rounded to 3 digits: within 1e-2 the name's group is assumed (ProjectTo, §3.6)"),
+                );
+                Ok(p)
+            }
+            Membership::Outside { distance, .. } => Err(Diagnostic::error(
+                ErrorKind::Domain,
+                span,
+                format!(
+                    "{name} names {}, but the matrix is {} from {} ({measure})",
+                    group.noun(),
+                    if distance.is_finite() { fmt(distance) } else { "infinitely far".into() },
+                    group.name()
+                ),
+            )
+            .with_help(format!(
+                "a matrix within 1e-2 of {} is projected onto it; check the entries, or bind it to a name that is not a rotation or transform (M{})",
+                group.name(),
+                name.strip_prefix(crate::syntax::ident::base_name(name)).unwrap_or("")
+            ))),
+        }
     }
 
     /// The parts of a tuple (or the entries of a vector) for destructuring.

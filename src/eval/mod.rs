@@ -3,13 +3,13 @@
 //! [`crate::check`]'s rules and computing values through [`crate::lie`].
 
 mod compound;
-pub mod convert;
 mod derive;
 pub mod env;
 mod expr;
+pub mod graph;
 pub mod interp;
 pub mod list;
-pub mod ops;
+mod notation;
 mod substitute;
-pub mod symbolic;
-pub mod value;
+
+pub use crate::values::{convert, ops, symbolic, value};

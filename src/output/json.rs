@@ -6,7 +6,7 @@ use serde_json::{Value as J, json};
 use crate::check::ty::Kind;
 use crate::diagnostics::Diagnostic;
 use crate::eval::interp::Outcome;
-use crate::eval::value::Value;
+use crate::values::value::Value;
 
 fn number(x: f64) -> J {
     if x.is_finite() {
@@ -39,7 +39,6 @@ pub fn value(v: &Value) -> J {
         Value::Bool(b) => json!(b),
         Value::Tuple(vs) => J::Array(vs.iter().map(value).collect()),
         Value::Mech(m) => m.to_json(),
-        Value::Func(f) => json!(format!("{}({})", f.name, f.params.join(", "))),
         Value::Sym(s) => json!(s.to_string()),
         Value::List(vs) => J::Array(vs.iter().map(value).collect()),
         Value::Str(t) => json!(t.as_ref()),

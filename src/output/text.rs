@@ -2,112 +2,16 @@
 //! parse back (`[1, 0; 0, 1]` with one row per line), vectors as the book
 //! writes them `(1, 2, 3)`, and the type and frames after the value.
 
-use super::number::fmt_num;
 use crate::check::ty::{Kind, Ty};
 use crate::eval::interp::Outcome;
-use crate::eval::value::Value;
-
-/// How numbers print: `digits` decimals (trailing zeros trimmed), or with
-/// `exact`, a closed form such as `1/√2` or `π/6` where one is within
-/// 1e-12 (the REPL's `:exact`). A plain `usize` converts to decimals only.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Style {
-    /// Decimals.
-    pub digits: usize,
-    /// Print simple closed forms (`√3/2`, `-π/2`) instead of decimals.
-    pub exact: bool,
-}
-
-impl Style {
-    /// One number in this style.
-    pub fn num(self, x: f64) -> String {
-        self.exact
-            .then(|| super::exact::closed_form(x))
-            .flatten()
-            .unwrap_or_else(|| fmt_num(x, self.digits))
-    }
-}
-
-impl From<usize> for Style {
-    fn from(digits: usize) -> Style {
-        Style {
-            digits,
-            exact: false,
-        }
-    }
-}
-
-/// A value on one line: `2`, `(1, 2, 3)`, `[1, 2; 3, 4]`.
-pub fn inline(v: &Value, style: impl Into<Style>) -> String {
-    let style = style.into();
-    match v {
-        Value::Num { m, .. } if m.is_empty() => format!("zeros({}, {})", m.nrows(), m.ncols()),
-        Value::Num { m, .. } if m.len() == 1 && m.ncols() == 1 && m.nrows() == 1 => style.num(m[0]),
-        Value::Num { m, .. } if m.ncols() == 1 => {
-            let xs: Vec<String> = m.iter().map(|x| style.num(*x)).collect();
-            format!("({})", xs.join(", "))
-        }
-        // A row: `[a, b]` would read back as a column, so print its transpose.
-        Value::Num { m, .. } if m.nrows() == 1 => {
-            let xs: Vec<String> = m.iter().map(|x| style.num(*x)).collect();
-            format!("({}).T", xs.join(", "))
-        }
-        Value::Num { m, .. } => {
-            let rows: Vec<String> = m
-                .row_iter()
-                .map(|r| {
-                    r.iter()
-                        .map(|x| style.num(*x))
-                        .collect::<Vec<_>>()
-                        .join(", ")
-                })
-                .collect();
-            format!("[{}]", rows.join("; "))
-        }
-        Value::Bool(b) => b.to_string(),
-        Value::Tuple(vs) => {
-            let xs: Vec<String> = vs.iter().map(|x| inline(x, style)).collect();
-            format!("({})", xs.join(", "))
-        }
-        Value::Mech(m) => format!("mech < {} >", m.joints_text()),
-        Value::Func(f) => format!("{}({})", f.name, f.params.join(", ")),
-        Value::Sym(s) => s.to_string(),
-        Value::List(vs) => {
-            let shown = |v: &Value| inline(v, style);
-            let xs: Vec<String> = if vs.len() > LIST_INLINE {
-                let mut xs: Vec<String> = vs[..LIST_HEAD].iter().map(shown).collect();
-                xs.push("…".into());
-                xs.extend(vs[vs.len() - 2..].iter().map(shown));
-                xs
-            } else {
-                vs.iter().map(shown).collect()
-            };
-            format!("[{}]", xs.join(", "))
-        }
-        Value::Str(t) => format!("{t:?}"),
-        Value::Picture(p) => picture(p),
-    }
-}
-
-/// Lists longer than this print their first [`LIST_HEAD`] and last two
-/// items.
-const LIST_INLINE: usize = 12;
-const LIST_HEAD: usize = 8;
-
-/// `picture: 5 frames and 1 screw axis in {s} → pic.svg`.
-fn picture(p: &crate::eval::value::Picture) -> String {
-    if p.is_view_only() {
-        return p.summary.clone();
-    }
-    match &p.file {
-        Some(f) => format!("picture: {} → {f}", p.summary),
-        None => format!("picture: {}", p.summary),
-    }
-}
+use crate::values::format::write_inline;
+pub use crate::values::format::{Style, inline};
+use crate::values::value::Value;
+use std::fmt::Write;
 
 /// The label of a list: `list of 5 SE(3) {s}←{b'}`.
 fn list_label(ty: &Ty, vs: &[Value]) -> String {
-    let kind = crate::eval::value::common_kind(vs);
+    let kind = crate::values::value::common_kind(vs);
     let n = vs.len();
     let what = match kind {
         _ if n == 0 => "empty list".to_string(),
@@ -124,11 +28,12 @@ fn list_label(ty: &Ty, vs: &[Value]) -> String {
     }
 }
 
-/// A list whose items are matrices: one item per block, numbered.
+/// A list whose items are matrices: one item per block, numbered (the
+/// first three and the last two of more than twelve).
 fn list_block(prefix: &str, ty: &Ty, vs: &[Value], style: Style) -> String {
     let mut out = format!("{prefix}{}:", list_label(ty, vs));
     let numbered: Vec<(usize, &Value)> = vs.iter().enumerate().collect();
-    let shown: Vec<&(usize, &Value)> = if numbered.len() > LIST_INLINE {
+    let shown: Vec<&(usize, &Value)> = if numbered.len() > 12 {
         numbered[..3]
             .iter()
             .chain(numbered[numbered.len() - 2..].iter())
@@ -159,100 +64,153 @@ fn list_block(prefix: &str, ty: &Ty, vs: &[Value], style: Style) -> String {
 /// A matrix in aligned columns, decimal points lined up, one row per line;
 /// `indent` is the column where the `[` stands.
 pub fn matrix_block(m: &nalgebra::DMatrix<f64>, style: impl Into<Style>, indent: usize) -> String {
-    let style = style.into();
-    let cells: Vec<Vec<String>> = m
-        .row_iter()
-        .map(|r| r.iter().map(|x| style.num(*x)).collect())
-        .collect();
-    let ncols = m.ncols();
-    let split = |s: &str| -> (String, String) {
-        match s.find(['.', 'e']) {
-            Some(i) => (s[..i].to_string(), s[i..].to_string()),
-            None => (s.to_string(), String::new()),
-        }
-    };
+    let mut out = String::new();
+    write_matrix_block(&mut out, m, style.into(), indent);
+    out
+}
+
+/// Width of a cell's text in characters (`√`, `π` are one each).
+fn width(s: &str) -> usize {
+    if s.is_ascii() {
+        s.len()
+    } else {
+        s.chars().count()
+    }
+}
+
+/// [`matrix_block`], appended to `out`: the cells are written once into
+/// one buffer, then aligned.
+fn write_matrix_block(out: &mut String, m: &nalgebra::DMatrix<f64>, style: Style, indent: usize) {
+    let (nrows, ncols) = m.shape();
+    // Each cell: where it starts in `buf`, where its fraction (`.` or `e`)
+    // starts, and where it ends.
+    let mut buf = String::with_capacity(8 * nrows * ncols);
+    let mut cells: Vec<(usize, usize, usize)> = Vec::with_capacity(nrows * ncols);
     let mut int_w = vec![0; ncols];
     let mut frac_w = vec![0; ncols];
-    for row in &cells {
-        for (j, c) in row.iter().enumerate() {
-            let (i, f) = split(c);
-            int_w[j] = int_w[j].max(i.chars().count());
-            frac_w[j] = frac_w[j].max(f.chars().count());
+    for r in 0..nrows {
+        for (j, (iw, fw)) in int_w.iter_mut().zip(frac_w.iter_mut()).enumerate() {
+            let start = buf.len();
+            style.write(&mut buf, m[(r, j)]);
+            let split = buf.as_bytes()[start..]
+                .iter()
+                .position(|&b| b == b'.' || b == b'e')
+                .map_or(buf.len(), |k| start + k);
+            cells.push((start, split, buf.len()));
+            *iw = (*iw).max(width(&buf[start..split]));
+            *fw = (*fw).max(width(&buf[split..]));
         }
     }
-    let mut out = String::from("[");
-    for (ri, row) in cells.iter().enumerate() {
-        if ri > 0 {
-            out.push('\n');
-            out.push_str(&" ".repeat(indent + 1));
+    out.reserve(buf.len() + nrows * (2 * ncols + indent + 2) + 2);
+    out.push('[');
+    let pad = |out: &mut String, mut n: usize| {
+        const SPACES: &str = "                                ";
+        while n > 0 {
+            let k = n.min(SPACES.len());
+            out.push_str(&SPACES[..k]);
+            n -= k;
         }
-        let mut line = String::new();
-        for (j, c) in row.iter().enumerate() {
-            let (i, f) = split(c);
-            line.push_str(&" ".repeat(int_w[j] - i.chars().count()));
-            line.push_str(&i);
-            line.push_str(&f);
+    };
+    for r in 0..nrows {
+        if r > 0 {
+            out.push('\n');
+            pad(out, indent + 1);
+        }
+        for j in 0..ncols {
+            let (start, split, end) = cells[r * ncols + j];
+            let (int, frac) = (&buf[start..split], &buf[split..end]);
+            pad(out, int_w[j] - width(int));
+            out.push_str(int);
+            out.push_str(frac);
             if j + 1 < ncols {
-                line.push(',');
-                line.push_str(&" ".repeat(frac_w[j] - f.chars().count() + 1));
+                out.push(',');
+                pad(out, frac_w[j] - width(frac) + 1);
             }
         }
-        out.push_str(&line);
     }
     out.push(']');
-    out
 }
 
 /// The type label: `SE(3) {a}←{c}`; empty for plain numbers and bools.
 pub fn type_label(ty: &Ty, val: Option<&Value>) -> String {
-    let kind = val.map_or_else(|| ty.kind.clone(), Value::kind);
-    let kind = if matches!(val, Some(Value::Sym(_))) {
-        ty.kind.clone()
-    } else {
-        kind
+    let mut out = String::new();
+    write_type_label(&mut out, ty, val);
+    out
+}
+
+/// [`type_label`], appended to `out`; false when the label is empty.
+fn write_type_label(out: &mut String, ty: &Ty, val: Option<&Value>) -> bool {
+    let owned;
+    let kind = match val {
+        Some(Value::Num { kind, .. }) => kind,
+        None | Some(Value::Sym(_)) => &ty.kind,
+        Some(v) => {
+            owned = v.kind();
+            &owned
+        }
     };
     match kind {
-        Kind::Scalar | Kind::Bool if ty.frames.is_none() => String::new(),
-        Kind::Mechanism | Kind::Function | Kind::Picture | Kind::Text => String::new(),
-        Kind::Tuple(_) => String::new(),
+        Kind::Scalar | Kind::Bool if ty.frames.is_none() => false,
+        Kind::Mechanism | Kind::Function | Kind::Picture | Kind::Text => false,
+        Kind::Tuple(_) => false,
+        // As `Ty`'s Display: the kind, then the frames if any.
+        k if ty.frames.is_none() => {
+            let _ = write!(out, "{k}");
+            true
+        }
         k => {
-            let t = Ty::new(k, ty.frames.clone());
-            t.to_string()
+            let _ = write!(out, "{k} {}", ty.frames);
+            true
         }
     }
 }
 
 /// One value with its label, after `prefix` (e.g. `T_ac = `).
 pub fn show_value(prefix: &str, ty: &Ty, v: &Value, style: impl Into<Style>) -> String {
-    let style = style.into();
-    let label = type_label(ty, Some(v));
-    let tail = if label.is_empty() {
-        String::new()
-    } else {
-        format!("  : {label}")
-    };
+    let mut out = String::new();
+    write_value(&mut out, prefix, ty, v, style.into());
+    out
+}
+
+/// [`show_value`], appended to `out`.
+fn write_value(out: &mut String, prefix: &str, ty: &Ty, v: &Value, style: Style) {
     match v {
         Value::List(vs)
             if vs
                 .iter()
                 .any(|x| matches!(x, Value::Num { m, .. } if m.ncols() > 1 && m.nrows() > 1)) =>
         {
-            list_block(prefix, ty, vs, style)
+            out.push_str(&list_block(prefix, ty, vs, style));
+            return;
         }
-        Value::List(vs) => format!("{prefix}{}  : {}", inline(v, style), list_label(ty, vs)),
+        Value::List(vs) => {
+            out.push_str(prefix);
+            write_inline(out, v, style);
+            out.push_str("  : ");
+            out.push_str(&list_label(ty, vs));
+            return;
+        }
         Value::Num { m, .. } if m.ncols() > 1 && m.nrows() > 1 => {
-            let indent = prefix.chars().count();
-            format!("{prefix}{}{tail}", matrix_block(m, style, indent))
+            out.push_str(prefix);
+            write_matrix_block(out, m, style, width(prefix));
         }
         Value::Mech(mech) => {
-            let body = mech.to_string();
-            if prefix.is_empty() {
-                body
-            } else {
-                format!("{}\n{body}", prefix.trim_end())
+            if !prefix.is_empty() {
+                out.push_str(prefix.trim_end());
+                out.push('\n');
             }
+            let _ = write!(out, "{mech}");
+            return;
         }
-        _ => format!("{prefix}{}{tail}", inline(v, style)),
+        _ => {
+            out.push_str(prefix);
+            write_inline(out, v, style);
+        }
+    }
+    let at = out.len();
+    out.push_str("  : ");
+    if !write_type_label(out, ty, Some(v)) {
+        out.truncate(at);
     }
 }
 
@@ -289,8 +247,13 @@ pub fn show_outcome(o: &Outcome, style: impl Into<Style>) -> String {
                 .collect();
             out.push_str(&parts.join("\n"));
         }
-        (0, _) => out.push_str(&show_value("", &o.ty, v, style)),
-        (1, _) => out.push_str(&show_value(&format!("{} = ", o.names[0]), &o.ty, v, style)),
+        (0, _) => write_value(&mut out, "", &o.ty, v, style),
+        (1, _) => {
+            let mut prefix = String::with_capacity(o.names[0].len() + 3);
+            prefix.push_str(&o.names[0]);
+            prefix.push_str(" = ");
+            write_value(&mut out, &prefix, &o.ty, v, style);
+        }
         (_, Value::Tuple(items)) => {
             let parts: Vec<String> = o
                 .names
@@ -308,7 +271,7 @@ pub fn show_outcome(o: &Outcome, style: impl Into<Style>) -> String {
                 .collect();
             out.push_str(&parts.join("\n"));
         }
-        _ => out.push_str(&show_value("", &o.ty, v, style)),
+        _ => write_value(&mut out, "", &o.ty, v, style),
     }
     out
 }

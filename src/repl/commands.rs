@@ -3,12 +3,11 @@
 //! — a failing statement binds nothing — and `:` commands (LANGUAGE.md §11)
 //! inspect or change it.
 
-use std::collections::BTreeMap;
-
 use super::help;
-use crate::check::ty::{Frames, Ty};
+use crate::check::ty::Ty;
 use crate::diagnostics::suggest::did_you_mean;
 use crate::eval::env::{Env, FrameMode, Mode};
+use crate::eval::graph::FrameGraph;
 use crate::eval::value::Value;
 use crate::output::text;
 use crate::session::Session;
@@ -212,7 +211,7 @@ pub fn vars(env: &Env, style: text::Style) -> String {
             row.push_str("  (given)");
         } else if let Some(v) = &b.val {
             let shown = text::inline(v, style);
-            if shown.chars().count() <= 48 && !matches!(v, Value::Func(_)) {
+            if shown.chars().count() <= 48 {
                 row.push_str(&format!(" = {shown}"));
             }
         }
@@ -248,93 +247,23 @@ fn frames(session: &mut Session, arg: &str) -> Reply {
     }
 }
 
-/// A component of the frame graph: its frames, its edges (frame pair →
-/// names of the transforms joining them) and the quantities per frame.
-#[derive(Default)]
-struct Component {
-    frames: Vec<String>,
-    edges: BTreeMap<(String, String), Vec<String>>,
-    quantities: BTreeMap<String, Vec<String>>,
-}
-
 /// `:frames`: which frames the known rotations and transforms connect,
 /// one connected component at a time, plus the vectors expressed in each
-/// frame. `ans` is left out (it repeats a named value).
+/// frame (the session's [`FrameGraph`]).
 pub fn frame_graph(env: &Env, mode: FrameMode) -> String {
-    let mut edges: Vec<(String, String, String)> = Vec::new();
-    let mut singles: Vec<(String, String)> = Vec::new();
-    for name in env.names() {
-        if name == "ans" {
-            continue;
-        }
-        let b = &env.vars[name];
-        match &b.ty.frames {
-            Frames::Pair(a, c) if a != c => {
-                edges.push((a.to_string(), c.to_string(), name.clone()));
-            }
-            Frames::Pair(a, _) => singles.push((a.to_string(), name.clone())),
-            Frames::One(a) | Frames::Disp(a) => singles.push((a.to_string(), name.clone())),
-            _ => {}
-        }
-    }
-    let mut all: Vec<String> = edges
-        .iter()
-        .flat_map(|(a, c, _)| [a.clone(), c.clone()])
-        .chain(singles.iter().map(|(a, _)| a.clone()))
-        .collect();
-    all.sort();
-    all.dedup();
-    if all.is_empty() {
+    let graph = FrameGraph::of(env);
+    let comps = graph.components();
+    if comps.is_empty() {
         return format!(
             "no framed values yet (name them like T_ab = …, p_s = …)\nframe checking: {}",
             mode.as_str()
         );
     }
-    // Union-find over frame indices.
-    let index = |f: &str| all.binary_search_by(|x| x.as_str().cmp(f)).unwrap_or(0);
-    let mut parent: Vec<usize> = (0..all.len()).collect();
-    fn root(parent: &mut [usize], mut i: usize) -> usize {
-        while parent[i] != i {
-            parent[i] = parent[parent[i]];
-            i = parent[i];
-        }
-        i
-    }
-    for (a, c, _) in &edges {
-        let (ra, rc) = (root(&mut parent, index(a)), root(&mut parent, index(c)));
-        parent[ra.max(rc)] = ra.min(rc);
-    }
-    let mut comps: BTreeMap<usize, Component> = BTreeMap::new();
-    for (i, f) in all.iter().enumerate() {
-        let r = root(&mut parent, i);
-        comps.entry(r).or_default().frames.push(f.clone());
-    }
-    for (a, c, name) in edges {
-        let r = root(&mut parent, index(&a));
-        let comp = comps.entry(r).or_default();
-        // One line per pair of frames, in the direction first seen.
-        let key = if comp.edges.contains_key(&(c.clone(), a.clone())) {
-            (c, a)
-        } else {
-            (a, c)
-        };
-        comp.edges.entry(key).or_default().push(name);
-    }
-    for (a, name) in singles {
-        let r = root(&mut parent, index(&a));
-        comps
-            .entry(r)
-            .or_default()
-            .quantities
-            .entry(a)
-            .or_default()
-            .push(name);
-    }
     let mut out = String::new();
-    for comp in comps.values() {
+    for comp in &comps {
         let braced: Vec<String> = comp.frames.iter().map(|f| format!("{{{f}}}")).collect();
         out.push_str(&format!("frames {}\n", braced.join(", ")));
-        for ((a, c), names) in chain_order(comp) {
+        for ((a, c), names) in &comp.edges {
             out.push_str(&format!("  {{{a}}} — {{{c}}}  ({})\n", names.join(", ")));
         }
         for (f, names) in &comp.quantities {
@@ -343,44 +272,6 @@ pub fn frame_graph(env: &Env, mode: FrameMode) -> String {
     }
     out.push_str(&format!("frame checking: {}", mode.as_str()));
     out
-}
-
-/// The edges of a component in the order a walk from its root meets
-/// them: the root is the first frame that is never an inner frame (the
-/// space frame {s} of T_sb, T_sc), so chains read from the outside in.
-fn chain_order(comp: &Component) -> Vec<(&(String, String), &Vec<String>)> {
-    let inner: Vec<&String> = comp.edges.keys().map(|(_, c)| c).collect();
-    let root = comp
-        .frames
-        .iter()
-        .find(|f| !inner.contains(f))
-        .or(comp.frames.first());
-    let mut depth: BTreeMap<&str, usize> = BTreeMap::new();
-    let mut queue: std::collections::VecDeque<&str> =
-        root.map(String::as_str).into_iter().collect();
-    if let Some(r) = root {
-        depth.insert(r, 0);
-    }
-    while let Some(f) = queue.pop_front() {
-        let d = depth[f];
-        for (a, c) in comp.edges.keys() {
-            let next = if a == f {
-                c
-            } else if c == f {
-                a
-            } else {
-                continue;
-            };
-            if !depth.contains_key(next.as_str()) {
-                depth.insert(next, d + 1);
-                queue.push_back(next);
-            }
-        }
-    }
-    let at = |f: &String| depth.get(f.as_str()).copied().unwrap_or(usize::MAX);
-    let mut edges: Vec<_> = comp.edges.iter().collect();
-    edges.sort_by_key(|((a, c), _)| at(a).min(at(c)));
-    edges
 }
 
 /// `:load FILE`: runs a script into the session, stopping at its first
@@ -394,7 +285,7 @@ fn load(session: &mut Session, arg: &str) -> Reply {
         (Some(rest), Some(home)) => home.join(rest).to_string_lossy().into_owned(),
         _ => path.to_string(),
     };
-    let src = match crate::cli::read_source(&path) {
+    let src = match crate::session::read_source(&path) {
         Ok(s) => s,
         Err(msg) => return Reply::err(format!(":load: {msg}")),
     };

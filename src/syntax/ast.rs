@@ -6,25 +6,7 @@
 //! notation (juxtaposition, `[w]`, `30 deg`) is resolved by the parser into
 //! ordinary products, brackets and calls.
 
-/// A half-open byte range `start..end` into the source text.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
-pub struct Span {
-    pub start: usize,
-    pub end: usize,
-}
-
-impl Span {
-    pub fn new(start: usize, end: usize) -> Span {
-        Span { start, end }
-    }
-    /// The smallest span covering both.
-    pub fn join(self, other: Span) -> Span {
-        Span {
-            start: self.start.min(other.start),
-            end: self.end.max(other.end),
-        }
-    }
-}
+pub use crate::span::Span;
 
 /// A name as written, e.g. `T_sb`, `theta_1`, `T_{world,cam}`, `ω_s`.
 /// Frame subscripts are read from the text by [`super::ident::name_frames`].
@@ -156,6 +138,45 @@ pub enum ExprKind {
         body: Box<Expr>,
         vars: Vec<(Ident, Expr)>,
     },
+}
+
+/// `x²`, `R⁻¹`: the power `x ^ 2`, `R ^ -1` written as a superscript (the
+/// text `sup` at `span`), for both parsers.
+pub(crate) fn superscript_power(base: Expr, sup: &str, span: Span) -> ExprKind {
+    const DIGITS: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
+    let mut n = 0.0;
+    for c in sup.chars() {
+        if let Some(d) = DIGITS.iter().position(|&x| x == c) {
+            n = n * 10.0 + d as f64;
+        }
+    }
+    let minus = sup.starts_with('⁻');
+    let digits = Span::new(
+        span.start + if minus { '⁻'.len_utf8() } else { 0 },
+        span.end,
+    );
+    let number = Expr {
+        kind: ExprKind::Number(n),
+        span: digits,
+    };
+    let rhs = if minus {
+        Expr {
+            kind: ExprKind::Unary {
+                op: UnOp::Neg,
+                operand: Box::new(number),
+            },
+            span,
+        }
+    } else {
+        number
+    };
+    ExprKind::Binary {
+        op: BinOp::Pow,
+        lhs: Box::new(base),
+        rhs: Box::new(rhs),
+        op_span: span,
+        implicit: false,
+    }
 }
 
 /// The body of a `mech < ... >` literal, as written; validated by

@@ -4,10 +4,11 @@
 use pest::iterators::Pair;
 
 use super::ast::{Expr, ExprKind, Span};
-use super::parser::{Built, Cx, Rule, check_depth};
+use super::grammar::Rule;
+use super::parser::{Built, Cx, check_depth};
 use crate::diagnostics::{Diagnostic, ErrorKind};
 
-impl Cx<'_> {
+impl Cx {
     /// `[body for a in r1, b in r2]`: one expression before `for`.
     pub(super) fn comprehension(
         &self,

@@ -4,9 +4,17 @@
 //! into one or two frame names, each a letter followed by digits and/or
 //! primes: `T_sb` → ({s}, {b}), `T_sb'` → ({s}, {b'}), `T_b1c` → ({b1}, {c}),
 //! `p_b` → {b}, `ω_s` → {s}. Braces allow long names: `T_{world,cam}`,
-//! `p_{cam}`. An all-digit subscript (`theta_1`) is an index and a subscript
-//! of three or more letters (`x_max`) is part of a plain name: both give
-//! [`NameFrames::None`].
+//! `p_{cam}`, and name numbered frames: `T_{0,1}`, `p_{1}`. An all-digit
+//! subscript on a one-frame name (`theta_1`, `S_1`) is an index and a
+//! subscript of three or more letters (`x_max`) is part of a plain name:
+//! both give [`NameFrames::None`].
+//!
+//! Two-frame names (rotations, transforms, adjoints: `R_`, `T_`, `Ad_`)
+//! also take numbered frames: the subscript is read as letter-with-digits
+//! tokens when that gives two frames (`T_b1c` = {b1}←{c}), else character
+//! by character when that gives two (`T_01` = {0}←{1}, `T_s1`, `T_1s`);
+//! anything else with a digit in it (`T_123`, `T_a12`) is refused by
+//! [`name_error`], which asks for braces.
 
 /// The frames named by a name's subscript.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -39,19 +47,45 @@ pub fn base_name(name: &str) -> &str {
 
 /// The name with base `base` and frame subscript `frames` (outer first), as
 /// [`name_frames`] reads it back: `T` + (s, b) → `T_sb`, `T` + (b1, c) →
-/// `T_b1c`, but `T` + (world, cam) → `T_{world,cam}`: braces as soon as one
-/// frame is not a single letter with digits and primes.
+/// `T_b1c`, `T` + (0, 1) → `T_01`, but `T` + (world, cam) →
+/// `T_{world,cam}`: braces as soon as the short form reads back otherwise.
 pub fn tagged_name(base: &str, frames: &[&str]) -> String {
-    let short = |f: &&str| {
-        let mut chars = f.chars();
-        matches!(chars.next(), Some(c) if c.is_alphabetic())
-            && chars.all(|c| c.is_numeric() || c == '\'')
+    let short = format!("{base}_{}", frames.concat());
+    let want = match frames {
+        [a] => NameFrames::One(a.to_string()),
+        [a, b] => NameFrames::Pair(a.to_string(), b.to_string()),
+        _ => NameFrames::None,
     };
-    if frames.iter().all(short) {
-        format!("{base}_{}", frames.concat())
+    if want != NameFrames::None && name_frames(&short) == want {
+        short
     } else {
         format!("{base}_{{{}}}", frames.join(","))
     }
+}
+
+/// Whether names with this base carry two frames (LANGUAGE.md §2):
+/// rotations, transforms and adjoints.
+fn two_frame_base(base: &str) -> bool {
+    matches!(base, "R" | "T" | "Ad")
+}
+
+/// Why `name` is not a valid name, if it is not: a two-frame name whose
+/// numbered subscript does not split into two frames (`T_123`, `T_a12`).
+pub fn name_error(name: &str) -> Option<String> {
+    if name.contains("_{") {
+        return None;
+    }
+    let underscore = name.rfind('_')?;
+    let (base, sub) = (&name[..underscore], &name[underscore + 1..]);
+    if !two_frame_base(base) || !sub.chars().any(char::is_numeric) {
+        return None;
+    }
+    if sub.chars().count() == 1 || split_subscript(name).is_some() {
+        return None;
+    }
+    Some(format!(
+        "`{name}`: the subscript of {base}_ names two frames, and `{sub}` does not split into two"
+    ))
 }
 
 /// Splits `name` into its base and frame subscript, if it has one.
@@ -85,8 +119,16 @@ fn split_subscript(name: &str) -> Option<(&str, NameFrames)> {
     if base.is_empty() {
         return None;
     }
-    let frames = short_frames(sub)?;
-    match frames.as_slice() {
+    let mut frames = short_frames(sub);
+    if two_frame_base(base) && frames.as_ref().is_none_or(|f| f.len() != 2) {
+        // `T_01`, `T_s1`, `T_1s`: one frame per character.
+        if let Some(chars) = char_frames(sub) {
+            frames = Some(chars);
+        } else if sub.chars().any(char::is_numeric) {
+            return None;
+        }
+    }
+    match frames?.as_slice() {
         [a] => Some((base, NameFrames::One(a.clone()))),
         [a, b] => Some((base, NameFrames::Pair(a.clone(), b.clone()))),
         _ => None,
@@ -115,10 +157,27 @@ fn short_frames(sub: &str) -> Option<Vec<String>> {
     }
 }
 
-/// A braced frame name: a letter, then letters, digits, `_` or primes.
+/// `01` → ["0", "1"], `s1'` → ["s", "1'"]: a frame per letter or digit,
+/// primes attached; None unless that gives exactly two frames.
+fn char_frames(sub: &str) -> Option<Vec<String>> {
+    let mut frames: Vec<String> = Vec::new();
+    for c in sub.chars() {
+        if c.is_alphanumeric() {
+            frames.push(c.to_string());
+        } else if c == '\'' {
+            frames.last_mut()?.push(c);
+        } else {
+            return None;
+        }
+    }
+    (frames.len() == 2).then_some(frames)
+}
+
+/// A braced frame name: a letter or digit, then letters, digits, `_` or
+/// primes (`{cam}`, `{1}`, `{b2}`).
 fn is_long_frame(s: &str) -> bool {
     let mut chars = s.chars();
-    matches!(chars.next(), Some(c) if c.is_alphabetic())
+    matches!(chars.next(), Some(c) if c.is_alphanumeric())
         && chars.all(|c| c.is_alphanumeric() || c == '_' || c == '\'')
 }
 
@@ -179,12 +238,50 @@ mod tests {
             ("x_", NameFrames::None),
             ("S_1", NameFrames::None),
             ("x_1a", NameFrames::None),
+            // Numbered frames (LANGUAGE.md §2).
+            ("T_01", pair("0", "1")),
+            ("T_12", pair("1", "2")),
+            ("T_s1", pair("s", "1")),
+            ("T_1s", pair("1", "s")),
+            ("R_b1c", pair("b1", "c")),
+            ("Ad_01", pair("0", "1")),
+            ("T_01'", pair("0", "1'")),
+            ("T_{0,1}", pair("0", "1")),
+            ("p_{1}", one("1")),
+            ("T_1", NameFrames::None),
+            ("B_2", NameFrames::None),
+            ("theta_12", NameFrames::None),
+            ("T_123", NameFrames::None),
+            ("T_a12", NameFrames::None),
+            ("T_s", one("s")),
             ("T_{a,b,c}", NameFrames::None),
             ("T_{}", NameFrames::None),
         ];
         for (name, want) in table {
             assert_eq!(name_frames(name), want, "{name}");
         }
+    }
+
+    #[test]
+    fn numbered_subscripts_that_do_not_split_ask_for_braces() {
+        for bad in ["T_123", "T_a12", "R_1ab", "Ad_b12"] {
+            assert!(name_error(bad).is_some(), "{bad}");
+        }
+        for good in [
+            "T_01",
+            "T_sb",
+            "T_b1c",
+            "T_1",
+            "T_s",
+            "theta_123",
+            "T_{1,23}",
+            "S_12",
+        ] {
+            assert_eq!(name_error(good), None, "{good}");
+        }
+        assert_eq!(tagged_name("T", &["0", "1"]), "T_01");
+        assert_eq!(tagged_name("T", &["1", "23"]), "T_{1,23}");
+        assert_eq!(tagged_name("p", &["1"]), "p_{1}");
     }
 
     #[test]

@@ -7,10 +7,11 @@
 use pest::iterators::Pair;
 
 use super::ast::{JointGroupSyntax, MechSpec, Span};
-use super::parser::{Cx, Rule};
+use super::grammar::Rule;
+use super::parser::Cx;
 use crate::diagnostics::{Diagnostic, ErrorKind};
 
-impl Cx<'_> {
+impl Cx {
     fn int(&self, pair: &Pair<'_, Rule>) -> Result<i64, Diagnostic> {
         pair.as_str().parse::<i64>().map_err(|_| {
             Diagnostic::error(

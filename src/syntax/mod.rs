@@ -8,7 +8,9 @@
 //! than [`MAX_DEPTH`]. Ordinary statements first take `fast`, a
 //! hand-written parser of the same grammar, ten times quicker, which
 //! leaves every error (and a few rare forms) to pest. `spacing` then
-//! refuses `[1 -2]`, which MATLAB reads as two entries. Syntax errors are
+//! refuses what reads two ways (`[1 -x]`, `[2 pi]`, `R [1, 2]`, `sin θ^2`,
+//! `T_123`) with both readings, and `rewrite` turns the book's notation into
+//! the plain tree (numpy's nested rows, `R^T` = `R.T`). Syntax errors are
 //! `ErrorKind::Syntax` diagnostics with friendly messages (`rules`). Spans
 //! are byte offsets into the whole source.
 //!
@@ -20,12 +22,15 @@
 //! - [`ident::name_frames`]: the frame subscript of a name (`T_sb` → s, b).
 
 pub mod ast;
+mod book;
 mod comprehension;
 mod fast;
+mod grammar;
 pub mod ident;
 mod mech;
 mod parser;
 mod ranges;
+mod rewrite;
 mod rules;
 mod spacing;
 mod split;
@@ -65,7 +70,7 @@ pub fn statements(src: &str) -> impl Iterator<Item = Result<ast::Stmt, Diagnosti
             None if chunk.depth > SHALLOW => parse_on_big_stack(text, chunk.span),
             None => parser::parse_chunk(text, chunk.span),
         };
-        Some(parsed.and_then(|stmt| spacing::check(&stmt, src).map(|()| stmt)))
+        Some(parsed.and_then(|stmt| spacing::check(&stmt, src).map(|()| rewrite::stmt(stmt))))
     })
 }
 
@@ -102,7 +107,7 @@ fn parse_on_big_stack(chunk: &str, span: ast::Span) -> Result<ast::Stmt, Diagnos
             .ok()
             .and_then(|handle| handle.join().ok())
     })
-    .unwrap_or_else(|| Err(parser::too_deep(span)))
+    .unwrap_or_else(|| Err(rules::too_deep(span)))
 }
 
 /// True while a `(`, `[`, `{` or `mech <` is still open at the end of `src`

@@ -13,16 +13,12 @@ use std::sync::LazyLock;
 use pest::Parser as _;
 use pest::iterators::Pair;
 use pest::pratt_parser::{Assoc, Op, PrattParser};
-use pest_derive::Parser;
 
 use super::MAX_DEPTH;
 use super::ast::{BinOp, Expr, ExprKind, Ident, IndexArg, Span, Stmt, StmtKind, UnOp};
-use super::rules::{self, short};
+use super::grammar::{ChaslesParser, Rule};
+use super::rules::{self, too_deep};
 use crate::diagnostics::{Diagnostic, ErrorKind};
-
-#[derive(Parser)]
-#[grammar = "grammar/chasles.pest"]
-pub(crate) struct ChaslesParser;
 
 /// Precedence levels, loosest first; the same order as [`PRATT`].
 const PREC_RANGE: u8 = 0;
@@ -41,19 +37,28 @@ static PRATT: LazyLock<PrattParser<Rule>> = LazyLock::new(|| {
             | Op::infix(Rule::starstar, Assoc::Left))
         .op(Op::prefix(Rule::neg) | Op::prefix(Rule::pos))
         .op(Op::infix(Rule::pow, Assoc::Right))
-        .op(Op::postfix(Rule::index) | Op::postfix(Rule::member) | Op::postfix(Rule::degrees))
+        .op(Op::postfix(Rule::index)
+            | Op::postfix(Rule::member)
+            | Op::postfix(Rule::degrees)
+            | Op::postfix(Rule::transpose_mark)
+            | Op::postfix(Rule::superscript))
 });
 
 /// Parses `chunk`, the blanked text of the statement at `span`.
 pub(crate) fn parse_chunk(chunk: &str, span: Span) -> Result<Stmt, Diagnostic> {
     let cx = Cx {
         off: span.start,
-        text: chunk,
         above: Cell::new(0),
     };
     let mut pairs = match ChaslesParser::parse(Rule::statement, chunk) {
         Ok(pairs) => pairs,
-        Err(_) => return Err(rules::pest_error(parse_with_detail(chunk), &cx)),
+        Err(_) => {
+            return Err(rules::pest_error(
+                parse_with_detail(chunk),
+                chunk,
+                span.start,
+            ));
+        }
     };
     let stmt = pairs.next().ok_or_else(|| cx.internal(span))?;
     let form = stmt
@@ -87,11 +92,9 @@ fn parse_with_detail(chunk: &str) -> pest::error::Error<Rule> {
 }
 
 /// Where the statement sits in the source.
-pub(crate) struct Cx<'a> {
+pub(crate) struct Cx {
     /// Byte offset of the statement in the whole source.
     pub off: usize,
-    /// The statement's text.
-    pub text: &'a str,
     /// How many tree levels lie above the expression being built (open
     /// operators and brackets of the enclosing expressions). Bounds the
     /// recursion of the Pratt parser across nested brackets.
@@ -127,18 +130,11 @@ fn role(rule: Rule) -> Role {
             prec: PREC_POW,
             right: true,
         },
-        Rule::index | Rule::member | Rule::degrees => Role::Postfix,
+        Rule::index | Rule::member | Rule::degrees | Rule::transpose_mark | Rule::superscript => {
+            Role::Postfix
+        }
         _ => Role::Operand,
     }
-}
-
-pub(crate) fn too_deep(span: Span) -> Diagnostic {
-    Diagnostic::error(
-        ErrorKind::Syntax,
-        span,
-        format!("expression nested too deeply (limit {MAX_DEPTH})"),
-    )
-    .with_help("split it into several statements with intermediate names")
 }
 
 pub(super) fn check_depth(depth: usize, span: Span) -> Result<(), Diagnostic> {
@@ -149,7 +145,7 @@ pub(super) fn check_depth(depth: usize, span: Span) -> Result<(), Diagnostic> {
     }
 }
 
-impl Cx<'_> {
+impl Cx {
     pub(crate) fn span(&self, s: pest::Span<'_>) -> Span {
         Span::new(self.off + s.start(), self.off + s.end())
     }
@@ -225,6 +221,7 @@ impl Cx<'_> {
                 for p in form.into_inner() {
                     match p.as_rule() {
                         Rule::kw_given => {}
+                        Rule::given_type => names.push(self.given_type(&p)),
                         _ => names.push(self.ident(p)?),
                     }
                 }
@@ -249,7 +246,7 @@ impl Cx<'_> {
         let whole = self.span(pair.as_span());
         let children: Vec<Pair<'_, Rule>> = pair.into_inner().collect();
 
-        // Juxtaposition is only legal after a number or a bracket.
+        // Juxtaposition: see `check_juxtaposition`.
         for (k, child) in children.iter().enumerate() {
             match child.as_rule() {
                 Rule::juxt => {
@@ -402,8 +399,10 @@ impl Cx<'_> {
         Ok(operands)
     }
 
-    /// `left right` with nothing between: legal only after a number, `pi`,
-    /// an angle, `[..]` or `(..)`, and never number after number.
+    /// `left right` with nothing between. Legal everywhere the book writes
+    /// a product (`2 pi`, `A t`, `T_sb T_bc`); `spacing.rs` refuses the
+    /// readings that are not plain once the tree is built. Here only a
+    /// bracket right after a name that is not a valid index (`M[1; 2]`).
     fn check_juxtaposition(
         &self,
         left: &Pair<'_, Rule>,
@@ -411,60 +410,22 @@ impl Cx<'_> {
     ) -> Result<(), Diagnostic> {
         let last = left.clone().into_inner().last().map(|p| p.as_rule());
         let first = right.clone().into_inner().next().map(|p| p.as_rule());
-        let left_text = short(left.as_str());
-        let right_text = short(right.as_str());
-        let at = self.span(right.as_span());
-        let left_ok = matches!(
+        let indexable = matches!(
             last,
-            Some(Rule::number | Rule::pi | Rule::degrees | Rule::brackets | Rule::paren)
+            Some(Rule::ident | Rule::call | Rule::index | Rule::member)
         );
-        let numeric_left = matches!(last, Some(Rule::number | Rule::pi | Rule::degrees));
-        if left_ok && !(numeric_left && first == Some(Rule::number)) {
-            return Ok(());
-        }
-        let err = Diagnostic::error(
-            ErrorKind::Syntax,
-            at,
-            format!("missing operator between `{left_text}` and `{right_text}`"),
-        );
-        let indexable = matches!(last, Some(Rule::ident | Rule::call | Rule::index));
-        let err = if numeric_left {
-            err.with_help("separate elements with `,` ([1, 2, 3]) or multiply with `*`".to_string())
-        } else if indexable
+        if indexable
             && first == Some(Rule::brackets)
             && left.as_span().end() == right.as_span().start()
         {
-            // `M[1; 2]`, `M[1,]`: brackets right after a name that are not a
-            // valid index.
-            Diagnostic::error(
+            return Err(Diagnostic::error(
                 ErrorKind::Syntax,
-                at,
+                self.span(right.as_span()),
                 "an index takes one or two subscripts separated by `,`",
             )
-            .with_help("write M[i], M[i, j], M[i, :] or M[:, j]")
-        } else if indexable && first == Some(Rule::brackets) {
-            let args: Vec<String> = right
-                .clone()
-                .into_inner()
-                .flat_map(|b| b.into_inner())
-                .flat_map(|row| row.into_inner())
-                .map(|e| e.as_str().trim().to_string())
-                .collect();
-            err.with_help(format!(
-                "index with no space: {}[{}]",
-                left.as_str(),
-                args.join(", ")
-            ))
-        } else if last == Some(Rule::ident) && matches!(first, Some(Rule::ident | Rule::call)) {
-            err.with_help(format!(
-                "put `*` between the two names: {left_text} * {right_text}"
-            ))
-        } else {
-            err.with_help(format!(
-                "put `*` between them to multiply: {left_text} * {right_text}"
-            ))
-        };
-        Err(err)
+            .with_help("write M[i], M[i, j], M[i, :] or M[:, j]"));
+        }
+        Ok(())
     }
 
     fn postfix(&self, base: Expr, depth: usize, op: Pair<'_, Rule>) -> Built {
@@ -473,6 +434,18 @@ impl Cx<'_> {
         check_depth(depth + 1, op_span)?;
         let kind = match op.as_rule() {
             Rule::degrees => ExprKind::Degrees(Box::new(base)),
+            Rule::superscript => {
+                let kind = super::ast::superscript_power(base, op.as_str(), op_span);
+                return Ok((Expr { kind, span }, depth + 2));
+            }
+            // `Rᵀ` is `R.T`.
+            Rule::transpose_mark => ExprKind::Member {
+                base: Box::new(base),
+                member: Ident {
+                    name: "T".into(),
+                    span: op_span,
+                },
+            },
             Rule::member => {
                 let name = op
                     .into_inner()
@@ -524,7 +497,7 @@ impl Cx<'_> {
         Ok((out, depth))
     }
 
-    fn primary(&self, pair: Pair<'_, Rule>) -> Built {
+    pub(super) fn primary(&self, pair: Pair<'_, Rule>) -> Built {
         let span = self.span(pair.as_span());
         let leaf = |kind| Ok((Expr { kind, span }, 1));
         match pair.as_rule() {
@@ -553,7 +526,9 @@ impl Cx<'_> {
                     d + 1,
                 ))
             }
-            Rule::paren => {
+            Rule::bare_call => self.bare_call(pair),
+            Rule::deg_unit => Ok(self.deg_unit(span)),
+            Rule::paren | Rule::sup_group => {
                 let (mut items, d) = self.exprs(pair.into_inner())?;
                 if items.len() == 1 {
                     // `(x)` is x, spanning its parentheses.
@@ -577,7 +552,13 @@ impl Cx<'_> {
                     if row.as_rule() == Rule::comp_tail {
                         return self.comprehension(rows, row, depth, span);
                     }
-                    let (items, d) = self.exprs(row.into_inner())?;
+                    let mut inner = row.into_inner().peekable();
+                    if let Some(plain) = inner.next_if(|p| p.as_rule() == Rule::plain_row) {
+                        depth = depth.max(2);
+                        rows.extend(self.plain_rows(plain)?);
+                        continue;
+                    }
+                    let (items, d) = self.exprs(inner)?;
                     depth = depth.max(d);
                     rows.push(items);
                 }

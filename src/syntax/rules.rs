@@ -8,9 +8,26 @@
 
 use pest::error::{ErrorVariant, InputLocation};
 
+use super::MAX_DEPTH;
 use super::ast::Span;
-use super::parser::{Cx, Rule, too_deep};
+use super::grammar::Rule;
 use crate::diagnostics::{Diagnostic, ErrorKind};
+
+/// The error for a statement nested deeper than [`MAX_DEPTH`].
+pub(crate) fn too_deep(span: Span) -> Diagnostic {
+    Diagnostic::error(
+        ErrorKind::Syntax,
+        span,
+        format!("expression nested too deeply (limit {MAX_DEPTH})"),
+    )
+    .with_help("split it into several statements with intermediate names")
+}
+
+/// The statement being reported on: its text and its offset in the source.
+struct Cx<'a> {
+    off: usize,
+    text: &'a str,
+}
 
 const EXPRESSION: &str = "an expression";
 const OPERATOR: &str = "an operator";
@@ -29,6 +46,8 @@ pub(crate) fn rule_name(rule: Rule) -> &'static str {
         Rule::params => "a parameter name",
         Rule::destructure => "a destructuring assignment",
         Rule::assign => "an assignment",
+        Rule::given_type => "a type such as SE3 or SE(3)",
+        Rule::sup_group => "a superscript {..}",
         Rule::expr
         | Rule::prefix_op
         | Rule::neg
@@ -43,6 +62,13 @@ pub(crate) fn rule_name(rule: Rule) -> &'static str {
         | Rule::number
         | Rule::pi
         | Rule::mech
+        | Rule::bare_call
+        | Rule::bare_fn
+        | Rule::bare_arg
+        | Rule::deg_unit
+        | Rule::plain_row
+        | Rule::plain_list
+        | Rule::plain_number
         | Rule::kw_mech
         | Rule::juxt_start
         | Rule::index_arg => EXPRESSION,
@@ -58,7 +84,9 @@ pub(crate) fn rule_name(rule: Rule) -> &'static str {
         | Rule::postfix
         | Rule::index
         | Rule::member
-        | Rule::degrees => OPERATOR,
+        | Rule::degrees
+        | Rule::transpose_mark
+        | Rule::superscript => OPERATOR,
         Rule::all => "':'",
         Rule::call_args => "'('",
         Rule::row_sep => "';' or a new line",
@@ -103,8 +131,10 @@ fn rank(name: &str) -> u8 {
     }
 }
 
-/// A pest error → a syntax diagnostic pointing into the whole source.
-pub(crate) fn pest_error(err: pest::error::Error<Rule>, cx: &Cx<'_>) -> Diagnostic {
+/// A pest error in the statement `text` (at byte `off` of the source) →
+/// a syntax diagnostic pointing into the whole source.
+pub(crate) fn pest_error(err: pest::error::Error<Rule>, text: &str, off: usize) -> Diagnostic {
+    let cx = &Cx { off, text };
     let mut pos = match err.location {
         InputLocation::Pos(p) => p,
         InputLocation::Span((s, _)) => s,
@@ -268,26 +298,17 @@ fn help(text: &str, pos: usize, found: Option<char>, expected: &[String]) -> Opt
         ',' if before.rfind("_{") > before.rfind('}') => {
             Some("a braced subscript names one or two frames: T_{world,cam}".into())
         }
-        '\'' => Some("`'` is part of a name (T_sb'); to transpose write x.T".into()),
+        '\'' => Some("`'` is part of a name (T_sb'); to transpose write x^T, xᵀ or x.T".into()),
         '<' | '>' if wants(OPERATOR) || wants(END) => Some(
             "there are no comparisons; `<` only opens a mechanism: mech < links 4; joints 4R; planar >"
                 .into(),
         ),
-        '{' | '}' => Some("braces only appear in frame subscripts: T_{world,cam}".into()),
+        '{' | '}' => Some(
+            "braces only appear in frame subscripts, T_{world,cam}, and superscripts, R^{T}".into(),
+        ),
         '.' if before.ends_with(|c: char| c.is_ascii_digit()) => {
             Some("write decimals with digits after the point: 2.0 or 2".into())
         }
         _ => None,
-    }
-}
-
-/// `text`, cut short for a message.
-pub(super) fn short(text: &str) -> String {
-    let text = text.trim();
-    if text.chars().count() <= 24 {
-        text.to_string()
-    } else {
-        let head: String = text.chars().take(20).collect();
-        format!("{head}…")
     }
 }

@@ -29,7 +29,6 @@ pub enum Value {
     Bool(bool),
     Tuple(Vec<Value>),
     Mech(Rc<Mechanism>),
-    Func(Rc<UserFn>),
     /// An expression over `given` symbols (LANGUAGE.md §7).
     Sym(Sym),
     /// A list (LANGUAGE.md §12): a range `0:4` or a comprehension.
@@ -75,7 +74,6 @@ impl Value {
             Value::Bool(_) => Kind::Bool,
             Value::Tuple(vs) => Kind::Tuple(vs.iter().map(Value::kind).collect()),
             Value::Mech(_) => Kind::Mechanism,
-            Value::Func(_) => Kind::Function,
             Value::Sym(_) => Kind::Unknown,
             Value::List(vs) => Kind::List(Box::new(common_kind(vs))),
             Value::Str(_) => Kind::Text,

@@ -4,60 +4,68 @@
 
 /// Formats `x` with at most `digits` decimals.
 pub fn fmt_num(x: f64, digits: usize) -> String {
+    let mut s = String::new();
+    write_num(&mut s, x, digits);
+    s
+}
+
+/// [`fmt_num`], appended to `out` (no allocation of its own on the
+/// common paths).
+pub fn write_num(out: &mut String, x: f64, digits: usize) {
     if x.is_nan() {
-        return "NaN".into();
+        return out.push_str("NaN");
     }
     if x.is_infinite() {
-        return if x > 0.0 { "inf".into() } else { "-inf".into() };
+        return out.push_str(if x > 0.0 { "inf" } else { "-inf" });
     }
     if digits >= 17 {
         // Full precision: the shortest text that reads back as the same f64
         // (no snapping to integers; -0 is still written 0).
         return if x == 0.0 {
-            "0".into()
+            out.push('0')
         } else {
-            trim_point_zero(format!("{x:?}"))
+            out.push_str(&trim_point_zero(format!("{x:?}")))
         };
     }
     let r = x.round();
     if (x - r).abs() <= 1e-12 * r.abs().max(1.0) && r.abs() < 1e15 {
-        return if r == 0.0 {
-            "0".into()
-        } else {
-            format!("{r:.0}")
-        };
+        // An integer below 1e15 is exactly an i64, and prints as `{r:.0}` would.
+        if r < 0.0 {
+            out.push('-');
+        }
+        return push_digits(out, r.abs() as u64, 0);
     }
     let tiny = 0.5 * 10f64.powi(-(digits.min(300) as i32));
     if x.abs() >= 1e15 || (digits > 0 && x.abs() < tiny) {
-        return sci(x, digits);
+        return out.push_str(&sci(x, digits));
     }
-    if let Some(s) = fixed_fast(x, digits) {
-        return s;
+    if fixed_fast(out, x, digits) {
+        return;
     }
     let s = format!("{x:.digits$}");
     let s = trim(&s);
-    if s == "-0" { "0".into() } else { s }
+    out.push_str(if s == "-0" { "0" } else { &s });
 }
 
 /// `x` rounded to `digits` decimals with integer arithmetic — much faster
 /// than the exact float formatter, and the same text except at exact
-/// decimal ties. None when the scaled value does not fit exactly.
-fn fixed_fast(x: f64, digits: usize) -> Option<String> {
+/// decimal ties. False (and nothing written) when the scaled value does not
+/// fit exactly.
+fn fixed_fast(out: &mut String, x: f64, digits: usize) -> bool {
     if digits > 9 {
-        return None;
+        return false;
     }
     let scale = 10u64.pow(digits as u32);
     let scaled = (x.abs() * scale as f64).round();
     if scaled >= 9.0e15 {
-        return None;
+        return false;
     }
     let n = scaled as u64;
     let (int, mut frac) = (n / scale, n % scale);
-    let mut out = String::with_capacity(24);
     if x < 0.0 && n != 0 {
         out.push('-');
     }
-    out.push_str(&int.to_string());
+    push_digits(out, int, 0);
     if frac != 0 {
         let mut width = digits;
         while frac % 10 == 0 {
@@ -65,11 +73,27 @@ fn fixed_fast(x: f64, digits: usize) -> Option<String> {
             width -= 1;
         }
         out.push('.');
-        let f = frac.to_string();
-        out.extend(std::iter::repeat_n('0', width - f.len()));
-        out.push_str(&f);
+        push_digits(out, frac, width);
     }
-    Some(out)
+    true
+}
+
+/// The decimal digits of `n`, zero-padded to `width`, without the
+/// formatting machinery (this is the inner loop of printing a matrix).
+fn push_digits(out: &mut String, mut n: u64, width: usize) {
+    let mut buf = [b'0'; 24];
+    let mut i = buf.len();
+    loop {
+        i -= 1;
+        buf[i] = b'0' + (n % 10) as u8;
+        n /= 10;
+        if n == 0 {
+            break;
+        }
+    }
+    i = i.min(buf.len().saturating_sub(width));
+    out.reserve(buf.len() - i);
+    out.extend(buf[i..].iter().map(|&b| char::from(b)));
 }
 
 /// `2.0` → `2` (Rust's shortest form keeps a `.0` on whole numbers).
@@ -123,5 +147,10 @@ mod tests {
         assert_eq!(fmt_num(-2.5, 0), "-3");
         assert_eq!(fmt_num(12.30001, 3), "12.3");
         assert_eq!(fmt_num(1.0005e-3, 3), "0.001");
+        assert_eq!(fmt_num(0.0123, 4), "0.0123");
+        assert_eq!(fmt_num(-0.000_51, 4), "-0.0005");
+        assert_eq!(fmt_num(-7.0, 2), "-7");
+        assert_eq!(fmt_num(123_456_789_012_345.0, 4), "123456789012345");
+        assert_eq!(fmt_num(-2.000_000_1, 9), "-2.0000001");
     }
 }

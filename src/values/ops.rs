@@ -8,7 +8,7 @@ use nalgebra::DMatrix;
 use super::convert::{self, dm};
 use super::value::Value;
 use crate::check::ty::Kind;
-use crate::lie::{Mat2, Mat3, Mat4, Vec6, se2, se3};
+use crate::lie::{Mat3, Mat4, Vec6, se2, se3};
 
 /// Largest matrix side accepted anywhere.
 pub const MAX_DIM: usize = 10_000;
@@ -56,6 +56,16 @@ pub fn mul(l: &Value, r: &Value, kind: &Kind) -> Result<Value, String> {
     }
     // A point transformed by a homogeneous transform: T p = R p + t.
     if lm.shape() == (4, 4) && rm.shape() == (3, 1) {
+        // A transform moves the point (T x = R x + p, (3.65)); an se(3)
+        // matrix gives its velocity ([V] x = [ω] x + v, last row zero).
+        let last = |w: f64| (0..4).all(|j| (lm[(3, j)] - w * f64::from(j == 3)).abs() <= 1e-9);
+        if !last(1.0) && !last(0.0) {
+            return Err(
+                "a 4×4 matrix moves a point, T x = R x + p (3.65), only when its last row is (0, 0, 0, 1); \
+                 this one is not a transform (the transpose of a transform is not its inverse: use inv)"
+                    .into(),
+            );
+        }
         let t = Mat4::from_iterator(lm.iter().copied());
         let p = t.fixed_view::<3, 3>(0, 0) * crate::lie::Vec3::from_iterator(rm.iter().copied())
             + t.fixed_view::<3, 1>(0, 3);
@@ -214,6 +224,17 @@ pub fn pow(b: &Value, e: f64, kind: &Kind) -> Result<Value, String> {
             base = &base * &base;
         }
     }
+    // A power of a plain matrix is a plain matrix, even when it happens to
+    // be a group element (`[1, 2; 3, 4]^0` is I, not labelled SO(2)).
+    if let Kind::Matrix(..) = kind
+        && convert::classify(&acc).is_group()
+    {
+        let (r, c) = acc.shape();
+        return Ok(Value::Num {
+            kind: Kind::Matrix(Some(r), Some(c)),
+            m: acc,
+        });
+    }
     Ok(out(kind, acc))
 }
 
@@ -248,7 +269,7 @@ fn num_inverse(k: &Kind, m: &DMatrix<f64>) -> Result<DMatrix<f64>, String> {
             if det == 0.0 || !det.is_finite() || det.abs() <= 1e-14 * scale {
                 return Err(format!(
                     "the matrix is singular (determinant {}); it has no inverse",
-                    crate::output::number::fmt_num(det, 6)
+                    super::number::fmt_num(det, 6)
                 ));
             }
             m.clone()
@@ -449,6 +470,3 @@ pub fn brackets(rows: &[Vec<Value>]) -> Result<Value, String> {
         m,
     })
 }
-
-/// Vectors of the same flavour: a twist stays a twist after `+`.
-pub fn unused_kinds(_: Mat2) {}

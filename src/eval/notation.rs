@@ -1,0 +1,339 @@
+//! The book's notation in evaluation (LANGUAGE.md §4):
+//!
+//! - `I` is the identity of the size its context needs: `I + sin(θ) W` is
+//!   3×3 when W is, `T - I` 4×4, `I * X` as tall as X;
+//! - `e^(A t)`, `e^([w] θ)`: `e` raised to a matrix is `exp`;
+//! - `(1 - cos θ)[w]`: a bracket holding a 3- or 6-vector right after a
+//!   name or `)` is the book's bracket, multiplied, not an index;
+//! - `[R, p; 0, 1]`: a lone `0` in a block matrix is the zero block that
+//!   fits;
+//! - a function given one tuple whose length is its arity takes the tuple's
+//!   parts as its arguments: `rot_zyx(euler_zyx(R))`.
+
+use nalgebra::DMatrix;
+
+use super::convert;
+use super::interp::{Interp, Typed};
+use super::value::Value;
+use crate::builtins::Builtin;
+use crate::check::ty::{Kind, Ty};
+use crate::diagnostics::{Diagnostic, ErrorKind};
+use crate::syntax::ast::{BinOp, Expr, ExprKind, Span};
+
+/// Whether `e` has an `I` whose size comes from around it (`I`, `2 I`,
+/// `-I`, `I + W`).
+fn mentions_identity(e: &Expr) -> bool {
+    match &e.kind {
+        ExprKind::Var(name) => name == "I",
+        ExprKind::Unary { operand, .. } => mentions_identity(operand),
+        ExprKind::Binary {
+            op: BinOp::Pow,
+            lhs,
+            ..
+        } => mentions_identity(lhs),
+        ExprKind::Binary { lhs, rhs, .. } => mentions_identity(lhs) || mentions_identity(rhs),
+        _ => false,
+    }
+}
+
+/// Rows and columns of a checked operand.
+fn dims(t: &Typed) -> Option<(usize, usize)> {
+    if let Some(Value::Num { m, .. }) = &t.val {
+        return Some(m.shape());
+    }
+    match t.ty.kind.shape()? {
+        (Some(r), Some(c)) => Some((r, c)),
+        _ => None,
+    }
+}
+
+impl Interp<'_> {
+    /// Both operands of `op`, the one holding a free `I` evaluated second
+    /// with the size the other gives it.
+    pub(super) fn operands(
+        &mut self,
+        op: BinOp,
+        lhs: &Expr,
+        rhs: &Expr,
+    ) -> Result<(Typed, Typed), Diagnostic> {
+        let free = |e: &Expr| mentions_identity(e);
+        let sized =
+            matches!(op, BinOp::Add | BinOp::Sub | BinOp::Mul) && self.env.get("I").is_none();
+        if sized && free(lhs) && !free(rhs) {
+            let r = self.expr(rhs)?;
+            let n = match (op, dims(&r)) {
+                (BinOp::Mul, Some((rows, _))) => Some(rows),
+                (_, Some((rows, cols))) if rows == cols => Some(rows),
+                _ => None,
+            };
+            let l = self.sized_identity(n, lhs)?;
+            return Ok((l, r));
+        }
+        let l = self.expr(lhs)?;
+        if sized && free(rhs) && !free(lhs) {
+            let n = match (op, dims(&l)) {
+                (BinOp::Mul, Some((_, cols))) => Some(cols),
+                (_, Some((rows, cols))) if rows == cols => Some(rows),
+                _ => None,
+            };
+            let r = self.sized_identity(n, rhs)?;
+            return Ok((l, r));
+        }
+        let r = self.expr(rhs)?;
+        Ok((l, r))
+    }
+
+    /// Evaluates `e` with `I` of size `n` (a scalar or unknown context,
+    /// `n` = None or 1, keeps the size from further out).
+    fn sized_identity(&mut self, n: Option<usize>, e: &Expr) -> Result<Typed, Diagnostic> {
+        let outer = self.eye;
+        if let Some(n) = n.filter(|&n| n > 1) {
+            self.eye = Some(n);
+        }
+        let out = self.expr(e);
+        self.eye = outer;
+        out
+    }
+
+    /// The entries of a bracket row; an `I` among them (`[I, p; 0, 1]`)
+    /// is as tall as the others.
+    pub(super) fn bracket_row(&mut self, row: &[Expr]) -> Result<Vec<Typed>, Diagnostic> {
+        let free = |e: &Expr| mentions_identity(e);
+        let sized = self.env.get("I").is_none();
+        let mut out: Vec<Option<Typed>> = vec![None; row.len()];
+        for (slot, e) in out.iter_mut().zip(row) {
+            if !(sized && free(e)) {
+                *slot = Some(self.expr(e)?);
+            }
+        }
+        let height = out
+            .iter()
+            .flatten()
+            .filter_map(|t| dims(t).map(|d| d.0))
+            .max();
+        let mut done = Vec::with_capacity(row.len());
+        for (slot, e) in out.into_iter().zip(row) {
+            done.push(match slot {
+                Some(t) => t,
+                None => self.sized_identity(height, e)?,
+            });
+        }
+        Ok(done)
+    }
+
+    /// Evaluates `e` to see what it is, before it is evaluated again in
+    /// its place: its warnings are left to the second evaluation.
+    pub(super) fn probe(&mut self, e: &Expr) -> Result<Typed, Diagnostic> {
+        let warned = self.warnings.len();
+        let t = self.expr(e);
+        self.warnings.truncate(warned);
+        t
+    }
+
+    /// `I` with no binding: the identity of the size its context needs.
+    pub(super) fn identity(&mut self, span: Span) -> Result<Typed, Diagnostic> {
+        let Some(n) = self.eye else {
+            return Err(Diagnostic::error(
+                ErrorKind::Name,
+                span,
+                "`I` has no size here",
+            )
+            .with_help(
+                "I takes the size of what it is added to or multiplied with (I + W, T - I); alone, write eye(3) or eye(4)",
+            ));
+        };
+        let m = DMatrix::<f64>::identity(n, n);
+        let val = self.running().then(|| Value::Num {
+            kind: convert::classify(&m),
+            m,
+        });
+        let kind = match &val {
+            Some(v) => v.kind(),
+            None => Kind::Matrix(Some(n), Some(n)),
+        };
+        Ok(Typed {
+            ty: Ty::plain(kind),
+            val,
+        })
+    }
+
+    /// `e^x` with `e` unbound and `x` not a scalar: `exp(x)`.
+    pub(super) fn e_power(
+        &mut self,
+        lhs: &Expr,
+        rhs: &Expr,
+        span: Span,
+    ) -> Option<Result<Typed, Diagnostic>> {
+        if !matches!(&lhs.kind, ExprKind::Var(e) if e == "e") || self.env.get("e").is_some() {
+            return None;
+        }
+        let r = match self.probe(rhs) {
+            Ok(r) => r,
+            Err(e) => return Some(Err(e)),
+        };
+        if r.ty.kind.maybe_scalar() {
+            return None;
+        }
+        Some(self.call("exp", lhs.span, std::slice::from_ref(rhs), span))
+    }
+
+    /// `X[v]` with `v` a 3- or 6-vector: the book's `X [v]`, a product.
+    pub(super) fn bracket_index(
+        &mut self,
+        base: &Expr,
+        arg: &Expr,
+        span: Span,
+    ) -> Result<Option<Typed>, Diagnostic> {
+        let t = self.probe(arg)?;
+        if !matches!(t.ty.kind.vec_len(), Some(3 | 6)) {
+            return Ok(None);
+        }
+        let bracket = Expr {
+            kind: ExprKind::Brackets(vec![vec![arg.clone()]]),
+            span: Span::new(base.span.end, span.end),
+        };
+        let product = Expr {
+            kind: ExprKind::Binary {
+                op: BinOp::Mul,
+                lhs: Box::new(base.clone()),
+                rhs: Box::new(bracket),
+                op_span: Span::new(base.span.end, base.span.end),
+                implicit: true,
+            },
+            span,
+        };
+        self.expr(&product).map(Some)
+    }
+
+    /// `(1 - cos θ)[w]^2`: the power is the bracket's, `X ([w]^2)`.
+    pub(super) fn bracket_power(
+        &mut self,
+        lhs: &Expr,
+        rhs: &Expr,
+        span: Span,
+    ) -> Result<Option<Typed>, Diagnostic> {
+        let ExprKind::Index { base, args } = &lhs.kind else {
+            return Ok(None);
+        };
+        let [crate::syntax::ast::IndexArg::Expr(arg)] = args.as_slice() else {
+            return Ok(None);
+        };
+        if !matches!(self.probe(arg)?.ty.kind.vec_len(), Some(3 | 6)) {
+            return Ok(None);
+        }
+        let bracket = Expr {
+            kind: ExprKind::Brackets(vec![vec![arg.clone()]]),
+            span: Span::new(base.span.end, lhs.span.end),
+        };
+        let power = Expr {
+            kind: ExprKind::Binary {
+                op: BinOp::Pow,
+                lhs: Box::new(bracket),
+                rhs: Box::new(rhs.clone()),
+                op_span: Span::new(lhs.span.end, rhs.span.start),
+                implicit: false,
+            },
+            span: Span::new(base.span.end, span.end),
+        };
+        let product = Expr {
+            kind: ExprKind::Binary {
+                op: BinOp::Mul,
+                lhs: base.clone(),
+                rhs: Box::new(power),
+                op_span: Span::new(base.span.end, base.span.end),
+                implicit: true,
+            },
+            span,
+        };
+        self.expr(&product).map(Some)
+    }
+
+    /// A builtin given one tuple (or vector: `(a, b, c)` of scalars)
+    /// whose parts fit its arguments: the parts.
+    pub(super) fn spread(&self, b: &Builtin, typed: Vec<Typed>) -> Vec<Typed> {
+        let [one] = typed.as_slice() else {
+            return typed;
+        };
+        let parts = parts(one);
+        let tys: Vec<Ty> = parts.iter().map(|t| t.ty.clone()).collect();
+        if parts.len() < 2
+            || b.check(std::slice::from_ref(&one.ty)).is_ok()
+            || b.check(&tys).is_err()
+        {
+            return typed;
+        }
+        parts
+    }
+}
+
+/// The parts of a tuple, or the entries of a vector, as operands; empty
+/// for anything else.
+pub(super) fn parts(t: &Typed) -> Vec<Typed> {
+    let kinds = match &t.ty.kind {
+        Kind::Tuple(kinds) => kinds.clone(),
+        Kind::Vector(Some(n)) => vec![Kind::Scalar; *n],
+        _ => return Vec::new(),
+    };
+    let vals: Vec<Option<Value>> = match &t.val {
+        Some(Value::Tuple(vs)) => vs.iter().cloned().map(Some).collect(),
+        Some(Value::Num { m, .. }) if m.len() == kinds.len() => {
+            m.iter().map(|&x| Some(Value::scalar(x))).collect()
+        }
+        _ => vec![None; kinds.len()],
+    };
+    kinds
+        .into_iter()
+        .zip(vals)
+        .map(|(k, val)| Typed {
+            ty: Ty::plain(k),
+            val,
+        })
+        .collect()
+}
+
+/// `[R, p; 0, 1]`: each lone `0` literal of a block matrix becomes the
+/// zero block as wide as its column (from rows with as many entries) and
+/// as tall as its row.
+pub(super) fn zero_blocks(rows: &[&Vec<Expr>], vals: &mut [Vec<Value>]) {
+    let lone = |e: &Expr| matches!(e.kind, ExprKind::Number(x) if x == 0.0);
+    let shape = |v: &Value| match v {
+        Value::Num { m, .. } => Some(m.shape()),
+        _ => None,
+    };
+    let blocks = vals
+        .iter()
+        .flatten()
+        .any(|v| shape(v).is_some_and(|s| s != (1, 1)));
+    if !blocks {
+        return;
+    }
+    let mut fills = Vec::new();
+    for (i, row) in rows.iter().enumerate() {
+        let height = row
+            .iter()
+            .zip(&vals[i])
+            .filter(|(e, _)| !lone(e))
+            .filter_map(|(_, v)| shape(v).map(|s| s.0))
+            .max()
+            .unwrap_or(1);
+        for (j, e) in row.iter().enumerate() {
+            if !lone(e) {
+                continue;
+            }
+            let width = rows
+                .iter()
+                .zip(vals.iter())
+                .filter(|(r, _)| r.len() == row.len() && !lone(&r[j]))
+                .filter_map(|(_, vs)| shape(&vs[j]).map(|s| s.1))
+                .max()
+                .unwrap_or(1);
+            fills.push((i, j, height, width));
+        }
+    }
+    for (i, j, h, w) in fills {
+        vals[i][j] = Value::Num {
+            kind: Kind::Matrix(Some(h), Some(w)),
+            m: DMatrix::zeros(h, w),
+        };
+    }
+}

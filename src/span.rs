@@ -1,0 +1,148 @@
+//! Places in the source text: the bottom layer every other one may use.
+//!
+//! A [`Span`] is a byte range; every AST node and every diagnostic carries
+//! one. The line counting of the whole crate lives here too: [`line_col`]
+//! for one offset, [`Anchor`] for a place whose line is already known, and
+//! [`Lines`], the cursor a session moves through a script statement by
+//! statement, so a long script is never rescanned from its start.
+
+/// A half-open byte range `start..end` into the source text.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub struct Span {
+    pub start: usize,
+    pub end: usize,
+}
+
+impl Span {
+    pub fn new(start: usize, end: usize) -> Span {
+        Span { start, end }
+    }
+    /// The smallest span covering both.
+    pub fn join(self, other: Span) -> Span {
+        Span {
+            start: self.start.min(other.start),
+            end: self.end.max(other.end),
+        }
+    }
+}
+
+/// A place whose line is known: `offset` lies on line `line` (1-based).
+/// Line numbers after it are counted from there, so reporting an error near
+/// the end of a long script does not rescan the whole script.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Anchor {
+    pub offset: usize,
+    pub line: usize,
+}
+
+impl Anchor {
+    pub const START: Anchor = Anchor { offset: 0, line: 1 };
+}
+
+impl Default for Anchor {
+    fn default() -> Anchor {
+        Anchor::START
+    }
+}
+
+/// The largest char boundary at or before `offset` (clamped to the text).
+pub fn floor_boundary(src: &str, offset: usize) -> usize {
+    let mut offset = offset.min(src.len());
+    while !src.is_char_boundary(offset) {
+        offset -= 1;
+    }
+    offset
+}
+
+fn newlines(bytes: &[u8]) -> usize {
+    bytes.iter().filter(|&&b| b == b'\n').count()
+}
+
+/// 1-based line and column (in characters) of a byte offset.
+pub fn line_col(src: &str, offset: usize) -> (usize, usize) {
+    line_col_from(src, offset, Anchor::START)
+}
+
+/// [`line_col`], counting lines from `anchor` when the offset lies after it.
+pub fn line_col_from(src: &str, offset: usize, anchor: Anchor) -> (usize, usize) {
+    let offset = floor_boundary(src, offset);
+    let anchor = if anchor.offset <= offset {
+        Anchor {
+            offset: floor_boundary(src, anchor.offset),
+            ..anchor
+        }
+    } else {
+        Anchor::START
+    };
+    let line = anchor.line + newlines(&src.as_bytes()[anchor.offset..offset]);
+    let line_start = src[..offset].rfind('\n').map_or(0, |i| i + 1);
+    let col = src[line_start..offset].chars().count() + 1;
+    (line, col)
+}
+
+/// Line numbers of increasing offsets, counted incrementally (statements
+/// come in order), so a long script costs no index of its lines.
+#[derive(Debug, Clone)]
+pub struct Lines<'a> {
+    src: &'a [u8],
+    /// The start of the line the last counted offset lies on.
+    start: usize,
+    line: usize,
+}
+
+impl<'a> Lines<'a> {
+    pub fn new(src: &'a str) -> Lines<'a> {
+        Lines {
+            src: src.as_bytes(),
+            start: 0,
+            line: 1,
+        }
+    }
+
+    /// The 1-based line of `offset` (an offset before the last one restarts
+    /// the count from the top).
+    pub fn line(&mut self, offset: usize) -> usize {
+        let offset = offset.min(self.src.len());
+        if offset < self.start {
+            self.start = 0;
+            self.line = 1;
+        }
+        let seg = &self.src[self.start..offset];
+        if let Some(last) = seg.iter().rposition(|&b| b == b'\n') {
+            self.line += newlines(seg);
+            self.start += last + 1;
+        }
+        self.line
+    }
+
+    /// The last counted line, as an anchor for rendering.
+    pub fn anchor(&self) -> Anchor {
+        Anchor {
+            offset: self.start,
+            line: self.line,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn line_col_counts_characters() {
+        assert_eq!(line_col("θ = 1", 3), (1, 3));
+        assert_eq!(line_col("a\nbc", 3), (2, 2));
+    }
+
+    #[test]
+    fn lines_count_forward_and_restart_backward() {
+        let src = "a\nb\n\nc";
+        let mut l = Lines::new(src);
+        assert_eq!(l.line(0), 1);
+        assert_eq!(l.line(2), 2);
+        assert_eq!(l.line(5), 4);
+        assert_eq!(l.anchor(), Anchor { offset: 5, line: 4 });
+        assert_eq!(l.line(1), 1);
+        assert_eq!(line_col_from(src, 5, Anchor { offset: 2, line: 2 }), (4, 1));
+    }
+}

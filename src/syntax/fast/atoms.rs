@@ -1,0 +1,356 @@
+//! The fast path's operands: atoms (numbers, names, calls, `sin θ`, `deg`,
+//! `( )`, `[ ]`, `{ }` superscripts) with their postfix operators (`[i]`,
+//! `.T`, `ᵀ`, `²`, `deg`), as the grammar's `operand`, `primary`,
+//! `bare_call`, `postfix`, `paren`, `sup_group`, `brackets` and `index`
+//! rules read them.
+
+use super::{Built, P};
+use crate::syntax::MAX_DEPTH;
+use crate::syntax::ast::{Expr, ExprKind, Ident, IndexArg};
+
+/// The scalar functions the book writes without parentheses (`bare_fn`).
+const BARE_FNS: [&str; 7] = ["asin", "acos", "atan", "sin", "cos", "tan", "sqrt"];
+
+impl P<'_> {
+    pub(super) fn leaf(&self, kind: ExprKind, start: usize, end: usize) -> (Expr, usize) {
+        let span = self.span(start, end);
+        (Expr { kind, span }, 1)
+    }
+
+    /// `(number | pi) ~ (WHITESPACE* ~ degrees)*` at the current position.
+    pub(super) fn numeric(&mut self) -> Option<Built> {
+        let start = self.pos;
+        let kind = if let Some(end) = self.number_at(start) {
+            self.src[start..end]
+                .parse::<f64>()
+                .ok()
+                .map(|x| (ExprKind::Number(x), end))
+        } else {
+            self.keyword_at(start, "pi")
+                .or_else(|| self.keyword_at(start, "π"))
+                .map(|end| (ExprKind::Number(std::f64::consts::PI), end))
+        };
+        let (kind, end) = kind?;
+        self.pos = end;
+        let (e, d) = self.leaf(kind, start, end);
+        Some(self.units(e, d))
+    }
+
+    /// `(WHITESPACE* ~ degrees)*` after `e`.
+    fn units(&mut self, mut e: Expr, mut d: usize) -> Built {
+        loop {
+            let save = self.pos;
+            self.ws();
+            match self.degrees_at(self.pos) {
+                Some(end) => (e, d) = self.degrees(e, d, self.pos, end)?,
+                None => {
+                    self.pos = save;
+                    return Some((e, d));
+                }
+            }
+        }
+    }
+
+    /// `operand`: an atom with its postfix operators.
+    pub(super) fn operand(&mut self) -> Built {
+        let start = self.pos;
+        if let Some(built) = self.numeric() {
+            return built;
+        }
+
+        // primary = mech | call | bare_call | bool_lit | ident | paren | brackets | deg_unit
+        if self.keyword_at(start, "mech").is_some() {
+            return None;
+        }
+        let name = self.ident_at(start)?;
+        let (mut e, mut d) = 'primary: {
+            if let Some(end) = name {
+                self.pos = end;
+                self.ws();
+                if self.byte(self.pos) == Some(b'(') {
+                    let func = self.ident(start, end);
+                    let (args, d) = self.call_args()?;
+                    let span = self.span(start, self.pos);
+                    let kind = ExprKind::Call { func, args };
+                    break 'primary (Expr { kind, span }, d + 1);
+                }
+                self.pos = start;
+                if let Some(built) = self.bare_call(start, end) {
+                    break 'primary built?;
+                }
+                self.pos = start;
+            }
+            for (word, value) in [("true", true), ("false", false)] {
+                if let Some(end) = self.keyword_at(start, word) {
+                    self.pos = end;
+                    break 'primary self.leaf(ExprKind::Bool(value), start, end);
+                }
+            }
+            if let Some(end) = name {
+                self.pos = end;
+                let var = ExprKind::Var(self.src[start..end].to_string());
+                break 'primary self.leaf(var, start, end);
+            }
+            if let Some(end) = self.keyword_at(start, "deg") {
+                self.pos = end;
+                let one = self.leaf(ExprKind::Number(1.0), start, end).0;
+                let span = one.span;
+                break 'primary (
+                    Expr {
+                        kind: ExprKind::Degrees(Box::new(one)),
+                        span,
+                    },
+                    2,
+                );
+            }
+            match self.byte(start)? {
+                b'(' => self.paren()?,
+                b'[' => self.brackets()?,
+                _ => return None,
+            }
+        };
+
+        // postfix = index | WHITESPACE* ~ (member | degrees | transpose_mark)
+        loop {
+            let at = self.pos;
+            if self.byte(at) == Some(b'[') {
+                (e, d) = self.index(e, d)?;
+                continue;
+            }
+            self.ws();
+            let op = self.pos;
+            if self.byte(op) == Some(b'.') {
+                if let Some(end) = self.ident_at(op + 1)? {
+                    let member = self.ident(op + 1, end);
+                    (e, d) = self.member(e, d, op, member)?;
+                    self.pos = end;
+                    continue;
+                }
+            } else if let Some(end) = self.degrees_at(op) {
+                (e, d) = self.degrees(e, d, op, end)?;
+                continue;
+            } else if let Some(end) = self.superscript_at(op) {
+                self.spend()?;
+                let sup = self.span(op, end);
+                let span = e.span.join(sup);
+                let kind = crate::syntax::ast::superscript_power(e, &self.src[op..end], sup);
+                e = Expr { kind, span };
+                d += 2;
+                self.pos = end;
+                continue;
+            } else if self.src[op..].starts_with('ᵀ') {
+                let end = op + 'ᵀ'.len_utf8();
+                let member = Ident {
+                    name: "T".into(),
+                    span: self.span(op, end),
+                };
+                (e, d) = self.member(e, d, op, member)?;
+                self.pos = end;
+                continue;
+            }
+            self.pos = at;
+            break;
+        }
+        (d <= MAX_DEPTH).then_some((e, d))
+    }
+
+    fn member(&mut self, e: Expr, d: usize, op: usize, member: Ident) -> Built {
+        self.spend()?;
+        let span = e.span.join(self.span(op, member.span.end - self.off));
+        let kind = ExprKind::Member {
+            base: Box::new(e),
+            member,
+        };
+        Some((Expr { kind, span }, d + 1))
+    }
+
+    /// `bare_call` for the name at `start..end`: `sin θ`, `cos 30°`. `None`
+    /// when it does not match (the grammar tries the next alternative).
+    fn bare_call(&mut self, start: usize, end: usize) -> Option<Built> {
+        let word = &self.src[start..end];
+        if !BARE_FNS.contains(&word) || !self.byte(end).is_some_and(super::is_ws) {
+            return None;
+        }
+        self.pos = end;
+        self.ws();
+        let at = self.pos;
+        let arg = match self.numeric() {
+            Some(built) => built,
+            None => {
+                let stop = self.ident_at(at)??;
+                if self.byte(stop) == Some(b'(') {
+                    return None;
+                }
+                self.pos = stop;
+                let var = ExprKind::Var(self.src[at..stop].to_string());
+                let (e, d) = self.leaf(var, at, stop);
+                self.units(e, d)
+            }
+        };
+        Some(arg.and_then(|(arg, d)| {
+            self.spend()?;
+            let func = self.ident(start, end);
+            let span = self.span(start, self.pos);
+            let kind = ExprKind::Call {
+                func,
+                args: vec![arg],
+            };
+            Some((Expr { kind, span }, d + 1))
+        }))
+    }
+
+    pub(super) fn degrees(&mut self, base: Expr, d: usize, start: usize, end: usize) -> Built {
+        self.spend()?;
+        self.pos = end;
+        let span = base.span.join(self.span(start, end));
+        let kind = ExprKind::Degrees(Box::new(base));
+        Some((Expr { kind, span }, d + 1))
+    }
+
+    /// Comma-separated expressions up to `close`, with an optional final
+    /// comma; at least one unless `empty_ok`. Leaves `pos` after `close`.
+    pub(super) fn list(&mut self, close: u8, empty_ok: bool) -> Option<(Vec<Expr>, usize)> {
+        self.pos += 1;
+        let mut items = Vec::new();
+        let mut depth = 0;
+        self.ws();
+        if !(empty_ok && self.byte(self.pos) == Some(close)) {
+            loop {
+                let (e, d) = self.expr(0)?;
+                depth = depth.max(d);
+                items.push(e);
+                if !self.eat(b',') {
+                    break;
+                }
+                self.ws();
+                if self.byte(self.pos) == Some(close) {
+                    break;
+                }
+            }
+        }
+        self.eat(close).then_some((items, depth))
+    }
+
+    pub(super) fn call_args(&mut self) -> Option<(Vec<Expr>, usize)> {
+        self.spend()?;
+        self.list(b')', true)
+    }
+
+    pub(super) fn paren(&mut self) -> Built {
+        self.spend()?;
+        let start = self.pos;
+        let (mut items, d) = self.list(b')', false)?;
+        let span = self.span(start, self.pos);
+        if items.len() == 1 {
+            let mut e = items.pop()?;
+            e.span = span;
+            return Some((e, d));
+        }
+        let kind = ExprKind::Paren(items);
+        Some((Expr { kind, span }, d + 1))
+    }
+
+    /// `sup_group`: `{ expr }`, the expression spanning its braces.
+    pub(super) fn group(&mut self, close: u8) -> Built {
+        self.spend()?;
+        let start = self.pos;
+        self.pos += 1;
+        let (mut e, d) = self.expr(0)?;
+        if !self.eat(close) {
+            return None;
+        }
+        e.span = self.span(start, self.pos);
+        Some((e, d))
+    }
+
+    pub(super) fn index(&mut self, base: Expr, depth: usize) -> Built {
+        self.spend()?;
+        let start = self.pos;
+        self.pos += 1;
+        let mut args = Vec::new();
+        let mut d = 0;
+        loop {
+            self.ws();
+            if self.byte(self.pos) == Some(b':') {
+                args.push(IndexArg::All(self.span(self.pos, self.pos + 1)));
+                self.pos += 1;
+            } else {
+                let (e, ed) = self.expr(0)?;
+                d = d.max(ed);
+                args.push(IndexArg::Expr(e));
+            }
+            if !self.eat(b',') {
+                break;
+            }
+        }
+        if !self.eat(b']') {
+            return None;
+        }
+        let span = base.span.join(self.span(start, self.pos));
+        let kind = ExprKind::Index {
+            base: Box::new(base),
+            args,
+        };
+        Some((Expr { kind, span }, (depth + 1).max(d + 1)))
+    }
+
+    /// Skips `row_sep`s (`;` or a newline) and whitespace.
+    pub(super) fn row_seps(&mut self) -> bool {
+        let mut any = false;
+        loop {
+            self.ws();
+            match self.byte(self.pos) {
+                Some(b';' | b'\n') => {
+                    self.pos += 1;
+                    any = true;
+                }
+                _ => return any,
+            }
+        }
+    }
+
+    pub(super) fn brackets(&mut self) -> Built {
+        self.spend()?;
+        let start = self.pos;
+        self.pos += 1;
+        let mut rows = Vec::new();
+        let mut depth = 0;
+        self.row_seps();
+        while self.byte(self.pos) != Some(b']') {
+            if let Some(plain) = self.plain_rows() {
+                depth = depth.max(2);
+                rows.extend(plain);
+            } else {
+                let mut row = Vec::new();
+                loop {
+                    let (e, d) = self.expr(0)?;
+                    depth = depth.max(d);
+                    row.push(e);
+                    if !self.eat(b',') {
+                        break;
+                    }
+                    // A newline after a comma continues the row.
+                    let comma = self.pos;
+                    while {
+                        self.ws();
+                        self.byte(self.pos) == Some(b'\n')
+                    } {
+                        self.pos += 1;
+                    }
+                    if matches!(self.byte(self.pos), Some(b';' | b']')) {
+                        self.pos = comma;
+                        break;
+                    }
+                }
+                rows.push(row);
+            }
+            if !self.row_seps() && self.byte(self.pos) != Some(b']') {
+                return None;
+            }
+        }
+        self.pos += 1;
+        let span = self.span(start, self.pos);
+        let kind = ExprKind::Brackets(rows);
+        Some((Expr { kind, span }, depth + 1))
+    }
+}

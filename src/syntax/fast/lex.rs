@@ -1,0 +1,140 @@
+//! The fast path's tokens: characters, names, keywords, numbers and
+//! degrees, matched exactly as the grammar's `ident`, `keyword`, `number`
+//! and `degrees` rules match them.
+
+use super::P;
+
+pub(super) fn is_ws(b: u8) -> bool {
+    matches!(b, b' ' | b'\t' | b'\r' | b'\x0C')
+}
+
+pub(super) fn xid_start(c: char) -> bool {
+    if c.is_ascii() {
+        c.is_ascii_alphabetic()
+    } else {
+        pest::unicode::XID_START(c)
+    }
+}
+
+pub(super) fn xid_continue(c: char) -> bool {
+    if c.is_ascii() {
+        c.is_ascii_alphanumeric() || c == '_'
+    } else {
+        pest::unicode::XID_CONTINUE(c)
+    }
+}
+
+const KEYWORDS: [&str; 8] = ["pi", "π", "deg", "true", "false", "given", "derive", "mech"];
+
+impl P<'_> {
+    /// `!XID_CONTINUE` at `at`.
+    pub(super) fn word_ends(&self, at: usize) -> bool {
+        !self.char_at(at).is_some_and(xid_continue)
+    }
+
+    /// `word ~ !XID_CONTINUE` at `at`: the end of the word.
+    pub(super) fn keyword_at(&self, at: usize, word: &str) -> Option<usize> {
+        let end = at + word.len();
+        (self.s.get(at..end) == Some(word.as_bytes()) && self.word_ends(end)).then_some(end)
+    }
+
+    /// The grammar's `ident` at `at`: `Some(Some(end))`, `Some(None)` where
+    /// pest's `ident` fails, `None` to give up (a braced subscript).
+    pub(super) fn ident_at(&self, at: usize) -> Option<Option<usize>> {
+        match self.char_at(at) {
+            Some(c) if xid_start(c) && c != 'ᵀ' => {}
+            _ => return Some(None),
+        }
+        let mut i = at;
+        while let Some(c) = self.char_at(i) {
+            if c == '_' && self.byte(i + 1) == Some(b'{') {
+                return None;
+            }
+            // `ᵀ` is the transpose mark, never part of a name.
+            if !(xid_continue(c) || c == '\'') || c == 'ᵀ' {
+                break;
+            }
+            i += c.len_utf8();
+        }
+        // `!keyword`: a keyword not followed by XID_CONTINUE or `'`, i.e.
+        // the whole run of name characters.
+        let word = &self.src[at..i];
+        if KEYWORDS.contains(&word) || word == "for" {
+            return Some(None);
+        }
+        Some(Some(i))
+    }
+
+    /// `number`: the end of the literal at `at`, if any.
+    pub(super) fn number_at(&self, at: usize) -> Option<usize> {
+        let digits = |mut i: usize| {
+            while self.byte(i).is_some_and(|b| b.is_ascii_digit()) {
+                i += 1;
+            }
+            i
+        };
+        let mut i = digits(at);
+        if i > at {
+            if self.byte(i) == Some(b'.') {
+                let j = digits(i + 1);
+                if j > i + 1 {
+                    i = j;
+                } else if self.trailing_point(i + 1) {
+                    // numpy's `0.`, `1.e-3`
+                    i += 1;
+                }
+            }
+        } else if self.byte(at) == Some(b'.') {
+            i = digits(at + 1);
+            if i == at + 1 {
+                return None;
+            }
+        } else {
+            return None;
+        }
+        if matches!(self.byte(i), Some(b'e' | b'E')) {
+            let mut j = i + 1;
+            if matches!(self.byte(j), Some(b'+' | b'-')) {
+                j += 1;
+            }
+            let k = digits(j);
+            if k > j {
+                i = k;
+            }
+        }
+        Some(i)
+    }
+
+    /// After `2.`: `!("." | XID_START) | &(^"e" ~ ("+" | "-")? ~ ASCII_DIGIT)`.
+    fn trailing_point(&self, at: usize) -> bool {
+        match self.char_at(at) {
+            Some('e' | 'E') => {
+                let j = at + 1 + usize::from(matches!(self.byte(at + 1), Some(b'+' | b'-')));
+                self.byte(j).is_some_and(|b| b.is_ascii_digit())
+            }
+            Some(c) => !(c == '.' || xid_start(c)),
+            None => true,
+        }
+    }
+
+    /// `superscript` at `at` (`²`, `⁻¹`): its end.
+    pub(super) fn superscript_at(&self, at: usize) -> Option<usize> {
+        const DIGITS: &str = "⁰¹²³⁴⁵⁶⁷⁸⁹";
+        let rest = &self.src[at..];
+        let body = rest.strip_prefix('⁻').unwrap_or(rest);
+        let digits: usize = body
+            .chars()
+            .take_while(|&c| DIGITS.contains(c))
+            .map(char::len_utf8)
+            .sum();
+        (digits > 0).then(|| at + (rest.len() - body.len()) + digits)
+    }
+
+    /// `degrees` at `at`: its end.
+    pub(super) fn degrees_at(&self, at: usize) -> Option<usize> {
+        if self.src[at..].starts_with('°') {
+            return Some(at + '°'.len_utf8());
+        }
+        self.keyword_at(at, "deg")
+    }
+}

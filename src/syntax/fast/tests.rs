@@ -1,0 +1,183 @@
+//! The fast path against pest: every statement of the examples and
+//! error scripts, chosen statements, and random token strings and
+//! expressions must give the same tree (or the fast path must give up).
+
+use crate::syntax::{FAST_DEPTH, parser, split};
+use proptest::prelude::*;
+
+/// Checks every statement of `src` the fast path takes against pest;
+/// returns how many statements it took and how many pest parsed.
+fn agree(src: &str) -> (usize, usize) {
+    let split = split::split(src);
+    let (mut fast, mut ok) = (0, 0);
+    for chunk in split.chunks.iter().filter(|c| c.error.is_none()) {
+        let text = &split.text[chunk.span.start..chunk.span.end];
+        let slow = parser::parse_chunk(text, chunk.span);
+        ok += usize::from(slow.is_ok());
+        if chunk.depth > FAST_DEPTH {
+            continue;
+        }
+        if let Some(stmt) = super::parse_statement(text, chunk.span) {
+            fast += 1;
+            assert_eq!(Ok(stmt), slow, "{src:?}");
+        }
+    }
+    (fast, ok)
+}
+
+fn scripts() -> Vec<String> {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut dirs = vec![root.join("examples")];
+    if let Ok(kinds) = std::fs::read_dir(root.join("tests/errors")) {
+        dirs.extend(kinds.flatten().map(|k| k.path()));
+    }
+    let mut out = Vec::new();
+    for dir in dirs {
+        for f in std::fs::read_dir(dir).into_iter().flatten().flatten() {
+            if f.path().extension().is_some_and(|e| e == "chs") {
+                out.extend(std::fs::read_to_string(f.path()));
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn fast_path_agrees_with_pest() {
+    let (mut fast, mut ok) = (0, 0);
+    let scripts = scripts();
+    assert!(!scripts.is_empty());
+    for src in &scripts {
+        let (f, o) = agree(src);
+        fast += f;
+        ok += o;
+    }
+    // Most statements of the examples take the fast path.
+    assert!(fast * 10 >= ok * 8, "fast path took {fast} of {ok}");
+    for src in [
+        "T_sb = RpToTrans(Rotz(30 deg), (1, 2, 0))",
+        "p_s = T_sb * (1, 0, 0)",
+        "x = 2 * 3 + 1",
+        "w = MatrixLog3(Rotz(0.1) * Rotx(0.2))",
+        "V_s = Ad(T_sb) * (0, 0, 1, 1, 0, 0)",
+        "f(x, y) = -x^2 + y'",
+        "(w, theta) = axis_ang3(expc)",
+        "M = [R, p; 0, 0, 0, 1]\n[1, 2,\n 3]",
+        "exp([S] theta) * M[1, :] .T + 2 pi - 30° / θ(1) + true",
+        // The book's notation (issue 13).
+        "R_sb = [[0, -1, 0], [1, 0, 0], [0, 0, 1]]",
+        "R = [[ 0. -1.  0.] [ 1.  0.  0.] [ 0.  0.  1.]]",
+        "R = [[ 0. -1.  0.]\n [ 1.  0.  0.]\n [ 0.  0.  1.]]",
+        "R = [0 -1 0; 1 0 0; 0 0 1]",
+        "x = [1.e-3 -2.5E+2 +3 .5]",
+        "[1, 2,\n 3, 4,\n]",
+        "R^T * V_b^T + Ad(T_sb)^T - [w]^T",
+        "Rᵀ * R^{-1} + R^{T} + X^-1 + Rᵀᵀ + R⁻¹ + [w]² - x¹⁰ᵀ",
+        "e^(A t) + e^([w] θ)",
+        "exp([S1] θ1) exp([S2] θ2) M",
+        "T_sb T_bc + Ad(T_sb) V_b + sin(θ) W",
+        "I + sin θ [w] + (1 - cos θ)[w]^2",
+        "cos 30° + sqrt 2 + tan pi + asin x deg + acos θ_1'",
+        "ans / deg",
+        "T_01 * T_12 * T_s1",
+    ] {
+        let (f, o) = agree(src);
+        assert!(f == o && o > 0, "{src:?} takes the slow path");
+    }
+}
+
+const TOKENS: &[&str] = &[
+    "(", ")", "[", "]", ",", ";", "+", "-", "*", "/", "^", ".", "'", "deg", "°", "pi", "π", "1",
+    "2.5", ".5", "1e", "1e-3", "T_ab", "x", "θ", "=", "==", ":", "true", "false", "given",
+    "derive", "mech", "<", ">", "\n", " ", "\t", "_{", "}", "f(", "**", ".T", "_",
+    // The book's notation.
+    "ᵀ", "^T", "^{", "sin", "cos ", "sqrt", "e^", "0.", "1.e", "-1.", "[[", "]]", "I", "T_01", "²",
+    "⁻¹", "⁻",
+];
+
+fn tokens() -> impl Strategy<Value = String> {
+    prop::collection::vec((prop::sample::select(TOKENS), prop::bool::ANY), 0..24).prop_map(
+        |parts| {
+            parts
+                .into_iter()
+                .map(|(t, space)| {
+                    if space {
+                        format!("{t} ")
+                    } else {
+                        t.to_string()
+                    }
+                })
+                .collect()
+        },
+    )
+}
+
+/// Mostly well-formed expressions.
+fn expr() -> impl Strategy<Value = String> {
+    let atom = prop::sample::select(
+        &[
+            "1",
+            "2.5",
+            ".5",
+            "3e2",
+            "pi",
+            "π",
+            "x",
+            "T_sb'",
+            "θ",
+            "true",
+            "30 deg",
+            "30°",
+            "M[1, :]",
+            "v.T",
+            "v .R",
+            "f()",
+            "Rᵀ",
+            "sin θ",
+            "cos 30°",
+            "sqrt 2",
+            "deg",
+            "0.",
+            "[1 -2 3]",
+            "[[1. 2.] [3. 4.]]",
+        ][..],
+    )
+    .prop_map(str::to_string);
+    atom.prop_recursive(4, 32, 3, |inner| {
+        let op = prop::sample::select(
+            &[
+                "+", "-", "*", "/", "^", " ", "", "^-", " - -", "^T", "^{T}", " [w] ", ",\n",
+            ][..],
+        );
+        prop_oneof![
+            (inner.clone(), op, inner.clone()).prop_map(|(a, o, b)| format!("{a}{o}{b}")),
+            prop::collection::vec(inner.clone(), 1..3).prop_map(|v| format!("({})", v.join(", "))),
+            prop::collection::vec(inner.clone(), 0..3).prop_map(|v| format!("[{}]", v.join("; "))),
+            prop::collection::vec(inner.clone(), 0..3)
+                .prop_map(|v| format!("g ({},)", v.join(","))),
+            (inner.clone(), inner.clone()).prop_map(|(a, b)| format!("{a}[{b}] deg")),
+            (inner.clone(), inner.clone()).prop_map(|(a, b)| format!("{a}^{{{b}}}")),
+            prop::collection::vec(inner, 1..4).prop_map(|v| format!("[{}]", v.join(" "))),
+        ]
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 2000, ..ProptestConfig::default() })]
+
+    #[test]
+    fn random_tokens_agree(src in tokens()) {
+        agree(&src);
+    }
+
+    #[test]
+    fn random_expressions_agree(e in expr(), form in 0..4usize) {
+        let src = match form {
+            0 => e,
+            1 => format!("y_1 = {e}"),
+            2 => format!("h(a, b) = {e}"),
+            _ => format!("(a, b) = {e}"),
+        };
+        agree(&src);
+    }
+}

@@ -1,0 +1,105 @@
+//! Rewrites of a parsed statement into the tree the rest of the crate reads
+//! (LANGUAGE.md §4), shared by both parsers:
+//!
+//! - the exponent `T` always transposes: `R^T`, `R^{T}` become `R.T`, even
+//!   when a name `T` is bound;
+//! - nested brackets as numpy writes them, `[[0, -1, 0], [1, 0, 0]]`, are
+//!   rows: a bracket whose every element is a bracketed row of two or more
+//!   entries (and which has two or more of them) is the matrix of those
+//!   rows. `[[w], p; 0, 1]` (the book's `[ω]`) and a lone `[[1, 2, 3]]`
+//!   (the bracket of a vector) are not rewritten.
+
+use super::ast::{Expr, ExprKind, Ident, IndexArg, Stmt, StmtKind};
+
+/// Applies the rewrites to every expression of `stmt`.
+pub fn stmt(mut stmt: Stmt) -> Stmt {
+    match &mut stmt.kind {
+        StmtKind::Expr(e) => expr(e),
+        StmtKind::Assign { value, .. } | StmtKind::Destructure { value, .. } => expr(value),
+        StmtKind::FnDef { body, .. } => expr(body),
+        StmtKind::Given { .. } | StmtKind::Derive { .. } => {}
+    }
+    stmt
+}
+
+fn expr(e: &mut Expr) {
+    match &mut e.kind {
+        ExprKind::Number(_) | ExprKind::Bool(_) | ExprKind::Var(_) | ExprKind::Mech(_) => {}
+        ExprKind::Binary { lhs, rhs, .. } => {
+            expr(lhs);
+            expr(rhs);
+        }
+        ExprKind::Unary { operand: x, .. }
+        | ExprKind::Degrees(x)
+        | ExprKind::Member { base: x, .. } => expr(x),
+        ExprKind::Call { args, .. } | ExprKind::Paren(args) => args.iter_mut().for_each(expr),
+        ExprKind::Index { base, args } => {
+            expr(base);
+            for a in args {
+                if let IndexArg::Expr(x) = a {
+                    expr(x);
+                }
+            }
+        }
+        ExprKind::Brackets(rows) => {
+            rows.iter_mut().flatten().for_each(expr);
+            if let Some(flat) = numpy_rows(rows) {
+                *rows = flat;
+            }
+        }
+        ExprKind::Str(_) => {}
+        ExprKind::Range { start, step, end } => {
+            expr(start);
+            step.iter_mut().for_each(|h| expr(h));
+            expr(end);
+        }
+        ExprKind::Comprehension { body, vars } => {
+            expr(body);
+            vars.iter_mut().for_each(|(_, over)| expr(over));
+        }
+    }
+    transpose(e);
+}
+
+/// `X^T` → `X.T`.
+fn transpose(e: &mut Expr) {
+    let ExprKind::Binary {
+        op: super::ast::BinOp::Pow,
+        rhs,
+        implicit: false,
+        ..
+    } = &e.kind
+    else {
+        return;
+    };
+    if !matches!(&rhs.kind, ExprKind::Var(t) if t == "T") {
+        return;
+    }
+    let member = Ident {
+        name: "T".into(),
+        span: rhs.span,
+    };
+    let kind = std::mem::replace(&mut e.kind, ExprKind::Bool(false));
+    if let ExprKind::Binary { lhs, .. } = kind {
+        e.kind = ExprKind::Member { base: lhs, member };
+    }
+}
+
+/// The rows of `[[a, b], [c, d]]`, if every element is a one-row bracket
+/// of two or more entries and there are at least two of them.
+fn numpy_rows(rows: &[Vec<Expr>]) -> Option<Vec<Vec<Expr>>> {
+    let elements: Vec<&Expr> = rows.iter().flatten().collect();
+    if elements.len() < 2 {
+        return None;
+    }
+    let mut out = Vec::with_capacity(elements.len());
+    for el in elements {
+        match &el.kind {
+            ExprKind::Brackets(inner) if inner.len() == 1 && inner[0].len() >= 2 => {
+                out.push(inner[0].clone());
+            }
+            _ => return None,
+        }
+    }
+    Some(out)
+}

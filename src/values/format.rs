@@ -1,0 +1,151 @@
+//! Values and numbers on one line, for people: the [`Style`] of numbers
+//! (LANGUAGE.md §10, `--digits` and the REPL's `:exact`) and [`inline`],
+//! the one-line form of a value that also names constants inside symbolic
+//! expressions. Below evaluation, so the evaluator can print without
+//! importing the output layer; multi-line blocks and JSON are in `output`.
+
+use std::fmt::Write;
+
+use super::number::write_num;
+use super::value::Value;
+
+/// How numbers print: `digits` decimals (trailing zeros trimmed), or with
+/// `exact`, a closed form such as `1/√2` or `π/6` where one is within
+/// 1e-12 (the REPL's `:exact`). A plain `usize` converts to decimals only.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Style {
+    /// Decimals.
+    pub digits: usize,
+    /// Print simple closed forms (`√3/2`, `-π/2`) instead of decimals.
+    pub exact: bool,
+}
+
+impl Style {
+    /// One number in this style.
+    pub fn num(self, x: f64) -> String {
+        let mut s = String::new();
+        self.write(&mut s, x);
+        s
+    }
+    /// One number in this style, appended to `out`.
+    pub fn write(self, out: &mut String, x: f64) {
+        match self.exact.then(|| super::exact::closed_form(x)).flatten() {
+            Some(form) => out.push_str(&form),
+            None => write_num(out, x, self.digits),
+        }
+    }
+}
+
+impl From<usize> for Style {
+    fn from(digits: usize) -> Style {
+        Style {
+            digits,
+            exact: false,
+        }
+    }
+}
+
+/// A value on one line: `2`, `(1, 2, 3)`, `[1, 2; 3, 4]`.
+pub fn inline(v: &Value, style: impl Into<Style>) -> String {
+    let mut s = String::new();
+    write_inline(&mut s, v, style.into());
+    s
+}
+
+/// Numbers separated by `, `.
+fn write_list<'a>(out: &mut String, xs: impl Iterator<Item = &'a f64>, style: Style) {
+    for (i, x) in xs.enumerate() {
+        if i > 0 {
+            out.push_str(", ");
+        }
+        style.write(out, *x);
+    }
+}
+
+/// [`inline`], appended to `out`.
+pub fn write_inline(out: &mut String, v: &Value, style: Style) {
+    match v {
+        Value::Num { m, .. } if m.is_empty() => {
+            let _ = write!(out, "zeros({}, {})", m.nrows(), m.ncols());
+        }
+        Value::Num { m, .. } if m.len() == 1 && m.ncols() == 1 && m.nrows() == 1 => {
+            style.write(out, m[0])
+        }
+        Value::Num { m, .. } if m.ncols() == 1 => {
+            out.push('(');
+            write_list(out, m.iter(), style);
+            out.push(')');
+        }
+        // A row: `[a, b]` would read back as a column, so print its transpose.
+        Value::Num { m, .. } if m.nrows() == 1 => {
+            out.push('(');
+            write_list(out, m.iter(), style);
+            out.push_str(").T");
+        }
+        Value::Num { m, .. } => {
+            out.push('[');
+            for (i, r) in m.row_iter().enumerate() {
+                if i > 0 {
+                    out.push_str("; ");
+                }
+                write_list(out, r.iter(), style);
+            }
+            out.push(']');
+        }
+        Value::Bool(b) => out.push_str(if *b { "true" } else { "false" }),
+        Value::Tuple(vs) => {
+            out.push('(');
+            for (i, x) in vs.iter().enumerate() {
+                if i > 0 {
+                    out.push_str(", ");
+                }
+                write_inline(out, x, style);
+            }
+            out.push(')');
+        }
+        Value::Mech(m) => {
+            let _ = write!(out, "mech < {} >", m.joints_text());
+        }
+        Value::Sym(s) => {
+            let _ = write!(out, "{s}");
+        }
+        Value::List(vs) => {
+            out.push('[');
+            let n = vs.len();
+            for (i, x) in vs.iter().enumerate() {
+                // Long lists: the first LIST_HEAD items, …, the last two.
+                if n > LIST_INLINE && i >= LIST_HEAD && i < n - 2 {
+                    if i == LIST_HEAD {
+                        out.push_str(", …");
+                    }
+                    continue;
+                }
+                if i > 0 {
+                    out.push_str(", ");
+                }
+                write_inline(out, x, style);
+            }
+            out.push(']');
+        }
+        Value::Str(t) => {
+            let _ = write!(out, "{t:?}");
+        }
+        Value::Picture(p) => out.push_str(&picture(p)),
+    }
+}
+
+/// Lists longer than this print their first [`LIST_HEAD`] and last two
+/// items.
+const LIST_INLINE: usize = 12;
+const LIST_HEAD: usize = 8;
+
+/// `picture: 5 frames and 1 screw axis in {s} → pic.svg` (LANGUAGE.md §12).
+fn picture(p: &super::value::Picture) -> String {
+    if p.is_view_only() {
+        return p.summary.clone();
+    }
+    match &p.file {
+        Some(f) => format!("picture: {} → {f}", p.summary),
+        None => format!("picture: {}", p.summary),
+    }
+}

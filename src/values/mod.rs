@@ -1,0 +1,17 @@
+//! The value layer, below everything that computes: runtime [`value::Value`]s
+//! and symbolic expressions over `given` names ([`symbolic`]), the group a
+//! matrix belongs to ([`convert`]), the arithmetic of the language on values
+//! ([`ops`]: products, powers, inverses, members, indexing, brackets), and
+//! numbers as text ([`number`], [`exact`], [`format`]). It imports only
+//! `check`'s kinds, `syntax`'s tree (a user function's body), `lie` and
+//! `mech`; `builtins` and `eval` build on it. `crate::eval::{value, ops,
+//! convert, symbolic}` and `crate::output::{number, exact}` re-export these
+//! modules under their former paths.
+
+pub mod convert;
+pub mod exact;
+pub mod format;
+pub mod number;
+pub mod ops;
+pub mod symbolic;
+pub mod value;

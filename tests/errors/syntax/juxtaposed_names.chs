@@ -1,2 +1,0 @@
-# two names side by side
-T_ab T_bc

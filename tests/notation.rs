@@ -1,0 +1,236 @@
+//! The book's notation (LANGUAGE.md §§2, 4, 7; issue 13): each form gives
+//! the value the book means, the same as its spelled-out equivalent, and
+//! the forms that read two ways are errors naming both readings.
+
+use chasles::eval::env::Mode;
+use chasles::session::{Session, Settings};
+
+/// Runs `src`; the JSON line of each statement.
+fn run(src: &str) -> Result<Vec<serde_json::Value>, String> {
+    let mut s = Session::new(Settings {
+        json: true,
+        ..Settings::default()
+    });
+    let (out, err, n) = s.run_to_strings("t.chs", src, Mode::Run, false);
+    if n > 0 {
+        return Err(err);
+    }
+    Ok(out
+        .lines()
+        .map(|l| serde_json::from_str(l).expect("json"))
+        .collect())
+}
+
+fn numbers(v: &serde_json::Value) -> Vec<f64> {
+    match v {
+        serde_json::Value::Array(xs) => xs.iter().flat_map(numbers).collect(),
+        x => vec![x.as_f64().expect("a number")],
+    }
+}
+
+/// The value of the last statement of `src`.
+fn last(src: &str) -> Vec<f64> {
+    let lines = run(src).unwrap_or_else(|e| panic!("{src}:\n{e}"));
+    numbers(&lines.last().expect("a value")["value"])
+}
+
+/// The last statement of `setup; a` equals that of `setup; b`.
+fn same(setup: &str, a: &str, b: &str) {
+    let x = last(&format!("{setup}\n{a}"));
+    let y = last(&format!("{setup}\n{b}"));
+    assert_eq!(x.len(), y.len(), "{a} vs {b}");
+    for (p, q) in x.iter().zip(&y) {
+        assert!((p - q).abs() < 1e-12, "{a} = {x:?} but {b} = {y:?}");
+    }
+}
+
+/// The error messages and help of `src`, as printed.
+fn error(src: &str) -> String {
+    let mut s = Session::new(Settings::default());
+    let (_, err, n) = s.run_to_strings("t.chs", src, Mode::Run, true);
+    assert!(n > 0, "{src} should fail");
+    err
+}
+
+const SETUP: &str = "w = (0, 0.866, 0.5)\nθ = 30 deg\nR = Rot(w, θ)\nA = [0, 1; -1, 0]\nt = 0.5\nT_sb = SE3(Rotz(0.3), (1, 2, 3))\nT_bc = SE3(Rotx(0.2), (0, 1, 0))\nV_b = (1, 2, 3, 4, 5, 6)";
+
+#[test]
+fn nested_brackets_are_rows() {
+    // numpy's nested lists are rows, not columns: the silent wrong answer.
+    let rows = [0.0, -1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0];
+    assert_eq!(last("R_sb = [[0, -1, 0], [1, 0, 0], [0, 0, 1]]"), rows);
+    assert_eq!(last("[[0, -1, 0],\n [1, 0, 0],\n [0, 0, 1]]"), rows);
+    // Pasted numpy and MATLAB output reads as printed.
+    assert_eq!(last("[[ 0. -1.  0.] [ 1.  0.  0.] [ 0.  0.  1.]]"), rows);
+    assert_eq!(
+        last("[[ 0. -1.  0.]\n [ 1.  0.  0.]\n [ 0.  0.  1.]]"),
+        rows
+    );
+    assert_eq!(last("[0 -1 0; 1 0 0; 0 0 1]"), rows);
+    assert_eq!(last("[1.e-3 -2 +3]"), [0.001, -2.0, 3.0]);
+    // The book's bracket inside a block is not a row list.
+    same(
+        "w = (1, 2, 3)",
+        "[[w], (4, 5, 6); 0, 0, 0, 0]",
+        "[[w], (4, 5, 6); 0, 0]",
+    );
+    same("", "[[1, 2, 3]]", "[(1, 2, 3)]");
+}
+
+#[test]
+fn space_separated_rows_with_names_read_two_ways() {
+    for (src, readings) in [
+        (
+            "[2 pi]",
+            "write `2, pi` for two entries or `2 * pi` for the product",
+        ),
+        (
+            "x = 1\n[1 -x]",
+            "write `1, -x` for two entries or `1 - x` for the difference",
+        ),
+    ] {
+        let e = error(src);
+        assert!(e.contains("inside brackets is ambiguous"), "{e}");
+        assert!(e.contains(readings), "{e}");
+    }
+}
+
+#[test]
+fn superscripts_transpose_and_invert() {
+    same(SETUP, "R^T", "R.T");
+    same(SETUP, "Rᵀ", "R.T");
+    same(SETUP, "R^{T}", "R.T");
+    same(SETUP, "R^{-1}", "inv(R)");
+    same(SETUP, "R^-1", "inv(R)");
+    same(SETUP, "V_b^T", "V_b.T");
+    same(SETUP, "Ad(T_sb)^T", "Ad(T_sb).T");
+    same(SETUP, "[w]^T", "[w].T");
+    same(SETUP, "R⁻¹", "inv(R)");
+    same(SETUP, "[w]²", "[w]^2");
+    same(SETUP, "(1 - cos θ)[w]²", "(1 - cos(θ)) * [w]^2");
+    // `^T` transposes even when a name T is bound.
+    same(&format!("{SETUP}\nT = 2"), "R^T", "R.T");
+    // e^(x) is exp(x) for matrices; a scalar power of e is unchanged.
+    same(SETUP, "e^(A t)", "exp(A * t)");
+    same(SETUP, "e^([w] θ)", "exp([w] * θ)");
+    same(SETUP, "e^2", "2.718281828459045^2");
+}
+
+#[test]
+fn juxtaposition_multiplies() {
+    same(SETUP, "A t", "A * t");
+    same(SETUP, "exp(A t)", "exp(A * t)");
+    same(SETUP, "sin(θ) A", "sin(θ) * A");
+    same(SETUP, "T_sb T_bc", "T_sb * T_bc");
+    same(SETUP, "Ad(T_sb) V_b", "Ad(T_sb) * V_b");
+    same(
+        "S1 = (0, 0, 1, 0, 0, 0)\nS2 = (0, 0, 1, 0, -1, 0)\nM = SE3(eye(3), (2, 0, 0))\nθ1 = 0.3\nθ2 = 0.4",
+        "exp([S1] θ1) exp([S2] θ2) M",
+        "exp([S1] * θ1) * exp([S2] * θ2) * M",
+    );
+    // A bracket of a 3- or 6-vector after `)` or a name is the book's
+    // bracket, multiplied, and the power is the bracket's.
+    same(SETUP, "(1 - cos θ)[w]^2", "(1 - cos(θ)) * [w]^2");
+    same(SETUP, "sin(θ) [w]", "sin(θ) * [w]");
+    same(SETUP, "θ[w]", "θ * [w]");
+    // Numbers inside are an index.
+    same(SETUP, "R[2, 3]", "R[2, 3]");
+    assert_eq!(last("x = (4, 5, 6)\nx[2]"), [5.0]);
+}
+
+#[test]
+fn scalar_functions_without_parentheses() {
+    same(SETUP, "sin θ", "sin(θ)");
+    same(SETUP, "cos 30°", "cos(30 deg)");
+    same(SETUP, "sqrt 2", "sqrt(2)");
+    same(SETUP, "tan pi", "tan(pi)");
+    same(SETUP, "sin θ [w]", "sin(θ) * [w]");
+    same(SETUP, "1 - cos θ", "1 - cos(θ)");
+    same(SETUP, "sin θ cos θ", "sin(θ) * cos(θ)");
+    same(SETUP, "cos θ / 2", "cos(θ) / 2");
+    for (src, help) in [
+        ("sin θ^2", "write (sin θ)^2, or sin(θ^2)"),
+        ("sin θ²", "write (sin θ)², or sin(θ²)"),
+        ("sin 2θ", "write sin(2θ), or (sin 2) θ for the product"),
+        ("cos θ/2", "write cos(θ/2), or (cos θ)/2"),
+    ] {
+        let e = error(&format!("θ = 1\n{src}"));
+        assert!(
+            e.contains("reads two ways") && e.contains(help),
+            "{src}: {e}"
+        );
+    }
+    // The old hints pointed the wrong way (`sin * θ`, an index).
+    assert!(!error("θ = 1\nsin θ^2").contains("sin * θ"));
+}
+
+#[test]
+fn identity_takes_the_size_it_needs() {
+    // Rodrigues' formula (3.51) with I.
+    same(
+        SETUP,
+        "I + sin θ [w] + (1 - cos θ)[w]^2",
+        "eye(3) + sin(θ) * [w] + (1 - cos(θ)) * [w]^2",
+    );
+    same(SETUP, "T_sb - I", "T_sb - eye(4)");
+    same(SETUP, "I - T_sb", "eye(4) - T_sb");
+    same(SETUP, "2 I + A", "2 * eye(2) + A");
+    same(SETUP, "I * V_b", "eye(6) * V_b");
+    same(SETUP, "[I, (1, 2, 3); 0, 1]", "SE3(eye(3), (1, 2, 3))");
+    // A bound I is the user's.
+    assert_eq!(last("I = 7\nI + 1"), [8.0]);
+    let e = error("I");
+    assert!(
+        e.contains("`I` has no size here") && e.contains("eye(3)"),
+        "{e}"
+    );
+}
+
+#[test]
+fn lone_zero_is_the_zero_block() {
+    same(SETUP, "[R, (1, 2, 3); 0, 1]", "[R, (1, 2, 3); 0, 0, 0, 1]");
+    same(SETUP, "[R, (1, 2, 3); 0, 1]", "SE3(R, (1, 2, 3))");
+    // Block se(3) of the book: [[ω], v; 0, 0].
+    same(
+        SETUP,
+        "[[w], (1, 2, 3); 0, 0]",
+        "[[w], (1, 2, 3); 0, 0, 0, 0]",
+    );
+}
+
+#[test]
+fn numbered_frames() {
+    let lines = run("T_01 = Trans((1, 0, 0))\nT_12 = Trans((0, 1, 0))\nT_02 = T_01 * T_12\nT_s1 = Trans((0, 0, 1))\np_{1} = (1, 2, 3)\nT_{0,1} = T_01\nT_{0,1} * p_{1}").expect("runs");
+    assert_eq!(lines[0]["frames"], serde_json::json!(["0", "1"]));
+    assert_eq!(lines[2]["frames"], serde_json::json!(["0", "2"]));
+    assert_eq!(lines[3]["frames"], serde_json::json!(["s", "1"]));
+    assert_eq!(lines[5]["frames"], serde_json::json!(["0", "1"]));
+    assert_eq!(lines[6]["frames"], serde_json::json!(["0"]));
+    // T_01 * T_21 is a frame error like any other.
+    let e = error("T_01 = Trans((1, 0, 0))\nT_21 = Trans((0, 1, 0))\nT_01 * T_21");
+    assert!(e.contains("frame error") && e.contains("1 ≠ 2"), "{e}");
+    // S_1, B_2, theta_1 stay indices.
+    let lines = run("S_1 = (0, 0, 1, 0, 0, 0)\ntheta_1 = 1").expect("runs");
+    assert_eq!(lines[0]["frames"], serde_json::json!([]));
+    // The same frames spelled otherwise are named in the help.
+    let e = error("T_01 = Trans((1, 0, 0))\nT_{0,1}");
+    assert!(e.contains("T_01 names the same frames"), "{e}");
+    // T_123 asks for braces.
+    let e = error("T_123 = Trans((1, 0, 0))");
+    assert!(e.contains("T_{1,23} or T_{12,3}"), "{e}");
+}
+
+#[test]
+fn statements_as_chasles_prints_them() {
+    // given with the spellings chasles prints.
+    let lines =
+        run("given T_sa : SE(3)\ngiven W_s : so(3)\ngiven T_ab : SE3\ngiven p_b : 3-vector\nT_sa T_ab p_b").expect("runs");
+    assert_eq!(lines.last().unwrap()["frames"], serde_json::json!(["s"]));
+    // One tuple as a function's arguments.
+    same(SETUP, "rot_zyx(euler_zyx(R))", "R");
+    same("f(a, b) = a - b", "f((5, 2))", "3");
+    // A newline after a trailing comma continues the row.
+    assert_eq!(last("[1, 2,\n 3, 4]"), [1.0, 2.0, 3.0, 4.0]);
+    // `ans / deg` converts radians to degrees.
+    assert_eq!(last("pi / 2\nans / deg"), [90.0]);
+}
