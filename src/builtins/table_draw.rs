@@ -11,8 +11,8 @@ use std::rc::Rc;
 use super::{Area, ArgError, Args, Builtin, Typing};
 use crate::check::ty::{Frames, Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
-use crate::eval::value::Value;
-use crate::eval::value::{Drawn, Panel, Picture, Style};
+use crate::values::value::Value;
+use crate::values::value::{Drawn, Panel, Picture, Style};
 
 /// Whether `draw` can show a value of kind `k`.
 fn drawable(k: &Kind) -> bool {
@@ -152,7 +152,7 @@ fn eval_draw(a: &mut Args) -> Result<Value, Diagnostic> {
 }
 
 fn angle_text(x: f64) -> String {
-    crate::output::number::fmt_num(x.to_degrees(), 2)
+    crate::values::number::fmt_num(x.to_degrees(), 2)
 }
 
 fn view_rule(args: &[Ty]) -> Result<Ty, ArgError> {

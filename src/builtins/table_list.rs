@@ -6,8 +6,8 @@ use std::rc::Rc;
 use super::{Area, ArgError, Args, Builtin, Typing};
 use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
-use crate::eval::ops;
-use crate::eval::value::Value;
+use crate::values::ops;
+use crate::values::value::Value;
 
 /// The elements of a list, or the entries of a vector.
 fn elements(a: &Args, i: usize) -> Result<Rc<Vec<Value>>, Diagnostic> {

@@ -6,7 +6,7 @@
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
-use crate::eval::value::Picture;
+use crate::values::value::Picture;
 
 /// SVG or PNG, by the file name's ending.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

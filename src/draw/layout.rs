@@ -6,7 +6,7 @@
 
 use super::marks::{Mark, P3, Scene};
 use super::render::{AXIS_RGB, REF_RGB};
-use crate::output::number::fmt_num;
+use crate::values::number::fmt_num;
 
 pub(super) const SCREW_RGB: (u8, u8, u8) = (140, 60, 170);
 pub(super) const ARROW_RGB: (u8, u8, u8) = (235, 125, 0);

@@ -8,8 +8,8 @@
 use nalgebra::{DMatrix, Vector3};
 
 use crate::check::ty::{Frames, Kind};
-use crate::eval::value::Value;
-use crate::eval::value::{Drawn, Panel, Style};
+use crate::values::value::Value;
+use crate::values::value::{Drawn, Panel, Style};
 
 pub type P3 = Vector3<f64>;
 

@@ -13,7 +13,7 @@ pub mod render;
 
 use std::rc::Rc;
 
-use crate::eval::value::Picture;
+use crate::values::value::Picture;
 pub use render::{AXIS_RGB, PANEL_H, PANEL_W, Probe, REF_RGB};
 
 /// The scenes of a picture (one per panel) and what it shows, or why it
