@@ -17,7 +17,7 @@ S = ScrewToAxis((0, 2, 0), (0, 0, 1), 2)
 theta = pi
 
 # {b} at θ = 0, θ/4, θ/2, 3θ/4, θ: a list of five configurations.
-path = [exp([S] * k * theta/4) * T_sb for k in 0:4]
+path = [exp([S] k theta/4) T_sb for k in 0:4]
 T_1 = path[5]
 
 # The screw S₁ and distance θ₁ from T₁ back to the origin.
