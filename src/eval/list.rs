@@ -20,6 +20,39 @@ use crate::syntax::ast::{Expr, Ident, Span};
 /// not a workspace).
 pub const MAX_LIST: usize = 1_000_000;
 
+/// The most items that the comprehensions of one statement may evaluate
+/// (twice the longest list), nested ones and the ranges they make
+/// included: `[[a b for a in 0:999] for b in 0:99999]` is refused rather
+/// than run for minutes.
+pub const MAX_WORK: usize = 2_000_000;
+
+thread_local! {
+    /// (comprehensions open, items evaluated since the outermost opened).
+    static WORK: std::cell::Cell<(usize, usize)> = const { std::cell::Cell::new((0, 0)) };
+}
+
+/// Counts `n` items against [`MAX_WORK`] while a comprehension is open.
+fn spend(n: usize, span: Span) -> Result<(), Diagnostic> {
+    WORK.with(|w| {
+        let (open, done) = w.get();
+        if open == 0 {
+            return Ok(());
+        }
+        let done = done.saturating_add(n);
+        w.set((open, done));
+        if done > MAX_WORK {
+            Err(Diagnostic::error(
+                ErrorKind::Domain,
+                span,
+                format!("the comprehensions would evaluate more than {MAX_WORK} items"),
+            )
+            .with_help("nest fewer comprehensions or use larger steps"))
+        } else {
+            Ok(())
+        }
+    })
+}
+
 fn too_long(span: Span, n: f64) -> Diagnostic {
     let count = if n < 1e15 {
         format!("{}", n as u64)
@@ -93,6 +126,7 @@ impl Interp<'_> {
         if n > MAX_LIST as f64 {
             return Err(too_long(span, n));
         }
+        spend(n as usize, span)?;
         let items: Vec<Value> = (0..n as usize)
             .map(|k| Value::scalar(a + k as f64 * h))
             .collect();
@@ -190,7 +224,15 @@ impl Interp<'_> {
             .iter()
             .map(|n| (n.clone(), self.env.vars.get(n).cloned()))
             .collect();
+        WORK.with(|w| {
+            let (open, done) = w.get();
+            w.set((open + 1, if open == 0 { 0 } else { done }));
+        });
         let result = self.comprehend(body, &domains, span);
+        WORK.with(|w| {
+            let (open, done) = w.get();
+            w.set((open.saturating_sub(1), done));
+        });
         for (n, old) in saved {
             match old {
                 Some(b) => self.env.set(&n, b),
@@ -261,6 +303,7 @@ impl Interp<'_> {
                         },
                     );
                 }
+                spend(1, span)?;
                 let t = self.expr(body)?;
                 out.push(t.val.unwrap_or_else(|| Value::scalar(f64::NAN)));
                 // The last variable runs fastest: the first is outermost.
