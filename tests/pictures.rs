@@ -349,6 +349,10 @@ fn bad_input_is_a_clear_error_and_no_file() {
             "the list would have 10011001 items",
         ),
         (
+            "[[a * b for a in 0:999] for b in 0:999]",
+            "the comprehensions would evaluate more than 2000000 items",
+        ),
+        (
             "T_sa = Trans((1, 0, 0))\nT_bc = Trans((0, 1, 0))\ndraw(T_sa, T_bc)",
             "frame error: one picture has one reference frame, but argument 1 is in {s} and argument 2 in {b}",
         ),
