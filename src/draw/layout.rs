@@ -138,7 +138,7 @@ pub(super) fn layout(scene: &Scene) -> Layout {
                         rgb: SCREW_RGB,
                     });
                 } else {
-                    let half = extent.max(axis) + axis;
+                    let half = 0.6 * extent + axis;
                     let (a, b) = (q - s * half, q + s * half);
                     prims.push(Prim::Seg {
                         a,

@@ -240,42 +240,54 @@ fn panel(area: &Area<'_>, scene: &Scene, x0: f64) -> Result<Vec<Probe>, String> 
             }
         }
     }
-    // Labels: the first place that covers no earlier label, origin or tip.
+    // Labels: the first place that covers no earlier label, origin or tip,
+    // nor (where one is free) any line drawn.
+    let lines: Vec<((f64, f64), (f64, f64))> = lay
+        .prims
+        .iter()
+        .filter_map(|p| match p {
+            Prim::Seg { a, b, .. } => Some((fit.px(a), fit.px(b))),
+            _ => None,
+        })
+        .collect();
     let mut boxes: Vec<(f64, f64, f64, f64)> = Vec::new();
     for l in &lay.labels {
         let (ax, ay) = fit.px(&l.at);
         let w = text_width(&l.text);
         let h = FONT;
         let mut chosen = None;
-        'search: for ring in [1.0, 2.0, 3.5] {
-            let g = 8.0 * ring;
-            let spots = [
-                (g, -g - h),
-                (g, g),
-                (-g - w, -g - h),
-                (-g - w, g),
-                (g + 2.0, -h / 2.0),
-                (-g - 2.0 - w, -h / 2.0),
-                (-w / 2.0, -g - 4.0 - h),
-                (-w / 2.0, g + 4.0),
-            ];
-            for (dx, dy) in spots {
-                let b = (ax + dx, ay + dy, ax + dx + w, ay + dy + h);
-                let inside = b.0 >= x0 + 2.0
-                    && b.2 <= x0 + f64::from(PANEL_W) - 2.0
-                    && b.1 >= 2.0
-                    && b.3 <= f64::from(PANEL_H) - 2.0;
-                let near = |x: f64, y: f64| {
-                    x > b.0 - 3.0 && x < b.2 + 3.0 && y > b.1 - 3.0 && y < b.3 + 3.0
-                };
-                let hits_box = boxes
-                    .iter()
-                    .any(|o| b.0 < o.2 && o.0 < b.2 && b.1 < o.3 && o.1 < b.3);
-                let hits_point = keep_clear.iter().any(|p| near(p.0, p.1));
-                let hits_probe = probes.iter().any(|p| near(p.x, p.y));
-                if inside && !hits_box && !hits_point && !hits_probe {
-                    chosen = Some(b);
-                    break 'search;
+        'search: for strict in [true, false] {
+            for ring in [1.0, 2.0, 3.5] {
+                let g = 8.0 * ring;
+                let spots = [
+                    (g, -g - h),
+                    (g, g),
+                    (-g - w, -g - h),
+                    (-g - w, g),
+                    (g + 2.0, -h / 2.0),
+                    (-g - 2.0 - w, -h / 2.0),
+                    (-w / 2.0, -g - 4.0 - h),
+                    (-w / 2.0, g + 4.0),
+                ];
+                for (dx, dy) in spots {
+                    let b = (ax + dx, ay + dy, ax + dx + w, ay + dy + h);
+                    let inside = b.0 >= x0 + 2.0
+                        && b.2 <= x0 + f64::from(PANEL_W) - 2.0
+                        && b.1 >= 2.0
+                        && b.3 <= f64::from(PANEL_H) - 2.0;
+                    let near = |x: f64, y: f64| {
+                        x > b.0 - 3.0 && x < b.2 + 3.0 && y > b.1 - 3.0 && y < b.3 + 3.0
+                    };
+                    let hits_box = boxes
+                        .iter()
+                        .any(|o| b.0 < o.2 && o.0 < b.2 && b.1 < o.3 && o.1 < b.3);
+                    let hits_point = keep_clear.iter().any(|p| near(p.0, p.1));
+                    let hits_probe = probes.iter().any(|p| near(p.x, p.y));
+                    let hits_line = strict && lines.iter().any(|&(p, q)| crosses(p, q, &near));
+                    if inside && !hits_box && !hits_point && !hits_probe && !hits_line {
+                        chosen = Some(b);
+                        break 'search;
+                    }
                 }
             }
         }
@@ -301,6 +313,18 @@ fn panel(area: &Area<'_>, scene: &Scene, x0: f64) -> Result<Vec<Probe>, String> 
         .map_err(err)?;
     }
     Ok(probes)
+}
+
+/// Whether the segment p–q passes through the region `near` (sampled every
+/// 3 pixels).
+fn crosses(p: (f64, f64), q: (f64, f64), near: &impl Fn(f64, f64) -> bool) -> bool {
+    let steps = ((q.0 - p.0).hypot(q.1 - p.1) / 3.0)
+        .ceil()
+        .clamp(1.0, 400.0) as usize;
+    (0..=steps).any(|k| {
+        let t = k as f64 / steps as f64;
+        near(p.0 + t * (q.0 - p.0), p.1 + t * (q.1 - p.1))
+    })
 }
 
 /// The SVG text of scenes side by side, and the probes of every panel.
