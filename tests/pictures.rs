@@ -88,8 +88,12 @@ fn shows_any(pm: &resvg::tiny_skia::Pixmap, p: &Probe, colours: &[(u8, u8, u8)])
 /// it: frames at one origin in 3.1(h), axes passing in front in 3.48), and
 /// at least three quarters show their own axis colour.
 fn check_pixels(name: &str, svg: &str, probes: &[Probe]) {
+    check_pixmap(name, &render(svg), probes);
+}
+
+/// [`check_pixels`] on a rendered picture.
+fn check_pixmap(name: &str, pm: &resvg::tiny_skia::Pixmap, probes: &[Probe]) {
     assert!(!probes.is_empty(), "{name}: no axis to check");
-    let pm = render(svg);
     let any_axis: Vec<(u8, u8, u8)> = draw::AXIS_RGB
         .iter()
         .chain(draw::REF_RGB.iter())
@@ -105,13 +109,13 @@ fn check_pixels(name: &str, svg: &str, probes: &[Probe]) {
             p.y
         );
         assert!(
-            shows_any(&pm, p, &any_axis),
+            shows_any(pm, p, &any_axis),
             "{name}: no axis where {} must be, at ({:.0}, {:.0})",
             p.what,
             p.x,
             p.y
         );
-        if !shows(&pm, p) {
+        if !shows(pm, p) {
             covered.push(p.what.clone());
         }
     }
@@ -313,6 +317,12 @@ fn printed_pictures_are_written_where_the_line_says() {
     let (_, out, _) = cli(&["--json", "-e", "q = draw(Rotz(1))"], &dir);
     assert!(out.contains("\"type\":\"picture\""), "{out}");
     assert!(out.contains("\"file\":\"q.svg\""), "{out}");
+    // A --draw-dir that cannot be made is bad usage (exit 2).
+    std::fs::write(dir.join("a-file"), "x").expect("writes");
+    let (code, _, err) = cli(&["--draw-dir", "a-file/sub", "-e", "1"], &dir);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("cannot use --draw-dir 'a-file/sub'"), "{err}");
+    std::fs::remove_file(dir.join("a-file")).expect("removes");
     // No temporary files are left behind.
     let stray: Vec<_> = std::fs::read_dir(&dir)
         .expect("lists")
@@ -576,4 +586,24 @@ fn marks_follow_the_book() {
         })
         .collect();
     assert_eq!(labels, ["{b'}₁", "{b'}₂", "{b'}₃"]);
+}
+
+#[test]
+fn a_png_shows_the_axes_where_the_svg_has_them() {
+    let dir = tmp("png");
+    let src = format!(
+        "T_sa = RpToTrans(Rotz(0.5), (1, 1, 0))\npic = draw(T_sa, ScrewToAxis((0, 1, 0), (0, 0, 1), 1))\nsave(pic, \"{}\")",
+        dir.join("pic.png").display()
+    );
+    let pics = pictures(&src, &dir);
+    let (_, p) = pics.last().expect("saved");
+    assert_eq!(
+        p.file.as_deref(),
+        Some(dir.join("pic.png").to_str().unwrap())
+    );
+    let (_, probes) = draw::svg(p).expect("draws");
+    let png = std::fs::read(dir.join("pic.png")).expect("the PNG");
+    let pm = resvg::tiny_skia::Pixmap::decode_png(&png).expect("a PNG");
+    assert_eq!((pm.width(), pm.height()), (draw::PANEL_W, draw::PANEL_H));
+    check_pixmap("pic.png", &pm, &probes);
 }
