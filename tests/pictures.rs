@@ -580,11 +580,16 @@ fn marks_follow_the_book() {
     let m = marks("T_sb = Trans((1, 0, 0))\ndraw([T_sb * Trans((0, 0, k)) for k in 0:2])");
     let labels: Vec<&str> = m
         .iter()
-        .map(|x| match x {
-            Mark::Frame { label, .. } => label.as_str(),
-            _ => "",
+        .filter_map(|x| match x {
+            Mark::Frame { label, .. } => Some(label.as_str()),
+            _ => None,
         })
         .collect();
+    // ... and joined by the path through their origins.
+    assert!(
+        matches!(m.last(), Some(Mark::Path { points }) if points.len() == 3 && close(&points[2], [1.0, 0.0, 2.0])),
+        "{m:?}"
+    );
     assert_eq!(labels, ["{b'}₁", "{b'}₂", "{b'}₃"]);
 }
 

@@ -12,6 +12,7 @@ pub(super) const SCREW_RGB: (u8, u8, u8) = (140, 60, 170);
 pub(super) const ARROW_RGB: (u8, u8, u8) = (235, 125, 0);
 pub(super) const DOT_RGB: (u8, u8, u8) = (70, 70, 70);
 pub(super) const TEXT_RGB: (u8, u8, u8) = (20, 20, 20);
+pub(super) const PATH_RGB: (u8, u8, u8) = (175, 175, 175);
 
 /// A primitive in reference-frame coordinates.
 pub(super) enum Prim {
@@ -44,6 +45,8 @@ pub(super) struct Layout {
     pub prims: Vec<Prim>,
     pub labels: Vec<Label>,
     pub grid: Vec<(P3, P3)>,
+    /// The path through a list of frames' origins, drawn under the marks.
+    pub path: Vec<(P3, P3)>,
     /// Each frame: origin, scaled axes, whether it is the reference, label.
     pub frames: Vec<(P3, [P3; 3], bool, String)>,
 }
@@ -76,6 +79,7 @@ pub(super) fn layout(scene: &Scene) -> Layout {
             Mark::Screw { q, .. } => q,
             Mark::Arrow { from, .. } => from,
             Mark::Dot { at, .. } | Mark::Centre { at, .. } => at,
+            Mark::Path { .. } => continue,
         };
         extent = extent.max(p.norm());
     }
@@ -87,6 +91,7 @@ pub(super) fn layout(scene: &Scene) -> Layout {
     let mut prims = Vec::new();
     let mut labels = Vec::new();
     let mut frames = Vec::new();
+    let mut path = Vec::new();
     let planar = scene.planar;
     let n_axes = if planar { 2 } else { 3 };
     // The reference frame at the origin, with its axes named.
@@ -198,6 +203,9 @@ pub(super) fn layout(scene: &Scene) -> Layout {
                     });
                 }
             }
+            Mark::Path { points } => {
+                path.extend(points.windows(2).map(|w| (w[0], w[1])));
+            }
             Mark::Centre { at, label } => {
                 prims.push(Prim::Dot {
                     at: *at,
@@ -270,9 +278,10 @@ pub(super) fn layout(scene: &Scene) -> Layout {
         prims,
         labels,
         grid,
+        path,
         frames: frames
             .into_iter()
-            .map(|(o, a, r, l)| (o * 1.0, a.map(|v| v * axis), r, l))
+            .map(|(o, a, r, l)| (o, a.map(|v| v * axis), r, l))
             .collect(),
     }
 }

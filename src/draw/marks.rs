@@ -35,6 +35,8 @@ pub enum Mark {
     Dot { at: P3, label: String },
     /// The fixed point of a planar motion.
     Centre { at: P3, label: String },
+    /// The origins of a list of frames in order: the path they follow.
+    Path { points: Vec<P3> },
 }
 
 /// A panel's marks, its reference frame and whether it lies in the plane.
@@ -147,6 +149,7 @@ impl Builder {
     }
 
     fn items(&mut self, items: &[Value], label: &str, style: Style) -> Result<(), String> {
+        let first = self.marks.len();
         for (i, item) in items.iter().enumerate() {
             let l = if label.is_empty() {
                 subscript(i + 1)
@@ -154,6 +157,16 @@ impl Builder {
                 format!("{label}{}", subscript(i + 1))
             };
             self.value(item, &item.kind(), &l, style, true)?;
+        }
+        let points: Vec<P3> = self.marks[first..]
+            .iter()
+            .filter_map(|m| match m {
+                Mark::Frame { origin, .. } => Some(*origin),
+                _ => None,
+            })
+            .collect();
+        if points.len() >= 2 {
+            self.marks.push(Mark::Path { points });
         }
         Ok(())
     }
@@ -381,6 +394,7 @@ pub fn summary(scenes: &[Scene]) -> String {
                 Mark::Arrow { .. } => 2,
                 Mark::Dot { .. } => 3,
                 Mark::Centre { .. } => 4,
+                Mark::Path { .. } => continue,
             };
             counts[i] += 1;
         }

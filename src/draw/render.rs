@@ -10,7 +10,7 @@
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::layout::{Layout, Prim, TEXT_RGB, layout};
+use super::layout::{Layout, PATH_RGB, Prim, TEXT_RGB, layout};
 use super::marks::{P3, Scene};
 
 /// The size of one panel in pixels.
@@ -105,6 +105,9 @@ fn fit(scene: &Scene, lay: &Layout, x0: f64, titled: bool) -> Fit {
     for (a, b) in &lay.grid {
         pts.extend([*a, *b]);
     }
+    for (a, b) in &lay.path {
+        pts.extend([*a, *b]);
+    }
     let (mut u0, mut u1, mut v0, mut v1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
     for p in &pts {
         let (u, v) = (p.dot(&cam.right), p.dot(&cam.up));
@@ -151,6 +154,14 @@ fn panel(area: &Area<'_>, scene: &Scene, x0: f64) -> Result<Vec<Probe>, String> 
         area.draw(&PathElement::new(
             vec![pt(fit.px(a)), pt(fit.px(b))],
             style(GRID_RGB, 1),
+        ))
+        .map_err(err)?;
+    }
+    // The path of a list of frames, under the marks.
+    for (a, b) in &lay.path {
+        area.draw(&PathElement::new(
+            vec![pt(fit.px(a)), pt(fit.px(b))],
+            style(PATH_RGB, 1),
         ))
         .map_err(err)?;
     }
