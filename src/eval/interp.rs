@@ -248,6 +248,11 @@ impl<'a> Interp<'a> {
         name_span: Span,
         value_span: Span,
     ) -> Result<Typed, Diagnostic> {
+        // Lists, pictures and strings take no frames from their names (§12):
+        // theirs come from what they hold.
+        if matches!(t.ty.kind, Kind::List(_) | Kind::Picture | Kind::Text) {
+            return Ok(t);
+        }
         let ty = match bind::bind(name, &t.ty) {
             Ok(b) => {
                 if let Some(w) = b.warning {
