@@ -152,7 +152,7 @@ impl Builder {
         let first = self.marks.len();
         for (i, item) in items.iter().enumerate() {
             let l = if label.is_empty() {
-                subscript(i + 1)
+                (i + 1).to_string()
             } else {
                 format!("{label}{}", subscript(i + 1))
             };
