@@ -412,6 +412,11 @@ impl Interp<'_> {
             .into_iter()
             .map(|t| t.val.unwrap_or_else(|| Value::scalar(f64::NAN)))
             .collect();
+        if vals.iter().any(Value::is_symbolic) && b.area == builtins::Area::Pictures {
+            return Err(self
+                .domain(span, format!("{} needs numbers, not symbols", b.name))
+                .with_help("bind numbers to the given names first (§7)"));
+        }
         if vals.iter().any(Value::is_symbolic) {
             let sym = match b.name {
                 "inv" | "RotInv" | "TransInv" => to_sym(&vals[0]).inverse(),

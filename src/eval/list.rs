@@ -78,7 +78,15 @@ impl Interp<'_> {
     /// One bound of a range: a number.
     fn bound(&mut self, e: &Expr) -> Result<Option<f64>, Diagnostic> {
         let t = self.expr(e)?;
-        if !t.ty.kind.maybe_scalar() || matches!(t.val, Some(Value::Sym(_))) {
+        if let Some(Value::Sym(s)) = &t.val {
+            return Err(Diagnostic::error(
+                ErrorKind::Type,
+                e.span,
+                format!("a range takes numbers, not the symbol {s}"),
+            )
+            .with_help("bind a number to it first (§7)"));
+        }
+        if !t.ty.kind.maybe_scalar() {
             return Err(Diagnostic::error(
                 ErrorKind::Type,
                 e.span,
