@@ -107,15 +107,7 @@ impl Builder {
 
     /// One value; `label` names it, `in_list` says it is an item of a list
     /// (3-vectors are then points).
-    fn value(
-        &mut self,
-        v: &Value,
-        kind_hint: &Kind,
-        label: &str,
-        style: Style,
-        in_list: bool,
-    ) -> Result<(), String> {
-        let _ = kind_hint;
+    fn value(&mut self, v: &Value, label: &str, style: Style, in_list: bool) -> Result<(), String> {
         match v {
             Value::List(items) => self.items(items, label, style),
             Value::Tuple(items) if style == Style::Arrow && items.len() == 2 => {
@@ -156,7 +148,7 @@ impl Builder {
             } else {
                 format!("{label}{}", subscript(i + 1))
             };
-            self.value(item, &item.kind(), &l, style, true)?;
+            self.value(item, &l, style, true)?;
         }
         let points: Vec<P3> = self.marks[first..]
             .iter()
@@ -379,7 +371,7 @@ impl Builder {
             (_, Some(inner)) => format!("{{{inner}}}"),
             _ => text_label(&d.label),
         };
-        self.value(&d.value, &d.ty.kind, &label, d.style, false)
+        self.value(&d.value, &label, d.style, false)
     }
 }
 
