@@ -5,9 +5,10 @@
 #     5 − 2 − 1 = 2 at least: the annulus 2 ≤ r ≤ 8.
 # (b) links 1, 2, 5: at most 8 again, and at least 5 − 2 − 1 = 2 (the
 #     long last link folded back over the other two): the same annulus.
-# Neither workspace is larger. (c) Lengthening only the last link does not
-# always enlarge it: with links 1, 2 and a last link longer than 3, the
-# hole in the middle grows as fast as the outer rim.
+# Neither workspace is larger. (c) Lengthening the last link alone does not
+# reach every point reached before: once it is longer than the other links
+# together (1 + 2 = 3 in (b)), the hole in the middle grows with it and the
+# points near the base are lost.
 #
 # The joints are sampled at 30°, 45° and 90° steps: 12 × 8 × 4 tips each.
 

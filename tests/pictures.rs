@@ -173,9 +173,16 @@ fn example_pictures_render_with_their_axes_where_projected() {
         // save() paths are relative to the current folder: the repo root.
         let pics = pictures(&src, &dir);
         assert!(!pics.is_empty(), "{script} draws nothing");
-        for (line, p) in pics {
+        for (_, p) in pics {
             let (svg, probes) = draw::svg(&p).expect("the picture draws");
-            let name = format!("{script}_line{line}");
+            // Named by the file written: stable when lines move.
+            let stem = p
+                .file
+                .as_deref()
+                .and_then(|f| Path::new(f).file_stem())
+                .map(|s| s.to_string_lossy().to_string())
+                .unwrap_or_default();
+            let name = format!("{script}__{stem}");
             check_pixels(&name, &svg, &probes);
             labels_apart(&name, &svg);
             // The file written is the SVG drawn, byte for byte.
