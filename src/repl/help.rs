@@ -83,6 +83,10 @@ pub fn help(arg: &str, settings: &Settings) -> Result<String, String> {
     if let Some(area) = area_named(arg) {
         return Ok(area_listing(area));
     }
+    // The words of ranges and comprehensions (§12).
+    if ["for", "in", "list", "lists", "range", "ranges"].contains(&arg) {
+        return Ok(area_listing(Area::Pictures));
+    }
     let bare = arg.trim_start_matches(':');
     if let Some(c) = COMMANDS.iter().find(|c| c.name == bare) {
         let head = format!(":{} {}", c.name, c.args);
