@@ -35,6 +35,7 @@ pub(super) enum Prim {
 }
 
 pub(super) struct Label {
+    /// The point labelled.
     pub at: P3,
     pub text: String,
     pub rgb: (u8, u8, u8),
@@ -42,8 +43,11 @@ pub(super) struct Label {
 
 /// A scene laid out: primitives, labels, probes and the projection.
 pub(super) struct Layout {
+    /// Lines, arrowheads and dots, drawn far to near.
     pub prims: Vec<Prim>,
+    /// Labels, placed last.
     pub labels: Vec<Label>,
+    /// The grid on the reference xy-plane.
     pub grid: Vec<(P3, P3)>,
     /// The path through a list of frames' origins, drawn under the marks.
     pub path: Vec<(P3, P3)>,

@@ -11,6 +11,7 @@ use crate::check::ty::{Frames, Kind};
 use crate::values::value::Value;
 use crate::values::value::{Drawn, Panel, Style};
 
+/// A point or direction in the reference frame's coordinates.
 pub type P3 = Vector3<f64>;
 
 /// One thing drawn, in reference-frame coordinates.
@@ -42,11 +43,16 @@ pub enum Mark {
 /// A panel's marks, its reference frame and whether it lies in the plane.
 #[derive(Debug, Clone)]
 pub struct Scene {
+    /// What is drawn, in the order given.
     pub marks: Vec<Mark>,
     /// The name of the reference frame drawn at the origin (`s`).
     pub reference: String,
+    /// Only SE(2), SO(2), se(2) values and 2-vectors: drawn in the plane,
+    /// seen from above.
     pub planar: bool,
+    /// `view(az, el)`, radians, MATLAB's convention.
     pub view: Option<(f64, f64)>,
+    /// The title written above the panel.
     pub title: Option<String>,
 }
 

@@ -13,8 +13,9 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use super::layout::{Layout, PATH_RGB, Prim, TEXT_RGB, layout};
 use super::marks::{P3, Scene};
 
-/// The size of one panel in pixels.
+/// The width of one panel in pixels (panels stand side by side).
 pub const PANEL_W: u32 = 560;
+/// The height of a picture in pixels.
 pub const PANEL_H: u32 = 480;
 const MARGIN: f64 = 40.0;
 const TITLE_H: f64 = 26.0;
@@ -62,9 +63,13 @@ fn camera(scene: &Scene) -> Camera {
 /// near its tip (what the tests check in the rendered picture).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Probe {
+    /// Pixel column, from the picture's left edge.
     pub x: f64,
+    /// Pixel row, from the top.
     pub y: f64,
+    /// The axis colour that must show there.
     pub rgb: (u8, u8, u8),
+    /// Which axis and where, for messages: `{a} x axis near its tip`.
     pub what: String,
 }
 
