@@ -242,6 +242,14 @@ fn eval_save(a: &mut Args) -> Result<Value, Diagnostic> {
             ));
         }
     };
+    let base = name.rsplit(['/', '\\']).next().unwrap_or("");
+    if base.len() <= ".svg".len() {
+        return Err(a.error(
+            1,
+            ErrorKind::Domain,
+            format!("cannot save a picture as \"{name}\": give a file name, e.g. \"pic.svg\""),
+        ));
+    }
     let lower = name.to_ascii_lowercase();
     if !(lower.ends_with(".svg") || lower.ends_with(".png")) {
         return Err(a.error(

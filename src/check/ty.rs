@@ -167,7 +167,8 @@ impl Kind {
         let name = self.to_string();
         let vowel = name.starts_with(['a', 'e', 'i', 'o', 'u', 'S', 's'])
             && !name.starts_with("screw")
-            && !name.starts_with("scalar");
+            && !name.starts_with("scalar")
+            && !name.starts_with("string");
         let vowel =
             vowel || name.starts_with("8-") || name.starts_with("11-") || name.starts_with("18-");
         format!("{} {name}", if vowel { "an" } else { "a" })
@@ -212,6 +213,7 @@ impl fmt::Display for Kind {
                 Kind::Unknown => write!(f, "list"),
                 Kind::Scalar => write!(f, "list of numbers"),
                 Kind::Screw => write!(f, "list of screw axes"),
+                Kind::List(_) => write!(f, "list of lists"),
                 Kind::Vector(_)
                 | Kind::Matrix(..)
                 | Kind::Twist

@@ -87,6 +87,14 @@ impl Interp<'_> {
             ExprKind::Var(name) => self.var(name, e.span),
             ExprKind::Unary { op, operand } => {
                 let t = self.expr(operand)?;
+                if let Some(help) = super::list::elementwise_help(&t.ty.kind) {
+                    return Err(Diagnostic::error(
+                        ErrorKind::Type,
+                        e.span,
+                        format!("no arithmetic on {}", t.ty.kind.a()),
+                    )
+                    .with_help(help));
+                }
                 if *op == UnOp::Pos {
                     return Ok(t);
                 }
@@ -269,7 +277,11 @@ impl Interp<'_> {
                 return Err(Diagnostic::error(
                     ErrorKind::Type,
                     op_span,
-                    format!("no arithmetic on a list ({})", self.text(side.span).trim()),
+                    format!(
+                        "no arithmetic on {} ({})",
+                        t.ty.kind.a(),
+                        self.text(side.span).trim()
+                    ),
                 )
                 .with_label(side.span, t.ty.kind.to_string())
                 .with_help(help));

@@ -57,7 +57,7 @@ fn too_long(span: Span, n: f64) -> Diagnostic {
     let count = if n < 1e15 {
         format!("{}", n as u64)
     } else {
-        format!("{n:e}")
+        format!("{n:.3e}")
     };
     Diagnostic::error(
         ErrorKind::Domain,
@@ -67,11 +67,16 @@ fn too_long(span: Span, n: f64) -> Diagnostic {
     .with_help("use a larger step, e.g. 0:0.01:1 has 101 items")
 }
 
-/// The help for arithmetic on a list.
+/// The help for arithmetic on a list, a picture or a string.
 pub fn elementwise_help(k: &Kind) -> Option<String> {
-    matches!(k, Kind::List(_)).then(|| {
-        "a list is not a vector: apply the operation to each element, [2 * x for x in xs]".into()
-    })
+    match k {
+        Kind::List(_) => Some(
+            "a list is not a vector: apply the operation to each element, [2 * x for x in xs]"
+                .into(),
+        ),
+        Kind::Picture | Kind::Text => Some(format!("{} takes no arithmetic", k.a())),
+        _ => None,
+    }
 }
 
 impl Interp<'_> {
