@@ -6,3 +6,7 @@ dof(fourbar)
 # The same with a count: 4R is four separate R joints.
 fourbar4 = mech < links 4; joints 4R; planar >
 dof(fourbar4)
+
+# --- The expected values, checked ---------------------------------------------
+assert dof(fourbar) == 1
+assert dof(fourbar4) == 1

@@ -6,3 +6,7 @@ slidercrank = mech < links 4; joints R R R P; planar >
 dof(slidercrank)
 slidercrank2 = mech < links 3; joints 2R RP; planar >
 dof(slidercrank2)
+
+# --- The expected values, checked ---------------------------------------------
+assert dof(slidercrank) == 1
+assert dof(slidercrank2) == 1

@@ -11,3 +11,9 @@ stephenson = mech < links 6; joints 7R; planar >
 dof(stephenson)
 watt = mech < links 6; joints 7R; planar >
 dof(watt)
+
+# --- The expected values, checked ---------------------------------------------
+assert dof(robot3R) == 3
+assert dof(fivebar) == 2
+assert dof(stephenson) == 1
+assert dof(watt) == 1

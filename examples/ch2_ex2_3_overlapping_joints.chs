@@ -8,3 +8,7 @@ overlap = mech < links 8; joints 8R P; planar >
 dof(overlap)
 overlap2 = mech < links 7; joints 7R RP; planar >
 dof(overlap2)
+
+# --- The expected values, checked ---------------------------------------------
+assert dof(overlap) == 3
+assert dof(overlap2) == 3

@@ -5,3 +5,6 @@
 parallelogram = mech < links 5; joints 6R; planar >
 dof(parallelogram)
 parallelogram
+
+# --- The expected values, checked ---------------------------------------------
+assert dof(parallelogram) == 0

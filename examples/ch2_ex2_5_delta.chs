@@ -11,3 +11,8 @@ delta = mech < links 8; joints 3R 6U; spatial >
 dof(delta)
 deltalegs = mech < legs 3 RUU; spatial >
 dof(deltalegs)
+
+# --- The expected values, checked ---------------------------------------------
+assert dof(deltanaive) == -9
+assert dof(delta) == 3
+assert dof(deltalegs) == 3

@@ -10,3 +10,7 @@ dof(stewartlegs)
 stewartlegs
 sps = mech < legs 6 SPS; spatial >
 dof(sps)
+
+# --- The expected values, checked ---------------------------------------------
+assert dof(stewart) == 6
+assert dof(stewartlegs) == 6

@@ -15,3 +15,7 @@ dof(scara)
 # Expected: dof = 6(7 − 1 − 6) + 6·1 = 6, C-space T^6; 6 − 5 = 1.
 painter = mech < links 7; joints 6R; spatial >
 dof(painter) - 5
+
+# --- The expected values, checked ---------------------------------------------
+assert dof(scara) == 4
+assert dof(painter) == 6

@@ -10,3 +10,7 @@ onearm = mech < links 7; joints 7R; spatial >
 dof(onearm)
 twoarms = mech < links 12; joints 13R; spatial >
 dof(twoarms)
+
+# --- The expected values, checked ---------------------------------------------
+assert dof(onearm) == 1
+assert dof(twoarms) == 1

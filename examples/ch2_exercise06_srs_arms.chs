@@ -10,3 +10,8 @@ srs5 = mech < legs 5 SRS; spatial >
 dof(srs5)
 sru3 = mech < legs 3 SRU; spatial >
 dof(sru3)
+
+# --- The expected values, checked ---------------------------------------------
+assert dof(srs3) == 9
+assert dof(srs5) == 11
+assert dof(sru3) == 6

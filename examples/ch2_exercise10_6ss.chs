@@ -5,3 +5,6 @@
 ss6 = mech < legs 6 SS; spatial >
 dof(ss6)
 ss6
+
+# --- The expected values, checked ---------------------------------------------
+assert dof(ss6) == 6

@@ -3,3 +3,6 @@
 upu = mech < legs 3 UPU; spatial >
 dof(upu)
 upu
+
+# --- The expected values, checked ---------------------------------------------
+assert dof(upu) == 3

@@ -4,3 +4,6 @@
 # formula (a lower bound: special geometry can let such a loop move).
 squares = mech < links 6; joints 6R; spatial >
 dof(squares)
+
+# --- The expected values, checked ---------------------------------------------
+assert dof(squares) == 0

@@ -3,3 +3,6 @@
 # m = 3. dof = 3(4 − 1 − 4) + 4·1 = 1.
 sphfourbar = mech < links 4; joints 4R; spherical >
 dof(sphfourbar)
+
+# --- The expected values, checked ---------------------------------------------
+assert dof(sphfourbar) == 1

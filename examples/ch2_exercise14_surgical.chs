@@ -8,3 +8,7 @@ surgical = mech < links 13; joints 11R P 2U; spatial >
 dof(surgical)
 surgicalsph = mech < legs 3 RRRR; spherical >
 dof(surgicalsph)
+
+# --- The expected values, checked ---------------------------------------------
+assert dof(surgical) == 4
+assert dof(surgicalsph) == 6

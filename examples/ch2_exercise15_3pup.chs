@@ -5,3 +5,6 @@
 pup = mech < legs 3 PUP; spatial >
 dof(pup)
 pup
+
+# --- The expected values, checked ---------------------------------------------
+assert dof(pup) == 0

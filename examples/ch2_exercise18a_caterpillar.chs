@@ -6,3 +6,6 @@
 caterpillar = mech < links 8; joints 7RP; planar >
 dof(caterpillar)
 caterpillar
+
+# --- The expected values, checked ---------------------------------------------
+assert dof(caterpillar) == 14

@@ -5,3 +5,6 @@
 # N = 2 + 4·3 = 14, J = 16: dof = 6(14 − 1 − 16) + 8·1 + 4·2 + 4·3 = 10.
 hand = mech < legs 4 URRS; spatial >
 dof(hand)
+
+# --- The expected values, checked ---------------------------------------------
+assert dof(hand) == 10

@@ -3,3 +3,6 @@
 arm2R = mech < links 3; joints R R; planar >
 dof(arm2R)
 arm2R
+
+# --- The expected values, checked ---------------------------------------------
+assert dof(arm2R) == 2

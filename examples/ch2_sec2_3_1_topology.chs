@@ -14,3 +14,9 @@ freeplanar = mech < links 2; planar >
 freeplanar
 freespatial = mech < links 2; spatial >
 freespatial
+
+# --- The expected values, checked ---------------------------------------------
+assert dof(pr) == 2
+assert dof(twor) == 2
+assert dof(rrrp) == 4
+assert dof(freeplanar) == 3

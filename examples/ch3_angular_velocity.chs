@@ -53,3 +53,15 @@ R_sb * ω_b                    # back to ω_s
 # --- Proposition 3.5: R [ω] R^T = [R ω] (plain numbers, no frames) ------------
 R * [u] * R.T
 [R * u]
+
+# --- The expected values, checked ---------------------------------------------
+assert [u] == [0, -3, 2; 3, 0, -1; -2, 1, 0]
+assert [u] + [u].T == zeros(3, 3)
+assert [u] * (4, 5, 6) == (-3, 6, -3)
+assert round(R, 4) == [0.866, 0.433, 0.25; 0.25, 0.058, -0.9665; -0.433, 0.8995, -0.058]
+assert round(R_dot, 4) == [-1, 1.5, 0.866; 0.866, 0.433, 0.25; -1.5, -0.75, -0.433]
+assert so3ToVec(R_dot * R.T) ≈ (0, sqrt(3), 1)
+assert vee(R.T * R_dot) ≈ (0, 1, -sqrt(3))
+assert ω_b ≈ (0, 1, -sqrt(3))
+assert R_sb * ω_b ≈ ω_s
+assert R * [u] * R.T ≈ [R * u]

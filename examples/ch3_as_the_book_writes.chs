@@ -56,5 +56,17 @@ V_b = (0, 0, 1, 1, 0, 0)
 F_s = (0, 0, 2, 1, 3, 0)
 V_s = Ad(T_sb) V_b
 F_b = Ad(T_sb)^T F_s
-V_b^T F_b
-V_s^T F_s
+P_b = V_b^T F_b
+P_s = V_s^T F_s
+P_b - P_s
+
+# The expected values, checked (written as the book writes them too).
+assert R_sbᵀ R_sb == I
+assert round(R, 4) == [0.866, -0.25, 0.433; 0.25, 0.9665, 0.058; -0.433, 0.058, 0.8995]
+assert round(e^([w] 30°), 3) == round(R, 3)       # w is the book's rounded ω̂
+assert [e^([ω] θ), G v; 0, 1] ≈ [0, -1, 0, 2; 1, 0, 0, -2; 0, 0, 1, 0; 0, 0, 0, 1]
+assert e^([S] θ) ≈ [e^([ω] θ), G v; 0, 1]
+assert T.p ≈ (cos θ1 + cos(θ1 + θ2), sin θ1 + sin(θ1 + θ2), 0)
+assert round(T.p, 4) == (1.1248, 1.4659, 0)
+assert P_b ≈ P_s
+assert P_s ≈ 2 + (2 + sqrt(3)/2) - 1.5          # 3.366

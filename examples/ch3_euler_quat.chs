@@ -49,3 +49,19 @@ R * Rot(z, 90 deg)              # ... this
 # --- Cayley-Rodrigues parameters ----------------------------------------------
 r = cayley(R)                   # ŵ tan 15° = (0, 0.2321, 0.134)
 rot_cayley(r)                   # R again
+
+# --- The expected values, checked ---------------------------------------------
+assert round((alpha, beta, gamma), 4) == (0.281, 0.4478, 0.0644)
+assert round((roll, pitch, yaw), 4) == (0.0644, 0.4478, 0.281)
+assert round((a, b, c), 4) == (1.704, 0.4521, -1.4376)
+assert round(q, 4) == (0.9659, 0, 0.2241, 0.1294)
+assert q ≈ (cos(15 deg), 0, sqrt(3)/2 * sin(15 deg), 0.5 sin(15 deg))
+assert round(r, 4) == (0, 0.2321, 0.134)
+assert round(quat_mul(q, p), 4) == (0.5915, 0.1585, 0.1585, 0.7745)
+assert round(rot_zyx(10 deg, 20 deg, 30 deg), 4) == [0.9254, 0.018, 0.3785; 0.1632, 0.8826, -0.441; -0.342, 0.4698, 0.8138]
+assert rot_zyx(alpha, beta, gamma) ≈ R
+assert rot_rpy(roll, pitch, yaw) ≈ R
+assert rot_zxz(a, b, c) ≈ R
+assert rot_quat(q) ≈ R
+assert rot_cayley(r) ≈ R
+assert rot_quat(quat_mul(q, p)) ≈ R * Rot(z, 90 deg)

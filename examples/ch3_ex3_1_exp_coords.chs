@@ -61,3 +61,13 @@ R_book = [ 0.866, -0.250, 0.433
           -0.433,  0.058, 0.900]
 DistanceToSO3(R_book)            # 0.0013
 MatrixLog3(R_book)               # (0, 0.4533, 0.2617), with a projection warning
+
+# --- The book's printed answers, checked -------------------------------------
+assert sin(theta) ≈ 0.5
+assert round(1 - cos(theta), 3) == 0.134
+assert round(R_sb, 3) == [0.866, -0.250, 0.433; 0.250, 0.967, 0.058; -0.433, 0.058, 0.900]
+assert round(expc, 3) == (0, 0.453, 0.262)
+assert MatrixLog3(R_sb) ≈ expc
+assert R_sb' ≈ eye(3)
+# BOOK SLIP: the book says R'' = R e^{−[ŵ]θ} ≠ I; it is I (R leaves ŵ fixed).
+assert R_sb'' ≈ eye(3)

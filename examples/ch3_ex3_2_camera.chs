@@ -52,3 +52,11 @@ sqrt(2) * T_ce[3, 4]             # 160  (the book prints 130/√2: a slip)
 
 # The same T_ce by a shorter chain that never goes through {a}:
 inv(T_bc) * inv(T_db) * T_de
+
+# --- The book's printed answers, checked -------------------------------------
+assert T_ae ≈ [1, 0, 0, 280; 0, 1, 0, -50; 0, 0, 1, 0; 0, 0, 0, 1]
+assert T_ac ≈ [0, -1/sqrt(2), -1/sqrt(2), 230; 0, 1/sqrt(2), -1/sqrt(2), 160; 1, 0, 0, 75; 0, 0, 0, 1]
+assert T_ca ≈ [0, 0, 1, -75; -1/sqrt(2), 1/sqrt(2), 0, 70/sqrt(2); -1/sqrt(2), -1/sqrt(2), 0, 390/sqrt(2); 0, 0, 0, 1]
+# BOOK SLIP: the book prints 130/√2 for the last entry of T_ce; it is 160/√2.
+assert T_ce ≈ [0, 0, 1, -75; -1/sqrt(2), 1/sqrt(2), 0, -260/sqrt(2); -1/sqrt(2), -1/sqrt(2), 0, 160/sqrt(2); 0, 0, 0, 1]
+assert inv(T_bc) * inv(T_db) * T_de ≈ T_ce

@@ -41,3 +41,11 @@ V_b = twist(w_b, v_b)            # (0, 0, −2, 2.8, 4, 0)
 Ad(T_sb)
 Ad(T_sb) * V_b                   # = V_s
 Ad(inv(T_sb)) * V_s              # = V_b
+
+# --- The book's printed answers, checked -------------------------------------
+assert v_s == (-2, -4, 0)
+assert v_b ≈ (2.8, 4, 0)
+assert V_s ≈ (0, 0, 2, -2, -4, 0)
+assert V_b ≈ (0, 0, -2, 2.8, 4, 0)
+assert Ad(T_sb) * V_b ≈ V_s
+assert Ad(inv(T_sb)) * V_s ≈ V_b

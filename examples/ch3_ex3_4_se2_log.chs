@@ -45,3 +45,12 @@ T3_sc = SE3(Rot(z, 60 deg), (2, 1, 0))
 expc = MatrixLog6(displacement(T3_sb, T3_sc))   # (0, 0, 0.5236, 1.7624, −1.7624, 0)
 (S6, th) = AxisAng6(expc)        # S = (0, 0, 1, 3.366, −3.366, 0), θ = 0.5236
 screw_params(S6)                 # q = (3.366, 3.366, 0), ŝ = ẑ, h = 0
+
+# --- The book's printed answers, checked -------------------------------------
+# The book rounds v1 = −v2 = 3.3660 and q to two decimals: 3.37.
+assert theta ≈ pi/6
+assert round(L / theta, 2) == [0, -1, 3.37; 1, 0, -3.37; 0, 0, 0]
+assert round(S, 2) == (1, 3.37, -3.37)
+assert round(q, 2) == (3.37, 3.37)
+assert th ≈ pi/6
+assert S6 ≈ (0, 0, 1, S[2], S[3], 0)

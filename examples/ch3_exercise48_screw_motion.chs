@@ -8,9 +8,8 @@
 # Back to the origin: e^{[S₁]θ₁} T₁ = I, so [S₁]θ₁ = log(T₁⁻¹) with
 # T₁⁻¹ = [Rot(ẑ, π), (−2, 4, −2π)]: a half turn (θ₁ = π) about the vertical
 # axis through q₁ = (−1, 2, 0) (it takes the origin to (−2, 4, 0)) with
-# pitch h₁ = −2π/π = −2 about +ẑ: S₁ = (0, 0, 1, 2, 1, −2). At θ₁ = π the
-# log may equally give −ω̂ (§3.2.3.3): S₁ = (0, 0, −1, −2, −1, −2), h₁ = 2
-# about −ẑ, the same motion.
+# pitch h₁ = −2π/π = −2 about +ẑ: S₁ = (0, 0, 1, 2, 1, −2), as the log
+# gives it at θ₁ = π by (3.58) (§3.2.3.3; −ω̂ with h₁ = 2 is the same motion).
 
 T_sb = [1, 0, 0, 2; 0, 1, 0, 0; 0, 0, 1, 0; 0, 0, 0, 1]
 S = ScrewToAxis((0, 2, 0), (0, 0, 1), 2)

@@ -53,3 +53,14 @@ F_e = wrench((0, 0, 0), (0, 0, 10))
 T_ec = inv(T_de) * T_db * T_bc
 F_c = Ad(T_ec).T * F_e
 F_c / sqrt(2)                    # (0, 800, 1300, 7.0711, 0, 0)
+
+# --- The expected values, checked ---------------------------------------------
+assert MatrixLog3(R) ≈ (2 pi / 3) * (1, -1, 1) / sqrt(3)                # 3.5
+# 3.6 and 3.7(a), θ = π: the axis the book's (3.58) gives (−ω̂ is as valid).
+assert th6 ≈ pi
+assert w6 ≈ (0, -1, 1) / sqrt(2)
+assert log(R7) ≈ [(1, 0, 1) / sqrt(2)] pi
+assert w_b == (3, -1, -2)                                              # 3.28
+assert S == (0, 0, 1, 0, -3, 2)                                        # 3.26
+assert (q, s_hat, h) ≈ ((0, 1, -1), (0, 1, 1) / sqrt(2), 0)            # 3.27
+assert F_c ≈ (0, 800 sqrt(2), 1300 sqrt(2), 10, 0, 0)                  # 3.31

@@ -62,3 +62,20 @@ exp(log(T_sb2))                  # T_sb2 again
 # --- 5. Case (i), R = I --------------------------------------------------------
 expc3 = MatrixLog6(Trans((3, 0, 4)))   # (0, 0, 0, 3, 0, 4)
 AxisAng6(expc3)                  # ((0, 0, 0, 0.6, 0, 0.8), 5)
+
+# --- The expected values, checked ---------------------------------------------
+assert G * v ≈ (1, -3, 0)
+assert exp([S_s] theta) ≈ [0, -1, 0, 1; 1, 0, 0, -3; 0, 0, 1, 0; 0, 0, 0, 1]
+assert T_sb' ≈ [0, -1, 0, 0.6; -1, 0, 0, 1; 0, 0, -1, 0; 0, 0, 0, 1]
+assert exp([S_trans] 2) ≈ Trans((0, 0, 2))
+assert expc ≈ (0, 0, pi/2, pi/2, pi/2, 0)
+assert S ≈ (0, 0, 1, 1, 1, 0)
+assert th ≈ pi/2
+# θ = π: the book's formula (3.58) gives ω̂ = (1, 0, 1)/√2 (−S is as valid).
+assert expc2 ≈ pi * (1/sqrt(2), 0, 1/sqrt(2), -1/sqrt(2), 0, 1/sqrt(2))
+assert th2 ≈ pi
+assert expc3 == (0, 0, 0, 3, 0, 4)
+assert screw_params(S) ≈ ((-1, 1, 0), (0, 0, 1), 0)
+assert screw_params(S2) ≈ ((0, -1, 0), (1, 0, 1) / sqrt(2), 0)
+assert AxisAng6(expc3) ≈ ((0, 0, 0, 0.6, 0, 0.8), 5)
+assert exp(log(T_sb2)) ≈ T_sb2

@@ -49,3 +49,15 @@ exp(3 * A)                       # ... so this is the same
 # Prop. 3.8 for [ŵ]: p(s) = s^3 + s, so [ŵ]^3 = −[ŵ]
 w_hat = (0, sqrt(3)/2, 0.5)
 [w_hat]^3 + [w_hat]              # zero
+
+# --- The expected values, checked ---------------------------------------------
+assert round(exp(A), 4) == [0.6004, 0.2325; -0.4651, -0.0972]
+assert exp(A * t) * x0 ≈ (2 exp(-t) - exp(-2 t), -2 exp(-t) + 2 exp(-2 t))
+assert P * D * inv(P) ≈ A
+assert P * exp(D * t) * inv(P) ≈ exp(A * t)
+assert inv(exp(A)) ≈ exp(-A)
+assert round(exp(-A), 4) == [-1.9525, -4.6708; 9.3415, 12.0598]
+assert round(exp([X]) * exp([Y]), 4) == [0.8776, 0, 0.4794; 0.2298, 0.8776, -0.4207; -0.4207, 0.4794, 0.7702]
+assert round(exp([X] + [Y]), 4) == [0.8801, 0.1199, 0.4594; 0.1199, 0.8801, -0.4594; -0.4594, 0.4594, 0.7602]
+assert exp(A) * exp(2 * A) ≈ exp(3 * A)
+assert [w_hat]^3 + [w_hat] ≈ zeros(3, 3)

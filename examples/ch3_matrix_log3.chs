@@ -59,3 +59,15 @@ exp(log(R3))                     # R3 again
 # --- Near the edges of the cases: no loss of accuracy -------------------------
 MatrixLog3(Rot((1, 2, 2) / 3, 1e-7)) / 1e-7     # (0.3333, 0.6667, 0.6667)
 norm(MatrixLog3(Rot((1, 2, 2) / 3, pi - 1e-7)))  # 3.1416 (= π − 1e-7)
+
+# --- The expected values, checked ---------------------------------------------
+assert MatrixLog3(eye(3)) == (0, 0, 0)
+assert MatrixLog3(R1) ≈ pi * (1, 0, 1) / sqrt(2)                 # (3.58)
+assert MatrixLog3(Rot(y, pi)) ≈ pi * (0, 1, 0)                   # (3.59)
+assert MatrixLog3(Rot((1, -1, 0) / sqrt(2), pi)) ≈ pi * (-1, 1, 0) / sqrt(2)   # (3.59)
+assert MatrixLog3(Rot(x, pi)) ≈ pi * (1, 0, 0)                   # (3.60)
+assert MatrixExp3(-r) ≈ R1
+assert theta ≈ pi/6
+assert MatrixLog3(R2) ≈ (0, sqrt(3)/2, 0.5) * pi/6
+assert MatrixLog3(R3) ≈ 2 * (1, 2, 2) / 3
+assert th ≈ 2

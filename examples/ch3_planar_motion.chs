@@ -37,3 +37,10 @@ L = log(D)                 # the se(2) matrix [V] t
 (L[2, 1], L[1, 3], L[2, 3])   # exponential coordinates V t = (π/2, π, 0)
 q = (-V[3] / V[1], V[2] / V[1])  # the fixed point s of the rotation: (0, 2)
 D * (q[1], q[2], 1)        # s is not moved by the displacement: (0, 2, 1)
+
+# --- The book's printed answers, checked -------------------------------------
+# BOOK SLIP (Figure 3.2 caption): the book prints sin 60° as 1/√2; it is √3/2.
+assert P[:, 1] ≈ (0.5, sqrt(3)/2)
+assert P[:, 2] ≈ (-sqrt(3)/2, 0.5)
+assert (L[2, 1], L[1, 3], L[2, 3]) ≈ (pi/2, pi, 0)
+assert D * (q[1], q[2], 1) ≈ (0, 2, 1)

@@ -20,7 +20,7 @@
 # The book gives no numbers for the frame of Figure 3.8; the fixed-frame vs
 #   body-frame rotation is shown here on {c} of Figure 3.6 with the figure's
 #   operator R = Rot(ẑ, 90°): R R_sc = [0 0 1; 0 -1 0; 1 0 0] and
-#   R_sc R = [-1 0 0; 0 0 -1; 0 1 0] (different, as the figure shows).
+#   R_sc R = [-1 0 0; 0 0 -1; 0 -1 0] (different, as the figure shows).
 
 # --- Representing an orientation --------------------------------------------
 R_sa = [1, 0, 0; 0, 1, 0; 0, 0, 1]
@@ -68,3 +68,17 @@ Rot((1, 1, 1) / sqrt(3), 120 deg)   # permutes the axes: [0 0 1; 1 0 0; 0 1 0]
 v = (1, 2, 3)
 R * v                         # (−2, 1, 3)
 norm(R * v) - norm(v)         # 0: rotations keep lengths (Prop. 3.4)
+
+# --- The book's printed answers, checked -------------------------------------
+assert R_sb ≈ Rot(z, 90 deg)
+assert untag(R_sb * Rot(y, -90 deg)) ≈ R_sc   # {b} moved is {c}
+assert R_ac == [0, -1, 0; 0, 0, -1; 1, 0, 0]
+assert R_ca == [0, 0, 1; -1, 0, 0; 0, -1, 0]
+assert R_ac * R_ca == eye(3)
+assert R_ab * p_b == p_a
+assert R_ac * p_c == p_a
+assert R_bc * p_c == p_b
+assert R_ca * p_a == p_c
+assert R_sc' ≈ [0, 0, 1; 0, -1, 0; 1, 0, 0]
+# (This header once printed R_sc R with +1 in its last row, which has det −1.)
+assert R_sc'' ≈ [-1, 0, 0; 0, 0, -1; 0, -1, 0]

@@ -40,3 +40,16 @@ V = twist((0, 0, 0), (0, 3, 4))
 thetadot2 = norm(V.v)            # 5
 S2 = V / thetadot2               # (0, 0, 0, 0, 0.6, 0.8)
 (q2, s2, h2) = screw_params(S2)  # ((0, 0, 0), (0, 0.6, 0.8), inf)
+
+# --- The expected values, checked ---------------------------------------------
+assert thetadot == 2
+assert S_s ≈ (0, 0, 1, -1, -2, 0)
+assert q ≈ (2, -1, 0)
+assert s_hat ≈ (0, 0, 1)
+assert h == 0
+assert S_b ≈ (0, 0, -1, 1.4, 2, 0)
+assert S1 ≈ (0, 0, 1, 0, -3, 2)
+assert (q1, s1, h1) ≈ ((3, 0, 0), (0, 0, 1), 2)
+assert S2 ≈ (0, 0, 0, 0, 0.6, 0.8)
+assert thetadot2 == 5
+assert h2 == inf

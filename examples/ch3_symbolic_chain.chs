@@ -77,3 +77,9 @@ given phi : scalar
 Rot_phi = [cos(phi), -sin(phi), 0; sin(phi), cos(phi), 0; 0, 0, 1]
 phi = 30 deg
 Rot_phi                                      # now Rotz(30°): [0.866 -0.5 0; 0.5 0.866 0; 0 0 1], SO(3)
+
+# --- The expected values, checked ---------------------------------------------
+# BOOK SLIP: the book prints 130/√2 for the last entry of T_ce; it is 160/√2.
+assert T_ce ≈ [0, 0, 1, -75; -1/sqrt(2), 1/sqrt(2), 0, -260/sqrt(2); -1/sqrt(2), -1/sqrt(2), 0, 160/sqrt(2); 0, 0, 0, 1]
+assert inv(T_ad * T_db * T_bc) * T_ad * T_de ≈ T_ce
+assert Rot_phi ≈ Rotz(30 deg)

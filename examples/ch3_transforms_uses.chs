@@ -66,3 +66,15 @@ norm(x - y)                      # 3
 T = SE3(Rot((0, 0, 1), 90 deg), (0, 2, 0))   # (Rot(ŵ, θ), p) with ŵ = ẑ, θ = 90°
 T_sb' = T * T_sb                 # fixed frame: rotate about ẑ_s, then translate in {s}
 T_sb'' = T_sb * T                # body frame: translate in {b}, then rotate about ẑ_b
+
+# --- The book's printed answers, checked -------------------------------------
+assert T_sa == eye(4)
+assert R_bc == [0, 1, 0; 0, 0, -1; -1, 0, 0]
+assert p_bc == (0, -3, -1)
+assert T ≈ [0, -1, 0, 0; 1, 0, 0, 2; 0, 0, 1, 0; 0, 0, 0, 1]
+assert T_sb == [0, 0, 1, 0; 0, -1, 0, -2; 1, 0, 0, 0; 0, 0, 0, 1]
+assert T_sb' ≈ [0, 1, 0, 2; 0, 0, 1, 2; 1, 0, 0, 0; 0, 0, 0, 1]
+assert T_sb'' ≈ [0, 0, 1, 0; -1, 0, 0, -4; 0, -1, 0, 0; 0, 0, 0, 1]
+assert v_a ≈ (1.5, -2, 0)
+assert v_c ≈ (-2.5, 0, -3)
+assert T_sb * T_bc ≈ T_sc

@@ -58,3 +58,16 @@ Ad(inv(T_sb))
 # [V'] = T [V] T^-1 is the matrix form of V' = [Ad_T] V
 T * untag([V_b]) * inv(T)        # = [V_s]
 [V_s]
+
+# --- The expected values, checked ---------------------------------------------
+assert inv(T) * T_dot ≈ untag([V_b])
+assert ω_s ≈ (1, 0, 0)
+assert p_dot ≈ (0, 0, 1)
+assert p_dot - cross(ω_s, p) ≈ (0, 0, 3)
+assert V_s ≈ (1, 0, 0, 0, 0, 3)
+assert V_c ≈ (-1, 0, 0, 0, 4, 0)
+assert Ad(inv(T_bc)) * V_b ≈ V_c
+assert Ad(T_sb) ≈ [0, 0, 1, 0, 0, 0; 0, -1, 0, 0, 0, 0; 1, 0, 0, 0, 0, 0; -2, 0, 0, 0, 0, 1; 0, 0, 0, 0, -1, 0; 0, 0, 2, 1, 0, 0]
+assert Ad(T_sb) ≈ [R, zeros(3, 3); [p] * R, R]
+assert Ad(T_sb) * Ad(T_bc) ≈ Ad(T_sc)                                  # Prop. 3.14
+assert inv(Ad(T_sb)) ≈ Ad(inv(T_sb))

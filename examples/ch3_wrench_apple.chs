@@ -67,3 +67,13 @@ dot(V_h, F_h)                    # −0.5 W: power of gravity on the hand
 dot(V_a, F_a)                    # −0.25 W: on the apple
 dot(V_f, F_f)                    # −0.75 W: the sum, computed in {f}
 V_f.T * F_f                      # −0.75 W again, as the book writes it: V_fᵀ F_f
+
+# --- The book's printed answers, checked -------------------------------------
+assert Ad(T_hf).T * F_h ≈ (0, 0, -0.5, 0, -5, 0)
+assert Ad(T_af).T * F_a ≈ (0, 0, -0.25, 0, -1, 0)
+assert F_f ≈ (0, 0, -0.75, 0, -6, 0)
+assert wrench(cross(r_f, f_f), f_f) ≈ Ad(T_af).T * F_a
+assert V_h ≈ (0, 0, 1, 0, 0.1, 0)
+assert dot(V_h, F_h) ≈ -0.5
+assert dot(V_a, F_a) ≈ -0.25
+assert dot(V_f, F_f) ≈ dot(V_h, F_h) + dot(V_a, F_a)                   # (3.98)

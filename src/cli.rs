@@ -1,6 +1,6 @@
 //! The command line (LANGUAGE.md §1): `chasles`, `chasles run FILE...`,
 //! `chasles check FILE...`, `chasles -e 'STATEMENTS'`, with `--json`,
-//! `--frames`, `--digits`, `--keep-going`. Exit codes: 0 success, 1 a
+//! `--frames`, `--digits`, `--exact`, `--keep-going`. Exit codes: 0 success, 1 a
 //! script error, 2 bad usage or an unreadable file.
 
 use std::io::{IsTerminal, Write};
@@ -49,6 +49,10 @@ struct Opts {
     /// Keep running after an error.
     #[arg(long, global = true)]
     keep_going: bool,
+    /// Print numbers within 1e-12 of simple closed forms as 1/√2, √3/2,
+    /// π/6 (text output; the REPL's :exact).
+    #[arg(long, global = true)]
+    exact: bool,
     /// Where pictures printed but not saved are written (default: the
     /// current folder); created if missing.
     #[arg(long, global = true, value_name = "DIR")]
@@ -109,7 +113,7 @@ fn run_sources(sources: &[(String, String)], mode: Mode, opts: &Opts) -> i32 {
         frames: opts.frames,
         digits: opts.digits as usize,
         json: opts.json,
-        ..Settings::default()
+        exact: opts.exact,
     };
     let mut session = Session::new(settings);
     if mode == Mode::Run {
@@ -126,9 +130,12 @@ fn run_sources(sources: &[(String, String)], mode: Mode, opts: &Opts) -> i32 {
         let keep_going = opts.keep_going || mode == Mode::Check;
         errors += session.run(src, mode, keep_going, |r| {
             statements += 1;
-            let text = r.stdout(&settings, src);
-            if !text.is_empty() && (mode == Mode::Run || settings.json) {
-                emit(&mut out, &text);
+            // `check` prints only errors and its summary (or JSON lines).
+            if mode == Mode::Run || settings.json {
+                let text = r.stdout(&settings, src);
+                if !text.is_empty() {
+                    emit(&mut out, &text);
+                }
             }
             let err = r.stderr(&settings, file, src);
             if !err.is_empty() {
@@ -219,7 +226,7 @@ pub fn main_with_args(args: Vec<String>) -> i32 {
                         frames: cli.opts.frames,
                         digits: cli.opts.digits as usize,
                         json: cli.opts.json,
-                        ..Settings::default()
+                        exact: cli.opts.exact,
                     },
                     pictures,
                 )

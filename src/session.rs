@@ -92,6 +92,10 @@ impl Report {
 pub struct Session {
     pub env: Env,
     pub settings: Settings,
+    /// The statements that ran without error, in order, as typed — what
+    /// the REPL's `:save` writes and `:history` lists (scripts leave it
+    /// empty).
+    pub accepted: Vec<String>,
     /// Where pictures printed but not saved are written (§12): `Some(".")`
     /// in the CLI and REPL, or `--draw-dir`. `None` (the default, for
     /// library use and tests) writes no file at all, not even for `save`.
@@ -105,6 +109,7 @@ impl Session {
         Session {
             env: Env::default(),
             settings,
+            accepted: Vec::new(),
             pictures: None,
             last_picture: None,
         }
@@ -151,13 +156,13 @@ impl Session {
                 Err(d) => Report {
                     line: lines.line(d.span.start),
                     anchor: lines.anchor(),
-                    result: Err(d),
+                    result: Err(habit_help(d, src)),
                     warnings: Vec::new(),
                 },
                 Ok(stmt) => {
                     let line = lines.line(stmt.span.start);
                     let mut interp = Interp::new(&mut self.env, src, mode, self.settings.frames);
-                    let mut result = interp.stmt(&stmt);
+                    let mut result = interp.stmt(&stmt).map_err(|d| habit_help(d, src));
                     let mut warnings = std::mem::take(&mut interp.warnings);
                     if let Ok(o) = &mut result
                         && let Err(d) = self.picture(o, line)
@@ -207,6 +212,22 @@ impl Session {
         });
         (out, err, n)
     }
+}
+
+/// A syntax or name error on a line typed from MATLAB or Python habit
+/// (`syms x`, `format long`, `np.array(..)`) gets the chasles way as its
+/// help.
+fn habit_help(mut d: Diagnostic, src: &str) -> Diagnostic {
+    if !matches!(d.kind, ErrorKind::Syntax | ErrorKind::Name) {
+        return d;
+    }
+    let at = d.span.start.min(src.len());
+    let start = src[..at].rfind('\n').map_or(0, |i| i + 1);
+    let end = src[at..].find('\n').map_or(src.len(), |i| at + i);
+    if let Some(h) = crate::diagnostics::habits::statement(&src[start..end]) {
+        d.help = Some(h);
+    }
+    d
 }
 
 /// A warning when a result holds NaN (an undefined operation such as

@@ -55,7 +55,11 @@ fn error_scripts() {
             "{} should fail:\n{out}",
             rel(path)
         );
-        if ["syntax", "name", "type", "frame", "domain", "arity"].contains(&kind.as_str()) {
+        if [
+            "syntax", "name", "type", "frame", "domain", "arity", "assert",
+        ]
+        .contains(&kind.as_str())
+        {
             assert!(
                 out.contains(&format!("{kind} error")),
                 "{} should report a {kind} error:\n{out}",

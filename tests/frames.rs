@@ -322,6 +322,10 @@ fn a_transposed_transform_is_not_a_transform() {
         "T_bc * T_ab.T",
         "the transpose is the inverse only for rotations",
     );
+    // In the book's superscripts too.
+    frame_error("T_ab^T * p_a", "T_ab^T is the transpose of a transform");
+    frame_error("T_abᵀ p_a", "T_abᵀ is the transpose of a transform");
+    frames("R_ab^T * R_ab", &["b", "b"]);
     // Printed, it is a plain 4×4 matrix with no frames; transposed back, T_ab.
     for r in both("T_ab.T") {
         assert_eq!(r, Ok((vec![], "matrix".to_string())));

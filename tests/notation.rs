@@ -147,6 +147,10 @@ fn scalar_functions_without_parentheses() {
     same(SETUP, "sin θ [w]", "sin(θ) * [w]");
     same(SETUP, "1 - cos θ", "1 - cos(θ)");
     same(SETUP, "sin θ cos θ", "sin(θ) * cos(θ)");
+    // The book's minus sign, as copied from the PDF.
+    same(SETUP, "1 − cos θ", "1 - cos(θ)");
+    same(SETUP, "−θ", "-θ");
+    assert_eq!(last("[1 −2]"), [1.0, -2.0]);
     same(SETUP, "cos θ / 2", "cos(θ) / 2");
     for (src, help) in [
         ("sin θ^2", "write (sin θ)^2, or sin(θ^2)"),

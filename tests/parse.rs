@@ -3,7 +3,7 @@
 //! property test that no input panics the parser.
 
 use chasles::diagnostics::Diagnostic;
-use chasles::syntax::ast::{BinOp, Expr, ExprKind, IndexArg, Span, Stmt, StmtKind, UnOp};
+use chasles::syntax::ast::{BinOp, CmpOp, Expr, ExprKind, IndexArg, Span, Stmt, StmtKind, UnOp};
 use chasles::syntax::{MAX_DEPTH, needs_more_input, parse_program};
 
 /// An expression as an s-expression: `(* 2 pi)`, juxtaposition `(j* 2 pi)`.
@@ -38,6 +38,13 @@ fn sexp(e: &Expr) -> String {
             format!("({op} {} {})", sexp(lhs), sexp(rhs))
         }
         ExprKind::Degrees(x) => format!("(deg {})", sexp(x)),
+        ExprKind::Compare { op, lhs, rhs, .. } => {
+            let op = match op {
+                CmpOp::Eq => "==",
+                CmpOp::Approx => "~=",
+            };
+            format!("({op} {} {})", sexp(lhs), sexp(rhs))
+        }
         ExprKind::Call { func, args } => {
             let args: Vec<String> = args.iter().map(sexp).collect();
             format!("{}({})", func.name, args.join(", "))
@@ -97,6 +104,7 @@ fn stmt_sexp(s: &Stmt) -> String {
             format!("fn {}({}) = {}", name.name, p.join(", "), sexp(body))
         }
         StmtKind::Derive { target } => format!("derive {}", target.name),
+        StmtKind::Assert(e) => format!("assert {}", sexp(e)),
     }
 }
 
@@ -226,6 +234,8 @@ fn juxtaposition_after_names_multiplies() {
         e.help.as_deref(),
         Some("write R[1, 2] to index, or R * [1, 2] to multiply")
     );
+    // Three entries cannot be an index: a product.
+    assert_eq!(p("R [1, 0, 0]"), "(j* R [1, 0, 0])");
     // Two numbers side by side are neither.
     let e = err("x = 1 0");
     assert_eq!(e.message, "missing operator between `1` and `0`");
@@ -708,7 +718,7 @@ fn friendly_errors() {
             "expected an operator, '=' or end of input, found '<'",
             "<",
             Some(
-                "there are no comparisons; `<` only opens a mechanism: mech < links 4; joints 4R; planar >",
+                "comparisons are `==` and `≈` (typed `~=`); `<` only opens a mechanism: mech < links 4; joints 4R; planar >",
             ),
         ),
         (
@@ -849,7 +859,7 @@ mod never_panics {
         "2.5", "T_ab", "x", "=", "given", ":", "mech", "<", ">", "R", "P", "#", "\n", " ", "{",
         "}", "_{", "links", "joints", "4R", "planar", "derive", ".5", "1e", "θ", "f(", "**",
         // The book's notation.
-        "ᵀ", "^T", "^{", "sin ", "cos", "0.", "1.e", "[[", "I", "T_01", "T_123", "e^",
+        "ᵀ", "^T", "^{", "sin ", "cos", "0.", "1.e", "[[", "I", "T_01", "T_123", "e^", "−", "²",
     ];
 
     fn program() -> impl Strategy<Value = String> {
@@ -901,4 +911,19 @@ mod never_panics {
             check(&src);
         }
     }
+}
+
+/// Comparisons are the loosest operators and chain to the left; `assert`
+/// takes one expression (LANGUAGE.md §3).
+#[test]
+fn comparisons_and_assert() {
+    assert_eq!(
+        stmt_sexp(&one("a + 1 == b * 2 ~= c")),
+        "(~= (== (+ a 1) (* b 2)) c)"
+    );
+    assert_eq!(stmt_sexp(&one("x = a ≈ b")), "x = (~= a b)");
+    assert_eq!(stmt_sexp(&one("assert T ≈ I")), "assert (~= T I)");
+    assert_eq!(stmt_sexp(&one("assert(a == b)")), "assert (== a b)");
+    // `assert` is not reserved: it can still be a name.
+    assert_eq!(stmt_sexp(&one("assert = 3")), "assert = 3");
 }

@@ -48,8 +48,12 @@ fn terminal_session() {
     expect(&mut p, ":help for help");
     prompt(&mut p);
 
-    // A 4×4 matrix typed row by row: Enter inside `[` starts the next row.
+    // A 4×4 matrix typed row by row: Enter inside `[` starts the next row
+    // under the continuation prompt; a blank Enter there shows it again.
     send(&mut p, "T = [1, 0, 0, 1\r");
+    expect(&mut p, "... ");
+    send(&mut p, "\r");
+    expect(&mut p, "... ");
     send(&mut p, "0, 1, 0, 2\r");
     send(&mut p, "0, 0, 1, 3\r");
     send(&mut p, "0, 0, 0, 1]\r");

@@ -6,13 +6,17 @@
 //! the checker with no numbers), and its implementation on values.
 
 mod args;
+pub mod notes;
+pub mod parts;
 mod table_draw;
 mod table_list;
 mod table_math;
 mod table_repr;
 mod table_rotations;
 mod table_screw;
+mod table_units;
 
+use std::hash::BuildHasherDefault;
 use std::sync::OnceLock;
 
 pub use args::{ArgError, Args};
@@ -322,15 +326,50 @@ pub fn table() -> &'static [Builtin] {
         t.extend(table_screw::builtins());
         t.extend(table_repr::builtins());
         t.extend(table_math::builtins());
+        t.extend(table_units::builtins());
         t.extend(table_list::builtins());
         t.extend(table_draw::builtins());
         t
     })
 }
 
-/// The builtin called `name` (book name or alias).
+/// The builtin called `name` (book name or alias); the first in table
+/// order when two share a name.
 pub fn lookup(name: &str) -> Option<&'static Builtin> {
-    table().iter().find(|b| b.names().any(|n| n == name))
+    type Index = std::collections::HashMap<&'static str, usize, BuildHasherDefault<Fnv>>;
+    static INDEX: OnceLock<Index> = OnceLock::new();
+    let index = INDEX.get_or_init(|| {
+        let mut index = Index::with_capacity_and_hasher(512, Default::default());
+        for (i, b) in table().iter().enumerate() {
+            for n in b.names() {
+                index.entry(n).or_insert(i);
+            }
+        }
+        index
+    });
+    index.get(name).map(|&i| &table()[i])
+}
+
+/// FNV-1a: a hash for the short, trusted names of the builtin index, much
+/// cheaper to build at startup than the default SipHash.
+#[derive(Default)]
+struct Fnv(u64);
+
+impl std::hash::Hasher for Fnv {
+    fn finish(&self) -> u64 {
+        self.0
+    }
+    fn write(&mut self, bytes: &[u8]) {
+        let mut h = if self.0 == 0 {
+            0xcbf2_9ce4_8422_2325
+        } else {
+            self.0
+        };
+        for &b in bytes {
+            h = (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3);
+        }
+        self.0 = h;
+    }
 }
 
 /// Every name that can be called, for completion and did-you-mean.

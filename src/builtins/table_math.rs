@@ -56,7 +56,7 @@ fn eval_exp(a: &mut Args) -> Result<Value, Diagnostic> {
     if let Some(x) = a.value(0).as_scalar() {
         return Ok(Value::scalar(x.exp()));
     }
-    let m = a.mat(0)?.clone();
+    let m = a.mat(0)?;
     if m.iter().any(|x| !x.is_finite()) {
         return Err(a.error(
             0,
@@ -64,6 +64,14 @@ fn eval_exp(a: &mut Args) -> Result<Value, Diagnostic> {
             "exp of a matrix with entries that are not finite",
         ));
     }
+    // The common case, [S]θ ∈ se(3) (3.88), on the stack.
+    if m.shape() == (4, 4) {
+        let f = Mat4::from_iterator(m.iter().copied());
+        if is_se3_fixed(&f) {
+            return Ok(Value::num(Kind::SE3, &se3::exp(&se3::vee(&f))));
+        }
+    }
+    let m = m.clone();
     let kind = a.value(0).kind();
     let skew3 =
         |m: &DMatrix<f64>| (m + m.transpose()).abs().max() <= 1e-12 * m.abs().max().max(1.0);
@@ -107,6 +115,14 @@ fn eval_exp(a: &mut Args) -> Result<Value, Diagnostic> {
         }
         _ => Err(a.error(0, ErrorKind::Type, "exp needs a square matrix")),
     }
+}
+
+/// [`is_se3`] for a 4×4 matrix on the stack: [ω] skew-symmetric, the
+/// last row zero.
+fn is_se3_fixed(m: &Mat4) -> bool {
+    let scale = m.amax().max(1.0);
+    let w = m.fixed_view::<3, 3>(0, 0);
+    (w + w.transpose()).amax() <= 1e-12 * scale && m.row(3).amax() == 0.0
 }
 
 fn is_se3(m: &DMatrix<f64>) -> bool {
@@ -326,7 +342,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
             name: "exp",
             aliases: &["expm"],
             signature: "exp(X: so3 | se3 | so2 | se2 | square matrix | scalar) -> SO3 | SE3 | SO2 | SE2 | matrix | scalar",
-            section: "§3.2.3, §3.3.3, Ex. 3.33–3.35",
+            section: "§3.2.3.2 (3.51), §3.3.3.1 Prop. 3.16, Exercises 3.33–3.35",
             doc: "the matrix exponential: e^[ω]θ ∈ SO(3), e^[S]θ ∈ SE(3), e^{At} for any square A",
             example: "exp([(0, 0, 1)] (pi/2))",
             area: LinearAlgebra,
@@ -354,7 +370,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
             name: "inv",
             aliases: &["inverse"],
             signature: "inv(X: square matrix | scalar) -> same",
-            section: "§3.2.1, §3.3.1.1",
+            section: "§3.2.1.1 Prop. 3.1, §3.3.1.1 Prop. 3.10",
             doc: "inverse; X_ab⁻¹ = X_ba (closed forms for SO(3) and SE(3))",
             example: "inv(RpToTrans(Rotz(pi/2), (1, 2, 3)))",
             area: LinearAlgebra,
@@ -637,6 +653,5 @@ pub(super) fn builtins() -> Vec<Builtin> {
             "the square root of a negative number is not real"
         ),
         scalar_fn!("abs", "absolute value", f64::abs, any, ""),
-        scalar_fn!("rad2deg", "radians to degrees", f64::to_degrees, any, ""),
     ]
 }

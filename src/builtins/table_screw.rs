@@ -56,6 +56,40 @@ fn displacement_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     Ok(Ty::new(if planar { Kind::SE2 } else { Kind::SE3 }, frames))
 }
 
+/// ScrewToAxis(q, ŝ, h): a direction that is not a unit vector is
+/// normalised, with a warning (S must be a unit screw axis, §3.3.2.2).
+fn eval_screw_to_axis(a: &mut Args) -> Result<Value, Diagnostic> {
+    let (q, s, h) = (a.vec3(0)?, a.vec3(1)?, a.scalar(2)?);
+    let n = s.norm();
+    if n == 0.0 || !n.is_finite() {
+        return Err(a.error(
+            1,
+            ErrorKind::Domain,
+            "the screw direction ŝ must be a nonzero unit vector",
+        ));
+    }
+    if (n - 1.0).abs() > 1e-12 {
+        let shown = |v: &Vec3| crate::values::format::inline(&v3val(v), 4);
+        a.warnings.push(
+            Diagnostic::warning(
+                ErrorKind::Domain,
+                a.spans.get(1).copied().unwrap_or(a.call_span),
+                format!(
+                    "ŝ = {} is not a unit vector (‖ŝ‖ = {}); normalised to {}",
+                    shown(&s),
+                    crate::values::number::fmt_num(n, 6),
+                    shown(&(s / n))
+                ),
+            )
+            .with_help("a screw axis has a unit direction ŝ (§3.3.2.2)"),
+        );
+    }
+    Ok(Value::num(
+        Kind::Screw,
+        &se3::screw_to_axis(&q, &(s / n), h),
+    ))
+}
+
 fn eval_displacement(a: &mut Args) -> Result<Value, Diagnostic> {
     if a.mat(0)?.shape() == (3, 3) {
         let (tb, tc) = (a.se2(0)?, a.se2(1)?);
@@ -158,7 +192,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
             name: "TransInv",
             aliases: &["trans_inv"],
             signature: "TransInv(T: SE3) -> SE3",
-            section: "§3.3.1.1 (3.64)",
+            section: "§3.3.1.1 Prop. 3.10 (3.64)",
             doc: "T⁻¹ = [Rᵀ, −Rᵀp; 0, 1]",
             example: "TransInv(RpToTrans(Rotz(pi/2), (1, 2, 3)))",
             area: Transforms,
@@ -207,7 +241,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
             name: "VecTose3",
             aliases: &["vec_to_se3"],
             signature: "VecTose3(V: 6-vector) -> se3",
-            section: "§3.3.2 (3.70)",
+            section: "§3.3.2 (3.72)",
             doc: "the 4×4 matrix [V] = [[ω], v; 0, 0] of a twist",
             example: "VecTose3((1, 2, 3, 4, 5, 6))",
             area: Twists,
@@ -222,7 +256,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
             name: "se3ToVec",
             aliases: &["se3_to_vec"],
             signature: "se3ToVec(se3mat: se3) -> twist",
-            section: "§3.3.2 (3.70)",
+            section: "§3.3.2 (3.72)",
             doc: "the twist V = (ω, v) of an se(3) matrix",
             example: "se3ToVec([0, -3, 2, 4; 3, 0, -1, 5; -2, 1, 0, 6; 0, 0, 0, 0])",
             area: Twists,
@@ -237,7 +271,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
             name: "Adjoint",
             aliases: &["adjoint", "Ad"],
             signature: "Adjoint(T: SE3) -> adjoint",
-            section: "§3.3.2 Def. 3.20",
+            section: "§3.3.2 Definition 3.6",
             doc: "the 6×6 [Ad_T] = [R, 0; [p]R, R]: V_a = [Ad_Tab] V_b",
             example: "Ad(RpToTrans(Rotz(pi/2), (1, 0, 0)))",
             area: Twists,
@@ -286,12 +320,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: screw,
                 frames: FrameRule::Shared,
             },
-            eval: |a| {
-                Ok(Value::num(
-                    Kind::Screw,
-                    &se3::screw_to_axis(&a.vec3(0)?, &a.vec3(1)?, a.scalar(2)?),
-                ))
-            },
+            eval: eval_screw_to_axis,
         },
         Builtin {
             name: "screw",
@@ -366,7 +395,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
             name: "MatrixExp6",
             aliases: &["matrix_exp6"],
             signature: "MatrixExp6(expc6: 6-vector or se3) -> SE3",
-            section: "§3.3.3.1 Prop. 3.25",
+            section: "§3.3.3.1 Proposition 3.16",
             doc: "the transform e^[S]θ of exponential coordinates Sθ",
             example: "MatrixExp6((0, 0, 1, 0, -3, 2) * pi/2)",
             area: Twists,
@@ -411,7 +440,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
             name: "wrench",
             aliases: &["Wrench"],
             signature: "wrench(m: 3-vector, f: 3-vector) -> wrench",
-            section: "§3.4 (3.94)",
+            section: "§3.4 (3.97)",
             doc: "the wrench F = (m, f): moment and force",
             example: "wrench((0, 0, 0), (0, -5, 0))",
             area: Twists,
@@ -446,7 +475,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
             name: "TwistBody",
             aliases: &["body_twist", "twist_body"],
             signature: "TwistBody(T: SE3, Tdot: 4×4) -> twist",
-            section: "§3.3.2 (3.68)",
+            section: "§3.3.2 (3.72)",
             doc: "body twist V_b from [V_b] = T⁻¹ Ṫ",
             example: "TwistBody(Trans((1, 0, 0)), [0, -1, 0, 0; 1, 0, 0, 1; 0, 0, 0, 0; 0, 0, 0, 0])",
             area: Twists,

@@ -17,6 +17,7 @@
 //! | column vector `v_a` / row `v_aᵀ`        | {a} ← line / line ← {a}      |
 //! | untagged operator                       | a displacement of the frame it meets |
 //! | untagged so(3)/se(3) matrix `[ω]`       | a quantity in the frame it meets |
+//! | product of untagged operators           | as many displacements as theirs |
 //! | untagged vector or row                  | line ← any / any ← line      |
 //! | transposed transform `T_abᵀ`            | none: an error in a product  |
 //!
@@ -31,25 +32,27 @@
 //! | `Tᵀ` · anything, anything · `Tᵀ`         | frame error naming `inv(T)`   |
 //!
 //! A moved frame counts its displacements ({b} moved twice is printed {b'},
-//! like a frame moved once, but the algebra tells them apart). When
-//! the inner ends name the same frame moved a different number of times, the
+//! like a frame moved once, but the algebra tells them apart). When the
+//! inner ends name the same frame moved a different number of times, the
 //! less-moved factor is moved to match: frames rigidly attached to a moved
-//! frame move with it (`T_ab' = T_ab`'s frames displaced, so `T_ab' T_bc` is
-//! T_ac'). Composition thus fails only when the names differ, and the
-//! number of primes of the result is the same under every bracketing.
+//! frame move with it (`T_ab' T_bc` is T_ac'). Composition thus fails only
+//! when the names differ, and the count of the result is the same under
+//! every bracketing: the factors are the maps of a category whose objects
+//! are (frame, count), each factor standing for all its displaced copies,
+//! and a product takes the copies with the fewest displacements that meet.
 //!
 //! Back to tags ([`to_frames`]): a map {a}←{a} of a group element or adjoint
 //! stays the pair (the identity `inv(T_ab) T_ab` is {b}←{b}); of any other
 //! kind it is a one-frame quantity in {a}, so conjugation closes:
-//! `T_ab [V_b] inv(T_ab)` is [V_a] in {a} (3.77) and `R_ab [ω_b] R_abᵀ` is
-//! [ω_a] (Prop. 3.5). A group element {a}←{a'} is a displacement in {a}.
+//! `T_ab [V_b] inv(T_ab)` is `[V_a]` in {a} (3.77) and `R_ab [ω_b] R_abᵀ` is
+//! `[ω_a]` (Prop. 3.5). A group element {a}←{a'} is a displacement in {a}.
 //!
-//! Untagged operators carry no frames, so a product of two of them cannot
-//! count its displacements: with two untagged factors side by side, the
-//! bracketing may change the number of primes (never the frames' names nor
-//! whether the product is an error).
+//! Untagged operators carry no frames but count their displacements (an
+//! untagged rotation or transform one, an untagged `[ω]` none, a product of
+//! them the sum: [`Ty::moves`]), so they too compose alike under every
+//! bracketing.
 
-use super::ty::{Frame, Frames, Kind};
+use super::ty::{Frame, Frames, Kind, Ty};
 
 /// One end of a map.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -92,11 +95,12 @@ impl Arrow {
 pub enum Factor {
     /// A map between frames (or the scalar line).
     Map(Arrow),
-    /// An untagged operator: a displacement of whichever frame it meets.
-    Untagged,
-    /// An untagged so(3)/se(3) matrix: a quantity in whichever frame it
-    /// meets (`R_ab [ω] R_abᵀ` is [ω_a] for ω in {b}).
-    Wildcard,
+    /// An untagged operator standing for `k` displacements of whichever
+    /// frame it meets: an untagged rotation, transform or matrix is one, an
+    /// untagged so(3)/se(3) matrix none — a quantity in the frame it meets
+    /// (`R_ab [ω] R_abᵀ` is `[ω_a]` for ω in {b}) — and a product of
+    /// untagged operators the sum of theirs.
+    Untagged(u32),
     /// The transpose of a transform {a}←{b}: no map between frames.
     Transposed(Frame, Frame),
 }
@@ -110,7 +114,7 @@ pub enum Shape {
     Row,
     /// A square (or other) matrix acting by `*`.
     Operator,
-    /// A Lie-algebra matrix [ω], [V]: a one-frame quantity acting by `*`.
+    /// A Lie-algebra matrix `[ω]`, `[V]`: a one-frame quantity acting by `*`.
     Quantity,
 }
 
@@ -139,6 +143,16 @@ pub enum Clash {
     Transposed { left: bool },
 }
 
+/// The factor of a value, by the first table of the module
+/// ([`Ty::moves`] counts the displacements of an untagged product).
+pub fn factor_of(t: &Ty) -> Factor {
+    let shape = Shape::of(&t.kind);
+    match (&t.frames, shape, t.moves) {
+        (Frames::None, Shape::Operator | Shape::Quantity, Some(k)) => Factor::Untagged(k),
+        _ => factor(&t.frames, shape),
+    }
+}
+
 /// The factor a tag stands for, by the first table of the module.
 pub fn factor(frames: &Frames, shape: Shape) -> Factor {
     use End::*;
@@ -147,8 +161,8 @@ pub fn factor(frames: &Frames, shape: Shape) -> Factor {
         (Frames::Transposed(a, b), _) => Factor::Transposed(a.clone(), b.clone()),
         (Frames::None, Shape::Column) => map(Any, Line),
         (Frames::None, Shape::Row) => map(Line, Any),
-        (Frames::None, Shape::Operator) => Factor::Untagged,
-        (Frames::None, Shape::Quantity) => Factor::Wildcard,
+        (Frames::None, Shape::Operator) => Factor::Untagged(1),
+        (Frames::None, Shape::Quantity) => Factor::Untagged(0),
         (Frames::One(a) | Frames::Pair(a, _) | Frames::Disp(a), Shape::Column) => {
             map(At(a.clone()), Line)
         }
@@ -168,16 +182,24 @@ pub fn compose(l: &Factor, r: &Factor) -> Result<Factor, Clash> {
     match (l, r) {
         (Transposed(..), _) => Err(Clash::Transposed { left: true }),
         (_, Transposed(..)) => Err(Clash::Transposed { left: false }),
-        (Wildcard, x) | (x, Wildcard) => Ok(x.clone()),
-        (Untagged, Untagged) => Ok(Untagged),
+        (Untagged(j), Untagged(k)) => Ok(Untagged(j.saturating_add(*k))),
         // An untagged operator displaces the frame it meets: on the left of
         // {a'}←{b} it is the step {a}←{a'} (the fewest displacements that
         // make the frames meet), on the left of {a}←{b} it moves {b}.
-        (Untagged, Map(a)) => Ok(Map(match &a.out {
-            End::At(f) if f.moved > 0 => Arrow::new(End::At(f.lowered()), a.inn.clone()),
-            _ => Arrow::new(a.out.clone(), a.inn.lifted(1)),
+        (Untagged(k), Map(a)) => Ok(Map(match &a.out {
+            End::At(f) => {
+                let down = f.moved.min(*k);
+                Arrow::new(
+                    End::At(Frame {
+                        moved: f.moved - down,
+                        ..f.clone()
+                    }),
+                    a.inn.lifted(k - down),
+                )
+            }
+            _ => Arrow::new(a.out.clone(), a.inn.lifted(*k)),
         })),
-        (Map(a), Untagged) => Ok(Map(Arrow::new(a.out.clone(), a.inn.lifted(1)))),
+        (Map(a), Untagged(k)) => Ok(Map(Arrow::new(a.out.clone(), a.inn.lifted(*k)))),
         (Map(x), Map(y)) => compose_maps(x, y).map(Map),
     }
 }
@@ -217,7 +239,7 @@ fn group_like(kind: &Kind) -> bool {
 /// The tag of a result of `kind` that is the factor `f`.
 pub fn to_frames(f: &Factor, kind: &Kind) -> Frames {
     let arrow = match f {
-        Factor::Untagged | Factor::Wildcard => return Frames::None,
+        Factor::Untagged(_) => return Frames::None,
         Factor::Transposed(a, b) => return Frames::Transposed(a.clone(), b.clone()),
         Factor::Map(a) => a,
     };
@@ -242,10 +264,50 @@ pub fn to_frames(f: &Factor, kind: &Kind) -> Frames {
 
 /// The frames of the product of two tagged values: the algebra's answer
 /// for `l * r` with the result of `kind`.
-pub fn product(l: (&Frames, &Kind), r: (&Frames, &Kind), kind: &Kind) -> Result<Frames, Clash> {
-    let lf = factor(l.0, Shape::of(l.1));
-    let rf = factor(r.0, Shape::of(r.1));
-    compose(&lf, &rf).map(|f| to_frames(&f, kind))
+/// With the frames, the displacements an untagged operator result stands
+/// for when they are not the usual ([`Ty::moves`]).
+pub fn product(l: &Ty, r: &Ty, kind: &Kind) -> Result<(Frames, Option<u32>), Clash> {
+    let f = compose(&factor_of(l), &factor_of(r))?;
+    let moves = match f {
+        Factor::Untagged(k) => unusual(k, kind),
+        _ => None,
+    };
+    Ok((to_frames(&f, kind), moves))
+}
+
+/// The type `t` with the kind the value turned out to have at run time
+/// (a literal that is a rotation is SO(3)): the same frames, and for an
+/// untagged operator the same number of displacements; what only the
+/// symbols knew (`Ty::algebra`) is left to the numbers.
+pub fn with_kind(t: &Ty, kind: Kind) -> Ty {
+    let mut out = Ty::new(kind, t.frames.clone());
+    if let Factor::Untagged(k) = factor_of(t) {
+        out.moves = unusual(k, &out.kind);
+    }
+    out
+}
+
+/// For an untagged `X^n` of kind `kind`: the displacements it stands for,
+/// n times those of X (as [`product`] counts X·X·…·X), when not the usual.
+pub fn untagged_power(x: &Ty, n: Option<i64>, kind: &Kind) -> Option<u32> {
+    let (Factor::Untagged(k), Some(n)) = (factor_of(x), n) else {
+        return x.moves;
+    };
+    let n = u32::try_from(n.unsigned_abs()).unwrap_or(u32::MAX);
+    unusual(k.saturating_mul(n), kind)
+}
+
+/// `k` displacements for an untagged operator of `kind`, None when that is
+/// the usual number (one for an operator, none for a Lie-algebra matrix)
+/// or `kind` is no operator.
+fn unusual(k: u32, kind: &Kind) -> Option<u32> {
+    let usual = match Shape::of(kind) {
+        _ if *kind == Kind::Scalar => return None,
+        Shape::Operator => 1,
+        Shape::Quantity => 0,
+        Shape::Column | Shape::Row => return None,
+    };
+    (k != usual).then_some(k)
 }
 
 /// The frames of `X^n` (n a whole number, |n| ≥ 2; None when not known

@@ -67,19 +67,19 @@ pub fn named_kind(name: &str, kind: &Kind) -> Kind {
 /// The group a rotation or transform name asserts for a square matrix of
 /// `kind` (LANGUAGE.md §5): `R_sb` a rotation (SO(3), or SO(2) when 2×2),
 /// `T_ab` a transform (SE(3) when 4×4, SE(2) when 3×3). None for other
-/// names, other shapes, and values already of a kind that is not a plain
-/// matrix.
+/// names and shapes, and for values that are already group elements (a
+/// rotation bound to `T_bc` stays a rotation) — except a planar transform
+/// under a rotation's name, which must be a rotation.
 pub fn named_group(name: &str, kind: &Kind) -> Option<Kind> {
+    let n = match kind {
+        Kind::Matrix(Some(r), Some(c)) if r == c => *r,
+        Kind::SE2 if book_letter(name) == Some('R') => 3,
+        _ => return None,
+    };
+    // The name's frames last: reading them allocates.
     if !matches!(name_frames(name), NameFrames::Pair(..)) {
         return None;
     }
-    let n = match kind {
-        Kind::Matrix(Some(r), Some(c)) if r == c => *r,
-        Kind::SO3 | Kind::SE2 | Kind::So3 | Kind::Se2 => 3,
-        Kind::SE3 | Kind::Se3 => 4,
-        Kind::SO2 | Kind::So2 => 2,
-        _ => return None,
-    };
     match (book_letter(name)?, n) {
         ('R', 3) => Some(Kind::SO3),
         ('R', 2) => Some(Kind::SO2),
@@ -129,6 +129,7 @@ pub fn bind(name: &str, ty: &Ty) -> Result<Bound, RuleError> {
     };
     let mut bound = Ty::new(kind, frames);
     bound.algebra = ty.algebra.clone();
+    bound.moves = ty.moves;
     Ok(Bound { ty: bound, warning })
 }
 
@@ -225,6 +226,9 @@ mod tests {
         assert_eq!(named_group("R", &m(3)), None);
         assert_eq!(named_group("Rq_sb", &m(3)), None);
         assert_eq!(named_group("M_sb", &m(4)), None);
+        // A group element keeps its group; a planar transform is no rotation.
+        assert_eq!(named_group("T_bc", &Kind::SO3), None);
+        assert_eq!(named_group("R_bc", &Kind::SE2), Some(Kind::SO3));
     }
 
     #[test]

@@ -36,7 +36,7 @@ pub fn mul(l: &Ty, r: &Ty, ops: Operands) -> Result<Ty, RuleError> {
     } else {
         mul_kind(&l.kind, &r.kind, ops)?
     };
-    let frames = match algebra::product((&l.frames, &l.kind), (&r.frames, &r.kind), &kind) {
+    let (frames, moves) = match algebra::product(l, r, &kind) {
         Ok(f) => f,
         Err(Clash::Inner(x, y)) => {
             // A displacement in {a} is the map {a}←{a'}: name its frame {a}.
@@ -48,7 +48,9 @@ pub fn mul(l: &Ty, r: &Ty, ops: Operands) -> Result<Ty, RuleError> {
         }
         Err(Clash::Transposed { left }) => return Err(transposed_factor(l, r, left, ops)),
     };
-    Ok(conjugation(l, r, Ty::new(kind, frames)))
+    let mut out = Ty::new(kind, frames);
+    out.moves = moves;
+    Ok(conjugation(l, r, out))
 }
 
 /// What a factor contributes to a product of group elements and one
@@ -185,6 +187,13 @@ fn mul_kind(l: &Kind, r: &Kind, ops: Operands) -> Result<Kind, RuleError> {
             SE3 | Se3 if dims_agree(n, Some(4)) => Ok(Vector(Some(4))),
             Matrix(None, _) | Matrix(_, None) => Ok(Vector(None)),
             SE2 | Se2 if n == Some(2) => Ok(Vector(Some(2))),
+            // Two column vectors: the student meant a dot or cross product.
+            _ if l.is_vector() && !dims_agree(n, Some(1)) => {
+                let (u, v) = (ops.lhs.trim(), ops.rhs.trim());
+                Err(shape_error(l, r).with_help(format!(
+                    "for two vectors write dot({u}, {v}) or {u}.T * {v} (a number), or cross({u}, {v}); {u} * {v}.T is the outer product"
+                )))
+            }
             _ => {
                 let (rows, cols) = l.shape().ok_or_else(|| shape_error(l, r))?;
                 if !dims_agree(cols, n) {
@@ -331,16 +340,17 @@ fn product_help(l: &Ty, r: &Ty, ops: Operands) -> String {
     match (&l.frames, &r.frames) {
         (Frames::Pair(a, b), Frames::Pair(c, d)) => {
             if b == d && a != c {
-                format!(
-                    "{rule}; did you mean inv({}) = {}?",
-                    ops.rhs.trim(),
-                    result_name(ops, d, c)
-                )
+                let (inverse, name) = (inverse_text(ops.rhs), result_name(ops, d, c));
+                if inverse == name {
+                    format!("{rule}; did you mean {name}?")
+                } else {
+                    format!("{rule}; did you mean {inverse} = {name}?")
+                }
             } else if c == a && b != d {
-                // T_sc * inv(T_sb): both from {s}.
+                // T_sb * T_sc: both from {s}.
                 format!(
-                    "{rule}; both start in {{{a}}}: the body-frame form is inv({}) * {} = {}{}",
-                    ops.lhs.trim(),
+                    "{rule}; both start in {{{a}}}: the body-frame form is {} * {} = {}{}",
+                    inverse_text(ops.lhs),
                     ops.rhs.trim(),
                     result_name(ops, b, d),
                     displacement_hint(ops)

@@ -115,22 +115,24 @@ pub fn div(l: &Ty, r: &Ty) -> Result<Ty, RuleError> {
 
 /// `inv(X_ab)` = X_ba.
 pub fn inverse(t: &Ty) -> Result<Ty, RuleError> {
-    match &t.kind {
-        Kind::Scalar => Ok(t.clone()),
-        k if k.is_group() || matches!(k, Kind::Adjoint { .. }) => {
-            Ok(Ty::new(k.clone(), t.frames.swapped()))
+    let kind = match &t.kind {
+        Kind::Scalar => return Ok(t.clone()),
+        k if k.is_group() || matches!(k, Kind::Adjoint { .. }) => k.clone(),
+        Kind::Matrix(r, c) if dims_agree(*r, *c) => Kind::Matrix(*r, *c),
+        Kind::Unknown => Kind::Unknown,
+        k => {
+            return Err(RuleError::typ(format!("cannot invert {}", k.a()))
+                .with_help("only square matrices have inverses"));
         }
-        Kind::Matrix(r, c) if dims_agree(*r, *c) => {
-            Ok(Ty::new(Kind::Matrix(*r, *c), t.frames.swapped()))
-        }
-        Kind::Unknown => Ok(Ty::new(Kind::Unknown, t.frames.swapped())),
-        k => Err(RuleError::typ(format!("cannot invert {}", k.a()))
-            .with_help("only square matrices have inverses")),
-    }
+    };
+    // The inverse of an untagged product of displacements is as many.
+    let mut out = Ty::new(kind, t.frames.swapped());
+    out.moves = t.moves;
+    Ok(out)
 }
 
 /// `x.T` — the transpose of a rotation is its inverse (Prop. 3.1), so
-/// `R_ab.T` is R_ba; [Ad_T]ᵀ acts on wrenches (Prop. 3.17) and maps them
+/// `R_ab.T` is R_ba; `[Ad_T]ᵀ` acts on wrenches (Prop. 3.17) and maps them
 /// the other way; a vector's transpose is a row in the same frame, a
 /// one-frame matrix's transpose stays in its frame. The transpose of any
 /// other map {a}←{b} (a transform, a product) maps no frame to another: it
@@ -170,7 +172,9 @@ pub fn transpose(t: &Ty) -> Result<Ty, RuleError> {
         Frames::Transposed(a, b) => Frames::Pair(a.clone(), b.clone()),
         f => f.swapped(),
     };
-    Ok(Ty::new(kind, frames))
+    let mut out = Ty::new(kind, frames);
+    out.moves = t.moves;
+    Ok(out)
 }
 
 /// `X ^ n` with a literal integer exponent when known.
@@ -231,7 +235,10 @@ pub fn pow(base: &Ty, exp: &Ty, literal: Option<f64>) -> Result<Ty, RuleError> {
             } else {
                 scaled_kind(&base.kind)
             };
-            Ok(Ty::new(kind, frames))
+            let moves = algebra::untagged_power(base, n, &kind);
+            let mut out = Ty::new(kind, frames);
+            out.moves = moves;
+            Ok(out)
         }
     }
 }

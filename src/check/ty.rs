@@ -17,9 +17,9 @@ pub enum Kind {
     SO3,
     /// A homogeneous transform T ∈ SE(3) (§3.3.1).
     SE3,
-    /// A skew-symmetric [ω] ∈ so(3) (§3.2.2).
+    /// A skew-symmetric `[ω]` ∈ so(3) (§3.2.2).
     So3,
-    /// A twist matrix [V] ∈ se(3) (§3.3.2).
+    /// A twist matrix `[V]` ∈ se(3) (§3.3.2).
     Se3,
     SO2,
     SE2,
@@ -31,8 +31,8 @@ pub enum Kind {
     Screw,
     /// A wrench F = (m, f) (§3.4).
     Wrench,
-    /// The 6×6 adjoint [Ad_T] (Definition 3.20); `transposed` for
-    /// [Ad_T]ᵀ, which acts on wrenches (Prop. 3.17).
+    /// The 6×6 adjoint `[Ad_T]` (Definition 3.6); `transposed` for
+    /// `[Ad_T]ᵀ`, which acts on wrenches (Prop. 3.17).
     Adjoint {
         transposed: bool,
     },
@@ -332,7 +332,7 @@ pub enum Frames {
     /// Untagged: matches anything.
     #[default]
     None,
-    /// A vector quantity expressed in {a}: point, twist, wrench, [ω]…
+    /// A vector quantity expressed in {a}: point, twist, wrench, `[ω]`…
     One(Frame),
     /// {a}←{b}: R_ab, T_ab, Ad(T_ab) map {b} coordinates to {a}.
     Pair(Frame, Frame),
@@ -431,8 +431,14 @@ pub struct Ty {
     /// For a plain matrix that is a group element times an element of its
     /// Lie algebra, g·X or X·g (`T_sb [V_b]` = Ṫ_sb, (3.75)), the algebra:
     /// conjugation g·X·g⁻¹ lands back in it when the frames close on one
-    /// ([V_s] = T [V_b] T⁻¹, (3.77); Prop. 3.5). Known without numbers only.
+    /// (`[V_s] = T [V_b] T⁻¹`, (3.77); Prop. 3.5). Known without numbers only.
     pub algebra: Option<Kind>,
+    /// For an untagged operator that is a product of untagged operators,
+    /// how many displacements it stands for when not the usual one (an
+    /// untagged rotation or transform is one displacement of the frame it
+    /// meets, an untagged [`Kind::So3`]/[`Kind::Se3`] matrix none), so that
+    /// `A * B * T_sb` moves {b} alike under every bracketing.
+    pub moves: Option<u32>,
 }
 
 impl Ty {
@@ -441,6 +447,7 @@ impl Ty {
             kind,
             frames,
             algebra: None,
+            moves: None,
         }
     }
     /// An untagged value of `kind`.
@@ -455,8 +462,7 @@ impl Ty {
     pub fn scaled(&self) -> Ty {
         Ty {
             kind: self.kind.scaled(),
-            frames: self.frames.clone(),
-            algebra: self.algebra.clone(),
+            ..self.clone()
         }
     }
 }

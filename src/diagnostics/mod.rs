@@ -1,13 +1,14 @@
 //! Errors and warnings as data, and their rendering.
 //!
 //! Every stage (parse, check, evaluate) reports a [`Diagnostic`]: a kind from
-//! the contract's list (`syntax name type frame domain arity`), a message, a
+//! the contract's list (`syntax name type frame domain arity assert`), a message, a
 //! primary span, secondary labels (a frame error labels both operands and
 //! the operator) and an optional `help:` line. Rendering to text (with
 //! carets) and JSON lives in [`render`].
 
 use crate::span::Span;
 
+pub mod habits;
 pub mod render;
 pub mod suggest;
 
@@ -21,6 +22,8 @@ pub enum ErrorKind {
     Frame,
     Domain,
     Arity,
+    /// A failed `assert` (LANGUAGE.md §3).
+    Assert,
 }
 
 impl ErrorKind {
@@ -33,6 +36,7 @@ impl ErrorKind {
             ErrorKind::Frame => "frame",
             ErrorKind::Domain => "domain",
             ErrorKind::Arity => "arity",
+            ErrorKind::Assert => "assert",
         }
     }
 }
@@ -42,6 +46,8 @@ impl ErrorKind {
 pub enum Severity {
     Error,
     Warning,
+    /// A remark on a correct result (printed as `note:`).
+    Note,
 }
 
 /// A secondary label: a span with a short note under it.
@@ -79,6 +85,14 @@ impl Diagnostic {
         }
     }
 
+    /// A note on a correct result at `span` (printed as `note:`).
+    pub fn note(kind: ErrorKind, span: Span, message: impl Into<String>) -> Diagnostic {
+        Diagnostic {
+            severity: Severity::Note,
+            ..Diagnostic::error(kind, span, message)
+        }
+    }
+
     /// A warning of `kind` at `span` (printed, does not stop the statement).
     pub fn warning(kind: ErrorKind, span: Span, message: impl Into<String>) -> Diagnostic {
         Diagnostic {
@@ -106,9 +120,5 @@ impl Diagnostic {
     pub fn with_help(mut self, text: impl Into<String>) -> Diagnostic {
         self.help = Some(text.into());
         self
-    }
-
-    pub fn is_error(&self) -> bool {
-        self.severity == Severity::Error
     }
 }

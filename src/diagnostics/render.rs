@@ -23,6 +23,7 @@ fn header_from(d: &Diagnostic, file: &str, src: &str, anchor: Anchor) -> String 
     let what = match d.severity {
         Severity::Error => format!("{} error", d.kind.as_str()),
         Severity::Warning => "warning".to_string(),
+        Severity::Note => "note".to_string(),
     };
     format!("{file}:{line}:{col}: {what}: {}", d.message)
 }
@@ -95,6 +96,7 @@ pub fn text_from(d: &Diagnostic, file: &str, src: &str, anchor: Anchor) -> Strin
     let base_diag = match d.severity {
         Severity::Error => CsDiagnostic::error(),
         Severity::Warning => CsDiagnostic::warning(),
+        Severity::Note => CsDiagnostic::note(),
     };
     let mut cs = base_diag
         .with_message(d.message.clone())

@@ -68,7 +68,13 @@ impl Env {
         self.vars.get(name)
     }
     pub fn set(&mut self, name: &str, b: Binding) {
-        self.vars.insert(name.to_string(), b);
+        // Rebinding a name (the common case in a long script) keeps its key.
+        match self.vars.get_mut(name) {
+            Some(old) => *old = b,
+            None => {
+                self.vars.insert(name.to_string(), b);
+            }
+        }
     }
     /// Names in sorted order (for `:vars` and derive's deterministic search).
     pub fn names(&self) -> Vec<&String> {

@@ -34,7 +34,9 @@ pub(super) fn to_sym(v: &Value) -> Sym {
 /// is SO(3)); frames stay as the checker found them.
 pub(super) fn refine(ty: Ty, val: &Option<Value>) -> Ty {
     match val {
-        Some(v @ (Value::Num { .. } | Value::Tuple(_))) => Ty::new(v.kind(), ty.frames),
+        Some(v @ (Value::Num { .. } | Value::Tuple(_))) => {
+            crate::check::algebra::with_kind(&ty, v.kind())
+        }
         _ => ty,
     }
 }
@@ -177,6 +179,12 @@ impl Interp<'_> {
                     .running()
                     .then(|| Value::Str(std::rc::Rc::from(text.as_str()))),
             }),
+            ExprKind::Compare {
+                op,
+                lhs,
+                rhs,
+                op_span,
+            } => self.compare(*op, lhs, rhs, *op_span),
         }
     }
 
@@ -204,6 +212,13 @@ impl Interp<'_> {
                     val: self.running().then(|| Value::scalar(std::f64::consts::E)),
                 });
             }
+            // The unit of `pi/6 rad`: angles are in radians already.
+            "rad" => {
+                return Ok(Typed {
+                    ty: Ty::scalar(),
+                    val: self.running().then(|| Value::scalar(1.0)),
+                });
+            }
             // The identity of the size its context needs (LANGUAGE.md §4).
             "I" => return self.identity(span),
             _ => {}
@@ -217,6 +232,9 @@ impl Interp<'_> {
             .with_help(format!("call it: {name}(...)")));
         }
         let mut d = Diagnostic::error(ErrorKind::Name, span, format!("unknown name '{name}'"));
+        if let Some(h) = crate::diagnostics::habits::name(name) {
+            return Err(d.with_help(h));
+        }
         // T_{0,1} unknown but T_01 known: the same frames spelled otherwise.
         let frames = crate::syntax::ident::name_frames(name);
         if frames != crate::syntax::ident::NameFrames::None {
@@ -355,6 +373,13 @@ impl Interp<'_> {
                 name_span,
                 format!("unknown function '{name}'"),
             );
+            let args_text = match (args.first(), args.last()) {
+                (Some(a), Some(b)) => self.text(Span::new(a.span.start, b.span.end)),
+                _ => "",
+            };
+            if let Some(h) = crate::diagnostics::habits::function(name, args_text) {
+                return Err(d.with_help(h));
+            }
             let mut names = builtins::all_names();
             names.extend(self.env.fns.keys().map(String::as_str));
             if let Some(s) = suggest::did_you_mean(name, &names) {
@@ -454,6 +479,7 @@ impl Interp<'_> {
             warnings: &mut self.warnings,
         };
         let v = (b.eval)(&mut a)?;
+        builtins::notes::after_call(&mut a, &v);
         not_finite_group(&v, b.name, span)?;
         let val = Some(v);
         Ok(Typed {

@@ -34,6 +34,9 @@ pub struct Outcome {
     /// For `(a, b) = ..`, the type of each bound part, with the frames it
     /// took from the value or from its name; empty otherwise.
     pub parts: Vec<Ty>,
+    /// For a bare call of a builtin whose tuple parts have names
+    /// ([`crate::builtins::parts`]), those names, to print `q = …`.
+    pub labels: &'static [&'static str],
 }
 
 /// Runs statements against an environment.
@@ -132,6 +135,7 @@ impl<'a> Interp<'a> {
             note: None,
             prints: true,
             parts: Vec::new(),
+            labels: &[],
         };
         match &s.kind {
             StmtKind::Expr(e) => {
@@ -140,7 +144,9 @@ impl<'a> Interp<'a> {
                 if t.ty.kind != Kind::Function {
                     self.bind_value("ans", &t);
                 }
-                Ok(out(vec![], t))
+                let mut o = out(vec![], t);
+                o.labels = self.part_labels(e);
+                Ok(o)
             }
             StmtKind::Assign { target, value } => {
                 let mut t = self.expr(value)?;
@@ -229,6 +235,21 @@ impl<'a> Interp<'a> {
                 o.prints = false;
                 Ok(o)
             }
+            StmtKind::Assert(cond) => {
+                self.assert(cond)?;
+                // A passing check needs no remarks on its values (θ = π notes).
+                self.warnings
+                    .retain(|w| w.severity != crate::diagnostics::Severity::Note);
+                let mut o = out(
+                    vec![],
+                    Typed {
+                        ty: Ty::plain(Kind::Bool),
+                        val: None,
+                    },
+                );
+                o.prints = false;
+                Ok(o)
+            }
             StmtKind::Derive { target } => {
                 let (chain, t) = self.derive(target)?;
                 self.bind_value(&target.name, &t);
@@ -285,6 +306,21 @@ impl<'a> Interp<'a> {
         Ok(Typed { ty, val })
     }
 
+    /// The names of the parts of a bare builtin call's tuple (`q`, `s`, `h`
+    /// of `screw_params`); empty for anything else or a user function.
+    fn part_labels(&self, e: &crate::syntax::ast::Expr) -> &'static [&'static str] {
+        match &e.kind {
+            crate::syntax::ast::ExprKind::Call { func, .. }
+                if !self.env.fns.contains_key(&func.name) =>
+            {
+                crate::builtins::lookup(&func.name)
+                    .and_then(|b| crate::builtins::parts::part_names(b.name))
+                    .unwrap_or(&[])
+            }
+            _ => &[],
+        }
+    }
+
     /// A warning from a binding rule (the name renames a moved frame).
     fn rule_warning(&mut self, e: RuleError, value_span: Span, name_span: Span) {
         if self.frames == FrameMode::Off {
@@ -324,7 +360,7 @@ impl<'a> Interp<'a> {
             return Ok(m);
         }
         let measure = format!("DistanceTo{}", group.name().replace(['(', ')'], ""));
-        let fmt = |d: f64| crate::output::number::fmt_num(d, 4);
+        let fmt = |d: f64| crate::values::number::fmt_num(d, 4);
         match membership(&m, group) {
             Membership::Exact(x) => Ok(x),
             Membership::Projected(p, d) => {

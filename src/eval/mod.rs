@@ -2,6 +2,7 @@
 //! walks each statement once, checking kinds and frames by
 //! [`crate::check`]'s rules and computing values through [`crate::lie`].
 
+mod compare;
 mod compound;
 mod derive;
 pub mod env;

@@ -57,8 +57,8 @@ impl Interp<'_> {
         rhs: &Expr,
     ) -> Result<(Typed, Typed), Diagnostic> {
         let free = |e: &Expr| mentions_identity(e);
-        let sized =
-            matches!(op, BinOp::Add | BinOp::Sub | BinOp::Mul) && self.env.get("I").is_none();
+        // Sums, products and any comparison (`R Rᵀ == I`); not `^` or `/`.
+        let sized = !matches!(op, BinOp::Pow | BinOp::Div) && self.env.get("I").is_none();
         if sized && free(lhs) && !free(rhs) {
             let r = self.expr(rhs)?;
             let n = match (op, dims(&r)) {

@@ -143,9 +143,12 @@ pub(crate) fn exp_with(expc: &Vec3, a: f64, b: f64, c: f64) -> Mat3 {
 ///   (R + Rᵀ)/2 − cosθ·I = (1 − cosθ) ω̂ω̂ᵀ, whose column with the largest
 ///   diagonal entry is the best-conditioned multiple of ω̂ (this generalises
 ///   the book's case (ii), (3.58)–(3.60), to all θ near π). Its sign is
-///   fixed by the skew part (sinθ ω̂ = vee(R − Rᵀ)/2); at θ = π exactly,
-///   where the skew part vanishes, the sign with positive largest component
-///   is kept.
+///   fixed by the skew part (sinθ ω̂ = vee(R − Rᵀ)/2); at θ = π, where the
+///   skew part is rounding noise and fixes no sign, ±ω̂ are both valid and
+///   the sign is the one the book's formulas give, tried in its order: (3.58)
+///   (ω̂₃ > 0) unless 1 + r₃₃ is near zero, then (3.59) (ω̂₂ > 0), then (3.60)
+///   (ω̂₁ > 0) — so the axis agrees with the book and its library
+///   ([`is_half_turn`] tells a caller to say so).
 pub fn log(r: &Mat3) -> Vec3 {
     log_parts(r).phi
 }
@@ -197,6 +200,35 @@ pub(crate) fn log_parts<S: Storage<f64, U3, U3>>(r: &Block3<S>) -> LogParts {
     }
 }
 
+/// Below this, the skew part ‖vee(R − Rᵀ)‖/2 = sinθ of a rotation with
+/// cosθ < 0 is rounding noise: θ = π, and ω̂ and −ω̂ give the same R (their
+/// exponentials differ by about 2 sinθ ≤ 1e-15).
+pub const HALF_TURN_SKEW: f64 = 4.0 * f64::EPSILON;
+
+/// The book library's `NearZero` tolerance, used to pick among (3.58)–(3.60).
+const BOOK_NEAR_ZERO: f64 = 1e-6;
+
+/// Whether R is a half turn (θ = π within rounding), where the log's axis
+/// is one of two equally valid answers ±ω̂ (§3.2.3.3, case (ii)).
+pub fn is_half_turn(r: &Mat3) -> bool {
+    let c = 0.5 * (r.trace() - 1.0);
+    c < 0.0 && skew_part(r).norm() <= HALF_TURN_SKEW
+}
+
+/// The sign of ±ω̂ that the book's formulas give at θ = π, in its order:
+/// (3.58) ω̂ = (r₁₃, r₂₃, 1 + r₃₃)/√(2(1 + r₃₃)) has ω̂₃ > 0 unless 1 + r₃₃
+/// is near zero; then (3.59) with ω̂₂ > 0; else (3.60) with ω̂₁ > 0.
+fn book_sign<S: Storage<f64, U3, U3>>(r: &Block3<S>, w: Vec3) -> Vec3 {
+    let k = if 1.0 + r[(2, 2)] >= BOOK_NEAR_ZERO {
+        2
+    } else if 1.0 + r[(1, 1)] >= BOOK_NEAR_ZERO {
+        1
+    } else {
+        0
+    };
+    if w[k] < 0.0 { -w } else { w }
+}
+
 /// The unit axis ω̂ of a rotation with cosθ = `c` ≤ 0, from the symmetric
 /// part (R + Rᵀ)/2 − cosθ·I = (1 − cosθ) ω̂ω̂ᵀ (3.52): its column with the
 /// largest diagonal entry, signed to agree with `s_vec` = sinθ ω̂. Zero for
@@ -224,6 +256,9 @@ fn near_pi_axis<S: Storage<f64, U3, U3>>(r: &Block3<S>, c: f64, s_vec: &Vec3) ->
         return Vec3::zeros();
     }
     let w = col / n;
+    if s_vec.norm() <= HALF_TURN_SKEW {
+        return book_sign(r, w);
+    }
     if w.dot(s_vec) < 0.0 { -w } else { w }
 }
 
@@ -322,6 +357,26 @@ mod tests {
             assert!((w.norm() - pi).abs() < 1e-15);
             assert!(close(&exp(&w), &r, 2e-15));
         }
+    }
+
+    /// At θ = π the axis is the book's: (3.58) when 1 + r₃₃ ≠ 0, so
+    /// ω̂₃ > 0, whichever sign the rounding of R would suggest.
+    #[test]
+    fn half_turn_follows_the_book_order() {
+        let pi = std::f64::consts::PI;
+        let w = Vec3::new(0.8, 0.0, -0.6);
+        let r = rot(&w, pi);
+        assert!(is_half_turn(&r));
+        let l = log(&r);
+        assert!((l / pi - (-w)).norm() < 1e-15, "{l}");
+        // 1 + r₃₃ = 0: (3.59), ω̂₂ > 0.
+        let w = Vec3::new(0.6, -0.8, 0.0);
+        let l = log(&rot(&w, pi));
+        assert!((l / pi - (-w)).norm() < 1e-15, "{l}");
+        // Away from π the skew part decides: no flip.
+        let r = rot(&Vec3::new(0.8, 0.0, -0.6), pi - 1e-9);
+        assert!(!is_half_turn(&r));
+        assert!((log(&r) - Vec3::new(0.8, 0.0, -0.6) * (pi - 1e-9)).norm() < 1e-14);
     }
 
     #[test]

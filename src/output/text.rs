@@ -78,37 +78,71 @@ fn width(s: &str) -> usize {
     }
 }
 
+/// Reusable scratch space of [`write_matrix_block`]: the cells' text, the
+/// cells' (start, end, integer width, fraction width) in it, and the
+/// column widths.
+#[derive(Default)]
+struct Scratch {
+    buf: String,
+    cells: Vec<(usize, usize, usize, usize)>,
+    int_w: Vec<usize>,
+    frac_w: Vec<usize>,
+}
+
+thread_local! {
+    static SCRATCH: std::cell::RefCell<Scratch> = std::cell::RefCell::default();
+}
+
 /// [`matrix_block`], appended to `out`: the cells are written once into
-/// one buffer, then aligned.
+/// one buffer (reused from call to call), then aligned.
 fn write_matrix_block(out: &mut String, m: &nalgebra::DMatrix<f64>, style: Style, indent: usize) {
+    SCRATCH.with(|s| match s.try_borrow_mut() {
+        Ok(mut s) => align(out, m, style, indent, &mut s),
+        Err(_) => align(out, m, style, indent, &mut Scratch::default()),
+    });
+}
+
+fn align(
+    out: &mut String,
+    m: &nalgebra::DMatrix<f64>,
+    style: Style,
+    indent: usize,
+    s: &mut Scratch,
+) {
     let (nrows, ncols) = m.shape();
-    // Each cell: where it starts in `buf`, where its fraction (`.` or `e`)
-    // starts, and where it ends.
-    let mut buf = String::with_capacity(8 * nrows * ncols);
-    let mut cells: Vec<(usize, usize, usize)> = Vec::with_capacity(nrows * ncols);
-    let mut int_w = vec![0; ncols];
-    let mut frac_w = vec![0; ncols];
+    let Scratch {
+        buf,
+        cells,
+        int_w,
+        frac_w,
+    } = s;
+    buf.clear();
+    cells.clear();
+    int_w.clear();
+    int_w.resize(ncols, 0);
+    frac_w.clear();
+    frac_w.resize(ncols, 0);
     for r in 0..nrows {
         for (j, (iw, fw)) in int_w.iter_mut().zip(frac_w.iter_mut()).enumerate() {
             let start = buf.len();
-            style.write(&mut buf, m[(r, j)]);
+            style.write(buf, m[(r, j)]);
             let split = buf.as_bytes()[start..]
                 .iter()
                 .position(|&b| b == b'.' || b == b'e')
                 .map_or(buf.len(), |k| start + k);
-            cells.push((start, split, buf.len()));
-            *iw = (*iw).max(width(&buf[start..split]));
-            *fw = (*fw).max(width(&buf[split..]));
+            let (wi, wf) = (width(&buf[start..split]), width(&buf[split..]));
+            cells.push((start, buf.len(), wi, wf));
+            *iw = (*iw).max(wi);
+            *fw = (*fw).max(wf);
         }
     }
     out.reserve(buf.len() + nrows * (2 * ncols + indent + 2) + 2);
     out.push('[');
-    let pad = |out: &mut String, mut n: usize| {
-        const SPACES: &str = "                                ";
-        while n > 0 {
-            let k = n.min(SPACES.len());
-            out.push_str(&SPACES[..k]);
-            n -= k;
+    // Padding is a few spaces at a time: pushed one by one into the
+    // reserved string, which is cheaper than copying slices.
+    let pad = |out: &mut String, n: usize| {
+        for _ in 0..n {
+            out.push(' ');
         }
     };
     for r in 0..nrows {
@@ -117,14 +151,12 @@ fn write_matrix_block(out: &mut String, m: &nalgebra::DMatrix<f64>, style: Style
             pad(out, indent + 1);
         }
         for j in 0..ncols {
-            let (start, split, end) = cells[r * ncols + j];
-            let (int, frac) = (&buf[start..split], &buf[split..end]);
-            pad(out, int_w[j] - width(int));
-            out.push_str(int);
-            out.push_str(frac);
+            let (start, end, wi, wf) = cells[r * ncols + j];
+            pad(out, int_w[j] - wi);
+            out.push_str(&buf[start..end]);
             if j + 1 < ncols {
                 out.push(',');
-                pad(out, frac_w[j] - width(frac) + 1);
+                pad(out, frac_w[j] - wf + 1);
             }
         }
     }
@@ -220,7 +252,9 @@ pub fn show_outcome(o: &Outcome, style: impl Into<Style>) -> String {
     if !o.prints {
         return String::new();
     }
-    let mut out = String::new();
+    // Room for a 4×4 matrix with its name and label, so printing one
+    // rarely grows the string.
+    let mut out = String::with_capacity(192);
     if let Some(note) = &o.note {
         out.push_str(note);
         out.push('\n');
@@ -238,11 +272,18 @@ pub fn show_outcome(o: &Outcome, style: impl Into<Style>) -> String {
     };
     match (o.names.len(), v) {
         (0, Value::Tuple(items)) => {
+            let labelled = o.labels.len() == items.len();
             let parts: Vec<String> = items
                 .iter()
-                .map(|x| {
+                .enumerate()
+                .map(|(i, x)| {
                     let k = x.kind();
-                    show_value("", &Ty::new(k.clone(), o.ty.frames.part(&k)), x, style)
+                    let prefix = if labelled {
+                        format!("{} = ", o.labels[i])
+                    } else {
+                        String::new()
+                    };
+                    show_value(&prefix, &Ty::new(k.clone(), o.ty.frames.part(&k)), x, style)
                 })
                 .collect();
             out.push_str(&parts.join("\n"));

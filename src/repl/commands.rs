@@ -6,7 +6,7 @@
 use super::help;
 use crate::check::ty::Ty;
 use crate::diagnostics::suggest::did_you_mean;
-use crate::eval::env::{Env, FrameMode, Mode};
+use crate::eval::env::{Env, FrameMode};
 use crate::eval::graph::FrameGraph;
 use crate::eval::value::Value;
 use crate::output::text;
@@ -46,6 +46,16 @@ pub const COMMANDS: &[Command] = &[
         doc: "run a script into this session",
     },
     Command {
+        name: "save",
+        args: "FILE",
+        doc: "write the statements that ran as a script that reruns them (:save! FILE overwrites)",
+    },
+    Command {
+        name: "history",
+        args: "",
+        doc: "the statements of this session that ran without error",
+    },
+    Command {
         name: "reset",
         args: "",
         doc: "forget every binding",
@@ -68,7 +78,7 @@ pub const COMMANDS: &[Command] = &[
     Command {
         name: "quit",
         args: "",
-        doc: "leave the REPL (also Ctrl-D)",
+        doc: "leave the REPL (also Ctrl-D, or quit / exit without the colon)",
     },
 ];
 
@@ -117,12 +127,47 @@ pub fn execute(session: &mut Session, input: &str) -> Reply {
     if is_command(input) {
         return command(session, input.trim());
     }
-    let (out, err, _) = session.run_to_strings("<input>", input, Mode::Run, false);
+    if let Some(cmd) = bare_command(session, input) {
+        return command(session, &cmd);
+    }
+    let (out, err, _) = super::save::run_recording(session, "<input>", input);
     Reply {
         out,
         err,
         quit: false,
     }
+}
+
+/// `help`, `help NAME`, `exit`, `quit` (and Python's `help(NAME)`,
+/// `exit()`, `quit()`)
+/// typed without the colon, as the command they mean — unless the word is
+/// bound as a variable.
+fn bare_command(session: &Session, input: &str) -> Option<String> {
+    let t = input.trim();
+    // Python's help(name).
+    if let Some(inner) = t.strip_prefix("help(").and_then(|s| s.strip_suffix(')'))
+        && session.env.get("help").is_none()
+        && !builtins_or_fn(session, "help")
+    {
+        return Some(format!(":help {}", inner.trim()));
+    }
+    let (word, rest) = t.split_once(char::is_whitespace).unwrap_or((t, ""));
+    let word = word.trim_end_matches("()");
+    if session.env.get(word).is_some() {
+        return None;
+    }
+    match word {
+        "help" if rest.trim().chars().all(|c| !"=(),;[]".contains(c)) => {
+            Some(format!(":help {}", rest.trim()))
+        }
+        "exit" | "quit" if rest.is_empty() => Some(":quit".into()),
+        _ => None,
+    }
+}
+
+/// Whether `name` is a user function (or a builtin) of the session.
+fn builtins_or_fn(session: &Session, name: &str) -> bool {
+    session.env.fns.contains_key(name) || crate::builtins::lookup(name).is_some()
 }
 
 /// Runs one `:` command (`input` starts with `:`).
@@ -142,8 +187,14 @@ pub fn command(session: &mut Session, input: &str) -> Reply {
         "load" => load(session, arg),
         "reset" => {
             session.env = Env::default();
+            session.accepted.clear();
             Reply::out("bindings cleared")
         }
+        "save" | "save!" => match super::save::save(session, arg, name == "save!") {
+            Ok(msg) => Reply::out(msg),
+            Err(msg) => Reply::err(msg),
+        },
+        "history" => Reply::out(super::save::history(session)),
         "digits" => digits(session, arg),
         "exact" => exact(session, arg),
         "open" => super::open::open(session),
@@ -289,7 +340,7 @@ fn load(session: &mut Session, arg: &str) -> Reply {
         Ok(s) => s,
         Err(msg) => return Reply::err(format!(":load: {msg}")),
     };
-    let (out, mut err, errors) = session.run_to_strings(&path, &src, Mode::Run, false);
+    let (out, mut err, errors) = super::save::run_recording(session, &path, &src);
     let mut reply = Reply {
         out,
         err: String::new(),

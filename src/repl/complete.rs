@@ -22,7 +22,9 @@ pub struct Candidate {
 }
 
 /// Keywords of the language worth completing.
-const KEYWORDS: &[&str] = &["given", "derive", "mech", "pi", "deg", "true", "false"];
+const KEYWORDS: &[&str] = &[
+    "given", "derive", "mech", "assert", "pi", "deg", "rad", "true", "false",
+];
 
 /// Longest line the preview evaluates.
 const PREVIEW_MAX_CHARS: usize = 300;
@@ -121,11 +123,12 @@ fn complete_command(before: &str) -> (usize, Vec<Candidate>) {
             w.extend(TOPICS.iter().map(|(t, _)| t.to_string()));
             w.extend(Area::ALL.iter().map(|a| super::help::area_key(*a).into()));
             w.extend(COMMANDS.iter().map(|c| c.name.to_string()));
+            w.extend(super::keywords::words().map(String::from));
             w
         }
         "frames" => vec!["strict".into(), "warn".into(), "off".into()],
         "exact" => vec!["on".into(), "off".into()],
-        "load" => return complete_path(before, start),
+        "load" | "save" | "save!" => return complete_path(before, start),
         _ => Vec::new(),
     };
     let mut cands: Vec<Candidate> = words

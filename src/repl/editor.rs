@@ -1,6 +1,6 @@
 //! The rustyline [`Helper`]: a thin layer over [`super::complete`] for Tab
-//! completion and hints, the bracket-aware validator that keeps the input
-//! open while a bracket is open, and colours (only when enabled).
+//! completion and hints, and colours (only when enabled). Input inside an
+//! open bracket continues under the continuation prompt (`super::run_terminal`).
 
 use std::borrow::Cow;
 
@@ -27,6 +27,9 @@ pub struct ReplHelper {
     pub session: Session,
     /// Whether to colour the prompt, hints and candidates.
     pub colour: bool,
+    /// True on a continuation line, where the line alone is no statement
+    /// to preview.
+    pub continuing: bool,
 }
 
 impl rustyline::completion::Candidate for complete::Candidate {
@@ -55,6 +58,9 @@ impl Hinter for ReplHelper {
     type Hint = String;
 
     fn hint(&self, line: &str, pos: usize, _ctx: &Context<'_>) -> Option<String> {
+        if self.continuing {
+            return None;
+        }
         complete::hint(&self.session, line, pos)
     }
 }
@@ -93,16 +99,12 @@ impl Highlighter for ReplHelper {
     }
 }
 
+/// Every line is complete: an open bracket continues on the next line under
+/// the continuation prompt `... ` (read by `super::run_terminal`), so a
+/// blank Enter inside `[` shows a prompt instead of looking like a hang.
 impl Validator for ReplHelper {
-    /// Incomplete while a `(`, `[` or `mech <` is open: Enter then starts
-    /// a new row, so a matrix can be typed row by row.
-    fn validate(&self, ctx: &mut ValidationContext) -> rustyline::Result<ValidationResult> {
-        let input = ctx.input();
-        if !super::commands::is_command(input) && crate::syntax::needs_more_input(input) {
-            Ok(ValidationResult::Incomplete)
-        } else {
-            Ok(ValidationResult::Valid(None))
-        }
+    fn validate(&self, _ctx: &mut ValidationContext) -> rustyline::Result<ValidationResult> {
+        Ok(ValidationResult::Valid(None))
     }
 }
 

@@ -1,7 +1,8 @@
 //! `:help` (LANGUAGE.md §11), generated from the one builtin table: the
 //! overview lists the topics and every function by area; `:help NAME`
 //! gives a function's signature, meaning, book section and example, with
-//! the example's result.
+//! the example's result; keywords, units and operators are answered from
+//! [`super::keywords`], commands from their table.
 
 use super::commands::COMMANDS;
 use crate::builtins::{self, Area, Builtin};
@@ -24,6 +25,8 @@ statements end at a newline or `;`; a newline inside ( ) or [ ] continues
   T.R  T.p  V.w  V.v  M.T   parts of a transform or twist; transpose
   M[1, 2]  M[:, 1]  v[3]    1-based indexing, as in the book
   (w, th) = AxisAng3(v)     destructure a tuple
+  a == b   a ≈ b (a ~= b)   exactly equal; equal within 1e-9 relative (a bool)
+  assert T ≈ T_book         stop the script, showing both sides, when false
   f(x) = x^2                a user function
   ans                       the last result",
     ),
@@ -77,26 +80,28 @@ pub fn help(arg: &str, settings: &Settings) -> Result<String, String> {
     if let Some(b) = builtins::lookup(arg) {
         return Ok(function(b, settings));
     }
+    if let Some(text) = super::keywords::keyword(arg) {
+        return Ok(text.to_string());
+    }
     if let Some((_, text)) = TOPICS.iter().find(|(t, _)| *t == arg) {
         return Ok(text.to_string());
     }
     if let Some(area) = area_named(arg) {
         return Ok(area_listing(area));
     }
-    // The words of ranges and comprehensions (§12).
-    if ["for", "in", "list", "lists", "range", "ranges"].contains(&arg) {
-        return Ok(area_listing(Area::Pictures));
-    }
-    let bare = arg.trim_start_matches(':');
+    let bare = arg.trim_start_matches(':').trim_end_matches('!');
     if let Some(c) = COMMANDS.iter().find(|c| c.name == bare) {
         let head = format!(":{} {}", c.name, c.args);
         return Ok(format!("{}\n  {}", head.trim_end(), c.doc));
     }
     let mut names = builtins::all_names();
+    names.extend(super::keywords::words());
     names.extend(TOPICS.iter().map(|(t, _)| *t));
     names.extend(COMMANDS.iter().map(|c| c.name));
     let mut msg = format!("no help for '{arg}'");
-    if let Some(s) = did_you_mean(bare, &names) {
+    if let Some(s) = crate::diagnostics::habits::conversion(bare) {
+        msg.push_str(&format!("; {s}"));
+    } else if let Some(s) = did_you_mean(bare, &names) {
         msg.push_str(&format!("; did you mean '{s}'?"));
     }
     msg.push_str(" (:help lists everything)");
@@ -112,6 +117,11 @@ fn overview() -> String {
     }
     let topics: Vec<&str> = TOPICS.iter().map(|(t, _)| *t).collect();
     out.push_str(&format!("topics: :help {}\n", topics.join(" | ")));
+    let words: Vec<&str> = super::keywords::KEYWORDS
+        .iter()
+        .map(|(names, _)| names[0])
+        .collect();
+    out.push_str(&format!("words:  :help {}\n", words.join(" | ")));
     out.push_str("functions by area (:help NAME for one, :help AREA for an area):\n");
     for area in Area::ALL {
         let names: Vec<&str> = in_area(area).map(|b| b.name).collect();

@@ -10,7 +10,9 @@ pub mod commands;
 pub mod complete;
 mod editor;
 pub mod help;
+pub mod keywords;
 mod open;
+pub mod save;
 
 use std::io::{IsTerminal, Write};
 use std::path::PathBuf;
@@ -24,6 +26,9 @@ use editor::ReplHelper;
 
 /// The prompt.
 pub const PROMPT: &str = ">>> ";
+
+/// The prompt of a continuation line, while a bracket is open.
+pub const CONTINUE: &str = "... ";
 
 /// Where history is kept: `$CHASLES_HISTORY` if set and not empty, else
 /// `chasles/history.txt` in the user's data directory.
@@ -77,6 +82,7 @@ pub fn run_terminal(settings: &Settings, pictures: PathBuf) -> i32 {
     rl.set_helper(Some(ReplHelper {
         session: session.clone(),
         colour,
+        continuing: false,
     }));
     let history = history_path();
     if let Some(path) = &history {
@@ -84,8 +90,9 @@ pub fn run_terminal(settings: &Settings, pictures: PathBuf) -> i32 {
     }
     println!("{}", banner());
     loop {
-        match rl.readline(PROMPT) {
-            Ok(input) => {
+        match read_input(&mut rl) {
+            Ok(None) => continue,
+            Ok(Some(input)) => {
                 if input.trim().is_empty() {
                     continue;
                 }
@@ -116,6 +123,36 @@ pub fn run_terminal(settings: &Settings, pictures: PathBuf) -> i32 {
     }
     save_history(&mut rl, history.as_ref());
     0
+}
+
+/// One input: a line, and more lines under the continuation prompt while
+/// a bracket is open (Enter inside `[` starts a new row). `Ok(None)` when
+/// Ctrl-C cancelled a continued input; Ctrl-D inside a bracket runs what
+/// was typed (its error names the open bracket).
+fn read_input(
+    rl: &mut Editor<ReplHelper, DefaultHistory>,
+) -> Result<Option<String>, ReadlineError> {
+    let mut input = rl.readline(PROMPT)?;
+    let continuing = |rl: &mut Editor<ReplHelper, DefaultHistory>, on: bool| {
+        if let Some(h) = rl.helper_mut() {
+            h.continuing = on;
+        }
+    };
+    while !commands::is_command(&input) && crate::syntax::needs_more_input(&input) {
+        continuing(rl, true);
+        let line = rl.readline(CONTINUE);
+        continuing(rl, false);
+        match line {
+            Ok(more) => {
+                input.push('\n');
+                input.push_str(&more);
+            }
+            Err(ReadlineError::Interrupted) => return Ok(None),
+            Err(ReadlineError::Eof) => break,
+            Err(e) => return Err(e),
+        }
+    }
+    Ok(Some(input))
 }
 
 /// Appends the new history entries to the history file (creating its

@@ -45,6 +45,9 @@ pub enum StmtKind {
     },
     /// `derive T_ce` — search the known transforms for a chain from {c} to {e}.
     Derive { target: Ident },
+    /// `assert cond` — stops the script (an `assert` error) when `cond` is
+    /// false, showing both sides of a comparison (LANGUAGE.md §3).
+    Assert(Expr),
 }
 
 /// An expression node with its span.
@@ -71,6 +74,29 @@ pub enum BinOp {
     Div,
     /// `^`, right-associative; `T^-1` is the inverse.
     Pow,
+}
+
+impl Expr {
+    /// `lhs op rhs` for a comparison, spanning both sides.
+    pub fn compare(op: CmpOp, lhs: Expr, rhs: Expr, op_span: Span) -> Expr {
+        let span = lhs.span.join(rhs.span);
+        let kind = ExprKind::Compare {
+            op,
+            lhs: Box::new(lhs),
+            rhs: Box::new(rhs),
+            op_span,
+        };
+        Expr { kind, span }
+    }
+}
+
+/// A comparison operator (LANGUAGE.md §3); both give a bool.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CmpOp {
+    /// `a == b`: exactly equal (decided symbolically for symbolic sides).
+    Eq,
+    /// `a ≈ b`, typed `~=`: equal within 1e-9 relative.
+    Approx,
 }
 
 /// One subscript of an index expression: `M[i, :]`.
@@ -101,6 +127,13 @@ pub enum ExprKind {
         op_span: Span,
         /// True for juxtaposition (`2 pi`, `[S] theta`).
         implicit: bool,
+    },
+    /// `a == b`, `a ≈ b`: a bool. Looser than every other operator.
+    Compare {
+        op: CmpOp,
+        lhs: Box<Expr>,
+        rhs: Box<Expr>,
+        op_span: Span,
     },
     /// `x deg` or `x°`: degrees to radians.
     Degrees(Box<Expr>),

@@ -93,10 +93,12 @@ impl Cx {
     fn plain_number(&self, pair: &Pair<'_, Rule>) -> Result<Expr, Diagnostic> {
         let span = self.span(pair.as_span());
         let text = pair.as_str();
-        let (op, digits) = match text.as_bytes().first() {
-            Some(b'-') => (Some(UnOp::Neg), &text[1..]),
-            Some(b'+') => (Some(UnOp::Pos), &text[1..]),
-            _ => (None, text),
+        let (op, digits) = if let Some(rest) = text.strip_prefix('+') {
+            (Some(UnOp::Pos), rest)
+        } else if let Some(rest) = text.strip_prefix(['-', '−']) {
+            (Some(UnOp::Neg), rest)
+        } else {
+            (None, text)
         };
         let value = digits.parse::<f64>().map_err(|_| self.internal(span))?;
         let start = span.end - digits.len();

@@ -16,7 +16,7 @@
 //! queue, no backtracking state, no rule calls per character.
 
 use super::MAX_DEPTH;
-use super::ast::{BinOp, Expr, ExprKind, Ident, Span, Stmt, StmtKind, UnOp};
+use super::ast::{BinOp, CmpOp, Expr, ExprKind, Ident, Span, Stmt, StmtKind, UnOp};
 use lex::{is_ws, xid_start};
 
 mod atoms;
@@ -31,6 +31,7 @@ mod tests;
 const BUDGET: usize = 100;
 
 /// Pratt binding powers, as in `parser.rs`'s `PRATT` (10 per level).
+const BP_CMP: u8 = 5;
 const BP_ADD: u8 = 10;
 const BP_MUL: u8 = 20;
 const BP_PREFIX: u8 = 30;
@@ -123,6 +124,12 @@ impl P<'_> {
     }
 
     fn statement(&mut self) -> Option<StmtKind> {
+        // `assert expr`: pest's `assert_stmt` comes first, so a statement
+        // starting with the keyword is an assertion or nothing.
+        if let Some(end) = self.keyword_at(0, "assert") {
+            self.pos = end;
+            return Some(StmtKind::Assert(self.expr(0)?.0));
+        }
         match self.byte(0)? {
             b'(' => {
                 if let Some(targets) = self.destructure_head() {
@@ -143,7 +150,7 @@ impl P<'_> {
                                 return Some(StmtKind::FnDef { name, params, body });
                             }
                         }
-                        Some(b'=') => {
+                        Some(b'=') if self.byte(self.pos + 1) != Some(b'=') => {
                             self.pos += 1;
                             let target = self.ident(0, end);
                             let value = self.expr(0)?.0;
@@ -194,13 +201,18 @@ impl P<'_> {
         let (mut lhs, mut depth) = match self.byte(start) {
             // `R^{T}`, `R^{-1}`: the group is the whole exponent.
             Some(b'{') if sup => self.group(b'}')?,
-            Some(b @ (b'-' | b'+')) => {
+            Some(b'-' | b'+') | Some(0xE2) if self.sign_at(start).is_some() => {
+                let (op, width) = self.sign_at(start)?;
                 self.spend()?;
-                self.pos += 1;
+                self.pos += width;
                 self.ws();
                 let (operand, d) = self.expr(BP_PREFIX - 1)?;
-                let op = if b == b'-' { UnOp::Neg } else { UnOp::Pos };
-                let span = self.span(start, start + 1).join(operand.span);
+                let op = if op == BinOp::Sub {
+                    UnOp::Neg
+                } else {
+                    UnOp::Pos
+                };
+                let span = self.span(start, start + width).join(operand.span);
                 let kind = ExprKind::Unary {
                     op,
                     operand: Box::new(operand),
@@ -217,9 +229,24 @@ impl P<'_> {
                 self.pos = save;
                 break;
             };
+            if let Some((op, width)) = self.cmp_at(at) {
+                if rbp >= BP_CMP {
+                    self.pos = save;
+                    break;
+                }
+                self.spend()?;
+                self.pos = at + width;
+                self.sup = false;
+                let (rhs, dr) = self.expr(BP_CMP)?;
+                lhs = Expr::compare(op, lhs, rhs, self.span(at, at + width));
+                depth = depth.max(dr) + 1;
+                continue;
+            }
             let (op, bp, width) = match b {
-                b'+' => (Some(BinOp::Add), BP_ADD, 1),
-                b'-' => (Some(BinOp::Sub), BP_ADD, 1),
+                b'+' | b'-' | 0xE2 if self.sign_at(at).is_some() => {
+                    let (op, width) = self.sign_at(at)?;
+                    (Some(op), BP_ADD, width)
+                }
                 b'*' if self.byte(at + 1) == Some(b'*') => return None,
                 b'*' => (Some(BinOp::Mul), BP_MUL, 1),
                 b'/' => (Some(BinOp::Div), BP_MUL, 1),
@@ -239,7 +266,7 @@ impl P<'_> {
             self.sup = op == Some(BinOp::Pow);
             let (rhs, dr) = self.expr(if op == Some(BinOp::Pow) { bp - 1 } else { bp })?;
             let (op, implicit, op_span) = match op {
-                Some(op) => (op, false, self.span(at, at + 1)),
+                Some(op) => (op, false, self.span(at, at + width)),
                 None => (
                     BinOp::Mul,
                     true,
@@ -258,6 +285,16 @@ impl P<'_> {
             depth = depth.max(dr) + 1;
         }
         (depth <= MAX_DEPTH).then_some((lhs, depth))
+    }
+
+    /// A comparison `==`, `~=` or `≈` at `at`, with its width in bytes.
+    fn cmp_at(&self, at: usize) -> Option<(CmpOp, usize)> {
+        match self.byte(at)? {
+            b'=' if self.byte(at + 1) == Some(b'=') => Some((CmpOp::Eq, 2)),
+            b'~' if self.byte(at + 1) == Some(b'=') => Some((CmpOp::Approx, 2)),
+            0xE2 if self.src[at..].starts_with('≈') => Some((CmpOp::Approx, 3)),
+            _ => None,
+        }
     }
 
     /// `juxt_start`: `"(" | "[" | ASCII_DIGIT | "." ~ ASCII_DIGIT | XID_START`.

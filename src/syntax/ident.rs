@@ -39,8 +39,8 @@ pub fn name_frames(name: &str) -> NameFrames {
 /// `T_{world,cam}` → `T`. A name without a frame subscript (`theta_1`,
 /// `x_max`, `alpha`) is returned whole.
 pub fn base_name(name: &str) -> &str {
-    match split_subscript(name) {
-        Some((base, _)) => base,
+    match split_raw(name) {
+        Some((base, _, _)) => base,
         None => name,
     }
 }
@@ -90,6 +90,21 @@ pub fn name_error(name: &str) -> Option<String> {
 
 /// Splits `name` into its base and frame subscript, if it has one.
 fn split_subscript(name: &str) -> Option<(&str, NameFrames)> {
+    let (base, frames, primes) = split_raw(name)?;
+    match frames.as_slice() {
+        [a] => Some((base, NameFrames::One(format!("{a}{primes}")))),
+        [a, b] => Some((
+            base,
+            NameFrames::Pair(a.to_string(), format!("{b}{primes}")),
+        )),
+        _ => None,
+    }
+}
+
+/// [`split_subscript`] without allocating: the base, the frames as slices
+/// of the name, and the primes after a braced subscript (`T_{a,b}''`),
+/// which belong to its last frame.
+fn split_raw(name: &str) -> Option<(&str, Runs<'_>, &str)> {
     // Braced form: `T_{world,cam}`, optionally followed by primes.
     if let Some(open) = name.rfind("_{") {
         let rest = &name[open + 2..];
@@ -98,19 +113,21 @@ fn split_subscript(name: &str) -> Option<(&str, NameFrames)> {
         if !primes.chars().all(|c| c == '\'') {
             return None;
         }
-        let parts: Vec<&str> = rest[..close].split(',').map(str::trim).collect();
-        if !parts.iter().all(|p| is_long_frame(p)) {
-            return None;
+        let mut parts = Runs {
+            n: 0,
+            first: ["", ""],
+        };
+        for p in rest[..close].split(',').map(str::trim) {
+            if !is_long_frame(p) {
+                return None;
+            }
+            if parts.n < 2 {
+                parts.first[parts.n] = p;
+            }
+            parts.n = (parts.n + 1).min(3);
         }
         let base = &name[..open];
-        return match parts.as_slice() {
-            [a] => Some((base, NameFrames::One(format!("{a}{primes}")))),
-            [a, b] => Some((
-                base,
-                NameFrames::Pair(a.to_string(), format!("{b}{primes}")),
-            )),
-            _ => None,
-        };
+        return matches!(parts.n, 1 | 2).then_some((base, parts, primes));
     }
 
     let underscore = name.rfind('_')?;
@@ -120,7 +137,7 @@ fn split_subscript(name: &str) -> Option<(&str, NameFrames)> {
         return None;
     }
     let mut frames = short_frames(sub);
-    if two_frame_base(base) && frames.as_ref().is_none_or(|f| f.len() != 2) {
+    if two_frame_base(base) && frames.is_none_or(|f| f.len() != 2) {
         // `T_01`, `T_s1`, `T_1s`: one frame per character.
         if let Some(chars) = char_frames(sub) {
             frames = Some(chars);
@@ -128,49 +145,82 @@ fn split_subscript(name: &str) -> Option<(&str, NameFrames)> {
             return None;
         }
     }
-    match frames?.as_slice() {
-        [a] => Some((base, NameFrames::One(a.clone()))),
-        [a, b] => Some((base, NameFrames::Pair(a.clone(), b.clone()))),
-        _ => None,
+    frames
+        .filter(|f| matches!(f.len(), 1 | 2))
+        .map(|f| (base, f, ""))
+}
+
+/// The frames of a subscript, as slices of it: each frame is a run of
+/// characters, so only their number (up to three, "more than two") and the
+/// first two are kept — reading a name allocates nothing until its frames
+/// are returned.
+#[derive(Debug, Clone, Copy)]
+struct Runs<'a> {
+    n: usize,
+    first: [&'a str; 2],
+}
+
+impl<'a> Runs<'a> {
+    fn len(&self) -> usize {
+        self.n
     }
+    fn as_slice(&self) -> &[&'a str] {
+        if self.n <= 2 {
+            &self.first[..self.n]
+        } else {
+            &[]
+        }
+    }
+}
+
+/// Splits `sub` into runs, each starting at a character `starts` accepts
+/// and extended by the characters `extends` accepts; None when a character
+/// is neither, or the text starts with an extending character.
+fn runs<'a>(
+    sub: &'a str,
+    starts: impl Fn(char) -> bool,
+    extends: impl Fn(char) -> bool,
+) -> Option<Runs<'a>> {
+    let mut r = Runs {
+        n: 0,
+        first: ["", ""],
+    };
+    let mut begin = 0;
+    for (i, c) in sub.char_indices() {
+        if starts(c) {
+            if r.n >= 1 && r.n <= 2 {
+                r.first[r.n - 1] = &sub[begin..i];
+            }
+            r.n = (r.n + 1).min(3);
+            begin = i;
+        } else if extends(c) {
+            if r.n == 0 {
+                return None;
+            }
+        } else {
+            return None;
+        }
+    }
+    if r.n >= 1 && r.n <= 2 {
+        r.first[r.n - 1] = &sub[begin..];
+    }
+    Some(r)
 }
 
 /// `sb'` → ["s", "b'"]; `b1c` → ["b1", "c"]; None unless the text is a
 /// sequence of frame names (a letter, then digits and primes).
-fn short_frames(sub: &str) -> Option<Vec<String>> {
-    let mut frames: Vec<String> = Vec::new();
-    for c in sub.chars() {
-        if c.is_alphabetic() {
-            frames.push(c.to_string());
-        } else if c.is_numeric() || c == '\'' {
-            // Digits and primes extend the current frame; none yet means the
-            // subscript starts with a digit: an index, not a frame.
-            frames.last_mut()?.push(c);
-        } else {
-            return None;
-        }
-    }
-    if frames.is_empty() {
-        None
-    } else {
-        Some(frames)
-    }
+fn short_frames(sub: &str) -> Option<Runs<'_>> {
+    // Digits and primes extend the current frame; none yet means the
+    // subscript starts with a digit: an index, not a frame.
+    let r = runs(sub, char::is_alphabetic, |c| c.is_numeric() || c == '\'')?;
+    (r.len() > 0).then_some(r)
 }
 
 /// `01` → ["0", "1"], `s1'` → ["s", "1'"]: a frame per letter or digit,
 /// primes attached; None unless that gives exactly two frames.
-fn char_frames(sub: &str) -> Option<Vec<String>> {
-    let mut frames: Vec<String> = Vec::new();
-    for c in sub.chars() {
-        if c.is_alphanumeric() {
-            frames.push(c.to_string());
-        } else if c == '\'' {
-            frames.last_mut()?.push(c);
-        } else {
-            return None;
-        }
-    }
-    (frames.len() == 2).then_some(frames)
+fn char_frames(sub: &str) -> Option<Runs<'_>> {
+    let r = runs(sub, char::is_alphanumeric, |c| c == '\'')?;
+    (r.len() == 2).then_some(r)
 }
 
 /// A braced frame name: a letter or digit, then letters, digits, `_` or

@@ -21,14 +21,16 @@ use super::rules::{self, too_deep};
 use crate::diagnostics::{Diagnostic, ErrorKind};
 
 /// Precedence levels, loosest first; the same order as [`PRATT`].
-const PREC_RANGE: u8 = 0;
-const PREC_ADD: u8 = 1;
-const PREC_MUL: u8 = 2;
-const PREC_PREFIX: u8 = 3;
-const PREC_POW: u8 = 4;
+const PREC_CMP: u8 = 0;
+const PREC_RANGE: u8 = 1;
+const PREC_ADD: u8 = 2;
+const PREC_MUL: u8 = 3;
+const PREC_PREFIX: u8 = 4;
+const PREC_POW: u8 = 5;
 
 static PRATT: LazyLock<PrattParser<Rule>> = LazyLock::new(|| {
     PrattParser::new()
+        .op(Op::infix(Rule::eq, Assoc::Left) | Op::infix(Rule::approx, Assoc::Left))
         .op(Op::infix(Rule::range_op, Assoc::Left))
         .op(Op::infix(Rule::add, Assoc::Left) | Op::infix(Rule::sub, Assoc::Left))
         .op(Op::infix(Rule::mul, Assoc::Left)
@@ -114,6 +116,10 @@ enum Role {
 fn role(rule: Rule) -> Role {
     match rule {
         Rule::neg | Rule::pos => Role::Prefix,
+        Rule::eq | Rule::approx => Role::Infix {
+            prec: PREC_CMP,
+            right: false,
+        },
         Rule::range_op => Role::Infix {
             prec: PREC_RANGE,
             right: false,
@@ -228,6 +234,10 @@ impl Cx {
                 let ty = names.pop().ok_or_else(|| self.internal(whole))?;
                 Ok(StmtKind::Given { names, ty })
             }
+            Rule::assert_stmt => match form.into_inner().find(|p| p.as_rule() == Rule::expr) {
+                Some(p) => Ok(StmtKind::Assert(self.expr(p)?.0)),
+                None => Err(self.internal(whole)),
+            },
             Rule::derive_stmt => {
                 let p = form
                     .into_inner()
@@ -317,6 +327,9 @@ impl Cx {
                 check_depth(depth, op_span)?;
                 if op.as_rule() == Rule::range_op {
                     return Ok((super::ranges::range(l, r, op_span)?, depth));
+                }
+                if let Some(op) = rules::cmp_op(op.as_rule()) {
+                    return Ok((Expr::compare(op, l, r, op_span), depth));
                 }
                 let (bop, implicit, op_span) = match op.as_rule() {
                     Rule::add => (BinOp::Add, false, op_span),

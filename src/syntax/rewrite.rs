@@ -16,7 +16,7 @@ pub fn stmt(mut stmt: Stmt) -> Stmt {
     match &mut stmt.kind {
         StmtKind::Expr(e) => expr(e),
         StmtKind::Assign { value, .. } | StmtKind::Destructure { value, .. } => expr(value),
-        StmtKind::FnDef { body, .. } => expr(body),
+        StmtKind::FnDef { body, .. } | StmtKind::Assert(body) => expr(body),
         StmtKind::Given { .. } | StmtKind::Derive { .. } => {}
     }
     stmt
@@ -25,7 +25,7 @@ pub fn stmt(mut stmt: Stmt) -> Stmt {
 fn expr(e: &mut Expr) {
     match &mut e.kind {
         ExprKind::Number(_) | ExprKind::Bool(_) | ExprKind::Var(_) | ExprKind::Mech(_) => {}
-        ExprKind::Binary { lhs, rhs, .. } => {
+        ExprKind::Binary { lhs, rhs, .. } | ExprKind::Compare { lhs, rhs, .. } => {
             expr(lhs);
             expr(rhs);
         }

@@ -9,7 +9,7 @@
 use pest::error::{ErrorVariant, InputLocation};
 
 use super::MAX_DEPTH;
-use super::ast::Span;
+use super::ast::{CmpOp, Span};
 use super::grammar::Rule;
 use crate::diagnostics::{Diagnostic, ErrorKind};
 
@@ -42,6 +42,7 @@ pub(crate) fn rule_name(rule: Rule) -> &'static str {
         Rule::statement => "a statement",
         Rule::given_stmt => "a `given` statement",
         Rule::derive_stmt => "a `derive` statement",
+        Rule::assert_stmt => "an `assert` statement",
         Rule::fn_def => "a function definition",
         Rule::params => "a parameter name",
         Rule::destructure => "a destructuring assignment",
@@ -80,6 +81,8 @@ pub(crate) fn rule_name(rule: Rule) -> &'static str {
         | Rule::div
         | Rule::pow
         | Rule::range_op
+        | Rule::eq
+        | Rule::approx
         | Rule::juxt
         | Rule::postfix
         | Rule::index
@@ -109,6 +112,7 @@ pub(crate) fn rule_name(rule: Rule) -> &'static str {
         Rule::keyword => "a keyword",
         Rule::kw_given => "`given`",
         Rule::kw_derive => "`derive`",
+        Rule::kw_assert => "`assert`",
         Rule::comp_tail | Rule::kw_for => "`for`",
         Rule::comp_var => "a name and `in`",
         Rule::kw_in => "`in`",
@@ -242,6 +246,7 @@ fn is_container(rule: Rule) -> bool {
         Rule::statement
             | Rule::given_stmt
             | Rule::derive_stmt
+            | Rule::assert_stmt
             | Rule::fn_def
             | Rule::destructure
             | Rule::assign
@@ -282,8 +287,9 @@ fn help(text: &str, pos: usize, found: Option<char>, expected: &[String]) -> Opt
     let wants = |s: &str| expected.iter().any(|e| e == s);
     match found? {
         '*' if before.ends_with('*') => Some("use ^ for powers: x^2".into()),
-        '=' if text.get(pos..).is_some_and(|s| s.starts_with("==")) || before.ends_with('=') => {
-            Some("`==` is not supported; to bind a name write `name = expr`".into())
+        '!' => Some("there is no `!=`: write (a == b) == false".into()),
+        '=' if before.ends_with('=') => {
+            Some("`==` compares (a bool); to bind a name write `name = expr`".into())
         }
         '=' if before.ends_with("given") => {
             Some("`given` declares symbols: given T_ab, T_bc : SE3".into())
@@ -300,7 +306,7 @@ fn help(text: &str, pos: usize, found: Option<char>, expected: &[String]) -> Opt
         }
         '\'' => Some("`'` is part of a name (T_sb'); to transpose write x^T, xᵀ or x.T".into()),
         '<' | '>' if wants(OPERATOR) || wants(END) => Some(
-            "there are no comparisons; `<` only opens a mechanism: mech < links 4; joints 4R; planar >"
+            "comparisons are `==` and `≈` (typed `~=`); `<` only opens a mechanism: mech < links 4; joints 4R; planar >"
                 .into(),
         ),
         '{' | '}' => Some(
@@ -309,6 +315,15 @@ fn help(text: &str, pos: usize, found: Option<char>, expected: &[String]) -> Opt
         '.' if before.ends_with(|c: char| c.is_ascii_digit()) => {
             Some("write decimals with digits after the point: 2.0 or 2".into())
         }
+        _ => None,
+    }
+}
+
+/// The comparison a rule stands for (`==`, `≈`/`~=`), if any.
+pub(super) fn cmp_op(rule: Rule) -> Option<CmpOp> {
+    match rule {
+        Rule::eq => Some(CmpOp::Eq),
+        Rule::approx => Some(CmpOp::Approx),
         _ => None,
     }
 }

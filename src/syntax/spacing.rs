@@ -39,6 +39,7 @@ pub fn check(stmt: &Stmt, src: &str) -> Checked {
         }
         StmtKind::Given { names, .. } => names.iter().try_for_each(|t| c.name(t)),
         StmtKind::Derive { target } => c.name(target),
+        StmtKind::Assert(cond) => c.expr(cond),
     }
 }
 
@@ -88,6 +89,10 @@ impl Check<'_> {
             ExprKind::Unary { operand: x, .. }
             | ExprKind::Degrees(x)
             | ExprKind::Member { base: x, .. } => self.expr(x),
+            ExprKind::Compare { lhs, rhs, .. } => {
+                self.expr(lhs)?;
+                self.expr(rhs)
+            }
             ExprKind::Call { args, .. } | ExprKind::Paren(args) => {
                 args.iter().try_for_each(|a| self.expr(a))
             }
@@ -296,7 +301,7 @@ impl Check<'_> {
         )
         .with_help(format!(
             "write `{a}, {sign}{b}` for two entries or `{a} {sign} {b}` for the {}",
-            if sign == "-" { "difference" } else { "sum" }
+            if sign == "+" { "sum" } else { "difference" }
         ))
     }
 
@@ -321,12 +326,13 @@ fn split_bare(text: &str) -> (&str, &str) {
     }
 }
 
-/// Brackets that read as an index: numbers (`[1, 2]`, `[2]`), not the
-/// book's bracket of one vector (`[w]`).
+/// Brackets that could be an index (one or two subscripts: `[1, 2]`,
+/// `[2]`), not the book's bracket of one vector (`[w]`) nor a vector of
+/// three or more entries (`[1, 0, 0]`, only a product).
 fn index_like(rows: &[Vec<Expr>]) -> bool {
     match rows {
         [row] if row.len() == 1 => matches!(row[0].kind, ExprKind::Number(_)),
-        [row] => row.len() >= 2,
+        [row] => row.len() == 2,
         _ => false,
     }
 }

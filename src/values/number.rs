@@ -120,11 +120,6 @@ fn sci(x: f64, digits: usize) -> String {
     }
 }
 
-/// Full precision, shortest round-trip form (for `--digits 17`-like needs).
-pub fn fmt_full(x: f64) -> String {
-    if x == 0.0 { "0".into() } else { format!("{x}") }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -190,7 +190,22 @@ pub fn pow(b: &Value, e: f64, kind: &Kind) -> Result<Value, String> {
     if *bk == Kind::Scalar {
         let x = bm[0].powf(e);
         if x.is_nan() && !bm[0].is_nan() && !e.is_nan() {
-            return Err(format!("{}^{e} is not a real number", bm[0]));
+            let base = format!("({})^{}", fmt_exp(bm[0]), fmt_exp(e));
+            // p/q with q odd has a real root: −(|b|^e) when p is odd.
+            let odd_root = [3.0, 5.0, 7.0, 9.0].into_iter().any(|q: f64| {
+                let p = (e * q).round();
+                (e * q - p).abs() < 1e-12 && p.rem_euclid(2.0) == 1.0
+            });
+            return Err(if odd_root {
+                format!(
+                    "{base} is not a real number (a negative base to a fractional power); \
+                     its real root is -({}^{})",
+                    fmt_exp(-bm[0]),
+                    fmt_exp(e)
+                )
+            } else {
+                format!("{base} is not a real number (a negative base to a fractional power)")
+            });
         }
         return Ok(Value::scalar(x));
     }
@@ -469,4 +484,15 @@ pub fn brackets(rows: &[Vec<Value>]) -> Result<Value, String> {
         kind: convert::classify(&m),
         m,
     })
+}
+
+/// A number in a message: short, and exact fractions of 1/3 shown as such.
+fn fmt_exp(x: f64) -> String {
+    for d in [2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0] {
+        let n = (x * d).round();
+        if (x * d - n).abs() < 1e-12 && n.abs() < 100.0 && n != 0.0 && (n / d).fract() != 0.0 {
+            return format!("({n}/{d})");
+        }
+    }
+    super::number::fmt_num(x, 6)
 }

@@ -3,6 +3,7 @@
 //! and `degrees` rules match them.
 
 use super::P;
+use crate::syntax::ast::BinOp;
 
 pub(super) fn is_ws(b: u8) -> bool {
     matches!(b, b' ' | b'\t' | b'\r' | b'\x0C')
@@ -128,6 +129,16 @@ impl P<'_> {
             .map(char::len_utf8)
             .sum();
         (digits > 0).then(|| at + (rest.len() - body.len()) + digits)
+    }
+
+    /// A sign at `at`: `+`, `-` or the book's `−`, and its width.
+    pub(super) fn sign_at(&self, at: usize) -> Option<(BinOp, usize)> {
+        match self.byte(at)? {
+            b'+' => Some((BinOp::Add, 1)),
+            b'-' => Some((BinOp::Sub, 1)),
+            _ if self.src[at..].starts_with('−') => Some((BinOp::Sub, '−'.len_utf8())),
+            _ => None,
+        }
     }
 
     /// `degrees` at `at`: its end.

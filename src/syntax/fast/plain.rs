@@ -3,7 +3,7 @@
 //! (`[ 0. -1.] [ 1.  0.]`), matched as the grammar matches them.
 
 use super::P;
-use crate::syntax::ast::{Expr, ExprKind, UnOp};
+use crate::syntax::ast::{BinOp, Expr, ExprKind, UnOp};
 
 /// Start and end of each number of each row.
 type Rows = Vec<Vec<(usize, usize)>>;
@@ -41,7 +41,7 @@ impl P<'_> {
 
     /// `plain_number`: `("-" | "+")? ~ number`.
     fn plain_number_at(&self, at: usize) -> Option<usize> {
-        let digits = at + usize::from(matches!(self.byte(at), Some(b'-' | b'+')));
+        let digits = at + self.sign_at(at).map_or(0, |(_, w)| w);
         self.number_at(digits)
     }
 
@@ -104,12 +104,15 @@ impl P<'_> {
 
     /// The number at `start..end`, with its sign (as `book.rs` builds it).
     fn plain_number(&self, start: usize, end: usize) -> Expr {
-        let op = match self.byte(start) {
-            Some(b'-') => Some(UnOp::Neg),
-            Some(b'+') => Some(UnOp::Pos),
-            _ => None,
-        };
-        let digits = start + usize::from(op.is_some());
+        let sign = self.sign_at(start);
+        let op = sign.map(|(op, _)| {
+            if op == BinOp::Add {
+                UnOp::Pos
+            } else {
+                UnOp::Neg
+            }
+        });
+        let digits = start + sign.map_or(0, |(_, w)| w);
         let value = self.src[digits..end].parse::<f64>().unwrap_or(f64::NAN);
         let number = Expr {
             kind: ExprKind::Number(value),

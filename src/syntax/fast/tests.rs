@@ -64,6 +64,9 @@ fn fast_path_agrees_with_pest() {
         "(w, theta) = axis_ang3(expc)",
         "M = [R, p; 0, 0, 0, 1]\n[1, 2,\n 3]",
         "exp([S] theta) * M[1, :] .T + 2 pi - 30° / θ(1) + true",
+        "assert T_ce ≈ T_ce_book",
+        "assert(x == 1 ~= y)\nb = x == -y",
+        "ok = [1, 2] ~= (1, 2)",
         // The book's notation (issue 13).
         "R_sb = [[0, -1, 0], [1, 0, 0], [0, 0, 1]]",
         "R = [[ 0. -1.  0.] [ 1.  0.  0.] [ 0.  0.  1.]]",
@@ -79,6 +82,7 @@ fn fast_path_agrees_with_pest() {
         "I + sin θ [w] + (1 - cos θ)[w]^2",
         "cos 30° + sqrt 2 + tan pi + asin x deg + acos θ_1'",
         "ans / deg",
+        "I + sin θ [w] + (1 − cos θ)[w]² − −x + [1 −2 3] − [1 − x]",
         "T_01 * T_12 * T_s1",
     ] {
         let (f, o) = agree(src);
@@ -89,10 +93,10 @@ fn fast_path_agrees_with_pest() {
 const TOKENS: &[&str] = &[
     "(", ")", "[", "]", ",", ";", "+", "-", "*", "/", "^", ".", "'", "deg", "°", "pi", "π", "1",
     "2.5", ".5", "1e", "1e-3", "T_ab", "x", "θ", "=", "==", ":", "true", "false", "given",
-    "derive", "mech", "<", ">", "\n", " ", "\t", "_{", "}", "f(", "**", ".T", "_",
-    // The book's notation.
+    "derive", "mech", "assert", "~=", "≈", "<", ">", "\n", " ", "\t", "_{", "}", "f(", "**", ".T",
+    "_", // The book's notation.
     "ᵀ", "^T", "^{", "sin", "cos ", "sqrt", "e^", "0.", "1.e", "-1.", "[[", "]]", "I", "T_01", "²",
-    "⁻¹", "⁻",
+    "−", " −", "⁻¹", "⁻",
 ];
 
 fn tokens() -> impl Strategy<Value = String> {
@@ -147,6 +151,7 @@ fn expr() -> impl Strategy<Value = String> {
         let op = prop::sample::select(
             &[
                 "+", "-", "*", "/", "^", " ", "", "^-", " - -", "^T", "^{T}", " [w] ", ",\n",
+                " == ", "~=", "≈",
             ][..],
         );
         prop_oneof![
@@ -171,9 +176,10 @@ proptest! {
     }
 
     #[test]
-    fn random_expressions_agree(e in expr(), form in 0..4usize) {
+    fn random_expressions_agree(e in expr(), form in 0..5usize) {
         let src = match form {
             0 => e,
+            4 => format!("assert {e}"),
             1 => format!("y_1 = {e}"),
             2 => format!("h(a, b) = {e}"),
             _ => format!("(a, b) = {e}"),

@@ -6,3 +6,4 @@ R_ab = T_ab.R
 R_ab.T * (0, 1, 0)
 T_ab.T * p_a
 inv(T_ab) * p_a
+T_ab^T * p_a

@@ -3,6 +3,8 @@
 R = Rotz(30 deg)
 R [1, 2]
 R [1]
-# The book's bracket of a vector is a product, space or not.
+# The book's bracket of a vector is a product, space or not, and so is a
+# vector of three entries (an index has one or two).
 w = (0, 0, 1)
 sin(30 deg) [w]
+R [1, 0, 0]

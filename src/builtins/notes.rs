@@ -1,0 +1,48 @@
+//! Notes that a correct result deserves, added after a builtin has run:
+//! at θ = π the logarithms' axis is one of two equally valid answers
+//! (§3.2.3.3, case (ii)); chasles gives the book's, and says so.
+
+use super::Args;
+use crate::check::ty::Kind;
+use crate::diagnostics::{Diagnostic, ErrorKind};
+use crate::lie::{Mat3, so3};
+use crate::values::value::Value;
+
+/// Notes on the call `a` (its arguments still in place) that returned `v`.
+pub fn after_call(a: &mut Args, v: &Value) {
+    if let Some(n) = half_turn(a, v) {
+        a.warnings.push(n);
+    }
+}
+
+/// `log`, `MatrixLog3`, `MatrixLog6` of a rotation or transform with
+/// θ = π: which of the book's formulas gave ω̂, and that −ω̂ is as valid.
+fn half_turn(a: &Args, v: &Value) -> Option<Diagnostic> {
+    // `log` of a 3×3 matrix may be the SE(2) log: only so(3) and se(3)
+    // results qualify.
+    let applies = match (a.name, v.kind()) {
+        ("log", Kind::So3 | Kind::Se3) => true,
+        ("MatrixLog3" | "MatrixLog6", k) => k.is_vector(),
+        _ => false,
+    };
+    let m = a.vals.first()?.as_matrix()?;
+    if !applies || !matches!(m.shape(), (3, 3) | (4, 4)) {
+        return None;
+    }
+    let r = Mat3::from_fn(|i, j| m[(i, j)]);
+    if !so3::is_half_turn(&r) {
+        return None;
+    }
+    let eq = if 1.0 + r[(2, 2)] >= 1e-6 {
+        "(3.58)"
+    } else if 1.0 + r[(1, 1)] >= 1e-6 {
+        "(3.59)"
+    } else {
+        "(3.60)"
+    };
+    Some(Diagnostic::note(
+        ErrorKind::Domain,
+        a.call_span,
+        format!("θ = π: ω̂ is the book's, from {eq} (§3.2.3.3); −ω̂ is an equally valid answer"),
+    ))
+}

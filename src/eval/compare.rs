@@ -1,0 +1,404 @@
+//! Comparisons and `assert` (LANGUAGE.md §3): `a == b` is exact, `a ≈ b`
+//! (typed `~=`) holds within 1e-9 relative, both give a bool; `assert cond`
+//! stops a script with an `assert` error that shows both sides. Without
+//! numbers (`chasles check`) only the kinds and frames of the two sides are
+//! checked: they must have the same shape and the same frames.
+//!
+//! [`equal`] is the one place that decides equality of two values; for
+//! symbolic sides it asks [`symbolic_equal`], the hook for a canonical form.
+
+use nalgebra::DMatrix;
+
+use super::expr::to_sym;
+use super::interp::{Interp, Typed};
+use super::symbolic::Sym;
+use super::value::Value;
+use crate::check::rules::{self, RuleError};
+use crate::check::ty::{Frames, Kind, Ty};
+use crate::diagnostics::{Diagnostic, ErrorKind};
+use crate::syntax::ast::{BinOp, CmpOp, Expr, ExprKind, Span};
+
+/// The tolerance of `a ≈ b`: every entry within 1e-9 · max(1, |a|∞, |b|∞).
+pub const APPROX_TOL: f64 = 1e-9;
+
+/// How `op` reads in messages.
+fn op_text(op: CmpOp) -> &'static str {
+    match op {
+        CmpOp::Eq => "==",
+        CmpOp::Approx => "≈",
+    }
+}
+
+/// Whether `a op b` holds: `Ok(Some(..))` decided, `Ok(None)` undecided
+/// (symbolic sides the canonical form cannot settle), `Err` a message when
+/// the two cannot be compared (different shapes, mechanisms).
+pub fn equal(a: &Value, b: &Value, op: CmpOp) -> Result<Option<bool>, String> {
+    match (a, b) {
+        (Value::Sym(_), _) | (_, Value::Sym(_)) => Ok(symbolic_equal(&to_sym(a), &to_sym(b), op)),
+        (Value::Num { m: x, .. }, Value::Num { m: y, .. }) => {
+            if x.shape() != y.shape() {
+                return Err(format!(
+                    "cannot compare {} with {}",
+                    a.kind().a(),
+                    b.kind().a()
+                ));
+            }
+            Ok(Some(match op {
+                CmpOp::Eq => x == y,
+                CmpOp::Approx => approx(x, y),
+            }))
+        }
+        (Value::Bool(x), Value::Bool(y)) => Ok(Some(x == y)),
+        (Value::Tuple(xs), Value::Tuple(ys)) if xs.len() == ys.len() => {
+            let mut all = Some(true);
+            for (x, y) in xs.iter().zip(ys) {
+                match equal(x, y, op)? {
+                    Some(false) => return Ok(Some(false)),
+                    Some(true) => {}
+                    None => all = None,
+                }
+            }
+            Ok(all)
+        }
+        _ => Err(format!(
+            "cannot compare {} with {}",
+            a.kind().a(),
+            b.kind().a()
+        )),
+    }
+}
+
+/// Equality of symbolic expressions (LANGUAGE.md §7). Today it is
+/// structural: equal trees are equal, and anything else is undecided
+/// (`None`). A canonical form decides more pairs by extending this one
+/// function. `Sym`'s own `==` compares constants by their 4-digit text, so
+/// the trees are also compared in full (their `Debug` form holds every
+/// constant's exact value): `t + 1.00001` is not `t + 1.00002`.
+pub fn symbolic_equal(a: &Sym, b: &Sym, _op: CmpOp) -> Option<bool> {
+    // What cancelled products leave (`inv(T) * T`) is the identity `I`.
+    let identity = |s: &Sym| match s {
+        Sym::Identity => true,
+        Sym::Const(v, _) => v
+            .as_matrix()
+            .is_some_and(|m| m.is_square() && m.nrows() > 1 && m.is_identity(0.0)),
+        _ => false,
+    };
+    if identity(a) && identity(b) {
+        return Some(true);
+    }
+    (a == b && format!("{a:?}") == format!("{b:?}")).then_some(true)
+}
+
+/// Entrywise within [`APPROX_TOL`] relative to the larger side (absolute
+/// near zero); infinite entries must agree exactly, NaN never does.
+fn approx(x: &DMatrix<f64>, y: &DMatrix<f64>) -> bool {
+    let scale = x
+        .iter()
+        .chain(y.iter())
+        .filter(|v| v.is_finite())
+        .fold(1.0f64, |s, v| s.max(v.abs()));
+    x.iter().zip(y.iter()).all(|(a, b)| {
+        if a.is_finite() && b.is_finite() {
+            (a - b).abs() <= APPROX_TOL * scale
+        } else {
+            a == b
+        }
+    })
+}
+
+/// The largest entrywise difference of two numeric values of one shape,
+/// and where it is: the 1-based (row, column) of the first such entry
+/// (NaN counts as the largest).
+pub fn largest_difference(a: &Value, b: &Value) -> Option<(f64, usize, usize)> {
+    let (Value::Num { m: x, .. }, Value::Num { m: y, .. }) = (a, b) else {
+        return None;
+    };
+    if x.shape() != y.shape() {
+        return None;
+    }
+    let mut best = (0.0f64, 1, 1);
+    for j in 0..x.ncols() {
+        for i in 0..x.nrows() {
+            let e = (x[(i, j)] - y[(i, j)]).abs();
+            let e = if e.is_nan() { f64::INFINITY } else { e };
+            if e > best.0 {
+                best = (e, i + 1, j + 1);
+            }
+        }
+    }
+    Some(best)
+}
+
+/// The static rule: both sides of one shape (when known) and one frame
+/// tag (or one untagged, or a displacement in the outer frame of the
+/// other); the result is a bool.
+pub fn compare_rule(l: &Ty, r: &Ty) -> Result<Ty, RuleError> {
+    let type_error = |message: String| RuleError {
+        kind: Some(ErrorKind::Type),
+        message,
+        ..RuleError::default()
+    };
+    let comparable = match (&l.kind, &r.kind) {
+        (Kind::Unknown, _) | (_, Kind::Unknown) => true,
+        (Kind::Bool, Kind::Bool) => true,
+        (Kind::Tuple(a), Kind::Tuple(b)) => a.len() == b.len(),
+        (Kind::Mechanism | Kind::Function, _) | (_, Kind::Mechanism | Kind::Function) => false,
+        (a, b) => match (a.shape(), b.shape()) {
+            (Some((ar, ac)), Some((br, bc))) => agree(ar, br) && agree(ac, bc),
+            _ => false,
+        },
+    };
+    if !comparable {
+        let mut e = type_error(format!("cannot compare {} with {}", l.kind.a(), r.kind.a()));
+        if matches!(l.kind, Kind::Mechanism) || matches!(r.kind, Kind::Mechanism) {
+            e.help = Some("compare their degrees of freedom: dof(m1) == dof(m2)".into());
+        } else {
+            e.help = Some("both sides of == and ≈ must have the same shape".into());
+        }
+        return Err(e);
+    }
+    // A displacement in {a} (`exp(log(T_ab))`) may equal a map out of {a}.
+    let displacement_of =
+        |d: &Frames, f: &Frames| matches!(d, Frames::Disp(a) if f.outer() == Some(a));
+    if !displacement_of(&l.frames, &r.frames) && !displacement_of(&r.frames, &l.frames) {
+        rules::same_frames("compare", l, r)?;
+    }
+    Ok(Ty::plain(Kind::Bool))
+}
+
+fn agree(a: Option<usize>, b: Option<usize>) -> bool {
+    a.is_none() || b.is_none() || a == b
+}
+
+/// Both sides of a comparison, checked and evaluated.
+struct Sides {
+    l: Typed,
+    r: Typed,
+    verdict: Option<bool>,
+}
+
+impl Interp<'_> {
+    /// `lhs == rhs`, `lhs ≈ rhs`: a bool.
+    pub(super) fn compare(
+        &mut self,
+        op: CmpOp,
+        lhs: &Expr,
+        rhs: &Expr,
+        op_span: Span,
+    ) -> Result<Typed, Diagnostic> {
+        let sides = self.sides(op, lhs, rhs, op_span)?;
+        Ok(Typed {
+            ty: Ty::plain(Kind::Bool),
+            val: sides.verdict.map(Value::Bool),
+        })
+    }
+
+    fn sides(
+        &mut self,
+        op: CmpOp,
+        lhs: &Expr,
+        rhs: &Expr,
+        op_span: Span,
+    ) -> Result<Sides, Diagnostic> {
+        // `R Rᵀ == I`: an `I` takes its size from the other side, as in a sum.
+        let (l, r) = self.operands(BinOp::Sub, lhs, rhs)?;
+        if let Err(e) = compare_rule(&l.ty, &r.ty) {
+            self.rule_failure(e, op_span, Some(lhs.span), Some(rhs.span), Some(op_span))?;
+        }
+        let verdict = match (&l.val, &r.val) {
+            (Some(a), Some(b)) => match equal(a, b, op) {
+                Ok(Some(v)) => Some(v),
+                Ok(None) => {
+                    return Err(Diagnostic::error(
+                        ErrorKind::Domain,
+                        op_span,
+                        format!(
+                            "cannot decide `{} {} {}` without numbers",
+                            self.text(lhs.span).trim(),
+                            op_text(op),
+                            self.text(rhs.span).trim()
+                        ),
+                    )
+                    .with_help("bind numbers to the given names, then compare"));
+                }
+                Err(m) => return Err(Diagnostic::error(ErrorKind::Type, op_span, m)),
+            },
+            _ => None,
+        };
+        Ok(Sides { l, r, verdict })
+    }
+
+    /// `assert cond`: Ok when the condition holds (or, in `check`, when it
+    /// is well typed); an `assert` error showing both sides when it fails.
+    pub(super) fn assert(&mut self, cond: &Expr) -> Result<(), Diagnostic> {
+        if let ExprKind::Compare {
+            op,
+            lhs,
+            rhs,
+            op_span,
+        } = &cond.kind
+        {
+            let s = self.sides(*op, lhs, rhs, *op_span)?;
+            if s.verdict != Some(false) {
+                return Ok(());
+            }
+            let (Some(a), Some(b)) = (&s.l.val, &s.r.val) else {
+                return Ok(());
+            };
+            return Err(self.assert_failed(cond, *op, (lhs, a), (rhs, b)));
+        }
+        let t = self.expr(cond)?;
+        if !matches!(t.ty.kind, Kind::Bool | Kind::Unknown) {
+            return Err(Diagnostic::error(
+                ErrorKind::Type,
+                cond.span,
+                format!("assert needs a condition, not {}", t.ty.kind.a()),
+            )
+            .with_help("compare two values: assert a == b, or assert a ≈ b (typed ~=)"));
+        }
+        match t.val {
+            Some(Value::Bool(false)) => Err(Diagnostic::error(
+                ErrorKind::Assert,
+                cond.span,
+                format!(
+                    "assertion failed: `{}` is false",
+                    self.text(cond.span).trim()
+                ),
+            )),
+            _ => Ok(()),
+        }
+    }
+
+    /// The error of a failed comparison: both sides' values under them,
+    /// the largest difference, and both values in the help line (which
+    /// JSON carries too).
+    fn assert_failed(
+        &self,
+        cond: &Expr,
+        op: CmpOp,
+        (lhs, a): (&Expr, &Value),
+        (rhs, b): (&Expr, &Value),
+    ) -> Diagnostic {
+        // `==` failing by a rounding error needs every digit to be seen.
+        let digits = if op == CmpOp::Eq { 17 } else { 10 };
+        let show = |v: &Value| crate::values::format::inline(v, digits);
+        let mut message = format!("assertion failed: `{}`", self.text(cond.span).trim());
+        if let Some((d, i, j)) = largest_difference(a, b) {
+            let d = if d.is_infinite() {
+                "NaN or inf".to_string()
+            } else if (1e-3..1e6).contains(&d) {
+                crate::values::number::fmt_num(d, 4)
+            } else {
+                format!("{d:.3e}")
+            };
+            // Where: [i, j] in a matrix, [i] in a vector, nothing for a number.
+            let at = match a.as_matrix().map(|m| m.shape()) {
+                Some((1, 1)) | None => String::new(),
+                Some((_, 1)) => format!(" at [{i}]"),
+                Some(_) => format!(" at [{i}, {j}]"),
+            };
+            message.push_str(&match op {
+                CmpOp::Eq => format!(" (largest difference {d}{at})"),
+                CmpOp::Approx => {
+                    format!(" (largest difference {d}{at}; ≈ allows {APPROX_TOL:e} relative)")
+                }
+            });
+        }
+        // Short values stand under their side; long ones only in the help.
+        let label = |side: &str, v: &Value| {
+            let text = show(v);
+            if text.chars().count() <= 40 {
+                format!("{side}: {text}")
+            } else {
+                side.to_string()
+            }
+        };
+        Diagnostic::error(ErrorKind::Assert, lhs.span, message)
+            .with_primary_label(label("left", a))
+            .with_label(rhs.span, label("right", b))
+            .with_help(format!("left = {}; right = {}", show(a), show(b)))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn v(xs: &[f64]) -> Value {
+        Value::vector(Kind::Vector(Some(xs.len())), xs)
+    }
+
+    #[test]
+    fn exact_and_approximate() {
+        let a = v(&[1.0, 2.0]);
+        let b = v(&[1.0, 2.0 + 1e-12]);
+        assert_eq!(equal(&a, &b, CmpOp::Eq), Ok(Some(false)));
+        assert_eq!(equal(&a, &b, CmpOp::Approx), Ok(Some(true)));
+        let c = v(&[1.0, 2.0 + 1e-6]);
+        assert_eq!(equal(&a, &c, CmpOp::Approx), Ok(Some(false)));
+        // Relative to the larger side: 1e12 and 1e12 + 1 agree.
+        assert_eq!(
+            equal(&v(&[1e12]), &v(&[1e12 + 1.0]), CmpOp::Approx),
+            Ok(Some(true))
+        );
+        assert!(equal(&a, &v(&[1.0, 2.0, 3.0]), CmpOp::Eq).is_err());
+        assert_eq!(
+            equal(&v(&[f64::NAN]), &v(&[f64::NAN]), CmpOp::Approx),
+            Ok(Some(false))
+        );
+        assert_eq!(
+            equal(&v(&[f64::INFINITY]), &v(&[f64::INFINITY]), CmpOp::Approx),
+            Ok(Some(true))
+        );
+    }
+
+    #[test]
+    fn largest_difference_says_where() {
+        let m = |xs: &[f64]| Value::Num {
+            kind: Kind::Matrix(Some(2), Some(2)),
+            m: DMatrix::from_row_slice(2, 2, xs),
+        };
+        let (d, i, j) = largest_difference(&m(&[1.0, 2.0, 3.0, 4.0]), &m(&[1.0, 2.0, 3.5, 4.1]))
+            .expect("same shape");
+        assert_eq!((d, i, j), (0.5, 2, 1));
+        let (d, ..) = largest_difference(&m(&[f64::NAN, 0.0, 0.0, 0.0]), &m(&[0.0; 4])).unwrap();
+        assert!(d.is_infinite());
+        assert!(largest_difference(&v(&[1.0]), &m(&[0.0; 4])).is_none());
+    }
+
+    #[test]
+    fn symbols_compare_structurally() {
+        let t = Sym::Name("t".into());
+        assert_eq!(symbolic_equal(&t, &t.clone(), CmpOp::Eq), Some(true));
+        assert_eq!(symbolic_equal(&t, &Sym::Name("u".into()), CmpOp::Eq), None);
+        // Constants that print alike at 4 digits are still told apart.
+        let c = |x: f64| Sym::Const(Box::new(Value::scalar(x)), "1".into());
+        assert_eq!(symbolic_equal(&c(1.00001), &c(1.00002), CmpOp::Eq), None);
+        assert_eq!(
+            symbolic_equal(&c(1.00001), &c(1.00001), CmpOp::Eq),
+            Some(true)
+        );
+    }
+
+    #[test]
+    fn rule_needs_one_shape_and_frame() {
+        let v3 = Ty::plain(Kind::Vector(Some(3)));
+        assert!(compare_rule(&v3, &Ty::plain(Kind::SO3)).is_err());
+        assert!(
+            compare_rule(
+                &Ty::plain(Kind::SO3),
+                &Ty::plain(Kind::Matrix(Some(3), Some(3)))
+            )
+            .is_ok()
+        );
+        let a = Ty::new(Kind::SE3, crate::check::ty::Frames::pair("a", "b"));
+        let c = Ty::new(Kind::SE3, crate::check::ty::Frames::pair("a", "c"));
+        let e = compare_rule(&a, &c).unwrap_err();
+        assert_eq!(e.kind, Some(ErrorKind::Frame));
+        // exp(log(T_ab)) is a displacement in {a}: comparable with T_ab.
+        let d = Ty::new(Kind::SE3, Frames::Disp(crate::check::ty::Frame::named("a")));
+        assert!(compare_rule(&d, &a).is_ok());
+        let d = Ty::new(Kind::SE3, Frames::Disp(crate::check::ty::Frame::named("b")));
+        assert!(compare_rule(&d, &a).is_err());
+    }
+}

@@ -1,0 +1,127 @@
+//! The session as a script (LANGUAGE.md §11): the REPL records each
+//! statement that ran without error; `:history` lists them and `:save FILE`
+//! writes them as a script that reruns to the same results. The file is
+//! written atomically (a temporary file renamed into place), and an
+//! existing file is kept unless the command is `:save! FILE`.
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+use crate::eval::env::{FrameMode, Mode};
+use crate::session::Session;
+
+/// Runs `src` in the session like [`Session::run_to_strings`], and records
+/// the text of every statement that succeeded in `session.accepted`.
+pub fn run_recording(session: &mut Session, file: &str, src: &str) -> (String, String, usize) {
+    let (mut out, mut err) = (String::new(), String::new());
+    let mut accepted = Vec::new();
+    let settings = session.settings;
+    let n = session.run(src, Mode::Run, false, |r| {
+        let o = r.stdout(&settings, src);
+        if !o.is_empty() {
+            out.push_str(&o);
+            out.push('\n');
+        }
+        err.push_str(&r.stderr(&settings, file, src));
+        if let Ok(outcome) = &r.result
+            && let Some(text) = src.get(outcome.span.start..outcome.span.end)
+            && !text.trim().is_empty()
+        {
+            accepted.push(text.trim().to_string());
+        }
+    });
+    session.accepted.extend(accepted);
+    (out, err, n)
+}
+
+/// `:history`: the accepted statements, numbered.
+pub fn history(session: &Session) -> String {
+    if session.accepted.is_empty() {
+        return "no statements yet (:history lists the ones that ran without error)".into();
+    }
+    let width = session.accepted.len().to_string().len();
+    session
+        .accepted
+        .iter()
+        .enumerate()
+        .map(|(i, s)| {
+            let s = s.replace('\n', &format!("\n{}", " ".repeat(width + 2)));
+            format!("{:>width$}  {s}", i + 1)
+        })
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+/// The script `:save` writes: a header saying how to rerun it, then the
+/// accepted statements one per line.
+pub fn script(session: &Session) -> String {
+    let mut out = String::from("# saved from the chasles REPL");
+    match session.settings.frames {
+        FrameMode::Strict => out.push_str("; rerun with: chasles run FILE\n"),
+        mode => out.push_str(&format!(
+            "; rerun with: chasles run --frames {} FILE\n",
+            mode.as_str()
+        )),
+    }
+    for s in &session.accepted {
+        out.push_str(s);
+        out.push('\n');
+    }
+    out
+}
+
+/// `:save FILE` (`overwrite` false) or `:save! FILE`: Ok is the message
+/// for stdout, Err the one for stderr.
+pub fn save(session: &Session, arg: &str, overwrite: bool) -> Result<String, String> {
+    let name = arg.trim().trim_matches(|c| c == '"' || c == '\'');
+    if name.is_empty() {
+        return Err(":save needs a file name, e.g. :save session.chs".into());
+    }
+    let path = match (name.strip_prefix("~/"), dirs::home_dir()) {
+        (Some(rest), Some(home)) => home.join(rest),
+        _ => PathBuf::from(name),
+    };
+    if path.is_dir() {
+        return Err(format!(":save: '{name}' is a directory"));
+    }
+    if !overwrite && path.exists() {
+        return Err(format!(
+            ":save: '{name}' exists; :save! {name} overwrites it"
+        ));
+    }
+    let text = script(session);
+    write_atomically(&path, &text, overwrite)
+        .map_err(|e| format!(":save: cannot write '{name}': {e}"))?;
+    Ok(format!(
+        "saved {} statement{} to {name}",
+        session.accepted.len(),
+        if session.accepted.len() == 1 { "" } else { "s" }
+    ))
+}
+
+/// Writes `text` to a temporary file beside `path`, then moves it into
+/// place: a reader never sees half a file. Without `overwrite` the move is
+/// a hard link, which fails if `path` appeared meanwhile.
+fn write_atomically(path: &Path, text: &str, overwrite: bool) -> std::io::Result<()> {
+    let dir = path
+        .parent()
+        .filter(|d| !d.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
+    let file = path
+        .file_name()
+        .map(|f| f.to_string_lossy().into_owned())
+        .unwrap_or_else(|| "session.chs".into());
+    let tmp = dir.join(format!(".{file}.{}.tmp", std::process::id()));
+    let result = (|| {
+        let mut f = std::fs::File::create(&tmp)?;
+        f.write_all(text.as_bytes())?;
+        f.sync_all()?;
+        if overwrite {
+            std::fs::rename(&tmp, path)
+        } else {
+            std::fs::hard_link(&tmp, path)
+        }
+    })();
+    let _ = std::fs::remove_file(&tmp);
+    result
+}
