@@ -89,14 +89,7 @@ impl Interp<'_> {
             ExprKind::Var(name) => self.var(name, e.span),
             ExprKind::Unary { op, operand } => {
                 let t = self.expr(operand)?;
-                if let Some(help) = super::list::elementwise_help(&t.ty.kind) {
-                    return Err(Diagnostic::error(
-                        ErrorKind::Type,
-                        e.span,
-                        format!("no arithmetic on {}", t.ty.kind.a()),
-                    )
-                    .with_help(help));
-                }
+                self.no_arithmetic(&t, operand.span, e.span)?;
                 if *op == UnOp::Pos {
                     return Ok(t);
                 }
@@ -173,12 +166,7 @@ impl Interp<'_> {
             ExprKind::Mech(spec) => self.mech(spec, e.span),
             ExprKind::Range { start, step, end } => self.range(start, step.as_deref(), end, e.span),
             ExprKind::Comprehension { body, vars } => self.comprehension(body, vars, e.span),
-            ExprKind::Str(text) => Ok(Typed {
-                ty: Ty::plain(Kind::Text),
-                val: self
-                    .running()
-                    .then(|| Value::Str(std::rc::Rc::from(text.as_str()))),
-            }),
+            ExprKind::Str(text) => Ok(self.string(text)),
             ExprKind::Compare {
                 op,
                 lhs,
@@ -291,19 +279,7 @@ impl Interp<'_> {
         }
         let (l, r) = self.operands(op, lhs, rhs)?;
         for (t, side) in [(&l, lhs), (&r, rhs)] {
-            if let Some(help) = super::list::elementwise_help(&t.ty.kind) {
-                return Err(Diagnostic::error(
-                    ErrorKind::Type,
-                    op_span,
-                    format!(
-                        "no arithmetic on {} ({})",
-                        t.ty.kind.a(),
-                        self.text(side.span).trim()
-                    ),
-                )
-                .with_label(side.span, t.ty.kind.to_string())
-                .with_help(help));
-            }
+            self.no_arithmetic(t, side.span, op_span)?;
         }
         let ops_text = Operands {
             lhs: self.text(lhs.span),
@@ -449,11 +425,7 @@ impl Interp<'_> {
             .into_iter()
             .map(|t| t.val.unwrap_or_else(|| Value::scalar(f64::NAN)))
             .collect();
-        if vals.iter().any(Value::is_symbolic) && b.area == builtins::Area::Pictures {
-            return Err(self
-                .domain(span, format!("{} needs numbers, not symbols", b.name))
-                .with_help("bind numbers to the given names first (§7)"));
-        }
+        super::list::numbers_only(b, &vals, span)?;
         if vals.iter().any(Value::is_symbolic) {
             let sym = match b.name {
                 "inv" | "RotInv" | "TransInv" => to_sym(&vals[0]).inverse(),

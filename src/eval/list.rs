@@ -79,7 +79,52 @@ pub fn elementwise_help(k: &Kind) -> Option<String> {
     }
 }
 
+/// The picture and list builtins take numbers only: a symbol is a domain
+/// error (there is nothing to draw until the `given` names have numbers).
+pub(super) fn numbers_only(
+    b: &crate::builtins::Builtin,
+    vals: &[Value],
+    span: Span,
+) -> Result<(), Diagnostic> {
+    if b.area == crate::builtins::Area::Pictures && vals.iter().any(Value::is_symbolic) {
+        return Err(Diagnostic::error(
+            ErrorKind::Domain,
+            span,
+            format!("{} needs numbers, not symbols", b.name),
+        )
+        .with_help("bind numbers to the given names first (§7)"));
+    }
+    Ok(())
+}
+
 impl Interp<'_> {
+    /// A list, picture or string as an operand of arithmetic: a type error
+    /// at `op` naming the operand at `side`.
+    pub(super) fn no_arithmetic(&self, t: &Typed, side: Span, op: Span) -> Result<(), Diagnostic> {
+        let Some(help) = elementwise_help(&t.ty.kind) else {
+            return Ok(());
+        };
+        Err(Diagnostic::error(
+            ErrorKind::Type,
+            op,
+            format!(
+                "no arithmetic on {} ({})",
+                t.ty.kind.a(),
+                self.text(side).trim()
+            ),
+        )
+        .with_label(side, t.ty.kind.to_string())
+        .with_help(help))
+    }
+
+    /// `"name.svg"`.
+    pub(super) fn string(&self, text: &str) -> Typed {
+        Typed {
+            ty: Ty::plain(Kind::Text),
+            val: self.running().then(|| Value::Str(Rc::from(text))),
+        }
+    }
+
     /// One bound of a range: a number.
     fn bound(&mut self, e: &Expr) -> Result<Option<f64>, Diagnostic> {
         let t = self.expr(e)?;
