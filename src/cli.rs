@@ -53,10 +53,28 @@ struct Opts {
     /// π/6 (text output; the REPL's :exact).
     #[arg(long, global = true)]
     exact: bool,
+    /// Symbolic values in the book's shorthand (c₁, s₁₂).
+    #[arg(long, global = true, conflicts_with = "latex")]
+    short: bool,
+    /// Symbolic values as LaTeX (bmatrix, \theta_1).
+    #[arg(long, global = true)]
+    latex: bool,
     /// Where pictures printed but not saved are written (default: the
     /// current folder); created if missing.
     #[arg(long, global = true, value_name = "DIR")]
     draw_dir: Option<std::path::PathBuf>,
+}
+
+impl Opts {
+    /// How symbolic values print (LANGUAGE.md §7).
+    fn sym_mode(&self) -> crate::sym::print::Mode {
+        use crate::sym::print::Mode;
+        match (self.short, self.latex) {
+            (_, true) => Mode::Latex,
+            (true, _) => Mode::Short,
+            _ => Mode::Text,
+        }
+    }
 }
 
 /// The folder for printed pictures, created when asked for by `--draw-dir`.
@@ -114,6 +132,7 @@ fn run_sources(sources: &[(String, String)], mode: Mode, opts: &Opts) -> i32 {
         digits: opts.digits as usize,
         json: opts.json,
         exact: opts.exact,
+        sym: opts.sym_mode(),
     };
     let mut session = Session::new(settings);
     if mode == Mode::Run {
@@ -227,6 +246,7 @@ pub fn main_with_args(args: Vec<String>) -> i32 {
                         digits: cli.opts.digits as usize,
                         json: cli.opts.json,
                         exact: cli.opts.exact,
+                        sym: cli.opts.sym_mode(),
                     },
                     pictures,
                 )

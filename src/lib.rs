@@ -28,6 +28,8 @@
 //! - [`lie`]: SO(3), SE(3), SO(2), SE(2) and their algebras — plain nalgebra,
 //!   no knowledge of the language, usable as a library;
 //! - [`mech`]: Grübler's formula and C-space topology (chapter 2);
+//! - [`sym`]: symbolic scalars in canonical form and the book's closed
+//!   forms over them (chapter 3 with symbols), no knowledge of the language;
 //! - [`span`], [`diagnostics`], [`output`]: places in the source, errors,
 //!   and values for people and for JSON;
 //! - [`session`]: the pipeline parse → check → evaluate over a source text;
@@ -52,5 +54,6 @@ pub mod output;
 pub mod repl;
 pub mod session;
 pub mod span;
+pub mod sym;
 pub mod syntax;
 pub mod values;

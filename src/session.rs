@@ -22,6 +22,9 @@ pub struct Settings {
     /// Print values near simple closed forms as `1/√2`, `π/6` (the REPL's
     /// `:exact`; text output only).
     pub exact: bool,
+    /// Symbolic values as text, the book's shorthand (`--short`) or LaTeX
+    /// (`--latex`), LANGUAGE.md §7.
+    pub sym: crate::sym::print::Mode,
 }
 
 impl Default for Settings {
@@ -31,6 +34,7 @@ impl Default for Settings {
             digits: 4,
             json: false,
             exact: false,
+            sym: crate::sym::print::Mode::Text,
         }
     }
 }
@@ -41,6 +45,7 @@ impl Settings {
         text::Style {
             digits: self.digits,
             exact: self.exact,
+            sym: self.sym,
         }
     }
 }

@@ -125,9 +125,9 @@ fn identity_is_sized_by_the_other_side() {
     assert_eq!(lines[1]["value"], serde_json::Value::Bool(true));
 }
 
-/// Symbols: equal trees are equal, what cancels is `I`, and anything the
-/// structural comparison cannot settle is an honest domain error (the
-/// canonical form of LANGUAGE.md §7 decides more).
+/// Symbols: equal trees are equal, what cancels is `I`, symbolic scalars
+/// compare by canonical forms, and what neither settles (a kept call such
+/// as sqrt) is an honest domain error.
 #[test]
 fn symbolic_sides() {
     let (code, out, err) = run(&[
@@ -136,7 +136,10 @@ fn symbolic_sides() {
     ]);
     assert_eq!(code, 0, "{err}");
     assert_eq!(out, "true\ntrue\n");
-    let (code, _, err) = run(&["-e", "given t : scalar\nt + 1.00001 == t + 1.00002"]);
+    // symbolic scalars compare by their canonical forms (§7)
+    let (code, out, err) = run(&["-e", "given t : scalar\nt + 1.00001 == t + 1.00002"]);
+    assert_eq!((code, out.as_str()), (0, "false\n"), "{err}");
+    let (code, _, err) = run(&["-e", "given t : scalar\nsqrt(t^2) == t"]);
     assert_eq!(code, 1);
     assert!(err.contains("domain error: cannot decide"), "{err}");
 }

@@ -95,8 +95,15 @@ fn stmt_sexp(s: &Stmt) -> String {
             let t: Vec<&str> = targets.iter().map(|t| t.name.as_str()).collect();
             format!("({}) = {}", t.join(", "), sexp(value))
         }
-        StmtKind::Given { names, ty } => {
-            let n: Vec<&str> = names.iter().map(|t| t.name.as_str()).collect();
+        StmtKind::Given { names, ty, times } => {
+            let n: Vec<String> = names
+                .iter()
+                .zip(times)
+                .map(|(t, time)| match time {
+                    Some(x) => format!("{}({})", t.name, x.name),
+                    None => t.name.clone(),
+                })
+                .collect();
             format!("given {} : {}", n.join(", "), ty.name)
         }
         StmtKind::FnDef { name, params, body } => {
@@ -416,11 +423,24 @@ fn statement_forms() {
 }
 
 #[test]
-fn statement_idents_have_spans() {
-    let s = one("given T_ab, T_bc : SE3");
-    let StmtKind::Given { names, ty } = s.kind else {
+fn given_declares_functions_of_time() {
+    let s = one("given theta(t), L1 : scalar");
+    let StmtKind::Given { names, times, .. } = s.kind else {
         panic!("not given")
     };
+    assert_eq!(names[0].name, "theta");
+    assert_eq!(times[0].as_ref().map(|t| t.name.as_str()), Some("t"));
+    assert_eq!(times[0].as_ref().map(|t| t.span), Some(Span::new(12, 13)));
+    assert!(times[1].is_none());
+}
+
+#[test]
+fn statement_idents_have_spans() {
+    let s = one("given T_ab, T_bc : SE3");
+    let StmtKind::Given { names, ty, times } = s.kind else {
+        panic!("not given")
+    };
+    assert!(times.iter().all(Option::is_none));
     assert_eq!(names[0].span, Span::new(6, 10));
     assert_eq!(names[1].span, Span::new(12, 16));
     assert_eq!(ty.span, Span::new(19, 22));
@@ -678,7 +698,7 @@ fn friendly_errors() {
         ),
         (
             "given T_ab SE3",
-            "expected ',' or ':', found 'S'",
+            "expected '(', ',' or ':', found 'S'",
             "S",
             None,
         ),

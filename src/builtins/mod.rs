@@ -13,13 +13,16 @@ mod table_list;
 mod table_math;
 mod table_repr;
 mod table_rotations;
+mod table_scalar;
 mod table_screw;
+mod table_sym;
 mod table_units;
 
 use std::hash::BuildHasherDefault;
 use std::sync::OnceLock;
 
 pub use args::{ArgError, Args};
+pub use table_sym::eval_symbolic;
 
 use crate::check::ty::{Frames, Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
@@ -326,6 +329,8 @@ pub fn table() -> &'static [Builtin] {
         t.extend(table_screw::builtins());
         t.extend(table_repr::builtins());
         t.extend(table_math::builtins());
+        t.extend(table_scalar::builtins());
+        t.extend(table_sym::builtins());
         t.extend(table_units::builtins());
         t.extend(table_list::builtins());
         t.extend(table_draw::builtins());

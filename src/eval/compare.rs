@@ -5,13 +5,14 @@
 //! checked: they must have the same shape and the same frames.
 //!
 //! [`equal`] is the one place that decides equality of two values; for
-//! symbolic sides it asks [`symbolic_equal`], the hook for a canonical form.
+//! symbolic sides it asks [`symbolic_equal`] (trees over `given` matrices)
+//! or the canonical forms of [`super::formula::equal`] (symbolic scalars).
 
 use nalgebra::DMatrix;
 
-use super::expr::to_sym;
 use super::interp::{Interp, Typed};
-use super::symbolic::Sym;
+use super::substitute::to_sym;
+use super::value::Sym;
 use super::value::Value;
 use crate::check::rules::{self, RuleError};
 use crate::check::ty::{Frames, Kind, Ty};
@@ -35,6 +36,10 @@ fn op_text(op: CmpOp) -> &'static str {
 pub fn equal(a: &Value, b: &Value, op: CmpOp) -> Result<Option<bool>, String> {
     match (a, b) {
         (Value::Sym(_), _) | (_, Value::Sym(_)) => Ok(symbolic_equal(&to_sym(a), &to_sym(b), op)),
+        // Symbolic scalars and matrices: by their canonical forms (§7).
+        (Value::Formula { .. }, _) | (_, Value::Formula { .. }) => {
+            super::formula::equal(a, b, op == CmpOp::Approx)
+        }
         (Value::Num { m: x, .. }, Value::Num { m: y, .. }) => {
             if x.shape() != y.shape() {
                 return Err(format!(
@@ -86,7 +91,8 @@ pub fn symbolic_equal(a: &Sym, b: &Sym, _op: CmpOp) -> Option<bool> {
     if identity(a) && identity(b) {
         return Some(true);
     }
-    (a == b && format!("{a:?}") == format!("{b:?}")).then_some(true)
+    // Trees compare structurally, constants by value (not printed text).
+    (a == b).then_some(true)
 }
 
 /// Entrywise within [`APPROX_TOL`] relative to the larger side (absolute

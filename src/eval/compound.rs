@@ -2,10 +2,11 @@
 //! tuples `(1, 2, 3)`, brackets `[w]` and block matrices `[R, p; 0, 0, 0, 1]`
 //! (LANGUAGE.md §4), and `mech < ... >` literals (chapter 2).
 
-use super::expr::{refine, to_sym};
+use super::expr::refine;
 use super::interp::{Interp, Typed};
 use super::ops::{self, Sel};
-use super::symbolic::Sym;
+use super::substitute::to_sym;
+use super::value::Sym;
 use super::value::Value;
 use crate::check::ty::{Frames, Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
@@ -72,7 +73,10 @@ impl Interp<'_> {
             _ => Ty::scalar(),
         };
         let val = match t.val {
-            Some(Value::Sym(s)) => Some(Value::Sym(Sym::Call(format!("{s}[]"), vec![]))),
+            Some(Value::Sym(s)) => Some(Value::Sym(Sym::Index(Box::new(s), sel_syms(&sels)))),
+            Some(v @ Value::Formula { .. }) => {
+                Some(super::formula::index(&v, &sels).map_err(|m| self.domain(span, m))?)
+            }
             Some(v) => Some(ops::index(&v, &sels).map_err(|m| self.domain(span, m))?),
             None => None,
         };
@@ -92,8 +96,16 @@ impl Interp<'_> {
             .all(|t| t.ty.kind.maybe_scalar() && t.ty.kind == Kind::Scalar);
         if all_scalar {
             let ty = Ty::plain(Kind::Vector(Some(ts.len())));
+            let vals: Option<Vec<Value>> = ts.iter().map(|t| t.val.clone()).collect();
             let val = if self.running() {
-                if ts
+                if let Some(v) = vals.as_ref().and_then(|vs| {
+                    let refs: Vec<&Value> = vs.iter().collect();
+                    super::formula::applies(&refs)
+                        .then(|| super::formula::vector(vs))
+                        .flatten()
+                }) {
+                    Some(v)
+                } else if ts
                     .iter()
                     .any(|t| t.val.as_ref().is_some_and(Value::is_symbolic))
                 {
@@ -101,7 +113,7 @@ impl Interp<'_> {
                         .iter()
                         .map(|t| t.val.as_ref().map_or(Sym::Identity, to_sym))
                         .collect();
-                    Some(Value::Sym(Sym::Call(String::new(), parts)))
+                    Some(Value::Sym(Sym::Vector(parts)))
                 } else {
                     let xs: Vec<f64> = ts
                         .iter()
@@ -156,10 +168,29 @@ impl Interp<'_> {
         if !self.running() {
             return Ok(Typed { ty, val: None });
         }
-        let any_sym = trows
+        let vals: Vec<&Value> = trows
             .iter()
             .flatten()
-            .any(|t| t.val.as_ref().is_some_and(Value::is_symbolic));
+            .filter_map(|t| t.val.as_ref())
+            .collect();
+        if super::formula::applies(&vals) {
+            let vrows: Vec<Vec<Value>> = trows
+                .iter()
+                .map(|r| r.iter().filter_map(|t| t.val.clone()).collect())
+                .collect();
+            let v = super::formula::brackets(&vrows)
+                .map_err(|m| Diagnostic::error(ErrorKind::Type, span, m))?;
+            let val = Some(v);
+            return Ok(Typed {
+                ty: refine(ty, &val),
+                val,
+            });
+        }
+        let any_sym = trows.iter().flatten().any(|t| {
+            t.val
+                .as_ref()
+                .is_some_and(|v| v.is_symbolic() || matches!(v, Value::Formula { .. }))
+        });
         if any_sym {
             let sym = if trows.len() == 1 && trows[0].len() == 1 {
                 Sym::Bracket(Box::new(to_sym(
@@ -245,6 +276,16 @@ impl Interp<'_> {
             val,
         })
     }
+}
+
+/// Indices as symbols: a number or `:`.
+fn sel_syms(sels: &[Sel]) -> Vec<Option<f64>> {
+    sels.iter()
+        .map(|s| match s {
+            Sel::At(x) => Some(*x),
+            Sel::All => None,
+        })
+        .collect()
 }
 
 /// The static type of `[ ... ]`: the book's bracket of one vector, a column

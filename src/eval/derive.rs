@@ -121,6 +121,11 @@ impl Interp<'_> {
             })?;
             let v = match (&v, s.inverted) {
                 (Value::Sym(x), true) => Value::Sym(x.clone().inverse()),
+                (Value::Formula { kind, m }, true) => super::formula::inverse(kind, m)
+                    .map(|m| super::formula::make(kind, m))
+                    .ok_or_else(|| {
+                        Diagnostic::error(ErrorKind::Domain, target.span, "no symbolic inverse")
+                    })?,
                 (_, true) => ops::inverse(&v)
                     .map_err(|m| Diagnostic::error(ErrorKind::Domain, target.span, m))?,
                 _ => v,
@@ -128,12 +133,16 @@ impl Interp<'_> {
             acc = Some(match acc {
                 None => v,
                 Some(Value::Sym(a)) => {
-                    Value::Sym(super::symbolic::Sym::times(a, super::expr::to_sym(&v)))
+                    Value::Sym(super::value::Sym::times(a, super::substitute::to_sym(&v)))
                 }
-                Some(a) if v.is_symbolic() => Value::Sym(super::symbolic::Sym::times(
-                    super::expr::to_sym(&a),
-                    super::expr::to_sym(&v),
+                Some(a) if v.is_symbolic() => Value::Sym(super::value::Sym::times(
+                    super::substitute::to_sym(&a),
+                    super::substitute::to_sym(&v),
                 )),
+                Some(a) if super::formula::applies(&[&a, &v]) => {
+                    super::formula::binary(crate::syntax::ast::BinOp::Mul, &a, &v, &kind)
+                        .map_err(|m| Diagnostic::error(ErrorKind::Domain, target.span, m))?
+                }
                 Some(a) => ops::mul(&a, &v, &kind)
                     .map_err(|m| Diagnostic::error(ErrorKind::Domain, target.span, m))?,
             });

@@ -7,7 +7,8 @@ use std::f64::consts::PI;
 use super::env::Mode;
 use super::interp::{Interp, MAX_CALL_DEPTH, Typed};
 use super::ops;
-use super::symbolic::Sym;
+use super::substitute::to_sym;
+use super::value::Sym;
 use super::value::Value;
 use crate::builtins::{self, Args};
 use crate::check::rules::{self, Operands};
@@ -19,22 +20,11 @@ fn strip(t: &Ty) -> Ty {
     Ty::plain(t.kind.clone())
 }
 
-/// A value as a symbolic operand (numbers become constants).
-pub(super) fn to_sym(v: &Value) -> Sym {
-    match v {
-        Value::Sym(s) => s.clone(),
-        other => Sym::Const(
-            Box::new(other.clone()),
-            crate::values::format::inline(other, 4),
-        ),
-    }
-}
-
 /// The runtime kind refines the static one (a literal that is a rotation
 /// is SO(3)); frames stay as the checker found them.
 pub(super) fn refine(ty: Ty, val: &Option<Value>) -> Ty {
     match val {
-        Some(v @ (Value::Num { .. } | Value::Tuple(_))) => {
+        Some(v @ (Value::Num { .. } | Value::Tuple(_) | Value::Formula { .. })) => {
             crate::check::algebra::with_kind(&ty, v.kind())
         }
         _ => ty,
@@ -59,20 +49,7 @@ impl Interp<'_> {
     /// [`Sym::too_large`] is a domain error.
     pub fn expr(&mut self, e: &Expr) -> Result<Typed, Diagnostic> {
         let t = stacker::maybe_grow(256 * 1024, 4 * 1024 * 1024, || self.expr_node(e))?;
-        if let Some(Value::Sym(s)) = &t.val
-            && s.too_large()
-        {
-            return Err(self
-                .domain(
-                    e.span,
-                    format!(
-                        "symbolic expression too large (more than {} terms or nested deeper than {})",
-                        super::symbolic::MAX_SYM_NODES,
-                        super::symbolic::MAX_SYM_DEPTH
-                    ),
-                )
-                .with_help("bind numbers to the given names, or simplify step by step"));
-        }
+        self.within_limits(&t, e.span)?;
         Ok(t)
     }
 
@@ -102,6 +79,7 @@ impl Interp<'_> {
                 };
                 let val = match t.val {
                     Some(Value::Sym(s)) => Some(Value::Sym(Sym::Neg(Box::new(s)))),
+                    Some(v @ Value::Formula { .. }) => super::formula::neg(&v),
                     Some(v) => Some(ops::neg(&v, &ty.kind).map_err(|m| self.domain(e.span, m))?),
                     None => None,
                 };
@@ -118,6 +96,13 @@ impl Interp<'_> {
                 }
                 let val = match t.val {
                     Some(Value::Sym(s)) => Some(Value::Sym(Sym::times(s, Sym::Name("deg".into())))),
+                    Some(v @ Value::Formula { .. }) => super::formula::scalar_of(&v).map(|x| {
+                        let deg = crate::sym::Expr::pi().scale(&crate::sym::coef::Coef::rat(
+                            crate::sym::coef::Rat::new(1, 180)
+                                .unwrap_or(crate::sym::coef::Rat::ONE),
+                        ));
+                        super::formula::scalar(x.mul(&deg))
+                    }),
                     Some(v) => Some(Value::scalar(
                         v.as_scalar().unwrap_or(f64::NAN) * PI / 180.0,
                     )),
@@ -151,6 +136,10 @@ impl Interp<'_> {
                     } else {
                         Sym::Member(Box::new(s), member.name.clone())
                     })),
+                    Some(v @ Value::Formula { .. }) => Some(
+                        super::formula::member(&v, &member.name)
+                            .map_err(|m| Diagnostic::error(ErrorKind::Type, member.span, m))?,
+                    ),
                     Some(v) => Some(
                         ops::member(&v, &member.name)
                             .map_err(|m| Diagnostic::error(ErrorKind::Type, member.span, m))?,
@@ -186,6 +175,9 @@ impl Interp<'_> {
                     None
                 },
             });
+        }
+        if let Some(d) = self.derivative_symbol(name) {
+            return Ok(d);
         }
         match name {
             "inf" | "Inf" | "∞" => {
@@ -301,6 +293,10 @@ impl Interp<'_> {
             }
         };
         let val = match (l.val, r.val) {
+            (Some(a), Some(b)) if super::formula::applies(&[&a, &b]) => Some(
+                super::formula::binary(op, &a, &b, &ty.kind)
+                    .map_err(|m| self.domain(op_span, m))?,
+            ),
             (Some(a), Some(b)) if a.is_symbolic() || b.is_symbolic() => {
                 let (a, b) = (to_sym(&a), to_sym(&b));
                 Some(Value::Sym(match op {
@@ -379,6 +375,11 @@ impl Interp<'_> {
                 });
                 continue;
             }
+            // diff(x, t): the variable may be a name with no value (time).
+            if let Some(t) = self.time_variable(b.name, i, a) {
+                typed.push(t);
+                continue;
+            }
             typed.push(self.expr(a)?);
         }
         // `rot_zyx(euler_zyx(R))`: one tuple as the arguments.
@@ -426,7 +427,20 @@ impl Interp<'_> {
             .map(|t| t.val.unwrap_or_else(|| Value::scalar(f64::NAN)))
             .collect();
         super::list::numbers_only(b, &vals, span)?;
-        if vals.iter().any(Value::is_symbolic) {
+        let refs: Vec<&Value> = vals.iter().collect();
+        if super::formula::applies(&refs)
+            && let Some(v) = builtins::eval_symbolic(b.name, &vals, &ty.kind)
+        {
+            let val = Some(v.map_err(|m| self.domain(span, m))?);
+            return Ok(Typed {
+                ty: refine(ty, &val),
+                val,
+            });
+        }
+        if vals
+            .iter()
+            .any(|v| v.is_symbolic() || matches!(v, Value::Formula { .. }))
+        {
             let sym = match b.name {
                 "inv" | "RotInv" | "TransInv" => to_sym(&vals[0]).inverse(),
                 _ => Sym::Call(name.to_string(), vals.iter().map(to_sym).collect()),

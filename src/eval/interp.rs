@@ -178,7 +178,7 @@ impl<'a> Interp<'a> {
                 o.parts = bound.into_iter().map(|b| b.ty).collect();
                 Ok(o)
             }
-            StmtKind::Given { names, ty } => {
+            StmtKind::Given { names, ty, times } => {
                 let kind = given_kind(&ty.name).ok_or_else(|| {
                     Diagnostic::error(
                         ErrorKind::Type,
@@ -189,13 +189,26 @@ impl<'a> Interp<'a> {
                         "given types: scalar vec3 vec6 SO3 SE3 SO2 SE2 so3 se3 twist screw wrench",
                     )
                 })?;
-                for n in names {
+                for (n, time) in names.iter().zip(times) {
+                    if let Some(t) = time {
+                        self.bind_time(t, &kind)?;
+                    }
                     let frames = bind::claimed_frames(&n.name, &kind);
+                    // A scalar is computed with (§7); other kinds stay names.
+                    let val = if kind == Kind::Scalar {
+                        let s = match time {
+                            Some(_) => crate::sym::Symbol::timed(&n.name),
+                            None => crate::sym::Symbol::new(&n.name),
+                        };
+                        super::formula::scalar(crate::sym::Expr::symbol(s))
+                    } else {
+                        Value::Sym(super::value::Sym::Name(n.name.clone()))
+                    };
                     self.env.set(
                         &n.name,
                         Binding {
                             ty: Ty::new(kind.clone(), frames),
-                            val: Some(Value::Sym(super::symbolic::Sym::Name(n.name.clone()))),
+                            val: Some(val),
                             symbolic: true,
                         },
                     );
@@ -445,6 +458,34 @@ impl<'a> Interp<'a> {
                 }
             })
             .collect())
+    }
+}
+
+impl Interp<'_> {
+    /// `given theta(t) : scalar` also declares the time variable `t` (unless
+    /// it already has a value); only a scalar is a function of time.
+    fn bind_time(&mut self, t: &crate::syntax::ast::Ident, kind: &Kind) -> Result<(), Diagnostic> {
+        if *kind != Kind::Scalar {
+            return Err(Diagnostic::error(
+                ErrorKind::Type,
+                t.span,
+                format!("only a scalar can be a function of time, not {}", kind.a()),
+            )
+            .with_help("given theta(t) : scalar"));
+        }
+        let bound = self.env.get(&t.name).is_some_and(|b| !b.symbolic);
+        if !bound {
+            let time = crate::sym::Expr::symbol(crate::sym::Symbol::timed(&t.name));
+            self.env.set(
+                &t.name,
+                Binding {
+                    ty: Ty::scalar(),
+                    val: Some(super::formula::scalar(time)),
+                    symbolic: true,
+                },
+            );
+        }
+        Ok(())
     }
 }
 

@@ -12,5 +12,6 @@ pub mod interp;
 pub mod list;
 mod notation;
 mod substitute;
+mod symbols;
 
-pub use crate::values::{convert, ops, symbolic, value};
+pub use crate::values::{convert, formula, ops, symbolic, value};

@@ -10,11 +10,21 @@ use nalgebra::DMatrix;
 
 use super::convert;
 use super::env::{Binding, Env};
-use super::expr::to_sym;
 use super::ops;
-use super::symbolic::Sym;
+use super::value::Sym;
 use super::value::Value;
 use crate::check::ty::Kind;
+
+/// A value as a symbolic operand (numbers become constants).
+pub(crate) fn to_sym(v: &Value) -> Sym {
+    match v {
+        Value::Sym(s) => s.clone(),
+        other => Sym::Const(
+            Box::new(other.clone()),
+            crate::values::format::inline(other, 4),
+        ),
+    }
+}
 
 /// The value of a binding as of now: a value derived from symbols has the
 /// numbers bound since substituted ([`resolve`]); a numeric result takes
@@ -26,8 +36,22 @@ pub fn current(b: &Binding, env: &Env) -> Option<Value> {
             Sym::Const(v, _) => retag(*v, &b.ty.kind),
             s => Value::Sym(s),
         }),
+        Value::Formula { kind, m } if !b.symbolic => Some(formula(kind, m, env)),
         v => Some(v.clone()),
     }
+}
+
+/// A formula with the numbers bound since substituted (numeric when all
+/// its symbols have numbers).
+fn formula(kind: &Kind, m: &crate::sym::Mat, env: &Env) -> Value {
+    let lookup = |name: &str| match env.get(name) {
+        Some(Binding {
+            val: Some(v @ Value::Num { .. }),
+            ..
+        }) => v.as_scalar(),
+        _ => None,
+    };
+    super::formula::substitute(kind, m, &lookup)
 }
 
 /// `v` with the checker's kind, unless that is only a shape (a plain
@@ -51,7 +75,11 @@ pub fn resolve(s: &Sym, env: &Env) -> Sym {
             _ if n == "deg" => to_sym(&Value::scalar(std::f64::consts::PI / 180.0)),
             _ => s.clone(),
         },
-        Sym::Const(..) | Sym::Identity => s.clone(),
+        Sym::Const(v, _) => match &**v {
+            Value::Formula { kind, m } => to_sym(&formula(kind, m, env)),
+            _ => s.clone(),
+        },
+        Sym::Identity => s.clone(),
         Sym::Product(fs) => {
             let mut out: Vec<Sym> = Vec::new();
             for f in fs.iter().map(|f| resolve(f, env)) {
@@ -127,6 +155,26 @@ pub fn resolve(s: &Sym, env: &Env) -> Sym {
             vals.and_then(|v| ops::brackets(&v).ok())
                 .map(constant)
                 .unwrap_or(Sym::Block(rows))
+        }
+        Sym::Vector(parts) => {
+            let parts: Vec<Sym> = parts.iter().map(|x| resolve(x, env)).collect();
+            let vals: Option<Vec<f64>> = parts
+                .iter()
+                .map(|x| num(x).and_then(Value::as_scalar))
+                .collect();
+            match vals {
+                Some(xs) => constant(Value::vector(Kind::Vector(Some(xs.len())), &xs)),
+                None => Sym::Vector(parts),
+            }
+        }
+        Sym::Index(x, sels) => {
+            let x = resolve(x, env);
+            let sel: Vec<ops::Sel> = sels
+                .iter()
+                .map(|s| s.map_or(ops::Sel::All, ops::Sel::At))
+                .collect();
+            unary(&x, |v| ops::index(v, &sel))
+                .unwrap_or_else(|| Sym::Index(Box::new(x), sels.clone()))
         }
         Sym::Call(name, args) => {
             let args: Vec<Sym> = args.iter().map(|a| resolve(a, env)).collect();

@@ -47,6 +47,7 @@ pub fn value(v: &Value) -> J {
             "shows": p.summary,
             "panels": p.panels.len(),
         }),
+        Value::Formula { m, .. } => json!(crate::values::format::formula_inline(m, 17.into())),
     }
 }
 
@@ -61,17 +62,26 @@ pub fn outcome(o: &Outcome, line: usize) -> Option<J> {
         _ => json!(format!("({})", o.names.join(", "))),
     };
     let ty = match &o.val {
-        Some(Value::Sym(_)) => "symbolic",
+        Some(Value::Sym(_) | Value::Formula { .. }) => "symbolic",
         Some(v) => type_name(&v.kind()),
         None => type_name(&o.ty.kind),
     };
-    Some(json!({
+    let mut out = json!({
         "line": line,
         "name": name,
         "type": ty,
         "frames": o.ty.frames.to_list(),
         "value": o.val.as_ref().map_or(J::Null, value),
-    }))
+    });
+    // A symbolic value carries its LaTeX and what it is (§7).
+    if let (Some(Value::Formula { m, kind }), Some(obj)) = (&o.val, out.as_object_mut()) {
+        obj.insert(
+            "latex".into(),
+            json!(crate::values::format::formula_latex(m, 17.into())),
+        );
+        obj.insert("kind".into(), json!(kind.json_name()));
+    }
+    Some(out)
 }
 
 fn type_name(k: &Kind) -> &'static str {

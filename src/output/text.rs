@@ -226,6 +226,10 @@ fn write_value(out: &mut String, prefix: &str, ty: &Ty, v: &Value, style: Style)
             out.push_str(prefix);
             write_matrix_block(out, m, style, width(prefix));
         }
+        Value::Formula { m, .. } => {
+            out.push_str(prefix);
+            out.push_str(&super::formula::block(m, style, width(prefix)));
+        }
         Value::Mech(mech) => {
             if !prefix.is_empty() {
                 out.push_str(prefix.trim_end());
@@ -240,7 +244,9 @@ fn write_value(out: &mut String, prefix: &str, ty: &Ty, v: &Value, style: Style)
         }
     }
     let at = out.len();
-    out.push_str("  : ");
+    // In LaTeX the label is a comment, so the line stays valid LaTeX (§7).
+    let latex = style.sym == crate::sym::print::Mode::Latex && matches!(v, Value::Formula { .. });
+    out.push_str(if latex { "  % " } else { "  : " });
     if !write_type_label(out, ty, Some(v)) {
         out.truncate(at);
     }

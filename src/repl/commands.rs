@@ -71,6 +71,16 @@ pub const COMMANDS: &[Command] = &[
         doc: "toggle closed forms: 1/√2, √3/2, π/6 instead of decimals",
     },
     Command {
+        name: "short",
+        args: "[on|off]",
+        doc: "symbolic values in the book's shorthand: c₁, s₁₂ (§7)",
+    },
+    Command {
+        name: "latex",
+        args: "[on|off]",
+        doc: "symbolic values as LaTeX: bmatrix, \\theta_1 (§7)",
+    },
+    Command {
         name: "open",
         args: "",
         doc: "open the last picture written with the system viewer (§12)",
@@ -197,6 +207,8 @@ pub fn command(session: &mut Session, input: &str) -> Reply {
         "history" => Reply::out(super::save::history(session)),
         "digits" => digits(session, arg),
         "exact" => exact(session, arg),
+        "short" => sym_mode(session, arg, crate::sym::print::Mode::Short),
+        "latex" => sym_mode(session, arg, crate::sym::print::Mode::Latex),
         "open" => super::open::open(session),
         "quit" | "q" | "exit" => Reply {
             quit: true,
@@ -371,6 +383,25 @@ fn digits(session: &mut Session, arg: &str) -> Reply {
             "':digits {arg}': expected a whole number from 0 to 17"
         )),
     }
+}
+
+/// `:short [on|off]`, `:latex [on|off]`: toggles (or sets) how symbolic
+/// values print.
+fn sym_mode(session: &mut Session, arg: &str, mode: crate::sym::print::Mode) -> Reply {
+    use crate::sym::print::Mode;
+    let name = if mode == Mode::Short {
+        "short"
+    } else {
+        "latex"
+    };
+    let on = match arg {
+        "" => session.settings.sym != mode,
+        "on" => true,
+        "off" => false,
+        _ => return Reply::err(format!("':{name} {arg}': expected on, off or nothing")),
+    };
+    session.settings.sym = if on { mode } else { Mode::Text };
+    Reply::out(format!("{name}: {}", if on { "on" } else { "off" }))
 }
 
 /// `:exact [on|off]`: toggles (or sets) closed-form printing.

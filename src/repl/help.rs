@@ -50,6 +50,11 @@ given T_ab, T_bc : SE3      symbols with a type and frames but no numbers
   types: scalar vec3 vec6 SO3 SE3 SO2 SE2 so3 se3 twist screw wrench
   T_ab * T_bc               → T_ab T_bc : SE(3) {a}←{c}, checked like numbers
   inv(T_ab) * T_ab          → I
+given t1, t2, L1 : scalar   symbols computed with (§7): Rotz(t1), exp([S] t1)
+  Rotz(t1) Rotz(t2)         → [cos(t1 + t2), …]: angle sums folded, sin² + cos² = 1
+  simplify(x), x == y       the canonical form; equality with no numbers
+given theta(t) : scalar     a function of time: theta' is θ̇, diff(R, t) R^T = [ω_s]
+:short, :latex              print c₁₂ or LaTeX (also --short, --latex)
 binding numbers later makes them numeric",
     ),
 ];

@@ -36,7 +36,13 @@ pub enum StmtKind {
     /// `given T_ab, T_bc : SE3` — symbols with a type and frames, no numbers.
     /// `ty` is the type name as written (`scalar vec3 vec6 SO3 SE3 SO2 SE2
     /// so3 se3 twist screw wrench`); the checker validates it.
-    Given { names: Vec<Ident>, ty: Ident },
+    /// `times[i]` is the time variable of a function of time,
+    /// `given theta(t) : scalar` (§7).
+    Given {
+        names: Vec<Ident>,
+        ty: Ident,
+        times: Vec<Option<Ident>>,
+    },
     /// `f(x, y) = expr` — a user function.
     FnDef {
         name: Ident,

@@ -223,16 +223,20 @@ impl Cx {
                 }
             }
             Rule::given_stmt => {
-                let mut names = Vec::new();
+                let (mut names, mut times, mut ty) = (Vec::new(), Vec::new(), None);
                 for p in form.into_inner() {
                     match p.as_rule() {
                         Rule::kw_given => {}
-                        Rule::given_type => names.push(self.given_type(&p)),
-                        _ => names.push(self.ident(p)?),
+                        Rule::given_type => ty = Some(self.given_type(&p)),
+                        _ => {
+                            let mut parts = p.into_inner().map(|x| self.ident(x));
+                            names.push(parts.next().ok_or_else(|| self.internal(whole))??);
+                            times.push(parts.next().transpose()?); // `theta(t)`
+                        }
                     }
                 }
-                let ty = names.pop().ok_or_else(|| self.internal(whole))?;
-                Ok(StmtKind::Given { names, ty })
+                let ty = ty.ok_or_else(|| self.internal(whole))?;
+                Ok(StmtKind::Given { names, ty, times })
             }
             Rule::assert_stmt => match form.into_inner().find(|p| p.as_rule() == Rule::expr) {
                 Some(p) => Ok(StmtKind::Assert(self.expr(p)?.0)),

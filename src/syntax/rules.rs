@@ -41,6 +41,7 @@ pub(crate) fn rule_name(rule: Rule) -> &'static str {
         Rule::WHITESPACE => "a space",
         Rule::statement => "a statement",
         Rule::given_stmt => "a `given` statement",
+        Rule::given_name => "a name (or a function of time, `theta(t)`)",
         Rule::derive_stmt => "a `derive` statement",
         Rule::assert_stmt => "an `assert` statement",
         Rule::fn_def => "a function definition",
@@ -245,6 +246,7 @@ fn is_container(rule: Rule) -> bool {
         rule,
         Rule::statement
             | Rule::given_stmt
+            | Rule::given_name
             | Rule::derive_stmt
             | Rule::assert_stmt
             | Rule::fn_def

@@ -1,13 +1,16 @@
 //! Values and numbers on one line, for people: the [`Style`] of numbers
 //! (LANGUAGE.md §10, `--digits` and the REPL's `:exact`) and [`inline`],
 //! the one-line form of a value that also names constants inside symbolic
-//! expressions. Below evaluation, so the evaluator can print without
+//! expressions, and symbolic values in text, shorthand or LaTeX
+//! ([`formula_inline`], [`formula_latex`]). Below evaluation, so the evaluator can print without
 //! importing the output layer; multi-line blocks and JSON are in `output`.
 
 use std::fmt::Write;
 
 use super::number::write_num;
 use super::value::Value;
+use crate::sym::Mat;
+use crate::sym::print::{self, Mode};
 
 /// How numbers print: `digits` decimals (trailing zeros trimmed), or with
 /// `exact`, a closed form such as `1/√2` or `π/6` where one is within
@@ -18,6 +21,8 @@ pub struct Style {
     pub digits: usize,
     /// Print simple closed forms (`√3/2`, `-π/2`) instead of decimals.
     pub exact: bool,
+    /// Symbolic values: plain text, the book's shorthand or LaTeX (§7).
+    pub sym: Mode,
 }
 
 impl Style {
@@ -29,7 +34,8 @@ impl Style {
     }
     /// One number in this style, appended to `out`.
     pub fn write(self, out: &mut String, x: f64) {
-        match self.exact.then(|| super::exact::closed_form(x)).flatten() {
+        let exact = self.exact && self.sym != Mode::Latex;
+        match exact.then(|| super::exact::closed_form(x)).flatten() {
             Some(form) => out.push_str(&form),
             None => write_num(out, x, self.digits),
         }
@@ -41,6 +47,7 @@ impl From<usize> for Style {
         Style {
             digits,
             exact: false,
+            sym: Mode::Text,
         }
     }
 }
@@ -131,6 +138,7 @@ pub fn write_inline(out: &mut String, v: &Value, style: Style) {
             let _ = write!(out, "{t:?}");
         }
         Value::Picture(p) => out.push_str(&picture(p)),
+        Value::Formula { m, .. } => out.push_str(&formula_inline(m, style)),
     }
 }
 
@@ -148,4 +156,41 @@ fn picture(p: &super::value::Picture) -> String {
         Some(f) => format!("picture: {} → {f}", p.summary),
         None => format!("picture: {}", p.summary),
     }
+}
+
+fn sym_style(style: Style) -> print::Style {
+    print::Style {
+        mode: style.sym,
+        digits: style.digits,
+    }
+}
+
+/// A formula on one line: `cos(t)`, `(L1 cos(t1), L1 sin(t1), 0)`,
+/// `[cos(t), -sin(t); sin(t), cos(t)]`; LaTeX in that mode (§7).
+pub fn formula_inline(m: &Mat, style: Style) -> String {
+    let st = sym_style(style);
+    if st.mode == Mode::Latex {
+        return formula_latex(m, style);
+    }
+    let cells: Vec<String> = m.data.iter().map(|e| print::expr(e, st)).collect();
+    match (m.rows, m.cols) {
+        (1, 1) => cells[0].clone(),
+        (_, 1) => format!("({})", cells.join(", ")),
+        _ => {
+            let rows: Vec<String> = cells.chunks(m.cols).map(|r| r.join(", ")).collect();
+            format!("[{}]", rows.join("; "))
+        }
+    }
+}
+
+/// LaTeX math: an expression, or a `bmatrix` (vectors as a column).
+pub fn formula_latex(m: &Mat, style: Style) -> String {
+    let st = print::Style {
+        mode: Mode::Latex,
+        digits: style.digits,
+    };
+    if m.data.len() == 1 {
+        return print::expr(&m.data[0], st);
+    }
+    print::matrix(&m.row_vecs(), st, 0, usize::MAX)
 }

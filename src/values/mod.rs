@@ -11,6 +11,7 @@
 pub mod convert;
 pub mod exact;
 pub mod format;
+pub mod formula;
 pub mod number;
 pub mod ops;
 pub mod symbolic;

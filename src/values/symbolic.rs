@@ -1,45 +1,52 @@
 //! Symbolic expressions over `given` names (LANGUAGE.md §7): products of
 //! transforms simplify (inverse pairs and identities cancel) and print as
-//! the book writes them, `T_ab T_bc T_cd`.
+//! the book writes them, `T_ab T_bc T_cd`. The tree is generic over the
+//! values it holds as constants (the evaluator's `Value`), so this module
+//! needs nothing from the value layer.
 
 use std::fmt;
 
-use super::value::Value;
-
-/// An expression over symbols. Products are kept flat so that
-/// `inv(T_ab) * T_ab` cancels to `I`.
+/// An expression over symbols, holding constants of type `C`. Products are
+/// kept flat so that `inv(T_ab) * T_ab` cancels to `I`.
 #[derive(Debug, Clone)]
-pub enum Sym {
+pub enum Tree<C> {
     /// A `given` name.
     Name(String),
-    /// A number or matrix inside a symbolic expression, printed compactly.
-    Const(Box<Value>, String),
+    /// A number or matrix inside a symbolic expression, with its compact
+    /// text (for printing only; constants compare by value).
+    Const(Box<C>, String),
     /// The identity (what cancelled products leave).
     Identity,
-    Product(Vec<Sym>),
-    Inv(Box<Sym>),
-    Neg(Box<Sym>),
-    Add(Box<Sym>, Box<Sym>),
-    Sub(Box<Sym>, Box<Sym>),
-    Div(Box<Sym>, Box<Sym>),
-    Pow(Box<Sym>, Box<Sym>),
+    Product(Vec<Tree<C>>),
+    Inv(Box<Tree<C>>),
+    Neg(Box<Tree<C>>),
+    Add(Box<Tree<C>>, Box<Tree<C>>),
+    Sub(Box<Tree<C>>, Box<Tree<C>>),
+    Div(Box<Tree<C>>, Box<Tree<C>>),
+    Pow(Box<Tree<C>>, Box<Tree<C>>),
     /// `[x]`, the book's bracket.
-    Bracket(Box<Sym>),
-    Transpose(Box<Sym>),
-    Member(Box<Sym>, String),
-    Call(String, Vec<Sym>),
+    Bracket(Box<Tree<C>>),
+    Transpose(Box<Tree<C>>),
+    Member(Box<Tree<C>>, String),
+    Call(String, Vec<Tree<C>>),
     /// A matrix literal with a symbol among its entries, `[1, theta; 0, 1]`,
     /// row by row (MATLAB block concatenation, LANGUAGE.md §4).
-    Block(Vec<Vec<Sym>>),
+    Block(Vec<Vec<Tree<C>>>),
+    /// A vector `(a, b, c)` with a symbol among its entries.
+    Vector(Vec<Tree<C>>),
+    /// `x[i]`, `M[i, j]`, `M[:, j]` (1-based; `None` is `:`).
+    Index(Box<Tree<C>>, Vec<Option<f64>>),
 }
 
-impl PartialEq for Sym {
-    /// Structural equality; constants compare by their printed text.
-    fn eq(&self, other: &Sym) -> bool {
-        use Sym::*;
+impl<C: PartialEq> PartialEq for Tree<C> {
+    /// Structural equality; constants compare by value.
+    fn eq(&self, other: &Tree<C>) -> bool {
+        use Tree::*;
         match (self, other) {
             (Name(a), Name(b)) => a == b,
-            (Const(_, a), Const(_, b)) => a == b,
+            (Const(a, _), Const(b, _)) => a == b,
+            (Vector(a), Vector(b)) => a == b,
+            (Index(a, i), Index(b, j)) => a == b && i == j,
             (Identity, Identity) => true,
             (Product(a), Product(b)) => a == b,
             (Inv(a), Inv(b))
@@ -65,7 +72,7 @@ impl PartialEq for Sym {
 pub const MAX_SYM_NODES: usize = 10_000;
 pub const MAX_SYM_DEPTH: usize = 1_000;
 
-impl Sym {
+impl<C: Clone + PartialEq> Tree<C> {
     /// True when the expression has more than [`MAX_SYM_NODES`] nodes or is
     /// deeper than [`MAX_SYM_DEPTH`] (counted without recursion, stopping
     /// at the limit).
@@ -78,15 +85,18 @@ impl Sym {
                 return true;
             }
             match s {
-                Sym::Name(_) | Sym::Const(..) | Sym::Identity => {}
-                Sym::Product(v) | Sym::Call(_, v) => todo.extend(v.iter().map(|c| (c, depth + 1))),
-                Sym::Block(rows) => todo.extend(rows.iter().flatten().map(|c| (c, depth + 1))),
-                Sym::Inv(a)
-                | Sym::Neg(a)
-                | Sym::Bracket(a)
-                | Sym::Transpose(a)
-                | Sym::Member(a, _) => todo.push((a, depth + 1)),
-                Sym::Add(a, b) | Sym::Sub(a, b) | Sym::Div(a, b) | Sym::Pow(a, b) => {
+                Tree::Name(_) | Tree::Const(..) | Tree::Identity => {}
+                Tree::Product(v) | Tree::Call(_, v) | Tree::Vector(v) => {
+                    todo.extend(v.iter().map(|c| (c, depth + 1)))
+                }
+                Tree::Index(a, _) => todo.push((a, depth + 1)),
+                Tree::Block(rows) => todo.extend(rows.iter().flatten().map(|c| (c, depth + 1))),
+                Tree::Inv(a)
+                | Tree::Neg(a)
+                | Tree::Bracket(a)
+                | Tree::Transpose(a)
+                | Tree::Member(a, _) => todo.push((a, depth + 1)),
+                Tree::Add(a, b) | Tree::Sub(a, b) | Tree::Div(a, b) | Tree::Pow(a, b) => {
                     todo.push((a, depth + 1));
                     todo.push((b, depth + 1));
                 }
@@ -96,41 +106,41 @@ impl Sym {
     }
 
     /// The inverse, pushed through products: inv(A B) = inv(B) inv(A).
-    pub fn inverse(self) -> Sym {
+    pub fn inverse(self) -> Tree<C> {
         match self {
-            Sym::Inv(x) => *x,
-            Sym::Identity => Sym::Identity,
-            Sym::Product(fs) => Sym::product(fs.into_iter().rev().map(Sym::inverse).collect()),
-            other => Sym::Inv(Box::new(other)),
+            Tree::Inv(x) => *x,
+            Tree::Identity => Tree::Identity,
+            Tree::Product(fs) => Tree::product(fs.into_iter().rev().map(Tree::inverse).collect()),
+            other => Tree::Inv(Box::new(other)),
         }
     }
 
     /// The transpose, pushed through products: (A B)ᵀ = Bᵀ Aᵀ, so that the
     /// power (Ad(T_ab) V_b)ᵀ Ad(inv(T_ab))ᵀ F_b simplifies to V_bᵀ F_b
     /// (3.98); (Aᵀ)ᵀ = A and Iᵀ = I.
-    pub fn transpose(self) -> Sym {
+    pub fn transpose(self) -> Tree<C> {
         match self {
-            Sym::Transpose(x) => *x,
-            Sym::Identity => Sym::Identity,
-            Sym::Product(fs) => Sym::product(fs.into_iter().rev().map(Sym::transpose).collect()),
-            other => Sym::Transpose(Box::new(other)),
+            Tree::Transpose(x) => *x,
+            Tree::Identity => Tree::Identity,
+            Tree::Product(fs) => Tree::product(fs.into_iter().rev().map(Tree::transpose).collect()),
+            other => Tree::Transpose(Box::new(other)),
         }
     }
 
     /// `a b`, flattened and simplified.
-    pub fn times(a: Sym, b: Sym) -> Sym {
-        Sym::product(vec![a, b])
+    pub fn times(a: Tree<C>, b: Tree<C>) -> Tree<C> {
+        Tree::product(vec![a, b])
     }
 
     /// A simplified product: nested products flattened, identities dropped,
     /// adjacent `X inv(X)` pairs cancelled.
-    pub fn product(factors: Vec<Sym>) -> Sym {
-        let mut out: Vec<Sym> = Vec::new();
-        let mut stack: Vec<Sym> = factors.into_iter().rev().collect();
+    pub fn product(factors: Vec<Tree<C>>) -> Tree<C> {
+        let mut out: Vec<Tree<C>> = Vec::new();
+        let mut stack: Vec<Tree<C>> = factors.into_iter().rev().collect();
         while let Some(f) = stack.pop() {
             match f {
-                Sym::Product(inner) => stack.extend(inner.into_iter().rev()),
-                Sym::Identity => {}
+                Tree::Product(inner) => stack.extend(inner.into_iter().rev()),
+                Tree::Identity => {}
                 f => {
                     if out.last().is_some_and(|last| last.cancels(&f)) {
                         out.pop();
@@ -141,26 +151,26 @@ impl Sym {
             }
         }
         match out.len() {
-            0 => Sym::Identity,
-            1 => out.pop().unwrap_or(Sym::Identity),
-            _ => Sym::Product(out),
+            0 => Tree::Identity,
+            1 => out.pop().unwrap_or(Tree::Identity),
+            _ => Tree::Product(out),
         }
     }
 
     /// True when `self other` is the identity: `X inv(X)`, `Ad(X) Ad(inv(X))`
     /// ([Ad_T]⁻¹ = [Ad_T⁻¹], §3.3.2), and their transposes.
-    fn cancels(&self, other: &Sym) -> bool {
-        let inverse_pair = |a: &Sym, b: &Sym| match (a, b) {
-            (Sym::Inv(x), y) | (y, Sym::Inv(x)) => **x == *y,
+    fn cancels(&self, other: &Tree<C>) -> bool {
+        let inverse_pair = |a: &Tree<C>, b: &Tree<C>| match (a, b) {
+            (Tree::Inv(x), y) | (y, Tree::Inv(x)) => **x == *y,
             _ => false,
         };
         match (self, other) {
-            (Sym::Call(f, a), Sym::Call(g, b))
+            (Tree::Call(f, a), Tree::Call(g, b))
                 if is_adjoint(f) && is_adjoint(g) && a.len() == 1 && b.len() == 1 =>
             {
                 inverse_pair(&a[0], &b[0])
             }
-            (Sym::Transpose(a), Sym::Transpose(b)) => a.cancels(b),
+            (Tree::Transpose(a), Tree::Transpose(b)) => a.cancels(b),
             (a, b) => inverse_pair(a, b),
         }
     }
@@ -168,7 +178,7 @@ impl Sym {
     fn needs_parens_in_product(&self) -> bool {
         matches!(
             self,
-            Sym::Add(..) | Sym::Sub(..) | Sym::Neg(_) | Sym::Div(..)
+            Tree::Add(..) | Tree::Sub(..) | Tree::Neg(_) | Tree::Div(..)
         )
     }
 }
@@ -177,13 +187,13 @@ fn is_adjoint(name: &str) -> bool {
     matches!(name, "Ad" | "Adjoint" | "adjoint")
 }
 
-impl fmt::Display for Sym {
+impl<C: Clone + PartialEq> fmt::Display for Tree<C> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            Sym::Name(n) => write!(f, "{n}"),
-            Sym::Const(_, text) => write!(f, "{text}"),
-            Sym::Identity => write!(f, "I"),
-            Sym::Product(fs) => {
+            Tree::Name(n) => write!(f, "{n}"),
+            Tree::Const(_, text) => write!(f, "{text}"),
+            Tree::Identity => write!(f, "I"),
+            Tree::Product(fs) => {
                 for (i, x) in fs.iter().enumerate() {
                     if i > 0 {
                         write!(f, " ")?;
@@ -196,50 +206,65 @@ impl fmt::Display for Sym {
                 }
                 Ok(())
             }
-            Sym::Inv(x) => write!(f, "inv({x})"),
-            Sym::Neg(x) => match **x {
-                Sym::Add(..) | Sym::Sub(..) => write!(f, "-({x})"),
+            Tree::Inv(x) => write!(f, "inv({x})"),
+            Tree::Neg(x) => match **x {
+                Tree::Add(..) | Tree::Sub(..) => write!(f, "-({x})"),
                 _ => write!(f, "-{x}"),
             },
-            Sym::Add(a, b) => write!(f, "{a} + {b}"),
-            Sym::Sub(a, b) => match **b {
-                Sym::Add(..) | Sym::Sub(..) => write!(f, "{a} - ({b})"),
+            Tree::Add(a, b) => write!(f, "{a} + {b}"),
+            Tree::Sub(a, b) => match **b {
+                Tree::Add(..) | Tree::Sub(..) => write!(f, "{a} - ({b})"),
                 _ => write!(f, "{a} - {b}"),
             },
-            Sym::Div(a, b) => {
-                let wrap = |s: &Sym| matches!(s, Sym::Add(..) | Sym::Sub(..) | Sym::Product(_));
+            Tree::Div(a, b) => {
+                let wrap =
+                    |s: &Tree<C>| matches!(s, Tree::Add(..) | Tree::Sub(..) | Tree::Product(_));
                 let (l, r) = (a.to_string(), b.to_string());
                 let l = if wrap(a) { format!("({l})") } else { l };
-                let r = if wrap(b) || matches!(**b, Sym::Div(..)) {
+                let r = if wrap(b) || matches!(**b, Tree::Div(..)) {
                     format!("({r})")
                 } else {
                     r
                 };
                 write!(f, "{l}/{r}")
             }
-            Sym::Pow(a, b) => match **a {
-                Sym::Name(_) | Sym::Const(..) => write!(f, "{a}^{b}"),
+            Tree::Pow(a, b) => match **a {
+                Tree::Name(_) | Tree::Const(..) => write!(f, "{a}^{b}"),
                 _ => write!(f, "({a})^{b}"),
             },
-            Sym::Bracket(x) => write!(f, "[{x}]"),
-            Sym::Transpose(x) => match **x {
-                Sym::Name(_) | Sym::Call(..) | Sym::Bracket(_) | Sym::Block(_) => {
+            Tree::Bracket(x) => write!(f, "[{x}]"),
+            Tree::Transpose(x) => match **x {
+                Tree::Name(_) | Tree::Call(..) | Tree::Bracket(_) | Tree::Block(_) => {
                     write!(f, "{x}.T")
                 }
                 _ => write!(f, "({x}).T"),
             },
-            Sym::Member(x, m) => match **x {
-                Sym::Name(_) | Sym::Call(..) => write!(f, "{x}.{m}"),
+            Tree::Member(x, m) => match **x {
+                Tree::Name(_) | Tree::Call(..) => write!(f, "{x}.{m}"),
                 _ => write!(f, "({x}).{m}"),
             },
-            Sym::Block(rows) => {
+            Tree::Block(rows) => {
                 let rows: Vec<String> = rows
                     .iter()
-                    .map(|r| r.iter().map(Sym::to_string).collect::<Vec<_>>().join(", "))
+                    .map(|r| r.iter().map(Tree::to_string).collect::<Vec<_>>().join(", "))
                     .collect();
                 write!(f, "[{}]", rows.join("; "))
             }
-            Sym::Call(name, args) => {
+            Tree::Vector(xs) => {
+                let xs: Vec<String> = xs.iter().map(Tree::to_string).collect();
+                write!(f, "({})", xs.join(", "))
+            }
+            Tree::Index(x, sels) => {
+                let sels: Vec<String> = sels
+                    .iter()
+                    .map(|s| s.map_or(":".to_string(), |i| i.to_string()))
+                    .collect();
+                match **x {
+                    Tree::Name(_) | Tree::Call(..) => write!(f, "{x}[{}]", sels.join(", ")),
+                    _ => write!(f, "({x})[{}]", sels.join(", ")),
+                }
+            }
+            Tree::Call(name, args) => {
                 write!(f, "{name}(")?;
                 for (i, a) in args.iter().enumerate() {
                     if i > 0 {
@@ -256,6 +281,8 @@ impl fmt::Display for Sym {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    type Sym = Tree<()>;
 
     fn n(s: &str) -> Sym {
         Sym::Name(s.into())

@@ -5,10 +5,13 @@ use std::rc::Rc;
 
 use nalgebra::DMatrix;
 
-use super::symbolic::Sym;
+use super::symbolic::Tree;
 use crate::check::ty::{Kind, Ty};
 use crate::mech::Mechanism;
 use crate::syntax::ast::Expr;
+
+/// A symbolic expression over `given` names, with values as constants.
+pub type Sym = Tree<Value>;
 
 /// A user function `f(x, y) = body`.
 #[derive(Debug, Clone, PartialEq)]
@@ -31,12 +34,39 @@ pub enum Value {
     Mech(Rc<Mechanism>),
     /// An expression over `given` symbols (LANGUAGE.md §7).
     Sym(Sym),
+    /// A scalar, vector or matrix whose entries are symbolic scalars in
+    /// canonical form (`Rotz(theta)`), with its kind (LANGUAGE.md §7).
+    Formula {
+        kind: Kind,
+        m: crate::sym::Mat,
+    },
     /// A list (LANGUAGE.md §12): a range `0:4` or a comprehension.
     List(Rc<Vec<Value>>),
     /// A string literal, `"name.svg"`.
     Str(Rc<str>),
     /// A picture made by `draw` (§12).
     Picture(Rc<Picture>),
+}
+
+impl PartialEq for Value {
+    /// Structural equality (numbers exactly, symbolic values by their
+    /// trees and canonical forms; mechanisms and functions by identity).
+    fn eq(&self, other: &Value) -> bool {
+        match (self, other) {
+            (Value::Num { kind: a, m: x }, Value::Num { kind: b, m: y }) => a == b && x == y,
+            (Value::Bool(a), Value::Bool(b)) => a == b,
+            (Value::Tuple(a), Value::Tuple(b)) => a == b,
+            (Value::Mech(a), Value::Mech(b)) => Rc::ptr_eq(a, b),
+            (Value::Sym(a), Value::Sym(b)) => a == b,
+            (Value::Formula { kind: a, m: x }, Value::Formula { kind: b, m: y }) => {
+                a == b && x == y
+            }
+            (Value::List(a), Value::List(b)) => a == b,
+            (Value::Str(a), Value::Str(b)) => a == b,
+            (Value::Picture(a), Value::Picture(b)) => Rc::ptr_eq(a, b),
+            _ => false,
+        }
+    }
 }
 
 impl Value {
@@ -75,6 +105,7 @@ impl Value {
             Value::Tuple(vs) => Kind::Tuple(vs.iter().map(Value::kind).collect()),
             Value::Mech(_) => Kind::Mechanism,
             Value::Sym(_) => Kind::Unknown,
+            Value::Formula { kind, .. } => kind.clone(),
             Value::List(vs) => Kind::List(Box::new(common_kind(vs))),
             Value::Str(_) => Kind::Text,
             Value::Picture(_) => Kind::Picture,

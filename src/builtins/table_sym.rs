@@ -1,0 +1,365 @@
+//! Builtins on symbolic values (LANGUAGE.md §7): the closed form of every
+//! builtin that §7 lists when an argument has symbolic entries — Rot and
+//! Rotx/y/z and exp of so(3) by Rodrigues (3.51), exp of se(3) by
+//! Proposition 3.16, inverses by transpose, the adjoint (Definition 3.20),
+//! [x], cross, dot, det, trace, the Euler/RPY/quaternion maps — and the
+//! builtins of symbols themselves: `diff(x, t)` (chain rule, §3.2.2's
+//! Ṙ Rᵀ = [ω_s]) and `simplify(x)`.
+
+use super::{Area, ArgError, Args, Builtin, Typing};
+use crate::check::ty::{Kind, Ty};
+use crate::diagnostics::Diagnostic;
+use crate::sym::Expr;
+use crate::sym::expr::{Func, Wrt, as_symbol};
+use crate::sym::matrix::{self as sm, Mat};
+use crate::values::formula::{self, make, mat_of, scalar, scalar_of};
+use crate::values::value::Value;
+
+type Out = Option<Result<Value, String>>;
+
+fn ok(v: Value) -> Out {
+    Some(Ok(v))
+}
+
+/// A constant vector's unit direction as expressions: ω/‖ω‖, exact when
+/// ‖ω‖ is a closed form.
+fn unit(v: &Mat) -> Option<Vec<Expr>> {
+    let n2 = v
+        .data
+        .iter()
+        .fold(Expr::zero(), |acc, x| acc.add(&x.mul(x)));
+    n2.as_const()?;
+    let inv = Expr::sqrt(&n2).recip()?;
+    Some(v.data.iter().map(|x| x.mul(&inv)).collect())
+}
+
+fn vec3(e: &[Expr]) -> Value {
+    make(&Kind::Vector(Some(3)), Mat::column(e.to_vec()))
+}
+
+fn cross(a: &[Expr], b: &[Expr]) -> Vec<Expr> {
+    let c = |i: usize, j: usize| a[i].mul(&b[j]).sub(&a[j].mul(&b[i]));
+    vec![c(1, 2), c(2, 0), c(0, 1)]
+}
+
+fn dot(a: &[Expr], b: &[Expr]) -> Expr {
+    a.iter()
+        .zip(b)
+        .fold(Expr::zero(), |acc, (x, y)| acc.add(&x.mul(y)))
+}
+
+/// Rotz(a) Roty(b) Rotx(c) and the like: a product of axis rotations.
+fn rot_chain(axes: [usize; 3], angles: [&Expr; 3]) -> Option<Mat> {
+    let r = sm::rot_axis(axes[0], angles[0]).mul(&sm::rot_axis(axes[1], angles[1]))?;
+    r.mul(&sm::rot_axis(axes[2], angles[2]))
+}
+
+/// The rotation of a unit quaternion (w, x, y, z) (Appendix B).
+fn rot_quat(q: &[Expr]) -> Mat {
+    let two = Expr::int(2);
+    let p = |i: usize, j: usize| q[i].mul(&q[j]).mul(&two);
+    let one = Expr::one();
+    let rows = vec![
+        vec![
+            one.sub(&p(2, 2)).sub(&p(3, 3)),
+            p(1, 2).sub(&p(0, 3)),
+            p(1, 3).add(&p(0, 2)),
+        ],
+        vec![
+            p(1, 2).add(&p(0, 3)),
+            one.sub(&p(1, 1)).sub(&p(3, 3)),
+            p(2, 3).sub(&p(0, 1)),
+        ],
+        vec![
+            p(1, 3).sub(&p(0, 2)),
+            p(2, 3).add(&p(0, 1)),
+            one.sub(&p(1, 1)).sub(&p(2, 2)),
+        ],
+    ];
+    Mat::from_rows(rows).unwrap_or_else(|| Mat::zeros(3, 3))
+}
+
+/// ZYX Euler angles (a, b, c) of R = Rotz(a) Roty(b) Rotx(c), cos b > 0.
+fn euler_zyx(r: &Mat) -> Option<Vec<Expr>> {
+    let g = |i: usize, j: usize| r.get(i, j).clone();
+    // cos b ≡ 0 is gimbal lock, where numbers choose one of a, c
+    if g(0, 0).is_zero() && g(1, 0).is_zero() {
+        return None;
+    }
+    let c = Expr::sqrt(&g(2, 1).mul(&g(2, 1)).add(&g(2, 2).mul(&g(2, 2))));
+    Some(vec![
+        Expr::atan2(&g(1, 0), &g(0, 0)),
+        Expr::atan2(&g(2, 0).neg(), &c),
+        Expr::atan2(&g(2, 1), &g(2, 2)),
+    ])
+}
+
+/// ZXZ Euler angles (a, b, c) of R = Rotz(a) Rotx(b) Rotz(c), sin b > 0.
+fn euler_zxz(r: &Mat) -> Option<Vec<Expr>> {
+    let g = |i: usize, j: usize| r.get(i, j).clone();
+    // sin b ≡ 0 is the singular case, where numbers choose c = 0
+    if g(0, 2).is_zero() && g(1, 2).is_zero() {
+        return None;
+    }
+    let s = Expr::sqrt(&g(0, 2).mul(&g(0, 2)).add(&g(1, 2).mul(&g(1, 2))));
+    Some(vec![
+        Expr::atan2(&g(0, 2), &g(1, 2).neg()),
+        Expr::atan2(&s, &g(2, 2)),
+        Expr::atan2(&g(2, 0), &g(2, 1)),
+    ])
+}
+
+/// The unit quaternion (w, x, y, z) of R, w = √(1 + tr R)/2 ≥ 0 (Appendix B).
+fn quat(r: &Mat) -> Option<Vec<Expr>> {
+    let g = |i: usize, j: usize| r.get(i, j).clone();
+    let w = Expr::sqrt(&Expr::one().add(&r.trace())).mul(&Expr::num(0.5));
+    let k = w.scale(&crate::sym::coef::Coef::int(4)).recip()?;
+    Some(vec![
+        w,
+        g(2, 1).sub(&g(1, 2)).mul(&k),
+        g(0, 2).sub(&g(2, 0)).mul(&k),
+        g(1, 0).sub(&g(0, 1)).mul(&k),
+    ])
+}
+
+fn tuple(parts: Vec<Value>) -> Value {
+    Value::Tuple(parts)
+}
+
+/// The symbolic path of builtin `name`: None when it has none (the call is
+/// then kept as a call over the symbols).
+pub fn eval_symbolic(name: &str, vals: &[Value], kind: &Kind) -> Out {
+    let ms: Vec<Mat> = vals.iter().map(mat_of).collect::<Option<_>>()?;
+    let shape = |i: usize| (ms[i].rows, ms[i].cols);
+    let s = |i: usize| scalar_of(&vals[i]);
+    match (name, ms.len()) {
+        ("Rotx" | "Roty" | "Rotz", 1) => {
+            let axis = ["Rotx", "Roty", "Rotz"].iter().position(|n| *n == name)?;
+            ok(make(&Kind::SO3, sm::rot_axis(axis, &s(0)?)))
+        }
+        ("Rot", 2) if shape(0) == (3, 1) => {
+            ok(make(&Kind::SO3, sm::rodrigues(&unit(&ms[0])?, &s(1)?)))
+        }
+        ("exp" | "MatrixExp3" | "MatrixExp6", 1) => exp(&ms[0], kind),
+        ("inv", 1) => ok(make(kind, formula::inverse(&vals[0].kind(), &ms[0])?)),
+        ("RotInv", 1) if shape(0) == (3, 3) => ok(make(&Kind::SO3, ms[0].transpose())),
+        ("TransInv", 1) if shape(0) == (4, 4) => ok(make(&Kind::SE3, sm::trans_inv(&ms[0])?)),
+        ("Adjoint", 1) if shape(0) == (4, 4) => ok(make(kind, sm::adjoint(&ms[0])?)),
+        ("VecToso3", 1) if shape(0) == (3, 1) => ok(make(&Kind::So3, sm::skew(&ms[0].data))),
+        ("VecTose3", 1) if shape(0) == (6, 1) => {
+            ok(make(&Kind::Se3, sm::twist_matrix(&ms[0].data)))
+        }
+        ("so3ToVec" | "vee", 1) if shape(0) == (3, 3) => ok(vec3(&sm::unskew(&ms[0]))),
+        ("se3ToVec" | "vee", 1) if shape(0) == (4, 4) => {
+            let mut v = sm::unskew(&ms[0].block(0..3, 0..3));
+            v.extend(ms[0].block(0..3, 3..4).data);
+            ok(make(&Kind::Twist, Mat::column(v)))
+        }
+        ("cross", 2) if shape(0) == (3, 1) && shape(1) == (3, 1) => {
+            ok(vec3(&cross(&ms[0].data, &ms[1].data)))
+        }
+        ("dot", 2) if shape(0) == shape(1) => ok(scalar(dot(&ms[0].data, &ms[1].data))),
+        ("norm", 1) if ms[0].cols == 1 => ok(scalar(Expr::sqrt(&dot(&ms[0].data, &ms[0].data)))),
+        ("det", 1) => ok(scalar(ms[0].det()?)),
+        ("trace", 1) => ok(scalar(ms[0].trace())),
+        ("transpose", 1) => ok(make(&Kind::Unknown, ms[0].transpose())),
+        ("RpToTrans", 2) if shape(0) == (3, 3) && shape(1) == (3, 1) => {
+            ok(make(&Kind::SE3, sm::rp_to_trans(&ms[0], &ms[1])))
+        }
+        ("TransToRp", 1) if shape(0) == (4, 4) => ok(tuple(vec![
+            make(&Kind::SO3, ms[0].block(0..3, 0..3)),
+            make(&Kind::Vector(Some(3)), ms[0].block(0..3, 3..4)),
+        ])),
+        ("SE2", 3) => {
+            // (3.16): [cos θ, −sin θ, x; sin θ, cos θ, y; 0, 0, 1]
+            let (c, sn) = (Expr::cos(&s(0)?), Expr::sin(&s(0)?));
+            let rows = vec![
+                vec![c.clone(), sn.neg(), s(1)?],
+                vec![sn, c, s(2)?],
+                vec![Expr::zero(), Expr::zero(), Expr::one()],
+            ];
+            ok(make(&Kind::SE2, Mat::from_rows(rows)?))
+        }
+        ("Trans", 1) if shape(0) == (3, 1) => {
+            ok(make(&Kind::SE3, sm::rp_to_trans(&Mat::identity(3), &ms[0])))
+        }
+        ("displacement", 2) if shape(0) == (4, 4) && shape(1) == (4, 4) => {
+            let inv = sm::trans_inv(&ms[0])?;
+            ok(make(&Kind::SE3, ms[1].mul(&inv)?))
+        }
+        ("twist" | "wrench", 2) if shape(0) == (3, 1) && shape(1) == (3, 1) => {
+            let mut v = ms[0].data.clone();
+            v.extend(ms[1].data.clone());
+            ok(make(kind, Mat::column(v)))
+        }
+        ("screw" | "ScrewToAxis", 3) if shape(0) == (3, 1) && shape(1) == (3, 1) => {
+            // S = (ŝ, −ŝ × q + h ŝ) (§3.3.2.2)
+            let (q, sh, h) = (&ms[0].data, &ms[1].data, s(2)?);
+            let v = cross(sh, q);
+            let mut out = sh.clone();
+            out.extend(v.iter().zip(sh).map(|(a, b)| a.neg().add(&b.mul(&h))));
+            ok(make(kind, Mat::column(out)))
+        }
+        ("rot_zyx", 3) => ok(make(
+            &Kind::SO3,
+            rot_chain([2, 1, 0], [&s(0)?, &s(1)?, &s(2)?])?,
+        )),
+        ("rot_zxz", 3) => ok(make(
+            &Kind::SO3,
+            rot_chain([2, 0, 2], [&s(0)?, &s(1)?, &s(2)?])?,
+        )),
+        ("rot_rpy", 3) => ok(make(
+            &Kind::SO3,
+            rot_chain([2, 1, 0], [&s(2)?, &s(1)?, &s(0)?])?,
+        )),
+        ("rot_quat", 1) if shape(0) == (4, 1) => ok(make(&Kind::SO3, rot_quat(&ms[0].data))),
+        ("quat_mul", 2) if shape(0) == (4, 1) && shape(1) == (4, 1) => {
+            let (a, b) = (&ms[0].data, &ms[1].data);
+            let w = a[0].mul(&b[0]).sub(&dot(&a[1..], &b[1..]));
+            let c = cross(&a[1..], &b[1..]);
+            let mut out = vec![w];
+            for i in 0..3 {
+                out.push(a[0].mul(&b[i + 1]).add(&b[0].mul(&a[i + 1])).add(&c[i]));
+            }
+            ok(make(&Kind::Vector(Some(4)), Mat::column(out)))
+        }
+        ("euler_zyx", 1) if shape(0) == (3, 3) => {
+            ok(tuple(euler_zyx(&ms[0])?.into_iter().map(scalar).collect()))
+        }
+        ("euler_zxz", 1) if shape(0) == (3, 3) => {
+            ok(tuple(euler_zxz(&ms[0])?.into_iter().map(scalar).collect()))
+        }
+        ("quat", 1) if shape(0) == (3, 3) => {
+            ok(make(&Kind::Vector(Some(4)), Mat::column(quat(&ms[0])?)))
+        }
+        ("rpy", 1) if shape(0) == (3, 3) => ok(tuple(
+            euler_zyx(&ms[0])?.into_iter().rev().map(scalar).collect(),
+        )),
+        ("sin", 1) => ok(scalar(Expr::sin(&s(0)?))),
+        ("cos", 1) => ok(scalar(Expr::cos(&s(0)?))),
+        ("tan", 1) => ok(scalar(Expr::sin(&s(0)?).mul(&Expr::cos(&s(0)?).recip()?))),
+        ("sqrt", 1) => ok(scalar(Expr::sqrt(&s(0)?))),
+        ("atan2", 2) => ok(scalar(Expr::atan2(&s(0)?, &s(1)?))),
+        ("asin" | "acos" | "atan" | "abs", 1) => {
+            let (f, g): (Func, fn(f64) -> f64) = match name {
+                "asin" => (Func::Asin, f64::asin),
+                "acos" => (Func::Acos, f64::acos),
+                "atan" => (Func::Atan, f64::atan),
+                _ => (Func::Abs, f64::abs),
+            };
+            ok(scalar(Expr::apply(f, &s(0)?, g)))
+        }
+        ("diff", 2) => Some(diff(&vals[0], &ms[0], &ms[1], kind)),
+        ("simplify", 1) => ok(vals[0].clone()),
+        _ => None,
+    }
+}
+
+/// exp of a symbolic so(3) or se(3) matrix (or of a 3- or 6-vector of
+/// exponential coordinates, as MatrixExp3/6 take), or of a scalar.
+fn exp(m: &Mat, kind: &Kind) -> Out {
+    match (m.rows, m.cols) {
+        (1, 1) => ok(scalar(Expr::apply(Func::Exp, &m.data[0], f64::exp))),
+        (3, 1) => ok(make(&Kind::SO3, sm::exp3(&sm::skew(&m.data))?)),
+        (6, 1) => ok(make(&Kind::SE3, sm::exp6(&sm::twist_matrix(&m.data))?)),
+        (3, 3) if m.add(&m.transpose(), false) == Some(Mat::zeros(3, 3)) => {
+            ok(make(&Kind::SO3, sm::exp3(m)?))
+        }
+        (4, 4) if m.block(3..4, 0..4) == Mat::zeros(1, 4) => {
+            let _ = kind;
+            ok(make(&Kind::SE3, sm::exp6(m)?))
+        }
+        _ => None,
+    }
+}
+
+/// `diff(x, t)`: entrywise by the chain rule. By a function of time's
+/// variable (or a name not bound), every θ(t) gives θ̇; by a plain symbol,
+/// the partial derivative.
+fn diff(v: &Value, x: &Mat, by: &Mat, kind: &Kind) -> Result<Value, String> {
+    let sym = match by.data.as_slice() {
+        [e] => as_symbol(e),
+        _ => None,
+    }
+    .ok_or("diff(x, t) differentiates by a symbol: diff(R, t), diff(x, theta)")?;
+    let wrt = if sym.timed {
+        Wrt::Time(sym)
+    } else {
+        Wrt::Sym(sym)
+    };
+    let kind = match kind {
+        Kind::Unknown => v.kind(),
+        k => k.clone(),
+    };
+    Ok(make(&kind, x.map(|e| e.diff(&wrt))))
+}
+
+/// `diff`: the kind of a derivative (a rotation's is a plain matrix).
+fn diff_rule(args: &[Ty]) -> Result<Ty, ArgError> {
+    if args[1].kind != Kind::Scalar && args[1].kind != Kind::Unknown {
+        return Err(ArgError::type_of(
+            1,
+            "diff(x, t) differentiates by a scalar symbol",
+        ));
+    }
+    let t = &args[0];
+    Ok(match &t.kind {
+        Kind::Scalar => Ty::scalar(),
+        k if k.is_vector() => Ty::new(k.clone(), t.frames.clone()),
+        k => match k.shape() {
+            Some((r, c)) => Ty::new(Kind::Matrix(r, c), t.frames.clone()),
+            None => {
+                return Err(ArgError::type_of(
+                    0,
+                    format!("cannot differentiate {}", k.a()),
+                ));
+            }
+        },
+    })
+}
+
+fn same_rule(args: &[Ty]) -> Result<Ty, ArgError> {
+    Ok(args[0].clone())
+}
+
+/// The numeric meaning of `diff`: a number is constant, its derivative 0.
+fn eval_diff(a: &mut Args) -> Result<Value, Diagnostic> {
+    let m = a.mat(0)?;
+    Ok(Value::Num {
+        kind: a.value(0).kind(),
+        m: nalgebra::DMatrix::zeros(m.nrows(), m.ncols()),
+    })
+}
+
+pub(super) fn builtins() -> Vec<Builtin> {
+    vec![
+        Builtin {
+            name: "diff",
+            aliases: &[],
+            signature: "diff(x: scalar | vector | matrix, t: symbol) -> the same shape",
+            section: "§3.2.2",
+            doc: "the derivative by the chain rule, entrywise; diff(R, t) * R^T is [ω_s]",
+            example: "given theta(t) : scalar; diff(Rotz(theta), t) * Rotz(theta).T",
+            area: Area::Scalars,
+            typing: Typing::Custom {
+                arity: (2, 2),
+                rule: diff_rule,
+            },
+            eval: eval_diff,
+        },
+        Builtin {
+            name: "simplify",
+            aliases: &[],
+            signature: "simplify(x) -> x in canonical form",
+            section: "§7 (LANGUAGE.md)",
+            doc: "the canonical form: like terms collected, sin² + cos² = 1, angle sums folded",
+            example: "given a, b : scalar; simplify(cos(a)*cos(b) - sin(a)*sin(b))",
+            area: Area::Scalars,
+            typing: Typing::Custom {
+                arity: (1, 1),
+                rule: same_rule,
+            },
+            eval: |a| Ok(a.value(0).clone()),
+        },
+    ]
+}

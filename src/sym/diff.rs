@@ -1,0 +1,81 @@
+//! Derivatives of canonical expressions by the chain rule (LANGUAGE.md §7):
+//! by a symbol (a partial derivative) or by time, where a function of time
+//! θ(t) gives θ̇ and e^{iθ} gives i θ̇ e^{iθ} — so d/dt R(θ(t)) of §3.2.2
+//! needs no trigonometric rule.
+
+use std::sync::Arc;
+
+use super::coef::Coef;
+use super::expr::{Call, Expr, Func, Mono, Symbol, Var, Wrt};
+
+impl Expr {
+    /// The derivative (chain rule through every variable).
+    pub fn diff(&self, wrt: &Wrt) -> Expr {
+        let mut out = Expr::zero();
+        for (m, c) in &self.terms {
+            for (i, (v, e)) in m.iter().enumerate() {
+                let dv = var_diff(v, wrt);
+                if dv.is_zero() {
+                    continue;
+                }
+                let mut rest: Mono = m.clone();
+                if *e == 1 {
+                    rest.remove(i);
+                } else {
+                    rest[i].1 = e.saturating_sub(1);
+                }
+                let mut t = Expr::zero();
+                t.push(rest, c.mul(&Coef::int(i64::from(*e))));
+                out = out.add(&t.mul(&dv));
+            }
+        }
+        out
+    }
+}
+
+fn symbol_diff(s: &Symbol, wrt: &Wrt) -> Expr {
+    match wrt {
+        Wrt::Sym(x) | Wrt::Time(x) if x == s => Expr::one(),
+        Wrt::Time(_) if s.timed => Expr::symbol(s.dot()),
+        _ => Expr::zero(),
+    }
+}
+
+fn var_diff(v: &Var, wrt: &Wrt) -> Expr {
+    match v {
+        Var::Pi => Expr::zero(),
+        Var::Sym(s) => symbol_diff(s, wrt),
+        // d/dt e^{iθ} = i θ̇ e^{iθ}
+        Var::Z(s) => symbol_diff(s, wrt)
+            .mul(&Expr::var(v.clone()))
+            .scale(&Coef::i()),
+        Var::Call(c) => call_diff(c, wrt),
+    }
+}
+
+fn call_diff(c: &Call, wrt: &Wrt) -> Expr {
+    let x = &c.args[0];
+    let dx = x.diff(wrt);
+    let me = Expr::var(Var::Call(Arc::new(c.clone())));
+    let recip = |e: &Expr| e.recip().unwrap_or_default();
+    let one = Expr::one();
+    let outer = match c.f {
+        Func::Sin => Expr::cos(x),
+        Func::Cos => Expr::sin(x).neg(),
+        Func::Tan => one.add(&me.mul(&me)),
+        Func::Exp => me.clone(),
+        Func::Sqrt => recip(&me.scale(&Coef::int(2))),
+        Func::Asin => recip(&Expr::sqrt(&one.sub(&x.mul(x)))),
+        Func::Acos => recip(&Expr::sqrt(&one.sub(&x.mul(x)))).neg(),
+        Func::Atan => recip(&one.add(&x.mul(x))),
+        Func::Abs => x.mul(&recip(&me)),
+        Func::Recip => me.mul(&me).neg(),
+        Func::Atan2 => {
+            // d atan2(y, x) = (x dy − y dx)/(x² + y²)
+            let (y, xx) = (&c.args[0], &c.args[1]);
+            let num = xx.mul(&y.diff(wrt)).sub(&y.mul(&xx.diff(wrt)));
+            return num.mul(&recip(&xx.mul(xx).add(&y.mul(y))));
+        }
+    };
+    outer.mul(&dx)
+}

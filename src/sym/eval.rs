@@ -1,0 +1,97 @@
+//! Expressions at numbers (LANGUAGE.md §7, "binding numbers later makes
+//! them numeric"): evaluation with numbers for the symbols, and
+//! substitution of numbers or expressions, re-canonicalized.
+
+use super::coef::Coef;
+use super::expr::{Call, Expr, Func, Symbol, Var};
+
+impl Expr {
+    /// The value with numbers for the symbols (the real part); None when a
+    /// symbol has no number.
+    pub fn eval(&self, at: &dyn Fn(&Symbol) -> Option<f64>) -> Option<f64> {
+        self.eval_c(at).map(|(re, _)| re)
+    }
+
+    fn eval_c(&self, at: &dyn Fn(&Symbol) -> Option<f64>) -> Option<(f64, f64)> {
+        let (mut sre, mut sim) = (0.0, 0.0);
+        for (m, c) in &self.terms {
+            let (mut re, mut im) = c.to_c64();
+            for (v, e) in m {
+                let (a, b) = match v {
+                    Var::Pi => (std::f64::consts::PI.powi(*e), 0.0),
+                    Var::Sym(s) => (at(s)?.powi(*e), 0.0),
+                    Var::Z(s) => {
+                        let t = at(s)? * f64::from(*e);
+                        (t.cos(), t.sin())
+                    }
+                    Var::Call(c) => (eval_call(c, at)?.powi(*e), 0.0),
+                };
+                (re, im) = (re * a - im * b, re * b + im * a);
+            }
+            sre += re;
+            sim += im;
+        }
+        Some((sre, sim))
+    }
+
+    /// The expression with some symbols replaced (by numbers or other
+    /// expressions), re-canonicalized.
+    pub fn subst(&self, by: &dyn Fn(&Symbol) -> Option<Expr>) -> Expr {
+        let mut out = Expr::zero();
+        for (m, c) in &self.terms {
+            let mut t = Expr::constant(*c);
+            for (v, e) in m {
+                let f = match v {
+                    Var::Sym(s) => by(s).unwrap_or_else(|| Expr::var(v.clone())),
+                    Var::Z(s) => match by(s) {
+                        Some(x) => Expr::cos(&x).add(&Expr::sin(&x).scale(&Coef::i())),
+                        None => Expr::var(v.clone()),
+                    },
+                    Var::Pi => Expr::pi(),
+                    Var::Call(c) => {
+                        let args: Vec<Expr> = c.args.iter().map(|a| a.subst(by)).collect();
+                        rebuild(c.f, &args)
+                    }
+                };
+                t = t.mul(&f.powi(i64::from(*e)).unwrap_or_default());
+            }
+            out = out.add(&t);
+        }
+        out
+    }
+}
+
+/// A call rebuilt through its constructor (so numbers fold).
+pub fn rebuild(f: Func, args: &[Expr]) -> Expr {
+    let x = &args[0];
+    match f {
+        Func::Sin => Expr::sin(x),
+        Func::Cos => Expr::cos(x),
+        Func::Tan => Expr::apply(f, x, f64::tan),
+        Func::Asin => Expr::apply(f, x, f64::asin),
+        Func::Acos => Expr::apply(f, x, f64::acos),
+        Func::Atan => Expr::apply(f, x, f64::atan),
+        Func::Abs => Expr::apply(f, x, f64::abs),
+        Func::Exp => Expr::apply(f, x, f64::exp),
+        Func::Sqrt => Expr::sqrt(x),
+        Func::Recip => x.recip().unwrap_or_else(|| Expr::num(f64::INFINITY)),
+        Func::Atan2 => Expr::atan2(x, &args[1]),
+    }
+}
+
+fn eval_call(c: &Call, at: &dyn Fn(&Symbol) -> Option<f64>) -> Option<f64> {
+    let x = c.args[0].eval(at)?;
+    Some(match c.f {
+        Func::Sin => x.sin(),
+        Func::Cos => x.cos(),
+        Func::Tan => x.tan(),
+        Func::Asin => x.asin(),
+        Func::Acos => x.acos(),
+        Func::Atan => x.atan(),
+        Func::Sqrt => x.sqrt(),
+        Func::Abs => x.abs(),
+        Func::Exp => x.exp(),
+        Func::Recip => 1.0 / x,
+        Func::Atan2 => x.atan2(c.args.get(1)?.eval(at)?),
+    })
+}

@@ -1,0 +1,534 @@
+//! The canonical form of a scalar expression (LANGUAGE.md §7): a sum of
+//! monomials with exact coefficients ([`super::coef`]), where a monomial is a
+//! product of integer powers of variables. An angle θ enters through
+//! z = e^{iθ} (cos θ = (z + z⁻¹)/2, sin θ = (z − z⁻¹)/2i), so that a
+//! trigonometric polynomial is a Laurent polynomial in the z's: its
+//! monomials are unique, angle sums fold by themselves (cos(θ1 + θ2) is the
+//! real part of z1 z2), sin² + cos² = 1 needs no rule, and d/dt z = i θ̇ z.
+//! Two expressions are equal exactly when their term maps are equal.
+//! Functions with no such form (sqrt, atan2, 1/(a + b), sin of a non-linear
+//! argument) are kept as calls whose arguments are canonical in turn.
+
+use std::collections::BTreeMap;
+use std::sync::Arc;
+
+use super::coef::{Coef, Rat};
+
+/// A real symbol: a `given` name, possibly a function of time (`given
+/// theta(t) : scalar`), differentiated `dots` times (θ̇ has one).
+#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct Symbol {
+    pub name: Arc<str>,
+    pub timed: bool,
+    pub dots: u8,
+}
+
+impl Symbol {
+    /// A real symbol, `given t1 : scalar`.
+    pub fn new(name: &str) -> Symbol {
+        Symbol {
+            name: name.into(),
+            timed: false,
+            dots: 0,
+        }
+    }
+    /// A function of time, θ(t).
+    pub fn timed(name: &str) -> Symbol {
+        Symbol {
+            timed: true,
+            ..Symbol::new(name)
+        }
+    }
+    /// The time derivative, θ̇.
+    pub fn dot(&self) -> Symbol {
+        Symbol {
+            dots: self.dots.saturating_add(1),
+            ..self.clone()
+        }
+    }
+}
+
+/// A function kept as a call.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Func {
+    Sin,
+    Cos,
+    Tan,
+    Asin,
+    Acos,
+    Atan,
+    Atan2,
+    Sqrt,
+    Abs,
+    Exp,
+    /// 1/x of a sum.
+    Recip,
+}
+
+impl Func {
+    /// The name as printed.
+    pub fn name(self) -> &'static str {
+        match self {
+            Func::Sin => "sin",
+            Func::Cos => "cos",
+            Func::Tan => "tan",
+            Func::Asin => "asin",
+            Func::Acos => "acos",
+            Func::Atan => "atan",
+            Func::Atan2 => "atan2",
+            Func::Sqrt => "sqrt",
+            Func::Abs => "abs",
+            Func::Exp => "exp",
+            Func::Recip => "1/",
+        }
+    }
+}
+
+/// A call with canonical arguments.
+#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord)]
+pub struct Call {
+    pub f: Func,
+    pub args: Vec<Expr>,
+}
+
+/// A variable of a monomial.
+#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord)]
+pub enum Var {
+    /// π, transcendental, so an independent variable.
+    Pi,
+    /// A real symbol as itself (lengths; θ where G(θ) brings it in).
+    Sym(Symbol),
+    /// e^{iθ} of a symbol θ.
+    Z(Symbol),
+    Call(Arc<Call>),
+}
+
+/// Variables with their nonzero exponents, sorted by variable.
+pub type Mono = Vec<(Var, i32)>;
+
+/// A canonical expression: monomials to nonzero coefficients.
+#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord, Default)]
+pub struct Expr {
+    pub terms: BTreeMap<Mono, Coef>,
+}
+
+/// The deepest nesting of calls kept (see [`Expr::depth`]).
+pub const MAX_DEPTH: usize = 100;
+
+/// What to differentiate by: the time variable t (t ↦ 1, θ(t) ↦ θ̇) or
+/// a symbol (a partial derivative).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Wrt {
+    Time(Symbol),
+    Sym(Symbol),
+}
+
+fn mono_mul(a: &Mono, b: &Mono) -> Mono {
+    let mut out = Vec::with_capacity(a.len() + b.len());
+    let (mut i, mut j) = (0, 0);
+    while i < a.len() && j < b.len() {
+        match a[i].0.cmp(&b[j].0) {
+            std::cmp::Ordering::Less => {
+                out.push(a[i].clone());
+                i += 1;
+            }
+            std::cmp::Ordering::Greater => {
+                out.push(b[j].clone());
+                j += 1;
+            }
+            std::cmp::Ordering::Equal => {
+                let e = a[i].1.saturating_add(b[j].1);
+                if e != 0 {
+                    out.push((a[i].0.clone(), e));
+                }
+                i += 1;
+                j += 1;
+            }
+        }
+    }
+    out.extend_from_slice(&a[i..]);
+    out.extend_from_slice(&b[j..]);
+    out
+}
+
+impl Expr {
+    /// 0.
+    pub fn zero() -> Expr {
+        Expr::default()
+    }
+    /// A constant.
+    pub fn constant(c: Coef) -> Expr {
+        let mut e = Expr::zero();
+        if !c.is_zero() {
+            e.terms.insert(Vec::new(), c);
+        }
+        e
+    }
+    /// 1.
+    pub fn one() -> Expr {
+        Expr::constant(Coef::one())
+    }
+    /// An integer.
+    pub fn int(n: i64) -> Expr {
+        Expr::constant(Coef::int(n))
+    }
+    /// A number, exact when it is a simple closed form (p/q, p/q·√2, …,
+    /// or a multiple of π with a small denominator).
+    pub fn num(x: f64) -> Expr {
+        let c = Coef::from_f64(x);
+        if let Coef::Approx { .. } = c
+            && let Some(p) = Rat::approximate(x / std::f64::consts::PI, 1000)
+        {
+            return Expr::pi().scale(&Coef::rat(p));
+        }
+        Expr::constant(c)
+    }
+    /// One variable.
+    pub fn var(v: Var) -> Expr {
+        Expr::var_pow(v, 1)
+    }
+    fn var_pow(v: Var, e: i32) -> Expr {
+        let mut x = Expr::zero();
+        x.terms.insert(vec![(v, e)], Coef::one());
+        x
+    }
+    /// A symbol as itself (not as an angle).
+    pub fn symbol(s: Symbol) -> Expr {
+        Expr::var(Var::Sym(s))
+    }
+    /// π.
+    pub fn pi() -> Expr {
+        Expr::var(Var::Pi)
+    }
+    pub(super) fn call(f: Func, args: Vec<Expr>) -> Expr {
+        Expr::var(Var::Call(Arc::new(Call { f, args })))
+    }
+    /// True for 0 (no terms).
+    pub fn is_zero(&self) -> bool {
+        self.terms.is_empty()
+    }
+    /// The constant, when there are no variables.
+    pub fn as_const(&self) -> Option<Coef> {
+        match self.terms.len() {
+            0 => Some(Coef::ZERO),
+            1 => self.terms.get(&Vec::new()).copied(),
+            _ => None,
+        }
+    }
+    /// The number, when the expression is constant and real.
+    pub fn as_f64(&self) -> Option<f64> {
+        let (re, im) = self.as_const()?.to_c64();
+        (im.abs() <= 1e-12 * re.abs().max(1.0)).then_some(re)
+    }
+    /// Terms plus nested call arguments: the size that the expression limit
+    /// bounds.
+    pub fn size(&self) -> usize {
+        self.terms
+            .keys()
+            .map(|m| {
+                1 + m
+                    .iter()
+                    .map(|(v, _)| match v {
+                        Var::Call(c) => c.args.iter().map(Expr::size).sum(),
+                        _ => 0,
+                    })
+                    .sum::<usize>()
+            })
+            .sum()
+    }
+
+    /// How deeply calls nest (`sin(sin(t))` is 2): printing and evaluation
+    /// recurse this deep, so the interpreter bounds it by [`MAX_DEPTH`].
+    pub fn depth(&self) -> usize {
+        self.terms
+            .keys()
+            .flatten()
+            .map(|(v, _)| match v {
+                Var::Call(c) => 1 + c.args.iter().map(Expr::depth).max().unwrap_or(0),
+                _ => 0,
+            })
+            .max()
+            .unwrap_or(0)
+    }
+
+    pub(super) fn push(&mut self, m: Mono, c: Coef) {
+        if c.is_zero() {
+            return;
+        }
+        match self.terms.entry(m) {
+            std::collections::btree_map::Entry::Vacant(v) => {
+                v.insert(c);
+            }
+            std::collections::btree_map::Entry::Occupied(mut o) => {
+                let s = o.get().add(&c);
+                if s.is_zero() {
+                    o.remove();
+                } else {
+                    *o.get_mut() = s;
+                }
+            }
+        }
+    }
+    /// a + b.
+    pub fn add(&self, o: &Expr) -> Expr {
+        let mut out = self.clone();
+        for (m, c) in &o.terms {
+            out.push(m.clone(), *c);
+        }
+        out
+    }
+    /// −a.
+    pub fn neg(&self) -> Expr {
+        self.scale(&Coef::int(-1))
+    }
+    /// a − b.
+    pub fn sub(&self, o: &Expr) -> Expr {
+        self.add(&o.neg())
+    }
+    /// c·a for a constant c.
+    pub fn scale(&self, c: &Coef) -> Expr {
+        let mut out = Expr::zero();
+        for (m, k) in &self.terms {
+            out.push(m.clone(), k.mul(c));
+        }
+        out
+    }
+    /// a·b, monomial by monomial.
+    pub fn mul(&self, o: &Expr) -> Expr {
+        let mut out = Expr::zero();
+        for (a, c) in &self.terms {
+            for (b, d) in &o.terms {
+                out.push(mono_mul(a, b), c.mul(d));
+            }
+        }
+        out.fold_roots()
+    }
+
+    /// √x · √x = x: a square root's even powers become powers of x.
+    fn fold_roots(self) -> Expr {
+        let is_root =
+            |v: &Var, e: i32| matches!(v, Var::Call(c) if c.f == Func::Sqrt) && e.abs() >= 2;
+        if !self.terms.keys().flatten().any(|(v, e)| is_root(v, *e)) {
+            return self;
+        }
+        let mut out = Expr::zero();
+        for (m, c) in self.terms {
+            let mut rest: Mono = Vec::new();
+            let mut t = Expr::constant(c);
+            for (v, e) in m {
+                match &v {
+                    Var::Call(call) if is_root(&v, e) => {
+                        let inner = call.args[0].powi(i64::from(e / 2)).unwrap_or_default();
+                        t = t.mul(&inner);
+                        if e % 2 != 0 {
+                            rest.push((v.clone(), e % 2));
+                        }
+                    }
+                    _ => rest.push((v, e)),
+                }
+            }
+            let mut r = Expr::zero();
+            r.push(rest, Coef::one());
+            out = out.add(&t.mul(&r));
+        }
+        out
+    }
+    /// The complex conjugate (symbols and calls are real; z̄ = z⁻¹).
+    pub fn conj(&self) -> Expr {
+        let mut out = Expr::zero();
+        for (m, c) in &self.terms {
+            let m: Mono = m
+                .iter()
+                .map(|(v, e)| match v {
+                    Var::Z(_) => (v.clone(), e.saturating_neg()),
+                    _ => (v.clone(), *e),
+                })
+                .collect();
+            let mut m2 = Vec::new();
+            for f in m {
+                m2 = mono_mul(&m2, &vec![f]);
+            }
+            out.push(m2, c.conj());
+        }
+        out
+    }
+    /// 1/x: exact for a single term, a [`Func::Recip`] call of the sum
+    /// scaled to a leading coefficient of 1 otherwise. None for 0.
+    pub fn recip(&self) -> Option<Expr> {
+        if self.terms.len() == 1 {
+            let (m, c) = self.terms.iter().next()?;
+            let m: Mono = m
+                .iter()
+                .map(|(v, e)| (v.clone(), e.saturating_neg()))
+                .collect();
+            let mut out = Expr::zero();
+            out.push(m, c.inv()?);
+            return Some(out);
+        }
+        let lead = *self.terms.values().next()?;
+        let inv = lead.inv()?;
+        Some(Expr::call(Func::Recip, vec![self.scale(&inv)]).scale(&inv))
+    }
+    /// a / b; None when b is 0.
+    pub fn div(&self, b: &Expr) -> Option<Expr> {
+        if self == b && !b.is_zero() {
+            return Some(Expr::one());
+        }
+        Some(self.mul(&b.recip()?))
+    }
+    /// An integer power; None for a negative power of 0.
+    pub fn powi(&self, n: i64) -> Option<Expr> {
+        if n < 0 {
+            return self.recip()?.powi(-n);
+        }
+        let mut result = Expr::one();
+        let mut base = self.clone();
+        let mut n = n;
+        while n > 0 {
+            if n & 1 == 1 {
+                result = result.mul(&base);
+            }
+            n >>= 1;
+            if n > 0 {
+                base = base.mul(&base);
+            }
+        }
+        Some(result)
+    }
+
+    /// e^{i·arg} as a monomial in the z's, when `arg` is an integer
+    /// combination of symbols plus a multiple of π/12.
+    pub fn expi(arg: &Expr) -> Option<Expr> {
+        let mut mono: Mono = Vec::new();
+        let mut coef = Coef::one();
+        for (m, c) in &arg.terms {
+            let k = c.as_rat()?;
+            match m.as_slice() {
+                [(Var::Sym(s), 1)] => {
+                    let k = i32::try_from(k.as_int()?).ok()?;
+                    mono = mono_mul(&mono, &vec![(Var::Z(s.clone()), k)]);
+                }
+                [(Var::Pi, 1)] => coef = coef.mul(&Coef::unit_root(k)?),
+                _ => return None,
+            }
+        }
+        let mut e = Expr::zero();
+        e.push(mono, coef);
+        Some(e)
+    }
+    /// cos x: folded into the z's when x is linear, else a call.
+    pub fn cos(x: &Expr) -> Expr {
+        if let Some(e) = Expr::expi(x) {
+            return e
+                .add(&e.conj())
+                .scale(&Coef::rat(Rat::new(1, 2).unwrap_or(Rat::ONE)));
+        }
+        Expr::apply(Func::Cos, x, f64::cos)
+    }
+    /// sin x: folded into the z's when x is linear, else a call.
+    pub fn sin(x: &Expr) -> Expr {
+        if let Some(e) = Expr::expi(x) {
+            // (e − ē)/(2i) = −i/2 (e − ē)
+            let k = Coef::i().mul(&Coef::rat(Rat::new(-1, 2).unwrap_or(Rat::ONE)));
+            return e.sub(&e.conj()).scale(&k);
+        }
+        Expr::apply(Func::Sin, x, f64::sin)
+    }
+    /// A one-argument function: evaluated when the argument is a number,
+    /// else kept as a call.
+    pub fn apply(f: Func, x: &Expr, num: fn(f64) -> f64) -> Expr {
+        match x.as_f64() {
+            Some(v) if num(v).is_finite() => Expr::num(num(v)),
+            _ => Expr::call(f, vec![x.clone()]),
+        }
+    }
+    /// √x: exact for p/q with a square-free part among 1, 2, 3, 6.
+    pub fn sqrt(x: &Expr) -> Expr {
+        if let Some(r) = x.as_const().and_then(|c| c.as_rat())
+            && r.num >= 0
+        {
+            return Expr::num(r.to_f64().sqrt());
+        }
+        Expr::apply(Func::Sqrt, x, f64::sqrt)
+    }
+    /// atan2(y, x), a number when both are.
+    pub fn atan2(y: &Expr, x: &Expr) -> Expr {
+        match (y.as_f64(), x.as_f64()) {
+            (Some(a), Some(b)) => Expr::num(a.atan2(b)),
+            _ => Expr::call(Func::Atan2, vec![y.clone(), x.clone()]),
+        }
+    }
+
+    /// The symbols the expression depends on.
+    pub fn symbols(&self, out: &mut Vec<Symbol>) {
+        for m in self.terms.keys() {
+            for (v, _) in m {
+                match v {
+                    Var::Sym(s) | Var::Z(s) => {
+                        if !out.contains(s) {
+                            out.push(s.clone());
+                        }
+                    }
+                    Var::Call(c) => c.args.iter().for_each(|a| a.symbols(out)),
+                    Var::Pi => {}
+                }
+            }
+        }
+    }
+}
+
+/// The symbol, when the expression is exactly one symbol.
+pub fn as_symbol(e: &Expr) -> Option<Symbol> {
+    let (m, c) = e.terms.iter().next()?;
+    match (e.terms.len(), m.as_slice()) {
+        (1, [(Var::Sym(s), 1)]) if c.is_one() => Some(s.clone()),
+        _ => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn s(n: &str) -> Expr {
+        Expr::symbol(Symbol::new(n))
+    }
+
+    #[test]
+    fn pythagoras_and_angle_sums_need_no_rule() {
+        let t = s("t");
+        let one = Expr::cos(&t)
+            .powi(2)
+            .unwrap()
+            .add(&Expr::sin(&t).powi(2).unwrap());
+        assert_eq!(one, Expr::one());
+        let (a, b) = (s("a"), s("b"));
+        let lhs = Expr::cos(&a)
+            .mul(&Expr::cos(&b))
+            .sub(&Expr::sin(&a).mul(&Expr::sin(&b)));
+        assert_eq!(lhs, Expr::cos(&a.add(&b)));
+        assert_eq!(
+            Expr::cos(&t.add(&Expr::pi().scale(&Coef::rat(Rat::new(1, 2).unwrap())))),
+            Expr::sin(&t).neg()
+        );
+    }
+
+    #[test]
+    fn time_derivative_by_the_chain_rule() {
+        let th = Expr::symbol(Symbol::timed("theta"));
+        let d = Expr::sin(&th).diff(&Wrt::Time(Symbol::timed("t")));
+        let want = Expr::cos(&th).mul(&Expr::symbol(Symbol::timed("theta").dot()));
+        assert_eq!(d, want);
+    }
+
+    #[test]
+    fn evaluation_matches_numbers() {
+        let (a, b) = (s("a"), s("b"));
+        let e = Expr::cos(&a.add(&b))
+            .mul(&b)
+            .add(&Expr::sqrt(&a.mul(&a).add(&Expr::one())));
+        let at = |x: &Symbol| Some(if &*x.name == "a" { 0.3 } else { -1.2 });
+        let want = (0.3f64 - 1.2).cos() * -1.2 + (0.09f64 + 1.0).sqrt();
+        assert!((e.eval(&at).unwrap() - want).abs() < 1e-14);
+    }
+}

@@ -1,0 +1,17 @@
+//! Symbolic scalars and matrices (LANGUAGE.md §7): mathematics, not
+//! evaluation — this module imports nothing from the language layers.
+//! [`expr`] holds the canonical form (trigonometric polynomials as Laurent
+//! polynomials in z = e^{iθ}, exact coefficients from [`coef`]), [`matrix`]
+//! the book's closed forms over it (Rodrigues, Proposition 3.16, the
+//! adjoint), and [`print`] the book's notation, its shorthand and LaTeX.
+
+pub mod coef;
+pub mod diff;
+pub mod eval;
+pub mod expr;
+pub mod matrix;
+pub mod print;
+pub mod trig;
+
+pub use expr::{Expr, Symbol, Wrt};
+pub use matrix::Mat;

@@ -1,0 +1,576 @@
+//! Printing canonical expressions as the book writes them (LANGUAGE.md §7),
+//! from their real form ([`super::trig`]; for the UR5 the angle groups
+//! {θ1}, {θ2, θ3, θ4}, {θ5}, {θ6}). Output is plain text
+//! `L1 cos(t1) + L2 cos(t1 + t2)`, the book's shorthand `L1 c₁ + L2 c₁₂`,
+//! or LaTeX `L_1 \cos t_1 + …`.
+
+use super::coef::{Coef, ROOTS, Rat};
+use super::expr::{Expr, Func, Mono, Symbol, Var};
+use super::trig::{Trig, real_form};
+
+/// The output form.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Mode {
+    #[default]
+    Text,
+    /// The book's shorthand: c₁ = cos θ1, s₁₂ = sin(θ1 + θ2).
+    Short,
+    Latex,
+}
+
+/// How to print: the form and the decimals of inexact coefficients.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Style {
+    pub mode: Mode,
+    pub digits: usize,
+}
+
+impl Default for Style {
+    fn default() -> Style {
+        Style {
+            mode: Mode::Text,
+            digits: 4,
+        }
+    }
+}
+
+/// The terms of `e`, each with its sign: `("+", "L1 cos(t1)")`.
+pub fn terms(e: &Expr, st: Style) -> Vec<(bool, String)> {
+    real_form(e)
+        .iter()
+        .map(|((poly, trig), c)| term(c, poly, trig, st))
+        .collect()
+}
+
+/// An expression on one line.
+pub fn expr(e: &Expr, st: Style) -> String {
+    join(&terms(e, st), usize::MAX, 0)
+}
+
+/// Signed terms joined, broken before a `+` or `-` where a line would pass
+/// `width`, continuation lines indented by `indent`.
+pub fn join(ts: &[(bool, String)], width: usize, indent: usize) -> String {
+    if ts.is_empty() {
+        return "0".into();
+    }
+    let mut out = String::new();
+    let mut line = 0usize;
+    for (i, (neg, body)) in ts.iter().enumerate() {
+        let piece = match (i, neg) {
+            (0, false) => body.clone(),
+            (0, true) => format!("-{body}"),
+            (_, false) => format!(" + {body}"),
+            (_, true) => format!(" - {body}"),
+        };
+        let len = text_width(&piece);
+        if i > 0 && line + len > width {
+            out.push('\n');
+            out.push_str(&" ".repeat(indent));
+            let p = piece.trim_start();
+            line = indent + text_width(p);
+            out.push_str(p);
+        } else {
+            line += len;
+            out.push_str(&piece);
+        }
+    }
+    out
+}
+
+fn term(c: &Coef, poly: &Mono, trig: &[Trig], st: Style) -> (bool, String) {
+    let latex = st.mode == Mode::Latex;
+    let mut num: Vec<String> = Vec::new();
+    let mut den: Vec<String> = Vec::new();
+    for (v, e) in poly {
+        let (into, e) = match (v, *e > 0) {
+            (Var::Call(c), true) if c.f == Func::Recip => (&mut den, *e),
+            (Var::Call(c), false) if c.f == Func::Recip => (&mut num, e.saturating_neg()),
+            (_, true) => (&mut num, *e),
+            (_, false) => (&mut den, e.saturating_neg()),
+        };
+        into.push(power(&var(v, st), e, latex));
+    }
+    for (k, sin, p) in trig {
+        num.push(trig_factor(k, *sin, *p, st));
+    }
+    let (neg, coef) = coefficient(c, st);
+    let has_factors = !num.is_empty() || !den.is_empty();
+    let sep = " ";
+    let mut body = num.join(sep);
+    if num.is_empty() && !den.is_empty() && coef != "1" && !latex {
+        // (1/2)/(1 + cos(t)), 3/L2
+        let d = den.join(sep);
+        let d = if den.len() > 1 { format!("({d})") } else { d };
+        let c = if coef.contains(['/', ' ']) {
+            format!("({coef})")
+        } else {
+            coef
+        };
+        return (neg, format!("{c}/{d}"));
+    }
+    if !den.is_empty() {
+        let d = den.join(sep);
+        if latex {
+            body = format!(
+                "\\frac{{{}}}{{{d}}}",
+                if body.is_empty() { "1" } else { &body }
+            );
+        } else {
+            let d = if den.len() > 1 { format!("({d})") } else { d };
+            body = format!("{}/{d}", if body.is_empty() { "1" } else { &body });
+        }
+    }
+    let text = match (coef.as_str(), has_factors) {
+        ("1", true) => body,
+        (_, true) => {
+            let wrap = !latex && coef.contains(['/', ' ']);
+            if wrap {
+                format!("({coef}) {body}")
+            } else {
+                format!("{coef} {body}")
+            }
+        }
+        _ => coef,
+    };
+    (neg, text)
+}
+
+fn power(base: &str, e: i32, latex: bool) -> String {
+    match (e, latex) {
+        (1, _) => base.to_string(),
+        (_, true) => format!("{base}^{{{e}}}"),
+        (_, false) => format!("{base}^{e}"),
+    }
+}
+
+fn var(v: &Var, st: Style) -> String {
+    let latex = st.mode == Mode::Latex;
+    match v {
+        Var::Pi if latex => "\\pi".into(),
+        Var::Pi => "π".into(),
+        Var::Sym(s) | Var::Z(s) => symbol(s, st),
+        Var::Call(c) => {
+            let args: Vec<String> = c.args.iter().map(|a| expr(a, st)).collect();
+            match (c.f, latex) {
+                (Func::Recip, true) => format!("\\left({}\\right)", args[0]),
+                (Func::Recip, false) => format!("({})", args[0]),
+                (Func::Sqrt, true) => format!("\\sqrt{{{}}}", args[0]),
+                (f, true) => format!(
+                    "\\operatorname{{{}}}\\left({}\\right)",
+                    f.name(),
+                    args.join(", ")
+                ),
+                (f, false) => format!("{}({})", f.name(), args.join(", ")),
+            }
+        }
+    }
+}
+
+const GREEK: [(&str, char, &str); 30] = [
+    ("alpha", 'α', "\\alpha"),
+    ("beta", 'β', "\\beta"),
+    ("gamma", 'γ', "\\gamma"),
+    ("delta", 'δ', "\\delta"),
+    ("epsilon", 'ε', "\\epsilon"),
+    ("zeta", 'ζ', "\\zeta"),
+    ("eta", 'η', "\\eta"),
+    ("theta", 'θ', "\\theta"),
+    ("iota", 'ι', "\\iota"),
+    ("kappa", 'κ', "\\kappa"),
+    ("lambda", 'λ', "\\lambda"),
+    ("mu", 'μ', "\\mu"),
+    ("nu", 'ν', "\\nu"),
+    ("xi", 'ξ', "\\xi"),
+    ("rho", 'ρ', "\\rho"),
+    ("sigma", 'σ', "\\sigma"),
+    ("tau", 'τ', "\\tau"),
+    ("phi", 'φ', "\\phi"),
+    ("chi", 'χ', "\\chi"),
+    ("psi", 'ψ', "\\psi"),
+    ("omega", 'ω', "\\omega"),
+    ("Gamma", 'Γ', "\\Gamma"),
+    ("Delta", 'Δ', "\\Delta"),
+    ("Theta", 'Θ', "\\Theta"),
+    ("Lambda", 'Λ', "\\Lambda"),
+    ("Xi", 'Ξ', "\\Xi"),
+    ("Sigma", 'Σ', "\\Sigma"),
+    ("Phi", 'Φ', "\\Phi"),
+    ("Psi", 'Ψ', "\\Psi"),
+    ("Omega", 'Ω', "\\Omega"),
+];
+
+/// A name split into its letters and its subscript: `theta1` → (`theta`,
+/// `1`), `L_2` → (`L`, `2`), `t_{ab}` → (`t`, `ab`).
+fn split_name(name: &str) -> (&str, &str) {
+    if let Some((b, s)) = name.split_once('_') {
+        return (b, s.trim_start_matches('{').trim_end_matches('}'));
+    }
+    let cut = name
+        .char_indices()
+        .rev()
+        .take_while(|(_, c)| c.is_ascii_digit())
+        .last()
+        .map_or(name.len(), |(i, _)| i);
+    (&name[..cut], &name[cut..])
+}
+
+/// A symbol's name: as typed; a time derivative θ̇ with the Greek letter
+/// and a dot (two dots for θ̈, primes beyond).
+pub fn symbol(s: &Symbol, st: Style) -> String {
+    let (base, sub) = split_name(&s.name);
+    if st.mode == Mode::Latex {
+        let b = GREEK
+            .iter()
+            .find(|(w, c, _)| *w == base || base.chars().eq(std::iter::once(*c)))
+            .map_or_else(|| base.to_string(), |g| g.2.to_string());
+        let wrap = |cmd: &str| {
+            if b.starts_with('\\') {
+                format!("{cmd}{b}")
+            } else {
+                format!("{cmd}{{{b}}}")
+            }
+        };
+        let b = match s.dots {
+            0 => b.clone(),
+            1 => wrap("\\dot"),
+            2 => wrap("\\ddot"),
+            n => format!("{b}^{{({n})}}"),
+        };
+        return match sub.chars().count() {
+            0 => b,
+            1 => format!("{b}_{sub}"),
+            _ => format!("{b}_{{{sub}}}"),
+        };
+    }
+    if s.dots == 0 {
+        return s.name.to_string();
+    }
+    if s.dots > 2 {
+        return format!("{}{}", s.name, "'".repeat(s.dots as usize));
+    }
+    let greek = GREEK.iter().find(|(w, _, _)| *w == base).map(|g| g.1);
+    let mut chars = base.chars();
+    let first = greek.or_else(|| chars.next()).unwrap_or('?');
+    let rest: String = if greek.is_some() {
+        String::new()
+    } else {
+        chars.collect()
+    };
+    let mark = if s.dots == 1 { '\u{307}' } else { '\u{308}' };
+    let tail = &s.name[base.len()..];
+    format!("{first}{mark}{rest}{tail}")
+}
+
+fn trig_factor(k: &[(Symbol, i32)], sin: bool, p: u32, st: Style) -> String {
+    let f = if sin { "sin" } else { "cos" };
+    if st.mode == Mode::Short
+        && let Some(short) = short_trig(k, sin)
+    {
+        const SUP: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
+        let sup: String = if p > 1 {
+            p.to_string()
+                .chars()
+                .map(|d| SUP[d.to_digit(10).unwrap_or(0) as usize])
+                .collect()
+        } else {
+            String::new()
+        };
+        return format!("{short}{sup}");
+    }
+    let mut arg = String::new();
+    for (i, (s, c)) in k.iter().enumerate() {
+        let name = symbol(s, st);
+        let mag = c.abs();
+        let piece = if mag == 1 {
+            name
+        } else {
+            format!("{mag} {name}")
+        };
+        match (i, *c < 0) {
+            (0, _) => arg.push_str(&piece),
+            (_, false) => arg.push_str(&format!(" + {piece}")),
+            (_, true) => arg.push_str(&format!(" - {piece}")),
+        }
+    }
+    let sup = if p > 1 {
+        format!("^{{{p}}}")
+    } else {
+        String::new()
+    };
+    if st.mode == Mode::Latex {
+        if k.len() == 1 && k[0].1 == 1 {
+            let space = if arg.starts_with('\\') { "" } else { " " };
+            format!("\\{f}{sup}{space}{arg}")
+        } else {
+            format!("\\{f}{sup}({arg})")
+        }
+    } else {
+        power(&format!("{f}({arg})"), p as i32, false)
+    }
+}
+
+/// `c₁₂` for cos(θ1 + θ2), `sθ` for sin θ: the book's shorthand, when it
+/// applies (all coefficients 1, indexed names or a single angle).
+fn short_trig(k: &[(Symbol, i32)], sin: bool) -> Option<String> {
+    const SUB: [char; 10] = ['₀', '₁', '₂', '₃', '₄', '₅', '₆', '₇', '₈', '₉'];
+    if k.iter().any(|(s, c)| *c != 1 || s.dots > 0) {
+        return None;
+    }
+    let f = if sin { 's' } else { 'c' };
+    let mut out = String::from(f);
+    for (s, _) in k {
+        let (base, sub) = split_name(&s.name);
+        if sub.is_empty() || !sub.chars().all(|c| c.is_ascii_digit()) {
+            if k.len() == 1 {
+                let g = GREEK
+                    .iter()
+                    .find(|(w, _, _)| *w == base)
+                    .map(|g| g.1.to_string());
+                return Some(format!("{f}{}", g.unwrap_or_else(|| s.name.to_string())));
+            }
+            return None;
+        }
+        out.extend(
+            sub.chars()
+                .map(|c| SUB[c.to_digit(10).unwrap_or(0) as usize]),
+        );
+    }
+    Some(out)
+}
+
+/// A coefficient's sign and magnitude as text ("1" for one).
+fn coefficient(c: &Coef, st: Style) -> (bool, String) {
+    let latex = st.mode == Mode::Latex;
+    match c {
+        Coef::Approx { re, .. } => (*re < 0.0, fmt_float(re.abs(), st.digits)),
+        Coef::Exact { re, .. } => {
+            let neg = re.signum() < 0.0;
+            let s = if neg { re.neg() } else { *re };
+            let parts: Vec<(usize, Rat)> =
+                s.0.iter()
+                    .enumerate()
+                    .filter(|(_, r)| !r.is_zero())
+                    .map(|(i, r)| (i, *r))
+                    .collect();
+            match parts.as_slice() {
+                [] => (false, "0".into()),
+                [(i, r)] => (neg, surd_term(*r, ROOTS[*i], latex)),
+                _ => {
+                    let inner: Vec<String> = parts
+                        .iter()
+                        .map(|(i, r)| surd_term(*r, ROOTS[*i], latex))
+                        .collect();
+                    let sum = inner.join(" + ").replace("+ -", "- ");
+                    let wrapped = if latex {
+                        format!("\\left({sum}\\right)")
+                    } else {
+                        format!("({sum})")
+                    };
+                    (neg, wrapped)
+                }
+            }
+        }
+    }
+}
+
+/// (p/q)√k as text or LaTeX: `3`, `17/40` (or `0.425`), `√2`, `1/√2`, `√3/2`.
+fn surd_term(r: Rat, k: i64, latex: bool) -> String {
+    let (p, q) = (r.num, r.den);
+    let sign = if p < 0 { "-" } else { "" };
+    let p = p.abs();
+    if k == 1 {
+        if q == 1 {
+            return format!("{sign}{p}");
+        }
+        // a decimal as typed (0.1, 0.425), in full up to 12 places; halves,
+        // quarters and fifths stay fractions (0.392 = 49/125 is a decimal)
+        if q > 5
+            && let Some(k) = (1..=12).find(|k| 10i128.pow(*k) % q == 0)
+        {
+            return format!("{sign}{}", fmt_float(r.to_f64().abs(), k as usize));
+        }
+        return if latex {
+            format!("{sign}\\frac{{{p}}}{{{q}}}")
+        } else {
+            format!("{sign}{p}/{q}")
+        };
+    }
+    let root = if latex {
+        format!("\\sqrt{{{k}}}")
+    } else {
+        format!("√{k}")
+    };
+    let top = if p == 1 {
+        root.clone()
+    } else {
+        format!("{p}{root}")
+    };
+    match (q, latex) {
+        (1, _) => format!("{sign}{top}"),
+        _ if p == 1 && i128::from(k) == q => {
+            if latex {
+                format!("{sign}\\frac{{1}}{{{root}}}")
+            } else {
+                format!("{sign}1/{root}")
+            }
+        }
+        (_, true) => format!("{sign}\\frac{{{top}}}{{{q}}}"),
+        (_, false) => format!("{sign}{top}/{q}"),
+    }
+}
+
+fn fmt_float(x: f64, digits: usize) -> String {
+    if x != 0.0 && !(1e-6..1e12).contains(&x.abs()) {
+        let s = format!("{x:.digits$e}");
+        let (m, e) = s.split_once('e').unwrap_or((&s, "0"));
+        let m = if m.contains('.') {
+            m.trim_end_matches('0').trim_end_matches('.')
+        } else {
+            m
+        };
+        return format!("{m}e{e}");
+    }
+    let s = format!("{x:.digits$}");
+    let s = if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s
+    };
+    if s == "-0" { "0".into() } else { s }
+}
+
+/// Columns a text takes on screen (combining marks, as in θ̇, take none).
+pub fn text_width(s: &str) -> usize {
+    s.chars()
+        .filter(|c| !('\u{300}'..='\u{36f}').contains(c))
+        .count()
+}
+
+/// Cells of a symbolic matrix: text with aligned columns (`[a, b;` …), one
+/// entry per line with long entries wrapped when a row is wider than
+/// `width`, or a LaTeX `bmatrix`. `indent` is the column of the `[`.
+pub fn matrix(cells: &[Vec<Expr>], st: Style, indent: usize, width: usize) -> String {
+    if st.mode == Mode::Latex {
+        let rows: Vec<String> = cells
+            .iter()
+            .map(|r| {
+                r.iter()
+                    .map(|e| expr(e, st))
+                    .collect::<Vec<_>>()
+                    .join(" & ")
+            })
+            .collect();
+        return format!(
+            "\\begin{{bmatrix}} {} \\end{{bmatrix}}",
+            rows.join(" \\\\ ")
+        );
+    }
+    let text: Vec<Vec<Vec<(bool, String)>>> = cells
+        .iter()
+        .map(|r| r.iter().map(|e| terms(e, st)).collect())
+        .collect();
+    let flat: Vec<Vec<String>> = text
+        .iter()
+        .map(|r| r.iter().map(|t| join(t, usize::MAX, 0)).collect())
+        .collect();
+    let ncols = flat.first().map_or(0, Vec::len);
+    let widths: Vec<usize> = (0..ncols)
+        .map(|j| flat.iter().map(|r| text_width(&r[j])).max().unwrap_or(0))
+        .collect();
+    let pad = " ".repeat(indent + 1);
+    let total: usize = widths.iter().sum::<usize>() + 2 * ncols + indent;
+    if total <= width {
+        let rows: Vec<String> = flat
+            .iter()
+            .map(|r| {
+                r.iter()
+                    .enumerate()
+                    .map(|(j, c)| {
+                        if j + 1 < ncols {
+                            format!("{c},{}", " ".repeat(widths[j] - text_width(c) + 1))
+                        } else {
+                            c.clone()
+                        }
+                    })
+                    .collect::<String>()
+            })
+            .collect();
+        return format!("[{}]", rows.join(&format!("\n{pad}")));
+    }
+    // Too wide to align: a row per line where it fits, else an entry per
+    // line, long entries wrapped under themselves.
+    let rows: Vec<String> = text
+        .iter()
+        .zip(&flat)
+        .map(|(r, one)| {
+            let line = one.join(", ");
+            if indent + 1 + text_width(&line) < width {
+                return line;
+            }
+            r.iter()
+                .map(|t| join(t, width.saturating_sub(indent + 1).max(40), indent + 3))
+                .collect::<Vec<_>>()
+                .join(&format!(",\n{pad}"))
+        })
+        .collect();
+    format!("[{}]", rows.join(&format!(";\n{pad}")))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn s(n: &str) -> Expr {
+        Expr::symbol(Symbol::new(n))
+    }
+
+    #[test]
+    fn planar_arm_prints_as_the_book() {
+        let (t1, t2) = (s("t1"), s("t2"));
+        let x = s("L1")
+            .mul(&Expr::cos(&t1))
+            .add(&s("L2").mul(&Expr::cos(&t1.add(&t2))));
+        assert_eq!(expr(&x, Style::default()), "L1 cos(t1) + L2 cos(t1 + t2)");
+        let short = Style {
+            mode: Mode::Short,
+            digits: 4,
+        };
+        assert_eq!(expr(&x, short), "L1 c₁ + L2 c₁₂");
+        let latex = Style {
+            mode: Mode::Latex,
+            digits: 4,
+        };
+        assert_eq!(expr(&x, latex), "L_1 \\cos t_1 + L_2 \\cos(t_1 + t_2)");
+    }
+
+    #[test]
+    fn products_of_separate_angles_stay_products() {
+        let (a, b) = (s("t1"), s("t5"));
+        let x = Expr::sin(&a)
+            .mul(&Expr::cos(&b))
+            .scale(&Coef::from_f64(-0.082));
+        assert_eq!(expr(&x, Style::default()), "-0.082 sin(t1) cos(t5)");
+    }
+
+    #[test]
+    fn one_angle_prints_in_powers_when_no_longer() {
+        let t = s("t");
+        let (c, sn) = (Expr::cos(&t), Expr::sin(&t));
+        assert_eq!(expr(&sn.mul(&c), Style::default()), "cos(t) sin(t)");
+        let two = Expr::cos(&t.scale(&Coef::int(2)));
+        assert_eq!(expr(&two, Style::default()), "cos(2 t)");
+        assert_eq!(expr(&c.powi(3).unwrap(), Style::default()), "cos(t)^3");
+    }
+
+    #[test]
+    fn dots_and_exact_constants() {
+        let th = Symbol::timed("theta");
+        let x = Expr::symbol(th.dot()).scale(&Coef::from_f64(0.5f64.sqrt()));
+        assert_eq!(expr(&x, Style::default()), "(1/√2) θ̇");
+        let latex = Style {
+            mode: Mode::Latex,
+            digits: 4,
+        };
+        assert_eq!(expr(&Expr::symbol(th.dot()), latex), "\\dot\\theta");
+    }
+}

@@ -1,0 +1,592 @@
+//! Symbolic scalars and matrices (LANGUAGE.md §7, issue 15): the canonical
+//! form agrees with numbers, equal forms mean equal functions, the book's
+//! closed forms come out, frames are checked as for numbers, and the UR5
+//! product of exponentials agrees with the numeric one.
+
+use chasles::eval::env::Mode;
+use chasles::eval::value::Value;
+use chasles::session::{Session, Settings};
+use chasles::sym::coef::{Coef, Rat};
+use chasles::sym::matrix::{self, Mat};
+use chasles::sym::{Expr, Symbol};
+use proptest::prelude::*;
+
+// ---------------------------------------------------------------- engine
+
+/// A random expression over the supported operations, with its direct
+/// numeric meaning alongside its canonical form.
+#[derive(Debug, Clone)]
+enum E {
+    Var(usize),
+    Int(i64),
+    Half,
+    Sqrt2,
+    Pi,
+    Add(Box<E>, Box<E>),
+    Sub(Box<E>, Box<E>),
+    Mul(Box<E>, Box<E>),
+    Pow(Box<E>, u8),
+    /// sin or cos of an integer combination of the variables plus k·π/4.
+    Trig(bool, [i8; 3], u8),
+    SqrtOf(u8),
+}
+
+const NAMES: [&str; 3] = ["a", "b", "c"];
+
+impl E {
+    fn build(&self) -> Expr {
+        match self {
+            E::Var(i) => Expr::symbol(Symbol::new(NAMES[*i])),
+            E::Int(n) => Expr::int(*n),
+            E::Half => Expr::num(0.5),
+            E::Sqrt2 => Expr::sqrt(&Expr::int(2)),
+            E::Pi => Expr::pi(),
+            E::Add(x, y) => x.build().add(&y.build()),
+            E::Sub(x, y) => x.build().sub(&y.build()),
+            E::Mul(x, y) => x.build().mul(&y.build()),
+            E::Pow(x, n) => x.build().powi(i64::from(*n)).unwrap(),
+            E::Trig(sin, k, q) => {
+                let mut arg = Expr::pi().scale(&Coef::rat(Rat::new(i128::from(*q), 4).unwrap()));
+                for (i, c) in k.iter().enumerate() {
+                    let v = Expr::symbol(Symbol::new(NAMES[i]));
+                    arg = arg.add(&v.scale(&Coef::int(i64::from(*c))));
+                }
+                if *sin {
+                    Expr::sin(&arg)
+                } else {
+                    Expr::cos(&arg)
+                }
+            }
+            E::SqrtOf(n) => Expr::sqrt(&Expr::int(i64::from(*n))),
+        }
+    }
+    fn eval(&self, at: &[f64; 3]) -> f64 {
+        match self {
+            E::Var(i) => at[*i],
+            E::Int(n) => *n as f64,
+            E::Half => 0.5,
+            E::Sqrt2 => 2f64.sqrt(),
+            E::Pi => std::f64::consts::PI,
+            E::Add(x, y) => x.eval(at) + y.eval(at),
+            E::Sub(x, y) => x.eval(at) - y.eval(at),
+            E::Mul(x, y) => x.eval(at) * y.eval(at),
+            E::Pow(x, n) => x.eval(at).powi(i32::from(*n)),
+            E::Trig(sin, k, q) => {
+                let arg: f64 = std::f64::consts::PI * f64::from(*q) / 4.0
+                    + k.iter()
+                        .zip(at)
+                        .map(|(c, x)| f64::from(*c) * x)
+                        .sum::<f64>();
+                if *sin { arg.sin() } else { arg.cos() }
+            }
+            E::SqrtOf(n) => f64::from(*n).sqrt(),
+        }
+    }
+}
+
+impl E {
+    /// The expression as chasles source, fully parenthesized.
+    fn source(&self) -> String {
+        match self {
+            E::Var(i) => NAMES[*i].to_string(),
+            E::Int(n) => format!("({n})"),
+            E::Half => "0.5".into(),
+            E::Sqrt2 => "sqrt(2)".into(),
+            E::Pi => "pi".into(),
+            E::Add(x, y) => format!("({} + {})", x.source(), y.source()),
+            E::Sub(x, y) => format!("({} - {})", x.source(), y.source()),
+            E::Mul(x, y) => format!("({} * {})", x.source(), y.source()),
+            E::Pow(x, n) => format!("({})^{n}", x.source()),
+            E::Trig(sin, k, q) => {
+                let arg: Vec<String> = k
+                    .iter()
+                    .zip(NAMES)
+                    .map(|(c, n)| format!("({c}) * {n}"))
+                    .collect();
+                let f = if *sin { "sin" } else { "cos" };
+                format!("{f}({} + {q} * pi / 4)", arg.join(" + "))
+            }
+            E::SqrtOf(n) => format!("sqrt({n})"),
+        }
+    }
+}
+
+fn expr() -> impl Strategy<Value = E> {
+    let leaf = prop_oneof![
+        (0..3usize).prop_map(E::Var),
+        (-3..4i64).prop_map(E::Int),
+        Just(E::Half),
+        Just(E::Sqrt2),
+        Just(E::Pi),
+        (any::<bool>(), prop::array::uniform3(-2..3i8), 0..8u8)
+            .prop_map(|(s, k, q)| E::Trig(s, k, q)),
+        (0..13u8).prop_map(E::SqrtOf),
+    ];
+    leaf.prop_recursive(4, 24, 2, |inner| {
+        prop_oneof![
+            (inner.clone(), inner.clone()).prop_map(|(x, y)| E::Add(Box::new(x), Box::new(y))),
+            (inner.clone(), inner.clone()).prop_map(|(x, y)| E::Sub(Box::new(x), Box::new(y))),
+            (inner.clone(), inner.clone()).prop_map(|(x, y)| E::Mul(Box::new(x), Box::new(y))),
+            (inner, 0..4u8).prop_map(|(x, n)| E::Pow(Box::new(x), n)),
+        ]
+    })
+}
+
+fn point() -> impl Strategy<Value = [f64; 3]> {
+    prop::array::uniform3(-3.0..3.0f64)
+}
+
+fn at(p: &[f64; 3]) -> impl Fn(&Symbol) -> Option<f64> + '_ {
+    move |s: &Symbol| NAMES.iter().position(|n| **n == *s.name).map(|i| p[i])
+}
+
+fn close(x: f64, y: f64) -> bool {
+    (x - y).abs() <= 1e-12 * x.abs().max(y.abs()).max(1.0)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    /// The canonical form evaluated at a point is the expression's value.
+    #[test]
+    fn canonical_form_evaluates_like_the_expression(e in expr(), p in point()) {
+        let want = e.eval(&p);
+        let got = e.build().eval(&at(&p)).unwrap();
+        prop_assume!(want.abs() < 1e6);
+        prop_assert!(close(got, want), "{got} vs {want} for {e:?}");
+    }
+
+    /// Equal canonical forms never differ numerically.
+    #[test]
+    fn equal_forms_are_equal_functions(x in expr(), y in expr(), p in point()) {
+        let (a, b) = (x.build(), y.build());
+        if a == b {
+            let (u, v) = (x.eval(&p), y.eval(&p));
+            prop_assume!(u.abs() < 1e6);
+            prop_assert!((u - v).abs() <= 1e-9 * u.abs().max(1.0), "{x:?} == {y:?}");
+        }
+    }
+
+    /// `x == y` in the language never says true for expressions that
+    /// differ at a point (an undecided comparison is an error, not true).
+    #[test]
+    fn language_equality_is_never_wrongly_true(x in expr(), y in expr(), p in point()) {
+        let src = format!("given a, b, c : scalar\n{} == {}", x.source(), y.source());
+        let mut s = Session::new(Settings { json: true, ..Settings::default() });
+        let (out, _, _) = s.run_to_strings("t.chs", &src, Mode::Run, false);
+        let last: serde_json::Value = serde_json::from_str(out.lines().last().unwrap()).unwrap();
+        if last["value"] == serde_json::Value::Bool(true) {
+            let (u, v) = (x.eval(&p), y.eval(&p));
+            prop_assume!(u.abs() < 1e6);
+            prop_assert!((u - v).abs() <= 1e-9 * u.abs().max(1.0), "{src}");
+        }
+        // an expression always equals itself
+        let same = format!("given a, b, c : scalar\n{} == {}", x.source(), x.source());
+        let mut s = Session::new(Settings { json: true, ..Settings::default() });
+        let (out, _, _) = s.run_to_strings("t.chs", &same, Mode::Run, false);
+        let last: serde_json::Value = serde_json::from_str(out.lines().last().unwrap()).unwrap();
+        prop_assert_eq!(&last["value"], &serde_json::Value::Bool(true), "{}", same);
+    }
+
+    /// Known identities are decided true, with no numbers.
+    #[test]
+    fn identities_are_recognized(p in point(), k in 1..4i64) {
+        let v = |i: usize| Expr::symbol(Symbol::new(NAMES[i]));
+        let (a, b) = (v(0), v(1));
+        let sq = |e: Expr| e.powi(2).unwrap();
+        prop_assert_eq!(sq(Expr::sin(&a)).add(&sq(Expr::cos(&a))), Expr::one());
+        let ka = a.scale(&Coef::int(k));
+        prop_assert_eq!(
+            Expr::sin(&a.add(&b)),
+            Expr::sin(&a).mul(&Expr::cos(&b)).add(&Expr::cos(&a).mul(&Expr::sin(&b)))
+        );
+        prop_assert_eq!(
+            Expr::sin(&ka.scale(&Coef::int(2))),
+            Expr::sin(&ka).mul(&Expr::cos(&ka)).scale(&Coef::int(2))
+        );
+        // cos 3a in powers of cos a
+        let c = Expr::cos(&a);
+        prop_assert_eq!(
+            Expr::cos(&a.scale(&Coef::int(3))),
+            c.powi(3).unwrap().scale(&Coef::int(4)).sub(&c.scale(&Coef::int(3)))
+        );
+        let _ = p;
+    }
+
+    /// Rodrigues' rotation times its transpose is I for any rational axis,
+    /// and exponentials of one screw add their angles.
+    #[test]
+    fn rotation_identities(x in -5..6i64, y in -5..6i64, z in 1..6i64) {
+        // axes whose length is exact in ℚ(√2, √3): |w|² = k² times 1, 2, 3 or 6
+        let n2 = x * x + y * y + z * z;
+        prop_assume!((1..=20).any(|k| [1, 2, 3, 6].iter().any(|r| k * k * r == n2)));
+        let n = (n2 as f64).sqrt();
+        let w: Vec<Expr> = [x, y, z].iter().map(|c| Expr::num(*c as f64 / n)).collect();
+        let t = Expr::symbol(Symbol::new("a"));
+        let r = matrix::rodrigues(&w, &t);
+        prop_assert_eq!(r.mul(&r.transpose()).unwrap(), Mat::identity(3));
+        let s = Expr::symbol(Symbol::new("b"));
+        let r2 = matrix::rodrigues(&w, &s);
+        prop_assert_eq!(r.mul(&r2).unwrap(), matrix::rodrigues(&w, &t.add(&s)));
+    }
+}
+
+// ---------------------------------------------------------------- language
+
+/// Identities of chapter 3 that `==` decides true with no numbers.
+#[test]
+fn equality_decides_the_books_identities() {
+    let w = "(0, 0.6, 0.8)";
+    let s1 = "(0, 0, 1, 0, -2, 0.5)";
+    let s2 = "(1, 0, 0, 0, 0, 1)";
+    let pairs = [
+        ("cos(a)^2 + sin(a)^2".to_string(), "1".to_string()),
+        ("cos(a + b)".into(), "cos(a) cos(b) - sin(a) sin(b)".into()),
+        ("sin(2 a)".into(), "2 sin(a) cos(a)".into()),
+        ("Rotz(a) Rotz(b)".into(), "Rotz(a + b)".into()),
+        (
+            "Rot((1, 2, 2)/3, a) Rot((1, 2, 2)/3, a)^T".into(),
+            "I".into(),
+        ),
+        ("det(Rot((1, 2, 2)/3, a))".into(), "1".into()),
+        (
+            format!("exp([{w}] a) exp([{w}] b)"),
+            format!("exp([{w}] (a + b))"),
+        ),
+        (
+            format!("Ad(exp([{s1}] a) exp([{s2}] b))"),
+            format!("Ad(exp([{s1}] a)) Ad(exp([{s2}] b))"),
+        ),
+        (format!("inv(exp([{s1}] a)) exp([{s1}] a)"), "I".into()),
+        ("diff(sin(a)^2, a)".into(), "2 sin(a) cos(a)".into()),
+        ("trace(Rotz(a))".into(), "1 + 2 cos(a)".into()),
+        (
+            "cross((cos(a), sin(a), 0), (0, 0, 1))".into(),
+            "(sin(a), -cos(a), 0)".into(),
+        ),
+    ];
+    for (l, r) in pairs {
+        let src = format!("given a, b : scalar\n{l} == {r}");
+        let out = run(&mut session(), &src);
+        assert_eq!(out.trim_end(), "true", "{src}");
+    }
+    let out = run(&mut session(), "given a : scalar\ncos(a) == sin(a)");
+    assert_eq!(out.trim_end(), "false");
+}
+
+fn session() -> Session {
+    Session::new(Settings::default())
+}
+
+/// Runs `src`, failing on any error; returns stdout.
+fn run(s: &mut Session, src: &str) -> String {
+    let (out, err, n) = s.run_to_strings("t.chs", src, Mode::Run, false);
+    assert_eq!(n, 0, "{src}\n{err}");
+    out
+}
+
+fn run_with(settings: Settings, src: &str) -> String {
+    let mut s = Session::new(settings);
+    run(&mut s, src)
+}
+
+fn formula(s: &Session, name: &str) -> Mat {
+    match s.env.get(name).and_then(|b| b.val.clone()) {
+        Some(Value::Formula { m, .. }) => m,
+        other => panic!("{name} is not symbolic: {other:?}"),
+    }
+}
+
+#[test]
+fn planar_2r_arm_is_the_books_closed_form() {
+    let src = "given t1, t2, L1, L2 : scalar
+        S1 = (0, 0, 1, 0, 0, 0)
+        S2 = (0, 0, 1, 0, -L1, 0)
+        M = [1, 0, 0, L1 + L2; 0, 1, 0, 0; 0, 0, 1, 0; 0, 0, 0, 1]
+        T = exp([S1] * t1) * exp([S2] * t2) * M";
+    let out = run(&mut session(), src);
+    assert!(out.contains("L1 cos(t1) + L2 cos(t1 + t2)"), "{out}");
+    assert!(out.contains("L1 sin(t1) + L2 sin(t1 + t2)"), "{out}");
+    assert!(out.contains("cos(t1 + t2), -sin(t1 + t2), 0"), "{out}");
+    assert!(out.contains(": SE(3)"), "{out}");
+    let short = run_with(
+        Settings {
+            sym: chasles::sym::print::Mode::Short,
+            ..Settings::default()
+        },
+        src,
+    );
+    assert!(short.contains("L1 c₁ + L2 c₁₂"), "{short}");
+}
+
+#[test]
+fn latex_of_the_2r_arm_is_a_well_formed_bmatrix() {
+    let src = "given theta1, theta2, L1, L2 : scalar
+        T = exp([(0, 0, 1, 0, 0, 0)] * theta1) * exp([(0, 0, 1, 0, -L1, 0)] * theta2) * [1, 0, 0, L1 + L2; 0, 1, 0, 0; 0, 0, 1, 0; 0, 0, 0, 1]";
+    let out = run_with(
+        Settings {
+            sym: chasles::sym::print::Mode::Latex,
+            ..Settings::default()
+        },
+        src,
+    );
+    let line = out.lines().last().unwrap();
+    let body = line
+        .split_once("\\begin{bmatrix}")
+        .and_then(|(_, r)| r.split_once("\\end{bmatrix}"))
+        .map(|(b, _)| b)
+        .expect("a bmatrix");
+    let mut depth = 0i32;
+    for c in line.chars() {
+        depth += match c {
+            '{' => 1,
+            '}' => -1,
+            _ => 0,
+        };
+        assert!(depth >= 0, "{line}");
+    }
+    assert_eq!(depth, 0, "{line}");
+    let rows: Vec<&str> = body.split("\\\\").collect();
+    assert_eq!(rows.len(), 4, "{body}");
+    for r in &rows {
+        assert_eq!(r.matches('&').count(), 3, "{r}");
+    }
+    assert!(
+        body.contains("L_1 \\cos\\theta_1 + L_2 \\cos(\\theta_1 + \\theta_2)"),
+        "{body}"
+    );
+}
+
+#[test]
+fn json_carries_text_and_latex() {
+    let out = run_with(
+        Settings {
+            json: true,
+            ..Settings::default()
+        },
+        "given theta : scalar\nRotz(theta)",
+    );
+    let v: serde_json::Value = serde_json::from_str(out.lines().last().unwrap()).unwrap();
+    assert_eq!(v["type"], "symbolic");
+    assert_eq!(v["kind"], "SO3");
+    assert_eq!(
+        v["value"],
+        "[cos(theta), -sin(theta), 0; sin(theta), cos(theta), 0; 0, 0, 1]"
+    );
+    assert_eq!(
+        v["latex"],
+        "\\begin{bmatrix} \\cos\\theta & -\\sin\\theta & 0 \\\\ \\sin\\theta & \\cos\\theta & 0 \\\\ 0 & 0 & 1 \\end{bmatrix}"
+    );
+}
+
+#[test]
+fn frames_are_checked_for_symbolic_values_as_for_numbers() {
+    let mut s = session();
+    run(&mut s, "given t : scalar\nR_sb = Rotz(t)\nR_sc = Roty(t)");
+    let (_, err, n) = s.run_to_strings("t.chs", "R_sb * R_sc", Mode::Run, false);
+    assert_eq!(n, 1);
+    assert!(
+        err.contains("frame error") && err.contains("{b}") && err.contains("{s}"),
+        "{err}"
+    );
+    let out = run(&mut s, "R_sb.T * R_sc");
+    assert!(out.contains("SO(3) {b}←{c}"), "{out}");
+    // the same statements with numbers give the same frames
+    let mut n = session();
+    run(&mut n, "t = 0.3\nR_sb = Rotz(t)\nR_sc = Roty(t)");
+    assert!(run(&mut n, "R_sb.T * R_sc").contains("SO(3) {b}←{c}"));
+    let (_, _, errs) = n.run_to_strings("t.chs", "R_sb * R_sc", Mode::Run, false);
+    assert_eq!(errs, 1);
+}
+
+#[test]
+fn angular_velocity_from_r_dot_r_transpose() {
+    let mut s = session();
+    let out = run(
+        &mut s,
+        "given theta(t) : scalar
+         R_sb = Rot((1, 2, 2)/3, theta)
+         W = diff(R_sb, t) R_sb^T
+         so3ToVec(W)
+         so3ToVec(R_sb^T diff(R_sb, t))
+         theta'",
+    );
+    // [ω_s] = Ṙ Rᵀ in {s} (§3.2.2), [ω_b] = Rᵀ Ṙ in {b}
+    let w = "((1/3) θ̇, (2/3) θ̇, (2/3) θ̇)  : 3-vector";
+    assert!(out.contains(&format!("{w} {{s}}")), "{out}");
+    assert!(out.contains(&format!("{w} {{b}}")), "{out}");
+    assert!(out.contains(": so(3) {s}"), "{out}");
+    assert!(out.trim_end().ends_with("θ̇"), "{out}");
+}
+
+#[test]
+fn numbers_bound_later_make_symbolic_values_numeric() {
+    let mut s = session();
+    run(
+        &mut s,
+        "given t, L : scalar\nT = [Rotz(t), (L * cos(t), L * sin(t), 0); 0, 0, 0, 1]",
+    );
+    let out = run(&mut s, "t = 30 deg\nL = 2\nT");
+    assert!(out.contains("[0.866, -0.5,   0, 1.7321"), "{out}");
+    assert!(out.contains(": SE(3)"), "{out}");
+}
+
+#[test]
+fn repl_toggles_short_and_latex() {
+    use chasles::repl::commands::execute;
+    let mut s = session();
+    run(&mut s, "given t1, t2 : scalar");
+    assert_eq!(execute(&mut s, ":short").out.trim(), "short: on");
+    assert!(execute(&mut s, "cos(t1 + t2)").out.contains("c₁₂"));
+    assert_eq!(execute(&mut s, ":latex").out.trim(), "latex: on");
+    assert!(
+        execute(&mut s, "cos(t1 + t2)")
+            .out
+            .contains("\\cos(t_1 + t_2)")
+    );
+    assert_eq!(execute(&mut s, ":latex off").out.trim(), "latex: off");
+    assert!(execute(&mut s, "cos(t1 + t2)").out.contains("cos(t1 + t2)"));
+}
+
+#[test]
+fn powers_and_numbers_print_exactly() {
+    let out = run(
+        &mut session(),
+        "given t : scalar\n(t + 1)^5\n(t + 0.1)^2\n0.12345 t + 0.425\ncos(t + 1e300)\nt/sqrt(2)",
+    );
+    assert_eq!(
+        out,
+        "1 + 5 t + 10 t^2 + 10 t^3 + 5 t^4 + t^5\n0.01 + (1/5) t + t^2\n0.425 + 0.12345 t\n\
+         cos(1e300 + t)\n(1/√2) t\n"
+    );
+}
+
+#[test]
+fn derive_multiplies_symbolic_transforms() {
+    let out = run(
+        &mut session(),
+        "given t : scalar\nT_ab = RpToTrans(Rotz(t), (1, 0, 0))\nT_bc = RpToTrans(Rotx(t), (0, 0, 0))\nderive T_ca",
+    );
+    assert!(out.contains("T_ca = inv(T_bc) * inv(T_ab)\n"), "{out}");
+    assert!(out.contains("sin(t)^2,       -cos(t) sin(t)"), "{out}");
+    assert!(out.trim_end().ends_with(": SE(3) {c}←{a}"), "{out}");
+}
+
+/// Every builtin on symbolic arguments of every shape answers (a value or
+/// an error) and never panics.
+#[test]
+fn every_builtin_takes_symbolic_arguments_without_panicking() {
+    let args = [
+        "t",
+        "(t, 0, 1)",
+        "Rotz(t)",
+        "RpToTrans(Rotx(t), (t, 1, 0))",
+        "(t, 0, 0, 1)",
+        "(0, 0, 1, t, 0, 0)",
+        "[t, 1; 0, t]",
+    ];
+    for b in chasles::builtins::table() {
+        let (lo, hi) = b.arity();
+        for n in lo..=hi.min(3) {
+            let pool = if n == 3 { &args[..3] } else { &args[..] };
+            let mut idx = vec![0usize; n];
+            loop {
+                let call: Vec<&str> = idx.iter().map(|&i| pool[i]).collect();
+                let src = format!("given t : scalar\n{}({})", b.name, call.join(", "));
+                let mut s = session();
+                let _ = s.run_to_strings("t.chs", &src, Mode::Run, false);
+                // the next combination
+                let mut k = 0;
+                while k < n {
+                    idx[k] += 1;
+                    if idx[k] < pool.len() {
+                        break;
+                    }
+                    idx[k] = 0;
+                    k += 1;
+                }
+                if k == n {
+                    break;
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn expression_limit_is_a_domain_error() {
+    let mut s = session();
+    let (_, err, n) = s.run_to_strings(
+        "t.chs",
+        "given a, b : scalar\nx = (a + b)^5000",
+        Mode::Run,
+        false,
+    );
+    assert_eq!(n, 1);
+    assert!(err.contains("too large"), "{err}");
+}
+
+// ---------------------------------------------------------------- UR5
+
+/// The UR5 of chapter 4 (`shared/data/ur5.md`) with symbolic joint angles.
+const UR5: &str = include_str!("../benches/ur5.chs");
+
+#[test]
+fn ur5_product_of_exponentials_matches_numbers() {
+    use chasles::lie::{Vec6, se3};
+    let mut s = session();
+    let out = run(&mut s, UR5);
+    // SymPy's (1,4) entry (shared/data/ur5.md), term by term
+    for term in [
+        "0.425 cos(t1) cos(t2)",
+        "0.392 cos(t1) cos(t2 + t3)",
+        "0.082 cos(t1) cos(t2 + t3 + t4) sin(t5)",
+        "- 0.095 cos(t1) sin(t2 + t3 + t4)",
+        "- 0.109 sin(t1)",
+        "- 0.082 sin(t1) cos(t5)",
+    ] {
+        assert!(out.contains(term), "{term} missing:\n{out}");
+    }
+    let t = formula(&s, "T");
+    let (w1, w2, l1, l2, h1, h2) = (0.109, 0.082, 0.425, 0.392, 0.089, 0.095);
+    let screws = [
+        [0.0, 0.0, 1.0, 0.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0, -h1, 0.0, 0.0],
+        [0.0, 1.0, 0.0, -h1, 0.0, l1],
+        [0.0, 1.0, 0.0, -h1, 0.0, l1 + l2],
+        [0.0, 0.0, -1.0, -w1, l1 + l2, 0.0],
+        [0.0, 1.0, 0.0, h2 - h1, 0.0, l1 + l2],
+    ];
+    #[rustfmt::skip]
+    let m = nalgebra::Matrix4::new(
+        -1.0, 0.0, 0.0, l1 + l2,
+        0.0, 0.0, 1.0, w1 + w2,
+        0.0, 1.0, 0.0, h1 - h2,
+        0.0, 0.0, 0.0, 1.0,
+    );
+    let mut rng = 0x2545_f491_4f6c_dd1du64;
+    let mut next = || {
+        rng ^= rng << 13;
+        rng ^= rng >> 7;
+        rng ^= rng << 17;
+        (rng >> 11) as f64 / (1u64 << 53) as f64 * 2.0 * std::f64::consts::PI - std::f64::consts::PI
+    };
+    for _ in 0..1000 {
+        let q: Vec<f64> = (0..6).map(|_| next()).collect();
+        let mut want: nalgebra::Matrix4<f64> = nalgebra::Matrix4::identity();
+        for (s, th) in screws.iter().zip(&q) {
+            want *= se3::exp(&(Vec6::from_row_slice(s) * *th));
+        }
+        want *= m;
+        let at = |s: &Symbol| {
+            let i: usize = s.name[1..].parse().ok()?;
+            q.get(i - 1).copied()
+        };
+        for i in 0..4 {
+            for j in 0..4 {
+                let got = t.get(i, j).eval(&at).unwrap();
+                assert!((got - want[(i, j)]).abs() < 1e-12, "({i},{j}) at {q:?}");
+            }
+        }
+    }
+}
