@@ -66,7 +66,6 @@ impl Interp<'_> {
             ExprKind::Var(name) => self.var(name, e.span),
             ExprKind::Unary { op, operand } => {
                 let t = self.expr(operand)?;
-                self.no_arithmetic(&t, operand.span, e.span)?;
                 if *op == UnOp::Pos {
                     return Ok(t);
                 }
@@ -153,15 +152,13 @@ impl Interp<'_> {
             ExprKind::Paren(items) => self.paren(items, e.span),
             ExprKind::Brackets(rows) => self.brackets(rows, e.span),
             ExprKind::Mech(spec) => self.mech(spec, e.span),
-            ExprKind::Range { start, step, end } => self.range(start, step.as_deref(), end, e.span),
-            ExprKind::Comprehension { body, vars } => self.comprehension(body, vars, e.span),
-            ExprKind::Str(text) => Ok(self.string(text)),
             ExprKind::Compare {
                 op,
                 lhs,
                 rhs,
                 op_span,
             } => self.compare(*op, lhs, rhs, *op_span),
+            _ => self.list_expr(e), // ranges, comprehensions, strings (§12)
         }
     }
 
@@ -270,9 +267,7 @@ impl Interp<'_> {
             }
         }
         let (l, r) = self.operands(op, lhs, rhs)?;
-        for (t, side) in [(&l, lhs), (&r, rhs)] {
-            self.no_arithmetic(t, side.span, op_span)?;
-        }
+        self.no_arithmetic(&[(&l, lhs.span), (&r, rhs.span)], op_span)?;
         let ops_text = Operands {
             lhs: self.text(lhs.span),
             rhs: self.text(rhs.span),
@@ -450,13 +445,8 @@ impl Interp<'_> {
                 val: Some(Value::Sym(sym)),
             });
         }
-        let typed = tys
-            .into_iter()
-            .zip(args)
-            .map(|(t, e)| (t, self.text(e.span).trim().to_string()))
-            .collect();
         let mut a = Args {
-            typed,
+            typed: self.typed_args(tys, args),
             name: b.name,
             signature: b.signature,
             vals,

@@ -13,7 +13,7 @@ use super::interp::{Interp, Typed};
 use super::value::{Value, common_kind};
 use crate::check::ty::{Frames, Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
-use crate::syntax::ast::{Expr, Ident, Span};
+use crate::syntax::ast::{Expr, ExprKind, Ident, Span};
 
 /// The longest list made: a range or comprehension with more items is a
 /// domain error that gives the count (a list of 10⁷ points is a mistake,
@@ -98,23 +98,49 @@ pub(super) fn numbers_only(
 }
 
 impl Interp<'_> {
-    /// A list, picture or string as an operand of arithmetic: a type error
-    /// at `op` naming the operand at `side`.
-    pub(super) fn no_arithmetic(&self, t: &Typed, side: Span, op: Span) -> Result<(), Diagnostic> {
-        let Some(help) = elementwise_help(&t.ty.kind) else {
-            return Ok(());
-        };
-        Err(Diagnostic::error(
-            ErrorKind::Type,
-            op,
-            format!(
-                "no arithmetic on {} ({})",
-                t.ty.kind.a(),
-                self.text(side).trim()
-            ),
-        )
-        .with_label(side, t.ty.kind.to_string())
-        .with_help(help))
+    /// Lists, pictures or strings as operands of arithmetic: a type error
+    /// at `op` naming the first such operand.
+    pub(super) fn no_arithmetic(
+        &self,
+        operands: &[(&Typed, Span)],
+        op: Span,
+    ) -> Result<(), Diagnostic> {
+        for (t, side) in operands {
+            let Some(help) = elementwise_help(&t.ty.kind) else {
+                continue;
+            };
+            return Err(Diagnostic::error(
+                ErrorKind::Type,
+                op,
+                format!(
+                    "no arithmetic on {} ({})",
+                    t.ty.kind.a(),
+                    self.text(*side).trim()
+                ),
+            )
+            .with_label(*side, t.ty.kind.to_string())
+            .with_help(help));
+        }
+        Ok(())
+    }
+
+    /// A range, comprehension or string literal.
+    pub(super) fn list_expr(&mut self, e: &Expr) -> Result<Typed, Diagnostic> {
+        match &e.kind {
+            ExprKind::Range { start, step, end } => self.range(start, step.as_deref(), end, e.span),
+            ExprKind::Comprehension { body, vars } => self.comprehension(body, vars, e.span),
+            ExprKind::Str(text) => Ok(self.string(text)),
+            _ => Err(self.domain(e.span, "not a list")),
+        }
+    }
+
+    /// The builtin arguments' kinds and frames with their text (what
+    /// `draw` labels and frames its picture with).
+    pub(super) fn typed_args(&self, tys: Vec<Ty>, args: &[Expr]) -> Vec<(Ty, String)> {
+        tys.into_iter()
+            .zip(args)
+            .map(|(t, e)| (t, self.text(e.span).trim().to_string()))
+            .collect()
     }
 
     /// `"name.svg"`.
