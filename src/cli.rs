@@ -59,6 +59,10 @@ struct Opts {
     /// Symbolic values as LaTeX (bmatrix, \theta_1).
     #[arg(long, global = true)]
     latex: bool,
+    /// Where pictures printed but not saved are written (default: the
+    /// current folder); created if missing.
+    #[arg(long, global = true, value_name = "DIR")]
+    draw_dir: Option<std::path::PathBuf>,
 }
 
 impl Opts {
@@ -70,6 +74,24 @@ impl Opts {
             (true, _) => Mode::Short,
             _ => Mode::Text,
         }
+    }
+}
+
+/// The folder for printed pictures, created when asked for by `--draw-dir`.
+fn picture_dir(opts: &Opts) -> Result<std::path::PathBuf, i32> {
+    match &opts.draw_dir {
+        None => Ok(".".into()),
+        Some(d) => match std::fs::create_dir_all(d) {
+            Ok(()) => Ok(d.clone()),
+            Err(e) => {
+                emit_err(&format!(
+                    "chasles: cannot use --draw-dir '{}': {}\n",
+                    d.display(),
+                    crate::session::io_reason(&e)
+                ));
+                Err(2)
+            }
+        },
     }
 }
 
@@ -113,6 +135,12 @@ fn run_sources(sources: &[(String, String)], mode: Mode, opts: &Opts) -> i32 {
         sym: opts.sym_mode(),
     };
     let mut session = Session::new(settings);
+    if mode == Mode::Run {
+        match picture_dir(opts) {
+            Ok(d) => session.pictures = Some(d),
+            Err(code) => return code,
+        }
+    }
     let stdout = std::io::stdout();
     let mut out = std::io::BufWriter::new(stdout.lock());
     let mut errors = 0;
@@ -208,13 +236,20 @@ pub fn main_with_args(args: Vec<String>) -> i32 {
         },
         (None, None) => {
             if std::io::stdin().is_terminal() {
-                crate::repl::run_terminal(&Settings {
-                    frames: cli.opts.frames,
-                    digits: cli.opts.digits as usize,
-                    json: cli.opts.json,
-                    exact: cli.opts.exact,
-                    sym: cli.opts.sym_mode(),
-                })
+                let pictures = match picture_dir(&cli.opts) {
+                    Ok(d) => d,
+                    Err(code) => return code,
+                };
+                crate::repl::run_terminal(
+                    &Settings {
+                        frames: cli.opts.frames,
+                        digits: cli.opts.digits as usize,
+                        json: cli.opts.json,
+                        exact: cli.opts.exact,
+                        sym: cli.opts.sym_mode(),
+                    },
+                    pictures,
+                )
             } else {
                 match load(&["-".to_string()]) {
                     Ok(s) => run_sources(&s, Mode::Run, &cli.opts),

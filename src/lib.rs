@@ -46,6 +46,7 @@ pub mod builtins;
 pub mod check;
 pub mod cli;
 pub mod diagnostics;
+pub mod draw;
 pub mod eval;
 pub mod lie;
 pub mod mech;

@@ -101,6 +101,12 @@ pub struct Session {
     /// the REPL's `:save` writes and `:history` lists (scripts leave it
     /// empty).
     pub accepted: Vec<String>,
+    /// Where pictures printed but not saved are written (§12): `Some(".")`
+    /// in the CLI and REPL, or `--draw-dir`. `None` (the default, for
+    /// library use and tests) writes no file at all, not even for `save`.
+    pub pictures: Option<std::path::PathBuf>,
+    /// The file of the last picture written (the REPL's `:open`).
+    pub last_picture: Option<String>,
 }
 
 impl Session {
@@ -109,7 +115,33 @@ impl Session {
             env: Env::default(),
             settings,
             accepted: Vec::new(),
+            pictures: None,
+            last_picture: None,
         }
+    }
+
+    /// A picture that a statement printed: checked and described, and —
+    /// when this session writes files — written to the file `save` asked
+    /// for, else to `NAME.svg` or `draw-LINE.svg` in the picture folder.
+    fn picture(&mut self, o: &mut Outcome, line: usize) -> Result<(), Diagnostic> {
+        let Some(Value::Picture(p)) = &o.val else {
+            return Ok(());
+        };
+        let fail = |m: String| Diagnostic::error(ErrorKind::Domain, o.span, m);
+        let mut p = crate::draw::described(p).map_err(fail)?;
+        if let (Some(dir), false, true) = (&self.pictures, p.is_view_only(), o.prints) {
+            let path = match (&p.save_to, o.names.as_slice()) {
+                (Some(f), _) => std::path::PathBuf::from(f),
+                (None, [name]) => dir.join(format!("{}.svg", file_stem(name))),
+                _ => dir.join(format!("draw-{line}.svg")),
+            };
+            crate::draw::file::write(&p, &path).map_err(fail)?;
+            let shown = path.to_string_lossy().trim_start_matches("./").to_string();
+            std::rc::Rc::make_mut(&mut p).file = Some(shown.clone());
+            self.last_picture = Some(shown);
+        }
+        o.val = Some(Value::Picture(p));
+        Ok(())
     }
 
     /// Runs (or, in [`Mode::Check`], checks) every statement of `src`,
@@ -135,8 +167,13 @@ impl Session {
                 Ok(stmt) => {
                     let line = lines.line(stmt.span.start);
                     let mut interp = Interp::new(&mut self.env, src, mode, self.settings.frames);
-                    let result = interp.stmt(&stmt).map_err(|d| habit_help(d, src));
+                    let mut result = interp.stmt(&stmt).map_err(|d| habit_help(d, src));
                     let mut warnings = std::mem::take(&mut interp.warnings);
+                    if let Ok(o) = &mut result
+                        && let Err(d) = self.picture(o, line)
+                    {
+                        result = Err(d);
+                    }
                     if let Ok(o) = &result {
                         warnings.extend(not_finite_warning(o));
                     }
@@ -225,6 +262,20 @@ fn not_finite_warning(o: &crate::eval::interp::Outcome) -> Option<Diagnostic> {
     Some(Diagnostic::warning(ErrorKind::Domain, o.span, message))
 }
 
+/// A binding name as a file name: letters, digits, `_` and `-` kept,
+/// anything else (`{`, `,`, `'`) as `_`.
+fn file_stem(name: &str) -> String {
+    name.chars()
+        .map(|c| {
+            if c.is_alphanumeric() || c == '_' || c == '-' {
+                c
+            } else {
+                '_'
+            }
+        })
+        .collect()
+}
+
 /// Largest script accepted (bytes).
 pub const MAX_SOURCE_BYTES: u64 = 100 * 1024 * 1024;
 
@@ -266,7 +317,7 @@ pub fn read_source(path: &str) -> Result<String, String> {
     })
 }
 
-fn io_reason(e: &std::io::Error) -> String {
+pub(crate) fn io_reason(e: &std::io::Error) -> String {
     match e.kind() {
         std::io::ErrorKind::NotFound => "no such file".into(),
         std::io::ErrorKind::PermissionDenied => "permission denied".into(),

@@ -34,7 +34,8 @@ fn rel(path: &Path) -> String {
 #[test]
 fn example_scripts() {
     insta::glob!("../examples", "*.chs", |path| {
-        let out = run(&["run", &rel(path)]);
+        // Pictures printed but not saved go under target/, never into the tree.
+        let out = run(&["run", "--draw-dir", "target/example-pictures", &rel(path)]);
         assert!(out.starts_with("exit: 0\n"), "{} failed:\n{out}", rel(path));
         insta::assert_snapshot!(out);
     });

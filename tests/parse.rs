@@ -72,6 +72,18 @@ fn sexp(e: &Expr) -> String {
             format!("[{}]", rows.join("; "))
         }
         ExprKind::Mech(m) => format!("{m:?}"),
+        ExprKind::Str(t) => format!("{t:?}"),
+        ExprKind::Range { start, step, end } => match step {
+            Some(h) => format!("(: {} {} {})", sexp(start), sexp(h), sexp(end)),
+            None => format!("(: {} {})", sexp(start), sexp(end)),
+        },
+        ExprKind::Comprehension { body, vars } => {
+            let vars: Vec<String> = vars
+                .iter()
+                .map(|(n, r)| format!("{} in {}", n.name, sexp(r)))
+                .collect();
+            format!("[{} for {}]", sexp(body), vars.join(", "))
+        }
     }
 }
 

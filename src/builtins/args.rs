@@ -40,6 +40,9 @@ pub struct Args<'a> {
     pub spans: Vec<Span>,
     pub call_span: Span,
     pub warnings: &'a mut Vec<Diagnostic>,
+    /// Each argument's static kind and frames, and its source text (what
+    /// `draw` labels and frames a picture with); empty where unknown.
+    pub typed: Vec<(crate::check::ty::Ty, String)>,
 }
 
 impl Args<'_> {

@@ -8,6 +8,8 @@
 mod args;
 pub mod notes;
 pub mod parts;
+mod table_draw;
+mod table_list;
 mod table_math;
 mod table_repr;
 mod table_rotations;
@@ -37,10 +39,12 @@ pub enum Area {
     LinearAlgebra,
     Scalars,
     Mechanisms,
+    /// Lists, ranges and pictures (LANGUAGE.md §12).
+    Pictures,
 }
 
 impl Area {
-    pub const ALL: [Area; 8] = [
+    pub const ALL: [Area; 9] = [
         Area::Rotations,
         Area::Transforms,
         Area::Twists,
@@ -49,6 +53,7 @@ impl Area {
         Area::LinearAlgebra,
         Area::Scalars,
         Area::Mechanisms,
+        Area::Pictures,
     ];
     pub fn title(self) -> &'static str {
         match self {
@@ -60,6 +65,7 @@ impl Area {
             Area::LinearAlgebra => "linear algebra",
             Area::Scalars => "scalar functions",
             Area::Mechanisms => "mechanisms (chapter 2)",
+            Area::Pictures => "lists, ranges and pictures",
         }
     }
 }
@@ -326,6 +332,8 @@ pub fn table() -> &'static [Builtin] {
         t.extend(table_scalar::builtins());
         t.extend(table_sym::builtins());
         t.extend(table_units::builtins());
+        t.extend(table_list::builtins());
+        t.extend(table_draw::builtins());
         t
     })
 }

@@ -94,9 +94,13 @@ fn add_kind(l: &Kind, r: &Kind) -> Result<Kind, RuleError> {
 /// `-x`.
 pub fn neg(t: &Ty) -> Result<Ty, RuleError> {
     match t.kind {
-        Kind::Mechanism | Kind::Tuple(_) | Kind::Bool | Kind::Function => {
-            Err(RuleError::typ(format!("cannot negate {}", t.kind.a())))
-        }
+        Kind::Mechanism
+        | Kind::Tuple(_)
+        | Kind::Bool
+        | Kind::Function
+        | Kind::List(_)
+        | Kind::Picture
+        | Kind::Text => Err(RuleError::typ(format!("cannot negate {}", t.kind.a()))),
         _ => Ok(t.scaled()),
     }
 }

@@ -41,6 +41,13 @@ pub enum Kind {
     Tuple(Vec<Kind>),
     /// A user function.
     Function,
+    /// A list of values of one kind (LANGUAGE.md §12): `0:4`,
+    /// `[f(k) for k in 0:4]`; `Unknown` elements when they differ.
+    List(Box<Kind>),
+    /// A picture made by `draw` (§12).
+    Picture,
+    /// A string, `"name.svg"`: file names for `save` and picture titles.
+    Text,
     /// Not known statically (e.g. the element of a tuple of unknown shape).
     Unknown,
 }
@@ -67,6 +74,9 @@ impl Kind {
             Kind::Adjoint { .. } => "adjoint",
             Kind::Mechanism => "mechanism",
             Kind::Tuple(_) => "tuple",
+            Kind::List(_) => "list",
+            Kind::Picture => "picture",
+            Kind::Text => "string",
         }
     }
 
@@ -157,7 +167,8 @@ impl Kind {
         let name = self.to_string();
         let vowel = name.starts_with(['a', 'e', 'i', 'o', 'u', 'S', 's'])
             && !name.starts_with("screw")
-            && !name.starts_with("scalar");
+            && !name.starts_with("scalar")
+            && !name.starts_with("string");
         let vowel =
             vowel || name.starts_with("8-") || name.starts_with("11-") || name.starts_with("18-");
         format!("{} {name}", if vowel { "an" } else { "a" })
@@ -198,6 +209,22 @@ impl fmt::Display for Kind {
                 write!(f, ")")
             }
             Kind::Function => write!(f, "function"),
+            Kind::List(k) => match **k {
+                Kind::Unknown => write!(f, "list"),
+                Kind::Scalar => write!(f, "list of numbers"),
+                Kind::Screw => write!(f, "list of screw axes"),
+                Kind::List(_) => write!(f, "list of lists"),
+                Kind::Vector(_)
+                | Kind::Matrix(..)
+                | Kind::Twist
+                | Kind::Wrench
+                | Kind::Tuple(_) => {
+                    write!(f, "list of {k}s")
+                }
+                _ => write!(f, "list of {k}"),
+            },
+            Kind::Picture => write!(f, "picture"),
+            Kind::Text => write!(f, "string"),
             Kind::Unknown => write!(f, "value"),
         }
     }

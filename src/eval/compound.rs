@@ -47,6 +47,9 @@ impl Interp<'_> {
                 }
             }
         }
+        if let Kind::List(_) = &t.ty.kind {
+            return self.list_item(t, &sels, span);
+        }
         let outer = match t.ty.frames.outer() {
             Some(a) => Frames::One(a.clone()),
             None => Frames::None,

@@ -158,6 +158,7 @@ impl Interp<'_> {
                 rhs,
                 op_span,
             } => self.compare(*op, lhs, rhs, *op_span),
+            _ => self.list_expr(e), // ranges, comprehensions, strings (§12)
         }
     }
 
@@ -266,6 +267,7 @@ impl Interp<'_> {
             }
         }
         let (l, r) = self.operands(op, lhs, rhs)?;
+        self.no_arithmetic(&[(&l, lhs.span), (&r, rhs.span)], op_span)?;
         let ops_text = Operands {
             lhs: self.text(lhs.span),
             rhs: self.text(rhs.span),
@@ -419,6 +421,7 @@ impl Interp<'_> {
             .into_iter()
             .map(|t| t.val.unwrap_or_else(|| Value::scalar(f64::NAN)))
             .collect();
+        super::list::numbers_only(b, &vals, span)?;
         let refs: Vec<&Value> = vals.iter().collect();
         if super::formula::applies(&refs)
             && let Some(v) = builtins::eval_symbolic(b.name, &vals, &ty.kind)
@@ -443,6 +446,7 @@ impl Interp<'_> {
             });
         }
         let mut a = Args {
+            typed: self.typed_args(tys, args),
             name: b.name,
             signature: b.signature,
             vals,

@@ -282,6 +282,11 @@ impl<'a> Interp<'a> {
         name_span: Span,
         value_span: Span,
     ) -> Result<Typed, Diagnostic> {
+        // Lists, pictures and strings take no frames from their names (§12):
+        // theirs come from what they hold.
+        if matches!(t.ty.kind, Kind::List(_) | Kind::Picture | Kind::Text) {
+            return Ok(t);
+        }
         let ty = match bind::bind(name, &t.ty) {
             Ok(b) => {
                 if let Some(w) = b.warning {
@@ -409,6 +414,11 @@ impl<'a> Interp<'a> {
     fn split_tuple(&self, t: &Typed, n: usize, span: Span) -> Result<Vec<Typed>, Diagnostic> {
         let kinds: Vec<Kind> = match &t.ty.kind {
             Kind::Tuple(ks) => ks.clone(),
+            // A list's length is known only from its value.
+            Kind::List(k) => match &t.val {
+                Some(Value::List(vs)) => vs.iter().map(Value::kind).collect(),
+                _ => vec![(**k).clone(); n],
+            },
             Kind::Vector(Some(len)) => vec![Kind::Scalar; *len],
             Kind::Unknown | Kind::Vector(None) => vec![Kind::Unknown; n],
             k => {
@@ -432,6 +442,7 @@ impl<'a> Interp<'a> {
         }
         let vals: Vec<Option<Value>> = match &t.val {
             Some(Value::Tuple(vs)) => vs.iter().cloned().map(Some).collect(),
+            Some(Value::List(vs)) => vs.iter().cloned().map(Some).collect(),
             Some(Value::Num { m, .. }) => m.iter().map(|x| Some(Value::scalar(*x))).collect(),
             _ => vec![None; n],
         };

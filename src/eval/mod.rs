@@ -9,6 +9,7 @@ pub mod env;
 mod expr;
 pub mod graph;
 pub mod interp;
+pub mod list;
 mod notation;
 mod substitute;
 mod symbols;

@@ -254,6 +254,7 @@ fn call(name: &str, vals: Vec<Value>) -> Option<Value> {
         spans,
         call_span: Default::default(),
         warnings: &mut warnings,
+        typed: Vec::new(),
     };
     (b.eval)(&mut args).ok()
 }

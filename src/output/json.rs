@@ -40,6 +40,13 @@ pub fn value(v: &Value) -> J {
         Value::Tuple(vs) => J::Array(vs.iter().map(value).collect()),
         Value::Mech(m) => m.to_json(),
         Value::Sym(s) => json!(s.to_string()),
+        Value::List(vs) => J::Array(vs.iter().map(value).collect()),
+        Value::Str(t) => json!(t.as_ref()),
+        Value::Picture(p) => json!({
+            "file": p.file,
+            "shows": p.summary,
+            "panels": p.panels.len(),
+        }),
         Value::Formula { m, .. } => json!(crate::values::format::formula_inline(m, 17.into())),
     }
 }

@@ -9,6 +9,58 @@ pub use crate::values::format::{Style, inline};
 use crate::values::value::Value;
 use std::fmt::Write;
 
+/// The label of a list: `list of 5 SE(3) {s}←{b'}`.
+fn list_label(ty: &Ty, vs: &[Value]) -> String {
+    let kind = crate::values::value::common_kind(vs);
+    let n = vs.len();
+    let what = match kind {
+        _ if n == 0 => "empty list".to_string(),
+        Kind::Unknown => format!("list of {n} values"),
+        Kind::Scalar if n == 1 => "list of 1 number".to_string(),
+        k => Kind::List(Box::new(k))
+            .to_string()
+            .replacen("list of ", &format!("list of {n} "), 1),
+    };
+    if ty.frames.is_none() {
+        what
+    } else {
+        format!("{what} {}", ty.frames)
+    }
+}
+
+/// A list whose items are matrices: one item per block, numbered (the
+/// first three and the last two of more than twelve).
+fn list_block(prefix: &str, ty: &Ty, vs: &[Value], style: Style) -> String {
+    let mut out = format!("{prefix}{}:", list_label(ty, vs));
+    let numbered: Vec<(usize, &Value)> = vs.iter().enumerate().collect();
+    let shown: Vec<&(usize, &Value)> = if numbered.len() > 12 {
+        numbered[..3]
+            .iter()
+            .chain(numbered[numbered.len() - 2..].iter())
+            .collect()
+    } else {
+        numbered.iter().collect()
+    };
+    let mut last = 0;
+    for (i, v) in shown {
+        if *i > last + 1 {
+            out.push_str("\n  …");
+        }
+        last = *i;
+        let head = format!("  [{}] ", i + 1);
+        let body = match v {
+            Value::Num { m, .. } if m.ncols() > 1 && m.nrows() > 1 => {
+                matrix_block(m, style, head.chars().count())
+            }
+            other => inline(other, style),
+        };
+        out.push('\n');
+        out.push_str(&head);
+        out.push_str(&body);
+    }
+    out
+}
+
 /// A matrix in aligned columns, decimal points lined up, one row per line;
 /// `indent` is the column where the `[` stands.
 pub fn matrix_block(m: &nalgebra::DMatrix<f64>, style: impl Into<Style>, indent: usize) -> String {
@@ -131,7 +183,7 @@ fn write_type_label(out: &mut String, ty: &Ty, val: Option<&Value>) -> bool {
     };
     match kind {
         Kind::Scalar | Kind::Bool if ty.frames.is_none() => false,
-        Kind::Mechanism | Kind::Function => false,
+        Kind::Mechanism | Kind::Function | Kind::Picture | Kind::Text => false,
         Kind::Tuple(_) => false,
         // As `Ty`'s Display: the kind, then the frames if any.
         k if ty.frames.is_none() => {
@@ -155,6 +207,21 @@ pub fn show_value(prefix: &str, ty: &Ty, v: &Value, style: impl Into<Style>) -> 
 /// [`show_value`], appended to `out`.
 fn write_value(out: &mut String, prefix: &str, ty: &Ty, v: &Value, style: Style) {
     match v {
+        Value::List(vs)
+            if vs
+                .iter()
+                .any(|x| matches!(x, Value::Num { m, .. } if m.ncols() > 1 && m.nrows() > 1)) =>
+        {
+            out.push_str(&list_block(prefix, ty, vs, style));
+            return;
+        }
+        Value::List(vs) => {
+            out.push_str(prefix);
+            write_inline(out, v, style);
+            out.push_str("  : ");
+            out.push_str(&list_label(ty, vs));
+            return;
+        }
         Value::Num { m, .. } if m.ncols() > 1 && m.nrows() > 1 => {
             out.push_str(prefix);
             write_matrix_block(out, m, style, width(prefix));

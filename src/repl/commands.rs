@@ -81,6 +81,11 @@ pub const COMMANDS: &[Command] = &[
         doc: "symbolic values as LaTeX: bmatrix, \\theta_1 (§7)",
     },
     Command {
+        name: "open",
+        args: "",
+        doc: "open the last picture written with the system viewer (§12)",
+    },
+    Command {
         name: "quit",
         args: "",
         doc: "leave the REPL (also Ctrl-D, or quit / exit without the colon)",
@@ -100,13 +105,13 @@ pub struct Reply {
 }
 
 impl Reply {
-    fn out(text: impl Into<String>) -> Reply {
+    pub(super) fn out(text: impl Into<String>) -> Reply {
         Reply {
             out: line(text.into()),
             ..Reply::default()
         }
     }
-    fn err(text: impl Into<String>) -> Reply {
+    pub(super) fn err(text: impl Into<String>) -> Reply {
         Reply {
             err: line(text.into()),
             ..Reply::default()
@@ -204,6 +209,7 @@ pub fn command(session: &mut Session, input: &str) -> Reply {
         "exact" => exact(session, arg),
         "short" => sym_mode(session, arg, crate::sym::print::Mode::Short),
         "latex" => sym_mode(session, arg, crate::sym::print::Mode::Latex),
+        "open" => super::open::open(session),
         "quit" | "q" | "exit" => Reply {
             quit: true,
             ..Reply::default()

@@ -67,6 +67,14 @@ mech < legs 6 UPS; spatial >               a parallel mechanism
   joints R P H (f = 1), C U (f = 2), S (f = 3); planar, spherical, spatial
 dof(m) gives the number";
 
+/// Ranges, lists and pictures, shown with `:help pictures` (§12).
+const LIST_SYNTAX: &str = "\
+0:4   0:pi/8:pi                        ranges as in MATLAB, the end included
+[k^2 for k in 0:4]                     a list; [f(a, b) for a in r1, b in r2] a grid
+xs[2]   (a, b) = xs   len(xs)          index from 1, destructure
+pic = draw(T_sa, S)                    written to pic.svg (--draw-dir DIR); :open shows it
+save(pic, \"f.png\")   view(30 deg, 20 deg)   beside(p1, p2)";
+
 /// The whole `:help` answer for `arg` (trimmed); Err is the message for
 /// an unknown name, with a did-you-mean.
 pub fn help(arg: &str, settings: &Settings) -> Result<String, String> {
@@ -138,6 +146,10 @@ fn area_listing(area: Area) -> String {
         out.push_str(MECH_SYNTAX);
         out.push('\n');
     }
+    if area == Area::Pictures {
+        out.push_str(LIST_SYNTAX);
+        out.push('\n');
+    }
     let items: Vec<&Builtin> = in_area(area).collect();
     let width = items.iter().map(|b| b.name.len()).max().unwrap_or(0);
     for b in items {
@@ -191,6 +203,7 @@ pub fn area_key(area: Area) -> &'static str {
         Area::LinearAlgebra => "linear",
         Area::Scalars => "scalars",
         Area::Mechanisms => "mechanisms",
+        Area::Pictures => "pictures",
     }
 }
 

@@ -34,6 +34,13 @@ pub const KEYWORDS: &[(&[&str], &str)] = &[
   passing asserts print nothing; `chasles check` checks the sides' kinds and frames",
     ),
     (
+        &["for", "in", "range", "ranges", "list", "lists", ":"],
+        "0:4   0:pi/8:pi    ranges as in MATLAB, the end included (within rounding)
+  [k^2 for k in 0:4]                    a list; [f(a, b) for a in r1, b in r2] a grid, a outermost
+  xs[2]   (a, b, c) = xs   len sum min max    index from 1, destructure (§12)
+  a function reaches the items only through a comprehension: [f(x) for x in xs]",
+    ),
+    (
         &["==", "equal"],
         "a == b    true when a and b are exactly equal (same shape, every entry);
   symbolic sides are compared without numbers. For rounded values use a ≈ b",

@@ -11,6 +11,7 @@ pub mod complete;
 mod editor;
 pub mod help;
 pub mod keywords;
+mod open;
 pub mod save;
 
 use std::io::{IsTerminal, Write};
@@ -54,11 +55,12 @@ pub fn banner() -> String {
 
 /// Runs the REPL on a terminal; returns the exit code (0 on Ctrl-D or
 /// `:quit`).
-pub fn run_terminal(settings: &Settings) -> i32 {
+pub fn run_terminal(settings: &Settings, pictures: PathBuf) -> i32 {
     let mut session = Session::new(Settings {
         json: false,
         ..*settings
     });
+    session.pictures = Some(pictures);
     let colour = colour_enabled();
     let config = Config::builder()
         .completion_type(CompletionType::List)

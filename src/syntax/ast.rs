@@ -162,6 +162,21 @@ pub enum ExprKind {
     Brackets(Vec<Vec<Expr>>),
     /// `mech < links 4; joints R R R R; planar >` (chapter 2).
     Mech(MechSpec),
+    /// `"name.svg"`: a string (file names for `save`, picture titles).
+    Str(String),
+    /// `0:4`, `0:pi/8:pi`: a MATLAB range (LANGUAGE.md §12), `start:end`
+    /// or `start:step:end`, inclusive of the end within rounding.
+    Range {
+        start: Box<Expr>,
+        step: Option<Box<Expr>>,
+        end: Box<Expr>,
+    },
+    /// `[body for k in r]`, `[body for a in r1, b in r2]`: a list
+    /// comprehension over ranges or lists, the first variable outermost.
+    Comprehension {
+        body: Box<Expr>,
+        vars: Vec<(Ident, Expr)>,
+    },
 }
 
 /// `x²`, `R⁻¹`: the power `x ^ 2`, `R ^ -1` written as a superscript (the

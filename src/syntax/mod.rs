@@ -23,11 +23,13 @@
 
 pub mod ast;
 mod book;
+mod comprehension;
 mod fast;
 mod grammar;
 pub mod ident;
 mod mech;
 mod parser;
+mod ranges;
 mod rewrite;
 mod rules;
 mod spacing;

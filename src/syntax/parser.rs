@@ -22,14 +22,16 @@ use crate::diagnostics::{Diagnostic, ErrorKind};
 
 /// Precedence levels, loosest first; the same order as [`PRATT`].
 const PREC_CMP: u8 = 0;
-const PREC_ADD: u8 = 1;
-const PREC_MUL: u8 = 2;
-const PREC_PREFIX: u8 = 3;
-const PREC_POW: u8 = 4;
+const PREC_RANGE: u8 = 1;
+const PREC_ADD: u8 = 2;
+const PREC_MUL: u8 = 3;
+const PREC_PREFIX: u8 = 4;
+const PREC_POW: u8 = 5;
 
 static PRATT: LazyLock<PrattParser<Rule>> = LazyLock::new(|| {
     PrattParser::new()
         .op(Op::infix(Rule::eq, Assoc::Left) | Op::infix(Rule::approx, Assoc::Left))
+        .op(Op::infix(Rule::range_op, Assoc::Left))
         .op(Op::infix(Rule::add, Assoc::Left) | Op::infix(Rule::sub, Assoc::Left))
         .op(Op::infix(Rule::mul, Assoc::Left)
             | Op::infix(Rule::div, Assoc::Left)
@@ -101,7 +103,7 @@ pub(crate) struct Cx {
     above: Cell<usize>,
 }
 
-type Built = Result<(Expr, usize), Diagnostic>;
+pub(super) type Built = Result<(Expr, usize), Diagnostic>;
 
 /// How a pair takes part in the operator sequence of an expression.
 enum Role {
@@ -116,6 +118,10 @@ fn role(rule: Rule) -> Role {
         Rule::neg | Rule::pos => Role::Prefix,
         Rule::eq | Rule::approx => Role::Infix {
             prec: PREC_CMP,
+            right: false,
+        },
+        Rule::range_op => Role::Infix {
+            prec: PREC_RANGE,
             right: false,
         },
         Rule::add | Rule::sub => Role::Infix {
@@ -137,7 +143,7 @@ fn role(rule: Rule) -> Role {
     }
 }
 
-fn check_depth(depth: usize, span: Span) -> Result<(), Diagnostic> {
+pub(super) fn check_depth(depth: usize, span: Span) -> Result<(), Diagnostic> {
     if depth > MAX_DEPTH {
         Err(too_deep(span))
     } else {
@@ -162,7 +168,7 @@ impl Cx {
         )
     }
 
-    fn ident(&self, pair: Pair<'_, Rule>) -> Result<Ident, Diagnostic> {
+    pub(super) fn ident(&self, pair: Pair<'_, Rule>) -> Result<Ident, Diagnostic> {
         if pair.as_rule() != Rule::ident {
             return Err(self.unexpected(&pair));
         }
@@ -250,7 +256,7 @@ impl Cx {
     }
 
     /// An `expr` pair → its tree and depth.
-    fn expr(&self, pair: Pair<'_, Rule>) -> Built {
+    pub(super) fn expr(&self, pair: Pair<'_, Rule>) -> Built {
         let whole = self.span(pair.as_span());
         let children: Vec<Pair<'_, Rule>> = pair.into_inner().collect();
 
@@ -323,6 +329,9 @@ impl Cx {
                 let depth = dl.max(dr) + 1;
                 let op_span = self.span(op.as_span());
                 check_depth(depth, op_span)?;
+                if op.as_rule() == Rule::range_op {
+                    return Ok((super::ranges::range(l, r, op_span)?, depth));
+                }
                 if let Some(op) = rules::cmp_op(op.as_rule()) {
                     return Ok((Expr::compare(op, l, r, op_span), depth));
                 }
@@ -557,6 +566,9 @@ impl Cx {
                 let mut rows = Vec::new();
                 let mut depth = 0;
                 for row in pair.into_inner() {
+                    if row.as_rule() == Rule::comp_tail {
+                        return self.comprehension(rows, row, depth, span);
+                    }
                     let mut inner = row.into_inner().peekable();
                     if let Some(plain) = inner.next_if(|p| p.as_rule() == Rule::plain_row) {
                         depth = depth.max(2);
@@ -577,6 +589,7 @@ impl Cx {
                 ))
             }
             Rule::mech => leaf(ExprKind::Mech(self.mech(pair)?)),
+            Rule::string => leaf(ExprKind::Str(super::ranges::string(pair.as_str()))),
             _ => Err(self.unexpected(&pair)),
         }
     }

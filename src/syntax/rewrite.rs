@@ -47,6 +47,16 @@ fn expr(e: &mut Expr) {
                 *rows = flat;
             }
         }
+        ExprKind::Str(_) => {}
+        ExprKind::Range { start, step, end } => {
+            expr(start);
+            step.iter_mut().for_each(|h| expr(h));
+            expr(end);
+        }
+        ExprKind::Comprehension { body, vars } => {
+            expr(body);
+            vars.iter_mut().for_each(|(_, over)| expr(over));
+        }
     }
     transpose(e);
 }

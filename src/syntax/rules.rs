@@ -81,6 +81,7 @@ pub(crate) fn rule_name(rule: Rule) -> &'static str {
         | Rule::mul
         | Rule::div
         | Rule::pow
+        | Rule::range_op
         | Rule::eq
         | Rule::approx
         | Rule::juxt
@@ -113,6 +114,10 @@ pub(crate) fn rule_name(rule: Rule) -> &'static str {
         Rule::kw_given => "`given`",
         Rule::kw_derive => "`derive`",
         Rule::kw_assert => "`assert`",
+        Rule::comp_tail | Rule::kw_for => "`for`",
+        Rule::comp_var => "a name and `in`",
+        Rule::kw_in => "`in`",
+        Rule::string => "a string",
     }
 }
 
@@ -198,6 +203,10 @@ pub(crate) fn pest_error(err: pest::error::Error<Rule>, text: &str, off: usize) 
     // A `(` is already part of "an expression" and of "an operator".
     if names.iter().any(|n| n == EXPRESSION || n == OPERATOR) {
         names.retain(|n| n != "'('" && n != "a name");
+    }
+    // A range's `:` is an operator (`0:4`).
+    if names.iter().any(|n| n == OPERATOR) {
+        names.retain(|n| n != "':'");
     }
     if found_char.is_none() {
         names.retain(|n| n != END);

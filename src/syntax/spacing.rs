@@ -107,6 +107,19 @@ impl Check<'_> {
                 let single = row.len() == 1;
                 row.iter().try_for_each(|x| self.row(x, single))
             }),
+            ExprKind::Str(_) => Ok(()),
+            ExprKind::Range { start, step, end } => {
+                self.expr(start)?;
+                step.iter().try_for_each(|h| self.expr(h))?;
+                self.expr(end)
+            }
+            ExprKind::Comprehension { body, vars } => {
+                self.expr(body)?;
+                vars.iter().try_for_each(|(n, over)| {
+                    self.name(n)?;
+                    self.expr(over)
+                })
+            }
         }
     }
 

@@ -163,6 +163,18 @@ impl Iterator for Splitter<'_> {
 
             let b = bytes[i];
             match b {
+                // A string, "a; b # c.svg": its text is neither comment,
+                // separator nor bracket. Unclosed, it runs to the line's end.
+                b'"' => {
+                    let len = bytes[i + 1..].iter().position(|&c| c == b'"' || c == b'\n');
+                    let close = len.map_or(n, |k| i + 1 + k);
+                    self.i = if bytes.get(close) == Some(&b'"') {
+                        close + 1
+                    } else {
+                        close
+                    };
+                    continue;
+                }
                 b'#' => {
                     while self.i < n && bytes[self.i] != b'\n' {
                         self.buf[self.i] = b' ';

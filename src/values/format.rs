@@ -116,7 +116,45 @@ pub fn write_inline(out: &mut String, v: &Value, style: Style) {
         Value::Sym(s) => {
             let _ = write!(out, "{s}");
         }
+        Value::List(vs) => {
+            out.push('[');
+            let n = vs.len();
+            for (i, x) in vs.iter().enumerate() {
+                // Long lists: the first LIST_HEAD items, …, the last two.
+                if n > LIST_INLINE && i >= LIST_HEAD && i < n - 2 {
+                    if i == LIST_HEAD {
+                        out.push_str(", …");
+                    }
+                    continue;
+                }
+                if i > 0 {
+                    out.push_str(", ");
+                }
+                write_inline(out, x, style);
+            }
+            out.push(']');
+        }
+        Value::Str(t) => {
+            let _ = write!(out, "{t:?}");
+        }
+        Value::Picture(p) => out.push_str(&picture(p)),
         Value::Formula { m, .. } => out.push_str(&formula_inline(m, style)),
+    }
+}
+
+/// Lists longer than this print their first [`LIST_HEAD`] and last two
+/// items.
+const LIST_INLINE: usize = 12;
+const LIST_HEAD: usize = 8;
+
+/// `picture: 5 frames and 1 screw axis in {s} → pic.svg` (LANGUAGE.md §12).
+fn picture(p: &super::value::Picture) -> String {
+    if p.is_view_only() {
+        return p.summary.clone();
+    }
+    match &p.file {
+        Some(f) => format!("picture: {} → {f}", p.summary),
+        None => format!("picture: {}", p.summary),
     }
 }
 

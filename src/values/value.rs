@@ -6,7 +6,7 @@ use std::rc::Rc;
 use nalgebra::DMatrix;
 
 use super::symbolic::Tree;
-use crate::check::ty::Kind;
+use crate::check::ty::{Kind, Ty};
 use crate::mech::Mechanism;
 use crate::syntax::ast::Expr;
 
@@ -40,6 +40,12 @@ pub enum Value {
         kind: Kind,
         m: crate::sym::Mat,
     },
+    /// A list (LANGUAGE.md §12): a range `0:4` or a comprehension.
+    List(Rc<Vec<Value>>),
+    /// A string literal, `"name.svg"`.
+    Str(Rc<str>),
+    /// A picture made by `draw` (§12).
+    Picture(Rc<Picture>),
 }
 
 impl PartialEq for Value {
@@ -55,6 +61,9 @@ impl PartialEq for Value {
             (Value::Formula { kind: a, m: x }, Value::Formula { kind: b, m: y }) => {
                 a == b && x == y
             }
+            (Value::List(a), Value::List(b)) => a == b,
+            (Value::Str(a), Value::Str(b)) => a == b,
+            (Value::Picture(a), Value::Picture(b)) => Rc::ptr_eq(a, b),
             _ => false,
         }
     }
@@ -97,6 +106,9 @@ impl Value {
             Value::Mech(_) => Kind::Mechanism,
             Value::Sym(_) => Kind::Unknown,
             Value::Formula { kind, .. } => kind.clone(),
+            Value::List(vs) => Kind::List(Box::new(common_kind(vs))),
+            Value::Str(_) => Kind::Text,
+            Value::Picture(_) => Kind::Picture,
         }
     }
     /// The number of a scalar value.
@@ -114,5 +126,80 @@ impl Value {
     }
     pub fn is_symbolic(&self) -> bool {
         matches!(self, Value::Sym(_))
+    }
+}
+
+/// The kind all elements of a list share, or `Unknown`.
+pub fn common_kind(vs: &[Value]) -> Kind {
+    let mut it = vs.iter().map(Value::kind);
+    let Some(first) = it.next() else {
+        return Kind::Unknown;
+    };
+    if it.all(|k| k == first) {
+        first
+    } else {
+        Kind::Unknown
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Pictures (LANGUAGE.md §12): what `draw` was given — each value with its
+// kind and frames — in one or more panels, the view, and where it is to be
+// saved. Turning it into marks, projecting and writing SVG or PNG belongs
+// to `crate::draw`, which reads these types; nothing here draws.
+// ---------------------------------------------------------------------------
+
+/// How one drawn value is shown.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Style {
+    /// As the book draws it: a transform or rotation as its frame's axes, a
+    /// screw axis or twist as its axis line, a vector as an arrow from the
+    /// origin, the 3-vectors of a list as points (a workspace).
+    Natural,
+    /// `arrow(p, v)`: an arrow from the point p along v.
+    Arrow,
+    /// `point(p)`: a dot.
+    Point,
+}
+
+/// One value given to `draw`, with its static type (the frames name the
+/// drawn frame: `T_sa` draws {a} in {s}) and a label for untagged values.
+#[derive(Debug, Clone)]
+pub struct Drawn {
+    pub value: Value,
+    pub ty: Ty,
+    /// The argument as written, for untagged values (`w_hat`).
+    pub label: String,
+    pub style: Style,
+}
+
+/// One drawing with its own reference frame: `draw(..)` makes one,
+/// `beside(p1, p2)` puts several side by side.
+#[derive(Debug, Clone, Default)]
+pub struct Panel {
+    pub items: Vec<Drawn>,
+    /// `view(az, el)` in radians, MATLAB's convention; `None` for the default.
+    pub view: Option<(f64, f64)>,
+    /// A title written above the panel.
+    pub title: Option<String>,
+}
+
+/// A picture: panels side by side, where `save` asked it to go, and where it
+/// was written (set by the session when it writes the file).
+#[derive(Debug, Clone, Default)]
+pub struct Picture {
+    pub panels: Vec<Panel>,
+    /// `save(pic, "name.svg")`: the file asked for.
+    pub save_to: Option<String>,
+    /// What the picture shows, for printing: `5 frames and 1 screw axis in {s}`.
+    pub summary: String,
+    /// The file it was written to.
+    pub file: Option<String>,
+}
+
+impl Picture {
+    /// True for `view(az, el)` alone: a view to pass to `draw`, nothing drawn.
+    pub fn is_view_only(&self) -> bool {
+        self.panels.iter().all(|p| p.items.is_empty())
     }
 }

@@ -60,7 +60,7 @@ impl P<'_> {
         // `!keyword`: a keyword not followed by XID_CONTINUE or `'`, i.e.
         // the whole run of name characters.
         let word = &self.src[at..i];
-        if KEYWORDS.contains(&word) {
+        if KEYWORDS.contains(&word) || word == "for" {
             return Some(None);
         }
         Some(Some(i))

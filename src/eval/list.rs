@@ -1,0 +1,418 @@
+//! Ranges, lists and list comprehensions (LANGUAGE.md §12): `0:4`,
+//! `0:pi/8:pi` as MATLAB writes them (the end included within rounding),
+//! and `[expr for k in r]`, `[expr for a in r1, b in r2]` (a outermost).
+//! A list holds values of any kind; it prints, indexes from 1,
+//! destructures, and is what `draw` takes for a path of frames (exercise
+//! 3.48) or a workspace (exercise 2.25). Arithmetic never applies to a list
+//! as a whole: a function applies to its elements through a comprehension.
+
+use std::rc::Rc;
+
+use super::env::{Binding, Mode};
+use super::interp::{Interp, Typed};
+use super::value::{Value, common_kind};
+use crate::check::ty::{Frames, Kind, Ty};
+use crate::diagnostics::{Diagnostic, ErrorKind};
+use crate::syntax::ast::{Expr, ExprKind, Ident, Span};
+
+/// The longest list made: a range or comprehension with more items is a
+/// domain error that gives the count (a list of 10⁷ points is a mistake,
+/// not a workspace).
+pub const MAX_LIST: usize = 1_000_000;
+
+/// The most items that the comprehensions of one statement may evaluate
+/// (twice the longest list), nested ones and the ranges they make
+/// included: `[[a b for a in 0:999] for b in 0:99999]` is refused rather
+/// than run for minutes.
+pub const MAX_WORK: usize = 2_000_000;
+
+thread_local! {
+    /// (comprehensions open, items evaluated since the outermost opened).
+    static WORK: std::cell::Cell<(usize, usize)> = const { std::cell::Cell::new((0, 0)) };
+}
+
+/// Counts `n` items against [`MAX_WORK`] while a comprehension is open.
+fn spend(n: usize, span: Span) -> Result<(), Diagnostic> {
+    WORK.with(|w| {
+        let (open, done) = w.get();
+        if open == 0 {
+            return Ok(());
+        }
+        let done = done.saturating_add(n);
+        w.set((open, done));
+        if done > MAX_WORK {
+            Err(Diagnostic::error(
+                ErrorKind::Domain,
+                span,
+                format!("the comprehensions would evaluate more than {MAX_WORK} items"),
+            )
+            .with_help("nest fewer comprehensions or use larger steps"))
+        } else {
+            Ok(())
+        }
+    })
+}
+
+fn too_long(span: Span, n: f64) -> Diagnostic {
+    let count = if n < 1e15 {
+        format!("{}", n as u64)
+    } else {
+        format!("{n:.3e}")
+    };
+    Diagnostic::error(
+        ErrorKind::Domain,
+        span,
+        format!("the list would have {count} items; lists are limited to {MAX_LIST}"),
+    )
+    .with_help("use a larger step, e.g. 0:0.01:1 has 101 items")
+}
+
+/// The help for arithmetic on a list, a picture or a string.
+pub fn elementwise_help(k: &Kind) -> Option<String> {
+    match k {
+        Kind::List(_) => Some(
+            "a list is not a vector: apply the operation to each element, [2 * x for x in xs]"
+                .into(),
+        ),
+        Kind::Picture | Kind::Text => Some(format!("{} takes no arithmetic", k.a())),
+        _ => None,
+    }
+}
+
+/// The picture and list builtins take numbers only: a symbol is a domain
+/// error (there is nothing to draw until the `given` names have numbers).
+pub(super) fn numbers_only(
+    b: &crate::builtins::Builtin,
+    vals: &[Value],
+    span: Span,
+) -> Result<(), Diagnostic> {
+    if b.area == crate::builtins::Area::Pictures && vals.iter().any(Value::is_symbolic) {
+        return Err(Diagnostic::error(
+            ErrorKind::Domain,
+            span,
+            format!("{} needs numbers, not symbols", b.name),
+        )
+        .with_help("bind numbers to the given names first (§7)"));
+    }
+    Ok(())
+}
+
+impl Interp<'_> {
+    /// Lists, pictures or strings as operands of arithmetic: a type error
+    /// at `op` naming the first such operand.
+    pub(super) fn no_arithmetic(
+        &self,
+        operands: &[(&Typed, Span)],
+        op: Span,
+    ) -> Result<(), Diagnostic> {
+        for (t, side) in operands {
+            let Some(help) = elementwise_help(&t.ty.kind) else {
+                continue;
+            };
+            return Err(Diagnostic::error(
+                ErrorKind::Type,
+                op,
+                format!(
+                    "no arithmetic on {} ({})",
+                    t.ty.kind.a(),
+                    self.text(*side).trim()
+                ),
+            )
+            .with_label(*side, t.ty.kind.to_string())
+            .with_help(help));
+        }
+        Ok(())
+    }
+
+    /// A range, comprehension or string literal.
+    pub(super) fn list_expr(&mut self, e: &Expr) -> Result<Typed, Diagnostic> {
+        match &e.kind {
+            ExprKind::Range { start, step, end } => self.range(start, step.as_deref(), end, e.span),
+            ExprKind::Comprehension { body, vars } => self.comprehension(body, vars, e.span),
+            ExprKind::Str(text) => Ok(self.string(text)),
+            _ => Err(self.domain(e.span, "not a list")),
+        }
+    }
+
+    /// The builtin arguments' kinds and frames with their text (what
+    /// `draw` labels and frames its picture with).
+    pub(super) fn typed_args(&self, tys: Vec<Ty>, args: &[Expr]) -> Vec<(Ty, String)> {
+        tys.into_iter()
+            .zip(args)
+            .map(|(t, e)| (t, self.text(e.span).trim().to_string()))
+            .collect()
+    }
+
+    /// `"name.svg"`.
+    pub(super) fn string(&self, text: &str) -> Typed {
+        Typed {
+            ty: Ty::plain(Kind::Text),
+            val: self.running().then(|| Value::Str(Rc::from(text))),
+        }
+    }
+
+    /// One bound of a range: a number.
+    fn bound(&mut self, e: &Expr) -> Result<Option<f64>, Diagnostic> {
+        let t = self.expr(e)?;
+        if let Some(Value::Sym(s)) = &t.val {
+            return Err(Diagnostic::error(
+                ErrorKind::Type,
+                e.span,
+                format!("a range takes numbers, not the symbol {s}"),
+            )
+            .with_help("bind a number to it first (§7)"));
+        }
+        if !t.ty.kind.maybe_scalar() {
+            return Err(Diagnostic::error(
+                ErrorKind::Type,
+                e.span,
+                format!("a range takes numbers, not {}", t.ty.kind.a()),
+            )
+            .with_help("write start:end or start:step:end, e.g. 0:pi/8:pi"));
+        }
+        Ok(t.val.as_ref().and_then(Value::as_scalar))
+    }
+
+    /// `start:end`, `start:step:end`.
+    pub(super) fn range(
+        &mut self,
+        start: &Expr,
+        step: Option<&Expr>,
+        end: &Expr,
+        span: Span,
+    ) -> Result<Typed, Diagnostic> {
+        let a = self.bound(start)?;
+        let h = match step {
+            Some(s) => self.bound(s)?,
+            None => Some(1.0),
+        };
+        let b = self.bound(end)?;
+        let ty = Ty::plain(Kind::List(Box::new(Kind::Scalar)));
+        let (Some(a), Some(h), Some(b)) = (a, h, b) else {
+            return Ok(Typed { ty, val: None });
+        };
+        if !(a.is_finite() && h.is_finite() && b.is_finite()) {
+            return Err(self.domain(span, "a range needs finite numbers (no inf or NaN)"));
+        }
+        if h == 0.0 {
+            return Err(self
+                .domain(span, "a range with step 0 never reaches its end")
+                .with_help("give a nonzero step: start:step:end"));
+        }
+        // The end is included when within rounding: 0:pi/8:pi has 9 items.
+        let steps = (b - a) / h;
+        let tol = 1e-10 * (1.0 + steps.abs());
+        let n = if steps < -tol {
+            0.0
+        } else {
+            (steps + tol).floor() + 1.0
+        };
+        if n > MAX_LIST as f64 {
+            return Err(too_long(span, n));
+        }
+        spend(n as usize, span)?;
+        let items: Vec<Value> = (0..n as usize)
+            .map(|k| Value::scalar(a + k as f64 * h))
+            .collect();
+        Ok(Typed {
+            ty,
+            val: Some(Value::List(Rc::new(items))),
+        })
+    }
+
+    /// `xs[i]`: the i-th item (from 1), with the list's frames.
+    pub(super) fn list_item(
+        &mut self,
+        t: Typed,
+        sels: &[super::ops::Sel],
+        span: Span,
+    ) -> Result<Typed, Diagnostic> {
+        let Kind::List(elem) = &t.ty.kind else {
+            return Err(self.domain(span, "not a list"));
+        };
+        let [super::ops::Sel::At(i)] = sels else {
+            return Err(Diagnostic::error(
+                ErrorKind::Type,
+                span,
+                "a list takes one index: xs[i], counting from 1",
+            ));
+        };
+        let ty = Ty::new((**elem).clone(), t.ty.frames.clone());
+        let Some(Value::List(items)) = &t.val else {
+            return Ok(Typed { ty, val: None });
+        };
+        let n = items.len();
+        if !(i.fract() == 0.0 && *i >= 1.0 && *i <= n as f64) {
+            return Err(self.domain(
+                span,
+                format!("index {i} is outside the list (it has {n} items, counted from 1)"),
+            ));
+        }
+        let v = items[*i as usize - 1].clone();
+        Ok(Typed {
+            ty: Ty::new(v.kind(), t.ty.frames.clone()),
+            val: Some(v),
+        })
+    }
+
+    /// What a comprehension variable runs over: a list's elements or a
+    /// vector's entries.
+    fn over(&mut self, e: &Expr) -> Result<(Kind, Frames, Option<Vec<Value>>), Diagnostic> {
+        let t = self.expr(e)?;
+        let elem = match &t.ty.kind {
+            Kind::List(k) => (**k).clone(),
+            Kind::Vector(_) => Kind::Scalar,
+            Kind::Unknown => Kind::Unknown,
+            k => {
+                return Err(Diagnostic::error(
+                    ErrorKind::Type,
+                    e.span,
+                    format!("a comprehension runs over a range or list, not {}", k.a()),
+                )
+                .with_help("write [f(k) for k in 0:4]"));
+            }
+        };
+        let frames = match &t.ty.kind {
+            Kind::List(_) => t.ty.frames.clone(),
+            _ => Frames::None,
+        };
+        let vals = match t.val {
+            Some(Value::List(vs)) => Some(vs.as_ref().clone()),
+            Some(Value::Num { m, .. }) => Some(m.iter().map(|x| Value::scalar(*x)).collect()),
+            Some(Value::Sym(_)) => {
+                return Err(Diagnostic::error(
+                    ErrorKind::Type,
+                    e.span,
+                    "a comprehension runs over numbers, not symbols",
+                ));
+            }
+            _ => None,
+        };
+        Ok((elem, frames, vals))
+    }
+
+    /// `[body for a in r1, b in r2]`.
+    pub(super) fn comprehension(
+        &mut self,
+        body: &Expr,
+        vars: &[(Ident, Expr)],
+        span: Span,
+    ) -> Result<Typed, Diagnostic> {
+        let mut domains = Vec::new();
+        for (name, e) in vars {
+            let (k, f, vals) = self.over(e)?;
+            domains.push((name.name.clone(), Ty::new(k, f), vals));
+        }
+        let names: Vec<String> = domains.iter().map(|d| d.0.clone()).collect();
+        let saved: Vec<(String, Option<Binding>)> = names
+            .iter()
+            .map(|n| (n.clone(), self.env.vars.get(n).cloned()))
+            .collect();
+        WORK.with(|w| {
+            let (open, done) = w.get();
+            w.set((open + 1, if open == 0 { 0 } else { done }));
+        });
+        let result = self.comprehend(body, &domains, span);
+        WORK.with(|w| {
+            let (open, done) = w.get();
+            w.set((open.saturating_sub(1), done));
+        });
+        for (n, old) in saved {
+            match old {
+                Some(b) => self.env.set(&n, b),
+                None => {
+                    self.env.vars.remove(&n);
+                }
+            }
+        }
+        result
+    }
+
+    fn comprehend(
+        &mut self,
+        body: &Expr,
+        domains: &[(String, Ty, Option<Vec<Value>>)],
+        span: Span,
+    ) -> Result<Typed, Diagnostic> {
+        // The body's kind and frames, once, with no numbers.
+        let mode = self.mode;
+        self.mode = Mode::Check;
+        for (n, ty, _) in domains {
+            self.env.set(
+                n,
+                Binding {
+                    ty: ty.clone(),
+                    val: None,
+                    symbolic: false,
+                },
+            );
+        }
+        let checked = self.expr(body);
+        self.mode = mode;
+        let body_ty = checked?;
+        let list_ty = |k: Kind| Ty::new(Kind::List(Box::new(k)), body_ty.ty.frames.clone());
+        if mode == Mode::Check {
+            return Ok(Typed {
+                ty: list_ty(body_ty.ty.kind.clone()),
+                val: None,
+            });
+        }
+        let Some(lists) = domains
+            .iter()
+            .map(|d| d.2.as_ref())
+            .collect::<Option<Vec<_>>>()
+        else {
+            return Ok(Typed {
+                ty: list_ty(body_ty.ty.kind.clone()),
+                val: None,
+            });
+        };
+        let total: f64 = lists.iter().map(|l| l.len() as f64).product();
+        if total > MAX_LIST as f64 {
+            return Err(too_long(span, total));
+        }
+        let mut out = Vec::with_capacity(total as usize);
+        let mut at = vec![0usize; lists.len()];
+        if total > 0.0 {
+            'all: loop {
+                for (i, (n, ty, _)) in domains.iter().enumerate() {
+                    let v = lists[i][at[i]].clone();
+                    let ty = Ty::new(v.kind(), ty.frames.clone());
+                    self.env.set(
+                        n,
+                        Binding {
+                            ty,
+                            val: Some(v),
+                            symbolic: false,
+                        },
+                    );
+                }
+                spend(1, span)?;
+                let t = self.expr(body)?;
+                out.push(t.val.unwrap_or_else(|| Value::scalar(f64::NAN)));
+                // The last variable runs fastest: the first is outermost.
+                let mut i = lists.len();
+                loop {
+                    if i == 0 {
+                        break 'all;
+                    }
+                    i -= 1;
+                    at[i] += 1;
+                    if at[i] < lists[i].len() {
+                        break;
+                    }
+                    at[i] = 0;
+                }
+            }
+        }
+        let kind = if out.is_empty() {
+            body_ty.ty.kind.clone()
+        } else {
+            common_kind(&out)
+        };
+        Ok(Typed {
+            ty: list_ty(kind),
+            val: Some(Value::List(Rc::new(out))),
+        })
+    }
+}

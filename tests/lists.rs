@@ -1,0 +1,113 @@
+//! Ranges, lists and list comprehensions (LANGUAGE.md §12): how the
+//! grammar reads them, what they evaluate to and print, and that a list of
+//! frames keeps its frames with and without numbers.
+
+use chasles::eval::env::Mode;
+use chasles::session::{Session, Settings};
+
+#[test]
+fn ranges_lists_and_comprehensions() {
+    let mut s = Session::new(Settings::default());
+    let (out, err, n) = s.run_to_strings(
+        "t",
+        "r = 0:pi/8:pi\nlen(r)\nr[9] - pi\n[a * 10 + b for a in 1:2, b in 1:3]\n(x, y, z) = [k^2 for k in 1:3]\nz\nsum([k for k in 1:100])\n(min(r), max(0:3))\n5:-1:1\nlen(1:0)\n0:0.1:0.3\n",
+        Mode::Run,
+        false,
+    );
+    assert_eq!(n, 0, "{err}");
+    let lines: Vec<&str> = out.lines().collect();
+    assert_eq!(lines[1], "9");
+    assert_eq!(lines[2], "0");
+    assert_eq!(lines[3], "[11, 12, 13, 21, 22, 23]  : list of 6 numbers");
+    assert!(out.contains("z = 9"), "{out}");
+    assert!(out.contains("\n5050\n"), "{out}");
+    assert!(out.contains("(0, 3)"), "{out}");
+    assert!(out.contains("[5, 4, 3, 2, 1]"), "{out}");
+    assert!(out.contains("\n0\n[0, 0.1, 0.2, 0.3]"), "{out}");
+    // A user function reaches the elements only through a comprehension.
+    let (_, err, n) = s.run_to_strings("t", "f(x) = 2 * x\nf(0:3)\n", Mode::Run, false);
+    assert_eq!(n, 1);
+    assert!(err.contains("no arithmetic on a list"), "{err}");
+    let (out, _, n) = s.run_to_strings("t", "[f(x) for x in 0:3]\n", Mode::Run, false);
+    assert_eq!((n, out.trim()), (0, "[0, 2, 4, 6]  : list of 4 numbers"));
+    // JSON: a list is an array of values, typed "list".
+    let mut j = Session::new(Settings {
+        json: true,
+        ..Settings::default()
+    });
+    let (out, _, _) = j.run_to_strings("t", "1:3\n", Mode::Run, false);
+    assert!(
+        out.contains("\"type\":\"list\"") && out.contains("\"value\":[1,2,3]"),
+        "{out}"
+    );
+}
+
+#[test]
+fn lists_of_frames_keep_their_frames_and_check_without_numbers() {
+    let src = "T_sb = Trans((2, 0, 0))\nS = ScrewToAxis((0, 2, 0), (0, 0, 1), 2)\npath = [exp([S] * k) * T_sb for k in 0:4]\nT_2 = path[3]\ndraw(path, S)\n";
+    let mut s = Session::new(Settings::default());
+    let (out, err, n) = s.run_to_strings("t", src, Mode::Run, false);
+    assert_eq!(n, 0, "{err}");
+    assert!(out.contains("list of 5 SE(3) {s}←{b'}"), "{out}");
+    assert!(
+        out.contains("picture: 5 frames and 1 screw axis in {s}"),
+        "{out}"
+    );
+    let mut c = Session::new(Settings::default());
+    let (out, err, n) = c.run_to_strings("t", src, Mode::Check, true);
+    assert_eq!(n, 0, "{err}");
+    assert!(out.contains("path : list of SE(3) {s}←{b'}"), "{out}");
+}
+
+#[test]
+fn the_grammar_reads_ranges_comprehensions_and_strings() {
+    use chasles::syntax::ast::{ExprKind, StmtKind};
+    use chasles::syntax::parse_program;
+    let one = |src: &str| {
+        let mut all = parse_program(src);
+        assert_eq!(all.len(), 1, "{src}");
+        all.remove(0)
+    };
+    let value = |src: &str| match one(src).expect("parses").kind {
+        StmtKind::Assign { value, .. } => value.kind,
+        StmtKind::Expr(e) => e.kind,
+        k => panic!("{k:?}"),
+    };
+    // `:` is looser than `+`: 1:n+1 is 1:(n+1); a:s:b takes three parts.
+    let ExprKind::Range { start, step, end } = value("r = 1:n+1") else {
+        panic!()
+    };
+    assert!(matches!(start.kind, ExprKind::Number(x) if x == 1.0));
+    assert!(step.is_none());
+    assert!(matches!(end.kind, ExprKind::Binary { .. }));
+    let ExprKind::Range { step, .. } = value("0:pi/8:pi") else {
+        panic!()
+    };
+    assert!(step.is_some());
+    // The grid: the first variable is outermost.
+    let ExprKind::Comprehension { body, vars } = value("[f(a, b) for a in 0:2, b in xs]") else {
+        panic!()
+    };
+    assert!(matches!(body.kind, ExprKind::Call { .. }));
+    let names: Vec<&str> = vars.iter().map(|(n, _)| n.name.as_str()).collect();
+    assert_eq!(names, ["a", "b"]);
+    assert!(matches!(
+        value("save(p, \"a b.svg\")"),
+        ExprKind::Call { .. }
+    ));
+    assert!(matches!(value("\"x; y # z\""), ExprKind::Str(t) if t == "x; y # z"));
+    // Errors name the fix.
+    for (src, want) in [
+        ("0:1:2:3", "a range has at most two colons"),
+        (
+            "[1, 2 for k in 0:4]",
+            "a list comprehension takes one expression before `for`",
+        ),
+        ("for = 2", "expected"),
+    ] {
+        let e = one(src).expect_err(src);
+        assert!(e.message.contains(want), "{src}: {}", e.message);
+    }
+    // Indexing and `given` keep their colons.
+    assert!(one("M[:, 1]").is_ok() && one("given T_ab : SE3").is_ok());
+}
