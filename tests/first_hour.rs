@@ -228,6 +228,16 @@ mod repl {
         // No temporary file is left beside it.
         assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 1);
         assert!(!execute(&mut s, ":save").err.is_empty());
+        // The header reruns with the session's settings.
+        execute(&mut s, ":digits 6");
+        execute(&mut s, ":exact on");
+        execute(&mut s, ":frames warn");
+        execute(&mut s, &format!(":save! {name}"));
+        let head = std::fs::read_to_string(&file).unwrap();
+        assert!(
+            head.starts_with("# saved from the chasles REPL; rerun with: chasles run --frames warn --digits 6 --exact FILE\n"),
+            "{head}"
+        );
         execute(&mut s, ":reset");
         assert!(execute(&mut s, ":history").out.starts_with("no statements"));
         std::fs::remove_dir_all(&dir).ok();

@@ -128,8 +128,8 @@ proptest! {
         let outs = all_bracketings(&[x, q, inv]);
         prop_assert_eq!(outs.len(), 1);
         let t = outs[0].clone().unwrap();
-        prop_assert_eq!(t.frames, Frames::One(a));
-        prop_assert_eq!(t.kind, algebra);
+        prop_assert_eq!(&t.frames, &Frames::One(a));
+        prop_assert_eq!(rules::settled(&t).kind, algebra);
     }
 
     /// X^n has the frames of X·X·…·X (or the same kind of error).

@@ -300,7 +300,7 @@ fn products_with_moved_frames_are_associative() {
     frames("T_ab'' = T_ab * exp([B_b] 0.3)\nT_ab''", &["a", "b''"]);
     frames(
         "T_ab'' = T_ab * exp([B_b] 0.3)\nT_ab'' * exp([B_b] 0.3)",
-        &["a", "b'''"],
+        &["a", "b'"],
     );
     frames(
         "T_ab' = exp([S_a] 0.3) * T_ab\nexp([S_a] 0.3) * T_ab * inv(T_ab')",

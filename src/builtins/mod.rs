@@ -11,6 +11,7 @@ pub mod parts;
 mod table_math;
 mod table_repr;
 mod table_rotations;
+mod table_scalar;
 mod table_screw;
 mod table_sym;
 mod table_units;
@@ -322,6 +323,7 @@ pub fn table() -> &'static [Builtin] {
         t.extend(table_screw::builtins());
         t.extend(table_repr::builtins());
         t.extend(table_math::builtins());
+        t.extend(table_scalar::builtins());
         t.extend(table_sym::builtins());
         t.extend(table_units::builtins());
         t

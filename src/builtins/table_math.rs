@@ -1,9 +1,10 @@
 //! The mathematical maps `exp` and `log` (§3.2.3, §3.3.3, and e^{At} of
-//! exercises 3.33–3.35), linear algebra, scalar functions, and the small
-//! helpers of §3.6 (NearZero, Normalize).
+//! exercises 3.33–3.35), linear algebra, and the small helpers of §3.6
+//! (NearZero, Normalize). Scalar functions are in `table_scalar`.
 
 use nalgebra::DMatrix;
 
+use super::table_scalar::scalar;
 use super::{Area, ArgError, Args, Builtin, FrameRule, Param, Typing};
 use crate::check::ty::{Frames, Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
@@ -11,10 +12,6 @@ use crate::lie::{self, Mat3, Mat4, Vec3, matexp, se2, se3, so2, so3};
 use crate::values::convert::{self, Group};
 use crate::values::ops;
 use crate::values::value::Value;
-
-fn scalar() -> Kind {
-    Kind::Scalar
-}
 
 /// `exp`: so(3) → SO(3), se(3) → SE(3), so(2), se(2), any square matrix, a number.
 fn exp_rule(args: &[Ty]) -> Result<Ty, ArgError> {
@@ -301,39 +298,6 @@ fn sized(a: &Args) -> Result<(usize, usize), Diagnostic> {
     Ok((r, c))
 }
 
-/// A scalar function with a domain check.
-fn unary(a: &Args, f: fn(f64) -> f64, ok: fn(f64) -> bool, why: &str) -> Result<Value, Diagnostic> {
-    let x = a.scalar(0)?;
-    if !ok(x) {
-        return Err(a.error(0, ErrorKind::Domain, format!("{}({x}): {why}", a.name)));
-    }
-    Ok(Value::scalar(f(x)))
-}
-
-fn any(_: f64) -> bool {
-    true
-}
-
-macro_rules! scalar_fn {
-    ($name:literal, $doc:literal, $f:expr, $ok:expr, $why:literal) => {
-        Builtin {
-            name: $name,
-            aliases: &[],
-            signature: concat!($name, "(x: scalar) -> scalar"),
-            section: "—",
-            doc: $doc,
-            example: concat!($name, "(0.5)"),
-            area: Area::Scalars,
-            typing: Typing::Fixed {
-                params: &[Param::Scalar],
-                ret: scalar,
-                frames: FrameRule::None,
-            },
-            eval: |a| unary(a, $f, $ok, $why),
-        }
-    };
-}
-
 pub(super) fn builtins() -> Vec<Builtin> {
     use Area::*;
     use Param::*;
@@ -612,46 +576,5 @@ pub(super) fn builtins() -> Vec<Builtin> {
             },
             eval: |a| Ok(a.value(0).clone()),
         },
-        Builtin {
-            name: "atan2",
-            aliases: &[],
-            signature: "atan2(y: scalar, x: scalar) -> scalar",
-            section: "§3.2.3.3",
-            doc: "the angle of (x, y), in (−π, π]",
-            example: "atan2(1, 1)",
-            area: Scalars,
-            typing: Typing::Fixed {
-                params: &[Scalar, Scalar],
-                ret: scalar,
-                frames: FrameRule::None,
-            },
-            eval: |a| Ok(Value::scalar(a.scalar(0)?.atan2(a.scalar(1)?))),
-        },
-        scalar_fn!("sin", "sine (radians)", f64::sin, any, ""),
-        scalar_fn!("cos", "cosine (radians)", f64::cos, any, ""),
-        scalar_fn!("tan", "tangent (radians)", f64::tan, any, ""),
-        scalar_fn!(
-            "asin",
-            "arcsine, in [−π/2, π/2]",
-            f64::asin,
-            |x| (-1.0..=1.0).contains(&x),
-            "the argument must be in [−1, 1]"
-        ),
-        scalar_fn!(
-            "acos",
-            "arccosine, in [0, π]",
-            f64::acos,
-            |x| (-1.0..=1.0).contains(&x),
-            "the argument must be in [−1, 1]"
-        ),
-        scalar_fn!("atan", "arctangent", f64::atan, any, ""),
-        scalar_fn!(
-            "sqrt",
-            "square root",
-            f64::sqrt,
-            |x| x >= 0.0,
-            "the square root of a negative number is not real"
-        ),
-        scalar_fn!("abs", "absolute value", f64::abs, any, ""),
     ]
 }

@@ -211,16 +211,11 @@ fn compose_maps(x: &Arrow, y: &Arrow) -> Result<Arrow, Clash> {
                 return Err(Clash::Inner(b.clone(), c.clone()));
             }
             // The less-moved side moves with the other (rigid attachment).
+            // (The result's ends are the first factor's outer end and the
+            // last one's inner end, moved alike under every bracketing, so
+            // they print alike too.)
             if b.moved >= c.moved {
-                let inn = match y.lifted(b.moved - c.moved).inn {
-                    // {b''} of `T_ab''` moved once more prints {b'''}.
-                    End::At(f) if f.name == b.name && f.written.is_none() => End::At(Frame {
-                        written: b.written.clone(),
-                        ..f
-                    }),
-                    inn => inn,
-                };
-                Ok(Arrow::new(x.out.clone(), inn))
+                Ok(Arrow::new(x.out.clone(), y.lifted(b.moved - c.moved).inn))
             } else {
                 Ok(Arrow::new(x.lifted(c.moved - b.moved).out, y.inn.clone()))
             }

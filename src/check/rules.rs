@@ -332,6 +332,15 @@ fn one_frame_kind(k: &Kind) -> bool {
 /// frame and a moved copy of it (`exp([S_a] θ) [V_a] exp(−[S_a] θ)`, whose
 /// two displacements chasles cannot tell apart) is a quantity in that frame.
 pub fn settled(t: &Ty) -> Ty {
+    // g·X·g⁻¹ whose frames close on one frame is back in the Lie algebra
+    // (3.77, Prop. 3.5): known from the symbols (with numbers, they decide).
+    if let (Some(alg), Frames::One(_), Kind::Matrix(..)) = (&t.algebra, &t.frames, &t.kind) {
+        return Ty {
+            kind: alg.clone(),
+            algebra: None,
+            ..t.clone()
+        };
+    }
     let frames = match t.frames.displacement_frame() {
         _ if t.kind == Kind::Scalar => Frames::None,
         Some(a) if one_frame_kind(&t.kind) => Frames::One(a.clone()),

@@ -52,17 +52,22 @@ pub fn history(session: &Session) -> String {
         .join("\n")
 }
 
-/// The script `:save` writes: a header saying how to rerun it, then the
-/// accepted statements one per line.
+/// The script `:save` writes: a header saying how to rerun it (with the
+/// session's frame checking, digits and exact printing), then the accepted
+/// statements one per line.
 pub fn script(session: &Session) -> String {
-    let mut out = String::from("# saved from the chasles REPL");
-    match session.settings.frames {
-        FrameMode::Strict => out.push_str("; rerun with: chasles run FILE\n"),
-        mode => out.push_str(&format!(
-            "; rerun with: chasles run --frames {} FILE\n",
-            mode.as_str()
-        )),
+    let s = &session.settings;
+    let mut flags = String::new();
+    if s.frames != FrameMode::Strict {
+        flags.push_str(&format!(" --frames {}", s.frames.as_str()));
     }
+    if s.digits != crate::session::Settings::default().digits {
+        flags.push_str(&format!(" --digits {}", s.digits));
+    }
+    if s.exact {
+        flags.push_str(" --exact");
+    }
+    let mut out = format!("# saved from the chasles REPL; rerun with: chasles run{flags} FILE\n");
     for s in &session.accepted {
         out.push_str(s);
         out.push('\n');

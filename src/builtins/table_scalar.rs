@@ -1,0 +1,96 @@
+//! Scalar functions: the trigonometric functions and their inverses with
+//! their domains (arcsine and arccosine on [−1, 1], §3.2.3.3's angles),
+//! `atan2`, `sqrt` and `abs` (angle units are in `table_units`). Each checks
+//! its domain and names the cause of a refusal (`sqrt(-1)`, `acos(2)`).
+
+use super::{Area, Args, Builtin, FrameRule, Param, Typing};
+use crate::check::ty::Kind;
+use crate::diagnostics::{Diagnostic, ErrorKind};
+use crate::values::value::Value;
+
+/// The return kind of every scalar function.
+pub(super) fn scalar() -> Kind {
+    Kind::Scalar
+}
+
+/// A scalar function with a domain check.
+fn unary(a: &Args, f: fn(f64) -> f64, ok: fn(f64) -> bool, why: &str) -> Result<Value, Diagnostic> {
+    let x = a.scalar(0)?;
+    if !ok(x) {
+        return Err(a.error(0, ErrorKind::Domain, format!("{}({x}): {why}", a.name)));
+    }
+    Ok(Value::scalar(f(x)))
+}
+
+fn any(_: f64) -> bool {
+    true
+}
+
+macro_rules! scalar_fn {
+    ($name:literal, $doc:literal, $f:expr, $ok:expr, $why:literal) => {
+        Builtin {
+            name: $name,
+            aliases: &[],
+            signature: concat!($name, "(x: scalar) -> scalar"),
+            section: "—",
+            doc: $doc,
+            example: concat!($name, "(0.5)"),
+            area: Area::Scalars,
+            typing: Typing::Fixed {
+                params: &[Param::Scalar],
+                ret: scalar,
+                frames: FrameRule::None,
+            },
+            eval: |a| unary(a, $f, $ok, $why),
+        }
+    };
+}
+
+/// The scalar functions, in help order (after `table_math`'s).
+pub(super) fn builtins() -> Vec<Builtin> {
+    use Area::*;
+    use Param::*;
+    vec![
+        Builtin {
+            name: "atan2",
+            aliases: &[],
+            signature: "atan2(y: scalar, x: scalar) -> scalar",
+            section: "§3.2.3.3",
+            doc: "the angle of (x, y), in (−π, π]",
+            example: "atan2(1, 1)",
+            area: Scalars,
+            typing: Typing::Fixed {
+                params: &[Scalar, Scalar],
+                ret: scalar,
+                frames: FrameRule::None,
+            },
+            eval: |a| Ok(Value::scalar(a.scalar(0)?.atan2(a.scalar(1)?))),
+        },
+        scalar_fn!("sin", "sine (radians)", f64::sin, any, ""),
+        scalar_fn!("cos", "cosine (radians)", f64::cos, any, ""),
+        scalar_fn!("tan", "tangent (radians)", f64::tan, any, ""),
+        scalar_fn!(
+            "asin",
+            "arcsine, in [−π/2, π/2]",
+            f64::asin,
+            |x| (-1.0..=1.0).contains(&x),
+            "the argument must be in [−1, 1]"
+        ),
+        scalar_fn!(
+            "acos",
+            "arccosine, in [0, π]",
+            f64::acos,
+            |x| (-1.0..=1.0).contains(&x),
+            "the argument must be in [−1, 1]"
+        ),
+        scalar_fn!("atan", "arctangent", f64::atan, any, ""),
+        scalar_fn!(
+            "sqrt",
+            "square root",
+            f64::sqrt,
+            |x| x >= 0.0,
+            "the square root of a negative number is not real"
+        ),
+        scalar_fn!("abs", "absolute value", f64::abs, any, ""),
+    ]
+}
