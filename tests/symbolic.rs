@@ -351,6 +351,19 @@ fn latex_of_the_2r_arm_is_a_well_formed_bmatrix() {
     for r in &rows {
         assert_eq!(r.matches('&').count(), 3, "{r}");
     }
+    assert!(line.starts_with("T = \\begin{bmatrix}"), "{line}");
+    let named = run_with(
+        Settings {
+            sym: chasles::sym::print::Mode::Latex,
+            ..Settings::default()
+        },
+        "given theta1 : scalar\nR_sb = Rotz(theta1)",
+    );
+    assert!(
+        named.starts_with("R_{sb} = \\begin{bmatrix} \\cos\\theta_1"),
+        "{named}"
+    );
+    assert!(named.trim_end().ends_with("% SO(3) {s}←{b}"), "{named}");
     assert!(
         body.contains("L_1 \\cos\\theta_1 + L_2 \\cos(\\theta_1 + \\theta_2)"),
         "{body}"

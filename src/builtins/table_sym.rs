@@ -339,7 +339,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
             signature: "diff(x: scalar | vector | matrix, t: symbol) -> the same shape",
             section: "§3.2.2",
             doc: "the derivative by the chain rule, entrywise; diff(R, t) * R^T is [ω_s]",
-            example: "given theta(t) : scalar; diff(Rotz(theta), t) * Rotz(theta).T",
+            example: "given theta(t) : scalar; diff(Rotz(theta), t) Rotz(theta)^T",
             area: Area::Scalars,
             typing: Typing::Custom {
                 arity: (2, 2),
@@ -353,7 +353,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
             signature: "simplify(x) -> x in canonical form",
             section: "§7 (LANGUAGE.md)",
             doc: "the canonical form: like terms collected, sin² + cos² = 1, angle sums folded",
-            example: "given a, b : scalar; simplify(cos(a)*cos(b) - sin(a)*sin(b))",
+            example: "given a, b : scalar; simplify(cos(a) cos(b) - sin(a) sin(b))",
             area: Area::Scalars,
             typing: Typing::Custom {
                 arity: (1, 1),

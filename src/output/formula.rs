@@ -11,6 +11,21 @@ use crate::values::format::{Style, formula_inline as inline, formula_latex as la
 /// Lines of text output are wrapped to this width.
 pub const WIDTH: usize = 100;
 
+/// `NAME = ` before a value; in LaTeX the name as LaTeX (`R_sb` is
+/// `R_{sb}`, `theta1` is `\theta_1`), so the line stays valid LaTeX.
+pub fn name_prefix(prefix: &str, style: Style) -> String {
+    match prefix.strip_suffix(" = ") {
+        Some(name) if style.sym == Mode::Latex && !name.is_empty() => {
+            let st = print::Style {
+                mode: Mode::Latex,
+                digits: style.digits,
+            };
+            format!("{} = ", print::symbol(&crate::sym::Symbol::new(name), st))
+        }
+        _ => prefix.to_string(),
+    }
+}
+
 /// A formula as the value of a statement, starting at column `indent`.
 pub fn block(m: &Mat, style: Style, indent: usize) -> String {
     let st = print::Style {

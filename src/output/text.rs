@@ -227,7 +227,7 @@ fn write_value(out: &mut String, prefix: &str, ty: &Ty, v: &Value, style: Style)
             write_matrix_block(out, m, style, width(prefix));
         }
         Value::Formula { m, .. } => {
-            out.push_str(prefix);
+            out.push_str(&super::formula::name_prefix(prefix, style));
             out.push_str(&super::formula::block(m, style, width(prefix)));
         }
         Value::Mech(mech) => {
