@@ -14,6 +14,7 @@ use crate::sym::expr::{Func, Wrt, as_symbol};
 use crate::sym::matrix::{self as sm, Mat};
 use crate::values::formula::{self, make, mat_of, scalar, scalar_of};
 use crate::values::value::Value;
+use num_traits::{One, Zero};
 
 type Out = Option<Result<Value, String>>;
 

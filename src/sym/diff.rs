@@ -7,6 +7,7 @@ use std::sync::Arc;
 
 use super::coef::Coef;
 use super::expr::{Call, Expr, Func, Mono, Symbol, Var, Wrt};
+use num_traits::{One, Zero};
 
 impl Expr {
     /// The derivative (chain rule through every variable).

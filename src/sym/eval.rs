@@ -4,6 +4,7 @@
 
 use super::coef::Coef;
 use super::expr::{Call, Expr, Func, Symbol, Var};
+use num_traits::Zero;
 
 impl Expr {
     /// The value with numbers for the symbols (the real part); None when a

@@ -13,6 +13,7 @@ use std::collections::BTreeMap;
 use std::sync::Arc;
 
 use super::coef::{Coef, Rat};
+use num_traits::{One, Zero};
 
 /// A real symbol: a `given` name, possibly a function of time (`given
 /// theta(t) : scalar`), differentiated `dots` times (θ̇ has one).
@@ -151,11 +152,42 @@ fn mono_mul(a: &Mono, b: &Mono) -> Mono {
     out
 }
 
-impl Expr {
-    /// 0.
-    pub fn zero() -> Expr {
+/// Expressions form a commutative ring: `num_traits`' `Zero` and `One`
+/// (with `+` and `*`) let ring algorithms, such as the symbolic matrix
+/// product and determinant, start from 0 and 1 as for numbers.
+impl Zero for Expr {
+    /// 0 (no terms).
+    fn zero() -> Expr {
         Expr::default()
     }
+    /// True for 0 (no terms).
+    fn is_zero(&self) -> bool {
+        self.terms.is_empty()
+    }
+}
+
+impl One for Expr {
+    /// 1.
+    fn one() -> Expr {
+        Expr::constant(Coef::one())
+    }
+}
+
+impl std::ops::Add for Expr {
+    type Output = Expr;
+    fn add(self, o: Expr) -> Expr {
+        Expr::add(&self, &o)
+    }
+}
+
+impl std::ops::Mul for Expr {
+    type Output = Expr;
+    fn mul(self, o: Expr) -> Expr {
+        Expr::mul(&self, &o)
+    }
+}
+
+impl Expr {
     /// A constant.
     pub fn constant(c: Coef) -> Expr {
         let mut e = Expr::zero();
@@ -163,10 +195,6 @@ impl Expr {
             e.terms.insert(Vec::new(), c);
         }
         e
-    }
-    /// 1.
-    pub fn one() -> Expr {
-        Expr::constant(Coef::one())
     }
     /// An integer.
     pub fn int(n: i64) -> Expr {
@@ -202,10 +230,6 @@ impl Expr {
     }
     pub(super) fn call(f: Func, args: Vec<Expr>) -> Expr {
         Expr::var(Var::Call(Arc::new(Call { f, args })))
-    }
-    /// True for 0 (no terms).
-    pub fn is_zero(&self) -> bool {
-        self.terms.is_empty()
     }
     /// The constant, when there are no variables.
     pub fn as_const(&self) -> Option<Coef> {

@@ -5,6 +5,7 @@
 
 use super::coef::Coef;
 use super::expr::Expr;
+use num_traits::{One, Zero};
 
 /// A rows × cols matrix of expressions, row-major.
 #[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord)]

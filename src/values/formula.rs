@@ -11,6 +11,7 @@ use crate::check::ty::Kind;
 use crate::sym::matrix::{self, Mat};
 use crate::sym::{Expr, Symbol};
 use crate::syntax::ast::BinOp;
+use num_traits::{One, Zero};
 
 /// A numeric or symbolic value as a matrix of expressions (numbers become
 /// exact constants where they have a closed form).
