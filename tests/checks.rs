@@ -5,20 +5,9 @@
 
 use chasles::repl::commands::execute;
 use chasles::session::{Session, Settings};
-use std::process::Command;
 
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_chasles"))
-        .args(args)
-        .env("NO_COLOR", "1")
-        .output()
-        .expect("chasles runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
+mod common;
+use common::run;
 
 fn json(s: &str) -> Vec<serde_json::Value> {
     s.lines()

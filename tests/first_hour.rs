@@ -2,20 +2,8 @@
 //! items): labelled tuples, angle units, did-you-mean that points the right
 //! way, MATLAB and Python habits, `--exact`, θ = π logs and small hints.
 
-use std::process::Command;
-
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_chasles"))
-        .args(args)
-        .env("NO_COLOR", "1")
-        .output()
-        .expect("chasles runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
+mod common;
+use common::run;
 
 fn eval(src: &str) -> String {
     let (code, out, err) = run(&["-e", src]);
