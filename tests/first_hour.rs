@@ -293,3 +293,24 @@ fn help_for_everything() {
     assert!(r.err.contains("did you mean quat(R)?"), "{}", r.err);
     assert!(help("").contains("words:  :help given"));
 }
+
+/// A label only when the value is in the set (issue 13): [ω]ᵀ = −[ω] is
+/// still skew-symmetric, so it stays so(3), with numbers and with
+/// symbols; [V]ᵀ is not se(3).
+#[test]
+fn the_transpose_of_so3_is_so3() {
+    let j = json("w = (1, 2, 3); [w]^T; [w].T + [w]; [(1, 2, 3, 4, 5, 6)]^T");
+    assert_eq!(j[1]["type"], "so3");
+    assert_eq!(
+        j[1]["value"],
+        serde_json::json!([[0, 3, -2], [-3, 0, 1], [2, -1, 0]])
+    );
+    assert_eq!(j[2]["type"], "so3");
+    assert_eq!(
+        j[2]["value"],
+        serde_json::json!([[0, 0, 0], [0, 0, 0], [0, 0, 0]])
+    );
+    assert_eq!(j[3]["type"], "matrix");
+    let out = eval("given t : scalar; [(0, 0, t)]^T");
+    assert!(out.ends_with(": so(3)\n"), "{out}");
+}

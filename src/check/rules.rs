@@ -143,7 +143,8 @@ pub fn inverse(t: &Ty) -> Result<Ty, RuleError> {
 /// is tagged [`Frames::Transposed`], and a product with it is refused.
 pub fn transpose(t: &Ty) -> Result<Ty, RuleError> {
     let kind = match &t.kind {
-        Kind::SO3 | Kind::SO2 => t.kind.clone(),
+        // [ω]ᵀ = −[ω] is skew-symmetric too: still so(3) (§3.2.3.1).
+        Kind::SO3 | Kind::SO2 | Kind::So3 | Kind::So2 => t.kind.clone(),
         Kind::Adjoint { transposed } => Kind::Adjoint {
             transposed: !transposed,
         },

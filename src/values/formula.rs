@@ -229,7 +229,7 @@ pub fn member(v: &Value, name: &str) -> Result<Value, String> {
 
 fn transposed_kind(k: &Kind) -> Kind {
     match k {
-        Kind::SO3 | Kind::SO2 => k.clone(),
+        Kind::SO3 | Kind::SO2 | Kind::So3 | Kind::So2 => k.clone(),
         Kind::Adjoint { transposed } => Kind::Adjoint {
             transposed: !transposed,
         },

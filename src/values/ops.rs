@@ -306,7 +306,8 @@ pub fn transpose(v: &Value) -> Value {
     match v {
         Value::Num { kind, m } => {
             let kind = match kind {
-                Kind::SO3 | Kind::SO2 | Kind::Scalar => kind.clone(),
+                // [ω]ᵀ = −[ω]: the transpose of so(3) is in so(3).
+                Kind::SO3 | Kind::SO2 | Kind::So3 | Kind::So2 | Kind::Scalar => kind.clone(),
                 Kind::Adjoint { transposed } => Kind::Adjoint {
                     transposed: !transposed,
                 },
