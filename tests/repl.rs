@@ -226,6 +226,7 @@ fn completion_candidates() {
         "T_s",
         "inv(T_sc) * T_",
         "gi",
+        "[k^2 fo",
         ":",
         ":fr",
         "  :he",

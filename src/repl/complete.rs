@@ -23,7 +23,7 @@ pub struct Candidate {
 
 /// Keywords of the language worth completing.
 const KEYWORDS: &[&str] = &[
-    "given", "derive", "mech", "assert", "pi", "deg", "rad", "true", "false",
+    "given", "derive", "mech", "assert", "for", "in", "pi", "deg", "rad", "true", "false",
 ];
 
 /// Longest line the preview evaluates.
