@@ -111,6 +111,16 @@ impl Builder {
         self.planar = Some(self.planar.unwrap_or(true) && planar);
     }
 
+    /// A frame's axes at `origin` (in the plane when `planar`).
+    fn frame(&mut self, planar: bool, origin: P3, axes: [P3; 3], label: String) {
+        self.plane(planar);
+        self.marks.push(Mark::Frame {
+            origin,
+            axes,
+            label,
+        });
+    }
+
     /// One value; `label` names it, `in_list` says it is an item of a list
     /// (3-vectors are then points).
     fn value(&mut self, v: &Value, label: &str, style: Style, in_list: bool) -> Result<(), String> {
@@ -182,49 +192,17 @@ impl Builder {
         match (kind, shape) {
             (Kind::SE3 | Kind::Matrix(..) | Kind::Unknown, (4, 4)) if is_transform(m) => {
                 let origin = P3::new(m[(0, 3)], m[(1, 3)], m[(2, 3)]);
-                let axes = [0, 1, 2].map(|j| P3::new(m[(0, j)], m[(1, j)], m[(2, j)]));
-                self.plane(false);
-                self.marks.push(Mark::Frame {
-                    origin,
-                    axes,
-                    label,
-                });
+                self.frame(false, origin, spatial_axes(m), label);
             }
             (Kind::SO3 | Kind::Matrix(..) | Kind::Unknown, (3, 3)) if is_rotation(m) => {
-                let axes = [0, 1, 2].map(|j| P3::new(m[(0, j)], m[(1, j)], m[(2, j)]));
-                self.plane(false);
-                self.marks.push(Mark::Frame {
-                    origin: P3::zeros(),
-                    axes,
-                    label,
-                });
+                self.frame(false, P3::zeros(), spatial_axes(m), label);
             }
             (Kind::SE2 | Kind::Matrix(..), (3, 3)) if is_planar_transform(m) => {
                 let origin = P3::new(m[(0, 2)], m[(1, 2)], 0.0);
-                let axes = [
-                    P3::new(m[(0, 0)], m[(1, 0)], 0.0),
-                    P3::new(m[(0, 1)], m[(1, 1)], 0.0),
-                    P3::z(),
-                ];
-                self.plane(true);
-                self.marks.push(Mark::Frame {
-                    origin,
-                    axes,
-                    label,
-                });
+                self.frame(true, origin, planar_axes(m), label);
             }
             (Kind::SO2, (2, 2)) | (Kind::Matrix(..), (2, 2)) if is_rotation(m) => {
-                let axes = [
-                    P3::new(m[(0, 0)], m[(1, 0)], 0.0),
-                    P3::new(m[(0, 1)], m[(1, 1)], 0.0),
-                    P3::z(),
-                ];
-                self.plane(true);
-                self.marks.push(Mark::Frame {
-                    origin: P3::zeros(),
-                    axes,
-                    label,
-                });
+                self.frame(true, P3::zeros(), planar_axes(m), label);
             }
             (Kind::Se2, (3, 3)) => {
                 // [V] = [0, −ω, vx; ω, 0, vy; 0, 0, 0]: the centre solves v = −ω × c.
@@ -330,6 +308,21 @@ fn orthonormal(m: &DMatrix<f64>, n: usize) -> bool {
     let r = m.view((0, 0), (n, n)).into_owned();
     let e = &r.transpose() * &r - DMatrix::identity(n, n);
     e.iter().all(|x| x.abs() < 1e-6) && r.determinant() > 0.0
+}
+
+/// The columns x̂, ŷ, ẑ of a rotation, or of a transform's R block.
+fn spatial_axes(m: &DMatrix<f64>) -> [P3; 3] {
+    [0, 1, 2].map(|j| P3::new(m[(0, j)], m[(1, j)], m[(2, j)]))
+}
+
+/// The columns x̂, ŷ of a planar rotation (or a planar transform's block)
+/// in the xy-plane, and ẑ out of it.
+fn planar_axes(m: &DMatrix<f64>) -> [P3; 3] {
+    [
+        P3::new(m[(0, 0)], m[(1, 0)], 0.0),
+        P3::new(m[(0, 1)], m[(1, 1)], 0.0),
+        P3::z(),
+    ]
 }
 
 fn is_rotation(m: &DMatrix<f64>) -> bool {

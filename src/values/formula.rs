@@ -5,7 +5,7 @@
 //! whose entries are all numbers is numeric again. Types and frames are
 //! checked before, exactly as for numbers.
 
-use super::ops::Sel;
+use super::ops::{Sel, position};
 use super::value::Value;
 use crate::check::ty::Kind;
 use crate::sym::matrix::{self, Mat};
@@ -235,15 +235,6 @@ fn transposed_kind(k: &Kind) -> Kind {
         },
         _ => Kind::Unknown,
     }
-}
-
-fn position(x: f64, n: usize) -> Result<usize, String> {
-    if x.fract() != 0.0 || x < 1.0 || x > n as f64 {
-        return Err(format!(
-            "index {x} is out of range 1..{n} (indices start at 1, as in the book)"
-        ));
-    }
-    Ok(x as usize - 1)
 }
 
 /// `x[i]`, `M[i, j]`, `M[i, :]`, `M[:, j]` (1-based).

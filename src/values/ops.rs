@@ -366,7 +366,9 @@ pub enum Sel {
     All,
 }
 
-fn position(x: f64, n: usize) -> Result<usize, String> {
+/// The 0-based position of the book's 1-based index `x` among `n`
+/// entries, or the error a user sees for an index out of range.
+pub(super) fn position(x: f64, n: usize) -> Result<usize, String> {
     if x.fract() != 0.0 || x < 1.0 || x > n as f64 {
         return Err(format!(
             "index {x} is out of range 1..{n} (indices start at 1, as in the book)"
