@@ -32,16 +32,21 @@ T = mr.MatrixExp6(se3)
 so3 = mr.VecToso3(v[:3])
 R = T[:3, :3]
 N = 20000
-for name, f in [
-    ("MatrixExp6", lambda: mr.MatrixExp6(se3)),
-    ("MatrixLog6", lambda: mr.MatrixLog6(T)),
-    ("MatrixExp3", lambda: mr.MatrixExp3(so3)),
-    ("MatrixLog3", lambda: mr.MatrixLog3(R)),
-    ("Adjoint", lambda: mr.Adjoint(T)),
-    ("TransInv", lambda: mr.TransInv(T)),
-]:
-    best = min(timeit.repeat(f, number=N, repeat=5)) / N
-    print(f"{name:12s} {best * 1e6:8.2f} us/call {1 / best:10.0f} calls/s")
+
+
+def single_operations():
+    """Calls per second of each core operation (compare `cargo bench --bench lie`)."""
+    for name, f in [
+        ("MatrixExp6", lambda: mr.MatrixExp6(se3)),
+        ("MatrixLog6", lambda: mr.MatrixLog6(T)),
+        ("MatrixExp3", lambda: mr.MatrixExp3(so3)),
+        ("MatrixLog3", lambda: mr.MatrixLog3(R)),
+        ("Adjoint", lambda: mr.Adjoint(T)),
+        ("TransInv", lambda: mr.TransInv(T)),
+    ]:
+        best = min(timeit.repeat(f, number=N, repeat=5)) / N
+        print(f"{name:12s} {best * 1e6:8.2f} us/call {1 / best:10.0f} calls/s")
+
 
 LINES = [
     "T_ab = exp([S] 0.1)",
@@ -104,4 +109,6 @@ def main():
     print(f"  ratio                  {py / ch:8.1f}x")
 
 
-main()
+if __name__ == "__main__":
+    single_operations()
+    main()
