@@ -54,23 +54,38 @@ pub fn parse_program(src: &str) -> Vec<Result<ast::Stmt, Diagnostic>> {
 /// text and one statement, not for every statement's tree at once.
 pub fn statements(src: &str) -> impl Iterator<Item = Result<ast::Stmt, Diagnostic>> + '_ {
     let mut splitter = split::Splitter::new(src);
+    let mut stack = fast::Stack::default();
     std::iter::from_fn(move || {
         let chunk = splitter.next()?;
         let text = splitter.text(chunk.span);
+        let mut passes = fast::Passes::ALL;
         let parsed = match chunk.error {
             Some(error) => Err(error),
             None if text.len() > MAX_STATEMENT_BYTES => Err(too_long(chunk.span, text.len())),
             // Most statements take the fast path; it leaves errors and rare
             // forms to pest.
             None if chunk.depth <= FAST_DEPTH
-                && let Some(stmt) = fast::parse_statement(text, chunk.span) =>
+                && let Some(stmt) = fast::parse_statement_with(text, chunk.span, &mut stack) =>
             {
+                passes = stack.passes;
                 Ok(stmt)
             }
             None if chunk.depth > SHALLOW => parse_on_big_stack(text, chunk.span),
             None => parser::parse_chunk(text, chunk.span),
         };
-        Some(parsed.and_then(|stmt| spacing::check(&stmt, src).map(|()| rewrite::stmt(stmt))))
+        let mut stmt = match parsed {
+            Ok(stmt) => stmt,
+            Err(error) => return Some(Err(error)),
+        };
+        if passes.spacing
+            && let Err(error) = spacing::check(&stmt, src)
+        {
+            return Some(Err(error));
+        }
+        if passes.rewrite {
+            rewrite::stmt(&mut stmt);
+        }
+        Some(Ok(stmt))
     })
 }
 

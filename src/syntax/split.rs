@@ -60,7 +60,11 @@ pub(crate) fn split(src: &str) -> Split {
 /// so a long script is processed in memory bounded by its size plus one
 /// statement (not one chunk per statement up front).
 pub(crate) struct Splitter<'a> {
+    src: &'a str,
     bytes: &'a [u8],
+    /// No byte at or after this offset has been blanked: there `buf` and
+    /// the source agree.
+    blanked_to: usize,
     /// The blanked text; `buf[chunk.span]` is final once a chunk is yielded.
     buf: Vec<u8>,
     /// See [`Split::open_at_end`] (valid once the iterator is exhausted).
@@ -80,7 +84,9 @@ pub(crate) struct Splitter<'a> {
 impl<'a> Splitter<'a> {
     pub(crate) fn new(src: &'a str) -> Splitter<'a> {
         Splitter {
+            src,
             bytes: src.as_bytes(),
+            blanked_to: 0,
             buf: src.as_bytes().to_vec(),
             open_at_end: false,
             any_error: false,
@@ -96,6 +102,12 @@ impl<'a> Splitter<'a> {
 
     /// The blanked text of a yielded chunk.
     pub(crate) fn text(&self, span: Span) -> &str {
+        if span.start >= self.blanked_to
+            && let Some(text) = self.src.get(span.start..span.end)
+        {
+            // Nothing blanked: the source itself, already known UTF-8.
+            return text;
+        }
         self.buf
             .get(span.start..span.end)
             .and_then(|b| std::str::from_utf8(b).ok())
@@ -119,7 +131,13 @@ impl Iterator for Splitter<'_> {
             if self.done {
                 return None;
             }
-            let i = self.i;
+            // Skip the bytes that neither end a statement nor open or
+            // close anything.
+            let mut i = self.i;
+            while i < n && !significant(bytes[i]) {
+                i += 1;
+            }
+            self.i = i;
             if i >= n {
                 if self.stack.is_empty() {
                     self.done = true;
@@ -180,6 +198,7 @@ impl Iterator for Splitter<'_> {
                         self.buf[self.i] = b' ';
                         self.i += 1;
                     }
+                    self.blanked_to = self.blanked_to.max(self.i);
                     continue;
                 }
                 b'\n' | b';' => match self.stack.last() {
@@ -195,7 +214,10 @@ impl Iterator for Splitter<'_> {
                         }
                         continue;
                     }
-                    Some((b'(' | b'{', _)) if b == b'\n' => self.buf[i] = b' ',
+                    Some((b'(' | b'{', _)) if b == b'\n' => {
+                        self.buf[i] = b' ';
+                        self.blanked_to = self.blanked_to.max(i + 1);
+                    }
                     Some(_) => {}
                 },
                 b'(' | b'[' | b'{' => {
@@ -257,6 +279,23 @@ impl Iterator for Splitter<'_> {
         }
     }
 }
+
+/// The bytes [`Splitter::next`] acts on: quotes, comments, statement ends
+/// and brackets (`<` and `>` for `mech < >`).
+fn significant(b: u8) -> bool {
+    SIGNIFICANT[usize::from(b)]
+}
+
+static SIGNIFICANT: [bool; 256] = {
+    let mut table = [false; 256];
+    let bytes = *b"\"#\n;()[]{}<>";
+    let mut k = 0;
+    while k < bytes.len() {
+        table[bytes[k] as usize] = true;
+        k += 1;
+    }
+    table
+};
 
 fn open(stack: &mut Vec<(u8, usize)>, error: &mut Option<Diagnostic>, b: u8, at: usize) {
     stack.push((b, at));

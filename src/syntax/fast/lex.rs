@@ -25,7 +25,23 @@ pub(super) fn xid_continue(c: char) -> bool {
     }
 }
 
-const KEYWORDS: [&str; 8] = ["pi", "π", "deg", "true", "false", "given", "derive", "mech"];
+/// The grammar's `keyword` (`pi`, `π`, `deg`, `true`, `false`, `given`,
+/// `derive`, `mech`) or `for`, compared byte by byte.
+fn is_keyword(word: &[u8]) -> bool {
+    // Slice patterns compile to a length test and byte comparisons.
+    matches!(
+        word,
+        [b'p', b'i']
+            | [0xCF, 0x80] // π
+            | [b'd', b'e', b'g']
+            | [b't', b'r', b'u', b'e']
+            | [b'f', b'a', b'l', b's', b'e']
+            | [b'g', b'i', b'v', b'e', b'n']
+            | [b'd', b'e', b'r', b'i', b'v', b'e']
+            | [b'm', b'e', b'c', b'h']
+            | [b'f', b'o', b'r']
+    )
+}
 
 impl P<'_> {
     /// `!XID_CONTINUE` at `at`.
@@ -34,36 +50,51 @@ impl P<'_> {
     }
 
     /// `word ~ !XID_CONTINUE` at `at`: the end of the word.
+    #[inline]
     pub(super) fn keyword_at(&self, at: usize, word: &str) -> Option<usize> {
         let end = at + word.len();
-        (self.s.get(at..end) == Some(word.as_bytes()) && self.word_ends(end)).then_some(end)
+        // Byte by byte: these words are two to six bytes, and most calls
+        // fail at the first byte.
+        let text = self.s.get(at..end)?;
+        let same = text.iter().zip(word.as_bytes()).all(|(a, b)| a == b);
+        (same && self.word_ends(end)).then_some(end)
     }
 
     /// The grammar's `ident` at `at`: `Some(Some(end))`, `Some(None)` where
     /// pest's `ident` fails, `None` to give up (a braced subscript).
     pub(super) fn ident_at(&self, at: usize) -> Option<Option<usize>> {
-        match self.char_at(at) {
-            Some(c) if xid_start(c) && c != 'ᵀ' => {}
-            _ => return Some(None),
+        let s = self.s;
+        match s.get(at) {
+            Some(b) if b.is_ascii_alphabetic() => {}
+            Some(b) if b.is_ascii() => return Some(None),
+            Some(_) => match self.char_at(at) {
+                Some(c) if xid_start(c) && c != 'ᵀ' => {}
+                _ => return Some(None),
+            },
+            None => return Some(None),
         }
         let mut i = at;
-        while let Some(c) = self.char_at(i) {
-            if c == '_' && self.byte(i + 1) == Some(b'{') {
-                return None;
+        while let Some(&b) = s.get(i) {
+            if b.is_ascii() {
+                if b == b'_' && s.get(i + 1) == Some(&b'{') {
+                    return None;
+                }
+                if !(b.is_ascii_alphanumeric() || b == b'_' || b == b'\'') {
+                    break;
+                }
+                i += 1;
+                continue;
             }
+            let Some(c) = self.char_at(i) else { break };
             // `ᵀ` is the transpose mark, never part of a name.
-            if !(xid_continue(c) || c == '\'') || c == 'ᵀ' {
+            if !xid_continue(c) || c == 'ᵀ' {
                 break;
             }
             i += c.len_utf8();
         }
         // `!keyword`: a keyword not followed by XID_CONTINUE or `'`, i.e.
         // the whole run of name characters.
-        let word = &self.src[at..i];
-        if KEYWORDS.contains(&word) || word == "for" {
-            return Some(None);
-        }
-        Some(Some(i))
+        Some((!is_keyword(&s[at..i])).then_some(i))
     }
 
     /// `number`: the end of the literal at `at`, if any.
@@ -136,16 +167,17 @@ impl P<'_> {
         match self.byte(at)? {
             b'+' => Some((BinOp::Add, 1)),
             b'-' => Some((BinOp::Sub, 1)),
-            _ if self.src[at..].starts_with('−') => Some((BinOp::Sub, '−'.len_utf8())),
+            0xE2 if self.src[at..].starts_with('−') => Some((BinOp::Sub, '−'.len_utf8())),
             _ => None,
         }
     }
 
     /// `degrees` at `at`: its end.
     pub(super) fn degrees_at(&self, at: usize) -> Option<usize> {
-        if self.src[at..].starts_with('°') {
-            return Some(at + '°'.len_utf8());
+        match self.byte(at)? {
+            0xC2 if self.src[at..].starts_with('°') => Some(at + '°'.len_utf8()),
+            b'd' => self.keyword_at(at, "deg"),
+            _ => None,
         }
-        self.keyword_at(at, "deg")
     }
 }
