@@ -120,9 +120,13 @@ impl P<'_> {
     }
 
     fn ws(&mut self) {
-        while self.pos < self.s.len() && is_ws(self.s[self.pos]) {
-            self.pos += 1;
+        let mut i = self.pos;
+        while let Some(&b) = self.s.get(i)
+            && is_ws(b)
+        {
+            i += 1;
         }
+        self.pos = i;
     }
 
     fn byte(&self, at: usize) -> Option<u8> {
@@ -140,21 +144,11 @@ impl P<'_> {
         self.budget = self.budget.checked_sub(1)?;
         Some(())
     }
-    fn ident(&mut self, start: usize, end: usize) -> Ident {
+    fn ident(&self, start: usize, end: usize) -> Ident {
         Ident {
-            name: self.name_text(start, end),
+            name: self.src[start..end].to_string(),
             span: self.span(start, end),
         }
-    }
-
-    /// The name at `start..end`, noting a digit or a non-ASCII character
-    /// in it (only such names can be refused by `spacing`, `T_123`).
-    fn name_text(&mut self, start: usize, end: usize) -> String {
-        let text = &self.src[start..end];
-        if text.bytes().any(|b| b.is_ascii_digit() || !b.is_ascii()) {
-            self.stack.passes.spacing = true;
-        }
-        text.to_string()
     }
 
     /// A name at the current position (after whitespace), or `None`.
@@ -179,7 +173,9 @@ impl P<'_> {
     fn statement(&mut self) -> Option<StmtKind> {
         // `assert expr`: pest's `assert_stmt` comes first, so a statement
         // starting with the keyword is an assertion or nothing.
-        if let Some(end) = self.keyword_at(0, "assert") {
+        if self.s.first() == Some(&b'a')
+            && let Some(end) = self.keyword_at(0, "assert")
+        {
             self.pos = end;
             return Some(StmtKind::Assert(self.expr(0)?.0));
         }

@@ -19,7 +19,8 @@ use crate::diagnostics::{Diagnostic, ErrorKind};
 #[derive(Debug)]
 pub(crate) struct Chunk {
     pub span: Span,
-    pub error: Option<Diagnostic>,
+    /// Boxed: rare, and a chunk is handed out per statement.
+    pub error: Option<Box<Diagnostic>>,
     /// The deepest bracket nesting in the statement.
     pub depth: usize,
 }
@@ -75,7 +76,7 @@ pub(crate) struct Splitter<'a> {
     i: usize,
     /// Open brackets: the byte (`(`, `[`, `{`, or `<` for `mech <`) and offset.
     stack: Vec<(u8, usize)>,
-    error: Option<Diagnostic>,
+    error: Option<Box<Diagnostic>>,
     /// The deepest nesting in the current statement.
     depth: usize,
     done: bool,
@@ -116,7 +117,7 @@ impl<'a> Splitter<'a> {
 
     /// The statement `buf[start..end]` (nested `depth` deep), trimmed;
     /// None for a blank one.
-    fn chunk(&self, start: usize, end: usize, error: Option<Diagnostic>) -> Option<Chunk> {
+    fn chunk(&self, start: usize, end: usize, error: Option<Box<Diagnostic>>) -> Option<Chunk> {
         make_chunk(&self.buf, (start, end, self.depth), error)
     }
 }
@@ -150,7 +151,10 @@ impl Iterator for Splitter<'_> {
                 }
                 // Report the outermost: the statement is cut at its line.
                 let &(open, at) = self.stack.first().unwrap_or(&(b'(', self.start));
-                let err = self.error.take().unwrap_or_else(|| unclosed(open, at));
+                let err = self
+                    .error
+                    .take()
+                    .unwrap_or_else(|| Box::new(unclosed(open, at)));
                 self.any_error = true;
                 // Recover: end this statement at the end of the line of the
                 // outermost open bracket and scan the rest afresh.
@@ -239,7 +243,7 @@ impl Iterator for Splitter<'_> {
                         Some(&(o, _)) if closer_of(o) == b => {}
                         Some(&(o, at)) => {
                             if error.is_none() {
-                                *error = Some(
+                                *error = Some(Box::new(
                                     Diagnostic::error(
                                         ErrorKind::Syntax,
                                         Span::new(i, i + 1),
@@ -253,12 +257,12 @@ impl Iterator for Splitter<'_> {
                                         Span::new(at, at + 1),
                                         format!("'{}' opened here", opener_name(o)),
                                     ),
-                                );
+                                ));
                             }
                         }
                         None => {
                             if error.is_none() {
-                                *error = Some(
+                                *error = Some(Box::new(
                                     Diagnostic::error(
                                         ErrorKind::Syntax,
                                         Span::new(i, i + 1),
@@ -267,7 +271,7 @@ impl Iterator for Splitter<'_> {
                                     .with_primary_label(
                                         format!("no '{}' is open here", opener_of(b) as char),
                                     ),
-                                );
+                                ));
                             }
                         }
                     }
@@ -297,17 +301,17 @@ static SIGNIFICANT: [bool; 256] = {
     table
 };
 
-fn open(stack: &mut Vec<(u8, usize)>, error: &mut Option<Diagnostic>, b: u8, at: usize) {
+fn open(stack: &mut Vec<(u8, usize)>, error: &mut Option<Box<Diagnostic>>, b: u8, at: usize) {
     stack.push((b, at));
     if stack.len() > MAX_DEPTH && error.is_none() {
-        *error = Some(
+        *error = Some(Box::new(
             Diagnostic::error(
                 ErrorKind::Syntax,
                 Span::new(at, at + 1),
                 format!("expression nested too deeply (limit {MAX_DEPTH})"),
             )
             .with_help("split it into several statements with intermediate names"),
-        );
+        ));
     }
 }
 
@@ -371,7 +375,7 @@ fn follows_mech(before: &[u8]) -> bool {
 fn make_chunk(
     buf: &[u8],
     (mut start, mut end, depth): (usize, usize, usize),
-    error: Option<Diagnostic>,
+    error: Option<Box<Diagnostic>>,
 ) -> Option<Chunk> {
     let blank = |b: u8| matches!(b, b' ' | b'\t' | b'\r' | b'\n' | b'\x0C');
     while start < end && blank(buf[start]) {

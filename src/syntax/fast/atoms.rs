@@ -73,6 +73,13 @@ impl P<'_> {
         };
         self.pos = end;
         let (e, d) = self.leaf(ExprKind::Number(value), start, end);
+        if !self
+            .byte(self.pos)
+            .is_some_and(|b| super::is_ws(b) || b == b'd' || b == 0xC2)
+        {
+            // No `deg` or `°` can follow (the common case).
+            return Some(Some((e, d)));
+        }
         Some(self.units(e, d))
     }
 
@@ -197,7 +204,7 @@ impl P<'_> {
         }
         if let Some(end) = name {
             self.pos = end;
-            let var = ExprKind::Var(self.name_text(start, end));
+            let var = ExprKind::Var(self.src[start..end].to_string());
             return Some(self.leaf(var, start, end));
         }
         if let Some(end) = self.keyword_at(start, "deg") {
@@ -237,7 +244,7 @@ impl P<'_> {
                     return None;
                 }
                 self.pos = stop;
-                let var = ExprKind::Var(self.name_text(at, stop));
+                let var = ExprKind::Var(self.src[at..stop].to_string());
                 let (e, d) = self.leaf(var, at, stop);
                 self.units(e, d)
             }

@@ -25,6 +25,40 @@ pub(super) fn xid_continue(c: char) -> bool {
     }
 }
 
+/// How a byte continues a name (`ident_at`).
+#[derive(Clone, Copy)]
+enum NameByte {
+    /// A letter or `'`.
+    Plain,
+    Digit,
+    Underscore,
+    /// The first byte of a non-ASCII character (or a continuation byte).
+    NonAscii,
+    /// Ends the name.
+    Other,
+}
+
+static NAME_BYTES: [NameByte; 256] = {
+    let mut table = [NameByte::Other; 256];
+    let mut b = 0;
+    while b < 256 {
+        let c = b as u8;
+        table[b] = if c.is_ascii_alphabetic() || c == b'\'' {
+            NameByte::Plain
+        } else if c.is_ascii_digit() {
+            NameByte::Digit
+        } else if c == b'_' {
+            NameByte::Underscore
+        } else if c >= 0x80 {
+            NameByte::NonAscii
+        } else {
+            NameByte::Other
+        };
+        b += 1;
+    }
+    table
+};
+
 /// The grammar's `keyword` (`pi`, `π`, `deg`, `true`, `false`, `given`,
 /// `derive`, `mech`) or `for`, compared byte by byte.
 fn is_keyword(word: &[u8]) -> bool {
@@ -50,19 +84,23 @@ impl P<'_> {
     }
 
     /// `word ~ !XID_CONTINUE` at `at`: the end of the word.
-    #[inline]
+    #[inline(always)]
     pub(super) fn keyword_at(&self, at: usize, word: &str) -> Option<usize> {
+        let word = word.as_bytes();
+        // Most calls fail at the first byte.
+        if self.s.get(at) != word.first() {
+            return None;
+        }
         let end = at + word.len();
-        // Byte by byte: these words are two to six bytes, and most calls
-        // fail at the first byte.
         let text = self.s.get(at..end)?;
-        let same = text.iter().zip(word.as_bytes()).all(|(a, b)| a == b);
+        let same = text.iter().zip(word).all(|(a, b)| a == b);
         (same && self.word_ends(end)).then_some(end)
     }
 
     /// The grammar's `ident` at `at`: `Some(Some(end))`, `Some(None)` where
-    /// pest's `ident` fails, `None` to give up (a braced subscript).
-    pub(super) fn ident_at(&self, at: usize) -> Option<Option<usize>> {
+    /// pest's `ident` fails, `None` to give up (a braced subscript). Notes
+    /// a name with a digit or a non-ASCII character for `spacing`.
+    pub(super) fn ident_at(&mut self, at: usize) -> Option<Option<usize>> {
         let s = self.s;
         match s.get(at) {
             Some(b) if b.is_ascii_alphabetic() => {}
@@ -74,23 +112,30 @@ impl P<'_> {
             None => return Some(None),
         }
         let mut i = at;
+        let mut odd = false;
         while let Some(&b) = s.get(i) {
-            if b.is_ascii() {
-                if b == b'_' && s.get(i + 1) == Some(&b'{') {
-                    return None;
+            match NAME_BYTES[usize::from(b)] {
+                NameByte::Plain => i += 1,
+                NameByte::Digit => {
+                    odd = true;
+                    i += 1;
                 }
-                if !(b.is_ascii_alphanumeric() || b == b'_' || b == b'\'') {
-                    break;
+                NameByte::Underscore if s.get(i + 1) == Some(&b'{') => return None,
+                NameByte::Underscore => i += 1,
+                NameByte::Other => break,
+                NameByte::NonAscii => {
+                    odd = true;
+                    let Some(c) = self.char_at(i) else { break };
+                    // `ᵀ` is the transpose mark, never part of a name.
+                    if !xid_continue(c) || c == 'ᵀ' {
+                        break;
+                    }
+                    i += c.len_utf8();
                 }
-                i += 1;
-                continue;
             }
-            let Some(c) = self.char_at(i) else { break };
-            // `ᵀ` is the transpose mark, never part of a name.
-            if !xid_continue(c) || c == 'ᵀ' {
-                break;
-            }
-            i += c.len_utf8();
+        }
+        if odd {
+            self.stack.passes.spacing = true;
         }
         // `!keyword`: a keyword not followed by XID_CONTINUE or `'`, i.e.
         // the whole run of name characters.
