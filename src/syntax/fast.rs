@@ -58,8 +58,8 @@ pub(crate) struct Stack {
 
 /// Which of the passes after parsing can change or refuse a statement:
 /// `spacing` only looks at juxtapositions, `sin θ`, brackets and names
-/// with digits; `rewrite` only at `^` and brackets. A statement with none
-/// of these skips them.
+/// with digits; `rewrite` only at `^` and brackets in brackets. A
+/// statement with none of these skips them.
 #[derive(Debug, Clone, Copy, Default)]
 pub(crate) struct Passes {
     pub spacing: bool,

@@ -212,6 +212,15 @@ impl Check<'_> {
             return Ok(());
         }
         let first = self.first_operand(rhs);
+        // A juxtaposition reads two ways only after a number, after `sin 2`
+        // or before a bracket.
+        if *implicit
+            && !(matches!(last.kind, ExprKind::Number(_) | ExprKind::Degrees(_))
+                || bare.is_some_and(|a| matches!(a.kind, ExprKind::Number(_)))
+                || matches!(first.kind, ExprKind::Brackets(_)))
+        {
+            return Ok(());
+        }
         let (l, r) = (self.text(last.span), self.text(first.span));
         match op {
             BinOp::Mul if *implicit => {

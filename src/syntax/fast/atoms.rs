@@ -4,7 +4,7 @@
 //! `bare_call`, `postfix`, `paren`, `sup_group`, `brackets` and `index`
 //! rules read them.
 
-use super::{Built, P, Passes};
+use super::{Built, P};
 use crate::syntax::MAX_DEPTH;
 use crate::syntax::ast::{Expr, ExprKind, Ident, IndexArg};
 
@@ -381,7 +381,8 @@ impl P<'_> {
 
     pub(super) fn brackets(&mut self) -> Built {
         self.spend()?;
-        self.stack.passes = Passes::ALL;
+        // `[1 -x]`, `[2 pi]`: what reads two ways in brackets.
+        self.stack.passes.spacing = true;
         let start = self.pos;
         self.pos += 1;
         let rows_mark = self.stack.rows.len();
@@ -423,6 +424,14 @@ impl P<'_> {
         self.pos += 1;
         let span = self.span(start, self.pos);
         let rows = self.stack.rows.split_off(rows_mark);
+        // numpy's nested rows `[[1, 2], [3, 4]]` are rewritten.
+        if rows
+            .iter()
+            .flatten()
+            .any(|e| matches!(e.kind, ExprKind::Brackets(_)))
+        {
+            self.stack.passes.rewrite = true;
+        }
         let kind = ExprKind::Brackets(rows);
         Some((Expr { kind, span }, depth + 1))
     }
