@@ -41,7 +41,7 @@ pub fn mul(l: &Ty, r: &Ty, ops: Operands) -> Result<Ty, RuleError> {
         Err(Clash::Inner(x, y)) => {
             // A displacement in {a} is the map {a}←{a'}: name its frame {a}.
             let x = match &l.frames {
-                Frames::Disp(a) => a.clone(),
+                Frames::Disp(a) => *a,
                 _ => x,
             };
             return Err(inner_mismatch(l, r, &x, &y, ops));

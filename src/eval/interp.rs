@@ -287,7 +287,8 @@ impl<'a> Interp<'a> {
         if matches!(t.ty.kind, Kind::List(_) | Kind::Picture | Kind::Text) {
             return Ok(t);
         }
-        let ty = match bind::bind(name, &t.ty) {
+        let claim = self.env.claim(name);
+        let ty = match bind::bind_claimed(name, &claim, &t.ty) {
             Ok(b) => {
                 if let Some(w) = b.warning {
                     self.rule_warning(w, value_span, name_span);
@@ -296,10 +297,9 @@ impl<'a> Interp<'a> {
             }
             Err(e) => {
                 self.rule_failure(e, value_span, Some(name_span), Some(value_span), None)?;
-                let kind = bind::named_kind(name, &t.ty.kind);
-                let kind = bind::named_group(name, &kind).unwrap_or(kind);
-                let claim = bind::claimed_frames(name, &kind);
-                Ty::new(kind, claim)
+                let kind = claim.kind_for(&t.ty.kind);
+                let frames = claim.frames_for(&kind);
+                Ty::new(kind, frames)
             }
         };
         let val = match t.val {
