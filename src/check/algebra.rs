@@ -55,7 +55,7 @@
 use super::ty::{Frame, Frames, Kind, Ty};
 
 /// One end of a map.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum End {
     /// Coordinates in a frame.
     At(Frame),
@@ -69,13 +69,13 @@ impl End {
     fn lifted(&self, k: u32) -> End {
         match self {
             End::At(f) => End::At(f.lifted(k)),
-            other => other.clone(),
+            other => *other,
         }
     }
 }
 
 /// A framed factor as a map from coordinates at `inn` to coordinates at `out`.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Arrow {
     pub out: End,
     pub inn: End,
@@ -91,7 +91,7 @@ impl Arrow {
 }
 
 /// How the algebra sees one operand of a product.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Factor {
     /// A map between frames (or the scalar line).
     Map(Arrow),
@@ -134,7 +134,7 @@ impl Shape {
 }
 
 /// Why a product has no frames.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Clash {
     /// The inner frames differ: the left factor's inner frame, the right
     /// factor's outer frame.
@@ -193,9 +193,9 @@ pub fn compose(l: &Factor, r: &Factor) -> Result<Factor, Clash> {
                     a.inn.lifted(k - down),
                 )
             }
-            _ => Arrow::new(a.out.clone(), a.inn.lifted(*k)),
+            _ => Arrow::new(a.out, a.inn.lifted(*k)),
         })),
-        (Map(a), Untagged(k)) => Ok(Map(Arrow::new(a.out.clone(), a.inn.lifted(*k)))),
+        (Map(a), Untagged(k)) => Ok(Map(Arrow::new(a.out, a.inn.lifted(*k)))),
         (Map(x), Map(y)) => compose_maps(x, y).map(Map),
     }
 }
@@ -211,13 +211,13 @@ fn compose_maps(x: &Arrow, y: &Arrow) -> Result<Arrow, Clash> {
             // last one's inner end, moved alike under every bracketing, so
             // they print alike too.)
             if b.moved >= c.moved {
-                Ok(Arrow::new(x.out.clone(), y.lifted(b.moved - c.moved).inn))
+                Ok(Arrow::new(x.out, y.lifted(b.moved - c.moved).inn))
             } else {
-                Ok(Arrow::new(x.lifted(c.moved - b.moved).out, y.inn.clone()))
+                Ok(Arrow::new(x.lifted(c.moved - b.moved).out, y.inn))
             }
         }
         // The line meets the line (uᵀv, u vᵀ), or a wildcard meets anything.
-        _ => Ok(Arrow::new(x.out.clone(), y.inn.clone())),
+        _ => Ok(Arrow::new(x.out, y.inn)),
     }
 }
 
@@ -290,7 +290,7 @@ pub fn untagged_power(x: &Ty, n: Option<i64>, kind: &Kind) -> Option<u32> {
 /// or `kind` is no operator.
 fn unusual(k: u32, kind: &Kind) -> Option<u32> {
     let usual = match Shape::of(kind) {
-        _ if *kind == Kind::Scalar => return None,
+        _ if matches!(kind, Kind::Scalar) => return None,
         Shape::Operator => 1,
         Shape::Quantity => 0,
         Shape::Column | Shape::Row => return None,

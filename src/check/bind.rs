@@ -43,7 +43,7 @@ impl Claim {
     /// tagged {s}; a scalar claims none (`theta_b = 30 deg` is a plain angle).
     pub fn frames_for(&self, kind: &Kind) -> Frames {
         match self.frames {
-            _ if *kind == Kind::Scalar => Frames::None,
+            _ if matches!(kind, Kind::Scalar) => Frames::None,
             Frames::Pair(a, _) if kind.is_vector() || kind.is_algebra() => Frames::One(a),
             f => f,
         }
@@ -58,7 +58,7 @@ impl Claim {
     }
 
     fn vector_kind(&self, kind: &Kind) -> Kind {
-        if *kind == Kind::Vector(Some(6)) {
+        if matches!(kind, Kind::Vector(Some(6))) {
             match self.letter {
                 Some('V') => Kind::Twist,
                 Some('S' | 'B') => Kind::Screw,
@@ -92,7 +92,7 @@ impl Claim {
 /// The frames a name claims, as a tag for a value of `kind`
 /// ([`Claim::frames_for`]).
 pub fn claimed_frames(name: &str, kind: &Kind) -> Frames {
-    if *kind == Kind::Scalar {
+    if matches!(kind, Kind::Scalar) {
         return Frames::None;
     }
     Claim::of(name).frames_for(kind)
@@ -149,7 +149,7 @@ pub fn bind(name: &str, ty: &Ty) -> Result<Bound, RuleError> {
 /// [`bind`] with the name's [`Claim`] already read.
 pub fn bind_claimed(name: &str, claim: &Claim, ty: &Ty) -> Result<Bound, RuleError> {
     let kind = claim.kind_for(&ty.kind);
-    if kind == Kind::Scalar {
+    if matches!(kind, Kind::Scalar) {
         return Ok(Bound {
             ty: Ty::new(kind, Frames::None),
             warning: None,

@@ -19,13 +19,16 @@ pub(super) fn dims_agree(a: Option<usize>, b: Option<usize>) -> bool {
 /// `l * r` (and juxtaposition): kind and frames.
 pub fn mul(l: &Ty, r: &Ty, ops: Operands) -> Result<Ty, RuleError> {
     // Scalars scale anything and leave frames alone.
-    if l.kind == Kind::Scalar {
+    if matches!(l.kind, Kind::Scalar) {
         return Ok(r.scaled());
     }
-    if r.kind == Kind::Scalar {
+    if matches!(r.kind, Kind::Scalar) {
         return Ok(l.scaled());
     }
-    if l.kind == (Kind::Adjoint { transposed: false }) && r.kind == Kind::Wrench {
+    if matches!(
+        (&l.kind, &r.kind),
+        (Kind::Adjoint { transposed: false }, Kind::Wrench)
+    ) {
         return Err(wrench_through_ad(l, r, ops));
     }
     // A row times a column, uᵀv: an inner product (the power V_bᵀF_b is a
@@ -55,18 +58,18 @@ pub fn mul(l: &Ty, r: &Ty, ops: Operands) -> Result<Ty, RuleError> {
 
 /// What a factor contributes to a product of group elements and one
 /// element of their Lie algebra.
-#[derive(Debug, Clone, PartialEq)]
-enum Content {
-    Group(Kind),
-    Algebra(Kind),
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Content<'a> {
+    Group(&'a Kind),
+    Algebra(&'a Kind),
     Other,
 }
 
-fn content(t: &Ty) -> Content {
+fn content(t: &Ty) -> Content<'_> {
     match (&t.kind, &t.algebra) {
-        (k, _) if k.is_group() => Content::Group(k.clone()),
-        (k, _) if k.is_algebra() => Content::Algebra(k.clone()),
-        (Kind::Matrix(..), Some(a)) => Content::Algebra(a.clone()),
+        (k, _) if k.is_group() => Content::Group(k),
+        (k, _) if k.is_algebra() => Content::Algebra(k),
+        (Kind::Matrix(..), Some(a)) => Content::Algebra(a),
         _ => Content::Other,
     }
 }
@@ -95,13 +98,13 @@ fn conjugation(l: &Ty, r: &Ty, mut out: Ty) -> Ty {
     }
     let alg = match (content(l), content(r)) {
         (Content::Group(g), Content::Algebra(a)) | (Content::Algebra(a), Content::Group(g))
-            if group_of(&a).as_ref() == Some(&g) =>
+            if group_of(a).as_ref() == Some(g) =>
         {
             a
         }
         _ => return out,
     };
-    out.algebra = Some(alg);
+    out.algebra = Some(alg.clone());
     out
 }
 

@@ -311,7 +311,8 @@ pub fn member(t: &Ty, name: &str) -> Result<Ty, RuleError> {
 /// vector of a map between two frames (`se3ToVec(T_ab * [V_b])`) is a frame
 /// error.
 pub fn settle(t: &Ty, name: &str) -> Result<Ty, RuleError> {
-    let settled = settled(t);
+    let mut settled = t.clone();
+    settle_in_place(&mut settled);
     if let (true, Frames::Pair(a, b)) = (one_frame_kind(&t.kind), &settled.frames) {
         let mut e = RuleError::frame(format!(
             "{name} gives {}, a quantity in one frame, but its argument maps {{{b}}} to {{{a}}}",
@@ -335,26 +336,34 @@ fn one_frame_kind(k: &Kind) -> bool {
 /// frame and a moved copy of it (`exp([S_a] θ) [V_a] exp(−[S_a] θ)`, whose
 /// two displacements chasles cannot tell apart) is a quantity in that frame.
 pub fn settled(t: &Ty) -> Ty {
+    let mut t = t.clone();
+    settle_in_place(&mut t);
+    t
+}
+
+/// [`settled`], in place (no copy of the type).
+pub fn settle_in_place(t: &mut Ty) {
     // g·X·g⁻¹ whose frames close on one frame is back in the Lie algebra
     // (3.77, Prop. 3.5): known from the symbols (with numbers, they decide).
-    if let (Some(alg), Frames::One(_), Kind::Matrix(..)) = (&t.algebra, &t.frames, &t.kind) {
-        return Ty {
-            kind: alg.clone(),
-            algebra: None,
-            ..t.clone()
-        };
+    if let (Some(_), Frames::One(_), Kind::Matrix(..)) = (&t.algebra, &t.frames, &t.kind) {
+        if let Some(alg) = t.algebra.take() {
+            t.kind = alg;
+        }
+        return;
     }
-    let frames = match t.frames.displacement_frame() {
-        _ if t.kind == Kind::Scalar => Frames::None,
-        Some(a) if one_frame_kind(&t.kind) => Frames::One(*a),
-        _ => match &t.frames {
-            Frames::Pair(a, b) if one_frame_kind(&t.kind) && a == b => Frames::One(*a),
-            f => *f,
-        },
-    };
-    Ty {
-        frames,
-        ..t.clone()
+    if matches!(t.kind, Kind::Scalar) {
+        t.frames = Frames::None;
+        return;
+    }
+    if !one_frame_kind(&t.kind) {
+        return;
+    }
+    if let Some(a) = t.frames.displacement_frame() {
+        t.frames = Frames::One(*a);
+    } else if let Frames::Pair(a, b) = t.frames
+        && a == b
+    {
+        t.frames = Frames::One(a);
     }
 }
 

@@ -462,7 +462,9 @@ impl Ty {
     pub fn scaled(&self) -> Ty {
         Ty {
             kind: self.kind.scaled(),
-            ..self.clone()
+            frames: self.frames,
+            algebra: self.algebra.clone(),
+            moves: self.moves,
         }
     }
 }

@@ -140,7 +140,7 @@ impl<'a> Interp<'a> {
         match &s.kind {
             StmtKind::Expr(e) => {
                 let mut t = self.expr(e)?;
-                t.ty = crate::check::rules::settled(&t.ty);
+                crate::check::rules::settle_in_place(&mut t.ty);
                 if t.ty.kind != Kind::Function {
                     self.bind_value("ans", &t);
                 }
@@ -150,7 +150,7 @@ impl<'a> Interp<'a> {
             }
             StmtKind::Assign { target, value } => {
                 let mut t = self.expr(value)?;
-                t.ty = crate::check::rules::settled(&t.ty);
+                crate::check::rules::settle_in_place(&mut t.ty);
                 let t = self.bind_checked(&target.name, t, target.span, value.span)?;
                 self.bind_value(&target.name, &t);
                 Ok(out(vec![target.name.clone()], t))
