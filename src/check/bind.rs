@@ -176,7 +176,7 @@ pub fn bind_claimed(name: &str, claim: &Claim, ty: &Ty) -> Result<Bound, RuleErr
         _ => return Err(mismatch(name, &claim, &ty.frames)),
     };
     let mut bound = Ty::new(kind, frames);
-    bound.algebra = ty.algebra.clone();
+    bound.algebra = ty.algebra;
     bound.moves = ty.moves;
     Ok(Bound { ty: bound, warning })
 }

@@ -6,7 +6,7 @@
 
 use super::algebra::{self, Clash};
 use super::error::{Operands, RuleError, describe, inverse_text};
-use super::ty::{Frame, Frames, Kind, Ty};
+use super::ty::{Algebra, Frame, Frames, Kind, Ty};
 use crate::syntax::ident::{NameFrames, base_name, name_frames, tagged_name};
 
 pub(super) fn dims_agree(a: Option<usize>, b: Option<usize>) -> bool {
@@ -61,28 +61,16 @@ pub fn mul(l: &Ty, r: &Ty, ops: Operands) -> Result<Ty, RuleError> {
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum Content<'a> {
     Group(&'a Kind),
-    Algebra(&'a Kind),
+    Algebra(Algebra),
     Other,
 }
 
 fn content(t: &Ty) -> Content<'_> {
-    match (&t.kind, &t.algebra) {
+    match (&t.kind, t.algebra) {
         (k, _) if k.is_group() => Content::Group(k),
-        (k, _) if k.is_algebra() => Content::Algebra(k),
         (Kind::Matrix(..), Some(a)) => Content::Algebra(a),
-        _ => Content::Other,
+        (k, _) => Algebra::of(k).map_or(Content::Other, Content::Algebra),
     }
-}
-
-/// The group whose Lie algebra `alg` is.
-fn group_of(alg: &Kind) -> Option<Kind> {
-    Some(match alg {
-        Kind::So3 => Kind::SO3,
-        Kind::Se3 => Kind::SE3,
-        Kind::So2 => Kind::SO2,
-        Kind::Se2 => Kind::SE2,
-        _ => return None,
-    })
 }
 
 /// g·X, X·g and g·X·g⁻¹: a plain matrix that remembers the algebra of X
@@ -98,13 +86,13 @@ fn conjugation(l: &Ty, r: &Ty, mut out: Ty) -> Ty {
     }
     let alg = match (content(l), content(r)) {
         (Content::Group(g), Content::Algebra(a)) | (Content::Algebra(a), Content::Group(g))
-            if group_of(a).as_ref() == Some(g) =>
+            if a.group() == *g =>
         {
             a
         }
         _ => return out,
     };
-    out.algebra = Some(alg.clone());
+    out.algebra = Some(alg);
     out
 }
 
@@ -429,7 +417,7 @@ mod tests {
         // g·X alone is a plain matrix that remembers its algebra.
         let gx = mul(&g, &x, ops).unwrap();
         assert_eq!(gx.kind, Kind::Matrix(Some(4), Some(4)));
-        assert_eq!(gx.algebra, Some(Kind::Se3));
+        assert_eq!(gx.algebra, Some(Algebra::Se3));
         // X·X is no longer anything of the algebra.
         let xx = mul(&x, &x, ops).unwrap();
         let gxxg = mul(&mul(&g, &xx, ops).unwrap(), &gi, ops).unwrap();

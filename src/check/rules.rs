@@ -345,10 +345,9 @@ pub fn settled(t: &Ty) -> Ty {
 pub fn settle_in_place(t: &mut Ty) {
     // g·X·g⁻¹ whose frames close on one frame is back in the Lie algebra
     // (3.77, Prop. 3.5): known from the symbols (with numbers, they decide).
-    if let (Some(_), Frames::One(_), Kind::Matrix(..)) = (&t.algebra, &t.frames, &t.kind) {
-        if let Some(alg) = t.algebra.take() {
-            t.kind = alg;
-        }
+    if let (Some(alg), Frames::One(_), Kind::Matrix(..)) = (t.algebra, &t.frames, &t.kind) {
+        t.kind = alg.kind();
+        t.algebra = None;
         return;
     }
     if matches!(t.kind, Kind::Scalar) {

@@ -423,6 +423,47 @@ impl fmt::Display for Frames {
     }
 }
 
+/// A Lie algebra (§3.2.3, §3.3.2): the content a product g·X of a group
+/// element and an element X of its algebra remembers ([`Ty::algebra`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Algebra {
+    So3,
+    Se3,
+    So2,
+    Se2,
+}
+
+impl Algebra {
+    /// The algebra a kind is an element of: so(3) of [`Kind::So3`].
+    pub fn of(kind: &Kind) -> Option<Algebra> {
+        Some(match kind {
+            Kind::So3 => Algebra::So3,
+            Kind::Se3 => Algebra::Se3,
+            Kind::So2 => Algebra::So2,
+            Kind::Se2 => Algebra::Se2,
+            _ => return None,
+        })
+    }
+    /// The kind of the algebra's elements.
+    pub fn kind(self) -> Kind {
+        match self {
+            Algebra::So3 => Kind::So3,
+            Algebra::Se3 => Kind::Se3,
+            Algebra::So2 => Kind::So2,
+            Algebra::Se2 => Kind::Se2,
+        }
+    }
+    /// The group whose Lie algebra this is: SO(3) for so(3).
+    pub fn group(self) -> Kind {
+        match self {
+            Algebra::So3 => Kind::SO3,
+            Algebra::Se3 => Kind::SE3,
+            Algebra::So2 => Kind::SO2,
+            Algebra::Se2 => Kind::SE2,
+        }
+    }
+}
+
 /// The checker's knowledge of an expression: kind and frames.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Ty {
@@ -432,7 +473,7 @@ pub struct Ty {
     /// Lie algebra, g·X or X·g (`T_sb [V_b]` = Ṫ_sb, (3.75)), the algebra:
     /// conjugation g·X·g⁻¹ lands back in it when the frames close on one
     /// (`[V_s] = T [V_b] T⁻¹`, (3.77); Prop. 3.5). Known without numbers only.
-    pub algebra: Option<Kind>,
+    pub algebra: Option<Algebra>,
     /// For an untagged operator that is a product of untagged operators,
     /// how many displacements it stands for when not the usual one (an
     /// untagged rotation or transform is one displacement of the frame it
@@ -463,7 +504,7 @@ impl Ty {
         Ty {
             kind: self.kind.scaled(),
             frames: self.frames,
-            algebra: self.algebra.clone(),
+            algebra: self.algebra,
             moves: self.moves,
         }
     }
