@@ -138,16 +138,16 @@ pub fn named_group(name: &str, kind: &Kind) -> Option<Kind> {
 #[derive(Debug, Clone)]
 pub struct Bound {
     pub ty: Ty,
-    pub warning: Option<RuleError>,
+    pub warning: Option<Box<RuleError>>,
 }
 
 /// The type a binding `name = value` gets, or the frame error.
-pub fn bind(name: &str, ty: &Ty) -> Result<Bound, RuleError> {
+pub fn bind(name: &str, ty: &Ty) -> Result<Bound, Box<RuleError>> {
     bind_claimed(name, &Claim::of(name), ty)
 }
 
 /// [`bind`] with the name's [`Claim`] already read.
-pub fn bind_claimed(name: &str, claim: &Claim, ty: &Ty) -> Result<Bound, RuleError> {
+pub fn bind_claimed(name: &str, claim: &Claim, ty: &Ty) -> Result<Bound, Box<RuleError>> {
     let kind = claim.kind_for(&ty.kind);
     if matches!(kind, Kind::Scalar) {
         return Ok(Bound {
@@ -162,18 +162,23 @@ pub fn bind_claimed(name: &str, claim: &Claim, ty: &Ty) -> Result<Bound, RuleErr
         (c, Frames::None) => c,
         (Frames::Pair(x, y), Frames::Pair(a, b)) if x == a && (y == b || b.is_moved()) => {
             if y.name == b.name && y.moved == 0 && b.moved > 0 {
-                warning = Some(renamed_moved_frame(name, &ty.frames, &b, &y));
+                warning = Some(Box::new(renamed_moved_frame(name, &ty.frames, &b, &y)));
             }
             claim
         }
         (Frames::Pair(x, y), Frames::Disp(a)) if x == a => {
             if y.name == a.name && y.moved == 0 {
-                warning = Some(renamed_moved_frame(name, &ty.frames, &a.moved(), &y));
+                warning = Some(Box::new(renamed_moved_frame(
+                    name,
+                    &ty.frames,
+                    &a.moved(),
+                    &y,
+                )));
             }
             claim
         }
         (Frames::One(x), Frames::One(a) | Frames::Disp(a)) if x == a => ty.frames,
-        _ => return Err(mismatch(name, &claim, &ty.frames)),
+        _ => return Err(Box::new(mismatch(name, &claim, &ty.frames))),
     };
     let mut bound = Ty::new(kind, frames);
     bound.algebra = ty.algebra;
@@ -277,6 +282,29 @@ mod tests {
         // A group element keeps its group; a planar transform is no rotation.
         assert_eq!(named_group("T_bc", &Kind::SO3), None);
         assert_eq!(named_group("R_bc", &Kind::SE2), Some(Kind::SO3));
+    }
+
+    #[test]
+    fn a_claim_is_the_letter_and_the_subscript_frames() {
+        let c = Claim::of("T_sb''");
+        assert_eq!(c.letter, Some('T'));
+        let Frames::Pair(s, b) = c.frames else {
+            panic!("{:?}", c.frames)
+        };
+        assert_eq!((s.to_string(), b.to_string()), ("s".into(), "b''".into()));
+        assert_eq!((b.name.as_str(), b.moved, b.written), ("b", 2, 2));
+        // A vector named with two frames is in the outer one; a scalar in none.
+        assert_eq!(c.frames_for(&Kind::Vector(Some(3))), Frames::one("s"));
+        assert_eq!(c.frames_for(&Kind::Scalar), Frames::None);
+        assert_eq!(c.kind_for(&Kind::Matrix(Some(4), Some(4))), Kind::SE3);
+        let c = Claim::of("p_{world}");
+        assert_eq!((c.letter, c.frames), (Some('p'), Frames::one("world")));
+        assert_eq!(Claim::of("Sum").letter, None);
+        assert_eq!(Claim::of("theta_1").frames, Frames::None);
+        assert_eq!(
+            Claim::of("V_b").kind_for(&Kind::Vector(Some(6))),
+            Kind::Twist
+        );
     }
 
     #[test]
