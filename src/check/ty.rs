@@ -427,9 +427,13 @@ impl fmt::Display for Frames {
 /// element and an element X of its algebra remembers ([`Ty::algebra`]).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Algebra {
+    /// so(3): skew-symmetric `[ω]` (§3.2.3.1).
     So3,
+    /// se(3): twist matrices `[V]` (§3.3.2).
     Se3,
+    /// so(2): the planar `[ω]`.
     So2,
+    /// se(2): the planar `[V]`.
     Se2,
 }
 
