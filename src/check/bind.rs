@@ -52,21 +52,21 @@ impl Claim {
     /// The kind a value of `kind` gets under this name: the book's letters
     /// name the kind of a plain 6-vector ([`named_kind`]) and the group of
     /// a square matrix ([`named_group`]).
-    pub fn kind_for(&self, kind: &Kind) -> Kind {
+    pub fn kind_for(&self, kind: Kind) -> Kind {
         let kind = self.vector_kind(kind);
         self.group(&kind).unwrap_or(kind)
     }
 
-    fn vector_kind(&self, kind: &Kind) -> Kind {
+    fn vector_kind(&self, kind: Kind) -> Kind {
         if matches!(kind, Kind::Vector(Some(6))) {
             match self.letter {
                 Some('V') => Kind::Twist,
                 Some('S' | 'B') => Kind::Screw,
                 Some('F') => Kind::Wrench,
-                _ => kind.clone(),
+                _ => kind,
             }
         } else {
-            kind.clone()
+            kind
         }
     }
 
@@ -120,7 +120,7 @@ fn book_letter(name: &str) -> Option<char> {
 /// or `B` a screw axis, `F` a wrench (§3.3.2, §3.4) — for the book's names
 /// only ([`book_letter`]).
 pub fn named_kind(name: &str, kind: &Kind) -> Kind {
-    Claim::of(name).vector_kind(kind)
+    Claim::of(name).vector_kind(kind.clone())
 }
 
 /// The group a rotation or transform name asserts for a square matrix of
@@ -143,12 +143,20 @@ pub struct Bound {
 
 /// The type a binding `name = value` gets, or the frame error.
 pub fn bind(name: &str, ty: &Ty) -> Result<Bound, Box<RuleError>> {
-    bind_claimed(name, &Claim::of(name), ty)
+    bind_claimed(name, &Claim::of(name), ty.clone()).map_err(|r| r.error)
 }
 
-/// [`bind`] with the name's [`Claim`] already read.
-pub fn bind_claimed(name: &str, claim: &Claim, ty: &Ty) -> Result<Bound, Box<RuleError>> {
-    let kind = claim.kind_for(&ty.kind);
+/// A binding refused: the frame error, and the type the name gives the
+/// value when frames are not checked (its kind, the frames it claims).
+#[derive(Debug, Clone)]
+pub struct Refused {
+    pub error: Box<RuleError>,
+    pub ty: Ty,
+}
+
+/// [`bind`] with the name's [`Claim`] already read, taking the type.
+pub fn bind_claimed(name: &str, claim: &Claim, ty: Ty) -> Result<Bound, Refused> {
+    let kind = claim.kind_for(ty.kind);
     if matches!(kind, Kind::Scalar) {
         return Ok(Bound {
             ty: Ty::new(kind, Frames::None),
@@ -178,11 +186,19 @@ pub fn bind_claimed(name: &str, claim: &Claim, ty: &Ty) -> Result<Bound, Box<Rul
             claim
         }
         (Frames::One(x), Frames::One(a) | Frames::Disp(a)) if x == a => ty.frames,
-        _ => return Err(Box::new(mismatch(name, &claim, &ty.frames))),
+        _ => {
+            return Err(Refused {
+                error: Box::new(mismatch(name, &claim, &ty.frames)),
+                ty: Ty::new(kind, claim),
+            });
+        }
     };
-    let mut bound = Ty::new(kind, frames);
-    bound.algebra = ty.algebra;
-    bound.moves = ty.moves;
+    let bound = Ty {
+        kind,
+        frames,
+        algebra: ty.algebra,
+        moves: ty.moves,
+    };
     Ok(Bound { ty: bound, warning })
 }
 
@@ -296,13 +312,13 @@ mod tests {
         // A vector named with two frames is in the outer one; a scalar in none.
         assert_eq!(c.frames_for(&Kind::Vector(Some(3))), Frames::one("s"));
         assert_eq!(c.frames_for(&Kind::Scalar), Frames::None);
-        assert_eq!(c.kind_for(&Kind::Matrix(Some(4), Some(4))), Kind::SE3);
+        assert_eq!(c.kind_for(Kind::Matrix(Some(4), Some(4))), Kind::SE3);
         let c = Claim::of("p_{world}");
         assert_eq!((c.letter, c.frames), (Some('p'), Frames::one("world")));
         assert_eq!(Claim::of("Sum").letter, None);
         assert_eq!(Claim::of("theta_1").frames, Frames::None);
         assert_eq!(
-            Claim::of("V_b").kind_for(&Kind::Vector(Some(6))),
+            Claim::of("V_b").kind_for(Kind::Vector(Some(6))),
             Kind::Twist
         );
     }

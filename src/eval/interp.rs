@@ -288,18 +288,22 @@ impl<'a> Interp<'a> {
             return Ok(t);
         }
         let claim = self.env.claim(name);
-        let ty = match bind::bind_claimed(name, &claim, &t.ty) {
+        let ty = match bind::bind_claimed(name, &claim, t.ty) {
             Ok(b) => {
                 if let Some(w) = b.warning {
                     self.rule_warning(*w, value_span, name_span);
                 }
                 b.ty
             }
-            Err(e) => {
-                self.rule_failure(*e, value_span, Some(name_span), Some(value_span), None)?;
-                let kind = claim.kind_for(&t.ty.kind);
-                let frames = claim.frames_for(&kind);
-                Ty::new(kind, frames)
+            Err(r) => {
+                self.rule_failure(
+                    *r.error,
+                    value_span,
+                    Some(name_span),
+                    Some(value_span),
+                    None,
+                )?;
+                r.ty
             }
         };
         let val = match t.val {
