@@ -524,3 +524,27 @@ impl fmt::Display for Ty {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_frame_prints_as_its_name_wrote_it() {
+        let b2 = Frame::named("b''");
+        assert_eq!((b2.name.as_str(), b2.moved, b2.written), ("b", 2, 2));
+        assert_eq!(b2.to_string(), "b''");
+        // Moved further: one more prime; a frame no name wrote: one prime.
+        assert_eq!(b2.moved().to_string(), "b'''");
+        assert_eq!(Frame::at("b", 2).to_string(), "b'");
+        assert_eq!(b2.lowered().to_string(), "b'");
+        assert_eq!(Frame::named("world").to_string(), "world");
+        // Equal by name and moves, whatever wrote them.
+        assert_eq!(b2, Frame::at("b", 2));
+        assert_ne!(b2, Frame::at("b", 1));
+        let f = Frames::Pair(Frame::named("a"), b2);
+        let g = f;
+        assert_eq!(f.swapped().to_string(), "{b''}←{a}");
+        assert_eq!(g.to_list(), vec!["a".to_string(), "b''".to_string()]);
+    }
+}
