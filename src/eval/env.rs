@@ -75,6 +75,7 @@ impl Env {
     pub fn get(&self, name: &str) -> Option<&Binding> {
         self.vars.get(name)
     }
+    #[inline]
     pub fn set(&mut self, name: &str, b: Binding) {
         // Rebinding a name (the common case in a long script) keeps its key.
         match self.vars.get_mut(name) {
@@ -86,6 +87,7 @@ impl Env {
     }
     /// What `name` says about a value bound to it ([`Claim::of`]), read
     /// from the name the first time only.
+    #[inline]
     pub fn claim(&mut self, name: &str) -> Claim {
         if let Some(c) = self.claims.get(name) {
             return *c;
