@@ -276,16 +276,16 @@ impl Builtin {
 /// The result frames of a builtin under `rule`.
 pub fn apply_frame_rule(rule: FrameRule, args: &[Ty]) -> Result<Frames, ArgError> {
     let outer = |i: usize| match args[i].frames.outer() {
-        Some(a) => Frames::One(a.clone()),
+        Some(a) => Frames::One(*a),
         None => Frames::None,
     };
     Ok(match rule {
         FrameRule::None => Frames::None,
-        FrameRule::Same(i) => args[i].frames.clone(),
+        FrameRule::Same(i) => args[i].frames,
         FrameRule::Swap(i) => args[i].frames.swapped(),
         FrameRule::Outer(i) => outer(i),
         FrameRule::Disp(i) => match &args[i].frames {
-            Frames::One(a) | Frames::Disp(a) => Frames::Disp(a.clone()),
+            Frames::One(a) | Frames::Disp(a) => Frames::Disp(*a),
             _ => Frames::None,
         },
         FrameRule::Shared => {
@@ -296,7 +296,7 @@ pub fn apply_frame_rule(rule: FrameRule, args: &[Ty]) -> Result<Frames, ArgError
                 }
                 match (&acc, &a.frames) {
                     (_, Frames::None) => {}
-                    (Frames::None, f) => acc = f.clone(),
+                    (Frames::None, f) => acc = *f,
                     (x, f) if x == f => {}
                     (x, f) => {
                         return Err(ArgError {

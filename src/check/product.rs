@@ -6,7 +6,7 @@
 
 use super::algebra::{self, Clash};
 use super::error::{Operands, RuleError, describe, inverse_text};
-use super::ty::{Frame, Frames, Kind, Ty};
+use super::ty::{Algebra, Frame, Frames, Kind, Ty};
 use crate::syntax::ident::{NameFrames, base_name, name_frames, tagged_name};
 
 pub(super) fn dims_agree(a: Option<usize>, b: Option<usize>) -> bool {
@@ -19,13 +19,16 @@ pub(super) fn dims_agree(a: Option<usize>, b: Option<usize>) -> bool {
 /// `l * r` (and juxtaposition): kind and frames.
 pub fn mul(l: &Ty, r: &Ty, ops: Operands) -> Result<Ty, RuleError> {
     // Scalars scale anything and leave frames alone.
-    if l.kind == Kind::Scalar {
+    if matches!(l.kind, Kind::Scalar) {
         return Ok(r.scaled());
     }
-    if r.kind == Kind::Scalar {
+    if matches!(r.kind, Kind::Scalar) {
         return Ok(l.scaled());
     }
-    if l.kind == (Kind::Adjoint { transposed: false }) && r.kind == Kind::Wrench {
+    if matches!(
+        (&l.kind, &r.kind),
+        (Kind::Adjoint { transposed: false }, Kind::Wrench)
+    ) {
         return Err(wrench_through_ad(l, r, ops));
     }
     // A row times a column, uᵀv: an inner product (the power V_bᵀF_b is a
@@ -41,7 +44,7 @@ pub fn mul(l: &Ty, r: &Ty, ops: Operands) -> Result<Ty, RuleError> {
         Err(Clash::Inner(x, y)) => {
             // A displacement in {a} is the map {a}←{a'}: name its frame {a}.
             let x = match &l.frames {
-                Frames::Disp(a) => a.clone(),
+                Frames::Disp(a) => *a,
                 _ => x,
             };
             return Err(inner_mismatch(l, r, &x, &y, ops));
@@ -55,31 +58,19 @@ pub fn mul(l: &Ty, r: &Ty, ops: Operands) -> Result<Ty, RuleError> {
 
 /// What a factor contributes to a product of group elements and one
 /// element of their Lie algebra.
-#[derive(Debug, Clone, PartialEq)]
-enum Content {
-    Group(Kind),
-    Algebra(Kind),
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Content<'a> {
+    Group(&'a Kind),
+    Algebra(Algebra),
     Other,
 }
 
-fn content(t: &Ty) -> Content {
-    match (&t.kind, &t.algebra) {
-        (k, _) if k.is_group() => Content::Group(k.clone()),
-        (k, _) if k.is_algebra() => Content::Algebra(k.clone()),
-        (Kind::Matrix(..), Some(a)) => Content::Algebra(a.clone()),
-        _ => Content::Other,
+fn content(t: &Ty) -> Content<'_> {
+    match (&t.kind, t.algebra) {
+        (k, _) if k.is_group() => Content::Group(k),
+        (Kind::Matrix(..), Some(a)) => Content::Algebra(a),
+        (k, _) => Algebra::of(k).map_or(Content::Other, Content::Algebra),
     }
-}
-
-/// The group whose Lie algebra `alg` is.
-fn group_of(alg: &Kind) -> Option<Kind> {
-    Some(match alg {
-        Kind::So3 => Kind::SO3,
-        Kind::Se3 => Kind::SE3,
-        Kind::So2 => Kind::SO2,
-        Kind::Se2 => Kind::SE2,
-        _ => return None,
-    })
 }
 
 /// g·X, X·g and g·X·g⁻¹: a plain matrix that remembers the algebra of X
@@ -95,7 +86,7 @@ fn conjugation(l: &Ty, r: &Ty, mut out: Ty) -> Ty {
     }
     let alg = match (content(l), content(r)) {
         (Content::Group(g), Content::Algebra(a)) | (Content::Algebra(a), Content::Group(g))
-            if group_of(&a).as_ref() == Some(&g) =>
+            if a.group() == *g =>
         {
             a
         }
@@ -426,7 +417,7 @@ mod tests {
         // g·X alone is a plain matrix that remembers its algebra.
         let gx = mul(&g, &x, ops).unwrap();
         assert_eq!(gx.kind, Kind::Matrix(Some(4), Some(4)));
-        assert_eq!(gx.algebra, Some(Kind::Se3));
+        assert_eq!(gx.algebra, Some(Algebra::Se3));
         // X·X is no longer anything of the algebra.
         let xx = mul(&x, &x, ops).unwrap();
         let gxxg = mul(&mul(&g, &xx, ops).unwrap(), &gi, ops).unwrap();

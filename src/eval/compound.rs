@@ -51,7 +51,7 @@ impl Interp<'_> {
             return self.list_item(t, &sels, span);
         }
         let outer = match t.ty.frames.outer() {
-            Some(a) => Frames::One(a.clone()),
+            Some(a) => Frames::One(*a),
             None => Frames::None,
         };
         let ty = match (&t.ty.kind, sels.as_slice()) {
@@ -295,8 +295,8 @@ fn bracket_type(rows: &[Vec<Typed>]) -> Ty {
     if rows.len() == 1 && rows[0].len() == 1 {
         let t = &rows[0][0].ty;
         return match t.kind.vec_len() {
-            Some(3) => Ty::new(Kind::So3, t.frames.clone()),
-            Some(6) => Ty::new(Kind::Se3, t.frames.clone()),
+            Some(3) => Ty::new(Kind::So3, t.frames),
+            Some(6) => Ty::new(Kind::Se3, t.frames),
             _ => t.clone(),
         };
     }
@@ -308,7 +308,7 @@ fn bracket_type(rows: &[Vec<Typed>]) -> Ty {
     for t in rows.iter().flatten() {
         if let Frames::Pair(..) = t.ty.frames {
             if frames.is_none() {
-                frames = t.ty.frames.clone();
+                frames = t.ty.frames;
             } else if frames != t.ty.frames {
                 frames = Frames::None;
                 break;
