@@ -6,6 +6,7 @@ use crate::check::ty::{Kind, Ty};
 use crate::eval::interp::Outcome;
 use crate::values::format::write_inline;
 pub use crate::values::format::{Style, inline};
+use crate::values::num::Num;
 use crate::values::value::Value;
 use std::fmt::Write;
 
@@ -63,7 +64,7 @@ fn list_block(prefix: &str, ty: &Ty, vs: &[Value], style: Style) -> String {
 
 /// A matrix in aligned columns, decimal points lined up, one row per line;
 /// `indent` is the column where the `[` stands.
-pub fn matrix_block(m: &nalgebra::DMatrix<f64>, style: impl Into<Style>, indent: usize) -> String {
+pub fn matrix_block(m: &Num, style: impl Into<Style>, indent: usize) -> String {
     let mut out = String::new();
     write_matrix_block(&mut out, m, style.into(), indent);
     out
@@ -95,20 +96,14 @@ thread_local! {
 
 /// [`matrix_block`], appended to `out`: the cells are written once into
 /// one buffer (reused from call to call), then aligned.
-fn write_matrix_block(out: &mut String, m: &nalgebra::DMatrix<f64>, style: Style, indent: usize) {
+fn write_matrix_block(out: &mut String, m: &Num, style: Style, indent: usize) {
     SCRATCH.with(|s| match s.try_borrow_mut() {
         Ok(mut s) => align(out, m, style, indent, &mut s),
         Err(_) => align(out, m, style, indent, &mut Scratch::default()),
     });
 }
 
-fn align(
-    out: &mut String,
-    m: &nalgebra::DMatrix<f64>,
-    style: Style,
-    indent: usize,
-    s: &mut Scratch,
-) {
+fn align(out: &mut String, m: &Num, style: Style, indent: usize, s: &mut Scratch) {
     let (nrows, ncols) = m.shape();
     let Scratch {
         buf,
