@@ -7,6 +7,7 @@ use crate::eval::interp::Outcome;
 use crate::values::format::write_inline;
 pub use crate::values::format::{Style, inline};
 use crate::values::num::Num;
+use crate::values::number::Ascii;
 use crate::values::value::Value;
 use std::fmt::Write;
 
@@ -88,6 +89,8 @@ struct Scratch {
     cells: Vec<(usize, usize, usize, usize)>,
     int_w: Vec<usize>,
     frac_w: Vec<usize>,
+    /// The block [`align_ascii`] assembles.
+    bytes: Vec<u8>,
 }
 
 thread_local! {
@@ -97,10 +100,71 @@ thread_local! {
 /// [`matrix_block`], appended to `out`: the cells are written once into
 /// one buffer (reused from call to call), then aligned.
 fn write_matrix_block(out: &mut String, m: &Num, style: Style, indent: usize) {
+    // Decimals (not `:exact`'s closed forms such as √3/2) are ASCII, so
+    // widths are byte counts and the block is built as bytes.
+    let ascii = !style.exact || style.sym == crate::sym::print::Mode::Latex;
     SCRATCH.with(|s| match s.try_borrow_mut() {
+        Ok(mut s) if ascii => align_ascii(out, m, style.digits, indent, &mut s),
         Ok(mut s) => align(out, m, style, indent, &mut s),
         Err(_) => align(out, m, style, indent, &mut Scratch::default()),
     });
+}
+
+/// [`align`] for decimals and at most 36 cells (up to 6×6): each cell
+/// written once on the stack by [`Ascii::fixed`], the block assembled as
+/// bytes and appended in one copy. The same text as [`align`], which
+/// takes over when a cell is not in [`Ascii::fixed`]'s common case.
+fn align_ascii(out: &mut String, m: &Num, digits: usize, indent: usize, s: &mut Scratch) {
+    const MAX: usize = 36;
+    let (nrows, ncols) = m.shape();
+    let xs = m.as_slice();
+    if xs.len() > MAX || ncols > 6 {
+        return align(out, m, digits.into(), indent, s);
+    }
+    let mut cells = [Ascii::default(); MAX];
+    let (mut int_w, mut frac_w) = ([0usize; 6], [0usize; 6]);
+    for j in 0..ncols {
+        for r in 0..nrows {
+            let cell = &mut cells[r * ncols + j];
+            if !cell.fixed(xs[j * nrows + r], digits) {
+                return align(out, m, digits.into(), indent, s);
+            }
+            int_w[j] = int_w[j].max(cell.int_width());
+            frac_w[j] = frac_w[j].max(cell.frac_width());
+        }
+    }
+    let block = &mut s.bytes;
+    block.clear();
+    let width: usize = int_w.iter().chain(&frac_w).sum::<usize>() + 2 * ncols + indent + 1;
+    block.reserve(nrows * width + 2);
+    block.push(b'[');
+    for r in 0..nrows {
+        if r > 0 {
+            block.push(b'\n');
+            pad(block, indent + 1);
+        }
+        for j in 0..ncols {
+            let cell = &cells[r * ncols + j];
+            pad(block, int_w[j] - cell.int_width());
+            for &b in cell.bytes() {
+                block.push(b);
+            }
+            if j + 1 < ncols {
+                block.push(b',');
+                pad(block, frac_w[j] - cell.frac_width() + 1);
+            }
+        }
+    }
+    block.push(b']');
+    // Every byte is ASCII: digits, '.', '-', spaces, brackets.
+    out.push_str(std::str::from_utf8(block).unwrap_or_default());
+}
+
+/// `n` spaces.
+fn pad(block: &mut Vec<u8>, n: usize) {
+    for _ in 0..n {
+        block.push(b' ');
+    }
 }
 
 fn align(out: &mut String, m: &Num, style: Style, indent: usize, s: &mut Scratch) {
@@ -110,6 +174,7 @@ fn align(out: &mut String, m: &Num, style: Style, indent: usize, s: &mut Scratch
         cells,
         int_w,
         frac_w,
+        ..
     } = s;
     buf.clear();
     cells.clear();
