@@ -115,13 +115,28 @@ fn write_matrix_block(out: &mut String, m: &Num, style: Style, indent: usize) {
 /// bytes and appended in one copy. The same text as [`align`], which
 /// takes over when a cell is not in [`Ascii::fixed`]'s common case.
 fn align_ascii(out: &mut String, m: &Num, digits: usize, indent: usize, s: &mut Scratch) {
-    const MAX: usize = 36;
+    // The cells live on the stack, in as small an array as fits.
+    match m.len() {
+        ..=16 => align_cells::<16>(out, m, digits, indent, s),
+        17..=36 => align_cells::<36>(out, m, digits, indent, s),
+        _ => align(out, m, digits.into(), indent, s),
+    }
+}
+
+/// [`align_ascii`] with room for `N` cells.
+fn align_cells<const N: usize>(
+    out: &mut String,
+    m: &Num,
+    digits: usize,
+    indent: usize,
+    s: &mut Scratch,
+) {
     let (nrows, ncols) = m.shape();
     let xs = m.as_slice();
-    if xs.len() > MAX || ncols > 6 {
+    if xs.len() > N || ncols > 6 {
         return align(out, m, digits.into(), indent, s);
     }
-    let mut cells = [Ascii::default(); MAX];
+    let mut cells = [Ascii::default(); N];
     let (mut int_w, mut frac_w) = ([0usize; 6], [0usize; 6]);
     for j in 0..ncols {
         for r in 0..nrows {
@@ -133,38 +148,41 @@ fn align_ascii(out: &mut String, m: &Num, digits: usize, indent: usize, s: &mut 
             frac_w[j] = frac_w[j].max(cell.frac_width());
         }
     }
+    // Each row is laid out in a buffer of spaces on the stack: only the
+    // cells and commas are written, the padding is already there.
+    const ROW: usize = 512;
+    let width: usize = int_w.iter().chain(&frac_w).sum::<usize>() + 2 * ncols;
+    if indent + 2 + width > ROW {
+        return align(out, m, digits.into(), indent, s);
+    }
     let block = &mut s.bytes;
     block.clear();
-    let width: usize = int_w.iter().chain(&frac_w).sum::<usize>() + 2 * ncols + indent + 1;
-    block.reserve(nrows * width + 2);
-    block.push(b'[');
+    block.reserve(nrows * (indent + 2 + width) + 1);
     for r in 0..nrows {
-        if r > 0 {
-            block.push(b'\n');
-            pad(block, indent + 1);
-        }
+        let mut row = [b' '; ROW];
+        let mut k = if r == 0 {
+            row[0] = b'[';
+            1
+        } else {
+            row[0] = b'\n';
+            indent + 2
+        };
         for j in 0..ncols {
             let cell = &cells[r * ncols + j];
-            pad(block, int_w[j] - cell.int_width());
-            for &b in cell.bytes() {
-                block.push(b);
-            }
+            let text = cell.bytes();
+            k += int_w[j] - cell.int_width();
+            row[k..k + text.len()].copy_from_slice(text);
+            k += text.len();
             if j + 1 < ncols {
-                block.push(b',');
-                pad(block, frac_w[j] - cell.frac_width() + 1);
+                row[k] = b',';
+                k += frac_w[j] - cell.frac_width() + 2;
             }
         }
+        block.extend_from_slice(&row[..k]);
     }
     block.push(b']');
     // Every byte is ASCII: digits, '.', '-', spaces, brackets.
     out.push_str(std::str::from_utf8(block).unwrap_or_default());
-}
-
-/// `n` spaces.
-fn pad(block: &mut Vec<u8>, n: usize) {
-    for _ in 0..n {
-        block.push(b' ');
-    }
 }
 
 fn align(out: &mut String, m: &Num, style: Style, indent: usize, s: &mut Scratch) {

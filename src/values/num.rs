@@ -85,6 +85,7 @@ impl Num {
     }
 
     /// Rows and columns.
+    #[inline]
     pub fn shape(&self) -> (usize, usize) {
         match self {
             Num::Scalar(_) => (1, 1),
@@ -98,28 +99,34 @@ impl Num {
         }
     }
     /// Number of rows.
+    #[inline]
     pub fn nrows(&self) -> usize {
         self.shape().0
     }
     /// Number of columns.
+    #[inline]
     pub fn ncols(&self) -> usize {
         self.shape().1
     }
     /// Number of entries.
+    #[inline]
     pub fn len(&self) -> usize {
         self.as_slice().len()
     }
     /// True for a matrix with no entries (`zeros(0, 3)`).
+    #[inline]
     pub fn is_empty(&self) -> bool {
         self.len() == 0
     }
     /// True when rows and columns are as many.
+    #[inline]
     pub fn is_square(&self) -> bool {
         let (r, c) = self.shape();
         r == c
     }
 
     /// The entries in column-major order.
+    #[inline]
     pub fn as_slice(&self) -> &[f64] {
         match self {
             Num::Scalar(x) => std::slice::from_ref(x),
@@ -133,6 +140,7 @@ impl Num {
         }
     }
     /// The entries in column-major order, to change in place.
+    #[inline]
     pub fn as_mut_slice(&mut self) -> &mut [f64] {
         match self {
             Num::Scalar(x) => std::slice::from_mut(x),
@@ -147,6 +155,7 @@ impl Num {
     }
 
     /// The entries in column-major order.
+    #[inline]
     pub fn iter(&self) -> std::slice::Iter<'_, f64> {
         self.as_slice().iter()
     }
@@ -253,6 +262,7 @@ impl PartialEq for Num {
 impl std::ops::Index<usize> for Num {
     type Output = f64;
     /// The `i`-th entry in column-major order (0-based).
+    #[inline]
     fn index(&self, i: usize) -> &f64 {
         &self.as_slice()[i]
     }
@@ -261,6 +271,7 @@ impl std::ops::Index<usize> for Num {
 impl std::ops::Index<(usize, usize)> for Num {
     type Output = f64;
     /// The entry in row `r`, column `c` (0-based).
+    #[inline]
     fn index(&self, (r, c): (usize, usize)) -> &f64 {
         let (n, m) = self.shape();
         assert!(r < n && c < m, "index ({r}, {c}) out of a {n}×{m} matrix");

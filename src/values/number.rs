@@ -57,18 +57,20 @@ pub fn write_num(out: &mut String, x: f64, digits: usize) {
 /// float formatter, no libm call and no allocation.
 #[derive(Clone, Copy)]
 pub struct Ascii {
-    buf: [u8; 32],
-    start: usize,
+    /// At most 18 bytes are written: an integer below 1e15 with its
+    /// sign, or below 9e6 with 9 decimals.
+    buf: [u8; 24],
+    start: u8,
     /// Where the decimal point is (the end when there is none).
-    point: usize,
+    point: u8,
 }
 
 impl Default for Ascii {
     fn default() -> Ascii {
         Ascii {
-            buf: [b'0'; 32],
-            start: 32,
-            point: 32,
+            buf: [0; 24],
+            start: 24,
+            point: 24,
         }
     }
 }
@@ -80,12 +82,17 @@ impl Ascii {
     /// decimals with integer arithmetic; values within 1e-12 of an
     /// integer print as the integer.
     pub fn fixed(&mut self, x: f64, digits: usize) -> bool {
+        self.start = 24;
+        self.point = 24;
+        if x == 0.0 {
+            // Zero (and -0) is written 0: a third of a transform's entries.
+            self.push(b'0');
+            return true;
+        }
         let a = x.abs();
         if digits > 9 || a.is_nan() || a >= 1e15 {
             return false;
         }
-        self.start = self.buf.len();
-        self.point = self.buf.len();
         let r = round_abs(a);
         if (a - r as f64).abs() <= 1e-12 * (r as f64).max(1.0) && r < 1_000_000_000_000_000 {
             self.digits(r as u64, 0);
@@ -122,9 +129,10 @@ impl Ascii {
         true
     }
 
+    #[inline]
     fn push(&mut self, b: u8) {
         self.start -= 1;
-        self.buf[self.start] = b;
+        self.buf[usize::from(self.start)] = b;
     }
 
     /// The decimal digits of `n`, zero-padded to `width`.
@@ -137,22 +145,25 @@ impl Ascii {
                 break;
             }
         }
-        while end - self.start < width {
+        while usize::from(end - self.start) < width {
             self.push(b'0');
         }
     }
 
     /// The text written (ASCII: digits, '.', '-').
+    #[inline]
     pub fn bytes(&self) -> &[u8] {
-        &self.buf[self.start..]
+        &self.buf[usize::from(self.start)..]
     }
     /// Characters before the decimal point (all of them without one).
+    #[inline]
     pub fn int_width(&self) -> usize {
-        self.point - self.start
+        usize::from(self.point - self.start)
     }
     /// Characters from the decimal point on (0 without one).
+    #[inline]
     pub fn frac_width(&self) -> usize {
-        self.buf.len() - self.point
+        24 - usize::from(self.point)
     }
 }
 
@@ -167,13 +178,14 @@ fn round_abs(a: f64) -> i64 {
 /// smallest magnitude that does not round to 0 (below it, scientific
 /// notation). Computed once for the usual `digits`.
 fn tiny(digits: usize) -> f64 {
-    let at = |d: usize| 0.5 * 10f64.powi(-(d.min(300) as i32));
-    static TABLE: std::sync::OnceLock<[f64; 10]> = std::sync::OnceLock::new();
-    match TABLE.get_or_init(|| std::array::from_fn(at)).get(digits) {
+    match TINY.get(digits) {
         Some(t) => *t,
-        None => at(digits),
+        None => 0.5 * 10f64.powi(-(digits.min(300) as i32)),
     }
 }
+
+/// `0.5 * 10f64.powi(-d)` for `d = 0..=9`, bit for bit (a test checks).
+const TINY: [f64; 10] = [0.5, 0.05, 0.005, 5e-4, 5e-5, 5e-6, 5e-7, 5e-8, 5e-9, 5e-10];
 
 /// Powers of ten `10^0 ..= 10^9`.
 const POW10: [u64; 10] = [
