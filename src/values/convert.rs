@@ -7,7 +7,7 @@ use nalgebra::DMatrix;
 
 use super::num::Num;
 use crate::check::ty::Kind;
-use crate::lie::{Mat2, Mat3, project};
+use crate::lie::{LieGroup, Mat2, Mat3, SE2, SE3, SO2, SO3};
 
 /// Within this distance a matrix is taken as a group element as it is.
 pub const ACCEPT_TOL: f64 = 1e-9;
@@ -79,10 +79,10 @@ pub fn distance(m: &Num, group: Group) -> Option<f64> {
         return None;
     }
     Some(match (group, m) {
-        (Group::SO3, Num::M3(r)) => project::distance_to_so3(r),
-        (Group::SE3, Num::M4(t)) => project::distance_to_se3(t),
-        (Group::SO2, _) => project::distance_to_so2(&mat2(m)),
-        (Group::SE2, Num::M3(t)) => project::distance_to_se2(t),
+        (Group::SO3, Num::M3(r)) => SO3::distance(r),
+        (Group::SE3, Num::M4(t)) => SE3::distance(t),
+        (Group::SO2, _) => SO2::distance(&mat2(m)),
+        (Group::SE2, Num::M3(t)) => SE2::distance(t),
         _ => return None,
     })
 }
@@ -91,13 +91,10 @@ pub fn distance(m: &Num, group: Group) -> Option<f64> {
 /// the group's shape.
 pub fn project(m: &Num, group: Group) -> Num {
     match (group, m) {
-        (Group::SO3, Num::M3(r)) => Num::M3(project::project_to_so3(r)),
-        (Group::SE3, Num::M4(t)) => Num::M4(project::project_to_se3(t)),
-        (Group::SE2, Num::M3(t)) => Num::M3(project::project_to_se2(t)),
-        (Group::SO2, _) => {
-            let p = project::project_to_so2(&mat2(m));
-            Num::from_slice(2, 2, p.as_slice())
-        }
+        (Group::SO3, Num::M3(r)) => Num::M3(*SO3::project(r).matrix()),
+        (Group::SE3, Num::M4(t)) => Num::M4(*SE3::project(t).matrix()),
+        (Group::SE2, Num::M3(t)) => Num::M3(*SE2::project(t).matrix()),
+        (Group::SO2, _) => Num::from_slice(2, 2, SO2::project(&mat2(m)).matrix().as_slice()),
         _ => m.clone(),
     }
 }

@@ -9,7 +9,7 @@ use super::convert;
 use super::num::Num;
 use super::value::Value;
 use crate::check::ty::Kind;
-use crate::lie::{Vec3, se2, se3};
+use crate::lie::{LieGroup, SE2, SE3, SO3, Vec3, se3};
 
 /// Largest matrix side accepted anywhere.
 pub const MAX_DIM: usize = 10_000;
@@ -286,9 +286,11 @@ pub fn inverse(v: &Value) -> Result<Value, String> {
 
 fn num_inverse(k: &Kind, m: &Num) -> Result<Num, String> {
     Ok(match (k, m) {
+        // Closed forms: Rᵀ (Prop. 3.3), (3.64) for transforms.
+        (Kind::SO3, Num::M3(r)) => Num::M3(*SO3::assume(*r).inverse().matrix()),
         (Kind::SO3 | Kind::SO2, _) => m.transpose(),
-        (Kind::SE3, Num::M4(t)) => Num::M4(se3::inv(t)),
-        (Kind::SE2, Num::M3(t)) => Num::M3(se2::inv(t)),
+        (Kind::SE3, Num::M4(t)) => Num::M4(*SE3::assume(*t).inverse().matrix()),
+        (Kind::SE2, Num::M3(t)) => Num::M3(*SE2::assume(*t).inverse().matrix()),
         _ if m.is_square() => {
             let r = m.nrows();
             check_cost(cube(r), || format!("the inverse of a {r}×{r} matrix"))?;
