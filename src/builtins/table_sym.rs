@@ -328,7 +328,7 @@ fn eval_diff(a: &mut Args) -> Result<Value, Diagnostic> {
     let m = a.mat(0)?;
     Ok(Value::Num {
         kind: a.value(0).kind(),
-        m: nalgebra::DMatrix::zeros(m.nrows(), m.ncols()),
+        m: crate::values::num::Num::zeros(m.nrows(), m.ncols()),
     })
 }
 

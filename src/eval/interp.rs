@@ -389,9 +389,9 @@ impl<'a> Interp<'a> {
         &mut self,
         name: &str,
         kind: &Kind,
-        m: nalgebra::DMatrix<f64>,
+        m: crate::values::num::Num,
         span: Span,
-    ) -> Result<nalgebra::DMatrix<f64>, Diagnostic> {
+    ) -> Result<crate::values::num::Num, Diagnostic> {
         use super::convert::{Group, Membership, membership};
         let group = match kind {
             Kind::SO3 => Group::SO3,

@@ -10,8 +10,6 @@
 //! - a function given one tuple whose length is its arity takes the tuple's
 //!   parts as its arguments: `rot_zyx(euler_zyx(R))`.
 
-use nalgebra::DMatrix;
-
 use super::convert;
 use super::interp::{Interp, Typed};
 use super::value::Value;
@@ -142,7 +140,7 @@ impl Interp<'_> {
                 "I takes the size of what it is added to or multiplied with (I + W, T - I); alone, write eye(3) or eye(4)",
             ));
         };
-        let m = DMatrix::<f64>::identity(n, n);
+        let m = crate::values::num::Num::identity(n);
         let val = self.running().then(|| Value::Num {
             kind: convert::classify(&m),
             m,
@@ -333,7 +331,7 @@ pub(super) fn zero_blocks(rows: &[&Vec<Expr>], vals: &mut [Vec<Value>]) {
     for (i, j, h, w) in fills {
         vals[i][j] = Value::Num {
             kind: Kind::Matrix(Some(h), Some(w)),
-            m: DMatrix::zeros(h, w),
+            m: crate::values::num::Num::zeros(h, w),
         };
     }
 }

@@ -6,8 +6,6 @@
 //! expressions keep their symbols (`[1, 0, …] T_bc`). Types and frames are
 //! not recomputed: they were checked when the expression was built.
 
-use nalgebra::DMatrix;
-
 use super::convert;
 use super::env::{Binding, Env};
 use super::ops;
@@ -210,7 +208,7 @@ fn constant(v: Value) -> Sym {
     to_sym(&v)
 }
 
-fn classify(m: &DMatrix<f64>) -> Kind {
+fn classify(m: &crate::values::num::Num) -> Kind {
     if m.shape() == (1, 1) {
         Kind::Scalar
     } else if m.ncols() == 1 {
