@@ -193,6 +193,17 @@ pub enum Typing {
     },
 }
 
+/// What a builtin is to the algebra of symbols (LANGUAGE.md §7): an
+/// inverse (`inv`, `RotInv`, `TransInv`: `inv(inv(X)) = X`, and
+/// `inv(T_ab) T_ab` cancels), the adjoint map (`Ad(X) Ad(inv(X))` cancels,
+/// §3.3.2), or neither.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Role {
+    Plain,
+    Inverse,
+    Adjoint,
+}
+
 /// One builtin function.
 pub struct Builtin {
     /// The book's name (section 3.6), e.g. `MatrixLog6`.
@@ -218,6 +229,15 @@ impl Builtin {
         match self.typing {
             Typing::Fixed { params, .. } => (params.len(), params.len()),
             Typing::Custom { arity, .. } => arity,
+        }
+    }
+
+    /// Its role in the algebra of symbols, by its book name.
+    pub fn role(&self) -> Role {
+        match self.name {
+            "inv" | "RotInv" | "TransInv" => Role::Inverse,
+            "Adjoint" => Role::Adjoint,
+            _ => Role::Plain,
         }
     }
 
