@@ -7,6 +7,7 @@ use super::env::Mode;
 use super::interp::{Interp, MAX_CALL_DEPTH, Typed};
 use super::value::Value;
 use crate::builtins::{self, Args};
+use crate::check::error::Operand;
 use crate::check::rules::{self, Operands};
 use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind, suggest};
@@ -254,8 +255,8 @@ impl Interp<'_> {
         self.no_arithmetic(&[(&l, lhs.span), (&r, rhs.span)], op_span)?;
         let hints = Hints {
             operands: Operands {
-                lhs: self.text(lhs.span),
-                rhs: self.text(rhs.span),
+                lhs: Operand::new(lhs, self.src),
+                rhs: Operand::new(rhs, self.src),
             },
             exponent: literal_number(rhs).or_else(|| r.val.as_ref().and_then(Value::as_scalar)),
         };
