@@ -337,13 +337,12 @@ impl Interp<'_> {
             typed.push(self.expr(a)?);
         }
         // `rot_zyx(euler_zyx(R))`: one tuple as the arguments.
-        let spans: Vec<Span> = if args.len() == 1 {
+        if args.len() == 1 {
             typed = self.spread(b, typed);
-            vec![args[0].span; typed.len()]
-        } else {
-            args.iter().map(|a| a.span).collect()
-        };
-        let tys: Vec<Ty> = typed.iter().map(|t| t.ty.clone()).collect();
+        }
+        // The types move out of the operands (no clone of their frames).
+        let (tys, vals): (Vec<Ty>, Vec<Option<Value>>) =
+            typed.into_iter().map(|t| (t.ty, t.val)).unzip();
         let ty = match b.check(&tys) {
             Ok(ty) => ty,
             Err(err) => {
@@ -369,22 +368,36 @@ impl Interp<'_> {
         if !self.running() {
             return Ok(Typed { ty, val: None });
         }
-        let vals: Vec<Value> = typed
+        let vals: Vec<Value> = vals
             .into_iter()
-            .map(|t| t.val.unwrap_or_else(|| Value::scalar(f64::NAN)))
+            .map(|v| v.unwrap_or_else(|| Value::scalar(f64::NAN)))
             .collect();
         super::list::numbers_only(b, &vals, span)?;
-        let refs: Vec<&Value> = vals.iter().collect();
-        if let Some(v) = Op::Call(b, name).exact_or_symbolic(&refs, &ty.kind) {
-            let val = Some(v.map_err(|m| self.domain(span, m))?);
-            return Ok(Typed {
-                ty: refine(ty, &val),
-                val,
-            });
+        if vals
+            .iter()
+            .any(|v| matches!(v, Value::Sym(_) | Value::Formula { .. }))
+        {
+            let refs: Vec<&Value> = vals.iter().collect();
+            if let Some(v) = Op::Call(b, name).exact_or_symbolic(&refs, &ty.kind) {
+                let val = Some(v.map_err(|m| self.domain(span, m))?);
+                return Ok(Typed {
+                    ty: refine(ty, &val),
+                    val,
+                });
+            }
         }
-        drop(refs);
+        let spans: Vec<Span> = match args {
+            [one] => vec![one.span; vals.len()],
+            _ => args.iter().map(|a| a.span).collect(),
+        };
+        // Only pictures read the arguments' types and source text.
+        let typed = if b.area == builtins::Area::Pictures {
+            self.typed_args(tys, args)
+        } else {
+            Vec::new()
+        };
         let mut a = Args {
-            typed: self.typed_args(tys, args),
+            typed,
             name: b.name,
             signature: b.signature,
             vals,
