@@ -26,6 +26,7 @@ pub use table_sym::eval_symbolic;
 
 use crate::check::ty::{Frames, Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
+pub use crate::values::symbolic::Role;
 use crate::values::value::Value;
 
 /// The topic a builtin belongs to, for `:help`.
@@ -193,17 +194,6 @@ pub enum Typing {
     },
 }
 
-/// What a builtin is to the algebra of symbols (LANGUAGE.md §7): an
-/// inverse (`inv`, `RotInv`, `TransInv`: `inv(inv(X)) = X`, and
-/// `inv(T_ab) T_ab` cancels), the adjoint map (`Ad(X) Ad(inv(X))` cancels,
-/// §3.3.2), or neither.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Role {
-    Plain,
-    Inverse,
-    Adjoint,
-}
-
 /// One builtin function.
 pub struct Builtin {
     /// The book's name (section 3.6), e.g. `MatrixLog6`.
@@ -232,7 +222,8 @@ impl Builtin {
         }
     }
 
-    /// Its role in the algebra of symbols, by its book name.
+    /// Its role in the algebra of symbols (an inverse, the adjoint map),
+    /// by its book name.
     pub fn role(&self) -> Role {
         match self.name {
             "inv" | "RotInv" | "TransInv" => Role::Inverse,

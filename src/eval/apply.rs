@@ -19,6 +19,7 @@ use std::f64::consts::PI;
 use super::env::FrameMode;
 use super::formula;
 use super::ops::{self, Sel};
+use super::symbolic::Fun;
 use super::value::{Sym, Value};
 use crate::builtins::{Builtin, Role};
 use crate::check::rules::{self, Operands, RuleError};
@@ -207,7 +208,13 @@ impl<'a> Op<'a> {
             Op::Vector => Sym::Vector(args),
             Op::Call(b, name) => match b.role() {
                 Role::Inverse => one(&mut args).inverse(),
-                _ => Sym::Call(name.to_string(), args),
+                role => Sym::Call(
+                    Fun {
+                        name: b.names().find(|n| *n == name).unwrap_or(b.name),
+                        role,
+                    },
+                    args,
+                ),
             },
         }
     }

@@ -133,13 +133,13 @@ pub fn resolve(s: &Sym, env: &Env) -> Sym {
                 None => Sym::Vector(parts),
             }
         }
-        Sym::Call(name, args) => {
+        Sym::Call(fun, args) => {
             let args: Vec<Sym> = args.iter().map(|a| resolve(a, env)).collect();
             let vals: Option<Vec<Value>> = args.iter().map(|a| num(a).cloned()).collect();
-            vals.zip(crate::builtins::lookup(name))
+            vals.zip(crate::builtins::lookup(fun.name))
                 .and_then(|(vals, b)| apply::call(b, vals).ok())
                 .map(constant)
-                .unwrap_or_else(|| Sym::Call(name.clone(), args))
+                .unwrap_or_else(|| Sym::Call(*fun, args))
         }
     }
 }
