@@ -22,7 +22,14 @@ fn strip(t: &Ty) -> Ty {
 pub(super) fn refine(ty: Ty, val: &Option<Value>) -> Ty {
     match val {
         Some(v @ (Value::Num { .. } | Value::Tuple(_) | Value::Formula { .. })) => {
-            crate::check::algebra::with_kind(&ty, v.kind())
+            let kind = v.kind();
+            // Nothing to refine (and no frames to copy) when the numbers
+            // say what the checker said and it knew nothing more.
+            if kind == ty.kind && ty.algebra.is_none() && ty.moves.is_none() {
+                ty
+            } else {
+                crate::check::algebra::with_kind(&ty, kind)
+            }
         }
         _ => ty,
     }
@@ -341,8 +348,12 @@ impl Interp<'_> {
             typed = self.spread(b, typed);
         }
         // The types move out of the operands (no clone of their frames).
-        let (tys, vals): (Vec<Ty>, Vec<Option<Value>>) =
-            typed.into_iter().map(|t| (t.ty, t.val)).unzip();
+        let mut tys = Vec::with_capacity(typed.len());
+        let mut vals = Vec::with_capacity(typed.len());
+        for t in typed {
+            tys.push(t.ty);
+            vals.push(t.val);
+        }
         let ty = match b.check(&tys) {
             Ok(ty) => ty,
             Err(err) => {
