@@ -74,8 +74,9 @@ impl<'a> Op<'a> {
     }
 
     /// The kind and frames of the result from the operands' (LANGUAGE.md
-    /// §6), checked without numbers. Blocks, vectors and calls take their
-    /// rules from [`block_type`], [`Ty::plain`] and the builtin table.
+    /// §6), checked without numbers. A block's rule is [`block_type`]
+    /// (its operands are rows), a call's its table row's
+    /// [`Builtin::check`] and [`rules::settle`].
     pub fn rule(self, args: &[&Ty], hints: Hints) -> Result<Ty, RuleError> {
         match (self, args) {
             (Op::Neg, [t]) => rules::neg(t),
@@ -89,6 +90,7 @@ impl<'a> Op<'a> {
             (Op::Transpose, [t]) => rules::member(t, "T"),
             (Op::Member(name), [t]) => rules::member(t, name),
             (Op::Index(sels), [t]) => index_type(t, sels),
+            (Op::Vector, _) => Ok(Ty::plain(Kind::Vector(Some(args.len())))),
             _ => Ok(Ty::plain(Kind::Unknown)),
         }
     }
@@ -350,6 +352,45 @@ fn index_type(t: &Ty, sels: &[Sel]) -> Result<Ty, RuleError> {
         (_, [Sel::At(_), Sel::All]) => Ty::plain(Kind::Matrix(Some(1), None)),
         _ => Ty::scalar(),
     })
+}
+
+/// The rule of [`Op::Block`], `[ ... ]`: the book's bracket of one vector, a column
+/// vector of one row of numbers, else a block matrix whose frames are the
+/// one pair tag inside it (`[R_sb, p_sb; 0, 0, 0, 1]` is {s}←{b}).
+pub fn block_type<T>(rows: &[Vec<T>], ty_of: impl Fn(&T) -> &Ty) -> Ty {
+    if rows.len() == 1 && rows[0].len() == 1 {
+        let t = ty_of(&rows[0][0]);
+        return match t.kind.vec_len() {
+            Some(3) => Ty::new(Kind::So3, t.frames.clone()),
+            Some(6) => Ty::new(Kind::Se3, t.frames.clone()),
+            _ => t.clone(),
+        };
+    }
+    let all_scalar = rows.iter().flatten().all(|t| ty_of(t).kind == Kind::Scalar);
+    if all_scalar && rows.len() == 1 {
+        return Ty::plain(Kind::Vector(Some(rows[0].len())));
+    }
+    let mut frames = Frames::None;
+    for t in rows.iter().flatten() {
+        if let Frames::Pair(..) = ty_of(t).frames {
+            if frames.is_none() {
+                frames = ty_of(t).frames.clone();
+            } else if frames != ty_of(t).frames {
+                frames = Frames::None;
+                break;
+            }
+        }
+    }
+    // Shape: sum of widths of the first row, sum of heights of the first column.
+    let width: Option<usize> = rows[0]
+        .iter()
+        .map(|t| ty_of(t).kind.shape().and_then(|s| s.1))
+        .sum();
+    let height: Option<usize> = rows
+        .iter()
+        .map(|r| ty_of(&r[0]).kind.shape().and_then(|s| s.0))
+        .sum();
+    Ty::new(Kind::Matrix(height, width), frames)
 }
 
 /// The frame-mode policy (`--frames strict|warn|off`) for a refused

@@ -7,7 +7,7 @@ use super::expr::refine;
 use super::interp::{Interp, Typed};
 use super::ops::Sel;
 use super::value::Value;
-use crate::check::ty::{Frames, Kind, Ty};
+use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
 use crate::syntax::ast::{Expr, IndexArg, Span};
 
@@ -120,7 +120,7 @@ impl Interp<'_> {
             }
             trows.push(tr);
         }
-        let ty = bracket_type(&trows);
+        let ty = apply::block_type(&trows, |t| &t.ty);
         if !self.running() {
             return Ok(Typed { ty, val: None });
         }
@@ -191,43 +191,4 @@ impl Interp<'_> {
             val,
         })
     }
-}
-
-/// The static type of `[ ... ]`: the book's bracket of one vector, a column
-/// vector of one row of numbers, else a block matrix whose frames are the
-/// one pair tag inside it (`[R_sb, p_sb; 0, 0, 0, 1]` is {s}←{b}).
-fn bracket_type(rows: &[Vec<Typed>]) -> Ty {
-    if rows.len() == 1 && rows[0].len() == 1 {
-        let t = &rows[0][0].ty;
-        return match t.kind.vec_len() {
-            Some(3) => Ty::new(Kind::So3, t.frames.clone()),
-            Some(6) => Ty::new(Kind::Se3, t.frames.clone()),
-            _ => t.clone(),
-        };
-    }
-    let all_scalar = rows.iter().flatten().all(|t| t.ty.kind == Kind::Scalar);
-    if all_scalar && rows.len() == 1 {
-        return Ty::plain(Kind::Vector(Some(rows[0].len())));
-    }
-    let mut frames = Frames::None;
-    for t in rows.iter().flatten() {
-        if let Frames::Pair(..) = t.ty.frames {
-            if frames.is_none() {
-                frames = t.ty.frames.clone();
-            } else if frames != t.ty.frames {
-                frames = Frames::None;
-                break;
-            }
-        }
-    }
-    // Shape: sum of widths of the first row, sum of heights of the first column.
-    let width: Option<usize> = rows[0]
-        .iter()
-        .map(|t| t.ty.kind.shape().and_then(|s| s.1))
-        .sum();
-    let height: Option<usize> = rows
-        .iter()
-        .map(|r| r[0].ty.kind.shape().and_then(|s| s.0))
-        .sum();
-    Ty::new(Kind::Matrix(height, width), frames)
 }
