@@ -21,11 +21,11 @@ use super::formula;
 use super::ops::{self, Sel};
 use super::symbolic::Fun;
 use super::value::{Sym, Value};
-use crate::builtins::{Builtin, Role};
+use crate::builtins::{Args, Builtin, Role};
 use crate::check::rules::{self, Operands, RuleError};
 use crate::check::ty::{Frames, Kind, Ty};
 use crate::diagnostics::{Diagnostic, Severity};
-use crate::syntax::ast::BinOp;
+use crate::syntax::ast::{BinOp, Span};
 
 /// One operation of the language: what a node of an expression does with
 /// the values of its children.
@@ -139,7 +139,7 @@ impl<'a> Op<'a> {
                     .collect();
                 Ok(Value::vector(Kind::Vector(Some(xs.len())), &xs))
             }
-            (Op::Call(b, _), _) => call(b, args.iter().map(|v| (*v).clone()).collect()),
+            (Op::Call(b, _), _) => call_nowhere(b, args.iter().map(|v| (*v).clone()).collect()),
             _ => Err("wrong number of operands".into()),
         }
     }
@@ -291,21 +291,44 @@ pub fn block_symbolic(rows: impl Iterator<Item = Vec<Sym>>) -> Sym {
     Sym::Block(rows)
 }
 
-/// A builtin applied to numbers, as its table row computes it (warnings
-/// and spans are the caller's: none when symbols are re-evaluated).
-pub fn call(b: &Builtin, vals: Vec<Value>) -> Result<Value, String> {
-    let mut warnings = Vec::new();
-    let spans = vec![Default::default(); vals.len()];
-    let mut args = crate::builtins::Args {
+/// Where a builtin call stands, for its messages: the arguments' spans
+/// and source texts, the call's span, and the statement's warnings.
+pub struct Site<'w> {
+    pub spans: Vec<Span>,
+    pub call_span: Span,
+    pub typed: Vec<(Ty, String)>,
+    pub warnings: &'w mut Vec<Diagnostic>,
+}
+
+/// A builtin applied to numbers by its table row's function, with its
+/// notes ([`Op::Call`]'s numeric function; the evaluator gives the call's
+/// [`Site`], the substitution of numbers into symbols none).
+pub fn call(b: &Builtin, vals: Vec<Value>, site: Site) -> Result<Value, Diagnostic> {
+    let mut args = Args {
         name: b.name,
         signature: b.signature,
         vals,
-        spans,
-        call_span: Default::default(),
-        warnings: &mut warnings,
-        typed: Vec::new(),
+        spans: site.spans,
+        call_span: site.call_span,
+        warnings: site.warnings,
+        typed: site.typed,
     };
-    (b.eval)(&mut args).map_err(|d| d.message)
+    let v = (b.eval)(&mut args)?;
+    crate::builtins::notes::after_call(&mut args, &v);
+    Ok(v)
+}
+
+/// [`call`] where the call stands nowhere (symbols re-evaluated): errors
+/// as their message, warnings dropped.
+pub fn call_nowhere(b: &Builtin, vals: Vec<Value>) -> Result<Value, String> {
+    let mut warnings = Vec::new();
+    let site = Site {
+        spans: Vec::new(),
+        call_span: Span::default(),
+        typed: Vec::new(),
+        warnings: &mut warnings,
+    };
+    call(b, vals, site).map_err(|d| d.message)
 }
 
 /// A value as a symbolic operand (numbers become constants).

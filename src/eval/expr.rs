@@ -6,7 +6,7 @@ use super::apply::{self, Hints, Op};
 use super::env::Mode;
 use super::interp::{Interp, MAX_CALL_DEPTH, Typed};
 use super::value::Value;
-use crate::builtins::{self, Args};
+use crate::builtins;
 use crate::check::error::Operand;
 use crate::check::rules::{self, Operands};
 use crate::check::ty::{Kind, Ty};
@@ -407,17 +407,13 @@ impl Interp<'_> {
         } else {
             Vec::new()
         };
-        let mut a = Args {
-            typed,
-            name: b.name,
-            signature: b.signature,
-            vals,
+        let site = apply::Site {
             spans,
             call_span: span,
+            typed,
             warnings: &mut self.warnings,
         };
-        let v = (b.eval)(&mut a)?;
-        builtins::notes::after_call(&mut a, &v);
+        let v = apply::call(b, vals, site)?;
         not_finite_group(&v, b.name, span)?;
         let val = Some(v);
         Ok(Typed {

@@ -137,7 +137,7 @@ pub fn resolve(s: &Sym, env: &Env) -> Sym {
             let args: Vec<Sym> = args.iter().map(|a| resolve(a, env)).collect();
             let vals: Option<Vec<Value>> = args.iter().map(|a| num(a).cloned()).collect();
             vals.zip(crate::builtins::lookup(fun.name))
-                .and_then(|(vals, b)| apply::call(b, vals).ok())
+                .and_then(|(vals, b)| apply::call_nowhere(b, vals).ok())
                 .map(constant)
                 .unwrap_or_else(|| Sym::Call(*fun, args))
         }
