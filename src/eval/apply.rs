@@ -19,7 +19,7 @@ use std::f64::consts::PI;
 use super::env::FrameMode;
 use super::formula;
 use super::ops::{self, Sel};
-use super::symbolic::Fun;
+use super::symbolic::{Fun, Part};
 use super::value::{Sym, Value};
 use crate::builtins::{Args, Builtin, Role};
 use crate::check::rules::{self, Operands, RuleError};
@@ -42,7 +42,7 @@ pub enum Op<'a> {
     /// `x.T`, the transpose (`[ω]ᵀ = −[ω]`, `[Ad_T]ᵀ` acts on wrenches).
     Transpose,
     /// `T.R`, `T.p`, `V.w`, `V.v`, `F.m`, `F.f`: a part of a value.
-    Member(&'a str),
+    Member(Part),
     /// `x[i]`, `M[i, j]`, `M[:, j]` (1-based).
     Index(&'a [Sel]),
     /// `[x]`, the book's bracket of a 3- or 6-vector (3.30, 3.70), and
@@ -64,12 +64,13 @@ pub struct Hints<'a> {
 }
 
 impl<'a> Op<'a> {
-    /// The operation of a member name: `.T` is the transpose.
-    pub fn member(name: &'a str) -> Op<'a> {
+    /// The operation of a member name: `.T` is the transpose; None for a
+    /// name that is no member.
+    pub fn member(name: &str) -> Option<Op<'a>> {
         if name == "T" {
-            Op::Transpose
+            Some(Op::Transpose)
         } else {
-            Op::Member(name)
+            Part::of(name).map(Op::Member)
         }
     }
 
@@ -88,7 +89,7 @@ impl<'a> Op<'a> {
                 BinOp::Pow => rules::pow(a, b, hints.exponent),
             },
             (Op::Transpose, [t]) => rules::member(t, "T"),
-            (Op::Member(name), [t]) => rules::member(t, name),
+            (Op::Member(part), [t]) => rules::member(t, part.name()),
             (Op::Index(sels), [t]) => index_type(t, sels),
             (Op::Vector, _) => Ok(Ty::plain(Kind::Vector(Some(args.len())))),
             _ => Ok(Ty::plain(Kind::Unknown)),
@@ -130,7 +131,7 @@ impl<'a> Op<'a> {
             }
             (Op::Inverse, [v]) => ops::inverse(v),
             (Op::Transpose, [v]) => Ok(ops::transpose(v)),
-            (Op::Member(name), [v]) => ops::member(v, name),
+            (Op::Member(part), [v]) => ops::member(v, part.name()),
             (Op::Index(sels), [v]) => ops::index(v, sels),
             (Op::Vector, _) => {
                 let xs: Vec<f64> = args
@@ -158,7 +159,7 @@ impl<'a> Op<'a> {
             }),
             (Op::Arith(op), [a, b]) => Some(formula::binary(op, a, b, kind)),
             (Op::Transpose, [v]) => Some(formula::member(v, "T")),
-            (Op::Member(name), [v]) => Some(formula::member(v, name)),
+            (Op::Member(part), [v]) => Some(formula::member(v, part.name())),
             (Op::Index(sels), [v]) => Some(formula::index(v, sels)),
             (Op::Vector, _) => {
                 let vals: Vec<Value> = args.iter().map(|v| (*v).clone()).collect();
@@ -196,7 +197,7 @@ impl<'a> Op<'a> {
             }
             Op::Inverse => one(&mut args).inverse(),
             Op::Transpose => one(&mut args).transpose(),
-            Op::Member(name) => Sym::Member(Box::new(one(&mut args)), name.to_string()),
+            Op::Member(part) => Sym::Member(Box::new(one(&mut args)), part),
             Op::Index(sels) => Sym::Index(
                 Box::new(one(&mut args)),
                 sels.iter()

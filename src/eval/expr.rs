@@ -122,7 +122,15 @@ impl Interp<'_> {
             ExprKind::Call { func, args } => self.call(&func.name, func.span, args, e.span),
             ExprKind::Member { base, member } => {
                 let t = self.expr(base)?;
-                let op = Op::member(&member.name);
+                let Some(op) = Op::member(&member.name) else {
+                    // No such member: the rule says why.
+                    let err = rules::member(&t.ty, &member.name).err().unwrap_or_default();
+                    self.rule_failure(err, member.span, None, None, None)?;
+                    return Ok(Typed {
+                        ty: unreachable_type(),
+                        val: None,
+                    });
+                };
                 let ty = match op.rule(&[&t.ty], Hints::default()) {
                     Ok(ty) => ty,
                     Err(err) => {

@@ -93,7 +93,7 @@ pub fn resolve(s: &Sym, env: &Env) -> Sym {
         Sym::Inv(x) => unary(Op::Inverse, x, env),
         Sym::Transpose(x) => unary(Op::Transpose, x, env),
         Sym::Neg(x) => unary(Op::Neg, x, env),
-        Sym::Member(x, m) => unary(Op::Member(m), x, env),
+        Sym::Member(x, part) => unary(Op::Member(*part), x, env),
         Sym::Index(x, sels) => {
             let sel: Vec<Sel> = sels.iter().map(|s| s.map_or(Sel::All, Sel::At)).collect();
             unary(Op::Index(&sel), x, env)

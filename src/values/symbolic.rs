@@ -25,6 +25,47 @@ pub struct Fun {
     pub role: Role,
 }
 
+/// A part of a value named by a member (LANGUAGE.md §4): the rotation
+/// `T.R` and position `T.p` of a transform (3.62), the angular and linear
+/// parts `V.w`, `V.v` of a twist (3.70) and `F.m`, `F.f` of a wrench (3.95).
+/// (`.T` is the transpose, an operation of its own.)
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Part {
+    R,
+    P,
+    W,
+    V,
+    M,
+    F,
+}
+
+impl Part {
+    /// The part a member name names; None for `.T` and unknown names.
+    pub fn of(name: &str) -> Option<Part> {
+        Some(match name {
+            "R" => Part::R,
+            "p" => Part::P,
+            "w" => Part::W,
+            "v" => Part::V,
+            "m" => Part::M,
+            "f" => Part::F,
+            _ => return None,
+        })
+    }
+
+    /// The member's name, `R` of `T.R`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Part::R => "R",
+            Part::P => "p",
+            Part::W => "w",
+            Part::V => "v",
+            Part::M => "m",
+            Part::F => "f",
+        }
+    }
+}
+
 /// An expression over symbols, holding constants of type `C`. Products are
 /// kept flat so that `inv(T_ab) * T_ab` cancels to `I`.
 #[derive(Debug, Clone)]
@@ -46,7 +87,7 @@ pub enum Tree<C> {
     /// `[x]`, the book's bracket.
     Bracket(Box<Tree<C>>),
     Transpose(Box<Tree<C>>),
-    Member(Box<Tree<C>>, String),
+    Member(Box<Tree<C>>, Part),
     /// A builtin applied to symbolic arguments, `Ad(T_ab)`.
     Call(Fun, Vec<Tree<C>>),
     /// A matrix literal with a symbol among its entries, `[1, theta; 0, 1]`,
@@ -259,8 +300,8 @@ impl<C: Clone + PartialEq> fmt::Display for Tree<C> {
                 _ => write!(f, "({x}).T"),
             },
             Tree::Member(x, m) => match **x {
-                Tree::Name(_) | Tree::Call(..) => write!(f, "{x}.{m}"),
-                _ => write!(f, "({x}).{m}"),
+                Tree::Name(_) | Tree::Call(..) => write!(f, "{x}.{}", m.name()),
+                _ => write!(f, "({x}).{}", m.name()),
             },
             Tree::Block(rows) => {
                 let rows: Vec<String> = rows
