@@ -170,4 +170,30 @@ mod tests {
         );
         assert_eq!(Operand::text("T_ab").inverse_text(), "inv(T_ab)");
     }
+
+    #[test]
+    fn an_operand_says_what_it_is_from_the_syntax_tree() {
+        let form = |src: &str| {
+            let stmt = crate::syntax::parse_program(src).remove(0).expect("parses");
+            let crate::syntax::ast::StmtKind::Expr(e) = stmt.kind else {
+                panic!("not an expression: {src}")
+            };
+            let said = match Operand::new(&e, src).form() {
+                Form::Inverse(x) => format!("inverse of {}", x.text),
+                Form::Adjoint(x) => format!("adjoint of {}", x.text),
+                Form::Transposed(x) => format!("transpose of {}", x.text),
+                Form::Name(n) => format!("name {n}"),
+                Form::Other => "other".to_string(),
+            };
+            said
+        };
+        assert_eq!(form("Ad(inv(T_ab))"), "adjoint of inv(T_ab)");
+        assert_eq!(form("Adjoint(T_ab)"), "adjoint of T_ab");
+        assert_eq!(form("T_ab.T"), "transpose of T_ab");
+        assert_eq!(form("T_abᵀ"), "transpose of T_ab");
+        assert_eq!(form("transpose(R)"), "transpose of R");
+        assert_eq!(form("T_sb"), "name T_sb");
+        assert_eq!(form("inverse(T_ab)"), "other");
+        assert_eq!(form("T_ab * T_bc"), "other");
+    }
 }
