@@ -178,14 +178,13 @@ mod tests {
             let crate::syntax::ast::StmtKind::Expr(e) = stmt.kind else {
                 panic!("not an expression: {src}")
             };
-            let said = match Operand::new(&e, src).form() {
+            match Operand::new(&e, src).form() {
                 Form::Inverse(x) => format!("inverse of {}", x.text),
                 Form::Adjoint(x) => format!("adjoint of {}", x.text),
                 Form::Transposed(x) => format!("transpose of {}", x.text),
                 Form::Name(n) => format!("name {n}"),
                 Form::Other => "other".to_string(),
-            };
-            said
+            }
         };
         assert_eq!(form("Ad(inv(T_ab))"), "adjoint of inv(T_ab)");
         assert_eq!(form("Adjoint(T_ab)"), "adjoint of T_ab");
