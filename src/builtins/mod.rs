@@ -26,6 +26,7 @@ pub use table_sym::eval_symbolic;
 
 use crate::check::ty::{Frames, Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
+pub use crate::values::symbolic::Role;
 use crate::values::value::Value;
 
 /// The topic a builtin belongs to, for `:help`.
@@ -218,6 +219,16 @@ impl Builtin {
         match self.typing {
             Typing::Fixed { params, .. } => (params.len(), params.len()),
             Typing::Custom { arity, .. } => arity,
+        }
+    }
+
+    /// Its role in the algebra of symbols (an inverse, the adjoint map),
+    /// by its book name.
+    pub fn role(&self) -> Role {
+        match self.name {
+            "inv" | "RotInv" | "TransInv" => Role::Inverse,
+            "Adjoint" => Role::Adjoint,
+            _ => Role::Plain,
         }
     }
 

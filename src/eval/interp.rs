@@ -124,18 +124,8 @@ impl<'a> Interp<'a> {
         if let Some(h) = e.help {
             d = d.with_help(h);
         }
-        if kind == ErrorKind::Frame {
-            match self.frames {
-                FrameMode::Strict => {}
-                FrameMode::Warn => {
-                    d.severity = crate::diagnostics::Severity::Warning;
-                    self.warnings.push(d);
-                    return Ok(());
-                }
-                FrameMode::Off => return Ok(()),
-            }
-        }
-        Err(d)
+        let frame = kind == ErrorKind::Frame;
+        super::apply::frame_refusal(self.frames, frame, d, &mut self.warnings)
     }
 
     /// Binds a checked value to `name` (statements call this only after
@@ -367,9 +357,6 @@ impl<'a> Interp<'a> {
 
     /// A warning from a binding rule (the name renames a moved frame).
     fn rule_warning(&mut self, e: RuleError, value_span: Span, name_span: Span) {
-        if self.frames == FrameMode::Off {
-            return;
-        }
         let kind = e.kind.unwrap_or(ErrorKind::Frame);
         let mut d = Diagnostic::warning(kind, name_span, e.message);
         if !e.rhs.is_empty() {
@@ -378,7 +365,7 @@ impl<'a> Interp<'a> {
         if let Some(h) = e.help {
             d = d.with_help(h);
         }
-        self.warnings.push(d);
+        super::apply::frame_warning(self.frames, d, &mut self.warnings);
     }
 
     /// `R_sb = M`, `T_ab = M`: the name asserts the group (LANGUAGE.md §5).
