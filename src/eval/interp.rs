@@ -131,14 +131,7 @@ impl<'a> Interp<'a> {
     /// Binds a checked value to `name` (statements call this only after
     /// they have succeeded).
     fn bind_value(&mut self, name: &str, t: &Typed) {
-        self.env.set(
-            name,
-            Binding {
-                ty: t.ty.clone(),
-                val: t.val.clone(),
-                symbolic: false,
-            },
-        );
+        self.env.set_value(name, &t.ty, &t.val);
     }
 
     /// Runs one statement. On error nothing is bound.
