@@ -84,6 +84,8 @@ fn fast_path_agrees_with_pest() {
         "ans / deg",
         "I + sin θ [w] + (1 − cos θ)[w]² − −x + [1 −2 3] − [1 − x]",
         "T_01 * T_12 * T_s1",
+        // Plain numbers and names as list elements.
+        "v = g(x', 2.5e3, 7, T_ab, 1.)[1] + [a, b, 1; 2, c', 3] + h(0.1,2)",
     ] {
         let (f, o) = agree(src);
         assert!(f == o && o > 0, "{src:?} takes the slow path");
