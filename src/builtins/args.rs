@@ -4,6 +4,8 @@
 
 use nalgebra::{DMatrix, DVector};
 
+use crate::values::num::Num;
+
 use crate::check::ty::Kind;
 use crate::diagnostics::{Diagnostic, ErrorKind};
 use crate::lie::{Mat2, Mat3, Mat4, Vec3, Vec4, Vec6, so3};
@@ -109,14 +111,14 @@ impl Args<'_> {
     }
 
     /// Argument `i` as a matrix of any shape.
-    pub fn mat(&self, i: usize) -> Result<&DMatrix<f64>, Diagnostic> {
+    pub fn mat(&self, i: usize) -> Result<&Num, Diagnostic> {
         self.vals[i]
             .as_matrix()
             .ok_or_else(|| self.wrong(i, "matrix"))
     }
 
     /// Argument `i` as a square matrix.
-    pub fn square(&self, i: usize) -> Result<&DMatrix<f64>, Diagnostic> {
+    pub fn square(&self, i: usize) -> Result<&Num, Diagnostic> {
         let m = self.mat(i)?;
         if !m.is_square() {
             return Err(self.error(
@@ -139,7 +141,7 @@ impl Args<'_> {
         if m.ncols() != 1 {
             return Err(self.wrong(i, "vector"));
         }
-        Ok(m.column(0).into_owned())
+        Ok(DVector::from_column_slice(m.as_slice()))
     }
 
     fn vec_n(&self, i: usize, n: usize) -> Result<DVector<f64>, Diagnostic> {
@@ -152,52 +154,80 @@ impl Args<'_> {
         Ok(v)
     }
 
+    /// Argument `i` as a 3-vector (ω, v, p, ω̂θ).
     pub fn vec3(&self, i: usize) -> Result<Vec3, Diagnostic> {
-        Ok(Vec3::from_iterator(self.vec_n(i, 3)?.iter().copied()))
+        match self.vals[i].as_matrix() {
+            Some(Num::V3(v)) => Ok(*v),
+            _ => Ok(Vec3::from_iterator(self.vec_n(i, 3)?.iter().copied())),
+        }
     }
+    /// Argument `i` as a 4-vector (a quaternion).
     pub fn vec4(&self, i: usize) -> Result<Vec4, Diagnostic> {
-        Ok(Vec4::from_iterator(self.vec_n(i, 4)?.iter().copied()))
+        match self.vals[i].as_matrix() {
+            Some(Num::V4(v)) => Ok(*v),
+            _ => Ok(Vec4::from_iterator(self.vec_n(i, 4)?.iter().copied())),
+        }
     }
+    /// Argument `i` as a 6-vector (a twist, screw axis or wrench).
     pub fn vec6(&self, i: usize) -> Result<Vec6, Diagnostic> {
-        Ok(Vec6::from_iterator(self.vec_n(i, 6)?.iter().copied()))
+        match self.vals[i].as_matrix() {
+            Some(Num::V6(v)) => Ok(*v),
+            _ => Ok(Vec6::from_iterator(self.vec_n(i, 6)?.iter().copied())),
+        }
     }
 
     /// Argument `i` read as an element of `group`: projected with a warning
     /// when close, a domain error with the distance when not.
-    pub fn group(&mut self, i: usize, group: Group) -> Result<DMatrix<f64>, Diagnostic> {
+    pub fn group(&mut self, i: usize, group: Group) -> Result<Num, Diagnostic> {
         let n = group.size();
-        let m = self
-            .mat(i)
-            .map_err(|_| self.wrong(i, group.name()))?
-            .clone();
+        let m = self.mat(i).map_err(|_| self.wrong(i, group.name()))?;
         if m.nrows() != n || m.ncols() != n {
             return Err(self.wrong(i, group.name()));
         }
-        if self.vals[i].kind() == group.kind() {
-            return Ok(m);
+        if matches!(&self.vals[i], Value::Num { kind, .. } if *kind == group.kind()) {
+            return Ok(m.clone());
         }
         let span = self.span(i);
+        let m = m.clone();
         read_group(&m, group, span, self.warnings)
     }
 
+    /// Argument `i` as a rotation R ∈ SO(3) (§3.2.1), read per [`read_group`].
     pub fn so3(&mut self, i: usize) -> Result<Mat3, Diagnostic> {
-        Ok(Mat3::from_iterator(
-            self.group(i, Group::SO3)?.iter().copied(),
+        if let Value::Num {
+            kind: Kind::SO3,
+            m: Num::M3(r),
+        } = &self.vals[i]
+        {
+            return Ok(*r);
+        }
+        Ok(Mat3::from_column_slice(
+            self.group(i, Group::SO3)?.as_slice(),
         ))
     }
+    /// Argument `i` as a transform T ∈ SE(3) (§3.3.1), read per [`read_group`].
     pub fn se3(&mut self, i: usize) -> Result<Mat4, Diagnostic> {
-        Ok(Mat4::from_iterator(
-            self.group(i, Group::SE3)?.iter().copied(),
+        if let Value::Num {
+            kind: Kind::SE3,
+            m: Num::M4(t),
+        } = &self.vals[i]
+        {
+            return Ok(*t);
+        }
+        Ok(Mat4::from_column_slice(
+            self.group(i, Group::SE3)?.as_slice(),
         ))
     }
+    /// Argument `i` as a planar rotation ∈ SO(2), read per [`read_group`].
     pub fn so2(&mut self, i: usize) -> Result<Mat2, Diagnostic> {
-        Ok(Mat2::from_iterator(
-            self.group(i, Group::SO2)?.iter().copied(),
+        Ok(Mat2::from_column_slice(
+            self.group(i, Group::SO2)?.as_slice(),
         ))
     }
+    /// Argument `i` as a planar transform ∈ SE(2), read per [`read_group`].
     pub fn se2(&mut self, i: usize) -> Result<Mat3, Diagnostic> {
-        Ok(Mat3::from_iterator(
-            self.group(i, Group::SE2)?.iter().copied(),
+        Ok(Mat3::from_column_slice(
+            self.group(i, Group::SE2)?.as_slice(),
         ))
     }
 
@@ -207,7 +237,7 @@ impl Args<'_> {
         match m.shape() {
             (3, 1) => self.vec3(i),
             (3, 3) => {
-                let m3 = Mat3::from_iterator(m.iter().copied());
+                let m3 = Mat3::from_column_slice(m.as_slice());
                 self.check_skew(i, (m3 + m3.transpose()).abs().max(), m3.abs().max())?;
                 Ok(so3::vee(&m3))
             }
@@ -221,7 +251,7 @@ impl Args<'_> {
         match m.shape() {
             (6, 1) => self.vec6(i),
             (4, 4) => {
-                let m4 = Mat4::from_iterator(m.iter().copied());
+                let m4 = Mat4::from_column_slice(m.as_slice());
                 let w = m4.fixed_view::<3, 3>(0, 0).into_owned();
                 let asym = (w + w.transpose()).abs().max().max(m4.row(3).abs().max());
                 self.check_skew(i, asym, m4.abs().max())?;
@@ -253,11 +283,11 @@ impl Args<'_> {
 
 /// Reads `m` (of the right shape) as an element of `group` per LANGUAGE.md §5.
 pub fn read_group(
-    m: &DMatrix<f64>,
+    m: &Num,
     group: Group,
     span: Span,
     warnings: &mut Vec<Diagnostic>,
-) -> Result<DMatrix<f64>, Diagnostic> {
+) -> Result<Num, Diagnostic> {
     match membership(m, group) {
         Membership::Exact(x) => Ok(x),
         Membership::Projected(p, d) => {
@@ -301,12 +331,13 @@ pub fn read_group(
 }
 
 /// ‖RᵀR − I‖_F of the rotation block.
-fn orthogonality_gap(m: &DMatrix<f64>, group: Group) -> f64 {
+fn orthogonality_gap(m: &Num, group: Group) -> f64 {
     let k = if matches!(group, Group::SO2 | Group::SE2) {
         2
     } else {
         3
     };
+    let m = m.to_dmatrix();
     let r = m.view((0, 0), (k, k));
     (r.transpose() * r - DMatrix::<f64>::identity(k, k)).norm()
 }

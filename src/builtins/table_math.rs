@@ -10,6 +10,7 @@ use crate::check::ty::{Frames, Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
 use crate::lie::{self, Mat3, Mat4, Vec3, matexp, se2, se3, so2, so3};
 use crate::values::convert::{self, Group};
+use crate::values::num::Num;
 use crate::values::ops;
 use crate::values::value::Value;
 
@@ -43,7 +44,7 @@ fn exp_rule(args: &[Ty]) -> Result<Ty, ArgError> {
         },
     };
     let frames = match &t.frames {
-        Frames::One(a) | Frames::Disp(a) => Frames::Disp(a.clone()),
+        Frames::One(a) | Frames::Disp(a) => Frames::Disp(*a),
         _ => Frames::None,
     };
     Ok(Ty::new(kind, frames))
@@ -62,13 +63,12 @@ fn eval_exp(a: &mut Args) -> Result<Value, Diagnostic> {
         ));
     }
     // The common case, [S]θ ∈ se(3) (3.88), on the stack.
-    if m.shape() == (4, 4) {
-        let f = Mat4::from_iterator(m.iter().copied());
-        if is_se3_fixed(&f) {
-            return Ok(Value::num(Kind::SE3, &se3::exp(&se3::vee(&f))));
-        }
+    if let Some(f) = m.as_m4()
+        && is_se3_fixed(f)
+    {
+        return Ok(Value::of(Kind::SE3, se3::exp(&se3::vee(f))));
     }
-    let m = m.clone();
+    let m = m.to_dmatrix().into_owned();
     let kind = a.value(0).kind();
     let skew3 =
         |m: &DMatrix<f64>| (m + m.transpose()).abs().max() <= 1e-12 * m.abs().max().max(1.0);
@@ -105,6 +105,7 @@ fn eval_exp(a: &mut Args) -> Result<Value, Diagnostic> {
                     "exp of this matrix overflows (an entry of the result exceeds 1.8e308)",
                 ));
             };
+            let e = Num::from_dmatrix(e);
             Ok(Value::Num {
                 kind: convert::classify(&e),
                 m: e,
@@ -154,7 +155,7 @@ fn log_rule(args: &[Ty]) -> Result<Ty, ArgError> {
         }
     };
     let frames = match t.frames.outer() {
-        Some(a) if t.kind != Kind::Scalar => Frames::One(a.clone()),
+        Some(a) if t.kind != Kind::Scalar => Frames::One(*a),
         _ => Frames::None,
     };
     Ok(Ty::new(kind, frames))
@@ -249,7 +250,7 @@ fn vee_rule(args: &[Ty]) -> Result<Ty, ArgError> {
             ));
         }
     };
-    Ok(Ty::new(kind, args[0].frames.clone()))
+    Ok(Ty::new(kind, args[0].frames))
 }
 
 fn untag_rule(args: &[Ty]) -> Result<Ty, ArgError> {
@@ -379,7 +380,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                     format!("the determinant of a {n}×{n} matrix")
                 })
                 .map_err(|e| a.domain(e))?;
-                Ok(Value::scalar(m.determinant()))
+                Ok(Value::scalar(m.to_dmatrix().determinant()))
             },
         },
         Builtin {
@@ -395,7 +396,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: scalar,
                 frames: FrameRule::None,
             },
-            eval: |a| Ok(Value::scalar(a.square(0)?.trace())),
+            eval: |a| Ok(Value::scalar(a.square(0)?.to_dmatrix().trace())),
         },
         Builtin {
             name: "norm",
@@ -410,7 +411,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: scalar,
                 frames: FrameRule::None,
             },
-            eval: |a| Ok(Value::scalar(a.mat(0)?.norm())),
+            eval: |a| Ok(Value::scalar(a.mat(0)?.to_dmatrix().norm())),
         },
         Builtin {
             name: "cross",
@@ -484,7 +485,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
             },
             eval: |a| {
                 let (n, _) = sized(a)?;
-                let m = DMatrix::identity(n, n);
+                let m = Num::identity(n);
                 Ok(Value::Num {
                     kind: convert::classify(&m),
                     m,
@@ -505,7 +506,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
             },
             eval: |a| {
                 let (r, c) = sized(a)?;
-                let m = DMatrix::zeros(r, c);
+                let m = Num::zeros(r, c);
                 Ok(Value::Num {
                     kind: convert::classify(&m),
                     m,
@@ -552,7 +553,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 match lie::normalize(&v) {
                     Some(u) => Ok(Value::Num {
                         kind: a.value(0).kind(),
-                        m: DMatrix::from_column_slice(u.len(), 1, u.as_slice()),
+                        m: Num::vector(u.as_slice()),
                     }),
                     None => Err(a.error(
                         0,

@@ -26,12 +26,12 @@ fn entrywise_rule(args: &[Ty]) -> Result<Ty, ArgError> {
         Kind::Twist | Kind::Screw | Kind::Wrench => Kind::Vector(Some(6)),
         other => scaled_kind(other),
     };
-    Ok(Ty::new(kind, args[0].frames.clone()))
+    Ok(Ty::new(kind, args[0].frames))
 }
 
 /// Every entry of argument 0 times `factor`.
 fn scale(a: &mut Args, factor: f64) -> Result<Value, Diagnostic> {
-    let m = a.mat(0)?.clone() * factor;
+    let m = a.mat(0)?.map(|x| x * factor);
     let kind = match a.value(0).kind() {
         Kind::Twist | Kind::Screw | Kind::Wrench => Kind::Vector(Some(6)),
         k => scaled_kind(&k),

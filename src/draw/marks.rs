@@ -139,6 +139,7 @@ impl Builder {
             }
             Value::Tuple(items) => self.items(items, label, style),
             Value::Num { kind, m } => {
+                let m = &*m.to_dmatrix();
                 if !finite(m) {
                     return Err(format!(
                         "cannot draw {}: it has inf or NaN entries",
@@ -291,6 +292,7 @@ fn is_planar_vec(v: &Value) -> bool {
 fn point(v: &Value) -> Result<P3, String> {
     match v {
         Value::Num { m, .. } if m.ncols() == 1 && (m.nrows() == 2 || m.nrows() == 3) => {
+            let m = &*m.to_dmatrix();
             if finite(m) {
                 Ok(point_of(m))
             } else {

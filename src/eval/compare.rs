@@ -8,7 +8,7 @@
 //! symbolic sides it asks [`symbolic_equal`] (trees over `given` matrices)
 //! or the canonical forms of [`super::formula::equal`] (symbolic scalars).
 
-use nalgebra::DMatrix;
+use crate::values::num::Num;
 
 use super::interp::{Interp, Typed};
 use super::substitute::to_sym;
@@ -97,7 +97,7 @@ pub fn symbolic_equal(a: &Sym, b: &Sym, _op: CmpOp) -> Option<bool> {
 
 /// Entrywise within [`APPROX_TOL`] relative to the larger side (absolute
 /// near zero); infinite entries must agree exactly, NaN never does.
-fn approx(x: &DMatrix<f64>, y: &DMatrix<f64>) -> bool {
+fn approx(x: &Num, y: &Num) -> bool {
     let scale = x
         .iter()
         .chain(y.iter())
@@ -362,7 +362,7 @@ mod tests {
     fn largest_difference_says_where() {
         let m = |xs: &[f64]| Value::Num {
             kind: Kind::Matrix(Some(2), Some(2)),
-            m: DMatrix::from_row_slice(2, 2, xs),
+            m: nalgebra::DMatrix::from_row_slice(2, 2, xs).into(),
         };
         let (d, i, j) = largest_difference(&m(&[1.0, 2.0, 3.0, 4.0]), &m(&[1.0, 2.0, 3.5, 4.1]))
             .expect("same shape");

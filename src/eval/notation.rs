@@ -10,8 +10,6 @@
 //! - a function given one tuple whose length is its arity takes the tuple's
 //!   parts as its arguments: `rot_zyx(euler_zyx(R))`.
 
-use nalgebra::DMatrix;
-
 use super::convert;
 use super::interp::{Interp, Typed};
 use super::value::Value;
@@ -56,10 +54,13 @@ impl Interp<'_> {
         lhs: &Expr,
         rhs: &Expr,
     ) -> Result<(Typed, Typed), Diagnostic> {
-        let free = |e: &Expr| mentions_identity(e);
+        let (in_lhs, in_rhs) = (mentions_identity(lhs), mentions_identity(rhs));
         // Sums, products and any comparison (`R Rᵀ == I`); not `^` or `/`.
-        let sized = !matches!(op, BinOp::Pow | BinOp::Div) && self.env.get("I").is_none();
-        if sized && free(lhs) && !free(rhs) {
+        // (The environment is asked about `I` only when an operand has one.)
+        let sized = in_lhs != in_rhs
+            && !matches!(op, BinOp::Pow | BinOp::Div)
+            && self.env.get("I").is_none();
+        if sized && in_lhs {
             let r = self.expr(rhs)?;
             let n = match (op, dims(&r)) {
                 (BinOp::Mul, Some((rows, _))) => Some(rows),
@@ -70,7 +71,7 @@ impl Interp<'_> {
             return Ok((l, r));
         }
         let l = self.expr(lhs)?;
-        if sized && free(rhs) && !free(lhs) {
+        if sized && in_rhs {
             let n = match (op, dims(&l)) {
                 (BinOp::Mul, Some((_, cols))) => Some(cols),
                 (_, Some((rows, cols))) if rows == cols => Some(rows),
@@ -142,7 +143,7 @@ impl Interp<'_> {
                 "I takes the size of what it is added to or multiplied with (I + W, T - I); alone, write eye(3) or eye(4)",
             ));
         };
-        let m = DMatrix::<f64>::identity(n, n);
+        let m = crate::values::num::Num::identity(n);
         let val = self.running().then(|| Value::Num {
             kind: convert::classify(&m),
             m,
@@ -333,7 +334,7 @@ pub(super) fn zero_blocks(rows: &[&Vec<Expr>], vals: &mut [Vec<Value>]) {
     for (i, j, h, w) in fills {
         vals[i][j] = Value::Num {
             kind: Kind::Matrix(Some(h), Some(w)),
-            m: DMatrix::zeros(h, w),
+            m: crate::values::num::Num::zeros(h, w),
         };
     }
 }

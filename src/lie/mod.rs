@@ -14,9 +14,12 @@
 //! - [`so2`], [`se2`]: the planar groups (Definitions 3.2, 3.5, Example 3.4);
 //! - [`repr`]: Euler angles, roll-pitch-yaw, quaternions, Cayley parameters;
 //! - [`project`]: projection onto and distance to the groups (§3.6 software);
-//! - [`matexp`]: the exponential of a general square matrix (§3.2.3.1).
+//! - [`matexp`]: the exponential of a general square matrix (§3.2.3.1);
+//! - [`group`]: the groups as types ([`SO3`], [`SE3`], [`SO2`], [`SE2`])
+//!   with the [`LieGroup`] operations, over the functions above.
 #![deny(missing_docs)]
 
+pub mod group;
 pub mod matexp;
 pub mod project;
 pub mod repr;
@@ -24,6 +27,8 @@ pub mod se2;
 pub mod se3;
 pub mod so2;
 pub mod so3;
+
+pub use group::{LieGroup, SE2, SE3, SO2, SO3};
 
 /// A 3-vector (angular velocity, position, exponential coordinates).
 pub type Vec3 = nalgebra::Vector3<f64>;

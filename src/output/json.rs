@@ -32,8 +32,8 @@ pub fn value(v: &Value) -> J {
         Value::Num { m, .. } if m.len() == 1 => number(m[0]),
         Value::Num { m, .. } if m.ncols() == 1 => J::Array(m.iter().map(|x| number(*x)).collect()),
         Value::Num { m, .. } => J::Array(
-            m.row_iter()
-                .map(|r| J::Array(r.iter().map(|x| number(*x)).collect()))
+            (0..m.nrows())
+                .map(|i| J::Array(m.row(i).map(number).collect()))
                 .collect(),
         ),
         Value::Bool(b) => json!(b),

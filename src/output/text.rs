@@ -6,6 +6,8 @@ use crate::check::ty::{Kind, Ty};
 use crate::eval::interp::Outcome;
 use crate::values::format::write_inline;
 pub use crate::values::format::{Style, inline};
+use crate::values::num::Num;
+use crate::values::number::Ascii;
 use crate::values::value::Value;
 use std::fmt::Write;
 
@@ -63,7 +65,7 @@ fn list_block(prefix: &str, ty: &Ty, vs: &[Value], style: Style) -> String {
 
 /// A matrix in aligned columns, decimal points lined up, one row per line;
 /// `indent` is the column where the `[` stands.
-pub fn matrix_block(m: &nalgebra::DMatrix<f64>, style: impl Into<Style>, indent: usize) -> String {
+pub fn matrix_block(m: &Num, style: impl Into<Style>, indent: usize) -> String {
     let mut out = String::new();
     write_matrix_block(&mut out, m, style.into(), indent);
     out
@@ -87,6 +89,8 @@ struct Scratch {
     cells: Vec<(usize, usize, usize, usize)>,
     int_w: Vec<usize>,
     frac_w: Vec<usize>,
+    /// The block [`align_ascii`] assembles.
+    bytes: Vec<u8>,
 }
 
 thread_local! {
@@ -95,26 +99,100 @@ thread_local! {
 
 /// [`matrix_block`], appended to `out`: the cells are written once into
 /// one buffer (reused from call to call), then aligned.
-fn write_matrix_block(out: &mut String, m: &nalgebra::DMatrix<f64>, style: Style, indent: usize) {
+fn write_matrix_block(out: &mut String, m: &Num, style: Style, indent: usize) {
+    // Decimals (not `:exact`'s closed forms such as √3/2) are ASCII, so
+    // widths are byte counts and the block is built as bytes.
+    let ascii = !style.exact || style.sym == crate::sym::print::Mode::Latex;
     SCRATCH.with(|s| match s.try_borrow_mut() {
+        Ok(mut s) if ascii => align_ascii(out, m, style.digits, indent, &mut s),
         Ok(mut s) => align(out, m, style, indent, &mut s),
         Err(_) => align(out, m, style, indent, &mut Scratch::default()),
     });
 }
 
-fn align(
+/// [`align`] for decimals and at most 36 cells (up to 6×6): each cell
+/// written once on the stack by [`Ascii::fixed`], the block assembled as
+/// bytes and appended in one copy. The same text as [`align`], which
+/// takes over when a cell is not in [`Ascii::fixed`]'s common case.
+fn align_ascii(out: &mut String, m: &Num, digits: usize, indent: usize, s: &mut Scratch) {
+    // The cells live on the stack, in as small an array as fits.
+    match m.len() {
+        ..=16 => align_cells::<16>(out, m, digits, indent, s),
+        17..=36 => align_cells::<36>(out, m, digits, indent, s),
+        _ => align(out, m, digits.into(), indent, s),
+    }
+}
+
+/// [`align_ascii`] with room for `N` cells.
+fn align_cells<const N: usize>(
     out: &mut String,
-    m: &nalgebra::DMatrix<f64>,
-    style: Style,
+    m: &Num,
+    digits: usize,
     indent: usize,
     s: &mut Scratch,
 ) {
+    let (nrows, ncols) = m.shape();
+    let xs = m.as_slice();
+    if xs.len() > N || ncols > 6 {
+        return align(out, m, digits.into(), indent, s);
+    }
+    let mut cells = [Ascii::default(); N];
+    let (mut int_w, mut frac_w) = ([0usize; 6], [0usize; 6]);
+    for j in 0..ncols {
+        for r in 0..nrows {
+            let cell = &mut cells[r * ncols + j];
+            if !cell.fixed(xs[j * nrows + r], digits) {
+                return align(out, m, digits.into(), indent, s);
+            }
+            int_w[j] = int_w[j].max(cell.int_width());
+            frac_w[j] = frac_w[j].max(cell.frac_width());
+        }
+    }
+    // Each row is laid out in a buffer of spaces on the stack: only the
+    // cells and commas are written, the padding is already there.
+    const ROW: usize = 512;
+    let width: usize = int_w.iter().chain(&frac_w).sum::<usize>() + 2 * ncols;
+    if indent + 2 + width > ROW {
+        return align(out, m, digits.into(), indent, s);
+    }
+    let block = &mut s.bytes;
+    block.clear();
+    block.reserve(nrows * (indent + 2 + width) + 1);
+    for r in 0..nrows {
+        let mut row = [b' '; ROW];
+        let mut k = if r == 0 {
+            row[0] = b'[';
+            1
+        } else {
+            row[0] = b'\n';
+            indent + 2
+        };
+        for j in 0..ncols {
+            let cell = &cells[r * ncols + j];
+            let text = cell.bytes();
+            k += int_w[j] - cell.int_width();
+            row[k..k + text.len()].copy_from_slice(text);
+            k += text.len();
+            if j + 1 < ncols {
+                row[k] = b',';
+                k += frac_w[j] - cell.frac_width() + 2;
+            }
+        }
+        block.extend_from_slice(&row[..k]);
+    }
+    block.push(b']');
+    // Every byte is ASCII: digits, '.', '-', spaces, brackets.
+    out.push_str(std::str::from_utf8(block).unwrap_or_default());
+}
+
+fn align(out: &mut String, m: &Num, style: Style, indent: usize, s: &mut Scratch) {
     let (nrows, ncols) = m.shape();
     let Scratch {
         buf,
         cells,
         int_w,
         frac_w,
+        ..
     } = s;
     buf.clear();
     cells.clear();

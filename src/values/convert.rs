@@ -5,8 +5,9 @@
 
 use nalgebra::DMatrix;
 
+use super::num::Num;
 use crate::check::ty::Kind;
-use crate::lie::{Mat2, Mat3, Mat4, project};
+use crate::lie::{LieGroup, Mat2, Mat3, SE2, SE3, SO2, SO3};
 
 /// Within this distance a matrix is taken as a group element as it is.
 pub const ACCEPT_TOL: f64 = 1e-9;
@@ -59,36 +60,42 @@ impl Group {
 #[derive(Debug, Clone, PartialEq)]
 pub enum Membership {
     /// Within [`ACCEPT_TOL`].
-    Exact(DMatrix<f64>),
+    Exact(Num),
     /// Within [`PROJECT_TOL`]: the projection and the distance.
-    Projected(DMatrix<f64>, f64),
+    Projected(Num, f64),
     /// Too far: the distance (and the determinant of the rotation block).
     Outside { distance: f64, det: f64 },
 }
 
+fn mat2(m: &Num) -> Mat2 {
+    Mat2::from_column_slice(m.as_slice())
+}
+
 /// The distance of `m` from `group` (DistanceToSO3/SE3, §3.6), or None if
 /// the shape is wrong or an entry is not finite.
-pub fn distance(m: &DMatrix<f64>, group: Group) -> Option<f64> {
+pub fn distance(m: &Num, group: Group) -> Option<f64> {
     let n = group.size();
     if m.nrows() != n || m.ncols() != n || m.iter().any(|x| !x.is_finite()) {
         return None;
     }
-    Some(match group {
-        Group::SO3 => project::distance_to_so3(&Mat3::from_iterator(m.iter().copied())),
-        Group::SE3 => project::distance_to_se3(&Mat4::from_iterator(m.iter().copied())),
-        Group::SO2 => project::distance_to_so2(&Mat2::from_iterator(m.iter().copied())),
-        Group::SE2 => project::distance_to_se2(&Mat3::from_iterator(m.iter().copied())),
+    Some(match (group, m) {
+        (Group::SO3, Num::M3(r)) => SO3::distance(r),
+        (Group::SE3, Num::M4(t)) => SE3::distance(t),
+        (Group::SO2, _) => SO2::distance(&mat2(m)),
+        (Group::SE2, Num::M3(t)) => SE2::distance(t),
+        _ => return None,
     })
 }
 
-/// The projection of `m` onto `group` (ProjectToSO3/SE3, §3.6).
-pub fn project(m: &DMatrix<f64>, group: Group) -> DMatrix<f64> {
-    let it = m.iter().copied();
-    match group {
-        Group::SO3 => dm(&project::project_to_so3(&Mat3::from_iterator(it))),
-        Group::SE3 => dm(&project::project_to_se3(&Mat4::from_iterator(it))),
-        Group::SO2 => dm(&project::project_to_so2(&Mat2::from_iterator(it))),
-        Group::SE2 => dm(&project::project_to_se2(&Mat3::from_iterator(it))),
+/// The projection of `m` onto `group` (ProjectToSO3/SE3, §3.6); `m` has
+/// the group's shape.
+pub fn project(m: &Num, group: Group) -> Num {
+    match (group, m) {
+        (Group::SO3, Num::M3(r)) => Num::M3(*SO3::project(r).matrix()),
+        (Group::SE3, Num::M4(t)) => Num::M4(*SE3::project(t).matrix()),
+        (Group::SE2, Num::M3(t)) => Num::M3(*SE2::project(t).matrix()),
+        (Group::SO2, _) => Num::from_slice(2, 2, SO2::project(&mat2(m)).matrix().as_slice()),
+        _ => m.clone(),
     }
 }
 
@@ -101,7 +108,7 @@ pub fn dm<R: nalgebra::Dim, C: nalgebra::Dim, S: nalgebra::RawStorage<f64, R, C>
 }
 
 /// Classifies `m` against `group` (shape must already match).
-pub fn membership(m: &DMatrix<f64>, group: Group) -> Membership {
+pub fn membership(m: &Num, group: Group) -> Membership {
     let dist = distance(m, group).unwrap_or(f64::INFINITY);
     if dist <= ACCEPT_TOL {
         Membership::Exact(m.clone())
@@ -114,7 +121,7 @@ pub fn membership(m: &DMatrix<f64>, group: Group) -> Membership {
             3
         };
         let det = if m.nrows() >= k && m.ncols() >= k {
-            m.view((0, 0), (k, k)).determinant()
+            m.to_dmatrix().view((0, 0), (k, k)).determinant()
         } else {
             f64::NAN
         };
@@ -128,28 +135,30 @@ pub fn membership(m: &DMatrix<f64>, group: Group) -> Membership {
 /// The kind a freshly written matrix gets: SO(3) if it is a rotation, else
 /// SE(2) if it is a planar transform (3×3); SE(3) (4×4), SO(2) (2×2); else a
 /// plain matrix (LANGUAGE.md §5).
-pub fn classify(m: &DMatrix<f64>) -> Kind {
+pub fn classify(m: &Num) -> Kind {
     let is = |g: Group| distance(m, g).is_some_and(|d| d <= ACCEPT_TOL);
-    match (m.nrows(), m.ncols()) {
-        (3, 3) if is(Group::SO3) => Kind::SO3,
-        (3, 3) if is(Group::SE2) => Kind::SE2,
-        (4, 4) if is(Group::SE3) => Kind::SE3,
-        (2, 2) if is(Group::SO2) => Kind::SO2,
-        (3, 3) if is_skew(m) => Kind::So3,
-        (4, 4)
-            if is_skew(&m.view((0, 0), (3, 3)).into_owned())
-                && m.row(3).iter().all(|x| *x == 0.0)
-                && m.iter().any(|x| *x != 0.0) =>
+    match m {
+        Num::M3(_) if is(Group::SO3) => Kind::SO3,
+        Num::M3(_) if is(Group::SE2) => Kind::SE2,
+        Num::M4(_) if is(Group::SE3) => Kind::SE3,
+        Num::M3(r) if is_skew(r) => Kind::So3,
+        Num::M4(t)
+            if is_skew(&t.fixed_view::<3, 3>(0, 0).into_owned())
+                && t.row(3).iter().all(|x| *x == 0.0)
+                && t.iter().any(|x| *x != 0.0) =>
         {
             Kind::Se3
         }
-        (r, 1) => Kind::Vector(Some(r)),
-        (r, c) => Kind::Matrix(Some(r), Some(c)),
+        _ => match m.shape() {
+            (2, 2) if is(Group::SO2) => Kind::SO2,
+            (r, 1) => Kind::Vector(Some(r)),
+            (r, c) => Kind::Matrix(Some(r), Some(c)),
+        },
     }
 }
 
 /// A nonzero matrix equal to minus its transpose (an element of so(3)).
-fn is_skew(m: &DMatrix<f64>) -> bool {
+fn is_skew(m: &Mat3) -> bool {
     let scale = m.abs().max();
     scale > 0.0 && (m + m.transpose()).abs().max() <= 1e-12 * scale
 }

@@ -60,12 +60,12 @@ pub fn inline(v: &Value, style: impl Into<Style>) -> String {
 }
 
 /// Numbers separated by `, `.
-fn write_list<'a>(out: &mut String, xs: impl Iterator<Item = &'a f64>, style: Style) {
+fn write_list(out: &mut String, xs: impl Iterator<Item = f64>, style: Style) {
     for (i, x) in xs.enumerate() {
         if i > 0 {
             out.push_str(", ");
         }
-        style.write(out, *x);
+        style.write(out, x);
     }
 }
 
@@ -80,22 +80,22 @@ pub fn write_inline(out: &mut String, v: &Value, style: Style) {
         }
         Value::Num { m, .. } if m.ncols() == 1 => {
             out.push('(');
-            write_list(out, m.iter(), style);
+            write_list(out, m.iter().copied(), style);
             out.push(')');
         }
         // A row: `[a, b]` would read back as a column, so print its transpose.
         Value::Num { m, .. } if m.nrows() == 1 => {
             out.push('(');
-            write_list(out, m.iter(), style);
+            write_list(out, m.iter().copied(), style);
             out.push_str(").T");
         }
         Value::Num { m, .. } => {
             out.push('[');
-            for (i, r) in m.row_iter().enumerate() {
+            for i in 0..m.nrows() {
                 if i > 0 {
                     out.push_str("; ");
                 }
-                write_list(out, r.iter(), style);
+                write_list(out, m.row(i), style);
             }
             out.push(']');
         }

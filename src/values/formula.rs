@@ -66,7 +66,7 @@ pub fn make(kind: &Kind, m: Mat) -> Value {
     match m.as_f64() {
         Some(xs) => Value::Num {
             kind,
-            m: nalgebra::DMatrix::from_row_slice(m.rows, m.cols, &xs),
+            m: nalgebra::DMatrix::from_row_slice(m.rows, m.cols, &xs).into(),
         },
         None => Value::Formula { kind, m },
     }
@@ -436,7 +436,7 @@ mod tests {
         let rrt = binary(BinOp::Mul, &r, &rt, &Kind::SO3).unwrap();
         let eye = Value::Num {
             kind: Kind::SO3,
-            m: nalgebra::DMatrix::identity(3, 3),
+            m: nalgebra::DMatrix::identity(3, 3).into(),
         };
         assert_eq!(equal(&rrt, &eye, false), Ok(Some(true)));
         assert_eq!(equal(&r, &eye, false), Ok(Some(false)));

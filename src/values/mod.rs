@@ -12,6 +12,7 @@ pub mod convert;
 pub mod exact;
 pub mod format;
 pub mod formula;
+pub mod num;
 pub mod number;
 pub mod ops;
 pub mod symbolic;

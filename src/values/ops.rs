@@ -5,17 +5,18 @@
 
 use nalgebra::DMatrix;
 
-use super::convert::{self, dm};
+use super::convert;
+use super::num::Num;
 use super::value::Value;
 use crate::check::ty::Kind;
-use crate::lie::{Mat3, Mat4, Vec6, se2, se3};
+use crate::lie::{LieGroup, SE2, SE3, SO3, Vec3, se3};
 
 /// Largest matrix side accepted anywhere.
 pub const MAX_DIM: usize = 10_000;
 /// Largest number of entries of one matrix.
 pub const MAX_ELEMENTS: usize = 4_000_000;
 
-fn num(v: &Value) -> Result<(&Kind, &DMatrix<f64>), String> {
+fn num(v: &Value) -> Result<(&Kind, &Num), String> {
     match v {
         Value::Num { kind, m } => Ok((kind, m)),
         other => Err(format!("expected numbers, found a {}", other.kind())),
@@ -24,7 +25,7 @@ fn num(v: &Value) -> Result<(&Kind, &DMatrix<f64>), String> {
 
 /// The value of kind `kind` holding `m`; plain matrices that are exactly
 /// group elements are recognized (a product of rotations stays a rotation).
-fn out(kind: &Kind, m: DMatrix<f64>) -> Value {
+fn out(kind: &Kind, m: Num) -> Value {
     let kind = match kind {
         Kind::Matrix(..) | Kind::Unknown => convert::classify(&m),
         Kind::Vector(_) => Kind::Vector(Some(m.nrows())),
@@ -42,23 +43,37 @@ fn out(kind: &Kind, m: DMatrix<f64>) -> Value {
 pub fn mul(l: &Value, r: &Value, kind: &Kind) -> Result<Value, String> {
     let (lk, lm) = num(l)?;
     let (rk, rm) = num(r)?;
-    if lm.shape() == (1, 1) && *lk == Kind::Scalar {
+    if let (Num::Scalar(x), Kind::Scalar) = (lm, lk) {
         return Ok(Value::Num {
             kind: kind.clone(),
-            m: rm * lm[0],
+            m: rm.map(|y| y * x),
         });
     }
-    if rm.shape() == (1, 1) && *rk == Kind::Scalar {
+    if let (Num::Scalar(y), Kind::Scalar) = (rm, rk) {
         return Ok(Value::Num {
             kind: kind.clone(),
-            m: lm * rm[0],
+            m: lm.map(|x| x * y),
         });
+    }
+    // The book's products of fixed shapes, without a general matrix:
+    // T₁T₂ (3.63), [Ad_T]V (3.83), Rp, and so on.
+    let fixed = match (lm, rm) {
+        (Num::M4(a), Num::M4(b)) => Some(Num::M4(a * b)),
+        (Num::M3(a), Num::M3(b)) => Some(Num::M3(a * b)),
+        (Num::M6(a), Num::M6(b)) => Some(Num::M6(Box::new(**a * **b))),
+        (Num::M3(a), Num::V3(b)) => Some(Num::V3(a * b)),
+        (Num::M4(a), Num::V4(b)) => Some(Num::V4(a * b)),
+        (Num::M6(a), Num::V6(b)) => Some(Num::V6(**a * b)),
+        _ => None,
+    };
+    if let Some(m) = fixed {
+        return Ok(out(kind, m));
     }
     // A point transformed by a homogeneous transform: T p = R p + t.
-    if lm.shape() == (4, 4) && rm.shape() == (3, 1) {
+    if let (Num::M4(t), Num::V3(x)) = (lm, rm) {
         // A transform moves the point (T x = R x + p, (3.65)); an se(3)
         // matrix gives its velocity ([V] x = [ω] x + v, last row zero).
-        let last = |w: f64| (0..4).all(|j| (lm[(3, j)] - w * f64::from(j == 3)).abs() <= 1e-9);
+        let last = |w: f64| (0..4).all(|j| (t[(3, j)] - w * f64::from(j == 3)).abs() <= 1e-9);
         if !last(1.0) && !last(0.0) {
             return Err(
                 "a 4×4 matrix moves a point, T x = R x + p (3.65), only when its last row is (0, 0, 0, 1); \
@@ -66,21 +81,18 @@ pub fn mul(l: &Value, r: &Value, kind: &Kind) -> Result<Value, String> {
                     .into(),
             );
         }
-        let t = Mat4::from_iterator(lm.iter().copied());
-        let p = t.fixed_view::<3, 3>(0, 0) * crate::lie::Vec3::from_iterator(rm.iter().copied())
-            + t.fixed_view::<3, 1>(0, 3);
+        let p = t.fixed_view::<3, 3>(0, 0) * x + t.fixed_view::<3, 1>(0, 3);
         return Ok(Value::Num {
             kind: kind.clone(),
-            m: dm(&p),
+            m: Num::V3(p),
         });
     }
-    if lm.shape() == (3, 3) && rm.shape() == (2, 1) && matches!(lk, Kind::SE2 | Kind::Se2) {
-        let t = Mat3::from_iterator(lm.iter().copied());
+    if let (Num::M3(t), (2, 1), Kind::SE2 | Kind::Se2) = (lm, rm.shape(), lk) {
         let p = t.fixed_view::<2, 2>(0, 0) * nalgebra::Vector2::new(rm[0], rm[1])
             + t.fixed_view::<2, 1>(0, 2);
         return Ok(Value::Num {
             kind: kind.clone(),
-            m: dm(&p),
+            m: Num::from_slice(2, 1, p.as_slice()),
         });
     }
     if lm.ncols() != rm.nrows() {
@@ -94,7 +106,8 @@ pub fn mul(l: &Value, r: &Value, kind: &Kind) -> Result<Value, String> {
     }
     check_size(lm.nrows(), rm.ncols())?;
     check_work(lm.nrows(), lm.ncols(), rm.ncols(), 1)?;
-    Ok(out(kind, lm * rm))
+    let product = &*lm.to_dmatrix() * &*rm.to_dmatrix();
+    Ok(out(kind, Num::from_dmatrix(product)))
 }
 
 /// The most multiply-adds one operation may cost: about a second of work
@@ -158,7 +171,11 @@ pub fn add(l: &Value, r: &Value, subtract: bool, kind: &Kind) -> Result<Value, S
             rm.ncols()
         ));
     }
-    Ok(out(kind, if subtract { lm - rm } else { lm + rm }))
+    let mut sum = lm.clone();
+    for (x, y) in sum.as_mut_slice().iter_mut().zip(rm.iter()) {
+        *x = if subtract { *x - y } else { *x + y };
+    }
+    Ok(out(kind, sum))
 }
 
 /// `-x`.
@@ -166,7 +183,7 @@ pub fn neg(v: &Value, kind: &Kind) -> Result<Value, String> {
     let (_, m) = num(v)?;
     Ok(Value::Num {
         kind: kind.clone(),
-        m: -m,
+        m: m.map(|x| -x),
     })
 }
 
@@ -179,7 +196,7 @@ pub fn div(l: &Value, r: &Value, kind: &Kind) -> Result<Value, String> {
     }
     Ok(Value::Num {
         kind: kind.clone(),
-        m: lm / d,
+        m: lm.map(|x| x / d),
     })
 }
 
@@ -221,9 +238,9 @@ pub fn pow(b: &Value, e: f64, kind: &Kind) -> Result<Value, String> {
         return Err(format!("a matrix power needs a whole exponent, got {e}"));
     }
     let mut base = if e < 0.0 {
-        num_inverse(bk, bm)?
+        num_inverse(bk, bm)?.into_dmatrix()
     } else {
-        bm.clone()
+        bm.to_dmatrix().into_owned()
     };
     let mut n = e.abs() as u64;
     // Squaring: at most two products per bit of the exponent.
@@ -241,6 +258,7 @@ pub fn pow(b: &Value, e: f64, kind: &Kind) -> Result<Value, String> {
     }
     // A power of a plain matrix is a plain matrix, even when it happens to
     // be a group element (`[1, 2; 3, 4]^0` is I, not labelled SO(2)).
+    let acc = Num::from_dmatrix(acc);
     if let Kind::Matrix(..) = kind
         && convert::classify(&acc).is_group()
     {
@@ -266,12 +284,15 @@ pub fn inverse(v: &Value) -> Result<Value, String> {
     Ok(out(k, num_inverse(k, m)?))
 }
 
-fn num_inverse(k: &Kind, m: &DMatrix<f64>) -> Result<DMatrix<f64>, String> {
-    Ok(match (k, m.shape()) {
+fn num_inverse(k: &Kind, m: &Num) -> Result<Num, String> {
+    Ok(match (k, m) {
+        // Closed forms: Rᵀ (Prop. 3.3), (3.64) for transforms.
+        (Kind::SO3, Num::M3(r)) => Num::M3(*SO3::assume(*r).inverse().matrix()),
         (Kind::SO3 | Kind::SO2, _) => m.transpose(),
-        (Kind::SE3, _) => dm(&se3::inv(&Mat4::from_iterator(m.iter().copied()))),
-        (Kind::SE2, _) => dm(&se2::inv(&Mat3::from_iterator(m.iter().copied()))),
-        (_, (r, c)) if r == c => {
+        (Kind::SE3, Num::M4(t)) => Num::M4(*SE3::assume(*t).inverse().matrix()),
+        (Kind::SE2, Num::M3(t)) => Num::M3(*SE2::assume(*t).inverse().matrix()),
+        _ if m.is_square() => {
+            let r = m.nrows();
             check_cost(cube(r), || format!("the inverse of a {r}×{r} matrix"))?;
             if m.iter().any(|x| !x.is_finite()) {
                 return Err(
@@ -279,6 +300,7 @@ fn num_inverse(k: &Kind, m: &DMatrix<f64>) -> Result<DMatrix<f64>, String> {
                         .into(),
                 );
             }
+            let m = m.to_dmatrix();
             let det = m.determinant();
             let scale = m.abs().max().max(f64::MIN_POSITIVE).powi(r as i32);
             if det == 0.0 || !det.is_finite() || det.abs() <= 1e-14 * scale {
@@ -287,9 +309,11 @@ fn num_inverse(k: &Kind, m: &DMatrix<f64>) -> Result<DMatrix<f64>, String> {
                     super::number::fmt_num(det, 6)
                 ));
             }
-            m.clone()
-                .try_inverse()
-                .ok_or("the matrix is singular; it has no inverse")?
+            Num::from_dmatrix(
+                m.into_owned()
+                    .try_inverse()
+                    .ok_or("the matrix is singular; it has no inverse")?,
+            )
         }
         _ => {
             return Err(format!(
@@ -329,31 +353,31 @@ pub fn member(v: &Value, name: &str) -> Result<Value, String> {
         return Ok(transpose(v));
     }
     let (k, m) = num(v)?;
-    let v3 = |a: f64, b: f64, c: f64| Value::vector(Kind::Vector(Some(3)), &[a, b, c]);
-    match (name, m.shape()) {
-        ("R", (4, 4)) => Ok(Value::Num {
+    let v3 = |v: Vec3| Value::Num {
+        kind: Kind::Vector(Some(3)),
+        m: Num::V3(v),
+    };
+    match (name, m) {
+        ("R", Num::M4(t)) => Ok(Value::Num {
             kind: Kind::SO3,
-            m: m.view((0, 0), (3, 3)).into_owned(),
+            m: Num::M3(t.fixed_view::<3, 3>(0, 0).into_owned()),
         }),
-        ("R", (3, 3)) if *k == Kind::SE2 => Ok(Value::Num {
+        ("R", Num::M3(t)) if *k == Kind::SE2 => Ok(Value::Num {
             kind: Kind::SO2,
-            m: m.view((0, 0), (2, 2)).into_owned(),
+            m: Num::from_slice(2, 2, t.fixed_view::<2, 2>(0, 0).into_owned().as_slice()),
         }),
-        ("p", (4, 4)) => Ok(v3(m[(0, 3)], m[(1, 3)], m[(2, 3)])),
-        ("p", (3, 3)) if *k == Kind::SE2 => Ok(Value::vector(
+        ("p", Num::M4(t)) => Ok(v3(t.fixed_view::<3, 1>(0, 3).into_owned())),
+        ("p", Num::M3(t)) if *k == Kind::SE2 => Ok(Value::vector(
             Kind::Vector(Some(2)),
-            &[m[(0, 2)], m[(1, 2)]],
+            &[t[(0, 2)], t[(1, 2)]],
         )),
-        ("w" | "m", (6, 1)) => Ok(v3(m[0], m[1], m[2])),
-        ("v" | "f", (6, 1)) => Ok(v3(m[3], m[4], m[5])),
-        ("w" | "v", (4, 4)) => {
-            let t = se3::vee(&Mat4::from_iterator(m.iter().copied()));
-            let s: Vec6 = t;
-            Ok(if name == "w" {
-                v3(s[0], s[1], s[2])
-            } else {
-                v3(s[3], s[4], s[5])
-            })
+        ("w" | "m", Num::V6(s)) => Ok(v3(s.fixed_rows::<3>(0).into_owned())),
+        ("v" | "f", Num::V6(s)) => Ok(v3(s.fixed_rows::<3>(3).into_owned())),
+        ("w" | "v", Num::M4(t)) => {
+            let s = se3::vee(t);
+            Ok(v3(s
+                .fixed_rows::<3>(if name == "w" { 0 } else { 3 })
+                .into_owned()))
         }
         _ => Err(format!("a {k} has no member .{name}")),
     }
@@ -394,17 +418,17 @@ pub fn index(v: &Value, sels: &[Sel]) -> Result<Value, String> {
             m[(position(*i, m.nrows())?, position(*j, m.ncols())?)],
         )),
         [Sel::At(i), Sel::All] => {
-            let row = m.row(position(*i, m.nrows())?).into_owned();
+            let row: Vec<f64> = m.row(position(*i, m.nrows())?).collect();
             Ok(Value::Num {
                 kind: Kind::Matrix(Some(1), Some(m.ncols())),
-                m: DMatrix::from_row_slice(1, m.ncols(), row.as_slice()),
+                m: Num::from_slice(1, m.ncols(), &row),
             })
         }
         [Sel::All, Sel::At(j)] => {
-            let col = m.column(position(*j, m.ncols())?).into_owned();
+            let (n, j) = (m.nrows(), position(*j, m.ncols())?);
             Ok(Value::Num {
-                kind: Kind::Vector(Some(m.nrows())),
-                m: DMatrix::from_column_slice(m.nrows(), 1, col.as_slice()),
+                kind: Kind::Vector(Some(n)),
+                m: Num::vector(&m.as_slice()[j * n..(j + 1) * n]),
             })
         }
         [Sel::All, Sel::All] | [Sel::All] => Ok(v.clone()),
@@ -418,15 +442,9 @@ pub fn index(v: &Value, sels: &[Sel]) -> Result<Value, String> {
 pub fn brackets(rows: &[Vec<Value>]) -> Result<Value, String> {
     if rows.len() == 1 && rows[0].len() == 1 {
         let (k, m) = num(&rows[0][0])?;
-        return Ok(match m.shape() {
-            (3, 1) => Value::num(
-                Kind::So3,
-                &crate::lie::so3::hat(&crate::lie::Vec3::from_iterator(m.iter().copied())),
-            ),
-            (6, 1) => Value::num(
-                Kind::Se3,
-                &se3::hat(&Vec6::from_iterator(m.iter().copied())),
-            ),
+        return Ok(match m {
+            Num::V3(w) => Value::of(Kind::So3, crate::lie::so3::hat(w)),
+            Num::V6(v) => Value::of(Kind::Se3, se3::hat(v)),
             _ => Value::Num {
                 kind: k.clone(),
                 m: m.clone(),
@@ -445,7 +463,7 @@ pub fn brackets(rows: &[Vec<Value>]) -> Result<Value, String> {
     for (ri, row) in rows.iter().enumerate() {
         let mut parts = Vec::with_capacity(row.len());
         for v in row {
-            parts.push(num(v)?.1);
+            parts.push(num(v)?.1.to_dmatrix());
         }
         let h = parts[0].nrows();
         if let Some(bad) = parts.iter().find(|p| p.nrows() != h) {
@@ -461,7 +479,7 @@ pub fn brackets(rows: &[Vec<Value>]) -> Result<Value, String> {
         let mut block = DMatrix::zeros(h, w);
         let mut c0 = 0;
         for p in parts {
-            block.view_mut((0, c0), (h, p.ncols())).copy_from(p);
+            block.view_mut((0, c0), (h, p.ncols())).copy_from(&*p);
             c0 += p.ncols();
         }
         blocks.push(block);
@@ -483,6 +501,7 @@ pub fn brackets(rows: &[Vec<Value>]) -> Result<Value, String> {
         m.view_mut((r0, 0), (b.nrows(), w)).copy_from(b);
         r0 += b.nrows();
     }
+    let m = Num::from_dmatrix(m);
     Ok(Value::Num {
         kind: convert::classify(&m),
         m,

@@ -3,8 +3,7 @@
 
 use std::rc::Rc;
 
-use nalgebra::DMatrix;
-
+use super::num::Num;
 use super::symbolic::Tree;
 use crate::check::ty::{Kind, Ty};
 use crate::mech::Mechanism;
@@ -21,13 +20,14 @@ pub struct UserFn {
     pub body: Expr,
 }
 
-/// A value. Numbers of every shape are a matrix plus a [`Kind`] that says
-/// what the book calls it (a scalar is 1×1, a vector n×1).
+/// A value. Numbers of every shape are a [`Num`] (small shapes inline)
+/// plus a [`Kind`] that says what the book calls it (a scalar is 1×1, a
+/// vector n×1).
 #[derive(Debug, Clone)]
 pub enum Value {
     Num {
         kind: Kind,
-        m: DMatrix<f64>,
+        m: Num,
     },
     Bool(bool),
     Tuple(Vec<Value>),
@@ -73,10 +73,11 @@ impl Value {
     pub fn scalar(x: f64) -> Value {
         Value::Num {
             kind: Kind::Scalar,
-            m: DMatrix::from_element(1, 1, x),
+            m: Num::Scalar(x),
         }
     }
-    /// A value of `kind` from any nalgebra matrix.
+    /// A value of `kind` from any nalgebra matrix (held inline when its
+    /// shape has a fixed-size [`Num`] variant).
     pub fn num<R: nalgebra::Dim, C: nalgebra::Dim, S>(
         kind: Kind,
         m: &nalgebra::Matrix<f64, R, C, S>,
@@ -85,16 +86,26 @@ impl Value {
         S: nalgebra::RawStorage<f64, R, C>,
     {
         let (r, c) = m.shape();
-        Value::Num {
-            kind,
-            m: DMatrix::from_iterator(r, c, m.iter().copied()),
-        }
+        let m = if r * c <= 36 {
+            let mut buf = [0.0; 36];
+            for (b, x) in buf.iter_mut().zip(m.iter()) {
+                *b = *x;
+            }
+            Num::from_slice(r, c, &buf[..r * c])
+        } else {
+            Num::Dyn(nalgebra::DMatrix::from_iterator(r, c, m.iter().copied()))
+        };
+        Value::Num { kind, m }
+    }
+    /// A value of `kind` holding `m`.
+    pub fn of(kind: Kind, m: impl Into<Num>) -> Value {
+        Value::Num { kind, m: m.into() }
     }
     /// A column vector.
     pub fn vector(kind: Kind, v: &[f64]) -> Value {
         Value::Num {
             kind,
-            m: DMatrix::from_column_slice(v.len(), 1, v),
+            m: Num::vector(v),
         }
     }
     /// The kind this value has at run time.
@@ -118,7 +129,8 @@ impl Value {
             _ => None,
         }
     }
-    pub fn as_matrix(&self) -> Option<&DMatrix<f64>> {
+    /// The numbers of a number, vector or matrix.
+    pub fn as_matrix(&self) -> Option<&Num> {
         match self {
             Value::Num { m, .. } => Some(m),
             _ => None,
