@@ -10,7 +10,8 @@
 //! leaves every error (and a few rare forms) to pest. `spacing` then
 //! refuses what reads two ways (`[1 -x]`, `[2 pi]`, `R [1, 2]`, `sin θ^2`,
 //! `T_123`) with both readings, and `rewrite` turns the book's notation into
-//! the plain tree (numpy's nested rows, `R^T` = `R.T`). Syntax errors are
+//! the plain tree (numpy's nested rows, `R^T` = `R.T`); a statement the fast
+//! path read without anything these passes act on skips them. Syntax errors are
 //! `ErrorKind::Syntax` diagnostics with friendly messages (`rules`). Spans
 //! are byte offsets into the whole source.
 //!
