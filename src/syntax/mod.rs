@@ -10,7 +10,8 @@
 //! leaves every error (and a few rare forms) to pest. `spacing` then
 //! refuses what reads two ways (`[1 -x]`, `[2 pi]`, `R [1, 2]`, `sin θ^2`,
 //! `T_123`) with both readings, and `rewrite` turns the book's notation into
-//! the plain tree (numpy's nested rows, `R^T` = `R.T`). Syntax errors are
+//! the plain tree (numpy's nested rows, `R^T` = `R.T`); a statement the fast
+//! path read without anything these passes act on skips them. Syntax errors are
 //! `ErrorKind::Syntax` diagnostics with friendly messages (`rules`). Spans
 //! are byte offsets into the whole source.
 //!
@@ -58,41 +59,39 @@ pub fn statements(src: &str) -> impl Iterator<Item = Result<ast::Stmt, Diagnosti
     std::iter::from_fn(move || {
         let chunk = splitter.next()?;
         let text = splitter.text(chunk.span);
-        let (parsed, passes) = match chunk.error {
-            Some(error) => (Err(*error), fast::Passes::ALL),
-            None if text.len() > MAX_STATEMENT_BYTES => {
-                (Err(too_long(chunk.span, text.len())), fast::Passes::ALL)
-            }
-            // Most statements take the fast path; it leaves errors and rare
-            // forms to pest.
-            None if chunk.depth <= FAST_DEPTH
-                && let Some(stmt) = fast::parse_statement_with(text, chunk.span, &mut stack) =>
-            {
-                (Ok(stmt), stack.passes)
-            }
-            None if chunk.depth > SHALLOW => {
-                (parse_on_big_stack(text, chunk.span), fast::Passes::ALL)
-            }
-            None => (parser::parse_chunk(text, chunk.span), fast::Passes::ALL),
+        // Most statements take the fast path; it leaves errors and rare
+        // forms to pest.
+        if chunk.error.is_none()
+            && text.len() <= MAX_STATEMENT_BYTES
+            && chunk.depth <= FAST_DEPTH
+            && let Some(mut stmt) = fast::parse_statement_with(text, chunk.span, &mut stack)
+        {
+            return Some(after_parsing(&mut stmt, stack.passes, src).map(|()| stmt));
+        }
+        let parsed = match chunk.error {
+            Some(error) => Err(*error),
+            None if text.len() > MAX_STATEMENT_BYTES => Err(too_long(chunk.span, text.len())),
+            None if chunk.depth > SHALLOW => parse_on_big_stack(text, chunk.span),
+            None => parser::parse_chunk(text, chunk.span),
         };
-        Some(parsed.and_then(|stmt| after_parsing(stmt, passes, src)))
+        Some(
+            parsed.and_then(|mut stmt| {
+                after_parsing(&mut stmt, fast::Passes::ALL, src).map(|()| stmt)
+            }),
+        )
     })
 }
 
 /// The passes after parsing: `spacing` refuses what reads two ways,
 /// `rewrite` turns the book's notation into the plain tree.
-fn after_parsing(
-    mut stmt: ast::Stmt,
-    passes: fast::Passes,
-    src: &str,
-) -> Result<ast::Stmt, Diagnostic> {
+fn after_parsing(stmt: &mut ast::Stmt, passes: fast::Passes, src: &str) -> Result<(), Diagnostic> {
     if passes.spacing {
-        spacing::check(&stmt, src)?;
+        spacing::check(stmt, src)?;
     }
     if passes.rewrite {
-        rewrite::stmt(&mut stmt);
+        rewrite::stmt(stmt);
     }
-    Ok(stmt)
+    Ok(())
 }
 
 /// The longest statement accepted (bytes). The grammar needs memory

@@ -135,6 +135,22 @@ impl Iterator for Splitter<'_> {
             // Skip the bytes that neither end a statement nor open or
             // close anything.
             let mut i = self.i;
+            // Four bytes a round while they last, then one by one.
+            while let Some(w) = bytes.get(i..i + 4) {
+                if significant(w[0]) {
+                    break;
+                } else if significant(w[1]) {
+                    i += 1;
+                    break;
+                } else if significant(w[2]) {
+                    i += 2;
+                    break;
+                } else if significant(w[3]) {
+                    i += 3;
+                    break;
+                }
+                i += 4;
+            }
             while i < n && !significant(bytes[i]) {
                 i += 1;
             }

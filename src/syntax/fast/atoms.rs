@@ -280,7 +280,10 @@ impl P<'_> {
         self.ws();
         if !(empty_ok && self.byte(self.pos) == Some(close)) {
             loop {
-                let (e, d) = self.expr(0)?;
+                let (e, d) = match self.simple_item(close) {
+                    Some(e) => (e, 1),
+                    None => self.expr(0)?,
+                };
                 depth = depth.max(d);
                 self.stack.items.push(e);
                 if !self.eat(b',') {
@@ -293,6 +296,39 @@ impl P<'_> {
             }
         }
         self.eat(close).then_some((mark, depth))
+    }
+
+    /// An element that is a plain number or name directly followed by `,`
+    /// or `close` (`1` in `(1, 2)`, `T_ab` in `Ad(T_ab)`): the tree
+    /// `expr(0)` builds for it, without the operator loop. `None` (position
+    /// after whitespace) for anything else.
+    fn simple_item(&mut self, close: u8) -> Option<Expr> {
+        self.ws();
+        let start = self.pos;
+        let first = self.byte(start)?;
+        let end = if first.is_ascii_digit() {
+            self.number_at(start)?
+        } else if first.is_ascii_alphabetic() {
+            let end = self.ident_at(start)??;
+            // `true'` is `true` then a stray `'`: left to the full path.
+            if self.s[start..end].contains(&b'\'') {
+                return None;
+            }
+            end
+        } else {
+            return None;
+        };
+        if !matches!(self.byte(end), Some(b) if b == b',' || b == close) {
+            return None;
+        }
+        let kind = if first.is_ascii_digit() {
+            ExprKind::Number(number_value(&self.src[start..end])?)
+        } else {
+            ExprKind::Var(self.src[start..end].to_string())
+        };
+        self.pos = end;
+        self.sup = false;
+        Some(self.leaf(kind, start, end).0)
     }
 
     /// The expressions above `mark` on the stack, as a vector of their own.
@@ -395,7 +431,10 @@ impl P<'_> {
             } else {
                 let mark = self.stack.items.len();
                 loop {
-                    let (e, d) = self.expr(0)?;
+                    let (e, d) = match self.simple_item(b']') {
+                        Some(e) => (e, 1),
+                        None => self.expr(0)?,
+                    };
                     depth = depth.max(d);
                     self.stack.items.push(e);
                     if !self.eat(b',') {

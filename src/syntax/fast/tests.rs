@@ -2,7 +2,7 @@
 //! error scripts, chosen statements, and random token strings and
 //! expressions must give the same tree (or the fast path must give up).
 
-use crate::syntax::{FAST_DEPTH, parser, split};
+use crate::syntax::{FAST_DEPTH, parser, rewrite, spacing, split};
 use proptest::prelude::*;
 
 /// Checks every statement of `src` the fast path takes against pest;
@@ -17,8 +17,18 @@ fn agree(src: &str) -> (usize, usize) {
         if chunk.depth > FAST_DEPTH {
             continue;
         }
-        if let Some(stmt) = super::parse_statement(text, chunk.span) {
+        let mut stack = super::Stack::default();
+        if let Some(stmt) = super::parse_statement_with(text, chunk.span, &mut stack) {
             fast += 1;
+            // The passes the fast path skips would have done nothing.
+            if !stack.passes.spacing {
+                assert!(spacing::check(&stmt, &split.text).is_ok(), "{src:?}");
+            }
+            if !stack.passes.rewrite {
+                let mut rewritten = stmt.clone();
+                rewrite::stmt(&mut rewritten);
+                assert_eq!(rewritten, stmt, "{src:?}");
+            }
             assert_eq!(Ok(stmt), slow, "{src:?}");
         }
     }
@@ -84,6 +94,8 @@ fn fast_path_agrees_with_pest() {
         "ans / deg",
         "I + sin θ [w] + (1 − cos θ)[w]² − −x + [1 −2 3] − [1 − x]",
         "T_01 * T_12 * T_s1",
+        // Plain numbers and names as list elements.
+        "v = g(x', 2.5e3, 7, T_ab, 1.)[1] + [a, b, 1; 2, c', 3] + h(0.1,2)",
     ] {
         let (f, o) = agree(src);
         assert!(f == o && o > 0, "{src:?} takes the slow path");
