@@ -148,11 +148,15 @@ fn align_cells<const N: usize>(
             frac_w[j] = frac_w[j].max(cell.frac_width());
         }
     }
-    // Each row is laid out in a buffer of spaces on the stack: only the
-    // cells and commas are written, the padding is already there.
+    // Each row is laid out in a buffer of spaces on the stack, right to
+    // left: a cell is copied as its whole fixed-size buffer (spaces, then
+    // its text) ending where the cell ends, so that the copy has a
+    // constant size; the spaces fall only where cells to the left, the
+    // commas and the row's start are written afterwards.
     const ROW: usize = 512;
+    let lead = Ascii::WIDTH + indent + 2;
     let width: usize = int_w.iter().chain(&frac_w).sum::<usize>() + 2 * ncols;
-    if indent + 2 + width > ROW {
+    if lead + width > ROW {
         return align(out, m, digits.into(), indent, s);
     }
     let block = &mut s.bytes;
@@ -160,26 +164,27 @@ fn align_cells<const N: usize>(
     block.reserve(nrows * (indent + 2 + width) + 1);
     let mut row = [b' '; ROW];
     for r in 0..nrows {
-        let mut k = if r == 0 {
-            row[0] = b'[';
-            1
-        } else {
-            row[0] = b'\n';
-            indent + 2
-        };
-        for j in 0..ncols {
-            let cell = &cells[r * ncols + j];
-            let text = cell.bytes();
-            k += int_w[j] - cell.int_width();
-            row[k..k + text.len()].copy_from_slice(text);
-            k += text.len();
+        let cells = &cells[r * ncols..(r + 1) * ncols];
+        let mut ends = [0usize; 6];
+        let mut k = lead;
+        for (j, cell) in cells.iter().enumerate() {
+            k += int_w[j] - cell.int_width() + cell.len();
+            ends[j] = k;
             if j + 1 < ncols {
-                row[k] = b',';
                 k += frac_w[j] - cell.frac_width() + 2;
             }
         }
-        block.extend_from_slice(&row[..k]);
-        row[..k].fill(b' ');
+        for j in (0..ncols).rev() {
+            let end = ends[j];
+            row[end - Ascii::WIDTH..end].copy_from_slice(cells[j].padded());
+            if j + 1 < ncols {
+                row[end] = b',';
+            }
+        }
+        let from = if r == 0 { lead - 1 } else { lead - indent - 2 };
+        row[from] = if r == 0 { b'[' } else { b'\n' };
+        block.extend_from_slice(&row[from..k]);
+        row[from..k].fill(b' ');
     }
     block.push(b']');
     // Every byte is ASCII: digits, '.', '-', spaces, brackets.
