@@ -122,8 +122,8 @@ proptest! {
     #[test]
     fn conjugation_closes_on_one_frame(a in frame(), b in frame(), rotation in prop::bool::ANY) {
         let (group, algebra) = if rotation { (Kind::SO3, Kind::So3) } else { (Kind::SE3, Kind::Se3) };
-        let x = Ty::new(group, Frames::Pair(a.clone(), b.clone()));
-        let q = Ty::new(algebra.clone(), Frames::One(b.clone()));
+        let x = Ty::new(group, Frames::Pair(a, b));
+        let q = Ty::new(algebra.clone(), Frames::One(b));
         let inv = if rotation { rules::transpose(&x) } else { rules::inverse(&x) }.unwrap();
         let outs = all_bracketings(&[x, q, inv]);
         prop_assert_eq!(outs.len(), 1);

@@ -521,7 +521,7 @@ fn spans_are_byte_ranges_into_the_source() {
 
 fn mech(src: &str) -> chasles::syntax::ast::MechSpec {
     match expr(src).kind {
-        ExprKind::Mech(m) => m,
+        ExprKind::Mech(m) => *m,
         other => panic!("{src}: not a mech: {other:?}"),
     }
 }

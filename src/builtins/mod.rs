@@ -26,6 +26,7 @@ pub use table_sym::eval_symbolic;
 
 use crate::check::ty::{Frames, Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
+pub use crate::values::symbolic::Role;
 use crate::values::value::Value;
 
 /// The topic a builtin belongs to, for `:help`.
@@ -221,6 +222,16 @@ impl Builtin {
         }
     }
 
+    /// Its role in the algebra of symbols (an inverse, the adjoint map),
+    /// by its book name.
+    pub fn role(&self) -> Role {
+        match self.name {
+            "inv" | "RotInv" | "TransInv" => Role::Inverse,
+            "Adjoint" => Role::Adjoint,
+            _ => Role::Plain,
+        }
+    }
+
     /// All names this builtin answers to.
     pub fn names(&self) -> impl Iterator<Item = &'static str> {
         std::iter::once(self.name).chain(self.aliases.iter().copied())
@@ -276,16 +287,16 @@ impl Builtin {
 /// The result frames of a builtin under `rule`.
 pub fn apply_frame_rule(rule: FrameRule, args: &[Ty]) -> Result<Frames, ArgError> {
     let outer = |i: usize| match args[i].frames.outer() {
-        Some(a) => Frames::One(a.clone()),
+        Some(a) => Frames::One(*a),
         None => Frames::None,
     };
     Ok(match rule {
         FrameRule::None => Frames::None,
-        FrameRule::Same(i) => args[i].frames.clone(),
+        FrameRule::Same(i) => args[i].frames,
         FrameRule::Swap(i) => args[i].frames.swapped(),
         FrameRule::Outer(i) => outer(i),
         FrameRule::Disp(i) => match &args[i].frames {
-            Frames::One(a) | Frames::Disp(a) => Frames::Disp(a.clone()),
+            Frames::One(a) | Frames::Disp(a) => Frames::Disp(*a),
             _ => Frames::None,
         },
         FrameRule::Shared => {
@@ -296,7 +307,7 @@ pub fn apply_frame_rule(rule: FrameRule, args: &[Ty]) -> Result<Frames, ArgError
                 }
                 match (&acc, &a.frames) {
                     (_, Frames::None) => {}
-                    (Frames::None, f) => acc = f.clone(),
+                    (Frames::None, f) => acc = *f,
                     (x, f) if x == f => {}
                     (x, f) => {
                         return Err(ArgError {

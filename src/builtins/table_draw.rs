@@ -167,7 +167,7 @@ fn view_rule(args: &[Ty]) -> Result<Ty, ArgError> {
                     ),
                 ));
             }
-            (1, args[0].frames.clone())
+            (1, args[0].frames)
         }
         _ => (0, Frames::None),
     };
@@ -227,7 +227,7 @@ fn save_rule(args: &[Ty]) -> Result<Ty, ArgError> {
             ),
         ));
     }
-    Ok(Ty::new(Kind::Picture, args[0].frames.clone()))
+    Ok(Ty::new(Kind::Picture, args[0].frames))
 }
 
 fn eval_save(a: &mut Args) -> Result<Value, Diagnostic> {

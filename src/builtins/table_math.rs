@@ -44,7 +44,7 @@ fn exp_rule(args: &[Ty]) -> Result<Ty, ArgError> {
         },
     };
     let frames = match &t.frames {
-        Frames::One(a) | Frames::Disp(a) => Frames::Disp(a.clone()),
+        Frames::One(a) | Frames::Disp(a) => Frames::Disp(*a),
         _ => Frames::None,
     };
     Ok(Ty::new(kind, frames))
@@ -155,7 +155,7 @@ fn log_rule(args: &[Ty]) -> Result<Ty, ArgError> {
         }
     };
     let frames = match t.frames.outer() {
-        Some(a) if t.kind != Kind::Scalar => Frames::One(a.clone()),
+        Some(a) if t.kind != Kind::Scalar => Frames::One(*a),
         _ => Frames::None,
     };
     Ok(Ty::new(kind, frames))
@@ -250,7 +250,7 @@ fn vee_rule(args: &[Ty]) -> Result<Ty, ArgError> {
             ));
         }
     };
-    Ok(Ty::new(kind, args[0].frames.clone()))
+    Ok(Ty::new(kind, args[0].frames))
 }
 
 fn untag_rule(args: &[Ty]) -> Result<Ty, ArgError> {

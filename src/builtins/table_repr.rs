@@ -45,7 +45,7 @@ fn se2_rule(args: &[Ty]) -> Result<Ty, ArgError> {
                     format!("SE2 takes a 3×3 matrix, not {}", args[0].kind.a()),
                 ));
             }
-            Ok(Ty::new(Kind::SE2, args[0].frames.clone()))
+            Ok(Ty::new(Kind::SE2, args[0].frames))
         }
         _ => {
             for (i, t) in args.iter().enumerate() {

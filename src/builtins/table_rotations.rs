@@ -49,7 +49,7 @@ fn eval_rot(a: &mut Args) -> Result<Value, Diagnostic> {
 pub(super) fn velocity_rule(space: bool, kind: Kind) -> impl Fn(&[Ty]) -> Result<Ty, ArgError> {
     move |args: &[Ty]| {
         let f = match &args[0].frames {
-            Frames::Pair(s, b) => Frames::One(if space { s.clone() } else { b.clone() }),
+            Frames::Pair(s, b) => Frames::One(if space { *s } else { *b }),
             _ => Frames::None,
         };
         Ok(Ty::new(kind.clone(), f))

@@ -21,7 +21,7 @@ fn screw_params_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     }
     Ok(Ty::new(
         Kind::Tuple(vec![v3(), v3(), Kind::Scalar]),
-        args[0].frames.clone(),
+        args[0].frames,
     ))
 }
 
@@ -50,7 +50,7 @@ fn displacement_rule(args: &[Ty]) -> Result<Ty, ArgError> {
                 ),
             });
         }
-        (Some(a), _) | (None, Some(a)) => Frames::Disp(a.clone()),
+        (Some(a), _) | (None, Some(a)) => Frames::Disp(*a),
         _ => Frames::None,
     };
     Ok(Ty::new(if planar { Kind::SE2 } else { Kind::SE3 }, frames))
@@ -121,7 +121,7 @@ fn rp_rule(args: &[Ty]) -> Result<Ty, ArgError> {
                 message: format!("R maps into {{{a}}} but p is in {{{p}}}"),
             });
         }
-        (Frames::Pair(..), _) => args[0].frames.clone(),
+        (Frames::Pair(..), _) => args[0].frames,
         _ => Frames::None,
     };
     Ok(Ty::new(Kind::SE3, frames))
@@ -134,10 +134,7 @@ fn trans_to_rp_rule(args: &[Ty]) -> Result<Ty, ArgError> {
             format!("TransToRp takes SE(3), not {}", args[0].kind.a()),
         ));
     }
-    Ok(Ty::new(
-        Kind::Tuple(vec![Kind::SO3, v3()]),
-        args[0].frames.clone(),
-    ))
+    Ok(Ty::new(Kind::Tuple(vec![Kind::SO3, v3()]), args[0].frames))
 }
 
 fn space_twist_rule(a: &[Ty]) -> Result<Ty, ArgError> {

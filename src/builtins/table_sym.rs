@@ -306,9 +306,9 @@ fn diff_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     let t = &args[0];
     Ok(match &t.kind {
         Kind::Scalar => Ty::scalar(),
-        k if k.is_vector() => Ty::new(k.clone(), t.frames.clone()),
+        k if k.is_vector() => Ty::new(k.clone(), t.frames),
         k => match k.shape() {
-            Some((r, c)) => Ty::new(Kind::Matrix(r, c), t.frames.clone()),
+            Some((r, c)) => Ty::new(Kind::Matrix(r, c), t.frames),
             None => {
                 return Err(ArgError::type_of(
                     0,

@@ -26,7 +26,7 @@ fn entrywise_rule(args: &[Ty]) -> Result<Ty, ArgError> {
         Kind::Twist | Kind::Screw | Kind::Wrench => Kind::Vector(Some(6)),
         other => scaled_kind(other),
     };
-    Ok(Ty::new(kind, args[0].frames.clone()))
+    Ok(Ty::new(kind, args[0].frames))
 }
 
 /// Every entry of argument 0 times `factor`.

@@ -55,7 +55,7 @@
 use super::ty::{Frame, Frames, Kind, Ty};
 
 /// One end of a map.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum End {
     /// Coordinates in a frame.
     At(Frame),
@@ -69,13 +69,13 @@ impl End {
     fn lifted(&self, k: u32) -> End {
         match self {
             End::At(f) => End::At(f.lifted(k)),
-            other => other.clone(),
+            other => *other,
         }
     }
 }
 
 /// A framed factor as a map from coordinates at `inn` to coordinates at `out`.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Arrow {
     pub out: End,
     pub inn: End,
@@ -91,7 +91,7 @@ impl Arrow {
 }
 
 /// How the algebra sees one operand of a product.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Factor {
     /// A map between frames (or the scalar line).
     Map(Arrow),
@@ -134,7 +134,7 @@ impl Shape {
 }
 
 /// Why a product has no frames.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Clash {
     /// The inner frames differ: the left factor's inner frame, the right
     /// factor's outer frame.
@@ -158,21 +158,17 @@ pub fn factor(frames: &Frames, shape: Shape) -> Factor {
     use End::*;
     let map = |o, i| Factor::Map(Arrow::new(o, i));
     match (frames, shape) {
-        (Frames::Transposed(a, b), _) => Factor::Transposed(a.clone(), b.clone()),
+        (Frames::Transposed(a, b), _) => Factor::Transposed(*a, *b),
         (Frames::None, Shape::Column) => map(Any, Line),
         (Frames::None, Shape::Row) => map(Line, Any),
         (Frames::None, Shape::Operator) => Factor::Untagged(1),
         (Frames::None, Shape::Quantity) => Factor::Untagged(0),
-        (Frames::One(a) | Frames::Pair(a, _) | Frames::Disp(a), Shape::Column) => {
-            map(At(a.clone()), Line)
-        }
-        (Frames::One(a) | Frames::Disp(a), Shape::Row) => map(Line, At(a.clone())),
-        (Frames::Pair(_, b), Shape::Row) => map(Line, At(b.clone())),
-        (Frames::One(a), Shape::Operator | Shape::Quantity) => map(At(a.clone()), At(a.clone())),
-        (Frames::Pair(a, b), Shape::Operator | Shape::Quantity) => {
-            map(At(a.clone()), At(b.clone()))
-        }
-        (Frames::Disp(a), Shape::Operator | Shape::Quantity) => map(At(a.clone()), At(a.moved())),
+        (Frames::One(a) | Frames::Pair(a, _) | Frames::Disp(a), Shape::Column) => map(At(*a), Line),
+        (Frames::One(a) | Frames::Disp(a), Shape::Row) => map(Line, At(*a)),
+        (Frames::Pair(_, b), Shape::Row) => map(Line, At(*b)),
+        (Frames::One(a), Shape::Operator | Shape::Quantity) => map(At(*a), At(*a)),
+        (Frames::Pair(a, b), Shape::Operator | Shape::Quantity) => map(At(*a), At(*b)),
+        (Frames::Disp(a), Shape::Operator | Shape::Quantity) => map(At(*a), At(a.moved())),
     }
 }
 
@@ -192,14 +188,14 @@ pub fn compose(l: &Factor, r: &Factor) -> Result<Factor, Clash> {
                 Arrow::new(
                     End::At(Frame {
                         moved: f.moved - down,
-                        ..f.clone()
+                        ..*f
                     }),
                     a.inn.lifted(k - down),
                 )
             }
-            _ => Arrow::new(a.out.clone(), a.inn.lifted(*k)),
+            _ => Arrow::new(a.out, a.inn.lifted(*k)),
         })),
-        (Map(a), Untagged(k)) => Ok(Map(Arrow::new(a.out.clone(), a.inn.lifted(*k)))),
+        (Map(a), Untagged(k)) => Ok(Map(Arrow::new(a.out, a.inn.lifted(*k)))),
         (Map(x), Map(y)) => compose_maps(x, y).map(Map),
     }
 }
@@ -208,20 +204,20 @@ fn compose_maps(x: &Arrow, y: &Arrow) -> Result<Arrow, Clash> {
     match (&x.inn, &y.out) {
         (End::At(b), End::At(c)) => {
             if b.name != c.name {
-                return Err(Clash::Inner(b.clone(), c.clone()));
+                return Err(Clash::Inner(*b, *c));
             }
             // The less-moved side moves with the other (rigid attachment).
             // (The result's ends are the first factor's outer end and the
             // last one's inner end, moved alike under every bracketing, so
             // they print alike too.)
             if b.moved >= c.moved {
-                Ok(Arrow::new(x.out.clone(), y.lifted(b.moved - c.moved).inn))
+                Ok(Arrow::new(x.out, y.lifted(b.moved - c.moved).inn))
             } else {
-                Ok(Arrow::new(x.lifted(c.moved - b.moved).out, y.inn.clone()))
+                Ok(Arrow::new(x.lifted(c.moved - b.moved).out, y.inn))
             }
         }
         // The line meets the line (uᵀv, u vᵀ), or a wildcard meets anything.
-        _ => Ok(Arrow::new(x.out.clone(), y.inn.clone())),
+        _ => Ok(Arrow::new(x.out, y.inn)),
     }
 }
 
@@ -235,21 +231,21 @@ fn group_like(kind: &Kind) -> bool {
 pub fn to_frames(f: &Factor, kind: &Kind) -> Frames {
     let arrow = match f {
         Factor::Untagged(_) => return Frames::None,
-        Factor::Transposed(a, b) => return Frames::Transposed(a.clone(), b.clone()),
+        Factor::Transposed(a, b) => return Frames::Transposed(*a, *b),
         Factor::Map(a) => a,
     };
     match (&arrow.out, &arrow.inn) {
         (End::At(a), End::At(b)) => {
             // (A group element {a}←{a'} prints as a displacement in {a}.)
             if group_like(kind) {
-                Frames::Pair(a.clone(), b.clone())
+                Frames::Pair(*a, *b)
             } else if a == b {
-                Frames::One(a.clone())
+                Frames::One(*a)
             } else {
-                Frames::Pair(a.clone(), b.clone())
+                Frames::Pair(*a, *b)
             }
         }
-        (End::At(a), _) | (_, End::At(a)) => Frames::One(a.clone()),
+        (End::At(a), _) | (_, End::At(a)) => Frames::One(*a),
         _ => Frames::None,
     }
 }
@@ -272,7 +268,7 @@ pub fn product(l: &Ty, r: &Ty, kind: &Kind) -> Result<(Frames, Option<u32>), Cla
 /// untagged operator the same number of displacements; what only the
 /// symbols knew (`Ty::algebra`) is left to the numbers.
 pub fn with_kind(t: &Ty, kind: Kind) -> Ty {
-    let mut out = Ty::new(kind, t.frames.clone());
+    let mut out = Ty::new(kind, t.frames);
     if let Factor::Untagged(k) = factor_of(t) {
         out.moves = unusual(k, &out.kind);
     }
@@ -294,7 +290,7 @@ pub fn untagged_power(x: &Ty, n: Option<i64>, kind: &Kind) -> Option<u32> {
 /// or `kind` is no operator.
 fn unusual(k: u32, kind: &Kind) -> Option<u32> {
     let usual = match Shape::of(kind) {
-        _ if *kind == Kind::Scalar => return None,
+        _ if matches!(kind, Kind::Scalar) => return None,
         Shape::Operator => 1,
         Shape::Quantity => 0,
         Shape::Column | Shape::Row => return None,
@@ -314,13 +310,13 @@ pub fn power(frames: &Frames, n: Option<i64>, kind: &Kind) -> Result<Frames, Cla
             out: End::At(a),
             inn: End::At(b),
         }) => (a, b),
-        _ => return Ok(frames.clone()),
+        _ => return Ok(*frames),
     };
     if a.name != b.name {
         return Err(Clash::Inner(b, a));
     }
     let Some(n) = n else {
-        return Ok(frames.clone());
+        return Ok(*frames);
     };
     // X^-n = inv(X)^n.
     let (a, b) = if n < 0 { (b, a) } else { (a, b) };
@@ -331,7 +327,7 @@ pub fn power(frames: &Frames, n: Option<i64>, kind: &Kind) -> Result<Frames, Cla
     } else {
         (grow(b.moved, a.moved - b.moved), b.moved)
     };
-    let at = |k| End::At(Frame::at(a.name.clone(), k));
+    let at = |k| End::At(Frame::at(a.name, k));
     Ok(to_frames(&Factor::Map(Arrow::new(at(out), at(inn))), kind))
 }
 

@@ -10,24 +10,92 @@ use super::ty::{Frame, Frames, Kind, Ty};
 use crate::diagnostics::ErrorKind;
 use crate::syntax::ident::{NameFrames, base_name, name_frames, tagged_name};
 
-/// The frames a name claims, as a tag for a value of `kind`: `p_sb` (a
-/// vector named with two frames) is the position of {b} in {s}, tagged {s};
-/// a scalar claims none (`theta_b = 30 deg` is a plain angle).
-pub fn claimed_frames(name: &str, kind: &Kind) -> Frames {
-    if *kind == Kind::Scalar {
-        return Frames::None;
-    }
-    match name_frames(name) {
-        NameFrames::None => Frames::None,
-        NameFrames::One(a) => Frames::One(Frame::named(a)),
-        NameFrames::Pair(a, b) => {
-            if kind.is_vector() || kind.is_algebra() {
-                Frames::One(Frame::named(a))
-            } else {
-                Frames::Pair(Frame::named(a), Frame::named(b))
-            }
+/// What a binding's name says about its value, read once per name (the
+/// environment keeps it): the book's letter ([`book_letter`]) and the
+/// frames of its subscript (LANGUAGE.md §2). `Copy`, so binding a name
+/// again reads nothing.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Claim {
+    /// The book's letter (`T` of `T_sb`, `S` of `S1`), if the name is one
+    /// of the book's names.
+    pub letter: Option<char>,
+    /// The frames of the subscript: none, {a} (`p_a`), or {a}, {b} (`T_ab`).
+    pub frames: Frames,
+}
+
+impl Claim {
+    /// The claim of `name`: `T_sb''` is the letter T and the frames {s},
+    /// {b''}; `theta_1` has no frames, `Sum` no letter.
+    pub fn of(name: &str) -> Claim {
+        let frames = match name_frames(name) {
+            NameFrames::None => Frames::None,
+            NameFrames::One(a) => Frames::One(Frame::named(&a)),
+            NameFrames::Pair(a, b) => Frames::Pair(Frame::named(&a), Frame::named(&b)),
+        };
+        Claim {
+            letter: book_letter(name),
+            frames,
         }
     }
+
+    /// The frames the name claims, as a tag for a value of `kind`: `p_sb`
+    /// (a vector named with two frames) is the position of {b} in {s},
+    /// tagged {s}; a scalar claims none (`theta_b = 30 deg` is a plain angle).
+    pub fn frames_for(&self, kind: &Kind) -> Frames {
+        match self.frames {
+            _ if matches!(kind, Kind::Scalar) => Frames::None,
+            Frames::Pair(a, _) if kind.is_vector() || kind.is_algebra() => Frames::One(a),
+            f => f,
+        }
+    }
+
+    /// The kind a value of `kind` gets under this name: the book's letters
+    /// name the kind of a plain 6-vector ([`named_kind`]) and the group of
+    /// a square matrix ([`named_group`]).
+    pub fn kind_for(&self, kind: Kind) -> Kind {
+        let kind = self.vector_kind(kind);
+        self.group(&kind).unwrap_or(kind)
+    }
+
+    fn vector_kind(&self, kind: Kind) -> Kind {
+        if matches!(kind, Kind::Vector(Some(6))) {
+            match self.letter {
+                Some('V') => Kind::Twist,
+                Some('S' | 'B') => Kind::Screw,
+                Some('F') => Kind::Wrench,
+                _ => kind,
+            }
+        } else {
+            kind
+        }
+    }
+
+    fn group(&self, kind: &Kind) -> Option<Kind> {
+        let n = match kind {
+            Kind::Matrix(Some(r), Some(c)) if r == c => *r,
+            Kind::SE2 if self.letter == Some('R') => 3,
+            _ => return None,
+        };
+        if !matches!(self.frames, Frames::Pair(..)) {
+            return None;
+        }
+        match (self.letter?, n) {
+            ('R', 3) => Some(Kind::SO3),
+            ('R', 2) => Some(Kind::SO2),
+            ('T', 4) => Some(Kind::SE3),
+            ('T', 3) => Some(Kind::SE2),
+            _ => None,
+        }
+    }
+}
+
+/// The frames a name claims, as a tag for a value of `kind`
+/// ([`Claim::frames_for`]).
+pub fn claimed_frames(name: &str, kind: &Kind) -> Frames {
+    if matches!(kind, Kind::Scalar) {
+        return Frames::None;
+    }
+    Claim::of(name).frames_for(kind)
 }
 
 /// The book's letter of a name, when the name is one of the book's names
@@ -52,16 +120,7 @@ fn book_letter(name: &str) -> Option<char> {
 /// or `B` a screw axis, `F` a wrench (§3.3.2, §3.4) — for the book's names
 /// only ([`book_letter`]).
 pub fn named_kind(name: &str, kind: &Kind) -> Kind {
-    if *kind == Kind::Vector(Some(6)) {
-        match book_letter(name) {
-            Some('V') => Kind::Twist,
-            Some('S' | 'B') => Kind::Screw,
-            Some('F') => Kind::Wrench,
-            _ => kind.clone(),
-        }
-    } else {
-        kind.clone()
-    }
+    Claim::of(name).vector_kind(kind.clone())
 }
 
 /// The group a rotation or transform name asserts for a square matrix of
@@ -71,22 +130,7 @@ pub fn named_kind(name: &str, kind: &Kind) -> Kind {
 /// rotation bound to `T_bc` stays a rotation) — except a planar transform
 /// under a rotation's name, which must be a rotation.
 pub fn named_group(name: &str, kind: &Kind) -> Option<Kind> {
-    let n = match kind {
-        Kind::Matrix(Some(r), Some(c)) if r == c => *r,
-        Kind::SE2 if book_letter(name) == Some('R') => 3,
-        _ => return None,
-    };
-    // The name's frames last: reading them allocates.
-    if !matches!(name_frames(name), NameFrames::Pair(..)) {
-        return None;
-    }
-    match (book_letter(name)?, n) {
-        ('R', 3) => Some(Kind::SO3),
-        ('R', 2) => Some(Kind::SO2),
-        ('T', 4) => Some(Kind::SE3),
-        ('T', 3) => Some(Kind::SE2),
-        _ => None,
-    }
+    Claim::of(name).group(kind)
 }
 
 /// A binding that succeeded, with a warning when the name renames a moved
@@ -94,42 +138,67 @@ pub fn named_group(name: &str, kind: &Kind) -> Option<Kind> {
 #[derive(Debug, Clone)]
 pub struct Bound {
     pub ty: Ty,
-    pub warning: Option<RuleError>,
+    pub warning: Option<Box<RuleError>>,
 }
 
 /// The type a binding `name = value` gets, or the frame error.
-pub fn bind(name: &str, ty: &Ty) -> Result<Bound, RuleError> {
-    let kind = named_kind(name, &ty.kind);
-    let kind = named_group(name, &kind).unwrap_or(kind);
-    if kind == Kind::Scalar {
+pub fn bind(name: &str, ty: &Ty) -> Result<Bound, Box<RuleError>> {
+    bind_claimed(name, &Claim::of(name), ty.clone()).map_err(|r| r.error)
+}
+
+/// A binding refused: the frame error, and the type the name gives the
+/// value when frames are not checked (its kind, the frames it claims).
+#[derive(Debug, Clone)]
+pub struct Refused {
+    pub error: Box<RuleError>,
+    pub ty: Ty,
+}
+
+/// [`bind`] with the name's [`Claim`] already read, taking the type.
+pub fn bind_claimed(name: &str, claim: &Claim, ty: Ty) -> Result<Bound, Refused> {
+    let kind = claim.kind_for(ty.kind);
+    if matches!(kind, Kind::Scalar) {
         return Ok(Bound {
             ty: Ty::new(kind, Frames::None),
             warning: None,
         });
     }
-    let claim = claimed_frames(name, &kind);
+    let claim = claim.frames_for(&kind);
     let mut warning = None;
-    let frames = match (&claim, &ty.frames) {
-        (Frames::None, f) => f.clone(),
-        (c, Frames::None) => c.clone(),
+    let frames = match (claim, ty.frames) {
+        (Frames::None, f) => f,
+        (c, Frames::None) => c,
         (Frames::Pair(x, y), Frames::Pair(a, b)) if x == a && (y == b || b.is_moved()) => {
             if y.name == b.name && y.moved == 0 && b.moved > 0 {
-                warning = Some(renamed_moved_frame(name, &ty.frames, b, y));
+                warning = Some(Box::new(renamed_moved_frame(name, &ty.frames, &b, &y)));
             }
-            claim.clone()
+            claim
         }
         (Frames::Pair(x, y), Frames::Disp(a)) if x == a => {
             if y.name == a.name && y.moved == 0 {
-                warning = Some(renamed_moved_frame(name, &ty.frames, &a.moved(), y));
+                warning = Some(Box::new(renamed_moved_frame(
+                    name,
+                    &ty.frames,
+                    &a.moved(),
+                    &y,
+                )));
             }
-            claim.clone()
+            claim
         }
-        (Frames::One(x), Frames::One(a) | Frames::Disp(a)) if x == a => ty.frames.clone(),
-        _ => return Err(mismatch(name, &claim, &ty.frames)),
+        (Frames::One(x), Frames::One(a) | Frames::Disp(a)) if x == a => ty.frames,
+        _ => {
+            return Err(Refused {
+                error: Box::new(mismatch(name, &claim, &ty.frames)),
+                ty: Ty::new(kind, claim),
+            });
+        }
     };
-    let mut bound = Ty::new(kind, frames);
-    bound.algebra = ty.algebra.clone();
-    bound.moves = ty.moves;
+    let bound = Ty {
+        kind,
+        frames,
+        algebra: ty.algebra,
+        moves: ty.moves,
+    };
     Ok(Bound { ty: bound, warning })
 }
 
@@ -229,6 +298,29 @@ mod tests {
         // A group element keeps its group; a planar transform is no rotation.
         assert_eq!(named_group("T_bc", &Kind::SO3), None);
         assert_eq!(named_group("R_bc", &Kind::SE2), Some(Kind::SO3));
+    }
+
+    #[test]
+    fn a_claim_is_the_letter_and_the_subscript_frames() {
+        let c = Claim::of("T_sb''");
+        assert_eq!(c.letter, Some('T'));
+        let Frames::Pair(s, b) = c.frames else {
+            panic!("{:?}", c.frames)
+        };
+        assert_eq!((s.to_string(), b.to_string()), ("s".into(), "b''".into()));
+        assert_eq!((b.name.as_str(), b.moved, b.written), ("b", 2, 2));
+        // A vector named with two frames is in the outer one; a scalar in none.
+        assert_eq!(c.frames_for(&Kind::Vector(Some(3))), Frames::one("s"));
+        assert_eq!(c.frames_for(&Kind::Scalar), Frames::None);
+        assert_eq!(c.kind_for(Kind::Matrix(Some(4), Some(4))), Kind::SE3);
+        let c = Claim::of("p_{world}");
+        assert_eq!((c.letter, c.frames), (Some('p'), Frames::one("world")));
+        assert_eq!(Claim::of("Sum").letter, None);
+        assert_eq!(Claim::of("theta_1").frames, Frames::None);
+        assert_eq!(
+            Claim::of("V_b").kind_for(Kind::Vector(Some(6))),
+            Kind::Twist
+        );
     }
 
     #[test]

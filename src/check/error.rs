@@ -4,6 +4,7 @@
 
 use super::ty::{Frames, Ty};
 use crate::diagnostics::ErrorKind;
+use crate::syntax::ast::{Expr, ExprKind};
 
 /// Why an operation is refused, with the text for each part of the
 /// diagnostic. `lhs`/`rhs` label the operands, `op` the operator.
@@ -38,11 +39,88 @@ impl RuleError {
     }
 }
 
-/// The source text of the operands, for help lines (`did you mean inv(T_cb)?`).
+/// The operands of a binary operation as written, for help lines
+/// (`did you mean inv(T_cb)?`).
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Operands<'a> {
-    pub lhs: &'a str,
-    pub rhs: &'a str,
+    pub lhs: Operand<'a>,
+    pub rhs: Operand<'a>,
+}
+
+/// An operand as written: what it is, read from the syntax tree
+/// ([`Operand::form`]), and its source text, for printing.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Operand<'a> {
+    /// The operand's source text.
+    pub text: &'a str,
+    expr: Option<&'a Expr>,
+    src: &'a str,
+}
+
+/// What an operand is, as far as help text cares.
+#[derive(Debug, Clone, Copy)]
+pub enum Form<'a> {
+    /// `inv(X)`, with its argument `X`.
+    Inverse(Operand<'a>),
+    /// `Ad(T)` or `Adjoint(T)`, the adjoint map [Ad_T] (Definition 3.20),
+    /// with its argument `T`.
+    Adjoint(Operand<'a>),
+    /// `X.T` (also written `X^T`, `Xᵀ`) or `transpose(X)`, with `X`.
+    Transposed(Operand<'a>),
+    /// A name, `T_sb` or `R`.
+    Name(&'a str),
+    /// Anything else.
+    Other,
+}
+
+impl<'a> Operand<'a> {
+    /// The operand `e` of a source text `src`.
+    pub fn new(e: &'a Expr, src: &'a str) -> Operand<'a> {
+        Operand {
+            text: src.get(e.span.start..e.span.end).unwrap_or(""),
+            expr: Some(e),
+            src,
+        }
+    }
+
+    /// An operand known only by its text (tests).
+    pub fn text(text: &'a str) -> Operand<'a> {
+        Operand {
+            text,
+            expr: None,
+            src: "",
+        }
+    }
+
+    /// What the operand is.
+    pub fn form(&self) -> Form<'a> {
+        let Some(e) = self.expr else {
+            return Form::Other;
+        };
+        let inner = |x: &'a Expr| Operand::new(x, self.src);
+        match &e.kind {
+            ExprKind::Var(name) => Form::Name(name),
+            ExprKind::Call { func, args } => match (func.name.as_str(), args.as_slice()) {
+                ("inv", [x]) => Form::Inverse(inner(x)),
+                ("Ad" | "Adjoint", [x]) => Form::Adjoint(inner(x)),
+                ("transpose", [x]) => Form::Transposed(inner(x)),
+                _ => Form::Other,
+            },
+            ExprKind::Member { base, member } if member.name == "T" => {
+                Form::Transposed(inner(base))
+            }
+            _ => Form::Other,
+        }
+    }
+
+    /// The inverse as help lines write it, without a double inverse:
+    /// `inv(T_ab)` of `T_ab`, `T_ab` of `inv(T_ab)`.
+    pub fn inverse_text(&self) -> String {
+        match self.form() {
+            Form::Inverse(x) => x.text.trim().to_string(),
+            _ => format!("inv({})", self.text.trim()),
+        }
+    }
 }
 
 /// How a frame tag reads in a label: `{b} in {a}`, `in {a}`.
@@ -70,47 +148,51 @@ pub(super) fn same_frame_error(what: &str, l: &Ty, r: &Ty) -> RuleError {
     e
 }
 
-/// `inv(X)` as text, without a double inverse: `inv(inv(T_ab))` is `T_ab`
-/// (help lines write the inverse of what the user typed).
-pub fn inverse_text(x: &str) -> String {
-    let x = x.trim();
-    match x.strip_prefix("inv(").and_then(|s| s.strip_suffix(')')) {
-        Some(inner) if balanced(inner) => inner.trim().to_string(),
-        _ => format!("inv({x})"),
-    }
-}
-
-/// True when every bracket in `s` closes inside it (so `inv(a) * inv(b)`
-/// is not read as `inv( a) * inv(b )`).
-fn balanced(s: &str) -> bool {
-    let mut depth = 0i32;
-    for c in s.chars() {
-        match c {
-            '(' | '[' => depth += 1,
-            ')' | ']' => {
-                depth -= 1;
-                if depth < 0 {
-                    return false;
-                }
-            }
-            _ => {}
-        }
-    }
-    depth == 0
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
     #[test]
     fn inverse_text_drops_a_double_inverse() {
-        assert_eq!(inverse_text("T_ab"), "inv(T_ab)");
-        assert_eq!(inverse_text("inv(T_ab * T_bc)"), "T_ab * T_bc");
-        assert_eq!(inverse_text(" inv(T_ab) "), "T_ab");
+        let inverse = |src: &str| {
+            let stmt = crate::syntax::parse_program(src).remove(0).expect("parses");
+            let crate::syntax::ast::StmtKind::Expr(e) = stmt.kind else {
+                panic!("not an expression: {src}")
+            };
+            Operand::new(&e, src).inverse_text()
+        };
+        assert_eq!(inverse("T_ab"), "inv(T_ab)");
+        assert_eq!(inverse("inv(T_ab * T_bc)"), "T_ab * T_bc");
+        assert_eq!(inverse("inv( T_ab )"), "T_ab");
         assert_eq!(
-            inverse_text("inv(T_ab) * inv(T_bc)"),
+            inverse("inv(T_ab) * inv(T_bc)"),
             "inv(inv(T_ab) * inv(T_bc))"
         );
+        assert_eq!(Operand::text("T_ab").inverse_text(), "inv(T_ab)");
+    }
+
+    #[test]
+    fn an_operand_says_what_it_is_from_the_syntax_tree() {
+        let form = |src: &str| {
+            let stmt = crate::syntax::parse_program(src).remove(0).expect("parses");
+            let crate::syntax::ast::StmtKind::Expr(e) = stmt.kind else {
+                panic!("not an expression: {src}")
+            };
+            match Operand::new(&e, src).form() {
+                Form::Inverse(x) => format!("inverse of {}", x.text),
+                Form::Adjoint(x) => format!("adjoint of {}", x.text),
+                Form::Transposed(x) => format!("transpose of {}", x.text),
+                Form::Name(n) => format!("name {n}"),
+                Form::Other => "other".to_string(),
+            }
+        };
+        assert_eq!(form("Ad(inv(T_ab))"), "adjoint of inv(T_ab)");
+        assert_eq!(form("Adjoint(T_ab)"), "adjoint of T_ab");
+        assert_eq!(form("T_ab.T"), "transpose of T_ab");
+        assert_eq!(form("T_abᵀ"), "transpose of T_ab");
+        assert_eq!(form("transpose(R)"), "transpose of R");
+        assert_eq!(form("T_sb"), "name T_sb");
+        assert_eq!(form("inverse(T_ab)"), "other");
+        assert_eq!(form("T_ab * T_bc"), "other");
     }
 }

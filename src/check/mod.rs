@@ -7,6 +7,7 @@
 pub mod algebra;
 pub mod bind;
 pub mod error;
+pub mod name;
 mod product;
 pub mod rules;
 pub mod ty;

@@ -5,8 +5,8 @@
 //! fix when frames do not cancel. Part of the rule table of [`super::rules`].
 
 use super::algebra::{self, Clash};
-use super::error::{Operands, RuleError, describe, inverse_text};
-use super::ty::{Frame, Frames, Kind, Ty};
+use super::error::{Form, Operand, Operands, RuleError, describe};
+use super::ty::{Algebra, Frame, Frames, Kind, Ty};
 use crate::syntax::ident::{NameFrames, base_name, name_frames, tagged_name};
 
 pub(super) fn dims_agree(a: Option<usize>, b: Option<usize>) -> bool {
@@ -19,13 +19,16 @@ pub(super) fn dims_agree(a: Option<usize>, b: Option<usize>) -> bool {
 /// `l * r` (and juxtaposition): kind and frames.
 pub fn mul(l: &Ty, r: &Ty, ops: Operands) -> Result<Ty, RuleError> {
     // Scalars scale anything and leave frames alone.
-    if l.kind == Kind::Scalar {
+    if matches!(l.kind, Kind::Scalar) {
         return Ok(r.scaled());
     }
-    if r.kind == Kind::Scalar {
+    if matches!(r.kind, Kind::Scalar) {
         return Ok(l.scaled());
     }
-    if l.kind == (Kind::Adjoint { transposed: false }) && r.kind == Kind::Wrench {
+    if matches!(
+        (&l.kind, &r.kind),
+        (Kind::Adjoint { transposed: false }, Kind::Wrench)
+    ) {
         return Err(wrench_through_ad(l, r, ops));
     }
     // A row times a column, uᵀv: an inner product (the power V_bᵀF_b is a
@@ -41,7 +44,7 @@ pub fn mul(l: &Ty, r: &Ty, ops: Operands) -> Result<Ty, RuleError> {
         Err(Clash::Inner(x, y)) => {
             // A displacement in {a} is the map {a}←{a'}: name its frame {a}.
             let x = match &l.frames {
-                Frames::Disp(a) => a.clone(),
+                Frames::Disp(a) => *a,
                 _ => x,
             };
             return Err(inner_mismatch(l, r, &x, &y, ops));
@@ -55,31 +58,19 @@ pub fn mul(l: &Ty, r: &Ty, ops: Operands) -> Result<Ty, RuleError> {
 
 /// What a factor contributes to a product of group elements and one
 /// element of their Lie algebra.
-#[derive(Debug, Clone, PartialEq)]
-enum Content {
-    Group(Kind),
-    Algebra(Kind),
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Content<'a> {
+    Group(&'a Kind),
+    Algebra(Algebra),
     Other,
 }
 
-fn content(t: &Ty) -> Content {
-    match (&t.kind, &t.algebra) {
-        (k, _) if k.is_group() => Content::Group(k.clone()),
-        (k, _) if k.is_algebra() => Content::Algebra(k.clone()),
-        (Kind::Matrix(..), Some(a)) => Content::Algebra(a.clone()),
-        _ => Content::Other,
+fn content(t: &Ty) -> Content<'_> {
+    match (&t.kind, t.algebra) {
+        (k, _) if k.is_group() => Content::Group(k),
+        (Kind::Matrix(..), Some(a)) => Content::Algebra(a),
+        (k, _) => Algebra::of(k).map_or(Content::Other, Content::Algebra),
     }
-}
-
-/// The group whose Lie algebra `alg` is.
-fn group_of(alg: &Kind) -> Option<Kind> {
-    Some(match alg {
-        Kind::So3 => Kind::SO3,
-        Kind::Se3 => Kind::SE3,
-        Kind::So2 => Kind::SO2,
-        Kind::Se2 => Kind::SE2,
-        _ => return None,
-    })
 }
 
 /// g·X, X·g and g·X·g⁻¹: a plain matrix that remembers the algebra of X
@@ -95,7 +86,7 @@ fn conjugation(l: &Ty, r: &Ty, mut out: Ty) -> Ty {
     }
     let alg = match (content(l), content(r)) {
         (Content::Group(g), Content::Algebra(a)) | (Content::Algebra(a), Content::Group(g))
-            if group_of(&a).as_ref() == Some(&g) =>
+            if a.group() == *g =>
         {
             a
         }
@@ -108,21 +99,16 @@ fn conjugation(l: &Ty, r: &Ty, mut out: Ty) -> Ty {
 /// `T_ab.T` used as a factor: the transpose of a transform is not its
 /// inverse (that holds for rotations only, Prop. 3.1).
 fn transposed_factor(l: &Ty, r: &Ty, left: bool, ops: Operands) -> RuleError {
-    let (t, text) = if left { (l, ops.lhs) } else { (r, ops.rhs) };
-    let text = text.trim();
-    let base = ["ᵀ", "^T", "^{T}", ".T"]
-        .iter()
-        .find_map(|suf| text.strip_suffix(suf))
-        .or_else(|| {
-            text.strip_prefix("transpose(")
-                .and_then(|s| s.strip_suffix(')'))
-        })
-        .unwrap_or(text)
-        .trim();
+    let (t, operand) = if left { (l, ops.lhs) } else { (r, ops.rhs) };
+    let text = operand.text.trim();
+    let base = match operand.form() {
+        Form::Transposed(x) => Some(x),
+        _ => None,
+    };
     let (name, frames) = match &t.frames {
         // The transpose of {outer}←{inner}; its inverse is {inner}←{outer}.
         Frames::Transposed(outer, inner) => (
-            result_name_of(base, inner, outer),
+            result_name_of(base.map_or(text, |x| x.text.trim()), inner, outer),
             format!("{{{outer}}}←{{{inner}}} is not the map {{{inner}}}←{{{outer}}}"),
         ),
         _ => (String::new(), String::new()),
@@ -134,10 +120,9 @@ fn transposed_factor(l: &Ty, r: &Ty, left: bool, ops: Operands) -> RuleError {
     e.rhs = describe(&r.frames);
     // The fix names the inverse of what was transposed, when the operand
     // is written as a transpose (`T_ab.T`, `T_ab^T`, `transpose(T_ab)`).
-    let fix = if base == text {
-        "inv(T) for the inverse of a transform T".to_string()
-    } else {
-        format!("{}{name}", inverse_text(base))
+    let fix = match base {
+        None => "inv(T) for the inverse of a transform T".to_string(),
+        Some(x) => format!("{}{name}", x.inverse_text()),
     };
     e.help = Some(format!(
         "R⁻¹ = Rᵀ for a rotation (Prop. 3.1), but T⁻¹ = [Rᵀ, −Rᵀp; 0, 1] (Prop. 3.10): write {fix}; the transpose of {frames}"
@@ -147,7 +132,7 @@ fn transposed_factor(l: &Ty, r: &Ty, left: bool, ops: Operands) -> RuleError {
 
 /// ` = T_ba` when `base` is a framed name like `T_ab`, else empty.
 fn result_name_of(base: &str, outer: &Frame, inner: &Frame) -> String {
-    match operand_base(base) {
+    match framed_base(base) {
         Some(letter) if name_frames(base) != NameFrames::None => format!(
             " = {}",
             tagged_name(letter, &[&outer.to_string(), &inner.to_string()])
@@ -176,7 +161,10 @@ fn mul_kind(l: &Kind, r: &Kind, ops: Operands) -> Result<Kind, RuleError> {
                 Twist | Screw => Err(RuleError::frame("[Ad_T]ᵀ acts on wrenches, not on twists")
                     .with_help(format!(
                         "twists change frame with the adjoint itself, V_s = [Ad_T_sb] V_b (3.84); write {} without .T",
-                        ops.lhs.trim().trim_end_matches(".T")
+                        match ops.lhs.form() {
+                            Form::Transposed(x) => x.text.trim(),
+                            _ => ops.lhs.text.trim(),
+                        }
                     ))),
                 _ if dims_agree(n, Some(6)) => Ok(Wrench),
                 _ => Err(shape_error(l, r)),
@@ -188,7 +176,7 @@ fn mul_kind(l: &Kind, r: &Kind, ops: Operands) -> Result<Kind, RuleError> {
             SE2 | Se2 if n == Some(2) => Ok(Vector(Some(2))),
             // Two column vectors: the student meant a dot or cross product.
             _ if l.is_vector() && !dims_agree(n, Some(1)) => {
-                let (u, v) = (ops.lhs.trim(), ops.rhs.trim());
+                let (u, v) = (ops.lhs.text.trim(), ops.rhs.text.trim());
                 Err(shape_error(l, r).with_help(format!(
                     "for two vectors write dot({u}, {v}) or {u}.T * {v} (a number), or cross({u}, {v}); {u} * {v}.T is the outer product"
                 )))
@@ -263,22 +251,23 @@ fn dim(d: Option<usize>) -> String {
 /// expresses the given wrench in the adjoint's outer frame, which is what
 /// `Ad(T_ab) * F_b` was reaching for, and the one that goes the other way.
 fn wrench_through_ad(l: &Ty, r: &Ty, ops: Operands) -> RuleError {
-    let t = ops
-        .lhs
-        .trim()
-        .strip_prefix("Ad(")
-        .or_else(|| ops.lhs.trim().strip_prefix("Adjoint("))
-        .and_then(|s| s.strip_suffix(')'))
-        .unwrap_or("T");
-    let f = ops.rhs.trim();
+    let t = match ops.lhs.form() {
+        Form::Adjoint(x) => x,
+        _ => Operand::text("T"),
+    };
+    let f = ops.rhs.text.trim();
     let rule =
         "Prop. 3.17: wrenches change frame with the transposed adjoint, F_b = [Ad_T_ab]ᵀ F_a";
     let help = match (&l.frames, &r.frames) {
         (Frames::Pair(a, b), Frames::One(c)) if b == c => format!(
-            "{rule}; {f} in {{{a}}} is Ad({}).T * {f}, and a wrench in {{{a}}} comes to {{{b}}} by Ad({t}).T * F_{a}",
-            inverse_text(t)
+            "{rule}; {f} in {{{a}}} is Ad({}).T * {f}, and a wrench in {{{a}}} comes to {{{b}}} by Ad({}).T * F_{a}",
+            t.inverse_text(),
+            t.text.trim()
         ),
-        _ => format!("{rule}; write Ad({t}).T * F for F in the outer frame of {t}"),
+        _ => format!(
+            "{rule}; write Ad({t}).T * F for F in the outer frame of {t}",
+            t = t.text.trim()
+        ),
     };
     RuleError::frame("a wrench does not change frame through [Ad_T]").with_help(help)
 }
@@ -299,11 +288,11 @@ fn inner_mismatch(l: &Ty, r: &Ty, a_in: &Frame, b_out: &Frame, ops: Operands) ->
 /// A plain name (no frame subscript) that carries frames from what it was
 /// bound to (`R = R_sb`): the hint to drop them when it is meant as an
 /// operator (`R_sa * R`, exercise 3.1(e)).
-fn plain_name_hint(op: &str, t: &Ty) -> Option<String> {
-    let op = op.trim();
-    let is_name = op.chars().all(|c| c.is_alphanumeric() || c == '_')
-        && op.chars().next().is_some_and(char::is_alphabetic);
-    (is_name && name_frames(op) == NameFrames::None && t.frames != Frames::None).then(|| {
+fn plain_name_hint(op: Operand, t: &Ty) -> Option<String> {
+    let Form::Name(op) = op.form() else {
+        return None;
+    };
+    (name_frames(op) == NameFrames::None && t.frames != Frames::None).then(|| {
         format!(
             "; {op} keeps the frames {} of the value bound to it: untag({op}) uses it as a plain operator",
             t.frames
@@ -313,13 +302,17 @@ fn plain_name_hint(op: &str, t: &Ty) -> Option<String> {
 
 /// The letter of a framed name written as an operand, `T` of `T_sb` or
 /// `inv(T_sb)`; None for any other expression.
-fn operand_base(op: &str) -> Option<&str> {
-    let op = op.trim();
-    let name = op
-        .strip_prefix("inv(")
-        .and_then(|s| s.strip_suffix(')'))
-        .unwrap_or(op)
-        .trim();
+fn operand_base(op: Operand<'_>) -> Option<&str> {
+    let name = match op.form() {
+        Form::Inverse(x) => x.text,
+        _ => op.text,
+    }
+    .trim();
+    framed_base(name)
+}
+
+/// The letter of a framed name, `T` of `T_sb`.
+fn framed_base(name: &str) -> Option<&str> {
     (name_frames(name) != NameFrames::None).then(|| base_name(name))
 }
 
@@ -339,7 +332,7 @@ fn product_help(l: &Ty, r: &Ty, ops: Operands) -> String {
     match (&l.frames, &r.frames) {
         (Frames::Pair(a, b), Frames::Pair(c, d)) => {
             if b == d && a != c {
-                let (inverse, name) = (inverse_text(ops.rhs), result_name(ops, d, c));
+                let (inverse, name) = (ops.rhs.inverse_text(), result_name(ops, d, c));
                 if inverse == name {
                     format!("{rule}; did you mean {name}?")
                 } else {
@@ -349,16 +342,16 @@ fn product_help(l: &Ty, r: &Ty, ops: Operands) -> String {
                 // T_sb * T_sc: both from {s}.
                 format!(
                     "{rule}; both start in {{{a}}}: the body-frame form is {} * {} = {}{}",
-                    inverse_text(ops.lhs),
-                    ops.rhs.trim(),
+                    ops.lhs.inverse_text(),
+                    ops.rhs.text.trim(),
                     result_name(ops, b, d),
                     displacement_hint(ops)
                 )
             } else if d == a {
                 format!(
                     "{rule}; the other order cancels: {} * {} = {}{}",
-                    ops.rhs.trim(),
-                    ops.lhs.trim(),
+                    ops.rhs.text.trim(),
+                    ops.lhs.text.trim(),
                     result_name(ops, c, b),
                     displacement_hint(ops)
                 )
@@ -368,20 +361,20 @@ fn product_help(l: &Ty, r: &Ty, ops: Operands) -> String {
         }
         (Frames::Pair(_, b), Frames::One(c)) => format!(
             "{} takes coordinates in {{{b}}}, but {} is in {{{c}}}; express it in {{{b}}} first",
-            ops.lhs.trim(),
+            ops.lhs.text.trim(),
             if r.kind.is_vector() {
                 "the vector".to_string()
             } else {
-                format!("{} ({})", ops.rhs.trim(), r.kind.a())
+                format!("{} ({})", ops.rhs.text.trim(), r.kind.a())
             }
         ),
         (Frames::Disp(a), Frames::Pair(c, _)) => format!(
             "a displacement in {{{a}}} premultiplies a transform from {{{a}}} (X_{a}?); {} starts in {{{c}}}",
-            ops.rhs.trim()
+            ops.rhs.text.trim()
         ),
         (Frames::Pair(_, b), Frames::Disp(d)) => format!(
             "a displacement in {{{d}}} postmultiplies a transform into {{{d}}} (X_?{d}); {} ends in {{{b}}}",
-            ops.lhs.trim()
+            ops.lhs.text.trim()
         ),
         _ => rule.to_string(),
     }
@@ -389,13 +382,13 @@ fn product_help(l: &Ty, r: &Ty, ops: Operands) -> String {
 
 /// For `T_sc * inv(T_sb)`: name the space-frame displacement.
 fn displacement_hint(ops: Operands) -> String {
-    let r = ops.rhs.trim();
-    if let Some(inner) = r.strip_prefix("inv(").and_then(|s| s.strip_suffix(')')) {
+    if let Form::Inverse(x) = ops.rhs.form() {
+        let inner = x.text;
         format!(
             "; the displacement in the fixed frame taking {inner} to {} is displacement({inner}, {}) = {} * inv({inner})",
-            ops.lhs.trim(),
-            ops.lhs.trim(),
-            ops.lhs.trim()
+            ops.lhs.text.trim(),
+            ops.lhs.text.trim(),
+            ops.lhs.text.trim()
         )
     } else {
         String::new()
@@ -426,7 +419,7 @@ mod tests {
         // g·X alone is a plain matrix that remembers its algebra.
         let gx = mul(&g, &x, ops).unwrap();
         assert_eq!(gx.kind, Kind::Matrix(Some(4), Some(4)));
-        assert_eq!(gx.algebra, Some(Kind::Se3));
+        assert_eq!(gx.algebra, Some(Algebra::Se3));
         // X·X is no longer anything of the algebra.
         let xx = mul(&x, &x, ops).unwrap();
         let gxxg = mul(&mul(&g, &xx, ops).unwrap(), &gi, ops).unwrap();

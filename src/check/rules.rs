@@ -38,8 +38,8 @@ pub fn scaled_kind(kind: &Kind) -> Kind {
 /// Frames shared by a sum, `cross` or `dot`: same frame, or one untagged.
 pub fn same_frames(what: &str, l: &Ty, r: &Ty) -> Result<Frames, RuleError> {
     match (&l.frames, &r.frames) {
-        (Frames::None, f) | (f, Frames::None) => Ok(f.clone()),
-        (a, b) if a == b => Ok(a.clone()),
+        (Frames::None, f) | (f, Frames::None) => Ok(*f),
+        (a, b) if a == b => Ok(*a),
         _ => Err(same_frame_error(what, l, r)),
     }
 }
@@ -167,14 +167,14 @@ pub fn transpose(t: &Ty) -> Result<Ty, RuleError> {
         Kind::SO3 | Kind::SO2 | Kind::Adjoint { .. } | Kind::Unknown
     );
     let frames = match &t.frames {
-        _ if t.kind.is_vector() => t.frames.clone(),
+        _ if t.kind.is_vector() => t.frames,
         Frames::Pair(a, b)
             if !inverse_is_transpose && !matches!(kind, Kind::Matrix(Some(1), _)) =>
         {
-            Frames::Transposed(a.clone(), b.clone())
+            Frames::Transposed(*a, *b)
         }
-        Frames::Disp(a) if !inverse_is_transpose => Frames::Transposed(a.clone(), a.moved()),
-        Frames::Transposed(a, b) => Frames::Pair(a.clone(), b.clone()),
+        Frames::Disp(a) if !inverse_is_transpose => Frames::Transposed(*a, a.moved()),
+        Frames::Transposed(a, b) => Frames::Pair(*a, *b),
         f => f.swapped(),
     };
     let mut out = Ty::new(kind, frames);
@@ -191,7 +191,7 @@ pub fn pow(base: &Ty, exp: &Ty, literal: Option<f64>) -> Result<Ty, RuleError> {
         )));
     }
     if base.kind.maybe_scalar() && base.kind == Kind::Scalar {
-        return Ok(Ty::new(Kind::Scalar, base.frames.clone()));
+        return Ok(Ty::new(Kind::Scalar, base.frames));
     }
     let square = match base.kind.shape() {
         Some((r, c)) => dims_agree(r, c),
@@ -270,27 +270,25 @@ fn plain_matrix(k: &Kind) -> Kind {
 pub fn member(t: &Ty, name: &str) -> Result<Ty, RuleError> {
     use Kind::*;
     let outer = || match t.frames.outer() {
-        Some(a) => Frames::One(a.clone()),
+        Some(a) => Frames::One(*a),
         None => Frames::None,
     };
     let v3 = Vector(Some(3));
     let is6 = |k: &Kind| matches!(k, Twist | Screw | Wrench | Unknown) || k.vec_len() == Some(6);
     match (name, &t.kind) {
         ("T", _) => transpose(t),
-        ("R", SE3 | Matrix(Some(4), Some(4))) => Ok(Ty::new(SO3, t.frames.clone())),
-        ("R", Matrix(None, _) | Matrix(_, None)) => Ok(Ty::new(Unknown, t.frames.clone())),
+        ("R", SE3 | Matrix(Some(4), Some(4))) => Ok(Ty::new(SO3, t.frames)),
+        ("R", Matrix(None, _) | Matrix(_, None)) => Ok(Ty::new(Unknown, t.frames)),
         ("p", Matrix(Some(4), Some(4))) => Ok(Ty::new(v3.clone(), outer())),
         ("p", Matrix(None, _) | Matrix(_, None)) => Ok(Ty::new(Unknown, outer())),
-        ("R", SE2) => Ok(Ty::new(SO2, t.frames.clone())),
-        ("R", Unknown) => Ok(Ty::new(Unknown, t.frames.clone())),
+        ("R", SE2) => Ok(Ty::new(SO2, t.frames)),
+        ("R", Unknown) => Ok(Ty::new(Unknown, t.frames)),
         ("p", SE3) => Ok(Ty::new(v3, outer())),
         ("p", SE2) => Ok(Ty::new(Vector(Some(2)), outer())),
         ("p", Unknown) => Ok(Ty::new(Unknown, outer())),
-        ("w" | "v", Se3) => Ok(Ty::new(v3, t.frames.clone())),
-        ("w" | "v", k) if is6(k) && *k != Wrench => Ok(Ty::new(v3, t.frames.clone())),
-        ("m" | "f", k) if is6(k) && !matches!(k, Twist | Screw) => {
-            Ok(Ty::new(v3, t.frames.clone()))
-        }
+        ("w" | "v", Se3) => Ok(Ty::new(v3, t.frames)),
+        ("w" | "v", k) if is6(k) && *k != Wrench => Ok(Ty::new(v3, t.frames)),
+        ("m" | "f", k) if is6(k) && !matches!(k, Twist | Screw) => Ok(Ty::new(v3, t.frames)),
         _ => {
             let known = match &t.kind {
                 SE3 | SE2 => ".R .p .T",
@@ -313,7 +311,8 @@ pub fn member(t: &Ty, name: &str) -> Result<Ty, RuleError> {
 /// vector of a map between two frames (`se3ToVec(T_ab * [V_b])`) is a frame
 /// error.
 pub fn settle(t: &Ty, name: &str) -> Result<Ty, RuleError> {
-    let settled = settled(t);
+    let mut settled = t.clone();
+    settle_in_place(&mut settled);
     if let (true, Frames::Pair(a, b)) = (one_frame_kind(&t.kind), &settled.frames) {
         let mut e = RuleError::frame(format!(
             "{name} gives {}, a quantity in one frame, but its argument maps {{{b}}} to {{{a}}}",
@@ -337,26 +336,33 @@ fn one_frame_kind(k: &Kind) -> bool {
 /// frame and a moved copy of it (`exp([S_a] θ) [V_a] exp(−[S_a] θ)`, whose
 /// two displacements chasles cannot tell apart) is a quantity in that frame.
 pub fn settled(t: &Ty) -> Ty {
+    let mut t = t.clone();
+    settle_in_place(&mut t);
+    t
+}
+
+/// [`settled`], in place (no copy of the type).
+pub fn settle_in_place(t: &mut Ty) {
     // g·X·g⁻¹ whose frames close on one frame is back in the Lie algebra
     // (3.77, Prop. 3.5): known from the symbols (with numbers, they decide).
-    if let (Some(alg), Frames::One(_), Kind::Matrix(..)) = (&t.algebra, &t.frames, &t.kind) {
-        return Ty {
-            kind: alg.clone(),
-            algebra: None,
-            ..t.clone()
-        };
+    if let (Some(alg), Frames::One(_), Kind::Matrix(..)) = (t.algebra, &t.frames, &t.kind) {
+        t.kind = alg.kind();
+        t.algebra = None;
+        return;
     }
-    let frames = match t.frames.displacement_frame() {
-        _ if t.kind == Kind::Scalar => Frames::None,
-        Some(a) if one_frame_kind(&t.kind) => Frames::One(a.clone()),
-        _ => match &t.frames {
-            Frames::Pair(a, b) if one_frame_kind(&t.kind) && a == b => Frames::One(a.clone()),
-            f => f.clone(),
-        },
-    };
-    Ty {
-        frames,
-        ..t.clone()
+    if matches!(t.kind, Kind::Scalar) {
+        t.frames = Frames::None;
+        return;
+    }
+    if !one_frame_kind(&t.kind) {
+        return;
+    }
+    if let Some(a) = t.frames.displacement_frame() {
+        t.frames = Frames::One(*a);
+    } else if let Frames::Pair(a, b) = t.frames
+        && a == b
+    {
+        t.frames = Frames::One(a);
     }
 }
 

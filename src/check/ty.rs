@@ -3,6 +3,8 @@
 
 use std::fmt;
 
+pub use super::name::Name;
+
 /// What kind of mathematical object a value is (LANGUAGE.md §5). `None`
 /// dimensions are unknown until evaluation (e.g. `zeros(n, m)`).
 #[derive(Debug, Clone, PartialEq)]
@@ -238,14 +240,15 @@ impl fmt::Display for Kind {
 /// Printing: a frame is written as its name wrote it (`b''` of `T_sb''`),
 /// with one more prime once it has moved further; a frame no name wrote is
 /// printed with one prime however often it moved ({b'} is "{b} moved").
-#[derive(Debug, Clone, Eq)]
+#[derive(Debug, Clone, Copy, Eq)]
 pub struct Frame {
     /// The name without its primes.
-    pub name: String,
+    pub name: Name,
     /// The number of displacements applied (primes).
     pub moved: u32,
-    /// The name's spelling (`b''`) when a name with primes wrote it.
-    pub written: Option<String>,
+    /// The primes of the name that wrote it (2 for `b''` of `T_sb''`); 0
+    /// when no name with primes wrote it.
+    pub written: u32,
 }
 
 impl PartialEq for Frame {
@@ -265,22 +268,21 @@ impl std::hash::Hash for Frame {
 
 impl Frame {
     /// The frame a name's subscript names: `b''` is {b} moved twice.
-    pub fn named(name: impl Into<String>) -> Frame {
-        let name: String = name.into();
+    pub fn named(name: &str) -> Frame {
         let base = name.trim_end_matches('\'');
         let moved = (name.len() - base.len()) as u32;
         Frame {
-            name: base.to_string(),
+            name: Name::new(base),
             moved,
-            written: (moved > 0).then(|| name.clone()),
+            written: moved,
         }
     }
     /// {name} moved `moved` times.
-    pub fn at(name: impl Into<String>, moved: u32) -> Frame {
+    pub fn at(name: impl Into<Name>, moved: u32) -> Frame {
         Frame {
             name: name.into(),
             moved,
-            written: None,
+            written: 0,
         }
     }
     /// The frame after one more displacement.
@@ -291,14 +293,14 @@ impl Frame {
     pub fn lifted(&self, k: u32) -> Frame {
         Frame {
             moved: self.moved.saturating_add(k),
-            ..self.clone()
+            ..*self
         }
     }
     /// The frame one displacement earlier (`moved` must be positive).
     pub fn lowered(&self) -> Frame {
         Frame {
             moved: self.moved.saturating_sub(1),
-            ..self.clone()
+            ..*self
         }
     }
     /// True when this frame has been displaced (printed with a prime).
@@ -309,25 +311,23 @@ impl Frame {
 
 impl fmt::Display for Frame {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        if let Some(w) = &self.written {
-            let at = (w.len() - w.trim_end_matches('\'').len()) as u32;
-            if self.moved == at {
-                return write!(f, "{w}");
-            }
-            if self.moved > at {
-                return write!(f, "{w}'");
-            }
-        }
-        write!(f, "{}", self.name)?;
-        if self.moved > 0 {
-            write!(f, "'")?;
+        let name = self.name.as_str();
+        // As the name wrote it, with one more prime once moved further.
+        let primes = match self.written {
+            at if at > 0 && self.moved == at => at,
+            at if at > 0 && self.moved > at => at + 1,
+            _ => u32::from(self.moved > 0),
+        };
+        f.write_str(name)?;
+        for _ in 0..primes {
+            f.write_str("'")?;
         }
         Ok(())
     }
 }
 
 /// The frame tag of a value (LANGUAGE.md §6).
-#[derive(Debug, Clone, PartialEq, Eq, Default)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Frames {
     /// Untagged: matches anything.
     #[default]
@@ -354,8 +354,8 @@ impl Frames {
     pub fn part(&self, k: &Kind) -> Frames {
         match (self, k) {
             (_, Kind::Scalar) => Frames::None,
-            (Frames::Pair(a, _), k) if k.is_vector() => Frames::One(a.clone()),
-            (f, _) => f.clone(),
+            (Frames::Pair(a, _), k) if k.is_vector() => Frames::One(*a),
+            (f, _) => *f,
         }
     }
 
@@ -400,9 +400,9 @@ impl Frames {
     /// `inv(X_ab)` = X_ba; a displacement's inverse is a displacement.
     pub fn swapped(&self) -> Frames {
         match self {
-            Frames::Pair(a, b) => Frames::Pair(b.clone(), a.clone()),
-            Frames::Transposed(a, b) => Frames::Transposed(b.clone(), a.clone()),
-            other => other.clone(),
+            Frames::Pair(a, b) => Frames::Pair(*b, *a),
+            Frames::Transposed(a, b) => Frames::Transposed(*b, *a),
+            other => *other,
         }
     }
 }
@@ -423,6 +423,51 @@ impl fmt::Display for Frames {
     }
 }
 
+/// A Lie algebra (§3.2.3, §3.3.2): the content a product g·X of a group
+/// element and an element X of its algebra remembers ([`Ty::algebra`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Algebra {
+    /// so(3): skew-symmetric `[ω]` (§3.2.3.1).
+    So3,
+    /// se(3): twist matrices `[V]` (§3.3.2).
+    Se3,
+    /// so(2): the planar `[ω]`.
+    So2,
+    /// se(2): the planar `[V]`.
+    Se2,
+}
+
+impl Algebra {
+    /// The algebra a kind is an element of: so(3) of [`Kind::So3`].
+    pub fn of(kind: &Kind) -> Option<Algebra> {
+        Some(match kind {
+            Kind::So3 => Algebra::So3,
+            Kind::Se3 => Algebra::Se3,
+            Kind::So2 => Algebra::So2,
+            Kind::Se2 => Algebra::Se2,
+            _ => return None,
+        })
+    }
+    /// The kind of the algebra's elements.
+    pub fn kind(self) -> Kind {
+        match self {
+            Algebra::So3 => Kind::So3,
+            Algebra::Se3 => Kind::Se3,
+            Algebra::So2 => Kind::So2,
+            Algebra::Se2 => Kind::Se2,
+        }
+    }
+    /// The group whose Lie algebra this is: SO(3) for so(3).
+    pub fn group(self) -> Kind {
+        match self {
+            Algebra::So3 => Kind::SO3,
+            Algebra::Se3 => Kind::SE3,
+            Algebra::So2 => Kind::SO2,
+            Algebra::Se2 => Kind::SE2,
+        }
+    }
+}
+
 /// The checker's knowledge of an expression: kind and frames.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Ty {
@@ -432,7 +477,7 @@ pub struct Ty {
     /// Lie algebra, g·X or X·g (`T_sb [V_b]` = Ṫ_sb, (3.75)), the algebra:
     /// conjugation g·X·g⁻¹ lands back in it when the frames close on one
     /// (`[V_s] = T [V_b] T⁻¹`, (3.77); Prop. 3.5). Known without numbers only.
-    pub algebra: Option<Kind>,
+    pub algebra: Option<Algebra>,
     /// For an untagged operator that is a product of untagged operators,
     /// how many displacements it stands for when not the usual one (an
     /// untagged rotation or transform is one displacement of the frame it
@@ -462,7 +507,9 @@ impl Ty {
     pub fn scaled(&self) -> Ty {
         Ty {
             kind: self.kind.scaled(),
-            ..self.clone()
+            frames: self.frames,
+            algebra: self.algebra,
+            moves: self.moves,
         }
     }
 }
@@ -475,5 +522,29 @@ impl fmt::Display for Ty {
         } else {
             write!(f, "{} {}", self.kind, self.frames)
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_frame_prints_as_its_name_wrote_it() {
+        let b2 = Frame::named("b''");
+        assert_eq!((b2.name.as_str(), b2.moved, b2.written), ("b", 2, 2));
+        assert_eq!(b2.to_string(), "b''");
+        // Moved further: one more prime; a frame no name wrote: one prime.
+        assert_eq!(b2.moved().to_string(), "b'''");
+        assert_eq!(Frame::at("b", 2).to_string(), "b'");
+        assert_eq!(b2.lowered().to_string(), "b'");
+        assert_eq!(Frame::named("world").to_string(), "world");
+        // Equal by name and moves, whatever wrote them.
+        assert_eq!(b2, Frame::at("b", 2));
+        assert_ne!(b2, Frame::at("b", 1));
+        let f = Frames::Pair(Frame::named("a"), b2);
+        let g = f;
+        assert_eq!(f.swapped().to_string(), "{b''}←{a}");
+        assert_eq!(g.to_list(), vec!["a".to_string(), "b''".to_string()]);
     }
 }

@@ -2,13 +2,12 @@
 //! tuples `(1, 2, 3)`, brackets `[w]` and block matrices `[R, p; 0, 0, 0, 1]`
 //! (LANGUAGE.md §4), and `mech < ... >` literals (chapter 2).
 
+use super::apply::{self, Hints, Op};
 use super::expr::refine;
 use super::interp::{Interp, Typed};
-use super::ops::{self, Sel};
-use super::substitute::to_sym;
-use super::value::Sym;
+use super::ops::Sel;
 use super::value::Value;
-use crate::check::ty::{Frames, Kind, Ty};
+use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
 use crate::syntax::ast::{Expr, IndexArg, Span};
 
@@ -50,34 +49,12 @@ impl Interp<'_> {
         if let Kind::List(_) = &t.ty.kind {
             return self.list_item(t, &sels, span);
         }
-        let outer = match t.ty.frames.outer() {
-            Some(a) => Frames::One(a.clone()),
-            None => Frames::None,
-        };
-        let ty = match (&t.ty.kind, sels.as_slice()) {
-            (Kind::Tuple(ks), [Sel::At(i)])
-                if i.fract() == 0.0 && *i >= 1.0 && (*i as usize) <= ks.len() =>
-            {
-                Ty::plain(ks[*i as usize - 1].clone())
-            }
-            (Kind::Tuple(_), _) => Ty::plain(Kind::Unknown),
-            (k, _) if k.shape().is_none() => {
-                return Err(Diagnostic::error(
-                    ErrorKind::Type,
-                    span,
-                    format!("cannot index a {k}"),
-                ));
-            }
-            (_, [Sel::All, Sel::At(_)]) => Ty::new(Kind::Vector(None), outer),
-            (_, [Sel::At(_), Sel::All]) => Ty::plain(Kind::Matrix(Some(1), None)),
-            _ => Ty::scalar(),
-        };
-        let val = match t.val {
-            Some(Value::Sym(s)) => Some(Value::Sym(Sym::Index(Box::new(s), sel_syms(&sels)))),
-            Some(v @ Value::Formula { .. }) => {
-                Some(super::formula::index(&v, &sels).map_err(|m| self.domain(span, m))?)
-            }
-            Some(v) => Some(ops::index(&v, &sels).map_err(|m| self.domain(span, m))?),
+        let op = Op::Index(&sels);
+        let ty = op
+            .rule(&[&t.ty], Hints::default())
+            .map_err(|e| Diagnostic::error(ErrorKind::Type, span, e.message))?;
+        let val = match &t.val {
+            Some(v) => Some(op.apply(&[v], &ty.kind).map_err(|m| self.domain(span, m))?),
             None => None,
         };
         Ok(Typed {
@@ -86,7 +63,7 @@ impl Interp<'_> {
         })
     }
 
-    pub(super) fn paren(&mut self, items: &[Expr], _span: Span) -> Result<Typed, Diagnostic> {
+    pub(super) fn paren(&mut self, items: &[Expr], span: Span) -> Result<Typed, Diagnostic> {
         let mut ts = Vec::with_capacity(items.len());
         for i in items {
             ts.push(self.expr(i)?);
@@ -96,38 +73,17 @@ impl Interp<'_> {
             .all(|t| t.ty.kind.maybe_scalar() && t.ty.kind == Kind::Scalar);
         if all_scalar {
             let ty = Ty::plain(Kind::Vector(Some(ts.len())));
-            let vals: Option<Vec<Value>> = ts.iter().map(|t| t.val.clone()).collect();
-            let val = if self.running() {
-                if let Some(v) = vals.as_ref().and_then(|vs| {
-                    let refs: Vec<&Value> = vs.iter().collect();
-                    super::formula::applies(&refs)
-                        .then(|| super::formula::vector(vs))
-                        .flatten()
-                }) {
-                    Some(v)
-                } else if ts
-                    .iter()
-                    .any(|t| t.val.as_ref().is_some_and(Value::is_symbolic))
-                {
-                    let parts = ts
-                        .iter()
-                        .map(|t| t.val.as_ref().map_or(Sym::Identity, to_sym))
-                        .collect();
-                    Some(Value::Sym(Sym::Vector(parts)))
-                } else {
-                    let xs: Vec<f64> = ts
-                        .iter()
-                        .map(|t| {
-                            t.val
-                                .as_ref()
-                                .and_then(Value::as_scalar)
-                                .unwrap_or(f64::NAN)
-                        })
-                        .collect();
-                    Some(Value::vector(Kind::Vector(Some(xs.len())), &xs))
-                }
-            } else {
-                None
+            let val = match ts
+                .iter()
+                .map(|t| t.val.as_ref())
+                .collect::<Option<Vec<_>>>()
+            {
+                Some(refs) if self.running() => Some(
+                    Op::Vector
+                        .apply(&refs, &ty.kind)
+                        .map_err(|m| self.domain(span, m))?,
+                ),
+                _ => None,
             };
             return Ok(Typed { ty, val });
         }
@@ -164,55 +120,9 @@ impl Interp<'_> {
             }
             trows.push(tr);
         }
-        let ty = bracket_type(&trows);
+        let ty = apply::block_type(&trows, |t| &t.ty);
         if !self.running() {
             return Ok(Typed { ty, val: None });
-        }
-        let vals: Vec<&Value> = trows
-            .iter()
-            .flatten()
-            .filter_map(|t| t.val.as_ref())
-            .collect();
-        if super::formula::applies(&vals) {
-            let vrows: Vec<Vec<Value>> = trows
-                .iter()
-                .map(|r| r.iter().filter_map(|t| t.val.clone()).collect())
-                .collect();
-            let v = super::formula::brackets(&vrows)
-                .map_err(|m| Diagnostic::error(ErrorKind::Type, span, m))?;
-            let val = Some(v);
-            return Ok(Typed {
-                ty: refine(ty, &val),
-                val,
-            });
-        }
-        let any_sym = trows.iter().flatten().any(|t| {
-            t.val
-                .as_ref()
-                .is_some_and(|v| v.is_symbolic() || matches!(v, Value::Formula { .. }))
-        });
-        if any_sym {
-            let sym = if trows.len() == 1 && trows[0].len() == 1 {
-                Sym::Bracket(Box::new(to_sym(
-                    trows[0][0].val.as_ref().unwrap_or(&Value::scalar(f64::NAN)),
-                )))
-            } else {
-                Sym::Block(
-                    trows
-                        .iter()
-                        .map(|r| {
-                            r.iter()
-                                .filter_map(|t| t.val.as_ref())
-                                .map(to_sym)
-                                .collect()
-                        })
-                        .collect(),
-                )
-            };
-            return Ok(Typed {
-                ty,
-                val: Some(Value::Sym(sym)),
-            });
         }
         let mut vrows: Vec<Vec<Value>> = trows
             .into_iter()
@@ -222,9 +132,14 @@ impl Interp<'_> {
                     .collect()
             })
             .collect();
-        super::notation::zero_blocks(&rows, &mut vrows);
-        let v = ops::brackets(&vrows).map_err(|m| Diagnostic::error(ErrorKind::Type, span, m))?;
-        let val = Some(v);
+        let v = match apply::block(&vrows) {
+            Some(v) => v,
+            None => {
+                super::notation::zero_blocks(&rows, &mut vrows);
+                apply::block_numeric(&vrows)
+            }
+        };
+        let val = Some(v.map_err(|m| Diagnostic::error(ErrorKind::Type, span, m))?);
         Ok(Typed {
             ty: refine(ty, &val),
             val,
@@ -276,53 +191,4 @@ impl Interp<'_> {
             val,
         })
     }
-}
-
-/// Indices as symbols: a number or `:`.
-fn sel_syms(sels: &[Sel]) -> Vec<Option<f64>> {
-    sels.iter()
-        .map(|s| match s {
-            Sel::At(x) => Some(*x),
-            Sel::All => None,
-        })
-        .collect()
-}
-
-/// The static type of `[ ... ]`: the book's bracket of one vector, a column
-/// vector of one row of numbers, else a block matrix whose frames are the
-/// one pair tag inside it (`[R_sb, p_sb; 0, 0, 0, 1]` is {s}←{b}).
-fn bracket_type(rows: &[Vec<Typed>]) -> Ty {
-    if rows.len() == 1 && rows[0].len() == 1 {
-        let t = &rows[0][0].ty;
-        return match t.kind.vec_len() {
-            Some(3) => Ty::new(Kind::So3, t.frames.clone()),
-            Some(6) => Ty::new(Kind::Se3, t.frames.clone()),
-            _ => t.clone(),
-        };
-    }
-    let all_scalar = rows.iter().flatten().all(|t| t.ty.kind == Kind::Scalar);
-    if all_scalar && rows.len() == 1 {
-        return Ty::plain(Kind::Vector(Some(rows[0].len())));
-    }
-    let mut frames = Frames::None;
-    for t in rows.iter().flatten() {
-        if let Frames::Pair(..) = t.ty.frames {
-            if frames.is_none() {
-                frames = t.ty.frames.clone();
-            } else if frames != t.ty.frames {
-                frames = Frames::None;
-                break;
-            }
-        }
-    }
-    // Shape: sum of widths of the first row, sum of heights of the first column.
-    let width: Option<usize> = rows[0]
-        .iter()
-        .map(|t| t.ty.kind.shape().and_then(|s| s.1))
-        .sum();
-    let height: Option<usize> = rows
-        .iter()
-        .map(|r| r[0].ty.kind.shape().and_then(|s| s.0))
-        .sum();
-    Ty::new(Kind::Matrix(height, width), frames)
 }

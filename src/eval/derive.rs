@@ -104,7 +104,7 @@ impl Interp<'_> {
         let kind = self.env.vars[&steps[0].name].ty.kind.clone();
         let ty = Ty::new(
             kind.clone(),
-            Frames::Pair(Frame::named(from), Frame::named(to)),
+            Frames::Pair(Frame::named(&from), Frame::named(&to)),
         );
         if self.mode == super::env::Mode::Check {
             return Ok((text, Typed { ty, val: None }));

@@ -5,7 +5,12 @@ use std::collections::HashMap;
 use std::rc::Rc;
 
 use super::value::{UserFn, Value};
+use crate::check::bind::Claim;
 use crate::check::ty::Ty;
+
+/// A map keyed by names, with a hash fast on short keys (foldhash's
+/// fixed-seed hasher: a session's names are not adversarial).
+pub type NameMap<V> = HashMap<String, V, foldhash::fast::FixedState>;
 
 /// What to do with a frame mismatch (`--frames strict|warn|off`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -59,14 +64,18 @@ pub struct Binding {
 /// so an error never leaves a partial change behind.
 #[derive(Debug, Clone, Default)]
 pub struct Env {
-    pub vars: HashMap<String, Binding>,
-    pub fns: HashMap<String, Rc<UserFn>>,
+    pub vars: NameMap<Binding>,
+    pub fns: NameMap<Rc<UserFn>>,
+    /// What each name bound so far says about its value (the frames of its
+    /// subscript, its book letter), read once per name.
+    claims: NameMap<Claim>,
 }
 
 impl Env {
     pub fn get(&self, name: &str) -> Option<&Binding> {
         self.vars.get(name)
     }
+    #[inline]
     pub fn set(&mut self, name: &str, b: Binding) {
         // Rebinding a name (the common case in a long script) keeps its key.
         match self.vars.get_mut(name) {
@@ -75,6 +84,17 @@ impl Env {
                 self.vars.insert(name.to_string(), b);
             }
         }
+    }
+    /// What `name` says about a value bound to it ([`Claim::of`]), read
+    /// from the name the first time only.
+    #[inline]
+    pub fn claim(&mut self, name: &str) -> Claim {
+        if let Some(c) = self.claims.get(name) {
+            return *c;
+        }
+        let c = Claim::of(name);
+        self.claims.insert(name.to_string(), c);
+        c
     }
     /// Names in sorted order (for `:vars` and derive's deterministic search).
     pub fn names(&self) -> Vec<&String> {

@@ -2,15 +2,12 @@
 //! [`crate::check::rules`], and its value through [`super::ops`] and the
 //! builtin table. Symbolic operands give symbolic results.
 
-use std::f64::consts::PI;
-
+use super::apply::{self, Hints, Op};
 use super::env::Mode;
 use super::interp::{Interp, MAX_CALL_DEPTH, Typed};
-use super::ops;
-use super::substitute::to_sym;
-use super::value::Sym;
 use super::value::Value;
-use crate::builtins::{self, Args};
+use crate::builtins;
+use crate::check::error::Operand;
 use crate::check::rules::{self, Operands};
 use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind, suggest};
@@ -25,7 +22,14 @@ fn strip(t: &Ty) -> Ty {
 pub(super) fn refine(ty: Ty, val: &Option<Value>) -> Ty {
     match val {
         Some(v @ (Value::Num { .. } | Value::Tuple(_) | Value::Formula { .. })) => {
-            crate::check::algebra::with_kind(&ty, v.kind())
+            let kind = v.kind();
+            // Nothing to refine (and no frames to copy) when the numbers
+            // say what the checker said and it knew nothing more.
+            if kind == ty.kind && ty.algebra.is_none() && ty.moves.is_none() {
+                ty
+            } else {
+                crate::check::algebra::with_kind(&ty, kind)
+            }
         }
         _ => ty,
     }
@@ -46,7 +50,7 @@ impl Interp<'_> {
     /// times the user-function calls ([`super::interp::MAX_CALL_DEPTH`]):
     /// more than a thread's stack may hold, so the stack grows on the heap
     /// when it runs low. A symbolic result beyond the size limits of
-    /// [`Sym::too_large`] is a domain error.
+    /// [`super::value::Sym::too_large`] is a domain error.
     pub fn expr(&mut self, e: &Expr) -> Result<Typed, Diagnostic> {
         let t = stacker::maybe_grow(256 * 1024, 4 * 1024 * 1024, || self.expr_node(e))?;
         self.within_limits(&t, e.span)?;
@@ -69,17 +73,19 @@ impl Interp<'_> {
                 if *op == UnOp::Pos {
                     return Ok(t);
                 }
-                let ty = match rules::neg(&t.ty) {
+                let ty = match Op::Neg.rule(&[&t.ty], Hints::default()) {
                     Ok(ty) => ty,
                     Err(err) => {
                         self.rule_failure(err, e.span, None, Some(operand.span), None)?;
                         strip(&t.ty)
                     }
                 };
-                let val = match t.val {
-                    Some(Value::Sym(s)) => Some(Value::Sym(Sym::Neg(Box::new(s)))),
-                    Some(v @ Value::Formula { .. }) => super::formula::neg(&v),
-                    Some(v) => Some(ops::neg(&v, &ty.kind).map_err(|m| self.domain(e.span, m))?),
+                let val = match &t.val {
+                    Some(v) => Some(
+                        Op::Neg
+                            .apply(&[v], &ty.kind)
+                            .map_err(|m| self.domain(e.span, m))?,
+                    ),
                     None => None,
                 };
                 Ok(Typed { ty, val })
@@ -93,18 +99,12 @@ impl Interp<'_> {
                         format!("degrees apply to a number, not {}", t.ty.kind.a()),
                     ));
                 }
-                let val = match t.val {
-                    Some(Value::Sym(s)) => Some(Value::Sym(Sym::times(s, Sym::Name("deg".into())))),
-                    Some(v @ Value::Formula { .. }) => super::formula::scalar_of(&v).map(|x| {
-                        let deg = crate::sym::Expr::pi().scale(&crate::sym::coef::Coef::rat(
-                            crate::sym::coef::Rat::new(1, 180)
-                                .unwrap_or(crate::sym::coef::Rat::ONE),
-                        ));
-                        super::formula::scalar(x.mul(&deg))
-                    }),
-                    Some(v) => Some(Value::scalar(
-                        v.as_scalar().unwrap_or(f64::NAN) * PI / 180.0,
-                    )),
+                let val = match &t.val {
+                    Some(v) => Some(
+                        Op::Degrees
+                            .apply(&[v], &Kind::Scalar)
+                            .map_err(|m| self.domain(inner.span, m))?,
+                    ),
                     None => None,
                 };
                 Ok(Typed {
@@ -122,25 +122,25 @@ impl Interp<'_> {
             ExprKind::Call { func, args } => self.call(&func.name, func.span, args, e.span),
             ExprKind::Member { base, member } => {
                 let t = self.expr(base)?;
-                let ty = match rules::member(&t.ty, &member.name) {
+                let Some(op) = Op::member(&member.name) else {
+                    // No such member: the rule says why.
+                    let err = rules::member(&t.ty, &member.name).err().unwrap_or_default();
+                    self.rule_failure(err, member.span, None, None, None)?;
+                    return Ok(Typed {
+                        ty: unreachable_type(),
+                        val: None,
+                    });
+                };
+                let ty = match op.rule(&[&t.ty], Hints::default()) {
                     Ok(ty) => ty,
                     Err(err) => {
                         self.rule_failure(err, member.span, None, None, None)?;
                         unreachable_type()
                     }
                 };
-                let val = match t.val {
-                    Some(Value::Sym(s)) => Some(Value::Sym(if member.name == "T" {
-                        s.transpose()
-                    } else {
-                        Sym::Member(Box::new(s), member.name.clone())
-                    })),
-                    Some(v @ Value::Formula { .. }) => Some(
-                        super::formula::member(&v, &member.name)
-                            .map_err(|m| Diagnostic::error(ErrorKind::Type, member.span, m))?,
-                    ),
+                let val = match &t.val {
                     Some(v) => Some(
-                        ops::member(&v, &member.name)
+                        op.apply(&[v], &ty.kind)
                             .map_err(|m| Diagnostic::error(ErrorKind::Type, member.span, m))?,
                     ),
                     None => None,
@@ -268,17 +268,15 @@ impl Interp<'_> {
         }
         let (l, r) = self.operands(op, lhs, rhs)?;
         self.no_arithmetic(&[(&l, lhs.span), (&r, rhs.span)], op_span)?;
-        let ops_text = Operands {
-            lhs: self.text(lhs.span),
-            rhs: self.text(rhs.span),
+        let hints = Hints {
+            operands: Operands {
+                lhs: Operand::new(lhs, self.src),
+                rhs: Operand::new(rhs, self.src),
+            },
+            exponent: literal_number(rhs).or_else(|| r.val.as_ref().and_then(Value::as_scalar)),
         };
-        let literal = literal_number(rhs).or_else(|| r.val.as_ref().and_then(Value::as_scalar));
-        let rule = |a: &Ty, b: &Ty| match op {
-            BinOp::Mul => rules::mul(a, b, ops_text),
-            BinOp::Add | BinOp::Sub => rules::add(a, b),
-            BinOp::Div => rules::div(a, b),
-            BinOp::Pow => rules::pow(a, b, literal),
-        };
+        let op = Op::Arith(op);
+        let rule = |a: &Ty, b: &Ty| op.rule(&[a, b], hints);
         let ty = match rule(&l.ty, &r.ty) {
             Ok(ty) => ty,
             Err(err) => {
@@ -287,35 +285,11 @@ impl Interp<'_> {
                     .map_err(|e| Diagnostic::error(ErrorKind::Type, op_span, e.message))?
             }
         };
-        let val = match (l.val, r.val) {
-            (Some(a), Some(b)) if super::formula::applies(&[&a, &b]) => Some(
-                super::formula::binary(op, &a, &b, &ty.kind)
+        let val = match (&l.val, &r.val) {
+            (Some(a), Some(b)) => Some(
+                op.apply(&[a, b], &ty.kind)
                     .map_err(|m| self.domain(op_span, m))?,
             ),
-            (Some(a), Some(b)) if a.is_symbolic() || b.is_symbolic() => {
-                let (a, b) = (to_sym(&a), to_sym(&b));
-                Some(Value::Sym(match op {
-                    BinOp::Mul => Sym::times(a, b),
-                    BinOp::Add => Sym::Add(Box::new(a), Box::new(b)),
-                    BinOp::Sub => Sym::Sub(Box::new(a), Box::new(b)),
-                    BinOp::Div => Sym::Div(Box::new(a), Box::new(b)),
-                    BinOp::Pow if literal == Some(-1.0) => a.inverse(),
-                    BinOp::Pow => Sym::Pow(Box::new(a), Box::new(b)),
-                }))
-            }
-            (Some(a), Some(b)) => {
-                let res = match op {
-                    BinOp::Mul => ops::mul(&a, &b, &ty.kind),
-                    BinOp::Add => ops::add(&a, &b, false, &ty.kind),
-                    BinOp::Sub => ops::add(&a, &b, true, &ty.kind),
-                    BinOp::Div => ops::div(&a, &b, &ty.kind),
-                    BinOp::Pow => match b.as_scalar() {
-                        Some(x) => ops::pow(&a, x, &ty.kind),
-                        None => Err("the exponent must be a number".into()),
-                    },
-                };
-                Some(res.map_err(|m| self.domain(op_span, m))?)
-            }
             _ => None,
         };
         Ok(Typed {
@@ -378,31 +352,27 @@ impl Interp<'_> {
             typed.push(self.expr(a)?);
         }
         // `rot_zyx(euler_zyx(R))`: one tuple as the arguments.
-        let spans: Vec<Span> = if args.len() == 1 {
+        if args.len() == 1 {
             typed = self.spread(b, typed);
-            vec![args[0].span; typed.len()]
-        } else {
-            args.iter().map(|a| a.span).collect()
-        };
-        let tys: Vec<Ty> = typed.iter().map(|t| t.ty.clone()).collect();
+        }
+        // The types move out of the operands (no clone of their frames).
+        let mut tys = Vec::with_capacity(typed.len());
+        let mut vals = Vec::with_capacity(typed.len());
+        for t in typed {
+            tys.push(t.ty);
+            vals.push(t.val);
+        }
         let ty = match b.check(&tys) {
             Ok(ty) => ty,
             Err(err) => {
                 let at = err.arg.and_then(|i| args.get(i)).map_or(span, |a| a.span);
                 let d = Diagnostic::error(err.kind, at, err.message)
                     .with_help(format!("signature: {}", b.signature));
-                if err.kind == ErrorKind::Frame && self.frames != super::env::FrameMode::Strict {
-                    if self.frames == super::env::FrameMode::Warn {
-                        let mut w = d;
-                        w.severity = crate::diagnostics::Severity::Warning;
-                        self.warnings.push(w);
-                    }
-                    let plain: Vec<Ty> = tys.iter().map(strip).collect();
-                    b.check(&plain)
-                        .map_err(|e| Diagnostic::error(e.kind, at, e.message))?
-                } else {
-                    return Err(d);
-                }
+                let frame = err.kind == ErrorKind::Frame;
+                apply::frame_refusal(self.frames, frame, d, &mut self.warnings)?;
+                let plain: Vec<Ty> = tys.iter().map(strip).collect();
+                b.check(&plain)
+                    .map_err(|e| Diagnostic::error(e.kind, at, e.message))?
             }
         };
         // A vector or Lie-algebra result is in one frame (§6).
@@ -417,45 +387,41 @@ impl Interp<'_> {
         if !self.running() {
             return Ok(Typed { ty, val: None });
         }
-        let vals: Vec<Value> = typed
+        let vals: Vec<Value> = vals
             .into_iter()
-            .map(|t| t.val.unwrap_or_else(|| Value::scalar(f64::NAN)))
+            .map(|v| v.unwrap_or_else(|| Value::scalar(f64::NAN)))
             .collect();
         super::list::numbers_only(b, &vals, span)?;
-        let refs: Vec<&Value> = vals.iter().collect();
-        if super::formula::applies(&refs)
-            && let Some(v) = builtins::eval_symbolic(b.name, &vals, &ty.kind)
-        {
-            let val = Some(v.map_err(|m| self.domain(span, m))?);
-            return Ok(Typed {
-                ty: refine(ty, &val),
-                val,
-            });
-        }
         if vals
             .iter()
-            .any(|v| v.is_symbolic() || matches!(v, Value::Formula { .. }))
+            .any(|v| matches!(v, Value::Sym(_) | Value::Formula { .. }))
         {
-            let sym = match b.name {
-                "inv" | "RotInv" | "TransInv" => to_sym(&vals[0]).inverse(),
-                _ => Sym::Call(name.to_string(), vals.iter().map(to_sym).collect()),
-            };
-            return Ok(Typed {
-                ty,
-                val: Some(Value::Sym(sym)),
-            });
+            let refs: Vec<&Value> = vals.iter().collect();
+            if let Some(v) = Op::Call(b, name).exact_or_symbolic(&refs, &ty.kind) {
+                let val = Some(v.map_err(|m| self.domain(span, m))?);
+                return Ok(Typed {
+                    ty: refine(ty, &val),
+                    val,
+                });
+            }
         }
-        let mut a = Args {
-            typed: self.typed_args(tys, args),
-            name: b.name,
-            signature: b.signature,
-            vals,
+        let spans: Vec<Span> = match args {
+            [one] => vec![one.span; vals.len()],
+            _ => args.iter().map(|a| a.span).collect(),
+        };
+        // Only pictures read the arguments' types and source text.
+        let typed = if b.area == builtins::Area::Pictures {
+            self.typed_args(tys, args)
+        } else {
+            Vec::new()
+        };
+        let site = apply::Site {
             spans,
             call_span: span,
+            typed,
             warnings: &mut self.warnings,
         };
-        let v = (b.eval)(&mut a)?;
-        builtins::notes::after_call(&mut a, &v);
+        let v = apply::call(b, vals, site)?;
         not_finite_group(&v, b.name, span)?;
         let val = Some(v);
         Ok(Typed {

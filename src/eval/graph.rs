@@ -55,8 +55,8 @@ impl FrameGraph {
             match &b.ty.frames {
                 Frames::Pair(a, c) if a != c => g.edges.push(Edge {
                     name: name.clone(),
-                    from: a.clone(),
-                    to: c.clone(),
+                    from: *a,
+                    to: *c,
                     kind: b.ty.kind.clone(),
                 }),
                 Frames::Pair(a, _) | Frames::One(a) | Frames::Disp(a) => {

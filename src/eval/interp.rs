@@ -24,7 +24,7 @@ pub struct Outcome {
     pub span: Span,
     /// The bound names (one for `x = ..`, several for `(a, b) = ..`,
     /// none for a bare expression).
-    pub names: Vec<String>,
+    pub names: Names,
     pub ty: Ty,
     pub val: Option<Value>,
     /// Extra text printed before the value (`derive` prints its chain).
@@ -37,6 +37,33 @@ pub struct Outcome {
     /// For a bare call of a builtin whose tuple parts have names
     /// ([`crate::builtins::parts`]), those names, to print `q = …`.
     pub labels: &'static [&'static str],
+}
+
+/// The names a statement bound, in order: read as a slice of names. One
+/// name (the common `x = ..`) is held without a second allocation.
+#[derive(Debug, Clone)]
+pub enum Names {
+    /// `x = ..`, `derive T_ab`.
+    One([String; 1]),
+    /// None (a bare expression) or several (`(a, b) = ..`).
+    Many(Vec<String>),
+}
+
+impl Names {
+    /// The names as a slice.
+    pub fn as_slice(&self) -> &[String] {
+        match self {
+            Names::One(n) => n,
+            Names::Many(v) => v,
+        }
+    }
+}
+
+impl std::ops::Deref for Names {
+    type Target = [String];
+    fn deref(&self) -> &[String] {
+        self.as_slice()
+    }
 }
 
 /// Runs statements against an environment.
@@ -97,18 +124,8 @@ impl<'a> Interp<'a> {
         if let Some(h) = e.help {
             d = d.with_help(h);
         }
-        if kind == ErrorKind::Frame {
-            match self.frames {
-                FrameMode::Strict => {}
-                FrameMode::Warn => {
-                    d.severity = crate::diagnostics::Severity::Warning;
-                    self.warnings.push(d);
-                    return Ok(());
-                }
-                FrameMode::Off => return Ok(()),
-            }
-        }
-        Err(d)
+        let frame = kind == ErrorKind::Frame;
+        super::apply::frame_refusal(self.frames, frame, d, &mut self.warnings)
     }
 
     /// Binds a checked value to `name` (statements call this only after
@@ -127,7 +144,7 @@ impl<'a> Interp<'a> {
     /// Runs one statement. On error nothing is bound.
     pub fn stmt(&mut self, s: &Stmt) -> Result<Outcome, Diagnostic> {
         self.warnings.clear();
-        let out = |names: Vec<String>, t: Typed| Outcome {
+        let out = |names: Names, t: Typed| Outcome {
             span: s.span,
             names,
             ty: t.ty,
@@ -140,20 +157,20 @@ impl<'a> Interp<'a> {
         match &s.kind {
             StmtKind::Expr(e) => {
                 let mut t = self.expr(e)?;
-                t.ty = crate::check::rules::settled(&t.ty);
+                crate::check::rules::settle_in_place(&mut t.ty);
                 if t.ty.kind != Kind::Function {
                     self.bind_value("ans", &t);
                 }
-                let mut o = out(vec![], t);
+                let mut o = out(Names::Many(Vec::new()), t);
                 o.labels = self.part_labels(e);
                 Ok(o)
             }
             StmtKind::Assign { target, value } => {
                 let mut t = self.expr(value)?;
-                t.ty = crate::check::rules::settled(&t.ty);
+                crate::check::rules::settle_in_place(&mut t.ty);
                 let t = self.bind_checked(&target.name, t, target.span, value.span)?;
                 self.bind_value(&target.name, &t);
-                Ok(out(vec![target.name.clone()], t))
+                Ok(out(Names::One([target.name.clone()]), t))
             }
             StmtKind::Destructure { targets, value } => {
                 let t = self.expr(value)?;
@@ -165,7 +182,7 @@ impl<'a> Interp<'a> {
                 for (target, b) in targets.iter().zip(&bound) {
                     self.bind_value(&target.name, b);
                 }
-                let names = targets.iter().map(|t| t.name.clone()).collect();
+                let names = Names::Many(targets.iter().map(|t| t.name.clone()).collect());
                 let ty = Ty::plain(Kind::Tuple(
                     bound.iter().map(|b| b.ty.kind.clone()).collect(),
                 ));
@@ -214,7 +231,7 @@ impl<'a> Interp<'a> {
                     );
                 }
                 let mut o = out(
-                    vec![],
+                    Names::Many(Vec::new()),
                     Typed {
                         ty: Ty::plain(kind),
                         val: None,
@@ -239,7 +256,7 @@ impl<'a> Interp<'a> {
                 };
                 self.env.fns.insert(name.name.clone(), std::rc::Rc::new(f));
                 let mut o = out(
-                    vec![],
+                    Names::Many(Vec::new()),
                     Typed {
                         ty: Ty::plain(Kind::Function),
                         val: None,
@@ -254,7 +271,7 @@ impl<'a> Interp<'a> {
                 self.warnings
                     .retain(|w| w.severity != crate::diagnostics::Severity::Note);
                 let mut o = out(
-                    vec![],
+                    Names::Many(Vec::new()),
                     Typed {
                         ty: Ty::plain(Kind::Bool),
                         val: None,
@@ -266,7 +283,7 @@ impl<'a> Interp<'a> {
             StmtKind::Derive { target } => {
                 let (chain, t) = self.derive(target)?;
                 self.bind_value(&target.name, &t);
-                let mut o = out(vec![target.name.clone()], t);
+                let mut o = out(Names::One([target.name.clone()]), t);
                 o.note = Some(format!("{} = {chain}", target.name));
                 Ok(o)
             }
@@ -287,19 +304,23 @@ impl<'a> Interp<'a> {
         if matches!(t.ty.kind, Kind::List(_) | Kind::Picture | Kind::Text) {
             return Ok(t);
         }
-        let ty = match bind::bind(name, &t.ty) {
+        let claim = self.env.claim(name);
+        let ty = match bind::bind_claimed(name, &claim, t.ty) {
             Ok(b) => {
                 if let Some(w) = b.warning {
-                    self.rule_warning(w, value_span, name_span);
+                    self.rule_warning(*w, value_span, name_span);
                 }
                 b.ty
             }
-            Err(e) => {
-                self.rule_failure(e, value_span, Some(name_span), Some(value_span), None)?;
-                let kind = bind::named_kind(name, &t.ty.kind);
-                let kind = bind::named_group(name, &kind).unwrap_or(kind);
-                let claim = bind::claimed_frames(name, &kind);
-                Ty::new(kind, claim)
+            Err(r) => {
+                self.rule_failure(
+                    *r.error,
+                    value_span,
+                    Some(name_span),
+                    Some(value_span),
+                    None,
+                )?;
+                r.ty
             }
         };
         let val = match t.val {
@@ -336,9 +357,6 @@ impl<'a> Interp<'a> {
 
     /// A warning from a binding rule (the name renames a moved frame).
     fn rule_warning(&mut self, e: RuleError, value_span: Span, name_span: Span) {
-        if self.frames == FrameMode::Off {
-            return;
-        }
         let kind = e.kind.unwrap_or(ErrorKind::Frame);
         let mut d = Diagnostic::warning(kind, name_span, e.message);
         if !e.rhs.is_empty() {
@@ -347,7 +365,7 @@ impl<'a> Interp<'a> {
         if let Some(h) = e.help {
             d = d.with_help(h);
         }
-        self.warnings.push(d);
+        super::apply::frame_warning(self.frames, d, &mut self.warnings);
     }
 
     /// `R_sb = M`, `T_ab = M`: the name asserts the group (LANGUAGE.md §5).

@@ -237,7 +237,7 @@ impl Interp<'_> {
                 "a list takes one index: xs[i], counting from 1",
             ));
         };
-        let ty = Ty::new((**elem).clone(), t.ty.frames.clone());
+        let ty = Ty::new((**elem).clone(), t.ty.frames);
         let Some(Value::List(items)) = &t.val else {
             return Ok(Typed { ty, val: None });
         };
@@ -250,7 +250,7 @@ impl Interp<'_> {
         }
         let v = items[*i as usize - 1].clone();
         Ok(Typed {
-            ty: Ty::new(v.kind(), t.ty.frames.clone()),
+            ty: Ty::new(v.kind(), t.ty.frames),
             val: Some(v),
         })
     }
@@ -273,7 +273,7 @@ impl Interp<'_> {
             }
         };
         let frames = match &t.ty.kind {
-            Kind::List(_) => t.ty.frames.clone(),
+            Kind::List(_) => t.ty.frames,
             _ => Frames::None,
         };
         let vals = match t.val {
@@ -350,7 +350,7 @@ impl Interp<'_> {
         let checked = self.expr(body);
         self.mode = mode;
         let body_ty = checked?;
-        let list_ty = |k: Kind| Ty::new(Kind::List(Box::new(k)), body_ty.ty.frames.clone());
+        let list_ty = |k: Kind| Ty::new(Kind::List(Box::new(k)), body_ty.ty.frames);
         if mode == Mode::Check {
             return Ok(Typed {
                 ty: list_ty(body_ty.ty.kind.clone()),
@@ -377,7 +377,7 @@ impl Interp<'_> {
             'all: loop {
                 for (i, (n, ty, _)) in domains.iter().enumerate() {
                     let v = lists[i][at[i]].clone();
-                    let ty = Ty::new(v.kind(), ty.frames.clone());
+                    let ty = Ty::new(v.kind(), ty.frames);
                     self.env.set(
                         n,
                         Binding {

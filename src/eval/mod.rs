@@ -2,6 +2,7 @@
 //! walks each statement once, checking kinds and frames by
 //! [`crate::check`]'s rules and computing values through [`crate::lie`].
 
+pub mod apply;
 mod compare;
 mod compound;
 mod derive;

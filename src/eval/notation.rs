@@ -54,10 +54,13 @@ impl Interp<'_> {
         lhs: &Expr,
         rhs: &Expr,
     ) -> Result<(Typed, Typed), Diagnostic> {
-        let free = |e: &Expr| mentions_identity(e);
+        let (in_lhs, in_rhs) = (mentions_identity(lhs), mentions_identity(rhs));
         // Sums, products and any comparison (`R Rᵀ == I`); not `^` or `/`.
-        let sized = !matches!(op, BinOp::Pow | BinOp::Div) && self.env.get("I").is_none();
-        if sized && free(lhs) && !free(rhs) {
+        // (The environment is asked about `I` only when an operand has one.)
+        let sized = in_lhs != in_rhs
+            && !matches!(op, BinOp::Pow | BinOp::Div)
+            && self.env.get("I").is_none();
+        if sized && in_lhs {
             let r = self.expr(rhs)?;
             let n = match (op, dims(&r)) {
                 (BinOp::Mul, Some((rows, _))) => Some(rows),
@@ -68,7 +71,7 @@ impl Interp<'_> {
             return Ok((l, r));
         }
         let l = self.expr(lhs)?;
-        if sized && free(rhs) && !free(lhs) {
+        if sized && in_rhs {
             let n = match (op, dims(&l)) {
                 (BinOp::Mul, Some((_, cols))) => Some(cols),
                 (_, Some((rows, cols))) if rows == cols => Some(rows),

@@ -6,23 +6,16 @@
 //! expressions keep their symbols (`[1, 0, …] T_bc`). Types and frames are
 //! not recomputed: they were checked when the expression was built.
 
+use super::apply::{self, Op};
 use super::convert;
 use super::env::{Binding, Env};
-use super::ops;
+use super::ops::Sel;
 use super::value::Sym;
 use super::value::Value;
 use crate::check::ty::Kind;
+use crate::syntax::ast::BinOp;
 
-/// A value as a symbolic operand (numbers become constants).
-pub(crate) fn to_sym(v: &Value) -> Sym {
-    match v {
-        Value::Sym(s) => s.clone(),
-        other => Sym::Const(
-            Box::new(other.clone()),
-            crate::values::format::inline(other, 4),
-        ),
-    }
-}
+pub(crate) use super::apply::to_sym;
 
 /// The value of a binding as of now: a value derived from symbols has the
 /// numbers bound since substituted ([`resolve`]); a numeric result takes
@@ -63,9 +56,9 @@ fn retag(v: Value, kind: &Kind) -> Value {
 }
 
 /// `s` with every `given` name that is now bound to numbers replaced by
-/// them, and every operation whose operands are all numbers evaluated.
-/// An operation that fails numerically (it was checked on types only) is
-/// left symbolic.
+/// them, and every operation whose operands are all numbers evaluated by
+/// its numeric function ([`Op::numeric`], the evaluator's). An operation
+/// that fails numerically (it was checked on types only) is left symbolic.
 pub fn resolve(s: &Sym, env: &Env) -> Sym {
     match s {
         Sym::Name(n) => match env.get(n).and_then(|b| b.val.as_ref()) {
@@ -82,7 +75,7 @@ pub fn resolve(s: &Sym, env: &Env) -> Sym {
             let mut out: Vec<Sym> = Vec::new();
             for f in fs.iter().map(|f| resolve(f, env)) {
                 let merged = match (out.last().and_then(num), num(&f)) {
-                    (Some(a), Some(b)) => ops::mul(a, b, &Kind::Unknown).ok(),
+                    (Some(a), Some(b)) => Op::Arith(BinOp::Mul).numeric(&[a, b], None).ok(),
                     _ => None,
                 };
                 match merged {
@@ -95,52 +88,25 @@ pub fn resolve(s: &Sym, env: &Env) -> Sym {
             }
             Sym::product(out)
         }
-        Sym::Inv(x) => {
-            let x = resolve(x, env);
-            unary(&x, ops::inverse).unwrap_or_else(|| x.inverse())
+        Sym::Inv(x) => unary(Op::Inverse, x, env),
+        Sym::Transpose(x) => unary(Op::Transpose, x, env),
+        Sym::Neg(x) => unary(Op::Neg, x, env),
+        Sym::Member(x, part) => unary(Op::Member(*part), x, env),
+        Sym::Index(x, sels) => {
+            let sel: Vec<Sel> = sels.iter().map(|s| s.map_or(Sel::All, Sel::At)).collect();
+            unary(Op::Index(&sel), x, env)
         }
-        Sym::Transpose(x) => {
-            let x = resolve(x, env);
-            unary(&x, |v| Ok(ops::transpose(v))).unwrap_or_else(|| x.transpose())
-        }
-        Sym::Neg(x) => {
-            let x = resolve(x, env);
-            unary(&x, |v| ops::neg(v, &v.kind())).unwrap_or_else(|| Sym::Neg(Box::new(x)))
-        }
+        Sym::Add(a, b) => binary(BinOp::Add, a, b, env),
+        Sym::Sub(a, b) => binary(BinOp::Sub, a, b, env),
+        Sym::Div(a, b) => binary(BinOp::Div, a, b, env),
+        Sym::Pow(a, b) => binary(BinOp::Pow, a, b, env),
         Sym::Bracket(x) => {
             let x = resolve(x, env);
-            unary(&x, |v| ops::brackets(&[vec![v.clone()]]))
+            num(&x)
+                .and_then(|v| apply::block_numeric(&[vec![v.clone()]]).ok())
+                .map(constant)
                 .unwrap_or_else(|| Sym::Bracket(Box::new(x)))
         }
-        Sym::Member(x, m) => {
-            let x = resolve(x, env);
-            unary(&x, |v| ops::member(v, m)).unwrap_or_else(|| Sym::Member(Box::new(x), m.clone()))
-        }
-        Sym::Add(a, b) => binary(
-            a,
-            b,
-            env,
-            |l, r| ops::add(l, r, false, &Kind::Unknown),
-            Sym::Add,
-        ),
-        Sym::Sub(a, b) => binary(
-            a,
-            b,
-            env,
-            |l, r| ops::add(l, r, true, &Kind::Unknown),
-            Sym::Sub,
-        ),
-        Sym::Div(a, b) => binary(a, b, env, |l, r| ops::div(l, r, &l.kind()), Sym::Div),
-        Sym::Pow(a, b) => binary(
-            a,
-            b,
-            env,
-            |l, r| {
-                let e = r.as_scalar().ok_or("the exponent must be a number")?;
-                ops::pow(l, e, &l.kind())
-            },
-            Sym::Pow,
-        ),
         Sym::Block(rows) => {
             let rows: Vec<Vec<Sym>> = rows
                 .iter()
@@ -150,36 +116,28 @@ pub fn resolve(s: &Sym, env: &Env) -> Sym {
                 .iter()
                 .map(|r| r.iter().map(|x| num(x).cloned()).collect())
                 .collect();
-            vals.and_then(|v| ops::brackets(&v).ok())
+            vals.and_then(|v| apply::block_numeric(&v).ok())
                 .map(constant)
                 .unwrap_or(Sym::Block(rows))
         }
         Sym::Vector(parts) => {
             let parts: Vec<Sym> = parts.iter().map(|x| resolve(x, env)).collect();
-            let vals: Option<Vec<f64>> = parts
+            let vals: Option<Vec<&Value>> = parts
                 .iter()
-                .map(|x| num(x).and_then(Value::as_scalar))
+                .map(|x| num(x).filter(|v| v.as_scalar().is_some()))
                 .collect();
-            match vals {
-                Some(xs) => constant(Value::vector(Kind::Vector(Some(xs.len())), &xs)),
+            match vals.and_then(|vals| Op::Vector.numeric(&vals, None).ok()) {
+                Some(v) => constant(v),
                 None => Sym::Vector(parts),
             }
         }
-        Sym::Index(x, sels) => {
-            let x = resolve(x, env);
-            let sel: Vec<ops::Sel> = sels
-                .iter()
-                .map(|s| s.map_or(ops::Sel::All, ops::Sel::At))
-                .collect();
-            unary(&x, |v| ops::index(v, &sel))
-                .unwrap_or_else(|| Sym::Index(Box::new(x), sels.clone()))
-        }
-        Sym::Call(name, args) => {
+        Sym::Call(fun, args) => {
             let args: Vec<Sym> = args.iter().map(|a| resolve(a, env)).collect();
             let vals: Option<Vec<Value>> = args.iter().map(|a| num(a).cloned()).collect();
-            vals.and_then(|vals| call(name, vals))
+            vals.zip(crate::builtins::lookup(fun.name))
+                .and_then(|(vals, b)| apply::call_nowhere(b, vals).ok())
                 .map(constant)
-                .unwrap_or_else(|| Sym::Call(name.clone(), args))
+                .unwrap_or_else(|| Sym::Call(*fun, args))
         }
     }
 }
@@ -218,41 +176,31 @@ fn classify(m: &crate::values::num::Num) -> Kind {
     }
 }
 
-fn unary(x: &Sym, f: impl FnOnce(&Value) -> Result<Value, String>) -> Option<Sym> {
-    num(x).and_then(|v| f(v).ok()).map(constant)
-}
-
-fn binary(
-    a: &Sym,
-    b: &Sym,
-    env: &Env,
-    f: impl FnOnce(&Value, &Value) -> Result<Value, String>,
-    rebuild: fn(Box<Sym>, Box<Sym>) -> Sym,
-) -> Sym {
-    let (a, b) = (resolve(a, env), resolve(b, env));
-    match (num(&a), num(&b)) {
-        (Some(l), Some(r)) => match f(l, r) {
-            Ok(v) => constant(v),
-            Err(_) => rebuild(Box::new(a), Box::new(b)),
-        },
-        _ => rebuild(Box::new(a), Box::new(b)),
+/// A unary operation on a resolved operand: its value when that is a
+/// number, else its symbolic form.
+fn unary(op: Op, x: &Sym, env: &Env) -> Sym {
+    let x = resolve(x, env);
+    match num(&x).and_then(|v| op.numeric(&[v], None).ok()) {
+        Some(v) => constant(v),
+        None => op.symbolic(vec![x]),
     }
 }
 
-/// A builtin applied to numbers, as the interpreter would; None for a user
-/// function, an unknown name or an error.
-fn call(name: &str, vals: Vec<Value>) -> Option<Value> {
-    let b = crate::builtins::lookup(name)?;
-    let mut warnings = Vec::new();
-    let spans = vec![Default::default(); vals.len()];
-    let mut args = crate::builtins::Args {
-        name: b.name,
-        signature: b.signature,
-        vals,
-        spans,
-        call_span: Default::default(),
-        warnings: &mut warnings,
-        typed: Vec::new(),
-    };
-    (b.eval)(&mut args).ok()
+/// An arithmetic operation on resolved operands, evaluated when both are
+/// numbers.
+fn binary(op: BinOp, a: &Sym, b: &Sym, env: &Env) -> Sym {
+    let (a, b) = (resolve(a, env), resolve(b, env));
+    if let (Some(l), Some(r)) = (num(&a), num(&b))
+        && let Ok(v) = Op::Arith(op).numeric(&[l, r], None)
+    {
+        return constant(v);
+    }
+    let (a, b) = (Box::new(a), Box::new(b));
+    match op {
+        BinOp::Add => Sym::Add(a, b),
+        BinOp::Sub => Sym::Sub(a, b),
+        BinOp::Div => Sym::Div(a, b),
+        BinOp::Pow => Sym::Pow(a, b),
+        BinOp::Mul => Sym::times(*a, *b),
+    }
 }

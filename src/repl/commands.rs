@@ -254,7 +254,7 @@ fn type_of(ty: &Ty, val: Option<&Value>) -> String {
         Some(Value::Sym(_)) | None => ty.kind.clone(),
         Some(v) => v.kind(),
     };
-    Ty::new(kind, ty.frames.clone()).to_string()
+    Ty::new(kind, ty.frames).to_string()
 }
 
 /// `:vars`: each binding with its type and frames, and its value when

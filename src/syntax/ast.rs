@@ -160,8 +160,9 @@ pub enum ExprKind {
     /// one row of scalars → a column vector; otherwise MATLAB block
     /// concatenation (`[R, p; 0, 0, 0, 1]`).
     Brackets(Vec<Vec<Expr>>),
-    /// `mech < links 4; joints R R R R; planar >` (chapter 2).
-    Mech(MechSpec),
+    /// `mech < links 4; joints R R R R; planar >` (chapter 2). Boxed: it
+    /// is rare and large, and every other node is moved by value.
+    Mech(Box<MechSpec>),
     /// `"name.svg"`: a string (file names for `save`, picture titles).
     Str(String),
     /// `0:4`, `0:pi/8:pi`: a MATLAB range (LANGUAGE.md §12), `start:end`

@@ -40,9 +40,50 @@ const BP_POW: u8 = 40;
 /// Parses the statement at `span` of `text`, or `None` to leave it to pest.
 /// `chunk` is the statement's text (comments blanked), `span` its place in
 /// the source.
+#[cfg(test)]
 pub(crate) fn parse_statement(chunk: &str, span: Span) -> Option<Stmt> {
+    parse_statement_with(chunk, span, &mut Stack::default())
+}
+
+/// Room for the elements of lists and rows while they are parsed, kept
+/// from one statement to the next so that each list is allocated once, at
+/// its final length.
+#[derive(Default)]
+pub(crate) struct Stack {
+    items: Vec<Expr>,
+    rows: Vec<Vec<Expr>>,
+    /// The passes the last statement parsed needs.
+    pub passes: Passes,
+}
+
+/// Which of the passes after parsing can change or refuse a statement:
+/// `spacing` only looks at juxtapositions, `sin θ`, brackets and names
+/// with digits; `rewrite` only at `^` and brackets in brackets. A
+/// statement with none of these skips them.
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct Passes {
+    pub spacing: bool,
+    pub rewrite: bool,
+}
+
+impl Passes {
+    /// Both passes (the pest path, which does not tell).
+    pub const ALL: Passes = Passes {
+        spacing: true,
+        rewrite: true,
+    };
+}
+
+/// [`parse_statement`] with a [`Stack`] reused across statements.
+pub(crate) fn parse_statement_with(chunk: &str, span: Span, stack: &mut Stack) -> Option<Stmt> {
+    // Left over from a statement given up on.
+    stack.items.clear();
+    stack.rows.clear();
+    stack.passes = Passes::default();
     let src = chunk;
-    if src.starts_with("given") || src.starts_with("derive") {
+    if matches!(src.as_bytes().first(), Some(b'g' | b'd'))
+        && (src.starts_with("given") || src.starts_with("derive"))
+    {
         return None;
     }
     let mut p = P {
@@ -52,6 +93,7 @@ pub(crate) fn parse_statement(chunk: &str, span: Span) -> Option<Stmt> {
         off: span.start,
         budget: BUDGET,
         sup: false,
+        stack,
     };
     let kind = p.statement()?;
     p.ws();
@@ -61,6 +103,7 @@ pub(crate) fn parse_statement(chunk: &str, span: Span) -> Option<Stmt> {
 type Built = Option<(Expr, usize)>;
 
 struct P<'a> {
+    stack: &'a mut Stack,
     src: &'a str,
     s: &'a [u8],
     pos: usize,
@@ -77,9 +120,13 @@ impl P<'_> {
     }
 
     fn ws(&mut self) {
-        while self.pos < self.s.len() && is_ws(self.s[self.pos]) {
-            self.pos += 1;
+        let mut i = self.pos;
+        while let Some(&b) = self.s.get(i)
+            && is_ws(b)
+        {
+            i += 1;
         }
+        self.pos = i;
     }
 
     fn byte(&self, at: usize) -> Option<u8> {
@@ -126,7 +173,9 @@ impl P<'_> {
     fn statement(&mut self) -> Option<StmtKind> {
         // `assert expr`: pest's `assert_stmt` comes first, so a statement
         // starting with the keyword is an assertion or nothing.
-        if let Some(end) = self.keyword_at(0, "assert") {
+        if self.s.first() == Some(&b'a')
+            && let Some(end) = self.keyword_at(0, "assert")
+        {
             self.pos = end;
             return Some(StmtKind::Assert(self.expr(0)?.0));
         }
@@ -266,12 +315,15 @@ impl P<'_> {
             self.sup = op == Some(BinOp::Pow);
             let (rhs, dr) = self.expr(if op == Some(BinOp::Pow) { bp - 1 } else { bp })?;
             let (op, implicit, op_span) = match op {
-                Some(op) => (op, false, self.span(at, at + width)),
-                None => (
-                    BinOp::Mul,
-                    true,
-                    Span::new(lhs.span.end, rhs.span.start.max(lhs.span.end)),
-                ),
+                Some(op) => {
+                    self.stack.passes.rewrite |= op == BinOp::Pow;
+                    (op, false, self.span(at, at + width))
+                }
+                None => {
+                    self.stack.passes.spacing = true;
+                    let gap = Span::new(lhs.span.end, rhs.span.start.max(lhs.span.end));
+                    (BinOp::Mul, true, gap)
+                }
             };
             let span = lhs.span.join(rhs.span);
             let kind = ExprKind::Binary {

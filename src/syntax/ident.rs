@@ -72,6 +72,10 @@ fn two_frame_base(base: &str) -> bool {
 /// Why `name` is not a valid name, if it is not: a two-frame name whose
 /// numbered subscript does not split into two frames (`T_123`, `T_a12`).
 pub fn name_error(name: &str) -> Option<String> {
+    // Most names have no digit at all (a non-ASCII character may be one).
+    if !name.bytes().any(|b| b.is_ascii_digit() || !b.is_ascii()) {
+        return None;
+    }
     if name.contains("_{") {
         return None;
     }

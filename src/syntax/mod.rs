@@ -54,24 +54,45 @@ pub fn parse_program(src: &str) -> Vec<Result<ast::Stmt, Diagnostic>> {
 /// text and one statement, not for every statement's tree at once.
 pub fn statements(src: &str) -> impl Iterator<Item = Result<ast::Stmt, Diagnostic>> + '_ {
     let mut splitter = split::Splitter::new(src);
+    let mut stack = fast::Stack::default();
     std::iter::from_fn(move || {
         let chunk = splitter.next()?;
         let text = splitter.text(chunk.span);
-        let parsed = match chunk.error {
-            Some(error) => Err(error),
-            None if text.len() > MAX_STATEMENT_BYTES => Err(too_long(chunk.span, text.len())),
+        let (parsed, passes) = match chunk.error {
+            Some(error) => (Err(*error), fast::Passes::ALL),
+            None if text.len() > MAX_STATEMENT_BYTES => {
+                (Err(too_long(chunk.span, text.len())), fast::Passes::ALL)
+            }
             // Most statements take the fast path; it leaves errors and rare
             // forms to pest.
             None if chunk.depth <= FAST_DEPTH
-                && let Some(stmt) = fast::parse_statement(text, chunk.span) =>
+                && let Some(stmt) = fast::parse_statement_with(text, chunk.span, &mut stack) =>
             {
-                Ok(stmt)
+                (Ok(stmt), stack.passes)
             }
-            None if chunk.depth > SHALLOW => parse_on_big_stack(text, chunk.span),
-            None => parser::parse_chunk(text, chunk.span),
+            None if chunk.depth > SHALLOW => {
+                (parse_on_big_stack(text, chunk.span), fast::Passes::ALL)
+            }
+            None => (parser::parse_chunk(text, chunk.span), fast::Passes::ALL),
         };
-        Some(parsed.and_then(|stmt| spacing::check(&stmt, src).map(|()| rewrite::stmt(stmt))))
+        Some(parsed.and_then(|stmt| after_parsing(stmt, passes, src)))
     })
+}
+
+/// The passes after parsing: `spacing` refuses what reads two ways,
+/// `rewrite` turns the book's notation into the plain tree.
+fn after_parsing(
+    mut stmt: ast::Stmt,
+    passes: fast::Passes,
+    src: &str,
+) -> Result<ast::Stmt, Diagnostic> {
+    if passes.spacing {
+        spacing::check(&stmt, src)?;
+    }
+    if passes.rewrite {
+        rewrite::stmt(&mut stmt);
+    }
+    Ok(stmt)
 }
 
 /// The longest statement accepted (bytes). The grammar needs memory

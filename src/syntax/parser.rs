@@ -588,7 +588,7 @@ impl Cx {
                     depth + 1,
                 ))
             }
-            Rule::mech => leaf(ExprKind::Mech(self.mech(pair)?)),
+            Rule::mech => leaf(ExprKind::Mech(Box::new(self.mech(pair)?))),
             Rule::string => leaf(ExprKind::Str(super::ranges::string(pair.as_str()))),
             _ => Err(self.unexpected(&pair)),
         }

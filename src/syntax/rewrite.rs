@@ -12,14 +12,13 @@
 use super::ast::{Expr, ExprKind, Ident, IndexArg, Stmt, StmtKind};
 
 /// Applies the rewrites to every expression of `stmt`.
-pub fn stmt(mut stmt: Stmt) -> Stmt {
+pub fn stmt(stmt: &mut Stmt) {
     match &mut stmt.kind {
         StmtKind::Expr(e) => expr(e),
         StmtKind::Assign { value, .. } | StmtKind::Destructure { value, .. } => expr(value),
         StmtKind::FnDef { body, .. } | StmtKind::Assert(body) => expr(body),
         StmtKind::Given { .. } | StmtKind::Derive { .. } => {}
     }
-    stmt
 }
 
 fn expr(e: &mut Expr) {
@@ -88,18 +87,18 @@ fn transpose(e: &mut Expr) {
 /// The rows of `[[a, b], [c, d]]`, if every element is a one-row bracket
 /// of two or more entries and there are at least two of them.
 fn numpy_rows(rows: &[Vec<Expr>]) -> Option<Vec<Vec<Expr>>> {
-    let elements: Vec<&Expr> = rows.iter().flatten().collect();
-    if elements.len() < 2 {
+    let n = rows.iter().map(Vec::len).sum::<usize>();
+    // Checked before anything is allocated: most brackets are not rows.
+    if n < 2 || !rows.iter().flatten().all(|el| row_of(el).is_some()) {
         return None;
     }
-    let mut out = Vec::with_capacity(elements.len());
-    for el in elements {
-        match &el.kind {
-            ExprKind::Brackets(inner) if inner.len() == 1 && inner[0].len() >= 2 => {
-                out.push(inner[0].clone());
-            }
-            _ => return None,
-        }
+    Some(rows.iter().flatten().filter_map(row_of).cloned().collect())
+}
+
+/// The one row of a bracket `[a, b, …]` of two or more entries.
+fn row_of(el: &Expr) -> Option<&Vec<Expr>> {
+    match &el.kind {
+        ExprKind::Brackets(inner) if inner.len() == 1 && inner[0].len() >= 2 => Some(&inner[0]),
+        _ => None,
     }
-    Some(out)
 }

@@ -201,10 +201,27 @@ impl Check<'_> {
         else {
             return Ok(());
         };
+        // Only juxtaposition, `^` and `/` can read two ways; a sum or a
+        // written `*` is clear.
+        if !(*implicit || matches!(op, BinOp::Pow | BinOp::Div)) {
+            return Ok(());
+        }
         let last = self.last_operand(lhs);
-        let first = self.first_operand(rhs);
-        let (l, r) = (self.text(last.span), self.text(first.span));
         let bare = self.bare_call(last);
+        if !*implicit && bare.is_none() {
+            return Ok(());
+        }
+        let first = self.first_operand(rhs);
+        // A juxtaposition reads two ways only after a number, after `sin 2`
+        // or before a bracket.
+        if *implicit
+            && !(matches!(last.kind, ExprKind::Number(_) | ExprKind::Degrees(_))
+                || bare.is_some_and(|a| matches!(a.kind, ExprKind::Number(_)))
+                || matches!(first.kind, ExprKind::Brackets(_)))
+        {
+            return Ok(());
+        }
+        let (l, r) = (self.text(last.span), self.text(first.span));
         match op {
             BinOp::Mul if *implicit => {
                 if matches!(last.kind, ExprKind::Number(_) | ExprKind::Degrees(_))

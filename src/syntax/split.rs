@@ -19,7 +19,8 @@ use crate::diagnostics::{Diagnostic, ErrorKind};
 #[derive(Debug)]
 pub(crate) struct Chunk {
     pub span: Span,
-    pub error: Option<Diagnostic>,
+    /// Boxed: rare, and a chunk is handed out per statement.
+    pub error: Option<Box<Diagnostic>>,
     /// The deepest bracket nesting in the statement.
     pub depth: usize,
 }
@@ -60,7 +61,11 @@ pub(crate) fn split(src: &str) -> Split {
 /// so a long script is processed in memory bounded by its size plus one
 /// statement (not one chunk per statement up front).
 pub(crate) struct Splitter<'a> {
+    src: &'a str,
     bytes: &'a [u8],
+    /// No byte at or after this offset has been blanked: there `buf` and
+    /// the source agree.
+    blanked_to: usize,
     /// The blanked text; `buf[chunk.span]` is final once a chunk is yielded.
     buf: Vec<u8>,
     /// See [`Split::open_at_end`] (valid once the iterator is exhausted).
@@ -71,7 +76,7 @@ pub(crate) struct Splitter<'a> {
     i: usize,
     /// Open brackets: the byte (`(`, `[`, `{`, or `<` for `mech <`) and offset.
     stack: Vec<(u8, usize)>,
-    error: Option<Diagnostic>,
+    error: Option<Box<Diagnostic>>,
     /// The deepest nesting in the current statement.
     depth: usize,
     done: bool,
@@ -80,7 +85,9 @@ pub(crate) struct Splitter<'a> {
 impl<'a> Splitter<'a> {
     pub(crate) fn new(src: &'a str) -> Splitter<'a> {
         Splitter {
+            src,
             bytes: src.as_bytes(),
+            blanked_to: 0,
             buf: src.as_bytes().to_vec(),
             open_at_end: false,
             any_error: false,
@@ -96,6 +103,12 @@ impl<'a> Splitter<'a> {
 
     /// The blanked text of a yielded chunk.
     pub(crate) fn text(&self, span: Span) -> &str {
+        if span.start >= self.blanked_to
+            && let Some(text) = self.src.get(span.start..span.end)
+        {
+            // Nothing blanked: the source itself, already known UTF-8.
+            return text;
+        }
         self.buf
             .get(span.start..span.end)
             .and_then(|b| std::str::from_utf8(b).ok())
@@ -104,7 +117,7 @@ impl<'a> Splitter<'a> {
 
     /// The statement `buf[start..end]` (nested `depth` deep), trimmed;
     /// None for a blank one.
-    fn chunk(&self, start: usize, end: usize, error: Option<Diagnostic>) -> Option<Chunk> {
+    fn chunk(&self, start: usize, end: usize, error: Option<Box<Diagnostic>>) -> Option<Chunk> {
         make_chunk(&self.buf, (start, end, self.depth), error)
     }
 }
@@ -119,7 +132,13 @@ impl Iterator for Splitter<'_> {
             if self.done {
                 return None;
             }
-            let i = self.i;
+            // Skip the bytes that neither end a statement nor open or
+            // close anything.
+            let mut i = self.i;
+            while i < n && !significant(bytes[i]) {
+                i += 1;
+            }
+            self.i = i;
             if i >= n {
                 if self.stack.is_empty() {
                     self.done = true;
@@ -132,7 +151,10 @@ impl Iterator for Splitter<'_> {
                 }
                 // Report the outermost: the statement is cut at its line.
                 let &(open, at) = self.stack.first().unwrap_or(&(b'(', self.start));
-                let err = self.error.take().unwrap_or_else(|| unclosed(open, at));
+                let err = self
+                    .error
+                    .take()
+                    .unwrap_or_else(|| Box::new(unclosed(open, at)));
                 self.any_error = true;
                 // Recover: end this statement at the end of the line of the
                 // outermost open bracket and scan the rest afresh.
@@ -180,6 +202,7 @@ impl Iterator for Splitter<'_> {
                         self.buf[self.i] = b' ';
                         self.i += 1;
                     }
+                    self.blanked_to = self.blanked_to.max(self.i);
                     continue;
                 }
                 b'\n' | b';' => match self.stack.last() {
@@ -195,7 +218,10 @@ impl Iterator for Splitter<'_> {
                         }
                         continue;
                     }
-                    Some((b'(' | b'{', _)) if b == b'\n' => self.buf[i] = b' ',
+                    Some((b'(' | b'{', _)) if b == b'\n' => {
+                        self.buf[i] = b' ';
+                        self.blanked_to = self.blanked_to.max(i + 1);
+                    }
                     Some(_) => {}
                 },
                 b'(' | b'[' | b'{' => {
@@ -217,7 +243,7 @@ impl Iterator for Splitter<'_> {
                         Some(&(o, _)) if closer_of(o) == b => {}
                         Some(&(o, at)) => {
                             if error.is_none() {
-                                *error = Some(
+                                *error = Some(Box::new(
                                     Diagnostic::error(
                                         ErrorKind::Syntax,
                                         Span::new(i, i + 1),
@@ -231,12 +257,12 @@ impl Iterator for Splitter<'_> {
                                         Span::new(at, at + 1),
                                         format!("'{}' opened here", opener_name(o)),
                                     ),
-                                );
+                                ));
                             }
                         }
                         None => {
                             if error.is_none() {
-                                *error = Some(
+                                *error = Some(Box::new(
                                     Diagnostic::error(
                                         ErrorKind::Syntax,
                                         Span::new(i, i + 1),
@@ -245,7 +271,7 @@ impl Iterator for Splitter<'_> {
                                     .with_primary_label(
                                         format!("no '{}' is open here", opener_of(b) as char),
                                     ),
-                                );
+                                ));
                             }
                         }
                     }
@@ -258,17 +284,34 @@ impl Iterator for Splitter<'_> {
     }
 }
 
-fn open(stack: &mut Vec<(u8, usize)>, error: &mut Option<Diagnostic>, b: u8, at: usize) {
+/// The bytes [`Splitter::next`] acts on: quotes, comments, statement ends
+/// and brackets (`<` and `>` for `mech < >`).
+fn significant(b: u8) -> bool {
+    SIGNIFICANT[usize::from(b)]
+}
+
+static SIGNIFICANT: [bool; 256] = {
+    let mut table = [false; 256];
+    let bytes = *b"\"#\n;()[]{}<>";
+    let mut k = 0;
+    while k < bytes.len() {
+        table[bytes[k] as usize] = true;
+        k += 1;
+    }
+    table
+};
+
+fn open(stack: &mut Vec<(u8, usize)>, error: &mut Option<Box<Diagnostic>>, b: u8, at: usize) {
     stack.push((b, at));
     if stack.len() > MAX_DEPTH && error.is_none() {
-        *error = Some(
+        *error = Some(Box::new(
             Diagnostic::error(
                 ErrorKind::Syntax,
                 Span::new(at, at + 1),
                 format!("expression nested too deeply (limit {MAX_DEPTH})"),
             )
             .with_help("split it into several statements with intermediate names"),
-        );
+        ));
     }
 }
 
@@ -332,7 +375,7 @@ fn follows_mech(before: &[u8]) -> bool {
 fn make_chunk(
     buf: &[u8],
     (mut start, mut end, depth): (usize, usize, usize),
-    error: Option<Diagnostic>,
+    error: Option<Box<Diagnostic>>,
 ) -> Option<Chunk> {
     let blank = |b: u8| matches!(b, b' ' | b'\t' | b'\r' | b'\n' | b'\x0C');
     while start < end && blank(buf[start]) {

@@ -6,6 +6,66 @@
 
 use std::fmt;
 
+/// What a function is to the algebra of symbols (LANGUAGE.md §7): an
+/// inverse (`inv`, `RotInv`, `TransInv`: `inv(inv(X)) = X`, and
+/// `inv(T_ab) T_ab` cancels), the adjoint map (`Ad(X) Ad(inv(X))` cancels,
+/// §3.3.2), or neither. The builtin table gives each builtin its role.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Role {
+    Plain,
+    Inverse,
+    Adjoint,
+}
+
+/// A builtin applied in a symbolic expression: the name it was called by
+/// (printed as written, `Ad` or `Adjoint`) and its [`Role`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Fun {
+    pub name: &'static str,
+    pub role: Role,
+}
+
+/// A part of a value named by a member (LANGUAGE.md §4): the rotation
+/// `T.R` and position `T.p` of a transform (3.62), the angular and linear
+/// parts `V.w`, `V.v` of a twist (3.70) and `F.m`, `F.f` of a wrench (3.95).
+/// (`.T` is the transpose, an operation of its own.)
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Part {
+    R,
+    P,
+    W,
+    V,
+    M,
+    F,
+}
+
+impl Part {
+    /// The part a member name names; None for `.T` and unknown names.
+    pub fn of(name: &str) -> Option<Part> {
+        Some(match name {
+            "R" => Part::R,
+            "p" => Part::P,
+            "w" => Part::W,
+            "v" => Part::V,
+            "m" => Part::M,
+            "f" => Part::F,
+            _ => return None,
+        })
+    }
+
+    /// The member's name, `R` of `T.R`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Part::R => "R",
+            Part::P => "p",
+            Part::W => "w",
+            Part::V => "v",
+            Part::M => "m",
+            Part::F => "f",
+        }
+    }
+}
+
 /// An expression over symbols, holding constants of type `C`. Products are
 /// kept flat so that `inv(T_ab) * T_ab` cancels to `I`.
 #[derive(Debug, Clone)]
@@ -27,8 +87,9 @@ pub enum Tree<C> {
     /// `[x]`, the book's bracket.
     Bracket(Box<Tree<C>>),
     Transpose(Box<Tree<C>>),
-    Member(Box<Tree<C>>, String),
-    Call(String, Vec<Tree<C>>),
+    Member(Box<Tree<C>>, Part),
+    /// A builtin applied to symbolic arguments, `Ad(T_ab)`.
+    Call(Fun, Vec<Tree<C>>),
     /// A matrix literal with a symbol among its entries, `[1, theta; 0, 1]`,
     /// row by row (MATLAB block concatenation, LANGUAGE.md §4).
     Block(Vec<Vec<Tree<C>>>),
@@ -166,7 +227,10 @@ impl<C: Clone + PartialEq> Tree<C> {
         };
         match (self, other) {
             (Tree::Call(f, a), Tree::Call(g, b))
-                if is_adjoint(f) && is_adjoint(g) && a.len() == 1 && b.len() == 1 =>
+                if f.role == Role::Adjoint
+                    && g.role == Role::Adjoint
+                    && a.len() == 1
+                    && b.len() == 1 =>
             {
                 inverse_pair(&a[0], &b[0])
             }
@@ -181,10 +245,6 @@ impl<C: Clone + PartialEq> Tree<C> {
             Tree::Add(..) | Tree::Sub(..) | Tree::Neg(_) | Tree::Div(..)
         )
     }
-}
-
-fn is_adjoint(name: &str) -> bool {
-    matches!(name, "Ad" | "Adjoint" | "adjoint")
 }
 
 impl<C: Clone + PartialEq> fmt::Display for Tree<C> {
@@ -240,8 +300,8 @@ impl<C: Clone + PartialEq> fmt::Display for Tree<C> {
                 _ => write!(f, "({x}).T"),
             },
             Tree::Member(x, m) => match **x {
-                Tree::Name(_) | Tree::Call(..) => write!(f, "{x}.{m}"),
-                _ => write!(f, "({x}).{m}"),
+                Tree::Name(_) | Tree::Call(..) => write!(f, "{x}.{}", m.name()),
+                _ => write!(f, "({x}).{}", m.name()),
             },
             Tree::Block(rows) => {
                 let rows: Vec<String> = rows
@@ -264,8 +324,8 @@ impl<C: Clone + PartialEq> fmt::Display for Tree<C> {
                     _ => write!(f, "({x})[{}]", sels.join(", ")),
                 }
             }
-            Tree::Call(name, args) => {
-                write!(f, "{name}(")?;
+            Tree::Call(fun, args) => {
+                write!(f, "{}(", fun.name)?;
                 for (i, a) in args.iter().enumerate() {
                     if i > 0 {
                         write!(f, ", ")?;
@@ -284,6 +344,11 @@ mod tests {
 
     type Sym = Tree<()>;
 
+    const AD: Fun = Fun {
+        name: "Ad",
+        role: Role::Adjoint,
+    };
+
     fn n(s: &str) -> Sym {
         Sym::Name(s.into())
     }
@@ -298,7 +363,7 @@ mod tests {
 
     #[test]
     fn adjoints_of_inverse_pairs_cancel() {
-        let ad = |x: Sym| Sym::Call("Ad".into(), vec![x]);
+        let ad = |x: Sym| Sym::Call(AD, vec![x]);
         let e = Sym::product(vec![ad(n("T_sb").inverse()), ad(n("T_sb")), n("V_b")]);
         assert_eq!(e.to_string(), "V_b");
         let t = |x: Sym| Sym::Transpose(Box::new(x));
@@ -308,7 +373,7 @@ mod tests {
 
     #[test]
     fn transpose_of_product_reverses_and_cancels() {
-        let ad = |x: Sym| Sym::Call("Ad".into(), vec![x]);
+        let ad = |x: Sym| Sym::Call(AD, vec![x]);
         // Power invariance (3.98): V_aᵀF_a with V_a = Ad(T_ab) V_b and
         // F_a = Ad(T_ba)ᵀ F_b.
         let v_a = Sym::times(ad(n("T_ab")), n("V_b"));

@@ -9,7 +9,45 @@ use crate::syntax::MAX_DEPTH;
 use crate::syntax::ast::{Expr, ExprKind, Ident, IndexArg};
 
 /// The scalar functions the book writes without parentheses (`bare_fn`).
-const BARE_FNS: [&str; 7] = ["asin", "acos", "atan", "sin", "cos", "tan", "sqrt"];
+fn is_bare_fn(word: &[u8]) -> bool {
+    matches!(
+        word,
+        [b'a', b's', b'i', b'n']
+            | [b'a', b'c', b'o', b's']
+            | [b'a', b't', b'a', b'n']
+            | [b's', b'i', b'n']
+            | [b'c', b'o', b's']
+            | [b't', b'a', b'n']
+            | [b's', b'q', b'r', b't']
+    )
+}
+
+/// The value of the number literal `text` (as the grammar's `number`
+/// reads it), the same `f64` as `str::parse`: digits with at most one
+/// point and fifteen digits are an exact integer divided by an exact power
+/// of ten, one correctly rounded operation (Clinger's fast path); anything
+/// else (exponents, long literals) goes to `parse`.
+pub(super) fn number_value(text: &str) -> Option<f64> {
+    const POW10: [f64; 16] = [
+        1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+    ];
+    let bytes = text.as_bytes();
+    if bytes.len() > 15 {
+        return text.parse().ok();
+    }
+    let (mut m, mut frac, mut point) = (0u64, 0usize, false);
+    for &b in bytes {
+        match b {
+            b'0'..=b'9' => {
+                m = m * 10 + u64::from(b - b'0');
+                frac += usize::from(point);
+            }
+            b'.' if !point => point = true,
+            _ => return text.parse().ok(),
+        }
+    }
+    Some(m as f64 / POW10[frac])
+}
 
 impl P<'_> {
     pub(super) fn leaf(&self, kind: ExprKind, start: usize, end: usize) -> (Expr, usize) {
@@ -20,19 +58,28 @@ impl P<'_> {
     /// `(number | pi) ~ (WHITESPACE* ~ degrees)*` at the current position.
     pub(super) fn numeric(&mut self) -> Option<Built> {
         let start = self.pos;
-        let kind = if let Some(end) = self.number_at(start) {
-            self.src[start..end]
-                .parse::<f64>()
-                .ok()
-                .map(|x| (ExprKind::Number(x), end))
-        } else {
-            self.keyword_at(start, "pi")
-                .or_else(|| self.keyword_at(start, "π"))
-                .map(|end| (ExprKind::Number(std::f64::consts::PI), end))
+        let (value, end) = match self.byte(start)? {
+            b'0'..=b'9' | b'.' => {
+                let end = self.number_at(start)?;
+                (number_value(&self.src[start..end])?, end)
+            }
+            b'p' | 0xCF => {
+                let end = self
+                    .keyword_at(start, "pi")
+                    .or_else(|| self.keyword_at(start, "π"))?;
+                (std::f64::consts::PI, end)
+            }
+            _ => return None,
         };
-        let (kind, end) = kind?;
         self.pos = end;
-        let (e, d) = self.leaf(kind, start, end);
+        let (e, d) = self.leaf(ExprKind::Number(value), start, end);
+        if !self
+            .byte(self.pos)
+            .is_some_and(|b| super::is_ws(b) || b == b'd' || b == 0xC2)
+        {
+            // No `deg` or `°` can follow (the common case).
+            return Some(Some((e, d)));
+        }
         Some(self.units(e, d))
     }
 
@@ -54,59 +101,21 @@ impl P<'_> {
     /// `operand`: an atom with its postfix operators.
     pub(super) fn operand(&mut self) -> Built {
         let start = self.pos;
-        if let Some(built) = self.numeric() {
-            return built;
-        }
-
-        // primary = mech | call | bare_call | bool_lit | ident | paren | brackets | deg_unit
-        if self.keyword_at(start, "mech").is_some() {
-            return None;
-        }
-        let name = self.ident_at(start)?;
-        let (mut e, mut d) = 'primary: {
-            if let Some(end) = name {
-                self.pos = end;
-                self.ws();
-                if self.byte(self.pos) == Some(b'(') {
-                    let func = self.ident(start, end);
-                    let (args, d) = self.call_args()?;
-                    let span = self.span(start, self.pos);
-                    let kind = ExprKind::Call { func, args };
-                    break 'primary (Expr { kind, span }, d + 1);
+        let first = self.byte(start)?;
+        // primary = mech | call | bare_call | bool_lit | ident | paren | brackets | deg_unit,
+        // after `numeric`; the first byte rules out most alternatives.
+        let (mut e, mut d) = match first {
+            b'(' => self.paren()?,
+            b'[' => self.brackets()?,
+            _ => {
+                // A number takes no postfix operators.
+                if let Some(built) = self.numeric() {
+                    return built;
                 }
-                self.pos = start;
-                if let Some(built) = self.bare_call(start, end) {
-                    break 'primary built?;
+                if matches!(first, b'0'..=b'9' | b'.') {
+                    return None;
                 }
-                self.pos = start;
-            }
-            for (word, value) in [("true", true), ("false", false)] {
-                if let Some(end) = self.keyword_at(start, word) {
-                    self.pos = end;
-                    break 'primary self.leaf(ExprKind::Bool(value), start, end);
-                }
-            }
-            if let Some(end) = name {
-                self.pos = end;
-                let var = ExprKind::Var(self.src[start..end].to_string());
-                break 'primary self.leaf(var, start, end);
-            }
-            if let Some(end) = self.keyword_at(start, "deg") {
-                self.pos = end;
-                let one = self.leaf(ExprKind::Number(1.0), start, end).0;
-                let span = one.span;
-                break 'primary (
-                    Expr {
-                        kind: ExprKind::Degrees(Box::new(one)),
-                        span,
-                    },
-                    2,
-                );
-            }
-            match self.byte(start)? {
-                b'(' => self.paren()?,
-                b'[' => self.brackets()?,
-                _ => return None,
+                self.word()?
             }
         };
 
@@ -119,39 +128,93 @@ impl P<'_> {
             }
             self.ws();
             let op = self.pos;
-            if self.byte(op) == Some(b'.') {
-                if let Some(end) = self.ident_at(op + 1)? {
-                    let member = self.ident(op + 1, end);
-                    (e, d) = self.member(e, d, op, member)?;
-                    self.pos = end;
-                    continue;
+            match self.byte(op) {
+                Some(b'.') => {
+                    if let Some(end) = self.ident_at(op + 1)? {
+                        let member = self.ident(op + 1, end);
+                        (e, d) = self.member(e, d, op, member)?;
+                        self.pos = end;
+                        continue;
+                    }
                 }
-            } else if let Some(end) = self.degrees_at(op) {
-                (e, d) = self.degrees(e, d, op, end)?;
-                continue;
-            } else if let Some(end) = self.superscript_at(op) {
-                self.spend()?;
-                let sup = self.span(op, end);
-                let span = e.span.join(sup);
-                let kind = crate::syntax::ast::superscript_power(e, &self.src[op..end], sup);
-                e = Expr { kind, span };
-                d += 2;
-                self.pos = end;
-                continue;
-            } else if self.src[op..].starts_with('ᵀ') {
-                let end = op + 'ᵀ'.len_utf8();
-                let member = Ident {
-                    name: "T".into(),
-                    span: self.span(op, end),
-                };
-                (e, d) = self.member(e, d, op, member)?;
-                self.pos = end;
-                continue;
+                // `deg`; the rest (`°`, superscripts, `ᵀ`) are not ASCII.
+                Some(b'd' | 0x80..) => {
+                    if let Some(end) = self.degrees_at(op) {
+                        (e, d) = self.degrees(e, d, op, end)?;
+                        continue;
+                    } else if let Some(end) = self.superscript_at(op) {
+                        self.spend()?;
+                        let sup = self.span(op, end);
+                        let span = e.span.join(sup);
+                        let kind =
+                            crate::syntax::ast::superscript_power(e, &self.src[op..end], sup);
+                        self.stack.passes.rewrite = true;
+                        e = Expr { kind, span };
+                        d += 2;
+                        self.pos = end;
+                        continue;
+                    } else if self.src[op..].starts_with('ᵀ') {
+                        let end = op + 'ᵀ'.len_utf8();
+                        let member = Ident {
+                            name: "T".into(),
+                            span: self.span(op, end),
+                        };
+                        (e, d) = self.member(e, d, op, member)?;
+                        self.pos = end;
+                        continue;
+                    }
+                }
+                _ => {}
             }
             self.pos = at;
             break;
         }
         (d <= MAX_DEPTH).then_some((e, d))
+    }
+
+    /// The primaries that start with a letter (after `pi`): a call,
+    /// `sin θ`, `true`, a name, `deg`, in the grammar's order.
+    fn word(&mut self) -> Built {
+        let start = self.pos;
+        if self.keyword_at(start, "mech").is_some() {
+            return None;
+        }
+        let name = self.ident_at(start)?;
+        if let Some(end) = name {
+            self.pos = end;
+            self.ws();
+            if self.byte(self.pos) == Some(b'(') {
+                let func = self.ident(start, end);
+                let (args, d) = self.call_args()?;
+                let span = self.span(start, self.pos);
+                let kind = ExprKind::Call { func, args };
+                return Some((Expr { kind, span }, d + 1));
+            }
+            self.pos = start;
+            if let Some(built) = self.bare_call(start, end) {
+                return built;
+            }
+            self.pos = start;
+        }
+        for (word, value) in [("true", true), ("false", false)] {
+            if let Some(end) = self.keyword_at(start, word) {
+                self.pos = end;
+                return Some(self.leaf(ExprKind::Bool(value), start, end));
+            }
+        }
+        if let Some(end) = name {
+            self.pos = end;
+            let var = ExprKind::Var(self.src[start..end].to_string());
+            return Some(self.leaf(var, start, end));
+        }
+        if let Some(end) = self.keyword_at(start, "deg") {
+            self.pos = end;
+            let one = self.leaf(ExprKind::Number(1.0), start, end).0;
+            let span = one.span;
+            let kind = ExprKind::Degrees(Box::new(one));
+            return Some((Expr { kind, span }, 2));
+        }
+        None
     }
 
     fn member(&mut self, e: Expr, d: usize, op: usize, member: Ident) -> Built {
@@ -167,8 +230,7 @@ impl P<'_> {
     /// `bare_call` for the name at `start..end`: `sin θ`, `cos 30°`. `None`
     /// when it does not match (the grammar tries the next alternative).
     fn bare_call(&mut self, start: usize, end: usize) -> Option<Built> {
-        let word = &self.src[start..end];
-        if !BARE_FNS.contains(&word) || !self.byte(end).is_some_and(super::is_ws) {
+        if !is_bare_fn(&self.s[start..end]) || !self.byte(end).is_some_and(super::is_ws) {
             return None;
         }
         self.pos = end;
@@ -189,6 +251,7 @@ impl P<'_> {
         };
         Some(arg.and_then(|(arg, d)| {
             self.spend()?;
+            self.stack.passes.spacing = true;
             let func = self.ident(start, end);
             let span = self.span(start, self.pos);
             let kind = ExprKind::Call {
@@ -208,17 +271,18 @@ impl P<'_> {
     }
 
     /// Comma-separated expressions up to `close`, with an optional final
-    /// comma; at least one unless `empty_ok`. Leaves `pos` after `close`.
-    pub(super) fn list(&mut self, close: u8, empty_ok: bool) -> Option<(Vec<Expr>, usize)> {
+    /// comma; at least one unless `empty_ok`. Leaves `pos` after `close`
+    /// and the expressions on top of `self.stack`, from the returned mark.
+    fn list_on_stack(&mut self, close: u8, empty_ok: bool) -> Option<(usize, usize)> {
         self.pos += 1;
-        let mut items = Vec::new();
+        let mark = self.stack.items.len();
         let mut depth = 0;
         self.ws();
         if !(empty_ok && self.byte(self.pos) == Some(close)) {
             loop {
                 let (e, d) = self.expr(0)?;
                 depth = depth.max(d);
-                items.push(e);
+                self.stack.items.push(e);
                 if !self.eat(b',') {
                     break;
                 }
@@ -228,25 +292,31 @@ impl P<'_> {
                 }
             }
         }
-        self.eat(close).then_some((items, depth))
+        self.eat(close).then_some((mark, depth))
+    }
+
+    /// The expressions above `mark` on the stack, as a vector of their own.
+    fn take_from(&mut self, mark: usize) -> Vec<Expr> {
+        self.stack.items.split_off(mark)
     }
 
     pub(super) fn call_args(&mut self) -> Option<(Vec<Expr>, usize)> {
         self.spend()?;
-        self.list(b')', true)
+        let (mark, d) = self.list_on_stack(b')', true)?;
+        Some((self.take_from(mark), d))
     }
 
     pub(super) fn paren(&mut self) -> Built {
         self.spend()?;
         let start = self.pos;
-        let (mut items, d) = self.list(b')', false)?;
+        let (mark, d) = self.list_on_stack(b')', false)?;
         let span = self.span(start, self.pos);
-        if items.len() == 1 {
-            let mut e = items.pop()?;
+        if self.stack.items.len() == mark + 1 {
+            let mut e = self.stack.items.pop()?;
             e.span = span;
             return Some((e, d));
         }
-        let kind = ExprKind::Paren(items);
+        let kind = ExprKind::Paren(self.take_from(mark));
         Some((Expr { kind, span }, d + 1))
     }
 
@@ -311,21 +381,23 @@ impl P<'_> {
 
     pub(super) fn brackets(&mut self) -> Built {
         self.spend()?;
+        // `[1 -x]`, `[2 pi]`: what reads two ways in brackets.
+        self.stack.passes.spacing = true;
         let start = self.pos;
         self.pos += 1;
-        let mut rows = Vec::new();
+        let rows_mark = self.stack.rows.len();
         let mut depth = 0;
         self.row_seps();
         while self.byte(self.pos) != Some(b']') {
             if let Some(plain) = self.plain_rows() {
                 depth = depth.max(2);
-                rows.extend(plain);
+                self.stack.rows.extend(plain);
             } else {
-                let mut row = Vec::new();
+                let mark = self.stack.items.len();
                 loop {
                     let (e, d) = self.expr(0)?;
                     depth = depth.max(d);
-                    row.push(e);
+                    self.stack.items.push(e);
                     if !self.eat(b',') {
                         break;
                     }
@@ -342,7 +414,8 @@ impl P<'_> {
                         break;
                     }
                 }
-                rows.push(row);
+                let row = self.take_from(mark);
+                self.stack.rows.push(row);
             }
             if !self.row_seps() && self.byte(self.pos) != Some(b']') {
                 return None;
@@ -350,6 +423,15 @@ impl P<'_> {
         }
         self.pos += 1;
         let span = self.span(start, self.pos);
+        let rows = self.stack.rows.split_off(rows_mark);
+        // numpy's nested rows `[[1, 2], [3, 4]]` are rewritten.
+        if rows
+            .iter()
+            .flatten()
+            .any(|e| matches!(e.kind, ExprKind::Brackets(_)))
+        {
+            self.stack.passes.rewrite = true;
+        }
         let kind = ExprKind::Brackets(rows);
         Some((Expr { kind, span }, depth + 1))
     }

@@ -25,7 +25,57 @@ pub(super) fn xid_continue(c: char) -> bool {
     }
 }
 
-const KEYWORDS: [&str; 8] = ["pi", "π", "deg", "true", "false", "given", "derive", "mech"];
+/// How a byte continues a name (`ident_at`).
+#[derive(Clone, Copy)]
+enum NameByte {
+    /// A letter or `'`.
+    Plain,
+    Digit,
+    Underscore,
+    /// The first byte of a non-ASCII character (or a continuation byte).
+    NonAscii,
+    /// Ends the name.
+    Other,
+}
+
+static NAME_BYTES: [NameByte; 256] = {
+    let mut table = [NameByte::Other; 256];
+    let mut b = 0;
+    while b < 256 {
+        let c = b as u8;
+        table[b] = if c.is_ascii_alphabetic() || c == b'\'' {
+            NameByte::Plain
+        } else if c.is_ascii_digit() {
+            NameByte::Digit
+        } else if c == b'_' {
+            NameByte::Underscore
+        } else if c >= 0x80 {
+            NameByte::NonAscii
+        } else {
+            NameByte::Other
+        };
+        b += 1;
+    }
+    table
+};
+
+/// The grammar's `keyword` (`pi`, `π`, `deg`, `true`, `false`, `given`,
+/// `derive`, `mech`) or `for`, compared byte by byte.
+fn is_keyword(word: &[u8]) -> bool {
+    // Slice patterns compile to a length test and byte comparisons.
+    matches!(
+        word,
+        [b'p', b'i']
+            | [0xCF, 0x80] // π
+            | [b'd', b'e', b'g']
+            | [b't', b'r', b'u', b'e']
+            | [b'f', b'a', b'l', b's', b'e']
+            | [b'g', b'i', b'v', b'e', b'n']
+            | [b'd', b'e', b'r', b'i', b'v', b'e']
+            | [b'm', b'e', b'c', b'h']
+            | [b'f', b'o', b'r']
+    )
+}
 
 impl P<'_> {
     /// `!XID_CONTINUE` at `at`.
@@ -34,36 +84,62 @@ impl P<'_> {
     }
 
     /// `word ~ !XID_CONTINUE` at `at`: the end of the word.
+    #[inline(always)]
     pub(super) fn keyword_at(&self, at: usize, word: &str) -> Option<usize> {
+        let word = word.as_bytes();
+        // Most calls fail at the first byte.
+        if self.s.get(at) != word.first() {
+            return None;
+        }
         let end = at + word.len();
-        (self.s.get(at..end) == Some(word.as_bytes()) && self.word_ends(end)).then_some(end)
+        let text = self.s.get(at..end)?;
+        let same = text.iter().zip(word).all(|(a, b)| a == b);
+        (same && self.word_ends(end)).then_some(end)
     }
 
     /// The grammar's `ident` at `at`: `Some(Some(end))`, `Some(None)` where
-    /// pest's `ident` fails, `None` to give up (a braced subscript).
-    pub(super) fn ident_at(&self, at: usize) -> Option<Option<usize>> {
-        match self.char_at(at) {
-            Some(c) if xid_start(c) && c != 'ᵀ' => {}
-            _ => return Some(None),
+    /// pest's `ident` fails, `None` to give up (a braced subscript). Notes
+    /// a name with a digit or a non-ASCII character for `spacing`.
+    pub(super) fn ident_at(&mut self, at: usize) -> Option<Option<usize>> {
+        let s = self.s;
+        match s.get(at) {
+            Some(b) if b.is_ascii_alphabetic() => {}
+            Some(b) if b.is_ascii() => return Some(None),
+            Some(_) => match self.char_at(at) {
+                Some(c) if xid_start(c) && c != 'ᵀ' => {}
+                _ => return Some(None),
+            },
+            None => return Some(None),
         }
         let mut i = at;
-        while let Some(c) = self.char_at(i) {
-            if c == '_' && self.byte(i + 1) == Some(b'{') {
-                return None;
+        let mut odd = false;
+        while let Some(&b) = s.get(i) {
+            match NAME_BYTES[usize::from(b)] {
+                NameByte::Plain => i += 1,
+                NameByte::Digit => {
+                    odd = true;
+                    i += 1;
+                }
+                NameByte::Underscore if s.get(i + 1) == Some(&b'{') => return None,
+                NameByte::Underscore => i += 1,
+                NameByte::Other => break,
+                NameByte::NonAscii => {
+                    odd = true;
+                    let Some(c) = self.char_at(i) else { break };
+                    // `ᵀ` is the transpose mark, never part of a name.
+                    if !xid_continue(c) || c == 'ᵀ' {
+                        break;
+                    }
+                    i += c.len_utf8();
+                }
             }
-            // `ᵀ` is the transpose mark, never part of a name.
-            if !(xid_continue(c) || c == '\'') || c == 'ᵀ' {
-                break;
-            }
-            i += c.len_utf8();
+        }
+        if odd {
+            self.stack.passes.spacing = true;
         }
         // `!keyword`: a keyword not followed by XID_CONTINUE or `'`, i.e.
         // the whole run of name characters.
-        let word = &self.src[at..i];
-        if KEYWORDS.contains(&word) || word == "for" {
-            return Some(None);
-        }
-        Some(Some(i))
+        Some((!is_keyword(&s[at..i])).then_some(i))
     }
 
     /// `number`: the end of the literal at `at`, if any.
@@ -136,16 +212,17 @@ impl P<'_> {
         match self.byte(at)? {
             b'+' => Some((BinOp::Add, 1)),
             b'-' => Some((BinOp::Sub, 1)),
-            _ if self.src[at..].starts_with('−') => Some((BinOp::Sub, '−'.len_utf8())),
+            0xE2 if self.src[at..].starts_with('−') => Some((BinOp::Sub, '−'.len_utf8())),
             _ => None,
         }
     }
 
     /// `degrees` at `at`: its end.
     pub(super) fn degrees_at(&self, at: usize) -> Option<usize> {
-        if self.src[at..].starts_with('°') {
-            return Some(at + '°'.len_utf8());
+        match self.byte(at)? {
+            0xC2 if self.src[at..].starts_with('°') => Some(at + '°'.len_utf8()),
+            b'd' => self.keyword_at(at, "deg"),
+            _ => None,
         }
-        self.keyword_at(at, "deg")
     }
 }

@@ -113,7 +113,7 @@ impl P<'_> {
             }
         });
         let digits = start + sign.map_or(0, |(_, w)| w);
-        let value = self.src[digits..end].parse::<f64>().unwrap_or(f64::NAN);
+        let value = super::atoms::number_value(&self.src[digits..end]).unwrap_or(f64::NAN);
         let number = Expr {
             kind: ExprKind::Number(value),
             span: self.span(digits, end),

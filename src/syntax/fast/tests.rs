@@ -167,8 +167,17 @@ fn expr() -> impl Strategy<Value = String> {
     })
 }
 
+fn cases() -> u32 {
+    std::env::var("PROPTEST_CASES")
+        .ok()
+        .and_then(|n| n.parse().ok())
+        .unwrap_or(2000)
+}
+
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 2000, ..ProptestConfig::default() })]
+    // 2000 cases, or PROPTEST_CASES when set (the environment variable
+    // does not override an explicit count by itself).
+    #![proptest_config(ProptestConfig::with_cases(cases()))]
 
     #[test]
     fn random_tokens_agree(src in tokens()) {

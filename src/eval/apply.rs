@@ -1,0 +1,506 @@
+//! The one operation seam (issue 14): every operation of the language as
+//! one variant of [`Op`], and for each, in this one place, its
+//! type-and-frame rule ([`Op::rule`], the rules of LANGUAGE.md §6 in
+//! [`crate::check::rules`]), its numeric function ([`Op::numeric`], over
+//! [`super::ops`]), its exact form over symbolic scalars ([`Op::formula`],
+//! chapter 3 with symbols) and its form over `given` symbols
+//! ([`Op::symbolic`], LANGUAGE.md §7). [`Op::apply`] picks among the three
+//! value paths. The evaluator evaluates a node's children and applies its
+//! operation; the substitution of numbers into symbols
+//! ([`super::substitute`]) applies the same operations to the numbers it
+//! finds. Adding an operation is one variant, one rule, one numeric
+//! function and one symbolic form.
+//!
+//! The frame-mode policy (strict, warn, off: what a frame mismatch becomes)
+//! is here too, in [`frame_refusal`] and [`frame_warning`].
+
+use std::f64::consts::PI;
+
+use super::env::FrameMode;
+use super::formula;
+use super::ops::{self, Sel};
+use super::symbolic::{Fun, Part};
+use super::value::{Sym, Value};
+use crate::builtins::{Args, Builtin, Role};
+use crate::check::rules::{self, Operands, RuleError};
+use crate::check::ty::{Frames, Kind, Ty};
+use crate::diagnostics::{Diagnostic, Severity};
+use crate::syntax::ast::{BinOp, Span};
+
+/// One operation of the language: what a node of an expression does with
+/// the values of its children.
+#[derive(Clone, Copy)]
+pub enum Op<'a> {
+    /// `-x`.
+    Neg,
+    /// `x deg`, `x°`: an angle in degrees, as radians.
+    Degrees,
+    /// `a + b`, `a - b`, `a b`, `a / b`, `a ^ b`.
+    Arith(BinOp),
+    /// The inverse `X⁻¹` of symbols that become numbers (`inv`, `^-1`).
+    Inverse,
+    /// `x.T`, the transpose (`[ω]ᵀ = −[ω]`, `[Ad_T]ᵀ` acts on wrenches).
+    Transpose,
+    /// `T.R`, `T.p`, `V.w`, `V.v`, `F.m`, `F.f`: a part of a value.
+    Member(Part),
+    /// `x[i]`, `M[i, j]`, `M[:, j]` (1-based).
+    Index(&'a [Sel]),
+    /// `[x]`, the book's bracket of a 3- or 6-vector (3.30, 3.70), and
+    /// `[a, b; c, d]`, a block matrix; its operands are rows.
+    Block,
+    /// `(a, b, c)`: a column vector of scalars.
+    Vector,
+    /// A call of a builtin, by the name it was called with (`Ad` or
+    /// `Adjoint`); its rule is its table row's [`Builtin::check`].
+    Call(&'static Builtin, &'a str),
+}
+
+/// What a rule may need besides the operands' types: the operands as
+/// written (for help text) and a literal exponent (`X^-1`).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Hints<'a> {
+    pub operands: Operands<'a>,
+    pub exponent: Option<f64>,
+}
+
+impl<'a> Op<'a> {
+    /// The operation of a member name: `.T` is the transpose; None for a
+    /// name that is no member.
+    pub fn member(name: &str) -> Option<Op<'a>> {
+        if name == "T" {
+            Some(Op::Transpose)
+        } else {
+            Part::of(name).map(Op::Member)
+        }
+    }
+
+    /// The kind and frames of the result from the operands' (LANGUAGE.md
+    /// §6), checked without numbers. A block's rule is [`block_type`]
+    /// (its operands are rows), a call's its table row's
+    /// [`Builtin::check`] and [`rules::settle`].
+    pub fn rule(self, args: &[&Ty], hints: Hints) -> Result<Ty, RuleError> {
+        match (self, args) {
+            (Op::Neg, [t]) => rules::neg(t),
+            (Op::Degrees, _) => Ok(Ty::scalar()),
+            (Op::Arith(op), [a, b]) => match op {
+                BinOp::Mul => rules::mul(a, b, hints.operands),
+                BinOp::Add | BinOp::Sub => rules::add(a, b),
+                BinOp::Div => rules::div(a, b),
+                BinOp::Pow => rules::pow(a, b, hints.exponent),
+            },
+            (Op::Transpose, [t]) => rules::member(t, "T"),
+            (Op::Member(part), [t]) => rules::member(t, part.name()),
+            (Op::Index(sels), [t]) => index_type(t, sels),
+            (Op::Vector, _) => Ok(Ty::plain(Kind::Vector(Some(args.len())))),
+            _ => Ok(Ty::plain(Kind::Unknown)),
+        }
+    }
+
+    /// The operation on numbers. `kind` is the result's kind as checked;
+    /// None when symbols are re-evaluated with numbers (the operation then
+    /// finds the kind from its operands). Blocks take rows:
+    /// [`block_numeric`].
+    pub fn numeric(self, args: &[&Value], kind: Option<&Kind>) -> Result<Value, String> {
+        let unknown = &Kind::Unknown;
+        match (self, args) {
+            (Op::Neg, [v]) => match kind {
+                Some(k) => ops::neg(v, k),
+                None => ops::neg(v, &v.kind()),
+            },
+            (Op::Degrees, [v]) => Ok(Value::scalar(
+                v.as_scalar().unwrap_or(f64::NAN) * PI / 180.0,
+            )),
+            (Op::Arith(op), [a, b]) => {
+                let own = || a.kind();
+                match op {
+                    BinOp::Mul => ops::mul(a, b, kind.unwrap_or(unknown)),
+                    BinOp::Add => ops::add(a, b, false, kind.unwrap_or(unknown)),
+                    BinOp::Sub => ops::add(a, b, true, kind.unwrap_or(unknown)),
+                    BinOp::Div => match kind {
+                        Some(k) => ops::div(a, b, k),
+                        None => ops::div(a, b, &own()),
+                    },
+                    BinOp::Pow => {
+                        let e = b.as_scalar().ok_or("the exponent must be a number")?;
+                        match kind {
+                            Some(k) => ops::pow(a, e, k),
+                            None => ops::pow(a, e, &own()),
+                        }
+                    }
+                }
+            }
+            (Op::Inverse, [v]) => ops::inverse(v),
+            (Op::Transpose, [v]) => Ok(ops::transpose(v)),
+            (Op::Member(part), [v]) => ops::member(v, part.name()),
+            (Op::Index(sels), [v]) => ops::index(v, sels),
+            (Op::Vector, _) => {
+                let xs: Vec<f64> = args
+                    .iter()
+                    .map(|v| v.as_scalar().unwrap_or(f64::NAN))
+                    .collect();
+                Ok(Value::vector(Kind::Vector(Some(xs.len())), &xs))
+            }
+            (Op::Call(b, _), _) => call_nowhere(b, args.iter().map(|v| (*v).clone()).collect()),
+            _ => Err("wrong number of operands".into()),
+        }
+    }
+
+    /// The exact operation over symbolic scalars (chapter 3 with symbols,
+    /// [`formula`]); None when it has no such form (the value stays a
+    /// tree, or — for a builtin — is computed another way).
+    pub fn formula(self, args: &[&Value], kind: &Kind) -> Option<Result<Value, String>> {
+        match (self, args) {
+            (Op::Neg, [v]) => formula::neg(v).map(Ok),
+            (Op::Degrees, [v]) => formula::scalar_of(v).map(|x| {
+                use crate::sym::coef::{Coef, Rat};
+                let deg =
+                    crate::sym::Expr::pi().scale(&Coef::rat(Rat::new(1, 180).unwrap_or(Rat::ONE)));
+                Ok(formula::scalar(x.mul(&deg)))
+            }),
+            (Op::Arith(op), [a, b]) => Some(formula::binary(op, a, b, kind)),
+            (Op::Transpose, [v]) => Some(formula::member(v, "T")),
+            (Op::Member(part), [v]) => Some(formula::member(v, part.name())),
+            (Op::Index(sels), [v]) => Some(formula::index(v, sels)),
+            (Op::Vector, _) => {
+                let vals: Vec<Value> = args.iter().map(|v| (*v).clone()).collect();
+                formula::vector(&vals).map(Ok)
+            }
+            (Op::Call(b, _), _) => {
+                let vals: Vec<Value> = args.iter().map(|v| (*v).clone()).collect();
+                crate::builtins::eval_symbolic(b.name, &vals, kind)
+            }
+            _ => None,
+        }
+    }
+
+    /// The operation over `given` symbols (LANGUAGE.md §7): a node of the
+    /// symbolic tree, simplified where the book's identities allow
+    /// (`inv(inv(X)) = X`, `(A B)ᵀ = Bᵀ Aᵀ`).
+    pub fn symbolic(self, mut args: Vec<Sym>) -> Sym {
+        let one = |args: &mut Vec<Sym>| args.pop().unwrap_or(Sym::Identity);
+        match self {
+            Op::Neg => Sym::Neg(Box::new(one(&mut args))),
+            Op::Degrees => Sym::times(one(&mut args), Sym::Name("deg".into())),
+            Op::Arith(op) => {
+                let b = one(&mut args);
+                let a = one(&mut args);
+                match op {
+                    BinOp::Mul => Sym::times(a, b),
+                    BinOp::Add => Sym::Add(Box::new(a), Box::new(b)),
+                    BinOp::Sub => Sym::Sub(Box::new(a), Box::new(b)),
+                    BinOp::Div => Sym::Div(Box::new(a), Box::new(b)),
+                    BinOp::Pow if constant(&b).and_then(Value::as_scalar) == Some(-1.0) => {
+                        a.inverse()
+                    }
+                    BinOp::Pow => Sym::Pow(Box::new(a), Box::new(b)),
+                }
+            }
+            Op::Inverse => one(&mut args).inverse(),
+            Op::Transpose => one(&mut args).transpose(),
+            Op::Member(part) => Sym::Member(Box::new(one(&mut args)), part),
+            Op::Index(sels) => Sym::Index(
+                Box::new(one(&mut args)),
+                sels.iter()
+                    .map(|s| match s {
+                        Sel::At(x) => Some(*x),
+                        Sel::All => None,
+                    })
+                    .collect(),
+            ),
+            Op::Block => Sym::Bracket(Box::new(one(&mut args))),
+            Op::Vector => Sym::Vector(args),
+            Op::Call(b, name) => match b.role() {
+                Role::Inverse => one(&mut args).inverse(),
+                role => Sym::Call(
+                    Fun {
+                        name: b.names().find(|n| *n == name).unwrap_or(b.name),
+                        role,
+                    },
+                    args,
+                ),
+            },
+        }
+    }
+
+    /// Whether a formula operand, with no `given` symbol, makes the result
+    /// symbolic when the exact path gives none (arithmetic and vectors of
+    /// formulas have always an exact form or none at all).
+    fn formula_is_symbolic(self) -> bool {
+        !matches!(self, Op::Arith(_) | Op::Vector)
+    }
+
+    /// The operation on values: the exact path when a symbolic scalar is
+    /// among numbers ([`Op::formula`]), the symbolic one when a `given`
+    /// symbol is among the operands ([`Op::symbolic`]), else numbers
+    /// ([`Op::numeric`]). `kind` is the result's kind as checked.
+    pub fn apply(self, args: &[&Value], kind: &Kind) -> Result<Value, String> {
+        match self.exact_or_symbolic(args, kind) {
+            Some(v) => v,
+            None => self.numeric(args, Some(kind)),
+        }
+    }
+
+    /// The first two paths of [`Op::apply`]: None when the operands are
+    /// numbers (a builtin call then computes with its spans and warnings).
+    pub fn exact_or_symbolic(self, args: &[&Value], kind: &Kind) -> Option<Result<Value, String>> {
+        if formula::applies(args)
+            && let Some(v) = self.formula(args, kind)
+        {
+            return Some(v);
+        }
+        let formulas = self.formula_is_symbolic();
+        args.iter()
+            .any(|v| v.is_symbolic() || (formulas && matches!(v, Value::Formula { .. })))
+            .then(|| {
+                Ok(Value::Sym(
+                    self.symbolic(args.iter().map(|v| to_sym(v)).collect()),
+                ))
+            })
+    }
+}
+
+/// `[ ... ]` ([`Op::Block`]) by the first two paths of [`Op::apply`]:
+/// None when every entry is a number.
+pub fn block(rows: &[Vec<Value>]) -> Option<Result<Value, String>> {
+    let refs: Vec<&Value> = rows.iter().flatten().collect();
+    if formula::applies(&refs) {
+        return Some(formula::brackets(rows));
+    }
+    refs.iter()
+        .any(|v| v.is_symbolic() || matches!(v, Value::Formula { .. }))
+        .then(|| {
+            Ok(Value::Sym(block_symbolic(
+                rows.iter().map(|r| r.iter().map(to_sym).collect()),
+            )))
+        })
+}
+
+/// `[ ... ]` on numbers: [`ops::brackets`].
+pub fn block_numeric(rows: &[Vec<Value>]) -> Result<Value, String> {
+    ops::brackets(rows)
+}
+
+/// `[ ... ]` over symbols: the bracket `[x]` of one entry, else a block.
+pub fn block_symbolic(rows: impl Iterator<Item = Vec<Sym>>) -> Sym {
+    let mut rows: Vec<Vec<Sym>> = rows.collect();
+    if let [row] = rows.as_mut_slice()
+        && row.len() == 1
+        && let Some(x) = row.pop()
+    {
+        return Op::Block.symbolic(vec![x]);
+    }
+    Sym::Block(rows)
+}
+
+/// Where a builtin call stands, for its messages: the arguments' spans
+/// and source texts, the call's span, and the statement's warnings.
+pub struct Site<'w> {
+    pub spans: Vec<Span>,
+    pub call_span: Span,
+    pub typed: Vec<(Ty, String)>,
+    pub warnings: &'w mut Vec<Diagnostic>,
+}
+
+/// A builtin applied to numbers by its table row's function, with its
+/// notes ([`Op::Call`]'s numeric function; the evaluator gives the call's
+/// [`Site`], the substitution of numbers into symbols none).
+pub fn call(b: &Builtin, vals: Vec<Value>, site: Site) -> Result<Value, Diagnostic> {
+    let mut args = Args {
+        name: b.name,
+        signature: b.signature,
+        vals,
+        spans: site.spans,
+        call_span: site.call_span,
+        warnings: site.warnings,
+        typed: site.typed,
+    };
+    let v = (b.eval)(&mut args)?;
+    crate::builtins::notes::after_call(&mut args, &v);
+    Ok(v)
+}
+
+/// [`call`] where the call stands nowhere (symbols re-evaluated): errors
+/// as their message, warnings dropped.
+pub fn call_nowhere(b: &Builtin, vals: Vec<Value>) -> Result<Value, String> {
+    let mut warnings = Vec::new();
+    let site = Site {
+        spans: Vec::new(),
+        call_span: Span::default(),
+        typed: Vec::new(),
+        warnings: &mut warnings,
+    };
+    call(b, vals, site).map_err(|d| d.message)
+}
+
+/// A value as a symbolic operand (numbers become constants).
+pub(crate) fn to_sym(v: &Value) -> Sym {
+    match v {
+        Value::Sym(s) => s.clone(),
+        other => Sym::Const(
+            Box::new(other.clone()),
+            crate::values::format::inline(other, 4),
+        ),
+    }
+}
+
+/// The value of a constant operand.
+fn constant(s: &Sym) -> Option<&Value> {
+    match s {
+        Sym::Const(v, _) => Some(v),
+        _ => None,
+    }
+}
+
+/// The rule of `x[i]`, `M[i, j]`, `M[:, j]`: a tuple's part, a column
+/// in the outer frame of the matrix, a row, or an entry.
+fn index_type(t: &Ty, sels: &[Sel]) -> Result<Ty, RuleError> {
+    let outer = match t.frames.outer() {
+        Some(a) => Frames::One(*a),
+        None => Frames::None,
+    };
+    Ok(match (&t.kind, sels) {
+        (Kind::Tuple(ks), [Sel::At(i)])
+            if i.fract() == 0.0 && *i >= 1.0 && (*i as usize) <= ks.len() =>
+        {
+            Ty::plain(ks[*i as usize - 1].clone())
+        }
+        (Kind::Tuple(_), _) => Ty::plain(Kind::Unknown),
+        (k, _) if k.shape().is_none() => {
+            return Err(RuleError {
+                kind: Some(crate::diagnostics::ErrorKind::Type),
+                message: format!("cannot index a {k}"),
+                ..Default::default()
+            });
+        }
+        (_, [Sel::All, Sel::At(_)]) => Ty::new(Kind::Vector(None), outer),
+        (_, [Sel::At(_), Sel::All]) => Ty::plain(Kind::Matrix(Some(1), None)),
+        _ => Ty::scalar(),
+    })
+}
+
+/// The rule of [`Op::Block`], `[ ... ]`: the book's bracket of one vector, a column
+/// vector of one row of numbers, else a block matrix whose frames are the
+/// one pair tag inside it (`[R_sb, p_sb; 0, 0, 0, 1]` is {s}←{b}).
+pub fn block_type<T>(rows: &[Vec<T>], ty_of: impl Fn(&T) -> &Ty) -> Ty {
+    if rows.len() == 1 && rows[0].len() == 1 {
+        let t = ty_of(&rows[0][0]);
+        return match t.kind.vec_len() {
+            Some(3) => Ty::new(Kind::So3, t.frames),
+            Some(6) => Ty::new(Kind::Se3, t.frames),
+            _ => t.clone(),
+        };
+    }
+    let all_scalar = rows.iter().flatten().all(|t| ty_of(t).kind == Kind::Scalar);
+    if all_scalar && rows.len() == 1 {
+        return Ty::plain(Kind::Vector(Some(rows[0].len())));
+    }
+    let mut frames = Frames::None;
+    for t in rows.iter().flatten() {
+        if let Frames::Pair(..) = ty_of(t).frames {
+            if frames.is_none() {
+                frames = ty_of(t).frames;
+            } else if frames != ty_of(t).frames {
+                frames = Frames::None;
+                break;
+            }
+        }
+    }
+    // Shape: sum of widths of the first row, sum of heights of the first column.
+    let width: Option<usize> = rows[0]
+        .iter()
+        .map(|t| ty_of(t).kind.shape().and_then(|s| s.1))
+        .sum();
+    let height: Option<usize> = rows
+        .iter()
+        .map(|r| ty_of(&r[0]).kind.shape().and_then(|s| s.0))
+        .sum();
+    Ty::new(Kind::Matrix(height, width), frames)
+}
+
+/// The frame-mode policy (`--frames strict|warn|off`) for a refused
+/// operation: a frame mismatch is an error when strict, a warning when
+/// `warn`, nothing when `off`; any other refusal is an error. Ok when
+/// evaluation goes on (with the operands' frames dropped).
+pub fn frame_refusal(
+    mode: FrameMode,
+    frame: bool,
+    mut d: Diagnostic,
+    warnings: &mut Vec<Diagnostic>,
+) -> Result<(), Diagnostic> {
+    match (frame, mode) {
+        (false, _) | (true, FrameMode::Strict) => Err(d),
+        (true, FrameMode::Warn) => {
+            d.severity = Severity::Warning;
+            warnings.push(d);
+            Ok(())
+        }
+        (true, FrameMode::Off) => Ok(()),
+    }
+}
+
+/// The frame-mode policy for a warning about frames (a name that renames
+/// a moved frame): kept unless frames are `off`.
+pub fn frame_warning(mode: FrameMode, d: Diagnostic, warnings: &mut Vec<Diagnostic>) {
+    if mode != FrameMode::Off {
+        warnings.push(d);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::diagnostics::ErrorKind;
+
+    fn num(x: f64) -> Value {
+        Value::scalar(x)
+    }
+
+    #[test]
+    fn numbers_go_through_the_numeric_function() {
+        let (a, b) = (num(6.0), num(4.0));
+        let v = Op::Arith(BinOp::Div)
+            .apply(&[&a, &b], &Kind::Scalar)
+            .unwrap();
+        assert_eq!(v.as_scalar(), Some(1.5));
+        let v = Op::Degrees.apply(&[&num(180.0)], &Kind::Scalar).unwrap();
+        assert_eq!(v.as_scalar(), Some(PI));
+        let p = Value::vector(Kind::Vector(Some(3)), &[1.0, 2.0, 3.0]);
+        let sel = [Sel::At(2.0)];
+        let v = Op::Index(&sel).numeric(&[&p], None).unwrap();
+        assert_eq!(v.as_scalar(), Some(2.0));
+    }
+
+    #[test]
+    fn a_symbol_among_the_operands_gives_a_symbolic_form() {
+        let t = Value::Sym(Sym::Name("T_ab".into()));
+        let m1 = num(-1.0);
+        let inv = Op::Arith(BinOp::Pow).apply(&[&t, &m1], &Kind::SE3).unwrap();
+        let Value::Sym(s) = &inv else {
+            panic!("not symbolic: {inv:?}")
+        };
+        assert_eq!(s.to_string(), "inv(T_ab)");
+        let inv_b = crate::builtins::lookup("inv").unwrap();
+        let back = Op::Call(inv_b, "inv").apply(&[&inv], &Kind::SE3).unwrap();
+        let Value::Sym(s) = back else { panic!() };
+        assert_eq!(s.to_string(), "T_ab");
+        let ad = crate::builtins::lookup("Ad").unwrap();
+        assert_eq!(ad.role(), Role::Adjoint);
+        let s = Op::Call(ad, "Ad").symbolic(vec![Sym::Name("T_ab".into())]);
+        assert_eq!(s.to_string(), "Ad(T_ab)");
+    }
+
+    #[test]
+    fn the_frame_mode_decides_what_a_frame_mismatch_becomes() {
+        let d = || Diagnostic::error(ErrorKind::Frame, Default::default(), "frames");
+        let mut w = Vec::new();
+        assert!(frame_refusal(FrameMode::Strict, true, d(), &mut w).is_err());
+        assert!(frame_refusal(FrameMode::Warn, false, d(), &mut w).is_err());
+        assert!(frame_refusal(FrameMode::Off, true, d(), &mut w).is_ok());
+        assert!(w.is_empty());
+        assert!(frame_refusal(FrameMode::Warn, true, d(), &mut w).is_ok());
+        assert_eq!(w.len(), 1);
+        assert_eq!(w[0].severity, Severity::Warning);
+        frame_warning(FrameMode::Off, d(), &mut w);
+        assert_eq!(w.len(), 1);
+    }
+}
