@@ -378,17 +378,23 @@ fn index_type(t: &Ty, sels: &[Sel]) -> Result<Ty, RuleError> {
     })
 }
 
+/// The rule of `[x]`, one entry in brackets: the book's bracket of a 3-
+/// or 6-vector is in so(3) or se(3) (3.30, 3.70), in the vector's frame;
+/// anything else is itself.
+pub fn bracket_type(t: &Ty) -> Ty {
+    match t.kind.vec_len() {
+        Some(3) => Ty::new(Kind::So3, t.frames),
+        Some(6) => Ty::new(Kind::Se3, t.frames),
+        _ => t.clone(),
+    }
+}
+
 /// The rule of [`Op::Block`], `[ ... ]`: the book's bracket of one vector, a column
 /// vector of one row of numbers, else a block matrix whose frames are the
 /// one pair tag inside it (`[R_sb, p_sb; 0, 0, 0, 1]` is {s}←{b}).
 pub fn block_type<T>(rows: &[Vec<T>], ty_of: impl Fn(&T) -> &Ty) -> Ty {
     if rows.len() == 1 && rows[0].len() == 1 {
-        let t = ty_of(&rows[0][0]);
-        return match t.kind.vec_len() {
-            Some(3) => Ty::new(Kind::So3, t.frames),
-            Some(6) => Ty::new(Kind::Se3, t.frames),
-            _ => t.clone(),
-        };
+        return bracket_type(ty_of(&rows[0][0]));
     }
     let all_scalar = rows.iter().flatten().all(|t| ty_of(t).kind == Kind::Scalar);
     if all_scalar && rows.len() == 1 {

@@ -105,6 +105,11 @@ impl Interp<'_> {
             )
             .with_help("write the entries, e.g. [1, 2, 3] or [1, 0; 0, 1]"));
         }
+        if let [row] = rows
+            && let [e] = row.as_slice()
+        {
+            return self.bracket(e, span);
+        }
         let rows: Vec<&Vec<Expr>> = rows.iter().filter(|r| !r.is_empty()).collect();
         let mut trows = Vec::with_capacity(rows.len());
         for row in &rows {
@@ -139,6 +144,30 @@ impl Interp<'_> {
                 apply::block_numeric(&vrows)
             }
         };
+        let val = Some(v.map_err(|m| Diagnostic::error(ErrorKind::Type, span, m))?);
+        Ok(Typed {
+            ty: refine(ty, &val),
+            val,
+        })
+    }
+
+    /// `[x]`, one entry: the general path of [`Interp::brackets`] without
+    /// its rows (the book's bracket `[S]` is common).
+    fn bracket(&mut self, e: &Expr, span: Span) -> Result<Typed, Diagnostic> {
+        let t = self.expr(e)?;
+        if t.ty.kind.shape().is_none() {
+            return Err(Diagnostic::error(
+                ErrorKind::Type,
+                e.span,
+                format!("a {} cannot go inside [ ]", t.ty.kind),
+            ));
+        }
+        let ty = apply::bracket_type(&t.ty);
+        if !self.running() {
+            return Ok(Typed { ty, val: None });
+        }
+        let rows = [vec![t.val.unwrap_or_else(|| Value::scalar(f64::NAN))]];
+        let v = apply::block(&rows).unwrap_or_else(|| apply::block_numeric(&rows));
         let val = Some(v.map_err(|m| Diagnostic::error(ErrorKind::Type, span, m))?);
         Ok(Typed {
             ty: refine(ty, &val),

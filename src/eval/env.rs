@@ -85,6 +85,26 @@ impl Env {
             }
         }
     }
+    /// Binds `name` to a copy of a checked value (not a `given` symbol),
+    /// reusing the old binding's storage when the name is bound already.
+    #[inline]
+    pub fn set_value(&mut self, name: &str, ty: &Ty, val: &Option<Value>) {
+        match self.vars.get_mut(name) {
+            Some(old) => {
+                old.ty.clone_from(ty);
+                old.val.clone_from(val);
+                old.symbolic = false;
+            }
+            None => {
+                let b = Binding {
+                    ty: ty.clone(),
+                    val: val.clone(),
+                    symbolic: false,
+                };
+                self.vars.insert(name.to_string(), b);
+            }
+        }
+    }
     /// What `name` says about a value bound to it ([`Claim::of`]), read
     /// from the name the first time only.
     #[inline]

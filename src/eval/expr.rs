@@ -355,12 +355,17 @@ impl Interp<'_> {
         if args.len() == 1 {
             typed = self.spread(b, typed);
         }
-        // The types move out of the operands (no clone of their frames).
+        // The types move out of the operands; the values too when running
+        // (checking has none to keep).
         let mut tys = Vec::with_capacity(typed.len());
-        let mut vals = Vec::with_capacity(typed.len());
+        let mut vals = Vec::with_capacity(if self.running() { typed.len() } else { 0 });
         for t in typed {
             tys.push(t.ty);
-            vals.push(t.val);
+            if let Some(v) = t.val {
+                vals.push(v);
+            } else if self.running() {
+                vals.push(Value::scalar(f64::NAN));
+            }
         }
         let ty = match b.check(&tys) {
             Ok(ty) => ty,
@@ -387,10 +392,6 @@ impl Interp<'_> {
         if !self.running() {
             return Ok(Typed { ty, val: None });
         }
-        let vals: Vec<Value> = vals
-            .into_iter()
-            .map(|v| v.unwrap_or_else(|| Value::scalar(f64::NAN)))
-            .collect();
         super::list::numbers_only(b, &vals, span)?;
         if vals
             .iter()

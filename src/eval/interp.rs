@@ -131,14 +131,7 @@ impl<'a> Interp<'a> {
     /// Binds a checked value to `name` (statements call this only after
     /// they have succeeded).
     fn bind_value(&mut self, name: &str, t: &Typed) {
-        self.env.set(
-            name,
-            Binding {
-                ty: t.ty.clone(),
-                val: t.val.clone(),
-                symbolic: false,
-            },
-        );
+        self.env.set_value(name, &t.ty, &t.val);
     }
 
     /// Runs one statement. On error nothing is bound.
@@ -168,7 +161,7 @@ impl<'a> Interp<'a> {
             StmtKind::Assign { target, value } => {
                 let mut t = self.expr(value)?;
                 crate::check::rules::settle_in_place(&mut t.ty);
-                let t = self.bind_checked(&target.name, t, target.span, value.span)?;
+                self.bind_checked(&target.name, &mut t, target.span, value.span)?;
                 self.bind_value(&target.name, &t);
                 Ok(out(Names::One([target.name.clone()]), t))
             }
@@ -176,8 +169,9 @@ impl<'a> Interp<'a> {
                 let t = self.expr(value)?;
                 let parts = self.split_tuple(&t, targets.len(), value.span)?;
                 let mut bound = Vec::new();
-                for (target, part) in targets.iter().zip(parts) {
-                    bound.push(self.bind_checked(&target.name, part, target.span, value.span)?);
+                for (target, mut part) in targets.iter().zip(parts) {
+                    self.bind_checked(&target.name, &mut part, target.span, value.span)?;
+                    bound.push(part);
                 }
                 for (target, b) in targets.iter().zip(&bound) {
                     self.bind_value(&target.name, b);
@@ -295,17 +289,18 @@ impl<'a> Interp<'a> {
     fn bind_checked(
         &mut self,
         name: &str,
-        t: Typed,
+        t: &mut Typed,
         name_span: Span,
         value_span: Span,
-    ) -> Result<Typed, Diagnostic> {
+    ) -> Result<(), Diagnostic> {
         // Lists, pictures and strings take no frames from their names (§12):
         // theirs come from what they hold.
         if matches!(t.ty.kind, Kind::List(_) | Kind::Picture | Kind::Text) {
-            return Ok(t);
+            return Ok(());
         }
         let claim = self.env.claim(name);
-        let ty = match bind::bind_claimed(name, &claim, t.ty) {
+        let ty = std::mem::replace(&mut t.ty, Ty::plain(Kind::Unknown));
+        t.ty = match bind::bind_claimed(name, &claim, ty) {
             Ok(b) => {
                 if let Some(w) = b.warning {
                     self.rule_warning(*w, value_span, name_span);
@@ -323,21 +318,22 @@ impl<'a> Interp<'a> {
                 r.ty
             }
         };
-        let val = match t.val {
-            Some(Value::Num { m, kind }) if ty.kind != Kind::Unknown => {
-                let m = if ty.kind.is_group() && kind != ty.kind {
-                    self.group_at_binding(name, &ty.kind, m, value_span)?
-                } else {
-                    m
-                };
-                Some(Value::Num {
-                    kind: ty.kind.clone(),
-                    m,
-                })
-            }
-            other => other,
-        };
-        Ok(Typed { ty, val })
+        let ty = &t.ty;
+        if matches!(t.val, Some(Value::Num { .. })) && ty.kind != Kind::Unknown {
+            let Some(Value::Num { m, kind }) = t.val.take() else {
+                return Ok(());
+            };
+            let m = if ty.kind.is_group() && kind != ty.kind {
+                self.group_at_binding(name, &ty.kind, m, value_span)?
+            } else {
+                m
+            };
+            t.val = Some(Value::Num {
+                kind: t.ty.kind.clone(),
+                m,
+            });
+        }
+        Ok(())
     }
 
     /// The names of the parts of a bare builtin call's tuple (`q`, `s`, `h`
