@@ -192,7 +192,7 @@ impl Args<'_> {
         read_group(&m, group, span, self.warnings)
     }
 
-    /// Argument `i` as a rotation R ∈ SO(3) (§3.2.1), read per [`read_group`].
+    /// Argument `i` as a rotation R ∈ SO(3) (§3.2.1), read per `read_group` (LANGUAGE.md §5).
     pub fn so3(&mut self, i: usize) -> Result<Mat3, Diagnostic> {
         if let Value::Num {
             kind: Kind::SO3,
@@ -205,7 +205,7 @@ impl Args<'_> {
             self.group(i, Group::SO3)?.as_slice(),
         ))
     }
-    /// Argument `i` as a transform T ∈ SE(3) (§3.3.1), read per [`read_group`].
+    /// Argument `i` as a transform T ∈ SE(3) (§3.3.1), read per `read_group` (LANGUAGE.md §5).
     pub fn se3(&mut self, i: usize) -> Result<Mat4, Diagnostic> {
         if let Value::Num {
             kind: Kind::SE3,
@@ -218,13 +218,13 @@ impl Args<'_> {
             self.group(i, Group::SE3)?.as_slice(),
         ))
     }
-    /// Argument `i` as a planar rotation ∈ SO(2), read per [`read_group`].
+    /// Argument `i` as a planar rotation ∈ SO(2), read per `read_group` (LANGUAGE.md §5).
     pub fn so2(&mut self, i: usize) -> Result<Mat2, Diagnostic> {
         Ok(Mat2::from_column_slice(
             self.group(i, Group::SO2)?.as_slice(),
         ))
     }
-    /// Argument `i` as a planar transform ∈ SE(2), read per [`read_group`].
+    /// Argument `i` as a planar transform ∈ SE(2), read per `read_group` (LANGUAGE.md §5).
     pub fn se2(&mut self, i: usize) -> Result<Mat3, Diagnostic> {
         Ok(Mat3::from_column_slice(
             self.group(i, Group::SE2)?.as_slice(),

@@ -148,37 +148,43 @@ fn align_cells<const N: usize>(
             frac_w[j] = frac_w[j].max(cell.frac_width());
         }
     }
-    // Each row is laid out in a buffer of spaces on the stack: only the
-    // cells and commas are written, the padding is already there.
+    // Each row is laid out in a buffer of spaces on the stack, right to
+    // left: a cell is copied as its whole fixed-size buffer (spaces, then
+    // its text) ending where the cell ends, so that the copy has a
+    // constant size; the spaces fall only where cells to the left, the
+    // commas and the row's start are written afterwards.
     const ROW: usize = 512;
+    let lead = Ascii::WIDTH + indent + 2;
     let width: usize = int_w.iter().chain(&frac_w).sum::<usize>() + 2 * ncols;
-    if indent + 2 + width > ROW {
+    if lead + width > ROW {
         return align(out, m, digits.into(), indent, s);
     }
     let block = &mut s.bytes;
     block.clear();
     block.reserve(nrows * (indent + 2 + width) + 1);
+    let mut row = [b' '; ROW];
     for r in 0..nrows {
-        let mut row = [b' '; ROW];
-        let mut k = if r == 0 {
-            row[0] = b'[';
-            1
-        } else {
-            row[0] = b'\n';
-            indent + 2
-        };
-        for j in 0..ncols {
-            let cell = &cells[r * ncols + j];
-            let text = cell.bytes();
-            k += int_w[j] - cell.int_width();
-            row[k..k + text.len()].copy_from_slice(text);
-            k += text.len();
+        let cells = &cells[r * ncols..(r + 1) * ncols];
+        let mut ends = [0usize; 6];
+        let mut k = lead;
+        for (j, cell) in cells.iter().enumerate() {
+            k += int_w[j] - cell.int_width() + cell.len();
+            ends[j] = k;
             if j + 1 < ncols {
-                row[k] = b',';
                 k += frac_w[j] - cell.frac_width() + 2;
             }
         }
-        block.extend_from_slice(&row[..k]);
+        for j in (0..ncols).rev() {
+            let end = ends[j];
+            row[end - Ascii::WIDTH..end].copy_from_slice(cells[j].padded());
+            if j + 1 < ncols {
+                row[end] = b',';
+            }
+        }
+        let from = if r == 0 { lead - 1 } else { lead - indent - 2 };
+        row[from] = if r == 0 { b'[' } else { b'\n' };
+        block.extend_from_slice(&row[from..k]);
+        row[from..k].fill(b' ');
     }
     block.push(b']');
     // Every byte is ASCII: digits, '.', '-', spaces, brackets.
@@ -264,15 +270,41 @@ fn write_type_label(out: &mut String, ty: &Ty, val: Option<&Value>) -> bool {
         Kind::Mechanism | Kind::Function | Kind::Picture | Kind::Text => false,
         Kind::Tuple(_) => false,
         // As `Ty`'s Display: the kind, then the frames if any.
-        k if ty.frames.is_none() => {
-            let _ = write!(out, "{k}");
-            true
-        }
         k => {
-            let _ = write!(out, "{k} {}", ty.frames);
+            match kind_name(k) {
+                Some(name) => out.push_str(name),
+                None => {
+                    let _ = write!(out, "{k}");
+                }
+            }
+            if !ty.frames.is_none() {
+                let _ = write!(out, " {}", ty.frames);
+            }
             true
         }
     }
+}
+
+/// The book's name of a kind without parts, as `Kind`'s `Display` writes
+/// it (without the formatting machinery; a test checks they agree).
+fn kind_name(k: &Kind) -> Option<&'static str> {
+    Some(match k {
+        Kind::Scalar => "scalar",
+        Kind::SO3 => "SO(3)",
+        Kind::SE3 => "SE(3)",
+        Kind::So3 => "so(3)",
+        Kind::Se3 => "se(3)",
+        Kind::SO2 => "SO(2)",
+        Kind::SE2 => "SE(2)",
+        Kind::So2 => "so(2)",
+        Kind::Se2 => "se(2)",
+        Kind::Twist => "twist",
+        Kind::Screw => "screw axis",
+        Kind::Wrench => "wrench",
+        Kind::Adjoint { transposed: false } => "adjoint",
+        Kind::Adjoint { transposed: true } => "adjoint transpose",
+        _ => return None,
+    })
 }
 
 /// One value with its label, after `prefix` (e.g. `T_ac = `).
@@ -300,9 +332,9 @@ fn write_value(out: &mut String, prefix: &str, ty: &Ty, v: &Value, style: Style)
             out.push_str(&list_label(ty, vs));
             return;
         }
-        Value::Num { m, .. } if m.ncols() > 1 && m.nrows() > 1 => {
+        Value::Num { .. } => {
             out.push_str(prefix);
-            write_matrix_block(out, m, style, width(prefix));
+            return write_number(out, width(prefix), ty, v, style);
         }
         Value::Formula { m, .. } => {
             out.push_str(&super::formula::name_prefix(prefix, style));
@@ -321,6 +353,23 @@ fn write_value(out: &mut String, prefix: &str, ty: &Ty, v: &Value, style: Style)
             write_inline(out, v, style);
         }
     }
+    write_label(out, ty, v, style);
+}
+
+/// A number, vector or matrix after its prefix (which ends at column
+/// `indent`), then its label.
+fn write_number(out: &mut String, indent: usize, ty: &Ty, v: &Value, style: Style) {
+    match v {
+        Value::Num { m, .. } if m.ncols() > 1 && m.nrows() > 1 => {
+            write_matrix_block(out, m, style, indent)
+        }
+        _ => write_inline(out, v, style),
+    }
+    write_label(out, ty, v, style);
+}
+
+/// `  : SE(3) {a}←{b}` after a value (nothing for plain numbers).
+fn write_label(out: &mut String, ty: &Ty, v: &Value, style: Style) {
     let at = out.len();
     // In LaTeX the label is a comment, so the line stays valid LaTeX (§7).
     let latex = style.sym == crate::sym::print::Mode::Latex && matches!(v, Value::Formula { .. });
@@ -373,6 +422,13 @@ pub fn show_outcome(o: &Outcome, style: impl Into<Style>) -> String {
             out.push_str(&parts.join("\n"));
         }
         (0, _) => write_value(&mut out, "", &o.ty, v, style),
+        (1, Value::Num { .. }) => {
+            // `T_ab = ` written in place (no prefix string).
+            let name = &o.names[0];
+            out.push_str(name);
+            out.push_str(" = ");
+            write_number(&mut out, width(name) + 3, &o.ty, v, style);
+        }
         (1, _) => {
             let mut prefix = String::with_capacity(o.names[0].len() + 3);
             prefix.push_str(&o.names[0]);
@@ -399,4 +455,33 @@ pub fn show_outcome(o: &Outcome, style: impl Into<Style>) -> String {
         _ => write_value(&mut out, "", &o.ty, v, style),
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn kind_names_are_the_display_names() {
+        let kinds = [
+            Kind::Scalar,
+            Kind::SO3,
+            Kind::SE3,
+            Kind::So3,
+            Kind::Se3,
+            Kind::SO2,
+            Kind::SE2,
+            Kind::So2,
+            Kind::Se2,
+            Kind::Twist,
+            Kind::Screw,
+            Kind::Wrench,
+            Kind::Adjoint { transposed: false },
+            Kind::Adjoint { transposed: true },
+        ];
+        for k in kinds {
+            assert_eq!(kind_name(&k), Some(k.to_string().as_str()));
+        }
+        assert_eq!(kind_name(&Kind::Vector(Some(3))), None);
+    }
 }

@@ -1,5 +1,8 @@
 //! The value layer, below everything that computes: runtime [`value::Value`]s
-//! and symbolic expressions over `given` names ([`symbolic`]), the group a
+//! whose numbers are a [`num::Num`] (a scalar, the book's 3-, 4- and
+//! 6-vectors and 3×3, 4×4, 6×6 matrices in fixed-size nalgebra types, a
+//! general matrix only for other shapes), symbolic expressions over
+//! `given` names ([`symbolic`]), the group a
 //! matrix belongs to ([`convert`]), the arithmetic of the language on values
 //! ([`ops`]: products, powers, inverses, members, indexing, brackets), and
 //! numbers as text ([`number`], [`exact`], [`format`]). It imports only

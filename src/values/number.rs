@@ -68,7 +68,7 @@ pub struct Ascii {
 impl Default for Ascii {
     fn default() -> Ascii {
         Ascii {
-            buf: [0; 24],
+            buf: [b' '; 24],
             start: 24,
             point: 24,
         }
@@ -76,6 +76,9 @@ impl Default for Ascii {
 }
 
 impl Ascii {
+    /// The length of [`Ascii::padded`].
+    pub const WIDTH: usize = 24;
+
     /// Writes [`fmt_num`]'s text of `x` when `x` is finite, below 1e15,
     /// not in scientific notation and `digits ≤ 9` (the same text, byte
     /// for byte), and says whether it did. `x` is rounded to `digits`
@@ -154,6 +157,21 @@ impl Ascii {
     #[inline]
     pub fn bytes(&self) -> &[u8] {
         &self.buf[usize::from(self.start)..]
+    }
+    /// The text right-aligned in [`Ascii::WIDTH`] bytes, spaces before it.
+    #[inline]
+    pub fn padded(&self) -> &[u8; 24] {
+        &self.buf
+    }
+    /// Bytes of the text.
+    #[inline]
+    pub fn len(&self) -> usize {
+        24 - usize::from(self.start)
+    }
+    /// True before anything is written.
+    #[inline]
+    pub fn is_empty(&self) -> bool {
+        self.start == 24
     }
     /// Characters before the decimal point (all of them without one).
     #[inline]
