@@ -8,15 +8,27 @@
 //! cli, repl     front ends (the terminal, flags, `:` commands)
 //! session       parse → check → evaluate over a source text; reading scripts
 //! output        outcomes as text blocks and JSON lines
-//! eval          the environment and the interpreter; symbols, derive
+//! draw          pictures: marks, projection, SVG and PNG (§12)
+//! eval          the environment, the interpreter and its one operation
+//!               seam (`eval::apply::Op`: rule, numbers, exact and symbolic
+//!               forms of each operation); substitution, derive
 //! builtins      the one table of builtin functions (help and completion use it)
-//! values        runtime values, symbols, the language's arithmetic, numbers as text
-//! check         kinds and frame tags, inferred without evaluating
-//! syntax        the pest grammar (`grammar/chasles.pest`) and the AST
+//! values        runtime values (`values::num::Num`: fixed-size shapes),
+//!               symbols, the language's arithmetic, numbers as text
+//! check         kinds and frame tags (interned frame names), inferred
+//!               without evaluating: the frame algebra
+//! syntax        the pest grammar (`grammar/chasles.pest`), the fast parser
+//!               that agrees with it, and the AST
 //! diagnostics   errors and warnings as data, and their rendering
 //! span          byte spans and line numbers
-//! lie, mech     SO(3), SE(3), SO(2), SE(2); Grübler and C-space (chapter 2)
+//! lie, mech,    SO(3), SE(3), SO(2), SE(2) (free functions and the group
+//! sym           types of `lie::group`); Grübler and C-space (chapter 2);
+//!               symbolic scalars in canonical form — none of them knows
+//!               the language
 //! ```
+//!
+//! Each layer imports only layers below it in this list (`draw` imports
+//! `values` and `check`; `session` drives `draw`).
 //!
 //! - [`syntax`]: the pest grammar and the AST with spans;
 //! - [`check`]: kinds and frame tags, inferred without evaluating;
