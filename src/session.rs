@@ -3,6 +3,7 @@
 //! The CLI, the REPL and the tests all drive chasles through this.
 
 use std::io::Read;
+use std::ops::ControlFlow;
 
 use crate::diagnostics::{Diagnostic, ErrorKind, render};
 use crate::eval::env::{Env, FrameMode, Mode};
@@ -156,7 +157,8 @@ impl Session {
     ) -> usize {
         let mut errors = 0;
         let mut lines = Lines::new(src);
-        for parsed in syntax::statements(src) {
+        // Long scripts are parsed on a second thread (syntax::pipeline).
+        syntax::pipeline::for_each_statement(src, |parsed| {
             let report = match parsed {
                 Err(d) => Report {
                     line: lines.line(d.span.start),
@@ -190,10 +192,11 @@ impl Session {
             if failed {
                 errors += 1;
                 if !keep_going {
-                    break;
+                    return ControlFlow::Break(());
                 }
             }
-        }
+            ControlFlow::Continue(())
+        });
         errors
     }
 

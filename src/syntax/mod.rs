@@ -30,6 +30,7 @@ mod grammar;
 pub mod ident;
 mod mech;
 mod parser;
+pub mod pipeline;
 mod ranges;
 mod rewrite;
 mod rules;
