@@ -320,7 +320,7 @@ impl P<'_> {
                     (op, false, self.span(at, at + width))
                 }
                 None => {
-                    self.stack.passes.spacing |= !clear_juxtaposition(&lhs, &rhs);
+                    self.stack.passes.spacing = true;
                     let gap = Span::new(lhs.span.end, rhs.span.start.max(lhs.span.end));
                     (BinOp::Mul, true, gap)
                 }
@@ -357,17 +357,4 @@ impl P<'_> {
             _ => self.char_at(at).is_some_and(xid_start),
         }
     }
-}
-
-/// A juxtaposition `spacing` has nothing to say about: its left side ends
-/// with neither a number nor a bare call (`sin θ` notes itself) and its
-/// right side does not start with a bracket (`[S] 0.1`, `x (1, 2)`).
-fn clear_juxtaposition(lhs: &Expr, rhs: &Expr) -> bool {
-    matches!(
-        lhs.kind,
-        ExprKind::Brackets(_) | ExprKind::Paren(_) | ExprKind::Var(_) | ExprKind::Call { .. }
-    ) && matches!(
-        rhs.kind,
-        ExprKind::Number(_) | ExprKind::Var(_) | ExprKind::Paren(_) | ExprKind::Call { .. }
-    )
 }

@@ -417,6 +417,8 @@ impl P<'_> {
 
     pub(super) fn brackets(&mut self) -> Built {
         self.spend()?;
+        // `[1 -x]`, `[2 pi]`: what reads two ways in brackets.
+        self.stack.passes.spacing = true;
         let start = self.pos;
         self.pos += 1;
         let rows_mark = self.stack.rows.len();
@@ -461,15 +463,6 @@ impl P<'_> {
         self.pos += 1;
         let span = self.span(start, self.pos);
         let rows = self.stack.rows.split_off(rows_mark);
-        // `[1 -x]`, `[2 pi]`: what reads two ways in brackets is an element
-        // that is an operator chain; other elements note their own needs.
-        if rows
-            .iter()
-            .flatten()
-            .any(|e| matches!(e.kind, ExprKind::Binary { .. }))
-        {
-            self.stack.passes.spacing = true;
-        }
         // numpy's nested rows `[[1, 2], [3, 4]]` are rewritten.
         if rows
             .iter()

@@ -102,25 +102,6 @@ fn fast_path_agrees_with_pest() {
     }
 }
 
-/// Which statements `spacing` may skip: the book's `[S] θ` and plain
-/// products do not need it; what reads two ways does.
-#[test]
-fn spacing_is_asked_for_only_where_it_can_refuse() {
-    let passes = |src: &str| {
-        let mut stack = super::Stack::default();
-        let span = crate::syntax::ast::Span::new(0, src.len());
-        super::parse_statement_with(src, span, &mut stack).map(|_| stack.passes.spacing)
-    };
-    for src in ["T = exp([S] 0.1)", "x = [w] y + f(a) (1, 2)", "v = [a, b]"] {
-        assert_eq!(passes(src), Some(false), "{src:?}");
-    }
-    for src in [
-        "[1 -x]", "[2 pi]", "R [1, 2]", "2 x", "x [w]", "sin θ", "T_123",
-    ] {
-        assert_eq!(passes(src), Some(true), "{src:?}");
-    }
-}
-
 const TOKENS: &[&str] = &[
     "(", ")", "[", "]", ",", ";", "+", "-", "*", "/", "^", ".", "'", "deg", "°", "pi", "π", "1",
     "2.5", ".5", "1e", "1e-3", "T_ab", "x", "θ", "=", "==", ":", "true", "false", "given",
