@@ -52,9 +52,23 @@ impl Interp<'_> {
     /// when it runs low. A symbolic result beyond the size limits of
     /// [`super::value::Sym::too_large`] is a domain error.
     pub fn expr(&mut self, e: &Expr) -> Result<Typed, Diagnostic> {
-        let t = stacker::maybe_grow(256 * 1024, 4 * 1024 * 1024, || self.expr_node(e))?;
-        self.within_limits(&t, e.span)?;
-        Ok(t)
+        // The stack is checked for room every fourth level of nesting (the
+        // check costs more than a small node): the red zone covers the four
+        // frames between checks, in debug builds too.
+        let nest = self.nest;
+        self.nest = nest.wrapping_add(1);
+        let t = if nest.is_multiple_of(4) {
+            stacker::maybe_grow(512 * 1024, 4 * 1024 * 1024, || self.expr_node(e))
+        } else {
+            self.expr_node(e)
+        };
+        self.nest = nest;
+        if let Ok(t) = &t
+            && matches!(t.val, Some(Value::Sym(_) | Value::Formula { .. }))
+        {
+            self.within_limits(t, e.span)?;
+        }
+        t
     }
 
     fn expr_node(&mut self, e: &Expr) -> Result<Typed, Diagnostic> {

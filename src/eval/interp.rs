@@ -75,6 +75,9 @@ pub struct Interp<'a> {
     /// Warnings of the current statement.
     pub warnings: Vec<Diagnostic>,
     pub(super) depth: usize,
+    /// How deep [`Interp::expr`] is nested in the tree now (the stack is
+    /// checked for room every few levels, not at every node).
+    pub(super) nest: u32,
     /// The size an unbound `I` takes here (from the operand beside it).
     pub(super) eye: Option<usize>,
 }
@@ -91,6 +94,7 @@ impl<'a> Interp<'a> {
             frames,
             warnings: Vec::new(),
             depth: 0,
+            nest: 0,
             eye: None,
         }
     }
