@@ -248,8 +248,12 @@ impl P<'_> {
         let start = self.pos;
         let sup = std::mem::take(&mut self.sup);
         let (mut lhs, mut depth) = match self.byte(start) {
-            // `R^{T}`, `R^{-1}`: the group is the whole exponent.
-            Some(b'{') if sup => self.group(b'}')?,
+            // `R^{T}`, `R^{-1}`: the group is the whole exponent. What
+            // reads two ways inside it is left to the spacing pass.
+            Some(b'{') if sup => {
+                self.stack.passes.spacing = true;
+                self.group(b'}')?
+            }
             Some(b'-' | b'+') | Some(0xE2) if self.sign_at(start).is_some() => {
                 let (op, width) = self.sign_at(start)?;
                 self.spend()?;
