@@ -3,7 +3,6 @@
 //! The CLI, the REPL and the tests all drive chasles through this.
 
 use std::io::Read;
-use std::ops::ControlFlow;
 
 use crate::diagnostics::{Diagnostic, ErrorKind, render};
 use crate::eval::env::{Env, FrameMode, Mode};
@@ -157,8 +156,7 @@ impl Session {
     ) -> usize {
         let mut errors = 0;
         let mut lines = Lines::new(src);
-        // Long scripts are parsed on a second thread (syntax::pipeline).
-        syntax::pipeline::for_each_statement(src, |parsed| {
+        for parsed in syntax::statements(src) {
             let report = match parsed {
                 Err(d) => Report {
                     line: lines.line(d.span.start),
@@ -192,11 +190,10 @@ impl Session {
             if failed {
                 errors += 1;
                 if !keep_going {
-                    return ControlFlow::Break(());
+                    break;
                 }
             }
-            ControlFlow::Continue(())
-        });
+        }
         errors
     }
 

@@ -30,7 +30,6 @@ mod grammar;
 pub mod ident;
 mod mech;
 mod parser;
-pub mod pipeline;
 mod ranges;
 mod rewrite;
 mod rules;
