@@ -194,29 +194,17 @@ impl Args<'_> {
 
     /// Argument `i` as a rotation R ∈ SO(3) (§3.2.1), read per `read_group` (LANGUAGE.md §5).
     pub fn so3(&mut self, i: usize) -> Result<Mat3, Diagnostic> {
-        if let Value::Num {
-            kind: Kind::SO3,
-            m: Num::M3(r),
-        } = &self.vals[i]
-        {
-            return Ok(*r);
-        }
-        Ok(Mat3::from_column_slice(
-            self.group(i, Group::SO3)?.as_slice(),
-        ))
+        Ok(match self.group(i, Group::SO3)? {
+            Num::M3(m) => m,
+            m => Mat3::from_column_slice(m.as_slice()),
+        })
     }
     /// Argument `i` as a transform T ∈ SE(3) (§3.3.1), read per `read_group` (LANGUAGE.md §5).
     pub fn se3(&mut self, i: usize) -> Result<Mat4, Diagnostic> {
-        if let Value::Num {
-            kind: Kind::SE3,
-            m: Num::M4(t),
-        } = &self.vals[i]
-        {
-            return Ok(*t);
-        }
-        Ok(Mat4::from_column_slice(
-            self.group(i, Group::SE3)?.as_slice(),
-        ))
+        Ok(match self.group(i, Group::SE3)? {
+            Num::M4(m) => m,
+            m => Mat4::from_column_slice(m.as_slice()),
+        })
     }
     /// Argument `i` as a planar rotation ∈ SO(2), read per `read_group` (LANGUAGE.md §5).
     pub fn so2(&mut self, i: usize) -> Result<Mat2, Diagnostic> {

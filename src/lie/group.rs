@@ -13,7 +13,7 @@ use super::{Mat2, Mat3, Mat4, Mat6, Vec3, Vec6, project, se2, se3, so2, so3};
 pub trait LieGroup: Sized + Copy {
     /// The matrix of an element: 3×3 for SO(3) and SE(2), 4×4 for SE(3),
     /// 2×2 for SO(2).
-    type Matrix;
+    type Matrix: Copy + std::ops::Mul<Output = Self::Matrix>;
     /// Exponential coordinates: ω̂θ ∈ ℝ³ for SO(3) (§3.2.3), Sθ ∈ ℝ⁶ for
     /// SE(3) (§3.3.3), θ for SO(2), (ω, v_x, v_y)θ for SE(2).
     type Tangent;
@@ -32,14 +32,18 @@ pub trait LieGroup: Sized + Copy {
     fn project(m: &Self::Matrix) -> Self;
     /// The element `m` is, when it is within `tol` of the group
     /// ([`Self::distance`]); taken as it is, not projected.
-    fn from_matrix(m: &Self::Matrix, tol: f64) -> Option<Self>;
+    fn from_matrix(m: &Self::Matrix, tol: f64) -> Option<Self> {
+        (Self::distance(m) <= tol).then(|| Self::assume(*m))
+    }
     /// An element known to be in the group (a value whose kind says so,
     /// already read within tolerance); not checked again.
     fn assume(m: Self::Matrix) -> Self;
     /// The element's matrix.
     fn matrix(&self) -> &Self::Matrix;
     /// The product g₁g₂ (T_ac = T_ab T_bc, (3.63); R_ac = R_ab R_bc).
-    fn compose(&self, other: &Self) -> Self;
+    fn compose(&self, other: &Self) -> Self {
+        Self::assume(*self.matrix() * *other.matrix())
+    }
     /// The inverse in closed form: Rᵀ (Prop. 3.3), (3.64) for transforms.
     fn inverse(&self) -> Self;
     /// The exponential of exponential coordinates: Rodrigues (3.51),
@@ -91,17 +95,11 @@ impl LieGroup for SO3 {
     fn project(m: &Mat3) -> SO3 {
         SO3(project::project_to_so3(m))
     }
-    fn from_matrix(m: &Mat3, tol: f64) -> Option<SO3> {
-        (Self::distance(m) <= tol).then_some(SO3(*m))
-    }
     fn assume(m: Mat3) -> SO3 {
         SO3(m)
     }
     fn matrix(&self) -> &Mat3 {
         &self.0
-    }
-    fn compose(&self, other: &SO3) -> SO3 {
-        SO3(self.0 * other.0)
     }
     fn inverse(&self) -> SO3 {
         SO3(so3::inv(&self.0))
@@ -136,17 +134,11 @@ impl LieGroup for SE3 {
     fn project(m: &Mat4) -> SE3 {
         SE3(project::project_to_se3(m))
     }
-    fn from_matrix(m: &Mat4, tol: f64) -> Option<SE3> {
-        (Self::distance(m) <= tol).then_some(SE3(*m))
-    }
     fn assume(m: Mat4) -> SE3 {
         SE3(m)
     }
     fn matrix(&self) -> &Mat4 {
         &self.0
-    }
-    fn compose(&self, other: &SE3) -> SE3 {
-        SE3(self.0 * other.0)
     }
     fn inverse(&self) -> SE3 {
         SE3(se3::inv(&self.0))
@@ -196,17 +188,11 @@ impl LieGroup for SO2 {
     fn project(m: &Mat2) -> SO2 {
         SO2(project::project_to_so2(m))
     }
-    fn from_matrix(m: &Mat2, tol: f64) -> Option<SO2> {
-        (Self::distance(m) <= tol).then_some(SO2(*m))
-    }
     fn assume(m: Mat2) -> SO2 {
         SO2(m)
     }
     fn matrix(&self) -> &Mat2 {
         &self.0
-    }
-    fn compose(&self, other: &SO2) -> SO2 {
-        SO2(self.0 * other.0)
     }
     fn inverse(&self) -> SO2 {
         SO2(self.0.transpose())
@@ -242,17 +228,11 @@ impl LieGroup for SE2 {
     fn project(m: &Mat3) -> SE2 {
         SE2(project::project_to_se2(m))
     }
-    fn from_matrix(m: &Mat3, tol: f64) -> Option<SE2> {
-        (Self::distance(m) <= tol).then_some(SE2(*m))
-    }
     fn assume(m: Mat3) -> SE2 {
         SE2(m)
     }
     fn matrix(&self) -> &Mat3 {
         &self.0
-    }
-    fn compose(&self, other: &SE2) -> SE2 {
-        SE2(self.0 * other.0)
     }
     fn inverse(&self) -> SE2 {
         SE2(se2::inv(&self.0))
