@@ -12,7 +12,7 @@ fn sexp(e: &Expr) -> String {
         ExprKind::Number(x) if *x == std::f64::consts::PI => "π".into(),
         ExprKind::Number(x) => format!("{x}"),
         ExprKind::Bool(b) => format!("{b}"),
-        ExprKind::Var(v) => v.clone(),
+        ExprKind::Var(v) => v.to_string(),
         ExprKind::Unary { op, operand } => {
             let op = match op {
                 UnOp::Neg => "neg",
@@ -101,7 +101,7 @@ fn stmt_sexp(s: &Stmt) -> String {
                 .zip(times)
                 .map(|(t, time)| match time {
                     Some(x) => format!("{}({})", t.name, x.name),
-                    None => t.name.clone(),
+                    None => t.name.to_string(),
                 })
                 .collect();
             format!("given {} : {}", n.join(", "), ty.name)

@@ -6,13 +6,14 @@
 //! notation (juxtaposition, `[w]`, `30 deg`) is resolved by the parser into
 //! ordinary products, brackets and calls.
 
+pub use super::name::Name;
 pub use crate::span::Span;
 
 /// A name as written, e.g. `T_sb`, `theta_1`, `T_{world,cam}`, `ω_s`.
 /// Frame subscripts are read from the text by [`super::ident::name_frames`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct Ident {
-    pub name: String,
+    pub name: Name,
     pub span: Span,
 }
 
@@ -121,7 +122,7 @@ pub enum ExprKind {
     /// `true` / `false`.
     Bool(bool),
     /// A name (variable, symbol, or `ans`).
-    Var(String),
+    Var(Name),
     /// `-x`, `+x`.
     Unary { op: UnOp, operand: Box<Expr> },
     /// `a + b`, `a * b`, `a b` (implicit), `a ^ b`.

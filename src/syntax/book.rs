@@ -6,7 +6,7 @@
 
 use pest::iterators::Pair;
 
-use super::ast::{Expr, ExprKind, Ident, Span, UnOp};
+use super::ast::{Expr, ExprKind, Ident, Name, Span, UnOp};
 use super::grammar::Rule;
 use super::parser::Cx;
 use crate::diagnostics::Diagnostic;
@@ -23,7 +23,7 @@ impl Cx {
             None => text.replace(['(', ')'], ""),
         };
         Ident {
-            name,
+            name: Name::new(&name),
             span: self.span(pair.as_span()),
         }
     }
@@ -46,7 +46,7 @@ impl Cx {
             return Err(self.internal(span));
         };
         let func = Ident {
-            name: func.as_str().to_string(),
+            name: func.as_str().into(),
             span: self.span(func.as_span()),
         };
         let mut parts = arg.into_inner();

@@ -22,6 +22,7 @@
 
 use super::MAX_DEPTH;
 use super::ast::{BinOp, CmpOp, Expr, ExprKind, Ident, Span, Stmt, StmtKind, UnOp};
+use super::name::Recent;
 use lex::{is_ws, xid_start};
 
 mod atoms;
@@ -49,6 +50,8 @@ const BP_POW: u8 = 40;
 pub(crate) struct Stack {
     items: Vec<Expr>,
     rows: Vec<Vec<Expr>>,
+    /// The names made so far, found again without the global table.
+    names: Recent,
     /// The passes the last statement parsed needs.
     pub passes: Passes,
 }
@@ -144,9 +147,9 @@ impl P<'_> {
         self.budget = self.budget.checked_sub(1)?;
         Some(())
     }
-    fn ident(&self, start: usize, end: usize) -> Ident {
+    fn ident(&mut self, start: usize, end: usize) -> Ident {
         Ident {
-            name: self.src[start..end].to_string(),
+            name: self.stack.names.name(&self.src[start..end]),
             span: self.span(start, end),
         }
     }

@@ -29,6 +29,7 @@ mod fast;
 mod grammar;
 pub mod ident;
 mod mech;
+pub mod name;
 mod parser;
 mod ranges;
 mod rewrite;

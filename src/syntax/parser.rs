@@ -173,7 +173,7 @@ impl Cx {
             return Err(self.unexpected(&pair));
         }
         Ok(Ident {
-            name: pair.as_str().to_string(),
+            name: pair.as_str().into(),
             span: self.span(pair.as_span()),
         })
     }
@@ -528,7 +528,7 @@ impl Cx {
             },
             Rule::pi => leaf(ExprKind::Number(std::f64::consts::PI)),
             Rule::bool_lit => leaf(ExprKind::Bool(pair.as_str() == "true")),
-            Rule::ident => leaf(ExprKind::Var(pair.as_str().to_string())),
+            Rule::ident => leaf(ExprKind::Var(pair.as_str().into())),
             Rule::call => {
                 let mut it = pair.into_inner();
                 let func = self.ident(it.next().ok_or_else(|| self.internal(span))?)?;

@@ -204,7 +204,7 @@ impl P<'_> {
         }
         if let Some(end) = name {
             self.pos = end;
-            let var = ExprKind::Var(self.src[start..end].to_string());
+            let var = ExprKind::Var(self.stack.names.name(&self.src[start..end]));
             return Some(self.leaf(var, start, end));
         }
         if let Some(end) = self.keyword_at(start, "deg") {
@@ -244,7 +244,7 @@ impl P<'_> {
                     return None;
                 }
                 self.pos = stop;
-                let var = ExprKind::Var(self.src[at..stop].to_string());
+                let var = ExprKind::Var(self.stack.names.name(&self.src[at..stop]));
                 let (e, d) = self.leaf(var, at, stop);
                 self.units(e, d)
             }
@@ -324,7 +324,7 @@ impl P<'_> {
         let kind = if first.is_ascii_digit() {
             ExprKind::Number(number_value(&self.src[start..end])?)
         } else {
-            ExprKind::Var(self.src[start..end].to_string())
+            ExprKind::Var(self.stack.names.name(&self.src[start..end]))
         };
         self.pos = end;
         self.sup = false;
