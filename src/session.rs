@@ -157,34 +157,41 @@ impl Session {
         let mut errors = 0;
         let mut lines = Lines::new(src);
         for parsed in syntax::statements(src) {
-            let report = match parsed {
-                Err(d) => Report {
-                    line: lines.line(d.span.start),
-                    anchor: lines.anchor(),
-                    result: Err(habit_help(d, src)),
-                    warnings: Vec::new(),
-                },
+            // The report is built in place and changed there: its result
+            // (a large value) is written once, not moved through
+            // `map_err` and a second struct.
+            let mut report;
+            match parsed {
+                Err(d) => {
+                    report = Report {
+                        line: lines.line(d.span.start),
+                        anchor: lines.anchor(),
+                        result: Err(habit_help(d, src)),
+                        warnings: Vec::new(),
+                    }
+                }
                 Ok(stmt) => {
                     let line = lines.line(stmt.span.start);
                     let mut interp = Interp::new(&mut self.env, src, mode, self.settings.frames);
-                    let mut result = interp.stmt(&stmt).map_err(|d| habit_help(d, src));
-                    let mut warnings = std::mem::take(&mut interp.warnings);
-                    if let Ok(o) = &mut result
-                        && let Err(d) = self.picture(o, line)
-                    {
-                        result = Err(d);
-                    }
-                    if let Ok(o) = &result {
-                        warnings.extend(not_finite_warning(o));
-                    }
-                    Report {
+                    report = Report {
                         line,
                         anchor: lines.anchor(),
-                        result,
-                        warnings,
+                        result: interp.stmt(&stmt),
+                        warnings: Vec::new(),
+                    };
+                    report.warnings = std::mem::take(&mut interp.warnings);
+                    match &mut report.result {
+                        Err(d) => add_habit_help(d, src),
+                        Ok(o) => {
+                            if let Err(d) = self.picture(o, line) {
+                                report.result = Err(d);
+                            } else {
+                                report.warnings.extend(not_finite_warning(o));
+                            }
+                        }
                     }
                 }
-            };
+            }
             let failed = report.result.is_err();
             each(&report);
             if failed {
@@ -223,8 +230,14 @@ impl Session {
 /// (`syms x`, `format long`, `np.array(..)`) gets the chasles way as its
 /// help.
 fn habit_help(mut d: Diagnostic, src: &str) -> Diagnostic {
+    add_habit_help(&mut d, src);
+    d
+}
+
+/// [`habit_help`] in place.
+fn add_habit_help(d: &mut Diagnostic, src: &str) {
     if !matches!(d.kind, ErrorKind::Syntax | ErrorKind::Name) {
-        return d;
+        return;
     }
     let at = d.span.start.min(src.len());
     let start = src[..at].rfind('\n').map_or(0, |i| i + 1);
@@ -232,7 +245,6 @@ fn habit_help(mut d: Diagnostic, src: &str) -> Diagnostic {
     if let Some(h) = crate::diagnostics::habits::statement(&src[start..end]) {
         d.help = Some(h);
     }
-    d
 }
 
 /// A warning when a result holds NaN (an undefined operation such as
