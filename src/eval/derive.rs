@@ -66,7 +66,7 @@ impl Interp<'_> {
         }
         let itself = self.env.get(&target.name).map(|_| {
             vec![Step {
-                name: target.name.to_string(),
+                name: String::from(target.name),
                 inverted: false,
             }]
         });

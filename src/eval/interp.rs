@@ -167,7 +167,7 @@ impl<'a> Interp<'a> {
                 crate::check::rules::settle_in_place(&mut t.ty);
                 self.bind_checked(&target.name, &mut t, target.span, value.span)?;
                 self.bind_value(&target.name, &t);
-                Ok(out(Names::One([target.name.to_string()]), t))
+                Ok(out(Names::One([String::from(target.name)]), t))
             }
             StmtKind::Destructure { targets, value } => {
                 let t = self.expr(value)?;
@@ -180,7 +180,7 @@ impl<'a> Interp<'a> {
                 for (target, b) in targets.iter().zip(&bound) {
                     self.bind_value(&target.name, b);
                 }
-                let names = Names::Many(targets.iter().map(|t| t.name.to_string()).collect());
+                let names = Names::Many(targets.iter().map(|t| String::from(t.name)).collect());
                 let ty = Ty::plain(Kind::Tuple(
                     bound.iter().map(|b| b.ty.kind.clone()).collect(),
                 ));
@@ -217,7 +217,7 @@ impl<'a> Interp<'a> {
                         };
                         super::formula::scalar(crate::sym::Expr::symbol(s))
                     } else {
-                        Value::Sym(super::value::Sym::Name(n.name.to_string()))
+                        Value::Sym(super::value::Sym::Name(String::from(n.name)))
                     };
                     self.env.set(
                         &n.name,
@@ -248,13 +248,13 @@ impl<'a> Interp<'a> {
                     .with_help("choose another name for your function"));
                 }
                 let f = UserFn {
-                    name: name.name.to_string(),
-                    params: params.iter().map(|p| p.name.to_string()).collect(),
+                    name: String::from(name.name),
+                    params: params.iter().map(|p| String::from(p.name)).collect(),
                     body: body.clone(),
                 };
                 self.env
                     .fns
-                    .insert(name.name.to_string(), std::rc::Rc::new(f));
+                    .insert(String::from(name.name), std::rc::Rc::new(f));
                 let mut o = out(
                     Names::Many(Vec::new()),
                     Typed {
@@ -283,7 +283,7 @@ impl<'a> Interp<'a> {
             StmtKind::Derive { target } => {
                 let (chain, t) = self.derive(target)?;
                 self.bind_value(&target.name, &t);
-                let mut o = out(Names::One([target.name.to_string()]), t);
+                let mut o = out(Names::One([String::from(target.name)]), t);
                 o.note = Some(format!("{} = {chain}", target.name));
                 Ok(o)
             }

@@ -301,7 +301,7 @@ impl Interp<'_> {
         let mut domains = Vec::new();
         for (name, e) in vars {
             let (k, f, vals) = self.over(e)?;
-            domains.push((name.name.to_string(), Ty::new(k, f), vals));
+            domains.push((String::from(name.name), Ty::new(k, f), vals));
         }
         let names: Vec<String> = domains.iter().map(|d| d.0.clone()).collect();
         let saved: Vec<(String, Option<Binding>)> = names

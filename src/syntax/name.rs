@@ -146,6 +146,14 @@ impl From<&str> for Name {
     }
 }
 
+impl From<Name> for String {
+    /// The text as an owned string (quicker than `to_string`, which
+    /// goes through `Display`).
+    fn from(name: Name) -> String {
+        name.0.to_owned()
+    }
+}
+
 impl PartialEq<str> for Name {
     fn eq(&self, other: &str) -> bool {
         self.0 == other
