@@ -327,7 +327,7 @@ impl P<'_> {
                     (op, false, self.span(at, at + width))
                 }
                 None => {
-                    self.stack.passes.spacing = true;
+                    self.stack.passes.spacing |= juxtaposition_reads_two_ways(&lhs, &rhs);
                     let gap = Span::new(lhs.span.end, rhs.span.start.max(lhs.span.end));
                     (BinOp::Mul, true, gap)
                 }
@@ -364,4 +364,24 @@ impl P<'_> {
             _ => self.char_at(at).is_some_and(xid_start),
         }
     }
+}
+
+/// Whether the juxtaposition `lhs rhs` is one `spacing` may refuse: the
+/// operand before the gap a number, degrees or a call (`2 3`, `sin 2 x`),
+/// or the one after it a bracket (`R [1, 2]`). Read without regard to
+/// parentheses, so it may say yes where `spacing` finds nothing, never
+/// the other way round.
+fn juxtaposition_reads_two_ways(lhs: &Expr, rhs: &Expr) -> bool {
+    let mut last = lhs;
+    while let ExprKind::Binary { rhs: x, .. } | ExprKind::Unary { operand: x, .. } = &last.kind {
+        last = x;
+    }
+    let mut first = rhs;
+    while let ExprKind::Binary { lhs: x, .. } = &first.kind {
+        first = x;
+    }
+    matches!(
+        last.kind,
+        ExprKind::Number(_) | ExprKind::Degrees(_) | ExprKind::Call { .. }
+    ) || matches!(first.kind, ExprKind::Brackets(_))
 }

@@ -417,8 +417,6 @@ impl P<'_> {
 
     pub(super) fn brackets(&mut self) -> Built {
         self.spend()?;
-        // `[1 -x]`, `[2 pi]`: what reads two ways in brackets.
-        self.stack.passes.spacing = true;
         let start = self.pos;
         self.pos += 1;
         let rows_mark = self.stack.rows.len();
@@ -463,13 +461,15 @@ impl P<'_> {
         self.pos += 1;
         let span = self.span(start, self.pos);
         let rows = self.stack.rows.split_off(rows_mark);
-        // numpy's nested rows `[[1, 2], [3, 4]]` are rewritten.
-        if rows
-            .iter()
-            .flatten()
-            .any(|e| matches!(e.kind, ExprKind::Brackets(_)))
-        {
-            self.stack.passes.rewrite = true;
+        for e in rows.iter().flatten() {
+            match e.kind {
+                // numpy's nested rows `[[1, 2], [3, 4]]` are rewritten.
+                ExprKind::Brackets(_) => self.stack.passes.rewrite = true,
+                // `[1 -x]`, `[2 pi]`: what reads two ways in brackets is
+                // a sum or product at the top of an element.
+                ExprKind::Binary { .. } => self.stack.passes.spacing = true,
+                _ => {}
+            }
         }
         let kind = ExprKind::Brackets(rows);
         Some((Expr { kind, span }, depth + 1))
