@@ -149,7 +149,7 @@ impl P<'_> {
     }
     fn ident(&mut self, start: usize, end: usize) -> Ident {
         Ident {
-            name: self.stack.names.name(&self.src[start..end]),
+            name: self.stack.names.name_in(self.src, start, end),
             span: self.span(start, end),
         }
     }

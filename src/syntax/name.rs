@@ -39,10 +39,11 @@ impl Name {
 }
 
 /// The names a parser made recently, by their text (up to 16 bytes), so
-/// that a name seen again is found without the table's lock and hash: the
-/// text, zero-padded, is its own key (no name contains a zero byte).
+/// that a name seen again is found without the table's lock and hash. The
+/// key is the text's first and last eight bytes read as integers (a
+/// shorter text zero-padded); with the length it is the whole text.
 pub(crate) struct Recent {
-    slots: Box<[(u128, Option<Name>); RECENT]>,
+    slots: Box<[(u64, u64, Option<Name>); RECENT]>,
 }
 
 /// Slots in [`Recent`] (a power of two).
@@ -51,32 +52,48 @@ const RECENT: usize = 256;
 impl Default for Recent {
     fn default() -> Recent {
         Recent {
-            slots: Box::new([(0, None); RECENT]),
+            slots: Box::new([(0, 0, None); RECENT]),
         }
     }
 }
 
 impl Recent {
-    /// The handle of `text`, as [`Name::new`] gives it.
+    /// The handle of the name `src[start..end]`, as [`Name::new`] gives it.
     #[inline]
-    pub(crate) fn name(&mut self, text: &str) -> Name {
-        let bytes = text.as_bytes();
-        if bytes.is_empty() || bytes.len() > 16 {
-            return Name::new(text);
-        }
-        let mut padded = [0u8; 16];
-        padded[..bytes.len()].copy_from_slice(bytes);
-        let key = u128::from_le_bytes(padded);
-        let (low, high) = (key as u64, (key >> 64) as u64);
-        let mixed = (low ^ high.rotate_left(32)).wrapping_mul(0x9E37_79B9_7F4A_7C15);
+    pub(crate) fn name_in(&mut self, src: &str, start: usize, end: usize) -> Name {
+        let s = src.as_bytes();
+        let len = end - start;
+        let word = |at: usize| {
+            s.get(at..)
+                .and_then(|t| t.first_chunk::<8>())
+                .map(|w| u64::from_le_bytes(*w))
+        };
+        let key = match len {
+            1..=7 => word(start)
+                .map(|w| w & ((1 << (8 * len)) - 1))
+                .or_else(|| {
+                    let mut padded = [0; 8];
+                    padded[..len].copy_from_slice(s.get(start..end)?);
+                    Some(u64::from_le_bytes(padded))
+                })
+                .map(|w| (w, 0)),
+            8..=16 => word(start).zip(word(end - 8)),
+            _ => None,
+        };
+        let Some((low, high)) = key else {
+            return Name::new(&src[start..end]);
+        };
+        let mixed = (low ^ high.rotate_left(29)).wrapping_mul(0x9E37_79B9_7F4A_7C15);
         let slot = &mut self.slots[(mixed >> (64 - RECENT.trailing_zeros())) as usize];
-        if slot.0 == key
-            && let Some(name) = slot.1
+        if slot.0 == low
+            && slot.1 == high
+            && let Some(name) = slot.2
+            && name.len() == len
         {
             return name;
         }
-        let name = Name::new(text);
-        *slot = (key, Some(name));
+        let name = Name::new(&src[start..end]);
+        *slot = (low, high, Some(name));
         name
     }
 }
@@ -211,20 +228,31 @@ mod tests {
             "T_ba",
             "exp",
             "x",
-            "a_very_long_name_indeed",
             "ω",
             "Ad",
+            "theta_12",
+            "aaaaaaaa",
+            "aaaaaaaaa",
+            "aaaaaaaaaa",
+            "abcdefgh_ijklmnop",
+            "a_very_long_name_indeed",
         ];
+        let src = texts.join(" ");
         for _ in 0..3 {
+            // Each name inside a longer text, and as the whole text (no
+            // eight bytes to read past a short name's end).
+            let mut at = 0;
             for text in texts {
-                assert_eq!(recent.name(text), Name::new(text));
-                assert_eq!(recent.name(text).as_str(), text);
+                let end = at + text.len();
+                assert_eq!(recent.name_in(&src, at, end), Name::new(text));
+                assert_eq!(recent.name_in(text, 0, text.len()).as_str(), text);
+                at = end + 1;
             }
         }
         // More names than slots: evicted names come back the same.
         let many: Vec<String> = (0..500).map(|i| format!("x_{i}")).collect();
         for text in many.iter().chain(&many) {
-            assert_eq!(recent.name(text), Name::new(text));
+            assert_eq!(recent.name_in(text, 0, text.len()), Name::new(text));
         }
     }
 }

@@ -59,6 +59,28 @@ static NAME_BYTES: [NameByte; 256] = {
     table
 };
 
+/// [`ASCII_NAME`]'s bits: the byte continues an ASCII name (a letter, a
+/// digit, `_` or `'`); it is a digit.
+const NAME: u8 = 1;
+const DIGIT: u8 = 2;
+
+static ASCII_NAME: [u8; 256] = {
+    let mut table = [0; 256];
+    let mut b = 0;
+    while b < 128 {
+        let c = b as u8;
+        table[b] = if c.is_ascii_digit() {
+            NAME | DIGIT
+        } else if c.is_ascii_alphabetic() || c == b'_' || c == b'\'' {
+            NAME
+        } else {
+            0
+        };
+        b += 1;
+    }
+    table
+};
+
 /// The grammar's `keyword` (`pi`, `π`, `deg`, `true`, `false`, `given`,
 /// `derive`, `mech`) or `for`, compared byte by byte.
 fn is_keyword(word: &[u8]) -> bool {
@@ -100,7 +122,40 @@ impl P<'_> {
     /// The grammar's `ident` at `at`: `Some(Some(end))`, `Some(None)` where
     /// pest's `ident` fails, `None` to give up (a braced subscript). Notes
     /// a name with a digit or a non-ASCII character for `spacing`.
+    #[inline]
     pub(super) fn ident_at(&mut self, at: usize) -> Option<Option<usize>> {
+        let s = self.s;
+        match s.get(at) {
+            Some(b) if b.is_ascii_alphabetic() => {}
+            Some(b) if b.is_ascii() => return Some(None),
+            Some(_) => return self.ident_from(at),
+            None => return Some(None),
+        }
+        // An ASCII name (the common case): one table look-up a byte.
+        let mut i = at + 1;
+        let mut seen = 0;
+        while let Some(&b) = s.get(i) {
+            let class = ASCII_NAME[usize::from(b)];
+            if class == 0 {
+                break;
+            }
+            seen |= class;
+            i += 1;
+        }
+        match s.get(i) {
+            // It may go on with a non-ASCII letter.
+            Some(&b) if b >= 0x80 => return self.ident_from(at),
+            Some(b'{') if s[i - 1] == b'_' => return None,
+            _ => {}
+        }
+        if seen & DIGIT != 0 {
+            self.stack.passes.spacing = true;
+        }
+        Some((!is_keyword(&s[at..i])).then_some(i))
+    }
+
+    /// [`Self::ident_at`] for a name with a non-ASCII character.
+    fn ident_from(&mut self, at: usize) -> Option<Option<usize>> {
         let s = self.s;
         match s.get(at) {
             Some(b) if b.is_ascii_alphabetic() => {}

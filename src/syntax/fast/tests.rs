@@ -208,3 +208,48 @@ proptest! {
         agree(&src);
     }
 }
+
+#[test]
+fn numbers_in_one_pass_are_the_numbers_in_two() {
+    let texts = [
+        "1",
+        "12",
+        "0.25",
+        ".5",
+        "2.",
+        "1.e-3",
+        "1e",
+        "1e5",
+        "3E+2",
+        ".",
+        "123456789012345",
+        "1234567890123456",
+        "12345678.9012345",
+        "1234567.89012345",
+        "0.1",
+        "0.2",
+        "007",
+        "1.5.3",
+        "2.x",
+        "9007199254740993",
+    ];
+    for text in texts {
+        for tail in ["", ",", ")", " deg", ".T"] {
+            let src = format!("{text}{tail}");
+            let mut stack = super::Stack::default();
+            let p = super::P {
+                stack: &mut stack,
+                src: &src,
+                s: src.as_bytes(),
+                pos: 0,
+                off: 0,
+                budget: super::BUDGET,
+                sup: false,
+            };
+            let two = p
+                .number_at(0)
+                .and_then(|end| Some((super::atoms::number_value(&src[..end])?, end)));
+            assert_eq!(p.number_value_at(0), two, "{src:?}");
+        }
+    }
+}
