@@ -79,28 +79,129 @@ impl Passes {
 /// the source; `stack` is reused across statements and tells afterwards
 /// which passes the statement needs.
 pub(crate) fn parse_statement_with(chunk: &str, span: Span, stack: &mut Stack) -> Option<Stmt> {
+    let read = statement_in(chunk, span.start, stack)?;
+    (read.stop == chunk.len()).then_some(Stmt {
+        kind: read.kind,
+        span,
+    })
+}
+
+/// The splitter's work done by the parser: parses the statement that
+/// starts at or after `from` in `src` (after blank lines, `;` and comment
+/// lines) straight from the source, and gives it with the offset of the
+/// newline or `;` that ends it (or the source's length). `None` where the
+/// splitter and [`parse_statement_with`] must decide: at the end of the
+/// source, and wherever the splitter would have changed the text (a
+/// newline inside `( )`, a string), reported an error, or not let the
+/// fast path take the statement (nested deeper than `FAST_DEPTH`, longer
+/// than `MAX_STATEMENT_BYTES`). Only called where the splitter stands at
+/// the start of a statement with nothing open.
+pub(crate) fn parse_statement_in(
+    src: &str,
+    from: usize,
+    stack: &mut Stack,
+) -> Option<(Stmt, usize)> {
+    let s = src.as_bytes();
+    let mut start = from;
+    loop {
+        match s.get(start) {
+            Some(&b) if is_ws(b) || b == b'\n' || b == b';' => start += 1,
+            Some(b'#') => start = line_end(s, start),
+            Some(_) => break,
+            None => return None,
+        }
+    }
+    let text = &src[start..];
+    let read = statement_in(text, start, stack)?;
+    let stop = match text.as_bytes().get(read.stop) {
+        None | Some(b'\n' | b';') => read.stop,
+        // A comment after the statement, blanked by the splitter.
+        Some(b'#') => line_end(text.as_bytes(), read.stop),
+        Some(_) => return None,
+    };
+    let written = &text.as_bytes()[..read.end];
+    // Each bracket the parser opens costs budget (a plain `[1 2]` row
+    // inside brackets excepted), so few spent means shallow.
+    if read.end > super::MAX_STATEMENT_BYTES
+        || (BUDGET - read.budget + 1 > super::FAST_DEPTH && nesting(written) > super::FAST_DEPTH)
+    {
+        return None;
+    }
+    let span = Span::new(start, start + read.end);
+    Some((
+        Stmt {
+            kind: read.kind,
+            span,
+        },
+        start + stop,
+    ))
+}
+
+/// The offset of the newline ending the line at `at` (or the length).
+fn line_end(s: &[u8], at: usize) -> usize {
+    s[at..]
+        .iter()
+        .position(|&b| b == b'\n')
+        .map_or(s.len(), |k| at + k)
+}
+
+/// The deepest bracket nesting in `s` (balanced, no strings or comments).
+fn nesting(s: &[u8]) -> usize {
+    let (mut depth, mut deepest) = (0usize, 0);
+    for &b in s {
+        match b {
+            b'(' | b'[' | b'{' => {
+                depth += 1;
+                deepest = deepest.max(depth);
+            }
+            b')' | b']' | b'}' => depth = depth.saturating_sub(1),
+            _ => {}
+        }
+    }
+    deepest
+}
+
+/// A statement read from the start of a text.
+struct Read {
+    kind: StmtKind,
+    /// The end of its last token.
+    end: usize,
+    /// Where the parser stopped: after the whitespace that follows.
+    stop: usize,
+    /// The budget left.
+    budget: usize,
+}
+
+/// Parses the statement at the start of `text`, which is at `off` in the
+/// source, as far as it goes.
+fn statement_in(text: &str, off: usize, stack: &mut Stack) -> Option<Read> {
     // Left over from a statement given up on.
     stack.items.clear();
     stack.rows.clear();
     stack.passes = Passes::default();
-    let src = chunk;
-    if matches!(src.as_bytes().first(), Some(b'g' | b'd'))
-        && (src.starts_with("given") || src.starts_with("derive"))
+    if matches!(text.as_bytes().first(), Some(b'g' | b'd'))
+        && (text.starts_with("given") || text.starts_with("derive"))
     {
         return None;
     }
     let mut p = P {
-        src,
-        s: src.as_bytes(),
+        src: text,
+        s: text.as_bytes(),
         pos: 0,
-        off: span.start,
+        off,
         budget: BUDGET,
         sup: false,
         stack,
     };
     let kind = p.statement()?;
+    let end = p.pos;
     p.ws();
-    (p.pos == p.s.len()).then_some(Stmt { kind, span })
+    Some(Read {
+        kind,
+        end,
+        stop: p.pos,
+        budget: p.budget,
+    })
 }
 
 type Built = Option<(Expr, usize)>;

@@ -55,9 +55,34 @@ pub fn parse_program(src: &str) -> Vec<Result<ast::Stmt, Diagnostic>> {
 /// and parsed only when asked for, so a long script needs memory for its
 /// text and one statement, not for every statement's tree at once.
 pub fn statements(src: &str) -> impl Iterator<Item = Result<ast::Stmt, Diagnostic>> + '_ {
+    statements_read(src, true)
+}
+
+/// [`statements`] with every statement split off by the splitter first
+/// (`fused` false), as the fused reading must agree with.
+#[cfg(test)]
+pub(crate) fn statements_split(
+    src: &str,
+) -> impl Iterator<Item = Result<ast::Stmt, Diagnostic>> + '_ {
+    statements_read(src, false)
+}
+
+fn statements_read(
+    src: &str,
+    fused: bool,
+) -> impl Iterator<Item = Result<ast::Stmt, Diagnostic>> + '_ {
     let mut splitter = split::Splitter::new(src);
     let mut stack = fast::Stack::default();
     std::iter::from_fn(move || {
+        // Most statements are read by the fast parser straight from the
+        // source, the splitter only skipping them; it scans the rest.
+        if fused
+            && let Some(from) = splitter.clean_start()
+            && let Some((mut stmt, end)) = fast::parse_statement_in(src, from, &mut stack)
+        {
+            splitter.skip_to(end);
+            return Some(after_parsing(&mut stmt, stack.passes, src).map(|()| stmt));
+        }
         let chunk = splitter.next()?;
         let text = splitter.text(chunk.span);
         // Most statements take the fast path; it leaves errors and rare

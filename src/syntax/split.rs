@@ -115,6 +115,30 @@ impl<'a> Splitter<'a> {
             .unwrap_or("")
     }
 
+    /// Where the next statement starts, when nothing is open, pending or
+    /// blanked there: the place [`super::fast::parse_statement_in`] may
+    /// read the next statement from, in the splitter's stead.
+    pub(crate) fn clean_start(&self) -> Option<usize> {
+        (!self.done
+            && self.i == self.start
+            && self.stack.is_empty()
+            && self.error.is_none()
+            && self.start >= self.blanked_to)
+            .then_some(self.start)
+    }
+
+    /// Goes on after a statement read from the source up to `end`: the
+    /// offset of its terminating newline or `;`, or the source's length.
+    pub(crate) fn skip_to(&mut self, end: usize) {
+        if end >= self.bytes.len() {
+            self.done = true;
+        } else {
+            self.start = end + 1;
+            self.i = end + 1;
+        }
+        self.depth = 0;
+    }
+
     /// The statement `buf[start..end]` (nested `depth` deep), trimmed;
     /// None for a blank one.
     fn chunk(&self, start: usize, end: usize, error: Option<Box<Diagnostic>>) -> Option<Chunk> {

@@ -2,7 +2,7 @@
 //! error scripts, chosen statements, and random token strings and
 //! expressions must give the same tree (or the fast path must give up).
 
-use crate::syntax::{FAST_DEPTH, parser, rewrite, spacing, split};
+use crate::syntax::{FAST_DEPTH, parser, rewrite, spacing, split, statements, statements_split};
 use proptest::prelude::*;
 
 /// Checks every statement of `src` the fast path takes against pest;
@@ -50,6 +50,33 @@ fn scripts() -> Vec<String> {
         }
     }
     out
+}
+
+/// Reading statements straight from the source gives what splitting
+/// them off first gives, errors included.
+fn fused_agrees(src: &str) {
+    let fused: Vec<_> = statements(src).collect();
+    let split: Vec<_> = statements_split(src).collect();
+    assert_eq!(fused, split, "{src:?}");
+}
+
+#[test]
+fn fused_reading_agrees_with_splitting() {
+    for src in scripts() {
+        fused_agrees(&src);
+    }
+    for src in [
+        "x = 1 # one\n# two\n\n;; y = x; z = [1, 2\n 3] # three",
+        "x = 1#c\ny = 2\r\n  z = (1,\n 2)\nw = f(x) \"s\"",
+        "a = (1\nb = 2\nc = 3)\nd = 4",
+        "a = ((((((((((((((((((1))))))))))))))))))\nb = 1",
+        "a = [[1 2] [3 4]]\ngiven x : scalar\nb = x.T # c",
+        "mech < links 4 >\nx = 1; ; ;\n  ",
+        "",
+        "x = 1 +\n 2",
+    ] {
+        fused_agrees(src);
+    }
 }
 
 #[test]
@@ -194,6 +221,7 @@ proptest! {
     #[test]
     fn random_tokens_agree(src in tokens()) {
         agree(&src);
+        fused_agrees(&src);
     }
 
     #[test]
@@ -206,6 +234,7 @@ proptest! {
             _ => format!("(a, b) = {e}"),
         };
         agree(&src);
+        fused_agrees(&format!("{src}\n{src} # c;\n;{src}"));
     }
 }
 
