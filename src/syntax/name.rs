@@ -59,7 +59,7 @@ impl Default for Recent {
 
 impl Recent {
     /// The handle of the name `src[start..end]`, as [`Name::new`] gives it.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn name_in(&mut self, src: &str, start: usize, end: usize) -> Name {
         let s = src.as_bytes();
         let len = end - start;

@@ -49,7 +49,7 @@ pub(crate) fn split(src: &str) -> Split {
     let mut splitter = Splitter::new(src);
     let chunks: Vec<Chunk> = splitter.by_ref().collect();
     let open_at_end = splitter.open_at_end;
-    let text = String::from_utf8(splitter.buf).unwrap_or_else(|_| src.to_string());
+    let text = String::from_utf8(splitter.view().to_vec()).unwrap_or_else(|_| src.to_string());
     Split {
         text,
         chunks,
@@ -67,6 +67,7 @@ pub(crate) struct Splitter<'a> {
     /// the source agree.
     blanked_to: usize,
     /// The blanked text; `buf[chunk.span]` is final once a chunk is yielded.
+    /// Empty until something is blanked (the source is read instead).
     buf: Vec<u8>,
     /// See [`Split::open_at_end`] (valid once the iterator is exhausted).
     pub open_at_end: bool,
@@ -88,7 +89,7 @@ impl<'a> Splitter<'a> {
             src,
             bytes: src.as_bytes(),
             blanked_to: 0,
-            buf: src.as_bytes().to_vec(),
+            buf: Vec::new(),
             open_at_end: false,
             any_error: false,
             recoveries: 0,
@@ -109,7 +110,7 @@ impl<'a> Splitter<'a> {
             // Nothing blanked: the source itself, already known UTF-8.
             return text;
         }
-        self.buf
+        self.view()
             .get(span.start..span.end)
             .and_then(|b| std::str::from_utf8(b).ok())
             .unwrap_or("")
@@ -139,10 +140,28 @@ impl<'a> Splitter<'a> {
         self.depth = 0;
     }
 
+    /// The text as blanked so far.
+    fn view(&self) -> &[u8] {
+        if self.buf.is_empty() {
+            self.bytes
+        } else {
+            &self.buf
+        }
+    }
+
+    /// The blanked text, to blank more of it (copied from the source the
+    /// first time).
+    fn blanked(&mut self) -> &mut [u8] {
+        if self.buf.is_empty() {
+            self.buf = self.bytes.to_vec();
+        }
+        &mut self.buf
+    }
+
     /// The statement `buf[start..end]` (nested `depth` deep), trimmed;
     /// None for a blank one.
     fn chunk(&self, start: usize, end: usize, error: Option<Box<Diagnostic>>) -> Option<Chunk> {
-        make_chunk(&self.buf, (start, end, self.depth), error)
+        make_chunk(self.view(), (start, end, self.depth), error)
     }
 }
 
@@ -207,7 +226,9 @@ impl Iterator for Splitter<'_> {
                         let chunk = self.chunk(self.start, nl, Some(err));
                         self.depth = 0;
                         // Undo the blanking done under the wrong assumption.
-                        self.buf[nl..].copy_from_slice(&bytes[nl..]);
+                        if !self.buf.is_empty() {
+                            self.buf[nl..].copy_from_slice(&bytes[nl..]);
+                        }
                         self.stack.clear();
                         self.start = nl + 1;
                         self.i = nl + 1;
@@ -238,10 +259,12 @@ impl Iterator for Splitter<'_> {
                     continue;
                 }
                 b'#' => {
-                    while self.i < n && bytes[self.i] != b'\n' {
-                        self.buf[self.i] = b' ';
-                        self.i += 1;
-                    }
+                    let end = bytes[i..]
+                        .iter()
+                        .position(|&c| c == b'\n')
+                        .map_or(n, |k| i + k);
+                    self.blanked()[i..end].fill(b' ');
+                    self.i = end;
                     self.blanked_to = self.blanked_to.max(self.i);
                     continue;
                 }
@@ -259,7 +282,7 @@ impl Iterator for Splitter<'_> {
                         continue;
                     }
                     Some((b'(' | b'{', _)) if b == b'\n' => {
-                        self.buf[i] = b' ';
+                        self.blanked()[i] = b' ';
                         self.blanked_to = self.blanked_to.max(i + 1);
                     }
                     Some(_) => {}
@@ -268,7 +291,7 @@ impl Iterator for Splitter<'_> {
                     open(&mut self.stack, &mut self.error, b, i);
                     self.depth = self.depth.max(self.stack.len());
                 }
-                b'<' if follows_mech(&self.buf[self.start..i]) => {
+                b'<' if follows_mech(&self.view()[self.start..i]) => {
                     open(&mut self.stack, &mut self.error, b, i);
                     self.depth = self.depth.max(self.stack.len());
                 }

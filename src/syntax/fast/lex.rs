@@ -83,6 +83,7 @@ static ASCII_NAME: [u8; 256] = {
 
 /// The grammar's `keyword` (`pi`, `π`, `deg`, `true`, `false`, `given`,
 /// `derive`, `mech`) or `for`, compared byte by byte.
+#[inline(always)]
 fn is_keyword(word: &[u8]) -> bool {
     // Slice patterns compile to a length test and byte comparisons.
     matches!(
@@ -122,7 +123,7 @@ impl P<'_> {
     /// The grammar's `ident` at `at`: `Some(Some(end))`, `Some(None)` where
     /// pest's `ident` fails, `None` to give up (a braced subscript). Notes
     /// a name with a digit or a non-ASCII character for `spacing`.
-    #[inline]
+    #[inline(always)]
     pub(super) fn ident_at(&mut self, at: usize) -> Option<Option<usize>> {
         let s = self.s;
         match s.get(at) {
