@@ -7,7 +7,13 @@
 //! which resolves precedence with a Pratt parser and rejects trees deeper
 //! than [`MAX_DEPTH`]. Ordinary statements first take `fast`, a
 //! hand-written parser of the same grammar, ten times quicker, which
-//! leaves every error (and a few rare forms) to pest. `spacing` then
+//! leaves every error (and a few rare forms) to pest. Most statements do
+//! not even pass through the splitter's scan: where it stands at the start
+//! of a statement, `fast::parse_statement_in` reads the statement straight
+//! from the source up to its newline or `;` and the splitter only skips it;
+//! anything the splitter would change or refuse (a newline inside `( )`, a
+//! string, a bracket error) sends the statement the long way. Names in the
+//! tree are interned ([`name::Name`]). `spacing` then
 //! refuses what reads two ways (`[1 -x]`, `[2 pi]`, `R [1, 2]`, `sin θ^2`,
 //! `T_123`) with both readings, and `rewrite` turns the book's notation into
 //! the plain tree (numpy's nested rows, `R^T` = `R.T`); a statement the fast
