@@ -85,7 +85,8 @@ impl P<'_> {
             let end = self.number_at(at)?;
             return Some((number_value(&self.src[at..end])?, end));
         }
-        Some((m as f64 / POW10[frac], end))
+        // Below 10¹⁵, so exact as a signed integer (converted in one step).
+        Some((m as i64 as f64 / POW10[frac], end))
     }
 
     pub(super) fn leaf(&self, kind: ExprKind, start: usize, end: usize) -> (Expr, usize) {
