@@ -54,6 +54,13 @@ pub(crate) struct Stack {
     names: Recent,
     /// The passes the last statement parsed needs.
     pub passes: Passes,
+    /// Where the last statement read from the source ends: its newline or
+    /// `;`, or the source's length ([`parse_statement_in`]).
+    pub end: usize,
+    /// Where the parser stopped in the last statement's text, and the
+    /// budget it spent.
+    stop: usize,
+    spent: usize,
 }
 
 /// Which of the passes after parsing can change or refuse a statement:
@@ -79,28 +86,21 @@ impl Passes {
 /// the source; `stack` is reused across statements and tells afterwards
 /// which passes the statement needs.
 pub(crate) fn parse_statement_with(chunk: &str, span: Span, stack: &mut Stack) -> Option<Stmt> {
-    let read = statement_in(chunk, span.start, stack)?;
-    (read.stop == chunk.len()).then_some(Stmt {
-        kind: read.kind,
-        span,
-    })
+    let stmt = statement_in(chunk, span.start, stack)?;
+    (stack.stop == chunk.len()).then_some(stmt)
 }
 
 /// The splitter's work done by the parser: parses the statement that
 /// starts at or after `from` in `src` (after blank lines, `;` and comment
-/// lines) straight from the source, and gives it with the offset of the
-/// newline or `;` that ends it (or the source's length). `None` where the
-/// splitter and [`parse_statement_with`] must decide: at the end of the
-/// source, and wherever the splitter would have changed the text (a
-/// newline inside `( )`, a string), reported an error, or not let the
-/// fast path take the statement (nested deeper than `FAST_DEPTH`, longer
-/// than `MAX_STATEMENT_BYTES`). Only called where the splitter stands at
-/// the start of a statement with nothing open.
-pub(crate) fn parse_statement_in(
-    src: &str,
-    from: usize,
-    stack: &mut Stack,
-) -> Option<(Stmt, usize)> {
+/// lines) straight from the source, and leaves in `stack.end` the offset
+/// of the newline or `;` that ends it (or the source's length). `None`
+/// where the splitter and [`parse_statement_with`] must decide: at the end
+/// of the source, and wherever the splitter would have changed the text (a
+/// newline inside `( )`, a string), reported an error, or not let the fast
+/// path take the statement (nested deeper than `FAST_DEPTH`, longer than
+/// `MAX_STATEMENT_BYTES`). Only called where the splitter stands at the
+/// start of a statement with nothing open.
+pub(crate) fn parse_statement_in(src: &str, from: usize, stack: &mut Stack) -> Option<Stmt> {
     let s = src.as_bytes();
     let mut start = from;
     loop {
@@ -112,29 +112,25 @@ pub(crate) fn parse_statement_in(
         }
     }
     let text = &src[start..];
-    let read = statement_in(text, start, stack)?;
-    let stop = match text.as_bytes().get(read.stop) {
-        None | Some(b'\n' | b';') => read.stop,
-        // A comment after the statement, blanked by the splitter.
-        Some(b'#') => line_end(text.as_bytes(), read.stop),
-        Some(_) => return None,
-    };
-    let written = &text.as_bytes()[..read.end];
+    let stmt = statement_in(text, start, stack)?;
+    let stop = stack.stop;
+    stack.end = start
+        + match text.as_bytes().get(stop) {
+            None | Some(b'\n' | b';') => stop,
+            // A comment after the statement, blanked by the splitter.
+            Some(b'#') => line_end(text.as_bytes(), stop),
+            Some(_) => return None,
+        };
+    let len = stmt.span.end - start;
     // Each bracket the parser opens costs budget (a plain `[1 2]` row
     // inside brackets excepted), so few spent means shallow.
-    if read.end > super::MAX_STATEMENT_BYTES
-        || (BUDGET - read.budget + 1 > super::FAST_DEPTH && nesting(written) > super::FAST_DEPTH)
+    if len > super::MAX_STATEMENT_BYTES
+        || (stack.spent + 1 > super::FAST_DEPTH
+            && nesting(&text.as_bytes()[..len]) > super::FAST_DEPTH)
     {
         return None;
     }
-    let span = Span::new(start, start + read.end);
-    Some((
-        Stmt {
-            kind: read.kind,
-            span,
-        },
-        start + stop,
-    ))
+    Some(stmt)
 }
 
 /// The offset of the newline ending the line at `at` (or the length).
@@ -161,20 +157,11 @@ fn nesting(s: &[u8]) -> usize {
     deepest
 }
 
-/// A statement read from the start of a text.
-struct Read {
-    kind: StmtKind,
-    /// The end of its last token.
-    end: usize,
-    /// Where the parser stopped: after the whitespace that follows.
-    stop: usize,
-    /// The budget left.
-    budget: usize,
-}
-
 /// Parses the statement at the start of `text`, which is at `off` in the
-/// source, as far as it goes.
-fn statement_in(text: &str, off: usize, stack: &mut Stack) -> Option<Read> {
+/// source, as far as it goes: the statement spans its tokens, and
+/// `stack.stop` is where the parser stopped (after the whitespace that
+/// follows), `stack.spent` the budget it used.
+fn statement_in(text: &str, off: usize, stack: &mut Stack) -> Option<Stmt> {
     // Left over from a statement given up on.
     stack.items.clear();
     stack.rows.clear();
@@ -194,14 +181,11 @@ fn statement_in(text: &str, off: usize, stack: &mut Stack) -> Option<Read> {
         stack,
     };
     let kind = p.statement()?;
-    let end = p.pos;
+    let span = p.span(0, p.pos);
     p.ws();
-    Some(Read {
-        kind,
-        end,
-        stop: p.pos,
-        budget: p.budget,
-    })
+    p.stack.stop = p.pos;
+    p.stack.spent = BUDGET - p.budget;
+    Some(Stmt { kind, span })
 }
 
 type Built = Option<(Expr, usize)>;

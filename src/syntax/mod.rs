@@ -84,10 +84,13 @@ fn statements_read(
         // source, the splitter only skipping them; it scans the rest.
         if fused
             && let Some(from) = splitter.clean_start()
-            && let Some((mut stmt, end)) = fast::parse_statement_in(src, from, &mut stack)
+            && let Some(mut stmt) = fast::parse_statement_in(src, from, &mut stack)
         {
-            splitter.skip_to(end);
-            return Some(after_parsing(&mut stmt, stack.passes, src).map(|()| stmt));
+            splitter.skip_to(stack.end);
+            return Some(match after_parsing(&mut stmt, stack.passes, src) {
+                Ok(()) => Ok(stmt),
+                Err(d) => Err(d),
+            });
         }
         let chunk = splitter.next()?;
         let text = splitter.text(chunk.span);
