@@ -211,7 +211,7 @@ fn mul_kind(l: &Kind, r: &Kind, ops: Operands) -> Result<Kind, RuleError> {
         (SE3, SE3) => Some(SE3),
         (SO2, SO2) => Some(SO2),
         (SE2, SE2) => Some(SE2),
-        (Adjoint { transposed: a }, Adjoint { transposed: b }) if a == b => Some(l.clone()),
+        (Adjoint { transposed: a }, Adjoint { transposed: b }) if a == b => Some(*l),
         _ => None,
     };
     if let Some(k) = same_group {

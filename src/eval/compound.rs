@@ -87,7 +87,7 @@ impl Interp<'_> {
             };
             return Ok(Typed { ty, val });
         }
-        let ty = Ty::plain(Kind::Tuple(ts.iter().map(|t| t.ty.kind.clone()).collect()));
+        let ty = Ty::plain(Kind::tuple(ts.iter().map(|t| t.ty.kind).collect()));
         let val = ts
             .iter()
             .map(|t| t.val.clone())

@@ -101,11 +101,8 @@ impl Interp<'_> {
             })
             .collect::<Vec<_>>()
             .join(" * ");
-        let kind = self.env.vars[&steps[0].name].ty.kind.clone();
-        let ty = Ty::new(
-            kind.clone(),
-            Frames::Pair(Frame::named(&from), Frame::named(&to)),
-        );
+        let kind = self.env.vars[&steps[0].name].ty.kind;
+        let ty = Ty::new(kind, Frames::Pair(Frame::named(&from), Frame::named(&to)));
         if self.mode == super::env::Mode::Check {
             return Ok((text, Typed { ty, val: None }));
         }

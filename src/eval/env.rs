@@ -97,7 +97,7 @@ impl Env {
             }
             None => {
                 let b = Binding {
-                    ty: ty.clone(),
+                    ty: *ty,
                     val: val.clone(),
                     symbolic: false,
                 };

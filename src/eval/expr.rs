@@ -14,7 +14,7 @@ use crate::diagnostics::{Diagnostic, ErrorKind, suggest};
 use crate::syntax::ast::{BinOp, Expr, ExprKind, Span, UnOp};
 
 fn strip(t: &Ty) -> Ty {
-    Ty::plain(t.kind.clone())
+    Ty::plain(t.kind)
 }
 
 /// The runtime kind refines the static one (a literal that is a rotation
@@ -179,7 +179,7 @@ impl Interp<'_> {
     fn var(&mut self, name: &str, span: Span) -> Result<Typed, Diagnostic> {
         if let Some(b) = self.env.get(name) {
             return Ok(Typed {
-                ty: b.ty.clone(),
+                ty: b.ty,
                 val: if self.running() {
                     super::substitute::current(b, self.env)
                 } else {

@@ -181,9 +181,7 @@ impl<'a> Interp<'a> {
                     self.bind_value(&target.name, b);
                 }
                 let names = Names::Many(targets.iter().map(|t| t.name.clone()).collect());
-                let ty = Ty::plain(Kind::Tuple(
-                    bound.iter().map(|b| b.ty.kind.clone()).collect(),
-                ));
+                let ty = Ty::plain(Kind::tuple(bound.iter().map(|b| b.ty.kind).collect()));
                 let val = bound
                     .iter()
                     .map(|b| b.val.clone())
@@ -222,7 +220,7 @@ impl<'a> Interp<'a> {
                     self.env.set(
                         &n.name,
                         Binding {
-                            ty: Ty::new(kind.clone(), frames),
+                            ty: Ty::new(kind, frames),
                             val: Some(val),
                             symbolic: true,
                         },
@@ -332,10 +330,7 @@ impl<'a> Interp<'a> {
             } else {
                 m
             };
-            t.val = Some(Value::Num {
-                kind: t.ty.kind.clone(),
-                m,
-            });
+            t.val = Some(Value::Num { kind: t.ty.kind, m });
         }
         Ok(())
     }
@@ -431,11 +426,11 @@ impl<'a> Interp<'a> {
     /// The parts of a tuple (or the entries of a vector) for destructuring.
     fn split_tuple(&self, t: &Typed, n: usize, span: Span) -> Result<Vec<Typed>, Diagnostic> {
         let kinds: Vec<Kind> = match &t.ty.kind {
-            Kind::Tuple(ks) => ks.clone(),
+            Kind::Tuple(ks) => ks.to_vec(),
             // A list's length is known only from its value.
             Kind::List(k) => match &t.val {
                 Some(Value::List(vs)) => vs.iter().map(Value::kind).collect(),
-                _ => vec![(**k).clone(); n],
+                _ => vec![**k; n],
             },
             Kind::Vector(Some(len)) => vec![Kind::Scalar; *len],
             Kind::Unknown | Kind::Vector(None) => vec![Kind::Unknown; n],

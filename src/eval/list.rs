@@ -187,7 +187,7 @@ impl Interp<'_> {
             None => Some(1.0),
         };
         let b = self.bound(end)?;
-        let ty = Ty::plain(Kind::List(Box::new(Kind::Scalar)));
+        let ty = Ty::plain(Kind::list(Kind::Scalar));
         let (Some(a), Some(h), Some(b)) = (a, h, b) else {
             return Ok(Typed { ty, val: None });
         };
@@ -237,7 +237,7 @@ impl Interp<'_> {
                 "a list takes one index: xs[i], counting from 1",
             ));
         };
-        let ty = Ty::new((**elem).clone(), t.ty.frames);
+        let ty = Ty::new(**elem, t.ty.frames);
         let Some(Value::List(items)) = &t.val else {
             return Ok(Typed { ty, val: None });
         };
@@ -260,7 +260,7 @@ impl Interp<'_> {
     fn over(&mut self, e: &Expr) -> Result<(Kind, Frames, Option<Vec<Value>>), Diagnostic> {
         let t = self.expr(e)?;
         let elem = match &t.ty.kind {
-            Kind::List(k) => (**k).clone(),
+            Kind::List(k) => **k,
             Kind::Vector(_) => Kind::Scalar,
             Kind::Unknown => Kind::Unknown,
             k => {
@@ -341,7 +341,7 @@ impl Interp<'_> {
             self.env.set(
                 n,
                 Binding {
-                    ty: ty.clone(),
+                    ty: *ty,
                     val: None,
                     symbolic: false,
                 },
@@ -350,10 +350,10 @@ impl Interp<'_> {
         let checked = self.expr(body);
         self.mode = mode;
         let body_ty = checked?;
-        let list_ty = |k: Kind| Ty::new(Kind::List(Box::new(k)), body_ty.ty.frames);
+        let list_ty = |k: Kind| Ty::new(Kind::list(k), body_ty.ty.frames);
         if mode == Mode::Check {
             return Ok(Typed {
-                ty: list_ty(body_ty.ty.kind.clone()),
+                ty: list_ty(body_ty.ty.kind),
                 val: None,
             });
         }
@@ -363,7 +363,7 @@ impl Interp<'_> {
             .collect::<Option<Vec<_>>>()
         else {
             return Ok(Typed {
-                ty: list_ty(body_ty.ty.kind.clone()),
+                ty: list_ty(body_ty.ty.kind),
                 val: None,
             });
         };
@@ -406,7 +406,7 @@ impl Interp<'_> {
             }
         }
         let kind = if out.is_empty() {
-            body_ty.ty.kind.clone()
+            body_ty.ty.kind
         } else {
             common_kind(&out)
         };

@@ -256,7 +256,7 @@ impl Interp<'_> {
             return typed;
         };
         let parts = parts(one);
-        let tys: Vec<Ty> = parts.iter().map(|t| t.ty.clone()).collect();
+        let tys: Vec<Ty> = parts.iter().map(|t| t.ty).collect();
         if parts.len() < 2
             || b.check(std::slice::from_ref(&one.ty)).is_ok()
             || b.check(&tys).is_err()
@@ -271,7 +271,7 @@ impl Interp<'_> {
 /// for anything else.
 pub(super) fn parts(t: &Typed) -> Vec<Typed> {
     let kinds = match &t.ty.kind {
-        Kind::Tuple(kinds) => kinds.clone(),
+        Kind::Tuple(kinds) => kinds.to_vec(),
         Kind::Vector(Some(n)) => vec![Kind::Scalar; *n],
         _ => return Vec::new(),
     };
