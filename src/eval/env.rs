@@ -88,17 +88,20 @@ impl Env {
     /// Binds `name` to a copy of a checked value (not a `given` symbol),
     /// reusing the old binding's storage when the name is bound already.
     #[inline]
-    pub fn set_value(&mut self, name: &str, ty: &Ty, val: &Option<Value>) {
+    pub fn set_value(&mut self, name: &str, ty: &Ty, val: Option<&Value>) {
         match self.vars.get_mut(name) {
             Some(old) => {
-                old.ty.clone_from(ty);
-                old.val.clone_from(val);
+                old.ty = *ty;
+                match (&mut old.val, val) {
+                    (Some(o), Some(v)) => o.clone_from(v),
+                    (o, v) => *o = v.cloned(),
+                }
                 old.symbolic = false;
             }
             None => {
                 let b = Binding {
                     ty: *ty,
-                    val: val.clone(),
+                    val: val.cloned(),
                     symbolic: false,
                 };
                 self.vars.insert(name.to_string(), b);

@@ -64,7 +64,10 @@ impl Interp<'_> {
         };
         self.nest = nest;
         if let Ok(t) = &t
-            && matches!(t.val, Some(Value::Sym(_) | Value::Formula { .. }))
+            && matches!(
+                t.val.as_deref(),
+                Some(Value::Sym(_) | Value::Formula { .. })
+            )
         {
             self.within_limits(t, e.span)?;
         }
@@ -73,14 +76,14 @@ impl Interp<'_> {
 
     fn expr_node(&mut self, e: &Expr) -> Result<Typed, Diagnostic> {
         match &e.kind {
-            ExprKind::Number(x) => Ok(Typed {
-                ty: Ty::scalar(),
-                val: self.running().then(|| Value::scalar(*x)),
-            }),
-            ExprKind::Bool(b) => Ok(Typed {
-                ty: Ty::plain(Kind::Bool),
-                val: self.running().then_some(Value::Bool(*b)),
-            }),
+            ExprKind::Number(x) => Ok(Typed::new(
+                Ty::scalar(),
+                self.running().then(|| Value::scalar(*x)),
+            )),
+            ExprKind::Bool(b) => Ok(Typed::new(
+                Ty::plain(Kind::Bool),
+                self.running().then_some(Value::Bool(*b)),
+            )),
             ExprKind::Var(name) => self.var(name, e.span),
             ExprKind::Unary { op, operand } => {
                 let t = self.expr(operand)?;
@@ -94,7 +97,7 @@ impl Interp<'_> {
                         strip(&t.ty)
                     }
                 };
-                let val = match &t.val {
+                let val = match t.val.as_deref() {
                     Some(v) => Some(
                         Op::Neg
                             .apply(&[v], &ty.kind)
@@ -102,7 +105,7 @@ impl Interp<'_> {
                     ),
                     None => None,
                 };
-                Ok(Typed { ty, val })
+                Ok(Typed::new(ty, val))
             }
             ExprKind::Degrees(inner) => {
                 let t = self.expr(inner)?;
@@ -113,7 +116,7 @@ impl Interp<'_> {
                         format!("degrees apply to a number, not {}", t.ty.kind.a()),
                     ));
                 }
-                let val = match &t.val {
+                let val = match t.val.as_deref() {
                     Some(v) => Some(
                         Op::Degrees
                             .apply(&[v], &Kind::Scalar)
@@ -121,10 +124,7 @@ impl Interp<'_> {
                     ),
                     None => None,
                 };
-                Ok(Typed {
-                    ty: Ty::scalar(),
-                    val,
-                })
+                Ok(Typed::new(Ty::scalar(), val))
             }
             ExprKind::Binary {
                 op,
@@ -140,10 +140,7 @@ impl Interp<'_> {
                     // No such member: the rule says why.
                     let err = rules::member(&t.ty, &member.name).err().unwrap_or_default();
                     self.rule_failure(err, member.span, None, None, None)?;
-                    return Ok(Typed {
-                        ty: unreachable_type(),
-                        val: None,
-                    });
+                    return Ok(Typed::new(unreachable_type(), None));
                 };
                 let ty = match op.rule(&[&t.ty], Hints::default()) {
                     Ok(ty) => ty,
@@ -152,7 +149,7 @@ impl Interp<'_> {
                         unreachable_type()
                     }
                 };
-                let val = match &t.val {
+                let val = match t.val.as_deref() {
                     Some(v) => Some(
                         op.apply(&[v], &ty.kind)
                             .map_err(|m| Diagnostic::error(ErrorKind::Type, member.span, m))?,
@@ -160,7 +157,7 @@ impl Interp<'_> {
                     None => None,
                 };
                 let ty = refine(ty, &val);
-                Ok(Typed { ty, val })
+                Ok(Typed::new(ty, val))
             }
             ExprKind::Index { base, args } => self.index(base, args, e.span),
             ExprKind::Paren(items) => self.paren(items, e.span),
@@ -178,37 +175,37 @@ impl Interp<'_> {
 
     fn var(&mut self, name: &str, span: Span) -> Result<Typed, Diagnostic> {
         if let Some(b) = self.env.get(name) {
-            return Ok(Typed {
-                ty: b.ty,
-                val: if self.running() {
+            return Ok(Typed::new(
+                b.ty,
+                if self.running() {
                     super::substitute::current(b, self.env)
                 } else {
                     None
                 },
-            });
+            ));
         }
         if let Some(d) = self.derivative_symbol(name) {
             return Ok(d);
         }
         match name {
             "inf" | "Inf" | "∞" => {
-                return Ok(Typed {
-                    ty: Ty::scalar(),
-                    val: self.running().then(|| Value::scalar(f64::INFINITY)),
-                });
+                return Ok(Typed::new(
+                    Ty::scalar(),
+                    self.running().then(|| Value::scalar(f64::INFINITY)),
+                ));
             }
             "e" => {
-                return Ok(Typed {
-                    ty: Ty::scalar(),
-                    val: self.running().then(|| Value::scalar(std::f64::consts::E)),
-                });
+                return Ok(Typed::new(
+                    Ty::scalar(),
+                    self.running().then(|| Value::scalar(std::f64::consts::E)),
+                ));
             }
             // The unit of `pi/6 rad`: angles are in radians already.
             "rad" => {
-                return Ok(Typed {
-                    ty: Ty::scalar(),
-                    val: self.running().then(|| Value::scalar(1.0)),
-                });
+                return Ok(Typed::new(
+                    Ty::scalar(),
+                    self.running().then(|| Value::scalar(1.0)),
+                ));
             }
             // The identity of the size its context needs (LANGUAGE.md §4).
             "I" => return self.identity(span),
@@ -287,7 +284,7 @@ impl Interp<'_> {
                 lhs: Operand::new(lhs, self.src),
                 rhs: Operand::new(rhs, self.src),
             },
-            exponent: literal_number(rhs).or_else(|| r.val.as_ref().and_then(Value::as_scalar)),
+            exponent: literal_number(rhs).or_else(|| r.val.as_deref().and_then(Value::as_scalar)),
         };
         let op = Op::Arith(op);
         let rule = |a: &Ty, b: &Ty| op.rule(&[a, b], hints);
@@ -299,17 +296,14 @@ impl Interp<'_> {
                     .map_err(|e| Diagnostic::error(ErrorKind::Type, op_span, e.message))?
             }
         };
-        let val = match (&l.val, &r.val) {
+        let val = match (l.val.as_deref(), r.val.as_deref()) {
             (Some(a), Some(b)) => Some(
                 op.apply(&[a, b], &ty.kind)
                     .map_err(|m| self.domain(op_span, m))?,
             ),
             _ => None,
         };
-        Ok(Typed {
-            ty: refine(ty, &val),
-            val,
-        })
+        Ok(Typed::new(refine(ty, &val), val))
     }
 
     pub(super) fn call(
@@ -352,10 +346,7 @@ impl Interp<'_> {
                 let val = self
                     .running()
                     .then(|| Value::vector(Kind::Vector(Some(3)), &v));
-                typed.push(Typed {
-                    ty: Ty::plain(Kind::Vector(Some(3))),
-                    val,
-                });
+                typed.push(Typed::new(Ty::plain(Kind::Vector(Some(3))), val));
                 continue;
             }
             // diff(x, t): the variable may be a name with no value (time).
@@ -376,7 +367,7 @@ impl Interp<'_> {
         for t in typed {
             tys.push(t.ty);
             if let Some(v) = t.val {
-                vals.push(v);
+                vals.push(*v);
             } else if self.running() {
                 vals.push(Value::scalar(f64::NAN));
             }
@@ -404,7 +395,7 @@ impl Interp<'_> {
             }
         };
         if !self.running() {
-            return Ok(Typed { ty, val: None });
+            return Ok(Typed::new(ty, None));
         }
         super::list::numbers_only(b, &vals, span)?;
         if vals
@@ -414,10 +405,7 @@ impl Interp<'_> {
             let refs: Vec<&Value> = vals.iter().collect();
             if let Some(v) = Op::Call(b, name).exact_or_symbolic(&refs, &ty.kind) {
                 let val = Some(v.map_err(|m| self.domain(span, m))?);
-                return Ok(Typed {
-                    ty: refine(ty, &val),
-                    val,
-                });
+                return Ok(Typed::new(refine(ty, &val), val));
             }
         }
         let spans: Vec<Span> = match args {
@@ -439,10 +427,7 @@ impl Interp<'_> {
         let v = apply::call(b, vals, site)?;
         not_finite_group(&v, b.name, span)?;
         let val = Some(v);
-        Ok(Typed {
-            ty: refine(ty, &val),
-            val,
-        })
+        Ok(Typed::new(refine(ty, &val), val))
     }
 
     fn user_call(
@@ -505,7 +490,7 @@ impl Interp<'_> {
                 &p,
                 super::env::Binding {
                     ty: t.ty,
-                    val: t.val,
+                    val: t.val.map(|v| *v),
                     symbolic: false,
                 },
             );

@@ -12,10 +12,28 @@ use crate::diagnostics::{Diagnostic, ErrorKind};
 use crate::syntax::ast::{Span, Stmt, StmtKind};
 
 /// A checked (and, when running, evaluated) expression.
+///
+/// The value is boxed: the interpreter returns a `Typed` from every node,
+/// and a 4×4 held inline would make each of those moves a 240-byte copy
+/// (in `chasles check` of nothing at all).
 #[derive(Debug, Clone)]
 pub struct Typed {
     pub ty: Ty,
-    pub val: Option<Value>,
+    pub val: Option<Box<Value>>,
+}
+
+impl Typed {
+    /// A checked expression and, when running, its value.
+    pub fn new(ty: Ty, val: Option<Value>) -> Typed {
+        Typed {
+            ty,
+            val: val.map(Box::new),
+        }
+    }
+    /// The value (none when checking).
+    pub fn value(&self) -> Option<&Value> {
+        self.val.as_deref()
+    }
 }
 
 /// What a successful statement produced, for printing.
@@ -135,7 +153,7 @@ impl<'a> Interp<'a> {
     /// Binds a checked value to `name` (statements call this only after
     /// they have succeeded).
     fn bind_value(&mut self, name: &str, t: &Typed) {
-        self.env.set_value(name, &t.ty, &t.val);
+        self.env.set_value(name, &t.ty, t.val.as_deref());
     }
 
     /// Runs one statement. On error nothing is bound.
@@ -145,7 +163,7 @@ impl<'a> Interp<'a> {
             span: s.span,
             names,
             ty: t.ty,
-            val: t.val,
+            val: t.val.map(|v| *v),
             note: None,
             prints: true,
             parts: Vec::new(),
@@ -184,10 +202,10 @@ impl<'a> Interp<'a> {
                 let ty = Ty::plain(Kind::tuple(bound.iter().map(|b| b.ty.kind).collect()));
                 let val = bound
                     .iter()
-                    .map(|b| b.val.clone())
+                    .map(|b| b.value().cloned())
                     .collect::<Option<Vec<_>>>()
                     .map(Value::Tuple);
-                let mut o = out(names, Typed { ty, val });
+                let mut o = out(names, Typed::new(ty, val));
                 o.parts = bound.into_iter().map(|b| b.ty).collect();
                 Ok(o)
             }
@@ -226,13 +244,7 @@ impl<'a> Interp<'a> {
                         },
                     );
                 }
-                let mut o = out(
-                    Names::Many(Vec::new()),
-                    Typed {
-                        ty: Ty::plain(kind),
-                        val: None,
-                    },
-                );
+                let mut o = out(Names::Many(Vec::new()), Typed::new(Ty::plain(kind), None));
                 o.prints = false;
                 Ok(o)
             }
@@ -253,10 +265,7 @@ impl<'a> Interp<'a> {
                 self.env.fns.insert(name.name.clone(), std::rc::Rc::new(f));
                 let mut o = out(
                     Names::Many(Vec::new()),
-                    Typed {
-                        ty: Ty::plain(Kind::Function),
-                        val: None,
-                    },
+                    Typed::new(Ty::plain(Kind::Function), None),
                 );
                 o.prints = false;
                 Ok(o)
@@ -268,10 +277,7 @@ impl<'a> Interp<'a> {
                     .retain(|w| w.severity != crate::diagnostics::Severity::Note);
                 let mut o = out(
                     Names::Many(Vec::new()),
-                    Typed {
-                        ty: Ty::plain(Kind::Bool),
-                        val: None,
-                    },
+                    Typed::new(Ty::plain(Kind::Bool), None),
                 );
                 o.prints = false;
                 Ok(o)
@@ -320,17 +326,15 @@ impl<'a> Interp<'a> {
                 r.ty
             }
         };
-        let ty = &t.ty;
-        if matches!(t.val, Some(Value::Num { .. })) && ty.kind != Kind::Unknown {
-            let Some(Value::Num { m, kind }) = t.val.take() else {
-                return Ok(());
-            };
-            let m = if ty.kind.is_group() && kind != ty.kind {
-                self.group_at_binding(name, &ty.kind, m, value_span)?
-            } else {
-                m
-            };
-            t.val = Some(Value::Num { kind: t.ty.kind, m });
+        let ty = t.ty.kind;
+        if ty != Kind::Unknown
+            && let Some(Value::Num { m, kind }) = t.val.as_deref_mut()
+        {
+            if ty.is_group() && *kind != ty {
+                let owned = std::mem::replace(m, crate::values::num::Num::Scalar(0.0));
+                *m = self.group_at_binding(name, &ty, owned, value_span)?;
+            }
+            *kind = ty;
         }
         Ok(())
     }
@@ -428,7 +432,7 @@ impl<'a> Interp<'a> {
         let kinds: Vec<Kind> = match &t.ty.kind {
             Kind::Tuple(ks) => ks.to_vec(),
             // A list's length is known only from its value.
-            Kind::List(k) => match &t.val {
+            Kind::List(k) => match t.val.as_deref() {
                 Some(Value::List(vs)) => vs.iter().map(Value::kind).collect(),
                 _ => vec![**k; n],
             },
@@ -453,7 +457,7 @@ impl<'a> Interp<'a> {
                 ),
             ));
         }
-        let vals: Vec<Option<Value>> = match &t.val {
+        let vals: Vec<Option<Value>> = match t.val.as_deref() {
             Some(Value::Tuple(vs)) => vs.iter().cloned().map(Some).collect(),
             Some(Value::List(vs)) => vs.iter().cloned().map(Some).collect(),
             Some(Value::Num { m, .. }) => m.iter().map(|x| Some(Value::scalar(*x))).collect(),
@@ -465,10 +469,7 @@ impl<'a> Interp<'a> {
             .map(|(k, v)| {
                 let frames = t.ty.frames.part(&k);
                 let k = v.as_ref().map_or(k, Value::kind);
-                Typed {
-                    ty: Ty::new(k, frames),
-                    val: v,
-                }
+                Typed::new(Ty::new(k, frames), v)
             })
             .collect())
     }

@@ -36,7 +36,7 @@ fn mentions_identity(e: &Expr) -> bool {
 
 /// Rows and columns of a checked operand.
 fn dims(t: &Typed) -> Option<(usize, usize)> {
-    if let Some(Value::Num { m, .. }) = &t.val {
+    if let Some(Value::Num { m, .. }) = t.val.as_deref() {
         return Some(m.shape());
     }
     match t.ty.kind.shape()? {
@@ -152,10 +152,7 @@ impl Interp<'_> {
             Some(v) => v.kind(),
             None => Kind::Matrix(Some(n), Some(n)),
         };
-        Ok(Typed {
-            ty: Ty::plain(kind),
-            val,
-        })
+        Ok(Typed::new(Ty::plain(kind), val))
     }
 
     /// `e^x` with `e` unbound and `x` not a scalar: `exp(x)`.
@@ -275,7 +272,7 @@ pub(super) fn parts(t: &Typed) -> Vec<Typed> {
         Kind::Vector(Some(n)) => vec![Kind::Scalar; *n],
         _ => return Vec::new(),
     };
-    let vals: Vec<Option<Value>> = match &t.val {
+    let vals: Vec<Option<Value>> = match t.val.as_deref() {
         Some(Value::Tuple(vs)) => vs.iter().cloned().map(Some).collect(),
         Some(Value::Num { m, .. }) if m.len() == kinds.len() => {
             m.iter().map(|&x| Some(Value::scalar(x))).collect()
@@ -285,10 +282,7 @@ pub(super) fn parts(t: &Typed) -> Vec<Typed> {
     kinds
         .into_iter()
         .zip(vals)
-        .map(|(k, val)| Typed {
-            ty: Ty::plain(k),
-            val,
-        })
+        .map(|(k, val)| Typed::new(Ty::plain(k), val))
         .collect()
 }
 
