@@ -69,6 +69,10 @@ pub struct Env {
     /// What each name bound so far says about its value (the frames of its
     /// subscript, its book letter), read once per name.
     claims: NameMap<Claim>,
+    /// The types of the arguments of the builtin calls being checked, as a
+    /// stack: each call pushes its own and pops them when it returns. Kept
+    /// here so that its storage outlives one statement's interpreter.
+    pub(super) arg_tys: Vec<Ty>,
 }
 
 impl Env {

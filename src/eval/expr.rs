@@ -336,43 +336,65 @@ impl Interp<'_> {
             }
             return Err(d);
         };
-        let mut typed = Vec::with_capacity(args.len());
-        for (i, a) in args.iter().enumerate() {
-            // Rot(x, θ): the axis may be written as a bare x, y or z.
-            if let (0, "Rot", ExprKind::Var(axis)) = (i, b.name, &a.kind)
-                && self.env.get(axis).is_none()
-                && let Some(v) = unit_axis(axis)
-            {
-                let val = self
-                    .running()
-                    .then(|| Value::vector(Kind::Vector(Some(3)), &v));
-                typed.push(Typed::new(Ty::plain(Kind::Vector(Some(3))), val));
-                continue;
-            }
-            // diff(x, t): the variable may be a name with no value (time).
-            if let Some(t) = self.time_variable(b.name, i, a) {
-                typed.push(t);
-                continue;
-            }
-            typed.push(self.expr(a)?);
-        }
-        // `rot_zyx(euler_zyx(R))`: one tuple as the arguments.
-        if args.len() == 1 {
-            typed = self.spread(b, typed);
-        }
-        // The types move out of the operands; the values too when running
-        // (checking has none to keep).
-        let mut tys = Vec::with_capacity(typed.len());
-        let mut vals = Vec::with_capacity(if self.running() { typed.len() } else { 0 });
-        for t in typed {
+        // The arguments' types go on the interpreter's stack of them (no
+        // vector per call); whatever happens, the stack is as it was after.
+        let base = self.env.arg_tys.len();
+        let out = self.builtin_call(b, name, args, span, base);
+        self.env.arg_tys.truncate(base);
+        out
+    }
+
+    /// A call of builtin `b`, its arguments' types pushed on
+    /// [`Interp::arg_tys`] above `base`.
+    fn builtin_call(
+        &mut self,
+        b: &'static builtins::Builtin,
+        name: &str,
+        args: &[Expr],
+        span: Span,
+        base: usize,
+    ) -> Result<Typed, Diagnostic> {
+        let running = self.running();
+        // The types go on the stack; the values, when running, into the
+        // vector the builtin takes (checking has none to keep).
+        let mut vals = Vec::with_capacity(if running { args.len() } else { 0 });
+        let mut keep = |tys: &mut Vec<Ty>, t: Typed| {
             tys.push(t.ty);
             if let Some(v) = t.val {
                 vals.push(*v);
-            } else if self.running() {
+            } else if running {
                 vals.push(Value::scalar(f64::NAN));
             }
+        };
+        for (i, a) in args.iter().enumerate() {
+            let t = match (i, b.name, &a.kind) {
+                // Rot(x, θ): the axis may be written as a bare x, y or z.
+                (0, "Rot", ExprKind::Var(axis))
+                    if self.env.get(axis).is_none()
+                        && let Some(v) = unit_axis(axis) =>
+                {
+                    let val = running.then(|| Value::vector(Kind::Vector(Some(3)), &v));
+                    Typed::new(Ty::plain(Kind::Vector(Some(3))), val)
+                }
+                // diff(x, t): the variable may be a name with no value (time).
+                _ => match self.time_variable(b.name, i, a) {
+                    Some(t) => t,
+                    None => self.expr(a)?,
+                },
+            };
+            // `rot_zyx(euler_zyx(R))`: one tuple as the arguments.
+            match args.len() {
+                1 => match self.spread(b, t) {
+                    Ok(parts) => parts
+                        .into_iter()
+                        .for_each(|p| keep(&mut self.env.arg_tys, p)),
+                    Err(t) => keep(&mut self.env.arg_tys, t),
+                },
+                _ => keep(&mut self.env.arg_tys, t),
+            }
         }
-        let ty = match b.check(&tys) {
+        let tys = &self.env.arg_tys[base..];
+        let ty = match b.check(tys) {
             Ok(ty) => ty,
             Err(err) => {
                 let at = err.arg.and_then(|i| args.get(i)).map_or(span, |a| a.span);
@@ -380,7 +402,7 @@ impl Interp<'_> {
                     .with_help(format!("signature: {}", b.signature));
                 let frame = err.kind == ErrorKind::Frame;
                 apply::frame_refusal(self.frames, frame, d, &mut self.warnings)?;
-                let plain: Vec<Ty> = tys.iter().map(strip).collect();
+                let plain: Vec<Ty> = self.env.arg_tys[base..].iter().map(strip).collect();
                 b.check(&plain)
                     .map_err(|e| Diagnostic::error(e.kind, at, e.message))?
             }
@@ -414,7 +436,7 @@ impl Interp<'_> {
         };
         // Only pictures read the arguments' types and source text.
         let typed = if b.area == builtins::Area::Pictures {
-            self.typed_args(tys, args)
+            self.typed_args(self.env.arg_tys[base..].to_vec(), args)
         } else {
             Vec::new()
         };

@@ -248,19 +248,17 @@ impl Interp<'_> {
 
     /// A builtin given one tuple (or vector: `(a, b, c)` of scalars)
     /// whose parts fit its arguments: the parts.
-    pub(super) fn spread(&self, b: &Builtin, typed: Vec<Typed>) -> Vec<Typed> {
-        let [one] = typed.as_slice() else {
-            return typed;
-        };
-        let parts = parts(one);
-        let tys: Vec<Ty> = parts.iter().map(|t| t.ty).collect();
-        if parts.len() < 2
-            || b.check(std::slice::from_ref(&one.ty)).is_ok()
-            || b.check(&tys).is_err()
-        {
-            return typed;
+    /// `Err(one)` when they do not.
+    pub(super) fn spread(&self, b: &Builtin, one: Typed) -> Result<Vec<Typed>, Typed> {
+        let parts = parts(&one);
+        if parts.len() < 2 || b.check(std::slice::from_ref(&one.ty)).is_ok() {
+            return Err(one);
         }
-        parts
+        let tys: Vec<Ty> = parts.iter().map(|t| t.ty).collect();
+        if b.check(&tys).is_err() {
+            return Err(one);
+        }
+        Ok(parts)
     }
 }
 
