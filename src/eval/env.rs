@@ -98,6 +98,8 @@ impl Env {
                 old.ty = *ty;
                 match (&mut old.val, val) {
                     (Some(o), Some(v)) => o.clone_from(v),
+                    // Checking: no value before, none now.
+                    (None, None) => {}
                     (o, v) => *o = v.cloned(),
                 }
                 old.symbolic = false;

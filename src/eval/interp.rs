@@ -44,7 +44,8 @@ pub struct Outcome {
     /// none for a bare expression).
     pub names: Names,
     pub ty: Ty,
-    pub val: Option<Value>,
+    /// The value, boxed as [`Typed`]'s is (none when checking).
+    pub val: Option<Box<Value>>,
     /// Extra text printed before the value (`derive` prints its chain).
     pub note: Option<String>,
     /// False for statements that print nothing (`given`, function definitions).
@@ -163,7 +164,7 @@ impl<'a> Interp<'a> {
             span: s.span,
             names,
             ty: t.ty,
-            val: t.val.map(|v| *v),
+            val: t.val,
             note: None,
             prints: true,
             parts: Vec::new(),

@@ -392,7 +392,7 @@ pub fn show_outcome(o: &Outcome, style: impl Into<Style>) -> String {
         out.push_str(note);
         out.push('\n');
     }
-    let Some(v) = &o.val else {
+    let Some(v) = o.val.as_deref() else {
         // check mode: the type only
         let names = o.names.join(", ");
         let label = o.ty.to_string();
