@@ -575,4 +575,18 @@ mod tests {
         assert_eq!(f.swapped().to_string(), "{b''}←{a}");
         assert_eq!(g.to_list(), vec!["a".to_string(), "b''".to_string()]);
     }
+
+    #[test]
+    fn tuple_and_list_kinds_are_stored_once() {
+        let t = Kind::tuple(vec![Kind::SO3, Kind::Vector(Some(3))]);
+        let u = Kind::tuple(vec![Kind::SO3, Kind::Vector(Some(3))]);
+        let (Kind::Tuple(a), Kind::Tuple(b)) = (t, u) else {
+            panic!("not tuples")
+        };
+        assert!(std::ptr::eq(a, b));
+        assert_eq!(t.to_string(), "(SO(3), 3-vector)");
+        assert_ne!(t, Kind::tuple(vec![Kind::SO3]));
+        assert_eq!(Kind::list(Kind::Screw).to_string(), "list of screw axes");
+        assert_eq!(Kind::list(Kind::Scalar), Kind::list(Kind::Scalar));
+    }
 }
