@@ -19,6 +19,7 @@ fn strip(t: &Ty) -> Ty {
 
 /// The runtime kind refines the static one (a literal that is a rotation
 /// is SO(3)); frames stay as the checker found them.
+#[inline]
 pub(super) fn refine(ty: Ty, val: &Option<Value>) -> Ty {
     match val {
         Some(v @ (Value::Num { .. } | Value::Tuple(_) | Value::Formula { .. })) => {

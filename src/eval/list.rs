@@ -106,6 +106,10 @@ impl Interp<'_> {
         op: Span,
     ) -> Result<(), Diagnostic> {
         for (t, side) in operands {
+            // Most operands are numbers: asked first, without a call.
+            if !matches!(t.ty.kind, Kind::List(_) | Kind::Picture | Kind::Text) {
+                continue;
+            }
             let Some(help) = elementwise_help(&t.ty.kind) else {
                 continue;
             };
