@@ -76,6 +76,7 @@ pub struct Env {
 }
 
 impl Env {
+    #[inline]
     pub fn get(&self, name: &str) -> Option<&Binding> {
         self.vars.get(name)
     }
