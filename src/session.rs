@@ -124,7 +124,7 @@ impl Session {
     /// when this session writes files — written to the file `save` asked
     /// for, else to `NAME.svg` or `draw-LINE.svg` in the picture folder.
     fn picture(&mut self, o: &mut Outcome, line: usize) -> Result<(), Diagnostic> {
-        let Some(Value::Picture(p)) = &o.val else {
+        let Some(Value::Picture(p)) = o.val.as_deref() else {
             return Ok(());
         };
         let fail = |m: String| Diagnostic::error(ErrorKind::Domain, o.span, m);
@@ -140,7 +140,7 @@ impl Session {
             std::rc::Rc::make_mut(&mut p).file = Some(shown.clone());
             self.last_picture = Some(shown);
         }
-        o.val = Some(Value::Picture(p));
+        o.val = Some(Box::new(Value::Picture(p)));
         Ok(())
     }
 
@@ -263,7 +263,7 @@ fn not_finite_warning(o: &crate::eval::interp::Outcome) -> Option<Diagnostic> {
         }
     }
     let (mut nan, mut inf) = (false, false);
-    scan(o.val.as_ref()?, true, &mut nan, &mut inf);
+    scan(o.val.as_deref()?, true, &mut nan, &mut inf);
     let message = if nan {
         "the result has NaN entries: an undefined operation (inf − inf, 0·inf, an angle of inf)"
     } else if inf {

@@ -28,7 +28,7 @@ fn all_bracketings(factors: &[Ty]) -> Vec<Outcome> {
     // table[i][j]: outcomes of factors[i..=j].
     let mut table: Vec<Vec<Vec<Outcome>>> = vec![vec![Vec::new(); n]; n];
     for (i, f) in factors.iter().enumerate() {
-        table[i][i] = vec![Ok(f.clone())];
+        table[i][i] = vec![Ok(*f)];
     }
     for len in 2..=n {
         for i in 0..=n - len {
@@ -123,7 +123,7 @@ proptest! {
     fn conjugation_closes_on_one_frame(a in frame(), b in frame(), rotation in prop::bool::ANY) {
         let (group, algebra) = if rotation { (Kind::SO3, Kind::So3) } else { (Kind::SE3, Kind::Se3) };
         let x = Ty::new(group, Frames::Pair(a, b));
-        let q = Ty::new(algebra.clone(), Frames::One(b));
+        let q = Ty::new(algebra, Frames::One(b));
         let inv = if rotation { rules::transpose(&x) } else { rules::inverse(&x) }.unwrap();
         let outs = all_bracketings(&[x, q, inv]);
         prop_assert_eq!(outs.len(), 1);
@@ -135,7 +135,7 @@ proptest! {
     /// X^n has the frames of X·X·…·X (or the same kind of error).
     #[test]
     fn powers_are_products(x in operator(false), n in 2i64..6) {
-        let product = all_bracketings(&vec![x.clone(); n as usize]);
+        let product = all_bracketings(&vec![x; n as usize]);
         prop_assert_eq!(product.len(), 1);
         let power = rules::pow(&x, &Ty::scalar(), Some(n as f64)).map_err(|e| {
             e.kind.map_or("type".to_string(), |k| k.as_str().to_string())

@@ -238,3 +238,43 @@ fn statements_as_chasles_prints_them() {
     // `ans / deg` converts radians to degrees.
     assert_eq!(last("pi / 2\nans / deg"), [90.0]);
 }
+
+/// Builtin calls nested in each other's arguments, and one given a tuple
+/// to spread, each read their own arguments' kinds, checking and running
+/// alike, also after a statement whose inner call failed (issue 14 keeps
+/// the arguments' types on one stack).
+#[test]
+fn nested_calls_read_their_own_arguments() {
+    let src = "R = rot_zyx(euler_zyx(Rotz(0.3)))\n\
+               x = Rotz(Rotx(1, 2))\n\
+               p = cross(Rotz(0.1) * (1, 0, 0), exp([(0, 0, 1)] 0.2) * (0, 1, 0))\n\
+               q = AxisAng3((0, 0, 2))\n";
+    for mode in [Mode::Check, Mode::Run] {
+        let mut s = Session::new(Settings {
+            json: true,
+            ..Settings::default()
+        });
+        let (out, err, n) = s.run_to_strings("t.chs", src, mode, true);
+        assert_eq!(n, 1, "{err}");
+        let lines: Vec<serde_json::Value> = out
+            .lines()
+            .map(|l| serde_json::from_str(l).expect("json"))
+            .collect();
+        let types: Vec<&str> = lines.iter().filter_map(|l| l["type"].as_str()).collect();
+        assert_eq!(types, ["SO3", "vector", "tuple"], "{mode:?}");
+        if mode == Mode::Run {
+            let r = numbers(&lines[0]["value"]);
+            let (c, si) = (0.3f64.cos(), 0.3f64.sin());
+            let want = [c, -si, 0.0, si, c, 0.0, 0.0, 0.0, 1.0];
+            assert!(
+                r.iter().zip(want).all(|(a, b)| (a - b).abs() < 1e-12),
+                "{r:?}"
+            );
+            let p = numbers(&lines[2]["value"]);
+            // (cos 0.1, sin 0.1, 0) × (−sin 0.2, cos 0.2, 0) = (0, 0, cos(0.2 − 0.1)).
+            assert_eq!(p[..2], [0.0, 0.0]);
+            assert!((p[2] - 0.1f64.cos()).abs() < 1e-12, "{p:?}");
+            assert_eq!(numbers(&lines[3]["value"]), [0.0, 0.0, 1.0, 2.0]);
+        }
+    }
+}

@@ -28,7 +28,7 @@ fn pictures(src: &str, dir: &Path) -> Vec<(usize, chasles::eval::value::Picture)
     let mut out = Vec::new();
     s.run(src, Mode::Run, false, |r| match &r.result {
         Ok(o) => {
-            if let Some(Value::Picture(p)) = &o.val {
+            if let Some(Value::Picture(p)) = o.val.as_deref() {
                 out.push((r.line, (**p).clone()));
             }
         }
@@ -411,7 +411,7 @@ fn marks(src: &str) -> Vec<draw::marks::Mark> {
     let mut last = None;
     s.run(src, Mode::Run, false, |r| {
         if let Ok(o) = &r.result
-            && let Some(Value::Picture(p)) = &o.val
+            && let Some(Value::Picture(p)) = o.val.as_deref()
         {
             last = Some((**p).clone());
         }

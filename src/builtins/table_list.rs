@@ -50,7 +50,7 @@ fn eval_len(a: &mut Args) -> Result<Value, Diagnostic> {
 /// {s} is a twist in {s}); of a vector, a number.
 fn sum_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     match &args[0].kind {
-        Kind::List(k) => Ok(Ty::new((**k).clone(), args[0].frames)),
+        Kind::List(k) => Ok(Ty::new(**k, args[0].frames)),
         Kind::Unknown => Ok(Ty::plain(Kind::Unknown)),
         k if k.is_vector() => Ok(Ty::scalar()),
         k => Err(ArgError::type_of(

@@ -254,7 +254,7 @@ fn vee_rule(args: &[Ty]) -> Result<Ty, ArgError> {
 }
 
 fn untag_rule(args: &[Ty]) -> Result<Ty, ArgError> {
-    Ok(Ty::plain(args[0].kind.clone()))
+    Ok(Ty::plain(args[0].kind))
 }
 
 fn matrix_ctor_rule(args: &[Ty]) -> Result<Ty, ArgError> {

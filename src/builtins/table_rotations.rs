@@ -31,7 +31,7 @@ pub(super) fn wrench() -> Kind {
 }
 
 fn rot_of_axis_tuple() -> Kind {
-    Kind::Tuple(vec![v3(), Kind::Scalar])
+    Kind::tuple(vec![v3(), Kind::Scalar])
 }
 
 /// `Rot(axis, θ)`: the axis is a 3-vector (or `x`, `y`, `z`, resolved by
@@ -52,7 +52,7 @@ pub(super) fn velocity_rule(space: bool, kind: Kind) -> impl Fn(&[Ty]) -> Result
             Frames::Pair(s, b) => Frames::One(if space { *s } else { *b }),
             _ => Frames::None,
         };
-        Ok(Ty::new(kind.clone(), f))
+        Ok(Ty::new(kind, f))
     }
 }
 

@@ -20,7 +20,7 @@ fn screw_params_rule(args: &[Ty]) -> Result<Ty, ArgError> {
         ));
     }
     Ok(Ty::new(
-        Kind::Tuple(vec![v3(), v3(), Kind::Scalar]),
+        Kind::tuple(vec![v3(), v3(), Kind::Scalar]),
         args[0].frames,
     ))
 }
@@ -134,7 +134,7 @@ fn trans_to_rp_rule(args: &[Ty]) -> Result<Ty, ArgError> {
             format!("TransToRp takes SE(3), not {}", args[0].kind.a()),
         ));
     }
-    Ok(Ty::new(Kind::Tuple(vec![Kind::SO3, v3()]), args[0].frames))
+    Ok(Ty::new(Kind::tuple(vec![Kind::SO3, v3()]), args[0].frames))
 }
 
 fn space_twist_rule(a: &[Ty]) -> Result<Ty, ArgError> {
@@ -377,7 +377,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
             area: Twists,
             typing: Typing::Fixed {
                 params: &[Vec(6)],
-                ret: || Kind::Tuple(vec![Kind::Screw, Kind::Scalar]),
+                ret: || Kind::tuple(vec![Kind::Screw, Kind::Scalar]),
                 frames: FrameRule::Same(0),
             },
             eval: |a| {

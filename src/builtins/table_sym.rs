@@ -290,7 +290,7 @@ fn diff(v: &Value, x: &Mat, by: &Mat, kind: &Kind) -> Result<Value, String> {
     };
     let kind = match kind {
         Kind::Unknown => v.kind(),
-        k => k.clone(),
+        k => *k,
     };
     Ok(make(&kind, x.map(|e| e.diff(&wrt))))
 }
@@ -306,7 +306,7 @@ fn diff_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     let t = &args[0];
     Ok(match &t.kind {
         Kind::Scalar => Ty::scalar(),
-        k if k.is_vector() => Ty::new(k.clone(), t.frames),
+        k if k.is_vector() => Ty::new(*k, t.frames),
         k => match k.shape() {
             Some((r, c)) => Ty::new(Kind::Matrix(r, c), t.frames),
             None => {
@@ -320,7 +320,7 @@ fn diff_rule(args: &[Ty]) -> Result<Ty, ArgError> {
 }
 
 fn same_rule(args: &[Ty]) -> Result<Ty, ArgError> {
-    Ok(args[0].clone())
+    Ok(args[0])
 }
 
 /// The numeric meaning of `diff`: a number is constant, its derivative 0.

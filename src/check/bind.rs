@@ -120,7 +120,7 @@ fn book_letter(name: &str) -> Option<char> {
 /// or `B` a screw axis, `F` a wrench (§3.3.2, §3.4) — for the book's names
 /// only ([`book_letter`]).
 pub fn named_kind(name: &str, kind: &Kind) -> Kind {
-    Claim::of(name).vector_kind(kind.clone())
+    Claim::of(name).vector_kind(*kind)
 }
 
 /// The group a rotation or transform name asserts for a square matrix of
@@ -143,7 +143,7 @@ pub struct Bound {
 
 /// The type a binding `name = value` gets, or the frame error.
 pub fn bind(name: &str, ty: &Ty) -> Result<Bound, Box<RuleError>> {
-    bind_claimed(name, &Claim::of(name), ty.clone()).map_err(|r| r.error)
+    bind_claimed(name, &Claim::of(name), *ty).map_err(|r| r.error)
 }
 
 /// A binding refused: the frame error, and the type the name gives the
@@ -276,10 +276,10 @@ mod tests {
             ("B2", Kind::Screw),
             ("V_s", Kind::Twist),
             ("F_b", Kind::Wrench),
-            ("Sum", v6.clone()),
-            ("Bq", v6.clone()),
-            ("Fk", v6.clone()),
-            ("Vel_b", v6.clone()),
+            ("Sum", v6),
+            ("Bq", v6),
+            ("Fk", v6),
+            ("Vel_b", v6),
         ] {
             assert_eq!(named_kind(name, &v6), want, "{name}");
         }

@@ -51,9 +51,9 @@ pub struct Operands<'a> {
 /// ([`Operand::form`]), and its source text, for printing.
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Operand<'a> {
-    /// The operand's source text.
-    pub text: &'a str,
     expr: Option<&'a Expr>,
+    /// The whole source text (of which the operand's is read only when a
+    /// help line needs it), or the operand's own for [`Operand::of_text`].
     src: &'a str,
 }
 
@@ -76,19 +76,23 @@ pub enum Form<'a> {
 impl<'a> Operand<'a> {
     /// The operand `e` of a source text `src`.
     pub fn new(e: &'a Expr, src: &'a str) -> Operand<'a> {
+        Operand { expr: Some(e), src }
+    }
+
+    /// An operand known only by its text (tests, and the `T` a help line
+    /// writes for a transform it has no text for).
+    pub fn of_text(text: &'a str) -> Operand<'a> {
         Operand {
-            text: src.get(e.span.start..e.span.end).unwrap_or(""),
-            expr: Some(e),
-            src,
+            expr: None,
+            src: text,
         }
     }
 
-    /// An operand known only by its text (tests).
-    pub fn text(text: &'a str) -> Operand<'a> {
-        Operand {
-            text,
-            expr: None,
-            src: "",
+    /// The operand's source text.
+    pub fn text(&self) -> &'a str {
+        match self.expr {
+            Some(e) => self.src.get(e.span.start..e.span.end).unwrap_or(""),
+            None => self.src,
         }
     }
 
@@ -117,8 +121,8 @@ impl<'a> Operand<'a> {
     /// `inv(T_ab)` of `T_ab`, `T_ab` of `inv(T_ab)`.
     pub fn inverse_text(&self) -> String {
         match self.form() {
-            Form::Inverse(x) => x.text.trim().to_string(),
-            _ => format!("inv({})", self.text.trim()),
+            Form::Inverse(x) => x.text().trim().to_string(),
+            _ => format!("inv({})", self.text().trim()),
         }
     }
 }
@@ -168,7 +172,7 @@ mod tests {
             inverse("inv(T_ab) * inv(T_bc)"),
             "inv(inv(T_ab) * inv(T_bc))"
         );
-        assert_eq!(Operand::text("T_ab").inverse_text(), "inv(T_ab)");
+        assert_eq!(Operand::of_text("T_ab").inverse_text(), "inv(T_ab)");
     }
 
     #[test]
@@ -179,9 +183,9 @@ mod tests {
                 panic!("not an expression: {src}")
             };
             match Operand::new(&e, src).form() {
-                Form::Inverse(x) => format!("inverse of {}", x.text),
-                Form::Adjoint(x) => format!("adjoint of {}", x.text),
-                Form::Transposed(x) => format!("transpose of {}", x.text),
+                Form::Inverse(x) => format!("inverse of {}", x.text()),
+                Form::Adjoint(x) => format!("adjoint of {}", x.text()),
+                Form::Transposed(x) => format!("transpose of {}", x.text()),
                 Form::Name(n) => format!("name {n}"),
                 Form::Other => "other".to_string(),
             }

@@ -100,7 +100,7 @@ fn conjugation(l: &Ty, r: &Ty, mut out: Ty) -> Ty {
 /// inverse (that holds for rotations only, Prop. 3.1).
 fn transposed_factor(l: &Ty, r: &Ty, left: bool, ops: Operands) -> RuleError {
     let (t, operand) = if left { (l, ops.lhs) } else { (r, ops.rhs) };
-    let text = operand.text.trim();
+    let text = operand.text().trim();
     let base = match operand.form() {
         Form::Transposed(x) => Some(x),
         _ => None,
@@ -108,7 +108,7 @@ fn transposed_factor(l: &Ty, r: &Ty, left: bool, ops: Operands) -> RuleError {
     let (name, frames) = match &t.frames {
         // The transpose of {outer}←{inner}; its inverse is {inner}←{outer}.
         Frames::Transposed(outer, inner) => (
-            result_name_of(base.map_or(text, |x| x.text.trim()), inner, outer),
+            result_name_of(base.map_or(text, |x| x.text().trim()), inner, outer),
             format!("{{{outer}}}←{{{inner}}} is not the map {{{inner}}}←{{{outer}}}"),
         ),
         _ => (String::new(), String::new()),
@@ -162,8 +162,8 @@ fn mul_kind(l: &Kind, r: &Kind, ops: Operands) -> Result<Kind, RuleError> {
                     .with_help(format!(
                         "twists change frame with the adjoint itself, V_s = [Ad_T_sb] V_b (3.84); write {} without .T",
                         match ops.lhs.form() {
-                            Form::Transposed(x) => x.text.trim(),
-                            _ => ops.lhs.text.trim(),
+                            Form::Transposed(x) => x.text().trim(),
+                            _ => ops.lhs.text().trim(),
                         }
                     ))),
                 _ if dims_agree(n, Some(6)) => Ok(Wrench),
@@ -176,7 +176,7 @@ fn mul_kind(l: &Kind, r: &Kind, ops: Operands) -> Result<Kind, RuleError> {
             SE2 | Se2 if n == Some(2) => Ok(Vector(Some(2))),
             // Two column vectors: the student meant a dot or cross product.
             _ if l.is_vector() && !dims_agree(n, Some(1)) => {
-                let (u, v) = (ops.lhs.text.trim(), ops.rhs.text.trim());
+                let (u, v) = (ops.lhs.text().trim(), ops.rhs.text().trim());
                 Err(shape_error(l, r).with_help(format!(
                     "for two vectors write dot({u}, {v}) or {u}.T * {v} (a number), or cross({u}, {v}); {u} * {v}.T is the outer product"
                 )))
@@ -211,7 +211,7 @@ fn mul_kind(l: &Kind, r: &Kind, ops: Operands) -> Result<Kind, RuleError> {
         (SE3, SE3) => Some(SE3),
         (SO2, SO2) => Some(SO2),
         (SE2, SE2) => Some(SE2),
-        (Adjoint { transposed: a }, Adjoint { transposed: b }) if a == b => Some(l.clone()),
+        (Adjoint { transposed: a }, Adjoint { transposed: b }) if a == b => Some(*l),
         _ => None,
     };
     if let Some(k) = same_group {
@@ -253,20 +253,20 @@ fn dim(d: Option<usize>) -> String {
 fn wrench_through_ad(l: &Ty, r: &Ty, ops: Operands) -> RuleError {
     let t = match ops.lhs.form() {
         Form::Adjoint(x) => x,
-        _ => Operand::text("T"),
+        _ => Operand::of_text("T"),
     };
-    let f = ops.rhs.text.trim();
+    let f = ops.rhs.text().trim();
     let rule =
         "Prop. 3.17: wrenches change frame with the transposed adjoint, F_b = [Ad_T_ab]ᵀ F_a";
     let help = match (&l.frames, &r.frames) {
         (Frames::Pair(a, b), Frames::One(c)) if b == c => format!(
             "{rule}; {f} in {{{a}}} is Ad({}).T * {f}, and a wrench in {{{a}}} comes to {{{b}}} by Ad({}).T * F_{a}",
             t.inverse_text(),
-            t.text.trim()
+            t.text().trim()
         ),
         _ => format!(
             "{rule}; write Ad({t}).T * F for F in the outer frame of {t}",
-            t = t.text.trim()
+            t = t.text().trim()
         ),
     };
     RuleError::frame("a wrench does not change frame through [Ad_T]").with_help(help)
@@ -304,8 +304,8 @@ fn plain_name_hint(op: Operand, t: &Ty) -> Option<String> {
 /// `inv(T_sb)`; None for any other expression.
 fn operand_base(op: Operand<'_>) -> Option<&str> {
     let name = match op.form() {
-        Form::Inverse(x) => x.text,
-        _ => op.text,
+        Form::Inverse(x) => x.text(),
+        _ => op.text(),
     }
     .trim();
     framed_base(name)
@@ -343,15 +343,15 @@ fn product_help(l: &Ty, r: &Ty, ops: Operands) -> String {
                 format!(
                     "{rule}; both start in {{{a}}}: the body-frame form is {} * {} = {}{}",
                     ops.lhs.inverse_text(),
-                    ops.rhs.text.trim(),
+                    ops.rhs.text().trim(),
                     result_name(ops, b, d),
                     displacement_hint(ops)
                 )
             } else if d == a {
                 format!(
                     "{rule}; the other order cancels: {} * {} = {}{}",
-                    ops.rhs.text.trim(),
-                    ops.lhs.text.trim(),
+                    ops.rhs.text().trim(),
+                    ops.lhs.text().trim(),
                     result_name(ops, c, b),
                     displacement_hint(ops)
                 )
@@ -361,20 +361,20 @@ fn product_help(l: &Ty, r: &Ty, ops: Operands) -> String {
         }
         (Frames::Pair(_, b), Frames::One(c)) => format!(
             "{} takes coordinates in {{{b}}}, but {} is in {{{c}}}; express it in {{{b}}} first",
-            ops.lhs.text.trim(),
+            ops.lhs.text().trim(),
             if r.kind.is_vector() {
                 "the vector".to_string()
             } else {
-                format!("{} ({})", ops.rhs.text.trim(), r.kind.a())
+                format!("{} ({})", ops.rhs.text().trim(), r.kind.a())
             }
         ),
         (Frames::Disp(a), Frames::Pair(c, _)) => format!(
             "a displacement in {{{a}}} premultiplies a transform from {{{a}}} (X_{a}?); {} starts in {{{c}}}",
-            ops.rhs.text.trim()
+            ops.rhs.text().trim()
         ),
         (Frames::Pair(_, b), Frames::Disp(d)) => format!(
             "a displacement in {{{d}}} postmultiplies a transform into {{{d}}} (X_?{d}); {} ends in {{{b}}}",
-            ops.lhs.text.trim()
+            ops.lhs.text().trim()
         ),
         _ => rule.to_string(),
     }
@@ -383,12 +383,12 @@ fn product_help(l: &Ty, r: &Ty, ops: Operands) -> String {
 /// For `T_sc * inv(T_sb)`: name the space-frame displacement.
 fn displacement_hint(ops: Operands) -> String {
     if let Form::Inverse(x) = ops.rhs.form() {
-        let inner = x.text;
+        let inner = x.text();
         format!(
             "; the displacement in the fixed frame taking {inner} to {} is displacement({inner}, {}) = {} * inv({inner})",
-            ops.lhs.text.trim(),
-            ops.lhs.text.trim(),
-            ops.lhs.text.trim()
+            ops.lhs.text().trim(),
+            ops.lhs.text().trim(),
+            ops.lhs.text().trim()
         )
     } else {
         String::new()

@@ -77,7 +77,7 @@ fn add_kind(l: &Kind, r: &Kind) -> Result<Kind, RuleError> {
                     if l.is_vector() || r.is_vector() {
                         Ok(Vector(lr.or(rr)))
                     } else if l.is_algebra() && l == r {
-                        Ok(l.clone())
+                        Ok(*l)
                     } else {
                         Ok(Matrix(lr.or(rr), lc.or(rc)))
                     }
@@ -120,8 +120,8 @@ pub fn div(l: &Ty, r: &Ty) -> Result<Ty, RuleError> {
 /// `inv(X_ab)` = X_ba.
 pub fn inverse(t: &Ty) -> Result<Ty, RuleError> {
     let kind = match &t.kind {
-        Kind::Scalar => return Ok(t.clone()),
-        k if k.is_group() || matches!(k, Kind::Adjoint { .. }) => k.clone(),
+        Kind::Scalar => return Ok(*t),
+        k if k.is_group() || matches!(k, Kind::Adjoint { .. }) => *k,
         Kind::Matrix(r, c) if dims_agree(*r, *c) => Kind::Matrix(*r, *c),
         Kind::Unknown => Kind::Unknown,
         k => {
@@ -144,7 +144,7 @@ pub fn inverse(t: &Ty) -> Result<Ty, RuleError> {
 pub fn transpose(t: &Ty) -> Result<Ty, RuleError> {
     let kind = match &t.kind {
         // [ω]ᵀ = −[ω] is skew-symmetric too: still so(3) (§3.2.3.1).
-        Kind::SO3 | Kind::SO2 | Kind::So3 | Kind::So2 => t.kind.clone(),
+        Kind::SO3 | Kind::SO2 | Kind::So3 | Kind::So2 => t.kind,
         Kind::Adjoint { transposed } => Kind::Adjoint {
             transposed: !transposed,
         },
@@ -206,7 +206,7 @@ pub fn pow(base: &Ty, exp: &Ty, literal: Option<f64>) -> Result<Ty, RuleError> {
     match literal {
         Some(-1.0) => inverse(base),
         Some(0.0) => Ok(Ty::new(identity_kind(&base.kind), Frames::None)),
-        Some(1.0) => Ok(base.clone()),
+        Some(1.0) => Ok(*base),
         _ => {
             let n = literal
                 .filter(|x| x.fract() == 0.0 && x.abs() < 1e15)
@@ -234,7 +234,7 @@ pub fn pow(base: &Ty, exp: &Ty, literal: Option<f64>) -> Result<Ty, RuleError> {
             // so(3)/se(3) matrix is not in the algebra in general ([ω]² is
             // symmetric), so it is a plain matrix.
             let kind = if base.kind.is_group() || matches!(base.kind, Kind::Adjoint { .. }) {
-                base.kind.clone()
+                base.kind
             } else if base.kind.is_algebra() {
                 plain_matrix(&base.kind)
             } else {
@@ -251,11 +251,7 @@ pub fn pow(base: &Ty, exp: &Ty, literal: Option<f64>) -> Result<Ty, RuleError> {
 /// `X^0`: the identity in X's group, else a plain matrix (`[1, 2; 3, 4]^0`
 /// is the 2×2 identity, not labelled SO(2)).
 fn identity_kind(k: &Kind) -> Kind {
-    if k.is_group() {
-        k.clone()
-    } else {
-        plain_matrix(k)
-    }
+    if k.is_group() { *k } else { plain_matrix(k) }
 }
 
 /// The plain matrix of the shape of `k`.
@@ -279,7 +275,7 @@ pub fn member(t: &Ty, name: &str) -> Result<Ty, RuleError> {
         ("T", _) => transpose(t),
         ("R", SE3 | Matrix(Some(4), Some(4))) => Ok(Ty::new(SO3, t.frames)),
         ("R", Matrix(None, _) | Matrix(_, None)) => Ok(Ty::new(Unknown, t.frames)),
-        ("p", Matrix(Some(4), Some(4))) => Ok(Ty::new(v3.clone(), outer())),
+        ("p", Matrix(Some(4), Some(4))) => Ok(Ty::new(v3, outer())),
         ("p", Matrix(None, _) | Matrix(_, None)) => Ok(Ty::new(Unknown, outer())),
         ("R", SE2) => Ok(Ty::new(SO2, t.frames)),
         ("R", Unknown) => Ok(Ty::new(Unknown, t.frames)),
@@ -311,7 +307,7 @@ pub fn member(t: &Ty, name: &str) -> Result<Ty, RuleError> {
 /// vector of a map between two frames (`se3ToVec(T_ab * [V_b])`) is a frame
 /// error.
 pub fn settle(t: &Ty, name: &str) -> Result<Ty, RuleError> {
-    let mut settled = t.clone();
+    let mut settled = *t;
     settle_in_place(&mut settled);
     if let (true, Frames::Pair(a, b)) = (one_frame_kind(&t.kind), &settled.frames) {
         let mut e = RuleError::frame(format!(
@@ -336,7 +332,7 @@ fn one_frame_kind(k: &Kind) -> bool {
 /// frame and a moved copy of it (`exp([S_a] θ) [V_a] exp(−[S_a] θ)`, whose
 /// two displacements chasles cannot tell apart) is a quantity in that frame.
 pub fn settled(t: &Ty) -> Ty {
-    let mut t = t.clone();
+    let mut t = *t;
     settle_in_place(&mut t);
     t
 }

@@ -7,7 +7,7 @@ pub use super::name::Name;
 
 /// What kind of mathematical object a value is (LANGUAGE.md §5). `None`
 /// dimensions are unknown until evaluation (e.g. `zeros(n, m)`).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Kind {
     Scalar,
     Bool,
@@ -40,12 +40,14 @@ pub enum Kind {
     },
     /// A mechanism (chapter 2).
     Mechanism,
-    Tuple(Vec<Kind>),
+    /// A tuple of values of these kinds (interned: [`Kind::tuple`]).
+    Tuple(&'static [Kind]),
     /// A user function.
     Function,
     /// A list of values of one kind (LANGUAGE.md §12): `0:4`,
     /// `[f(k) for k in 0:4]`; `Unknown` elements when they differ.
-    List(Box<Kind>),
+    /// The element kind is interned ([`Kind::list`]).
+    List(&'static Kind),
     /// A picture made by `draw` (§12).
     Picture,
     /// A string, `"name.svg"`: file names for `save` and picture titles.
@@ -54,7 +56,33 @@ pub enum Kind {
     Unknown,
 }
 
+/// Every tuple kind made so far (a list's element kind is a tuple of one),
+/// stored once for the whole process so that [`Kind`] is `Copy`.
+static KINDS: std::sync::LazyLock<
+    std::sync::Mutex<std::collections::HashSet<&'static [Kind], foldhash::fast::FixedState>>,
+> = std::sync::LazyLock::new(Default::default);
+
+/// The interned copy of `kinds` (the same kinds, the same slice).
+fn intern(kinds: Vec<Kind>) -> &'static [Kind] {
+    // The set is only added to, so it is whole even after a panic.
+    let mut set = KINDS.lock().unwrap_or_else(|e| e.into_inner());
+    if let Some(&k) = set.get(kinds.as_slice()) {
+        return k;
+    }
+    let k: &'static [Kind] = Box::leak(kinds.into_boxed_slice());
+    set.insert(k);
+    k
+}
+
 impl Kind {
+    /// The kind of a tuple whose parts have these kinds.
+    pub fn tuple(kinds: Vec<Kind>) -> Kind {
+        Kind::Tuple(intern(kinds))
+    }
+    /// The kind of a list whose elements have kind `elem` (LANGUAGE.md §12).
+    pub fn list(elem: Kind) -> Kind {
+        Kind::List(&intern(vec![elem])[0])
+    }
     /// The type name of the JSON schema (LANGUAGE.md §1).
     pub fn json_name(&self) -> &'static str {
         match self {
@@ -153,7 +181,7 @@ impl Kind {
             Kind::SE3 => Kind::Matrix(Some(4), Some(4)),
             Kind::SO2 => Kind::Matrix(Some(2), Some(2)),
             Kind::Screw => Kind::Twist,
-            other => other.clone(),
+            other => *other,
         }
     }
 
@@ -469,7 +497,7 @@ impl Algebra {
 }
 
 /// The checker's knowledge of an expression: kind and frames.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Ty {
     pub kind: Kind,
     pub frames: Frames,
@@ -546,5 +574,19 @@ mod tests {
         let g = f;
         assert_eq!(f.swapped().to_string(), "{b''}←{a}");
         assert_eq!(g.to_list(), vec!["a".to_string(), "b''".to_string()]);
+    }
+
+    #[test]
+    fn tuple_and_list_kinds_are_stored_once() {
+        let t = Kind::tuple(vec![Kind::SO3, Kind::Vector(Some(3))]);
+        let u = Kind::tuple(vec![Kind::SO3, Kind::Vector(Some(3))]);
+        let (Kind::Tuple(a), Kind::Tuple(b)) = (t, u) else {
+            panic!("not tuples")
+        };
+        assert!(std::ptr::eq(a, b));
+        assert_eq!(t.to_string(), "(SO(3), 3-vector)");
+        assert_ne!(t, Kind::tuple(vec![Kind::SO3]));
+        assert_eq!(Kind::list(Kind::Screw).to_string(), "list of screw axes");
+        assert_eq!(Kind::list(Kind::Scalar), Kind::list(Kind::Scalar));
     }
 }

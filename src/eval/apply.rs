@@ -362,7 +362,7 @@ fn index_type(t: &Ty, sels: &[Sel]) -> Result<Ty, RuleError> {
         (Kind::Tuple(ks), [Sel::At(i)])
             if i.fract() == 0.0 && *i >= 1.0 && (*i as usize) <= ks.len() =>
         {
-            Ty::plain(ks[*i as usize - 1].clone())
+            Ty::plain(ks[*i as usize - 1])
         }
         (Kind::Tuple(_), _) => Ty::plain(Kind::Unknown),
         (k, _) if k.shape().is_none() => {
@@ -385,7 +385,7 @@ pub fn bracket_type(t: &Ty) -> Ty {
     match t.kind.vec_len() {
         Some(3) => Ty::new(Kind::So3, t.frames),
         Some(6) => Ty::new(Kind::Se3, t.frames),
-        _ => t.clone(),
+        _ => *t,
     }
 }
 

@@ -193,10 +193,10 @@ impl Interp<'_> {
         op_span: Span,
     ) -> Result<Typed, Diagnostic> {
         let sides = self.sides(op, lhs, rhs, op_span)?;
-        Ok(Typed {
-            ty: Ty::plain(Kind::Bool),
-            val: sides.verdict.map(Value::Bool),
-        })
+        Ok(Typed::new(
+            Ty::plain(Kind::Bool),
+            sides.verdict.map(Value::Bool),
+        ))
     }
 
     fn sides(
@@ -211,7 +211,7 @@ impl Interp<'_> {
         if let Err(e) = compare_rule(&l.ty, &r.ty) {
             self.rule_failure(e, op_span, Some(lhs.span), Some(rhs.span), Some(op_span))?;
         }
-        let verdict = match (&l.val, &r.val) {
+        let verdict = match (l.val.as_deref(), r.val.as_deref()) {
             (Some(a), Some(b)) => match equal(a, b, op) {
                 Ok(Some(v)) => Some(v),
                 Ok(None) => {
@@ -248,7 +248,7 @@ impl Interp<'_> {
             if s.verdict != Some(false) {
                 return Ok(());
             }
-            let (Some(a), Some(b)) = (&s.l.val, &s.r.val) else {
+            let (Some(a), Some(b)) = (s.l.val.as_deref(), s.r.val.as_deref()) else {
                 return Ok(());
             };
             return Err(self.assert_failed(cond, *op, (lhs, a), (rhs, b)));
@@ -262,7 +262,7 @@ impl Interp<'_> {
             )
             .with_help("compare two values: assert a == b, or assert a ≈ b (typed ~=)"));
         }
-        match t.val {
+        match t.value() {
             Some(Value::Bool(false)) => Err(Diagnostic::error(
                 ErrorKind::Assert,
                 cond.span,

@@ -38,10 +38,7 @@ impl Interp<'_> {
                         ));
                     }
                     sels.push(Sel::At(
-                        it.val
-                            .as_ref()
-                            .and_then(Value::as_scalar)
-                            .unwrap_or(f64::NAN),
+                        it.value().and_then(Value::as_scalar).unwrap_or(f64::NAN),
                     ));
                 }
             }
@@ -53,14 +50,11 @@ impl Interp<'_> {
         let ty = op
             .rule(&[&t.ty], Hints::default())
             .map_err(|e| Diagnostic::error(ErrorKind::Type, span, e.message))?;
-        let val = match &t.val {
+        let val = match t.val.as_deref() {
             Some(v) => Some(op.apply(&[v], &ty.kind).map_err(|m| self.domain(span, m))?),
             None => None,
         };
-        Ok(Typed {
-            ty: refine(ty, &val),
-            val,
-        })
+        Ok(Typed::new(refine(ty, &val), val))
     }
 
     pub(super) fn paren(&mut self, items: &[Expr], span: Span) -> Result<Typed, Diagnostic> {
@@ -75,7 +69,7 @@ impl Interp<'_> {
             let ty = Ty::plain(Kind::Vector(Some(ts.len())));
             let val = match ts
                 .iter()
-                .map(|t| t.val.as_ref())
+                .map(|t| t.val.as_deref())
                 .collect::<Option<Vec<_>>>()
             {
                 Some(refs) if self.running() => Some(
@@ -85,15 +79,15 @@ impl Interp<'_> {
                 ),
                 _ => None,
             };
-            return Ok(Typed { ty, val });
+            return Ok(Typed::new(ty, val));
         }
-        let ty = Ty::plain(Kind::Tuple(ts.iter().map(|t| t.ty.kind.clone()).collect()));
+        let ty = Ty::plain(Kind::tuple(ts.iter().map(|t| t.ty.kind).collect()));
         let val = ts
             .iter()
-            .map(|t| t.val.clone())
+            .map(|t| t.value().cloned())
             .collect::<Option<Vec<_>>>()
             .map(Value::Tuple);
-        Ok(Typed { ty, val })
+        Ok(Typed::new(ty, val))
     }
 
     pub(super) fn brackets(&mut self, rows: &[Vec<Expr>], span: Span) -> Result<Typed, Diagnostic> {
@@ -127,13 +121,13 @@ impl Interp<'_> {
         }
         let ty = apply::block_type(&trows, |t| &t.ty);
         if !self.running() {
-            return Ok(Typed { ty, val: None });
+            return Ok(Typed::new(ty, None));
         }
         let mut vrows: Vec<Vec<Value>> = trows
             .into_iter()
             .map(|r| {
                 r.into_iter()
-                    .map(|t| t.val.unwrap_or_else(|| Value::scalar(f64::NAN)))
+                    .map(|t| t.val.map_or_else(|| Value::scalar(f64::NAN), |v| *v))
                     .collect()
             })
             .collect();
@@ -145,10 +139,7 @@ impl Interp<'_> {
             }
         };
         let val = Some(v.map_err(|m| Diagnostic::error(ErrorKind::Type, span, m))?);
-        Ok(Typed {
-            ty: refine(ty, &val),
-            val,
-        })
+        Ok(Typed::new(refine(ty, &val), val))
     }
 
     /// `[x]`, one entry: the general path of [`Interp::brackets`] without
@@ -164,15 +155,12 @@ impl Interp<'_> {
         }
         let ty = apply::bracket_type(&t.ty);
         if !self.running() {
-            return Ok(Typed { ty, val: None });
+            return Ok(Typed::new(ty, None));
         }
-        let rows = [vec![t.val.unwrap_or_else(|| Value::scalar(f64::NAN))]];
+        let rows = [vec![t.val.map_or_else(|| Value::scalar(f64::NAN), |v| *v)]];
         let v = apply::block(&rows).unwrap_or_else(|| apply::block_numeric(&rows));
         let val = Some(v.map_err(|m| Diagnostic::error(ErrorKind::Type, span, m))?);
-        Ok(Typed {
-            ty: refine(ty, &val),
-            val,
-        })
+        Ok(Typed::new(refine(ty, &val), val))
     }
 
     pub(super) fn mech(
@@ -215,9 +203,6 @@ impl Interp<'_> {
             d
         })?;
         let val = self.running().then(|| Value::Mech(std::rc::Rc::new(m)));
-        Ok(Typed {
-            ty: Ty::plain(Kind::Mechanism),
-            val,
-        })
+        Ok(Typed::new(Ty::plain(Kind::Mechanism), val))
     }
 }

@@ -101,13 +101,10 @@ impl Interp<'_> {
             })
             .collect::<Vec<_>>()
             .join(" * ");
-        let kind = self.env.vars[&steps[0].name].ty.kind.clone();
-        let ty = Ty::new(
-            kind.clone(),
-            Frames::Pair(Frame::named(&from), Frame::named(&to)),
-        );
+        let kind = self.env.vars[&steps[0].name].ty.kind;
+        let ty = Ty::new(kind, Frames::Pair(Frame::named(&from), Frame::named(&to)));
         if self.mode == super::env::Mode::Check {
-            return Ok((text, Typed { ty, val: None }));
+            return Ok((text, Typed::new(ty, None)));
         }
         let mut acc: Option<Value> = None;
         for s in &steps {
@@ -147,7 +144,7 @@ impl Interp<'_> {
                     .map_err(|m| Diagnostic::error(ErrorKind::Domain, target.span, m))?,
             });
         }
-        Ok((text, Typed { ty, val: acc }))
+        Ok((text, Typed::new(ty, acc)))
     }
 }
 

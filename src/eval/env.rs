@@ -69,9 +69,14 @@ pub struct Env {
     /// What each name bound so far says about its value (the frames of its
     /// subscript, its book letter), read once per name.
     claims: NameMap<Claim>,
+    /// The types of the arguments of the builtin calls being checked, as a
+    /// stack: each call pushes its own and pops them when it returns. Kept
+    /// here so that its storage outlives one statement's interpreter.
+    pub(super) arg_tys: Vec<Ty>,
 }
 
 impl Env {
+    #[inline]
     pub fn get(&self, name: &str) -> Option<&Binding> {
         self.vars.get(name)
     }
@@ -88,17 +93,22 @@ impl Env {
     /// Binds `name` to a copy of a checked value (not a `given` symbol),
     /// reusing the old binding's storage when the name is bound already.
     #[inline]
-    pub fn set_value(&mut self, name: &str, ty: &Ty, val: &Option<Value>) {
+    pub fn set_value(&mut self, name: &str, ty: &Ty, val: Option<&Value>) {
         match self.vars.get_mut(name) {
             Some(old) => {
-                old.ty.clone_from(ty);
-                old.val.clone_from(val);
+                old.ty = *ty;
+                match (&mut old.val, val) {
+                    (Some(o), Some(v)) => o.clone_from(v),
+                    // Checking: no value before, none now.
+                    (None, None) => {}
+                    (o, v) => *o = v.cloned(),
+                }
                 old.symbolic = false;
             }
             None => {
                 let b = Binding {
-                    ty: ty.clone(),
-                    val: val.clone(),
+                    ty: *ty,
+                    val: val.cloned(),
                     symbolic: false,
                 };
                 self.vars.insert(name.to_string(), b);

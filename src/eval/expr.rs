@@ -14,11 +14,12 @@ use crate::diagnostics::{Diagnostic, ErrorKind, suggest};
 use crate::syntax::ast::{BinOp, Expr, ExprKind, Span, UnOp};
 
 fn strip(t: &Ty) -> Ty {
-    Ty::plain(t.kind.clone())
+    Ty::plain(t.kind)
 }
 
 /// The runtime kind refines the static one (a literal that is a rotation
 /// is SO(3)); frames stay as the checker found them.
+#[inline]
 pub(super) fn refine(ty: Ty, val: &Option<Value>) -> Ty {
     match val {
         Some(v @ (Value::Num { .. } | Value::Tuple(_) | Value::Formula { .. })) => {
@@ -54,7 +55,14 @@ impl Interp<'_> {
     pub fn expr(&mut self, e: &Expr) -> Result<Typed, Diagnostic> {
         // The stack is checked for room every fourth level of nesting (the
         // check costs more than a small node): the red zone covers the four
-        // frames between checks, in debug builds too.
+        // frames between checks, in debug builds too. A number is a leaf:
+        // no room needed, nothing symbolic.
+        if let ExprKind::Number(x) = e.kind {
+            return Ok(Typed::new(
+                Ty::scalar(),
+                self.running().then(|| Value::scalar(x)),
+            ));
+        }
         let nest = self.nest;
         self.nest = nest.wrapping_add(1);
         let t = if nest.is_multiple_of(4) {
@@ -64,7 +72,10 @@ impl Interp<'_> {
         };
         self.nest = nest;
         if let Ok(t) = &t
-            && matches!(t.val, Some(Value::Sym(_) | Value::Formula { .. }))
+            && matches!(
+                t.val.as_deref(),
+                Some(Value::Sym(_) | Value::Formula { .. })
+            )
         {
             self.within_limits(t, e.span)?;
         }
@@ -73,14 +84,14 @@ impl Interp<'_> {
 
     fn expr_node(&mut self, e: &Expr) -> Result<Typed, Diagnostic> {
         match &e.kind {
-            ExprKind::Number(x) => Ok(Typed {
-                ty: Ty::scalar(),
-                val: self.running().then(|| Value::scalar(*x)),
-            }),
-            ExprKind::Bool(b) => Ok(Typed {
-                ty: Ty::plain(Kind::Bool),
-                val: self.running().then_some(Value::Bool(*b)),
-            }),
+            ExprKind::Number(x) => Ok(Typed::new(
+                Ty::scalar(),
+                self.running().then(|| Value::scalar(*x)),
+            )),
+            ExprKind::Bool(b) => Ok(Typed::new(
+                Ty::plain(Kind::Bool),
+                self.running().then_some(Value::Bool(*b)),
+            )),
             ExprKind::Var(name) => self.var(name, e.span),
             ExprKind::Unary { op, operand } => {
                 let t = self.expr(operand)?;
@@ -94,7 +105,7 @@ impl Interp<'_> {
                         strip(&t.ty)
                     }
                 };
-                let val = match &t.val {
+                let val = match t.val.as_deref() {
                     Some(v) => Some(
                         Op::Neg
                             .apply(&[v], &ty.kind)
@@ -102,7 +113,7 @@ impl Interp<'_> {
                     ),
                     None => None,
                 };
-                Ok(Typed { ty, val })
+                Ok(Typed::new(ty, val))
             }
             ExprKind::Degrees(inner) => {
                 let t = self.expr(inner)?;
@@ -113,7 +124,7 @@ impl Interp<'_> {
                         format!("degrees apply to a number, not {}", t.ty.kind.a()),
                     ));
                 }
-                let val = match &t.val {
+                let val = match t.val.as_deref() {
                     Some(v) => Some(
                         Op::Degrees
                             .apply(&[v], &Kind::Scalar)
@@ -121,10 +132,7 @@ impl Interp<'_> {
                     ),
                     None => None,
                 };
-                Ok(Typed {
-                    ty: Ty::scalar(),
-                    val,
-                })
+                Ok(Typed::new(Ty::scalar(), val))
             }
             ExprKind::Binary {
                 op,
@@ -140,10 +148,7 @@ impl Interp<'_> {
                     // No such member: the rule says why.
                     let err = rules::member(&t.ty, &member.name).err().unwrap_or_default();
                     self.rule_failure(err, member.span, None, None, None)?;
-                    return Ok(Typed {
-                        ty: unreachable_type(),
-                        val: None,
-                    });
+                    return Ok(Typed::new(unreachable_type(), None));
                 };
                 let ty = match op.rule(&[&t.ty], Hints::default()) {
                     Ok(ty) => ty,
@@ -152,7 +157,7 @@ impl Interp<'_> {
                         unreachable_type()
                     }
                 };
-                let val = match &t.val {
+                let val = match t.val.as_deref() {
                     Some(v) => Some(
                         op.apply(&[v], &ty.kind)
                             .map_err(|m| Diagnostic::error(ErrorKind::Type, member.span, m))?,
@@ -160,7 +165,7 @@ impl Interp<'_> {
                     None => None,
                 };
                 let ty = refine(ty, &val);
-                Ok(Typed { ty, val })
+                Ok(Typed::new(ty, val))
             }
             ExprKind::Index { base, args } => self.index(base, args, e.span),
             ExprKind::Paren(items) => self.paren(items, e.span),
@@ -178,37 +183,37 @@ impl Interp<'_> {
 
     fn var(&mut self, name: &str, span: Span) -> Result<Typed, Diagnostic> {
         if let Some(b) = self.env.get(name) {
-            return Ok(Typed {
-                ty: b.ty.clone(),
-                val: if self.running() {
+            return Ok(Typed::new(
+                b.ty,
+                if self.running() {
                     super::substitute::current(b, self.env)
                 } else {
                     None
                 },
-            });
+            ));
         }
         if let Some(d) = self.derivative_symbol(name) {
             return Ok(d);
         }
         match name {
             "inf" | "Inf" | "∞" => {
-                return Ok(Typed {
-                    ty: Ty::scalar(),
-                    val: self.running().then(|| Value::scalar(f64::INFINITY)),
-                });
+                return Ok(Typed::new(
+                    Ty::scalar(),
+                    self.running().then(|| Value::scalar(f64::INFINITY)),
+                ));
             }
             "e" => {
-                return Ok(Typed {
-                    ty: Ty::scalar(),
-                    val: self.running().then(|| Value::scalar(std::f64::consts::E)),
-                });
+                return Ok(Typed::new(
+                    Ty::scalar(),
+                    self.running().then(|| Value::scalar(std::f64::consts::E)),
+                ));
             }
             // The unit of `pi/6 rad`: angles are in radians already.
             "rad" => {
-                return Ok(Typed {
-                    ty: Ty::scalar(),
-                    val: self.running().then(|| Value::scalar(1.0)),
-                });
+                return Ok(Typed::new(
+                    Ty::scalar(),
+                    self.running().then(|| Value::scalar(1.0)),
+                ));
             }
             // The identity of the size its context needs (LANGUAGE.md §4).
             "I" => return self.identity(span),
@@ -287,7 +292,7 @@ impl Interp<'_> {
                 lhs: Operand::new(lhs, self.src),
                 rhs: Operand::new(rhs, self.src),
             },
-            exponent: literal_number(rhs).or_else(|| r.val.as_ref().and_then(Value::as_scalar)),
+            exponent: literal_number(rhs).or_else(|| r.val.as_deref().and_then(Value::as_scalar)),
         };
         let op = Op::Arith(op);
         let rule = |a: &Ty, b: &Ty| op.rule(&[a, b], hints);
@@ -299,17 +304,14 @@ impl Interp<'_> {
                     .map_err(|e| Diagnostic::error(ErrorKind::Type, op_span, e.message))?
             }
         };
-        let val = match (&l.val, &r.val) {
+        let val = match (l.val.as_deref(), r.val.as_deref()) {
             (Some(a), Some(b)) => Some(
                 op.apply(&[a, b], &ty.kind)
                     .map_err(|m| self.domain(op_span, m))?,
             ),
             _ => None,
         };
-        Ok(Typed {
-            ty: refine(ty, &val),
-            val,
-        })
+        Ok(Typed::new(refine(ty, &val), val))
     }
 
     pub(super) fn call(
@@ -342,46 +344,65 @@ impl Interp<'_> {
             }
             return Err(d);
         };
-        let mut typed = Vec::with_capacity(args.len());
-        for (i, a) in args.iter().enumerate() {
-            // Rot(x, θ): the axis may be written as a bare x, y or z.
-            if let (0, "Rot", ExprKind::Var(axis)) = (i, b.name, &a.kind)
-                && self.env.get(axis).is_none()
-                && let Some(v) = unit_axis(axis)
-            {
-                let val = self
-                    .running()
-                    .then(|| Value::vector(Kind::Vector(Some(3)), &v));
-                typed.push(Typed {
-                    ty: Ty::plain(Kind::Vector(Some(3))),
-                    val,
-                });
-                continue;
-            }
-            // diff(x, t): the variable may be a name with no value (time).
-            if let Some(t) = self.time_variable(b.name, i, a) {
-                typed.push(t);
-                continue;
-            }
-            typed.push(self.expr(a)?);
-        }
-        // `rot_zyx(euler_zyx(R))`: one tuple as the arguments.
-        if args.len() == 1 {
-            typed = self.spread(b, typed);
-        }
-        // The types move out of the operands; the values too when running
-        // (checking has none to keep).
-        let mut tys = Vec::with_capacity(typed.len());
-        let mut vals = Vec::with_capacity(if self.running() { typed.len() } else { 0 });
-        for t in typed {
+        // The arguments' types go on the interpreter's stack of them (no
+        // vector per call); whatever happens, the stack is as it was after.
+        let base = self.env.arg_tys.len();
+        let out = self.builtin_call(b, name, args, span, base);
+        self.env.arg_tys.truncate(base);
+        out
+    }
+
+    /// A call of builtin `b`, its arguments' types pushed on
+    /// [`Interp::arg_tys`] above `base`.
+    fn builtin_call(
+        &mut self,
+        b: &'static builtins::Builtin,
+        name: &str,
+        args: &[Expr],
+        span: Span,
+        base: usize,
+    ) -> Result<Typed, Diagnostic> {
+        let running = self.running();
+        // The types go on the stack; the values, when running, into the
+        // vector the builtin takes (checking has none to keep).
+        let mut vals = Vec::with_capacity(if running { args.len() } else { 0 });
+        let mut keep = |tys: &mut Vec<Ty>, t: Typed| {
             tys.push(t.ty);
             if let Some(v) = t.val {
-                vals.push(v);
-            } else if self.running() {
+                vals.push(*v);
+            } else if running {
                 vals.push(Value::scalar(f64::NAN));
             }
+        };
+        for (i, a) in args.iter().enumerate() {
+            let t = match (i, b.name, &a.kind) {
+                // Rot(x, θ): the axis may be written as a bare x, y or z.
+                (0, "Rot", ExprKind::Var(axis))
+                    if self.env.get(axis).is_none()
+                        && let Some(v) = unit_axis(axis) =>
+                {
+                    let val = running.then(|| Value::vector(Kind::Vector(Some(3)), &v));
+                    Typed::new(Ty::plain(Kind::Vector(Some(3))), val)
+                }
+                // diff(x, t): the variable may be a name with no value (time).
+                _ => match self.time_variable(b.name, i, a) {
+                    Some(t) => t,
+                    None => self.expr(a)?,
+                },
+            };
+            // `rot_zyx(euler_zyx(R))`: one tuple as the arguments.
+            match args.len() {
+                1 => match self.spread(b, t) {
+                    Ok(parts) => parts
+                        .into_iter()
+                        .for_each(|p| keep(&mut self.env.arg_tys, p)),
+                    Err(t) => keep(&mut self.env.arg_tys, t),
+                },
+                _ => keep(&mut self.env.arg_tys, t),
+            }
         }
-        let ty = match b.check(&tys) {
+        let tys = &self.env.arg_tys[base..];
+        let ty = match b.check(tys) {
             Ok(ty) => ty,
             Err(err) => {
                 let at = err.arg.and_then(|i| args.get(i)).map_or(span, |a| a.span);
@@ -389,7 +410,7 @@ impl Interp<'_> {
                     .with_help(format!("signature: {}", b.signature));
                 let frame = err.kind == ErrorKind::Frame;
                 apply::frame_refusal(self.frames, frame, d, &mut self.warnings)?;
-                let plain: Vec<Ty> = tys.iter().map(strip).collect();
+                let plain: Vec<Ty> = self.env.arg_tys[base..].iter().map(strip).collect();
                 b.check(&plain)
                     .map_err(|e| Diagnostic::error(e.kind, at, e.message))?
             }
@@ -404,7 +425,7 @@ impl Interp<'_> {
             }
         };
         if !self.running() {
-            return Ok(Typed { ty, val: None });
+            return Ok(Typed::new(ty, None));
         }
         super::list::numbers_only(b, &vals, span)?;
         if vals
@@ -414,10 +435,7 @@ impl Interp<'_> {
             let refs: Vec<&Value> = vals.iter().collect();
             if let Some(v) = Op::Call(b, name).exact_or_symbolic(&refs, &ty.kind) {
                 let val = Some(v.map_err(|m| self.domain(span, m))?);
-                return Ok(Typed {
-                    ty: refine(ty, &val),
-                    val,
-                });
+                return Ok(Typed::new(refine(ty, &val), val));
             }
         }
         let spans: Vec<Span> = match args {
@@ -426,7 +444,7 @@ impl Interp<'_> {
         };
         // Only pictures read the arguments' types and source text.
         let typed = if b.area == builtins::Area::Pictures {
-            self.typed_args(tys, args)
+            self.typed_args(self.env.arg_tys[base..].to_vec(), args)
         } else {
             Vec::new()
         };
@@ -439,10 +457,7 @@ impl Interp<'_> {
         let v = apply::call(b, vals, site)?;
         not_finite_group(&v, b.name, span)?;
         let val = Some(v);
-        Ok(Typed {
-            ty: refine(ty, &val),
-            val,
-        })
+        Ok(Typed::new(refine(ty, &val), val))
     }
 
     fn user_call(
@@ -505,7 +520,7 @@ impl Interp<'_> {
                 &p,
                 super::env::Binding {
                     ty: t.ty,
-                    val: t.val,
+                    val: t.val.map(|v| *v),
                     symbolic: false,
                 },
             );

@@ -57,7 +57,7 @@ impl FrameGraph {
                     name: name.clone(),
                     from: *a,
                     to: *c,
-                    kind: b.ty.kind.clone(),
+                    kind: b.ty.kind,
                 }),
                 Frames::Pair(a, _) | Frames::One(a) | Frames::Disp(a) => {
                     g.quantities.push((a.to_string(), name.clone()))

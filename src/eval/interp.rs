@@ -12,10 +12,28 @@ use crate::diagnostics::{Diagnostic, ErrorKind};
 use crate::syntax::ast::{Span, Stmt, StmtKind};
 
 /// A checked (and, when running, evaluated) expression.
+///
+/// The value is boxed: the interpreter returns a `Typed` from every node,
+/// and a 4×4 held inline would make each of those moves a 240-byte copy
+/// (in `chasles check` of nothing at all).
 #[derive(Debug, Clone)]
 pub struct Typed {
     pub ty: Ty,
-    pub val: Option<Value>,
+    pub val: Option<Box<Value>>,
+}
+
+impl Typed {
+    /// A checked expression and, when running, its value.
+    pub fn new(ty: Ty, val: Option<Value>) -> Typed {
+        Typed {
+            ty,
+            val: val.map(Box::new),
+        }
+    }
+    /// The value (none when checking).
+    pub fn value(&self) -> Option<&Value> {
+        self.val.as_deref()
+    }
 }
 
 /// What a successful statement produced, for printing.
@@ -26,7 +44,8 @@ pub struct Outcome {
     /// none for a bare expression).
     pub names: Names,
     pub ty: Ty,
-    pub val: Option<Value>,
+    /// The value, boxed as [`Typed`]'s is (none when checking).
+    pub val: Option<Box<Value>>,
     /// Extra text printed before the value (`derive` prints its chain).
     pub note: Option<String>,
     /// False for statements that print nothing (`given`, function definitions).
@@ -135,7 +154,7 @@ impl<'a> Interp<'a> {
     /// Binds a checked value to `name` (statements call this only after
     /// they have succeeded).
     fn bind_value(&mut self, name: &str, t: &Typed) {
-        self.env.set_value(name, &t.ty, &t.val);
+        self.env.set_value(name, &t.ty, t.val.as_deref());
     }
 
     /// Runs one statement. On error nothing is bound.
@@ -181,15 +200,13 @@ impl<'a> Interp<'a> {
                     self.bind_value(&target.name, b);
                 }
                 let names = Names::Many(targets.iter().map(|t| String::from(t.name)).collect());
-                let ty = Ty::plain(Kind::Tuple(
-                    bound.iter().map(|b| b.ty.kind.clone()).collect(),
-                ));
+                let ty = Ty::plain(Kind::tuple(bound.iter().map(|b| b.ty.kind).collect()));
                 let val = bound
                     .iter()
-                    .map(|b| b.val.clone())
+                    .map(|b| b.value().cloned())
                     .collect::<Option<Vec<_>>>()
                     .map(Value::Tuple);
-                let mut o = out(names, Typed { ty, val });
+                let mut o = out(names, Typed::new(ty, val));
                 o.parts = bound.into_iter().map(|b| b.ty).collect();
                 Ok(o)
             }
@@ -222,19 +239,13 @@ impl<'a> Interp<'a> {
                     self.env.set(
                         &n.name,
                         Binding {
-                            ty: Ty::new(kind.clone(), frames),
+                            ty: Ty::new(kind, frames),
                             val: Some(val),
                             symbolic: true,
                         },
                     );
                 }
-                let mut o = out(
-                    Names::Many(Vec::new()),
-                    Typed {
-                        ty: Ty::plain(kind),
-                        val: None,
-                    },
-                );
+                let mut o = out(Names::Many(Vec::new()), Typed::new(Ty::plain(kind), None));
                 o.prints = false;
                 Ok(o)
             }
@@ -257,10 +268,7 @@ impl<'a> Interp<'a> {
                     .insert(String::from(name.name), std::rc::Rc::new(f));
                 let mut o = out(
                     Names::Many(Vec::new()),
-                    Typed {
-                        ty: Ty::plain(Kind::Function),
-                        val: None,
-                    },
+                    Typed::new(Ty::plain(Kind::Function), None),
                 );
                 o.prints = false;
                 Ok(o)
@@ -272,10 +280,7 @@ impl<'a> Interp<'a> {
                     .retain(|w| w.severity != crate::diagnostics::Severity::Note);
                 let mut o = out(
                     Names::Many(Vec::new()),
-                    Typed {
-                        ty: Ty::plain(Kind::Bool),
-                        val: None,
-                    },
+                    Typed::new(Ty::plain(Kind::Bool), None),
                 );
                 o.prints = false;
                 Ok(o)
@@ -324,20 +329,15 @@ impl<'a> Interp<'a> {
                 r.ty
             }
         };
-        let ty = &t.ty;
-        if matches!(t.val, Some(Value::Num { .. })) && ty.kind != Kind::Unknown {
-            let Some(Value::Num { m, kind }) = t.val.take() else {
-                return Ok(());
-            };
-            let m = if ty.kind.is_group() && kind != ty.kind {
-                self.group_at_binding(name, &ty.kind, m, value_span)?
-            } else {
-                m
-            };
-            t.val = Some(Value::Num {
-                kind: t.ty.kind.clone(),
-                m,
-            });
+        let ty = t.ty.kind;
+        if ty != Kind::Unknown
+            && let Some(Value::Num { m, kind }) = t.val.as_deref_mut()
+        {
+            if ty.is_group() && *kind != ty {
+                let owned = std::mem::replace(m, crate::values::num::Num::Scalar(0.0));
+                *m = self.group_at_binding(name, &ty, owned, value_span)?;
+            }
+            *kind = ty;
         }
         Ok(())
     }
@@ -433,11 +433,11 @@ impl<'a> Interp<'a> {
     /// The parts of a tuple (or the entries of a vector) for destructuring.
     fn split_tuple(&self, t: &Typed, n: usize, span: Span) -> Result<Vec<Typed>, Diagnostic> {
         let kinds: Vec<Kind> = match &t.ty.kind {
-            Kind::Tuple(ks) => ks.clone(),
+            Kind::Tuple(ks) => ks.to_vec(),
             // A list's length is known only from its value.
-            Kind::List(k) => match &t.val {
+            Kind::List(k) => match t.val.as_deref() {
                 Some(Value::List(vs)) => vs.iter().map(Value::kind).collect(),
-                _ => vec![(**k).clone(); n],
+                _ => vec![**k; n],
             },
             Kind::Vector(Some(len)) => vec![Kind::Scalar; *len],
             Kind::Unknown | Kind::Vector(None) => vec![Kind::Unknown; n],
@@ -460,7 +460,7 @@ impl<'a> Interp<'a> {
                 ),
             ));
         }
-        let vals: Vec<Option<Value>> = match &t.val {
+        let vals: Vec<Option<Value>> = match t.val.as_deref() {
             Some(Value::Tuple(vs)) => vs.iter().cloned().map(Some).collect(),
             Some(Value::List(vs)) => vs.iter().cloned().map(Some).collect(),
             Some(Value::Num { m, .. }) => m.iter().map(|x| Some(Value::scalar(*x))).collect(),
@@ -472,10 +472,7 @@ impl<'a> Interp<'a> {
             .map(|(k, v)| {
                 let frames = t.ty.frames.part(&k);
                 let k = v.as_ref().map_or(k, Value::kind);
-                Typed {
-                    ty: Ty::new(k, frames),
-                    val: v,
-                }
+                Typed::new(Ty::new(k, frames), v)
             })
             .collect())
     }

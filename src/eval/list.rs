@@ -106,6 +106,10 @@ impl Interp<'_> {
         op: Span,
     ) -> Result<(), Diagnostic> {
         for (t, side) in operands {
+            // Most operands are numbers: asked first, without a call.
+            if !matches!(t.ty.kind, Kind::List(_) | Kind::Picture | Kind::Text) {
+                continue;
+            }
             let Some(help) = elementwise_help(&t.ty.kind) else {
                 continue;
             };
@@ -145,16 +149,16 @@ impl Interp<'_> {
 
     /// `"name.svg"`.
     pub(super) fn string(&self, text: &str) -> Typed {
-        Typed {
-            ty: Ty::plain(Kind::Text),
-            val: self.running().then(|| Value::Str(Rc::from(text))),
-        }
+        Typed::new(
+            Ty::plain(Kind::Text),
+            self.running().then(|| Value::Str(Rc::from(text))),
+        )
     }
 
     /// One bound of a range: a number.
     fn bound(&mut self, e: &Expr) -> Result<Option<f64>, Diagnostic> {
         let t = self.expr(e)?;
-        if let Some(Value::Sym(s)) = &t.val {
+        if let Some(Value::Sym(s)) = t.val.as_deref() {
             return Err(Diagnostic::error(
                 ErrorKind::Type,
                 e.span,
@@ -170,7 +174,7 @@ impl Interp<'_> {
             )
             .with_help("write start:end or start:step:end, e.g. 0:pi/8:pi"));
         }
-        Ok(t.val.as_ref().and_then(Value::as_scalar))
+        Ok(t.val.as_deref().and_then(Value::as_scalar))
     }
 
     /// `start:end`, `start:step:end`.
@@ -187,9 +191,9 @@ impl Interp<'_> {
             None => Some(1.0),
         };
         let b = self.bound(end)?;
-        let ty = Ty::plain(Kind::List(Box::new(Kind::Scalar)));
+        let ty = Ty::plain(Kind::list(Kind::Scalar));
         let (Some(a), Some(h), Some(b)) = (a, h, b) else {
-            return Ok(Typed { ty, val: None });
+            return Ok(Typed::new(ty, None));
         };
         if !(a.is_finite() && h.is_finite() && b.is_finite()) {
             return Err(self.domain(span, "a range needs finite numbers (no inf or NaN)"));
@@ -214,10 +218,7 @@ impl Interp<'_> {
         let items: Vec<Value> = (0..n as usize)
             .map(|k| Value::scalar(a + k as f64 * h))
             .collect();
-        Ok(Typed {
-            ty,
-            val: Some(Value::List(Rc::new(items))),
-        })
+        Ok(Typed::new(ty, Some(Value::List(Rc::new(items)))))
     }
 
     /// `xs[i]`: the i-th item (from 1), with the list's frames.
@@ -237,9 +238,9 @@ impl Interp<'_> {
                 "a list takes one index: xs[i], counting from 1",
             ));
         };
-        let ty = Ty::new((**elem).clone(), t.ty.frames);
-        let Some(Value::List(items)) = &t.val else {
-            return Ok(Typed { ty, val: None });
+        let ty = Ty::new(**elem, t.ty.frames);
+        let Some(Value::List(items)) = t.val.as_deref() else {
+            return Ok(Typed::new(ty, None));
         };
         let n = items.len();
         if !(i.fract() == 0.0 && *i >= 1.0 && *i <= n as f64) {
@@ -249,10 +250,7 @@ impl Interp<'_> {
             ));
         }
         let v = items[*i as usize - 1].clone();
-        Ok(Typed {
-            ty: Ty::new(v.kind(), t.ty.frames),
-            val: Some(v),
-        })
+        Ok(Typed::new(Ty::new(v.kind(), t.ty.frames), Some(v)))
     }
 
     /// What a comprehension variable runs over: a list's elements or a
@@ -260,7 +258,7 @@ impl Interp<'_> {
     fn over(&mut self, e: &Expr) -> Result<(Kind, Frames, Option<Vec<Value>>), Diagnostic> {
         let t = self.expr(e)?;
         let elem = match &t.ty.kind {
-            Kind::List(k) => (**k).clone(),
+            Kind::List(k) => **k,
             Kind::Vector(_) => Kind::Scalar,
             Kind::Unknown => Kind::Unknown,
             k => {
@@ -276,7 +274,7 @@ impl Interp<'_> {
             Kind::List(_) => t.ty.frames,
             _ => Frames::None,
         };
-        let vals = match t.val {
+        let vals = match t.val.map(|v| *v) {
             Some(Value::List(vs)) => Some(vs.as_ref().clone()),
             Some(Value::Num { m, .. }) => Some(m.iter().map(|x| Value::scalar(*x)).collect()),
             Some(Value::Sym(_)) => {
@@ -341,7 +339,7 @@ impl Interp<'_> {
             self.env.set(
                 n,
                 Binding {
-                    ty: ty.clone(),
+                    ty: *ty,
                     val: None,
                     symbolic: false,
                 },
@@ -350,22 +348,16 @@ impl Interp<'_> {
         let checked = self.expr(body);
         self.mode = mode;
         let body_ty = checked?;
-        let list_ty = |k: Kind| Ty::new(Kind::List(Box::new(k)), body_ty.ty.frames);
+        let list_ty = |k: Kind| Ty::new(Kind::list(k), body_ty.ty.frames);
         if mode == Mode::Check {
-            return Ok(Typed {
-                ty: list_ty(body_ty.ty.kind.clone()),
-                val: None,
-            });
+            return Ok(Typed::new(list_ty(body_ty.ty.kind), None));
         }
         let Some(lists) = domains
             .iter()
             .map(|d| d.2.as_ref())
             .collect::<Option<Vec<_>>>()
         else {
-            return Ok(Typed {
-                ty: list_ty(body_ty.ty.kind.clone()),
-                val: None,
-            });
+            return Ok(Typed::new(list_ty(body_ty.ty.kind), None));
         };
         let total: f64 = lists.iter().map(|l| l.len() as f64).product();
         if total > MAX_LIST as f64 {
@@ -389,7 +381,7 @@ impl Interp<'_> {
                 }
                 spend(1, span)?;
                 let t = self.expr(body)?;
-                out.push(t.val.unwrap_or_else(|| Value::scalar(f64::NAN)));
+                out.push(t.val.map_or_else(|| Value::scalar(f64::NAN), |v| *v));
                 // The last variable runs fastest: the first is outermost.
                 let mut i = lists.len();
                 loop {
@@ -406,13 +398,10 @@ impl Interp<'_> {
             }
         }
         let kind = if out.is_empty() {
-            body_ty.ty.kind.clone()
+            body_ty.ty.kind
         } else {
             common_kind(&out)
         };
-        Ok(Typed {
-            ty: list_ty(kind),
-            val: Some(Value::List(Rc::new(out))),
-        })
+        Ok(Typed::new(list_ty(kind), Some(Value::List(Rc::new(out)))))
     }
 }

@@ -36,7 +36,7 @@ fn mentions_identity(e: &Expr) -> bool {
 
 /// Rows and columns of a checked operand.
 fn dims(t: &Typed) -> Option<(usize, usize)> {
-    if let Some(Value::Num { m, .. }) = &t.val {
+    if let Some(Value::Num { m, .. }) = t.val.as_deref() {
         return Some(m.shape());
     }
     match t.ty.kind.shape()? {
@@ -152,10 +152,7 @@ impl Interp<'_> {
             Some(v) => v.kind(),
             None => Kind::Matrix(Some(n), Some(n)),
         };
-        Ok(Typed {
-            ty: Ty::plain(kind),
-            val,
-        })
+        Ok(Typed::new(Ty::plain(kind), val))
     }
 
     /// `e^x` with `e` unbound and `x` not a scalar: `exp(x)`.
@@ -251,19 +248,17 @@ impl Interp<'_> {
 
     /// A builtin given one tuple (or vector: `(a, b, c)` of scalars)
     /// whose parts fit its arguments: the parts.
-    pub(super) fn spread(&self, b: &Builtin, typed: Vec<Typed>) -> Vec<Typed> {
-        let [one] = typed.as_slice() else {
-            return typed;
-        };
-        let parts = parts(one);
-        let tys: Vec<Ty> = parts.iter().map(|t| t.ty.clone()).collect();
-        if parts.len() < 2
-            || b.check(std::slice::from_ref(&one.ty)).is_ok()
-            || b.check(&tys).is_err()
-        {
-            return typed;
+    /// `Err(one)` when they do not.
+    pub(super) fn spread(&self, b: &Builtin, one: Typed) -> Result<Vec<Typed>, Typed> {
+        let parts = parts(&one);
+        if parts.len() < 2 || b.check(std::slice::from_ref(&one.ty)).is_ok() {
+            return Err(one);
         }
-        parts
+        let tys: Vec<Ty> = parts.iter().map(|t| t.ty).collect();
+        if b.check(&tys).is_err() {
+            return Err(one);
+        }
+        Ok(parts)
     }
 }
 
@@ -271,11 +266,11 @@ impl Interp<'_> {
 /// for anything else.
 pub(super) fn parts(t: &Typed) -> Vec<Typed> {
     let kinds = match &t.ty.kind {
-        Kind::Tuple(kinds) => kinds.clone(),
+        Kind::Tuple(kinds) => kinds.to_vec(),
         Kind::Vector(Some(n)) => vec![Kind::Scalar; *n],
         _ => return Vec::new(),
     };
-    let vals: Vec<Option<Value>> = match &t.val {
+    let vals: Vec<Option<Value>> = match t.val.as_deref() {
         Some(Value::Tuple(vs)) => vs.iter().cloned().map(Some).collect(),
         Some(Value::Num { m, .. }) if m.len() == kinds.len() => {
             m.iter().map(|&x| Some(Value::scalar(x))).collect()
@@ -285,10 +280,7 @@ pub(super) fn parts(t: &Typed) -> Vec<Typed> {
     kinds
         .into_iter()
         .zip(vals)
-        .map(|(k, val)| Typed {
-            ty: Ty::plain(k),
-            val,
-        })
+        .map(|(k, val)| Typed::new(Ty::plain(k), val))
         .collect()
 }
 

@@ -50,7 +50,7 @@ fn formula(kind: &Kind, m: &crate::sym::Mat, env: &Env) -> Value {
 fn retag(v: Value, kind: &Kind) -> Value {
     match (v, kind) {
         (v, Kind::Unknown | Kind::Matrix(..) | Kind::Vector(_)) => v,
-        (Value::Num { m, .. }, k) => Value::Num { kind: k.clone(), m },
+        (Value::Num { m, .. }, k) => Value::Num { kind: *k, m },
         (v, _) => v,
     }
 }

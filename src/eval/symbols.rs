@@ -26,23 +26,21 @@ impl Interp<'_> {
         for _ in 0..dots {
             s = s.dot();
         }
-        Some(Typed {
-            ty: Ty::scalar(),
-            val: self
-                .running()
+        Some(Typed::new(
+            Ty::scalar(),
+            self.running()
                 .then(|| super::formula::scalar(Expr::symbol(s))),
-        })
+        ))
     }
 
     /// `diff(x, t)` with `t` a name with no value: the time variable.
     pub(super) fn time_variable(&self, func: &str, i: usize, arg: &Ast) -> Option<Typed> {
         match (i, func, &arg.kind) {
-            (1, "diff", ExprKind::Var(t)) if self.env.get(t).is_none() => Some(Typed {
-                ty: Ty::scalar(),
-                val: self
-                    .running()
+            (1, "diff", ExprKind::Var(t)) if self.env.get(t).is_none() => Some(Typed::new(
+                Ty::scalar(),
+                self.running()
                     .then(|| super::formula::scalar(Expr::symbol(Symbol::timed(t)))),
-            }),
+            )),
             _ => None,
         }
     }
@@ -50,7 +48,7 @@ impl Interp<'_> {
     /// A symbolic result beyond the size limits ([`super::symbolic::Tree::too_large`],
     /// [`crate::sym::expr::MAX_DEPTH`]) is a domain error.
     pub(super) fn within_limits(&self, t: &Typed, span: Span) -> Result<(), Diagnostic> {
-        let depth = match &t.val {
+        let depth = match t.val.as_deref() {
             Some(Value::Sym(s)) if s.too_large() => super::symbolic::MAX_SYM_DEPTH,
             Some(Value::Formula { m, .. })
                 if m.size() > super::symbolic::MAX_SYM_NODES

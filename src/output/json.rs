@@ -61,7 +61,7 @@ pub fn outcome(o: &Outcome, line: usize) -> Option<J> {
         1 => json!(o.names[0]),
         _ => json!(format!("({})", o.names.join(", "))),
     };
-    let ty = match &o.val {
+    let ty = match o.val.as_deref() {
         Some(Value::Sym(_) | Value::Formula { .. }) => "symbolic",
         Some(v) => type_name(&v.kind()),
         None => type_name(&o.ty.kind),
@@ -71,10 +71,10 @@ pub fn outcome(o: &Outcome, line: usize) -> Option<J> {
         "name": name,
         "type": ty,
         "frames": o.ty.frames.to_list(),
-        "value": o.val.as_ref().map_or(J::Null, value),
+        "value": o.val.as_deref().map_or(J::Null, value),
     });
     // A symbolic value carries its LaTeX and what it is (§7).
-    if let (Some(Value::Formula { m, kind }), Some(obj)) = (&o.val, out.as_object_mut()) {
+    if let (Some(Value::Formula { m, kind }), Some(obj)) = (o.val.as_deref(), out.as_object_mut()) {
         obj.insert(
             "latex".into(),
             json!(crate::values::format::formula_latex(m, 17.into())),

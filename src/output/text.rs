@@ -19,7 +19,7 @@ fn list_label(ty: &Ty, vs: &[Value]) -> String {
         _ if n == 0 => "empty list".to_string(),
         Kind::Unknown => format!("list of {n} values"),
         Kind::Scalar if n == 1 => "list of 1 number".to_string(),
-        k => Kind::List(Box::new(k))
+        k => Kind::list(k)
             .to_string()
             .replacen("list of ", &format!("list of {n} "), 1),
     };
@@ -392,7 +392,7 @@ pub fn show_outcome(o: &Outcome, style: impl Into<Style>) -> String {
         out.push_str(note);
         out.push('\n');
     }
-    let Some(v) = &o.val else {
+    let Some(v) = o.val.as_deref() else {
         // check mode: the type only
         let names = o.names.join(", ");
         let label = o.ty.to_string();
@@ -416,7 +416,7 @@ pub fn show_outcome(o: &Outcome, style: impl Into<Style>) -> String {
                     } else {
                         String::new()
                     };
-                    show_value(&prefix, &Ty::new(k.clone(), o.ty.frames.part(&k)), x, style)
+                    show_value(&prefix, &Ty::new(k, o.ty.frames.part(&k)), x, style)
                 })
                 .collect();
             out.push_str(&parts.join("\n"));

@@ -251,7 +251,7 @@ pub fn suggest_command(name: &str) -> Option<&'static str> {
 /// The type and frames of a binding as `:vars` shows them.
 fn type_of(ty: &Ty, val: Option<&Value>) -> String {
     let kind = match val {
-        Some(Value::Sym(_)) | None => ty.kind.clone(),
+        Some(Value::Sym(_)) | None => ty.kind,
         Some(v) => v.kind(),
     };
     Ty::new(kind, ty.frames).to_string()

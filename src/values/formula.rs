@@ -55,7 +55,7 @@ fn settle_kind(kind: &Kind, m: &Mat) -> Kind {
                 k => k,
             },
         },
-        k => k.clone(),
+        k => *k,
     }
 }
 
@@ -229,7 +229,7 @@ pub fn member(v: &Value, name: &str) -> Result<Value, String> {
 
 fn transposed_kind(k: &Kind) -> Kind {
     match k {
-        Kind::SO3 | Kind::SO2 | Kind::So3 | Kind::So2 => k.clone(),
+        Kind::SO3 | Kind::SO2 | Kind::So3 | Kind::So2 => *k,
         Kind::Adjoint { transposed } => Kind::Adjoint {
             transposed: !transposed,
         },

@@ -29,7 +29,7 @@ fn out(kind: &Kind, m: Num) -> Value {
     let kind = match kind {
         Kind::Matrix(..) | Kind::Unknown => convert::classify(&m),
         Kind::Vector(_) => Kind::Vector(Some(m.nrows())),
-        k => k.clone(),
+        k => *k,
     };
     let kind = if m.shape() == (1, 1) && !matches!(kind, Kind::Scalar) && kind.vec_len().is_none() {
         Kind::Scalar
@@ -45,13 +45,13 @@ pub fn mul(l: &Value, r: &Value, kind: &Kind) -> Result<Value, String> {
     let (rk, rm) = num(r)?;
     if let (Num::Scalar(x), Kind::Scalar) = (lm, lk) {
         return Ok(Value::Num {
-            kind: kind.clone(),
+            kind: *kind,
             m: rm.map(|y| y * x),
         });
     }
     if let (Num::Scalar(y), Kind::Scalar) = (rm, rk) {
         return Ok(Value::Num {
-            kind: kind.clone(),
+            kind: *kind,
             m: lm.map(|x| x * y),
         });
     }
@@ -83,7 +83,7 @@ pub fn mul(l: &Value, r: &Value, kind: &Kind) -> Result<Value, String> {
         }
         let p = t.fixed_view::<3, 3>(0, 0) * x + t.fixed_view::<3, 1>(0, 3);
         return Ok(Value::Num {
-            kind: kind.clone(),
+            kind: *kind,
             m: Num::V3(p),
         });
     }
@@ -91,7 +91,7 @@ pub fn mul(l: &Value, r: &Value, kind: &Kind) -> Result<Value, String> {
         let p = t.fixed_view::<2, 2>(0, 0) * nalgebra::Vector2::new(rm[0], rm[1])
             + t.fixed_view::<2, 1>(0, 2);
         return Ok(Value::Num {
-            kind: kind.clone(),
+            kind: *kind,
             m: Num::from_slice(2, 1, p.as_slice()),
         });
     }
@@ -182,7 +182,7 @@ pub fn add(l: &Value, r: &Value, subtract: bool, kind: &Kind) -> Result<Value, S
 pub fn neg(v: &Value, kind: &Kind) -> Result<Value, String> {
     let (_, m) = num(v)?;
     Ok(Value::Num {
-        kind: kind.clone(),
+        kind: *kind,
         m: m.map(|x| -x),
     })
 }
@@ -195,7 +195,7 @@ pub fn div(l: &Value, r: &Value, kind: &Kind) -> Result<Value, String> {
         return Err("division by zero".into());
     }
     Ok(Value::Num {
-        kind: kind.clone(),
+        kind: *kind,
         m: lm.map(|x| x / d),
     })
 }
@@ -331,7 +331,7 @@ pub fn transpose(v: &Value) -> Value {
         Value::Num { kind, m } => {
             let kind = match kind {
                 // [ω]ᵀ = −[ω]: the transpose of so(3) is in so(3).
-                Kind::SO3 | Kind::SO2 | Kind::So3 | Kind::So2 | Kind::Scalar => kind.clone(),
+                Kind::SO3 | Kind::SO2 | Kind::So3 | Kind::So2 | Kind::Scalar => *kind,
                 Kind::Adjoint { transposed } => Kind::Adjoint {
                     transposed: !transposed,
                 },
@@ -446,7 +446,7 @@ pub fn brackets(rows: &[Vec<Value>]) -> Result<Value, String> {
             Num::V3(w) => Value::of(Kind::So3, crate::lie::so3::hat(w)),
             Num::V6(v) => Value::of(Kind::Se3, se3::hat(v)),
             _ => Value::Num {
-                kind: k.clone(),
+                kind: *k,
                 m: m.clone(),
             },
         });

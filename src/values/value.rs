@@ -111,13 +111,13 @@ impl Value {
     /// The kind this value has at run time.
     pub fn kind(&self) -> Kind {
         match self {
-            Value::Num { kind, .. } => kind.clone(),
+            Value::Num { kind, .. } => *kind,
             Value::Bool(_) => Kind::Bool,
-            Value::Tuple(vs) => Kind::Tuple(vs.iter().map(Value::kind).collect()),
+            Value::Tuple(vs) => Kind::tuple(vs.iter().map(Value::kind).collect()),
             Value::Mech(_) => Kind::Mechanism,
             Value::Sym(_) => Kind::Unknown,
-            Value::Formula { kind, .. } => kind.clone(),
-            Value::List(vs) => Kind::List(Box::new(common_kind(vs))),
+            Value::Formula { kind, .. } => *kind,
+            Value::List(vs) => Kind::list(common_kind(vs)),
             Value::Str(_) => Kind::Text,
             Value::Picture(_) => Kind::Picture,
         }

@@ -19,7 +19,7 @@ const ROW: Kind = Kind::Matrix(Some(1), Some(6));
 
 /// The frames of `l * r` with a result of kind `k`.
 fn mul(l: (&Frames, &Kind), r: (&Frames, &Kind), k: &Kind) -> Result<Frames, Clash> {
-    let ty = |(f, k): (&Frames, &Kind)| Ty::new(k.clone(), *f);
+    let ty = |(f, k): (&Frames, &Kind)| Ty::new(*k, *f);
     product(&ty(l), &ty(r), k).map(|(f, _)| f)
 }
 
