@@ -58,19 +58,20 @@ pub struct Outcome {
     pub labels: &'static [&'static str],
 }
 
-/// The names a statement bound, in order: read as a slice of names. One
-/// name (the common `x = ..`) is held without a second allocation.
+/// The names a statement bound, in order: read as a slice of names (the
+/// syntax tree's interned text, so naming allocates nothing). One name
+/// (the common `x = ..`) is held without a vector.
 #[derive(Debug, Clone)]
 pub enum Names {
     /// `x = ..`, `derive T_ab`.
-    One([String; 1]),
+    One([&'static str; 1]),
     /// None (a bare expression) or several (`(a, b) = ..`).
-    Many(Vec<String>),
+    Many(Vec<&'static str>),
 }
 
 impl Names {
     /// The names as a slice.
-    pub fn as_slice(&self) -> &[String] {
+    pub fn as_slice(&self) -> &[&'static str] {
         match self {
             Names::One(n) => n,
             Names::Many(v) => v,
@@ -79,8 +80,8 @@ impl Names {
 }
 
 impl std::ops::Deref for Names {
-    type Target = [String];
-    fn deref(&self) -> &[String] {
+    type Target = [&'static str];
+    fn deref(&self) -> &[&'static str] {
         self.as_slice()
     }
 }
@@ -186,7 +187,7 @@ impl<'a> Interp<'a> {
                 crate::check::rules::settle_in_place(&mut t.ty);
                 self.bind_checked(&target.name, &mut t, target.span, value.span)?;
                 self.bind_value(&target.name, &t);
-                Ok(out(Names::One([String::from(target.name)]), t))
+                Ok(out(Names::One([target.name.as_str()]), t))
             }
             StmtKind::Destructure { targets, value } => {
                 let t = self.expr(value)?;
@@ -199,7 +200,7 @@ impl<'a> Interp<'a> {
                 for (target, b) in targets.iter().zip(&bound) {
                     self.bind_value(&target.name, b);
                 }
-                let names = Names::Many(targets.iter().map(|t| String::from(t.name)).collect());
+                let names = Names::Many(targets.iter().map(|t| t.name.as_str()).collect());
                 let ty = Ty::plain(Kind::tuple(bound.iter().map(|b| b.ty.kind).collect()));
                 let val = bound
                     .iter()
@@ -288,7 +289,7 @@ impl<'a> Interp<'a> {
             StmtKind::Derive { target } => {
                 let (chain, t) = self.derive(target)?;
                 self.bind_value(&target.name, &t);
-                let mut o = out(Names::One([String::from(target.name)]), t);
+                let mut o = out(Names::One([target.name.as_str()]), t);
                 o.note = Some(format!("{} = {chain}", target.name));
                 Ok(o)
             }
