@@ -7,6 +7,7 @@ use std::rc::Rc;
 use super::value::{UserFn, Value};
 use crate::check::bind::Claim;
 use crate::check::ty::Ty;
+use crate::syntax::name::Name;
 
 /// A map keyed by names, with a hash fast on short keys (foldhash's
 /// fixed-seed hasher: a session's names are not adversarial).
@@ -67,8 +68,10 @@ pub struct Env {
     pub vars: NameMap<Binding>,
     pub fns: NameMap<Rc<UserFn>>,
     /// What each name bound so far says about its value (the frames of its
-    /// subscript, its book letter), read once per name.
-    claims: NameMap<Claim>,
+    /// subscript, its book letter), read once per name; keyed by where the
+    /// name's interned text is ([`Name`]: one text, one address), so a
+    /// look-up hashes two words, not the text.
+    claims: HashMap<(usize, usize), Claim, foldhash::fast::FixedState>,
     /// The types of the arguments of the builtin calls being checked, as a
     /// stack: each call pushes its own and pops them when it returns. Kept
     /// here so that its storage outlives one statement's interpreter.
@@ -118,12 +121,14 @@ impl Env {
     /// What `name` says about a value bound to it ([`Claim::of`]), read
     /// from the name the first time only.
     #[inline]
-    pub fn claim(&mut self, name: &str) -> Claim {
-        if let Some(c) = self.claims.get(name) {
+    pub fn claim(&mut self, name: Name) -> Claim {
+        let text = name.as_str();
+        let key = (text.as_ptr() as usize, text.len());
+        if let Some(c) = self.claims.get(&key) {
             return *c;
         }
-        let c = Claim::of(name);
-        self.claims.insert(name.to_string(), c);
+        let c = Claim::of(text);
+        self.claims.insert(key, c);
         c
     }
     /// Names in sorted order (for `:vars` and derive's deterministic search).

@@ -185,7 +185,7 @@ impl<'a> Interp<'a> {
             StmtKind::Assign { target, value } => {
                 let mut t = self.expr(value)?;
                 crate::check::rules::settle_in_place(&mut t.ty);
-                self.bind_checked(&target.name, &mut t, target.span, value.span)?;
+                self.bind_checked(target.name, &mut t, target.span, value.span)?;
                 self.bind_value(&target.name, &t);
                 Ok(out(Names::One([target.name.as_str()]), t))
             }
@@ -194,7 +194,7 @@ impl<'a> Interp<'a> {
                 let parts = self.split_tuple(&t, targets.len(), value.span)?;
                 let mut bound = Vec::new();
                 for (target, mut part) in targets.iter().zip(parts) {
-                    self.bind_checked(&target.name, &mut part, target.span, value.span)?;
+                    self.bind_checked(target.name, &mut part, target.span, value.span)?;
                     bound.push(part);
                 }
                 for (target, b) in targets.iter().zip(&bound) {
@@ -300,7 +300,7 @@ impl<'a> Interp<'a> {
     /// the value the kind its name implies (`V_b` a twist, `F_a` a wrench).
     fn bind_checked(
         &mut self,
-        name: &str,
+        name: crate::syntax::name::Name,
         t: &mut Typed,
         name_span: Span,
         value_span: Span,
@@ -312,7 +312,7 @@ impl<'a> Interp<'a> {
         }
         let claim = self.env.claim(name);
         let ty = std::mem::replace(&mut t.ty, Ty::plain(Kind::Unknown));
-        t.ty = match bind::bind_claimed(name, &claim, ty) {
+        t.ty = match bind::bind_claimed(&name, &claim, ty) {
             Ok(b) => {
                 if let Some(w) = b.warning {
                     self.rule_warning(*w, value_span, name_span);
@@ -336,7 +336,7 @@ impl<'a> Interp<'a> {
         {
             if ty.is_group() && *kind != ty {
                 let owned = std::mem::replace(m, crate::values::num::Num::Scalar(0.0));
-                *m = self.group_at_binding(name, &ty, owned, value_span)?;
+                *m = self.group_at_binding(&name, &ty, owned, value_span)?;
             }
             *kind = ty;
         }
