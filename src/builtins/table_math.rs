@@ -96,7 +96,7 @@ fn eval_exp(a: &mut Args) -> Result<Value, Diagnostic> {
             ops::check_cost(ops::cube(r) * u128::from(products), || {
                 format!("exp of a {r}×{r} matrix: about {products} products of its size")
             })
-            .map_err(|e| a.domain(e))?;
+            .map_err(|e| a.domain(e.to_string()))?;
             // The input is finite (checked above): None means overflow.
             let Some(e) = matexp::try_expm(&m) else {
                 return Err(a.error(
@@ -343,7 +343,9 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 arity: (1, 1),
                 rule: inv_rule,
             },
-            eval: |a| ops::inverse(a.value(0)).map_err(|e| a.error(0, ErrorKind::Domain, e)),
+            eval: |a| {
+                ops::inverse(a.value(0)).map_err(|e| a.error(0, ErrorKind::Domain, e.to_string()))
+            },
         },
         Builtin {
             name: "transpose",
@@ -379,7 +381,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ops::check_cost(ops::cube(n) / 3, || {
                     format!("the determinant of a {n}×{n} matrix")
                 })
-                .map_err(|e| a.domain(e))?;
+                .map_err(|e| a.domain(e.to_string()))?;
                 Ok(Value::scalar(m.to_dmatrix().determinant()))
             },
         },

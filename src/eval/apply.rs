@@ -18,13 +18,13 @@ use std::f64::consts::PI;
 
 use super::env::FrameMode;
 use super::formula;
-use super::ops::{self, Sel};
+use super::ops::{self, OpError, Sel};
 use super::symbolic::{Fun, Part};
 use super::value::{Sym, Value};
 use crate::builtins::{Args, Builtin, Role};
 use crate::check::rules::{self, Operands, RuleError};
 use crate::check::ty::{Frames, Kind, Ty};
-use crate::diagnostics::{Diagnostic, Severity};
+use crate::diagnostics::{Diagnostic, ErrorKind, Severity};
 use crate::syntax::ast::{BinOp, Span};
 
 /// One operation of the language: what a node of an expression does with
@@ -100,7 +100,7 @@ impl<'a> Op<'a> {
     /// None when symbols are re-evaluated with numbers (the operation then
     /// finds the kind from its operands). Blocks take rows:
     /// [`block_numeric`].
-    pub fn numeric(self, args: &[&Value], kind: Option<&Kind>) -> Result<Value, String> {
+    pub fn numeric(self, args: &[&Value], kind: Option<&Kind>) -> Result<Value, OpError> {
         let unknown = &Kind::Unknown;
         match (self, args) {
             (Op::Neg, [v]) => match kind {
@@ -121,7 +121,7 @@ impl<'a> Op<'a> {
                         None => ops::div(a, b, &own()),
                     },
                     BinOp::Pow => {
-                        let e = b.as_scalar().ok_or("the exponent must be a number")?;
+                        let e = b.as_scalar().ok_or(OpError::ExponentNotANumber)?;
                         match kind {
                             Some(k) => ops::pow(a, e, k),
                             None => ops::pow(a, e, &own()),
@@ -141,7 +141,7 @@ impl<'a> Op<'a> {
                 Ok(Value::vector(Kind::Vector(Some(xs.len())), &xs))
             }
             (Op::Call(b, _), _) => call_nowhere(b, args.iter().map(|v| (*v).clone()).collect()),
-            _ => Err("wrong number of operands".into()),
+            _ => Err(OpError::Operands),
         }
     }
 
@@ -229,11 +229,24 @@ impl<'a> Op<'a> {
         !matches!(self, Op::Arith(_) | Op::Vector)
     }
 
+    /// The error of this operation on values ([`Op::apply`]) as the
+    /// evaluator reports it at `span`: a type error for a part or a
+    /// bracket the value has not (`.R` of a vector, blocks that do not
+    /// fit), else a domain error (the values are outside the operation's
+    /// domain: a singular inverse, an index out of range).
+    pub fn failure(self, e: OpError, span: Span) -> Diagnostic {
+        let kind = match self {
+            Op::Transpose | Op::Member(_) | Op::Block => ErrorKind::Type,
+            _ => ErrorKind::Domain,
+        };
+        Diagnostic::error(kind, span, e.to_string())
+    }
+
     /// The operation on values: the exact path when a symbolic scalar is
     /// among numbers ([`Op::formula`]), the symbolic one when a `given`
     /// symbol is among the operands ([`Op::symbolic`]), else numbers
     /// ([`Op::numeric`]). `kind` is the result's kind as checked.
-    pub fn apply(self, args: &[&Value], kind: &Kind) -> Result<Value, String> {
+    pub fn apply(self, args: &[&Value], kind: &Kind) -> Result<Value, OpError> {
         match self.exact_or_symbolic(args, kind) {
             Some(v) => v,
             None => self.numeric(args, Some(kind)),
@@ -242,11 +255,11 @@ impl<'a> Op<'a> {
 
     /// The first two paths of [`Op::apply`]: None when the operands are
     /// numbers (a builtin call then computes with its spans and warnings).
-    pub fn exact_or_symbolic(self, args: &[&Value], kind: &Kind) -> Option<Result<Value, String>> {
+    pub fn exact_or_symbolic(self, args: &[&Value], kind: &Kind) -> Option<Result<Value, OpError>> {
         if formula::applies(args)
             && let Some(v) = self.formula(args, kind)
         {
-            return Some(v);
+            return Some(v.map_err(OpError::Message));
         }
         let formulas = self.formula_is_symbolic();
         args.iter()
@@ -261,10 +274,10 @@ impl<'a> Op<'a> {
 
 /// `[ ... ]` ([`Op::Block`]) by the first two paths of [`Op::apply`]:
 /// None when every entry is a number.
-pub fn block(rows: &[Vec<Value>]) -> Option<Result<Value, String>> {
+pub fn block(rows: &[Vec<Value>]) -> Option<Result<Value, OpError>> {
     let refs: Vec<&Value> = rows.iter().flatten().collect();
     if formula::applies(&refs) {
-        return Some(formula::brackets(rows));
+        return Some(formula::brackets(rows).map_err(OpError::Message));
     }
     refs.iter()
         .any(|v| v.is_symbolic() || matches!(v, Value::Formula { .. }))
@@ -276,7 +289,7 @@ pub fn block(rows: &[Vec<Value>]) -> Option<Result<Value, String>> {
 }
 
 /// `[ ... ]` on numbers: [`ops::brackets`].
-pub fn block_numeric(rows: &[Vec<Value>]) -> Result<Value, String> {
+pub fn block_numeric(rows: &[Vec<Value>]) -> Result<Value, OpError> {
     ops::brackets(rows)
 }
 
@@ -321,7 +334,7 @@ pub fn call(b: &Builtin, vals: Vec<Value>, site: Site) -> Result<Value, Diagnost
 
 /// [`call`] where the call stands nowhere (symbols re-evaluated): errors
 /// as their message, warnings dropped.
-pub fn call_nowhere(b: &Builtin, vals: Vec<Value>) -> Result<Value, String> {
+pub fn call_nowhere(b: &Builtin, vals: Vec<Value>) -> Result<Value, OpError> {
     let mut warnings = Vec::new();
     let site = Site {
         spans: Vec::new(),
@@ -329,7 +342,7 @@ pub fn call_nowhere(b: &Builtin, vals: Vec<Value>) -> Result<Value, String> {
         typed: Vec::new(),
         warnings: &mut warnings,
     };
-    call(b, vals, site).map_err(|d| d.message)
+    call(b, vals, site).map_err(|d| OpError::Message(d.message))
 }
 
 /// A value as a symbolic operand (numbers become constants).

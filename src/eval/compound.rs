@@ -54,7 +54,7 @@ impl Interp<'_> {
             .rule(&[&t.ty], Hints::default())
             .map_err(|e| Diagnostic::error(ErrorKind::Type, span, e.message))?;
         let val = match &t.val {
-            Some(v) => Some(op.apply(&[v], &ty.kind).map_err(|m| self.domain(span, m))?),
+            Some(v) => Some(op.apply(&[v], &ty.kind).map_err(|m| op.failure(m, span))?),
             None => None,
         };
         Ok(Typed {
@@ -81,7 +81,7 @@ impl Interp<'_> {
                 Some(refs) if self.running() => Some(
                     Op::Vector
                         .apply(&refs, &ty.kind)
-                        .map_err(|m| self.domain(span, m))?,
+                        .map_err(|m| Op::Vector.failure(m, span))?,
                 ),
                 _ => None,
             };
@@ -144,7 +144,7 @@ impl Interp<'_> {
                 apply::block_numeric(&vrows)
             }
         };
-        let val = Some(v.map_err(|m| Diagnostic::error(ErrorKind::Type, span, m))?);
+        let val = Some(v.map_err(|m| Op::Block.failure(m, span))?);
         Ok(Typed {
             ty: refine(ty, &val),
             val,
@@ -168,7 +168,7 @@ impl Interp<'_> {
         }
         let rows = [vec![t.val.unwrap_or_else(|| Value::scalar(f64::NAN))]];
         let v = apply::block(&rows).unwrap_or_else(|| apply::block_numeric(&rows));
-        let val = Some(v.map_err(|m| Diagnostic::error(ErrorKind::Type, span, m))?);
+        let val = Some(v.map_err(|m| Op::Block.failure(m, span))?);
         Ok(Typed {
             ty: refine(ty, &val),
             val,

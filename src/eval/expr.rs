@@ -98,7 +98,7 @@ impl Interp<'_> {
                     Some(v) => Some(
                         Op::Neg
                             .apply(&[v], &ty.kind)
-                            .map_err(|m| self.domain(e.span, m))?,
+                            .map_err(|m| Op::Neg.failure(m, e.span))?,
                     ),
                     None => None,
                 };
@@ -117,7 +117,7 @@ impl Interp<'_> {
                     Some(v) => Some(
                         Op::Degrees
                             .apply(&[v], &Kind::Scalar)
-                            .map_err(|m| self.domain(inner.span, m))?,
+                            .map_err(|m| Op::Degrees.failure(m, inner.span))?,
                     ),
                     None => None,
                 };
@@ -155,7 +155,7 @@ impl Interp<'_> {
                 let val = match &t.val {
                     Some(v) => Some(
                         op.apply(&[v], &ty.kind)
-                            .map_err(|m| Diagnostic::error(ErrorKind::Type, member.span, m))?,
+                            .map_err(|m| op.failure(m, member.span))?,
                     ),
                     None => None,
                 };
@@ -302,7 +302,7 @@ impl Interp<'_> {
         let val = match (&l.val, &r.val) {
             (Some(a), Some(b)) => Some(
                 op.apply(&[a, b], &ty.kind)
-                    .map_err(|m| self.domain(op_span, m))?,
+                    .map_err(|m| op.failure(m, op_span))?,
             ),
             _ => None,
         };
@@ -413,7 +413,7 @@ impl Interp<'_> {
         {
             let refs: Vec<&Value> = vals.iter().collect();
             if let Some(v) = Op::Call(b, name).exact_or_symbolic(&refs, &ty.kind) {
-                let val = Some(v.map_err(|m| self.domain(span, m))?);
+                let val = Some(v.map_err(|m| Op::Call(b, name).failure(m, span))?);
                 return Ok(Typed {
                     ty: refine(ty, &val),
                     val,
