@@ -16,6 +16,9 @@ pub struct RuleError {
     pub rhs: String,
     pub op: String,
     pub help: Option<String>,
+    /// The operand the refusal is about, when it is one argument of a
+    /// builtin call (its table row's check); None: the operation.
+    pub arg: Option<usize>,
 }
 
 impl RuleError {

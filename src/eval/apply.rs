@@ -46,8 +46,9 @@ pub enum Op<'a> {
     /// `x[i]`, `M[i, j]`, `M[:, j]` (1-based).
     Index(&'a [Sel]),
     /// `[x]`, the book's bracket of a 3- or 6-vector (3.30, 3.70), and
-    /// `[a, b; c, d]`, a block matrix; its operands are rows.
-    Block,
+    /// `[a, b; c, d]`, a block matrix: the number of entries of each row
+    /// (`[x]` is `Block(&[1])`); its operands are the entries, row by row.
+    Block(&'a [usize]),
     /// `(a, b, c)`: a column vector of scalars.
     Vector,
     /// A call of a builtin, by the name it was called with (`Ad` or
@@ -75,9 +76,11 @@ impl<'a> Op<'a> {
     }
 
     /// The kind and frames of the result from the operands' (LANGUAGE.md
-    /// §6), checked without numbers. A block's rule is [`block_type`]
-    /// (its operands are rows), a call's its table row's
-    /// [`Builtin::check`] and [`rules::settle`].
+    /// §6), checked without numbers: every operation's rule is here. A
+    /// block's is [`block_type`]; a call's its table row's
+    /// [`Builtin::check`] (a refusal says which argument, with the
+    /// signature as help), then [`rules::settle`] (a vector or Lie-algebra
+    /// result is in one frame); the inverse's [`rules::inverse`].
     pub fn rule(self, args: &[&Ty], hints: Hints) -> Result<Ty, RuleError> {
         match (self, args) {
             (Op::Neg, [t]) => rules::neg(t),
@@ -92,6 +95,18 @@ impl<'a> Op<'a> {
             (Op::Member(part), [t]) => rules::member(t, part.name()),
             (Op::Index(sels), [t]) => index_type(t, sels),
             (Op::Vector, _) => Ok(Ty::plain(Kind::Vector(Some(args.len())))),
+            (Op::Inverse, [t]) => rules::inverse(t),
+            (Op::Block(widths), _) => Ok(block_type(widths, args)),
+            (Op::Call(b, _), _) => {
+                let ty = b.check(args).map_err(|e| RuleError {
+                    kind: Some(e.kind),
+                    message: e.message,
+                    help: Some(format!("signature: {}", b.signature)),
+                    arg: e.arg,
+                    ..RuleError::default()
+                })?;
+                rules::settle(&ty, b.name)
+            }
             _ => Ok(Ty::plain(Kind::Unknown)),
         }
     }
@@ -139,6 +154,18 @@ impl<'a> Op<'a> {
                     .map(|v| v.as_scalar().unwrap_or(f64::NAN))
                     .collect();
                 Ok(Value::vector(Kind::Vector(Some(xs.len())), &xs))
+            }
+            (Op::Block(widths), _) => {
+                let mut rest = args;
+                let rows: Vec<Vec<Value>> = widths
+                    .iter()
+                    .map(|&n| {
+                        let (row, tail) = rest.split_at(n.min(rest.len()));
+                        rest = tail;
+                        row.iter().map(|v| (*v).clone()).collect()
+                    })
+                    .collect();
+                block_numeric(&rows)
             }
             (Op::Call(b, _), _) => call_nowhere(b, args.iter().map(|v| (*v).clone()).collect()),
             _ => Err(OpError::Operands),
@@ -207,7 +234,16 @@ impl<'a> Op<'a> {
                     })
                     .collect(),
             ),
-            Op::Block => Sym::Bracket(Box::new(one(&mut args))),
+            Op::Block([1]) => Sym::Bracket(Box::new(one(&mut args))),
+            Op::Block(widths) => {
+                let mut rest = args.into_iter();
+                Sym::Block(
+                    widths
+                        .iter()
+                        .map(|&n| rest.by_ref().take(n).collect())
+                        .collect(),
+                )
+            }
             Op::Vector => Sym::Vector(args),
             Op::Call(b, name) => match b.role() {
                 Role::Inverse => one(&mut args).inverse(),
@@ -236,7 +272,7 @@ impl<'a> Op<'a> {
     /// domain: a singular inverse, an index out of range).
     pub fn failure(self, e: OpError, span: Span) -> Diagnostic {
         let kind = match self {
-            Op::Transpose | Op::Member(_) | Op::Block => ErrorKind::Type,
+            Op::Transpose | Op::Member(_) | Op::Block(_) => ErrorKind::Type,
             _ => ErrorKind::Domain,
         };
         Diagnostic::error(kind, span, e.to_string())
@@ -300,7 +336,7 @@ pub fn block_symbolic(rows: impl Iterator<Item = Vec<Sym>>) -> Sym {
         && row.len() == 1
         && let Some(x) = row.pop()
     {
-        return Op::Block.symbolic(vec![x]);
+        return Op::Block(&[1]).symbolic(vec![x]);
     }
     Sym::Block(rows)
 }
@@ -394,7 +430,7 @@ fn index_type(t: &Ty, sels: &[Sel]) -> Result<Ty, RuleError> {
 /// The rule of `[x]`, one entry in brackets: the book's bracket of a 3-
 /// or 6-vector is in so(3) or se(3) (3.30, 3.70), in the vector's frame;
 /// anything else is itself.
-pub fn bracket_type(t: &Ty) -> Ty {
+fn bracket_type(t: &Ty) -> Ty {
     match t.kind.vec_len() {
         Some(3) => Ty::new(Kind::So3, t.frames),
         Some(6) => Ty::new(Kind::Se3, t.frames),
@@ -402,37 +438,44 @@ pub fn bracket_type(t: &Ty) -> Ty {
     }
 }
 
-/// The rule of [`Op::Block`], `[ ... ]`: the book's bracket of one vector, a column
+/// The rule of [`Op::Block`], `[ ... ]`, its entries row by row with
+/// `widths` entries in each: the book's bracket of one vector, a column
 /// vector of one row of numbers, else a block matrix whose frames are the
 /// one pair tag inside it (`[R_sb, p_sb; 0, 0, 0, 1]` is {s}←{b}).
-pub fn block_type<T>(rows: &[Vec<T>], ty_of: impl Fn(&T) -> &Ty) -> Ty {
-    if rows.len() == 1 && rows[0].len() == 1 {
-        return bracket_type(ty_of(&rows[0][0]));
+fn block_type(widths: &[usize], args: &[&Ty]) -> Ty {
+    if let [t] = args {
+        return bracket_type(t);
     }
-    let all_scalar = rows.iter().flatten().all(|t| ty_of(t).kind == Kind::Scalar);
-    if all_scalar && rows.len() == 1 {
-        return Ty::plain(Kind::Vector(Some(rows[0].len())));
+    let all_scalar = args.iter().all(|t| t.kind == Kind::Scalar);
+    if all_scalar && widths.len() == 1 {
+        return Ty::plain(Kind::Vector(Some(args.len())));
     }
     let mut frames = Frames::None;
-    for t in rows.iter().flatten() {
-        if let Frames::Pair(..) = ty_of(t).frames {
+    for t in args {
+        if let Frames::Pair(..) = t.frames {
             if frames.is_none() {
-                frames = ty_of(t).frames;
-            } else if frames != ty_of(t).frames {
+                frames = t.frames;
+            } else if frames != t.frames {
                 frames = Frames::None;
                 break;
             }
         }
     }
     // Shape: sum of widths of the first row, sum of heights of the first column.
-    let width: Option<usize> = rows[0]
+    let first = widths.first().map_or(0, |&n| n.min(args.len()));
+    let width: Option<usize> = args[..first]
         .iter()
-        .map(|t| ty_of(t).kind.shape().and_then(|s| s.1))
+        .map(|t| t.kind.shape().and_then(|s| s.1))
         .sum();
-    let height: Option<usize> = rows
-        .iter()
-        .map(|r| ty_of(&r[0]).kind.shape().and_then(|s| s.0))
-        .sum();
+    let mut start = 0;
+    let mut height = Some(0);
+    for &n in widths {
+        let h = args
+            .get(start)
+            .and_then(|t| t.kind.shape().and_then(|s| s.0));
+        height = height.zip(h).map(|(a, b)| a + b);
+        start += n;
+    }
     Ty::new(Kind::Matrix(height, width), frames)
 }
 

@@ -125,7 +125,12 @@ impl Interp<'_> {
             }
             trows.push(tr);
         }
-        let ty = apply::block_type(&trows, |t| &t.ty);
+        let widths: Vec<usize> = trows.iter().map(Vec::len).collect();
+        let op = Op::Block(&widths);
+        let tys: Vec<&Ty> = trows.iter().flatten().map(|t| &t.ty).collect();
+        let ty = op
+            .rule(&tys, Hints::default())
+            .map_err(|e| Diagnostic::error(ErrorKind::Type, span, e.message))?;
         if !self.running() {
             return Ok(Typed { ty, val: None });
         }
@@ -144,7 +149,7 @@ impl Interp<'_> {
                 apply::block_numeric(&vrows)
             }
         };
-        let val = Some(v.map_err(|m| Op::Block.failure(m, span))?);
+        let val = Some(v.map_err(|m| op.failure(m, span))?);
         Ok(Typed {
             ty: refine(ty, &val),
             val,
@@ -162,13 +167,16 @@ impl Interp<'_> {
                 format!("a {} cannot go inside [ ]", t.ty.kind),
             ));
         }
-        let ty = apply::bracket_type(&t.ty);
+        let op = Op::Block(&[1]);
+        let ty = op
+            .rule(&[&t.ty], Hints::default())
+            .map_err(|e| Diagnostic::error(ErrorKind::Type, span, e.message))?;
         if !self.running() {
             return Ok(Typed { ty, val: None });
         }
         let rows = [vec![t.val.unwrap_or_else(|| Value::scalar(f64::NAN))]];
         let v = apply::block(&rows).unwrap_or_else(|| apply::block_numeric(&rows));
-        let val = Some(v.map_err(|m| Op::Block.failure(m, span))?);
+        let val = Some(v.map_err(|m| op.failure(m, span))?);
         Ok(Typed {
             ty: refine(ty, &val),
             val,

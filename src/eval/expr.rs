@@ -369,42 +369,35 @@ impl Interp<'_> {
         if args.len() == 1 {
             typed = self.spread(b, typed);
         }
-        // The types move out of the operands; the values too when running
-        // (checking has none to keep).
-        let mut tys = Vec::with_capacity(typed.len());
-        let mut vals = Vec::with_capacity(if self.running() { typed.len() } else { 0 });
-        for t in typed {
-            tys.push(t.ty);
-            if let Some(v) = t.val {
-                vals.push(v);
-            } else if self.running() {
-                vals.push(Value::scalar(f64::NAN));
-            }
-        }
-        let ty = match b.check(&tys) {
+        // The call's rule (its table row's check, then one frame for a
+        // vector or Lie-algebra result, §6); refused, with the operands'
+        // frames dropped when the frame mode lets evaluation go on.
+        let op = Op::Call(b, name);
+        let tys: Vec<&Ty> = typed.iter().map(|t| &t.ty).collect();
+        let ty = match op.rule(&tys, Hints::default()) {
             Ok(ty) => ty,
             Err(err) => {
                 let at = err.arg.and_then(|i| args.get(i)).map_or(span, |a| a.span);
-                let d = Diagnostic::error(err.kind, at, err.message)
-                    .with_help(format!("signature: {}", b.signature));
-                let frame = err.kind == ErrorKind::Frame;
-                apply::frame_refusal(self.frames, frame, d, &mut self.warnings)?;
-                let plain: Vec<Ty> = tys.iter().map(strip).collect();
-                b.check(&plain)
-                    .map_err(|e| Diagnostic::error(e.kind, at, e.message))?
-            }
-        };
-        // A vector or Lie-algebra result is in one frame (§6).
-        let ty = match rules::settle(&ty, b.name) {
-            Ok(ty) => ty,
-            Err(err) => {
-                let at = args.first().map_or(span, |a| a.span);
-                self.rule_failure(err, span, Some(at), None, None)?;
-                strip(&ty)
+                self.rule_failure(err, at, args.first().map(|a| a.span), None, None)?;
+                let plain: Vec<Ty> = tys.iter().map(|t| strip(t)).collect();
+                let plain: Vec<&Ty> = plain.iter().collect();
+                op.rule(&plain, Hints::default()).map_err(|e| {
+                    Diagnostic::error(e.kind.unwrap_or(ErrorKind::Type), at, e.message)
+                })?
             }
         };
         if !self.running() {
             return Ok(Typed { ty, val: None });
+        }
+        // The values move out of the operands (the types too, for a picture).
+        let pictures = b.area == builtins::Area::Pictures;
+        let mut tys = Vec::new();
+        let mut vals = Vec::with_capacity(typed.len());
+        for t in typed {
+            if pictures {
+                tys.push(t.ty);
+            }
+            vals.push(t.val.unwrap_or_else(|| Value::scalar(f64::NAN)));
         }
         super::list::numbers_only(b, &vals, span)?;
         if vals
@@ -412,8 +405,8 @@ impl Interp<'_> {
             .any(|v| matches!(v, Value::Sym(_) | Value::Formula { .. }))
         {
             let refs: Vec<&Value> = vals.iter().collect();
-            if let Some(v) = Op::Call(b, name).exact_or_symbolic(&refs, &ty.kind) {
-                let val = Some(v.map_err(|m| Op::Call(b, name).failure(m, span))?);
+            if let Some(v) = op.exact_or_symbolic(&refs, &ty.kind) {
+                let val = Some(v.map_err(|m| op.failure(m, span))?);
                 return Ok(Typed {
                     ty: refine(ty, &val),
                     val,
@@ -425,7 +418,7 @@ impl Interp<'_> {
             _ => args.iter().map(|a| a.span).collect(),
         };
         // Only pictures read the arguments' types and source text.
-        let typed = if b.area == builtins::Area::Pictures {
+        let typed = if pictures {
             self.typed_args(tys, args)
         } else {
             Vec::new()
