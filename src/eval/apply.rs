@@ -81,7 +81,17 @@ impl<'a> Op<'a> {
     /// [`Builtin::check`] (a refusal says which argument, with the
     /// signature as help), then [`rules::settle`] (a vector or Lie-algebra
     /// result is in one frame); the inverse's [`rules::inverse`].
+    #[inline(always)]
     pub fn rule(self, args: &[&Ty], hints: Hints) -> Result<Ty, RuleError> {
+        match self {
+            Op::Block(widths) => Ok(block_type(widths, args)),
+            Op::Call(b, _) => call_rule(b, args),
+            _ => self.operator_rule(args, hints),
+        }
+    }
+
+    /// [`Op::rule`] of the operators (all but brackets and calls).
+    fn operator_rule(self, args: &[&Ty], hints: Hints) -> Result<Ty, RuleError> {
         match (self, args) {
             (Op::Neg, [t]) => rules::neg(t),
             (Op::Degrees, _) => Ok(Ty::scalar()),
@@ -96,17 +106,6 @@ impl<'a> Op<'a> {
             (Op::Index(sels), [t]) => index_type(t, sels),
             (Op::Vector, _) => Ok(Ty::plain(Kind::Vector(Some(args.len())))),
             (Op::Inverse, [t]) => rules::inverse(t),
-            (Op::Block(widths), _) => Ok(block_type(widths, args)),
-            (Op::Call(b, _), _) => {
-                let ty = b.check(args).map_err(|e| RuleError {
-                    kind: Some(e.kind),
-                    message: e.message,
-                    help: Some(format!("signature: {}", b.signature)),
-                    arg: e.arg,
-                    ..RuleError::default()
-                })?;
-                rules::settle(&ty, b.name)
-            }
             _ => Ok(Ty::plain(Kind::Unknown)),
         }
     }
@@ -155,18 +154,7 @@ impl<'a> Op<'a> {
                     .collect();
                 Ok(Value::vector(Kind::Vector(Some(xs.len())), &xs))
             }
-            (Op::Block(widths), _) => {
-                let mut rest = args;
-                let rows: Vec<Vec<Value>> = widths
-                    .iter()
-                    .map(|&n| {
-                        let (row, tail) = rest.split_at(n.min(rest.len()));
-                        rest = tail;
-                        row.iter().map(|v| (*v).clone()).collect()
-                    })
-                    .collect();
-                block_numeric(&rows)
-            }
+            (Op::Block(widths), _) => block_of_entries(widths, args),
             (Op::Call(b, _), _) => call_nowhere(b, args.iter().map(|v| (*v).clone()).collect()),
             _ => Err(OpError::Operands),
         }
@@ -324,6 +312,36 @@ pub fn block(rows: &[Vec<Value>]) -> Option<Result<Value, OpError>> {
         })
 }
 
+/// [`Op::Call`]'s rule: the table row's [`Builtin::check`] (a refusal
+/// names the argument, with the signature as help), then
+/// [`rules::settle`].
+fn call_rule(b: &Builtin, args: &[&Ty]) -> Result<Ty, RuleError> {
+    let ty = b.check(args).map_err(|e| RuleError {
+        kind: Some(e.kind),
+        message: e.message,
+        help: Some(format!("signature: {}", b.signature)),
+        arg: e.arg.and_then(|i| u16::try_from(i).ok()),
+        ..RuleError::default()
+    })?;
+    rules::settle(&ty, b.name)
+}
+
+/// [`Op::Block`] on numbers given its entries row by row: the rows, then
+/// [`ops::brackets`].
+#[inline(never)]
+fn block_of_entries(widths: &[usize], args: &[&Value]) -> Result<Value, OpError> {
+    let mut rest = args;
+    let rows: Vec<Vec<Value>> = widths
+        .iter()
+        .map(|&n| {
+            let (row, tail) = rest.split_at(n.min(rest.len()));
+            rest = tail;
+            row.iter().map(|v| (*v).clone()).collect()
+        })
+        .collect();
+    block_numeric(&rows)
+}
+
 /// `[ ... ]` on numbers: [`ops::brackets`].
 pub fn block_numeric(rows: &[Vec<Value>]) -> Result<Value, OpError> {
     ops::brackets(rows)
@@ -430,6 +448,7 @@ fn index_type(t: &Ty, sels: &[Sel]) -> Result<Ty, RuleError> {
 /// The rule of `[x]`, one entry in brackets: the book's bracket of a 3-
 /// or 6-vector is in so(3) or se(3) (3.30, 3.70), in the vector's frame;
 /// anything else is itself.
+#[inline]
 fn bracket_type(t: &Ty) -> Ty {
     match t.kind.vec_len() {
         Some(3) => Ty::new(Kind::So3, t.frames),
@@ -442,10 +461,16 @@ fn bracket_type(t: &Ty) -> Ty {
 /// `widths` entries in each: the book's bracket of one vector, a column
 /// vector of one row of numbers, else a block matrix whose frames are the
 /// one pair tag inside it (`[R_sb, p_sb; 0, 0, 0, 1]` is {s}←{b}).
+#[inline]
 fn block_type(widths: &[usize], args: &[&Ty]) -> Ty {
     if let [t] = args {
         return bracket_type(t);
     }
+    block_matrix_type(widths, args)
+}
+
+/// [`block_type`] of more than one entry.
+fn block_matrix_type(widths: &[usize], args: &[&Ty]) -> Ty {
     let all_scalar = args.iter().all(|t| t.kind == Kind::Scalar);
     if all_scalar && widths.len() == 1 {
         return Ty::plain(Kind::Vector(Some(args.len())));

@@ -377,7 +377,10 @@ impl Interp<'_> {
         let ty = match op.rule(&tys, Hints::default()) {
             Ok(ty) => ty,
             Err(err) => {
-                let at = err.arg.and_then(|i| args.get(i)).map_or(span, |a| a.span);
+                let at = err
+                    .arg
+                    .and_then(|i| args.get(usize::from(i)))
+                    .map_or(span, |a| a.span);
                 self.rule_failure(err, at, args.first().map(|a| a.span), None, None)?;
                 let plain: Vec<Ty> = tys.iter().map(|t| strip(t)).collect();
                 let plain: Vec<&Ty> = plain.iter().collect();

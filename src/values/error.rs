@@ -33,13 +33,14 @@ pub enum OpError {
     /// A sum of matrices of different shapes.
     #[error("cannot add a {}×{} and a {}×{}", .0.0, .0.1, .1.0, .1.1)]
     Add((usize, usize), (usize, usize)),
-    /// An operation that costs more than [`MAX_WORK`] multiply-adds; `what`
-    /// names it.
+    /// An operation that costs more than [`MAX_WORK`] multiply-adds (the
+    /// count, at most `u64::MAX`: a `u128` would make every result of an
+    /// operation larger to move); `what` names it.
     #[error(
         "too much work: {work:.1e} multiply-adds ({what}; at most {:.0e})",
         MAX_WORK
     )]
-    TooMuchWork { work: u128, what: String },
+    TooMuchWork { work: u64, what: String },
     /// A result of more than [`MAX_ELEMENTS`] entries (rows, columns).
     #[error(
         "a {rows}×{cols} result is too large (at most {} entries)",
@@ -91,7 +92,7 @@ pub enum OpError {
     InverseOfNonSquare(usize, usize),
     /// `x.name` where the value has no such part (§3.3.1: `T.R`, `T.p`).
     #[error("a {kind} has no member .{name}")]
-    NoMember { kind: Kind, name: String },
+    NoMember { kind: Kind, name: &'static str },
     /// A 1-based index outside `1..n`.
     #[error("index {index} is out of range 1..{n} (indices start at 1, as in the book)")]
     IndexOutOfRange { index: f64, n: usize },
@@ -180,7 +181,7 @@ mod tests {
         assert_eq!(
             OpError::NoMember {
                 kind: Kind::Vector(Some(3)),
-                name: "R".into()
+                name: "R"
             }
             .to_string(),
             format!("a {} has no member .R", Kind::Vector(Some(3)))

@@ -116,7 +116,10 @@ pub fn check_work(r: usize, k: usize, c: usize, times: u64) -> Result<(), OpErro
 /// [`MAX_WORK`]; `what` names the operation in the message.
 pub fn check_cost(work: u128, what: impl FnOnce() -> String) -> Result<(), OpError> {
     if work > MAX_WORK {
-        return Err(OpError::TooMuchWork { work, what: what() });
+        return Err(OpError::TooMuchWork {
+            work: u64::try_from(work).unwrap_or(u64::MAX),
+            what: what(),
+        });
     }
     Ok(())
 }
@@ -301,7 +304,7 @@ pub fn transpose(v: &Value) -> Value {
 }
 
 /// `x.member` (`.R .p .w .v .m .f`; `.T` is [`transpose`]).
-pub fn member(v: &Value, name: &str) -> Result<Value, OpError> {
+pub fn member(v: &Value, name: &'static str) -> Result<Value, OpError> {
     if name == "T" {
         return Ok(transpose(v));
     }
@@ -334,7 +337,7 @@ pub fn member(v: &Value, name: &str) -> Result<Value, OpError> {
         }
         _ => Err(OpError::NoMember {
             kind: k.clone(),
-            name: name.to_string(),
+            name,
         }),
     }
 }
