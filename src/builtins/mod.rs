@@ -190,7 +190,7 @@ pub enum Typing {
     /// (min, max) arguments.
     Custom {
         arity: (usize, usize),
-        rule: fn(&[&Ty]) -> Result<Ty, ArgError>,
+        rule: fn(&[Ty]) -> Result<Ty, ArgError>,
     },
 }
 
@@ -238,7 +238,7 @@ impl Builtin {
     }
 
     /// The static type of a call with arguments of types `args`.
-    pub fn check(&self, args: &[&Ty]) -> Result<Ty, ArgError> {
+    pub fn check(&self, args: &[Ty]) -> Result<Ty, ArgError> {
         let (lo, hi) = self.arity();
         if args.len() < lo || args.len() > hi {
             let want = if lo == hi {
@@ -285,7 +285,7 @@ impl Builtin {
 }
 
 /// The result frames of a builtin under `rule`.
-pub fn apply_frame_rule(rule: FrameRule, args: &[&Ty]) -> Result<Frames, ArgError> {
+pub fn apply_frame_rule(rule: FrameRule, args: &[Ty]) -> Result<Frames, ArgError> {
     let outer = |i: usize| match args[i].frames.outer() {
         Some(a) => Frames::One(*a),
         None => Frames::None,

@@ -29,7 +29,7 @@ mod tests {
                 panic!("{name} has no part names");
             };
             let arg = crate::check::ty::Ty::plain(crate::check::ty::Kind::Unknown);
-            let ty = b.check(&[&arg]).expect("typed");
+            let ty = b.check(&[arg]).expect("typed");
             match ty.kind {
                 crate::check::ty::Kind::Tuple(ks) => assert_eq!(ks.len(), parts.len(), "{name}"),
                 k => panic!("{name} returns {k:?}"),

@@ -34,7 +34,7 @@ fn drawable(k: &Kind) -> bool {
 }
 
 /// One outer frame for all arguments from index `from` on.
-fn common_frame(args: &[&Ty], from: usize) -> Result<Frames, ArgError> {
+fn common_frame(args: &[Ty], from: usize) -> Result<Frames, ArgError> {
     let mut outer: Option<(usize, String)> = None;
     for (i, t) in args.iter().enumerate().skip(from) {
         let Some(a) = t.frames.outer() else { continue };
@@ -58,7 +58,7 @@ fn common_frame(args: &[&Ty], from: usize) -> Result<Frames, ArgError> {
     Ok(outer.map_or(Frames::None, |(_, a)| Frames::one(&a)))
 }
 
-fn draw_rule(args: &[&Ty]) -> Result<Ty, ArgError> {
+fn draw_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     for (i, t) in args.iter().enumerate() {
         if !drawable(&t.kind) {
             return Err(ArgError::type_of(
@@ -155,7 +155,7 @@ fn angle_text(x: f64) -> String {
     crate::values::number::fmt_num(x.to_degrees(), 2)
 }
 
-fn view_rule(args: &[&Ty]) -> Result<Ty, ArgError> {
+fn view_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     let (first, frames) = match args.len() {
         3 => {
             if !matches!(args[0].kind, Kind::Picture | Kind::Unknown) {
@@ -208,7 +208,7 @@ fn eval_view(a: &mut Args) -> Result<Value, Diagnostic> {
     })))
 }
 
-fn save_rule(args: &[&Ty]) -> Result<Ty, ArgError> {
+fn save_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     if !matches!(args[0].kind, Kind::Picture | Kind::Unknown) {
         return Err(ArgError::type_of(
             0,
@@ -271,7 +271,7 @@ fn eval_save(a: &mut Args) -> Result<Value, Diagnostic> {
     Ok(Value::Picture(Rc::new(q)))
 }
 
-fn beside_rule(args: &[&Ty]) -> Result<Ty, ArgError> {
+fn beside_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     for (i, t) in args.iter().enumerate() {
         if !matches!(t.kind, Kind::Picture | Kind::Unknown) {
             return Err(ArgError::type_of(
@@ -306,7 +306,7 @@ fn vec_kind(k: &Kind) -> bool {
     matches!(k, Kind::Vector(None | Some(2) | Some(3)) | Kind::Unknown)
 }
 
-fn arrow_rule(args: &[&Ty]) -> Result<Ty, ArgError> {
+fn arrow_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     for (i, t) in args.iter().enumerate() {
         if !vec_kind(&t.kind) {
             return Err(ArgError::type_of(
@@ -342,7 +342,7 @@ fn eval_arrow(a: &mut Args) -> Result<Value, Diagnostic> {
     }))
 }
 
-fn point_rule(args: &[&Ty]) -> Result<Ty, ArgError> {
+fn point_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     if !vec_kind(&args[0].kind) {
         return Err(ArgError::type_of(
             0,

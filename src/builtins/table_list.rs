@@ -29,7 +29,7 @@ fn listish(k: &Kind) -> bool {
     matches!(k, Kind::List(_) | Kind::Tuple(_) | Kind::Unknown) || k.is_vector()
 }
 
-fn len_rule(args: &[&Ty]) -> Result<Ty, ArgError> {
+fn len_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     if !listish(&args[0].kind) {
         return Err(ArgError::type_of(
             0,
@@ -48,7 +48,7 @@ fn eval_len(a: &mut Args) -> Result<Value, Diagnostic> {
 
 /// `sum` of a list keeps its elements' kind and frames (a sum of twists in
 /// {s} is a twist in {s}); of a vector, a number.
-fn sum_rule(args: &[&Ty]) -> Result<Ty, ArgError> {
+fn sum_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     match &args[0].kind {
         Kind::List(k) => Ok(Ty::new((**k).clone(), args[0].frames)),
         Kind::Unknown => Ok(Ty::plain(Kind::Unknown)),
@@ -75,7 +75,7 @@ fn eval_sum(a: &mut Args) -> Result<Value, Diagnostic> {
 }
 
 /// `min`/`max` of numbers.
-fn extreme_rule(args: &[&Ty]) -> Result<Ty, ArgError> {
+fn extreme_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     match &args[0].kind {
         Kind::List(k) if matches!(**k, Kind::Scalar | Kind::Unknown) => Ok(Ty::scalar()),
         Kind::Unknown => Ok(Ty::scalar()),

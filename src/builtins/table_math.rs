@@ -17,7 +17,7 @@ use crate::values::ops;
 use crate::values::value::Value;
 
 /// `exp`: so(3) → SO(3), se(3) → SE(3), so(2), se(2), any square matrix, a number.
-fn exp_rule(args: &[&Ty]) -> Result<Ty, ArgError> {
+fn exp_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     let t = &args[0];
     let kind = match &t.kind {
         Kind::Scalar => Kind::Scalar,
@@ -130,7 +130,7 @@ fn is_se3(m: &DMatrix<f64>) -> bool {
 }
 
 /// `log`: SO(3) → so(3) tagged {a} for R_ab, SE(3) → se(3), SO(2), SE(2), a number.
-fn log_rule(args: &[&Ty]) -> Result<Ty, ArgError> {
+fn log_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     let t = &args[0];
     let kind = match &t.kind {
         Kind::Scalar => Kind::Scalar,
@@ -193,19 +193,16 @@ fn eval_log(a: &mut Args) -> Result<Value, Diagnostic> {
     }
 }
 
-fn inv_rule(args: &[&Ty]) -> Result<Ty, ArgError> {
-    crate::check::rules::inverse(args[0]).map_err(|e| ArgError::type_of(0, e.message))
+fn inv_rule(args: &[Ty]) -> Result<Ty, ArgError> {
+    crate::check::rules::inverse(&args[0]).map_err(|e| ArgError::type_of(0, e.message))
 }
 
-fn transpose_rule(args: &[&Ty]) -> Result<Ty, ArgError> {
-    crate::check::rules::transpose(args[0]).map_err(|e| ArgError::type_of(0, e.message))
+fn transpose_rule(args: &[Ty]) -> Result<Ty, ArgError> {
+    crate::check::rules::transpose(&args[0]).map_err(|e| ArgError::type_of(0, e.message))
 }
 
-fn pair_rule(
-    what: &'static str,
-    ret: fn(&[&Ty]) -> Kind,
-) -> impl Fn(&[&Ty]) -> Result<Ty, ArgError> {
-    move |args: &[&Ty]| {
+fn pair_rule(what: &'static str, ret: fn(&[Ty]) -> Kind) -> impl Fn(&[Ty]) -> Result<Ty, ArgError> {
+    move |args: &[Ty]| {
         for (i, t) in args.iter().enumerate() {
             if !Param::AnyVec.accepts(&t.kind) {
                 return Err(ArgError::type_of(
@@ -215,7 +212,7 @@ fn pair_rule(
             }
         }
         let frames =
-            crate::check::rules::vector_pair(what, args[0], args[1]).map_err(|e| ArgError {
+            crate::check::rules::vector_pair(what, &args[0], &args[1]).map_err(|e| ArgError {
                 arg: Some(1),
                 kind: ErrorKind::Frame,
                 message: format!("{}: {} and {}", e.message, e.lhs, e.rhs),
@@ -230,18 +227,18 @@ fn pair_rule(
     }
 }
 
-fn cross_rule(args: &[&Ty]) -> Result<Ty, ArgError> {
+fn cross_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     pair_rule("cross", |a| match &a[0].kind {
         Kind::Vector(_) => Kind::Vector(Some(3)),
         _ => Kind::Vector(Some(3)),
     })(args)
 }
 
-fn dot_rule(args: &[&Ty]) -> Result<Ty, ArgError> {
+fn dot_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     pair_rule("dot", |_| Kind::Scalar)(args)
 }
 
-fn vee_rule(args: &[&Ty]) -> Result<Ty, ArgError> {
+fn vee_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     let kind = match args[0].kind.shape() {
         Some((Some(4), Some(4))) => Kind::Twist,
         Some((Some(3), Some(3))) => Kind::Vector(Some(3)),
@@ -256,11 +253,11 @@ fn vee_rule(args: &[&Ty]) -> Result<Ty, ArgError> {
     Ok(Ty::new(kind, args[0].frames))
 }
 
-fn untag_rule(args: &[&Ty]) -> Result<Ty, ArgError> {
+fn untag_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     Ok(Ty::plain(args[0].kind.clone()))
 }
 
-fn matrix_ctor_rule(args: &[&Ty]) -> Result<Ty, ArgError> {
+fn matrix_ctor_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     for (i, t) in args.iter().enumerate() {
         if !t.kind.maybe_scalar() {
             return Err(ArgError::type_of(

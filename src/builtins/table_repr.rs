@@ -36,7 +36,7 @@ fn angles(a: &mut Args, f: fn(&Mat3) -> repr::Angles) -> Result<Value, Diagnosti
     Ok(Value::num(v3(), &out.angles))
 }
 
-fn se2_rule(args: &[&Ty]) -> Result<Ty, ArgError> {
+fn se2_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     match args.len() {
         1 => {
             if !Param::Square.accepts(&args[0].kind) {
@@ -61,7 +61,7 @@ fn se2_rule(args: &[&Ty]) -> Result<Ty, ArgError> {
     }
 }
 
-fn dof_rule(args: &[&Ty]) -> Result<Ty, ArgError> {
+fn dof_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     if args[0].kind != Kind::Mechanism && args[0].kind != Kind::Unknown {
         return Err(ArgError::type_of(
             0,

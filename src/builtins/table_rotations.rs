@@ -46,8 +46,8 @@ fn eval_rot(a: &mut Args) -> Result<Value, Diagnostic> {
 
 /// Twist/velocity from a configuration and its derivative, frames of T_sb:
 /// body twist in {b}, space twist in {s}.
-pub(super) fn velocity_rule(space: bool, kind: Kind) -> impl Fn(&[&Ty]) -> Result<Ty, ArgError> {
-    move |args: &[&Ty]| {
+pub(super) fn velocity_rule(space: bool, kind: Kind) -> impl Fn(&[Ty]) -> Result<Ty, ArgError> {
+    move |args: &[Ty]| {
         let f = match &args[0].frames {
             Frames::Pair(s, b) => Frames::One(if space { *s } else { *b }),
             _ => Frames::None,
@@ -56,10 +56,10 @@ pub(super) fn velocity_rule(space: bool, kind: Kind) -> impl Fn(&[&Ty]) -> Resul
     }
 }
 
-fn space_w_rule(a: &[&Ty]) -> Result<Ty, ArgError> {
+fn space_w_rule(a: &[Ty]) -> Result<Ty, ArgError> {
     velocity_rule(true, Kind::Vector(Some(3)))(a)
 }
-fn body_w_rule(a: &[&Ty]) -> Result<Ty, ArgError> {
+fn body_w_rule(a: &[Ty]) -> Result<Ty, ArgError> {
     velocity_rule(false, Kind::Vector(Some(3)))(a)
 }
 

@@ -9,7 +9,7 @@ use crate::lie::{LieGroup, SE3, Vec3, se3};
 use crate::values::value::Value;
 
 /// (q, ŝ, h) of a screw: frames (Same, Same, none).
-fn screw_params_rule(args: &[&Ty]) -> Result<Ty, ArgError> {
+fn screw_params_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     if !Param::Vec(6).accepts(&args[0].kind) && !Param::Expc6.accepts(&args[0].kind) {
         return Err(ArgError::type_of(
             0,
@@ -25,7 +25,7 @@ fn screw_params_rule(args: &[&Ty]) -> Result<Ty, ArgError> {
     ))
 }
 
-fn displacement_rule(args: &[&Ty]) -> Result<Ty, ArgError> {
+fn displacement_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     let planar = args
         .iter()
         .all(|t| matches!(t.kind, Kind::SE2 | Kind::Matrix(Some(3), Some(3))));
@@ -100,7 +100,7 @@ fn eval_displacement(a: &mut Args) -> Result<Value, Diagnostic> {
 }
 
 /// RpToTrans(R_ab, p_ab): {a}←{b}; p must be in {a}.
-fn rp_rule(args: &[&Ty]) -> Result<Ty, ArgError> {
+fn rp_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     if !Param::Rot.accepts(&args[0].kind) {
         return Err(ArgError::type_of(
             0,
@@ -127,7 +127,7 @@ fn rp_rule(args: &[&Ty]) -> Result<Ty, ArgError> {
     Ok(Ty::new(Kind::SE3, frames))
 }
 
-fn trans_to_rp_rule(args: &[&Ty]) -> Result<Ty, ArgError> {
+fn trans_to_rp_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     if !Param::Trans.accepts(&args[0].kind) {
         return Err(ArgError::type_of(
             0,
@@ -137,11 +137,11 @@ fn trans_to_rp_rule(args: &[&Ty]) -> Result<Ty, ArgError> {
     Ok(Ty::new(Kind::Tuple(vec![Kind::SO3, v3()]), args[0].frames))
 }
 
-fn space_twist_rule(a: &[&Ty]) -> Result<Ty, ArgError> {
+fn space_twist_rule(a: &[Ty]) -> Result<Ty, ArgError> {
     velocity_rule(true, Kind::Twist)(a)
 }
 
-fn body_twist_rule(a: &[&Ty]) -> Result<Ty, ArgError> {
+fn body_twist_rule(a: &[Ty]) -> Result<Ty, ArgError> {
     velocity_rule(false, Kind::Twist)(a)
 }
 

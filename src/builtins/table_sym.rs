@@ -296,7 +296,7 @@ fn diff(v: &Value, x: &Mat, by: &Mat, kind: &Kind) -> Result<Value, String> {
 }
 
 /// `diff`: the kind of a derivative (a rotation's is a plain matrix).
-fn diff_rule(args: &[&Ty]) -> Result<Ty, ArgError> {
+fn diff_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     if args[1].kind != Kind::Scalar && args[1].kind != Kind::Unknown {
         return Err(ArgError::type_of(
             1,
@@ -319,7 +319,7 @@ fn diff_rule(args: &[&Ty]) -> Result<Ty, ArgError> {
     })
 }
 
-fn same_rule(args: &[&Ty]) -> Result<Ty, ArgError> {
+fn same_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     Ok(args[0].clone())
 }
 

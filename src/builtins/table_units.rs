@@ -14,7 +14,7 @@ use crate::values::value::Value;
 
 /// A number, vector or matrix in, the same shape out (a group element
 /// scaled is no longer one); frames are kept.
-fn entrywise_rule(args: &[&Ty]) -> Result<Ty, ArgError> {
+fn entrywise_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     let k = &args[0].kind;
     if k.shape().is_none() {
         return Err(ArgError::type_of(
@@ -43,7 +43,7 @@ fn scale(a: &mut Args, factor: f64) -> Result<Value, Diagnostic> {
 }
 
 /// round(x, n): numbers, vectors, matrices; n a whole number of decimals.
-fn round_rule(args: &[&Ty]) -> Result<Ty, ArgError> {
+fn round_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     let t = entrywise_rule(&args[..1])?;
     if args.len() == 2 && !args[1].kind.maybe_scalar() {
         return Err(ArgError::type_of(1, "the number of decimals is a number"));

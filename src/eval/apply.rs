@@ -56,6 +56,36 @@ pub enum Op<'a> {
     Call(&'static Builtin, &'a str),
 }
 
+/// An operand of [`Op::rule`]: a type, or a reference to one. A builtin's
+/// rule reads a slice of types ([`Builtin::check`]), the operators' rules
+/// references; each gets its own without a copy when it is what it has.
+pub trait Operand: std::borrow::Borrow<Ty> + Sized {
+    /// `f` of the operands as types (copied only when they are references).
+    fn with_tys<R>(args: &[Self], f: impl FnOnce(&[Ty]) -> R) -> R;
+    /// `f` of the operands as references (collected only when they are types).
+    fn with_refs<R>(args: &[Self], f: impl FnOnce(&[&Ty]) -> R) -> R;
+}
+
+impl Operand for Ty {
+    #[inline(always)]
+    fn with_tys<R>(args: &[Ty], f: impl FnOnce(&[Ty]) -> R) -> R {
+        f(args)
+    }
+    fn with_refs<R>(args: &[Ty], f: impl FnOnce(&[&Ty]) -> R) -> R {
+        f(&args.iter().collect::<Vec<_>>())
+    }
+}
+
+impl Operand for &Ty {
+    fn with_tys<R>(args: &[&Ty], f: impl FnOnce(&[Ty]) -> R) -> R {
+        f(&args.iter().map(|t| (*t).clone()).collect::<Vec<_>>())
+    }
+    #[inline(always)]
+    fn with_refs<R>(args: &[&Ty], f: impl FnOnce(&[&Ty]) -> R) -> R {
+        f(args)
+    }
+}
+
 /// What a rule may need besides the operands' types: the operands as
 /// written (for help text) and a literal exponent (`X^-1`).
 #[derive(Debug, Clone, Copy, Default)]
@@ -81,12 +111,17 @@ impl<'a> Op<'a> {
     /// [`Builtin::check`] (a refusal says which argument, with the
     /// signature as help), then [`rules::settle`] (a vector or Lie-algebra
     /// result is in one frame); the inverse's [`rules::inverse`].
+    /// The operands are types or references to them ([`Operand`]): a
+    /// builtin's arguments are a slice of types, an operator's references.
     #[inline(always)]
-    pub fn rule(self, args: &[&Ty], hints: Hints) -> Result<Ty, RuleError> {
+    pub fn rule<T: Operand>(self, args: &[T], hints: Hints) -> Result<Ty, RuleError> {
         match self {
-            Op::Block(widths) => Ok(block_type(widths, args)),
-            Op::Call(b, _) => call_rule(b, args),
-            _ => self.operator_rule(args, hints),
+            Op::Block(widths) => Ok(match args {
+                [t] => bracket_type(std::borrow::Borrow::borrow(t)),
+                _ => T::with_refs(args, |args| block_type(widths, args)),
+            }),
+            Op::Call(b, _) => T::with_tys(args, |args| call_rule(b, args)),
+            _ => T::with_refs(args, |args| self.operator_rule(args, hints)),
         }
     }
 
@@ -315,7 +350,8 @@ pub fn block(rows: &[Vec<Value>]) -> Option<Result<Value, OpError>> {
 /// [`Op::Call`]'s rule: the table row's [`Builtin::check`] (a refusal
 /// names the argument, with the signature as help), then
 /// [`rules::settle`].
-fn call_rule(b: &Builtin, args: &[&Ty]) -> Result<Ty, RuleError> {
+#[inline]
+fn call_rule(b: &Builtin, args: &[Ty]) -> Result<Ty, RuleError> {
     let ty = b.check(args).map_err(|e| RuleError {
         kind: Some(e.kind),
         message: e.message,
@@ -448,7 +484,7 @@ fn index_type(t: &Ty, sels: &[Sel]) -> Result<Ty, RuleError> {
 /// The rule of `[x]`, one entry in brackets: the book's bracket of a 3-
 /// or 6-vector is in so(3) or se(3) (3.30, 3.70), in the vector's frame;
 /// anything else is itself.
-#[inline]
+#[inline(always)]
 fn bracket_type(t: &Ty) -> Ty {
     match t.kind.vec_len() {
         Some(3) => Ty::new(Kind::So3, t.frames),
@@ -461,16 +497,10 @@ fn bracket_type(t: &Ty) -> Ty {
 /// `widths` entries in each: the book's bracket of one vector, a column
 /// vector of one row of numbers, else a block matrix whose frames are the
 /// one pair tag inside it (`[R_sb, p_sb; 0, 0, 0, 1]` is {s}←{b}).
-#[inline]
 fn block_type(widths: &[usize], args: &[&Ty]) -> Ty {
     if let [t] = args {
         return bracket_type(t);
     }
-    block_matrix_type(widths, args)
-}
-
-/// [`block_type`] of more than one entry.
-fn block_matrix_type(widths: &[usize], args: &[&Ty]) -> Ty {
     let all_scalar = args.iter().all(|t| t.kind == Kind::Scalar);
     if all_scalar && widths.len() == 1 {
         return Ty::plain(Kind::Vector(Some(args.len())));

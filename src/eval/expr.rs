@@ -369,11 +369,22 @@ impl Interp<'_> {
         if args.len() == 1 {
             typed = self.spread(b, typed);
         }
+        // The types move out of the operands; the values too when running
+        // (checking has none to keep).
+        let mut tys = Vec::with_capacity(typed.len());
+        let mut vals = Vec::with_capacity(if self.running() { typed.len() } else { 0 });
+        for t in typed {
+            tys.push(t.ty);
+            if let Some(v) = t.val {
+                vals.push(v);
+            } else if self.running() {
+                vals.push(Value::scalar(f64::NAN));
+            }
+        }
         // The call's rule (its table row's check, then one frame for a
         // vector or Lie-algebra result, §6); refused, with the operands'
         // frames dropped when the frame mode lets evaluation go on.
         let op = Op::Call(b, name);
-        let tys: Vec<&Ty> = typed.iter().map(|t| &t.ty).collect();
         let ty = match op.rule(&tys, Hints::default()) {
             Ok(ty) => ty,
             Err(err) => {
@@ -382,8 +393,7 @@ impl Interp<'_> {
                     .and_then(|i| args.get(usize::from(i)))
                     .map_or(span, |a| a.span);
                 self.rule_failure(err, at, args.first().map(|a| a.span), None, None)?;
-                let plain: Vec<Ty> = tys.iter().map(|t| strip(t)).collect();
-                let plain: Vec<&Ty> = plain.iter().collect();
+                let plain: Vec<Ty> = tys.iter().map(strip).collect();
                 op.rule(&plain, Hints::default()).map_err(|e| {
                     Diagnostic::error(e.kind.unwrap_or(ErrorKind::Type), at, e.message)
                 })?
@@ -391,16 +401,6 @@ impl Interp<'_> {
         };
         if !self.running() {
             return Ok(Typed { ty, val: None });
-        }
-        // The values move out of the operands (the types too, for a picture).
-        let pictures = b.area == builtins::Area::Pictures;
-        let mut tys = Vec::new();
-        let mut vals = Vec::with_capacity(typed.len());
-        for t in typed {
-            if pictures {
-                tys.push(t.ty);
-            }
-            vals.push(t.val.unwrap_or_else(|| Value::scalar(f64::NAN)));
         }
         super::list::numbers_only(b, &vals, span)?;
         if vals
@@ -421,7 +421,7 @@ impl Interp<'_> {
             _ => args.iter().map(|a| a.span).collect(),
         };
         // Only pictures read the arguments' types and source text.
-        let typed = if pictures {
+        let typed = if b.area == builtins::Area::Pictures {
             self.typed_args(tys, args)
         } else {
             Vec::new()

@@ -256,8 +256,11 @@ impl Interp<'_> {
             return typed;
         };
         let parts = parts(one);
-        let tys: Vec<&Ty> = parts.iter().map(|t| &t.ty).collect();
-        if parts.len() < 2 || b.check(&[&one.ty]).is_ok() || b.check(&tys).is_err() {
+        let tys: Vec<Ty> = parts.iter().map(|t| t.ty.clone()).collect();
+        if parts.len() < 2
+            || b.check(std::slice::from_ref(&one.ty)).is_ok()
+            || b.check(&tys).is_err()
+        {
             return typed;
         }
         parts
