@@ -178,7 +178,7 @@ impl SO3 {
         so3::is_half_turn(&self.0)
     }
     /// The spatial and body angular velocities (ω_s, ω_b) of R moving
-    /// at Ṙ: [ω_s] = Ṙ Rᵀ (3.37), [ω_b] = Rᵀ Ṙ (3.38).
+    /// at Ṙ: \[ω_s\] = Ṙ Rᵀ (3.37), \[ω_b\] = Rᵀ Ṙ (3.38).
     pub fn angular_velocities(&self, rdot: &Mat3) -> (Vec3, Vec3) {
         so3::angular_velocities(&self.0, rdot)
     }
@@ -199,7 +199,7 @@ impl SE3 {
         (SO3(r), p)
     }
     /// The spatial and body twists (V_s, V_b) of T moving at Ṫ:
-    /// [V_s] = Ṫ T⁻¹, [V_b] = T⁻¹ Ṫ (Proposition 3.15, §3.3.2).
+    /// \[V_s\] = Ṫ T⁻¹, \[V_b\] = T⁻¹ Ṫ (Proposition 3.15, §3.3.2).
     pub fn twists(&self, tdot: &Mat4) -> (Vec6, Vec6) {
         se3::twists_from_derivative(&self.0, tdot)
     }
