@@ -8,7 +8,7 @@ use crate::values::num::Num;
 
 use crate::check::ty::Kind;
 use crate::diagnostics::{Diagnostic, ErrorKind};
-use crate::lie::{Mat2, Mat3, Mat4, Vec3, Vec4, Vec6, so3};
+use crate::lie::{LieGroup, Mat2, Mat3, Mat4, SE2, SE3, SO2, SO3, Vec3, Vec4, Vec6, so3};
 use crate::mech::Mechanism;
 use crate::syntax::ast::Span;
 use crate::values::convert::{Group, Membership, membership};
@@ -193,30 +193,30 @@ impl Args<'_> {
     }
 
     /// Argument `i` as a rotation R ∈ SO(3) (§3.2.1), read per `read_group` (LANGUAGE.md §5).
-    pub fn so3(&mut self, i: usize) -> Result<Mat3, Diagnostic> {
-        Ok(match self.group(i, Group::SO3)? {
+    pub fn so3(&mut self, i: usize) -> Result<SO3, Diagnostic> {
+        Ok(SO3::assume(match self.group(i, Group::SO3)? {
             Num::M3(m) => m,
             m => Mat3::from_column_slice(m.as_slice()),
-        })
+        }))
     }
     /// Argument `i` as a transform T ∈ SE(3) (§3.3.1), read per `read_group` (LANGUAGE.md §5).
-    pub fn se3(&mut self, i: usize) -> Result<Mat4, Diagnostic> {
-        Ok(match self.group(i, Group::SE3)? {
+    pub fn se3(&mut self, i: usize) -> Result<SE3, Diagnostic> {
+        Ok(SE3::assume(match self.group(i, Group::SE3)? {
             Num::M4(m) => m,
             m => Mat4::from_column_slice(m.as_slice()),
-        })
+        }))
     }
     /// Argument `i` as a planar rotation ∈ SO(2), read per `read_group` (LANGUAGE.md §5).
-    pub fn so2(&mut self, i: usize) -> Result<Mat2, Diagnostic> {
-        Ok(Mat2::from_column_slice(
+    pub fn so2(&mut self, i: usize) -> Result<SO2, Diagnostic> {
+        Ok(SO2::assume(Mat2::from_column_slice(
             self.group(i, Group::SO2)?.as_slice(),
-        ))
+        )))
     }
     /// Argument `i` as a planar transform ∈ SE(2), read per `read_group` (LANGUAGE.md §5).
-    pub fn se2(&mut self, i: usize) -> Result<Mat3, Diagnostic> {
-        Ok(Mat3::from_column_slice(
+    pub fn se2(&mut self, i: usize) -> Result<SE2, Diagnostic> {
+        Ok(SE2::assume(Mat3::from_column_slice(
             self.group(i, Group::SE2)?.as_slice(),
-        ))
+        )))
     }
 
     /// Exponential coordinates ω̂θ: a 3-vector, or an so(3) matrix (vee'd).

@@ -5,7 +5,7 @@
 use super::Args;
 use crate::check::ty::Kind;
 use crate::diagnostics::{Diagnostic, ErrorKind};
-use crate::lie::{Mat3, so3};
+use crate::lie::{LieGroup, Mat3, SO3};
 use crate::values::value::Value;
 
 /// Notes on the call `a` (its arguments still in place) that returned `v`.
@@ -30,7 +30,7 @@ fn half_turn(a: &Args, v: &Value) -> Option<Diagnostic> {
         return None;
     }
     let r = Mat3::from_fn(|i, j| m[(i, j)]);
-    if !so3::is_half_turn(&r) {
+    if !SO3::assume(r).is_half_turn() {
         return None;
     }
     let eq = if 1.0 + r[(2, 2)] >= 1e-6 {

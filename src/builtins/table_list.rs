@@ -68,7 +68,8 @@ fn eval_sum(a: &mut Args) -> Result<Value, Diagnostic> {
     let kind = first.kind();
     let mut acc = first.clone();
     for v in items.iter().skip(1) {
-        acc = ops::add(&acc, v, false, &kind).map_err(|m| a.error(0, ErrorKind::Type, m))?;
+        acc = ops::add(&acc, v, false, &kind)
+            .map_err(|m| a.error(0, ErrorKind::Type, m.to_string()))?;
     }
     Ok(acc)
 }

@@ -8,7 +8,9 @@ use super::table_scalar::scalar;
 use super::{Area, ArgError, Args, Builtin, FrameRule, Param, Typing};
 use crate::check::ty::{Frames, Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
-use crate::lie::{self, Mat3, Mat4, Vec3, matexp, se2, se3, so2, so3};
+use crate::lie::{
+    self, LieGroup, Mat3, Mat4, SE2, SE3, SO2, SO3, Vec3, matexp, se2, se3, so2, so3,
+};
 use crate::values::convert::{self, Group};
 use crate::values::num::Num;
 use crate::values::ops;
@@ -66,7 +68,7 @@ fn eval_exp(a: &mut Args) -> Result<Value, Diagnostic> {
     if let Some(f) = m.as_m4()
         && is_se3_fixed(f)
     {
-        return Ok(Value::of(Kind::SE3, se3::exp(&se3::vee(f))));
+        return Ok(SE3::exp(&se3::vee(f)).into());
     }
     let m = m.to_dmatrix().into_owned();
     let kind = a.value(0).kind();
@@ -75,18 +77,16 @@ fn eval_exp(a: &mut Args) -> Result<Value, Diagnostic> {
     match (kind, m.shape()) {
         (Kind::So3, _) | (_, (3, 3)) if skew3(&m) => {
             let w = so3::vee(&Mat3::from_iterator(m.iter().copied()));
-            Ok(Value::num(Kind::SO3, &so3::exp(&w)))
+            Ok(SO3::exp(&w).into())
         }
         (_, (4, 4)) if is_se3(&m) => {
             let v = se3::vee(&Mat4::from_iterator(m.iter().copied()));
-            Ok(Value::num(Kind::SE3, &se3::exp(&v)))
+            Ok(SE3::exp(&v).into())
         }
-        (Kind::So2, _) | (_, (2, 2)) if skew3(&m) => {
-            Ok(Value::num(Kind::SO2, &so2::exp(m[(1, 0)])))
-        }
+        (Kind::So2, _) | (_, (2, 2)) if skew3(&m) => Ok(SO2::exp(&m[(1, 0)]).into()),
         (Kind::Se2, _) => {
             let v = se2::vee(&Mat3::from_iterator(m.iter().copied()));
-            Ok(Value::num(Kind::SE2, &se2::exp(&v)))
+            Ok(SE2::exp(&v).into())
         }
         (_, (r, c)) if r == c => {
             if r > ops::MAX_DIM {
@@ -96,7 +96,7 @@ fn eval_exp(a: &mut Args) -> Result<Value, Diagnostic> {
             ops::check_cost(ops::cube(r) * u128::from(products), || {
                 format!("exp of a {r}×{r} matrix: about {products} products of its size")
             })
-            .map_err(|e| a.domain(e))?;
+            .map_err(|e| a.domain(e.to_string()))?;
             // The input is finite (checked above): None means overflow.
             let Some(e) = matexp::try_expm(&m) else {
                 return Err(a.error(
@@ -175,20 +175,20 @@ fn eval_log(a: &mut Args) -> Result<Value, Diagnostic> {
     let kind = a.value(0).kind();
     let shape = a.mat(0)?.shape();
     match (kind, shape) {
-        (Kind::SE2, _) => Ok(Value::num(Kind::Se2, &se2::hat(&se2::log(&a.se2(0)?)))),
+        (Kind::SE2, _) => Ok(Value::of(Kind::Se2, se2::hat(&a.se2(0)?.log()))),
         (_, (3, 3)) => {
             // Read as SO(3) if it is (or nearly is) one, else as SE(2) (§5).
             let m = a.mat(0)?.clone();
             let d3 = convert::distance(&m, Group::SO3).unwrap_or(f64::INFINITY);
             let d2 = convert::distance(&m, Group::SE2).unwrap_or(f64::INFINITY);
             if d2 < d3 && d2 <= convert::PROJECT_TOL {
-                Ok(Value::num(Kind::Se2, &se2::hat(&se2::log(&a.se2(0)?))))
+                Ok(Value::of(Kind::Se2, se2::hat(&a.se2(0)?.log())))
             } else {
-                Ok(Value::num(Kind::So3, &so3::hat(&so3::log(&a.so3(0)?))))
+                Ok(Value::of(Kind::So3, so3::hat(&a.so3(0)?.log())))
             }
         }
-        (_, (4, 4)) => Ok(Value::num(Kind::Se3, &se3::hat(&se3::log(&a.se3(0)?)))),
-        (_, (2, 2)) => Ok(Value::num(Kind::So2, &so2::hat(so2::log(&a.so2(0)?)))),
+        (_, (4, 4)) => Ok(Value::of(Kind::Se3, se3::hat(&a.se3(0)?.log()))),
+        (_, (2, 2)) => Ok(Value::num(Kind::So2, &so2::hat(a.so2(0)?.log()))),
         _ => Err(a.error(0, ErrorKind::Type, "log takes SO(3), SE(3), SO(2) or SE(2)")),
     }
 }
@@ -343,7 +343,9 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 arity: (1, 1),
                 rule: inv_rule,
             },
-            eval: |a| ops::inverse(a.value(0)).map_err(|e| a.error(0, ErrorKind::Domain, e)),
+            eval: |a| {
+                ops::inverse(a.value(0)).map_err(|e| a.error(0, ErrorKind::Domain, e.to_string()))
+            },
         },
         Builtin {
             name: "transpose",
@@ -379,7 +381,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ops::check_cost(ops::cube(n) / 3, || {
                     format!("the determinant of a {n}×{n} matrix")
                 })
-                .map_err(|e| a.domain(e))?;
+                .map_err(|e| a.domain(e.to_string()))?;
                 Ok(Value::scalar(m.to_dmatrix().determinant()))
             },
         },

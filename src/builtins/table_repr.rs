@@ -5,7 +5,7 @@
 use super::{Area, ArgError, Args, Builtin, FrameRule, Param, Typing};
 use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
-use crate::lie::{Mat3, Mat4, Vec3, project, repr, se2};
+use crate::lie::{LieGroup, Mat3, Mat4, SE2, SE3, SO3, Vec3, project, repr, se2};
 use crate::values::convert::{self, Group};
 use crate::values::value::Value;
 
@@ -28,7 +28,7 @@ fn scalar() -> Kind {
 /// Angles from a rotation; a gimbal-lock note becomes a warning.
 fn angles(a: &mut Args, f: fn(&Mat3) -> repr::Angles) -> Result<Value, Diagnostic> {
     let r = a.so3(0)?;
-    let out = f(&r);
+    let out = f(r.matrix());
     if let Some(note) = out.note {
         a.warnings
             .push(Diagnostic::warning(ErrorKind::Domain, a.call_span, note));
@@ -222,7 +222,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: v4,
                 frames: FrameRule::None,
             },
-            eval: |a| Ok(Value::num(v4(), &repr::quat(&a.so3(0)?))),
+            eval: |a| Ok(Value::num(v4(), &repr::quat(a.so3(0)?.matrix()))),
         },
         Builtin {
             name: "rot_quat",
@@ -276,7 +276,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
             },
             eval: |a| {
                 let r = a.so3(0)?;
-                repr::cayley(&r)
+                repr::cayley(r.matrix())
                     .map(|v| Value::num(v3(), &v))
                     .map_err(|e| a.error(0, ErrorKind::Domain, e))
             },
@@ -310,11 +310,8 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 rule: se2_rule,
             },
             eval: |a| match a.len() {
-                1 => Ok(Value::num(Kind::SE2, &a.se2(0)?)),
-                3 => Ok(Value::num(
-                    Kind::SE2,
-                    &se2::from_theta_xy(a.scalar(0)?, a.scalar(1)?, a.scalar(2)?),
-                )),
+                1 => Ok(a.se2(0)?.into()),
+                3 => Ok(SE2::from_angle(a.scalar(0)?, a.scalar(1)?, a.scalar(2)?).into()),
                 _ => Err(a.domain("SE2 takes one matrix or (theta, x, y)")),
             },
         },
@@ -416,7 +413,8 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 let m = a.mat(0)?;
                 Ok(Value::Bool(
                     m.shape() == (3, 3)
-                        && project::test_if_so3(&Mat3::from_iterator(m.iter().copied())),
+                        && SO3::distance(&Mat3::from_iterator(m.iter().copied()))
+                            < project::TEST_TOL,
                 ))
             },
         },
@@ -437,7 +435,8 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 let m = a.mat(0)?;
                 Ok(Value::Bool(
                     m.shape() == (4, 4)
-                        && project::test_if_se3(&Mat4::from_iterator(m.iter().copied())),
+                        && SE3::distance(&Mat4::from_iterator(m.iter().copied()))
+                            < project::TEST_TOL,
                 ))
             },
         },

@@ -5,7 +5,7 @@
 use super::{Area, ArgError, Args, Builtin, FrameRule, Param, Typing};
 use crate::check::ty::{Frames, Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
-use crate::lie::{Vec3, so3};
+use crate::lie::{LieGroup, SO3, Vec3, so3};
 use crate::values::value::Value;
 
 pub(super) fn v3() -> Kind {
@@ -41,7 +41,7 @@ fn eval_rot(a: &mut Args) -> Result<Value, Diagnostic> {
     if axis.norm() == 0.0 || !axis.norm().is_finite() {
         return Err(a.error(0, ErrorKind::Domain, "the rotation axis is the zero vector"));
     }
-    Ok(Value::num(Kind::SO3, &so3::rot(&axis, a.scalar(1)?)))
+    Ok(SO3::about(&axis, a.scalar(1)?).into())
 }
 
 /// Twist/velocity from a configuration and its derivative, frames of T_sb:
@@ -84,7 +84,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: so3k,
                 frames: FrameRule::Swap(0),
             },
-            eval: |a| Ok(Value::num(Kind::SO3, &so3::inv(&a.so3(0)?))),
+            eval: |a| Ok(a.so3(0)?.inverse().into()),
         },
         Builtin {
             name: "VecToso3",
@@ -147,7 +147,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: so3k,
                 frames: FrameRule::Disp(0),
             },
-            eval: |a| Ok(Value::num(Kind::SO3, &so3::exp(&a.expc3(0)?))),
+            eval: |a| Ok(SO3::exp(&a.expc3(0)?).into()),
         },
         Builtin {
             name: "MatrixLog3",
@@ -162,7 +162,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: v3,
                 frames: FrameRule::Outer(0),
             },
-            eval: |a| Ok(v3val(&so3::log(&a.so3(0)?))),
+            eval: |a| Ok(v3val(&a.so3(0)?.log())),
         },
         Builtin {
             name: "Rot",
@@ -192,7 +192,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: so3k,
                 frames: FrameRule::None,
             },
-            eval: |a| Ok(Value::num(Kind::SO3, &so3::rotx(a.scalar(0)?))),
+            eval: |a| Ok(SO3::rot_x(a.scalar(0)?).into()),
         },
         Builtin {
             name: "Roty",
@@ -207,7 +207,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: so3k,
                 frames: FrameRule::None,
             },
-            eval: |a| Ok(Value::num(Kind::SO3, &so3::roty(a.scalar(0)?))),
+            eval: |a| Ok(SO3::rot_y(a.scalar(0)?).into()),
         },
         Builtin {
             name: "Rotz",
@@ -222,7 +222,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: so3k,
                 frames: FrameRule::None,
             },
-            eval: |a| Ok(Value::num(Kind::SO3, &so3::rotz(a.scalar(0)?))),
+            eval: |a| Ok(SO3::rot_z(a.scalar(0)?).into()),
         },
         Builtin {
             name: "SO3",
@@ -237,7 +237,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: so3k,
                 frames: FrameRule::Same(0),
             },
-            eval: |a| Ok(Value::num(Kind::SO3, &a.so3(0)?)),
+            eval: |a| Ok(a.so3(0)?.into()),
         },
         Builtin {
             name: "AngVelSpace",
@@ -253,7 +253,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
             },
             eval: |a| {
                 let (r, rd) = (a.so3(0)?, mat3(a, 1)?);
-                Ok(v3val(&so3::angular_velocities(&r, &rd).0))
+                Ok(v3val(&r.angular_velocities(&rd).0))
             },
         },
         Builtin {
@@ -270,7 +270,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
             },
             eval: |a| {
                 let (r, rd) = (a.so3(0)?, mat3(a, 1)?);
-                Ok(v3val(&so3::angular_velocities(&r, &rd).1))
+                Ok(v3val(&r.angular_velocities(&rd).1))
             },
         },
     ]

@@ -5,7 +5,7 @@ use super::table_rotations::{screw, se3k, twist, v3, v3val, v6, velocity_rule, w
 use super::{Area, ArgError, Args, Builtin, FrameRule, Param, Typing};
 use crate::check::ty::{Frames, Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
-use crate::lie::{Vec3, se3};
+use crate::lie::{LieGroup, SE3, Vec3, se3};
 use crate::values::value::Value;
 
 /// (q, ŝ, h) of a screw: frames (Same, Same, none).
@@ -93,10 +93,10 @@ fn eval_screw_to_axis(a: &mut Args) -> Result<Value, Diagnostic> {
 fn eval_displacement(a: &mut Args) -> Result<Value, Diagnostic> {
     if a.mat(0)?.shape() == (3, 3) {
         let (tb, tc) = (a.se2(0)?, a.se2(1)?);
-        return Ok(Value::num(Kind::SE2, &(tc * crate::lie::se2::inv(&tb))));
+        return Ok(tc.compose(&tb.inverse()).into());
     }
     let (tb, tc) = (a.se3(0)?, a.se3(1)?);
-    Ok(Value::num(Kind::SE3, &(tc * se3::inv(&tb))))
+    Ok(tc.compose(&tb.inverse()).into())
 }
 
 /// RpToTrans(R_ab, p_ab): {a}←{b}; p must be in {a}.
@@ -161,12 +161,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 arity: (2, 2),
                 rule: rp_rule,
             },
-            eval: |a| {
-                Ok(Value::num(
-                    Kind::SE3,
-                    &se3::from_rp(&a.so3(0)?, &a.vec3(1)?),
-                ))
-            },
+            eval: |a| Ok(SE3::from_parts(&a.so3(0)?, &a.vec3(1)?).into()),
         },
         Builtin {
             name: "TransToRp",
@@ -181,8 +176,8 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 rule: trans_to_rp_rule,
             },
             eval: |a| {
-                let (r, p) = se3::to_rp(&a.se3(0)?);
-                Ok(Value::Tuple(vec![Value::num(Kind::SO3, &r), v3val(&p)]))
+                let (r, p) = a.se3(0)?.parts();
+                Ok(Value::Tuple(vec![r.into(), v3val(&p)]))
             },
         },
         Builtin {
@@ -198,7 +193,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: se3k,
                 frames: FrameRule::Swap(0),
             },
-            eval: |a| Ok(Value::num(Kind::SE3, &se3::inv(&a.se3(0)?))),
+            eval: |a| Ok(a.se3(0)?.inverse().into()),
         },
         Builtin {
             name: "Trans",
@@ -213,12 +208,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: se3k,
                 frames: FrameRule::None,
             },
-            eval: |a| {
-                Ok(Value::num(
-                    Kind::SE3,
-                    &se3::from_rp(&crate::lie::Mat3::identity(), &a.vec3(0)?),
-                ))
-            },
+            eval: |a| Ok(SE3::translate(&a.vec3(0)?).into()),
         },
         Builtin {
             name: "displacement",
@@ -278,9 +268,9 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 frames: FrameRule::Same(0),
             },
             eval: |a| {
-                Ok(Value::num(
+                Ok(Value::of(
                     Kind::Adjoint { transposed: false },
-                    &se3::adjoint(&a.se3(0)?),
+                    a.se3(0)?.adjoint(),
                 ))
             },
         },
@@ -401,7 +391,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: se3k,
                 frames: FrameRule::Disp(0),
             },
-            eval: |a| Ok(Value::num(Kind::SE3, &se3::exp(&a.expc6(0)?))),
+            eval: |a| Ok(SE3::exp(&a.expc6(0)?).into()),
         },
         Builtin {
             name: "MatrixLog6",
@@ -416,7 +406,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: v6,
                 frames: FrameRule::Outer(0),
             },
-            eval: |a| Ok(Value::num(v6(), &se3::log(&a.se3(0)?))),
+            eval: |a| Ok(Value::of(v6(), a.se3(0)?.log())),
         },
         Builtin {
             name: "twist",
@@ -462,10 +452,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
             },
             eval: |a| {
                 let (t, td) = (a.se3(0)?, mat4(a, 1)?);
-                Ok(Value::num(
-                    Kind::Twist,
-                    &se3::twists_from_derivative(&t, &td).0,
-                ))
+                Ok(Value::of(Kind::Twist, t.twists(&td).0))
             },
         },
         Builtin {
@@ -482,10 +469,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
             },
             eval: |a| {
                 let (t, td) = (a.se3(0)?, mat4(a, 1)?);
-                Ok(Value::num(
-                    Kind::Twist,
-                    &se3::twists_from_derivative(&t, &td).1,
-                ))
+                Ok(Value::of(Kind::Twist, t.twists(&td).1))
             },
         },
     ]

@@ -16,6 +16,10 @@ pub struct RuleError {
     pub rhs: String,
     pub op: String,
     pub help: Option<String>,
+    /// The operand the refusal is about, when it is one argument of a
+    /// builtin call (its table row's check); None: the operation. (Small,
+    /// so that the error stays as small as it was to move.)
+    pub arg: Option<u16>,
 }
 
 impl RuleError {

@@ -18,13 +18,14 @@ use std::f64::consts::PI;
 
 use super::env::FrameMode;
 use super::formula;
-use super::ops::{self, Sel};
+use super::ops::{self, OpError, Sel};
+use super::shapes::{block_type, bracket_type, index_type};
 use super::symbolic::{Fun, Part};
 use super::value::{Sym, Value};
 use crate::builtins::{Args, Builtin, Role};
 use crate::check::rules::{self, Operands, RuleError};
-use crate::check::ty::{Frames, Kind, Ty};
-use crate::diagnostics::{Diagnostic, Severity};
+use crate::check::ty::{Kind, Ty};
+use crate::diagnostics::{Diagnostic, ErrorKind, Severity};
 use crate::syntax::ast::{BinOp, Span};
 
 /// One operation of the language: what a node of an expression does with
@@ -46,13 +47,44 @@ pub enum Op<'a> {
     /// `x[i]`, `M[i, j]`, `M[:, j]` (1-based).
     Index(&'a [Sel]),
     /// `[x]`, the book's bracket of a 3- or 6-vector (3.30, 3.70), and
-    /// `[a, b; c, d]`, a block matrix; its operands are rows.
-    Block,
+    /// `[a, b; c, d]`, a block matrix: the number of entries of each row
+    /// (`[x]` is `Block(&[1])`); its operands are the entries, row by row.
+    Block(&'a [usize]),
     /// `(a, b, c)`: a column vector of scalars.
     Vector,
     /// A call of a builtin, by the name it was called with (`Ad` or
     /// `Adjoint`); its rule is its table row's [`Builtin::check`].
     Call(&'static Builtin, &'a str),
+}
+
+/// An operand of [`Op::rule`]: a type, or a reference to one. A builtin's
+/// rule reads a slice of types ([`Builtin::check`]), the operators' rules
+/// references; each gets its own without a copy when it is what it has.
+pub trait Operand: std::borrow::Borrow<Ty> + Sized {
+    /// `f` of the operands as types (copied only when they are references).
+    fn with_tys<R>(args: &[Self], f: impl FnOnce(&[Ty]) -> R) -> R;
+    /// `f` of the operands as references (collected only when they are types).
+    fn with_refs<R>(args: &[Self], f: impl FnOnce(&[&Ty]) -> R) -> R;
+}
+
+impl Operand for Ty {
+    #[inline(always)]
+    fn with_tys<R>(args: &[Ty], f: impl FnOnce(&[Ty]) -> R) -> R {
+        f(args)
+    }
+    fn with_refs<R>(args: &[Ty], f: impl FnOnce(&[&Ty]) -> R) -> R {
+        f(&args.iter().collect::<Vec<_>>())
+    }
+}
+
+impl Operand for &Ty {
+    fn with_tys<R>(args: &[&Ty], f: impl FnOnce(&[Ty]) -> R) -> R {
+        f(&args.iter().map(|t| **t).collect::<Vec<_>>())
+    }
+    #[inline(always)]
+    fn with_refs<R>(args: &[&Ty], f: impl FnOnce(&[&Ty]) -> R) -> R {
+        f(args)
+    }
 }
 
 /// What a rule may need besides the operands' types: the operands as
@@ -75,10 +107,27 @@ impl<'a> Op<'a> {
     }
 
     /// The kind and frames of the result from the operands' (LANGUAGE.md
-    /// §6), checked without numbers. A block's rule is [`block_type`]
-    /// (its operands are rows), a call's its table row's
-    /// [`Builtin::check`] and [`rules::settle`].
-    pub fn rule(self, args: &[&Ty], hints: Hints) -> Result<Ty, RuleError> {
+    /// §6), checked without numbers: every operation's rule is here. A
+    /// block's is `shapes::block_type`; a call's its table row's
+    /// [`Builtin::check`] (a refusal says which argument, with the
+    /// signature as help), then [`rules::settle`] (a vector or Lie-algebra
+    /// result is in one frame); the inverse's [`rules::inverse`].
+    /// The operands are types or references to them ([`Operand`]): a
+    /// builtin's arguments are a slice of types, an operator's references.
+    #[inline(always)]
+    pub fn rule<T: Operand>(self, args: &[T], hints: Hints) -> Result<Ty, RuleError> {
+        match self {
+            Op::Block(widths) => Ok(match args {
+                [t] => bracket_type(std::borrow::Borrow::borrow(t)),
+                _ => T::with_refs(args, |args| block_type(widths, args)),
+            }),
+            Op::Call(b, _) => T::with_tys(args, |args| call_rule(b, args)),
+            _ => T::with_refs(args, |args| self.operator_rule(args, hints)),
+        }
+    }
+
+    /// [`Op::rule`] of the operators (all but brackets and calls).
+    fn operator_rule(self, args: &[&Ty], hints: Hints) -> Result<Ty, RuleError> {
         match (self, args) {
             (Op::Neg, [t]) => rules::neg(t),
             (Op::Degrees, _) => Ok(Ty::scalar()),
@@ -92,6 +141,7 @@ impl<'a> Op<'a> {
             (Op::Member(part), [t]) => rules::member(t, part.name()),
             (Op::Index(sels), [t]) => index_type(t, sels),
             (Op::Vector, _) => Ok(Ty::plain(Kind::Vector(Some(args.len())))),
+            (Op::Inverse, [t]) => rules::inverse(t),
             _ => Ok(Ty::plain(Kind::Unknown)),
         }
     }
@@ -100,7 +150,7 @@ impl<'a> Op<'a> {
     /// None when symbols are re-evaluated with numbers (the operation then
     /// finds the kind from its operands). Blocks take rows:
     /// [`block_numeric`].
-    pub fn numeric(self, args: &[&Value], kind: Option<&Kind>) -> Result<Value, String> {
+    pub fn numeric(self, args: &[&Value], kind: Option<&Kind>) -> Result<Value, OpError> {
         let unknown = &Kind::Unknown;
         match (self, args) {
             (Op::Neg, [v]) => match kind {
@@ -121,7 +171,7 @@ impl<'a> Op<'a> {
                         None => ops::div(a, b, &own()),
                     },
                     BinOp::Pow => {
-                        let e = b.as_scalar().ok_or("the exponent must be a number")?;
+                        let e = b.as_scalar().ok_or(OpError::ExponentNotANumber)?;
                         match kind {
                             Some(k) => ops::pow(a, e, k),
                             None => ops::pow(a, e, &own()),
@@ -140,8 +190,9 @@ impl<'a> Op<'a> {
                     .collect();
                 Ok(Value::vector(Kind::Vector(Some(xs.len())), &xs))
             }
+            (Op::Block(widths), _) => block_of_entries(widths, args),
             (Op::Call(b, _), _) => call_nowhere(b, args.iter().map(|v| (*v).clone()).collect()),
-            _ => Err("wrong number of operands".into()),
+            _ => Err(OpError::Operands),
         }
     }
 
@@ -207,7 +258,16 @@ impl<'a> Op<'a> {
                     })
                     .collect(),
             ),
-            Op::Block => Sym::Bracket(Box::new(one(&mut args))),
+            Op::Block([1]) => Sym::Bracket(Box::new(one(&mut args))),
+            Op::Block(widths) => {
+                let mut rest = args.into_iter();
+                Sym::Block(
+                    widths
+                        .iter()
+                        .map(|&n| rest.by_ref().take(n).collect())
+                        .collect(),
+                )
+            }
             Op::Vector => Sym::Vector(args),
             Op::Call(b, name) => match b.role() {
                 Role::Inverse => one(&mut args).inverse(),
@@ -229,11 +289,24 @@ impl<'a> Op<'a> {
         !matches!(self, Op::Arith(_) | Op::Vector)
     }
 
+    /// The error of this operation on values ([`Op::apply`]) as the
+    /// evaluator reports it at `span`: a type error for a part or a
+    /// bracket the value has not (`.R` of a vector, blocks that do not
+    /// fit), else a domain error (the values are outside the operation's
+    /// domain: a singular inverse, an index out of range).
+    pub fn failure(self, e: OpError, span: Span) -> Diagnostic {
+        let kind = match self {
+            Op::Transpose | Op::Member(_) | Op::Block(_) => ErrorKind::Type,
+            _ => ErrorKind::Domain,
+        };
+        Diagnostic::error(kind, span, e.to_string())
+    }
+
     /// The operation on values: the exact path when a symbolic scalar is
     /// among numbers ([`Op::formula`]), the symbolic one when a `given`
     /// symbol is among the operands ([`Op::symbolic`]), else numbers
     /// ([`Op::numeric`]). `kind` is the result's kind as checked.
-    pub fn apply(self, args: &[&Value], kind: &Kind) -> Result<Value, String> {
+    pub fn apply(self, args: &[&Value], kind: &Kind) -> Result<Value, OpError> {
         match self.exact_or_symbolic(args, kind) {
             Some(v) => v,
             None => self.numeric(args, Some(kind)),
@@ -242,11 +315,11 @@ impl<'a> Op<'a> {
 
     /// The first two paths of [`Op::apply`]: None when the operands are
     /// numbers (a builtin call then computes with its spans and warnings).
-    pub fn exact_or_symbolic(self, args: &[&Value], kind: &Kind) -> Option<Result<Value, String>> {
+    pub fn exact_or_symbolic(self, args: &[&Value], kind: &Kind) -> Option<Result<Value, OpError>> {
         if formula::applies(args)
             && let Some(v) = self.formula(args, kind)
         {
-            return Some(v);
+            return Some(v.map_err(OpError::Message));
         }
         let formulas = self.formula_is_symbolic();
         args.iter()
@@ -261,10 +334,10 @@ impl<'a> Op<'a> {
 
 /// `[ ... ]` ([`Op::Block`]) by the first two paths of [`Op::apply`]:
 /// None when every entry is a number.
-pub fn block(rows: &[Vec<Value>]) -> Option<Result<Value, String>> {
+pub fn block(rows: &[Vec<Value>]) -> Option<Result<Value, OpError>> {
     let refs: Vec<&Value> = rows.iter().flatten().collect();
     if formula::applies(&refs) {
-        return Some(formula::brackets(rows));
+        return Some(formula::brackets(rows).map_err(OpError::Message));
     }
     refs.iter()
         .any(|v| v.is_symbolic() || matches!(v, Value::Formula { .. }))
@@ -275,8 +348,39 @@ pub fn block(rows: &[Vec<Value>]) -> Option<Result<Value, String>> {
         })
 }
 
+/// [`Op::Call`]'s rule: the table row's [`Builtin::check`] (a refusal
+/// names the argument, with the signature as help), then
+/// [`rules::settle`].
+#[inline]
+fn call_rule(b: &Builtin, args: &[Ty]) -> Result<Ty, RuleError> {
+    let ty = b.check(args).map_err(|e| RuleError {
+        kind: Some(e.kind),
+        message: e.message,
+        help: Some(format!("signature: {}", b.signature)),
+        arg: e.arg.and_then(|i| u16::try_from(i).ok()),
+        ..RuleError::default()
+    })?;
+    rules::settle(&ty, b.name)
+}
+
+/// [`Op::Block`] on numbers given its entries row by row: the rows, then
+/// [`ops::brackets`].
+#[inline(never)]
+fn block_of_entries(widths: &[usize], args: &[&Value]) -> Result<Value, OpError> {
+    let mut rest = args;
+    let rows: Vec<Vec<Value>> = widths
+        .iter()
+        .map(|&n| {
+            let (row, tail) = rest.split_at(n.min(rest.len()));
+            rest = tail;
+            row.iter().map(|v| (*v).clone()).collect()
+        })
+        .collect();
+    block_numeric(&rows)
+}
+
 /// `[ ... ]` on numbers: [`ops::brackets`].
-pub fn block_numeric(rows: &[Vec<Value>]) -> Result<Value, String> {
+pub fn block_numeric(rows: &[Vec<Value>]) -> Result<Value, OpError> {
     ops::brackets(rows)
 }
 
@@ -287,7 +391,7 @@ pub fn block_symbolic(rows: impl Iterator<Item = Vec<Sym>>) -> Sym {
         && row.len() == 1
         && let Some(x) = row.pop()
     {
-        return Op::Block.symbolic(vec![x]);
+        return Op::Block(&[1]).symbolic(vec![x]);
     }
     Sym::Block(rows)
 }
@@ -321,7 +425,7 @@ pub fn call(b: &Builtin, vals: Vec<Value>, site: Site) -> Result<Value, Diagnost
 
 /// [`call`] where the call stands nowhere (symbols re-evaluated): errors
 /// as their message, warnings dropped.
-pub fn call_nowhere(b: &Builtin, vals: Vec<Value>) -> Result<Value, String> {
+pub fn call_nowhere(b: &Builtin, vals: Vec<Value>) -> Result<Value, OpError> {
     let mut warnings = Vec::new();
     let site = Site {
         spans: Vec::new(),
@@ -329,7 +433,7 @@ pub fn call_nowhere(b: &Builtin, vals: Vec<Value>) -> Result<Value, String> {
         typed: Vec::new(),
         warnings: &mut warnings,
     };
-    call(b, vals, site).map_err(|d| d.message)
+    call(b, vals, site).map_err(|d| OpError::Message(d.message))
 }
 
 /// A value as a symbolic operand (numbers become constants).
@@ -349,78 +453,6 @@ fn constant(s: &Sym) -> Option<&Value> {
         Sym::Const(v, _) => Some(v),
         _ => None,
     }
-}
-
-/// The rule of `x[i]`, `M[i, j]`, `M[:, j]`: a tuple's part, a column
-/// in the outer frame of the matrix, a row, or an entry.
-fn index_type(t: &Ty, sels: &[Sel]) -> Result<Ty, RuleError> {
-    let outer = match t.frames.outer() {
-        Some(a) => Frames::One(*a),
-        None => Frames::None,
-    };
-    Ok(match (&t.kind, sels) {
-        (Kind::Tuple(ks), [Sel::At(i)])
-            if i.fract() == 0.0 && *i >= 1.0 && (*i as usize) <= ks.len() =>
-        {
-            Ty::plain(ks[*i as usize - 1])
-        }
-        (Kind::Tuple(_), _) => Ty::plain(Kind::Unknown),
-        (k, _) if k.shape().is_none() => {
-            return Err(RuleError {
-                kind: Some(crate::diagnostics::ErrorKind::Type),
-                message: format!("cannot index a {k}"),
-                ..Default::default()
-            });
-        }
-        (_, [Sel::All, Sel::At(_)]) => Ty::new(Kind::Vector(None), outer),
-        (_, [Sel::At(_), Sel::All]) => Ty::plain(Kind::Matrix(Some(1), None)),
-        _ => Ty::scalar(),
-    })
-}
-
-/// The rule of `[x]`, one entry in brackets: the book's bracket of a 3-
-/// or 6-vector is in so(3) or se(3) (3.30, 3.70), in the vector's frame;
-/// anything else is itself.
-pub fn bracket_type(t: &Ty) -> Ty {
-    match t.kind.vec_len() {
-        Some(3) => Ty::new(Kind::So3, t.frames),
-        Some(6) => Ty::new(Kind::Se3, t.frames),
-        _ => *t,
-    }
-}
-
-/// The rule of [`Op::Block`], `[ ... ]`: the book's bracket of one vector, a column
-/// vector of one row of numbers, else a block matrix whose frames are the
-/// one pair tag inside it (`[R_sb, p_sb; 0, 0, 0, 1]` is {s}←{b}).
-pub fn block_type<T>(rows: &[Vec<T>], ty_of: impl Fn(&T) -> &Ty) -> Ty {
-    if rows.len() == 1 && rows[0].len() == 1 {
-        return bracket_type(ty_of(&rows[0][0]));
-    }
-    let all_scalar = rows.iter().flatten().all(|t| ty_of(t).kind == Kind::Scalar);
-    if all_scalar && rows.len() == 1 {
-        return Ty::plain(Kind::Vector(Some(rows[0].len())));
-    }
-    let mut frames = Frames::None;
-    for t in rows.iter().flatten() {
-        if let Frames::Pair(..) = ty_of(t).frames {
-            if frames.is_none() {
-                frames = ty_of(t).frames;
-            } else if frames != ty_of(t).frames {
-                frames = Frames::None;
-                break;
-            }
-        }
-    }
-    // Shape: sum of widths of the first row, sum of heights of the first column.
-    let width: Option<usize> = rows[0]
-        .iter()
-        .map(|t| ty_of(t).kind.shape().and_then(|s| s.1))
-        .sum();
-    let height: Option<usize> = rows
-        .iter()
-        .map(|r| ty_of(&r[0]).kind.shape().and_then(|s| s.0))
-        .sum();
-    Ty::new(Kind::Matrix(height, width), frames)
 }
 
 /// The frame-mode policy (`--frames strict|warn|off`) for a refused

@@ -51,7 +51,7 @@ impl Interp<'_> {
             .rule(&[&t.ty], Hints::default())
             .map_err(|e| Diagnostic::error(ErrorKind::Type, span, e.message))?;
         let val = match t.val.as_deref() {
-            Some(v) => Some(op.apply(&[v], &ty.kind).map_err(|m| self.domain(span, m))?),
+            Some(v) => Some(op.apply(&[v], &ty.kind).map_err(|m| op.failure(m, span))?),
             None => None,
         };
         Ok(Typed::new(refine(ty, &val), val))
@@ -75,7 +75,7 @@ impl Interp<'_> {
                 Some(refs) if self.running() => Some(
                     Op::Vector
                         .apply(&refs, &ty.kind)
-                        .map_err(|m| self.domain(span, m))?,
+                        .map_err(|m| Op::Vector.failure(m, span))?,
                 ),
                 _ => None,
             };
@@ -119,7 +119,12 @@ impl Interp<'_> {
             }
             trows.push(tr);
         }
-        let ty = apply::block_type(&trows, |t| &t.ty);
+        let widths: Vec<usize> = trows.iter().map(Vec::len).collect();
+        let op = Op::Block(&widths);
+        let tys: Vec<&Ty> = trows.iter().flatten().map(|t| &t.ty).collect();
+        let ty = op
+            .rule(&tys, Hints::default())
+            .map_err(|e| Diagnostic::error(ErrorKind::Type, span, e.message))?;
         if !self.running() {
             return Ok(Typed::new(ty, None));
         }
@@ -138,7 +143,7 @@ impl Interp<'_> {
                 apply::block_numeric(&vrows)
             }
         };
-        let val = Some(v.map_err(|m| Diagnostic::error(ErrorKind::Type, span, m))?);
+        let val = Some(v.map_err(|m| op.failure(m, span))?);
         Ok(Typed::new(refine(ty, &val), val))
     }
 
@@ -153,13 +158,16 @@ impl Interp<'_> {
                 format!("a {} cannot go inside [ ]", t.ty.kind),
             ));
         }
-        let ty = apply::bracket_type(&t.ty);
+        let op = Op::Block(&[1]);
+        let ty = op
+            .rule(&[&t.ty], Hints::default())
+            .map_err(|e| Diagnostic::error(ErrorKind::Type, span, e.message))?;
         if !self.running() {
             return Ok(Typed::new(ty, None));
         }
         let rows = [vec![t.val.map_or_else(|| Value::scalar(f64::NAN), |v| *v)]];
         let v = apply::block(&rows).unwrap_or_else(|| apply::block_numeric(&rows));
-        let val = Some(v.map_err(|m| Diagnostic::error(ErrorKind::Type, span, m))?);
+        let val = Some(v.map_err(|m| op.failure(m, span))?);
         Ok(Typed::new(refine(ty, &val), val))
     }
 

@@ -4,13 +4,14 @@
 
 use std::collections::{HashMap, VecDeque};
 
+use super::apply::Op;
 use super::graph::FrameGraph;
 use super::interp::{Interp, Typed};
 use super::ops;
 use super::value::Value;
 use crate::check::ty::{Frame, Frames, Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
-use crate::syntax::ast::Ident;
+use crate::syntax::ast::{BinOp, Ident};
 use crate::syntax::ident::{NameFrames, base_name, name_frames};
 
 /// One step of a chain: a known name, used as is or inverted.
@@ -123,8 +124,7 @@ impl Interp<'_> {
                     .ok_or_else(|| {
                         Diagnostic::error(ErrorKind::Domain, target.span, "no symbolic inverse")
                     })?,
-                (_, true) => ops::inverse(&v)
-                    .map_err(|m| Diagnostic::error(ErrorKind::Domain, target.span, m))?,
+                (_, true) => ops::inverse(&v).map_err(|m| Op::Inverse.failure(m, target.span))?,
                 _ => v,
             };
             acc = Some(match acc {
@@ -141,7 +141,7 @@ impl Interp<'_> {
                         .map_err(|m| Diagnostic::error(ErrorKind::Domain, target.span, m))?
                 }
                 Some(a) => ops::mul(&a, &v, &kind)
-                    .map_err(|m| Diagnostic::error(ErrorKind::Domain, target.span, m))?,
+                    .map_err(|m| Op::Arith(BinOp::Mul).failure(m, target.span))?,
             });
         }
         Ok((text, Typed::new(ty, acc)))

@@ -109,7 +109,7 @@ impl Interp<'_> {
                     Some(v) => Some(
                         Op::Neg
                             .apply(&[v], &ty.kind)
-                            .map_err(|m| self.domain(e.span, m))?,
+                            .map_err(|m| Op::Neg.failure(m, e.span))?,
                     ),
                     None => None,
                 };
@@ -128,7 +128,7 @@ impl Interp<'_> {
                     Some(v) => Some(
                         Op::Degrees
                             .apply(&[v], &Kind::Scalar)
-                            .map_err(|m| self.domain(inner.span, m))?,
+                            .map_err(|m| Op::Degrees.failure(m, inner.span))?,
                     ),
                     None => None,
                 };
@@ -160,7 +160,7 @@ impl Interp<'_> {
                 let val = match t.val.as_deref() {
                     Some(v) => Some(
                         op.apply(&[v], &ty.kind)
-                            .map_err(|m| Diagnostic::error(ErrorKind::Type, member.span, m))?,
+                            .map_err(|m| op.failure(m, member.span))?,
                     ),
                     None => None,
                 };
@@ -307,7 +307,7 @@ impl Interp<'_> {
         let val = match (l.val.as_deref(), r.val.as_deref()) {
             (Some(a), Some(b)) => Some(
                 op.apply(&[a, b], &ty.kind)
-                    .map_err(|m| self.domain(op_span, m))?,
+                    .map_err(|m| op.failure(m, op_span))?,
             ),
             _ => None,
         };
@@ -401,27 +401,22 @@ impl Interp<'_> {
                 _ => keep(&mut self.env.arg_tys, t),
             }
         }
-        let tys = &self.env.arg_tys[base..];
-        let ty = match b.check(tys) {
+        // The call's rule (its table row's check, then one frame for a
+        // vector or Lie-algebra result, §6); refused, with the operands'
+        // frames dropped when the frame mode lets evaluation go on.
+        let op = Op::Call(b, name);
+        let ty = match op.rule(&self.env.arg_tys[base..], Hints::default()) {
             Ok(ty) => ty,
             Err(err) => {
-                let at = err.arg.and_then(|i| args.get(i)).map_or(span, |a| a.span);
-                let d = Diagnostic::error(err.kind, at, err.message)
-                    .with_help(format!("signature: {}", b.signature));
-                let frame = err.kind == ErrorKind::Frame;
-                apply::frame_refusal(self.frames, frame, d, &mut self.warnings)?;
+                let at = err
+                    .arg
+                    .and_then(|i| args.get(usize::from(i)))
+                    .map_or(span, |a| a.span);
                 let plain: Vec<Ty> = self.env.arg_tys[base..].iter().map(strip).collect();
-                b.check(&plain)
-                    .map_err(|e| Diagnostic::error(e.kind, at, e.message))?
-            }
-        };
-        // A vector or Lie-algebra result is in one frame (§6).
-        let ty = match rules::settle(&ty, b.name) {
-            Ok(ty) => ty,
-            Err(err) => {
-                let at = args.first().map_or(span, |a| a.span);
-                self.rule_failure(err, span, Some(at), None, None)?;
-                strip(&ty)
+                self.rule_failure(err, at, args.first().map(|a| a.span), None, None)?;
+                op.rule(&plain, Hints::default()).map_err(|e| {
+                    Diagnostic::error(e.kind.unwrap_or(ErrorKind::Type), at, e.message)
+                })?
             }
         };
         if !self.running() {
@@ -433,8 +428,8 @@ impl Interp<'_> {
             .any(|v| matches!(v, Value::Sym(_) | Value::Formula { .. }))
         {
             let refs: Vec<&Value> = vals.iter().collect();
-            if let Some(v) = Op::Call(b, name).exact_or_symbolic(&refs, &ty.kind) {
-                let val = Some(v.map_err(|m| self.domain(span, m))?);
+            if let Some(v) = op.exact_or_symbolic(&refs, &ty.kind) {
+                let val = Some(v.map_err(|m| op.failure(m, span))?);
                 return Ok(Typed::new(refine(ty, &val), val));
             }
         }

@@ -154,7 +154,55 @@ impl LieGroup for SE3 {
     }
 }
 
+impl SO3 {
+    /// `Rot(ω̂, θ)`: the rotation by θ about the axis ω̂ (normalised), by
+    /// Rodrigues' formula (3.51).
+    pub fn about(axis: &Vec3, theta: f64) -> SO3 {
+        SO3(so3::rot(axis, theta))
+    }
+    /// `Rotx(θ)`: the rotation by θ about x̂ (§3.2.1).
+    pub fn rot_x(theta: f64) -> SO3 {
+        SO3(so3::rotx(theta))
+    }
+    /// `Roty(θ)`: the rotation by θ about ŷ (§3.2.1).
+    pub fn rot_y(theta: f64) -> SO3 {
+        SO3(so3::roty(theta))
+    }
+    /// `Rotz(θ)`: the rotation by θ about ẑ (§3.2.1).
+    pub fn rot_z(theta: f64) -> SO3 {
+        SO3(so3::rotz(theta))
+    }
+    /// Whether the rotation angle is π, where the logarithm's axis is one
+    /// of two (§3.2.3.3, case (ii)).
+    pub fn is_half_turn(&self) -> bool {
+        so3::is_half_turn(&self.0)
+    }
+    /// The spatial and body angular velocities (ω_s, ω_b) of R moving
+    /// at Ṙ: \[ω_s\] = Ṙ Rᵀ (3.37), \[ω_b\] = Rᵀ Ṙ (3.38).
+    pub fn angular_velocities(&self, rdot: &Mat3) -> (Vec3, Vec3) {
+        so3::angular_velocities(&self.0, rdot)
+    }
+}
+
 impl SE3 {
+    /// `RpToTrans(R, p)`: T = [R, p; 0, 1] (3.62).
+    pub fn from_parts(r: &SO3, p: &Vec3) -> SE3 {
+        SE3(se3::from_rp(&r.0, p))
+    }
+    /// `Trans(p)`: the pure translation [I, p; 0, 1] (§3.3.1).
+    pub fn translate(p: &Vec3) -> SE3 {
+        SE3(se3::trans(p))
+    }
+    /// `TransToRp(T)`: the rotation R and position p of T = (R, p).
+    pub fn parts(&self) -> (SO3, Vec3) {
+        let (r, p) = se3::to_rp(&self.0);
+        (SO3(r), p)
+    }
+    /// The spatial and body twists (V_s, V_b) of T moving at Ṫ:
+    /// \[V_s\] = Ṫ T⁻¹, \[V_b\] = T⁻¹ Ṫ (Proposition 3.15, §3.3.2).
+    pub fn twists(&self, tdot: &Mat4) -> (Vec6, Vec6) {
+        se3::twists_from_derivative(&self.0, tdot)
+    }
     /// The rotation R of T = (R, p).
     pub fn rotation(&self) -> SO3 {
         SO3(self.0.fixed_view::<3, 3>(0, 0).into_owned())
@@ -206,6 +254,13 @@ impl LieGroup for SO2 {
     /// SO(2) is commutative: its adjoint is 1.
     fn adjoint(&self) -> f64 {
         1.0
+    }
+}
+
+impl SE2 {
+    /// The planar transform of angle θ and position (x, y) (3.16).
+    pub fn from_angle(theta: f64, x: f64, y: f64) -> SE2 {
+        SE2(se2::from_theta_xy(theta, x, y))
     }
 }
 
@@ -298,6 +353,34 @@ mod tests {
         assert_eq!(SO3::distance(&(Mat3::identity() * f64::NAN)), f64::INFINITY);
         assert_eq!(r.adjoint(), *r.matrix());
         assert!(close(&SO3::exp(&r.log()).0, &r.0));
+    }
+
+    #[test]
+    fn constructors_of_the_builtins() {
+        // RpToTrans(Rotz(π/2), (1, 2, 3)) and back (§3.3.1).
+        let r = SO3::rot_z(std::f64::consts::FRAC_PI_2);
+        let t = SE3::from_parts(&r, &Vec3::new(1.0, 2.0, 3.0));
+        assert_eq!(t.parts(), (r, Vec3::new(1.0, 2.0, 3.0)));
+        assert_eq!(t.act(&Vec3::new(1.0, 0.0, 0.0)), Vec3::new(1.0, 3.0, 3.0));
+        assert!(close(
+            SO3::about(&Vec3::new(0.0, 0.0, 2.0), 0.7).matrix(),
+            SO3::rot_z(0.7).matrix()
+        ));
+        assert_eq!(
+            SE3::translate(&Vec3::new(1.0, 2.0, 3.0)).translation(),
+            Vec3::new(1.0, 2.0, 3.0)
+        );
+        assert!(SO3::rot_x(std::f64::consts::PI).is_half_turn());
+        assert!(!SO3::rot_y(1.0).is_half_turn());
+        // A frame turning about ẑ at 1 rad/s: ω_s = ω_b = ẑ (3.37, 3.38).
+        let rdot = so3::hat(&Vec3::z()) * r.matrix();
+        let (ws, wb) = r.angular_velocities(&rdot);
+        assert!(close(&ws, &Vec3::z()) && close(&wb, &Vec3::z()));
+        let g = SE2::from_angle(std::f64::consts::FRAC_PI_2, 2.0, 1.0);
+        assert!(close(
+            g.matrix(),
+            &Mat3::new(0.0, -1.0, 2.0, 1.0, 0.0, 1.0, 0.0, 0.0, 1.0)
+        ));
     }
 
     #[test]

@@ -5,7 +5,7 @@
 //! whose entries are all numbers is numeric again. Types and frames are
 //! checked before, exactly as for numbers.
 
-use super::ops::{Sel, position};
+use super::ops::{self, Sel};
 use super::value::Value;
 use crate::check::ty::Kind;
 use crate::sym::matrix::{self, Mat};
@@ -235,6 +235,11 @@ fn transposed_kind(k: &Kind) -> Kind {
         },
         _ => Kind::Unknown,
     }
+}
+
+/// [`ops::position`] with its error as the message.
+fn position(x: f64, n: usize) -> Result<usize, String> {
+    ops::position(x, n).map_err(|e| e.to_string())
 }
 
 /// `x[i]`, `M[i, j]`, `M[i, :]`, `M[:, j]` (1-based).

@@ -4,7 +4,8 @@
 //! general matrix only for other shapes), symbolic expressions over
 //! `given` names ([`symbolic`]), the group a
 //! matrix belongs to ([`convert`]), the arithmetic of the language on values
-//! ([`ops`]: products, powers, inverses, members, indexing, brackets), and
+//! ([`ops`]: products, powers, inverses, members, indexing, brackets, with
+//! their errors in [`error`]), and
 //! numbers as text ([`number`], [`exact`], [`format`]). It imports only
 //! `check`'s kinds, `syntax`'s tree (a user function's body), `lie` and
 //! `mech`; `builtins` and `eval` build on it. `crate::eval::{value, ops,
@@ -12,6 +13,7 @@
 //! modules under their former paths.
 
 pub mod convert;
+pub mod error;
 pub mod exact;
 pub mod format;
 pub mod formula;

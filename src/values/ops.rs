@@ -1,25 +1,22 @@
 //! Arithmetic on values: products (including `T * p` for a point), sums,
 //! powers, inverses in closed form, members, indexing and MATLAB-style
-//! block concatenation. Errors are plain messages; the interpreter adds
-//! spans. Sizes are bounded so that no input can exhaust memory.
+//! block concatenation. Errors are one enum, [`OpError`], whose text is
+//! the message a user sees; the interpreter adds the span and the error's
+//! kind. Sizes are bounded so that no input can exhaust memory.
 
 use nalgebra::DMatrix;
 
 use super::convert;
+pub use super::error::{MAX_DIM, MAX_ELEMENTS, MAX_WORK, OpError};
 use super::num::Num;
 use super::value::Value;
 use crate::check::ty::Kind;
 use crate::lie::{LieGroup, SE2, SE3, SO3, Vec3, se3};
 
-/// Largest matrix side accepted anywhere.
-pub const MAX_DIM: usize = 10_000;
-/// Largest number of entries of one matrix.
-pub const MAX_ELEMENTS: usize = 4_000_000;
-
-fn num(v: &Value) -> Result<(&Kind, &Num), String> {
+fn num(v: &Value) -> Result<(&Kind, &Num), OpError> {
     match v {
         Value::Num { kind, m } => Ok((kind, m)),
-        other => Err(format!("expected numbers, found a {}", other.kind())),
+        other => Err(OpError::NotNumbers(other.kind())),
     }
 }
 
@@ -40,7 +37,7 @@ fn out(kind: &Kind, m: Num) -> Value {
 }
 
 /// `l * r` with the result kind the checker found.
-pub fn mul(l: &Value, r: &Value, kind: &Kind) -> Result<Value, String> {
+pub fn mul(l: &Value, r: &Value, kind: &Kind) -> Result<Value, OpError> {
     let (lk, lm) = num(l)?;
     let (rk, rm) = num(r)?;
     if let (Num::Scalar(x), Kind::Scalar) = (lm, lk) {
@@ -75,11 +72,7 @@ pub fn mul(l: &Value, r: &Value, kind: &Kind) -> Result<Value, String> {
         // matrix gives its velocity ([V] x = [ω] x + v, last row zero).
         let last = |w: f64| (0..4).all(|j| (t[(3, j)] - w * f64::from(j == 3)).abs() <= 1e-9);
         if !last(1.0) && !last(0.0) {
-            return Err(
-                "a 4×4 matrix moves a point, T x = R x + p (3.65), only when its last row is (0, 0, 0, 1); \
-                 this one is not a transform (the transpose of a transform is not its inverse: use inv)"
-                    .into(),
-            );
+            return Err(OpError::NotATransform);
         }
         let p = t.fixed_view::<3, 3>(0, 0) * x + t.fixed_view::<3, 1>(0, 3);
         return Ok(Value::Num {
@@ -96,13 +89,7 @@ pub fn mul(l: &Value, r: &Value, kind: &Kind) -> Result<Value, String> {
         });
     }
     if lm.ncols() != rm.nrows() {
-        return Err(format!(
-            "cannot multiply a {}×{} by a {}×{}",
-            lm.nrows(),
-            lm.ncols(),
-            rm.nrows(),
-            rm.ncols()
-        ));
+        return Err(OpError::Multiply(lm.shape(), rm.shape()));
     }
     check_size(lm.nrows(), rm.ncols())?;
     check_work(lm.nrows(), lm.ncols(), rm.ncols(), 1)?;
@@ -110,13 +97,8 @@ pub fn mul(l: &Value, r: &Value, kind: &Kind) -> Result<Value, String> {
     Ok(out(kind, Num::from_dmatrix(product)))
 }
 
-/// The most multiply-adds one operation may cost: about a second of work
-/// (a 1000×1000 product). A larger product or matrix power would run for
-/// minutes or hours.
-pub const MAX_WORK: u128 = 1_000_000_000;
-
 /// Refuses `times` products of an r×k by a k×c matrix beyond [`MAX_WORK`].
-pub fn check_work(r: usize, k: usize, c: usize, times: u64) -> Result<(), String> {
+pub fn check_work(r: usize, k: usize, c: usize, times: u64) -> Result<(), OpError> {
     let work = r as u128 * k as u128 * c as u128 * times as u128;
     check_cost(work, || {
         format!(
@@ -132,12 +114,12 @@ pub fn check_work(r: usize, k: usize, c: usize, times: u64) -> Result<(), String
 
 /// Refuses an operation that costs `work` multiply-adds beyond
 /// [`MAX_WORK`]; `what` names the operation in the message.
-pub fn check_cost(work: u128, what: impl FnOnce() -> String) -> Result<(), String> {
+pub fn check_cost(work: u128, what: impl FnOnce() -> String) -> Result<(), OpError> {
     if work > MAX_WORK {
-        return Err(format!(
-            "too much work: {work:.1e} multiply-adds ({}; at most {MAX_WORK:.0e})",
-            what()
-        ));
+        return Err(OpError::TooMuchWork {
+            work: u64::try_from(work).unwrap_or(u64::MAX),
+            what: what(),
+        });
     }
     Ok(())
 }
@@ -149,27 +131,19 @@ pub fn cube(n: usize) -> u128 {
 }
 
 /// Refuses results larger than [`MAX_ELEMENTS`].
-pub fn check_size(r: usize, c: usize) -> Result<(), String> {
+pub fn check_size(r: usize, c: usize) -> Result<(), OpError> {
     if r > MAX_DIM || c > MAX_DIM || r.saturating_mul(c) > MAX_ELEMENTS {
-        return Err(format!(
-            "a {r}×{c} result is too large (at most {MAX_ELEMENTS} entries)"
-        ));
+        return Err(OpError::TooLarge { rows: r, cols: c });
     }
     Ok(())
 }
 
 /// `l + r` or `l - r`.
-pub fn add(l: &Value, r: &Value, subtract: bool, kind: &Kind) -> Result<Value, String> {
+pub fn add(l: &Value, r: &Value, subtract: bool, kind: &Kind) -> Result<Value, OpError> {
     let (_, lm) = num(l)?;
     let (_, rm) = num(r)?;
     if lm.shape() != rm.shape() {
-        return Err(format!(
-            "cannot add a {}×{} and a {}×{}",
-            lm.nrows(),
-            lm.ncols(),
-            rm.nrows(),
-            rm.ncols()
-        ));
+        return Err(OpError::Add(lm.shape(), rm.shape()));
     }
     let mut sum = lm.clone();
     for (x, y) in sum.as_mut_slice().iter_mut().zip(rm.iter()) {
@@ -179,7 +153,7 @@ pub fn add(l: &Value, r: &Value, subtract: bool, kind: &Kind) -> Result<Value, S
 }
 
 /// `-x`.
-pub fn neg(v: &Value, kind: &Kind) -> Result<Value, String> {
+pub fn neg(v: &Value, kind: &Kind) -> Result<Value, OpError> {
     let (_, m) = num(v)?;
     Ok(Value::Num {
         kind: *kind,
@@ -188,11 +162,11 @@ pub fn neg(v: &Value, kind: &Kind) -> Result<Value, String> {
 }
 
 /// `l / r` with a scalar divisor.
-pub fn div(l: &Value, r: &Value, kind: &Kind) -> Result<Value, String> {
+pub fn div(l: &Value, r: &Value, kind: &Kind) -> Result<Value, OpError> {
     let (_, lm) = num(l)?;
-    let d = r.as_scalar().ok_or("the divisor must be a number")?;
+    let d = r.as_scalar().ok_or(OpError::DivisorNotANumber)?;
     if d == 0.0 {
-        return Err("division by zero".into());
+        return Err(OpError::DivisionByZero);
     }
     Ok(Value::Num {
         kind: *kind,
@@ -202,7 +176,7 @@ pub fn div(l: &Value, r: &Value, kind: &Kind) -> Result<Value, String> {
 
 /// `b ^ e`: real powers of numbers, integer powers of square matrices
 /// (by repeated squaring; `X^-1` is the inverse).
-pub fn pow(b: &Value, e: f64, kind: &Kind) -> Result<Value, String> {
+pub fn pow(b: &Value, e: f64, kind: &Kind) -> Result<Value, OpError> {
     let (bk, bm) = num(b)?;
     if *bk == Kind::Scalar {
         let x = bm[0].powf(e);
@@ -213,29 +187,21 @@ pub fn pow(b: &Value, e: f64, kind: &Kind) -> Result<Value, String> {
                 let p = (e * q).round();
                 (e * q - p).abs() < 1e-12 && p.rem_euclid(2.0) == 1.0
             });
-            return Err(if odd_root {
-                format!(
-                    "{base} is not a real number (a negative base to a fractional power); \
-                     its real root is -({}^{})",
-                    fmt_exp(-bm[0]),
-                    fmt_exp(e)
-                )
-            } else {
-                format!("{base} is not a real number (a negative base to a fractional power)")
+            return Err(OpError::NotReal {
+                base,
+                real_root: odd_root.then(|| format!("{}^{}", fmt_exp(-bm[0]), fmt_exp(e))),
             });
         }
         return Ok(Value::scalar(x));
     }
     if !bm.is_square() {
-        return Err("powers need a square matrix".into());
+        return Err(OpError::PowerOfNonSquare);
     }
     if e.is_finite() && e.fract() == 0.0 && e.abs() > 1e15 {
-        return Err(format!(
-            "a matrix power's exponent must be at most 1e15 in size, got {e:e}"
-        ));
+        return Err(OpError::ExponentTooLarge(e));
     }
     if e.fract() != 0.0 || !e.is_finite() {
-        return Err(format!("a matrix power needs a whole exponent, got {e}"));
+        return Err(OpError::ExponentNotWhole(e));
     }
     let mut base = if e < 0.0 {
         num_inverse(bk, bm)?.into_dmatrix()
@@ -273,18 +239,18 @@ pub fn pow(b: &Value, e: f64, kind: &Kind) -> Result<Value, String> {
 
 /// The inverse: closed forms for group elements (Prop. 3.3, (3.64)),
 /// LU for other square matrices, an error for singular ones.
-pub fn inverse(v: &Value) -> Result<Value, String> {
+pub fn inverse(v: &Value) -> Result<Value, OpError> {
     let (k, m) = num(v)?;
     if *k == Kind::Scalar {
         if m[0] == 0.0 {
-            return Err("inverse of zero".into());
+            return Err(OpError::InverseOfZero);
         }
         return Ok(Value::scalar(1.0 / m[0]));
     }
     Ok(out(k, num_inverse(k, m)?))
 }
 
-fn num_inverse(k: &Kind, m: &Num) -> Result<Num, String> {
+fn num_inverse(k: &Kind, m: &Num) -> Result<Num, OpError> {
     Ok(match (k, m) {
         // Closed forms: Rᵀ (Prop. 3.3), (3.64) for transforms.
         (Kind::SO3, Num::M3(r)) => Num::M3(*SO3::assume(*r).inverse().matrix()),
@@ -295,32 +261,22 @@ fn num_inverse(k: &Kind, m: &Num) -> Result<Num, String> {
             let r = m.nrows();
             check_cost(cube(r), || format!("the inverse of a {r}×{r} matrix"))?;
             if m.iter().any(|x| !x.is_finite()) {
-                return Err(
-                    "the matrix has entries that are not finite (inf or NaN); it has no inverse"
-                        .into(),
-                );
+                return Err(OpError::InverseNotFinite);
             }
             let m = m.to_dmatrix();
             let det = m.determinant();
             let scale = m.abs().max().max(f64::MIN_POSITIVE).powi(r as i32);
             if det == 0.0 || !det.is_finite() || det.abs() <= 1e-14 * scale {
-                return Err(format!(
-                    "the matrix is singular (determinant {}); it has no inverse",
-                    super::number::fmt_num(det, 6)
-                ));
+                return Err(OpError::Singular(Some(det)));
             }
             Num::from_dmatrix(
                 m.into_owned()
                     .try_inverse()
-                    .ok_or("the matrix is singular; it has no inverse")?,
+                    .ok_or(OpError::Singular(None))?,
             )
         }
         _ => {
-            return Err(format!(
-                "only square matrices have inverses, not {}×{}",
-                m.nrows(),
-                m.ncols()
-            ));
+            return Err(OpError::InverseOfNonSquare(m.nrows(), m.ncols()));
         }
     })
 }
@@ -348,7 +304,7 @@ pub fn transpose(v: &Value) -> Value {
 }
 
 /// `x.member` (`.R .p .w .v .m .f`; `.T` is [`transpose`]).
-pub fn member(v: &Value, name: &str) -> Result<Value, String> {
+pub fn member(v: &Value, name: &'static str) -> Result<Value, OpError> {
     if name == "T" {
         return Ok(transpose(v));
     }
@@ -379,7 +335,7 @@ pub fn member(v: &Value, name: &str) -> Result<Value, String> {
                 .fixed_rows::<3>(if name == "w" { 0 } else { 3 })
                 .into_owned()))
         }
-        _ => Err(format!("a {k} has no member .{name}")),
+        _ => Err(OpError::NoMember { kind: *k, name }),
     }
 }
 
@@ -392,28 +348,26 @@ pub enum Sel {
 
 /// The 0-based position of the book's 1-based index `x` among `n`
 /// entries, or the error a user sees for an index out of range.
-pub(super) fn position(x: f64, n: usize) -> Result<usize, String> {
+pub(super) fn position(x: f64, n: usize) -> Result<usize, OpError> {
     if x.fract() != 0.0 || x < 1.0 || x > n as f64 {
-        return Err(format!(
-            "index {x} is out of range 1..{n} (indices start at 1, as in the book)"
-        ));
+        return Err(OpError::IndexOutOfRange { index: x, n });
     }
     Ok(x as usize - 1)
 }
 
 /// `x[i]`, `M[i, j]`, `M[i, :]`, `M[:, j]` — 1-based.
-pub fn index(v: &Value, sels: &[Sel]) -> Result<Value, String> {
+pub fn index(v: &Value, sels: &[Sel]) -> Result<Value, OpError> {
     if let Value::Tuple(items) = v {
         return match sels {
             [Sel::At(i)] => Ok(items[position(*i, items.len())?].clone()),
-            _ => Err("a tuple takes one index".into()),
+            _ => Err(OpError::TupleIndex),
         };
     }
     let (_, m) = num(v)?;
     match sels {
         [Sel::At(i)] if m.ncols() == 1 => Ok(Value::scalar(m[position(*i, m.nrows())?])),
         [Sel::At(i)] if m.nrows() == 1 => Ok(Value::scalar(m[position(*i, m.ncols())?])),
-        [Sel::At(_)] => Err("a matrix takes two indices: M[i, j], M[i, :] or M[:, j]".into()),
+        [Sel::At(_)] => Err(OpError::MatrixIndex),
         [Sel::At(i), Sel::At(j)] => Ok(Value::scalar(
             m[(position(*i, m.nrows())?, position(*j, m.ncols())?)],
         )),
@@ -432,14 +386,14 @@ pub fn index(v: &Value, sels: &[Sel]) -> Result<Value, String> {
             })
         }
         [Sel::All, Sel::All] | [Sel::All] => Ok(v.clone()),
-        _ => Err("at most two indices".into()),
+        _ => Err(OpError::TooManyIndices),
     }
 }
 
 /// `[ ... ]` after evaluation: the book's bracket for one 3- or 6-vector,
 /// a column vector for one row of numbers, MATLAB block concatenation
 /// otherwise (LANGUAGE.md §4).
-pub fn brackets(rows: &[Vec<Value>]) -> Result<Value, String> {
+pub fn brackets(rows: &[Vec<Value>]) -> Result<Value, OpError> {
     if rows.len() == 1 && rows[0].len() == 1 {
         let (k, m) = num(&rows[0][0])?;
         return Ok(match m {
@@ -467,12 +421,7 @@ pub fn brackets(rows: &[Vec<Value>]) -> Result<Value, String> {
         }
         let h = parts[0].nrows();
         if let Some(bad) = parts.iter().find(|p| p.nrows() != h) {
-            return Err(format!(
-                "row {} of the bracket joins blocks of {} and {} rows",
-                ri + 1,
-                h,
-                bad.nrows()
-            ));
+            return Err(OpError::RowHeights(ri + 1, h, bad.nrows()));
         }
         let w: usize = parts.iter().map(|p| p.ncols()).sum();
         check_size(h, w)?;
@@ -486,12 +435,7 @@ pub fn brackets(rows: &[Vec<Value>]) -> Result<Value, String> {
     }
     let w = blocks[0].ncols();
     if let Some((i, bad)) = blocks.iter().enumerate().find(|(_, b)| b.ncols() != w) {
-        return Err(format!(
-            "rows of the bracket have different widths: {} and {} (row {})",
-            w,
-            bad.ncols(),
-            i + 1
-        ));
+        return Err(OpError::RowWidths(w, bad.ncols(), i + 1));
     }
     let h: usize = blocks.iter().map(|b| b.nrows()).sum();
     check_size(h, w)?;

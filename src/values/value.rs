@@ -6,6 +6,7 @@ use std::rc::Rc;
 use super::num::Num;
 use super::symbolic::Tree;
 use crate::check::ty::{Kind, Ty};
+use crate::lie::{LieGroup, SE2, SE3, SO2, SO3};
 use crate::mech::Mechanism;
 use crate::syntax::ast::Expr;
 
@@ -138,6 +139,34 @@ impl Value {
     }
     pub fn is_symbolic(&self) -> bool {
         matches!(self, Value::Sym(_))
+    }
+}
+
+/// A rotation R ∈ SO(3) (§3.2.1) as a value of kind SO(3).
+impl From<SO3> for Value {
+    fn from(r: SO3) -> Value {
+        Value::of(Kind::SO3, *r.matrix())
+    }
+}
+
+/// A transform T ∈ SE(3) (3.62) as a value of kind SE(3).
+impl From<SE3> for Value {
+    fn from(t: SE3) -> Value {
+        Value::of(Kind::SE3, *t.matrix())
+    }
+}
+
+/// A planar rotation ∈ SO(2) as a value of kind SO(2) (a general 2×2).
+impl From<SO2> for Value {
+    fn from(r: SO2) -> Value {
+        Value::num(Kind::SO2, r.matrix())
+    }
+}
+
+/// A planar transform ∈ SE(2) (3.16) as a value of kind SE(2).
+impl From<SE2> for Value {
+    fn from(t: SE2) -> Value {
+        Value::of(Kind::SE2, *t.matrix())
     }
 }
 

@@ -1,0 +1,87 @@
+//! The rules (LANGUAGE.md §6) of the operations that take shapes apart
+//! or build them: indexing `x[i]`, the book's bracket `[x]` (3.30, 3.70)
+//! and block matrices `[a, b; c, d]`. [`super::apply::Op::rule`] uses them.
+
+use super::ops::Sel;
+use crate::check::rules::RuleError;
+use crate::check::ty::{Frames, Kind, Ty};
+
+/// The rule of `x[i]`, `M[i, j]`, `M[:, j]`: a tuple's part, a column
+/// in the outer frame of the matrix, a row, or an entry.
+pub(super) fn index_type(t: &Ty, sels: &[Sel]) -> Result<Ty, RuleError> {
+    let outer = match t.frames.outer() {
+        Some(a) => Frames::One(*a),
+        None => Frames::None,
+    };
+    Ok(match (&t.kind, sels) {
+        (Kind::Tuple(ks), [Sel::At(i)])
+            if i.fract() == 0.0 && *i >= 1.0 && (*i as usize) <= ks.len() =>
+        {
+            Ty::plain(ks[*i as usize - 1])
+        }
+        (Kind::Tuple(_), _) => Ty::plain(Kind::Unknown),
+        (k, _) if k.shape().is_none() => {
+            return Err(RuleError {
+                kind: Some(crate::diagnostics::ErrorKind::Type),
+                message: format!("cannot index a {k}"),
+                ..Default::default()
+            });
+        }
+        (_, [Sel::All, Sel::At(_)]) => Ty::new(Kind::Vector(None), outer),
+        (_, [Sel::At(_), Sel::All]) => Ty::plain(Kind::Matrix(Some(1), None)),
+        _ => Ty::scalar(),
+    })
+}
+
+/// The rule of `[x]`, one entry in brackets: the book's bracket of a 3-
+/// or 6-vector is in so(3) or se(3) (3.30, 3.70), in the vector's frame;
+/// anything else is itself.
+#[inline(always)]
+pub(super) fn bracket_type(t: &Ty) -> Ty {
+    match t.kind.vec_len() {
+        Some(3) => Ty::new(Kind::So3, t.frames),
+        Some(6) => Ty::new(Kind::Se3, t.frames),
+        _ => *t,
+    }
+}
+
+/// The rule of [`super::apply::Op::Block`], `[ ... ]`, its entries row by row with
+/// `widths` entries in each: the book's bracket of one vector, a column
+/// vector of one row of numbers, else a block matrix whose frames are the
+/// one pair tag inside it (`[R_sb, p_sb; 0, 0, 0, 1]` is {s}←{b}).
+pub(super) fn block_type(widths: &[usize], args: &[&Ty]) -> Ty {
+    if let [t] = args {
+        return bracket_type(t);
+    }
+    let all_scalar = args.iter().all(|t| t.kind == Kind::Scalar);
+    if all_scalar && widths.len() == 1 {
+        return Ty::plain(Kind::Vector(Some(args.len())));
+    }
+    let mut frames = Frames::None;
+    for t in args {
+        if let Frames::Pair(..) = t.frames {
+            if frames.is_none() {
+                frames = t.frames;
+            } else if frames != t.frames {
+                frames = Frames::None;
+                break;
+            }
+        }
+    }
+    // Shape: sum of widths of the first row, sum of heights of the first column.
+    let first = widths.first().map_or(0, |&n| n.min(args.len()));
+    let width: Option<usize> = args[..first]
+        .iter()
+        .map(|t| t.kind.shape().and_then(|s| s.1))
+        .sum();
+    let mut start = 0;
+    let mut height = Some(0);
+    for &n in widths {
+        let h = args
+            .get(start)
+            .and_then(|t| t.kind.shape().and_then(|s| s.0));
+        height = height.zip(h).map(|(a, b)| a + b);
+        start += n;
+    }
+    Ty::new(Kind::Matrix(height, width), frames)
+}
