@@ -18,7 +18,6 @@ mod table_screw;
 mod table_sym;
 mod table_units;
 
-use std::hash::BuildHasherDefault;
 use std::sync::OnceLock;
 
 pub use args::{ArgError, Args};
@@ -350,12 +349,15 @@ pub fn table() -> &'static [Builtin] {
 }
 
 /// The builtin called `name` (book name or alias); the first in table
-/// order when two share a name.
+/// order when two share a name. The index is built once, hashed with
+/// foldhash's fast hash (as the environment's names are), which reads a
+/// short name in a few words rather than byte by byte.
 pub fn lookup(name: &str) -> Option<&'static Builtin> {
-    type Index = std::collections::HashMap<&'static str, usize, BuildHasherDefault<Fnv>>;
+    type Index = std::collections::HashMap<&'static str, usize, foldhash::fast::FixedState>;
     static INDEX: OnceLock<Index> = OnceLock::new();
     let index = INDEX.get_or_init(|| {
-        let mut index = Index::with_capacity_and_hasher(512, Default::default());
+        let mut index =
+            Index::with_capacity_and_hasher(512, foldhash::fast::FixedState::with_seed(0));
         for (i, b) in table().iter().enumerate() {
             for n in b.names() {
                 index.entry(n).or_insert(i);
@@ -364,28 +366,6 @@ pub fn lookup(name: &str) -> Option<&'static Builtin> {
         index
     });
     index.get(name).map(|&i| &table()[i])
-}
-
-/// FNV-1a: a hash for the short, trusted names of the builtin index, much
-/// cheaper to build at startup than the default SipHash.
-#[derive(Default)]
-struct Fnv(u64);
-
-impl std::hash::Hasher for Fnv {
-    fn finish(&self) -> u64 {
-        self.0
-    }
-    fn write(&mut self, bytes: &[u8]) {
-        let mut h = if self.0 == 0 {
-            0xcbf2_9ce4_8422_2325
-        } else {
-            self.0
-        };
-        for &b in bytes {
-            h = (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3);
-        }
-        self.0 = h;
-    }
 }
 
 /// Every name that can be called, for completion and did-you-mean.
