@@ -9,7 +9,7 @@ use crate::check::bind;
 use crate::check::rules::RuleError;
 use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
-use crate::syntax::ast::{Span, Stmt, StmtKind};
+use crate::syntax::ast::{Name, Span, Stmt, StmtKind};
 
 /// A checked (and, when running, evaluated) expression.
 ///
@@ -59,18 +59,19 @@ pub struct Outcome {
 }
 
 /// The names a statement bound, in order: read as a slice of names. One
-/// name (the common `x = ..`) is held without a second allocation.
+/// name (the common `x = ..`) is held without a second allocation, and
+/// names are the syntax tree's interned handles (no copy of the text).
 #[derive(Debug, Clone)]
 pub enum Names {
     /// `x = ..`, `derive T_ab`.
-    One([String; 1]),
+    One([Name; 1]),
     /// None (a bare expression) or several (`(a, b) = ..`).
-    Many(Vec<String>),
+    Many(Vec<Name>),
 }
 
 impl Names {
     /// The names as a slice.
-    pub fn as_slice(&self) -> &[String] {
+    pub fn as_slice(&self) -> &[Name] {
         match self {
             Names::One(n) => n,
             Names::Many(v) => v,
@@ -79,8 +80,8 @@ impl Names {
 }
 
 impl std::ops::Deref for Names {
-    type Target = [String];
-    fn deref(&self) -> &[String] {
+    type Target = [Name];
+    fn deref(&self) -> &[Name] {
         self.as_slice()
     }
 }
@@ -186,7 +187,7 @@ impl<'a> Interp<'a> {
                 crate::check::rules::settle_in_place(&mut t.ty);
                 self.bind_checked(&target.name, &mut t, target.span, value.span)?;
                 self.bind_value(&target.name, &t);
-                Ok(out(Names::One([String::from(target.name)]), t))
+                Ok(out(Names::One([target.name]), t))
             }
             StmtKind::Destructure { targets, value } => {
                 let t = self.expr(value)?;
@@ -199,7 +200,7 @@ impl<'a> Interp<'a> {
                 for (target, b) in targets.iter().zip(&bound) {
                     self.bind_value(&target.name, b);
                 }
-                let names = Names::Many(targets.iter().map(|t| String::from(t.name)).collect());
+                let names = Names::Many(targets.iter().map(|t| t.name).collect());
                 let ty = Ty::plain(Kind::tuple(bound.iter().map(|b| b.ty.kind).collect()));
                 let val = bound
                     .iter()
@@ -288,7 +289,7 @@ impl<'a> Interp<'a> {
             StmtKind::Derive { target } => {
                 let (chain, t) = self.derive(target)?;
                 self.bind_value(&target.name, &t);
-                let mut o = out(Names::One([String::from(target.name)]), t);
+                let mut o = out(Names::One([target.name]), t);
                 o.note = Some(format!("{} = {chain}", target.name));
                 Ok(o)
             }
