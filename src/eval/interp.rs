@@ -9,7 +9,7 @@ use crate::check::bind;
 use crate::check::rules::RuleError;
 use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
-use crate::syntax::ast::{Span, Stmt, StmtKind};
+use crate::syntax::ast::{Name, Span, Stmt, StmtKind};
 
 /// A checked (and, when running, evaluated) expression.
 ///
@@ -58,20 +58,20 @@ pub struct Outcome {
     pub labels: &'static [&'static str],
 }
 
-/// The names a statement bound, in order: read as a slice of names (the
-/// syntax tree's interned text, so naming allocates nothing). One name
-/// (the common `x = ..`) is held without a vector.
+/// The names a statement bound, in order: read as a slice of names. One
+/// name (the common `x = ..`) is held without a second allocation, and
+/// names are the syntax tree's interned handles (no copy of the text).
 #[derive(Debug, Clone)]
 pub enum Names {
     /// `x = ..`, `derive T_ab`.
-    One([&'static str; 1]),
+    One([Name; 1]),
     /// None (a bare expression) or several (`(a, b) = ..`).
-    Many(Vec<&'static str>),
+    Many(Vec<Name>),
 }
 
 impl Names {
     /// The names as a slice.
-    pub fn as_slice(&self) -> &[&'static str] {
+    pub fn as_slice(&self) -> &[Name] {
         match self {
             Names::One(n) => n,
             Names::Many(v) => v,
@@ -80,8 +80,8 @@ impl Names {
 }
 
 impl std::ops::Deref for Names {
-    type Target = [&'static str];
-    fn deref(&self) -> &[&'static str] {
+    type Target = [Name];
+    fn deref(&self) -> &[Name] {
         self.as_slice()
     }
 }
@@ -187,7 +187,7 @@ impl<'a> Interp<'a> {
                 crate::check::rules::settle_in_place(&mut t.ty);
                 self.bind_checked(target.name, &mut t, target.span, value.span)?;
                 self.bind_value(&target.name, &t);
-                Ok(out(Names::One([target.name.as_str()]), t))
+                Ok(out(Names::One([target.name]), t))
             }
             StmtKind::Destructure { targets, value } => {
                 let t = self.expr(value)?;
@@ -200,7 +200,7 @@ impl<'a> Interp<'a> {
                 for (target, b) in targets.iter().zip(&bound) {
                     self.bind_value(&target.name, b);
                 }
-                let names = Names::Many(targets.iter().map(|t| t.name.as_str()).collect());
+                let names = Names::Many(targets.iter().map(|t| t.name).collect());
                 let ty = Ty::plain(Kind::tuple(bound.iter().map(|b| b.ty.kind).collect()));
                 let val = bound
                     .iter()
@@ -289,7 +289,7 @@ impl<'a> Interp<'a> {
             StmtKind::Derive { target } => {
                 let (chain, t) = self.derive(target)?;
                 self.bind_value(&target.name, &t);
-                let mut o = out(Names::One([target.name.as_str()]), t);
+                let mut o = out(Names::One([target.name]), t);
                 o.note = Some(format!("{} = {chain}", target.name));
                 Ok(o)
             }

@@ -58,7 +58,7 @@ pub fn outcome(o: &Outcome, line: usize) -> Option<J> {
     }
     let name = match o.names.len() {
         0 => J::Null,
-        1 => json!(o.names[0]),
+        1 => json!(o.names[0].as_str()),
         _ => json!(format!("({})", o.names.join(", "))),
     };
     let ty = match o.val.as_deref() {

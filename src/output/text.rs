@@ -431,7 +431,7 @@ pub fn show_outcome(o: &Outcome, style: impl Into<Style>) -> String {
         }
         (1, _) => {
             let mut prefix = String::with_capacity(o.names[0].len() + 3);
-            prefix.push_str(o.names[0]);
+            prefix.push_str(&o.names[0]);
             prefix.push_str(" = ");
             write_value(&mut out, &prefix, &o.ty, v, style);
         }

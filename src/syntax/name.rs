@@ -5,18 +5,20 @@
 //! when their handles are; the text reads as a `&str` without a lookup.
 
 use std::borrow::Borrow;
-use std::collections::HashSet;
+use std::collections::HashMap;
 use std::fmt;
 use std::hash::{Hash, Hasher};
 use std::sync::{LazyLock, Mutex};
 
-/// A name as written (a variable, function, member or type name), interned.
+/// A name as written (a variable, function, member or type name), interned:
+/// one pointer (8 bytes, so that an identifier in the tree is no larger
+/// than its span and handle).
 #[derive(Clone, Copy)]
-pub struct Name(&'static str);
+pub struct Name(&'static String);
 
 /// Every name seen so far; each text is kept (leaked) once, so a session
 /// holds one copy of each distinct name it was given.
-static TABLE: LazyLock<Mutex<HashSet<&'static str, foldhash::fast::FixedState>>> =
+static TABLE: LazyLock<Mutex<HashMap<&'static str, Name, foldhash::fast::FixedState>>> =
     LazyLock::new(Mutex::default);
 
 impl Name {
@@ -24,17 +26,18 @@ impl Name {
     pub fn new(text: &str) -> Name {
         // The table is only added to, so it is whole even after a panic.
         let mut table = TABLE.lock().unwrap_or_else(|e| e.into_inner());
-        if let Some(&kept) = table.get(text) {
-            return Name(kept);
+        if let Some(&name) = table.get(text) {
+            return name;
         }
-        let kept: &'static str = Box::leak(text.to_owned().into_boxed_str());
-        table.insert(kept);
-        Name(kept)
+        let kept: &'static String = Box::leak(Box::new(text.to_owned()));
+        let name = Name(kept);
+        table.insert(kept.as_str(), name);
+        name
     }
 
     /// The name's text.
     pub fn as_str(self) -> &'static str {
-        self.0
+        self.0.as_str()
     }
 }
 
@@ -110,7 +113,7 @@ impl Eq for Name {}
 impl Hash for Name {
     fn hash<H: Hasher>(&self, state: &mut H) {
         // As `str` hashes, so that `Borrow<str>` lookups agree.
-        self.0.hash(state);
+        self.as_str().hash(state);
     }
 }
 
@@ -122,38 +125,38 @@ impl PartialOrd for Name {
 
 impl Ord for Name {
     fn cmp(&self, other: &Name) -> std::cmp::Ordering {
-        self.0.cmp(other.0)
+        self.as_str().cmp(other.as_str())
     }
 }
 
 impl std::ops::Deref for Name {
     type Target = str;
     fn deref(&self) -> &str {
-        self.0
+        self.as_str()
     }
 }
 
 impl AsRef<str> for Name {
     fn as_ref(&self) -> &str {
-        self.0
+        self.as_str()
     }
 }
 
 impl Borrow<str> for Name {
     fn borrow(&self) -> &str {
-        self.0
+        self.as_str()
     }
 }
 
 impl fmt::Display for Name {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.0)
+        f.write_str(self.as_str())
     }
 }
 
 impl fmt::Debug for Name {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        fmt::Debug::fmt(self.0, f)
+        fmt::Debug::fmt(self.as_str(), f)
     }
 }
 
@@ -167,37 +170,37 @@ impl From<Name> for String {
     /// The text as an owned string (quicker than `to_string`, which
     /// goes through `Display`).
     fn from(name: Name) -> String {
-        name.0.to_owned()
+        name.0.clone()
     }
 }
 
 impl PartialEq<str> for Name {
     fn eq(&self, other: &str) -> bool {
-        self.0 == other
+        self.as_str() == other
     }
 }
 
 impl PartialEq<&str> for Name {
     fn eq(&self, other: &&str) -> bool {
-        self.0 == *other
+        self.as_str() == *other
     }
 }
 
 impl PartialEq<String> for Name {
     fn eq(&self, other: &String) -> bool {
-        self.0 == other
+        self.as_str() == other
     }
 }
 
 impl PartialEq<Name> for String {
     fn eq(&self, other: &Name) -> bool {
-        self == other.0
+        self == other.as_str()
     }
 }
 
 impl PartialEq<Name> for str {
     fn eq(&self, other: &Name) -> bool {
-        self == other.0
+        self == other.as_str()
     }
 }
 

@@ -265,10 +265,20 @@ impl P<'_> {
 
     /// `bare_call` for the name at `start..end`: `sin θ`, `cos 30°`. `None`
     /// when it does not match (the grammar tries the next alternative).
+    #[inline(always)]
     fn bare_call(&mut self, start: usize, end: usize) -> Option<Built> {
-        if !is_bare_fn(&self.s[start..end]) || !self.byte(end).is_some_and(super::is_ws) {
+        if !matches!(end - start, 3 | 4)
+            || !self.byte(end).is_some_and(super::is_ws)
+            || !is_bare_fn(&self.s[start..end])
+        {
             return None;
         }
+        self.bare_call_arg(start, end)
+    }
+
+    /// [`Self::bare_call`] once the name is a bare function and a space
+    /// follows it.
+    fn bare_call_arg(&mut self, start: usize, end: usize) -> Option<Built> {
         self.pos = end;
         self.ws();
         let at = self.pos;
