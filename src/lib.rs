@@ -12,13 +12,16 @@
 //! eval          the environment, the interpreter and its one operation
 //!               seam (`eval::apply::Op`: rule, numbers, exact and symbolic
 //!               forms of each operation); substitution, derive
-//! builtins      the one table of builtin functions (help and completion use it)
+//! builtins      the one table of builtin functions (help and completion
+//!               use it); rows compute through `lie::group`'s types
 //! values        runtime values (`values::num::Num`: fixed-size shapes),
-//!               symbols, the language's arithmetic, numbers as text
+//!               symbols, the language's arithmetic (its errors:
+//!               `values::error::OpError`), numbers as text
 //! check         kinds and frame tags (interned frame names), inferred
 //!               without evaluating: the frame algebra
 //! syntax        the pest grammar (`grammar/chasles.pest`), the fast parser
-//!               that agrees with it, and the AST
+//!               that agrees with it, and the AST (names interned:
+//!               `syntax::name::Name`)
 //! diagnostics   errors and warnings as data, and their rendering
 //! span          byte spans and line numbers
 //! lie, mech,    SO(3), SE(3), SO(2), SE(2) (free functions and the group
@@ -28,7 +31,11 @@
 //! ```
 //!
 //! Each layer imports only layers below it in this list (`draw` imports
-//! `values` and `check`; `session` drives `draw`).
+//! `values` and `check`; `session` drives `draw`). Each stage has one error
+//! type: `syntax` and everything from `eval` up report a
+//! `diagnostics::Diagnostic`; `check` a `check::error::RuleError`,
+//! `builtins` an `ArgError`, `values` an `OpError`, `mech` a `MechError`,
+//! each turned into a `Diagnostic` in one place.
 //!
 //! - [`syntax`]: the pest grammar and the AST with spans;
 //! - [`check`]: kinds and frame tags, inferred without evaluating;

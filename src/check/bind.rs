@@ -11,7 +11,7 @@ use crate::diagnostics::ErrorKind;
 use crate::syntax::ident::{NameFrames, base_name, name_frames, tagged_name};
 
 /// What a binding's name says about its value, read once per name (the
-/// environment keeps it): the book's letter ([`book_letter`]) and the
+/// environment keeps it): the book's letter (`book_letter`) and the
 /// frames of its subscript (LANGUAGE.md §2). `Copy`, so binding a name
 /// again reads nothing.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -118,7 +118,7 @@ fn book_letter(name: &str) -> Option<char> {
 
 /// The book's letters name the kind of a plain 6-vector: `V` a twist, `S`
 /// or `B` a screw axis, `F` a wrench (§3.3.2, §3.4) — for the book's names
-/// only ([`book_letter`]).
+/// only (`book_letter`).
 pub fn named_kind(name: &str, kind: &Kind) -> Kind {
     Claim::of(name).vector_kind(*kind)
 }

@@ -66,7 +66,7 @@ pub struct Operand<'a> {
 pub enum Form<'a> {
     /// `inv(X)`, with its argument `X`.
     Inverse(Operand<'a>),
-    /// `Ad(T)` or `Adjoint(T)`, the adjoint map [Ad_T] (Definition 3.20),
+    /// `Ad(T)` or `Adjoint(T)`, the adjoint map \[Ad_T\] (Definition 3.20),
     /// with its argument `T`.
     Adjoint(Operand<'a>),
     /// `X.T` (also written `X^T`, `Xᵀ`) or `transpose(X)`, with `X`.

@@ -19,7 +19,7 @@
 //! | `u_a + v_a`, `cross`    | same frame                | frame error                   |
 //! | untagged operand        | matches anything          |                               |
 //!
-//! Products (`*`) live in [`super::product`] and are re-exported here as
+//! Products (`*`) live in `super::product` and are re-exported here as
 //! [`mul`]. The functions know only [`Ty`]s; the interpreter attaches spans and
 //! source text to the [`RuleError`]s they return.
 

@@ -51,7 +51,7 @@ pub trait LieGroup: Sized + Copy {
     fn exp(v: &Self::Tangent) -> Self;
     /// The logarithm: §3.2.3.3 for SO(3), §3.3.3.2 for SE(3).
     fn log(&self) -> Self::Tangent;
-    /// The adjoint Ad_g: R itself for SO(3), [Ad_T] (3.83) for SE(3).
+    /// The adjoint Ad_g: R itself for SO(3), \[Ad_T\] (3.83) for SE(3).
     fn adjoint(&self) -> Self::Adjoint;
 }
 

@@ -1,7 +1,7 @@
 //! Matrices of canonical expressions and the book's closed forms over them:
-//! Rodrigues' formula (3.51) for e^{[ω̂]θ}, Proposition 3.16 for e^{[S]θ}
+//! Rodrigues' formula (3.51) for e^{\[ω̂\]θ}, Proposition 3.16 for e^{\[S\]θ}
 //! with G(θ), inverses by transpose (3.23 and the SE(3) inverse of
-//! §3.3.1), the adjoint (Definition 3.20), [x] (3.30), det and trace.
+//! §3.3.1), the adjoint (Definition 3.20), \[x\] (3.30), det and trace.
 
 use super::coef::Coef;
 use super::expr::Expr;
@@ -195,7 +195,7 @@ fn det(m: &Mat) -> Expr {
     }
 }
 
-/// [x] (3.30): the skew-symmetric matrix of a 3-vector.
+/// \[x\] (3.30): the skew-symmetric matrix of a 3-vector.
 pub fn skew(w: &[Expr]) -> Mat {
     let z = Expr::zero;
     Mat::from_rows(vec![
@@ -215,7 +215,7 @@ pub fn unskew(m: &Mat) -> Vec<Expr> {
     ]
 }
 
-/// [V] (3.70): the se(3) matrix of a twist (ω, v).
+/// \[V\] (3.70): the se(3) matrix of a twist (ω, v).
 pub fn twist_matrix(v: &[Expr]) -> Mat {
     let mut m = Mat::zeros(4, 4);
     m.put(0, 0, &skew(&v[..3]));
@@ -276,7 +276,7 @@ fn axis_angle(ks: &[Coef], theta: &Expr) -> Option<(Vec<Expr>, Expr, Expr)> {
     Some((axis, theta.scale(&n), Expr::constant(inv)))
 }
 
-/// e^{[ω]θ} of an so(3) matrix whose entries are multiples of one
+/// e^{\[ω\]θ} of an so(3) matrix whose entries are multiples of one
 /// expression θ (`[w] θ` with numeric w), by Rodrigues (3.51).
 pub fn exp3(m: &Mat) -> Option<Mat> {
     let w = unskew(m);
@@ -288,9 +288,9 @@ pub fn exp3(m: &Mat) -> Option<Mat> {
     Some(rodrigues(&axis, &angle))
 }
 
-/// e^{[S]θ} of an se(3) matrix whose entries are multiples of one
-/// expression θ, by Proposition 3.16: [e^{[ω]θ}, G(θ)v; 0, 1] with
-/// G(θ) = Iθ + (1 − cos θ)[ω] + (θ − sin θ)[ω]² for ‖ω‖ = 1, and
+/// e^{\[S\]θ} of an se(3) matrix whose entries are multiples of one
+/// expression θ, by Proposition 3.16: \[e^{\[ω\]θ}, G(θ)v; 0, 1\] with
+/// G(θ) = Iθ + (1 − cos θ)\[ω\] + (θ − sin θ)\[ω\]² for ‖ω‖ = 1, and
 /// [I, vθ; 0, 1] for ω = 0.
 pub fn exp6(m: &Mat) -> Option<Mat> {
     let mut entries = unskew(&m.block(0..3, 0..3));
@@ -350,7 +350,7 @@ pub fn trans_inv(t: &Mat) -> Option<Mat> {
     Some(rp_to_trans(&rt, &p))
 }
 
-/// [Ad_T] = [R, 0; [p]R, R] (Definition 3.20).
+/// \[Ad_T\] = \[R, 0; \[p\]R, R\] (Definition 3.20).
 pub fn adjoint(t: &Mat) -> Option<Mat> {
     let r = t.block(0..3, 0..3);
     let p = t.block(0..3, 3..4);

@@ -3,7 +3,7 @@
 //! [`expr`] holds the canonical form (trigonometric polynomials as Laurent
 //! polynomials in z = e^{iθ}, exact coefficients from [`coef`]), [`matrix`]
 //! the book's closed forms over it (Rodrigues, Proposition 3.16, the
-//! adjoint), and [`print`] the book's notation, its shorthand and LaTeX.
+//! adjoint), and `print` the book's notation, its shorthand and LaTeX.
 
 pub mod coef;
 pub mod diff;

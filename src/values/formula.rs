@@ -274,7 +274,7 @@ pub fn vector(parts: &[Value]) -> Option<Value> {
     Some(make(&Kind::Vector(Some(es.len())), Mat::column(es)))
 }
 
-/// `[ ... ]` with symbolic entries: the book's bracket [ω], [V] of one
+/// `[ ... ]` with symbolic entries: the book's bracket \[ω\], \[V\] of one
 /// vector (3.30, 3.70), a column for one row of scalars, else block
 /// concatenation (LANGUAGE.md §4).
 pub fn brackets(rows: &[Vec<Value>]) -> Result<Value, String> {

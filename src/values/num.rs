@@ -30,11 +30,11 @@ pub enum Num {
     V4(Vec4),
     /// A 6-vector: a twist V = (ω, v), screw axis S or wrench F (§3.3–3.4).
     V6(Vec6),
-    /// A 3×3 matrix: R ∈ SO(3), [ω] ∈ so(3), SE(2).
+    /// A 3×3 matrix: R ∈ SO(3), \[ω\] ∈ so(3), SE(2).
     M3(Mat3),
-    /// A 4×4 matrix: T ∈ SE(3) (3.62), [V] ∈ se(3) (3.71).
+    /// A 4×4 matrix: T ∈ SE(3) (3.62), \[V\] ∈ se(3) (3.71).
     M4(Mat4),
-    /// A 6×6 matrix: [Ad_T] (Definition 3.6), [ad_V] (3.82). Boxed so that
+    /// A 6×6 matrix: \[Ad_T\] (Definition 3.6), \[ad_V\] (3.82). Boxed so that
     /// a value stays small to move; it is rare next to 4×4 transforms.
     M6(Box<Mat6>),
     /// Any other shape (including 2×2, 2-vectors, rows and empty matrices).
