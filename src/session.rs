@@ -79,7 +79,16 @@ impl Report {
     }
 
     /// What goes to stderr: rendered warnings, and the error in text mode.
+    #[inline]
     pub fn stderr(&self, settings: &Settings, file: &str, src: &str) -> String {
+        // Nothing to render (most statements): no call, no loop.
+        if self.warnings.is_empty() && (self.result.is_ok() || settings.json) {
+            return String::new();
+        }
+        self.stderr_text(settings, file, src)
+    }
+
+    fn stderr_text(&self, settings: &Settings, file: &str, src: &str) -> String {
         let mut out = String::new();
         for w in &self.warnings {
             out.push_str(&render::text_from(w, file, src, self.anchor));
@@ -183,7 +192,11 @@ impl Session {
                     match &mut report.result {
                         Err(d) => add_habit_help(d, src),
                         Ok(o) => {
-                            if let Err(d) = self.picture(o, line) {
+                            // Only a picture has more to do (checked here,
+                            // without the call, for every other value).
+                            if matches!(o.val.as_deref(), Some(Value::Picture(_)))
+                                && let Err(d) = self.picture(o, line)
+                            {
                                 report.result = Err(d);
                             } else {
                                 report.warnings.extend(not_finite_warning(o));
