@@ -58,6 +58,13 @@ impl P<'_> {
             1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
         ];
         let s = self.s;
+        // One digit that nothing continues (`1` in `(1, 2, 3)`): its value.
+        if let Some(&d) = s.get(at)
+            && d.is_ascii_digit()
+            && !matches!(s.get(at + 1), Some(b'0'..=b'9' | b'.' | b'e' | b'E'))
+        {
+            return Some((f64::from(d - b'0'), at + 1));
+        }
         let mut m = 0u64;
         let mut digits = |mut i: usize| {
             while let Some(&b) = s.get(i)

@@ -242,6 +242,12 @@ proptest! {
 fn numbers_in_one_pass_are_the_numbers_in_two() {
     let texts = [
         "1",
+        "0",
+        "9",
+        "7e2",
+        "8E",
+        "4.",
+        "3.x",
         "12",
         "0.25",
         ".5",
@@ -263,7 +269,7 @@ fn numbers_in_one_pass_are_the_numbers_in_two() {
         "9007199254740993",
     ];
     for text in texts {
-        for tail in ["", ",", ")", " deg", ".T"] {
+        for tail in ["", ",", ")", " deg", ".T", "x", "_", "°", "[1]"] {
             let src = format!("{text}{tail}");
             let mut stack = super::Stack::default();
             let p = super::P {
