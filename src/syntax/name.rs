@@ -72,14 +72,16 @@ impl Recent {
                 .map(|w| u64::from_le_bytes(*w))
         };
         let key = match len {
-            1..=7 => word(start)
-                .map(|w| w & ((1 << (8 * len)) - 1))
-                .or_else(|| {
+            // Eight bytes from the name's start where the text has them
+            // (no call), else the name zero-padded.
+            1..=7 => match word(start) {
+                Some(w) => Some((w & ((1 << (8 * len)) - 1), 0)),
+                None => s.get(start..end).map(|t| {
                     let mut padded = [0; 8];
-                    padded[..len].copy_from_slice(s.get(start..end)?);
-                    Some(u64::from_le_bytes(padded))
-                })
-                .map(|w| (w, 0)),
+                    padded[..len].copy_from_slice(t);
+                    (u64::from_le_bytes(padded), 0)
+                }),
+            },
             8..=16 => word(start).zip(word(end - 8)),
             _ => None,
         };
