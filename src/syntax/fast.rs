@@ -100,6 +100,7 @@ pub(crate) fn parse_statement_with(chunk: &str, span: Span, stack: &mut Stack) -
 /// path take the statement (nested deeper than `FAST_DEPTH`, longer than
 /// `MAX_STATEMENT_BYTES`). Only called where the splitter stands at the
 /// start of a statement with nothing open.
+#[inline(always)]
 pub(crate) fn parse_statement_in(src: &str, from: usize, stack: &mut Stack) -> Option<Stmt> {
     let s = src.as_bytes();
     let mut start = from;
@@ -161,6 +162,7 @@ fn nesting(s: &[u8]) -> usize {
 /// source, as far as it goes: the statement spans its tokens, and
 /// `stack.stop` is where the parser stopped (after the whitespace that
 /// follows), `stack.spent` the budget it used.
+#[inline(always)]
 fn statement_in(text: &str, off: usize, stack: &mut Stack) -> Option<Stmt> {
     // Left over from a statement given up on.
     stack.items.clear();
