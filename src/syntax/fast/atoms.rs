@@ -150,16 +150,11 @@ impl P<'_> {
         let (mut e, mut d) = match first {
             b'(' => self.paren()?,
             b'[' => self.brackets()?,
-            _ => {
-                // A number takes no postfix operators.
-                if let Some(built) = self.numeric() {
-                    return built;
-                }
-                if matches!(first, b'0'..=b'9' | b'.') {
-                    return None;
-                }
-                self.word()?
-            }
+            // `numeric` starts with a digit, `.`, `pi` or `π` (0xCF);
+            // a number takes no postfix operators.
+            b'0'..=b'9' | b'.' => return self.numeric()?,
+            b'p' | 0xCF if let Some(built) = self.numeric() => return built,
+            _ => self.word()?,
         };
 
         // postfix = index | WHITESPACE* ~ (member | degrees | transpose_mark)
