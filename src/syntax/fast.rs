@@ -234,6 +234,7 @@ impl P<'_> {
         self.budget = self.budget.checked_sub(1)?;
         Some(())
     }
+    #[inline(always)]
     fn ident(&mut self, start: usize, end: usize) -> Ident {
         Ident {
             name: self.stack.names.name_in(self.src, start, end),
