@@ -53,6 +53,7 @@ impl P<'_> {
     /// The number literal at `at` and its end, as [`Self::number_at`] and
     /// [`number_value`] give them, in one pass over the digits of the
     /// common `12`, `0.25`, `.5` (those two for the rest).
+    #[inline(always)]
     pub(super) fn number_value_at(&self, at: usize) -> Option<(f64, usize)> {
         const POW10: [f64; 16] = [
             1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
@@ -384,6 +385,7 @@ impl P<'_> {
         self.stack.items.split_off(mark)
     }
 
+    #[inline(always)]
     pub(super) fn call_args(&mut self) -> Option<(Vec<Expr>, usize)> {
         self.spend()?;
         let (mark, d) = self.list_on_stack(b')', true)?;
