@@ -103,6 +103,7 @@ impl P<'_> {
     }
 
     /// `(number | pi) ~ (WHITESPACE* ~ degrees)*` at the current position.
+    #[inline(always)]
     pub(super) fn numeric(&mut self) -> Option<Built> {
         let start = self.pos;
         let (value, end) = match self.byte(start)? {
@@ -351,6 +352,7 @@ impl P<'_> {
     /// or `close` (`1` in `(1, 2)`, `T_ab` in `Ad(T_ab)`): the tree
     /// `expr(0)` builds for it, without the operator loop. `None` (position
     /// after whitespace) for anything else.
+    #[inline(always)]
     fn simple_item(&mut self, close: u8) -> Option<Expr> {
         self.ws();
         let start = self.pos;
