@@ -154,7 +154,7 @@ impl<'a> Interp<'a> {
 
     /// Binds a checked value to `name` (statements call this only after
     /// they have succeeded).
-    fn bind_value(&mut self, name: &str, t: &Typed) {
+    fn bind_value(&mut self, name: Name, t: &Typed) {
         self.env.set_value(name, &t.ty, t.val.as_deref());
     }
 
@@ -176,7 +176,7 @@ impl<'a> Interp<'a> {
                 let mut t = self.expr(e)?;
                 crate::check::rules::settle_in_place(&mut t.ty);
                 if t.ty.kind != Kind::Function {
-                    self.bind_value("ans", &t);
+                    self.bind_value(*super::env::ANS, &t);
                 }
                 let mut o = out(Names::Many(Vec::new()), t);
                 o.labels = self.part_labels(e);
@@ -186,7 +186,7 @@ impl<'a> Interp<'a> {
                 let mut t = self.expr(value)?;
                 crate::check::rules::settle_in_place(&mut t.ty);
                 self.bind_checked(target.name, &mut t, target.span, value.span)?;
-                self.bind_value(&target.name, &t);
+                self.bind_value(target.name, &t);
                 Ok(out(Names::One([target.name]), t))
             }
             StmtKind::Destructure { targets, value } => {
@@ -198,7 +198,7 @@ impl<'a> Interp<'a> {
                     bound.push(part);
                 }
                 for (target, b) in targets.iter().zip(&bound) {
-                    self.bind_value(&target.name, b);
+                    self.bind_value(target.name, b);
                 }
                 let names = Names::Many(targets.iter().map(|t| t.name).collect());
                 let ty = Ty::plain(Kind::tuple(bound.iter().map(|b| b.ty.kind).collect()));
@@ -238,7 +238,7 @@ impl<'a> Interp<'a> {
                         Value::Sym(super::value::Sym::Name(String::from(n.name)))
                     };
                     self.env.set(
-                        &n.name,
+                        n.name,
                         Binding {
                             ty: Ty::new(kind, frames),
                             val: Some(val),
@@ -266,7 +266,7 @@ impl<'a> Interp<'a> {
                 };
                 self.env
                     .fns
-                    .insert(String::from(name.name), std::rc::Rc::new(f));
+                    .insert(super::env::Key(name.name), std::rc::Rc::new(f));
                 let mut o = out(
                     Names::Many(Vec::new()),
                     Typed::new(Ty::plain(Kind::Function), None),
@@ -288,7 +288,7 @@ impl<'a> Interp<'a> {
             }
             StmtKind::Derive { target } => {
                 let (chain, t) = self.derive(target)?;
-                self.bind_value(&target.name, &t);
+                self.bind_value(target.name, &t);
                 let mut o = out(Names::One([target.name]), t);
                 o.note = Some(format!("{} = {chain}", target.name));
                 Ok(o)
@@ -348,7 +348,7 @@ impl<'a> Interp<'a> {
     fn part_labels(&self, e: &crate::syntax::ast::Expr) -> &'static [&'static str] {
         match &e.kind {
             crate::syntax::ast::ExprKind::Call { func, .. }
-                if !self.env.fns.contains_key(func.name.as_str()) =>
+                if self.env.func(func.name).is_none() =>
             {
                 crate::builtins::lookup(&func.name)
                     .and_then(|b| crate::builtins::parts::part_names(b.name))
@@ -491,11 +491,11 @@ impl Interp<'_> {
             )
             .with_help("given theta(t) : scalar"));
         }
-        let bound = self.env.get(&t.name).is_some_and(|b| !b.symbolic);
+        let bound = self.env.get(t.name).is_some_and(|b| !b.symbolic);
         if !bound {
             let time = crate::sym::Expr::symbol(crate::sym::Symbol::timed(&t.name));
             self.env.set(
-                &t.name,
+                t.name,
                 Binding {
                     ty: Ty::scalar(),
                     val: Some(super::formula::scalar(time)),

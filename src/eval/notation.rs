@@ -16,7 +16,7 @@ use super::value::Value;
 use crate::builtins::Builtin;
 use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
-use crate::syntax::ast::{BinOp, Expr, ExprKind, Span};
+use crate::syntax::ast::{BinOp, Expr, ExprKind, Name, Span};
 
 /// Whether `e` has an `I` whose size comes from around it (`I`, `2 I`,
 /// `-I`, `I + W`).
@@ -59,7 +59,7 @@ impl Interp<'_> {
         // (The environment is asked about `I` only when an operand has one.)
         let sized = in_lhs != in_rhs
             && !matches!(op, BinOp::Pow | BinOp::Div)
-            && self.env.get("I").is_none();
+            && self.env.get(*super::env::IDENTITY).is_none();
         if sized && in_lhs {
             let r = self.expr(rhs)?;
             let n = match (op, dims(&r)) {
@@ -100,7 +100,7 @@ impl Interp<'_> {
     /// is as tall as the others.
     pub(super) fn bracket_row(&mut self, row: &[Expr]) -> Result<Vec<Typed>, Diagnostic> {
         let free = |e: &Expr| mentions_identity(e);
-        let sized = self.env.get("I").is_none();
+        let sized = self.env.get(*super::env::IDENTITY).is_none();
         let mut out: Vec<Option<Typed>> = vec![None; row.len()];
         for (slot, e) in out.iter_mut().zip(row) {
             if !(sized && free(e)) {
@@ -162,7 +162,9 @@ impl Interp<'_> {
         rhs: &Expr,
         span: Span,
     ) -> Option<Result<Typed, Diagnostic>> {
-        if !matches!(&lhs.kind, ExprKind::Var(e) if e == "e") || self.env.get("e").is_some() {
+        if !matches!(&lhs.kind, ExprKind::Var(e) if e == "e")
+            || self.env.get(*super::env::EULER).is_some()
+        {
             return None;
         }
         let r = match self.probe(rhs) {
@@ -172,7 +174,7 @@ impl Interp<'_> {
         if r.ty.kind.maybe_scalar() {
             return None;
         }
-        Some(self.call("exp", lhs.span, std::slice::from_ref(rhs), span))
+        Some(self.call(Name::new("exp"), lhs.span, std::slice::from_ref(rhs), span))
     }
 
     /// `X[v]` with `v` a 3- or 6-vector: the book's `X [v]`, a product.
