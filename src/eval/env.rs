@@ -7,6 +7,7 @@ use std::rc::Rc;
 use std::sync::LazyLock;
 
 use super::value::{UserFn, Value};
+use crate::builtins::{self, Builtin};
 use crate::check::bind::Claim;
 use crate::check::ty::Ty;
 use crate::syntax::name::Name;
@@ -136,6 +137,17 @@ pub struct Binding {
     pub symbolic: bool,
 }
 
+/// The builtins called so far, by name (none where a name is no builtin).
+#[derive(Clone, Default)]
+struct Called(NameMap<Option<&'static Builtin>>);
+
+impl std::fmt::Debug for Called {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let names = self.0.iter().map(|(k, b)| (k.0, b.map(|b| b.name)));
+        f.debug_map().entries(names).finish()
+    }
+}
+
 /// All bindings of a session. Statements only insert after they succeed,
 /// so an error never leaves a partial change behind.
 #[derive(Debug, Clone, Default)]
@@ -147,6 +159,9 @@ pub struct Env {
     /// name's interned text is ([`Name`]: one text, one address), so a
     /// look-up hashes two words, not the text.
     claims: HashMap<(usize, usize), Claim, foldhash::fast::FixedState>,
+    /// The builtin each name called so far is ([`builtins::lookup`]), found
+    /// in the builtins' table the first time only.
+    builtins: Called,
     /// The types of the arguments of the builtin calls being checked, as a
     /// stack: each call pushes its own and pops them when it returns. Kept
     /// here so that its storage outlives one statement's interpreter.
@@ -219,6 +234,16 @@ impl Env {
     /// The texts of the user functions' names, in no order.
     pub fn fn_texts(&self) -> impl Iterator<Item = &'static str> + '_ {
         self.fns.keys().map(|k| k.0.as_str())
+    }
+    /// The builtin called `name` ([`builtins::lookup`]), looked up in the
+    /// table the first time only.
+    #[inline]
+    pub fn builtin(&mut self, name: Name) -> Option<&'static Builtin> {
+        *self
+            .builtins
+            .0
+            .entry(Key(name))
+            .or_insert_with(|| builtins::lookup(name.as_str()))
     }
     /// Names in sorted order (for `:vars` and derive's deterministic search).
     pub fn names(&self) -> Vec<Name> {

@@ -325,8 +325,9 @@ impl Interp<'_> {
         if let Some(f) = self.env.func(name).cloned() {
             return self.user_call(&f, args, span);
         }
+        let found = self.env.builtin(name);
         let name = name.as_str();
-        let Some(b) = builtins::lookup(name) else {
+        let Some(b) = found else {
             let mut d = Diagnostic::error(
                 ErrorKind::Name,
                 name_span,
