@@ -155,10 +155,8 @@ pub struct Env {
     pub vars: NameMap<Binding>,
     pub fns: NameMap<Rc<UserFn>>,
     /// What each name bound so far says about its value (the frames of its
-    /// subscript, its book letter), read once per name; keyed by where the
-    /// name's interned text is ([`Name`]: one text, one address), so a
-    /// look-up hashes two words, not the text.
-    claims: HashMap<(usize, usize), Claim, foldhash::fast::FixedState>,
+    /// subscript, its book letter), read once per name.
+    claims: NameMap<Claim>,
     /// The builtin each name called so far is ([`builtins::lookup`]), found
     /// in the builtins' table the first time only.
     builtins: Called,
@@ -207,14 +205,10 @@ impl Env {
     /// from the name the first time only.
     #[inline]
     pub fn claim(&mut self, name: Name) -> Claim {
-        let text = name.as_str();
-        let key = (text.as_ptr() as usize, text.len());
-        if let Some(c) = self.claims.get(&key) {
-            return *c;
-        }
-        let c = Claim::of(text);
-        self.claims.insert(key, c);
-        c
+        *self
+            .claims
+            .entry(Key(name))
+            .or_insert_with(|| Claim::of(name.as_str()))
     }
     /// Unbinds `name` (a function's parameter, a comprehension's variable,
     /// once its body is done).

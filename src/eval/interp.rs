@@ -331,8 +331,9 @@ impl<'a> Interp<'a> {
             }
         };
         let ty = t.ty.kind;
-        if ty != Kind::Unknown
-            && let Some(Value::Num { m, kind }) = t.val.as_deref_mut()
+        // (The value first: checking has none, and kinds compare by a call.)
+        if let Some(Value::Num { m, kind }) = t.val.as_deref_mut()
+            && ty != Kind::Unknown
         {
             if ty.is_group() && *kind != ty {
                 let owned = std::mem::replace(m, crate::values::num::Num::Scalar(0.0));
