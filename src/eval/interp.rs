@@ -311,25 +311,13 @@ impl<'a> Interp<'a> {
             return Ok(());
         }
         let claim = self.env.claim(name);
-        let ty = std::mem::replace(&mut t.ty, Ty::plain(Kind::Unknown));
-        t.ty = match bind::bind_claimed(&name, &claim, ty) {
-            Ok(b) => {
-                if let Some(w) = b.warning {
-                    self.rule_warning(*w, value_span, name_span);
-                }
-                b.ty
+        match bind::bind_in_place(&name, &claim, &mut t.ty) {
+            Ok(None) => {}
+            Ok(Some(w)) => self.rule_warning(*w, value_span, name_span),
+            Err(e) => {
+                self.rule_failure(*e, value_span, Some(name_span), Some(value_span), None)?;
             }
-            Err(r) => {
-                self.rule_failure(
-                    *r.error,
-                    value_span,
-                    Some(name_span),
-                    Some(value_span),
-                    None,
-                )?;
-                r.ty
-            }
-        };
+        }
         let ty = t.ty.kind;
         // (The value first: checking has none, and kinds compare by a call.)
         if let Some(Value::Num { m, kind }) = t.val.as_deref_mut()
