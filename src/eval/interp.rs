@@ -24,6 +24,7 @@ pub struct Typed {
 
 impl Typed {
     /// A checked expression and, when running, its value.
+    #[inline]
     pub fn new(ty: Ty, val: Option<Value>) -> Typed {
         Typed {
             ty,

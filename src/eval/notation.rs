@@ -251,7 +251,12 @@ impl Interp<'_> {
     /// A builtin given one tuple (or vector: `(a, b, c)` of scalars)
     /// whose parts fit its arguments: the parts.
     /// `Err(one)` when they do not.
+    #[inline]
     pub(super) fn spread(&self, b: &Builtin, one: Typed) -> Result<Vec<Typed>, Typed> {
+        // Only a tuple or a vector has parts (most arguments are neither).
+        if !matches!(one.ty.kind, Kind::Tuple(_) | Kind::Vector(Some(_))) {
+            return Err(one);
+        }
         let parts = parts(&one);
         if parts.len() < 2 || b.check(std::slice::from_ref(&one.ty)).is_ok() {
             return Err(one);
