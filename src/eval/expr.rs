@@ -312,6 +312,10 @@ impl Interp<'_> {
             ),
             _ => None,
         };
+        // Checking: nothing to refine or box.
+        if val.is_none() {
+            return Ok(Typed { ty, val: None });
+        }
         Ok(Typed::new(refine(ty, &val), val))
     }
 
