@@ -20,7 +20,18 @@ use crate::syntax::ast::{BinOp, Expr, ExprKind, Name, Span};
 
 /// Whether `e` has an `I` whose size comes from around it (`I`, `2 I`,
 /// `-I`, `I + W`).
+#[inline]
 fn mentions_identity(e: &Expr) -> bool {
+    match &e.kind {
+        // Most operands: a name that is not `I`, a number, a call.
+        ExprKind::Var(name) => name == "I",
+        ExprKind::Unary { .. } | ExprKind::Binary { .. } => mentions_identity_in(e),
+        _ => false,
+    }
+}
+
+/// [`mentions_identity`] of a unary or binary operation.
+fn mentions_identity_in(e: &Expr) -> bool {
     match &e.kind {
         ExprKind::Var(name) => name == "I",
         ExprKind::Unary { operand, .. } => mentions_identity(operand),
