@@ -156,12 +156,26 @@ pub struct Refused {
 
 /// [`bind`] with the name's [`Claim`] already read, taking the type.
 pub fn bind_claimed(name: &str, claim: &Claim, ty: Ty) -> Result<Bound, Refused> {
+    let mut ty = ty;
+    match bind_in_place(name, claim, &mut ty) {
+        Ok(warning) => Ok(Bound { ty, warning }),
+        Err(error) => Err(Refused { error, ty }),
+    }
+}
+
+/// [`bind_claimed`] on the type in place (no copy of it): bound, `ty` is
+/// the binding's type and the result the warning if there is one; refused,
+/// `ty` is the type the name gives the value ([`Refused::ty`]) and the
+/// result the frame error.
+pub fn bind_in_place(
+    name: &str,
+    claim: &Claim,
+    ty: &mut Ty,
+) -> Result<Option<Box<RuleError>>, Box<RuleError>> {
     let kind = claim.kind_for(ty.kind);
     if matches!(kind, Kind::Scalar) {
-        return Ok(Bound {
-            ty: Ty::new(kind, Frames::None),
-            warning: None,
-        });
+        *ty = Ty::new(kind, Frames::None);
+        return Ok(None);
     }
     let claim = claim.frames_for(&kind);
     let mut warning = None;
@@ -187,19 +201,15 @@ pub fn bind_claimed(name: &str, claim: &Claim, ty: Ty) -> Result<Bound, Refused>
         }
         (Frames::One(x), Frames::One(a) | Frames::Disp(a)) if x == a => ty.frames,
         _ => {
-            return Err(Refused {
-                error: Box::new(mismatch(name, &claim, &ty.frames)),
-                ty: Ty::new(kind, claim),
-            });
+            let error = Box::new(mismatch(name, &claim, &ty.frames));
+            *ty = Ty::new(kind, claim);
+            return Err(error);
         }
     };
-    let bound = Ty {
-        kind,
-        frames,
-        algebra: ty.algebra,
-        moves: ty.moves,
-    };
-    Ok(Bound { ty: bound, warning })
+    // The algebra and moves stay as they were.
+    ty.kind = kind;
+    ty.frames = frames;
+    Ok(warning)
 }
 
 fn mismatch(name: &str, claim: &Frames, frames: &Frames) -> RuleError {

@@ -28,7 +28,7 @@ use super::error::same_frame_error;
 pub use super::error::{Operands, RuleError, describe};
 use super::product::dims_agree;
 pub use super::product::mul;
-use super::ty::{Frames, Kind, Ty};
+use super::ty::{Frame, Frames, Kind, Ty};
 
 /// What multiplying by a scalar does to a kind ([`Kind::scaled`]).
 pub fn scaled_kind(kind: &Kind) -> Kind {
@@ -306,21 +306,31 @@ pub fn member(t: &Ty, name: &str) -> Result<Ty, RuleError> {
 /// scalar none, a vector or so(3)/se(3) matrix one frame ([`settled`]); a
 /// vector of a map between two frames (`se3ToVec(T_ab * [V_b])`) is a frame
 /// error.
-pub fn settle(t: &Ty, name: &str) -> Result<Ty, RuleError> {
-    let mut settled = *t;
+#[inline]
+pub fn settle(t: Ty, name: &str) -> Result<Ty, RuleError> {
+    let mut settled = t;
     settle_in_place(&mut settled);
-    if let (true, Frames::Pair(a, b)) = (one_frame_kind(&t.kind), &settled.frames) {
-        let mut e = RuleError::frame(format!(
-            "{name} gives {}, a quantity in one frame, but its argument maps {{{b}}} to {{{a}}}",
-            t.kind.a()
-        ));
-        e.lhs = describe(&t.frames);
-        e.help = Some(format!(
-            "a twist [V_{a}] in {{{a}}} is T [V_{b}] T⁻¹ (3.77), not T [V_{b}]; a transform's own coordinates are log(T_{a}{b}) (in {{{a}}})"
-        ));
-        return Err(e);
+    // Frames still a pair after settling are the type's own (settling only
+    // ever makes them one frame or none), and so is its kind.
+    if let (true, Frames::Pair(a, b)) = (one_frame_kind(&settled.kind), &settled.frames) {
+        return Err(unsettled(&settled.kind, &settled.frames, *a, *b, name));
     }
     Ok(settled)
+}
+
+/// [`settle`]'s refusal: a one-frame `kind` of a map from {b} to {a}.
+#[cold]
+#[inline(never)]
+fn unsettled(kind: &Kind, frames: &Frames, a: Frame, b: Frame, name: &str) -> RuleError {
+    let mut e = RuleError::frame(format!(
+        "{name} gives {}, a quantity in one frame, but its argument maps {{{b}}} to {{{a}}}",
+        kind.a()
+    ));
+    e.lhs = describe(frames);
+    e.help = Some(format!(
+        "a twist [V_{a}] in {{{a}}} is T [V_{b}] T⁻¹ (3.77), not T [V_{b}]; a transform's own coordinates are log(T_{a}{b}) (in {{{a}}})"
+    ));
+    e
 }
 
 fn one_frame_kind(k: &Kind) -> bool {

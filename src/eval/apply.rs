@@ -360,7 +360,7 @@ fn call_rule(b: &Builtin, args: &[Ty]) -> Result<Ty, RuleError> {
         arg: e.arg.and_then(|i| u16::try_from(i).ok()),
         ..RuleError::default()
     })?;
-    rules::settle(&ty, b.name)
+    rules::settle(ty, b.name)
 }
 
 /// [`Op::Block`] on numbers given its entries row by row: the rows, then

@@ -62,9 +62,8 @@ impl Interp<'_> {
         for i in items {
             ts.push(self.expr(i)?);
         }
-        let all_scalar = ts
-            .iter()
-            .all(|t| t.ty.kind.maybe_scalar() && t.ty.kind == Kind::Scalar);
+        // (A pattern, not `==`: kinds compare by a call.)
+        let all_scalar = ts.iter().all(|t| matches!(t.ty.kind, Kind::Scalar));
         if all_scalar {
             let ty = Ty::plain(Kind::Vector(Some(ts.len())));
             let val = match ts

@@ -65,7 +65,7 @@ impl Interp<'_> {
                 },
             ));
         }
-        let itself = self.env.get(&target.name).map(|_| {
+        let itself = self.env.get(target.name).map(|_| {
             vec![Step {
                 name: String::from(target.name),
                 inverted: false,
@@ -102,14 +102,19 @@ impl Interp<'_> {
             })
             .collect::<Vec<_>>()
             .join(" * ");
-        let kind = self.env.vars[&steps[0].name].ty.kind;
+        let kind = self
+            .env
+            .get(&steps[0].name)
+            .expect("a step is a bound name")
+            .ty
+            .kind;
         let ty = Ty::new(kind, Frames::Pair(Frame::named(&from), Frame::named(&to)));
         if self.mode == super::env::Mode::Check {
             return Ok((text, Typed::new(ty, None)));
         }
         let mut acc: Option<Value> = None;
         for s in &steps {
-            let b = &self.env.vars[&s.name];
+            let b = self.env.get(&s.name).expect("a step is a bound name");
             let v = super::substitute::current(b, self.env).ok_or_else(|| {
                 Diagnostic::error(
                     ErrorKind::Name,

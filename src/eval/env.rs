@@ -2,16 +2,92 @@
 //! and, when running, their value; user functions; settings.
 
 use std::collections::HashMap;
+use std::hash::{Hash, Hasher};
 use std::rc::Rc;
+use std::sync::LazyLock;
 
 use super::value::{UserFn, Value};
+use crate::builtins::{self, Builtin};
 use crate::check::bind::Claim;
 use crate::check::ty::Ty;
 use crate::syntax::name::Name;
 
-/// A map keyed by names, with a hash fast on short keys (foldhash's
-/// fixed-seed hasher: a session's names are not adversarial).
-pub type NameMap<V> = HashMap<String, V, foldhash::fast::FixedState>;
+/// A map keyed by names, each hashed and compared by where its interned
+/// text is ([`Name`]: one text, one address), so that a look-up hashes one
+/// word, not the text (foldhash's fixed-seed hasher: a session's names are
+/// not adversarial).
+pub type NameMap<V> = HashMap<Key, V, foldhash::fast::FixedState>;
+
+/// A name as a key of a [`NameMap`]: equal, and hashed alike, exactly when
+/// the names are the same (`Name`'s own hash reads the text, to agree with
+/// its `Borrow<str>`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub struct Key(pub Name);
+
+impl Hash for Key {
+    #[inline]
+    fn hash<H: Hasher>(&self, state: &mut H) {
+        state.write_usize(self.0.as_str().as_ptr() as usize);
+    }
+}
+
+/// Anything that names a binding: a [`Name`] (no look-up) or a text (found
+/// in, or added to, the table of names first).
+pub trait AsKey {
+    /// The key of the name.
+    fn key(self) -> Key;
+}
+
+impl AsKey for Name {
+    #[inline]
+    fn key(self) -> Key {
+        Key(self)
+    }
+}
+
+impl AsKey for &Name {
+    #[inline]
+    fn key(self) -> Key {
+        Key(*self)
+    }
+}
+
+impl AsKey for &str {
+    #[inline]
+    fn key(self) -> Key {
+        Key(Name::new(self))
+    }
+}
+
+impl AsKey for &String {
+    #[inline]
+    fn key(self) -> Key {
+        Key(Name::new(self))
+    }
+}
+
+impl AsKey for Key {
+    #[inline]
+    fn key(self) -> Key {
+        self
+    }
+}
+
+impl AsKey for &Key {
+    #[inline]
+    fn key(self) -> Key {
+        *self
+    }
+}
+
+/// `ans`, the name an expression statement binds its value to.
+pub static ANS: LazyLock<Name> = LazyLock::new(|| Name::new("ans"));
+
+/// `I`, the identity, unless the session binds the name.
+pub static IDENTITY: LazyLock<Name> = LazyLock::new(|| Name::new("I"));
+
+/// `e`, Euler's number, unless the session binds the name.
+pub static EULER: LazyLock<Name> = LazyLock::new(|| Name::new("e"));
 
 /// What to do with a frame mismatch (`--frames strict|warn|off`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -61,6 +137,17 @@ pub struct Binding {
     pub symbolic: bool,
 }
 
+/// The builtins called so far, by name (none where a name is no builtin).
+#[derive(Clone, Default)]
+struct Called(NameMap<Option<&'static Builtin>>);
+
+impl std::fmt::Debug for Called {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let names = self.0.iter().map(|(k, b)| (k.0, b.map(|b| b.name)));
+        f.debug_map().entries(names).finish()
+    }
+}
+
 /// All bindings of a session. Statements only insert after they succeed,
 /// so an error never leaves a partial change behind.
 #[derive(Debug, Clone, Default)]
@@ -68,10 +155,11 @@ pub struct Env {
     pub vars: NameMap<Binding>,
     pub fns: NameMap<Rc<UserFn>>,
     /// What each name bound so far says about its value (the frames of its
-    /// subscript, its book letter), read once per name; keyed by where the
-    /// name's interned text is ([`Name`]: one text, one address), so a
-    /// look-up hashes two words, not the text.
-    claims: HashMap<(usize, usize), Claim, foldhash::fast::FixedState>,
+    /// subscript, its book letter), read once per name.
+    claims: NameMap<Claim>,
+    /// The builtin each name called so far is ([`builtins::lookup`]), found
+    /// in the builtins' table the first time only.
+    builtins: Called,
     /// The types of the arguments of the builtin calls being checked, as a
     /// stack: each call pushes its own and pops them when it returns. Kept
     /// here so that its storage outlives one statement's interpreter.
@@ -80,24 +168,19 @@ pub struct Env {
 
 impl Env {
     #[inline]
-    pub fn get(&self, name: &str) -> Option<&Binding> {
-        self.vars.get(name)
+    pub fn get(&self, name: impl AsKey) -> Option<&Binding> {
+        self.vars.get(&name.key())
     }
     #[inline]
-    pub fn set(&mut self, name: &str, b: Binding) {
-        // Rebinding a name (the common case in a long script) keeps its key.
-        match self.vars.get_mut(name) {
-            Some(old) => *old = b,
-            None => {
-                self.vars.insert(name.to_string(), b);
-            }
-        }
+    pub fn set(&mut self, name: impl AsKey, b: Binding) {
+        self.vars.insert(name.key(), b);
     }
     /// Binds `name` to a copy of a checked value (not a `given` symbol),
     /// reusing the old binding's storage when the name is bound already.
     #[inline]
-    pub fn set_value(&mut self, name: &str, ty: &Ty, val: Option<&Value>) {
-        match self.vars.get_mut(name) {
+    pub fn set_value(&mut self, name: impl AsKey, ty: &Ty, val: Option<&Value>) {
+        let key = name.key();
+        match self.vars.get_mut(&key) {
             Some(old) => {
                 old.ty = *ty;
                 match (&mut old.val, val) {
@@ -114,7 +197,7 @@ impl Env {
                     val: val.cloned(),
                     symbolic: false,
                 };
-                self.vars.insert(name.to_string(), b);
+                self.vars.insert(key, b);
             }
         }
     }
@@ -122,18 +205,43 @@ impl Env {
     /// from the name the first time only.
     #[inline]
     pub fn claim(&mut self, name: Name) -> Claim {
-        let text = name.as_str();
-        let key = (text.as_ptr() as usize, text.len());
-        if let Some(c) = self.claims.get(&key) {
-            return *c;
-        }
-        let c = Claim::of(text);
-        self.claims.insert(key, c);
-        c
+        *self
+            .claims
+            .entry(Key(name))
+            .or_insert_with(|| Claim::of(name.as_str()))
+    }
+    /// Unbinds `name` (a function's parameter, a comprehension's variable,
+    /// once its body is done).
+    #[inline]
+    pub fn remove(&mut self, name: impl AsKey) {
+        self.vars.remove(&name.key());
+    }
+    /// The user function `name`, if there is one.
+    #[inline]
+    pub fn func(&self, name: impl AsKey) -> Option<&Rc<UserFn>> {
+        self.fns.get(&name.key())
+    }
+    /// The texts of the bound names, in no order.
+    pub fn var_texts(&self) -> impl Iterator<Item = &'static str> + '_ {
+        self.vars.keys().map(|k| k.0.as_str())
+    }
+    /// The texts of the user functions' names, in no order.
+    pub fn fn_texts(&self) -> impl Iterator<Item = &'static str> + '_ {
+        self.fns.keys().map(|k| k.0.as_str())
+    }
+    /// The builtin called `name` ([`builtins::lookup`]), looked up in the
+    /// table the first time only.
+    #[inline]
+    pub fn builtin(&mut self, name: Name) -> Option<&'static Builtin> {
+        *self
+            .builtins
+            .0
+            .entry(Key(name))
+            .or_insert_with(|| builtins::lookup(name.as_str()))
     }
     /// Names in sorted order (for `:vars` and derive's deterministic search).
-    pub fn names(&self) -> Vec<&String> {
-        let mut v: Vec<&String> = self.vars.keys().collect();
+    pub fn names(&self) -> Vec<Name> {
+        let mut v: Vec<Name> = self.vars.keys().map(|k| k.0).collect();
         v.sort();
         v
     }

@@ -11,7 +11,7 @@ use crate::check::error::Operand;
 use crate::check::rules::{self, Operands};
 use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind, suggest};
-use crate::syntax::ast::{BinOp, Expr, ExprKind, Span, UnOp};
+use crate::syntax::ast::{BinOp, Expr, ExprKind, Name, Span, UnOp};
 
 fn strip(t: &Ty) -> Ty {
     Ty::plain(t.kind)
@@ -92,7 +92,7 @@ impl Interp<'_> {
                 Ty::plain(Kind::Bool),
                 self.running().then_some(Value::Bool(*b)),
             )),
-            ExprKind::Var(name) => self.var(name, e.span),
+            ExprKind::Var(name) => self.var(*name, e.span),
             ExprKind::Unary { op, operand } => {
                 let t = self.expr(operand)?;
                 if *op == UnOp::Pos {
@@ -141,7 +141,7 @@ impl Interp<'_> {
                 op_span,
                 ..
             } => self.binary(*op, lhs, rhs, *op_span, e.span),
-            ExprKind::Call { func, args } => self.call(&func.name, func.span, args, e.span),
+            ExprKind::Call { func, args } => self.call(func.name, func.span, args, e.span),
             ExprKind::Member { base, member } => {
                 let t = self.expr(base)?;
                 let Some(op) = Op::member(&member.name) else {
@@ -181,7 +181,7 @@ impl Interp<'_> {
         }
     }
 
-    fn var(&mut self, name: &str, span: Span) -> Result<Typed, Diagnostic> {
+    fn var(&mut self, name: Name, span: Span) -> Result<Typed, Diagnostic> {
         if let Some(b) = self.env.get(name) {
             return Ok(Typed::new(
                 b.ty,
@@ -192,6 +192,7 @@ impl Interp<'_> {
                 },
             ));
         }
+        let name = name.as_str();
         if let Some(d) = self.derivative_symbol(name) {
             return Ok(d);
         }
@@ -219,7 +220,7 @@ impl Interp<'_> {
             "I" => return self.identity(span),
             _ => {}
         }
-        if builtins::lookup(name).is_some() || self.env.fns.contains_key(name) {
+        if builtins::lookup(name).is_some() || self.env.func(name).is_some() {
             return Err(Diagnostic::error(
                 ErrorKind::Name,
                 span,
@@ -235,11 +236,11 @@ impl Interp<'_> {
         let frames = crate::syntax::ident::name_frames(name);
         if frames != crate::syntax::ident::NameFrames::None {
             let base = crate::syntax::ident::base_name(name);
-            let same = |k: &&String| {
+            let same = |k: &&str| {
                 crate::syntax::ident::base_name(k) == base
                     && crate::syntax::ident::name_frames(k) == frames
             };
-            if let Some(other) = self.env.vars.keys().filter(same).min() {
+            if let Some(other) = self.env.var_texts().filter(same).min() {
                 return Err(d.with_help(format!("{other} names the same frames: use {other}")));
             }
         }
@@ -257,7 +258,7 @@ impl Interp<'_> {
                 return Err(d.with_help(format!("{reversed} is known: {name} = inv({reversed})")));
             }
         }
-        let mut candidates: Vec<&str> = self.env.vars.keys().map(String::as_str).collect();
+        let mut candidates: Vec<&str> = self.env.var_texts().collect();
         candidates.extend(builtins::all_names());
         if let Some(s) = suggest::did_you_mean(name, &candidates) {
             d = d.with_help(format!("did you mean '{s}'?"));
@@ -311,20 +312,26 @@ impl Interp<'_> {
             ),
             _ => None,
         };
+        // Checking: nothing to refine or box.
+        if val.is_none() {
+            return Ok(Typed { ty, val: None });
+        }
         Ok(Typed::new(refine(ty, &val), val))
     }
 
     pub(super) fn call(
         &mut self,
-        name: &str,
+        name: Name,
         name_span: Span,
         args: &[Expr],
         span: Span,
     ) -> Result<Typed, Diagnostic> {
-        if let Some(f) = self.env.fns.get(name).cloned() {
+        if let Some(f) = self.env.func(name).cloned() {
             return self.user_call(&f, args, span);
         }
-        let Some(b) = builtins::lookup(name) else {
+        let found = self.env.builtin(name);
+        let name = name.as_str();
+        let Some(b) = found else {
             let mut d = Diagnostic::error(
                 ErrorKind::Name,
                 name_span,
@@ -338,7 +345,7 @@ impl Interp<'_> {
                 return Err(d.with_help(h));
             }
             let mut names = builtins::all_names();
-            names.extend(self.env.fns.keys().map(String::as_str));
+            names.extend(self.env.fn_texts());
             if let Some(s) = suggest::did_you_mean(name, &names) {
                 d = d.with_help(format!("did you mean {s}?"));
             }
@@ -508,7 +515,7 @@ impl Interp<'_> {
         let saved: Vec<(String, Option<super::env::Binding>)> = f
             .params
             .iter()
-            .map(|p| (p.clone(), self.env.vars.get(p).cloned()))
+            .map(|p| (p.clone(), self.env.get(p).cloned()))
             .collect();
         for (p, t) in bound {
             self.env.set(
@@ -527,7 +534,7 @@ impl Interp<'_> {
             match old {
                 Some(b) => self.env.set(&p, b),
                 None => {
-                    self.env.vars.remove(&p);
+                    self.env.remove(&p);
                 }
             }
         }

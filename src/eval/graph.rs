@@ -51,16 +51,16 @@ impl FrameGraph {
             if name == "ans" {
                 continue;
             }
-            let b = &env.vars[name];
+            let b = env.get(name).expect("a bound name");
             match &b.ty.frames {
                 Frames::Pair(a, c) if a != c => g.edges.push(Edge {
-                    name: name.clone(),
+                    name: String::from(name),
                     from: *a,
                     to: *c,
                     kind: b.ty.kind,
                 }),
                 Frames::Pair(a, _) | Frames::One(a) | Frames::Disp(a) => {
-                    g.quantities.push((a.to_string(), name.clone()))
+                    g.quantities.push((a.to_string(), String::from(name)))
                 }
                 _ => {}
             }

@@ -24,6 +24,7 @@ pub struct Typed {
 
 impl Typed {
     /// A checked expression and, when running, its value.
+    #[inline]
     pub fn new(ty: Ty, val: Option<Value>) -> Typed {
         Typed {
             ty,
@@ -154,7 +155,7 @@ impl<'a> Interp<'a> {
 
     /// Binds a checked value to `name` (statements call this only after
     /// they have succeeded).
-    fn bind_value(&mut self, name: &str, t: &Typed) {
+    fn bind_value(&mut self, name: Name, t: &Typed) {
         self.env.set_value(name, &t.ty, t.val.as_deref());
     }
 
@@ -176,7 +177,7 @@ impl<'a> Interp<'a> {
                 let mut t = self.expr(e)?;
                 crate::check::rules::settle_in_place(&mut t.ty);
                 if t.ty.kind != Kind::Function {
-                    self.bind_value("ans", &t);
+                    self.bind_value(*super::env::ANS, &t);
                 }
                 let mut o = out(Names::Many(Vec::new()), t);
                 o.labels = self.part_labels(e);
@@ -186,7 +187,7 @@ impl<'a> Interp<'a> {
                 let mut t = self.expr(value)?;
                 crate::check::rules::settle_in_place(&mut t.ty);
                 self.bind_checked(target.name, &mut t, target.span, value.span)?;
-                self.bind_value(&target.name, &t);
+                self.bind_value(target.name, &t);
                 Ok(out(Names::One([target.name]), t))
             }
             StmtKind::Destructure { targets, value } => {
@@ -198,7 +199,7 @@ impl<'a> Interp<'a> {
                     bound.push(part);
                 }
                 for (target, b) in targets.iter().zip(&bound) {
-                    self.bind_value(&target.name, b);
+                    self.bind_value(target.name, b);
                 }
                 let names = Names::Many(targets.iter().map(|t| t.name).collect());
                 let ty = Ty::plain(Kind::tuple(bound.iter().map(|b| b.ty.kind).collect()));
@@ -238,7 +239,7 @@ impl<'a> Interp<'a> {
                         Value::Sym(super::value::Sym::Name(String::from(n.name)))
                     };
                     self.env.set(
-                        &n.name,
+                        n.name,
                         Binding {
                             ty: Ty::new(kind, frames),
                             val: Some(val),
@@ -266,7 +267,7 @@ impl<'a> Interp<'a> {
                 };
                 self.env
                     .fns
-                    .insert(String::from(name.name), std::rc::Rc::new(f));
+                    .insert(super::env::Key(name.name), std::rc::Rc::new(f));
                 let mut o = out(
                     Names::Many(Vec::new()),
                     Typed::new(Ty::plain(Kind::Function), None),
@@ -288,7 +289,7 @@ impl<'a> Interp<'a> {
             }
             StmtKind::Derive { target } => {
                 let (chain, t) = self.derive(target)?;
-                self.bind_value(&target.name, &t);
+                self.bind_value(target.name, &t);
                 let mut o = out(Names::One([target.name]), t);
                 o.note = Some(format!("{} = {chain}", target.name));
                 Ok(o)
@@ -311,28 +312,17 @@ impl<'a> Interp<'a> {
             return Ok(());
         }
         let claim = self.env.claim(name);
-        let ty = std::mem::replace(&mut t.ty, Ty::plain(Kind::Unknown));
-        t.ty = match bind::bind_claimed(&name, &claim, ty) {
-            Ok(b) => {
-                if let Some(w) = b.warning {
-                    self.rule_warning(*w, value_span, name_span);
-                }
-                b.ty
+        match bind::bind_in_place(&name, &claim, &mut t.ty) {
+            Ok(None) => {}
+            Ok(Some(w)) => self.rule_warning(*w, value_span, name_span),
+            Err(e) => {
+                self.rule_failure(*e, value_span, Some(name_span), Some(value_span), None)?;
             }
-            Err(r) => {
-                self.rule_failure(
-                    *r.error,
-                    value_span,
-                    Some(name_span),
-                    Some(value_span),
-                    None,
-                )?;
-                r.ty
-            }
-        };
+        }
         let ty = t.ty.kind;
-        if ty != Kind::Unknown
-            && let Some(Value::Num { m, kind }) = t.val.as_deref_mut()
+        // (The value first: checking has none, and kinds compare by a call.)
+        if let Some(Value::Num { m, kind }) = t.val.as_deref_mut()
+            && ty != Kind::Unknown
         {
             if ty.is_group() && *kind != ty {
                 let owned = std::mem::replace(m, crate::values::num::Num::Scalar(0.0));
@@ -348,7 +338,7 @@ impl<'a> Interp<'a> {
     fn part_labels(&self, e: &crate::syntax::ast::Expr) -> &'static [&'static str] {
         match &e.kind {
             crate::syntax::ast::ExprKind::Call { func, .. }
-                if !self.env.fns.contains_key(func.name.as_str()) =>
+                if self.env.func(func.name).is_none() =>
             {
                 crate::builtins::lookup(&func.name)
                     .and_then(|b| crate::builtins::parts::part_names(b.name))
@@ -491,11 +481,11 @@ impl Interp<'_> {
             )
             .with_help("given theta(t) : scalar"));
         }
-        let bound = self.env.get(&t.name).is_some_and(|b| !b.symbolic);
+        let bound = self.env.get(t.name).is_some_and(|b| !b.symbolic);
         if !bound {
             let time = crate::sym::Expr::symbol(crate::sym::Symbol::timed(&t.name));
             self.env.set(
-                &t.name,
+                t.name,
                 Binding {
                     ty: Ty::scalar(),
                     val: Some(super::formula::scalar(time)),

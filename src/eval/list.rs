@@ -304,7 +304,7 @@ impl Interp<'_> {
         let names: Vec<String> = domains.iter().map(|d| d.0.clone()).collect();
         let saved: Vec<(String, Option<Binding>)> = names
             .iter()
-            .map(|n| (n.clone(), self.env.vars.get(n).cloned()))
+            .map(|n| (n.clone(), self.env.get(n).cloned()))
             .collect();
         WORK.with(|w| {
             let (open, done) = w.get();
@@ -319,7 +319,7 @@ impl Interp<'_> {
             match old {
                 Some(b) => self.env.set(&n, b),
                 None => {
-                    self.env.vars.remove(&n);
+                    self.env.remove(&n);
                 }
             }
         }

@@ -16,11 +16,22 @@ use super::value::Value;
 use crate::builtins::Builtin;
 use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
-use crate::syntax::ast::{BinOp, Expr, ExprKind, Span};
+use crate::syntax::ast::{BinOp, Expr, ExprKind, Name, Span};
 
 /// Whether `e` has an `I` whose size comes from around it (`I`, `2 I`,
 /// `-I`, `I + W`).
+#[inline]
 fn mentions_identity(e: &Expr) -> bool {
+    match &e.kind {
+        // Most operands: a name that is not `I`, a number, a call.
+        ExprKind::Var(name) => name == "I",
+        ExprKind::Unary { .. } | ExprKind::Binary { .. } => mentions_identity_in(e),
+        _ => false,
+    }
+}
+
+/// [`mentions_identity`] of a unary or binary operation.
+fn mentions_identity_in(e: &Expr) -> bool {
     match &e.kind {
         ExprKind::Var(name) => name == "I",
         ExprKind::Unary { operand, .. } => mentions_identity(operand),
@@ -59,7 +70,7 @@ impl Interp<'_> {
         // (The environment is asked about `I` only when an operand has one.)
         let sized = in_lhs != in_rhs
             && !matches!(op, BinOp::Pow | BinOp::Div)
-            && self.env.get("I").is_none();
+            && self.env.get(*super::env::IDENTITY).is_none();
         if sized && in_lhs {
             let r = self.expr(rhs)?;
             let n = match (op, dims(&r)) {
@@ -100,7 +111,7 @@ impl Interp<'_> {
     /// is as tall as the others.
     pub(super) fn bracket_row(&mut self, row: &[Expr]) -> Result<Vec<Typed>, Diagnostic> {
         let free = |e: &Expr| mentions_identity(e);
-        let sized = self.env.get("I").is_none();
+        let sized = self.env.get(*super::env::IDENTITY).is_none();
         let mut out: Vec<Option<Typed>> = vec![None; row.len()];
         for (slot, e) in out.iter_mut().zip(row) {
             if !(sized && free(e)) {
@@ -162,7 +173,9 @@ impl Interp<'_> {
         rhs: &Expr,
         span: Span,
     ) -> Option<Result<Typed, Diagnostic>> {
-        if !matches!(&lhs.kind, ExprKind::Var(e) if e == "e") || self.env.get("e").is_some() {
+        if !matches!(&lhs.kind, ExprKind::Var(e) if e == "e")
+            || self.env.get(*super::env::EULER).is_some()
+        {
             return None;
         }
         let r = match self.probe(rhs) {
@@ -172,7 +185,7 @@ impl Interp<'_> {
         if r.ty.kind.maybe_scalar() {
             return None;
         }
-        Some(self.call("exp", lhs.span, std::slice::from_ref(rhs), span))
+        Some(self.call(Name::new("exp"), lhs.span, std::slice::from_ref(rhs), span))
     }
 
     /// `X[v]` with `v` a 3- or 6-vector: the book's `X [v]`, a product.
@@ -249,7 +262,12 @@ impl Interp<'_> {
     /// A builtin given one tuple (or vector: `(a, b, c)` of scalars)
     /// whose parts fit its arguments: the parts.
     /// `Err(one)` when they do not.
+    #[inline]
     pub(super) fn spread(&self, b: &Builtin, one: Typed) -> Result<Vec<Typed>, Typed> {
+        // Only a tuple or a vector has parts (most arguments are neither).
+        if !matches!(one.ty.kind, Kind::Tuple(_) | Kind::Vector(Some(_))) {
+            return Err(one);
+        }
         let parts = parts(&one);
         if parts.len() < 2 || b.check(std::slice::from_ref(&one.ty)).is_ok() {
             return Err(one);

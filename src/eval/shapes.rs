@@ -53,7 +53,7 @@ pub(super) fn block_type(widths: &[usize], args: &[&Ty]) -> Ty {
     if let [t] = args {
         return bracket_type(t);
     }
-    let all_scalar = args.iter().all(|t| t.kind == Kind::Scalar);
+    let all_scalar = args.iter().all(|t| matches!(t.kind, Kind::Scalar));
     if all_scalar && widths.len() == 1 {
         return Ty::plain(Kind::Vector(Some(args.len())));
     }

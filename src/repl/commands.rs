@@ -177,7 +177,7 @@ fn bare_command(session: &Session, input: &str) -> Option<String> {
 
 /// Whether `name` is a user function (or a builtin) of the session.
 fn builtins_or_fn(session: &Session, name: &str) -> bool {
-    session.env.fns.contains_key(name) || crate::builtins::lookup(name).is_some()
+    session.env.func(name).is_some() || crate::builtins::lookup(name).is_some()
 }
 
 /// Runs one `:` command (`input` starts with `:`).
@@ -267,7 +267,7 @@ pub fn vars(env: &Env, style: text::Style) -> String {
     let width = names.iter().map(|n| n.chars().count()).max().unwrap_or(0);
     let mut out = String::new();
     for name in names {
-        let b = &env.vars[name];
+        let b = env.get(name).expect("a bound name");
         let pad = " ".repeat(width - name.chars().count());
         let mut row = format!("{name}{pad} : {}", type_of(&b.ty, b.val.as_ref()));
         if b.symbolic {
@@ -284,7 +284,7 @@ pub fn vars(env: &Env, style: text::Style) -> String {
     let mut fns: Vec<_> = env
         .fns
         .values()
-        .filter(|f| !env.vars.contains_key(&f.name))
+        .filter(|f| env.get(&f.name).is_none())
         .collect();
     fns.sort_by(|a, b| a.name.cmp(&b.name));
     for f in fns {

@@ -75,9 +75,9 @@ pub fn complete(session: &Session, line: &str, pos: usize) -> (usize, Vec<Candid
     }
     for name in session.env.names() {
         if name.starts_with(word) {
-            let b = &session.env.vars[name];
+            let b = session.env.get(name).expect("a bound name");
             out.push(Candidate {
-                replacement: name.clone(),
+                replacement: String::from(name),
                 display: format!("{name} : {}", b.ty),
             });
         }
@@ -232,7 +232,7 @@ pub fn preview(session: &Session, line: &str) -> Option<String> {
 /// `eye`/`zeros`, only small literal sizes.
 fn cheap(session: &Session, line: &str) -> bool {
     let idents = identifiers(line);
-    if idents.iter().any(|i| session.env.fns.contains_key(*i)) {
+    if idents.iter().any(|i| session.env.func(*i).is_some()) {
         return false;
     }
     let sized = idents.iter().any(|i| matches!(*i, "eye" | "zeros"));
