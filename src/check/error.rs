@@ -160,15 +160,18 @@ pub(super) fn same_frame_error(what: &str, l: &Ty, r: &Ty) -> RuleError {
 mod tests {
     use super::*;
 
+    /// The one expression statement `src` parses to.
+    fn expression(src: &str) -> crate::syntax::ast::Expr {
+        let stmt = crate::syntax::parse_program(src).remove(0).expect("parses");
+        let crate::syntax::ast::StmtKind::Expr(e) = stmt.kind else {
+            panic!("not an expression: {src}")
+        };
+        e
+    }
+
     #[test]
     fn inverse_text_drops_a_double_inverse() {
-        let inverse = |src: &str| {
-            let stmt = crate::syntax::parse_program(src).remove(0).expect("parses");
-            let crate::syntax::ast::StmtKind::Expr(e) = stmt.kind else {
-                panic!("not an expression: {src}")
-            };
-            Operand::new(&e, src).inverse_text()
-        };
+        let inverse = |src: &str| Operand::new(&expression(src), src).inverse_text();
         assert_eq!(inverse("T_ab"), "inv(T_ab)");
         assert_eq!(inverse("inv(T_ab * T_bc)"), "T_ab * T_bc");
         assert_eq!(inverse("inv( T_ab )"), "T_ab");
@@ -182,10 +185,7 @@ mod tests {
     #[test]
     fn an_operand_says_what_it_is_from_the_syntax_tree() {
         let form = |src: &str| {
-            let stmt = crate::syntax::parse_program(src).remove(0).expect("parses");
-            let crate::syntax::ast::StmtKind::Expr(e) = stmt.kind else {
-                panic!("not an expression: {src}")
-            };
+            let e = expression(src);
             match Operand::new(&e, src).form() {
                 Form::Inverse(x) => format!("inverse of {}", x.text()),
                 Form::Adjoint(x) => format!("adjoint of {}", x.text()),

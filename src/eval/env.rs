@@ -89,6 +89,9 @@ pub static IDENTITY: LazyLock<Name> = LazyLock::new(|| Name::new("I"));
 /// `e`, Euler's number, unless the session binds the name.
 pub static EULER: LazyLock<Name> = LazyLock::new(|| Name::new("e"));
 
+/// `exp`, the builtin the book's `[S] θ` juxtaposition calls (3.51, 3.88).
+pub static EXP: LazyLock<Name> = LazyLock::new(|| Name::new("exp"));
+
 /// What to do with a frame mismatch (`--frames strict|warn|off`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum FrameMode {
@@ -239,10 +242,11 @@ impl Env {
             .entry(Key(name))
             .or_insert_with(|| builtins::lookup(name.as_str()))
     }
-    /// Names in sorted order (for `:vars` and derive's deterministic search).
-    pub fn names(&self) -> Vec<Name> {
-        let mut v: Vec<Name> = self.vars.keys().map(|k| k.0).collect();
-        v.sort();
+    /// The bindings with their names, in the names' sorted order (for
+    /// `:vars`, completion and derive's deterministic search).
+    pub fn bindings(&self) -> Vec<(Name, &Binding)> {
+        let mut v: Vec<(Name, &Binding)> = self.vars.iter().map(|(k, b)| (k.0, b)).collect();
+        v.sort_by_key(|(n, _)| *n);
         v
     }
 }

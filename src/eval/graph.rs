@@ -47,11 +47,10 @@ impl FrameGraph {
     /// The graph of every binding of `env`.
     pub fn of(env: &Env) -> FrameGraph {
         let mut g = FrameGraph::default();
-        for name in env.names() {
+        for (name, b) in env.bindings() {
             if name == "ans" {
                 continue;
             }
-            let b = env.get(name).expect("a bound name");
             match &b.ty.frames {
                 Frames::Pair(a, c) if a != c => g.edges.push(Edge {
                     name: String::from(name),

@@ -16,7 +16,7 @@ use super::value::Value;
 use crate::builtins::Builtin;
 use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
-use crate::syntax::ast::{BinOp, Expr, ExprKind, Name, Span};
+use crate::syntax::ast::{BinOp, Expr, ExprKind, Span};
 
 /// Whether `e` has an `I` whose size comes from around it (`I`, `2 I`,
 /// `-I`, `I + W`).
@@ -185,7 +185,7 @@ impl Interp<'_> {
         if r.ty.kind.maybe_scalar() {
             return None;
         }
-        Some(self.call(Name::new("exp"), lhs.span, std::slice::from_ref(rhs), span))
+        Some(self.call(*super::env::EXP, lhs.span, std::slice::from_ref(rhs), span))
     }
 
     /// `X[v]` with `v` a 3- or 6-vector: the book's `X [v]`, a product.

@@ -260,14 +260,17 @@ fn type_of(ty: &Ty, val: Option<&Value>) -> String {
 /// `:vars`: each binding with its type and frames, and its value when
 /// that fits on a short line.
 pub fn vars(env: &Env, style: text::Style) -> String {
-    let names = env.names();
-    if names.is_empty() && env.fns.is_empty() {
+    let bindings = env.bindings();
+    if bindings.is_empty() && env.fns.is_empty() {
         return "no bindings yet (bind one with `name = expr`)".into();
     }
-    let width = names.iter().map(|n| n.chars().count()).max().unwrap_or(0);
+    let width = bindings
+        .iter()
+        .map(|(n, _)| n.chars().count())
+        .max()
+        .unwrap_or(0);
     let mut out = String::new();
-    for name in names {
-        let b = env.get(name).expect("a bound name");
+    for (name, b) in bindings {
         let pad = " ".repeat(width - name.chars().count());
         let mut row = format!("{name}{pad} : {}", type_of(&b.ty, b.val.as_ref()));
         if b.symbolic {

@@ -73,9 +73,8 @@ pub fn complete(session: &Session, line: &str, pos: usize) -> (usize, Vec<Candid
             });
         }
     }
-    for name in session.env.names() {
+    for (name, b) in session.env.bindings() {
         if name.starts_with(word) {
-            let b = session.env.get(name).expect("a bound name");
             out.push(Candidate {
                 replacement: String::from(name),
                 display: format!("{name} : {}", b.ty),
