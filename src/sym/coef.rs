@@ -1,174 +1,20 @@
 //! Exact coefficients of symbolic expressions: complex numbers whose real
 //! and imaginary parts lie in ℚ(√2, √3) (basis 1, √2, √3, √6), so that the
 //! book's constants (½, 1/√2, √3/2, the lengths typed as decimals) stay
-//! exact and e^{iθ} = cos θ + i sin θ needs no special case. A coefficient
-//! that overflows or comes from a number with no simple closed form is kept
-//! as a complex `f64` pair ([`Coef::Approx`]).
+//! exact and e^{iθ} = cos θ + i sin θ needs no special case. Fractions are
+//! exact however large ([`Rat`]); a coefficient that comes from a number
+//! with no exact form (sin 1, √5) is kept as a complex `f64` pair
+//! ([`Coef::Approx`]), and a sum of such pairs that cancels to within
+//! rounding is 0, never a term of noise.
 
 #![allow(clippy::should_implement_trait, clippy::needless_range_loop)]
 
 use std::cmp::Ordering;
 
-/// A reduced fraction `num/den` with `den > 0`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub struct Rat {
-    pub num: i128,
-    pub den: i128,
-}
-
-fn gcd(a: i128, b: i128) -> i128 {
-    let (a, b) = (a.unsigned_abs(), b.unsigned_abs());
-    // Word-sized operands (the usual case) divide in hardware.
-    if let (Ok(mut x), Ok(mut y)) = (u64::try_from(a), u64::try_from(b)) {
-        while y != 0 {
-            (x, y) = (y, x % y);
-        }
-        return x as i128;
-    }
-    // Binary gcd: no 128-bit division.
-    let (mut x, mut y) = (a, b);
-    if x == 0 || y == 0 {
-        return (x | y) as i128;
-    }
-    let shift = (x | y).trailing_zeros();
-    x >>= x.trailing_zeros();
-    while y != 0 {
-        y >>= y.trailing_zeros();
-        if x > y {
-            std::mem::swap(&mut x, &mut y);
-        }
-        y -= x;
-    }
-    (x << shift) as i128
-}
-
-/// Magnitude beyond which a fraction is given up for a float (products of
-/// two stay inside `i128`).
-const LIMIT: i128 = 1 << 60;
-
-impl Rat {
-    /// 0.
-    pub const ZERO: Rat = Rat { num: 0, den: 1 };
-    /// 1.
-    pub const ONE: Rat = Rat { num: 1, den: 1 };
-
-    /// `num/den` reduced; None when it does not fit.
-    pub fn new(num: i128, den: i128) -> Option<Rat> {
-        if den == 0 {
-            return None;
-        }
-        let g = gcd(num, den).max(1);
-        let (mut n, mut d) = (num / g, den / g);
-        if d < 0 {
-            n = -n;
-            d = -d;
-        }
-        (n.abs() < LIMIT && d < LIMIT).then_some(Rat { num: n, den: d })
-    }
-    /// The integer n.
-    pub fn int(n: i64) -> Rat {
-        Rat {
-            num: n as i128,
-            den: 1,
-        }
-    }
-    /// True for 0.
-    pub fn is_zero(self) -> bool {
-        self.num == 0
-    }
-    /// The sum; None when it does not fit.
-    pub fn add(self, o: Rat) -> Option<Rat> {
-        if o.num == 0 {
-            return Some(self);
-        }
-        if self.num == 0 {
-            return Some(o);
-        }
-        if self.den == 1 && o.den == 1 {
-            let n = self.num + o.num;
-            return (n.abs() < LIMIT).then_some(Rat { num: n, den: 1 });
-        }
-        let g = gcd(self.den, o.den);
-        let (a, b) = (self.den / g, o.den / g);
-        Rat::new(self.num * b + o.num * a, self.den * b)
-    }
-    /// The product; None when it does not fit.
-    pub fn mul(self, o: Rat) -> Option<Rat> {
-        if self.num == 0 || o.num == 0 {
-            return Some(Rat::ZERO);
-        }
-        if self.den == 1 && o.den == 1 {
-            let n = self.num * o.num;
-            return (n.abs() < LIMIT).then_some(Rat { num: n, den: 1 });
-        }
-        let g1 = gcd(self.num, o.den).max(1);
-        let g2 = gcd(o.num, self.den).max(1);
-        Rat::new(
-            (self.num / g1) * (o.num / g2),
-            (self.den / g2) * (o.den / g1),
-        )
-    }
-    /// −x.
-    pub fn neg(self) -> Rat {
-        Rat {
-            num: -self.num,
-            den: self.den,
-        }
-    }
-    /// 1/x; None for 0.
-    pub fn inv(self) -> Option<Rat> {
-        Rat::new(self.den, self.num)
-    }
-    /// The nearest float.
-    pub fn to_f64(self) -> f64 {
-        self.num as f64 / self.den as f64
-    }
-    /// The integer, when the fraction is one.
-    pub fn as_int(self) -> Option<i64> {
-        (self.den == 1)
-            .then(|| i64::try_from(self.num).ok())
-            .flatten()
-    }
-    /// The fraction nearest `x` with a denominator at most `max_den`
-    /// (continued fractions), when it is within 1e-12 (relative) of `x`;
-    /// below 1e-14 a number is rounding noise and reads as 0.
-    pub fn approximate(x: f64, max_den: i128) -> Option<Rat> {
-        if !x.is_finite() || x.abs() > 1e15 {
-            return None;
-        }
-        // rounding noise of a computed zero (cos(π/2) = 6e-17)
-        if x.abs() < 1e-14 {
-            return Some(Rat::ZERO);
-        }
-        let (mut h0, mut h1, mut k0, mut k1) = (0i128, 1i128, 1i128, 0i128);
-        let mut y = x;
-        for _ in 0..40 {
-            let a = y.floor();
-            if a.abs() > 1e15 {
-                break;
-            }
-            let a = a as i128;
-            let (h2, k2) = (a * h1 + h0, a * k1 + k0);
-            if k2 > max_den {
-                break;
-            }
-            (h0, h1, k0, k1) = (h1, h2, k1, k2);
-            let r = h1 as f64 / k1 as f64;
-            if (r - x).abs() <= 1e-12 * x.abs() {
-                return Rat::new(h1, k1);
-            }
-            let f = y - a as f64;
-            if f.abs() < 1e-300 {
-                break;
-            }
-            y = 1.0 / f;
-        }
-        None
-    }
-}
+pub use super::rat::Rat;
 
 /// An element a + b√2 + c√3 + d√6 of the real field ℚ(√2, √3).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub struct Surd(pub [Rat; 4]);
 
 /// The basis roots 1, √2, √3, √6.
@@ -176,7 +22,7 @@ pub const ROOTS: [i64; 4] = [1, 2, 3, 6];
 
 impl Surd {
     /// 0.
-    pub const ZERO: Surd = Surd([Rat::ZERO; 4]);
+    pub const ZERO: Surd = Surd([Rat::ZERO, Rat::ZERO, Rat::ZERO, Rat::ZERO]);
     /// A rational as a field element.
     pub fn rat(r: Rat) -> Surd {
         Surd([r, Rat::ZERO, Rat::ZERO, Rat::ZERO])
@@ -185,20 +31,16 @@ impl Surd {
     pub fn is_zero(&self) -> bool {
         self.0.iter().all(|r| r.is_zero())
     }
-    /// The sum; None on overflow.
-    pub fn add(&self, o: &Surd) -> Option<Surd> {
-        let mut out = [Rat::ZERO; 4];
-        for i in 0..4 {
-            out[i] = self.0[i].add(o.0[i])?;
-        }
-        Some(Surd(out))
+    /// The sum.
+    pub fn add(&self, o: &Surd) -> Surd {
+        Surd(std::array::from_fn(|i| self.0[i].add(&o.0[i])))
     }
     /// −x.
     pub fn neg(&self) -> Surd {
-        Surd(self.0.map(Rat::neg))
+        Surd(std::array::from_fn(|i| self.0[i].neg()))
     }
-    /// The product; None on overflow.
-    pub fn mul(&self, o: &Surd) -> Option<Surd> {
+    /// The product.
+    pub fn mul(&self, o: &Surd) -> Surd {
         // √a √b = k √c over the basis 1, √2, √3, √6.
         const TABLE: [[(i64, usize); 4]; 4] = [
             [(1, 0), (1, 1), (1, 2), (1, 3)],
@@ -206,7 +48,7 @@ impl Surd {
             [(1, 2), (1, 3), (3, 0), (3, 1)],
             [(1, 3), (2, 2), (3, 1), (6, 0)],
         ];
-        let mut out = [Rat::ZERO; 4];
+        let mut out = Surd::ZERO;
         for i in 0..4 {
             if self.0[i].is_zero() {
                 continue;
@@ -216,35 +58,38 @@ impl Surd {
                     continue;
                 }
                 let (k, c) = TABLE[i][j];
-                let t = self.0[i].mul(o.0[j])?.mul(Rat::int(k))?;
-                out[c] = out[c].add(t)?;
+                let mut t = self.0[i].mul(&o.0[j]);
+                if k != 1 {
+                    t = t.mul(&Rat::int(k));
+                }
+                out.0[c] = out.0[c].add(&t);
             }
         }
-        Some(Surd(out))
+        out
     }
     /// The conjugate under √2 → −√2 (`s2`) and/or √3 → −√3 (`s3`).
     fn conj(&self, s2: bool, s3: bool) -> Surd {
-        let [a, b, c, d] = self.0;
-        let b = if s2 { b.neg() } else { b };
-        let c = if s3 { c.neg() } else { c };
-        let d = if s2 != s3 { d.neg() } else { d };
-        Surd([a, b, c, d])
+        let [a, b, c, d] = &self.0;
+        let b = if s2 { b.neg() } else { b.clone() };
+        let c = if s3 { c.neg() } else { c.clone() };
+        let d = if s2 != s3 { d.neg() } else { d.clone() };
+        Surd([a.clone(), b, c, d])
     }
     /// 1/x: multiplying by the three conjugates leaves a rational norm.
     pub fn inv(&self) -> Option<Surd> {
         if self.is_zero() {
             return None;
         }
-        let others = [
-            self.conj(true, false),
-            self.conj(false, true),
-            self.conj(true, true),
-        ];
-        let mut num = others[0];
-        num = num.mul(&others[1])?.mul(&others[2])?;
-        let norm = self.mul(&num)?;
+        if let Some(r) = self.as_rat() {
+            return Some(Surd::rat(r.inv()?));
+        }
+        let num = self
+            .conj(true, false)
+            .mul(&self.conj(false, true))
+            .mul(&self.conj(true, true));
+        let norm = self.mul(&num);
         let n = norm.0[0].inv()?;
-        num.mul(&Surd::rat(n))
+        Some(num.mul(&Surd::rat(n)))
     }
     /// The nearest float.
     pub fn to_f64(&self) -> f64 {
@@ -254,17 +99,55 @@ impl Surd {
             .map(|(r, k)| r.to_f64() * (k as f64).sqrt())
             .sum()
     }
-    /// The sign of the value (exactly 0 only for zero).
+    /// The sign of the value (exactly 0 only for zero): a sign read off a
+    /// float only when the parts disagree in sign and nearly cancel is
+    /// settled exactly, by squares.
     pub fn signum(&self) -> f64 {
         if self.is_zero() {
-            0.0
-        } else {
-            self.to_f64().signum()
+            return 0.0;
         }
+        let x = self.to_f64();
+        let scale: f64 = self
+            .0
+            .iter()
+            .zip(ROOTS)
+            .map(|(r, k)| r.to_f64().abs() * (k as f64).sqrt())
+            .sum();
+        if x.abs() > 1e-9 * scale {
+            return x.signum();
+        }
+        // a + b√2 + (c + d√2)√3 = p + q√3 with p, q in ℚ(√2):
+        // sign(p + q√3) from the signs of p, q and p² − 3q².
+        let [a, b, c, d] = &self.0;
+        let sign2 = |x: &Rat, y: &Rat| -> i32 {
+            // sign of x + y√2, exactly
+            let (sx, sy) = (rsign(x), rsign(y));
+            if sx == 0 || sy == 0 || sx == sy {
+                return if sx != 0 { sx } else { sy };
+            }
+            // x² − 2y² has the sign of |x| − |y|√2
+            let t = x.mul(x).add(&y.mul(y).mul(&Rat::int(-2)));
+            sx * rsign(&t)
+        };
+        let (sp, sq) = (sign2(a, b), sign2(c, d));
+        if sp == 0 || sq == 0 || sp == sq {
+            return f64::from(if sp != 0 { sp } else { sq });
+        }
+        // p² − 3q² = (a² + 2b² − 3c² − 6d²) + (2ab − 6cd)√2
+        let m = |x: &Rat, y: &Rat, k: i64| x.mul(y).mul(&Rat::int(k));
+        let r0 = m(a, a, 1)
+            .add(&m(b, b, 2))
+            .add(&m(c, c, -3))
+            .add(&m(d, d, -6));
+        let r1 = m(a, b, 2).add(&m(c, d, -6));
+        f64::from(sp * sign2(&r0, &r1))
     }
     /// The rational, when only the rational part is present.
     pub fn as_rat(&self) -> Option<Rat> {
-        self.0[1..].iter().all(|r| r.is_zero()).then_some(self.0[0])
+        self.0[1..]
+            .iter()
+            .all(|r| r.is_zero())
+            .then(|| self.0[0].clone())
     }
     /// A closed form of `x`: p/q, or p/q times √2, √3 or √6.
     pub fn recognize(x: f64) -> Option<Surd> {
@@ -276,21 +159,32 @@ impl Surd {
         }
         for (i, k) in ROOTS.iter().enumerate().skip(1) {
             if let Some(r) = Rat::approximate(x / (*k as f64).sqrt(), 1000) {
-                let mut s = [Rat::ZERO; 4];
-                s[i] = r;
-                return Some(Surd(s));
+                let mut s = Surd::ZERO;
+                s.0[i] = r;
+                return Some(s);
             }
         }
         // A decimal as typed: 0.425, 0.0823 (a denominator of 2s and 5s only).
         Rat::approximate(x, 1_000_000_000)
-            .filter(|r| 1_000_000_000 % r.den == 0)
+            .filter(|r| r.small().is_some_and(|(_, d)| 1_000_000_000 % d == 0))
             .map(Surd::rat)
+    }
+}
+
+/// −1, 0 or 1.
+fn rsign(r: &Rat) -> i32 {
+    if r.is_zero() {
+        0
+    } else if r.is_negative() {
+        -1
+    } else {
+        1
     }
 }
 
 /// A coefficient: an exact complex number over ℚ(√2, √3), or a complex
 /// `f64` pair when no exact form is known.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 #[allow(clippy::large_enum_variant)]
 pub enum Coef {
     Exact { re: Surd, im: Surd },
@@ -315,6 +209,17 @@ impl Ord for Coef {
 impl PartialOrd for Coef {
     fn partial_cmp(&self, other: &Coef) -> Option<Ordering> {
         Some(self.cmp(other))
+    }
+}
+
+/// A float sum `a + b`, 0 when it cancels to within rounding (a few units
+/// in the last place of the larger summand): such a remainder is noise.
+fn float_sum(a: f64, b: f64) -> f64 {
+    let s = a + b;
+    if s.abs() <= 8.0 * f64::EPSILON * a.abs().max(b.abs()) {
+        0.0
+    } else {
+        s
     }
 }
 
@@ -366,7 +271,23 @@ impl Coef {
     }
     /// True for 1.
     pub fn is_one(&self) -> bool {
-        *self == Coef::one()
+        match self {
+            Coef::Exact { re, im } => im.is_zero() && re.as_rat() == Some(Rat::ONE),
+            Coef::Approx { .. } => false,
+        }
+    }
+    /// Machine words beyond the inline ones that the exact parts hold (0
+    /// for the usual small fractions): the weight of a term in the
+    /// expression limit.
+    pub fn words(&self) -> usize {
+        match self {
+            Coef::Exact { re, im } => re.0.iter().chain(&im.0).map(Rat::words).sum(),
+            Coef::Approx { .. } => 0,
+        }
+    }
+    /// True for an exact coefficient.
+    pub fn is_exact(&self) -> bool {
+        matches!(self, Coef::Exact { .. })
     }
     /// (re, im) as floats.
     pub fn to_c64(&self) -> (f64, f64) {
@@ -374,10 +295,6 @@ impl Coef {
             Coef::Exact { re, im } => (re.to_f64(), im.to_f64()),
             Coef::Approx { re, im } => (*re, *im),
         }
-    }
-    fn approx(&self) -> Coef {
-        let (re, im) = self.to_c64();
-        Coef::Approx { re, im }
     }
     /// A float result; a value that rounds to 0 is dropped exactly.
     fn settle(re: f64, im: f64) -> Coef {
@@ -389,15 +306,17 @@ impl Coef {
             Coef::Approx { re, im }
         }
     }
-    /// The sum (a float pair when exact arithmetic overflows).
+    /// The sum (a float pair when either is one; a float sum that cancels
+    /// to within rounding is 0).
     pub fn add(&self, o: &Coef) -> Coef {
-        if let (Coef::Exact { re: a, im: b }, Coef::Exact { re: c, im: d }) = (self, o)
-            && let (Some(re), Some(im)) = (a.add(c), b.add(d))
-        {
-            return Coef::Exact { re, im };
+        if let (Coef::Exact { re: a, im: b }, Coef::Exact { re: c, im: d }) = (self, o) {
+            return Coef::Exact {
+                re: a.add(c),
+                im: b.add(d),
+            };
         }
         let ((a, b), (c, d)) = (self.to_c64(), o.to_c64());
-        Coef::settle(a + c, b + d)
+        Coef::settle(float_sum(a, c), float_sum(b, d))
     }
     /// −c.
     pub fn neg(&self) -> Coef {
@@ -409,26 +328,25 @@ impl Coef {
             Coef::Approx { re, im } => Coef::Approx { re: -re, im: -im },
         }
     }
-    /// The product (a float pair when exact arithmetic overflows).
+    /// The product (a float pair when either is one).
     pub fn mul(&self, o: &Coef) -> Coef {
         if let (Coef::Exact { re: a, im: b }, Coef::Exact { re: c, im: d }) = (self, o) {
-            let exact = || -> Option<Coef> {
-                let re = a.mul(c)?.add(&b.mul(d)?.neg())?;
-                let im = a.mul(d)?.add(&b.mul(c)?)?;
-                Some(Coef::Exact { re, im })
-            };
-            if let Some(c) = exact() {
-                return c;
+            if b.is_zero() && d.is_zero() {
+                return Coef::real(a.mul(c));
             }
+            return Coef::Exact {
+                re: a.mul(c).add(&b.mul(d).neg()),
+                im: a.mul(d).add(&b.mul(c)),
+            };
         }
         let ((a, b), (c, d)) = (self.to_c64(), o.to_c64());
-        Coef::settle(a * c - b * d, a * d + b * c)
+        Coef::settle(float_sum(a * c, -(b * d)), float_sum(a * d, b * c))
     }
     /// The complex conjugate.
     pub fn conj(&self) -> Coef {
         match self {
             Coef::Exact { re, im } => Coef::Exact {
-                re: *re,
+                re: re.clone(),
                 im: im.neg(),
             },
             Coef::Approx { re, im } => Coef::Approx { re: *re, im: -im },
@@ -439,22 +357,22 @@ impl Coef {
         if self.is_zero() {
             return None;
         }
-        if let Coef::Exact { re, im } = self {
-            let exact = || -> Option<Coef> {
-                let norm = re.mul(re)?.add(&im.mul(im)?)?;
-                let n = norm.inv()?;
+        match self {
+            Coef::Exact { re, im } => {
+                if im.is_zero() {
+                    return Some(Coef::real(re.inv()?));
+                }
+                let n = re.mul(re).add(&im.mul(im)).inv()?;
                 Some(Coef::Exact {
-                    re: re.mul(&n)?,
-                    im: im.neg().mul(&n)?,
+                    re: re.mul(&n),
+                    im: im.neg().mul(&n),
                 })
-            };
-            if let Some(c) = exact() {
-                return Some(c);
+            }
+            Coef::Approx { re: a, im: b } => {
+                let n = a * a + b * b;
+                Some(Coef::settle(a / n, -b / n))
             }
         }
-        let (a, b) = self.approx().to_c64();
-        let n = a * a + b * b;
-        Some(Coef::settle(a / n, -b / n))
     }
     /// The real k with Re(k·c) = `to` (Im(k·c) = `to` when the real part is
     /// 0): the scale that makes a real expression's first coefficient
@@ -463,7 +381,7 @@ impl Coef {
         match self {
             Coef::Exact { re, im } => {
                 let part = if re.is_zero() { im } else { re };
-                Some(Coef::real(part.inv()?.mul(&Surd::rat(to))?))
+                Some(Coef::real(part.inv()?.mul(&Surd::rat(to))))
             }
             Coef::Approx { re, im } => {
                 let part = if *re == 0.0 { *im } else { *re };
@@ -481,14 +399,14 @@ impl Coef {
     /// The real part exactly, when the imaginary part is 0.
     pub fn as_real(&self) -> Option<Surd> {
         match self {
-            Coef::Exact { re, im } if im.is_zero() => Some(*re),
+            Coef::Exact { re, im } if im.is_zero() => Some(re.clone()),
             _ => None,
         }
     }
     /// e^{iπ p} exactly for p a multiple of 1/12 (cos and sin of multiples
     /// of 15° lie in ℚ(√2, √3)).
     pub fn unit_root(p: Rat) -> Option<Coef> {
-        let twelfths = p.mul(Rat::int(12))?.as_int()?.rem_euclid(24);
+        let twelfths = p.mul(&Rat::int(12)).as_int()?.rem_euclid(24);
         // cos(k·15°) for k = 0..=6, as (rational part, √2 part, √3 part, √6 part) / 4.
         const COS: [[i64; 4]; 7] = [
             [4, 0, 0, 0],
@@ -504,7 +422,7 @@ impl Coef {
             let k = k.rem_euclid(24);
             let k = if k > 12 { 24 - k } else { k };
             let (k, sign) = if k > 6 { (12 - k, -1) } else { (k, 1) };
-            Surd(COS[k as usize].map(|n| Rat::new((sign * n) as i128, 4).unwrap_or(Rat::ZERO)))
+            Surd(COS[k as usize].map(|n| Rat::new(i128::from(sign * n), 4).unwrap_or(Rat::ZERO)))
         };
         Some(Coef::Exact {
             re: cos_of(twelfths),
@@ -520,10 +438,10 @@ mod tests {
     #[test]
     fn surd_arithmetic_is_exact() {
         let r2 = Surd([Rat::ZERO, Rat::ONE, Rat::ZERO, Rat::ZERO]);
-        let two = r2.mul(&r2).unwrap();
+        let two = r2.mul(&r2);
         assert_eq!(two, Surd::rat(Rat::int(2)));
         let x = Surd([Rat::ONE, Rat::ONE, Rat::ONE, Rat::ZERO]);
-        let one = x.mul(&x.inv().unwrap()).unwrap();
+        let one = x.mul(&x.inv().unwrap());
         assert_eq!(one, Surd::rat(Rat::ONE));
     }
 

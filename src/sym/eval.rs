@@ -40,7 +40,7 @@ impl Expr {
     pub fn subst(&self, by: &dyn Fn(&Symbol) -> Option<Expr>) -> Expr {
         let mut out = Expr::zero();
         for (m, c) in &self.terms {
-            let mut t = Expr::constant(*c);
+            let mut t = Expr::constant(c.clone());
             for (v, e) in m {
                 let f = match v {
                     Var::Sym(s) => by(s).unwrap_or_else(|| Expr::var(v.clone())),

@@ -235,7 +235,7 @@ impl Expr {
     pub fn as_const(&self) -> Option<Coef> {
         match self.terms.len() {
             0 => Some(Coef::ZERO),
-            1 => self.terms.get(&Vec::new()).copied(),
+            1 => self.terms.get(&Vec::new()).cloned(),
             _ => None,
         }
     }
@@ -244,19 +244,20 @@ impl Expr {
         let (re, im) = self.as_const()?.to_c64();
         (im.abs() <= 1e-12 * re.abs().max(1.0)).then_some(re)
     }
-    /// Terms plus nested call arguments: the size that the expression limit
-    /// bounds.
+    /// Terms plus nested call arguments, a coefficient beyond two machine
+    /// words counting one more per word: the size that the expression
+    /// limit bounds (so the work of exact big coefficients is bounded too).
     pub fn size(&self) -> usize {
         self.terms
-            .keys()
-            .map(|m| {
-                1 + m
-                    .iter()
-                    .map(|(v, _)| match v {
-                        Var::Call(c) => c.args.iter().map(Expr::size).sum(),
-                        _ => 0,
-                    })
-                    .sum::<usize>()
+            .iter()
+            .map(|(m, c)| {
+                1 + c.words()
+                    + m.iter()
+                        .map(|(v, _)| match v {
+                            Var::Call(c) => c.args.iter().map(Expr::size).sum(),
+                            _ => 0,
+                        })
+                        .sum::<usize>()
             })
             .sum()
     }
@@ -297,7 +298,7 @@ impl Expr {
     pub fn add(&self, o: &Expr) -> Expr {
         let mut out = self.clone();
         for (m, c) in &o.terms {
-            out.push(m.clone(), *c);
+            out.push(m.clone(), c.clone());
         }
         out
     }
@@ -482,7 +483,7 @@ impl Expr {
     /// √x: exact for p/q with a square-free part among 1, 2, 3, 6.
     pub fn sqrt(x: &Expr) -> Expr {
         if let Some(r) = x.as_const().and_then(|c| c.as_rat())
-            && r.num >= 0
+            && !r.is_negative()
         {
             return Expr::num(r.to_f64().sqrt());
         }

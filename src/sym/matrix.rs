@@ -248,7 +248,7 @@ pub fn rodrigues(w: &[Expr], theta: &Expr) -> Mat {
 /// with θ's leading coefficient 1, so that [ω]θ splits into ω and θ.
 fn common_factor(entries: &[Expr]) -> Option<(Vec<Coef>, Expr)> {
     let first = entries.iter().find(|e| !e.is_zero())?;
-    let lead = *first.terms.values().next()?;
+    let lead = first.terms.values().next()?.clone();
     let theta = first.scale(&lead.inv()?);
     let mut ks = Vec::with_capacity(entries.len());
     for e in entries {
@@ -256,7 +256,7 @@ fn common_factor(entries: &[Expr]) -> Option<(Vec<Coef>, Expr)> {
             ks.push(Coef::ZERO);
             continue;
         }
-        let k = *e.terms.values().next()?;
+        let k = e.terms.values().next()?.clone();
         if e.sub(&theta.scale(&k)).is_zero() {
             ks.push(k);
         } else {
@@ -308,7 +308,7 @@ pub fn exp6(m: &Mat) -> Option<Mat> {
         // v a numeric multiple of θ as well
         Some((all, t)) if t == theta => all[3..]
             .iter()
-            .map(|k| Expr::constant(*k).mul(&inv))
+            .map(|k| Expr::constant(k.clone()).mul(&inv))
             .collect(),
         _ => {
             let per_theta = theta.recip()?;

@@ -11,6 +11,7 @@ pub mod eval;
 pub mod expr;
 pub mod matrix;
 pub mod print;
+pub mod rat;
 pub mod trig;
 
 pub use expr::{Expr, Symbol, Wrt};

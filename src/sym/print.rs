@@ -345,20 +345,20 @@ fn coefficient(c: &Coef, st: Style) -> (bool, String) {
         Coef::Approx { re, .. } => (*re < 0.0, fmt_float(re.abs(), st.digits)),
         Coef::Exact { re, .. } => {
             let neg = re.signum() < 0.0;
-            let s = if neg { re.neg() } else { *re };
+            let s = if neg { re.neg() } else { re.clone() };
             let parts: Vec<(usize, Rat)> =
                 s.0.iter()
                     .enumerate()
                     .filter(|(_, r)| !r.is_zero())
-                    .map(|(i, r)| (i, *r))
+                    .map(|(i, r)| (i, r.clone()))
                     .collect();
             match parts.as_slice() {
                 [] => (false, "0".into()),
-                [(i, r)] => (neg, surd_term(*r, ROOTS[*i], latex)),
+                [(i, r)] => (neg, surd_term(r, ROOTS[*i], latex)),
                 _ => {
                     let inner: Vec<String> = parts
                         .iter()
-                        .map(|(i, r)| surd_term(*r, ROOTS[*i], latex))
+                        .map(|(i, r)| surd_term(r, ROOTS[*i], latex))
                         .collect();
                     let sum = inner.join(" + ").replace("+ -", "- ");
                     let wrapped = if latex {
@@ -374,17 +374,20 @@ fn coefficient(c: &Coef, st: Style) -> (bool, String) {
 }
 
 /// (p/q)√k as text or LaTeX: `3`, `17/40` (or `0.425`), `√2`, `1/√2`, `√3/2`.
-fn surd_term(r: Rat, k: i64, latex: bool) -> String {
-    let (p, q) = (r.num, r.den);
-    let sign = if p < 0 { "-" } else { "" };
-    let p = p.abs();
+fn surd_term(r: &Rat, k: i64, latex: bool) -> String {
+    let (p, q) = r.parts();
+    let sign = if r.is_negative() { "-" } else { "" };
+    let p = p.magnitude();
+    let q_small = r.small().map(|(_, q)| i128::from(q));
+    let p_one = *p == num_bigint::BigUint::from(1u8);
     if k == 1 {
-        if q == 1 {
+        if q_small == Some(1) {
             return format!("{sign}{p}");
         }
         // a decimal as typed (0.1, 0.425), in full up to 12 places; halves,
         // quarters and fifths stay fractions (0.392 = 49/125 is a decimal)
-        if q > 5
+        if let Some(q) = q_small
+            && q > 5
             && let Some(k) = (1..=12).find(|k| 10i128.pow(*k) % q == 0)
         {
             return format!("{sign}{}", fmt_float(r.to_f64().abs(), k as usize));
@@ -400,14 +403,14 @@ fn surd_term(r: Rat, k: i64, latex: bool) -> String {
     } else {
         format!("√{k}")
     };
-    let top = if p == 1 {
+    let top = if p_one {
         root.clone()
     } else {
         format!("{p}{root}")
     };
-    match (q, latex) {
-        (1, _) => format!("{sign}{top}"),
-        _ if p == 1 && i128::from(k) == q => {
+    match (q_small, latex) {
+        (Some(1), _) => format!("{sign}{top}"),
+        _ if p_one && Some(i128::from(k)) == q_small => {
             if latex {
                 format!("{sign}\\frac{{1}}{{{root}}}")
             } else {

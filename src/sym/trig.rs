@@ -45,7 +45,7 @@ pub fn realize(e: &Expr, groups: &[Vec<Symbol>], powers: &[Power]) -> Real {
                 other => poly.push((other.clone(), *k)),
             }
         }
-        let mut parts: Vec<(Vec<Trig>, Coef)> = vec![(Vec::new(), *c)];
+        let mut parts: Vec<(Vec<Trig>, Coef)> = vec![(Vec::new(), c.clone())];
         for (gi, g) in groups.iter().enumerate() {
             if let Some(basis @ (Power::Cos | Power::Sin)) = powers.get(gi).copied()
                 && let Some((s, k)) = zs.iter().find(|(s, _)| g.contains(s))
@@ -89,13 +89,17 @@ pub fn realize(e: &Expr, groups: &[Vec<Symbol>], powers: &[Power]) -> Real {
                     ct.push((k.clone(), false, 1));
                     let mut st = t;
                     st.push((k.clone(), true, 1));
-                    [(ct, c), (st, c.mul(&sin_factor))]
+                    let sc = c.mul(&sin_factor);
+                    [(ct, c), (st, sc)]
                 })
                 .collect();
         }
         for (t, k) in parts {
             let key = (poly.clone(), t);
-            let sum = out.get(&key).map_or(k, |old| old.add(&k));
+            let sum = match out.get(&key) {
+                Some(old) => old.add(&k),
+                None => k,
+            };
             out.insert(key, sum);
         }
     }
@@ -125,7 +129,10 @@ fn power_form(k: i32, sin_basis: bool) -> Vec<((u32, u32), Coef)> {
             let x = ij.mul(&Coef::int(binom * bm * sign));
             let main = kept + 2 * r;
             let key = if sin_basis { (odd, main) } else { (main, odd) };
-            let sum = out.get(&key).map_or(x, |o| o.add(&x));
+            let sum = match out.get(&key) {
+                Some(o) => o.add(&x),
+                None => x,
+            };
             out.insert(key, sum);
             bm = bm * i64::from(m - r) / i64::from(r + 1);
         }

@@ -1,0 +1,378 @@
+//! Exact fractions for the coefficients of symbolic expressions (LANGUAGE.md
+//! §7: "however large, an integer coefficient is never rounded"). A
+//! fraction that fits two machine words is held inline and computed with
+//! 128-bit intermediates; a larger one is a big rational (`num-rational`),
+//! so `(sin a + cos b)^60` keeps its binomial coefficients exact.
+
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_rational::BigRational;
+use num_traits::{One, Signed, ToPrimitive};
+
+/// A reduced fraction num/den with den > 0: inline while both fit an
+/// `i64` (the usual case), a big rational otherwise. Each value has one
+/// form, so the derived equality, order and hash are those of the value's
+/// representation (a consistent total order, not the numeric one).
+#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Rat {
+    /// num/den, reduced, den > 0.
+    Small { num: i64, den: i64 },
+    /// A fraction too large for [`Rat::Small`].
+    Big(Box<BigRational>),
+}
+
+fn gcd(a: u128, b: u128) -> u128 {
+    // Word-sized operands (the usual case) divide in hardware.
+    if let (Ok(mut x), Ok(mut y)) = (u64::try_from(a), u64::try_from(b)) {
+        while y != 0 {
+            (x, y) = (y, x % y);
+        }
+        return u128::from(x);
+    }
+    // Binary gcd: no 128-bit division.
+    let (mut x, mut y) = (a, b);
+    if x == 0 || y == 0 {
+        return x | y;
+    }
+    let shift = (x | y).trailing_zeros();
+    x >>= x.trailing_zeros();
+    while y != 0 {
+        y >>= y.trailing_zeros();
+        if x > y {
+            std::mem::swap(&mut x, &mut y);
+        }
+        y -= x;
+    }
+    x << shift
+}
+
+impl Rat {
+    /// 0.
+    pub const ZERO: Rat = Rat::Small { num: 0, den: 1 };
+    /// 1.
+    pub const ONE: Rat = Rat::Small { num: 1, den: 1 };
+
+    /// `num/den` reduced; None for a zero denominator.
+    pub fn new(num: i128, den: i128) -> Option<Rat> {
+        if den == 0 {
+            return None;
+        }
+        let neg = (num < 0) != (den < 0);
+        let (n, d) = (num.unsigned_abs(), den.unsigned_abs());
+        let g = gcd(n, d).max(1);
+        Some(Rat::from_parts(neg, n / g, d / g))
+    }
+    /// A reduced fraction ±n/d from magnitudes.
+    fn from_parts(neg: bool, n: u128, d: u128) -> Rat {
+        if let (Ok(a), Ok(b)) = (i64::try_from(n), i64::try_from(d)) {
+            return Rat::Small {
+                num: if neg { -a } else { a },
+                den: b,
+            };
+        }
+        let n = BigInt::from(n);
+        let n = if neg { -n } else { n };
+        Rat::Big(Box::new(BigRational::new_raw(n, BigInt::from(d))))
+    }
+    /// A big rational, inline when it fits.
+    fn from_big(r: BigRational) -> Rat {
+        if let (Some(num), Some(den)) = (r.numer().to_i64(), r.denom().to_i64()) {
+            return Rat::Small { num, den };
+        }
+        Rat::Big(Box::new(r))
+    }
+    /// The value as a big rational.
+    pub fn to_big(&self) -> BigRational {
+        match self {
+            Rat::Small { num, den } => BigRational::new_raw(BigInt::from(*num), BigInt::from(*den)),
+            Rat::Big(b) => (**b).clone(),
+        }
+    }
+    /// Numerator and denominator (reduced, denominator > 0).
+    pub fn parts(&self) -> (BigInt, BigInt) {
+        match self {
+            Rat::Small { num, den } => (BigInt::from(*num), BigInt::from(*den)),
+            Rat::Big(b) => (b.numer().clone(), b.denom().clone()),
+        }
+    }
+    /// Numerator and denominator when both fit an `i64`.
+    pub fn small(&self) -> Option<(i64, i64)> {
+        match self {
+            Rat::Small { num, den } => Some((*num, *den)),
+            Rat::Big(_) => None,
+        }
+    }
+    /// 64-bit words of a big fraction's numerator and denominator (0 when
+    /// inline).
+    pub fn words(&self) -> usize {
+        match self {
+            Rat::Small { .. } => 0,
+            Rat::Big(b) => (b.numer().bits() + b.denom().bits()).div_ceil(64) as usize,
+        }
+    }
+    /// The integer n.
+    pub fn int(n: i64) -> Rat {
+        Rat::Small { num: n, den: 1 }
+    }
+    /// True for 0.
+    pub fn is_zero(&self) -> bool {
+        matches!(self, Rat::Small { num: 0, .. })
+    }
+    /// True below 0.
+    pub fn is_negative(&self) -> bool {
+        match self {
+            Rat::Small { num, .. } => *num < 0,
+            Rat::Big(b) => b.is_negative(),
+        }
+    }
+    /// The sum.
+    pub fn add(&self, o: &Rat) -> Rat {
+        match (self, o) {
+            (x, y) if y.is_zero() => x.clone(),
+            (x, y) if x.is_zero() => y.clone(),
+            (Rat::Small { num: a, den: b }, Rat::Small { num: c, den: d }) => {
+                let (a, b, c, d) = (
+                    i128::from(*a),
+                    i128::from(*b),
+                    i128::from(*c),
+                    i128::from(*d),
+                );
+                if b == 1 && d == 1 {
+                    return Rat::new(a + c, 1).unwrap_or(Rat::ZERO);
+                }
+                let g = gcd(b as u128, d as u128) as i128;
+                let (p, q) = (b / g, d / g);
+                // |a q + c p| < 2^127 and b q < 2^126: no overflow.
+                Rat::new(a * q + c * p, b * q).unwrap_or(Rat::ZERO)
+            }
+            _ => big_add(self, o),
+        }
+    }
+    /// The product.
+    pub fn mul(&self, o: &Rat) -> Rat {
+        match (self, o) {
+            _ if self.is_zero() || o.is_zero() => Rat::ZERO,
+            (Rat::Small { num: a, den: b }, Rat::Small { num: c, den: d }) => {
+                let (a, b, c, d) = (
+                    i128::from(*a),
+                    i128::from(*b),
+                    i128::from(*c),
+                    i128::from(*d),
+                );
+                if b == 1 && d == 1 {
+                    return Rat::new(a * c, 1).unwrap_or(Rat::ZERO);
+                }
+                Rat::new(a * c, b * d).unwrap_or(Rat::ZERO)
+            }
+            _ => big_mul(self, o),
+        }
+    }
+    /// −x.
+    pub fn neg(&self) -> Rat {
+        match self {
+            Rat::Small { num, den } if *num != i64::MIN => Rat::Small {
+                num: -num,
+                den: *den,
+            },
+            _ => Rat::from_big(-self.to_big()),
+        }
+    }
+    /// 1/x; None for 0.
+    pub fn inv(&self) -> Option<Rat> {
+        match self {
+            _ if self.is_zero() => None,
+            Rat::Small { num, den } => Rat::new(i128::from(*den), i128::from(*num)),
+            Rat::Big(b) => Some(Rat::from_big(b.recip())),
+        }
+    }
+    /// The nearest float (±inf beyond the range of `f64`).
+    pub fn to_f64(&self) -> f64 {
+        match self {
+            Rat::Small { num, den } => *num as f64 / *den as f64,
+            Rat::Big(b) => b.to_f64().unwrap_or(f64::NAN),
+        }
+    }
+    /// The integer, when the fraction is one that fits an `i64`.
+    pub fn as_int(&self) -> Option<i64> {
+        match self {
+            Rat::Small { num, den: 1 } => Some(*num),
+            _ => None,
+        }
+    }
+    /// True when the fraction is an integer.
+    pub fn is_integer(&self) -> bool {
+        match self {
+            Rat::Small { den, .. } => *den == 1,
+            Rat::Big(b) => b.denom().is_one(),
+        }
+    }
+    /// The exact value of a finite float (every float is a dyadic
+    /// fraction); None for NaN and infinities.
+    pub fn from_f64_exact(x: f64) -> Option<Rat> {
+        if x == x.trunc() && x.abs() < 9.2e18 {
+            return Some(Rat::int(x as i64));
+        }
+        BigRational::from_float(x).map(Rat::from_big)
+    }
+    /// The decimal `digits · 10^exp` exactly (a number as typed: `0.866`
+    /// is 866/1000, `1e-13` is 1/10¹³).
+    pub fn decimal(digits: &BigInt, exp: i32) -> Rat {
+        let ten = BigInt::from(10);
+        let p = num_traits::pow(ten, exp.unsigned_abs() as usize);
+        if exp >= 0 {
+            Rat::from_big(BigRational::from_integer(digits * p))
+        } else {
+            Rat::from_big(BigRational::new(digits.clone(), p))
+        }
+    }
+    /// The fraction nearest `x` with a denominator at most `max_den`
+    /// (continued fractions), when it is within 1e-12 (relative) of `x`;
+    /// below 1e-14 a number is rounding noise and reads as 0.
+    pub fn approximate(x: f64, max_den: i128) -> Option<Rat> {
+        if !x.is_finite() || x.abs() > 1e15 {
+            return None;
+        }
+        // rounding noise of a computed zero (cos(π/2) = 6e-17)
+        if x.abs() < 1e-14 {
+            return Some(Rat::ZERO);
+        }
+        let (mut h0, mut h1, mut k0, mut k1) = (0i128, 1i128, 1i128, 0i128);
+        let mut y = x;
+        for _ in 0..40 {
+            let a = y.floor();
+            if a.abs() > 1e15 {
+                break;
+            }
+            let a = a as i128;
+            let (h2, k2) = (a * h1 + h0, a * k1 + k0);
+            if k2 > max_den {
+                break;
+            }
+            (h0, h1, k0, k1) = (h1, h2, k1, k2);
+            let r = h1 as f64 / k1 as f64;
+            if (r - x).abs() <= 1e-12 * x.abs() {
+                return Rat::new(h1, k1);
+            }
+            let f = y - a as f64;
+            if f.abs() < 1e-300 {
+                break;
+            }
+            y = 1.0 / f;
+        }
+        None
+    }
+}
+
+/// `a/b` reduced, with `b > 0` (no gcd when `b` is 1: integers are the
+/// common big case, binomial coefficients, and a gcd with 1 costs as much as
+/// a long division).
+fn reduced(a: BigInt, b: BigInt) -> Rat {
+    if b.is_one() {
+        return Rat::from_big(BigRational::from_integer(a));
+    }
+    let g = a.gcd(&b);
+    if g.is_one() {
+        Rat::from_big(BigRational::new_raw(a, b))
+    } else {
+        Rat::from_big(BigRational::new_raw(a / &g, b / g))
+    }
+}
+
+/// The sum of fractions at least one of which is big.
+fn big_add(x: &Rat, y: &Rat) -> Rat {
+    let ((a, b), (c, d)) = (x.parts(), y.parts());
+    if b == d {
+        return reduced(a + c, b);
+    }
+    reduced(a * &d + c * &b, b * d)
+}
+
+/// The product of fractions at least one of which is big: cross gcds
+/// keep the parts small, and none is taken with a denominator of 1.
+fn big_mul(x: &Rat, y: &Rat) -> Rat {
+    let ((a, b), (c, d)) = (x.parts(), y.parts());
+    let cross = |n: BigInt, m: BigInt| -> (BigInt, BigInt) {
+        if m.is_one() || n.is_one() {
+            return (n, m);
+        }
+        let g = n.gcd(&m);
+        if g.is_one() { (n, m) } else { (n / &g, m / g) }
+    };
+    let (a, d) = cross(a, d);
+    let (c, b) = cross(c, b);
+    let n = a * c;
+    let m = b * d;
+    if m.is_one() {
+        Rat::from_big(BigRational::from_integer(n))
+    } else {
+        Rat::from_big(BigRational::new_raw(n, m))
+    }
+}
+
+impl std::fmt::Display for Rat {
+    /// `p` or `p/q`.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let (p, q) = self.parts();
+        if q.is_one() {
+            write!(f, "{p}")
+        } else {
+            write!(f, "{p}/{q}")
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn small_and_big_agree() {
+        let big = Rat::new(1i128 << 100, 3).unwrap();
+        assert!(matches!(big, Rat::Big(_)));
+        let back = big.mul(&Rat::new(3, 1i128 << 100).unwrap());
+        assert_eq!(back, Rat::ONE);
+        assert!(matches!(back, Rat::Small { .. }));
+        // 2^62 + 2^62 leaves i64 and comes back by subtraction.
+        let x = Rat::int(1 << 62);
+        let y = x.add(&x);
+        assert!(matches!(y, Rat::Big(_)));
+        assert_eq!(y.add(&x.neg()), x);
+        assert_eq!(
+            Rat::int(i64::MIN).neg().add(&Rat::int(-1)),
+            Rat::int(i64::MAX)
+        );
+        assert_eq!(big.to_string(), format!("{}/3", 1u128 << 100));
+    }
+
+    #[test]
+    fn binomials_stay_exact() {
+        // C(120, 60) / 2^120 and back.
+        let mut c = Rat::ONE;
+        for k in 0..60i64 {
+            c = c.mul(&Rat::new(i128::from(120 - k), i128::from(k + 1)).unwrap());
+        }
+        assert_eq!(c.to_string(), "96614908840363322603893139521372656");
+        let half = Rat::new(1, 2).unwrap();
+        let mut d = c.clone();
+        for _ in 0..120 {
+            d = d.mul(&half);
+        }
+        assert!((d.to_f64() - 0.0726).abs() < 1e-3, "{}", d.to_f64());
+    }
+
+    #[test]
+    fn floats_and_decimals() {
+        assert_eq!(Rat::from_f64_exact(0.5), Rat::new(1, 2));
+        assert_eq!(Rat::from_f64_exact(-3.0), Some(Rat::int(-3)));
+        assert_eq!(Rat::from_f64_exact(f64::NAN), None);
+        assert_eq!(
+            Rat::decimal(&BigInt::from(866), -3),
+            Rat::new(433, 500).unwrap()
+        );
+        assert_eq!(
+            Rat::decimal(&BigInt::from(1), -13),
+            Rat::new(1, 10_000_000_000_000).unwrap()
+        );
+        assert_eq!(Rat::decimal(&BigInt::from(15), 2), Rat::int(1500));
+    }
+}
