@@ -34,11 +34,19 @@ impl Expr {
     }
 }
 
+/// ∂s/∂x or ds/dt of one symbol: 1 for the symbol itself; by a plain
+/// symbol t, θ̇ for a function of t (the chain rule); 0 otherwise — a
+/// partial derivative by q or q̇ holds every other coordinate and rate
+/// fixed, and q and q̇ are independent (LANGUAGE.md §7).
+/// (The symbol decides which: [`Wrt::by`].)
 fn symbol_diff(s: &Symbol, wrt: &Wrt) -> Expr {
-    match wrt {
-        Wrt::Sym(x) | Wrt::Time(x) if x == s => Expr::one(),
-        Wrt::Time(_) if s.timed => Expr::symbol(s.dot()),
-        _ => Expr::zero(),
+    let (Wrt::Time(x) | Wrt::Sym(x)) = wrt;
+    if x == s {
+        Expr::one()
+    } else if !x.is_timed() && s.time.as_deref() == Some(&*x.name) {
+        Expr::symbol(s.dot())
+    } else {
+        Expr::zero()
     }
 }
 
