@@ -100,3 +100,487 @@ fn declaring_later_changes_nothing_before() {
     let out = last("given theta(t) : scalar\nx = theta^2\ngiven theta : scalar\ndiff(x, t)");
     assert_eq!(out, "2 theta θ̇");
 }
+
+// ------------------------------------------------------ the differential test
+
+use proptest::prelude::*;
+use proptest::test_runner::{Config, TestRunner};
+use std::f64::consts::PI;
+
+/// Plain symbols.
+const SYMS: [&str; 3] = ["a", "b", "c"];
+/// Functions of time (of `t`).
+const QS: [&str; 2] = ["q1", "q2"];
+
+/// What a derivative is taken by.
+#[derive(Debug, Clone, Copy)]
+enum By {
+    /// The time variable t: the total derivative.
+    Time,
+    /// A plain symbol.
+    Sym(usize),
+    /// A function of time q (`dots` 0) or its rate q̇ (`dots` 1): the
+    /// partial derivative.
+    Q(usize, u8),
+}
+
+/// A random expression over the engine's operations. Families the engine
+/// gets wrong in another engineer's territory are left out of the
+/// generator for now (see [`expr`]).
+#[derive(Debug, Clone)]
+enum T {
+    Sym(usize),
+    Time,
+    /// q_i, q̇_i, q̈_i.
+    Q(usize, u8),
+    Int(i64),
+    /// A decimal as typed, `m / 10^k`.
+    Dec(i64, u32),
+    Pi,
+    Neg(Box<T>),
+    Add(Box<T>, Box<T>),
+    Sub(Box<T>, Box<T>),
+    Mul(Box<T>, Box<T>),
+    Div(Box<T>, Box<T>),
+    Recip(Box<T>),
+    Pow(Box<T>, i32),
+    Sqrt(Box<T>),
+    /// sin (true) or cos of an integer combination of a, b, t and q1, plus
+    /// a multiple p/d of π (d ≤ 12), plus a decimal offset.
+    Angle(bool, [i8; 4], (i8, u8), Option<(i64, u32)>),
+    Sin(Box<T>),
+    Cos(Box<T>),
+    Tan(Box<T>),
+    Asin(Box<T>),
+    Acos(Box<T>),
+    Atan(Box<T>),
+    Atan2(Box<T>, Box<T>),
+    Diff(Box<T>, By),
+}
+
+/// A point: a, b, c, t, and each q_i(τ) = Σ c_k τ^k / k! (so that q̇, q̈
+/// are its derivatives at τ = t).
+#[derive(Debug, Clone)]
+struct Point {
+    syms: [f64; 3],
+    t: f64,
+    q: [[f64; 5]; 2],
+}
+
+/// The values the leaves read: the point with its rates at time `t`, and
+/// any overrides a finite difference makes.
+#[derive(Debug, Clone)]
+struct At {
+    syms: [f64; 3],
+    t: f64,
+    /// q_i^{(k)} for k = 0..3.
+    q: [[f64; 4]; 2],
+}
+
+impl Point {
+    fn at(&self, t: f64) -> At {
+        let mut q = [[0.0; 4]; 2];
+        for (i, c) in self.q.iter().enumerate() {
+            for (k, out) in q[i].iter_mut().enumerate() {
+                // d^k/dτ^k Σ c_j τ^j / j! = Σ_{j ≥ k} c_j τ^{j−k} / (j−k)!
+                let mut fact = 1.0;
+                for j in k..5 {
+                    if j > k {
+                        fact *= (j - k) as f64;
+                    }
+                    *out += c[j] * t.powi((j - k) as i32) / fact;
+                }
+            }
+        }
+        At {
+            syms: self.syms,
+            t,
+            q,
+        }
+    }
+}
+
+fn dec(m: i64, k: u32) -> f64 {
+    m as f64 / 10f64.powi(k as i32)
+}
+
+fn dec_src(m: i64, k: u32) -> String {
+    let x = dec(m, k);
+    format!("{x:.prec$}", prec = k as usize)
+}
+
+impl T {
+    /// The value, evaluated directly in f64 (independent of the engine),
+    /// and an estimate of its absolute rounding error in units of the
+    /// machine epsilon — the size of the terms an expanded form adds up
+    /// (products of sums expand; `(a − b)^9` at a ≈ b cancels), carried
+    /// through the functions by their derivatives.
+    fn eval(&self, at: &At) -> (f64, f64) {
+        let un = |x: &T, f: &dyn Fn(f64) -> f64, df: &dyn Fn(f64) -> f64| {
+            let (v, e) = x.eval(at);
+            let y = f(v);
+            (y, y.abs() + e * df(v).abs())
+        };
+        match self {
+            T::Sym(i) => (at.syms[*i], at.syms[*i].abs()),
+            T::Time => (at.t, at.t.abs()),
+            T::Q(i, d) => {
+                let v = at.q[*i][*d as usize];
+                (v, v.abs())
+            }
+            T::Int(n) => (*n as f64, 0.0),
+            T::Dec(m, k) => (dec(*m, *k), dec(*m, *k).abs()),
+            T::Pi => (PI, PI),
+            T::Neg(x) => {
+                let (v, e) = x.eval(at);
+                (-v, e)
+            }
+            T::Add(x, y) | T::Sub(x, y) => {
+                let ((a, ea), (b, eb)) = (x.eval(at), y.eval(at));
+                let v = if matches!(self, T::Add(..)) { a + b } else { a - b };
+                (v, ea + eb)
+            }
+            T::Mul(x, y) => {
+                let ((a, ea), (b, eb)) = (x.eval(at), y.eval(at));
+                (a * b, ea * eb.max(b.abs()) + eb * ea.max(a.abs()))
+            }
+            T::Div(x, y) => {
+                let ((a, ea), (b, eb)) = (x.eval(at), y.eval(at));
+                let v = a / b;
+                (v, (ea + v.abs() * eb) / b.abs() + v.abs())
+            }
+            T::Recip(x) => un(x, &|v| 1.0 / v, &|v| 1.0 / (v * v)),
+            T::Pow(x, n) => {
+                let (v, e) = x.eval(at);
+                let y = v.powi(*n);
+                let grow = if *n >= 0 {
+                    e.max(v.abs()).powi(*n)
+                } else {
+                    y.abs() * (1.0 + (*n as f64).abs() * e / v.abs())
+                };
+                (y, grow + y.abs())
+            }
+            T::Sqrt(x) => un(x, &f64::sqrt, &|v| 0.5 / v.sqrt()),
+            T::Angle(sin, k, (p, d), off) => {
+                let (arg, _) = self.angle_arg(*k, *p, *d, *off, at);
+                let v = if *sin { arg.sin() } else { arg.cos() };
+                (v, 1.0 + arg.abs())
+            }
+            T::Sin(x) => un(x, &f64::sin, &f64::cos),
+            T::Cos(x) => un(x, &f64::cos, &f64::sin),
+            T::Tan(x) => un(x, &f64::tan, &|v| 1.0 + v.tan().powi(2)),
+            T::Asin(x) => un(x, &f64::asin, &|v| 1.0 / (1.0 - v * v).sqrt()),
+            T::Acos(x) => un(x, &f64::acos, &|v| 1.0 / (1.0 - v * v).sqrt()),
+            T::Atan(x) => un(x, &f64::atan, &|v| 1.0 / (1.0 + v * v)),
+            T::Atan2(y, x) => {
+                let ((b, eb), (a, ea)) = (y.eval(at), x.eval(at));
+                let r2 = a * a + b * b;
+                (b.atan2(a), 1.0 + (a.abs() * eb + b.abs() * ea) / r2)
+            }
+            T::Diff(x, by) => x.derivative(*by, at),
+        }
+    }
+
+    fn angle_arg(&self, k: [i8; 4], p: i8, d: u8, off: Option<(i64, u32)>, at: &At) -> (f64, ()) {
+        let vars = [at.syms[0], at.syms[1], at.t, at.q[0][0]];
+        let mut arg = PI * f64::from(p) / f64::from(d);
+        arg += k.iter().zip(vars).map(|(c, v)| f64::from(*c) * v).sum::<f64>();
+        if let Some((m, e)) = off {
+            arg += dec(m, e);
+        }
+        (arg, ())
+    }
+
+    /// The derivative by central differences (Richardson-extrapolated),
+    /// with its error scale; NaN where two step sizes disagree (near a
+    /// singularity, where no finite difference is trustworthy).
+    fn derivative(&self, by: By, at: &At) -> (f64, f64) {
+        let f = |h: f64| -> (f64, f64) {
+            let mut p = at.clone();
+            match by {
+                By::Sym(i) => p.syms[i] += h,
+                By::Q(i, d) => p.q[i][d as usize] += h,
+                By::Time => {
+                    p.t += h;
+                    // q^{(k)}(t + h) by Taylor from the rates at t
+                    for i in 0..2 {
+                        let q = at.q[i];
+                        for k in 0..4 {
+                            let mut s = 0.0;
+                            let mut fact = 1.0;
+                            for (j, qj) in q.iter().enumerate().skip(k) {
+                                if j > k {
+                                    fact *= (j - k) as f64;
+                                }
+                                s += qj * h.powi((j - k) as i32) / fact;
+                            }
+                            p.q[i][k] = s;
+                        }
+                    }
+                }
+            }
+            self.eval(&p)
+        };
+        let d = |h: f64| (f(h).0 - f(-h).0) / (2.0 * h);
+        let h = 1e-3;
+        let (d1, d2) = (d(h), d(h / 2.0));
+        let rich = (4.0 * d2 - d1) / 3.0;
+        let (_, e) = f(0.0);
+        if (d1 - d2).abs() > 1e-3 * (1.0 + rich.abs()) {
+            return (f64::NAN, e);
+        }
+        (rich, e.max(rich.abs()))
+    }
+
+    /// True when a derivative is taken somewhere (the engine's answer is
+    /// then checked against finite differences, looser).
+    fn has_diff(&self) -> bool {
+        match self {
+            T::Diff(..) => true,
+            T::Neg(x)
+            | T::Recip(x)
+            | T::Pow(x, _)
+            | T::Sqrt(x)
+            | T::Sin(x)
+            | T::Cos(x)
+            | T::Tan(x)
+            | T::Asin(x)
+            | T::Acos(x)
+            | T::Atan(x) => x.has_diff(),
+            T::Add(x, y) | T::Sub(x, y) | T::Mul(x, y) | T::Div(x, y) | T::Atan2(x, y) => {
+                x.has_diff() || y.has_diff()
+            }
+            _ => false,
+        }
+    }
+
+    /// The expression as chasles source, fully parenthesized.
+    fn source(&self) -> String {
+        let un = |f: &str, x: &T| format!("{f}({})", x.source());
+        match self {
+            T::Sym(i) => SYMS[*i].into(),
+            T::Time => "t".into(),
+            T::Q(i, d) => format!("{}{}", QS[*i], "'".repeat(*d as usize)),
+            T::Int(n) => format!("({n})"),
+            T::Dec(m, k) => format!("({})", dec_src(*m, *k)),
+            T::Pi => "pi".into(),
+            T::Neg(x) => format!("(-{})", x.source()),
+            T::Add(x, y) => format!("({} + {})", x.source(), y.source()),
+            T::Sub(x, y) => format!("({} - {})", x.source(), y.source()),
+            T::Mul(x, y) => format!("({} * {})", x.source(), y.source()),
+            T::Div(x, y) => format!("({} / {})", x.source(), y.source()),
+            T::Recip(x) => format!("(1 / {})", x.source()),
+            T::Pow(x, n) => format!("({}^({n}))", x.source()),
+            T::Sqrt(x) => un("sqrt", x),
+            T::Angle(sin, k, (p, d), off) => {
+                let names = ["a", "b", "t", "q1"];
+                let mut arg: Vec<String> = k
+                    .iter()
+                    .zip(names)
+                    .filter(|(c, _)| **c != 0)
+                    .map(|(c, n)| format!("({c}) * {n}"))
+                    .collect();
+                arg.push(format!("({p}) * pi / {d}"));
+                if let Some((m, e)) = off {
+                    arg.push(format!("({})", dec_src(*m, *e)));
+                }
+                format!("{}({})", if *sin { "sin" } else { "cos" }, arg.join(" + "))
+            }
+            T::Sin(x) => un("sin", x),
+            T::Cos(x) => un("cos", x),
+            T::Tan(x) => un("tan", x),
+            T::Asin(x) => un("asin", x),
+            T::Acos(x) => un("acos", x),
+            T::Atan(x) => un("atan", x),
+            T::Atan2(y, x) => format!("atan2({}, {})", y.source(), x.source()),
+            T::Diff(x, by) => {
+                let by = match by {
+                    By::Time => "t".to_string(),
+                    By::Sym(i) => SYMS[*i].to_string(),
+                    By::Q(i, d) => format!("{}{}", QS[*i], "'".repeat(*d as usize)),
+                };
+                format!("diff({}, {by})", x.source())
+            }
+        }
+    }
+}
+
+fn b(x: T) -> Box<T> {
+    Box::new(x)
+}
+
+/// Families the engine still gets wrong in another engineer's territory
+/// (issue 21); left out of the generator until fixed there:
+/// - `RECIPROCALS` (`exact`, item 2): 1/x, quotients and negative powers of
+///   sums print 0, inf or NaN (`1/sin(t)`, `(cos(q1 - 10π/3))^-2`).
+const RECIPROCALS: bool = false;
+
+/// The generator (see the families left out above).
+fn expr() -> impl Strategy<Value = T> {
+    let offset = prop::option::of((-300..300i64, 1..4u32));
+    let leaf = prop_oneof![
+        (0..3usize).prop_map(T::Sym),
+        Just(T::Time),
+        (0..2usize, 0..2u8).prop_map(|(i, d)| T::Q(i, d)),
+        (-3..4i64).prop_map(T::Int),
+        (-999..1000i64, 1..4u32).prop_map(|(m, k)| T::Dec(m, k)),
+        Just(T::Pi),
+        (
+            any::<bool>(),
+            prop::array::uniform4(-2..3i8),
+            (-12..13i8, 1..13u8),
+            offset
+        )
+            .prop_map(|(s, k, pd, off)| T::Angle(s, k, pd, off)),
+    ];
+    let tree = leaf.prop_recursive(3, 16, 2, |inner| {
+        prop_oneof![
+            3 => (inner.clone(), inner.clone()).prop_map(|(x, y)| T::Add(b(x), b(y))),
+            2 => (inner.clone(), inner.clone()).prop_map(|(x, y)| T::Sub(b(x), b(y))),
+            3 => (inner.clone(), inner.clone()).prop_map(|(x, y)| T::Mul(b(x), b(y))),
+            1 => (inner.clone(), inner.clone()).prop_map(|(x, y)| if RECIPROCALS {
+                T::Div(b(x), b(y))
+            } else {
+                T::Mul(b(x), b(y))
+            }),
+            1 => inner.clone().prop_map(|x| if RECIPROCALS { T::Recip(b(x)) } else { T::Neg(b(x)) }),
+            1 => inner.clone().prop_map(|x| T::Neg(b(x))),
+            2 => (inner.clone(), if RECIPROCALS { -2..4i32 } else { 0..4i32 })
+                .prop_map(|(x, n)| T::Pow(b(x), n)),
+            1 => inner.clone().prop_map(|x| T::Sqrt(b(x))),
+            1 => inner.clone().prop_map(|x| T::Sin(b(x))),
+            1 => inner.clone().prop_map(|x| T::Cos(b(x))),
+            1 => inner.clone().prop_map(|x| T::Tan(b(x))),
+            1 => inner.clone().prop_map(|x| T::Asin(b(x))),
+            1 => inner.clone().prop_map(|x| T::Acos(b(x))),
+            1 => inner.clone().prop_map(|x| T::Atan(b(x))),
+            1 => (inner.clone(), inner).prop_map(|(y, x)| T::Atan2(b(y), b(x))),
+        ]
+    });
+    let by = prop_oneof![
+        Just(By::Time),
+        (0..3usize).prop_map(By::Sym),
+        (0..2usize, 0..2u8).prop_map(|(i, d)| By::Q(i, d)),
+    ];
+    prop_oneof![
+        3 => tree.clone(),
+        1 => (tree.clone(), by.clone()).prop_map(|(x, by)| T::Diff(b(x), by)),
+        1 => (tree.clone(), tree, by).prop_map(|(x, y, by)| T::Mul(b(x), b(T::Diff(b(y), by)))),
+    ]
+}
+
+fn point() -> impl Strategy<Value = Point> {
+    (
+        prop::array::uniform3(-2.0..2.0f64),
+        -1.0..1.0f64,
+        prop::array::uniform2(prop::array::uniform5(-1.5..1.5f64)),
+    )
+        .prop_map(|(syms, t, q)| Point { syms, t, q })
+}
+
+/// The statements binding the point's numbers (q̈ too, which derivatives
+/// by t bring in).
+fn bindings(at: &At) -> String {
+    let mut s = String::new();
+    for (n, v) in SYMS.iter().zip(at.syms) {
+        s += &format!("{n} = {v:?}\n");
+    }
+    s += &format!("t = {:?}\n", at.t);
+    for (i, q) in QS.iter().enumerate() {
+        for d in 0..3 {
+            s += &format!("{q}{} = {:?}\n", "'".repeat(d), at.q[i][d]);
+        }
+    }
+    s
+}
+
+/// What one case showed: checked, refused by the engine (an error), or
+/// skipped (the reference is not finite or not trustworthy there).
+#[derive(Debug, Default)]
+struct Tally {
+    checked: usize,
+    refused: usize,
+    skipped: usize,
+}
+
+/// Checks one expression at one point; Err describes a wrong answer.
+fn check(e: &T, p: &Point, tally: &mut Tally) -> Result<(), String> {
+    let at = p.at(p.t);
+    let (want, err) = e.eval(&at);
+    if !want.is_finite() || !err.is_finite() || want.abs() > 1e8 || err > 1e12 {
+        tally.skipped += 1;
+        return Ok(());
+    }
+    let src = e.source();
+    let decl = "given a, b, c : scalar\ngiven q1(t), q2(t) : scalar\n";
+    let later = format!("{decl}x = {src}\n{}y = x\n", bindings(&at));
+    let (s, n, msg) = session(&later);
+    if n > 0 {
+        // a refusal is an answer; a wrong value is not
+        if std::env::var_os("CHASLES_DIFF_VERBOSE").is_some() {
+            eprintln!("refused: {src}\n{msg}");
+        }
+        tally.refused += 1;
+        return Ok(());
+    }
+    let got = number(&s, "y").ok_or_else(|| {
+        format!(
+            "bound later, the value is not a number: {:?}\n{later}{msg}",
+            s.env.get("y").and_then(|b| b.val.clone())
+        )
+    })?;
+    let tol = if e.has_diff() {
+        1e-5 * err.max(1.0)
+    } else {
+        1e-9 * err.max(want.abs())
+    };
+    if !((got - want).abs() <= tol || (got.is_nan() && want.is_nan())) {
+        return Err(format!(
+            "bound later: {got} but {want} (tolerance {tol:e})\n{later}"
+        ));
+    }
+    if !e.has_diff() {
+        let first = format!("{}x = {src}\n", bindings(&at));
+        let (s, n, msg) = session(&first);
+        if n == 0 {
+            let typed = number(&s, "x")
+                .ok_or_else(|| format!("numbers first give no number\n{first}{msg}"))?;
+            if (typed - got).abs() > 1e-9 * err.max(typed.abs()).max(1e-300) {
+                return Err(format!(
+                    "numbers first {typed}, bound later {got}\n{first}\n{later}"
+                ));
+            }
+        }
+    }
+    tally.checked += 1;
+    Ok(())
+}
+
+/// The differential test: `CHASLES_DIFF_CASES` cases (2,000 by default).
+#[test]
+fn random_expressions_agree_with_numbers() {
+    let cases: u32 = std::env::var("CHASLES_DIFF_CASES")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(2000);
+    let mut runner = TestRunner::new(Config {
+        cases,
+        failure_persistence: None,
+        ..Config::default()
+    });
+    let tally = std::cell::RefCell::new(Tally::default());
+    let result = runner.run(&(expr(), point()), |(e, p)| {
+        check(&e, &p, &mut tally.borrow_mut()).map_err(TestCaseError::fail)
+    });
+    let t = tally.into_inner();
+    eprintln!(
+        "checked {}, refused {}, skipped {} (of {} runs, shrinking included)",
+        t.checked,
+        t.refused,
+        t.skipped,
+        t.checked + t.refused + t.skipped
+    );
+    if let Err(e) = result {
+        panic!("{e}");
+    }
+}

@@ -38,7 +38,8 @@ pub fn current(b: &Binding, env: &Env) -> Option<Value> {
 /// those numbers to machine precision (never left as calls of numbers such
 /// as `cos((1/9) π)`), typed by what it is — the formula's kind where the
 /// canonical form earned it exactly (a rotation, a scalar, a vector), else
-/// what the numbers are, as for numbers typed first. Partly bound, the
+/// what the numbers are, as for numbers typed first (π alone is a number
+/// too: it is no symbol). Partly bound, the
 /// numbers are put in ([`crate::sym::Expr::at_numbers`]).
 fn formula(kind: &Kind, m: &crate::sym::Mat, env: &Env) -> Value {
     let lookup = |s: &Symbol| match env.get(&*super::formula::binding_name(s)) {
@@ -50,9 +51,6 @@ fn formula(kind: &Kind, m: &crate::sym::Mat, env: &Env) -> Value {
     };
     let mut syms = Vec::new();
     m.data.iter().for_each(|e| e.symbols(&mut syms));
-    if syms.is_empty() {
-        return super::formula::make(kind, m.clone());
-    }
     if syms.iter().all(|s| lookup(s).is_some()) {
         let xs: Option<Vec<f64>> = m.data.iter().map(|e| e.eval(&lookup)).collect();
         if let Some(xs) = xs {
