@@ -51,6 +51,9 @@ fn formula(kind: &Kind, m: &crate::sym::Mat, env: &Env) -> Value {
     };
     let mut syms = Vec::new();
     m.data.iter().for_each(|e| e.symbols(&mut syms));
+    if !syms.iter().any(|s| lookup(s).is_some()) && !syms.is_empty() {
+        return super::formula::make(kind, m.clone());
+    }
     if syms.iter().all(|s| lookup(s).is_some()) {
         let xs: Option<Vec<f64>> = m.data.iter().map(|e| e.eval(&lookup)).collect();
         if let Some(xs) = xs {

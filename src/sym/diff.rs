@@ -66,7 +66,12 @@ fn call_diff(c: &Call, wrt: &Wrt) -> Expr {
     let x = &c.args[0];
     let dx = x.diff(wrt);
     let me = Expr::var(Var::Call(Arc::new(c.clone())));
-    let recip = |e: &Expr| e.recip().unwrap_or_default();
+    // 1/e, as a plain call where the exact reciprocal does not fit (never
+    // 0: a derivative that cannot be formed exactly is still right).
+    let recip = |e: &Expr| {
+        e.recip()
+            .unwrap_or_else(|| Expr::call(Func::Recip, vec![e.clone()]))
+    };
     let one = Expr::one();
     let outer = match c.f {
         Func::Sin => Expr::cos(x),

@@ -112,7 +112,11 @@ pub fn rebuild(f: Func, args: &[Expr]) -> Expr {
         Func::Abs => Expr::apply(f, x, f64::abs),
         Func::Exp => Expr::apply(f, x, f64::exp),
         Func::Sqrt => Expr::sqrt(x),
-        Func::Recip => x.recip().unwrap_or_else(|| Expr::num(f64::INFINITY)),
+        // 1/0 is inf; a reciprocal whose exact form does not fit stays a call
+        Func::Recip if x.is_zero() => Expr::num(f64::INFINITY),
+        Func::Recip => x
+            .recip()
+            .unwrap_or_else(|| Expr::call(Func::Recip, vec![x.clone()])),
         Func::Atan2 => Expr::atan2(x, &args[1]),
     }
 }
