@@ -187,11 +187,11 @@ impl Point {
             for (k, out) in q[i].iter_mut().enumerate() {
                 // d^k/dτ^k Σ c_j τ^j / j! = Σ_{j ≥ k} c_j τ^{j−k} / (j−k)!
                 let mut fact = 1.0;
-                for j in k..5 {
+                for (j, cj) in c.iter().enumerate().skip(k) {
                     if j > k {
                         fact *= (j - k) as f64;
                     }
-                    *out += c[j] * t.powi((j - k) as i32) / fact;
+                    *out += cj * t.powi((j - k) as i32) / fact;
                 }
             }
         }
