@@ -4,7 +4,8 @@
 //! Proposition 3.16, inverses by transpose, the adjoint (Definition 3.20),
 //! [x], cross, dot, det, trace, the Euler/RPY/quaternion maps — and the
 //! builtins of symbols themselves: `diff(x, t)` (chain rule, §3.2.2's
-//! Ṙ Rᵀ = [ω_s]) and `simplify(x)`.
+//! Ṙ Rᵀ = [ω_s]), `simplify(x)`, `expand(x)` and `subs(x, name, value)`;
+//! tan, cot, sec and csc of a symbol as quotients of sin and cos.
 
 use super::{Area, ArgError, Args, Builtin, Typing};
 use crate::check::ty::{Kind, Ty};
@@ -238,7 +239,7 @@ pub fn eval_symbolic(name: &str, vals: &[Value], kind: &Kind) -> Out {
         )),
         ("sin", 1) => ok(scalar(Expr::sin(&s(0)?))),
         ("cos", 1) => ok(scalar(Expr::cos(&s(0)?))),
-        ("tan", 1) => ok(scalar(Expr::sin(&s(0)?).mul(&Expr::cos(&s(0)?).recip()?))),
+        ("tan" | "cot" | "sec" | "csc", 1) => ok(scalar(ratio(name, &s(0)?)?)),
         ("sqrt", 1) => ok(scalar(Expr::sqrt(&s(0)?))),
         ("atan2", 2) => ok(scalar(Expr::atan2(&s(0)?, &s(1)?))),
         ("asin" | "acos" | "atan" | "abs", 1) => {
@@ -251,9 +252,39 @@ pub fn eval_symbolic(name: &str, vals: &[Value], kind: &Kind) -> Out {
             ok(scalar(Expr::apply(f, &s(0)?, g)))
         }
         ("diff", 2) => Some(diff(&vals[0], &ms[0], &ms[1], kind)),
-        ("simplify", 1) => ok(vals[0].clone()),
+        ("simplify" | "expand", 1) => ok(make(&vals[0].kind(), ms[0].map(Expr::cancel))),
+        ("subs", 3) => Some(subs(&vals[0], &ms[0], &ms[1], &ms[2])),
         _ => None,
     }
+}
+
+/// tan, cot, sec and csc as quotients of sin and cos (a kept reciprocal
+/// that prints `tan(t)`); None at a pole (a zero denominator).
+fn ratio(name: &str, x: &Expr) -> Option<Expr> {
+    let (s, c) = (Expr::sin(x), Expr::cos(x));
+    let (num, den) = match name {
+        "tan" => (s, c),
+        "cot" => (c, s),
+        "sec" => (Expr::one(), c),
+        _ => (Expr::one(), s),
+    };
+    Some(num.mul(&den.recip()?).cancel())
+}
+
+/// `subs(x, name, value)`: x with the symbol `name` replaced by `value` (a
+/// number or an expression), re-canonicalized.
+fn subs(v: &Value, x: &Mat, name: &Mat, by: &Mat) -> Result<Value, String> {
+    let sym = match name.data.as_slice() {
+        [e] => as_symbol(e),
+        _ => None,
+    }
+    .ok_or("subs(x, name, value) replaces a symbol: subs(x, t, 0.5), subs(x, t1, t2 - t3)")?;
+    let value = match by.data.as_slice() {
+        [e] => e.clone(),
+        _ => return Err("subs(x, name, value) puts a scalar in place of the symbol".into()),
+    };
+    let by = |s: &crate::sym::Symbol| (*s == sym).then(|| value.clone());
+    Ok(make(&v.kind(), x.map(|e| e.subst(&by).cancel())))
 }
 
 /// exp of a symbolic so(3) or se(3) matrix (or of a 3- or 6-vector of
@@ -323,6 +354,19 @@ fn same_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     Ok(args[0])
 }
 
+/// `subs`: a scalar symbol replaced by a scalar; the result has x's type.
+fn subs_rule(args: &[Ty]) -> Result<Ty, ArgError> {
+    for (i, what) in [(1, "the name of a scalar symbol"), (2, "a scalar value")] {
+        if args[i].kind != Kind::Scalar && args[i].kind != Kind::Unknown {
+            return Err(ArgError::type_of(
+                i,
+                format!("subs(x, name, value) takes {what} here"),
+            ));
+        }
+    }
+    Ok(args[0])
+}
+
 /// The numeric meaning of `diff`: a number is constant, its derivative 0.
 fn eval_diff(a: &mut Args) -> Result<Value, Diagnostic> {
     let m = a.mat(0)?;
@@ -359,6 +403,34 @@ pub(super) fn builtins() -> Vec<Builtin> {
             typing: Typing::Custom {
                 arity: (1, 1),
                 rule: same_rule,
+            },
+            eval: |a| Ok(a.value(0).clone()),
+        },
+        Builtin {
+            name: "expand",
+            aliases: &[],
+            signature: "expand(x) -> x multiplied out",
+            section: "§7 (LANGUAGE.md)",
+            doc: "products and powers multiplied out (the canonical form always is; angle sums stay folded)",
+            example: "given a, b : scalar; expand((a + b)^2)",
+            area: Area::Scalars,
+            typing: Typing::Custom {
+                arity: (1, 1),
+                rule: same_rule,
+            },
+            eval: |a| Ok(a.value(0).clone()),
+        },
+        Builtin {
+            name: "subs",
+            aliases: &[],
+            signature: "subs(x, name: symbol, value: scalar) -> x with value for name",
+            section: "§7 (LANGUAGE.md)",
+            doc: "substitution: the symbol replaced by a number or an expression, simplified",
+            example: "given t1, t2 : scalar; subs(cos(t1 + t2), t2, -t1)",
+            area: Area::Scalars,
+            typing: Typing::Custom {
+                arity: (3, 3),
+                rule: subs_rule,
             },
             eval: |a| Ok(a.value(0).clone()),
         },

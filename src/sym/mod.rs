@@ -9,8 +9,10 @@ pub mod coef;
 pub mod diff;
 pub mod eval;
 pub mod expr;
+pub mod fraction;
 pub mod matrix;
 pub mod print;
+pub mod rational;
 pub mod trig;
 
 pub use expr::{Expr, Symbol, Wrt};

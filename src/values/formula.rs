@@ -116,6 +116,12 @@ pub fn binary(op: BinOp, a: &Value, b: &Value, kind: &Kind) -> Result<Value, Str
         },
         BinOp::Pow => return pow(&x, &y, a.kind(), kind),
     };
+    // a quotient's common factors cancel: (a² − b²)/(a − b) = a + b
+    let m = if m.data.iter().any(Expr::has_recip) {
+        m.map(Expr::cancel)
+    } else {
+        m
+    };
     Ok(make(kind, m))
 }
 
