@@ -11,6 +11,7 @@ use super::{Area, ArgError, Args, Builtin, Typing};
 use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::Diagnostic;
 use crate::sym::Expr;
+use crate::sym::branch::{self, Branch};
 use crate::sym::expr::{Func, Wrt, as_symbol};
 use crate::sym::matrix::{self as sm, Mat};
 use crate::values::formula::{self, make, mat_of, scalar, scalar_of};
@@ -225,18 +226,11 @@ pub fn eval_symbolic(name: &str, vals: &[Value], kind: &Kind) -> Out {
             }
             ok(make(&Kind::Vector(Some(4)), Mat::column(out)))
         }
-        ("euler_zyx", 1) if shape(0) == (3, 3) => {
-            ok(tuple(euler_zyx(&ms[0])?.into_iter().map(scalar).collect()))
+        ("euler_zyx" | "euler_zxz" | "rpy" | "quat" | "cayley" | "log" | "MatrixLog3", 1)
+            if shape(0) == (3, 3) =>
+        {
+            inverse_map(name, &ms[0])
         }
-        ("euler_zxz", 1) if shape(0) == (3, 3) => {
-            ok(tuple(euler_zxz(&ms[0])?.into_iter().map(scalar).collect()))
-        }
-        ("quat", 1) if shape(0) == (3, 3) => {
-            ok(make(&Kind::Vector(Some(4)), Mat::column(quat(&ms[0])?)))
-        }
-        ("rpy", 1) if shape(0) == (3, 3) => ok(tuple(
-            euler_zyx(&ms[0])?.into_iter().rev().map(scalar).collect(),
-        )),
         ("sin", 1) => ok(scalar(Expr::sin(&s(0)?))),
         ("cos", 1) => ok(scalar(Expr::cos(&s(0)?))),
         ("tan" | "cot" | "sec" | "csc", 1) => ok(scalar(ratio(name, &s(0)?)?)),
@@ -256,6 +250,97 @@ pub fn eval_symbolic(name: &str, vals: &[Value], kind: &Kind) -> Out {
         ("subs", 3) => Some(subs(&vals[0], &ms[0], &ms[1], &ms[2])),
         _ => None,
     }
+}
+
+/// The closed form of an inverse map of a symbolic rotation on its branch
+/// ([`branch`]), and that branch; None where there is none.
+fn on_branch(name: &str, r: &Mat) -> Option<(Value, Branch)> {
+    let scalars = |v: Vec<Expr>| tuple(v.into_iter().map(scalar).collect());
+    Some(match name {
+        "euler_zyx" | "rpy" => {
+            let (mut v, b) = branch::euler(r, true)?;
+            if name == "rpy" {
+                v.reverse();
+            }
+            (scalars(v), b)
+        }
+        "euler_zxz" => {
+            let (v, b) = branch::euler(r, false)?;
+            (scalars(v), b)
+        }
+        "quat" => {
+            let (v, b) = branch::quat(r)?;
+            (make(&Kind::Vector(Some(4)), Mat::column(v)), b)
+        }
+        "cayley" => {
+            let (v, b) = branch::cayley(r)?;
+            (make(&Kind::Vector(Some(3)), Mat::column(v)), b)
+        }
+        "log" => {
+            let (m, b) = branch::log3(r)?;
+            (make(&Kind::So3, m), b)
+        }
+        "MatrixLog3" => {
+            let (m, b) = branch::log3(r)?;
+            (vec3(&sm::unskew(&m)), b)
+        }
+        _ => return None,
+    })
+}
+
+/// euler_zyx, euler_zxz, rpy, quat, cayley and the logs of a symbolic
+/// rotation: the closed form on its branch, else the general form (atan2
+/// and sqrt, right on every branch), else None (the call is kept).
+fn inverse_map(name: &str, r: &Mat) -> Out {
+    if let Some((v, _)) = on_branch(name, r) {
+        return ok(v);
+    }
+    match name {
+        "euler_zyx" => ok(tuple(euler_zyx(r)?.into_iter().map(scalar).collect())),
+        "euler_zxz" => ok(tuple(euler_zxz(r)?.into_iter().map(scalar).collect())),
+        "quat" => ok(make(&Kind::Vector(Some(4)), Mat::column(quat(r)?))),
+        "rpy" => ok(tuple(euler_zyx(r)?.into_iter().rev().map(scalar).collect())),
+        _ => None,
+    }
+}
+
+/// The note a closed form on a branch is printed with (LANGUAGE.md §7:
+/// say which branch was assumed): `assumed cos(b) > 0 and a, b, c in
+/// (−π, π]`. None when the call has no such form.
+pub fn branch_note(name: &str, vals: &[Value]) -> Option<String> {
+    let r = match vals {
+        [v] => mat_of(v)?,
+        _ => return None,
+    };
+    if (r.rows, r.cols) != (3, 3) || r.as_f64().is_some() {
+        return None;
+    }
+    let (_, b) = on_branch(name, &r)?;
+    let show = |es: &[Expr]| {
+        es.iter()
+            .map(|e| crate::sym::print::expr(e, Default::default()))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let mut parts = Vec::new();
+    if !b.positive.is_empty() {
+        parts.push(format!("{} > 0", show(&b.positive)));
+    }
+    if !b.angles.is_empty() {
+        let open = if matches!(name, "log" | "MatrixLog3" | "quat" | "cayley") {
+            "(−π, π)"
+        } else {
+            "(−π, π]"
+        };
+        parts.push(format!("{} in {open}", show(&b.angles)));
+    }
+    if parts.is_empty() {
+        return None;
+    }
+    Some(format!(
+        "{name} of a symbolic rotation: the closed form on the branch {}",
+        parts.join(" and ")
+    ))
 }
 
 /// tan, cot, sec and csc as quotients of sin and cos (a kept reciprocal

@@ -88,7 +88,7 @@ pub(super) fn var(v: &Var, st: Style) -> String {
         Var::Pi => "π".into(),
         Var::Sym(s) | Var::Z(s) => symbol(s, st),
         Var::Call(c) => {
-            let args: Vec<String> = c.args.iter().map(|a| expr(a, st)).collect();
+            let args: Vec<String> = c.args.iter().map(|a| call_arg(a, st)).collect();
             match (c.f, latex) {
                 (Func::Recip, true) => format!("\\left({}\\right)", args[0]),
                 (Func::Recip, false) => format!("({})", args[0]),
@@ -102,6 +102,23 @@ pub(super) fn var(v: &Var, st: Style) -> String {
             }
         }
     }
+}
+
+/// A call's argument: `t/2` for (1/2) t, as the book writes half angles.
+fn call_arg(e: &Expr, st: Style) -> String {
+    if st.mode != Mode::Latex
+        && e.terms.len() == 1
+        && let Some(r) = e.terms.values().next().and_then(Coef::as_rat)
+        && r.num.abs() == 1
+        && r.den > 1
+        && let Some(whole) = Rat::new(r.den, 1)
+    {
+        let top = expr(&e.scale(&Coef::rat(whole)), st);
+        if !top.contains(' ') {
+            return format!("{top}/{}", r.den);
+        }
+    }
+    expr(e, st)
 }
 
 const GREEK: [(&str, char, &str); 30] = [
@@ -493,12 +510,16 @@ mod tests {
     }
 
     #[test]
-    fn one_angle_prints_in_powers_when_no_longer() {
+    fn one_angle_prints_in_powers_when_shorter() {
         let t = s("t");
         let (c, sn) = (Expr::cos(&t), Expr::sin(&t));
-        assert_eq!(expr(&sn.mul(&c), Style::default()), "cos(t) sin(t)");
+        // double angles print alike: sin(2 t) beside cos(2 t) (issue 21)
+        assert_eq!(expr(&sn.mul(&c), Style::default()), "(1/2) sin(2 t)");
         let two = Expr::cos(&t.scale(&Coef::int(2)));
         assert_eq!(expr(&two, Style::default()), "cos(2 t)");
+        let two = Expr::sin(&t.scale(&Coef::int(2)));
+        assert_eq!(expr(&two, Style::default()), "sin(2 t)");
+        assert_eq!(expr(&c.mul(&c), Style::default()), "cos(t)^2");
         assert_eq!(expr(&c.powi(3).unwrap(), Style::default()), "cos(t)^3");
     }
 

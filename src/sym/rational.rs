@@ -255,6 +255,7 @@ fn coef_sqrt(c: &Coef) -> Option<Coef> {
 mod tests {
     use super::*;
     use crate::sym::expr::Symbol;
+    use num_traits::One;
 
     fn s(n: &str) -> Expr {
         Expr::symbol(Symbol::new(n))
