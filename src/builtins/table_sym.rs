@@ -9,7 +9,8 @@
 
 use super::{Area, ArgError, Args, Builtin, Typing};
 use crate::check::ty::{Kind, Ty};
-use crate::diagnostics::Diagnostic;
+use crate::diagnostics::{Diagnostic, ErrorKind};
+use crate::span::Span;
 use crate::sym::Expr;
 use crate::sym::branch::{self, Branch};
 use crate::sym::expr::{Func, Wrt, as_symbol};
@@ -307,7 +308,7 @@ fn inverse_map(name: &str, r: &Mat) -> Out {
 /// The note a closed form on a branch is printed with (LANGUAGE.md §7:
 /// say which branch was assumed): `assumed cos(b) > 0 and a, b, c in
 /// (−π, π]`. None when the call has no such form.
-pub fn branch_note(name: &str, vals: &[Value]) -> Option<String> {
+pub fn branch_note(name: &str, vals: &[Value], span: Span) -> Option<Diagnostic> {
     let r = match vals {
         [v] => mat_of(v)?,
         _ => return None,
@@ -337,10 +338,11 @@ pub fn branch_note(name: &str, vals: &[Value]) -> Option<String> {
     if parts.is_empty() {
         return None;
     }
-    Some(format!(
+    let text = format!(
         "{name} of a symbolic rotation: the closed form on the branch {}",
         parts.join(" and ")
-    ))
+    );
+    Some(Diagnostic::note(ErrorKind::Domain, span, text))
 }
 
 /// tan, cot, sec and csc as quotients of sin and cos (a kept reciprocal
