@@ -262,6 +262,10 @@ mod tests {
             .scale(&Coef::int(2))
             .mul(&Expr::cos(&t).scale(&Coef::int(2)).recip().unwrap());
         assert_eq!(expr(&tan, Style::default()), "tan(t)");
+        let cot = Expr::cos(&t).mul(&Expr::sin(&t).recip().unwrap());
+        assert_eq!(expr(&cot, Style::default()), "cot(t)");
+        let csc = Expr::sin(&t).recip().unwrap();
+        assert_eq!(expr(&csc, Style::default()), "1/sin(t)");
         let sec = Expr::cos(&t).scale(&Coef::int(3)).recip().unwrap();
         assert_eq!(expr(&sec, Style::default()), "(1/3)/cos(t)");
     }
