@@ -7,6 +7,9 @@
 //! ```text
 //! cli, repl     front ends (the terminal, flags, `:` commands)
 //! session       parse → check → evaluate over a source text; reading scripts
+//! effects       the one gate for files a statement asks to write (`save`,
+//!               printed pictures, `:save`): written, refused or confined
+//!               by the front end; evaluation itself never writes
 //! output        outcomes as text blocks and JSON lines
 //! draw          pictures: marks, projection, SVG and PNG (§12)
 //! eval          the environment, the interpreter and its one operation
@@ -52,6 +55,7 @@
 //! - [`span`], [`diagnostics`], [`output`]: places in the source, errors,
 //!   and values for people and for JSON;
 //! - [`session`]: the pipeline parse → check → evaluate over a source text;
+//! - [`effects`]: the gate every file write goes through;
 //! - [`cli`], [`repl`]: the front ends.
 #![forbid(unsafe_code)]
 // Errors carry spans, labels and help text; they are rare, so their size is not worth boxing.
@@ -66,6 +70,7 @@ pub mod check;
 pub mod cli;
 pub mod diagnostics;
 pub mod draw;
+pub mod effects;
 pub mod eval;
 pub mod lie;
 pub mod mech;

@@ -204,13 +204,15 @@ pub fn open_call_signature(line: &str) -> Option<&'static str> {
 
 /// The result of evaluating `line` on a copy of the session, on one short
 /// line — only when it evaluates without error or warning and is cheap
-/// to try (short, no user functions, no large sizes).
+/// to try (short, no user functions, no large sizes). Pure: it only
+/// evaluates ([`Session::evaluate`]), so no file is ever written
+/// (LANGUAGE.md §11).
 pub fn preview(session: &Session, line: &str) -> Option<String> {
     if line.len() > PREVIEW_MAX_CHARS || needs_more_input(line) || !cheap(session, line) {
         return None;
     }
     let mut copy = session.clone();
-    let (out, err, errors) = copy.run_to_strings("<preview>", line, Mode::Run, false);
+    let (out, err, errors) = copy.evaluate_to_strings("<preview>", line, Mode::Run, false);
     if errors > 0 || !err.is_empty() {
         return None;
     }
