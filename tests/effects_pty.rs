@@ -69,7 +69,10 @@ fn typing_a_save_line_writes_nothing_before_enter() {
         expect(&mut p, ">>> ");
     }
     assert_eq!(listing(&dir), ["keep.svg"]);
-    assert_eq!(std::fs::read_to_string(dir.join("keep.svg")).unwrap(), "mine");
+    assert_eq!(
+        std::fs::read_to_string(dir.join("keep.svg")).unwrap(),
+        "mine"
+    );
 
     // Enter runs the line: now it is written.
     type_slowly(&mut p, "pic = draw(Rotx(1))\r");
