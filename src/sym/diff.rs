@@ -9,6 +9,19 @@ use super::coef::Coef;
 use super::expr::{Call, Expr, Func, Mono, Symbol, Var, Wrt};
 use num_traits::{One, Zero};
 
+impl Wrt {
+    /// The derivative a symbol asks for: the total one by a plain symbol
+    /// (which is the partial one when nothing is a function of it), the
+    /// partial one by a function of time or its rate.
+    pub fn by(s: Symbol) -> Wrt {
+        if s.is_timed() {
+            Wrt::Sym(s)
+        } else {
+            Wrt::Time(s)
+        }
+    }
+}
+
 impl Expr {
     /// The derivative (chain rule through every variable).
     pub fn diff(&self, wrt: &Wrt) -> Expr {
