@@ -14,6 +14,9 @@ use super::expr::{Expr, Mono, Symbol, Var};
 /// coefficient positive), whether it is a sine, and its power (`cos(t)^2`
 /// where a single angle prints in powers of cos t and sin t).
 pub type Trig = (Vec<(Symbol, i32)>, bool, u32);
+/// An integer combination of angles (with an offset, `π/4`, as a
+/// pseudo-angle once folded).
+pub type Angle = Vec<(Symbol, i32)>;
 /// The real terms: (non-angle monomial, trigonometric factors) → coefficient.
 pub type Real = BTreeMap<(Mono, Vec<Trig>), Coef>;
 
@@ -381,7 +384,7 @@ fn fold_offsets(real: Real) -> Real {
 }
 
 /// (r, K ± offset, whether a sine) with a cos K + b sin K = r·f(K ± offset).
-fn offset(a: &Coef, b: &Coef, k: &[(Symbol, i32)]) -> Option<(Coef, Vec<(Symbol, i32)>, bool)> {
+fn offset(a: &Coef, b: &Coef, k: &[(Symbol, i32)]) -> Option<(Coef, Angle, bool)> {
     let (Coef::Exact { .. }, Coef::Exact { .. }) = (a, b) else {
         return None;
     };
