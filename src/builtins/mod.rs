@@ -6,6 +6,7 @@
 //! the checker with no numbers), and its implementation on values.
 
 mod args;
+mod conditioning;
 pub mod notes;
 pub mod parts;
 mod table_draw;
@@ -21,7 +22,7 @@ mod table_units;
 use std::sync::OnceLock;
 
 pub use args::{ArgError, Args};
-pub use table_sym::eval_symbolic;
+pub use table_sym::{branch_note, eval_symbolic};
 
 use crate::check::ty::{Frames, Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};

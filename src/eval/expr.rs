@@ -437,6 +437,8 @@ impl Interp<'_> {
             let refs: Vec<&Value> = vals.iter().collect();
             if let Some(v) = op.exact_or_symbolic(&refs, &ty.kind) {
                 let val = Some(v.map_err(|m| op.failure(m, span))?);
+                self.warnings
+                    .extend(builtins::branch_note(b.name, &vals, span));
                 return Ok(Typed::new(refine(ty, &val), val));
             }
         }
@@ -502,6 +504,9 @@ impl Interp<'_> {
                 format!("function calls nested deeper than {MAX_CALL_DEPTH} (recursion?)"),
             ));
         }
+        // A user function may call itself many times over (f(n-1) + f(n-1)):
+        // each call asks the budget.
+        crate::budget::check().map_err(|stop| super::interp::budget_error(stop, span))?;
         let mut bound = Vec::new();
         match spread {
             Some(parts) => bound.extend(f.params.iter().cloned().zip(parts)),
