@@ -401,11 +401,9 @@ impl Expr {
         }
         out
     }
-    /// 1/x: exact for a single term, else a [`Func::Recip`] call of a
-    /// *real* sum (calls are real variables: their value is read as a real
-    /// number, and [`Expr::conj`] leaves them alone). A real x is scaled by
-    /// a real number so that its first term prints with coefficient 1; a
-    /// complex x is made real first, 1/x = x̄ / (x x̄). None for 0.
+    /// 1/x: exact for a single term, else a [`Func::Recip`] call of a *real*
+    /// sum (calls are real), scaled so its first term prints as 1; a complex
+    /// x is made real first, 1/x = x̄ / (x x̄). None for 0.
     pub fn recip(&self) -> Option<Expr> {
         if self.terms.len() == 1 {
             let (m, c) = self.terms.iter().next()?;
@@ -425,8 +423,7 @@ impl Expr {
             return Some(bar.mul(&n.recip()?));
         }
         let (m, lead) = self.terms.iter().next()?;
-        // A term with an angle prints as a pair with its conjugate, twice
-        // the real (or imaginary) part: scale that to 1.
+        // A term with an angle prints as twice its real (or imaginary) part.
         let paired = m.iter().any(|(v, _)| matches!(v, Var::Z(_)));
         let k = lead.real_scale(if paired { Rat::new(1, 2)? } else { Rat::ONE })?;
         Some(Expr::call(Func::Recip, vec![self.scale(&k)]).scale(&k))

@@ -6,6 +6,7 @@
 
 use super::coef::{Coef, ROOTS, Rat};
 use super::expr::{Expr, Func, Symbol, Var};
+use num_traits::One;
 
 /// The output form.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -345,7 +346,11 @@ fn surd_term(r: &Rat, k: i64, latex: bool) -> String {
     let (p, q) = r.parts();
     let sign = if r.is_negative() { "-" } else { "" };
     let p = p.magnitude();
-    let q_small = r.small().map(|(_, q)| i128::from(q));
+    // an integer however large has denominator 1 (a big one is not `small`)
+    let q_small = match r.small() {
+        Some((_, q)) => Some(i128::from(q)),
+        None => q.is_one().then_some(1),
+    };
     let p_one = *p == num_bigint::BigUint::from(1u8);
     if k == 1 {
         if q_small == Some(1) {
