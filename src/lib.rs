@@ -5,7 +5,8 @@
 //! by `layers.py`; `lie` and `mech` import nothing from the language):
 //!
 //! ```text
-//! cli, repl     front ends (the terminal, flags, `:` commands)
+//! cli, repl,    front ends (the terminal, flags, `:` commands; the
+//! kernel        Jupyter kernel)
 //! session       parse → check → evaluate over a source text; reading scripts
 //! output        outcomes as text blocks and JSON lines
 //! draw          pictures: marks, projection, SVG and PNG (§12)
@@ -52,7 +53,7 @@
 //! - [`span`], [`diagnostics`], [`output`]: places in the source, errors,
 //!   and values for people and for JSON;
 //! - [`session`]: the pipeline parse → check → evaluate over a source text;
-//! - [`cli`], [`repl`]: the front ends.
+//! - [`cli`], [`repl`], [`kernel`]: the front ends.
 #![forbid(unsafe_code)]
 // Errors carry spans, labels and help text; they are rare, so their size is not worth boxing.
 #![allow(clippy::result_large_err)]
@@ -67,6 +68,7 @@ pub mod cli;
 pub mod diagnostics;
 pub mod draw;
 pub mod eval;
+pub mod kernel;
 pub mod lie;
 pub mod mech;
 pub mod output;
