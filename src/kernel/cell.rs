@@ -8,6 +8,7 @@
 
 use serde_json::{Map, Value as J, json};
 
+use crate::budget::Interrupt;
 use crate::diagnostics::render;
 use crate::repl::{commands, complete, help, save};
 use crate::session::{Session, Settings};
@@ -91,11 +92,10 @@ impl Notebook {
     }
 
     /// What stops a running statement from another thread (the socket
-    /// side's `interrupt_request`).
-    pub fn interrupter(&self) -> super::Interrupt {
-        // Until the evaluation budget's interrupt flag lands (issue 23),
-        // nothing can stop a statement from outside.
-        std::sync::Arc::new(|| {})
+    /// side's `interrupt_request`, SIGINT): the session budget's flag, the
+    /// REPL's Ctrl-C mechanism.
+    pub fn interrupter(&self) -> Interrupt {
+        self.session.budget.interrupt_handle()
     }
 
     /// The execution count of the next stored cell.
@@ -116,6 +116,20 @@ impl Notebook {
         if store_history {
             self.history.push(code.to_string());
         }
+        // An interrupt that came while no cell ran stops nothing.
+        self.interrupter().clear();
+        let r = self.pieces(&file, code, emit);
+        self.interrupter().clear();
+        r
+    }
+
+    /// The pieces of a cell in order, until an error or an interrupt.
+    fn pieces(
+        &mut self,
+        file: &str,
+        code: &str,
+        emit: &mut dyn FnMut(Output),
+    ) -> Result<(), Failure> {
         for piece in pieces(code) {
             match piece {
                 Piece::Command(line) => self.command(line, emit),
@@ -123,9 +137,22 @@ impl Notebook {
                     if let Some(cmd) = commands::bare_command(&self.session, &src) {
                         self.command(&cmd, emit);
                     } else {
-                        self.statements(&file, first, &src, emit)?;
+                        self.statements(file, first, &src, emit)?;
                     }
                 }
+            }
+            if self.session.interrupted {
+                // The statement it stopped bound nothing; the session is
+                // as it was before it.
+                self.session.interrupted = false;
+                let f = Failure {
+                    ename: "interrupted".into(),
+                    evalue: "interrupted: the statement was stopped; earlier bindings are kept"
+                        .into(),
+                    traceback: vec!["interrupted".into()],
+                };
+                emit(Output::Error(f.clone()));
+                return Err(f);
             }
         }
         Ok(())

@@ -15,11 +15,6 @@ pub mod rich;
 #[cfg(feature = "jupyter")]
 mod wire;
 
-/// Stops the statement running in a kernel's session (the session stays
-/// as it was before it): what `interrupt_request` calls, from the socket
-/// thread.
-pub type Interrupt = std::sync::Arc<dyn Fn() + Send + Sync>;
-
 /// Serves the kernel on the sockets named in `connection_file` until the
 /// notebook shuts it down; Err is the message for exit code 2 or 1.
 pub fn serve(connection_file: &std::path::Path) -> Result<(), String> {

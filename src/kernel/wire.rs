@@ -23,6 +23,7 @@ use serde_json::{Map, Value as J};
 use tokio::sync::{mpsc, oneshot};
 
 use super::cell::{Failure, Notebook, Output};
+use crate::budget::Interrupt;
 
 /// What the socket side asks of the session thread.
 enum Job {
@@ -48,8 +49,11 @@ enum Job {
 }
 
 /// The session thread: one [`Notebook`], jobs in order.
-fn worker(jobs: std_mpsc::Receiver<Job>, ready: oneshot::Sender<super::Interrupt>) {
+fn worker(jobs: std_mpsc::Receiver<Job>, ready: oneshot::Sender<Interrupt>) {
     let mut nb = Notebook::new();
+    // SIGINT (Jupyter's `interrupt_mode: signal`, a `kill -INT`) sets the
+    // same flag as `interrupt_request`.
+    let _ = nb.interrupter().on_ctrl_c();
     let _ = ready.send(nb.interrupter());
     while let Ok(job) = jobs.recv() {
         match job {
@@ -183,7 +187,7 @@ async fn sockets(info: ConnectionInfo) -> Result<(), String> {
             let reply = match &msg.content {
                 JupyterMessageContent::KernelInfoRequest(_) => kernel_info().as_child_of(&msg),
                 JupyterMessageContent::InterruptRequest(_) => {
-                    interrupt();
+                    interrupt.interrupt();
                     InterruptReply::new().as_child_of(&msg)
                 }
                 JupyterMessageContent::ShutdownRequest(req) => {

@@ -146,3 +146,30 @@ fn completion_inspection_and_completeness() {
     assert!(!Notebook::is_complete("exp([S] (theta"));
     assert!(Notebook::is_complete(":exact"));
 }
+
+#[test]
+fn an_interrupt_stops_a_long_cell_and_keeps_the_session() {
+    let mut nb = Notebook::new();
+    run(&mut nb, "x = 5");
+    let stop = nb.interrupter();
+    let t = std::thread::spawn(move || {
+        std::thread::sleep(std::time::Duration::from_millis(300));
+        stop.interrupt();
+    });
+    let started = std::time::Instant::now();
+    let (outs, r) = run(
+        &mut nb,
+        "y = 1\nlen([det(k*eye(60)) for k in 1:20000])\nz = 2",
+    );
+    let _ = t.join();
+    assert!(started.elapsed().as_secs() < 10, "{:?}", started.elapsed());
+    assert_eq!(r.expect_err("interrupted").ename, "interrupted");
+    assert!(matches!(outs.last(), Some(Output::Error(_))));
+    let (outs, r) = run(&mut nb, "x + y");
+    assert!(r.is_ok(), "{r:?}");
+    assert_eq!(data(&outs)[0]["text/plain"], "6");
+    assert!(run(&mut nb, "z").1.is_err(), "z comes after the interrupt");
+    // An interrupt while no cell runs stops nothing.
+    nb.interrupter().interrupt();
+    assert!(run(&mut nb, "x").1.is_ok());
+}
