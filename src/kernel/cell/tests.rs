@@ -126,7 +126,7 @@ fn a_command_line_after_statements_runs_in_order_with_cell_line_numbers() {
 #[test]
 fn completion_inspection_and_completeness() {
     let mut nb = Notebook::new();
-    run(&mut nb, "theta_1 = 1");
+    assert!(run(&mut nb, "theta_1 = 1").1.is_ok());
     let (matches, start, end, _) = nb.complete("x = MatrixL", 11);
     assert!(matches.contains(&"MatrixLog3(".to_string()), "{matches:?}");
     assert_eq!((start, end), (4, 11));
@@ -150,7 +150,7 @@ fn completion_inspection_and_completeness() {
 #[test]
 fn an_interrupt_stops_a_long_cell_and_keeps_the_session() {
     let mut nb = Notebook::new();
-    run(&mut nb, "x = 5");
+    assert!(run(&mut nb, "x = 5").1.is_ok());
     let stop = nb.interrupter();
     let t = std::thread::spawn(move || {
         std::thread::sleep(std::time::Duration::from_millis(300));
