@@ -10,6 +10,7 @@ use serde_json::{Map, Value as J, json};
 
 use crate::budget::Interrupt;
 use crate::diagnostics::render;
+use crate::effects::Gate;
 use crate::repl::{commands, complete, help, save};
 use crate::session::{Session, Settings};
 use crate::syntax::needs_more_input;
@@ -82,11 +83,14 @@ fn pieces(code: &str) -> Vec<Piece<'_>> {
 }
 
 impl Notebook {
-    /// A fresh session with the default settings. It writes no file: a
-    /// picture is shown inline instead (§13).
+    /// A fresh session with the default settings. Its effects gate writes
+    /// what `save` asks for and keeps printed pictures in memory: a
+    /// notebook shows them inline and writes no file for them (§13).
     pub fn new() -> Notebook {
+        let mut session = Session::new(Settings::default());
+        session.gate = Gate::anywhere(None);
         Notebook {
-            session: Session::new(Settings::default()),
+            session,
             history: Vec::new(),
         }
     }

@@ -84,7 +84,7 @@ pub fn install_into(data: &Path, binary: &Path) -> Result<PathBuf, String> {
         format!(
             "cannot write '{}': {}",
             what.display(),
-            crate::session::io_reason(&e)
+            crate::effects::atomic::reason(&e)
         )
     };
     std::fs::create_dir_all(&dir).map_err(|e| fail(&dir, e))?;
@@ -97,7 +97,7 @@ pub fn install_into(data: &Path, binary: &Path) -> Result<PathBuf, String> {
     ];
     for (name, bytes) in files {
         let path = dir.join(name);
-        crate::draw::file::write_atomic(&path, &bytes)?;
+        crate::effects::atomic::write(&path, &bytes, true).map_err(|e| fail(&path, e))?;
     }
     Ok(dir)
 }

@@ -80,12 +80,15 @@ fn a_symbolic_value_shows_a_bmatrix() {
 }
 
 #[test]
-fn a_picture_is_inline_svg_and_writes_no_file() {
+fn a_picture_is_inline_svg_and_only_save_writes_a_file() {
     let dir = std::env::temp_dir().join(format!("chasles-nb-{}", std::process::id()));
     let _ = std::fs::create_dir_all(&dir);
-    let before = std::env::current_dir().expect("cwd");
+    let cwd = std::env::current_dir().expect("cwd");
     let mut nb = Notebook::new();
-    let (outs, r) = run(&mut nb, "T_sa = RpToTrans(Rotz(1), (1, 0, 0))\ndraw(T_sa)");
+    let (outs, r) = run(
+        &mut nb,
+        "T_sa = RpToTrans(Rotz(1), (1, 0, 0))\npic = draw(T_sa)",
+    );
     assert!(r.is_ok(), "{r:?}");
     let svg = data(&outs)[1]["image/svg+xml"].as_str().expect("svg");
     assert!(
@@ -93,7 +96,16 @@ fn a_picture_is_inline_svg_and_writes_no_file() {
         "{}",
         &svg[..40.min(svg.len())]
     );
-    assert!(!before.join("draw-2.svg").exists());
+    assert!(
+        !cwd.join("pic.svg").exists(),
+        "a printed picture writes no file"
+    );
+    let file = dir.join("saved.svg");
+    let code = format!("save(pic, \"{}\")", file.display());
+    let (outs, r) = run(&mut nb, &code);
+    assert!(r.is_ok(), "{r:?}");
+    assert!(file.is_file(), "save writes");
+    assert!(data(&outs)[0].contains_key("image/svg+xml"));
     let _ = std::fs::remove_dir_all(&dir);
 }
 
