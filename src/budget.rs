@@ -34,9 +34,10 @@ pub const RUN_BYTES: u64 = 4_000_000_000;
 /// How long the REPL's live preview may compute before it gives up.
 pub const PREVIEW_TIME: Duration = Duration::from_millis(30);
 
-/// The numbers the REPL's live preview may hold (a 300×300 matrix): more is
-/// never shown on one line.
-pub const PREVIEW_NUMBERS: u64 = 100_000;
+/// The numbers the REPL's live preview may hold (a 100×100 matrix, twice
+/// over): more is never shown on one line, and a kernel on such a matrix
+/// takes a millisecond.
+pub const PREVIEW_NUMBERS: u64 = 20_000;
 
 /// Bytes per number held (an `f64`).
 const BYTES_PER_NUMBER: u64 = 8;
