@@ -109,17 +109,28 @@ fn max_memory_caps_the_whole_run() {
                c = [eye(100) for k in 1:1000]";
     let out = run(&["--max-memory", "100M", "-e", src]);
     assert_eq!(out.code, Some(1), "{}", out.stderr);
-    assert!(out.stdout.starts_with("a = 1000\nb = list of 1000"), "{}", out.stdout);
     assert!(
-        out.stderr.contains("<-e>:3:5: domain error: this would hold")
-            && out.stderr.contains("--max-memory allows at most 12,500,000 numbers (100 MB)"),
+        out.stdout.starts_with("a = 1000\nb = list of 1000"),
+        "{}",
+        out.stdout
+    );
+    assert!(
+        out.stderr
+            .contains("<-e>:3:5: domain error: this would hold")
+            && out
+                .stderr
+                .contains("--max-memory allows at most 12,500,000 numbers (100 MB)"),
         "{}",
         out.stderr
     );
     // A bad size is a usage error.
     let out = run(&["--max-memory", "lots", "-e", "1"]);
     assert_eq!(out.code, Some(2), "{}", out.stderr);
-    assert!(out.stderr.contains("'lots' is not a size"), "{}", out.stderr);
+    assert!(
+        out.stderr.contains("'lots' is not a size"),
+        "{}",
+        out.stderr
+    );
 }
 
 #[test]
@@ -162,7 +173,11 @@ fn a_symbolic_expansion_stops_at_the_timeout() {
         "given a, b, c, d : scalar\nx = (a + b + c + d + 1)^14",
     ]);
     assert_eq!(out.code, Some(1), "{}", out.stderr);
-    assert!(out.stderr.contains("more than 500 ms (--timeout)"), "{}", out.stderr);
+    assert!(
+        out.stderr.contains("more than 500 ms (--timeout)"),
+        "{}",
+        out.stderr
+    );
 }
 
 /// Whether process `pid` catches SIGINT (its handler is installed).
@@ -186,7 +201,10 @@ fn ctrl_c_stops_run_with_exit_130_after_what_was_printed() {
     let pid = child.id();
     let start = Instant::now();
     while !catches_sigint(pid) {
-        assert!(start.elapsed() < Duration::from_secs(60), "no SIGINT handler");
+        assert!(
+            start.elapsed() < Duration::from_secs(60),
+            "no SIGINT handler"
+        );
         std::thread::sleep(Duration::from_millis(10));
     }
     // The first statement runs in microseconds; give it ample time.

@@ -323,5 +323,9 @@ fn hints() {
     // The preview gave up within its few milliseconds, not after the
     // seconds the comprehension would take (a generous bound: the machine
     // may be loaded).
-    assert!(start.elapsed() < std::time::Duration::from_secs(3), "{:?}", start.elapsed());
+    assert!(
+        start.elapsed() < std::time::Duration::from_secs(3),
+        "{:?}",
+        start.elapsed()
+    );
 }
