@@ -131,7 +131,7 @@ impl Clear {
             .meeting(b)
             .any(|(i, _)| self.boxes.cells[i].iter().any(|o| overlap(b, *o)));
         let near = (b.0 - PAD, b.1 - PAD, b.2 + PAD, b.3 + PAD);
-        !hits_box && !hits(&self.points, near) && !(strict && hits(&self.lines, near))
+        !(hits_box || hits(&self.points, near) || (strict && hits(&self.lines, near)))
     }
 }
 
@@ -221,9 +221,9 @@ mod tests {
                     near(p.0 + t * (q.0 - p.0), p.1 + t * (q.1 - p.1))
                 })
             };
-            let brute = !boxes.iter().any(|o| overlap(b, *o))
-                && !points.iter().any(|p| near(p.0, p.1))
-                && !(strict && lines.iter().any(|&(p, q)| crosses(p, q)));
+            let brute = !(boxes.iter().any(|o| overlap(b, *o))
+                || points.iter().any(|p| near(p.0, p.1))
+                || (strict && lines.iter().any(|&(p, q)| crosses(p, q))));
             assert_eq!(c.is_free(b, strict), brute, "{b:?} strict {strict}");
             agreed.0 += usize::from(brute);
             agreed.1 += 1;
