@@ -330,6 +330,9 @@ impl Interp<'_> {
             return self.user_call(&f, args, span);
         }
         let found = self.env.builtin(name);
+        if found.is_none() && self.env.get(name).is_some() {
+            return self.value_times_paren(name, name_span, args, span);
+        }
         let name = name.as_str();
         let Some(b) = found else {
             let mut d = Diagnostic::error(
@@ -528,7 +531,14 @@ impl Interp<'_> {
             );
         }
         self.depth += 1;
-        let result = self.expr(&f.body);
+        // An error inside the body shows the call site too.
+        let result = self.expr(&f.body).map_err(|d| {
+            if d.span.start >= span.start && d.span.end <= span.end {
+                d
+            } else {
+                d.with_label(span, format!("in this call of {}", f.name))
+            }
+        });
         self.depth -= 1;
         for (p, old) in saved {
             match old {

@@ -12,6 +12,8 @@ pub mod graph;
 pub mod interp;
 pub mod list;
 mod notation;
+mod order;
+mod paren_product;
 mod shapes;
 mod substitute;
 mod symbols;
