@@ -18,6 +18,10 @@ impl Interp<'_> {
         args: &[IndexArg],
         span: Span,
     ) -> Result<Typed, Diagnostic> {
+        // `S[1:3]`, `T[1:3, 4]`, `v[end]`.
+        if self.is_slice(args) {
+            return self.slice(base, args, span);
+        }
         if let [IndexArg::Expr(arg)] = args
             && let Some(product) = self.bracket_index(base, arg, span)?
         {
@@ -107,6 +111,12 @@ impl Interp<'_> {
         let mut trows = Vec::with_capacity(rows.len());
         for row in &rows {
             let tr = self.bracket_row(row)?;
+            // `[point(p), point(q)]`: a list of pictures (§12).
+            if rows.len() == 1 && tr.iter().all(|t| t.ty.kind == Kind::Picture) {
+                let items: Option<Vec<Value>> = tr.iter().map(|t| t.value().cloned()).collect();
+                let ty = Ty::plain(Kind::list(Kind::Picture));
+                return Ok(Typed::new(ty, items.map(|v| Value::List(std::rc::Rc::new(v)))));
+            }
             for (t, e) in tr.iter().zip(row.iter()) {
                 if t.ty.kind.shape().is_none() {
                     return Err(Diagnostic::error(

@@ -14,6 +14,7 @@ pub mod list;
 mod notation;
 mod order;
 mod paren_product;
+mod slice;
 mod shapes;
 mod substitute;
 mod symbols;
