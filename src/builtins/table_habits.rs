@@ -58,7 +58,9 @@ fn eval_diag(a: &mut Args) -> Result<Value, Diagnostic> {
         }
         m.iter().copied().collect()
     } else {
-        (0..a.len()).map(|i| a.scalar(i)).collect::<Result<_, _>>()?
+        (0..a.len())
+            .map(|i| a.scalar(i))
+            .collect::<Result<_, _>>()?
     };
     let n = entries.len();
     let m = DMatrix::from_fn(n, n, |i, j| if i == j { entries[i] } else { 0.0 });
@@ -96,9 +98,8 @@ fn eval_linspace(a: &mut Args) -> Result<Value, Diagnostic> {
     let n = n as usize;
     let items: Vec<Value> = (0..n)
         .map(|k| {
-            let x = if n == 1 {
-                hi
-            } else if k + 1 == n {
+            // The last is b exactly (and the only one, for n = 1).
+            let x = if k + 1 == n {
                 hi
             } else {
                 lo + (hi - lo) * k as f64 / (n - 1) as f64
@@ -200,9 +201,15 @@ mod tests {
     #[test]
     fn rules() {
         let s = Ty::scalar();
-        assert_eq!(diag_rule(&[s, s, s]).unwrap().kind, Kind::Matrix(Some(3), Some(3)));
+        assert_eq!(
+            diag_rule(&[s, s, s]).unwrap().kind,
+            Kind::Matrix(Some(3), Some(3))
+        );
         let v = Ty::plain(Kind::Vector(Some(3)));
-        assert_eq!(diag_rule(&[v]).unwrap().kind, Kind::Matrix(Some(3), Some(3)));
+        assert_eq!(
+            diag_rule(&[v]).unwrap().kind,
+            Kind::Matrix(Some(3), Some(3))
+        );
         assert!(diag_rule(&[v, s]).is_err());
         assert_eq!(trans_rule(&[s, s, s]).unwrap().kind, Kind::SE3);
         assert!(trans_rule(&[s, s]).is_err());

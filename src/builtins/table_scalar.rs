@@ -34,7 +34,13 @@ pub const ROUNDING: f64 = 1e-12;
 /// A scalar function on `[lo, hi]`: an argument within [`ROUNDING`] of
 /// the interval is clamped into it with a note; farther is a domain error
 /// giving the value.
-fn near_domain(a: &mut Args, f: fn(f64) -> f64, lo: f64, hi: f64, why: &str) -> Result<Value, Diagnostic> {
+fn near_domain(
+    a: &mut Args,
+    f: fn(f64) -> f64,
+    lo: f64,
+    hi: f64,
+    why: &str,
+) -> Result<Value, Diagnostic> {
     let x = a.scalar(0)?;
     if (lo..=hi).contains(&x) {
         return Ok(Value::scalar(f(x)));

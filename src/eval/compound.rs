@@ -115,7 +115,10 @@ impl Interp<'_> {
             if rows.len() == 1 && tr.iter().all(|t| t.ty.kind == Kind::Picture) {
                 let items: Option<Vec<Value>> = tr.iter().map(|t| t.value().cloned()).collect();
                 let ty = Ty::plain(Kind::list(Kind::Picture));
-                return Ok(Typed::new(ty, items.map(|v| Value::List(std::rc::Rc::new(v)))));
+                return Ok(Typed::new(
+                    ty,
+                    items.map(|v| Value::List(std::rc::Rc::new(v))),
+                ));
             }
             for (t, e) in tr.iter().zip(row.iter()) {
                 if t.ty.kind.shape().is_none() {

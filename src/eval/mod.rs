@@ -14,9 +14,10 @@ pub mod list;
 mod notation;
 mod order;
 mod paren_product;
-mod slice;
 mod shapes;
+mod slice;
 mod substitute;
 mod symbols;
+mod user_fn;
 
 pub use crate::values::{convert, formula, ops, symbolic, value};

@@ -72,9 +72,7 @@ impl Interp<'_> {
         let ty = self.env.get(name)?.ty;
         let (rows, cols) = ty.kind.shape()?;
         let whole = |e: &Expr, n: Option<usize>| match e.kind {
-            ExprKind::Number(x) => {
-                x.fract() == 0.0 && x >= 1.0 && n.is_none_or(|n| x <= n as f64)
-            }
+            ExprKind::Number(x) => x.fract() == 0.0 && x >= 1.0 && n.is_none_or(|n| x <= n as f64),
             _ => false,
         };
         let fits = match args {

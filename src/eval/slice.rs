@@ -158,7 +158,11 @@ impl Interp<'_> {
             return Ok(Typed::new(t.ty, Some(Value::List(Rc::new(items)))));
         }
         let Some(m) = value.as_matrix() else {
-            return Err(Diagnostic::error(ErrorKind::Type, span, "cannot index this value"));
+            return Err(Diagnostic::error(
+                ErrorKind::Type,
+                span,
+                "cannot index this value",
+            ));
         };
         let outer = match t.ty.frames.outer() {
             Some(a) => Frames::One(*a),
@@ -177,7 +181,10 @@ impl Interp<'_> {
             let val = Some(Value::vector(kind, &xs));
             return Ok(Typed::new(refine(Ty::new(kind, frames), &val), val));
         } else {
-            (check(&picks[0], r, "the rows")?, check(&picks[1], c, "the columns")?)
+            (
+                check(&picks[0], r, "the rows")?,
+                check(&picks[1], c, "the columns")?,
+            )
         };
         let sub = DMatrix::from_fn(rs.len(), cs.len(), |i, j| m[(rs[i], cs[j])]);
         let (kind, frames) = match (picks[0].single, picks[1].single) {
@@ -205,7 +212,10 @@ impl Interp<'_> {
         let t = self.expr(&e)?;
         match t.value() {
             Some(Value::List(xs)) => Ok(Picked {
-                at: xs.iter().map(|x| x.as_scalar().unwrap_or(f64::NAN)).collect(),
+                at: xs
+                    .iter()
+                    .map(|x| x.as_scalar().unwrap_or(f64::NAN))
+                    .collect(),
                 single: false,
             }),
             Some(v) if v.as_scalar().is_some() => Ok(Picked {

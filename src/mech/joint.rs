@@ -207,7 +207,8 @@ impl JointType {
     /// `c`, the constraints the joint places between two rigid bodies of
     /// the space (Table 2.1), `c = m − f`; `None` where the table says N/A.
     pub fn constraints(self, space: Space) -> Option<i64> {
-        self.allowed_in(space).then(|| space.m() - self.freedoms_in(space))
+        self.allowed_in(space)
+            .then(|| space.m() - self.freedoms_in(space))
     }
 
     /// The joint's own C-space as factors (§2.3.1): R a circle `S^1`; P and

@@ -349,18 +349,10 @@ impl Cx {
                     return Ok((Expr::compare(op, l, r, op_span), depth));
                 }
                 // `a · b`, `a × b`: the book's dot and cross products.
-                if let Some(name) = rules::product_fn(op.as_rule()) {
-                    let span = l.span.join(r.span);
-                    let func = Ident {
-                        name: name.into(),
-                        span: op_span,
-                    };
-                    let kind = ExprKind::Call {
-                        func,
-                        args: vec![l, r],
-                    };
-                    return Ok((Expr { kind, span }, depth));
-                }
+                let (l, r) = match self.product_call(op.as_rule(), l, r, op_span) {
+                    Ok(call) => return Ok((call, depth)),
+                    Err(operands) => operands,
+                };
                 let (bop, implicit, op_span) = match op.as_rule() {
                     Rule::add => (BinOp::Add, false, op_span),
                     Rule::sub => (BinOp::Sub, false, op_span),
@@ -440,35 +432,6 @@ impl Cx {
             return Err(self.internal(whole));
         }
         Ok(operands)
-    }
-
-    /// `left right` with nothing between. Legal everywhere the book writes
-    /// a product (`2 pi`, `A t`, `T_sb T_bc`); `spacing.rs` refuses the
-    /// readings that are not plain once the tree is built. Here only a
-    /// bracket right after a name that is not a valid index (`M[1; 2]`).
-    fn check_juxtaposition(
-        &self,
-        left: &Pair<'_, Rule>,
-        right: &Pair<'_, Rule>,
-    ) -> Result<(), Diagnostic> {
-        let last = left.clone().into_inner().last().map(|p| p.as_rule());
-        let first = right.clone().into_inner().next().map(|p| p.as_rule());
-        let indexable = matches!(
-            last,
-            Some(Rule::ident | Rule::call | Rule::index | Rule::member)
-        );
-        if indexable
-            && first == Some(Rule::brackets)
-            && left.as_span().end() == right.as_span().start()
-        {
-            return Err(Diagnostic::error(
-                ErrorKind::Syntax,
-                self.span(right.as_span()),
-                "an index takes one or two subscripts separated by `,`",
-            )
-            .with_help("write M[i], M[i, j], M[i, :] or M[:, j]"));
-        }
-        Ok(())
     }
 
     fn postfix(&self, base: Expr, depth: usize, op: Pair<'_, Rule>) -> Built {
@@ -571,21 +534,7 @@ impl Cx {
             }
             Rule::bare_call => self.bare_call(pair),
             // `√2`, `√(x + 1)`: sqrt of the atom after the sign.
-            Rule::root => {
-                let sign = Span::new(span.start, span.start + '√'.len_utf8());
-                let arg = pair.into_inner().next().ok_or_else(|| self.internal(span))?;
-                let (arg, d) = self.primary(arg)?;
-                check_depth(d + 1, span)?;
-                let func = Ident {
-                    name: "sqrt".into(),
-                    span: sign,
-                };
-                let kind = ExprKind::Call {
-                    func,
-                    args: vec![arg],
-                };
-                Ok((Expr { kind, span }, d + 1))
-            }
+            Rule::root => self.root(pair, span),
             Rule::deg_unit => Ok(self.deg_unit(span)),
             Rule::paren | Rule::sup_group => {
                 let (mut items, d) = self.exprs(pair.into_inner())?;

@@ -128,7 +128,10 @@ fn transpose_times(e: &mut Expr) {
     };
     let base_span = lhs.span.join(func.span);
     let base = Expr {
-        kind: ExprKind::Member { base: lhs, member: func.clone() },
+        kind: ExprKind::Member {
+            base: lhs,
+            member: func.clone(),
+        },
         span: base_span,
     };
     // The parenthesis after `T`: one argument is itself, several a vector.

@@ -345,12 +345,3 @@ pub(super) fn cmp_op(rule: Rule) -> Option<CmpOp> {
         _ => None,
     }
 }
-
-/// The builtin an infix product sign stands for: `·` dot, `×` cross.
-pub(super) fn product_fn(rule: Rule) -> Option<&'static str> {
-    match rule {
-        Rule::dot_op => Some("dot"),
-        Rule::cross_op => Some("cross"),
-        _ => None,
-    }
-}
