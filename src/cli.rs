@@ -1,7 +1,9 @@
 //! The command line (LANGUAGE.md §1): `chasles`, `chasles run FILE...`,
 //! `chasles check FILE...`, `chasles -e 'STATEMENTS'`, with `--json`,
-//! `--frames`, `--digits`, `--exact`, `--keep-going`. Exit codes: 0 success, 1 a
-//! script error, 2 bad usage or an unreadable file.
+//! `--frames`, `--digits`, `--exact`, `--keep-going`, `--timeout`,
+//! `--max-memory`. Exit codes: 0 success, 1 a script error (a budget
+//! exceeded too), 2 bad usage or an unreadable file, 130 interrupted
+//! (Ctrl-C) after what was printed.
 
 use std::io::{IsTerminal, Write};
 
@@ -63,9 +65,33 @@ struct Opts {
     /// current folder); created if missing.
     #[arg(long, global = true, value_name = "DIR")]
     draw_dir: Option<std::path::PathBuf>,
+    /// Stop the run after SECONDS (a domain error, exit 1): for running
+    /// scripts one did not write.
+    #[arg(long, global = true, value_name = "SECONDS", value_parser = crate::budget::parse_seconds)]
+    timeout: Option<std::time::Duration>,
+    /// The most the run's numbers may take (512M, 2G; default 4G); without
+    /// it, one statement may hold at most 400 MB (50,000,000 numbers).
+    #[arg(long, global = true, value_name = "SIZE", value_parser = crate::budget::parse_size)]
+    max_memory: Option<u64>,
 }
 
 impl Opts {
+    /// The evaluation budget of `--timeout` and `--max-memory`, its clock
+    /// started now, interrupted by Ctrl-C.
+    fn budget(&self) -> crate::budget::Budget {
+        let mut b = crate::budget::Budget::new();
+        if let Some(t) = self.timeout {
+            b = b.with_timeout(t);
+        }
+        if let Some(m) = self.max_memory {
+            b = b.with_max_memory(m);
+        }
+        // A second handler cannot be installed (only in tests calling
+        // `main_with_args` twice): Ctrl-C then keeps its default.
+        let _ = b.interrupt_handle().on_ctrl_c();
+        b
+    }
+
     /// How symbolic values print (LANGUAGE.md §7).
     fn sym_mode(&self) -> crate::sym::print::Mode {
         use crate::sym::print::Mode;
@@ -135,6 +161,7 @@ fn run_sources(sources: &[(String, String)], mode: Mode, opts: &Opts) -> i32 {
         sym: opts.sym_mode(),
     };
     let mut session = Session::new(settings);
+    session.budget = opts.budget();
     if mode == Mode::Run {
         match picture_dir(opts) {
             Ok(d) => session.pictures = Some(d),
@@ -162,6 +189,11 @@ fn run_sources(sources: &[(String, String)], mode: Mode, opts: &Opts) -> i32 {
                 emit_err(&err);
             }
         });
+        if session.interrupted {
+            let _ = out.flush();
+            emit_err("chasles: interrupted\n");
+            return 130;
+        }
         if errors > 0 && !opts.keep_going && mode == Mode::Run {
             break;
         }
@@ -249,6 +281,7 @@ pub fn main_with_args(args: Vec<String>) -> i32 {
                         sym: cli.opts.sym_mode(),
                     },
                     pictures,
+                    cli.opts.budget(),
                 )
             } else {
                 match load(&["-".to_string()]) {

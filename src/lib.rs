@@ -23,7 +23,8 @@
 //!               that agrees with it, and the AST (names interned:
 //!               `syntax::name::Name`)
 //! diagnostics   errors and warnings as data, and their rendering
-//! span          byte spans and line numbers
+//! span, budget  byte spans and line numbers; the evaluation budget
+//!               (interrupt, deadline, numbers held) every loop asks
 //! lie, mech,    SO(3), SE(3), SO(2), SE(2) (free functions and the group
 //! sym           types of `lie::group`); Grübler and C-space (chapter 2);
 //!               symbolic scalars in canonical form — none of them knows
@@ -51,6 +52,9 @@
 //!   forms over them (chapter 3 with symbols), no knowledge of the language;
 //! - [`span`], [`diagnostics`], [`output`]: places in the source, errors,
 //!   and values for people and for JSON;
+//! - [`budget`]: the one evaluation budget (Ctrl-C, `--timeout`,
+//!   `--max-memory`, the preview's few milliseconds) that every long loop
+//!   asks whether to go on;
 //! - [`session`]: the pipeline parse → check → evaluate over a source text;
 //! - [`cli`], [`repl`]: the front ends.
 #![forbid(unsafe_code)]
@@ -61,6 +65,7 @@
 // every rule call; our own depth limits guard the stack) refers to `alloc`.
 extern crate alloc;
 
+pub mod budget;
 pub mod builtins;
 pub mod check;
 pub mod cli;

@@ -4,6 +4,7 @@
 
 use std::io::Read;
 
+use crate::budget::{self, Budget, Stop};
 use crate::diagnostics::{Diagnostic, ErrorKind, render};
 use crate::eval::env::{Env, FrameMode, Mode};
 use crate::eval::interp::{Interp, Outcome};
@@ -116,6 +117,12 @@ pub struct Session {
     pub pictures: Option<std::path::PathBuf>,
     /// The file of the last picture written (the REPL's `:open`).
     pub last_picture: Option<String>,
+    /// The evaluation budget every statement runs under (`--timeout`,
+    /// `--max-memory`, Ctrl-C through its [`Budget::interrupt_handle`]).
+    pub budget: Budget,
+    /// Whether the last [`Session::run`] was stopped by an interrupt (its
+    /// statement bound nothing and was not reported).
+    pub interrupted: bool,
 }
 
 impl Session {
@@ -126,6 +133,8 @@ impl Session {
             accepted: Vec::new(),
             pictures: None,
             last_picture: None,
+            budget: Budget::new(),
+            interrupted: false,
         }
     }
 
@@ -156,6 +165,12 @@ impl Session {
     /// Runs (or, in [`Mode::Check`], checks) every statement of `src`,
     /// calling `each` with each report in order. Stops after the first
     /// error unless `keep_going`. Returns the number of errors.
+    ///
+    /// Every statement runs under [`Session::budget`]: a statement that
+    /// passes a cap fails with a domain error naming it; a spent time
+    /// budget stops the run (even with `keep_going`) after reporting it;
+    /// an interrupt stops the run with nothing reported for the statement
+    /// it cut short, counted as an error, and sets [`Session::interrupted`].
     pub fn run(
         &mut self,
         src: &str,
@@ -165,7 +180,10 @@ impl Session {
     ) -> usize {
         let mut errors = 0;
         let mut lines = Lines::new(src);
+        let _budget = self.budget.enter();
+        self.interrupted = false;
         for parsed in syntax::statements(src) {
+            budget::begin_statement(self.env.held());
             // The report is built in place and changed there: its result
             // (a large value) is written once, not moved through
             // `map_err` and a second struct.
@@ -205,11 +223,25 @@ impl Session {
                     }
                 }
             }
+            // A result cut short by the budget is an error (a loop stopped
+            // with what it had); the statement bound nothing.
+            let mut fatal = false;
+            if let Err(d) = &mut report.result
+                && let Err(stop) = budget::check()
+            {
+                if stop == Stop::Interrupted {
+                    self.interrupted = true;
+                    errors += 1;
+                    break;
+                }
+                *d = crate::eval::interp::budget_error(stop, d.span);
+                fatal = true;
+            }
             let failed = report.result.is_err();
             each(&report);
             if failed {
                 errors += 1;
-                if !keep_going {
+                if !keep_going || fatal {
                     break;
                 }
             }
