@@ -216,9 +216,13 @@ pub(crate) fn pest_error(err: pest::error::Error<Rule>, text: &str, off: usize) 
     if names.iter().any(|n| n == EXPRESSION || n == OPERATOR) {
         names.retain(|n| n != "'('" && n != "a name");
     }
-    // A range's `:` is an operator (`0:4`).
+    // A range's `:` and the orders `<`, `>` are operators (`0:4`, `a < b`).
     if names.iter().any(|n| n == OPERATOR) {
-        names.retain(|n| n != "':'");
+        names.retain(|n| n != "':'" && n != "'<'" && n != "'>'");
+    }
+    // A count in a mechanism (`links N`, `legs (n) UPS`) is "a whole number".
+    if names.iter().any(|n| n == "a whole number") {
+        names.retain(|n| n != "'('");
     }
     if found_char.is_none() {
         names.retain(|n| n != END);
@@ -300,6 +304,10 @@ fn help(text: &str, pos: usize, found: Option<char>, expected: &[String]) -> Opt
     let before = text.get(..pos).unwrap_or("").trim_end();
     let wants = |s: &str| expected.iter().any(|e| e == s);
     match found? {
+        c if c.is_alphabetic() && before.starts_with("given") && wants("':'") => Some(
+            "the type follows a colon: given T_ab, T_bc : SE3 (scalars need none: given α, β)"
+                .into(),
+        ),
         '*' if before.ends_with('*') => Some("use ^ for powers: x^2".into()),
         '!' => Some("there is no `!=`: write (a == b) == false".into()),
         '=' if before.ends_with('=') => {
