@@ -7,6 +7,9 @@
 //! ```text
 //! cli, repl     front ends (the terminal, flags, `:` commands)
 //! session       parse → check → evaluate over a source text; reading scripts
+//! effects       the one gate for files a statement asks to write (`save`,
+//!               printed pictures, `:save`): written, refused or confined
+//!               by the front end; evaluation itself never writes
 //! output        outcomes as text blocks and JSON lines
 //! draw          pictures: marks, projection, SVG and PNG (§12)
 //! eval          the environment, the interpreter and its one operation
@@ -56,6 +59,7 @@
 //!   `--max-memory`, the preview's few milliseconds) that every long loop
 //!   asks whether to go on;
 //! - [`session`]: the pipeline parse → check → evaluate over a source text;
+//! - [`effects`]: the gate every file write goes through;
 //! - [`cli`], [`repl`]: the front ends.
 #![forbid(unsafe_code)]
 // Errors carry spans, labels and help text; they are rare, so their size is not worth boxing.
@@ -71,6 +75,7 @@ pub mod check;
 pub mod cli;
 pub mod diagnostics;
 pub mod draw;
+pub mod effects;
 pub mod eval;
 pub mod lie;
 pub mod mech;

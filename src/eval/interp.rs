@@ -351,6 +351,13 @@ impl<'a> Interp<'a> {
                 *m = self.group_at_binding(&name, &ty, owned, value_span)?;
             }
             *kind = ty;
+        } else if let Some(Value::Formula { kind, .. }) = t.val.as_deref_mut()
+            && ty != Kind::Unknown
+            && !ty.is_group()
+        {
+            // the book's names label symbolic 6-vectors as they do numbers
+            // (`S2 = (0, 0, 1, 0, -L1, 0)` is a screw axis, §5)
+            *kind = ty;
         }
         Ok(())
     }

@@ -206,14 +206,16 @@ pub fn open_call_signature(line: &str) -> Option<&'static str> {
 /// line — only when it evaluates without error or warning within the
 /// preview's budget ([`crate::budget::Budget::preview`]: a few tens of
 /// milliseconds and a small count of numbers). Past it the preview gives
-/// up silently: a keystroke never waits for a long line.
+/// up silently: a keystroke never waits for a long line. Pure: it only
+/// evaluates ([`Session::evaluate`]), so no file is ever written
+/// (LANGUAGE.md §11).
 pub fn preview(session: &Session, line: &str) -> Option<String> {
     if line.len() > PREVIEW_MAX_CHARS || needs_more_input(line) {
         return None;
     }
     let mut copy = session.clone();
     copy.budget = crate::budget::Budget::preview();
-    let (out, err, errors) = copy.run_to_strings("<preview>", line, Mode::Run, false);
+    let (out, err, errors) = copy.evaluate_to_strings("<preview>", line, Mode::Run, false);
     if errors > 0 || !err.is_empty() {
         return None;
     }
