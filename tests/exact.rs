@@ -68,3 +68,15 @@ fn reciprocals_of_sums_keep_their_value() {
         "{printed}"
     );
 }
+
+// ------------------------------------------- item 6: exact coefficients
+
+/// Integer coefficients beyond 64 bits stay exact (no float, no noise):
+/// C(70, 35) is 112186277816662845432.
+#[test]
+fn big_coefficients_stay_exact() {
+    let printed = last("given t : scalar\n(1 + t)^70");
+    let text = printed.as_str().unwrap_or_default();
+    assert!(text.contains("112186277816662845432 t^35"), "{text}");
+    assert!(!text.contains('e') && !text.contains('.'), "{text}");
+}
