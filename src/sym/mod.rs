@@ -14,6 +14,7 @@ pub mod fraction;
 pub mod matrix;
 pub mod print;
 pub mod rational;
+pub mod size;
 pub mod trig;
 
 pub use expr::{Expr, Symbol, Wrt};
