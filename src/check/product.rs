@@ -31,6 +31,14 @@ pub fn mul(l: &Ty, r: &Ty, ops: Operands) -> Result<Ty, RuleError> {
     ) {
         return Err(wrench_through_ad(l, r, ops));
     }
+    if r.kind.is_vector() && moves_points(&l.kind, &r.kind) {
+        if r.free {
+            return Err(super::free::through_transform(l, r, ops));
+        }
+        if r.kind.vec_len() == Some(6) {
+            return Err(super::free::six_through_transform(l, r, ops));
+        }
+    }
     // A row times a column, uᵀv: an inner product (the power V_bᵀF_b is a
     // plain scalar, §3.4: the same in every frame).
     let kind = if matches!(l.kind, Kind::Matrix(Some(1), _)) && r.kind.is_vector() {
@@ -53,7 +61,19 @@ pub fn mul(l: &Ty, r: &Ty, ops: Operands) -> Result<Ty, RuleError> {
     };
     let mut out = Ty::new(kind, frames);
     out.moves = moves;
+    // A rotation (or any matrix but a transform) of a free vector is one.
+    out.free = r.free && kind.is_vector();
     Ok(conjugation(l, r, out))
+}
+
+/// True when `l * r` would treat the vector `r` as a point: a transform
+/// (or a 4×4, 3×3 planar matrix) times a 3-vector (2-vector) is the
+/// homogeneous product T p (3.65); with a 6-vector, no product at all.
+fn moves_points(l: &Kind, r: &Kind) -> bool {
+    matches!(
+        (l, r.vec_len()),
+        (Kind::SE3, Some(3 | 6)) | (Kind::Matrix(Some(4), Some(4)), Some(3)) | (Kind::SE2, Some(2))
+    )
 }
 
 /// What a factor contributes to a product of group elements and one

@@ -512,6 +512,9 @@ pub struct Ty {
     /// meets, an untagged [`Kind::So3`]/[`Kind::Se3`] matrix none), so that
     /// `A * B * T_sb` moves {b} alike under every bracketing.
     pub moves: Option<u32>,
+    /// For a vector: a free vector (ω, v, f, m, an axis; [`super::role`]),
+    /// which only rotates: a transform moves points, so `T * ω` is refused.
+    pub free: bool,
 }
 
 impl Ty {
@@ -521,6 +524,7 @@ impl Ty {
             frames,
             algebra: None,
             moves: None,
+            free: false,
         }
     }
     /// An untagged value of `kind`.
@@ -538,6 +542,7 @@ impl Ty {
             frames: self.frames,
             algebra: self.algebra,
             moves: self.moves,
+            free: self.free,
         }
     }
 }

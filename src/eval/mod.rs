@@ -12,6 +12,7 @@ pub mod graph;
 pub mod interp;
 pub mod list;
 mod notation;
+mod pairs;
 mod shapes;
 mod substitute;
 mod symbols;
