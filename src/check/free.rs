@@ -15,9 +15,12 @@ use crate::syntax::ident::{NameFrames, base_name, name_frames, tagged_name};
 pub(super) fn through_transform(l: &Ty, r: &Ty, ops: Operands) -> RuleError {
     let t = ops.lhs.text().trim();
     let v = ops.rhs.text().trim();
-    let what = match ops.rhs.form() {
-        Form::Name(n) => role::noun(n).unwrap_or("a free vector"),
-        _ => "a free vector",
+    let (what, named) = match ops.rhs.form() {
+        Form::Name(n) => match role::noun(n) {
+            Some(what) => (what, Some(n)),
+            None => ("a free vector", None),
+        },
+        _ => ("a free vector", None),
     };
     let (rotation, book) = rotation_of(ops, &l.frames);
     let book = book.map_or(String::new(), |r| format!(" (the book's {r} {v})"));
@@ -32,8 +35,12 @@ pub(super) fn through_transform(l: &Ty, r: &Ty, ops: Operands) -> RuleError {
     } else {
         format!("; a twist V = (ω, v) changes frame by Ad({t}) * V (3.83)")
     };
+    // The book also names a point v (Figure 3.13): the way to say so.
+    let point = named.map_or(String::new(), |n| {
+        format!("; if {n} is a point, say so first: given {n} : point")
+    });
     e.help = Some(format!(
-        "a transform moves points, T p = R p + p (3.65); a free vector only rotates: write {rotation} * {v}{book}{ad}"
+        "a transform moves points, T p = R p + p (3.65); a free vector only rotates: write {rotation} * {v}{book}{ad}{point}"
     ));
     e
 }

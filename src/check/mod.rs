@@ -9,6 +9,7 @@ pub mod algebra;
 pub mod bind;
 pub mod error;
 mod free;
+mod hints;
 pub mod name;
 mod product;
 pub mod role;

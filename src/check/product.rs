@@ -5,6 +5,7 @@
 //! fix when frames do not cancel. Part of the rule table of [`super::rules`].
 
 use super::algebra::{self, Clash};
+use super::hints;
 use super::error::{Form, Operand, Operands, RuleError, describe};
 use super::ty::{Algebra, Frame, Frames, Kind, Ty};
 use crate::syntax::ident::{NameFrames, base_name, name_frames, tagged_name};
@@ -301,7 +302,8 @@ fn inner_mismatch(l: &Ty, r: &Ty, a_in: &Frame, b_out: &Frame, ops: Operands) ->
         .into_iter()
         .filter_map(|(op, t)| plain_name_hint(op, t))
         .collect::<String>();
-    e.help = Some(product_help(l, r, ops) + &plain);
+    let help = product_help(l, r, ops) + &plain + &hints::one_frame_operator(ops, l, r);
+    e.help = Some(hints::not_as_typed(help, ops.rhs.text().trim()));
     e
 }
 
@@ -378,6 +380,9 @@ fn product_help(l: &Ty, r: &Ty, ops: Operands) -> String {
             } else {
                 format!("{rule}; find a transform from {{{b}}} to {{{c}}} (try derive)")
             }
+        }
+        (Frames::Pair(a, _), Frames::One(c)) if a == c && r.kind.is_vector() => {
+            hints::vector_in_outer(l, ops).unwrap_or_else(|| rule.to_string())
         }
         (Frames::Pair(_, b), Frames::One(c)) => format!(
             "{} takes coordinates in {{{b}}}, but {} is in {{{c}}}; express it in {{{b}}} first",

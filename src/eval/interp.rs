@@ -339,6 +339,9 @@ impl<'a> Interp<'a> {
             }
             *kind = ty;
         }
+        if matches!(ty, Kind::Matrix(Some(4), Some(4))) {
+            self.transform_lookalike(&name, t, value_span);
+        }
         Ok(())
     }
 

@@ -12,7 +12,7 @@ pub mod graph;
 pub mod interp;
 pub mod list;
 mod notation;
-mod pairs;
+mod naming;
 mod shapes;
 mod substitute;
 mod symbols;

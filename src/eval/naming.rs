@@ -4,6 +4,9 @@
 //! and the book's twist, screw and wrench names bind a pair of 3-vectors as
 //! the 6-vector it stands for: `V_s = (w_s, v_s)` is the twist (ω, v)
 //! (§3.3.2), `S = (ω, v)` a screw axis, `F = (m, f)` a wrench (§3.4).
+//! And a 4×4 bound to a plain name that looks like a transform — last row
+//! (0, 0, 0, 1) — but whose rotation block is no rotation is named at
+//! binding (§5): the book's Exercise 3.25(a) prints such an A (r₃₃ = 1).
 
 use super::apply;
 use super::env::Binding;
@@ -12,7 +15,7 @@ use super::value::{Sym, Value};
 use crate::check::role::Role;
 use crate::check::rules::same_frames;
 use crate::check::ty::{Kind, Ty};
-use crate::diagnostics::Diagnostic;
+use crate::diagnostics::{Diagnostic, ErrorKind};
 use crate::syntax::ast::{Expr, ExprKind, Ident, Name, Span};
 
 impl Interp<'_> {
@@ -104,5 +107,48 @@ impl Interp<'_> {
                 },
             );
         }
+    }
+}
+
+impl Interp<'_> {
+    /// `A = [0, 0, 1, 0; 0, 1, 0, 1; -1, 0, 1, 0; 0, 0, 0, 1]`: a warning
+    /// giving the distance to SE(3) (DistanceToSE3) when a plain 4×4 with
+    /// last row (0, 0, 0, 1) is farther from SE(3) than book rounding.
+    pub(super) fn transform_lookalike(&mut self, name: &str, t: &Typed, span: Span) {
+        use super::convert::{Group, Membership, membership};
+        let Some(Value::Num {
+            m,
+            kind: Kind::Matrix(Some(4), Some(4)),
+        }) = t.value()
+        else {
+            return;
+        };
+        if m.shape() != (4, 4) || !m.row(3).eq([0.0, 0.0, 0.0, 1.0]) {
+            return;
+        }
+        let Membership::Outside { distance, det } = membership(m, Group::SE3) else {
+            return;
+        };
+        let fmt = |x: f64| crate::values::number::fmt_num(x, 4);
+        self.warnings.push(
+            Diagnostic::warning(
+                ErrorKind::Domain,
+                span,
+                if det > 0.0 && distance < 1e8 {
+                    format!(
+                        "{name} looks like a transform (last row 0, 0, 0, 1) but is not one: it is {} from SE(3) (DistanceToSE3)",
+                        fmt(distance)
+                    )
+                } else {
+                    format!(
+                        "{name} looks like a transform (last row 0, 0, 0, 1) but is not one: its rotation block has det {} (a rotation's is 1)",
+                        fmt(det)
+                    )
+                },
+            )
+            .with_help(format!(
+                "products with {name} are plain 4×4 products; check the entries (a misprint?): a rotation block has orthonormal columns and det R = 1 (Prop. 3.1)"
+            )),
+        );
     }
 }
