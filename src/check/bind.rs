@@ -243,6 +243,14 @@ fn mismatch(name: &str, claim: &Frames, frames: &Frames) -> RuleError {
     e.lhs = format!("says {}", describe(claim));
     e.rhs = describe(frames);
     e.help = Some(suggest_name(name, frames));
+    // `ω_b = R.T ω_s` with an untagged R: the value stays in {s}.
+    if let (Frames::One(want), Frames::One(_)) = (claim, frames) {
+        e.help = e.help.map(|h| {
+            format!(
+                "{h}; or, if it is in {{{want}}}, give the matrix its frames: an untagged matrix keeps the frame of the vector it multiplies"
+            )
+        });
+    }
     e
 }
 

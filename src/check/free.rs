@@ -35,10 +35,13 @@ pub(super) fn through_transform(l: &Ty, r: &Ty, ops: Operands) -> RuleError {
     } else {
         format!("; a twist V = (ω, v) changes frame by Ad({t}) * V (3.83)")
     };
-    // The book also names a point v (Figure 3.13): the way to say so.
-    let point = named.map_or(String::new(), |n| {
-        format!("; if {n} is a point, say so first: given {n} : point")
-    });
+    // The book also names a point v (Figure 3.13): how to say so.
+    let point = match named {
+        Some(n) if what == "a linear velocity" => {
+            format!("; if {n} is a point, say so first: given {n} : point")
+        }
+        _ => String::new(),
+    };
     e.help = Some(format!(
         "a transform moves points, T p = R p + p (3.65); a free vector only rotates: write {rotation} * {v}{book}{ad}{point}"
     ));
@@ -60,9 +63,7 @@ pub(super) fn six_through_transform(_l: &Ty, r: &Ty, ops: Operands) -> RuleError
         Kind::Wrench => format!(
             "a wrench changes frame with the transposed adjoint (Prop. 3.17): F_b = Ad(T_ab).T * F_a, so Ad(inv({t})).T * {v} moves {v} the way {t} moves points"
         ),
-        _ => format!(
-            "a twist changes frame with the adjoint (3.83): write Ad({t}) * {v}"
-        ),
+        _ => format!("a twist changes frame with the adjoint (3.83): write Ad({t}) * {v}"),
     });
     e
 }

@@ -62,7 +62,10 @@ pub(super) fn one_frame_operator(ops: Operands, l: &Ty, r: &Ty) -> String {
     let join = |pick: &dyn Fn(&(&str, String, String)) -> String| {
         names.iter().map(pick).collect::<Vec<_>>().join(", ")
     };
-    let (subject, frames) = (join(&|x| x.0.to_string()), join(&|x| format!("{{{}}}", x.2)));
+    let (subject, frames) = (
+        join(&|x| x.0.to_string()),
+        join(&|x| format!("{{{}}}", x.2)),
+    );
     let plain = join(&|x| x.1.clone());
     let (s, verb, axis) = if names.len() > 1 {
         ("s", "name frames", "axes")
@@ -77,7 +80,11 @@ pub(super) fn one_frame_operator(ops: Operands, l: &Ty, r: &Ty) -> String {
 /// The help with any "did you mean X?" dropped where X is what was typed
 /// (`typed`, spaces and `*` aside): a fix that is the input is no fix.
 pub(super) fn not_as_typed(help: String, typed: &str) -> String {
-    let squash = |s: &str| s.chars().filter(|c| !c.is_whitespace() && *c != '*').collect::<String>();
+    let squash = |s: &str| {
+        s.chars()
+            .filter(|c| !c.is_whitespace() && *c != '*')
+            .collect::<String>()
+    };
     let typed = squash(typed);
     let Some(at) = help.find("did you mean ") else {
         return help;

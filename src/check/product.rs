@@ -5,8 +5,8 @@
 //! fix when frames do not cancel. Part of the rule table of [`super::rules`].
 
 use super::algebra::{self, Clash};
-use super::hints;
 use super::error::{Form, Operand, Operands, RuleError, describe};
+use super::hints;
 use super::ty::{Algebra, Frame, Frames, Kind, Ty};
 use crate::syntax::ident::{NameFrames, base_name, name_frames, tagged_name};
 

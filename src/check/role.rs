@@ -136,13 +136,17 @@ mod tests {
         ] {
             assert_eq!(of(name), Some(Role::Free), "{name}");
         }
-        for name in ["x_a", "y_b", "z_s", "xhat_a", "x̂_a", "ŷ", "ẑ_b", "x_hat", "zhat"] {
+        for name in [
+            "x_a", "y_b", "z_s", "xhat_a", "x̂_a", "ŷ", "ẑ_b", "x_hat", "zhat",
+        ] {
             assert_eq!(of(name), Some(Role::Axis), "{name}");
         }
         for name in ["p_b", "p", "q", "r_s", "p_sb", "q1"] {
             assert_eq!(of(name), Some(Role::Point), "{name}");
         }
-        for name in ["x", "y", "s", "u", "Sum", "W", "V_s", "F", "x_max", "vel", "mass"] {
+        for name in [
+            "x", "y", "s", "u", "Sum", "W", "V_s", "F", "x_max", "vel", "mass",
+        ] {
             assert_eq!(of(name), None, "{name}");
         }
     }

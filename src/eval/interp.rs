@@ -218,7 +218,10 @@ impl<'a> Interp<'a> {
                         self.bind_time(t, &Kind::Vector(Some(len)))?;
                     }
                     self.given_role(names, role, len);
-                    let mut o = out(Names::Many(Vec::new()), Typed::new(Ty::plain(Kind::Vector(Some(len))), None));
+                    let mut o = out(
+                        Names::Many(Vec::new()),
+                        Typed::new(Ty::plain(Kind::Vector(Some(len))), None),
+                    );
                     o.prints = false;
                     return Ok(o);
                 }

@@ -79,12 +79,7 @@ impl Interp<'_> {
     /// holds a free vector (a point) from now on, whatever its letters say;
     /// a name bound to a vector keeps its value, another is declared as a
     /// symbolic `len`-vector.
-    pub(super) fn given_role(
-        &mut self,
-        names: &[Ident],
-        role: Role,
-        len: usize,
-    ) {
+    pub(super) fn given_role(&mut self, names: &[Ident], role: Role, len: usize) {
         for n in names {
             let claim = self.env.declare_role(n.name, role);
             let free = role.is_free();
