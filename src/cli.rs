@@ -1,12 +1,15 @@
 //! The command line (LANGUAGE.md §1): `chasles`, `chasles run FILE...`,
 //! `chasles check FILE...`, `chasles -e 'STATEMENTS'`, with `--json`,
-//! `--frames`, `--digits`, `--exact`, `--keep-going`. Exit codes: 0 success, 1 a
-//! script error, 2 bad usage or an unreadable file.
+//! `--frames`, `--digits`, `--exact`, `--keep-going`, `--timeout`,
+//! `--max-memory`. Exit codes: 0 success, 1 a script error (a budget
+//! exceeded too), 2 bad usage or an unreadable file, 130 interrupted
+//! (Ctrl-C) after what was printed.
 
 use std::io::{IsTerminal, Write};
 
 use clap::{Parser, Subcommand};
 
+use crate::effects::Gate;
 use crate::eval::env::{FrameMode, Mode};
 use crate::session::{Session, Settings};
 
@@ -30,7 +33,7 @@ struct Cli {
         value_name = "STATEMENTS",
         allow_hyphen_values = true
     )]
-    eval: Option<String>,
+    eval: Option<std::ffi::OsString>,
     #[command(flatten)]
     opts: Opts,
 }
@@ -60,12 +63,44 @@ struct Opts {
     #[arg(long, global = true)]
     latex: bool,
     /// Where pictures printed but not saved are written (default: the
-    /// current folder); created if missing.
-    #[arg(long, global = true, value_name = "DIR")]
+    /// current folder, or the --write-dir); created if missing.
+    #[arg(long, global = true, value_name = "DIR", conflicts_with = "no_write")]
     draw_dir: Option<std::path::PathBuf>,
+    /// Refuse every file write (save, printed pictures, :save) with an
+    /// error.
+    #[arg(long, global = true, conflicts_with = "write_dir")]
+    no_write: bool,
+    /// Confine every write to DIR (created if missing): names are taken
+    /// inside it; absolute paths, `..` and links leading out are refused.
+    #[arg(long, global = true, value_name = "DIR")]
+    write_dir: Option<std::path::PathBuf>,
+    /// Stop the run after SECONDS (a domain error, exit 1): for running
+    /// scripts one did not write.
+    #[arg(long, global = true, value_name = "SECONDS", value_parser = crate::budget::parse_seconds)]
+    timeout: Option<std::time::Duration>,
+    /// The most the run's numbers may take (512M, 2G; default 4G); without
+    /// it, one statement may hold at most 400 MB (50,000,000 numbers).
+    #[arg(long, global = true, value_name = "SIZE", value_parser = crate::budget::parse_size)]
+    max_memory: Option<u64>,
 }
 
 impl Opts {
+    /// The evaluation budget of `--timeout` and `--max-memory`, its clock
+    /// started now, interrupted by Ctrl-C.
+    fn budget(&self) -> crate::budget::Budget {
+        let mut b = crate::budget::Budget::new();
+        if let Some(t) = self.timeout {
+            b = b.with_timeout(t);
+        }
+        if let Some(m) = self.max_memory {
+            b = b.with_max_memory(m);
+        }
+        // A second handler cannot be installed (only in tests calling
+        // `main_with_args` twice): Ctrl-C then keeps its default.
+        let _ = b.interrupt_handle().on_ctrl_c();
+        b
+    }
+
     /// How symbolic values print (LANGUAGE.md §7).
     fn sym_mode(&self) -> crate::sym::print::Mode {
         use crate::sym::print::Mode;
@@ -77,22 +112,33 @@ impl Opts {
     }
 }
 
-/// The folder for printed pictures, created when asked for by `--draw-dir`.
-fn picture_dir(opts: &Opts) -> Result<std::path::PathBuf, i32> {
-    match &opts.draw_dir {
-        None => Ok(".".into()),
-        Some(d) => match std::fs::create_dir_all(d) {
-            Ok(()) => Ok(d.clone()),
-            Err(e) => {
-                emit_err(&format!(
-                    "chasles: cannot use --draw-dir '{}': {}\n",
-                    d.display(),
-                    crate::session::io_reason(&e)
-                ));
-                Err(2)
-            }
-        },
-    }
+/// The effects gate the flags ask for (`crate::effects`): `--no-write`
+/// refuses, `--write-dir` confines (with `--draw-dir` inside it), else
+/// writes go where asked and printed pictures to `.` or `--draw-dir`
+/// (created when missing). Err is the exit code after the message.
+fn gate(opts: &Opts) -> Result<Gate, i32> {
+    let made = if opts.no_write {
+        Ok(Gate::deny())
+    } else if let Some(root) = &opts.write_dir {
+        Gate::within(root, opts.draw_dir.as_deref())
+    } else {
+        match &opts.draw_dir {
+            None => Ok(Gate::anywhere(Some(".".into()))),
+            Some(d) => std::fs::create_dir_all(d)
+                .map(|()| Gate::anywhere(Some(d.clone())))
+                .map_err(|e| {
+                    format!(
+                        "cannot use --draw-dir '{}': {}",
+                        crate::session::shown_path(d),
+                        crate::session::io_reason(&e)
+                    )
+                }),
+        }
+    };
+    made.map_err(|m| {
+        emit_err(&format!("chasles: {m}\n"));
+        2
+    })
 }
 
 fn parse_frames(s: &str) -> Result<FrameMode, String> {
@@ -104,12 +150,12 @@ enum Command {
     /// Run scripts in order, printing each result (`-` reads stdin).
     Run {
         #[arg(required = true, value_name = "FILE")]
-        files: Vec<String>,
+        files: Vec<std::path::PathBuf>,
     },
     /// Type- and frame-check scripts without evaluating; report every error.
     Check {
         #[arg(required = true, value_name = "FILE")]
-        files: Vec<String>,
+        files: Vec<std::path::PathBuf>,
     },
 }
 
@@ -135,9 +181,10 @@ fn run_sources(sources: &[(String, String)], mode: Mode, opts: &Opts) -> i32 {
         sym: opts.sym_mode(),
     };
     let mut session = Session::new(settings);
+    session.budget = opts.budget();
     if mode == Mode::Run {
-        match picture_dir(opts) {
-            Ok(d) => session.pictures = Some(d),
+        match gate(opts) {
+            Ok(g) => session.gate = g,
             Err(code) => return code,
         }
     }
@@ -162,6 +209,11 @@ fn run_sources(sources: &[(String, String)], mode: Mode, opts: &Opts) -> i32 {
                 emit_err(&err);
             }
         });
+        if session.interrupted {
+            let _ = out.flush();
+            emit_err("chasles: interrupted\n");
+            return 130;
+        }
         if errors > 0 && !opts.keep_going && mode == Mode::Run {
             break;
         }
@@ -188,16 +240,18 @@ fn run_sources(sources: &[(String, String)], mode: Mode, opts: &Opts) -> i32 {
     i32::from(errors > 0)
 }
 
-/// Loads files, reporting unreadable ones (exit 2).
-fn load(files: &[String]) -> Result<Vec<(String, String)>, i32> {
+/// Loads files, reporting unreadable ones (exit 2). Each is named in
+/// messages as given, with bytes that are not UTF-8 and control characters
+/// escaped.
+fn load(files: &[std::path::PathBuf]) -> Result<Vec<(String, String)>, i32> {
     let mut sources = Vec::new();
     for f in files {
         match read_source(f) {
             Ok(s) => sources.push((
-                if f == "-" {
+                if f.as_os_str() == "-" {
                     "<stdin>".to_string()
                 } else {
-                    f.clone()
+                    crate::session::shown_path(f)
                 },
                 s,
             )),
@@ -210,14 +264,41 @@ fn load(files: &[String]) -> Result<Vec<(String, String)>, i32> {
     Ok(sources)
 }
 
+/// The statements of `-e`: UTF-8 text (a leading byte-order mark
+/// skipped), else the message for exit code 2.
+fn eval_text(arg: &std::ffi::OsStr) -> Result<String, String> {
+    match arg.to_str() {
+        Some(t) => Ok(t.strip_prefix('\u{feff}').unwrap_or(t).to_string()),
+        None => {
+            let bytes = arg.as_encoded_bytes();
+            let at = bytes.utf8_chunks().next().map_or(0, |c| c.valid().len());
+            Err(format!(
+                "-e: the statements are not UTF-8 text (invalid byte at offset {at}): {}",
+                crate::diagnostics::escape::bytes(bytes)
+            ))
+        }
+    }
+}
+
 /// The whole program; returns the exit code.
-pub fn main_with_args(args: Vec<String>) -> i32 {
+/// Arguments are OS strings: one that is not UTF-8 is a clear error
+/// (exit 2), never a panic.
+pub fn main_with_args<I, T>(args: I) -> i32
+where
+    I: IntoIterator<Item = T>,
+    T: Into<std::ffi::OsString> + Clone,
+{
     let cli = match Cli::try_parse_from(args) {
         Ok(c) => c,
         Err(e) => {
-            let code = if e.use_stderr() { 2 } else { 0 };
-            let _ = e.print();
-            return code;
+            if !e.use_stderr() {
+                let _ = e.print();
+                return 0;
+            }
+            // clap quotes the arguments: their control characters escaped.
+            let text = e.render().to_string();
+            emit_err(&crate::diagnostics::escape::controls_keep_lines(&text));
+            return 2;
         }
     };
     match (&cli.command, &cli.eval) {
@@ -225,7 +306,13 @@ pub fn main_with_args(args: Vec<String>) -> i32 {
             emit_err("chasles: -e cannot be combined with run or check\n");
             2
         }
-        (None, Some(src)) => run_sources(&[("<-e>".into(), src.clone())], Mode::Run, &cli.opts),
+        (None, Some(src)) => match eval_text(src) {
+            Ok(src) => run_sources(&[("<-e>".into(), src)], Mode::Run, &cli.opts),
+            Err(msg) => {
+                emit_err(&format!("chasles: {msg}\n"));
+                2
+            }
+        },
         (Some(Command::Run { files }), None) => match load(files) {
             Ok(s) => run_sources(&s, Mode::Run, &cli.opts),
             Err(code) => code,
@@ -236,8 +323,8 @@ pub fn main_with_args(args: Vec<String>) -> i32 {
         },
         (None, None) => {
             if std::io::stdin().is_terminal() {
-                let pictures = match picture_dir(&cli.opts) {
-                    Ok(d) => d,
+                let gate = match gate(&cli.opts) {
+                    Ok(g) => g,
                     Err(code) => return code,
                 };
                 crate::repl::run_terminal(
@@ -248,10 +335,11 @@ pub fn main_with_args(args: Vec<String>) -> i32 {
                         exact: cli.opts.exact,
                         sym: cli.opts.sym_mode(),
                     },
-                    pictures,
+                    gate,
+                    cli.opts.budget(),
                 )
             } else {
-                match load(&["-".to_string()]) {
+                match load(&["-".into()]) {
                     Ok(s) => run_sources(&s, Mode::Run, &cli.opts),
                     Err(code) => code,
                 }

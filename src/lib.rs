@@ -7,6 +7,9 @@
 //! ```text
 //! cli, repl     front ends (the terminal, flags, `:` commands)
 //! session       parse → check → evaluate over a source text; reading scripts
+//! effects       the one gate for files a statement asks to write (`save`,
+//!               printed pictures, `:save`): written, refused or confined
+//!               by the front end; evaluation itself never writes
 //! output        outcomes as text blocks and JSON lines
 //! draw          pictures: marks, projection, SVG and PNG (§12)
 //! eval          the environment, the interpreter and its one operation
@@ -23,7 +26,8 @@
 //!               that agrees with it, and the AST (names interned:
 //!               `syntax::name::Name`)
 //! diagnostics   errors and warnings as data, and their rendering
-//! span          byte spans and line numbers
+//! span, budget  byte spans and line numbers; the evaluation budget
+//!               (interrupt, deadline, numbers held) every loop asks
 //! lie, mech,    SO(3), SE(3), SO(2), SE(2) (free functions and the group
 //! sym           types of `lie::group`); Grübler and C-space (chapter 2);
 //!               symbolic scalars in canonical form — none of them knows
@@ -51,7 +55,11 @@
 //!   forms over them (chapter 3 with symbols), no knowledge of the language;
 //! - [`span`], [`diagnostics`], [`output`]: places in the source, errors,
 //!   and values for people and for JSON;
+//! - [`budget`]: the one evaluation budget (Ctrl-C, `--timeout`,
+//!   `--max-memory`, the preview's few milliseconds) that every long loop
+//!   asks whether to go on;
 //! - [`session`]: the pipeline parse → check → evaluate over a source text;
+//! - [`effects`]: the gate every file write goes through;
 //! - [`cli`], [`repl`]: the front ends.
 #![forbid(unsafe_code)]
 // Errors carry spans, labels and help text; they are rare, so their size is not worth boxing.
@@ -61,11 +69,13 @@
 // every rule call; our own depth limits guard the stack) refers to `alloc`.
 extern crate alloc;
 
+pub mod budget;
 pub mod builtins;
 pub mod check;
 pub mod cli;
 pub mod diagnostics;
 pub mod draw;
+pub mod effects;
 pub mod eval;
 pub mod lie;
 pub mod mech;

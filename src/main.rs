@@ -8,14 +8,15 @@
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
 fn main() {
-    let args: Vec<String> = std::env::args().collect();
+    // OS strings: an argument that is not UTF-8 is an error, not a panic.
+    let args: Vec<std::ffi::OsString> = std::env::args_os().collect();
     let worker = std::thread::Builder::new()
         .name("chasles".into())
         .stack_size(256 * 1024 * 1024)
         .spawn(move || chasles::cli::main_with_args(args));
     let code = match worker {
         Ok(handle) => handle.join().unwrap_or(101),
-        Err(_) => chasles::cli::main_with_args(std::env::args().collect()),
+        Err(_) => chasles::cli::main_with_args(std::env::args_os()),
     };
     std::process::exit(code);
 }

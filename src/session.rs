@@ -4,7 +4,9 @@
 
 use std::io::Read;
 
+use crate::budget::{self, Budget, Stop};
 use crate::diagnostics::{Diagnostic, ErrorKind, render};
+use crate::effects::{Effect, Gate, PictureTo};
 use crate::eval::env::{Env, FrameMode, Mode};
 use crate::eval::interp::{Interp, Outcome};
 use crate::eval::value::Value;
@@ -60,6 +62,10 @@ pub struct Report {
     /// A known line before the statement, to number the lines of its
     /// diagnostics without rescanning the source from its start.
     pub anchor: Anchor,
+    /// The files the statement asks to write (a picture saved or printed),
+    /// performed by the session's gate in [`Session::run`] before the
+    /// report is seen, left undone by [`Session::evaluate`].
+    pub effects: Vec<Effect>,
 }
 
 impl Report {
@@ -110,12 +116,19 @@ pub struct Session {
     /// the REPL's `:save` writes and `:history` lists (scripts leave it
     /// empty).
     pub accepted: Vec<String>,
-    /// Where pictures printed but not saved are written (§12): `Some(".")`
-    /// in the CLI and REPL, or `--draw-dir`. `None` (the default, for
-    /// library use and tests) writes no file at all, not even for `save`.
-    pub pictures: Option<std::path::PathBuf>,
+    /// The front end's decision on every file a statement asks to write
+    /// (`save`, printed pictures, `:save`): see [`crate::effects`]. The
+    /// default keeps pictures in memory; the CLI and REPL write them (to
+    /// `.` or `--draw-dir`), `--no-write` refuses, `--write-dir` confines.
+    pub gate: Gate,
     /// The file of the last picture written (the REPL's `:open`).
     pub last_picture: Option<String>,
+    /// The evaluation budget every statement runs under (`--timeout`,
+    /// `--max-memory`, Ctrl-C through its [`Budget::interrupt_handle`]).
+    pub budget: Budget,
+    /// Whether the last [`Session::run`] was stopped by an interrupt (its
+    /// statement bound nothing and was not reported).
+    pub interrupted: bool,
 }
 
 impl Session {
@@ -124,48 +137,115 @@ impl Session {
             env: Env::default(),
             settings,
             accepted: Vec::new(),
-            pictures: None,
+            gate: Gate::default(),
             last_picture: None,
+            budget: Budget::new(),
+            interrupted: false,
         }
     }
 
-    /// A picture that a statement printed: checked and described, and —
-    /// when this session writes files — written to the file `save` asked
-    /// for, else to `NAME.svg` or `draw-LINE.svg` in the picture folder.
-    fn picture(&mut self, o: &mut Outcome, line: usize) -> Result<(), Diagnostic> {
+    /// A picture that a statement printed: checked and described, and
+    /// the file it asks for as an effect — the name `save` gave, else
+    /// `NAME.svg` or `draw-LINE.svg` for the folder of printed pictures.
+    /// Nothing is written here.
+    fn picture(o: &mut Outcome, line: usize) -> Result<Option<Effect>, Diagnostic> {
         let Some(Value::Picture(p)) = o.val.as_deref() else {
-            return Ok(());
+            return Ok(None);
         };
         let fail = |m: String| Diagnostic::error(ErrorKind::Domain, o.span, m);
-        let mut p = crate::draw::described(p).map_err(fail)?;
-        if let (Some(dir), false, true) = (&self.pictures, p.is_view_only(), o.prints) {
-            let path = match (&p.save_to, o.names.as_slice()) {
-                (Some(f), _) => std::path::PathBuf::from(f),
-                (None, [name]) => dir.join(format!("{}.svg", file_stem(name))),
-                _ => dir.join(format!("draw-{line}.svg")),
+        let p = crate::draw::described(p).map_err(fail)?;
+        let effect = if !p.is_view_only() && o.prints {
+            let to = match (&p.save_to, o.names.as_slice()) {
+                (Some(f), _) => PictureTo::Saved(f.into()),
+                (None, [name]) => PictureTo::Printed(format!("{}.svg", file_stem(name))),
+                _ => PictureTo::Printed(format!("draw-{line}.svg")),
             };
-            crate::draw::file::write(&p, &path).map_err(fail)?;
-            let shown = path.to_string_lossy().trim_start_matches("./").to_string();
-            std::rc::Rc::make_mut(&mut p).file = Some(shown.clone());
-            self.last_picture = Some(shown);
-        }
+            Some(Effect::Picture {
+                to,
+                picture: p.clone(),
+            })
+        } else {
+            None
+        };
         o.val = Some(Box::new(Value::Picture(p)));
-        Ok(())
+        Ok(effect)
+    }
+
+    /// Performs the report's effects through the gate: a picture written
+    /// says where (`→ pic.svg`); a write refused or failed makes the
+    /// statement's error.
+    fn settle(&mut self, report: &mut Report) {
+        let Ok(o) = &mut report.result else { return };
+        for e in &report.effects {
+            match self.gate.perform(e) {
+                Ok(None) => {}
+                Ok(Some(shown)) => {
+                    if let (Effect::Picture { .. }, Some(Value::Picture(p))) =
+                        (e, o.val.as_deref_mut())
+                    {
+                        std::rc::Rc::make_mut(p).file = Some(shown.clone());
+                        self.last_picture = Some(shown);
+                    }
+                }
+                Err(err) => {
+                    report.result = Err(Diagnostic::error(
+                        ErrorKind::Domain,
+                        o.span,
+                        err.to_string(),
+                    ));
+                    return;
+                }
+            }
+        }
     }
 
     /// Runs (or, in [`Mode::Check`], checks) every statement of `src`,
-    /// calling `each` with each report in order. Stops after the first
-    /// error unless `keep_going`. Returns the number of errors.
+    /// calling `each` with each report in order, after the gate performed
+    /// its effects. Stops after the first error unless `keep_going`.
+    /// Returns the number of errors.
+    ///
+    /// Every statement runs under [`Session::budget`]: a statement that
+    /// passes a cap fails with a domain error naming it; a spent time
+    /// budget stops the run (even with `keep_going`) after reporting it;
+    /// an interrupt stops the run with nothing reported for the statement
+    /// it cut short, counted as an error, and sets [`Session::interrupted`].
     pub fn run(
         &mut self,
         src: &str,
         mode: Mode,
         keep_going: bool,
+        each: impl FnMut(&Report),
+    ) -> usize {
+        self.statements(src, mode, keep_going, true, each)
+    }
+
+    /// [`Session::run`] with no effect performed, whatever the gate: each
+    /// report carries the files it would write in `effects`, and no file is
+    /// touched (the REPL's live preview, LANGUAGE.md §11).
+    pub fn evaluate(
+        &mut self,
+        src: &str,
+        mode: Mode,
+        keep_going: bool,
+        each: impl FnMut(&Report),
+    ) -> usize {
+        self.statements(src, mode, keep_going, false, each)
+    }
+
+    fn statements(
+        &mut self,
+        src: &str,
+        mode: Mode,
+        keep_going: bool,
+        write: bool,
         mut each: impl FnMut(&Report),
     ) -> usize {
         let mut errors = 0;
         let mut lines = Lines::new(src);
+        let _budget = self.budget.enter();
+        self.interrupted = false;
         for parsed in syntax::statements(src) {
+            budget::begin_statement(self.env.held());
             // The report is built in place and changed there: its result
             // (a large value) is written once, not moved through
             // `map_err` and a second struct.
@@ -177,6 +257,7 @@ impl Session {
                         anchor: lines.anchor(),
                         result: Err(habit_help(d, src)),
                         warnings: Vec::new(),
+                        effects: Vec::new(),
                     }
                 }
                 Ok(stmt) => {
@@ -187,6 +268,7 @@ impl Session {
                         anchor: lines.anchor(),
                         result: interp.stmt(&stmt),
                         warnings: Vec::new(),
+                        effects: Vec::new(),
                     };
                     report.warnings = std::mem::take(&mut interp.warnings);
                     match &mut report.result {
@@ -194,10 +276,14 @@ impl Session {
                         Ok(o) => {
                             // Only a picture has more to do (checked here,
                             // without the call, for every other value).
-                            if matches!(o.val.as_deref(), Some(Value::Picture(_)))
-                                && let Err(d) = self.picture(o, line)
-                            {
-                                report.result = Err(d);
+                            if matches!(o.val.as_deref(), Some(Value::Picture(_))) {
+                                match Session::picture(o, line) {
+                                    Err(d) => report.result = Err(d),
+                                    Ok(e) => report.effects.extend(e),
+                                }
+                                if write {
+                                    self.settle(&mut report);
+                                }
                             } else {
                                 report.warnings.extend(not_finite_warning(o));
                             }
@@ -205,11 +291,25 @@ impl Session {
                     }
                 }
             }
+            // A result cut short by the budget is an error (a loop stopped
+            // with what it had); the statement bound nothing.
+            let mut fatal = false;
+            if let Err(d) = &mut report.result
+                && let Err(stop) = budget::check()
+            {
+                if stop == Stop::Interrupted {
+                    self.interrupted = true;
+                    errors += 1;
+                    break;
+                }
+                *d = crate::eval::interp::budget_error(stop, d.span);
+                fatal = true;
+            }
             let failed = report.result.is_err();
             each(&report);
             if failed {
                 errors += 1;
-                if !keep_going {
+                if !keep_going || fatal {
                     break;
                 }
             }
@@ -225,9 +325,32 @@ impl Session {
         mode: Mode,
         keep_going: bool,
     ) -> (String, String, usize) {
+        self.collect_strings(file, src, mode, keep_going, true)
+    }
+
+    /// [`Session::run_to_strings`] without performing any effect (see
+    /// [`Session::evaluate`]): the REPL's live preview.
+    pub fn evaluate_to_strings(
+        &mut self,
+        file: &str,
+        src: &str,
+        mode: Mode,
+        keep_going: bool,
+    ) -> (String, String, usize) {
+        self.collect_strings(file, src, mode, keep_going, false)
+    }
+
+    fn collect_strings(
+        &mut self,
+        file: &str,
+        src: &str,
+        mode: Mode,
+        keep_going: bool,
+        write: bool,
+    ) -> (String, String, usize) {
         let (mut out, mut err) = (String::new(), String::new());
         let settings = self.settings;
-        let n = self.run(src, mode, keep_going, |r| {
+        let n = self.statements(src, mode, keep_going, write, |r| {
             let o = r.stdout(&settings, src);
             if !o.is_empty() {
                 out.push_str(&o);
@@ -304,42 +427,60 @@ fn file_stem(name: &str) -> String {
 /// Largest script accepted (bytes).
 pub const MAX_SOURCE_BYTES: u64 = 100 * 1024 * 1024;
 
-/// Reads a script; Err is the message for exit code 2.
-pub fn read_source(path: &str) -> Result<String, String> {
-    let bytes = if path == "-" {
-        let mut buf = Vec::new();
+/// Reads a script (`-` is standard input) under the one size cap
+/// [`MAX_SOURCE_BYTES`] — a file is read through the same bounded reader as
+/// stdin, so `/dev/zero` or a pipe cannot fill memory — and skips a leading
+/// byte-order mark. Err is the message for exit code 2, with the name's
+/// control characters and bytes that are not UTF-8 shown escaped.
+pub fn read_source(path: impl AsRef<std::path::Path>) -> Result<String, String> {
+    let path = path.as_ref();
+    let stdin = path.as_os_str() == "-";
+    let what = if stdin {
+        "standard input".to_string()
+    } else {
+        format!("'{}'", shown_path(path))
+    };
+    let mut buf = Vec::new();
+    let read = if stdin {
         std::io::stdin()
             .lock()
             .take(MAX_SOURCE_BYTES + 1)
             .read_to_end(&mut buf)
-            .map_err(|e| format!("cannot read standard input: {e}"))?;
-        buf
     } else {
-        let meta = std::fs::metadata(path)
-            .map_err(|e| format!("cannot read '{path}': {}", io_reason(&e)))?;
-        if meta.is_dir() {
-            return Err(format!("cannot read '{path}': it is a directory"));
+        let file = std::fs::File::open(path)
+            .map_err(|e| format!("cannot read {what}: {}", io_reason(&e)))?;
+        match file.metadata() {
+            Ok(m) if m.is_dir() => return Err(format!("cannot read {what}: it is a directory")),
+            Ok(m) if m.len() > MAX_SOURCE_BYTES => {
+                return Err(format!(
+                    "{what} is {} bytes; scripts are limited to {MAX_SOURCE_BYTES} bytes",
+                    m.len()
+                ));
+            }
+            _ => {}
         }
-        if meta.len() > MAX_SOURCE_BYTES {
-            return Err(format!(
-                "'{path}' is {} bytes; scripts are limited to {MAX_SOURCE_BYTES} bytes",
-                meta.len()
-            ));
-        }
-        std::fs::read(path).map_err(|e| format!("cannot read '{path}': {}", io_reason(&e)))?
+        file.take(MAX_SOURCE_BYTES + 1).read_to_end(&mut buf)
     };
-    if bytes.len() as u64 > MAX_SOURCE_BYTES {
-        return Err(format!("input is larger than {MAX_SOURCE_BYTES} bytes"));
+    read.map_err(|e| format!("cannot read {what}: {}", io_reason(&e)))?;
+    if buf.len() as u64 > MAX_SOURCE_BYTES {
+        return Err(format!(
+            "{what} is more than {MAX_SOURCE_BYTES} bytes; scripts are limited to {MAX_SOURCE_BYTES} bytes"
+        ));
     }
-    String::from_utf8(bytes).map_err(|e| {
+    let mut text = String::from_utf8(buf).map_err(|e| {
         let at = e.utf8_error().valid_up_to();
-        let what = if path == "-" {
-            "standard input".to_string()
-        } else {
-            format!("'{path}'")
-        };
         format!("{what} is not UTF-8 text: invalid byte at offset {at}")
-    })
+    })?;
+    if text.starts_with('\u{feff}') {
+        text.drain(..'\u{feff}'.len_utf8());
+    }
+    Ok(text)
+}
+
+/// A path for a message: bytes that are not UTF-8 as `\xNN`, control
+/// characters escaped.
+pub fn shown_path(path: &std::path::Path) -> String {
+    crate::diagnostics::escape::bytes(path.as_os_str().as_encoded_bytes())
 }
 
 pub(crate) fn io_reason(e: &std::io::Error) -> String {

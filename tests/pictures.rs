@@ -24,7 +24,7 @@ fn tmp(name: &str) -> PathBuf {
 /// picture with the statement's line.
 fn pictures(src: &str, dir: &Path) -> Vec<(usize, chasles::eval::value::Picture)> {
     let mut s = Session::new(Settings::default());
-    s.pictures = Some(dir.to_path_buf());
+    s.gate = chasles::effects::Gate::anywhere(Some(dir.to_path_buf()));
     let mut out = Vec::new();
     s.run(src, Mode::Run, false, |r| match &r.result {
         Ok(o) => {
@@ -388,7 +388,7 @@ fn the_repl_writes_pictures_and_opens_the_last_one() {
     use chasles::repl::commands::execute;
     let dir = tmp("repl");
     let mut s = Session::new(Settings::default());
-    s.pictures = Some(dir.clone());
+    s.gate = chasles::effects::Gate::anywhere(Some(dir.clone()));
     let r = execute(&mut s, ":open");
     assert!(r.err.contains("no picture yet"), "{r:?}");
     let r = execute(&mut s, "pic = draw(Rotz(pi/4))");

@@ -8,6 +8,7 @@
 
 use crate::span::Span;
 
+pub mod escape;
 pub mod habits;
 pub mod render;
 pub mod suggest;

@@ -1,10 +1,6 @@
-//! Writing pictures: SVG as drawn, PNG rendered from the SVG by resvg (with
-//! the system's fonts for the labels); always through a temporary file in
-//! the same folder and a rename, so a failed write never leaves a broken
-//! file under the name asked for.
-
-use std::io::Write;
-use std::path::{Path, PathBuf};
+//! Pictures as file contents: SVG as drawn, PNG rendered from the SVG by
+//! resvg (with the system's fonts for the labels). The file itself is
+//! written by the effects gate (`crate::effects`), atomically.
 
 use crate::values::value::Picture;
 
@@ -61,49 +57,14 @@ pub fn png(svg: &str) -> Result<Vec<u8>, String> {
         .map_err(|e| format!("cannot encode PNG: {e}"))
 }
 
-fn reason(e: &std::io::Error) -> String {
-    match e.kind() {
-        std::io::ErrorKind::NotFound => "no such folder".into(),
-        std::io::ErrorKind::PermissionDenied => "permission denied".into(),
-        _ => e.to_string(),
-    }
-}
-
-/// Writes `bytes` to `path` atomically (a temporary file, then a rename).
-pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), String> {
-    let shown = path.display();
-    if path.is_dir() {
-        return Err(format!("cannot write '{shown}': it is a folder"));
-    }
-    let dir = match path.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
-        _ => PathBuf::from("."),
-    };
-    let name = path
-        .file_name()
-        .map(|n| n.to_string_lossy().to_string())
-        .unwrap_or_default();
-    let tmp = dir.join(format!(".{name}.{}.tmp", std::process::id()));
-    let result = std::fs::File::create(&tmp)
-        .and_then(|mut f| {
-            f.write_all(bytes)?;
-            f.sync_all()
-        })
-        .and_then(|()| std::fs::rename(&tmp, path));
-    if let Err(e) = result {
-        let _ = std::fs::remove_file(&tmp);
-        return Err(format!("cannot write '{shown}': {}", reason(&e)));
-    }
-    Ok(())
-}
-
-/// Draws `p` and writes it to `path` as SVG or PNG.
-pub fn write(p: &Picture, path: &Path) -> Result<(), String> {
-    let format = format_of(&path.to_string_lossy())?;
+/// The bytes of `p` as the file `name` asks for: SVG as drawn, or PNG.
+/// Writing them is the effects gate's work (`crate::effects`), never this
+/// layer's.
+pub fn bytes(p: &Picture, name: &str) -> Result<Vec<u8>, String> {
+    let format = format_of(name)?;
     let (svg, _) = super::svg(p)?;
-    let bytes = match format {
+    Ok(match format {
         Format::Svg => svg.into_bytes(),
         Format::Png => png(&svg)?,
-    };
-    write_atomic(path, &bytes)
+    })
 }

@@ -1,8 +1,9 @@
 //! Pictures (LANGUAGE.md §12): what `draw` makes, as the book's figures
 //! draw it. [`marks`] turns the values of a [`Picture`] into marks in the
 //! reference frame (frames, screw axes, arrows, points), [`render`]
-//! projects and lays them out as SVG through plotters, and `file` writes
-//! SVG or PNG (rendered by resvg) atomically. This module reads the value
+//! projects and lays them out as SVG through plotters, and `file` turns
+//! them into SVG or PNG bytes (rendered by resvg) — which only the effects
+//! gate (`crate::effects`) writes to a file. This module reads the value
 //! types of [`crate::eval`] and the core of [`crate::lie`]; only the session
 //! and the front ends use it, never the layers below.
 

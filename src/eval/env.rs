@@ -167,6 +167,34 @@ pub struct Env {
     /// stack: each call pushes its own and pops them when it returns. Kept
     /// here so that its storage outlives one statement's interpreter.
     pub(super) arg_tys: Vec<Ty>,
+    /// The numbers the bindings hold ([`numbers`]), for the run's memory
+    /// budget ([`crate::budget`]).
+    held: u64,
+}
+
+/// The numbers a value holds, as the memory budget counts them
+/// ([`crate::budget`]): its entries, a list's or tuple's items' own, a
+/// picture's items', one for anything else. A list bound to two names
+/// counts twice.
+pub fn numbers(v: &Value) -> u64 {
+    match v {
+        Value::Num { m, .. } => m.len() as u64,
+        Value::Tuple(vs) => vs.iter().map(numbers).sum(),
+        Value::List(vs) => vs.iter().map(numbers).sum::<u64>() + vs.len() as u64,
+        Value::Formula { m, .. } => (m.rows * m.cols) as u64,
+        Value::Picture(p) => p
+            .panels
+            .iter()
+            .flat_map(|p| &p.items)
+            .map(|d| numbers(&d.value))
+            .sum(),
+        Value::Str(s) => s.len() as u64 / 8 + 1,
+        _ => 1,
+    }
+}
+
+fn binding_numbers(b: &Binding) -> u64 {
+    b.val.as_ref().map_or(0, numbers)
 }
 
 impl Env {
@@ -176,7 +204,14 @@ impl Env {
     }
     #[inline]
     pub fn set(&mut self, name: impl AsKey, b: Binding) {
-        self.vars.insert(name.key(), b);
+        self.held += binding_numbers(&b);
+        if let Some(old) = self.vars.insert(name.key(), b) {
+            self.held = self.held.saturating_sub(binding_numbers(&old));
+        }
+    }
+    /// The numbers the bindings hold ([`numbers`]).
+    pub fn held(&self) -> u64 {
+        self.held
     }
     /// Binds `name` to a copy of a checked value (not a `given` symbol),
     /// reusing the old binding's storage when the name is bound already.
@@ -185,6 +220,7 @@ impl Env {
         let key = name.key();
         match self.vars.get_mut(&key) {
             Some(old) => {
+                self.held = self.held.saturating_sub(binding_numbers(old)) + val.map_or(0, numbers);
                 old.ty = *ty;
                 match (&mut old.val, val) {
                     (Some(o), Some(v)) => o.clone_from(v),
@@ -195,6 +231,7 @@ impl Env {
                 old.symbolic = false;
             }
             None => {
+                self.held += val.map_or(0, numbers);
                 let b = Binding {
                     ty: *ty,
                     val: val.cloned(),
@@ -227,7 +264,9 @@ impl Env {
     /// once its body is done).
     #[inline]
     pub fn remove(&mut self, name: impl AsKey) {
-        self.vars.remove(&name.key());
+        if let Some(old) = self.vars.remove(&name.key()) {
+            self.held = self.held.saturating_sub(binding_numbers(&old));
+        }
     }
     /// The user function `name`, if there is one.
     #[inline]

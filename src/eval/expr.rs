@@ -502,6 +502,9 @@ impl Interp<'_> {
                 format!("function calls nested deeper than {MAX_CALL_DEPTH} (recursion?)"),
             ));
         }
+        // A user function may call itself many times over (f(n-1) + f(n-1)):
+        // each call asks the budget.
+        crate::budget::check().map_err(|stop| super::interp::budget_error(stop, span))?;
         let mut bound = Vec::new();
         match spread {
             Some(parts) => bound.extend(f.params.iter().cloned().zip(parts)),

@@ -103,6 +103,13 @@ pub struct Interp<'a> {
     pub(super) eye: Option<usize>,
 }
 
+/// The error of a statement stopped by the evaluation budget
+/// ([`crate::budget`]): a domain error naming the limit (LANGUAGE.md §1:
+/// a budget exceeded is exit 1), at `span`.
+pub fn budget_error(stop: crate::budget::Stop, span: Span) -> Diagnostic {
+    Diagnostic::error(ErrorKind::Domain, span, stop.to_string()).with_help(stop.help())
+}
+
 /// How deep user functions may call each other.
 pub const MAX_CALL_DEPTH: usize = 64;
 
@@ -153,6 +160,16 @@ impl<'a> Interp<'a> {
         super::apply::frame_refusal(self.frames, frame, d, &mut self.warnings)
     }
 
+    /// Whether a statement that has computed `val` may take effect: the
+    /// budget is not spent (a loop it stopped may have left a partial
+    /// result) and the session has room to hold the value.
+    #[inline]
+    fn commit(&self, val: Option<&Value>, span: Span) -> Result<(), Diagnostic> {
+        crate::budget::check()
+            .and_then(|()| crate::budget::room(val.map_or(0, super::env::numbers)))
+            .map_err(|stop| budget_error(stop, span))
+    }
+
     /// Binds a checked value to `name` (statements call this only after
     /// they have succeeded).
     fn bind_value(&mut self, name: Name, t: &Typed) {
@@ -175,6 +192,7 @@ impl<'a> Interp<'a> {
         match &s.kind {
             StmtKind::Expr(e) => {
                 let mut t = self.expr(e)?;
+                self.commit(t.value(), s.span)?;
                 crate::check::rules::settle_in_place(&mut t.ty);
                 if t.ty.kind != Kind::Function {
                     self.bind_value(*super::env::ANS, &t);
@@ -185,6 +203,7 @@ impl<'a> Interp<'a> {
             }
             StmtKind::Assign { target, value } => {
                 let mut t = self.assigned(target.name, value)?;
+                self.commit(t.value(), s.span)?;
                 crate::check::rules::settle_in_place(&mut t.ty);
                 self.bind_checked(target.name, &mut t, target.span, value.span)?;
                 self.bind_value(target.name, &t);
@@ -192,6 +211,7 @@ impl<'a> Interp<'a> {
             }
             StmtKind::Destructure { targets, value } => {
                 let t = self.expr(value)?;
+                self.commit(t.value(), s.span)?;
                 let parts = self.split_tuple(&t, targets.len(), value.span)?;
                 let mut bound = Vec::new();
                 for (target, mut part) in targets.iter().zip(parts) {
@@ -289,6 +309,7 @@ impl<'a> Interp<'a> {
             }
             StmtKind::Assert(cond) => {
                 self.assert(cond)?;
+                self.commit(None, s.span)?;
                 // A passing check needs no remarks on its values (θ = π notes).
                 self.warnings
                     .retain(|w| w.severity != crate::diagnostics::Severity::Note);
@@ -301,6 +322,7 @@ impl<'a> Interp<'a> {
             }
             StmtKind::Derive { target } => {
                 let (chain, t) = self.derive(target)?;
+                self.commit(t.value(), s.span)?;
                 self.bind_value(target.name, &t);
                 let mut o = out(Names::One([target.name]), t);
                 o.note = Some(format!("{} = {chain}", target.name));

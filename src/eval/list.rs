@@ -215,6 +215,8 @@ impl Interp<'_> {
             return Err(too_long(span, n));
         }
         spend(n as usize, span)?;
+        crate::budget::hold(2 * n as u64)
+            .map_err(|stop| super::interp::budget_error(stop, span))?;
         let items: Vec<Value> = (0..n as usize)
             .map(|k| Value::scalar(a + k as f64 * h))
             .collect();
@@ -365,6 +367,35 @@ impl Interp<'_> {
         }
         let mut out = Vec::with_capacity(total as usize);
         let mut at = vec![0usize; lists.len()];
+        // The items held so far count against the budget; the finished
+        // list is counted by what holds it (an outer list, a binding).
+        let mark = crate::budget::held();
+        let result = self.comprehend_items(body, domains, &lists, &mut at, &mut out, total, span);
+        crate::budget::release_to(mark);
+        result?;
+        let kind = if out.is_empty() {
+            body_ty.ty.kind
+        } else {
+            common_kind(&out)
+        };
+        Ok(Typed::new(list_ty(kind), Some(Value::List(Rc::new(out)))))
+    }
+
+    /// The items of a comprehension, in order (the last variable fastest),
+    /// each counted against the budget.
+    #[allow(clippy::too_many_arguments)]
+    fn comprehend_items(
+        &mut self,
+        body: &Expr,
+        domains: &[(String, Ty, Option<Vec<Value>>)],
+        lists: &[&Vec<Value>],
+        at: &mut [usize],
+        out: &mut Vec<Value>,
+        total: f64,
+        span: Span,
+    ) -> Result<(), Diagnostic> {
+        let stopped = |stop: crate::budget::Stop| super::interp::budget_error(stop, span);
+        let mut numbers = 0u64;
         if total > 0.0 {
             'all: loop {
                 for (i, (n, ty, _)) in domains.iter().enumerate() {
@@ -380,8 +411,19 @@ impl Interp<'_> {
                     );
                 }
                 spend(1, span)?;
+                crate::budget::check().map_err(stopped)?;
                 let t = self.expr(body)?;
-                out.push(t.val.map_or_else(|| Value::scalar(f64::NAN), |v| *v));
+                let v = t.val.map_or_else(|| Value::scalar(f64::NAN), |v| *v);
+                let n = super::env::numbers(&v) + 1;
+                numbers += n;
+                if let Err(stop) = crate::budget::hold(n) {
+                    // The size the whole list would have taken, at the
+                    // items' mean size so far.
+                    let done = out.len() as f64 + 1.0;
+                    let whole = (numbers as f64 / done * total) as u64;
+                    return Err(stopped(stop.wanting(whole)));
+                }
+                out.push(v);
                 // The last variable runs fastest: the first is outermost.
                 let mut i = lists.len();
                 loop {
@@ -397,11 +439,6 @@ impl Interp<'_> {
                 }
             }
         }
-        let kind = if out.is_empty() {
-            body_ty.ty.kind
-        } else {
-            common_kind(&out)
-        };
-        Ok(Typed::new(list_ty(kind), Some(Value::List(Rc::new(out)))))
+        Ok(())
     }
 }

@@ -133,7 +133,19 @@ pub fn is_command(input: &str) -> bool {
 
 /// Runs one REPL input: a `:` command, or statements (stopping at the
 /// first error; what failed binds nothing, so earlier bindings survive).
+/// An interrupt (Ctrl-C) ends it with `interrupted`, the session as it
+/// was before the statement it stopped; the interrupt is then cleared.
 pub fn execute(session: &mut Session, input: &str) -> Reply {
+    let mut reply = execute_input(session, input);
+    if session.interrupted {
+        reply.err.push_str("interrupted\n");
+        session.interrupted = false;
+    }
+    session.budget.interrupt_handle().clear();
+    reply
+}
+
+fn execute_input(session: &mut Session, input: &str) -> Reply {
     if is_command(input) {
         return command(session, input.trim());
     }

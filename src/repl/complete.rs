@@ -203,14 +203,19 @@ pub fn open_call_signature(line: &str) -> Option<&'static str> {
 }
 
 /// The result of evaluating `line` on a copy of the session, on one short
-/// line — only when it evaluates without error or warning and is cheap
-/// to try (short, no user functions, no large sizes).
+/// line — only when it evaluates without error or warning within the
+/// preview's budget ([`crate::budget::Budget::preview`]: a few tens of
+/// milliseconds and a small count of numbers). Past it the preview gives
+/// up silently: a keystroke never waits for a long line. Pure: it only
+/// evaluates ([`Session::evaluate`]), so no file is ever written
+/// (LANGUAGE.md §11).
 pub fn preview(session: &Session, line: &str) -> Option<String> {
-    if line.len() > PREVIEW_MAX_CHARS || needs_more_input(line) || !cheap(session, line) {
+    if line.len() > PREVIEW_MAX_CHARS || needs_more_input(line) {
         return None;
     }
     let mut copy = session.clone();
-    let (out, err, errors) = copy.run_to_strings("<preview>", line, Mode::Run, false);
+    copy.budget = crate::budget::Budget::preview();
+    let (out, err, errors) = copy.evaluate_to_strings("<preview>", line, Mode::Run, false);
     if errors > 0 || !err.is_empty() {
         return None;
     }
@@ -224,31 +229,6 @@ pub fn preview(session: &Session, line: &str) -> Option<String> {
         return None;
     }
     Some(shorten(&flat, 72))
-}
-
-/// Whether a preview of `line` is sure to be quick: no call of a user
-/// function (which might recurse) and, when it builds matrices with
-/// `eye`/`zeros`, only small literal sizes.
-fn cheap(session: &Session, line: &str) -> bool {
-    let idents = identifiers(line);
-    if idents.iter().any(|i| session.env.func(*i).is_some()) {
-        return false;
-    }
-    let sized = idents.iter().any(|i| matches!(*i, "eye" | "zeros"));
-    let big_literal = numbers(line).any(|x| x > 1000.0);
-    !big_literal
-        && !(sized && (line.contains('*') || line.contains('^') || numbers(line).any(|x| x > 64.0)))
-}
-
-fn identifiers(line: &str) -> Vec<&str> {
-    line.split(|c: char| !is_name_char(c))
-        .filter(|w| w.starts_with(|c: char| c.is_alphabetic() || c == '_'))
-        .collect()
-}
-
-fn numbers(line: &str) -> impl Iterator<Item = f64> + '_ {
-    line.split(|c: char| !(c.is_ascii_digit() || c == '.' || c == 'e'))
-        .filter_map(|w| w.trim_matches('e').parse::<f64>().ok())
 }
 
 /// Column alignment dropped: one space after each comma.

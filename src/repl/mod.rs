@@ -53,14 +53,20 @@ pub fn banner() -> String {
     )
 }
 
-/// Runs the REPL on a terminal; returns the exit code (0 on Ctrl-D or
-/// `:quit`).
-pub fn run_terminal(settings: &Settings, pictures: PathBuf) -> i32 {
+/// Runs the REPL on a terminal, writing files through `gate` (the live
+/// preview writes nothing: it only evaluates); returns the exit code (0 on
+/// Ctrl-D or `:quit`).
+pub fn run_terminal(
+    settings: &Settings,
+    gate: crate::effects::Gate,
+    budget: crate::budget::Budget,
+) -> i32 {
     let mut session = Session::new(Settings {
         json: false,
         ..*settings
     });
-    session.pictures = Some(pictures);
+    session.gate = gate;
+    session.budget = budget;
     let colour = colour_enabled();
     let config = Config::builder()
         .completion_type(CompletionType::List)

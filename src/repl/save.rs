@@ -1,12 +1,12 @@
 //! The session as a script (LANGUAGE.md §11): the REPL records each
 //! statement that ran without error; `:history` lists them and `:save FILE`
 //! writes them as a script that reruns to the same results. The file is
-//! written atomically (a temporary file renamed into place), and an
+//! written by the effects gate (`crate::effects`), atomically, and an
 //! existing file is kept unless the command is `:save! FILE`.
 
-use std::io::Write;
 use std::path::{Path, PathBuf};
 
+use crate::effects::{Effect, WriteError};
 use crate::eval::env::{FrameMode, Mode};
 use crate::session::Session;
 
@@ -76,8 +76,10 @@ pub fn script(session: &Session) -> String {
 }
 
 /// `:save FILE` (`overwrite` false) or `:save! FILE`: Ok is the message
-/// for stdout, Err the one for stderr.
-pub fn save(session: &Session, arg: &str, overwrite: bool) -> Result<String, String> {
+/// for stdout, Err the one for stderr. The file is written by the
+/// session's effects gate (atomically; refused under `--no-write`,
+/// confined by `--write-dir`).
+pub fn save(session: &mut Session, arg: &str, overwrite: bool) -> Result<String, String> {
     let name = arg.trim().trim_matches(|c| c == '"' || c == '\'');
     if name.is_empty() {
         return Err(":save needs a file name, e.g. :save session.chs".into());
@@ -86,47 +88,21 @@ pub fn save(session: &Session, arg: &str, overwrite: bool) -> Result<String, Str
         (Some(rest), Some(home)) => home.join(rest),
         _ => PathBuf::from(name),
     };
-    if path.is_dir() {
-        return Err(format!(":save: '{name}' is a directory"));
+    let shown = crate::effects::show(Path::new(name));
+    let effect = Effect::Write {
+        path,
+        bytes: script(session).into_bytes(),
+        overwrite,
+    };
+    match session.gate.perform(&effect) {
+        Ok(_) => Ok(format!(
+            "saved {} statement{} to {shown}",
+            session.accepted.len(),
+            if session.accepted.len() == 1 { "" } else { "s" }
+        )),
+        Err(WriteError::Exists(_)) => Err(format!(
+            ":save: '{shown}' exists; :save! {shown} overwrites it"
+        )),
+        Err(WriteError::Refused(m)) => Err(format!(":save: {m}")),
     }
-    if !overwrite && path.exists() {
-        return Err(format!(
-            ":save: '{name}' exists; :save! {name} overwrites it"
-        ));
-    }
-    let text = script(session);
-    write_atomically(&path, &text, overwrite)
-        .map_err(|e| format!(":save: cannot write '{name}': {e}"))?;
-    Ok(format!(
-        "saved {} statement{} to {name}",
-        session.accepted.len(),
-        if session.accepted.len() == 1 { "" } else { "s" }
-    ))
-}
-
-/// Writes `text` to a temporary file beside `path`, then moves it into
-/// place: a reader never sees half a file. Without `overwrite` the move is
-/// a hard link, which fails if `path` appeared meanwhile.
-fn write_atomically(path: &Path, text: &str, overwrite: bool) -> std::io::Result<()> {
-    let dir = path
-        .parent()
-        .filter(|d| !d.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    let file = path
-        .file_name()
-        .map(|f| f.to_string_lossy().into_owned())
-        .unwrap_or_else(|| "session.chs".into());
-    let tmp = dir.join(format!(".{file}.{}.tmp", std::process::id()));
-    let result = (|| {
-        let mut f = std::fs::File::create(&tmp)?;
-        f.write_all(text.as_bytes())?;
-        f.sync_all()?;
-        if overwrite {
-            std::fs::rename(&tmp, path)
-        } else {
-            std::fs::hard_link(&tmp, path)
-        }
-    })();
-    let _ = std::fs::remove_file(&tmp);
-    result
 }

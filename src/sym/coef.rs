@@ -456,6 +456,21 @@ impl Coef {
         let n = a * a + b * b;
         Some(Coef::settle(a / n, -b / n))
     }
+    /// The real k with Re(k·c) = `to` (Im(k·c) = `to` when the real part is
+    /// 0): the scale that makes a real expression's first coefficient
+    /// print as 1. None for 0.
+    pub fn real_scale(&self, to: Rat) -> Option<Coef> {
+        match self {
+            Coef::Exact { re, im } => {
+                let part = if re.is_zero() { im } else { re };
+                Some(Coef::real(part.inv()?.mul(&Surd::rat(to))?))
+            }
+            Coef::Approx { re, im } => {
+                let part = if *re == 0.0 { *im } else { *re };
+                (part != 0.0).then(|| Coef::settle(to.to_f64() / part, 0.0))
+            }
+        }
+    }
     /// The rational, when the coefficient is one.
     pub fn as_rat(&self) -> Option<Rat> {
         match self {

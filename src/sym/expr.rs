@@ -376,8 +376,11 @@ impl Expr {
         }
         out
     }
-    /// 1/x: exact for a single term, a [`Func::Recip`] call of the sum
-    /// scaled to a leading coefficient of 1 otherwise. None for 0.
+    /// 1/x: exact for a single term, else a [`Func::Recip`] call of a
+    /// *real* sum (calls are real variables: their value is read as a real
+    /// number, and [`Expr::conj`] leaves them alone). A real x is scaled by
+    /// a real number so that its first term prints with coefficient 1; a
+    /// complex x is made real first, 1/x = x̄ / (x x̄). None for 0.
     pub fn recip(&self) -> Option<Expr> {
         if self.terms.len() == 1 {
             let (m, c) = self.terms.iter().next()?;
@@ -389,9 +392,19 @@ impl Expr {
             out.push(m, c.inv()?);
             return Some(out);
         }
-        let lead = *self.terms.values().next()?;
-        let inv = lead.inv()?;
-        Some(Expr::call(Func::Recip, vec![self.scale(&inv)]).scale(&inv))
+        let bar = self.conj();
+        if bar != *self {
+            // x x̄ is real; its real part drops any rounding of float coefficients.
+            let n = self.mul(&bar);
+            let n = n.add(&n.conj()).scale(&Coef::rat(Rat::new(1, 2)?));
+            return Some(bar.mul(&n.recip()?));
+        }
+        let (m, lead) = self.terms.iter().next()?;
+        // A term with an angle prints as a pair with its conjugate, twice
+        // the real (or imaginary) part: scale that to 1.
+        let paired = m.iter().any(|(v, _)| matches!(v, Var::Z(_)));
+        let k = lead.real_scale(if paired { Rat::new(1, 2)? } else { Rat::ONE })?;
+        Some(Expr::call(Func::Recip, vec![self.scale(&k)]).scale(&k))
     }
     /// a / b; None when b is 0.
     pub fn div(&self, b: &Expr) -> Option<Expr> {

@@ -1,0 +1,215 @@
+//! The one effects gate. Evaluation never touches the file system: a
+//! statement that wants a file written — `save(pic, "f.svg")`, a picture
+//! printed but not saved (`NAME.svg`, `draw-LINE.svg`, LANGUAGE.md §12), the
+//! REPL's `:save` (§11) — returns an [`Effect`], and the front end's
+//! [`Gate`] decides: write it (atomically, [`atomic`]), refuse it
+//! (`--no-write`), confine it to a folder (`--write-dir`, [`confine`]), or
+//! keep the picture in memory (a library session, a notebook, the REPL's
+//! live preview, which never even asks the gate).
+
+pub mod atomic;
+pub mod confine;
+
+use std::path::{Path, PathBuf};
+use std::rc::Rc;
+
+use crate::values::value::Picture;
+pub use confine::show;
+
+/// A file a statement or command wants written.
+#[derive(Debug, Clone)]
+pub enum Effect {
+    /// A picture: drawn as SVG, or rendered to PNG by the name's ending,
+    /// only when the gate writes it.
+    Picture {
+        /// `save`'s name or the printed picture's file.
+        to: PictureTo,
+        picture: Rc<Picture>,
+    },
+    /// Bytes as they are (the REPL's `:save`); without `overwrite` an
+    /// existing file is kept and the write fails.
+    Write {
+        path: PathBuf,
+        bytes: Vec<u8>,
+        overwrite: bool,
+    },
+}
+
+/// Where a picture asks to go.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum PictureTo {
+    /// `save(pic, NAME)`: NAME as the script wrote it (relative to the
+    /// working folder, or to `--write-dir`).
+    Saved(PathBuf),
+    /// A picture printed but not saved: `NAME.svg` or `draw-LINE.svg` in
+    /// the folder for printed pictures.
+    Printed(String),
+}
+
+impl Effect {
+    /// The name asked for, as written.
+    pub fn name(&self) -> PathBuf {
+        match self {
+            Effect::Picture {
+                to: PictureTo::Saved(p),
+                ..
+            }
+            | Effect::Write { path: p, .. } => p.clone(),
+            Effect::Picture {
+                to: PictureTo::Printed(f),
+                ..
+            } => PathBuf::from(f),
+        }
+    }
+}
+
+/// What a gate allows.
+#[derive(Debug, Clone)]
+enum Policy {
+    /// Anything the user can write, names relative to the working folder.
+    Anywhere,
+    /// Nothing (`--no-write`).
+    Deny,
+    /// Only inside one folder (`--write-dir`).
+    Within(confine::Root),
+}
+
+/// What happens to pictures.
+#[derive(Debug, Clone, PartialEq, Eq)]
+enum Pictures {
+    /// No picture is written, saved or printed (a library session's
+    /// default: its callers take the picture from the value).
+    InMemory,
+    /// `save` writes; printed pictures stay in memory (a notebook shows
+    /// them inline).
+    Saved,
+    /// `save` writes, and printed pictures go to this folder (`.` or
+    /// `--draw-dir`; inside `--write-dir`, relative to it).
+    All(PathBuf),
+}
+
+/// The front end's decision on every write; see the module's text.
+#[derive(Debug, Clone)]
+pub struct Gate {
+    policy: Policy,
+    pictures: Pictures,
+}
+
+/// A library session's gate: pictures stay in memory (no file for `save`
+/// or a printed picture), other writes (`:save`) go where asked.
+impl Default for Gate {
+    fn default() -> Gate {
+        Gate {
+            policy: Policy::Anywhere,
+            pictures: Pictures::InMemory,
+        }
+    }
+}
+
+impl Gate {
+    /// Writes where asked (names relative to the working folder); printed
+    /// pictures into `draw_dir`, or — with `None`, as a notebook wants —
+    /// into no file.
+    pub fn anywhere(draw_dir: Option<PathBuf>) -> Gate {
+        Gate {
+            policy: Policy::Anywhere,
+            pictures: draw_dir.map_or(Pictures::Saved, Pictures::All),
+        }
+    }
+
+    /// `--no-write`: every write (`save`, a printed picture, `:save`) is
+    /// refused with an error.
+    pub fn deny() -> Gate {
+        Gate {
+            policy: Policy::Deny,
+            pictures: Pictures::All(PathBuf::from(".")),
+        }
+    }
+
+    /// `--write-dir DIR` (created when missing): every write inside DIR;
+    /// printed pictures in DIR, or in `draw_dir` taken inside DIR.
+    /// Err is the message for exit code 2.
+    pub fn within(dir: &Path, draw_dir: Option<&Path>) -> Result<Gate, String> {
+        let root = confine::Root::new(dir)?;
+        let draw = match draw_dir {
+            Some(d) => root.folder(d)?,
+            None => PathBuf::new(),
+        };
+        Ok(Gate {
+            policy: Policy::Within(root),
+            pictures: Pictures::All(draw),
+        })
+    }
+
+    /// Whether this gate refuses every write (`--no-write`).
+    pub fn denies(&self) -> bool {
+        matches!(self.policy, Policy::Deny)
+    }
+
+    /// Performs `effect` if allowed: Ok(Some(path shown)) when written,
+    /// Ok(None) when the gate keeps it in memory, Err with the message
+    /// (`cannot write 'x.svg': …`) when refused or failed.
+    pub fn perform(&self, effect: &Effect) -> Result<Option<String>, WriteError> {
+        let (folder, overwrite) = match effect {
+            Effect::Picture { to, .. } => match (&self.pictures, to) {
+                (Pictures::InMemory, _) | (Pictures::Saved, PictureTo::Printed(_)) => {
+                    return Ok(None);
+                }
+                (Pictures::All(dir), PictureTo::Printed(_)) => (dir.as_path(), true),
+                (_, PictureTo::Saved(_)) => (Path::new(""), true),
+            },
+            Effect::Write { overwrite, .. } => (Path::new(""), *overwrite),
+        };
+        let name = effect.name();
+        let (real, shown) = match &self.policy {
+            Policy::Deny => {
+                return Err(WriteError::Refused(format!(
+                    "cannot write '{}': writing files is turned off (--no-write)",
+                    show(&folder.join(&name))
+                )));
+            }
+            Policy::Anywhere => {
+                let real = folder.join(&name);
+                let shown = show(&real);
+                (real, shown)
+            }
+            Policy::Within(root) => root.resolve(folder, &name).map_err(WriteError::Refused)?,
+        };
+        let bytes = match effect {
+            Effect::Picture { picture, .. } => {
+                crate::draw::file::bytes(picture, &name.to_string_lossy())
+                    .map_err(WriteError::Refused)?
+            }
+            Effect::Write { bytes, .. } => bytes.clone(),
+        };
+        match atomic::write(&real, &bytes, overwrite) {
+            Ok(()) => Ok(Some(shown)),
+            Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => {
+                Err(WriteError::Exists(shown))
+            }
+            Err(e) => Err(WriteError::Refused(format!(
+                "cannot write '{shown}': {}",
+                atomic::reason(&e)
+            ))),
+        }
+    }
+}
+
+/// Why a write did not happen.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum WriteError {
+    /// The file exists and overwriting was not asked for (`:save`); the
+    /// path shown.
+    Exists(String),
+    /// Refused by the gate, or failed: the whole message.
+    Refused(String),
+}
+
+impl std::fmt::Display for WriteError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            WriteError::Exists(p) => write!(f, "cannot write '{p}': it exists"),
+            WriteError::Refused(m) => f.write_str(m),
+        }
+    }
+}
