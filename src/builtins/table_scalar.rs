@@ -1,6 +1,7 @@
 //! Scalar functions: the trigonometric functions and their inverses with
 //! their domains (arcsine and arccosine on [−1, 1], §3.2.3.3's angles),
-//! `atan2`, `sqrt` and `abs` (angle units are in `table_units`). Each checks
+//! `atan2`, `sqrt` and `abs`; `tan`, `cot`, `sec` and `csc` refuse their
+//! poles (angle units are in `table_units`). Each checks
 //! its domain and names the cause of a refusal (`sqrt(-1)`, `acos(2)`).
 
 use super::{Area, Args, Builtin, FrameRule, Param, Typing};
@@ -21,6 +22,10 @@ fn unary(a: &Args, f: fn(f64) -> f64, ok: fn(f64) -> bool, why: &str) -> Result<
     }
     Ok(Value::scalar(f(x)))
 }
+
+/// Below this, cos x (or sin x) is a computed zero: x is a pole (π/2 in
+/// floats has cos = 6.1e-17), and a value of 1e16 would be rounding noise.
+const POLE: f64 = 1e-15;
 
 fn any(_: f64) -> bool {
     true
@@ -68,7 +73,34 @@ pub(super) fn builtins() -> Vec<Builtin> {
         },
         scalar_fn!("sin", "sine (radians)", f64::sin, any, ""),
         scalar_fn!("cos", "cosine (radians)", f64::cos, any, ""),
-        scalar_fn!("tan", "tangent (radians)", f64::tan, any, ""),
+        scalar_fn!(
+            "tan",
+            "tangent (radians), sin x / cos x",
+            f64::tan,
+            |x| x.cos().abs() > POLE,
+            "cos x is 0 there, so the tangent is infinite"
+        ),
+        scalar_fn!(
+            "cot",
+            "cotangent (radians), cos x / sin x",
+            |x| x.cos() / x.sin(),
+            |x| x.sin().abs() > POLE,
+            "sin x is 0 there, so the cotangent is infinite"
+        ),
+        scalar_fn!(
+            "sec",
+            "secant (radians), 1 / cos x",
+            |x| 1.0 / x.cos(),
+            |x| x.cos().abs() > POLE,
+            "cos x is 0 there, so the secant is infinite"
+        ),
+        scalar_fn!(
+            "csc",
+            "cosecant (radians), 1 / sin x",
+            |x| 1.0 / x.sin(),
+            |x| x.sin().abs() > POLE,
+            "sin x is 0 there, so the cosecant is infinite"
+        ),
         scalar_fn!(
             "asin",
             "arcsine, in [−π/2, π/2]",

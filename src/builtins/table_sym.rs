@@ -4,12 +4,15 @@
 //! Proposition 3.16, inverses by transpose, the adjoint (Definition 3.20),
 //! [x], cross, dot, det, trace, the Euler/RPY/quaternion maps — and the
 //! builtins of symbols themselves: `diff(x, t)` (chain rule, §3.2.2's
-//! Ṙ Rᵀ = [ω_s]) and `simplify(x)`.
+//! Ṙ Rᵀ = [ω_s]), `simplify(x)`, `expand(x)` and `subs(x, name, value)`;
+//! tan, cot, sec and csc of a symbol as quotients of sin and cos.
 
 use super::{Area, ArgError, Args, Builtin, Typing};
 use crate::check::ty::{Kind, Ty};
-use crate::diagnostics::Diagnostic;
+use crate::diagnostics::{Diagnostic, ErrorKind};
+use crate::span::Span;
 use crate::sym::Expr;
+use crate::sym::branch::{self, Branch};
 use crate::sym::expr::{Func, Wrt, as_symbol};
 use crate::sym::matrix::{self as sm, Mat};
 use crate::values::formula::{self, make, mat_of, scalar, scalar_of};
@@ -224,21 +227,14 @@ pub fn eval_symbolic(name: &str, vals: &[Value], kind: &Kind) -> Out {
             }
             ok(make(&Kind::Vector(Some(4)), Mat::column(out)))
         }
-        ("euler_zyx", 1) if shape(0) == (3, 3) => {
-            ok(tuple(euler_zyx(&ms[0])?.into_iter().map(scalar).collect()))
+        ("euler_zyx" | "euler_zxz" | "rpy" | "quat" | "cayley" | "log" | "MatrixLog3", 1)
+            if shape(0) == (3, 3) =>
+        {
+            inverse_map(name, &ms[0])
         }
-        ("euler_zxz", 1) if shape(0) == (3, 3) => {
-            ok(tuple(euler_zxz(&ms[0])?.into_iter().map(scalar).collect()))
-        }
-        ("quat", 1) if shape(0) == (3, 3) => {
-            ok(make(&Kind::Vector(Some(4)), Mat::column(quat(&ms[0])?)))
-        }
-        ("rpy", 1) if shape(0) == (3, 3) => ok(tuple(
-            euler_zyx(&ms[0])?.into_iter().rev().map(scalar).collect(),
-        )),
         ("sin", 1) => ok(scalar(Expr::sin(&s(0)?))),
         ("cos", 1) => ok(scalar(Expr::cos(&s(0)?))),
-        ("tan", 1) => ok(scalar(Expr::sin(&s(0)?).mul(&Expr::cos(&s(0)?).recip()?))),
+        ("tan" | "cot" | "sec" | "csc", 1) => ok(scalar(ratio(name, &s(0)?)?)),
         ("sqrt", 1) => ok(scalar(Expr::sqrt(&s(0)?))),
         ("atan2", 2) => ok(scalar(Expr::atan2(&s(0)?, &s(1)?))),
         ("asin" | "acos" | "atan" | "abs", 1) => {
@@ -251,9 +247,131 @@ pub fn eval_symbolic(name: &str, vals: &[Value], kind: &Kind) -> Out {
             ok(scalar(Expr::apply(f, &s(0)?, g)))
         }
         ("diff", 2) => Some(diff(&vals[0], &ms[0], &ms[1], kind)),
-        ("simplify", 1) => ok(vals[0].clone()),
+        ("simplify" | "expand", 1) => ok(make(&vals[0].kind(), ms[0].map(Expr::cancel))),
+        ("subs", 3) => Some(subs(&vals[0], &ms[0], &ms[1], &ms[2])),
         _ => None,
     }
+}
+
+/// The closed form of an inverse map of a symbolic rotation on its branch
+/// ([`branch`]), and that branch; None where there is none.
+fn on_branch(name: &str, r: &Mat) -> Option<(Value, Branch)> {
+    let scalars = |v: Vec<Expr>| tuple(v.into_iter().map(scalar).collect());
+    Some(match name {
+        "euler_zyx" | "rpy" => {
+            let (mut v, b) = branch::euler(r, true)?;
+            if name == "rpy" {
+                v.reverse();
+            }
+            (scalars(v), b)
+        }
+        "euler_zxz" => {
+            let (v, b) = branch::euler(r, false)?;
+            (scalars(v), b)
+        }
+        "quat" => {
+            let (v, b) = branch::quat(r)?;
+            (make(&Kind::Vector(Some(4)), Mat::column(v)), b)
+        }
+        "cayley" => {
+            let (v, b) = branch::cayley(r)?;
+            (make(&Kind::Vector(Some(3)), Mat::column(v)), b)
+        }
+        "log" => {
+            let (m, b) = branch::log3(r)?;
+            (make(&Kind::So3, m), b)
+        }
+        "MatrixLog3" => {
+            let (m, b) = branch::log3(r)?;
+            (vec3(&sm::unskew(&m)), b)
+        }
+        _ => return None,
+    })
+}
+
+/// euler_zyx, euler_zxz, rpy, quat, cayley and the logs of a symbolic
+/// rotation: the closed form on its branch, else the general form (atan2
+/// and sqrt, right on every branch), else None (the call is kept).
+fn inverse_map(name: &str, r: &Mat) -> Out {
+    if let Some((v, _)) = on_branch(name, r) {
+        return ok(v);
+    }
+    match name {
+        "euler_zyx" => ok(tuple(euler_zyx(r)?.into_iter().map(scalar).collect())),
+        "euler_zxz" => ok(tuple(euler_zxz(r)?.into_iter().map(scalar).collect())),
+        "quat" => ok(make(&Kind::Vector(Some(4)), Mat::column(quat(r)?))),
+        "rpy" => ok(tuple(euler_zyx(r)?.into_iter().rev().map(scalar).collect())),
+        _ => None,
+    }
+}
+
+/// The note a closed form on a branch is printed with (LANGUAGE.md §7:
+/// say which branch was assumed): `assumed cos(b) > 0 and a, b, c in
+/// (−π, π]`. None when the call has no such form.
+pub fn branch_note(name: &str, vals: &[Value], span: Span) -> Option<Diagnostic> {
+    let r = match vals {
+        [v] => mat_of(v)?,
+        _ => return None,
+    };
+    if (r.rows, r.cols) != (3, 3) || r.as_f64().is_some() {
+        return None;
+    }
+    let (_, b) = on_branch(name, &r)?;
+    let show = |es: &[Expr]| {
+        es.iter()
+            .map(|e| crate::sym::print::expr(e, Default::default()))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let mut parts = Vec::new();
+    if !b.positive.is_empty() {
+        parts.push(format!("{} > 0", show(&b.positive)));
+    }
+    if !b.angles.is_empty() {
+        let open = if matches!(name, "log" | "MatrixLog3" | "quat" | "cayley") {
+            "(−π, π)"
+        } else {
+            "(−π, π]"
+        };
+        parts.push(format!("{} in {open}", show(&b.angles)));
+    }
+    if parts.is_empty() {
+        return None;
+    }
+    let text = format!(
+        "{name} of a symbolic rotation: the closed form on the branch {}",
+        parts.join(" and ")
+    );
+    Some(Diagnostic::note(ErrorKind::Domain, span, text))
+}
+
+/// tan, cot, sec and csc as quotients of sin and cos (a kept reciprocal
+/// that prints `tan(t)`); None at a pole (a zero denominator).
+fn ratio(name: &str, x: &Expr) -> Option<Expr> {
+    let (s, c) = (Expr::sin(x), Expr::cos(x));
+    let (num, den) = match name {
+        "tan" => (s, c),
+        "cot" => (c, s),
+        "sec" => (Expr::one(), c),
+        _ => (Expr::one(), s),
+    };
+    Some(num.mul(&den.recip()?).cancel())
+}
+
+/// `subs(x, name, value)`: x with the symbol `name` replaced by `value` (a
+/// number or an expression), re-canonicalized.
+fn subs(v: &Value, x: &Mat, name: &Mat, by: &Mat) -> Result<Value, String> {
+    let sym = match name.data.as_slice() {
+        [e] => as_symbol(e),
+        _ => None,
+    }
+    .ok_or("subs(x, name, value) replaces a symbol: subs(x, t, 0.5), subs(x, t1, t2 - t3)")?;
+    let value = match by.data.as_slice() {
+        [e] => e.clone(),
+        _ => return Err("subs(x, name, value) puts a scalar in place of the symbol".into()),
+    };
+    let by = |s: &crate::sym::Symbol| (*s == sym).then(|| value.clone());
+    Ok(make(&v.kind(), x.map(|e| e.subst(&by).cancel())))
 }
 
 /// exp of a symbolic so(3) or se(3) matrix (or of a 3- or 6-vector of
@@ -323,6 +441,19 @@ fn same_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     Ok(args[0])
 }
 
+/// `subs`: a scalar symbol replaced by a scalar; the result has x's type.
+fn subs_rule(args: &[Ty]) -> Result<Ty, ArgError> {
+    for (i, what) in [(1, "the name of a scalar symbol"), (2, "a scalar value")] {
+        if args[i].kind != Kind::Scalar && args[i].kind != Kind::Unknown {
+            return Err(ArgError::type_of(
+                i,
+                format!("subs(x, name, value) takes {what} here"),
+            ));
+        }
+    }
+    Ok(args[0])
+}
+
 /// The numeric meaning of `diff`: a number is constant, its derivative 0.
 fn eval_diff(a: &mut Args) -> Result<Value, Diagnostic> {
     let m = a.mat(0)?;
@@ -359,6 +490,34 @@ pub(super) fn builtins() -> Vec<Builtin> {
             typing: Typing::Custom {
                 arity: (1, 1),
                 rule: same_rule,
+            },
+            eval: |a| Ok(a.value(0).clone()),
+        },
+        Builtin {
+            name: "expand",
+            aliases: &[],
+            signature: "expand(x) -> x multiplied out",
+            section: "§7 (LANGUAGE.md)",
+            doc: "products and powers multiplied out (the canonical form always is; angle sums stay folded)",
+            example: "given a, b : scalar; expand((a + b)^2)",
+            area: Area::Scalars,
+            typing: Typing::Custom {
+                arity: (1, 1),
+                rule: same_rule,
+            },
+            eval: |a| Ok(a.value(0).clone()),
+        },
+        Builtin {
+            name: "subs",
+            aliases: &[],
+            signature: "subs(x, name: symbol, value: scalar) -> x with value for name",
+            section: "§7 (LANGUAGE.md)",
+            doc: "substitution: the symbol replaced by a number or an expression, simplified",
+            example: "given t1, t2 : scalar; subs(cos(t1 + t2), t2, -t1)",
+            area: Area::Scalars,
+            typing: Typing::Custom {
+                arity: (3, 3),
+                rule: subs_rule,
             },
             eval: |a| Ok(a.value(0).clone()),
         },

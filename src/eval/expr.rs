@@ -437,6 +437,8 @@ impl Interp<'_> {
             let refs: Vec<&Value> = vals.iter().collect();
             if let Some(v) = op.exact_or_symbolic(&refs, &ty.kind) {
                 let val = Some(v.map_err(|m| op.failure(m, span))?);
+                self.warnings
+                    .extend(builtins::branch_note(b.name, &vals, span));
                 return Ok(Typed::new(refine(ty, &val), val));
             }
         }

@@ -363,6 +363,13 @@ impl<'a> Interp<'a> {
                 *m = self.group_at_binding(&name, &ty, owned, value_span)?;
             }
             *kind = ty;
+        } else if let Some(Value::Formula { kind, .. }) = t.val.as_deref_mut()
+            && ty != Kind::Unknown
+            && !ty.is_group()
+        {
+            // the book's names label symbolic 6-vectors as they do numbers
+            // (`S2 = (0, 0, 1, 0, -L1, 0)` is a screw axis, §5)
+            *kind = ty;
         }
         if matches!(ty, Kind::Matrix(Some(4), Some(4))) {
             self.transform_lookalike(&name, t, value_span);

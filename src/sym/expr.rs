@@ -124,7 +124,7 @@ pub enum Wrt {
     Sym(Symbol),
 }
 
-fn mono_mul(a: &Mono, b: &Mono) -> Mono {
+pub(super) fn mono_mul(a: &Mono, b: &Mono) -> Mono {
     let mut out = Vec::with_capacity(a.len() + b.len());
     let (mut i, mut j) = (0, 0);
     while i < a.len() && j < b.len() {
@@ -479,12 +479,18 @@ impl Expr {
             _ => Expr::call(f, vec![x.clone()]),
         }
     }
-    /// √x: exact for p/q with a square-free part among 1, 2, 3, 6.
+    /// √x: exact for p/q with a square-free part among 1, 2, 3, 6; |p| for
+    /// the square of an expression p.
     pub fn sqrt(x: &Expr) -> Expr {
         if let Some(r) = x.as_const().and_then(|c| c.as_rat())
             && r.num >= 0
         {
             return Expr::num(r.to_f64().sqrt());
+        }
+        if x.as_const().is_none()
+            && let Some(r) = x.sqrt_of_square()
+        {
+            return r;
         }
         Expr::apply(Func::Sqrt, x, f64::sqrt)
     }

@@ -169,6 +169,32 @@ impl Mat {
     }
 }
 
+/// A⁻¹ = adj(A)/det(A) for a square matrix up to 4×4 whose determinant
+/// is not identically 0 (the inverse where det A ≠ 0, as a formula).
+pub fn inverse(m: &Mat) -> Option<Mat> {
+    let n = m.rows;
+    if n != m.cols || n == 0 || n > 4 {
+        return None;
+    }
+    let d = det(m);
+    let inv_d = d.recip()?;
+    let mut out = Mat::zeros(n, n);
+    for i in 0..n {
+        for j in 0..n {
+            // cofactor C_ji: the minor without row j and column i
+            let mut minor = Mat::zeros(n - 1, n - 1);
+            for (r, rr) in (0..n).filter(|&r| r != j).enumerate() {
+                for (c, cc) in (0..n).filter(|&c| c != i).enumerate() {
+                    minor.set(r, c, m.get(rr, cc).clone());
+                }
+            }
+            let cof = det(&minor).mul(&inv_d).cancel();
+            out.set(i, j, if (i + j) % 2 == 0 { cof } else { cof.neg() });
+        }
+    }
+    Some(out)
+}
+
 fn det(m: &Mat) -> Expr {
     let n = m.rows;
     match n {
@@ -301,7 +327,7 @@ pub fn exp6(m: &Mat) -> Option<Mat> {
         return Some(t);
     }
     // ω = ω̂‖ω‖ with a numeric axis; v = v̂ ‖ω‖θ, v̂ found by dividing by
-    // θ (exact when θ is one term, `L1 θ2 / θ2 = L1`).
+    // θ exactly (`L1 θ2 / θ2 = L1`, also for a compound θ).
     let (ks, theta) = common_factor(&entries[..3])?;
     let (axis, angle, inv) = axis_angle(&ks, &theta)?;
     let v = match common_factor(&entries) {
@@ -311,10 +337,10 @@ pub fn exp6(m: &Mat) -> Option<Mat> {
             .map(|k| Expr::constant(*k).mul(&inv))
             .collect(),
         _ => {
-            let per_theta = theta.recip()?;
             let mut v = Vec::with_capacity(3);
             for e in &entries[3..] {
-                let x = e.mul(&per_theta).mul(&inv);
+                // exact: `L1 (t2 − π/2) / (t2 − π/2)` = L1
+                let x = e.div_exact(&theta)?.mul(&inv);
                 if !x.mul(&angle).sub(e).is_zero() {
                     return None;
                 }

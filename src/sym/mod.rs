@@ -5,12 +5,15 @@
 //! the book's closed forms over it (Rodrigues, Proposition 3.16, the
 //! adjoint), and `print` the book's notation, its shorthand and LaTeX.
 
+pub mod branch;
 pub mod coef;
 pub mod diff;
 pub mod eval;
 pub mod expr;
+pub mod fraction;
 pub mod matrix;
 pub mod print;
+pub mod rational;
 pub mod trig;
 
 pub use expr::{Expr, Symbol, Wrt};

@@ -5,8 +5,7 @@
 //! or LaTeX `L_1 \cos t_1 + …`.
 
 use super::coef::{Coef, ROOTS, Rat};
-use super::expr::{Expr, Func, Mono, Symbol, Var};
-use super::trig::{Trig, real_form};
+use super::expr::{Expr, Func, Symbol, Var};
 
 /// The output form.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -36,10 +35,7 @@ impl Default for Style {
 
 /// The terms of `e`, each with its sign: `("+", "L1 cos(t1)")`.
 pub fn terms(e: &Expr, st: Style) -> Vec<(bool, String)> {
-    real_form(e)
-        .iter()
-        .map(|((poly, trig), c)| term(c, poly, trig, st))
-        .collect()
+    super::fraction::terms(e, st)
 }
 
 /// An expression on one line.
@@ -77,65 +73,7 @@ pub fn join(ts: &[(bool, String)], width: usize, indent: usize) -> String {
     out
 }
 
-fn term(c: &Coef, poly: &Mono, trig: &[Trig], st: Style) -> (bool, String) {
-    let latex = st.mode == Mode::Latex;
-    let mut num: Vec<String> = Vec::new();
-    let mut den: Vec<String> = Vec::new();
-    for (v, e) in poly {
-        let (into, e) = match (v, *e > 0) {
-            (Var::Call(c), true) if c.f == Func::Recip => (&mut den, *e),
-            (Var::Call(c), false) if c.f == Func::Recip => (&mut num, e.saturating_neg()),
-            (_, true) => (&mut num, *e),
-            (_, false) => (&mut den, e.saturating_neg()),
-        };
-        into.push(power(&var(v, st), e, latex));
-    }
-    for (k, sin, p) in trig {
-        num.push(trig_factor(k, *sin, *p, st));
-    }
-    let (neg, coef) = coefficient(c, st);
-    let has_factors = !num.is_empty() || !den.is_empty();
-    let sep = " ";
-    let mut body = num.join(sep);
-    if num.is_empty() && !den.is_empty() && coef != "1" && !latex {
-        // (1/2)/(1 + cos(t)), 3/L2
-        let d = den.join(sep);
-        let d = if den.len() > 1 { format!("({d})") } else { d };
-        let c = if coef.contains(['/', ' ']) {
-            format!("({coef})")
-        } else {
-            coef
-        };
-        return (neg, format!("{c}/{d}"));
-    }
-    if !den.is_empty() {
-        let d = den.join(sep);
-        if latex {
-            body = format!(
-                "\\frac{{{}}}{{{d}}}",
-                if body.is_empty() { "1" } else { &body }
-            );
-        } else {
-            let d = if den.len() > 1 { format!("({d})") } else { d };
-            body = format!("{}/{d}", if body.is_empty() { "1" } else { &body });
-        }
-    }
-    let text = match (coef.as_str(), has_factors) {
-        ("1", true) => body,
-        (_, true) => {
-            let wrap = !latex && coef.contains(['/', ' ']);
-            if wrap {
-                format!("({coef}) {body}")
-            } else {
-                format!("{coef} {body}")
-            }
-        }
-        _ => coef,
-    };
-    (neg, text)
-}
-
-fn power(base: &str, e: i32, latex: bool) -> String {
+pub(super) fn power(base: &str, e: i32, latex: bool) -> String {
     match (e, latex) {
         (1, _) => base.to_string(),
         (_, true) => format!("{base}^{{{e}}}"),
@@ -143,14 +81,14 @@ fn power(base: &str, e: i32, latex: bool) -> String {
     }
 }
 
-fn var(v: &Var, st: Style) -> String {
+pub(super) fn var(v: &Var, st: Style) -> String {
     let latex = st.mode == Mode::Latex;
     match v {
         Var::Pi if latex => "\\pi".into(),
         Var::Pi => "π".into(),
         Var::Sym(s) | Var::Z(s) => symbol(s, st),
         Var::Call(c) => {
-            let args: Vec<String> = c.args.iter().map(|a| expr(a, st)).collect();
+            let args: Vec<String> = c.args.iter().map(|a| call_arg(a, st)).collect();
             match (c.f, latex) {
                 (Func::Recip, true) => format!("\\left({}\\right)", args[0]),
                 (Func::Recip, false) => format!("({})", args[0]),
@@ -164,6 +102,23 @@ fn var(v: &Var, st: Style) -> String {
             }
         }
     }
+}
+
+/// A call's argument: `t/2` for (1/2) t, as the book writes half angles.
+fn call_arg(e: &Expr, st: Style) -> String {
+    if st.mode != Mode::Latex
+        && e.terms.len() == 1
+        && let Some(r) = e.terms.values().next().and_then(Coef::as_rat)
+        && r.num.abs() == 1
+        && r.den > 1
+        && let Some(whole) = Rat::new(r.den, 1)
+    {
+        let top = expr(&e.scale(&Coef::rat(whole)), st);
+        if !top.contains(' ') {
+            return format!("{top}/{}", r.den);
+        }
+    }
+    expr(e, st)
 }
 
 const GREEK: [(&str, char, &str); 30] = [
@@ -261,10 +216,12 @@ pub fn symbol(s: &Symbol, st: Style) -> String {
     format!("{first}{mark}{rest}{tail}")
 }
 
-fn trig_factor(k: &[(Symbol, i32)], sin: bool, p: u32, st: Style) -> String {
-    let f = if sin { "sin" } else { "cos" };
+/// `f(k·θ)^p` for f one of sin, cos, tan, cot (the book's shorthand
+/// `s₁₂`, `c₁` for sin and cos).
+pub(super) fn trig_factor(k: &[(Symbol, i32)], f: &str, p: u32, st: Style) -> String {
     if st.mode == Mode::Short
-        && let Some(short) = short_trig(k, sin)
+        && (f == "sin" || f == "cos")
+        && let Some(short) = short_trig(k, f == "sin")
     {
         const SUP: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
         let sup: String = if p > 1 {
@@ -339,7 +296,7 @@ fn short_trig(k: &[(Symbol, i32)], sin: bool) -> Option<String> {
 }
 
 /// A coefficient's sign and magnitude as text ("1" for one).
-fn coefficient(c: &Coef, st: Style) -> (bool, String) {
+pub(super) fn coefficient(c: &Coef, st: Style) -> (bool, String) {
     let latex = st.mode == Mode::Latex;
     match c {
         Coef::Approx { re, .. } => (*re < 0.0, fmt_float(re.abs(), st.digits)),
@@ -553,12 +510,16 @@ mod tests {
     }
 
     #[test]
-    fn one_angle_prints_in_powers_when_no_longer() {
+    fn one_angle_prints_in_powers_when_shorter() {
         let t = s("t");
         let (c, sn) = (Expr::cos(&t), Expr::sin(&t));
-        assert_eq!(expr(&sn.mul(&c), Style::default()), "cos(t) sin(t)");
+        // double angles print alike: sin(2 t) beside cos(2 t) (issue 21)
+        assert_eq!(expr(&sn.mul(&c), Style::default()), "(1/2) sin(2 t)");
         let two = Expr::cos(&t.scale(&Coef::int(2)));
         assert_eq!(expr(&two, Style::default()), "cos(2 t)");
+        let two = Expr::sin(&t.scale(&Coef::int(2)));
+        assert_eq!(expr(&two, Style::default()), "sin(2 t)");
+        assert_eq!(expr(&c.mul(&c), Style::default()), "cos(t)^2");
         assert_eq!(expr(&c.powi(3).unwrap(), Style::default()), "cos(t)^3");
     }
 

@@ -304,7 +304,8 @@ pub fn real_form(e: &Expr) -> Real {
     let mut powers = vec![Power::Linear; groups.len()];
     let mut best = realize(e, &groups, &powers);
     // A single angle with multiples (sin t cos t as (1/2) sin(2 t)) may read
-    // better in powers of its cosine and sine: kept when no longer.
+    // better in powers of its cosine and sine: kept when shorter (on a tie
+    // the multiple angle, so that sin(2 t) prints beside cos(2 t)).
     for (gi, g) in groups.iter().enumerate() {
         let multiples = |k: i32| k.abs() >= 2 && k.abs() <= MAX_POWER;
         let fits = e.terms.keys().flatten().all(|(v, k)| match v {
@@ -323,7 +324,7 @@ pub fn real_form(e: &Expr) -> Real {
             let old = powers[gi];
             powers[gi] = basis;
             let tried = realize(e, &groups, &powers);
-            if tried.len() <= best.len() && (old == Power::Linear || tried.len() < best.len()) {
+            if tried.len() < best.len() {
                 best = tried;
             } else {
                 powers[gi] = old;

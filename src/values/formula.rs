@@ -116,6 +116,12 @@ pub fn binary(op: BinOp, a: &Value, b: &Value, kind: &Kind) -> Result<Value, Str
         },
         BinOp::Pow => return pow(&x, &y, a.kind(), kind),
     };
+    // a quotient's common factors cancel: (a² − b²)/(a − b) = a + b
+    let m = if m.data.iter().any(Expr::has_recip) {
+        m.map(Expr::cancel)
+    } else {
+        m
+    };
     Ok(make(kind, m))
 }
 
@@ -157,7 +163,8 @@ fn pow(x: &Mat, y: &Mat, base: Kind, kind: &Kind) -> Result<Value, String> {
         return Err("only a square matrix has powers".into());
     }
     let b = if n < 0 {
-        inverse(&base, x).ok_or("a symbolic inverse only of a rotation or transform")?
+        inverse(&base, x)
+            .ok_or("the matrix is singular (its determinant is identically 0) or larger than 4×4")?
     } else {
         x.clone()
     };
@@ -196,13 +203,14 @@ fn checked_power(x: &Mat, mut n: u64, acc: &mut Mat) -> Result<Mat, String> {
 }
 
 /// The inverse by the book's formulas: Rᵀ (3.23's Rᵀ = R⁻¹), the SE(3)
-/// inverse of §3.3.1, 1/x for a scalar; None otherwise.
+/// inverse of §3.3.1, 1/x for a scalar, else adj(A)/det(A) up to 4×4;
+/// None when the determinant is identically 0 (or the matrix larger).
 pub fn inverse(kind: &Kind, x: &Mat) -> Option<Mat> {
     match (kind, x.rows, x.cols) {
         (_, 1, 1) => Some(Mat::scalar(x.data[0].recip()?)),
         (Kind::SO3 | Kind::SO2, _, _) => Some(x.transpose()),
         (Kind::SE3, 4, 4) => matrix::trans_inv(x),
-        _ => None,
+        _ => matrix::inverse(x),
     }
 }
 
@@ -341,12 +349,22 @@ pub fn brackets(rows: &[Vec<Value>]) -> Result<Value, String> {
 
 /// What a symbolic matrix is, decided exactly: SO(3) when R Rᵀ = I and
 /// det R = 1, SE(3) when its blocks are [R, p; 0, 1] with such an R, so(3)
-/// when skew-symmetric; else by shape.
+/// when skew-symmetric; SO(2) and SE(2) alike for 2×2 and planar 3×3
+/// matrices; else by shape.
 pub fn classify(m: &Mat) -> Kind {
     let rotation =
         |r: &Mat| r.mul(&r.transpose()) == Some(Mat::identity(3)) && r.det() == Some(Expr::one());
+    let planar =
+        |r: &Mat| r.mul(&r.transpose()) == Some(Mat::identity(2)) && r.det() == Some(Expr::one());
+    let last_row = |n: usize| {
+        let mut row = Mat::zeros(1, n);
+        row.set(0, n - 1, Expr::one());
+        row
+    };
     match (m.rows, m.cols) {
+        (2, 2) if planar(m) => Kind::SO2,
         (3, 3) if rotation(m) => Kind::SO3,
+        (3, 3) if m.block(2..3, 0..3) == last_row(3) && planar(&m.block(0..2, 0..2)) => Kind::SE2,
         (3, 3) if m.add(&m.transpose(), false) == Some(Mat::zeros(3, 3)) => Kind::So3,
         (4, 4)
             if m.block(3..4, 0..4)

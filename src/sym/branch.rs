@@ -1,0 +1,286 @@
+//! Closed forms of the inverse maps of a symbolic rotation (LANGUAGE.md
+//! §7, §8): atan2(k sin θ, k cos θ) = θ, the logarithm of Rot(ω̂, θ) (3.51
+//! read backwards, §3.2.3.3) and the Euler angles of Appendix B. Each
+//! holds on one branch only — k > 0, θ ∈ (−π, π) — and returns the
+//! assumption with the value, so that the caller can say which branch was
+//! taken. Where no such form is found, the caller keeps its general form.
+
+use super::coef::Coef;
+use super::expr::{Expr, Symbol, Var};
+use super::matrix::{Mat, skew, unskew};
+use num_traits::{One, Zero};
+
+/// A closed form on a branch: the value, and the expressions assumed
+/// positive (`cos(b)` for the ZYX angles) and the angles assumed in
+/// (−π, π).
+#[derive(Debug, Clone, Default)]
+pub struct Branch {
+    pub positive: Vec<Expr>,
+    pub angles: Vec<Expr>,
+}
+
+impl Branch {
+    fn assume_positive(&mut self, k: &Expr) {
+        if k.as_const().is_none() && !self.positive.contains(k) {
+            self.positive.push(k.clone());
+        }
+    }
+    fn assume_angle(&mut self, a: &Expr) {
+        if a.as_const().is_none() && !self.angles.contains(a) {
+            self.angles.push(a.clone());
+        }
+    }
+}
+
+/// The integer combinations of angles worth trying as θ in k e^{iθ}: each
+/// angle, and each combination that a monomial of `e` carries.
+fn candidates(e: &Expr) -> Vec<Vec<(Symbol, i32)>> {
+    let mut out: Vec<Vec<(Symbol, i32)>> = Vec::new();
+    let mut push = |k: Vec<(Symbol, i32)>| {
+        if !k.is_empty() && !out.contains(&k) {
+            out.push(k);
+        }
+    };
+    for m in e.terms.keys() {
+        let zs: Vec<(Symbol, i32)> = m
+            .iter()
+            .filter_map(|(v, k)| match v {
+                Var::Z(s) => Some((s.clone(), *k)),
+                _ => None,
+            })
+            .collect();
+        for z in &zs {
+            push(vec![(z.0.clone(), 1)]);
+        }
+        push(zs);
+    }
+    out
+}
+
+fn angle_of(k: &[(Symbol, i32)]) -> Expr {
+    k.iter().fold(Expr::zero(), |acc, (s, c)| {
+        acc.add(&Expr::symbol(s.clone()).scale(&Coef::int(i64::from(*c))))
+    })
+}
+
+/// θ and k with y = k sin θ and x = k cos θ, so that atan2(y, x) = θ
+/// where k > 0 and θ ∈ (−π, π]: x + i y = k e^{iθ}, θ a combination of
+/// the angles plus a multiple of π/2, k real (the simplest found).
+pub fn atan2_angle(y: &Expr, x: &Expr) -> Option<(Expr, Expr)> {
+    let w = x.add(&y.scale(&Coef::i()));
+    if let (Some(a), Some(b)) = (y.as_f64(), x.as_f64()) {
+        if a == 0.0 && b == 0.0 {
+            return None;
+        }
+        return Some((Expr::num(a.atan2(b)), Expr::num(a.hypot(b))));
+    }
+    let mut best: Option<(Expr, Expr)> = None;
+    for k in candidates(&w) {
+        let theta = angle_of(&k);
+        let Some(turn) = Expr::expi(&theta.neg()) else {
+            continue;
+        };
+        let r = w.mul(&turn);
+        // r = k e^{iφ} with k real: φ a multiple of π/2
+        for n in 0..4i64 {
+            let phase = Coef::unit_root(super::coef::Rat::new(i128::from(n), 2)?)?;
+            let k = r.scale(&phase.conj());
+            // k as printed leads with a positive term (cos b, sin b, L1)
+            let lead_positive = super::trig::real_form(&k)
+                .values()
+                .next()
+                .is_some_and(|c| c.to_c64().0 > 0.0);
+            if k.is_zero() || k.conj() != k || !lead_positive || has_angle(&k, &theta) {
+                continue;
+            }
+            let phi = Expr::pi().scale(&Coef::rat(super::coef::Rat::new(i128::from(n), 2)?));
+            let phi = if n == 3 {
+                phi.sub(&Expr::pi().scale(&Coef::int(2)))
+            } else {
+                phi
+            };
+            let theta = theta.add(&phi);
+            if best
+                .as_ref()
+                .is_none_or(|(_, b)| k.terms.len() < b.terms.len())
+            {
+                best = Some((theta, k));
+            }
+        }
+    }
+    best
+}
+
+/// True when k still depends on an angle of θ (then θ is not its angle).
+fn has_angle(k: &Expr, theta: &Expr) -> bool {
+    let mut ts = Vec::new();
+    theta.symbols(&mut ts);
+    k.terms
+        .keys()
+        .flatten()
+        .any(|(v, _)| matches!(v, Var::Z(s) if ts.contains(s)))
+}
+
+/// The unit axis ω̂ and angle θ of R = Rot(ω̂, θ) = e^{[ω̂]θ} (3.51) with a
+/// numeric ω̂: cos θ = (tr R − 1)/2 and ω̂ sin θ the vector of (R − Rᵀ)/2.
+/// Its log is [ω̂]θ for θ ∈ (−π, π) (the book's θ ∈ [0, π] with −ω̂ for
+/// negative θ gives the same matrix).
+pub fn axis_angle(r: &Mat) -> Option<(Vec<Expr>, Expr)> {
+    if (r.rows, r.cols) != (3, 3) {
+        return None;
+    }
+    let half = Coef::rat(super::coef::Rat::new(1, 2)?);
+    let c = r.trace().sub(&Expr::one()).scale(&half);
+    let u: Vec<Expr> = unskew(&r.add(&r.transpose(), true)?)
+        .iter()
+        .map(|e| e.scale(&half))
+        .collect();
+    for k in candidates(&c) {
+        let theta = angle_of(&k);
+        let Some(e) = Expr::expi(&theta) else {
+            continue;
+        };
+        // c = (e^{iθ'} + e^{−iθ'})/2 with θ' = θ + φ: the coefficient of e
+        let Some(coef) = e.terms.keys().next().and_then(|m| c.terms.get(m)) else {
+            continue;
+        };
+        let coef = coef.mul(&Coef::int(2));
+        let (re, im) = coef.to_c64();
+        let theta = match Expr::num(im.atan2(re)) {
+            phi if phi.is_zero() => theta,
+            phi => theta.add(&phi),
+        };
+        if Expr::cos(&theta) != c {
+            continue;
+        }
+        let s = Expr::sin(&theta);
+        let axis: Option<Vec<Expr>> = u
+            .iter()
+            .map(|x| x.div_exact(&s).filter(|q| q.as_const().is_some()))
+            .collect();
+        let Some(axis) = axis else { continue };
+        let n2 = axis.iter().fold(Expr::zero(), |acc, a| acc.add(&a.mul(a)));
+        if n2 == Expr::one() && Expr::cos(&theta).sub(&c).is_zero() {
+            return Some((axis, theta));
+        }
+    }
+    None
+}
+
+/// log R = [ω̂]θ for R = Rot(ω̂, θ), θ assumed in (−π, π).
+pub fn log3(r: &Mat) -> Option<(Mat, Branch)> {
+    let (axis, theta) = axis_angle(r)?;
+    let mut b = Branch::default();
+    b.assume_angle(&theta);
+    let w: Vec<Expr> = axis.iter().map(|a| a.mul(&theta)).collect();
+    Some((skew(&w), b))
+}
+
+/// The unit quaternion (cos θ/2, ω̂ sin θ/2) of R = Rot(ω̂, θ) (Appendix
+/// B), θ assumed in (−π, π) so that w ≥ 0.
+pub fn quat(r: &Mat) -> Option<(Vec<Expr>, Branch)> {
+    let (axis, theta) = axis_angle(r)?;
+    let half = theta.scale(&Coef::rat(super::coef::Rat::new(1, 2)?));
+    let s = Expr::sin(&half);
+    let mut out = vec![Expr::cos(&half)];
+    out.extend(axis.iter().map(|a| a.mul(&s)));
+    let mut b = Branch::default();
+    b.assume_angle(&theta);
+    Some((out, b))
+}
+
+/// The Cayley parameters ω̂ tan(θ/2) of R = Rot(ω̂, θ), θ assumed in
+/// (−π, π).
+pub fn cayley(r: &Mat) -> Option<(Vec<Expr>, Branch)> {
+    let (axis, theta) = axis_angle(r)?;
+    let half = theta.scale(&Coef::rat(super::coef::Rat::new(1, 2)?));
+    let t = Expr::apply(super::expr::Func::Tan, &half, f64::tan);
+    let mut b = Branch::default();
+    b.assume_angle(&theta);
+    Some((axis.iter().map(|a| a.mul(&t)).collect(), b))
+}
+
+/// Euler angles (a, b, c) of R = Rot(i, a) Rot(j, b) Rot(i or k, c) from
+/// three atan2's whose common factor is assumed positive: for ZYX
+/// (`zyx` true) a = atan2(r21, r11) with k = cos b, b = atan2(−r31, k),
+/// c = atan2(r32, r33); for ZXZ a = atan2(r13, −r23) with k = sin b,
+/// b = atan2(k, r33), c = atan2(r31, r32).
+pub fn euler(r: &Mat, zyx: bool) -> Option<(Vec<Expr>, Branch)> {
+    let g = |i: usize, j: usize| r.get(i, j).clone();
+    let mut br = Branch::default();
+    let (a, k) = if zyx {
+        atan2_angle(&g(1, 0), &g(0, 0))?
+    } else {
+        atan2_angle(&g(0, 2), &g(1, 2).neg())?
+    };
+    let (b, kb) = if zyx {
+        atan2_angle(&g(2, 0).neg(), &k)?
+    } else {
+        atan2_angle(&k, &g(2, 2))?
+    };
+    let (c, kc) = if zyx {
+        atan2_angle(&g(2, 1), &g(2, 2))?
+    } else {
+        atan2_angle(&g(2, 0), &g(2, 1))?
+    };
+    // one assumption: the factors are k itself or positive constants
+    for f in [&kb, &kc] {
+        if f.as_const().is_none() && *f != k {
+            return None;
+        }
+    }
+    br.assume_positive(&k);
+    for x in [&a, &b, &c] {
+        br.assume_angle(x);
+    }
+    Some((vec![a, b, c], br))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sym::matrix::rot_axis;
+
+    fn s(n: &str) -> Expr {
+        Expr::symbol(Symbol::new(n))
+    }
+
+    #[test]
+    fn atan2_of_a_scaled_sine_and_cosine_is_the_angle() {
+        let (a, b) = (s("a"), s("b"));
+        let k = Expr::cos(&b);
+        let (t, f) = atan2_angle(&Expr::sin(&a).mul(&k), &Expr::cos(&a).mul(&k)).unwrap();
+        assert_eq!((t, f), (a.clone(), k));
+        // sin(a + π/2) = cos a: the angle carries its quarter turn
+        let (t, f) = atan2_angle(&Expr::cos(&a), &Expr::sin(&a).neg()).unwrap();
+        assert_eq!(
+            t,
+            a.add(&Expr::pi().scale(&Coef::rat(crate::sym::coef::Rat::new(1, 2).unwrap())))
+        );
+        assert_eq!(f, Expr::one());
+    }
+
+    #[test]
+    fn log_and_euler_angles_of_symbolic_rotations() {
+        let (a, b, c) = (s("a"), s("b"), s("c"));
+        let (log, br) = log3(&rot_axis(2, &a)).unwrap();
+        assert_eq!(log, skew(&[Expr::zero(), Expr::zero(), a.clone()]));
+        assert_eq!(br.angles, vec![a.clone()]);
+        let r = rot_axis(2, &a)
+            .mul(&rot_axis(1, &b))
+            .unwrap()
+            .mul(&rot_axis(0, &c))
+            .unwrap();
+        let (angles, br) = euler(&r, true).unwrap();
+        assert_eq!(angles, vec![a.clone(), b.clone(), c.clone()]);
+        assert_eq!(br.positive, vec![Expr::cos(&b)]);
+        let r = rot_axis(2, &a)
+            .mul(&rot_axis(0, &b))
+            .unwrap()
+            .mul(&rot_axis(2, &c))
+            .unwrap();
+        let (angles, br) = euler(&r, false).unwrap();
+        assert_eq!(angles, vec![a, b.clone(), c]);
+        assert_eq!(br.positive, vec![Expr::sin(&b)]);
+    }
+}
