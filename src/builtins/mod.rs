@@ -6,6 +6,7 @@
 //! the checker with no numbers), and its implementation on values.
 
 mod args;
+mod conditioning;
 pub mod notes;
 pub mod parts;
 mod table_draw;

@@ -239,9 +239,21 @@ impl Expr {
             _ => None,
         }
     }
-    /// The number, when the expression is constant and real.
+    /// The number, when the expression is constant (π included) and real.
     pub fn as_f64(&self) -> Option<f64> {
-        let (re, im) = self.as_const()?.to_c64();
+        let (re, im) = match self.as_const() {
+            Some(c) => c.to_c64(),
+            // π is a number: 2 + π, once its symbols are bound, is 5.1416
+            None => self.terms.iter().try_fold((0.0, 0.0), |(re, im), (m, c)| {
+                let p = match m.as_slice() {
+                    [] => 1.0,
+                    [(Var::Pi, e)] => std::f64::consts::PI.powi(*e),
+                    _ => return None,
+                };
+                let (a, b) = c.to_c64();
+                Some((re + a * p, im + b * p))
+            })?,
+        };
         (im.abs() <= 1e-12 * re.abs().max(1.0)).then_some(re)
     }
     /// Terms plus nested call arguments: the size that the expression limit

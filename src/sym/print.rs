@@ -172,6 +172,14 @@ fn split_name(name: &str) -> (&str, &str) {
 /// A symbol's name: as typed; a time derivative θ̇ with the Greek letter
 /// and a dot (two dots for θ̈, primes beyond).
 pub fn symbol(s: &Symbol, st: Style) -> String {
+    // an angle's offset, `π/4`, `5π/12` (see `trig::fold_offsets`; no
+    // name the user can declare holds a `/`)
+    if let Some((p, q)) = s.name.split_once("π/") {
+        return match st.mode {
+            Mode::Latex => format!("\\frac{{{p}\\pi}}{{{q}}}"),
+            _ => s.name.to_string(),
+        };
+    }
     let (base, sub) = split_name(&s.name);
     if st.mode == Mode::Latex {
         let b = GREEK
@@ -270,7 +278,9 @@ pub(super) fn trig_factor(k: &[(Symbol, i32)], f: &str, p: u32, st: Style) -> St
 /// applies (all coefficients 1, indexed names or a single angle).
 fn short_trig(k: &[(Symbol, i32)], sin: bool) -> Option<String> {
     const SUB: [char; 10] = ['₀', '₁', '₂', '₃', '₄', '₅', '₆', '₇', '₈', '₉'];
-    if k.iter().any(|(s, c)| *c != 1 || s.dots > 0) {
+    if k.iter()
+        .any(|(s, c)| *c != 1 || s.dots > 0 || s.name.contains('/'))
+    {
         return None;
     }
     let f = if sin { 's' } else { 'c' };

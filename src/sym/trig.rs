@@ -14,6 +14,9 @@ use super::expr::{Expr, Mono, Symbol, Var};
 /// coefficient positive), whether it is a sine, and its power (`cos(t)^2`
 /// where a single angle prints in powers of cos t and sin t).
 pub type Trig = (Vec<(Symbol, i32)>, bool, u32);
+/// An integer combination of angles (with an offset, `π/4`, as a
+/// pseudo-angle once folded).
+pub type Angle = Vec<(Symbol, i32)>;
 /// The real terms: (non-angle monomial, trigonometric factors) → coefficient.
 pub type Real = BTreeMap<(Mono, Vec<Trig>), Coef>;
 
@@ -331,5 +334,107 @@ pub fn real_form(e: &Expr) -> Real {
             }
         }
     }
-    best
+    fold_offsets(best)
+}
+
+/// a cos K + b sin K = r cos(K − φ) (or r sin(K + ψ)) where the offset is
+/// a multiple of π/12 and r is exact: `cos(t1 + t2 + π/4)` prints as one
+/// term, not (1/√2) cos(t1 + t2) − (1/√2) sin(t1 + t2). The offset is
+/// carried as a pseudo-angle named as printed (`π/4`), coefficient ±1.
+fn fold_offsets(real: Real) -> Real {
+    let mut out: Real = BTreeMap::new();
+    let mut used: std::collections::BTreeSet<(Mono, Vec<Trig>)> = Default::default();
+    for (key, a) in &real {
+        if used.contains(key) {
+            continue;
+        }
+        let (poly, trig) = key;
+        let mut folded = None;
+        for i in 0..trig.len() {
+            if trig[i].1 || trig[i].2 != 1 {
+                continue;
+            }
+            let mut partner = trig.clone();
+            partner[i].1 = true;
+            let pkey = (poly.clone(), partner);
+            let Some(b) = real.get(&pkey).filter(|_| !used.contains(&pkey)) else {
+                continue;
+            };
+            if let Some((r, angle, sin)) = offset(a, b, &trig[i].0) {
+                let mut t = trig.clone();
+                t[i] = (angle, sin, 1);
+                folded = Some((pkey, (poly.clone(), t), r));
+                break;
+            }
+        }
+        match folded {
+            Some((pkey, k, r)) => {
+                used.insert(pkey);
+                let sum = out.get(&k).map_or(r, |o| o.add(&r));
+                out.insert(k, sum);
+            }
+            None => {
+                let sum = out.get(key).map_or(*a, |o| o.add(a));
+                out.insert(key.clone(), sum);
+            }
+        }
+    }
+    out.retain(|_, c| !negligible(c));
+    out
+}
+
+/// (r, K ± offset, whether a sine) with a cos K + b sin K = r·f(K ± offset).
+fn offset(a: &Coef, b: &Coef, k: &[(Symbol, i32)]) -> Option<(Coef, Angle, bool)> {
+    let (Coef::Exact { .. }, Coef::Exact { .. }) = (a, b) else {
+        return None;
+    };
+    let (x, y) = (a.to_c64().0, b.to_c64().0);
+    // a cos K + b sin K = r cos(K − φ), φ = atan2(b, a) in twelfths of π,
+    // taken within ±π/2 (r may be negative)
+    let mut phi = (y.atan2(x) / (std::f64::consts::PI / 12.0)).round() as i64;
+    if phi > 6 {
+        phi -= 12;
+    } else if phi < -6 {
+        phi += 12;
+    }
+    if phi == 0 || phi.abs() == 6 {
+        return None;
+    }
+    // r = a / cos φ exactly, checked against b = r sin φ
+    let (cos_phi, sin_phi) = match Coef::unit_root(super::coef::Rat::new(i128::from(phi), 12)?)? {
+        Coef::Exact { re, im } => (Coef::real(re), Coef::real(im)),
+        Coef::Approx { .. } => return None,
+    };
+    let r = a.mul(&cos_phi.inv()?);
+    if r.mul(&sin_phi) != *b {
+        return None;
+    }
+    // or r sin(K + ψ), ψ = π/2 − φ (−r sin(K + ψ − π) past π/2): the
+    // smaller offset, the positive one on a tie
+    let (psi, flip) = if 6 - phi > 6 {
+        (6 - phi - 12, true)
+    } else {
+        (6 - phi, false)
+    };
+    let (sin, off, r) = if psi.abs() < phi.abs() || (psi.abs() == phi.abs() && psi > 0) {
+        (true, psi, if flip { r.neg() } else { r })
+    } else {
+        (false, -phi, r)
+    };
+    let mut angle = k.to_vec();
+    let (p, q) = {
+        let g = gcd(off.abs(), 12);
+        (off.abs() / g, 12 / g)
+    };
+    let name = match (p, q) {
+        (1, 1) => "π".to_string(),
+        (1, q) => format!("π/{q}"),
+        (p, q) => format!("{p}π/{q}"),
+    };
+    angle.push((Symbol::new(&name), off.signum() as i32));
+    Some((r, angle, sin))
+}
+
+fn gcd(a: i64, b: i64) -> i64 {
+    if b == 0 { a } else { gcd(b, a % b) }
 }

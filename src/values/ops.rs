@@ -204,7 +204,7 @@ pub fn pow(b: &Value, e: f64, kind: &Kind) -> Result<Value, OpError> {
         return Err(OpError::ExponentNotWhole(e));
     }
     let mut base = if e < 0.0 {
-        num_inverse(bk, bm)?.into_dmatrix()
+        num_inverse(bk, bm)?.0.into_dmatrix()
     } else {
         bm.to_dmatrix().into_owned()
     };
@@ -238,47 +238,51 @@ pub fn pow(b: &Value, e: f64, kind: &Kind) -> Result<Value, OpError> {
 }
 
 /// The inverse: closed forms for group elements (Prop. 3.3, (3.64)),
-/// LU for other square matrices, an error for singular ones.
+/// LU with partial pivoting for other square matrices, an error for
+/// singular ones (judged by conditioning, [`super::linalg`]).
 pub fn inverse(v: &Value) -> Result<Value, OpError> {
+    inverse_conditioned(v).map(|(v, _)| v)
+}
+
+/// [`inverse`], with the reciprocal condition number of a plain matrix's
+/// inverse (see [`super::linalg`]); None for closed forms and scalars.
+pub fn inverse_conditioned(v: &Value) -> Result<(Value, Option<f64>), OpError> {
     let (k, m) = num(v)?;
     if *k == Kind::Scalar {
         if m[0] == 0.0 {
             return Err(OpError::InverseOfZero);
         }
-        return Ok(Value::scalar(1.0 / m[0]));
+        return Ok((Value::scalar(1.0 / m[0]), None));
     }
-    Ok(out(k, num_inverse(k, m)?))
+    let (inv, rcond) = num_inverse(k, m)?;
+    Ok((out(k, inv), rcond))
 }
 
-fn num_inverse(k: &Kind, m: &Num) -> Result<Num, OpError> {
-    Ok(match (k, m) {
-        // Closed forms: Rᵀ (Prop. 3.3), (3.64) for transforms.
-        (Kind::SO3, Num::M3(r)) => Num::M3(*SO3::assume(*r).inverse().matrix()),
-        (Kind::SO3 | Kind::SO2, _) => m.transpose(),
-        (Kind::SE3, Num::M4(t)) => Num::M4(*SE3::assume(*t).inverse().matrix()),
-        (Kind::SE2, Num::M3(t)) => Num::M3(*SE2::assume(*t).inverse().matrix()),
-        _ if m.is_square() => {
-            let r = m.nrows();
-            check_cost(cube(r), || format!("the inverse of a {r}×{r} matrix"))?;
-            if m.iter().any(|x| !x.is_finite()) {
-                return Err(OpError::InverseNotFinite);
+/// The inverse: a closed form for a group element, else LU (with its
+/// reciprocal condition number).
+fn num_inverse(k: &Kind, m: &Num) -> Result<(Num, Option<f64>), OpError> {
+    Ok((
+        match (k, m) {
+            // Closed forms: Rᵀ (Prop. 3.3), (3.64) for transforms.
+            (Kind::SO3, Num::M3(r)) => Num::M3(*SO3::assume(*r).inverse().matrix()),
+            (Kind::SO3 | Kind::SO2, _) => m.transpose(),
+            (Kind::SE3, Num::M4(t)) => Num::M4(*SE3::assume(*t).inverse().matrix()),
+            (Kind::SE2, Num::M3(t)) => Num::M3(*SE2::assume(*t).inverse().matrix()),
+            _ if m.is_square() => {
+                let r = m.nrows();
+                check_cost(cube(r), || format!("the inverse of a {r}×{r} matrix"))?;
+                if m.iter().any(|x| !x.is_finite()) {
+                    return Err(OpError::InverseNotFinite);
+                }
+                let inv = super::linalg::inverse(&m.to_dmatrix())?;
+                return Ok((Num::from_dmatrix(inv.m), Some(inv.rcond)));
             }
-            let m = m.to_dmatrix();
-            let det = m.determinant();
-            let scale = m.abs().max().max(f64::MIN_POSITIVE).powi(r as i32);
-            if det == 0.0 || !det.is_finite() || det.abs() <= 1e-14 * scale {
-                return Err(OpError::Singular(Some(det)));
+            _ => {
+                return Err(OpError::InverseOfNonSquare(m.nrows(), m.ncols()));
             }
-            Num::from_dmatrix(
-                m.into_owned()
-                    .try_inverse()
-                    .ok_or(OpError::Singular(None))?,
-            )
-        }
-        _ => {
-            return Err(OpError::InverseOfNonSquare(m.nrows(), m.ncols()));
-        }
-    })
+        },
+        None,
+    ))
 }
 
 /// `x.T`.

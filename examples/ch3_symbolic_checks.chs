@@ -1,0 +1,93 @@
+# Issue 21's examples, checked: the symbolic engine gives a right answer, a
+# closed form the book would print, or says it cannot decide — never a
+# wrong value (LANGUAGE.md §7). Each `assert` stops the script if it fails.
+#
+# Covers:
+#   - tan, cot, sec, csc as quotients of sin and cos; 1/(a + b sin t);
+#     common factors cancelled; simplify, expand, subs;
+#   - reciprocals that printed 0 (1/sin t1, tan(t2 + π/2));
+#   - exp([S] θ) and exp([ω̂] θ) with a compound angle (Rodrigues 3.51,
+#     Proposition 3.16), also with a symbolic screw and after binding numbers;
+#   - angle offsets folded (cos(t1 + t2 + π/4)); sin(2t) beside cos(2t);
+#   - π is a number once the symbols are bound; numbers bound later at
+#     angles outside the 15° family (20°); the derivative of a quotient;
+#   - √(x²) = |x|; log, euler_zyx, euler_zxz, quat, cayley of a symbolic
+#     rotation on their branch (a note names the branch assumed);
+#   - the symbolic inverse (inv(J) and J^-1 agree), SO(2)/SE(2) labels and
+#     the book's names on symbolic screws.
+
+given t, t1, t2, a, b, c, L1 : scalar
+
+# --- tan, cot, sec, csc and quotients ------------------------------------------
+tan(t)
+cot(t)
+sec(t)
+csc(t)
+1/(a + b sin(t))
+2 sin(t)/(2 cos(t))                           # tan(t): common factors cancel
+assert 2 sin(t)/(2 cos(t)) == tan(t)
+assert tan(t) cot(t) == 1
+(a^2 - b^2)/(a - b)                           # a + b
+assert (a^2 - b^2)/(a - b) == a + b
+sin(2 t)/cos(t)                               # 2 sin(t)
+1/sin(t1)                                     # never 0
+tan(t2 + pi/2)                                # -cot(t2)
+assert tan(t2 + pi/2) == -cot(t2)
+tan(pi/4)
+cot(pi/3)
+simplify(cos(t1) cos(t2) - sin(t1) sin(t2))   # cos(t1 + t2)
+expand((a + b)^2)
+subs(cos(t1 + t2), t2, -t1)                   # 1
+assert subs(cos(t1 + t2), t2, -t1) == 1
+subs(sin(a)/a, a, 2)
+
+# --- exp of a screw or rotation axis with a compound angle -----------------------
+w = (0, 0, 1)
+exp([w] (t1 + t2))
+assert exp([w] (t1 + t2)) == Rotz(t1 + t2)
+S2 = (0, 0, 1, 0, -L1, 0)                     # a screw axis by its book name
+E2 = exp([S2] (t2 - pi/2))
+E2
+assert E2 == exp([S2] t2) exp([S2] (-pi/2))
+
+# --- angle offsets and double angles ---------------------------------------------
+cos(t1 + pi/4) cos(t2) - sin(t1 + pi/4) sin(t2)   # cos(t1 + t2 + π/4)
+sin(t1 + pi/4)
+sin(2 t)                                      # beside cos(2 t), alike
+cos(2 t)
+Rotz(t)^2
+
+# --- roots, logs and Euler angles on their branch --------------------------------
+sqrt(t^2)                                     # abs(t)
+log(Rotz(t))                                  # [ẑ] t for t in (−π, π)
+MatrixLog3(Rot((1, 2, 2)/3, t))
+(ea, eb, ec) = euler_zyx(Rotz(a) Roty(b) Rotx(c))
+assert (ea, eb, ec) == (a, b, c)
+euler_zxz(rot_zxz(a, b, c))
+quat(Rotz(t))                                 # half angles: cos(t/2), sin(t/2)
+cayley(Rotz(t))
+
+# --- the symbolic inverse and type labels ----------------------------------------
+J = [cos(t), -sin(t); sin(t), cos(t)]         # SO(2)
+assert inv(J) == J^-1
+K = [a, b; c, L1]
+K^-1
+assert inv(K) K == I
+[cos(t), -sin(t), a; sin(t), cos(t), b; 0, 0, 1]
+
+# --- numbers bound later: π is a number -------------------------------------------
+given u : scalar
+cu = cos(u)
+u = 20 deg
+cu                                            # 0.9397, not (1/2) cos(π/9)
+assert cu == cos(20 deg)
+dq = diff(1/(cos(t) + 2 sin(t)), t)           # a quotient's derivative, not 0
+x = t + pi
+E = exp([S2] (t1 - pi/2))
+t = 2
+x                                             # 5.1416, a number
+assert x == 2 + pi
+dq                                            # at t = 2
+t1 = 0.3
+L1 = 1
+E

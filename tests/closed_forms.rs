@@ -1,0 +1,235 @@
+//! Issue 21, "closed forms the book prints": one regression test per item —
+//! tan/cot/sec/csc and quotients, simplify/expand/subs, exp with a compound
+//! angle, angle offsets and double angles, π after binding, √(x²), the
+//! inverse maps of a symbolic rotation on their branch, the symbolic
+//! inverse and type labels. Each prints what the book would and agrees
+//! with numbers.
+
+use chasles::eval::env::Mode;
+use chasles::session::{Session, Settings};
+
+/// Runs `src` in a fresh session, failing on any error; returns (stdout,
+/// stderr).
+fn run(src: &str) -> (String, String) {
+    let mut s = Session::new(Settings::default());
+    let (out, err, n) = s.run_to_strings("t.chs", src, Mode::Run, false);
+    assert_eq!(n, 0, "{src}\n{err}");
+    (out, err)
+}
+
+/// The printed lines of `src` after its first line (the `given`).
+fn lines(src: &str) -> Vec<String> {
+    run(src).0.lines().map(str::to_string).collect()
+}
+
+fn fails(src: &str) -> String {
+    let mut s = Session::new(Settings::default());
+    let (_, err, n) = s.run_to_strings("t.chs", src, Mode::Run, false);
+    assert!(n > 0, "{src} should fail");
+    err
+}
+
+#[test]
+fn tan_cot_sec_csc_are_quotients_of_sin_and_cos() {
+    let out = lines(
+        "given t, t2 : scalar\ntan(t)\ncot(t)\nsec(t)\ncsc(t)\n2 sin(t)/(2 cos(t))\ntan(t2 + pi/2)",
+    );
+    assert_eq!(
+        out,
+        [
+            "tan(t)", "cot(t)", "1/cos(t)", "1/sin(t)", "tan(t)", "-cot(t2)"
+        ]
+    );
+    // numbers, and their poles refused
+    assert_eq!(
+        lines("tan(pi/4)\ncot(pi/4)\nsec(pi/3)\ncsc(pi/6)"),
+        ["1", "1", "2", "2"]
+    );
+    for pole in ["tan(pi/2)", "cot(0)", "sec(pi/2)", "csc(pi)"] {
+        assert!(fails(pole).contains("domain error"), "{pole}");
+    }
+    // bound later, the quotient is the number
+    let out = lines("given t : scalar\nx = tan(t) + cot(t)\nt = 0.3\nx");
+    let want = 0.3f64.tan() + 1.0 / 0.3f64.tan();
+    assert_eq!(out[2], format!("{}", (want * 1e4).round() / 1e4));
+}
+
+#[test]
+fn quotients_cancel_common_factors() {
+    let out = lines(
+        "given a, b, t : scalar\n(a^2 - b^2)/(a - b)\nsin(2 t)/cos(t)\n1/(a + b sin(t))\nx = 1/(a + b)\n(a + b) x",
+    );
+    assert_eq!(
+        out,
+        [
+            "a + b",
+            "2 sin(t)",
+            "1/(a + b sin(t))",
+            "x = 1/(a + b)",
+            "1"
+        ]
+    );
+    let (out, _) = run("given a, b : scalar\n(1 + a)/(a + b sin(a)) == (1 + a)/(a + b sin(a))");
+    assert_eq!(out.trim(), "true");
+}
+
+#[test]
+fn simplify_expand_and_subs() {
+    let out = lines(
+        "given a, b, t1, t2 : scalar\nsimplify(cos(t1) cos(t2) - sin(t1) sin(t2))\nexpand((a + b)^2)\nsubs(cos(t1 + t2), t2, -t1)\nsubs(a b, b, a + 1)\nsubs(sin(a)/a, a, 2)",
+    );
+    assert_eq!(
+        out,
+        [
+            "cos(t1 + t2)",
+            "2 a b + a^2 + b^2",
+            "1",
+            "a + a^2",
+            "0.4546"
+        ]
+    );
+    assert!(fails("given a : scalar\nsubs(a, 2, 3)").contains("replaces a symbol"));
+}
+
+#[test]
+fn exp_of_a_compound_angle_is_the_closed_form() {
+    let (out, _) = run("given t1, t2, L1 : scalar
+        w = (0, 0, 1)
+        exp([w] (t1 + t2)) == Rotz(t1 + t2)
+        S2 = (0, 0, 1, 0, -L1, 0)
+        E = exp([S2] (t2 - pi/2))
+        E == exp([S2] t2) exp([S2] (-pi/2))
+        t2 = 0.4
+        L1 = 2
+        E");
+    assert!(!out.contains("exp("), "{out}");
+    assert!(
+        out.contains("S2 = (0, 0, 1, 0, -L1, 0)  : screw axis"),
+        "{out}"
+    );
+    assert_eq!(out.matches("true").count(), 2, "{out}");
+    // T = [Rot(z, θ), (I − R) q] with q = (L1, 0, 0), θ = 0.4 − π/2
+    let th = 0.4 - std::f64::consts::FRAC_PI_2;
+    let (c, s) = (th.cos(), th.sin());
+    let p = (2.0 * (1.0 - c), -2.0 * s);
+    let f = |x: f64| format!("{}", (x * 1e4).round() / 1e4);
+    let last: Vec<&str> = out.lines().rev().take(4).collect();
+    assert!(
+        last[3].contains(&f(c)) && last[3].contains(&f(p.0)),
+        "{out}"
+    );
+    assert!(
+        last[2].contains(&f(s)) && last[2].contains(&f(p.1)),
+        "{out}"
+    );
+}
+
+#[test]
+fn angle_offsets_fold_and_double_angles_print_alike() {
+    let out = lines(
+        "given t, t1, t2 : scalar\ncos(t1 + pi/4) cos(t2) - sin(t1 + pi/4) sin(t2)\nsin(t1 + pi/4)\nsin(2 t)\ncos(2 t)\ncos(t) sin(t)",
+    );
+    assert_eq!(
+        out,
+        [
+            "cos(t1 + t2 + π/4)",
+            "sin(t1 + π/4)",
+            "sin(2 t)",
+            "cos(2 t)",
+            "(1/2) sin(2 t)"
+        ]
+    );
+    let mut s = Session::new(Settings {
+        sym: chasles::sym::print::Mode::Latex,
+        ..Settings::default()
+    });
+    let (out, _, _) = s.run_to_strings(
+        "t.chs",
+        "given t1 : scalar\nsin(t1 + pi/4)",
+        Mode::Run,
+        false,
+    );
+    assert_eq!(out.trim(), "\\sin(t_1 + \\frac{\\pi}{4})");
+}
+
+#[test]
+fn pi_is_a_number_once_the_symbols_are_bound() {
+    let out = lines("given a, u : scalar\nx = a + pi\nc = cos(u)\na = 2\nu = 20 deg\nx\nc");
+    assert_eq!(out[4], "5.1416");
+    assert_eq!(out[5], "0.9397");
+    let mut s = Session::new(Settings {
+        json: true,
+        ..Settings::default()
+    });
+    let (out, _, _) = s.run_to_strings(
+        "t.chs",
+        "given a : scalar\nx = a + pi\na = 2\nx",
+        Mode::Run,
+        false,
+    );
+    assert!(
+        out.lines()
+            .last()
+            .unwrap_or("")
+            .contains("\"type\":\"scalar\""),
+        "{out}"
+    );
+}
+
+#[test]
+fn roots_of_squares_are_absolute_values() {
+    assert_eq!(
+        lines("given x, b : scalar\nsqrt(x^2)\nsqrt(4 x^2)\nsqrt(cos(b)^2)"),
+        ["abs(x)", "abs(2 x)", "abs(cos(b))"]
+    );
+    // not a square: kept
+    assert_eq!(lines("given x : scalar\nsqrt(x^2 + 1)"), ["sqrt(1 + x^2)"]);
+}
+
+#[test]
+fn inverse_maps_of_a_symbolic_rotation_on_their_branch() {
+    let (out, err) = run("given t, a, b, c : scalar
+        log(Rotz(t))
+        euler_zyx(Rotz(a) Roty(b) Rotx(c))
+        quat(Rotz(t))
+        cayley(Rotz(t))
+        euler_zxz(rot_zxz(a, b, c))");
+    assert!(
+        out.starts_with("[0, -t, 0\n t, 0,  0\n 0, 0,  0]  : so(3)\na\nb\nc\n"),
+        "{out}"
+    );
+    assert!(out.contains("(cos(t/2), 0, 0, sin(t/2))"), "{out}");
+    assert!(out.contains("(0, 0, tan(t/2))"), "{out}");
+    assert!(
+        err.contains("the closed form on the branch t in (−π, π)"),
+        "{err}"
+    );
+    assert!(err.contains("cos(b) > 0 and a, b, c in (−π, π]"), "{err}");
+    assert!(err.contains("sin(b) > 0"), "{err}");
+    // no single axis: kept as a call, never a wrong closed form
+    let (out, _) = run("given a, b : scalar\nlog(Rotz(a) Rotx(b))");
+    assert!(out.starts_with("log("), "{out}");
+    // the closed form agrees with the numbers where its branch holds
+    let (out, _) = run("given a, b, c : scalar
+        (x, y, z) = euler_zyx(Rotz(a) Roty(b) Rotx(c))
+        a = 0.3
+        b = -0.4
+        c = 2.5
+        (x, y, z)");
+    assert!(out.contains("\n(0.3, -0.4, 2.5)"), "{out}");
+}
+
+#[test]
+fn symbolic_inverse_and_labels() {
+    let out = lines(
+        "given t, a, b, c, d : scalar\nJ = [cos(t), -sin(t); sin(t), cos(t)]\ninv(J) == J^-1\nK = [a, b; c, d]\nK^-1\ninv(K) K == I",
+    );
+    assert_eq!(out[0], "J = [cos(t), -sin(t)");
+    assert!(out[1].ends_with(": SO(2)"), "{out:?}");
+    assert_eq!(out[2], "true");
+    assert_eq!(out[5], "[d/(a d - b c),  -b/(a d - b c)");
+    assert_eq!(out.last().map(String::as_str), Some("true"));
+    let out = lines("given t, a, b : scalar\n[cos(t), -sin(t), a; sin(t), cos(t), b; 0, 0, 1]");
+    assert!(out[2].ends_with(": SE(2)"), "{out:?}");
+    assert!(fails("given a : scalar\n[a, a; a, a]^-1").contains("singular"));
+}
