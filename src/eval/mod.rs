@@ -13,8 +13,12 @@ pub mod interp;
 pub mod list;
 mod naming;
 mod notation;
+mod order;
+mod paren_product;
 mod shapes;
+mod slice;
 mod substitute;
 mod symbols;
+mod user_fn;
 
 pub use crate::values::{convert, formula, ops, symbolic, value};
