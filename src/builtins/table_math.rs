@@ -296,6 +296,7 @@ fn sized(a: &Args) -> Result<(usize, usize), Diagnostic> {
             ops::MAX_ELEMENTS
         )));
     }
+    crate::budget::room((r * c) as u64).map_err(|stop| a.domain(stop.to_string()))?;
     Ok((r, c))
 }
 
@@ -343,9 +344,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 arity: (1, 1),
                 rule: inv_rule,
             },
-            eval: |a| {
-                ops::inverse(a.value(0)).map_err(|e| a.error(0, ErrorKind::Domain, e.to_string()))
-            },
+            eval: super::conditioning::eval_inv,
         },
         Builtin {
             name: "transpose",
@@ -374,16 +373,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: scalar,
                 frames: FrameRule::None,
             },
-            eval: |a| {
-                let m = a.square(0)?;
-                let n = m.nrows();
-                // LU: about n³/3 multiply-adds.
-                ops::check_cost(ops::cube(n) / 3, || {
-                    format!("the determinant of a {n}×{n} matrix")
-                })
-                .map_err(|e| a.domain(e.to_string()))?;
-                Ok(Value::scalar(m.to_dmatrix().determinant()))
-            },
+            eval: super::conditioning::eval_det,
         },
         Builtin {
             name: "trace",

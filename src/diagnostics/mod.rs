@@ -12,6 +12,7 @@ pub mod escape;
 pub mod habits;
 pub mod render;
 pub mod suggest;
+pub mod view;
 
 /// The error kinds of LANGUAGE.md §1, as they appear in JSON and in the
 /// `kind error:` header.

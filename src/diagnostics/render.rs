@@ -1,6 +1,8 @@
 //! Rendering of diagnostics: the contract's header line
 //! `FILE:LINE:COL: kind error: message`, then the source line with carets
-//! and labels (codespan-reporting), then `= help: …`.
+//! and labels (codespan-reporting), then `= help: …`. Control characters
+//! are shown escaped everywhere, and a long line is echoed as windows
+//! around its spans ([`super::view`]).
 
 use codespan_reporting::diagnostic::{Diagnostic as CsDiagnostic, Label as CsLabel};
 use std::ops::Range;
@@ -8,7 +10,7 @@ use std::ops::Range;
 use codespan_reporting::files::{Error as FilesError, Files, SimpleFile};
 use codespan_reporting::term::{self, Config};
 
-use super::{Diagnostic, Severity};
+use super::{Diagnostic, Severity, escape};
 
 use crate::span::floor_boundary;
 pub use crate::span::{Anchor, line_col, line_col_from};
@@ -25,7 +27,11 @@ fn header_from(d: &Diagnostic, file: &str, src: &str, anchor: Anchor) -> String 
         Severity::Warning => "warning".to_string(),
         Severity::Note => "note".to_string(),
     };
-    format!("{file}:{line}:{col}: {what}: {}", d.message)
+    format!(
+        "{}:{line}:{col}: {what}: {}",
+        escape::controls(file),
+        escape::controls(&d.message)
+    )
 }
 
 /// The full text of a diagnostic, ending in a newline.
@@ -39,6 +45,10 @@ pub fn text(d: &Diagnostic, file: &str, src: &str) -> String {
 struct Window<'a> {
     file: SimpleFile<&'a str, &'a str>,
     first_line: usize,
+    /// The primary span's start in the echoed text, and its column in the
+    /// source (the echoed text may be escaped or cut: the `┌─` line must
+    /// name the same column as the header).
+    primary: (usize, usize),
 }
 
 impl<'a> Files<'a> for Window<'a> {
@@ -60,6 +70,18 @@ impl<'a> Files<'a> for Window<'a> {
     fn line_range(&'a self, id: (), line_index: usize) -> Result<Range<usize>, FilesError> {
         self.file.line_range(id, line_index)
     }
+    fn column_number(
+        &'a self,
+        id: (),
+        line_index: usize,
+        byte_index: usize,
+    ) -> Result<usize, FilesError> {
+        if byte_index == self.primary.0 {
+            return Ok(self.primary.1);
+        }
+        let range = self.line_range(id, line_index)?;
+        Ok(codespan_reporting::files::column_index(self.file.source(), range, byte_index) + 1)
+    }
 }
 
 /// [`text`], counting line numbers from `anchor` (see [`Anchor`]).
@@ -77,32 +99,34 @@ pub fn text_from(d: &Diagnostic, file: &str, src: &str, anchor: Anchor) -> Strin
     let base = src[..lo].rfind('\n').map_or(0, |i| i + 1);
     let end = src[hi..].find('\n').map_or(src.len(), |i| hi + i);
     let first_line = line_col_from(src, base, anchor).0;
+    // The echoed text: controls escaped, long lines cut around the spans;
+    // every span carried over to it.
+    let spans: Vec<Range<usize>> = std::iter::once(d.span)
+        .chain(d.labels.iter().map(|l| l.span))
+        .map(|s| clamp(s.start, s.end))
+        .collect();
+    let points: Vec<usize> = spans.iter().flat_map(|r| [r.start, r.end]).collect();
+    let (shown, at) = super::view::view(src, base, end, &points);
+    let name = escape::controls(file);
     let window = Window {
-        file: SimpleFile::new(file, &src[base..end]),
+        file: SimpleFile::new(&name, shown.as_str()),
         first_line,
+        primary: (at[0], line_col_from(src, spans[0].start, anchor).1),
     };
-    let shift = |a: usize, b: usize| {
-        let r = clamp(a, b);
-        r.start - base..r.end - base
-    };
-    let mut labels = vec![
-        CsLabel::primary((), shift(d.span.start, d.span.end)).with_message(d.primary_label.clone()),
-    ];
-    for l in &d.labels {
-        labels.push(
-            CsLabel::secondary((), shift(l.span.start, l.span.end)).with_message(l.message.clone()),
-        );
+    let shift = |i: usize| at[2 * i]..at[2 * i + 1];
+    let one_line = |m: &str| escape::controls(m).into_owned();
+    let mut labels = vec![CsLabel::primary((), shift(0)).with_message(one_line(&d.primary_label))];
+    for (i, l) in d.labels.iter().enumerate() {
+        labels.push(CsLabel::secondary((), shift(i + 1)).with_message(one_line(&l.message)));
     }
     let base_diag = match d.severity {
         Severity::Error => CsDiagnostic::error(),
         Severity::Warning => CsDiagnostic::warning(),
         Severity::Note => CsDiagnostic::note(),
     };
-    let mut cs = base_diag
-        .with_message(d.message.clone())
-        .with_labels(labels);
+    let mut cs = base_diag.with_message(String::new()).with_labels(labels);
     if let Some(h) = &d.help {
-        cs = cs.with_notes(vec![format!("help: {h}")]);
+        cs = cs.with_notes(vec![format!("help: {}", escape::controls_keep_lines(h))]);
     }
     let config = Config::default();
     let body = term::emit_into_string(&config, &window, &cs).unwrap_or_default();

@@ -87,6 +87,15 @@ pub enum OpError {
         .0.map(|d| format!(" (determinant {})", super::number::fmt_num(d, 6))).unwrap_or_default()
     )]
     Singular(Option<f64>),
+    /// A matrix whose reciprocal condition number is below the machine
+    /// epsilon: singular to working precision.
+    #[error(
+        "the matrix is singular to working precision (reciprocal condition number {0:.1e}); it has no inverse"
+    )]
+    SingularToPrecision(f64),
+    /// An inverse whose entries exceed the largest number.
+    #[error("the inverse overflows: its entries would exceed 1.8e308")]
+    InverseOverflow,
     /// The inverse of a matrix that is not square (rows, columns).
     #[error("only square matrices have inverses, not {0}×{1}")]
     InverseOfNonSquare(usize, usize),

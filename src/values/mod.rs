@@ -17,6 +17,7 @@ pub mod error;
 pub mod exact;
 pub mod format;
 pub mod formula;
+pub mod linalg;
 pub mod num;
 pub mod number;
 pub mod ops;

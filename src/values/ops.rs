@@ -93,7 +93,7 @@ pub fn mul(l: &Value, r: &Value, kind: &Kind) -> Result<Value, OpError> {
     }
     check_size(lm.nrows(), rm.ncols())?;
     check_work(lm.nrows(), lm.ncols(), rm.ncols(), 1)?;
-    let product = &*lm.to_dmatrix() * &*rm.to_dmatrix();
+    let product = product(&lm.to_dmatrix(), &rm.to_dmatrix())?;
     Ok(out(kind, Num::from_dmatrix(product)))
 }
 
@@ -130,12 +130,36 @@ pub fn cube(n: usize) -> u128 {
     n * n * n
 }
 
-/// Refuses results larger than [`MAX_ELEMENTS`].
+/// Refuses results larger than [`MAX_ELEMENTS`], or than the evaluation
+/// budget lets the statement hold ([`crate::budget::room`]).
 pub fn check_size(r: usize, c: usize) -> Result<(), OpError> {
     if r > MAX_DIM || c > MAX_DIM || r.saturating_mul(c) > MAX_ELEMENTS {
         return Err(OpError::TooLarge { rows: r, cols: c });
     }
-    Ok(())
+    crate::budget::room((r * c) as u64).map_err(|stop| OpError::Message(stop.to_string()))
+}
+
+/// The multiply-adds of one block of a large product: a few milliseconds.
+const BLOCK_WORK: usize = 1 << 22;
+
+/// A B for general matrices; a large product goes by blocks of columns,
+/// asking the evaluation budget ([`crate::budget`]) between blocks, so an
+/// interrupt or a deadline stops it within milliseconds.
+pub fn product(a: &DMatrix<f64>, b: &DMatrix<f64>) -> Result<DMatrix<f64>, OpError> {
+    let per_column = a.nrows().saturating_mul(a.ncols()).max(1);
+    if per_column.saturating_mul(b.ncols()) <= BLOCK_WORK {
+        return Ok(a * b);
+    }
+    let width = (BLOCK_WORK / per_column).max(1);
+    let mut out = DMatrix::zeros(a.nrows(), b.ncols());
+    let mut j = 0;
+    while j < b.ncols() {
+        crate::budget::check().map_err(|stop| OpError::Message(stop.to_string()))?;
+        let w = width.min(b.ncols() - j);
+        out.columns_mut(j, w).copy_from(&(a * b.columns(j, w)));
+        j += w;
+    }
+    Ok(out)
 }
 
 /// `l + r` or `l - r`.
@@ -204,7 +228,7 @@ pub fn pow(b: &Value, e: f64, kind: &Kind) -> Result<Value, OpError> {
         return Err(OpError::ExponentNotWhole(e));
     }
     let mut base = if e < 0.0 {
-        num_inverse(bk, bm)?.into_dmatrix()
+        num_inverse(bk, bm)?.0.into_dmatrix()
     } else {
         bm.to_dmatrix().into_owned()
     };
@@ -215,11 +239,11 @@ pub fn pow(b: &Value, e: f64, kind: &Kind) -> Result<Value, OpError> {
     let mut acc = DMatrix::identity(bm.nrows(), bm.ncols());
     while n > 0 {
         if n & 1 == 1 {
-            acc = &acc * &base;
+            acc = product(&acc, &base)?;
         }
         n >>= 1;
         if n > 0 {
-            base = &base * &base;
+            base = product(&base, &base)?;
         }
     }
     // A power of a plain matrix is a plain matrix, even when it happens to
@@ -238,47 +262,51 @@ pub fn pow(b: &Value, e: f64, kind: &Kind) -> Result<Value, OpError> {
 }
 
 /// The inverse: closed forms for group elements (Prop. 3.3, (3.64)),
-/// LU for other square matrices, an error for singular ones.
+/// LU with partial pivoting for other square matrices, an error for
+/// singular ones (judged by conditioning, [`super::linalg`]).
 pub fn inverse(v: &Value) -> Result<Value, OpError> {
+    inverse_conditioned(v).map(|(v, _)| v)
+}
+
+/// [`inverse`], with the reciprocal condition number of a plain matrix's
+/// inverse (see [`super::linalg`]); None for closed forms and scalars.
+pub fn inverse_conditioned(v: &Value) -> Result<(Value, Option<f64>), OpError> {
     let (k, m) = num(v)?;
     if *k == Kind::Scalar {
         if m[0] == 0.0 {
             return Err(OpError::InverseOfZero);
         }
-        return Ok(Value::scalar(1.0 / m[0]));
+        return Ok((Value::scalar(1.0 / m[0]), None));
     }
-    Ok(out(k, num_inverse(k, m)?))
+    let (inv, rcond) = num_inverse(k, m)?;
+    Ok((out(k, inv), rcond))
 }
 
-fn num_inverse(k: &Kind, m: &Num) -> Result<Num, OpError> {
-    Ok(match (k, m) {
-        // Closed forms: Rᵀ (Prop. 3.3), (3.64) for transforms.
-        (Kind::SO3, Num::M3(r)) => Num::M3(*SO3::assume(*r).inverse().matrix()),
-        (Kind::SO3 | Kind::SO2, _) => m.transpose(),
-        (Kind::SE3, Num::M4(t)) => Num::M4(*SE3::assume(*t).inverse().matrix()),
-        (Kind::SE2, Num::M3(t)) => Num::M3(*SE2::assume(*t).inverse().matrix()),
-        _ if m.is_square() => {
-            let r = m.nrows();
-            check_cost(cube(r), || format!("the inverse of a {r}×{r} matrix"))?;
-            if m.iter().any(|x| !x.is_finite()) {
-                return Err(OpError::InverseNotFinite);
+/// The inverse: a closed form for a group element, else LU (with its
+/// reciprocal condition number).
+fn num_inverse(k: &Kind, m: &Num) -> Result<(Num, Option<f64>), OpError> {
+    Ok((
+        match (k, m) {
+            // Closed forms: Rᵀ (Prop. 3.3), (3.64) for transforms.
+            (Kind::SO3, Num::M3(r)) => Num::M3(*SO3::assume(*r).inverse().matrix()),
+            (Kind::SO3 | Kind::SO2, _) => m.transpose(),
+            (Kind::SE3, Num::M4(t)) => Num::M4(*SE3::assume(*t).inverse().matrix()),
+            (Kind::SE2, Num::M3(t)) => Num::M3(*SE2::assume(*t).inverse().matrix()),
+            _ if m.is_square() => {
+                let r = m.nrows();
+                check_cost(cube(r), || format!("the inverse of a {r}×{r} matrix"))?;
+                if m.iter().any(|x| !x.is_finite()) {
+                    return Err(OpError::InverseNotFinite);
+                }
+                let inv = super::linalg::inverse(&m.to_dmatrix())?;
+                return Ok((Num::from_dmatrix(inv.m), Some(inv.rcond)));
             }
-            let m = m.to_dmatrix();
-            let det = m.determinant();
-            let scale = m.abs().max().max(f64::MIN_POSITIVE).powi(r as i32);
-            if det == 0.0 || !det.is_finite() || det.abs() <= 1e-14 * scale {
-                return Err(OpError::Singular(Some(det)));
+            _ => {
+                return Err(OpError::InverseOfNonSquare(m.nrows(), m.ncols()));
             }
-            Num::from_dmatrix(
-                m.into_owned()
-                    .try_inverse()
-                    .ok_or(OpError::Singular(None))?,
-            )
-        }
-        _ => {
-            return Err(OpError::InverseOfNonSquare(m.nrows(), m.ncols()));
-        }
-    })
+        },
+        None,
+    ))
 }
 
 /// `x.T`.
