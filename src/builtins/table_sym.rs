@@ -392,20 +392,17 @@ fn exp(m: &Mat, kind: &Kind) -> Out {
     }
 }
 
-/// `diff(x, t)`: entrywise by the chain rule. By a function of time's
-/// variable (or a name not bound), every θ(t) gives θ̇; by a plain symbol,
-/// the partial derivative.
+/// `diff(x, t)`: entrywise by the chain rule. By a plain symbol (the time
+/// variable, or a name not bound) the total derivative, every θ(t) giving
+/// θ̇; by a function of time q or its rate q̇, the partial derivative
+/// ([`Wrt::by`]).
 fn diff(v: &Value, x: &Mat, by: &Mat, kind: &Kind) -> Result<Value, String> {
     let sym = match by.data.as_slice() {
         [e] => as_symbol(e),
         _ => None,
     }
     .ok_or("diff(x, t) differentiates by a symbol: diff(R, t), diff(x, theta)")?;
-    let wrt = if sym.timed {
-        Wrt::Time(sym)
-    } else {
-        Wrt::Sym(sym)
-    };
+    let wrt = Wrt::by(sym);
     let kind = match kind {
         Kind::Unknown => v.kind(),
         k => *k,

@@ -251,7 +251,7 @@ impl<'a> Interp<'a> {
                     // A scalar is computed with (§7); other kinds stay names.
                     let val = if kind == Kind::Scalar {
                         let s = match time {
-                            Some(_) => crate::sym::Symbol::timed(&n.name),
+                            Some(t) => crate::sym::Symbol::of_time(&n.name, &t.name),
                             None => crate::sym::Symbol::new(&n.name),
                         };
                         super::formula::scalar(crate::sym::Expr::symbol(s))
@@ -510,9 +510,10 @@ impl Interp<'_> {
             )
             .with_help("given theta(t) : scalar"));
         }
-        let bound = self.env.get(t.name).is_some_and(|b| !b.symbolic);
-        if !bound {
-            let time = crate::sym::Expr::symbol(crate::sym::Symbol::timed(&t.name));
+        // The time variable is a plain symbol: declaring it again later
+        // (`given t : scalar`) changes nothing (§7).
+        if self.env.get(t.name).is_none() {
+            let time = crate::sym::Expr::symbol(crate::sym::Symbol::new(&t.name));
             self.env.set(
                 t.name,
                 Binding {

@@ -13,6 +13,7 @@ use super::ops::Sel;
 use super::value::Sym;
 use super::value::Value;
 use crate::check::ty::Kind;
+use crate::sym::Symbol;
 use crate::syntax::ast::BinOp;
 
 pub(crate) use super::apply::to_sym;
@@ -32,17 +33,45 @@ pub fn current(b: &Binding, env: &Env) -> Option<Value> {
     }
 }
 
-/// A formula with the numbers bound since substituted (numeric when all
-/// its symbols have numbers).
+/// A formula with the numbers bound since substituted. Once every symbol
+/// has a number the value *is* a number (§7): each entry is evaluated at
+/// those numbers to machine precision (never left as calls of numbers such
+/// as `cos((1/9) π)`), typed by what it is — the formula's kind where the
+/// canonical form earned it exactly (a rotation, a scalar, a vector), else
+/// what the numbers are, as for numbers typed first (π alone is a number
+/// too: it is no symbol). Partly bound, the
+/// numbers are put in ([`crate::sym::Expr::at_numbers`]).
 fn formula(kind: &Kind, m: &crate::sym::Mat, env: &Env) -> Value {
-    let lookup = |name: &str| match env.get(name) {
+    let lookup = |s: &Symbol| match env.get(&*super::formula::binding_name(s)) {
         Some(Binding {
             val: Some(v @ Value::Num { .. }),
             ..
         }) => v.as_scalar(),
         _ => None,
     };
-    super::formula::substitute(kind, m, &lookup)
+    let mut syms = Vec::new();
+    m.data.iter().for_each(|e| e.symbols(&mut syms));
+    if !syms.iter().any(|s| lookup(s).is_some()) && !syms.is_empty() {
+        return super::formula::make(kind, m.clone());
+    }
+    if syms.iter().all(|s| lookup(s).is_some()) {
+        let xs: Option<Vec<f64>> = m.data.iter().map(|e| e.eval(&lookup)).collect();
+        if let Some(xs) = xs {
+            return numeric(kind, m.rows, m.cols, &xs);
+        }
+    }
+    super::formula::make(kind, m.map(|e| e.at_numbers(&lookup)))
+}
+
+/// The numbers of a fully bound formula with their kind: the formula's
+/// when it is a decided kind, else classified from the numbers.
+fn numeric(kind: &Kind, rows: usize, cols: usize, xs: &[f64]) -> Value {
+    let m: crate::values::num::Num = nalgebra::DMatrix::from_row_slice(rows, cols, xs).into();
+    let kind = match kind {
+        Kind::Unknown | Kind::Matrix(..) | Kind::Vector(None) => classify(&m),
+        k => *k,
+    };
+    Value::Num { kind, m }
 }
 
 /// `v` with the checker's kind, unless that is only a shape (a plain

@@ -20,7 +20,7 @@ impl Interp<'_> {
             return None;
         };
         let mut s = m.data.first().and_then(crate::sym::expr::as_symbol)?;
-        if !s.timed {
+        if !s.is_timed() {
             return None;
         }
         for _ in 0..dots {
@@ -33,14 +33,19 @@ impl Interp<'_> {
         ))
     }
 
-    /// `diff(x, t)` with `t` a name with no value: the time variable.
+    /// `diff(x, t)` with `t` a name with no value (and no rate `q'` of a
+    /// function of time): the time variable.
     pub(super) fn time_variable(&self, func: &str, i: usize, arg: &Ast) -> Option<Typed> {
         match (i, func, &arg.kind) {
-            (1, "diff", ExprKind::Var(t)) if self.env.get(t).is_none() => Some(Typed::new(
-                Ty::scalar(),
-                self.running()
-                    .then(|| super::formula::scalar(Expr::symbol(Symbol::timed(t)))),
-            )),
+            (1, "diff", ExprKind::Var(t))
+                if self.env.get(t).is_none() && self.derivative_symbol(t).is_none() =>
+            {
+                Some(Typed::new(
+                    Ty::scalar(),
+                    self.running()
+                        .then(|| super::formula::scalar(Expr::symbol(Symbol::new(t)))),
+                ))
+            }
             _ => None,
         }
     }

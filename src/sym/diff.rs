@@ -9,6 +9,19 @@ use super::coef::Coef;
 use super::expr::{Call, Expr, Func, Mono, Symbol, Var, Wrt};
 use num_traits::{One, Zero};
 
+impl Wrt {
+    /// The derivative a symbol asks for: the total one by a plain symbol
+    /// (which is the partial one when nothing is a function of it), the
+    /// partial one by a function of time or its rate.
+    pub fn by(s: Symbol) -> Wrt {
+        if s.is_timed() {
+            Wrt::Sym(s)
+        } else {
+            Wrt::Time(s)
+        }
+    }
+}
+
 impl Expr {
     /// The derivative (chain rule through every variable).
     pub fn diff(&self, wrt: &Wrt) -> Expr {
@@ -34,11 +47,19 @@ impl Expr {
     }
 }
 
+/// ∂s/∂x or ds/dt of one symbol: 1 for the symbol itself; by a plain
+/// symbol t, θ̇ for a function of t (the chain rule); 0 otherwise — a
+/// partial derivative by q or q̇ holds every other coordinate and rate
+/// fixed, and q and q̇ are independent (LANGUAGE.md §7).
+/// (The symbol decides which: [`Wrt::by`].)
 fn symbol_diff(s: &Symbol, wrt: &Wrt) -> Expr {
-    match wrt {
-        Wrt::Sym(x) | Wrt::Time(x) if x == s => Expr::one(),
-        Wrt::Time(_) if s.timed => Expr::symbol(s.dot()),
-        _ => Expr::zero(),
+    let (Wrt::Time(x) | Wrt::Sym(x)) = wrt;
+    if x == s {
+        Expr::one()
+    } else if !x.is_timed() && s.time.as_deref() == Some(&*x.name) {
+        Expr::symbol(s.dot())
+    } else {
+        Expr::zero()
     }
 }
 
@@ -58,7 +79,12 @@ fn call_diff(c: &Call, wrt: &Wrt) -> Expr {
     let x = &c.args[0];
     let dx = x.diff(wrt);
     let me = Expr::var(Var::Call(Arc::new(c.clone())));
-    let recip = |e: &Expr| e.recip().unwrap_or_default();
+    // 1/e, as a plain call where the exact reciprocal does not fit (never
+    // 0: a derivative that cannot be formed exactly is still right).
+    let recip = |e: &Expr| {
+        e.recip()
+            .unwrap_or_else(|| Expr::call(Func::Recip, vec![e.clone()]))
+    };
     let one = Expr::one();
     let outer = match c.f {
         Func::Sin => Expr::cos(x),

@@ -62,6 +62,43 @@ impl Expr {
     }
 }
 
+impl Expr {
+    /// The expression with numbers for some of its symbols (LANGUAGE.md
+    /// §7, numbers bound later): a symbol becomes its number, exact where
+    /// [`Expr::num`] finds a closed form; an angle's z = e^{iθ} becomes
+    /// e^{iθ} exactly for a multiple of π/12 ([`Expr::expi`]), else the
+    /// complex number cos θ + i sin θ (never sin and cos kept as calls of
+    /// a number, whose reciprocals would not fold).
+    pub fn at_numbers(&self, by: &dyn Fn(&Symbol) -> Option<f64>) -> Expr {
+        let mut out = Expr::zero();
+        for (m, c) in &self.terms {
+            let mut t = Expr::constant(*c);
+            for (v, e) in m {
+                let f = match v {
+                    Var::Sym(s) => by(s).map_or_else(|| Expr::var(v.clone()), Expr::num),
+                    Var::Z(s) => match by(s) {
+                        Some(x) => Expr::expi(&Expr::num(x)).unwrap_or_else(|| {
+                            Expr::constant(Coef::Approx {
+                                re: x.cos(),
+                                im: x.sin(),
+                            })
+                        }),
+                        None => Expr::var(v.clone()),
+                    },
+                    Var::Pi => Expr::pi(),
+                    Var::Call(c) => {
+                        let args: Vec<Expr> = c.args.iter().map(|a| a.at_numbers(by)).collect();
+                        rebuild(c.f, &args)
+                    }
+                };
+                t = t.mul(&f.powi(i64::from(*e)).unwrap_or_default());
+            }
+            out = out.add(&t);
+        }
+        out
+    }
+}
+
 /// A call rebuilt through its constructor (so numbers fold).
 pub fn rebuild(f: Func, args: &[Expr]) -> Expr {
     let x = &args[0];
@@ -75,7 +112,11 @@ pub fn rebuild(f: Func, args: &[Expr]) -> Expr {
         Func::Abs => Expr::apply(f, x, f64::abs),
         Func::Exp => Expr::apply(f, x, f64::exp),
         Func::Sqrt => Expr::sqrt(x),
-        Func::Recip => x.recip().unwrap_or_else(|| Expr::num(f64::INFINITY)),
+        // 1/0 is inf; a reciprocal whose exact form does not fit stays a call
+        Func::Recip if x.is_zero() => Expr::num(f64::INFINITY),
+        Func::Recip => x
+            .recip()
+            .unwrap_or_else(|| Expr::call(Func::Recip, vec![x.clone()])),
         Func::Atan2 => Expr::atan2(x, &args[1]),
     }
 }

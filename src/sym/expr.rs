@@ -16,11 +16,12 @@ use super::coef::{Coef, Rat};
 use num_traits::{One, Zero};
 
 /// A real symbol: a `given` name, possibly a function of time (`given
-/// theta(t) : scalar`), differentiated `dots` times (θ̇ has one).
+/// theta(t) : scalar`: `time` names its variable t), differentiated `dots`
+/// times (θ̇ has one). The time variable t itself is a plain symbol.
 #[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub struct Symbol {
     pub name: Arc<str>,
-    pub timed: bool,
+    pub time: Option<Arc<str>>,
     pub dots: u8,
 }
 
@@ -29,16 +30,24 @@ impl Symbol {
     pub fn new(name: &str) -> Symbol {
         Symbol {
             name: name.into(),
-            timed: false,
+            time: None,
             dots: 0,
         }
     }
-    /// A function of time, θ(t).
+    /// A function of time, θ(t), of the variable `t`.
     pub fn timed(name: &str) -> Symbol {
+        Symbol::of_time(name, "t")
+    }
+    /// A function of the time variable `time`, θ(time).
+    pub fn of_time(name: &str, time: &str) -> Symbol {
         Symbol {
-            timed: true,
+            time: Some(time.into()),
             ..Symbol::new(name)
         }
+    }
+    /// True for a function of time (or one of its derivatives).
+    pub fn is_timed(&self) -> bool {
+        self.time.is_some()
     }
     /// The time derivative, θ̇.
     pub fn dot(&self) -> Symbol {
@@ -116,8 +125,11 @@ pub struct Expr {
 /// The deepest nesting of calls kept (see [`Expr::depth`]).
 pub const MAX_DEPTH: usize = 100;
 
-/// What to differentiate by: the time variable t (t ↦ 1, θ(t) ↦ θ̇) or
-/// a symbol (a partial derivative).
+/// What to differentiate by (LANGUAGE.md §7): a plain symbol t, by the
+/// chain rule (t ↦ 1, θ(t) ↦ θ̇ for every function of t: the total
+/// derivative), or a function of time or one of its rates, q or q̇ (the
+/// partial derivative holding the other coordinates and rates fixed, as in
+/// a Lagrangian).
 #[derive(Debug, Clone, PartialEq)]
 pub enum Wrt {
     Time(Symbol),
@@ -571,7 +583,7 @@ mod tests {
     #[test]
     fn time_derivative_by_the_chain_rule() {
         let th = Expr::symbol(Symbol::timed("theta"));
-        let d = Expr::sin(&th).diff(&Wrt::Time(Symbol::timed("t")));
+        let d = Expr::sin(&th).diff(&Wrt::Time(Symbol::new("t")));
         let want = Expr::cos(&th).mul(&Expr::symbol(Symbol::timed("theta").dot()));
         assert_eq!(d, want);
     }

@@ -1,0 +1,670 @@
+//! The symbolic engine checked against numbers (LANGUAGE.md §7, issue 21):
+//! fixed regressions for the wrong answers found so far, and a
+//! differential test — random expressions over the engine's operations,
+//! written as chasles source, evaluated by the language and by an
+//! independent numeric evaluation of the same tree.
+
+use chasles::eval::env::Mode;
+use chasles::eval::value::Value;
+use chasles::session::{Session, Settings};
+
+/// Runs `src` in a fresh session; the session and the number of errors.
+fn session(src: &str) -> (Session, usize, String) {
+    let mut s = Session::new(Settings::default());
+    let (_, err, n) = s.run_to_strings("t.chs", src, Mode::Run, false);
+    (s, n, err)
+}
+
+/// The number bound to `name`, if it is one.
+fn number(s: &Session, name: &str) -> Option<f64> {
+    match s.env.get(name).and_then(|b| b.val.as_ref()) {
+        Some(v @ Value::Num { .. }) => v.as_scalar(),
+        _ => None,
+    }
+}
+
+/// The text `src` prints (failing on an error).
+fn prints(src: &str) -> String {
+    let mut s = Session::new(Settings::default());
+    let (out, err, n) = s.run_to_strings("t.chs", src, Mode::Run, false);
+    assert_eq!(n, 0, "{src}\n{err}");
+    out.trim_end().to_string()
+}
+
+/// The last line `src` prints.
+fn last(src: &str) -> String {
+    prints(src).lines().last().unwrap_or_default().to_string()
+}
+
+// ------------------------------------------------------- fixed regressions
+
+/// Issue 21, item 1: numbers bound later at angles outside the 15° family
+/// give the number, as if typed first.
+#[test]
+fn numbers_bound_later_are_numbers() {
+    for (angle, want) in [
+        ("20 deg", 20f64.to_radians().cos()),
+        ("10 deg", 10f64.to_radians().cos()),
+        ("36 deg", 36f64.to_radians().cos()),
+        ("0.1745", 0.1745f64.cos()),
+    ] {
+        let src = format!("given a : scalar\nc = cos(a)\na = {angle}\nx = c");
+        let (s, n, err) = session(&src);
+        assert_eq!(n, 0, "{err}");
+        let x = number(&s, "x").unwrap_or_else(|| panic!("{src}: not a number"));
+        assert!((x - want).abs() < 1e-14, "{src}: {x} ≠ {want}");
+    }
+    // a rotation is still a rotation, a plain matrix is not called one
+    let out = prints("given a : scalar\nR = Rotz(a)\na = 20 deg\nR");
+    assert!(out.ends_with(": SO(3)"), "{out}");
+    let out = prints("given a : scalar\nM = [cos(a), 0; 0, 2]\na = 0.3\nM");
+    assert!(!out.contains("SO(2)") && out.contains("0.9553"), "{out}");
+    // partly bound: the other symbol stays, the number is right
+    let (s, n, err) =
+        session("given a, b : scalar\nc = cos(a + b)\na = 20 deg\nd = c\nb = 0.5\nx = d");
+    assert_eq!(n, 0, "{err}");
+    let x = number(&s, "x").expect("a number");
+    assert!((x - (20f64.to_radians() + 0.5).cos()).abs() < 1e-14);
+}
+
+/// Issue 21, item 3: partial derivatives by a function of time or its
+/// rate hold the other coordinates and rates fixed; by t, the chain rule.
+#[test]
+fn partial_derivatives_by_coordinates_and_rates() {
+    let pre = "given q1(t), q2(t) : scalar\n";
+    assert_eq!(last(&format!("{pre}diff(q1*q2, q1)")), "q2");
+    assert_eq!(last(&format!("{pre}diff(q1', q1')")), "1");
+    assert_eq!(last(&format!("{pre}diff(q1'^2 q2, q1')")), "2 q̇1 q2");
+    assert_eq!(last(&format!("{pre}diff(q1*q2, t)")), "q1 q̇2 + q̇1 q2");
+    assert_eq!(last(&format!("{pre}diff(sin(q1) q2', q1')")), "0");
+    let lagrangian = "given q(t), m, g : scalar\nL = m q'^2/2 + m g cos(q)\n";
+    assert_eq!(last(&format!("{lagrangian}diff(L, q')")), "m q̇");
+    assert_eq!(last(&format!("{lagrangian}diff(L, q)")), "-g m sin(q)");
+    assert_eq!(last(&format!("{lagrangian}diff(diff(L, q'), t)")), "m q̈");
+    // and the bound values: ∂L/∂q̇ at m = 2, q̇ = 3
+    let (s, n, err) = session(&format!(
+        "{lagrangian}p = diff(L, q')\nm = 2\nq' = 3\nx = p"
+    ));
+    assert_eq!(n, 0, "{err}");
+    assert_eq!(number(&s, "x"), Some(6.0));
+}
+
+/// Issue 21, item 4: declaring the time variable (or anything) later
+/// changes nothing declared before.
+#[test]
+fn declaring_later_changes_nothing_before() {
+    let out = last("given theta(t) : scalar\ngiven t : scalar\ndiff(sin(theta), t)");
+    assert_eq!(out, "θ̇ cos(theta)");
+    let out = last("given t : scalar\ngiven theta(t) : scalar\ndiff(t sin(theta), t)");
+    assert_eq!(out, "sin(theta) + t θ̇ cos(theta)");
+    let out = last("given theta(t) : scalar\nx = theta^2\ngiven theta : scalar\ndiff(x, t)");
+    assert_eq!(out, "2 theta θ̇");
+}
+
+// ------------------------------------------------------ the differential test
+
+use proptest::prelude::*;
+use proptest::test_runner::{Config, TestRunner};
+use std::f64::consts::PI;
+
+/// Plain symbols.
+const SYMS: [&str; 3] = ["a", "b", "c"];
+/// Functions of time (of `t`).
+const QS: [&str; 2] = ["q1", "q2"];
+
+/// What a derivative is taken by.
+#[derive(Debug, Clone, Copy)]
+enum By {
+    /// The time variable t: the total derivative.
+    Time,
+    /// A plain symbol.
+    Sym(usize),
+    /// A function of time q (`dots` 0) or its rate q̇ (`dots` 1): the
+    /// partial derivative.
+    Q(usize, u8),
+}
+
+/// A random expression over the engine's operations. Families the engine
+/// gets wrong in another engineer's territory are left out of the
+/// generator for now (see [`expr`]).
+#[derive(Debug, Clone)]
+enum T {
+    Sym(usize),
+    Time,
+    /// q_i, q̇_i, q̈_i.
+    Q(usize, u8),
+    Int(i64),
+    /// A decimal as typed, `m / 10^k`.
+    Dec(i64, u32),
+    Pi,
+    Neg(Box<T>),
+    Add(Box<T>, Box<T>),
+    Sub(Box<T>, Box<T>),
+    Mul(Box<T>, Box<T>),
+    Div(Box<T>, Box<T>),
+    Recip(Box<T>),
+    Pow(Box<T>, i32),
+    Sqrt(Box<T>),
+    /// sin (true) or cos of an integer combination of a, b, t and q1, plus
+    /// a multiple p/d of π (d ≤ 12), plus a decimal offset.
+    Angle(bool, [i8; 4], (i8, u8), Option<(i64, u32)>),
+    Sin(Box<T>),
+    Cos(Box<T>),
+    Tan(Box<T>),
+    Asin(Box<T>),
+    Acos(Box<T>),
+    Atan(Box<T>),
+    Atan2(Box<T>, Box<T>),
+    Diff(Box<T>, By),
+}
+
+/// A point: a, b, c, t, and each q_i(τ) = Σ c_k τ^k / k! (so that q̇, q̈
+/// are its derivatives at τ = t).
+#[derive(Debug, Clone)]
+struct Point {
+    syms: [f64; 3],
+    t: f64,
+    q: [[f64; 5]; 2],
+}
+
+/// The values the leaves read: the point with its rates at time `t`, and
+/// any overrides a finite difference makes.
+#[derive(Debug, Clone)]
+struct At {
+    syms: [f64; 3],
+    t: f64,
+    /// q_i^{(k)} for k = 0..3.
+    q: [[f64; 4]; 2],
+    /// Set where the value is on a discontinuity (atan2 on its branch
+    /// cut), where no rounding-free comparison is possible.
+    ill: std::cell::Cell<bool>,
+}
+
+impl Point {
+    fn at(&self, t: f64) -> At {
+        let mut q = [[0.0; 4]; 2];
+        for (i, c) in self.q.iter().enumerate() {
+            for (k, out) in q[i].iter_mut().enumerate() {
+                // d^k/dτ^k Σ c_j τ^j / j! = Σ_{j ≥ k} c_j τ^{j−k} / (j−k)!
+                let mut fact = 1.0;
+                for (j, cj) in c.iter().enumerate().skip(k) {
+                    if j > k {
+                        fact *= (j - k) as f64;
+                    }
+                    *out += cj * t.powi((j - k) as i32) / fact;
+                }
+            }
+        }
+        At {
+            syms: self.syms,
+            t,
+            q,
+            ill: std::cell::Cell::new(false),
+        }
+    }
+}
+
+fn dec(m: i64, k: u32) -> f64 {
+    m as f64 / 10f64.powi(k as i32)
+}
+
+fn dec_src(m: i64, k: u32) -> String {
+    let x = dec(m, k);
+    format!("{x:.prec$}", prec = k as usize)
+}
+
+impl T {
+    /// The value, evaluated directly in f64 (independent of the engine),
+    /// and an estimate of its absolute rounding error in units of the
+    /// machine epsilon — the size of the terms an expanded form adds up
+    /// (products of sums expand; `(a − b)^9` at a ≈ b cancels), carried
+    /// through the functions by their derivatives.
+    fn eval(&self, at: &At) -> (f64, f64) {
+        let un = |x: &T, f: &dyn Fn(f64) -> f64, df: &dyn Fn(f64) -> f64| {
+            let (v, e) = x.eval(at);
+            let y = f(v);
+            (y, y.abs() + e * df(v).abs())
+        };
+        match self {
+            T::Sym(i) => (at.syms[*i], at.syms[*i].abs()),
+            T::Time => (at.t, at.t.abs()),
+            T::Q(i, d) => {
+                let v = at.q[*i][*d as usize];
+                (v, v.abs())
+            }
+            T::Int(n) => (*n as f64, 0.0),
+            T::Dec(m, k) => (dec(*m, *k), dec(*m, *k).abs()),
+            T::Pi => (PI, PI),
+            T::Neg(x) => {
+                let (v, e) = x.eval(at);
+                (-v, e)
+            }
+            T::Add(x, y) | T::Sub(x, y) => {
+                let ((a, ea), (b, eb)) = (x.eval(at), y.eval(at));
+                let v = if matches!(self, T::Add(..)) {
+                    a + b
+                } else {
+                    a - b
+                };
+                (v, ea + eb)
+            }
+            T::Mul(x, y) => {
+                let ((a, ea), (b, eb)) = (x.eval(at), y.eval(at));
+                (a * b, ea * eb.max(b.abs()) + eb * ea.max(a.abs()))
+            }
+            T::Div(x, y) => {
+                let ((a, ea), (b, eb)) = (x.eval(at), y.eval(at));
+                let v = a / b;
+                (v, (ea + v.abs() * eb) / b.abs() + v.abs())
+            }
+            T::Recip(x) => un(x, &|v| 1.0 / v, &|v| 1.0 / (v * v)),
+            T::Pow(x, n) => {
+                let (v, e) = x.eval(at);
+                let y = v.powi(*n);
+                let grow = if *n >= 0 {
+                    e.max(v.abs()).powi(*n)
+                } else {
+                    y.abs() * (1.0 + (*n as f64).abs() * e / v.abs())
+                };
+                (y, grow + y.abs())
+            }
+            T::Sqrt(x) => un(x, &f64::sqrt, &|v| 0.5 / v.sqrt()),
+            T::Angle(sin, k, (p, d), off) => {
+                let (arg, _) = self.angle_arg(*k, *p, *d, *off, at);
+                let v = if *sin { arg.sin() } else { arg.cos() };
+                (v, 1.0 + arg.abs())
+            }
+            T::Sin(x) => un(x, &f64::sin, &f64::cos),
+            T::Cos(x) => un(x, &f64::cos, &f64::sin),
+            T::Tan(x) => un(x, &f64::tan, &|v| 1.0 + v.tan().powi(2)),
+            T::Asin(x) => un(x, &f64::asin, &|v| 1.0 / (1.0 - v * v).sqrt()),
+            T::Acos(x) => un(x, &f64::acos, &|v| 1.0 / (1.0 - v * v).sqrt()),
+            T::Atan(x) => un(x, &f64::atan, &|v| 1.0 / (1.0 + v * v)),
+            T::Atan2(y, x) => {
+                let ((b, eb), (a, ea)) = (y.eval(at), x.eval(at));
+                // an angle moves by at most the point's error over its radius
+                let e = 1.0 + (ea + eb) / (a * a + b * b).sqrt();
+                if a < 0.0 && b.abs() <= 1e-9 * (1.0 + eb) {
+                    at.ill.set(true);
+                }
+                (b.atan2(a), e)
+            }
+            T::Diff(x, by) => x.derivative(*by, at),
+        }
+    }
+
+    fn angle_arg(&self, k: [i8; 4], p: i8, d: u8, off: Option<(i64, u32)>, at: &At) -> (f64, ()) {
+        let vars = [at.syms[0], at.syms[1], at.t, at.q[0][0]];
+        let mut arg = PI * f64::from(p) / f64::from(d);
+        arg += k
+            .iter()
+            .zip(vars)
+            .map(|(c, v)| f64::from(*c) * v)
+            .sum::<f64>();
+        if let Some((m, e)) = off {
+            arg += dec(m, e);
+        }
+        (arg, ())
+    }
+
+    /// The derivative by central differences (Richardson-extrapolated),
+    /// with its error scale; NaN where two step sizes disagree (near a
+    /// singularity, where no finite difference is trustworthy).
+    fn derivative(&self, by: By, at: &At) -> (f64, f64) {
+        let f = |h: f64| -> (f64, f64) {
+            let mut p = at.clone();
+            match by {
+                By::Sym(i) => p.syms[i] += h,
+                By::Q(i, d) => p.q[i][d as usize] += h,
+                By::Time => {
+                    p.t += h;
+                    // q^{(k)}(t + h) by Taylor from the rates at t
+                    for i in 0..2 {
+                        let q = at.q[i];
+                        for k in 0..4 {
+                            let mut s = 0.0;
+                            let mut fact = 1.0;
+                            for (j, qj) in q.iter().enumerate().skip(k) {
+                                if j > k {
+                                    fact *= (j - k) as f64;
+                                }
+                                s += qj * h.powi((j - k) as i32) / fact;
+                            }
+                            p.q[i][k] = s;
+                        }
+                    }
+                }
+            }
+            let v = self.eval(&p);
+            if p.ill.get() {
+                at.ill.set(true);
+            }
+            v
+        };
+        let d = |h: f64| (f(h).0 - f(-h).0) / (2.0 * h);
+        let h = 1e-3;
+        let (d1, d2) = (d(h), d(h / 2.0));
+        let rich = (4.0 * d2 - d1) / 3.0;
+        let (_, e) = f(0.0);
+        if (d1 - d2).abs() > 1e-3 * (1.0 + rich.abs()) {
+            return (f64::NAN, e);
+        }
+        (rich, e.max(rich.abs()))
+    }
+
+    /// True when a derivative is taken somewhere (the engine's answer is
+    /// then checked against finite differences, looser).
+    fn has_diff(&self) -> bool {
+        match self {
+            T::Diff(..) => true,
+            T::Neg(x)
+            | T::Recip(x)
+            | T::Pow(x, _)
+            | T::Sqrt(x)
+            | T::Sin(x)
+            | T::Cos(x)
+            | T::Tan(x)
+            | T::Asin(x)
+            | T::Acos(x)
+            | T::Atan(x) => x.has_diff(),
+            T::Add(x, y) | T::Sub(x, y) | T::Mul(x, y) | T::Div(x, y) | T::Atan2(x, y) => {
+                x.has_diff() || y.has_diff()
+            }
+            _ => false,
+        }
+    }
+
+    /// The expression as chasles source, fully parenthesized.
+    fn source(&self) -> String {
+        let un = |f: &str, x: &T| format!("{f}({})", x.source());
+        match self {
+            T::Sym(i) => SYMS[*i].into(),
+            T::Time => "t".into(),
+            T::Q(i, d) => format!("{}{}", QS[*i], "'".repeat(*d as usize)),
+            T::Int(n) => format!("({n})"),
+            T::Dec(m, k) => format!("({})", dec_src(*m, *k)),
+            T::Pi => "pi".into(),
+            T::Neg(x) => format!("(-{})", x.source()),
+            T::Add(x, y) => format!("({} + {})", x.source(), y.source()),
+            T::Sub(x, y) => format!("({} - {})", x.source(), y.source()),
+            T::Mul(x, y) => format!("({} * {})", x.source(), y.source()),
+            T::Div(x, y) => format!("({} / {})", x.source(), y.source()),
+            T::Recip(x) => format!("(1 / {})", x.source()),
+            T::Pow(x, n) => format!("({}^({n}))", x.source()),
+            T::Sqrt(x) => un("sqrt", x),
+            T::Angle(sin, k, (p, d), off) => {
+                let names = ["a", "b", "t", "q1"];
+                let mut arg: Vec<String> = k
+                    .iter()
+                    .zip(names)
+                    .filter(|(c, _)| **c != 0)
+                    .map(|(c, n)| format!("({c}) * {n}"))
+                    .collect();
+                arg.push(format!("({p}) * pi / {d}"));
+                if let Some((m, e)) = off {
+                    arg.push(format!("({})", dec_src(*m, *e)));
+                }
+                format!("{}({})", if *sin { "sin" } else { "cos" }, arg.join(" + "))
+            }
+            T::Sin(x) => un("sin", x),
+            T::Cos(x) => un("cos", x),
+            T::Tan(x) => un("tan", x),
+            T::Asin(x) => un("asin", x),
+            T::Acos(x) => un("acos", x),
+            T::Atan(x) => un("atan", x),
+            T::Atan2(y, x) => format!("atan2({}, {})", y.source(), x.source()),
+            T::Diff(x, by) => {
+                let by = match by {
+                    By::Time => "t".to_string(),
+                    By::Sym(i) => SYMS[*i].to_string(),
+                    By::Q(i, d) => format!("{}{}", QS[*i], "'".repeat(*d as usize)),
+                };
+                format!("diff({}, {by})", x.source())
+            }
+        }
+    }
+}
+
+fn b(x: T) -> Box<T> {
+    Box::new(x)
+}
+
+/// Families the engine still gets wrong in another engineer's territory
+/// (issue 21); left out of the generator until fixed there:
+/// - `RECIPROCALS` (`exact`, item 2): 1/x, quotients and negative powers of
+///   sums print 0, inf or NaN (`1/sin(t)`, `(cos(q1 - 10π/3))^-2`).
+const RECIPROCALS: bool = true;
+
+/// The generator (see the families left out above).
+fn expr() -> impl Strategy<Value = T> {
+    let offset = prop::option::of((-300..300i64, 1..4u32));
+    let leaf = prop_oneof![
+        (0..3usize).prop_map(T::Sym),
+        Just(T::Time),
+        (0..2usize, 0..2u8).prop_map(|(i, d)| T::Q(i, d)),
+        (-3..4i64).prop_map(T::Int),
+        (-999..1000i64, 1..4u32).prop_map(|(m, k)| T::Dec(m, k)),
+        Just(T::Pi),
+        (
+            any::<bool>(),
+            prop::array::uniform4(-2..3i8),
+            (-12..13i8, 1..13u8),
+            offset
+        )
+            .prop_map(|(s, k, pd, off)| T::Angle(s, k, pd, off)),
+    ];
+    let tree = leaf.prop_recursive(3, 16, 2, |inner| {
+        prop_oneof![
+            3 => (inner.clone(), inner.clone()).prop_map(|(x, y)| T::Add(b(x), b(y))),
+            2 => (inner.clone(), inner.clone()).prop_map(|(x, y)| T::Sub(b(x), b(y))),
+            3 => (inner.clone(), inner.clone()).prop_map(|(x, y)| T::Mul(b(x), b(y))),
+            1 => (inner.clone(), inner.clone()).prop_map(|(x, y)| if RECIPROCALS {
+                T::Div(b(x), b(y))
+            } else {
+                T::Mul(b(x), b(y))
+            }),
+            1 => inner.clone().prop_map(|x| if RECIPROCALS { T::Recip(b(x)) } else { T::Neg(b(x)) }),
+            1 => inner.clone().prop_map(|x| T::Neg(b(x))),
+            2 => (inner.clone(), if RECIPROCALS { -2..4i32 } else { 0..4i32 })
+                .prop_map(|(x, n)| T::Pow(b(x), n)),
+            1 => inner.clone().prop_map(|x| T::Sqrt(b(x))),
+            1 => inner.clone().prop_map(|x| T::Sin(b(x))),
+            1 => inner.clone().prop_map(|x| T::Cos(b(x))),
+            1 => inner.clone().prop_map(|x| T::Tan(b(x))),
+            1 => inner.clone().prop_map(|x| T::Asin(b(x))),
+            1 => inner.clone().prop_map(|x| T::Acos(b(x))),
+            1 => inner.clone().prop_map(|x| T::Atan(b(x))),
+            1 => (inner.clone(), inner).prop_map(|(y, x)| T::Atan2(b(y), b(x))),
+        ]
+    });
+    let by = prop_oneof![
+        Just(By::Time),
+        (0..3usize).prop_map(By::Sym),
+        (0..2usize, 0..2u8).prop_map(|(i, d)| By::Q(i, d)),
+    ];
+    prop_oneof![
+        3 => tree.clone(),
+        1 => (tree.clone(), by.clone()).prop_map(|(x, by)| T::Diff(b(x), by)),
+        1 => (tree.clone(), tree, by).prop_map(|(x, y, by)| T::Mul(b(x), b(T::Diff(b(y), by)))),
+    ]
+}
+
+fn point() -> impl Strategy<Value = Point> {
+    (
+        prop::array::uniform3(-2.0..2.0f64),
+        -1.0..1.0f64,
+        prop::array::uniform2(prop::array::uniform5(-1.5..1.5f64)),
+    )
+        .prop_map(|(syms, t, q)| Point { syms, t, q })
+}
+
+/// The statements binding the point's numbers (q̈ too, which derivatives
+/// by t bring in).
+fn bindings(at: &At) -> String {
+    let mut s = String::new();
+    for (n, v) in SYMS.iter().zip(at.syms) {
+        s += &format!("{n} = {v:?}\n");
+    }
+    s += &format!("t = {:?}\n", at.t);
+    for (i, q) in QS.iter().enumerate() {
+        for d in 0..3 {
+            s += &format!("{q}{} = {:?}\n", "'".repeat(d), at.q[i][d]);
+        }
+    }
+    s
+}
+
+/// What one case showed: checked, refused by the engine (an error), or
+/// skipped (the reference is not finite or not trustworthy there).
+#[derive(Debug, Default)]
+struct Tally {
+    checked: usize,
+    refused: usize,
+    skipped: usize,
+}
+
+/// Checks one expression at one point; Err describes a wrong answer.
+fn check(e: &T, p: &Point, tally: &mut Tally) -> Result<(), String> {
+    let at = p.at(p.t);
+    let (want, err) = e.eval(&at);
+    if at.ill.get() || !want.is_finite() || !err.is_finite() || want.abs() > 1e8 || err > 1e12 {
+        tally.skipped += 1;
+        return Ok(());
+    }
+    let src = e.source();
+    let decl = "given a, b, c : scalar\ngiven q1(t), q2(t) : scalar\n";
+    let later = format!("{decl}x = {src}\n{}y = x\n", bindings(&at));
+    let (s, n, msg) = session(&later);
+    if n > 0 {
+        // a refusal is an answer; a wrong value is not
+        if std::env::var_os("CHASLES_DIFF_VERBOSE").is_some() {
+            eprintln!("refused: {src}\n{msg}");
+        }
+        tally.refused += 1;
+        return Ok(());
+    }
+    let got = number(&s, "y").ok_or_else(|| {
+        format!(
+            "bound later, the value is not a number: {:?}\n{later}{msg}",
+            s.env.get("y").and_then(|b| b.val.clone())
+        )
+    })?;
+    let tol = if e.has_diff() {
+        1e-5 * err.max(1.0)
+    } else {
+        1e-9 * err.max(want.abs())
+    };
+    if !((got - want).abs() <= tol || (got.is_nan() && want.is_nan())) {
+        return Err(format!(
+            "bound later: {got} but {want} (tolerance {tol:e})\n{later}"
+        ));
+    }
+    if !e.has_diff() {
+        let first = format!("{}x = {src}\n", bindings(&at));
+        let (s, n, msg) = session(&first);
+        if n == 0 {
+            let typed = number(&s, "x")
+                .ok_or_else(|| format!("numbers first give no number\n{first}{msg}"))?;
+            if (typed - got).abs() > 1e-9 * err.max(typed.abs()).max(1e-300) {
+                return Err(format!(
+                    "numbers first {typed}, bound later {got}\n{first}\n{later}"
+                ));
+            }
+        }
+    }
+    tally.checked += 1;
+    Ok(())
+}
+
+/// `x` rewritten by an exact identity (the same function of the symbols,
+/// written differently): `==` must say true. The identity is summed first,
+/// so that floats in `x` see no rounding of their own (`==` on floats
+/// summed in another order is `exact`'s, item 5).
+fn identity(x: &T, which: usize) -> String {
+    let x = x.source();
+    match which % 5 {
+        0 => format!("((sin(a - t)^2 + cos(a - t)^2 - 1) + {x})"),
+        1 => format!("({x} * (cos(q1)^2 + sin(q1)^2))"),
+        2 => format!("((sin(2 b) - 2 sin(b) cos(b)) + {x})"),
+        3 => format!("(2 * {x} - {x})"),
+        _ => format!("((cos(a + q2) - (cos(a) cos(q2) - sin(a) sin(q2))) + {x})"),
+    }
+}
+
+/// `==` on symbolic sides: never true where the point shows a
+/// difference, true for `x` against an exact identity rewriting of it.
+fn check_equal(x: &T, y: &T, which: usize, p: &Point) -> Result<(), String> {
+    let at = p.at(p.t);
+    let (u, eu) = x.eval(&at);
+    let (v, ev) = y.eval(&at);
+    if !(u.is_finite() && v.is_finite() && eu.is_finite() && ev.is_finite()) || at.ill.get() {
+        // an infinity is no function to compare (inf − inf)
+        return Ok(());
+    }
+    let decl = "given a, b, c : scalar\ngiven q1(t), q2(t) : scalar\n";
+    let src = format!("{decl}e = {} == {}\n", x.source(), y.source());
+    let (s, n, _) = session(&src);
+    let differ = (u - v).abs() > 1e-6 * eu.max(ev).max(1.0);
+    if n == 0 && matches!(value(&s, "e"), Some(Value::Bool(true))) && differ {
+        return Err(format!("== says true, but {u} ≠ {v} at {p:?}\n{src}"));
+    }
+    let src = format!("{decl}e = {} == {}\n", x.source(), identity(x, which));
+    let (s, n, msg) = session(&src);
+    if n == 0 && !matches!(value(&s, "e"), Some(Value::Bool(true))) {
+        return Err(format!("== is not true on an identity\n{src}{msg}"));
+    }
+    Ok(())
+}
+
+fn value(s: &Session, name: &str) -> Option<Value> {
+    s.env.get(name).and_then(|b| b.val.clone())
+}
+
+/// `==` over the same random expressions: `CHASLES_DIFF_CASES` / 4 cases.
+#[test]
+fn equality_is_never_wrongly_true_and_sees_identities() {
+    let cases: u32 = std::env::var("CHASLES_DIFF_CASES")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(2000);
+    let mut runner = TestRunner::new(Config {
+        cases: cases / 4,
+        failure_persistence: None,
+        ..Config::default()
+    });
+    let result = runner.run(&(expr(), expr(), 0..5usize, point()), |(x, y, k, p)| {
+        check_equal(&x, &y, k, &p).map_err(TestCaseError::fail)
+    });
+    if let Err(e) = result {
+        panic!("{e}");
+    }
+}
+
+/// The differential test: `CHASLES_DIFF_CASES` cases (2,000 by default).
+#[test]
+fn random_expressions_agree_with_numbers() {
+    let cases: u32 = std::env::var("CHASLES_DIFF_CASES")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(2000);
+    let mut runner = TestRunner::new(Config {
+        cases,
+        failure_persistence: None,
+        ..Config::default()
+    });
+    let tally = std::cell::RefCell::new(Tally::default());
+    let result = runner.run(&(expr(), point()), |(e, p)| {
+        check(&e, &p, &mut tally.borrow_mut()).map_err(TestCaseError::fail)
+    });
+    let t = tally.into_inner();
+    eprintln!(
+        "checked {}, refused {}, skipped {} (of {} runs, shrinking included)",
+        t.checked,
+        t.refused,
+        t.skipped,
+        t.checked + t.refused + t.skipped
+    );
+    if let Err(e) = result {
+        panic!("{e}");
+    }
+}
