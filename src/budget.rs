@@ -34,9 +34,10 @@ pub const RUN_BYTES: u64 = 4_000_000_000;
 /// How long the REPL's live preview may compute before it gives up.
 pub const PREVIEW_TIME: Duration = Duration::from_millis(30);
 
-/// The numbers the REPL's live preview may hold (a 300×300 matrix): more is
-/// never shown on one line.
-pub const PREVIEW_NUMBERS: u64 = 100_000;
+/// The numbers the REPL's live preview may hold (a 100×100 matrix, twice
+/// over): more is never shown on one line, and a kernel on such a matrix
+/// takes a millisecond.
+pub const PREVIEW_NUMBERS: u64 = 20_000;
 
 /// Bytes per number held (an `f64`).
 const BYTES_PER_NUMBER: u64 = 8;
@@ -104,6 +105,9 @@ pub enum Stop {
         cap: u64,
         /// Which cap.
         limit: Limit,
+        /// The numbers held outside the statement and counted in `wanted`
+        /// (the bindings, for the run's cap).
+        base: u64,
     },
 }
 
@@ -124,10 +128,16 @@ impl Stop {
     /// have made).
     pub fn wanting(self, numbers: u64) -> Stop {
         match self {
-            Stop::Memory { cap, limit, wanted } => Stop::Memory {
-                wanted: wanted.max(numbers),
+            Stop::Memory {
                 cap,
                 limit,
+                wanted,
+                base,
+            } => Stop::Memory {
+                wanted: wanted.max(base.saturating_add(numbers)),
+                cap,
+                limit,
+                base,
             },
             s => s,
         }
@@ -159,7 +169,9 @@ impl std::fmt::Display for Stop {
                 "the time budget is spent: the run took more than {} (--timeout)",
                 seconds(*d)
             ),
-            Stop::Memory { wanted, cap, limit } => {
+            Stop::Memory {
+                wanted, cap, limit, ..
+            } => {
                 let whose = match limit {
                     Limit::Statement => "one statement may hold",
                     Limit::Run => "the run may hold",
@@ -410,6 +422,7 @@ thread_local! {
         })
     };
     static COUNTS: Cell<Counts> = const { Cell::new(Counts { bindings: 0, statement: 0 }) };
+    static REFUSED: Cell<Option<Stop>> = const { Cell::new(None) };
 }
 
 /// Whether the evaluation on this thread must stop now: interrupted, or
@@ -439,6 +452,7 @@ pub fn check() -> Result<(), Stop> {
 /// A new statement starts, with `bindings` numbers held by the session's
 /// bindings: the statement holds none yet.
 pub fn begin_statement(bindings: u64) {
+    REFUSED.set(None);
     COUNTS.set(Counts {
         bindings,
         statement: 0,
@@ -481,23 +495,32 @@ pub fn room(n: u64) -> Result<(), Stop> {
     } else {
         Limit::Statement
     };
-    if statement > l.statement_cap {
-        return Err(Stop::Memory {
+    let refused = if statement > l.statement_cap {
+        Stop::Memory {
             wanted: statement,
             cap: l.statement_cap,
             limit,
-        });
-    }
-    let total = statement.saturating_add(c.bindings);
-    if total > l.run_cap {
-        let limit = if l.given { Limit::Given } else { Limit::Run };
-        return Err(Stop::Memory {
-            wanted: total,
+            base: 0,
+        }
+    } else if statement.saturating_add(c.bindings) > l.run_cap {
+        Stop::Memory {
+            wanted: statement.saturating_add(c.bindings),
             cap: l.run_cap,
-            limit,
-        });
-    }
-    Ok(())
+            limit: if l.given { Limit::Given } else { Limit::Run },
+            base: c.bindings,
+        }
+    } else {
+        return Ok(());
+    };
+    REFUSED.set(Some(refused));
+    Err(refused)
+}
+
+/// The last memory refusal of the current statement, taken: a
+/// comprehension whose item was refused names the size the whole list
+/// would have taken ([`Stop::wanting`]).
+pub fn take_refusal() -> Option<Stop> {
+    REFUSED.take()
 }
 
 #[cfg(test)]
@@ -558,7 +581,8 @@ mod tests {
             Stop::Memory {
                 wanted: STATEMENT_NUMBERS + 3_999_990,
                 cap: STATEMENT_NUMBERS,
-                limit: Limit::Statement
+                limit: Limit::Statement,
+                base: 0,
             }
         );
         let e = e.wanting(1_200_000_000);

@@ -40,8 +40,8 @@ fn sexp(e: &Expr) -> String {
         ExprKind::Degrees(x) => format!("(deg {})", sexp(x)),
         ExprKind::Compare { op, lhs, rhs, .. } => {
             let op = match op {
-                CmpOp::Eq => "==",
                 CmpOp::Approx => "~=",
+                other => other.text(),
             };
             format!("({op} {} {})", sexp(lhs), sexp(rhs))
         }
@@ -412,7 +412,7 @@ fn statement_forms() {
         ("derive T_ce", "derive T_ce"),
         (
             "m = mech < links 4; joints 4R; planar >",
-            "m = MechSpec { links: Some((4, Span { start: 11, end: 18 })), joints: [JointGroupSyntax { count: 4, letters: \"R\", span: Span { start: 27, end: 29 } }], legs: None, space: Some((\"planar\", Span { start: 31, end: 37 })), unknown: [] }",
+            "m = MechSpec { links: Some((4, Span { start: 11, end: 18 })), links_expr: None, joints: [JointGroupSyntax { count: 4, count_expr: None, letters: \"R\", span: Span { start: 27, end: 29 } }], legs: None, legs_expr: None, space: Some((\"planar\", Span { start: 31, end: 37 })), unknown: [] }",
         ),
         ("(1, 2)", "(1, 2)"),
         ("f(1, 2)", "f(1, 2)"),
@@ -698,9 +698,11 @@ fn friendly_errors() {
         ),
         (
             "given T_ab SE3",
-            "expected '(', ',' or ':', found 'S'",
+            "expected '(', ',', ':' or end of input, found 'S'",
             "S",
-            None,
+            Some(
+                "the type follows a colon: given T_ab, T_bc : SE3 (scalars need none: given α, β)",
+            ),
         ),
         ("x.", "expected a name, found end of input", ".", None),
         (
@@ -732,14 +734,6 @@ fn friendly_errors() {
             "an index takes one or two subscripts separated by `,`",
             "[1; 2]",
             Some("write M[i], M[i, j], M[i, :] or M[:, j]"),
-        ),
-        (
-            "x < 3",
-            "expected an operator, '=' or end of input, found '<'",
-            "<",
-            Some(
-                "comparisons are `==` and `≈` (typed `~=`); `<` only opens a mechanism: mech < links 4; joints 4R; planar >",
-            ),
         ),
         (
             "θ = 1 +",
@@ -946,4 +940,57 @@ fn comparisons_and_assert() {
     assert_eq!(stmt_sexp(&one("assert(a == b)")), "assert (== a b)");
     // `assert` is not reserved: it can still be a name.
     assert_eq!(stmt_sexp(&one("assert = 3")), "assert = 3");
+}
+
+/// Issue 22: the forms a student types in the second hour, as trees.
+#[test]
+fn second_hour_forms() {
+    // `^T` always transposes, also before a parenthesis (3.64).
+    assert_eq!(p("-R^T (p)"), "(neg (j* (. R T) p))");
+    assert_eq!(p("R^T(p)"), "(j* (. R T) p)");
+    assert_eq!(p("R^T (a, b)"), "(j* (. R T) (a, b))");
+    // A value before a parenthesis is left to the evaluator as a call.
+    assert_eq!(p("n (n - 1)/2"), "(/ n((- n 1)) 2)");
+    // `given α, β`: scalars.
+    assert_eq!(p("given α, β"), "given α, β : scalar");
+    // `√`: sqrt of the atom after it.
+    assert_eq!(p("√2"), "sqrt(2)");
+    assert_eq!(p("1/√2"), "(/ 1 sqrt(2))");
+    assert_eq!(p("√3/2"), "(/ sqrt(3) 2)");
+    assert_eq!(p("3√2/4"), "(/ (j* 3 sqrt(2)) 4)");
+    assert_eq!(p("√(x + 1)"), "sqrt((+ x 1))");
+    // `·` dot and `×` cross, at the precedence of `*`.
+    assert_eq!(p("ŵ·v1"), "dot(ŵ, v1)");
+    assert_eq!(p("-s × q + h s"), "(+ cross((neg s), q) (j* h s))");
+    // Orders, loosest of all.
+    assert_eq!(p("a + 1 < b"), "(< (+ a 1) b)");
+    assert_eq!(p("a <= b"), "(<= a b)");
+    assert_eq!(p("a ≥ b"), "(>= a b)");
+    assert_eq!(p("assert x > 0"), "assert (> x 0)");
+    // Python's nested comprehension is the grid.
+    assert_eq!(
+        p("[f(a, b) for a in r for b in r]"),
+        "[f(a, b) for a in r, b in r]"
+    );
+    // Ranges and `end` index.
+    assert_eq!(p("T[1:3, 4]"), "(idx T (: 1 3) 4)");
+    assert_eq!(p("v[end]"), "(idx v end)");
+}
+
+#[test]
+fn mech_counts_and_contacts() {
+    let m = mech("mech < links N; joints 7RP, 6 sliding, (k) R; planar >");
+    assert!(m.links_expr.is_some());
+    assert_eq!(joints(&m), [(7, "RP"), (6, "sliding"), (0, "R")]);
+    assert!(m.joints[2].count_expr.is_some());
+    let m = mech("mech < legs n UPS; spatial >");
+    assert_eq!(m.legs.as_ref().map(|l| l.1.as_str()), Some("UPS"));
+    assert!(m.legs_expr.is_some());
+    let m = mech("mech < links 2 * n + 1; joints R R; planar >");
+    assert!(m.links_expr.is_some());
+    // Whole numbers stay numbers.
+    let m = mech("mech < links 4; joints R, R, R, R; planar >");
+    assert_eq!(m.links.map(|l| l.0), Some(4));
+    assert!(m.links_expr.is_none());
+    assert_eq!(joints(&m).len(), 4);
 }

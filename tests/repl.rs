@@ -299,12 +299,16 @@ fn hints() {
     // the preview ran on a copy: nothing was bound
     assert_eq!(preview(&s, "y = 1 + 1").as_deref(), Some("y = 2"));
     assert!(execute(&mut s, "y").err.contains("unknown name"));
-    // no preview for errors, user functions, big sizes, commands, the cursor mid-line
+    // a user function previews like any line: the budget bounds it
+    assert_eq!(preview(&s, "f(2)").as_deref(), Some("3"));
+    // no preview for errors, sizes or work past the preview's budget,
+    // commands, the cursor mid-line
+    let start = std::time::Instant::now();
     for line in [
         "T * T_cb",
-        "f(2)",
         "eye(100 * 100)",
-        "zeros(2000, 2)",
+        "zeros(2000, 20)",
+        "len([Rotz(a) * Rotz(b) for a in 1:1000, b in 1:1000])",
         ":vars",
         "2",
         "Rotz(",
@@ -316,4 +320,12 @@ fn hints() {
         );
     }
     assert_eq!(hint(&s, "Rotz(1)", 3), None);
+    // The preview gave up within its few milliseconds, not after the
+    // seconds the comprehension would take (a generous bound: the machine
+    // may be loaded).
+    assert!(
+        start.elapsed() < std::time::Duration::from_secs(3),
+        "{:?}",
+        start.elapsed()
+    );
 }

@@ -10,6 +10,7 @@ mod conditioning;
 pub mod notes;
 pub mod parts;
 mod table_draw;
+mod table_habits;
 mod table_list;
 mod table_math;
 mod table_repr;
@@ -340,6 +341,7 @@ pub fn table() -> &'static [Builtin] {
         t.extend(table_screw::builtins());
         t.extend(table_repr::builtins());
         t.extend(table_math::builtins());
+        t.extend(table_habits::builtins());
         t.extend(table_scalar::builtins());
         t.extend(table_sym::builtins());
         t.extend(table_units::builtins());

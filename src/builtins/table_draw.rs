@@ -140,6 +140,19 @@ fn eval_draw(a: &mut Args) -> Result<Value, Diagnostic> {
                 }
             }
             Value::Str(t) => panel.title = Some(t.to_string()),
+            // A list of pictures (`[point(p) for p in ps]`): their marks.
+            Value::List(vs)
+                if !vs.is_empty() && vs.iter().all(|v| matches!(v, Value::Picture(_))) =>
+            {
+                for v in vs.iter() {
+                    if let Value::Picture(p) = v {
+                        for q in &p.panels {
+                            panel.items.extend(q.items.iter().cloned());
+                            panel.view = q.view.or(panel.view);
+                        }
+                    }
+                }
+            }
             _ => panel.items.push(drawn(a, i, Style::Natural)?),
         }
     }

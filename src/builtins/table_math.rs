@@ -296,6 +296,7 @@ fn sized(a: &Args) -> Result<(usize, usize), Diagnostic> {
             ops::MAX_ELEMENTS
         )));
     }
+    crate::budget::room((r * c) as u64).map_err(|stop| a.domain(stop.to_string()))?;
     Ok((r, c))
 }
 

@@ -31,6 +31,48 @@ fn any(_: f64) -> bool {
     true
 }
 
+/// How far outside its domain an argument may be and still count as
+/// rounding (`acos(1 + 2e-16)`, `sqrt(-2e-16)`): clamped to the domain,
+/// with a note.
+pub const ROUNDING: f64 = 1e-12;
+
+/// A scalar function on `[lo, hi]`: an argument within [`ROUNDING`] of
+/// the interval is clamped into it with a note; farther is a domain error
+/// giving the value.
+fn near_domain(
+    a: &mut Args,
+    f: fn(f64) -> f64,
+    lo: f64,
+    hi: f64,
+    why: &str,
+) -> Result<Value, Diagnostic> {
+    let x = a.scalar(0)?;
+    if (lo..=hi).contains(&x) {
+        return Ok(Value::scalar(f(x)));
+    }
+    if !(x >= lo - ROUNDING && x <= hi + ROUNDING) {
+        return Err(a.error(0, ErrorKind::Domain, format!("{}({x}): {why}", a.name)));
+    }
+    let c = x.clamp(lo, hi);
+    let num = |v: f64| crate::values::number::fmt_num(v, 4);
+    let interval = if hi.is_finite() {
+        format!("[{}, {}]", num(lo), num(hi))
+    } else {
+        format!("[{}, ∞)", num(lo))
+    };
+    a.warnings.push(Diagnostic::note(
+        ErrorKind::Domain,
+        a.call_span,
+        format!(
+            "{}({x}): the argument is outside {interval} by {:.1e}, a rounding error; taken as {}",
+            a.name,
+            (x - c).abs(),
+            num(c)
+        ),
+    ));
+    Ok(Value::scalar(f(c)))
+}
+
 macro_rules! scalar_fn {
     ($name:literal, $doc:literal, $f:expr, $ok:expr, $why:literal) => {
         Builtin {
@@ -47,6 +89,16 @@ macro_rules! scalar_fn {
                 frames: FrameRule::None,
             },
             eval: |a| unary(a, $f, $ok, $why),
+        }
+    };
+}
+
+/// A scalar function on an interval, clamping rounding errors.
+macro_rules! clamped_fn {
+    ($name:literal, $doc:literal, $f:expr, ($lo:expr, $hi:expr), $why:literal) => {
+        Builtin {
+            eval: |a| near_domain(a, $f, $lo, $hi, $why),
+            ..scalar_fn!($name, $doc, $f, any, $why)
         }
     };
 }
@@ -101,26 +153,26 @@ pub(super) fn builtins() -> Vec<Builtin> {
             |x| x.sin().abs() > POLE,
             "sin x is 0 there, so the cosecant is infinite"
         ),
-        scalar_fn!(
+        clamped_fn!(
             "asin",
             "arcsine, in [−π/2, π/2]",
             f64::asin,
-            |x| (-1.0..=1.0).contains(&x),
+            (-1.0, 1.0),
             "the argument must be in [−1, 1]"
         ),
-        scalar_fn!(
+        clamped_fn!(
             "acos",
             "arccosine, in [0, π]",
             f64::acos,
-            |x| (-1.0..=1.0).contains(&x),
+            (-1.0, 1.0),
             "the argument must be in [−1, 1]"
         ),
         scalar_fn!("atan", "arctangent", f64::atan, any, ""),
-        scalar_fn!(
+        clamped_fn!(
             "sqrt",
-            "square root",
+            "square root (also written √2, √(x + 1))",
             f64::sqrt,
-            |x| x >= 0.0,
+            (0.0, f64::INFINITY),
             "the square root of a negative number is not real"
         ),
         scalar_fn!("abs", "absolute value", f64::abs, any, ""),

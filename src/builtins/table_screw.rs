@@ -151,7 +151,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
     vec![
         Builtin {
             name: "RpToTrans",
-            aliases: &["rp_to_trans", "SE3"],
+            aliases: &["rp_to_trans", "SE3", "frame"],
             signature: "RpToTrans(R: SO3, p: 3-vector) -> SE3",
             section: "§3.3.1 (3.62)",
             doc: "the transform T = [R, p; 0, 1]",
@@ -195,21 +195,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
             },
             eval: |a| Ok(a.se3(0)?.inverse().into()),
         },
-        Builtin {
-            name: "Trans",
-            aliases: &["trans"],
-            signature: "Trans(p: 3-vector) -> SE3",
-            section: "§3.3.1",
-            doc: "pure translation by p: [I, p; 0, 1]",
-            example: "Trans((1, 2, 3))",
-            area: Transforms,
-            typing: Typing::Fixed {
-                params: &[Vec(3)],
-                ret: se3k,
-                frames: FrameRule::None,
-            },
-            eval: |a| Ok(SE3::translate(&a.vec3(0)?).into()),
-        },
+        super::table_habits::trans(),
         Builtin {
             name: "displacement",
             aliases: &["Displacement"],

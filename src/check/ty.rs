@@ -248,6 +248,7 @@ impl fmt::Display for Kind {
                 | Kind::Matrix(..)
                 | Kind::Twist
                 | Kind::Wrench
+                | Kind::Picture
                 | Kind::Tuple(_) => {
                     write!(f, "list of {k}s")
                 }

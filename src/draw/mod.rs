@@ -7,6 +7,7 @@
 //! types of [`crate::eval`] and the core of [`crate::lie`]; only the session
 //! and the front ends use it, never the layers below.
 
+mod clear;
 pub mod file;
 mod layout;
 pub mod marks;

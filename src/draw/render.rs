@@ -10,6 +10,7 @@
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
+use super::clear::Clear;
 use super::layout::{Layout, PATH_RGB, Prim, TEXT_RGB, layout};
 use super::marks::{P3, Scene};
 
@@ -228,15 +229,17 @@ fn panel(area: &Area<'_>, scene: &Scene, x0: f64) -> Result<Vec<Probe>, String> 
         }
     }
     // Probes: near each frame's origin and tip on every axis long enough.
+    // What labels keep clear of is indexed by cells of the panel (linear
+    // time in the number of marks).
     let mut probes = Vec::new();
-    let mut keep_clear = Vec::new();
+    let mut clear = Clear::new((x0, 0.0, x0 + f64::from(PANEL_W), f64::from(PANEL_H)));
     let n_axes = if scene.planar { 2 } else { 3 };
     for (o, axes, reference, label) in &lay.frames {
         let po = fit.px(o);
-        keep_clear.push(po);
+        clear.point(po);
         for (j, a) in axes.iter().enumerate().take(n_axes) {
             let pa = fit.px(&(o + a));
-            keep_clear.push(pa);
+            clear.point(pa);
             let len = (pa.0 - po.0).hypot(pa.1 - po.1);
             if len < 12.0 {
                 continue;
@@ -247,27 +250,28 @@ fn panel(area: &Area<'_>, scene: &Scene, x0: f64) -> Result<Vec<Probe>, String> 
                 label.clone()
             };
             for (t, at) in [(0.15, "origin"), (0.85, "tip")] {
-                probes.push(Probe {
+                let p = Probe {
                     x: po.0 + t * (pa.0 - po.0),
                     y: po.1 + t * (pa.1 - po.1),
                     rgb: if *reference { REF_RGB[j] } else { AXIS_RGB[j] },
                     what: format!("{name} {} axis near its {at}", ["x", "y", "z"][j]),
-                });
+                };
+                clear.point((p.x, p.y));
+                probes.push(p);
             }
         }
     }
     // Labels: the first place that covers no earlier label, origin or tip,
     // nor (where one is free) any line drawn.
-    let lines: Vec<((f64, f64), (f64, f64))> = lay
-        .prims
-        .iter()
-        .filter_map(|p| match p {
-            Prim::Seg { a, b, .. } => Some((fit.px(a), fit.px(b))),
-            _ => None,
-        })
-        .collect();
-    let mut boxes: Vec<(f64, f64, f64, f64)> = Vec::new();
+    for p in &lay.prims {
+        if let Prim::Seg { a, b, .. } = p {
+            clear.line(fit.px(a), fit.px(b));
+        }
+    }
     for l in &lay.labels {
+        if crate::budget::stopped() {
+            return Err("stopped by the evaluation budget".into());
+        }
         let (ax, ay) = fit.px(&l.at);
         let w = text_width(&l.text);
         let h = FONT;
@@ -291,16 +295,7 @@ fn panel(area: &Area<'_>, scene: &Scene, x0: f64) -> Result<Vec<Probe>, String> 
                         && b.2 <= x0 + f64::from(PANEL_W) - 2.0
                         && b.1 >= 2.0
                         && b.3 <= f64::from(PANEL_H) - 2.0;
-                    let near = |x: f64, y: f64| {
-                        x > b.0 - 3.0 && x < b.2 + 3.0 && y > b.1 - 3.0 && y < b.3 + 3.0
-                    };
-                    let hits_box = boxes
-                        .iter()
-                        .any(|o| b.0 < o.2 && o.0 < b.2 && b.1 < o.3 && o.1 < b.3);
-                    let hits_point = keep_clear.iter().any(|p| near(p.0, p.1));
-                    let hits_probe = probes.iter().any(|p| near(p.x, p.y));
-                    let hits_line = strict && lines.iter().any(|&(p, q)| crosses(p, q, &near));
-                    if inside && !hits_box && !hits_point && !hits_probe && !hits_line {
+                    if inside && clear.is_free(b, strict) {
                         chosen = Some(b);
                         break 'search;
                     }
@@ -308,7 +303,7 @@ fn panel(area: &Area<'_>, scene: &Scene, x0: f64) -> Result<Vec<Probe>, String> 
             }
         }
         let Some(b) = chosen else { continue };
-        boxes.push(b);
+        clear.label(b);
         let font = ("sans-serif", FONT)
             .into_font()
             .color(&rgb(l.rgb))
@@ -329,18 +324,6 @@ fn panel(area: &Area<'_>, scene: &Scene, x0: f64) -> Result<Vec<Probe>, String> 
         .map_err(err)?;
     }
     Ok(probes)
-}
-
-/// Whether the segment p–q passes through the region `near` (sampled every
-/// 3 pixels).
-fn crosses(p: (f64, f64), q: (f64, f64), near: &impl Fn(f64, f64) -> bool) -> bool {
-    let steps = ((q.0 - p.0).hypot(q.1 - p.1) / 3.0)
-        .ceil()
-        .clamp(1.0, 400.0) as usize;
-    (0..=steps).any(|k| {
-        let t = k as f64 / steps as f64;
-        near(p.0 + t * (q.0 - p.0), p.1 + t * (q.1 - p.1))
-    })
 }
 
 /// The SVG text of scenes side by side, and the probes of every panel.

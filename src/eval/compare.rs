@@ -24,16 +24,16 @@ pub const APPROX_TOL: f64 = 1e-9;
 
 /// How `op` reads in messages.
 fn op_text(op: CmpOp) -> &'static str {
-    match op {
-        CmpOp::Eq => "==",
-        CmpOp::Approx => "≈",
-    }
+    op.text()
 }
 
 /// Whether `a op b` holds: `Ok(Some(..))` decided, `Ok(None)` undecided
 /// (symbolic sides the canonical form cannot settle), `Err` a message when
 /// the two cannot be compared (different shapes, mechanisms).
 pub fn equal(a: &Value, b: &Value, op: CmpOp) -> Result<Option<bool>, String> {
+    if op.is_order() {
+        return super::order::holds(a, b, op);
+    }
     match (a, b) {
         (Value::Sym(_), _) | (_, Value::Sym(_)) => Ok(symbolic_equal(&to_sym(a), &to_sym(b), op)),
         // Symbolic scalars and matrices: by their canonical forms (§7).
@@ -49,8 +49,8 @@ pub fn equal(a: &Value, b: &Value, op: CmpOp) -> Result<Option<bool>, String> {
                 ));
             }
             Ok(Some(match op {
-                CmpOp::Eq => x == y,
                 CmpOp::Approx => approx(x, y),
+                _ => x == y,
             }))
         }
         (Value::Bool(x), Value::Bool(y)) => Ok(Some(x == y)),
@@ -208,7 +208,12 @@ impl Interp<'_> {
     ) -> Result<Sides, Diagnostic> {
         // `R Rᵀ == I`: an `I` takes its size from the other side, as in a sum.
         let (l, r) = self.operands(BinOp::Sub, lhs, rhs)?;
-        if let Err(e) = compare_rule(&l.ty, &r.ty) {
+        let rule = if op.is_order() {
+            super::order::order_rule
+        } else {
+            compare_rule
+        };
+        if let Err(e) = rule(&l.ty, &r.ty) {
             self.rule_failure(e, op_span, Some(lhs.span), Some(rhs.span), Some(op_span))?;
         }
         let verdict = match (l.val.as_deref(), r.val.as_deref()) {
@@ -304,10 +309,11 @@ impl Interp<'_> {
                 Some(_) => format!(" at [{i}, {j}]"),
             };
             message.push_str(&match op {
-                CmpOp::Eq => format!(" (largest difference {d}{at})"),
                 CmpOp::Approx => {
                     format!(" (largest difference {d}{at}; ≈ allows {APPROX_TOL:e} relative)")
                 }
+                _ if op.is_order() => String::new(),
+                _ => format!(" (largest difference {d}{at})"),
             });
         }
         // Short values stand under their side; long ones only in the help.

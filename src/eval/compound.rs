@@ -18,6 +18,10 @@ impl Interp<'_> {
         args: &[IndexArg],
         span: Span,
     ) -> Result<Typed, Diagnostic> {
+        // `S[1:3]`, `T[1:3, 4]`, `v[end]`.
+        if self.is_slice(args) {
+            return self.slice(base, args, span);
+        }
         if let [IndexArg::Expr(arg)] = args
             && let Some(product) = self.bracket_index(base, arg, span)?
         {
@@ -107,6 +111,15 @@ impl Interp<'_> {
         let mut trows = Vec::with_capacity(rows.len());
         for row in &rows {
             let tr = self.bracket_row(row)?;
+            // `[point(p), point(q)]`: a list of pictures (§12).
+            if rows.len() == 1 && tr.iter().all(|t| t.ty.kind == Kind::Picture) {
+                let items: Option<Vec<Value>> = tr.iter().map(|t| t.value().cloned()).collect();
+                let ty = Ty::plain(Kind::list(Kind::Picture));
+                return Ok(Typed::new(
+                    ty,
+                    items.map(|v| Value::List(std::rc::Rc::new(v))),
+                ));
+            }
             for (t, e) in tr.iter().zip(row.iter()) {
                 if t.ty.kind.shape().is_none() {
                     return Err(Diagnostic::error(
@@ -184,16 +197,39 @@ impl Interp<'_> {
             )
             .with_help("items: links N; joints …; legs K CHAIN; planar | spatial | spherical"));
         }
-        let joints: Vec<(i64, &str)> = spec
-            .joints
-            .iter()
-            .map(|j| (j.count, j.letters.as_str()))
-            .collect();
+        // Counts written as expressions (`links N`, `legs n UPS`, `(n)R`).
+        let links = match (&spec.links, &spec.links_expr) {
+            (Some(_), Some(e)) => Some(self.mech_count(e)?),
+            (l, _) => l.map(|(n, _)| n),
+        };
+        let legs_k = match (&spec.legs, &spec.legs_expr) {
+            (Some(_), Some(e)) => Some(self.mech_count(e)?),
+            (l, _) => l.as_ref().map(|(k, _, _)| *k),
+        };
+        let mut joints: Vec<(i64, &str)> = Vec::with_capacity(spec.joints.len());
+        for j in &spec.joints {
+            let count = match &j.count_expr {
+                Some(e) => self.mech_count(e)?,
+                None => j.count,
+            };
+            joints.push((count, j.letters.as_str()));
+        }
+        if !self.running()
+            && (spec.links_expr.is_some()
+                || spec.legs_expr.is_some()
+                || spec.joints.iter().any(|j| j.count_expr.is_some()))
+        {
+            // Checking: the counts have no numbers yet.
+            return Ok(Typed::new(Ty::plain(Kind::Mechanism), None));
+        }
         let m = Mechanism::from_spec(
             spec.space.as_ref().map(|(s, _)| s.as_str()),
-            spec.links.map(|(n, _)| n),
+            links,
             &joints,
-            spec.legs.as_ref().map(|(k, c, _)| (*k, c.as_str())),
+            spec.legs
+                .as_ref()
+                .zip(legs_k)
+                .map(|((_, c, _), k)| (k, c.as_str())),
         )
         .map_err(|e| {
             let at = match e.part {
@@ -211,5 +247,32 @@ impl Interp<'_> {
         })?;
         let val = self.running().then(|| Value::Mech(std::rc::Rc::new(m)));
         Ok(Typed::new(Ty::plain(Kind::Mechanism), val))
+    }
+
+    /// A count of a mechanism written as an expression (`links N`): a
+    /// whole number (0 while checking, where it has no value).
+    fn mech_count(&mut self, e: &Expr) -> Result<i64, Diagnostic> {
+        let t = self.expr(e)?;
+        if !t.ty.kind.maybe_scalar() {
+            return Err(Diagnostic::error(
+                ErrorKind::Type,
+                e.span,
+                format!("a count must be a whole number, not {}", t.ty.kind.a()),
+            ));
+        }
+        let Some(x) = t.value().and_then(Value::as_scalar) else {
+            return Ok(0);
+        };
+        if x.fract() != 0.0 || !x.is_finite() || x.abs() > 1e15 {
+            return Err(Diagnostic::error(
+                ErrorKind::Domain,
+                e.span,
+                format!(
+                    "a count must be a whole number, not {}",
+                    crate::values::number::fmt_num(x, 6)
+                ),
+            ));
+        }
+        Ok(x as i64)
     }
 }

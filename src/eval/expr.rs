@@ -4,7 +4,7 @@
 
 use super::apply::{self, Hints, Op};
 use super::env::Mode;
-use super::interp::{Interp, MAX_CALL_DEPTH, Typed};
+use super::interp::{Interp, Typed};
 use super::value::Value;
 use crate::builtins;
 use crate::check::error::Operand;
@@ -330,6 +330,9 @@ impl Interp<'_> {
             return self.user_call(&f, args, span);
         }
         let found = self.env.builtin(name);
+        if found.is_none() && self.env.get(name).is_some() {
+            return self.value_times_paren(name, name_span, args, span);
+        }
         let name = name.as_str();
         let Some(b) = found else {
             let mut d = Diagnostic::error(
@@ -462,88 +465,6 @@ impl Interp<'_> {
         not_finite_group(&v, b.name, span)?;
         let val = Some(v);
         Ok(Typed::new(refine(ty, &val), val))
-    }
-
-    fn user_call(
-        &mut self,
-        f: &super::value::UserFn,
-        args: &[Expr],
-        span: Span,
-    ) -> Result<Typed, Diagnostic> {
-        // `f((a, b))` with f(x, y): the tuple's parts are the arguments.
-        let mut spread = None;
-        if let [one] = args
-            && f.params.len() >= 2
-        {
-            let warned = self.warnings.len();
-            let t = self.expr(one)?;
-            let parts = super::notation::parts(&t);
-            if parts.len() == f.params.len() {
-                spread = Some(parts);
-            } else {
-                // Evaluated again below as the one argument.
-                self.warnings.truncate(warned);
-            }
-        }
-        if spread.is_none() && args.len() != f.params.len() {
-            return Err(Diagnostic::error(
-                ErrorKind::Arity,
-                span,
-                format!(
-                    "{} takes {} argument(s), got {}",
-                    f.name,
-                    f.params.len(),
-                    args.len()
-                ),
-            )
-            .with_help(format!("signature: {}({})", f.name, f.params.join(", "))));
-        }
-        if self.depth >= MAX_CALL_DEPTH {
-            return Err(self.domain(
-                span,
-                format!("function calls nested deeper than {MAX_CALL_DEPTH} (recursion?)"),
-            ));
-        }
-        // A user function may call itself many times over (f(n-1) + f(n-1)):
-        // each call asks the budget.
-        crate::budget::check().map_err(|stop| super::interp::budget_error(stop, span))?;
-        let mut bound = Vec::new();
-        match spread {
-            Some(parts) => bound.extend(f.params.iter().cloned().zip(parts)),
-            None => {
-                for (p, a) in f.params.iter().zip(args) {
-                    let t = self.expr(a)?;
-                    bound.push((p.clone(), t));
-                }
-            }
-        }
-        let saved: Vec<(String, Option<super::env::Binding>)> = f
-            .params
-            .iter()
-            .map(|p| (p.clone(), self.env.get(p).cloned()))
-            .collect();
-        for (p, t) in bound {
-            self.env.set(
-                &p,
-                super::env::Binding {
-                    ty: t.ty,
-                    val: t.val.map(|v| *v),
-                    symbolic: false,
-                },
-            );
-        }
-        self.depth += 1;
-        let result = self.expr(&f.body);
-        self.depth -= 1;
-        for (p, old) in saved {
-            match old {
-                Some(b) => self.env.set(&p, b),
-                None => {
-                    self.env.remove(&p);
-                }
-            }
-        }
-        result
     }
 }
 

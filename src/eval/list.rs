@@ -412,16 +412,26 @@ impl Interp<'_> {
                 }
                 spend(1, span)?;
                 crate::budget::check().map_err(stopped)?;
-                let t = self.expr(body)?;
+                // The size the whole list would have taken, at the items'
+                // mean size so far, names a refusal of the budget.
+                let whole =
+                    |numbers: u64, done: usize| (numbers as f64 / done as f64 * total) as u64;
+                let t = match self.expr(body) {
+                    Ok(t) => t,
+                    Err(d) => {
+                        return Err(match crate::budget::take_refusal() {
+                            Some(stop) if !out.is_empty() => {
+                                stopped(stop.wanting(whole(numbers, out.len())))
+                            }
+                            _ => d,
+                        });
+                    }
+                };
                 let v = t.val.map_or_else(|| Value::scalar(f64::NAN), |v| *v);
                 let n = super::env::numbers(&v) + 1;
                 numbers += n;
                 if let Err(stop) = crate::budget::hold(n) {
-                    // The size the whole list would have taken, at the
-                    // items' mean size so far.
-                    let done = out.len() as f64 + 1.0;
-                    let whole = (numbers as f64 / done * total) as u64;
-                    return Err(stopped(stop.wanting(whole)));
+                    return Err(stopped(stop.wanting(whole(numbers, out.len() + 1))));
                 }
                 out.push(v);
                 // The last variable runs fastest: the first is outermost.

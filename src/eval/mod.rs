@@ -12,8 +12,12 @@ pub mod graph;
 pub mod interp;
 pub mod list;
 mod notation;
+mod order;
+mod paren_product;
 mod shapes;
+mod slice;
 mod substitute;
 mod symbols;
+mod user_fn;
 
 pub use crate::values::{convert, formula, ops, symbolic, value};

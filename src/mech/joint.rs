@@ -75,6 +75,17 @@ pub enum JointType {
     U,
     /// Spherical (ball-and-socket) joint, `f = 3`; not a planar joint.
     S,
+    /// A point contact that rolls without slipping (Exercise 2.17(c) "a
+    /// point contact with no slip", 2.19(c)–(d)): `f = 3` between spatial
+    /// bodies (the rotations about the contact point), `f = 1` between
+    /// planar ones (the rolling angle). Written `rolling`.
+    Rolling,
+    /// A frictionless point contact that may slide (Exercise 2.18(b) "a
+    /// frictionless point contact", 2.19(a) "sliding point contact"):
+    /// `f = 5` between spatial bodies (two slides, three rotations),
+    /// `f = 2` between planar ones (a slide and a rotation). Written
+    /// `sliding`.
+    Sliding,
 }
 
 impl JointType {
@@ -102,7 +113,32 @@ impl JointType {
         }
     }
 
-    /// The book's letter for the joint.
+    /// The contact joint named by `word` (Exercises 2.17–2.19): `rolling`
+    /// (also `noslip`, a point contact with no slip) or `sliding` (also
+    /// `frictionless`, a frictionless point contact); any case.
+    pub fn contact(word: &str) -> Option<JointType> {
+        match word.to_ascii_lowercase().as_str() {
+            "rolling" | "noslip" => Some(JointType::Rolling),
+            "sliding" | "frictionless" => Some(JointType::Sliding),
+            _ => None,
+        }
+    }
+
+    /// How the joint is written: its letter, or the contact's name.
+    pub fn symbol(self) -> &'static str {
+        match self {
+            JointType::R => "R",
+            JointType::P => "P",
+            JointType::H => "H",
+            JointType::C => "C",
+            JointType::U => "U",
+            JointType::S => "S",
+            JointType::Rolling => "rolling",
+            JointType::Sliding => "sliding",
+        }
+    }
+
+    /// The book's letter for the joint (a contact's initial, lower case).
     pub fn letter(self) -> char {
         match self {
             JointType::R => 'R',
@@ -111,6 +147,8 @@ impl JointType {
             JointType::C => 'C',
             JointType::U => 'U',
             JointType::S => 'S',
+            JointType::Rolling => 'r',
+            JointType::Sliding => 's',
         }
     }
 
@@ -124,16 +162,30 @@ impl JointType {
             JointType::C => "cylindrical",
             JointType::U => "universal",
             JointType::S => "spherical",
+            JointType::Rolling => "rolling point contact",
+            JointType::Sliding => "sliding point contact",
         }
     }
 
     /// `f`, the degrees of freedom the joint provides (Table 2.1):
-    /// R, P, H 1; C, U 2; S 3.
+    /// R, P, H 1; C, U 2; S 3; between spatial bodies a rolling contact 3
+    /// and a sliding one 5 ([`JointType::freedoms_in`] for planar ones).
     pub fn freedoms(self) -> i64 {
         match self {
             JointType::R | JointType::P | JointType::H => 1,
             JointType::C | JointType::U => 2,
-            JointType::S => 3,
+            JointType::S | JointType::Rolling => 3,
+            JointType::Sliding => 5,
+        }
+    }
+
+    /// `f` in a mechanism of `space`: a planar rolling contact 1, a planar
+    /// sliding contact 2 (Exercise 2.18); the rest as [`JointType::freedoms`].
+    pub fn freedoms_in(self, space: Space) -> i64 {
+        match (self, space) {
+            (JointType::Rolling, Space::Planar) => 1,
+            (JointType::Sliding, Space::Planar) => 2,
+            _ => self.freedoms(),
         }
     }
 
@@ -144,7 +196,10 @@ impl JointType {
     pub fn allowed_in(self, space: Space) -> bool {
         match space {
             Space::Spatial => true,
-            Space::Planar => matches!(self, JointType::R | JointType::P),
+            Space::Planar => matches!(
+                self,
+                JointType::R | JointType::P | JointType::Rolling | JointType::Sliding
+            ),
             Space::Spherical => self == JointType::R,
         }
     }
@@ -152,7 +207,8 @@ impl JointType {
     /// `c`, the constraints the joint places between two rigid bodies of
     /// the space (Table 2.1), `c = m − f`; `None` where the table says N/A.
     pub fn constraints(self, space: Space) -> Option<i64> {
-        self.allowed_in(space).then(|| space.m() - self.freedoms())
+        self.allowed_in(space)
+            .then(|| space.m() - self.freedoms_in(space))
     }
 
     /// The joint's own C-space as factors (§2.3.1): R a circle `S^1`; P and
@@ -164,13 +220,15 @@ impl JointType {
             JointType::C => &[Factor::Circle, Factor::Line],
             JointType::U => &[Factor::Circle, Factor::Circle],
             JointType::S => &[Factor::Rotations],
+            // A contact closes a loop: no C-space factor of its own.
+            JointType::Rolling | JointType::Sliding => &[],
         }
     }
 }
 
 impl fmt::Display for JointType {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}", self.letter())
+        f.write_str(self.symbol())
     }
 }
 
@@ -207,17 +265,29 @@ impl Joint {
         self.kinds.iter().map(|k| k.freedoms()).sum()
     }
 
+    /// `f_i` in a mechanism of `space` (a contact's freedoms depend on it).
+    pub fn freedoms_in(&self, space: Space) -> i64 {
+        self.kinds.iter().map(|k| k.freedoms_in(space)).sum()
+    }
+
+    /// Whether the joint is a point contact (`rolling`, `sliding`).
+    pub fn is_contact(&self) -> bool {
+        self.kinds
+            .iter()
+            .any(|k| matches!(k, JointType::Rolling | JointType::Sliding))
+    }
+
     /// `c_i = m − f_i` (Proposition 2.1), or `None` if a part does not exist
     /// in this space or the joint would provide more than `m` freedoms.
     pub fn constraints(&self, space: Space) -> Option<i64> {
         let ok = self.kinds.iter().all(|k| k.allowed_in(space));
-        let c = space.m() - self.freedoms();
+        let c = space.m() - self.freedoms_in(space);
         (ok && c >= 0).then_some(c)
     }
 
-    /// The letters as written, e.g. `RP`.
+    /// The letters as written, e.g. `RP` (a contact by its name).
     pub fn letters(&self) -> String {
-        self.kinds.iter().map(|k| k.letter()).collect()
+        self.kinds.iter().map(|k| k.symbol()).collect()
     }
 }
 

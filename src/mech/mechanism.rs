@@ -125,6 +125,13 @@ fn parse_letters(
             format!("{what} has more than {MAX_LETTERS} joint letters"),
         ));
     }
+    // A contact joint by its name (Exercises 2.17–2.19).
+    if let Some(contact) = JointType::contact(letters) {
+        if !contact.allowed_in(space) {
+            return Err(not_in_space(contact, space, part));
+        }
+        return Ok(vec![contact]);
+    }
     let mut kinds = Vec::new();
     for c in letters.chars() {
         let Some(kind) = JointType::from_letter(c) else {
@@ -135,7 +142,7 @@ fn parse_letters(
                 ),
             )
             .help(
-                "R revolute, P prismatic, H screw (helical), C cylindrical, U universal, S spherical",
+                "R revolute, P prismatic, H screw (helical), C cylindrical, U universal, S spherical; point contacts are `rolling` and `sliding`",
             ));
         };
         if !kind.allowed_in(space) {
@@ -147,7 +154,7 @@ fn parse_letters(
 }
 
 fn not_in_space(kind: JointType, space: Space, part: MechPart) -> MechError {
-    let l = kind.letter();
+    let l = kind.symbol();
     let name = kind.name();
     match space {
         Space::Planar => MechError::new(
@@ -169,10 +176,12 @@ fn not_in_space(kind: JointType, space: Space, part: MechPart) -> MechError {
     }
 }
 
-/// Written count and letters, e.g. `8R`, `P`, `7RP`.
+/// Written count and letters, e.g. `8R`, `P`, `7RP`, `6 sliding`.
 pub(super) fn group_text(count: i64, letters: &str) -> String {
     if count == 1 {
         letters.to_string()
+    } else if letters.starts_with(|c: char| c.is_ascii_lowercase()) {
+        format!("{count} {letters}")
     } else {
         format!("{count}{letters}")
     }
@@ -288,13 +297,13 @@ impl Mechanism {
             }
             let kinds = parse_letters(letters, space, part, "a joint")?;
             let joint = Joint { kinds };
-            if joint.freedoms() > m {
+            if joint.freedoms_in(space) > m {
                 return Err(MechError::new(
                     part,
                     format!(
                         "the compound joint {} would provide f = {} freedoms, more than a {space} rigid body has (m = {m})",
                         joint.letters(),
-                        joint.freedoms()
+                        joint.freedoms_in(space)
                     ),
                 )
                 .help("separate joints are written with spaces: `R P`, not `RP`"));
@@ -331,7 +340,11 @@ impl Mechanism {
                         None => groups.push((l.count, Joint::single(kind))),
                     }
                 }
-                let f: i128 = l.chain.iter().map(|t| i128::from(t.freedoms())).sum();
+                let f: i128 = l
+                    .chain
+                    .iter()
+                    .map(|t| i128::from(t.freedoms_in(space)))
+                    .sum();
                 (n, k * len, k * f)
             }
             None => {
@@ -358,7 +371,7 @@ impl Mechanism {
                 let j: i128 = groups.iter().map(|(c, _)| i128::from(*c)).sum();
                 let f: i128 = groups
                     .iter()
-                    .map(|(c, jt)| i128::from(*c) * i128::from(jt.freedoms()))
+                    .map(|(c, jt)| i128::from(*c) * i128::from(jt.freedoms_in(space)))
                     .sum();
                 (i128::from(n), j, f)
             }

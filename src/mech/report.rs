@@ -17,9 +17,10 @@ impl Mechanism {
     /// `7R RP` gives `7·1 + 1·2`, `6U 6P 6S` gives `6·1 + 6·2 + 6·3`.
     /// With no joints the sum is written `0`. Minus signs are `−`.
     pub fn formula(&self) -> String {
-        let mut by_f: Vec<(i64, i128)> = Vec::new();
+        // Contacts (Exercises 2.18–2.19) are their own terms, after the joints.
+        let mut by_f: Vec<((bool, i64), i128)> = Vec::new();
         for (count, joint) in &self.groups {
-            let f = joint.freedoms();
+            let f = (joint.is_contact(), joint.freedoms_in(self.space));
             match by_f.iter_mut().find(|(g, _)| *g == f) {
                 Some((_, c)) => *c += i128::from(*count),
                 None => by_f.push((f, i128::from(*count))),
@@ -30,7 +31,7 @@ impl Mechanism {
             "0".to_string()
         } else {
             by_f.iter()
-                .map(|(f, c)| format!("{c}·{f}"))
+                .map(|((_, f), c)| format!("{c}·{f}"))
                 .collect::<Vec<_>>()
                 .join(" + ")
         };
@@ -73,7 +74,7 @@ impl Mechanism {
                 .to_string(),
             );
         }
-        if self.j == 0 || self.j != self.n - 1 {
+        if self.j == 0 || self.j != self.n - 1 || self.groups.iter().any(|(_, j)| j.is_contact()) {
             return None;
         }
         // Count factors: each group contributes count × its factors.

@@ -23,9 +23,16 @@ statements end at a newline or `;`; a newline inside ( ) or [ ] continues
   [w]   [V]                 the book's bracket: so(3), se(3)
   30 deg   30°   pi   π     angles in radians
   T.R  T.p  V.w  V.v  M.T   parts of a transform or twist; transpose
+  S.w  S.v  F.m  F.f        parts of a screw axis (ω, v) and of a wrench (m, f)
   M[1, 2]  M[:, 1]  v[3]    1-based indexing, as in the book
+  S[1:3]  T[1:3, 4]  v[end] ranges and `end` index too (MATLAB's)
+  R (1, 0, 0)  n (n - 1)    a value before a parenthesis multiplies
+  R^T (p)   Rᵀ   R^{-1}     ^T always transposes; the inverse
+  √2  √(x + 1)  1/√2        square roots, as --exact prints them
+  u · v   u × v             dot and cross products (also dot(u, v), cross(u, v))
   (w, th) = AxisAng3(v)     destructure a tuple
   a == b   a ≈ b (a ~= b)   exactly equal; equal within 1e-9 relative (a bool)
+  a < b  a <= b  a > b  a >= b   order of numbers (a bool)
   assert T ≈ T_book         stop the script, showing both sides, when false
   f(x) = x^2                a user function
   ans                       the last result",
@@ -51,6 +58,7 @@ given T_ab, T_bc : SE3      symbols with a type and frames but no numbers
   T_ab * T_bc               → T_ab T_bc : SE(3) {a}←{c}, checked like numbers
   inv(T_ab) * T_ab          → I
 given t1, t2, L1 : scalar   symbols computed with (§7): Rotz(t1), exp([S] t1)
+given α, β                  scalars: the type is needed only for other kinds
   Rotz(t1) Rotz(t2)         → [cos(t1 + t2), …]: angle sums folded, sin² + cos² = 1
   simplify(x), x == y       the canonical form; equality with no numbers
 given theta(t) : scalar     a function of time: theta' is θ̇, diff(R, t) R^T = [ω_s]
@@ -64,16 +72,23 @@ const MECH_SYNTAX: &str = "\
 mech < links 4; joints 4R; planar >        Grübler's formula, step by step
 mech < links 8; joints 8R P; planar >      8R = eight R joints
 mech < legs 6 UPS; spatial >               a parallel mechanism
+mech < links N; joints 7RP, 6 sliding; planar >   counts may be names; contacts
   joints R P H (f = 1), C U (f = 2), S (f = 3); planar, spherical, spatial
+  point contacts (exercises 2.17–2.19): rolling (no slip; f = 1 planar, 3 spatial),
+  sliding (frictionless; f = 2 planar, 5 spatial)
 dof(m) gives the number";
 
 /// Ranges, lists and pictures, shown with `:help pictures` (§12).
 const LIST_SYNTAX: &str = "\
 0:4   0:pi/8:pi                        ranges as in MATLAB, the end included
 [k^2 for k in 0:4]                     a list; [f(a, b) for a in r1, b in r2] a grid
+[f(a, b) for a in r1 for b in r2]      the same grid, as Python writes it
+linspace(0, pi, 5)                     n numbers from a to b (a:step:b gives a step)
 xs[2]   (a, b) = xs   len(xs)          index from 1, destructure
 pic = draw(T_sa, S)                    written to pic.svg (--draw-dir DIR); :open shows it
-save(pic, \"f.png\")   view(30 deg, 20 deg)   beside(p1, p2)";
+save(pic, \"f.png\")   view(30 deg, 20 deg)   beside(p1, p2)
+  view(az, el) takes radians, as every angle: view(30 deg, 20 deg), view(pi/6, pi/9)
+[point(p) for p in ps]   draw(pts)     a list of points draws";
 
 /// The whole `:help` answer for `arg` (trimmed); Err is the message for
 /// an unknown name, with a did-you-mean.

@@ -345,6 +345,11 @@ impl Expr {
     pub fn mul(&self, o: &Expr) -> Expr {
         let mut out = Expr::zero();
         for (a, c) in &self.terms {
+            // Past the evaluation budget, a cut-short product (discarded
+            // by the session: `crate::budget`).
+            if crate::budget::stopped() {
+                break;
+            }
             for (b, d) in &o.terms {
                 out.push(mono_mul(a, b), c.mul(d));
             }

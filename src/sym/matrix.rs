@@ -207,6 +207,11 @@ fn det(m: &Mat) -> Expr {
                 if a.is_zero() {
                     continue;
                 }
+                // Cofactors grow as n!: past the budget, cut short
+                // (discarded by the session: `crate::budget`).
+                if crate::budget::stopped() {
+                    break;
+                }
                 let mut minor = Mat::zeros(n - 1, n - 1);
                 for r in 1..n {
                     for (cc, c) in (0..n).filter(|&c| c != j).enumerate() {

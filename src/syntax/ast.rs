@@ -104,6 +104,33 @@ pub enum CmpOp {
     Eq,
     /// `a ≈ b`, typed `~=`: equal within 1e-9 relative.
     Approx,
+    /// `a < b` on scalars.
+    Lt,
+    /// `a <= b` (`≤`) on scalars.
+    Le,
+    /// `a > b` on scalars.
+    Gt,
+    /// `a >= b` (`≥`) on scalars.
+    Ge,
+}
+
+impl CmpOp {
+    /// An order (`<`, `<=`, `>`, `>=`) rather than an equality.
+    pub fn is_order(self) -> bool {
+        matches!(self, CmpOp::Lt | CmpOp::Le | CmpOp::Gt | CmpOp::Ge)
+    }
+
+    /// The operator as typed (`≈` for `~=`).
+    pub fn text(self) -> &'static str {
+        match self {
+            CmpOp::Eq => "==",
+            CmpOp::Approx => "≈",
+            CmpOp::Lt => "<",
+            CmpOp::Le => "<=",
+            CmpOp::Gt => ">",
+            CmpOp::Ge => ">=",
+        }
+    }
 }
 
 /// One subscript of an index expression: `M[i, :]`.
@@ -224,12 +251,19 @@ pub(crate) fn superscript_power(base: Expr, sup: &str, span: Span) -> ExprKind {
 /// [`crate::mech`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct MechSpec {
-    /// `links N`
+    /// `links N`; the number is 0 when written as an expression
+    /// (`links_expr`).
     pub links: Option<(i64, Span)>,
+    /// `links N`, `links 2 n + 1`: the count as an expression over bound
+    /// names, evaluated where the mechanism is built.
+    pub links_expr: Option<Expr>,
     /// `joints 8R P RP` — each group as written.
     pub joints: Vec<JointGroupSyntax>,
-    /// `legs K CHAIN`, e.g. `legs 6 UPS`.
+    /// `legs K CHAIN`, e.g. `legs 6 UPS`; K is 0 when written as an
+    /// expression (`legs_expr`).
     pub legs: Option<(i64, String, Span)>,
+    /// `legs n UPS`: the number of legs as an expression.
+    pub legs_expr: Option<Expr>,
     /// `planar`, `spatial` or `spherical` as written.
     pub space: Option<(String, Span)>,
     /// Any other item, kept so the validator can name it in an error.
@@ -239,8 +273,11 @@ pub struct MechSpec {
 /// One joint token: `R`, `8R`, `RP` (a compound joint), `6UPS`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct JointGroupSyntax {
-    /// The leading count (1 when absent).
+    /// The leading count (1 when absent, 0 when written as an
+    /// expression, `(n)R`).
     pub count: i64,
+    /// `(n)R`, `(n - 1) R`: the count as an expression.
+    pub count_expr: Option<Expr>,
     /// The joint letters, e.g. `"RP"`.
     pub letters: String,
     pub span: Span,

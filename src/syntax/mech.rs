@@ -6,7 +6,7 @@
 
 use pest::iterators::Pair;
 
-use super::ast::{JointGroupSyntax, MechSpec, Span};
+use super::ast::{BinOp, Expr, ExprKind, JointGroupSyntax, MechSpec, Span};
 use super::grammar::Rule;
 use super::parser::Cx;
 use crate::diagnostics::{Diagnostic, ErrorKind};
@@ -22,11 +22,87 @@ impl Cx {
         })
     }
 
+    /// A `mech_count`: a whole number as `(n, None)`; anything else
+    /// (`N`, `2 n + 1`, `(k)`) as `(0, Some(expr))`, `*` before `+ -`.
+    fn count(&self, pair: Pair<'_, Rule>) -> Result<(i64, Option<Expr>), Diagnostic> {
+        let parts: Vec<Pair<'_, Rule>> = pair.into_inner().collect();
+        if let [one] = parts.as_slice()
+            && one.as_rule() == Rule::int
+        {
+            return Ok((self.int(one)?, None));
+        }
+        // Terms of the sum, each a product; signs between them.
+        let mut sum: Option<Expr> = None;
+        let mut product: Option<Expr> = None;
+        let mut sign = BinOp::Add;
+        let mut pending = BinOp::Mul;
+        let join = |op: BinOp, l: Expr, r: Expr, op_span: Span| {
+            let span = l.span.join(r.span);
+            let kind = ExprKind::Binary {
+                op,
+                lhs: Box::new(l),
+                rhs: Box::new(r),
+                op_span,
+                implicit: false,
+            };
+            Expr { kind, span }
+        };
+        let mut op_span = Span::new(0, 0);
+        for p in parts {
+            let span = self.span(p.as_span());
+            let term = match p.as_rule() {
+                Rule::mech_op => {
+                    op_span = span;
+                    let op = match p.as_str() {
+                        "*" => BinOp::Mul,
+                        "-" => BinOp::Sub,
+                        _ => BinOp::Add,
+                    };
+                    if op == BinOp::Mul {
+                        pending = BinOp::Mul;
+                    } else {
+                        if let Some(t) = product.take() {
+                            sum = Some(match sum.take() {
+                                Some(s) => join(sign, s, t, op_span),
+                                None => t,
+                            });
+                        }
+                        sign = op;
+                    }
+                    continue;
+                }
+                Rule::int => Expr {
+                    kind: ExprKind::Number(self.int(&p)? as f64),
+                    span,
+                },
+                Rule::mech_name => Expr {
+                    kind: ExprKind::Var(p.as_str().into()),
+                    span,
+                },
+                _ => self.primary(p)?.0,
+            };
+            product = Some(match product.take() {
+                Some(l) => join(pending, l, term, op_span),
+                None => term,
+            });
+        }
+        let last = product.ok_or_else(|| self.internal(op_span))?;
+        Ok((
+            0,
+            Some(match sum {
+                Some(s) => join(sign, s, last, op_span),
+                None => last,
+            }),
+        ))
+    }
+
     pub(super) fn mech(&self, pair: Pair<'_, Rule>) -> Result<MechSpec, Diagnostic> {
         let mut spec = MechSpec {
             links: None,
+            links_expr: None,
             joints: Vec::new(),
             legs: None,
+            legs_expr: None,
             space: None,
             unknown: Vec::new(),
         };
@@ -48,32 +124,45 @@ impl Cx {
                     first(spec.links.as_ref().map(|l| l.1), "links")?;
                     let n = item
                         .into_inner()
-                        .find(|p| p.as_rule() == Rule::int)
+                        .find(|p| p.as_rule() == Rule::mech_count)
                         .ok_or_else(|| self.internal(span))?;
-                    spec.links = Some((self.int(&n)?, span));
+                    let (n, e) = self.count(n)?;
+                    spec.links = Some((n, span));
+                    spec.links_expr = e;
                 }
                 Rule::mech_joints => {
                     first(joints_at, "joints")?;
                     joints_at = Some(span);
                     for j in item.into_inner().filter(|p| p.as_rule() == Rule::joint) {
                         let text = j.as_str();
-                        let digits = text.len()
-                            - text.trim_start_matches(|c: char| c.is_ascii_digit()).len();
-                        let count = if digits == 0 {
-                            1
-                        } else {
-                            text[..digits].parse::<i64>().map_err(|_| {
-                                Diagnostic::error(
-                                    ErrorKind::Syntax,
-                                    self.span(j.as_span()),
-                                    format!("joint count too large: {text}"),
-                                )
-                            })?
-                        };
+                        let joint_span = self.span(j.as_span());
+                        let (mut count, mut count_expr, mut letters) = (1, None, "");
+                        for part in j.into_inner() {
+                            match part.as_rule() {
+                                Rule::joint_letters => letters = part.as_str(),
+                                _ => match (part.as_str(), part.into_inner().next()) {
+                                    // `(n)R`: an expression in parentheses.
+                                    (_, Some(paren)) => {
+                                        count = 0;
+                                        count_expr = Some(self.primary(paren)?.0);
+                                    }
+                                    (digits, None) => {
+                                        count = digits.trim().parse::<i64>().map_err(|_| {
+                                            Diagnostic::error(
+                                                ErrorKind::Syntax,
+                                                joint_span,
+                                                format!("joint count too large: {text}"),
+                                            )
+                                        })?;
+                                    }
+                                },
+                            }
+                        }
                         spec.joints.push(JointGroupSyntax {
                             count,
-                            letters: text[digits..].to_string(),
-                            span: self.span(j.as_span()),
+                            count_expr,
+                            letters: letters.to_string(),
+                            span: joint_span,
                         });
                     }
                 }
@@ -83,7 +172,9 @@ impl Cx {
                     let (Some(n), Some(chain)) = (it.next(), it.next()) else {
                         return Err(self.internal(span));
                     };
-                    spec.legs = Some((self.int(&n)?, chain.as_str().to_string(), span));
+                    let (k, e) = self.count(n)?;
+                    spec.legs = Some((k, chain.as_str().to_string(), span));
+                    spec.legs_expr = e;
                 }
                 Rule::mech_space => {
                     first(spec.space.as_ref().map(|s| s.1), "planar/spatial/spherical")?;

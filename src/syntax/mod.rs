@@ -40,6 +40,7 @@ mod parser;
 mod ranges;
 mod rewrite;
 mod rules;
+mod signs;
 mod spacing;
 mod split;
 

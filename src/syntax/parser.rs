@@ -30,12 +30,19 @@ const PREC_POW: u8 = 5;
 
 static PRATT: LazyLock<PrattParser<Rule>> = LazyLock::new(|| {
     PrattParser::new()
-        .op(Op::infix(Rule::eq, Assoc::Left) | Op::infix(Rule::approx, Assoc::Left))
+        .op(Op::infix(Rule::eq, Assoc::Left)
+            | Op::infix(Rule::approx, Assoc::Left)
+            | Op::infix(Rule::lt, Assoc::Left)
+            | Op::infix(Rule::le, Assoc::Left)
+            | Op::infix(Rule::gt, Assoc::Left)
+            | Op::infix(Rule::ge, Assoc::Left))
         .op(Op::infix(Rule::range_op, Assoc::Left))
         .op(Op::infix(Rule::add, Assoc::Left) | Op::infix(Rule::sub, Assoc::Left))
         .op(Op::infix(Rule::mul, Assoc::Left)
             | Op::infix(Rule::div, Assoc::Left)
             | Op::infix(Rule::juxt, Assoc::Left)
+            | Op::infix(Rule::dot_op, Assoc::Left)
+            | Op::infix(Rule::cross_op, Assoc::Left)
             | Op::infix(Rule::starstar, Assoc::Left))
         .op(Op::prefix(Rule::neg) | Op::prefix(Rule::pos))
         .op(Op::infix(Rule::pow, Assoc::Right))
@@ -116,7 +123,7 @@ enum Role {
 fn role(rule: Rule) -> Role {
     match rule {
         Rule::neg | Rule::pos => Role::Prefix,
-        Rule::eq | Rule::approx => Role::Infix {
+        Rule::eq | Rule::approx | Rule::lt | Rule::le | Rule::gt | Rule::ge => Role::Infix {
             prec: PREC_CMP,
             right: false,
         },
@@ -128,10 +135,12 @@ fn role(rule: Rule) -> Role {
             prec: PREC_ADD,
             right: false,
         },
-        Rule::mul | Rule::div | Rule::juxt | Rule::starstar => Role::Infix {
-            prec: PREC_MUL,
-            right: false,
-        },
+        Rule::mul | Rule::div | Rule::juxt | Rule::starstar | Rule::dot_op | Rule::cross_op => {
+            Role::Infix {
+                prec: PREC_MUL,
+                right: false,
+            }
+        }
         Rule::pow => Role::Infix {
             prec: PREC_POW,
             right: true,
@@ -235,7 +244,11 @@ impl Cx {
                         }
                     }
                 }
-                let ty = ty.ok_or_else(|| self.internal(whole))?;
+                // `given α, β`: scalars (a type is needed only for other kinds).
+                let ty = ty.unwrap_or_else(|| Ident {
+                    name: "scalar".into(),
+                    span: whole,
+                });
                 Ok(StmtKind::Given { names, ty, times })
             }
             Rule::assert_stmt => match form.into_inner().find(|p| p.as_rule() == Rule::expr) {
@@ -335,6 +348,11 @@ impl Cx {
                 if let Some(op) = rules::cmp_op(op.as_rule()) {
                     return Ok((Expr::compare(op, l, r, op_span), depth));
                 }
+                // `a · b`, `a × b`: the book's dot and cross products.
+                let (l, r) = match self.product_call(op.as_rule(), l, r, op_span) {
+                    Ok(call) => return Ok((call, depth)),
+                    Err(operands) => operands,
+                };
                 let (bop, implicit, op_span) = match op.as_rule() {
                     Rule::add => (BinOp::Add, false, op_span),
                     Rule::sub => (BinOp::Sub, false, op_span),
@@ -414,35 +432,6 @@ impl Cx {
             return Err(self.internal(whole));
         }
         Ok(operands)
-    }
-
-    /// `left right` with nothing between. Legal everywhere the book writes
-    /// a product (`2 pi`, `A t`, `T_sb T_bc`); `spacing.rs` refuses the
-    /// readings that are not plain once the tree is built. Here only a
-    /// bracket right after a name that is not a valid index (`M[1; 2]`).
-    fn check_juxtaposition(
-        &self,
-        left: &Pair<'_, Rule>,
-        right: &Pair<'_, Rule>,
-    ) -> Result<(), Diagnostic> {
-        let last = left.clone().into_inner().last().map(|p| p.as_rule());
-        let first = right.clone().into_inner().next().map(|p| p.as_rule());
-        let indexable = matches!(
-            last,
-            Some(Rule::ident | Rule::call | Rule::index | Rule::member)
-        );
-        if indexable
-            && first == Some(Rule::brackets)
-            && left.as_span().end() == right.as_span().start()
-        {
-            return Err(Diagnostic::error(
-                ErrorKind::Syntax,
-                self.span(right.as_span()),
-                "an index takes one or two subscripts separated by `,`",
-            )
-            .with_help("write M[i], M[i, j], M[i, :] or M[:, j]"));
-        }
-        Ok(())
     }
 
     fn postfix(&self, base: Expr, depth: usize, op: Pair<'_, Rule>) -> Built {
@@ -544,6 +533,8 @@ impl Cx {
                 ))
             }
             Rule::bare_call => self.bare_call(pair),
+            // `√2`, `√(x + 1)`: sqrt of the atom after the sign.
+            Rule::root => self.root(pair, span),
             Rule::deg_unit => Ok(self.deg_unit(span)),
             Rule::paren | Rule::sup_group => {
                 let (mut items, d) = self.exprs(pair.into_inner())?;

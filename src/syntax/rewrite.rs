@@ -2,7 +2,8 @@
 //! (LANGUAGE.md §4), shared by both parsers:
 //!
 //! - the exponent `T` always transposes: `R^T`, `R^{T}` become `R.T`, even
-//!   when a name `T` is bound;
+//!   when a name `T` is bound, and `R^T (p)` (eq. 3.64's `-R^T p`) is
+//!   `R.T (p)`, a product, not `R^(T(p))`;
 //! - nested brackets as numpy writes them, `[[0, -1, 0], [1, 0, 0]]`, are
 //!   rows: a bracket whose every element is a bracketed row of two or more
 //!   entries (and which has two or more of them) is the matrix of those
@@ -60,7 +61,7 @@ fn expr(e: &mut Expr) {
     transpose(e);
 }
 
-/// `X^T` → `X.T`.
+/// `X^T` → `X.T`; `X^T (p)` → `X.T (p)`.
 fn transpose(e: &mut Expr) {
     let ExprKind::Binary {
         op: super::ast::BinOp::Pow,
@@ -71,6 +72,13 @@ fn transpose(e: &mut Expr) {
     else {
         return;
     };
+    if let ExprKind::Call { func, .. } = &rhs.kind
+        && func.name == "T"
+        && func.span.start == rhs.span.start
+    {
+        transpose_times(e);
+        return;
+    }
     if !matches!(&rhs.kind, ExprKind::Var(t) if t == "T") {
         return;
     }
@@ -101,4 +109,49 @@ fn row_of(el: &Expr) -> Option<&Vec<Expr>> {
         ExprKind::Brackets(inner) if inner.len() == 1 && inner[0].len() >= 2 => Some(&inner[0]),
         _ => None,
     }
+}
+
+/// `X^T (p)`, read as `X^(T(p))` by the grammar → `X.T (p)`: the `T` of
+/// an exponent is never a function.
+fn transpose_times(e: &mut Expr) {
+    let kind = std::mem::replace(&mut e.kind, ExprKind::Bool(false));
+    let ExprKind::Binary { lhs, rhs, .. } = kind else {
+        e.kind = kind;
+        return;
+    };
+    let Expr {
+        kind: rhs_kind,
+        span: rhs_span,
+    } = *rhs;
+    let ExprKind::Call { func, mut args } = rhs_kind else {
+        return;
+    };
+    let base_span = lhs.span.join(func.span);
+    let base = Expr {
+        kind: ExprKind::Member {
+            base: lhs,
+            member: func.clone(),
+        },
+        span: base_span,
+    };
+    // The parenthesis after `T`: one argument is itself, several a vector.
+    let paren_span = super::ast::Span::new(func.span.end, rhs_span.end);
+    let arg = if args.len() == 1 {
+        let mut a = args.remove(0);
+        a.span = paren_span;
+        a
+    } else {
+        Expr {
+            kind: ExprKind::Paren(args),
+            span: paren_span,
+        }
+    };
+    let op_span = super::ast::Span::new(func.span.end, func.span.end);
+    e.kind = ExprKind::Binary {
+        op: super::ast::BinOp::Mul,
+        lhs: Box::new(base),
+        rhs: Box::new(arg),
+        op_span,
+        implicit: true,
+    };
 }

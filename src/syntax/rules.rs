@@ -56,6 +56,8 @@ pub(crate) fn rule_name(rule: Rule) -> &'static str {
         | Rule::pos
         | Rule::operand
         | Rule::primary
+        | Rule::root
+        | Rule::root_arg
         | Rule::call
         | Rule::paren
         | Rule::brackets
@@ -84,6 +86,12 @@ pub(crate) fn rule_name(rule: Rule) -> &'static str {
         | Rule::range_op
         | Rule::eq
         | Rule::approx
+        | Rule::lt
+        | Rule::le
+        | Rule::gt
+        | Rule::ge
+        | Rule::dot_op
+        | Rule::cross_op
         | Rule::juxt
         | Rule::postfix
         | Rule::index
@@ -105,7 +113,11 @@ pub(crate) fn rule_name(rule: Rule) -> &'static str {
         | Rule::kw_links
         | Rule::kw_joints
         | Rule::kw_legs => MECH_ITEM,
-        Rule::joint => "a joint such as R, P, 8R or RP",
+        Rule::joint | Rule::joint_count | Rule::joint_letters => {
+            "a joint such as R, P, 8R, RP or 6 sliding"
+        }
+        Rule::mech_count | Rule::mech_term | Rule::mech_name => "a whole number",
+        Rule::mech_op => OPERATOR,
         Rule::chain => "the joints of a leg, such as UPS",
         Rule::int => "a whole number",
         Rule::ident => "a name",
@@ -204,9 +216,13 @@ pub(crate) fn pest_error(err: pest::error::Error<Rule>, text: &str, off: usize) 
     if names.iter().any(|n| n == EXPRESSION || n == OPERATOR) {
         names.retain(|n| n != "'('" && n != "a name");
     }
-    // A range's `:` is an operator (`0:4`).
+    // A range's `:` and the orders `<`, `>` are operators (`0:4`, `a < b`).
     if names.iter().any(|n| n == OPERATOR) {
-        names.retain(|n| n != "':'");
+        names.retain(|n| n != "':'" && n != "'<'" && n != "'>'");
+    }
+    // A count in a mechanism (`links N`, `legs (n) UPS`) is "a whole number".
+    if names.iter().any(|n| n == "a whole number") {
+        names.retain(|n| n != "'('");
     }
     if found_char.is_none() {
         names.retain(|n| n != END);
@@ -288,6 +304,10 @@ fn help(text: &str, pos: usize, found: Option<char>, expected: &[String]) -> Opt
     let before = text.get(..pos).unwrap_or("").trim_end();
     let wants = |s: &str| expected.iter().any(|e| e == s);
     match found? {
+        c if c.is_alphabetic() && before.starts_with("given") && wants("':'") => Some(
+            "the type follows a colon: given T_ab, T_bc : SE3 (scalars need none: given α, β)"
+                .into(),
+        ),
         '*' if before.ends_with('*') => Some("use ^ for powers: x^2".into()),
         '!' => Some("there is no `!=`: write (a == b) == false".into()),
         '=' if before.ends_with('=') => {
@@ -308,7 +328,7 @@ fn help(text: &str, pos: usize, found: Option<char>, expected: &[String]) -> Opt
         }
         '\'' => Some("`'` is part of a name (T_sb'); to transpose write x^T, xᵀ or x.T".into()),
         '<' | '>' if wants(OPERATOR) || wants(END) => Some(
-            "comparisons are `==` and `≈` (typed `~=`); `<` only opens a mechanism: mech < links 4; joints 4R; planar >"
+            "comparisons are `==`, `≈` (typed `~=`), `<`, `<=`, `>`, `>=`; a mechanism is mech < links 4; joints 4R; planar >"
                 .into(),
         ),
         '{' | '}' => Some(
@@ -326,6 +346,10 @@ pub(super) fn cmp_op(rule: Rule) -> Option<CmpOp> {
     match rule {
         Rule::eq => Some(CmpOp::Eq),
         Rule::approx => Some(CmpOp::Approx),
+        Rule::lt => Some(CmpOp::Lt),
+        Rule::le => Some(CmpOp::Le),
+        Rule::gt => Some(CmpOp::Gt),
+        Rule::ge => Some(CmpOp::Ge),
         _ => None,
     }
 }

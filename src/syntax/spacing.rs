@@ -182,7 +182,12 @@ impl Check<'_> {
     /// `sin θ`, written without parentheses.
     fn bare_call<'e>(&self, e: &'e Expr) -> Option<&'e Expr> {
         match &e.kind {
-            ExprKind::Call { args, .. } if args.len() == 1 && !self.text(e.span).ends_with(')') => {
+            // `√2` binds to its atom alone: `√3/2`, `√2 x` read one way.
+            ExprKind::Call { args, .. }
+                if args.len() == 1
+                    && !self.text(e.span).ends_with(')')
+                    && !self.text(e.span).starts_with('√') =>
+            {
                 Some(&args[0])
             }
             _ => None,

@@ -152,9 +152,37 @@ fn picture(p: &super::value::Picture) -> String {
     if p.is_view_only() {
         return p.summary.clone();
     }
+    // Not printed on its own (an item of a list): what it holds.
+    let summary = if p.summary.is_empty() {
+        describe(p)
+    } else {
+        p.summary.clone()
+    };
     match &p.file {
-        Some(f) => format!("picture: {} → {f}", p.summary),
-        None => format!("picture: {}", p.summary),
+        Some(f) => format!("picture: {summary} → {f}"),
+        None => format!("picture: {summary}"),
+    }
+}
+
+/// The items of a picture that has no summary yet: `point (1, 0, 0)`,
+/// `arrow (0, 0, 1)`, `T_sa`.
+fn describe(p: &super::value::Picture) -> String {
+    use super::value::Style;
+    let items: Vec<String> = p
+        .panels
+        .iter()
+        .flat_map(|q| q.items.iter())
+        .map(|d| match d.style {
+            Style::Point => format!("point {}", inline(&d.value, 4)),
+            Style::Arrow => format!("arrow {}", inline(&d.value, 4)),
+            Style::Natural if !d.label.is_empty() => d.label.clone(),
+            Style::Natural => d.ty.kind.to_string(),
+        })
+        .collect();
+    if items.is_empty() {
+        "nothing".into()
+    } else {
+        items.join(", ")
     }
 }
 

@@ -93,7 +93,7 @@ pub fn mul(l: &Value, r: &Value, kind: &Kind) -> Result<Value, OpError> {
     }
     check_size(lm.nrows(), rm.ncols())?;
     check_work(lm.nrows(), lm.ncols(), rm.ncols(), 1)?;
-    let product = &*lm.to_dmatrix() * &*rm.to_dmatrix();
+    let product = product(&lm.to_dmatrix(), &rm.to_dmatrix())?;
     Ok(out(kind, Num::from_dmatrix(product)))
 }
 
@@ -130,12 +130,36 @@ pub fn cube(n: usize) -> u128 {
     n * n * n
 }
 
-/// Refuses results larger than [`MAX_ELEMENTS`].
+/// Refuses results larger than [`MAX_ELEMENTS`], or than the evaluation
+/// budget lets the statement hold ([`crate::budget::room`]).
 pub fn check_size(r: usize, c: usize) -> Result<(), OpError> {
     if r > MAX_DIM || c > MAX_DIM || r.saturating_mul(c) > MAX_ELEMENTS {
         return Err(OpError::TooLarge { rows: r, cols: c });
     }
-    Ok(())
+    crate::budget::room((r * c) as u64).map_err(|stop| OpError::Message(stop.to_string()))
+}
+
+/// The multiply-adds of one block of a large product: a few milliseconds.
+const BLOCK_WORK: usize = 1 << 22;
+
+/// A B for general matrices; a large product goes by blocks of columns,
+/// asking the evaluation budget ([`crate::budget`]) between blocks, so an
+/// interrupt or a deadline stops it within milliseconds.
+pub fn product(a: &DMatrix<f64>, b: &DMatrix<f64>) -> Result<DMatrix<f64>, OpError> {
+    let per_column = a.nrows().saturating_mul(a.ncols()).max(1);
+    if per_column.saturating_mul(b.ncols()) <= BLOCK_WORK {
+        return Ok(a * b);
+    }
+    let width = (BLOCK_WORK / per_column).max(1);
+    let mut out = DMatrix::zeros(a.nrows(), b.ncols());
+    let mut j = 0;
+    while j < b.ncols() {
+        crate::budget::check().map_err(|stop| OpError::Message(stop.to_string()))?;
+        let w = width.min(b.ncols() - j);
+        out.columns_mut(j, w).copy_from(&(a * b.columns(j, w)));
+        j += w;
+    }
+    Ok(out)
 }
 
 /// `l + r` or `l - r`.
@@ -215,11 +239,11 @@ pub fn pow(b: &Value, e: f64, kind: &Kind) -> Result<Value, OpError> {
     let mut acc = DMatrix::identity(bm.nrows(), bm.ncols());
     while n > 0 {
         if n & 1 == 1 {
-            acc = &acc * &base;
+            acc = product(&acc, &base)?;
         }
         n >>= 1;
         if n > 0 {
-            base = &base * &base;
+            base = product(&base, &base)?;
         }
     }
     // A power of a plain matrix is a plain matrix, even when it happens to

@@ -182,8 +182,9 @@ impl P<'_> {
                 NameByte::NonAscii => {
                     odd = true;
                     let Some(c) = self.char_at(i) else { break };
-                    // `ᵀ` is the transpose mark, never part of a name.
-                    if !xid_continue(c) || c == 'ᵀ' {
+                    // `ᵀ` is the transpose mark and `·` the dot product,
+                    // never part of a name.
+                    if !xid_continue(c) || c == 'ᵀ' || c == '·' {
                         break;
                     }
                     i += c.len_utf8();

@@ -135,7 +135,9 @@ const TOKENS: &[&str] = &[
     "derive", "mech", "assert", "~=", "≈", "<", ">", "\n", " ", "\t", "_{", "}", "f(", "**", ".T",
     "_", // The book's notation.
     "ᵀ", "^T", "^{", "sin", "cos ", "sqrt", "e^", "0.", "1.e", "-1.", "[[", "]]", "I", "T_01", "²",
-    "−", " −", "⁻¹", "⁻",
+    "−", " −", "⁻¹", "⁻", // Issue 22's forms.
+    "√", "·", "ŵ·", "×", "<=", ">=", "≤", "≥", "end", "for", "in", "^T (", "R (", "links",
+    "joints", "legs", "sliding", "6 ",
 ];
 
 fn tokens() -> impl Strategy<Value = String> {
@@ -183,6 +185,12 @@ fn expr() -> impl Strategy<Value = String> {
             "0.",
             "[1 -2 3]",
             "[[1. 2.] [3. 4.]]",
+            "√2",
+            "√(x + 1)",
+            "R^T (p)",
+            "n (n - 1)",
+            "S[1:3]",
+            "v[end]",
         ][..],
     )
     .prop_map(str::to_string);
@@ -190,7 +198,7 @@ fn expr() -> impl Strategy<Value = String> {
         let op = prop::sample::select(
             &[
                 "+", "-", "*", "/", "^", " ", "", "^-", " - -", "^T", "^{T}", " [w] ", ",\n",
-                " == ", "~=", "≈",
+                " == ", "~=", "≈", " < ", "<=", " ≥ ", "·", " × ",
             ][..],
         );
         prop_oneof![

@@ -1,0 +1,244 @@
+//! Ranges and `end` as indices (LANGUAGE.md §4), as MATLAB writes them:
+//! `S[1:3]` (the ω part of a screw), `T[1:3, 4]` (the position of a
+//! transform), `T[1:3, 1:3]`, `v[end]`, `v[end - 1]`, `xs[2:end]` on a list.
+//! 1-based and inclusive; `end` is the length of its dimension (of a vector
+//! its length, of a matrix its rows or columns).
+
+use std::rc::Rc;
+
+use nalgebra::DMatrix;
+
+use super::expr::refine;
+use super::interp::{Interp, Typed};
+use super::value::Value;
+use crate::check::ty::{Frames, Kind, Ty};
+use crate::diagnostics::{Diagnostic, ErrorKind};
+use crate::syntax::ast::{Expr, ExprKind, IndexArg, Span};
+use crate::values::num::Num;
+
+/// Whether `e` mentions the name `end`.
+fn mentions_end(e: &Expr) -> bool {
+    match &e.kind {
+        ExprKind::Var(n) => n == "end",
+        ExprKind::Binary { lhs, rhs, .. } => mentions_end(lhs) || mentions_end(rhs),
+        ExprKind::Unary { operand, .. } => mentions_end(operand),
+        ExprKind::Range { start, step, end } => {
+            mentions_end(start) || step.as_deref().is_some_and(mentions_end) || mentions_end(end)
+        }
+        ExprKind::Call { args, .. } | ExprKind::Paren(args) => args.iter().any(mentions_end),
+        _ => false,
+    }
+}
+
+/// `e` with `end` replaced by the number `n`.
+fn with_end(e: &Expr, n: f64) -> Expr {
+    let kind = match &e.kind {
+        ExprKind::Var(name) if name == "end" => ExprKind::Number(n),
+        ExprKind::Binary {
+            op,
+            lhs,
+            rhs,
+            op_span,
+            implicit,
+        } => ExprKind::Binary {
+            op: *op,
+            lhs: Box::new(with_end(lhs, n)),
+            rhs: Box::new(with_end(rhs, n)),
+            op_span: *op_span,
+            implicit: *implicit,
+        },
+        ExprKind::Unary { op, operand } => ExprKind::Unary {
+            op: *op,
+            operand: Box::new(with_end(operand, n)),
+        },
+        ExprKind::Range { start, step, end } => ExprKind::Range {
+            start: Box::new(with_end(start, n)),
+            step: step.as_ref().map(|s| Box::new(with_end(s, n))),
+            end: Box::new(with_end(end, n)),
+        },
+        ExprKind::Call { func, args } => ExprKind::Call {
+            func: func.clone(),
+            args: args.iter().map(|a| with_end(a, n)).collect(),
+        },
+        ExprKind::Paren(args) => ExprKind::Paren(args.iter().map(|a| with_end(a, n)).collect()),
+        other => other.clone(),
+    };
+    Expr { kind, span: e.span }
+}
+
+/// One index: positions (1-based) and whether it was a single number.
+struct Picked {
+    at: Vec<f64>,
+    single: bool,
+}
+
+impl Interp<'_> {
+    /// Whether the index `args` need this module: a range, or `end` while
+    /// no value is named `end`.
+    pub(super) fn is_slice(&self, args: &[IndexArg]) -> bool {
+        args.iter().any(|a| match a {
+            IndexArg::Expr(e) => {
+                matches!(e.kind, ExprKind::Range { .. })
+                    || (self.env.get("end").is_none() && mentions_end(e))
+            }
+            IndexArg::All(_) => false,
+        })
+    }
+
+    /// `x[ranges or end]`.
+    pub(super) fn slice(
+        &mut self,
+        base: &Expr,
+        args: &[IndexArg],
+        span: Span,
+    ) -> Result<Typed, Diagnostic> {
+        let t = self.expr(base)?;
+        let (rows, cols) = match (t.value(), t.ty.kind) {
+            (Some(Value::List(xs)), _) => (Some(xs.len()), Some(1)),
+            (Some(v), _) => match v.as_matrix() {
+                Some(m) => (Some(m.nrows()), Some(m.ncols())),
+                None => (None, None),
+            },
+            (None, Kind::List(_)) => (None, Some(1)),
+            (None, k) => k.shape().unwrap_or((None, None)),
+        };
+        if args.len() > 2 || (t.value().is_some() && rows.is_none()) {
+            return Err(Diagnostic::error(
+                ErrorKind::Type,
+                span,
+                format!("cannot index {} with a range", t.ty.kind.a()),
+            ));
+        }
+        let one = args.len() == 1;
+        let mut picks = Vec::with_capacity(args.len());
+        for (i, a) in args.iter().enumerate() {
+            let n = match (one, i) {
+                (true, _) if cols == Some(1) => rows,
+                (true, _) => rows.zip(cols).map(|(r, c)| r * c),
+                (false, 0) => rows,
+                _ => cols,
+            };
+            picks.push(self.pick(a, n)?);
+        }
+        let Some(value) = t.value() else {
+            // Checking: the kind without the sizes.
+            let kind = match (t.ty.kind, picks.as_slice()) {
+                (Kind::List(k), [p]) if p.single => *k,
+                (k @ Kind::List(_), _) => k,
+                (_, [p]) | (_, [p, Picked { single: true, .. }]) if p.single => Kind::Scalar,
+                (_, [_] | [_, Picked { single: true, .. }]) => Kind::Vector(None),
+                _ => Kind::Matrix(None, None),
+            };
+            return Ok(Typed::new(Ty::plain(kind), None));
+        };
+        let check = |p: &Picked, n: usize, what: &str| -> Result<Vec<usize>, Diagnostic> {
+            p.at.iter()
+                .map(|&x| {
+                    if x.fract() == 0.0 && x >= 1.0 && x <= n as f64 {
+                        Ok(x as usize - 1)
+                    } else {
+                        Err(Diagnostic::error(
+                            ErrorKind::Domain,
+                            span,
+                            format!("index {x} is outside 1..{n} ({what})"),
+                        ))
+                    }
+                })
+                .collect()
+        };
+        if let Value::List(xs) = value {
+            let at = check(&picks[0], xs.len(), "the list's items")?;
+            if picks[0].single {
+                return Ok(Typed::new(
+                    Ty::new(list_elem(t.ty.kind), t.ty.frames),
+                    Some(xs[at[0]].clone()),
+                ));
+            }
+            let items: Vec<Value> = at.iter().map(|&k| xs[k].clone()).collect();
+            return Ok(Typed::new(t.ty, Some(Value::List(Rc::new(items)))));
+        }
+        let Some(m) = value.as_matrix() else {
+            return Err(Diagnostic::error(
+                ErrorKind::Type,
+                span,
+                "cannot index this value",
+            ));
+        };
+        let outer = match t.ty.frames.outer() {
+            Some(a) => Frames::One(*a),
+            None => Frames::None,
+        };
+        let (r, c) = (m.nrows(), m.ncols());
+        let (rs, cs) = if one {
+            // A vector's entries, or a matrix's column by column (MATLAB).
+            let at = check(&picks[0], r * c, "the entries")?;
+            let xs: Vec<f64> = at.iter().map(|&k| m[(k % r, k / r)]).collect();
+            if picks[0].single {
+                return Ok(Typed::new(Ty::scalar(), Some(Value::scalar(xs[0]))));
+            }
+            let frames = if c == 1 { t.ty.frames } else { Frames::None };
+            let kind = Kind::Vector(Some(xs.len()));
+            let val = Some(Value::vector(kind, &xs));
+            return Ok(Typed::new(refine(Ty::new(kind, frames), &val), val));
+        } else {
+            (
+                check(&picks[0], r, "the rows")?,
+                check(&picks[1], c, "the columns")?,
+            )
+        };
+        let sub = DMatrix::from_fn(rs.len(), cs.len(), |i, j| m[(rs[i], cs[j])]);
+        let (kind, frames) = match (picks[0].single, picks[1].single) {
+            (true, true) => return Ok(Typed::new(Ty::scalar(), Some(Value::scalar(sub[(0, 0)])))),
+            (false, true) => (Kind::Vector(Some(rs.len())), outer),
+            _ => (Kind::Matrix(Some(rs.len()), Some(cs.len())), Frames::None),
+        };
+        let val = Some(Value::Num {
+            kind,
+            m: Num::from_dmatrix(sub),
+        });
+        Ok(Typed::new(refine(Ty::new(kind, frames), &val), val))
+    }
+
+    /// The positions one index argument picks, `end` being `n`.
+    fn pick(&mut self, a: &IndexArg, n: Option<usize>) -> Result<Picked, Diagnostic> {
+        let e = match a {
+            IndexArg::All(_) => {
+                let at = (1..=n.unwrap_or(0)).map(|k| k as f64).collect();
+                return Ok(Picked { at, single: false });
+            }
+            IndexArg::Expr(e) => e,
+        };
+        let e = with_end(e, n.map_or(f64::NAN, |n| n as f64));
+        let t = self.expr(&e)?;
+        match t.value() {
+            Some(Value::List(xs)) => Ok(Picked {
+                at: xs
+                    .iter()
+                    .map(|x| x.as_scalar().unwrap_or(f64::NAN))
+                    .collect(),
+                single: false,
+            }),
+            Some(v) if v.as_scalar().is_some() => Ok(Picked {
+                at: vec![v.as_scalar().unwrap_or(f64::NAN)],
+                single: true,
+            }),
+            Some(_) => Err(Diagnostic::error(
+                ErrorKind::Type,
+                e.span,
+                "an index must be a number or a range",
+            )),
+            None => Ok(Picked {
+                at: Vec::new(),
+                single: !matches!(t.ty.kind, Kind::List(_)),
+            }),
+        }
+    }
+}
+
+/// The kind of a list's elements.
+fn list_elem(k: Kind) -> Kind {
+    match k {
+        Kind::List(e) => *e,
+        other => other,
+    }
+}

@@ -1,0 +1,221 @@
+//! The evaluation budget from the command line (issue 23, LANGUAGE.md §1):
+//! memory and time bombs are refused with the limit and the size named,
+//! `--timeout` stops a long script with exit 1, `--max-memory` caps the
+//! whole run, and Ctrl-C (SIGINT) stops `run` with exit 130 after what was
+//! printed. Every wait is bounded, so a regression fails instead of hanging.
+
+use std::io::Read;
+use std::process::{Child, Command, Stdio};
+use std::time::{Duration, Instant};
+
+struct Out {
+    code: Option<i32>,
+    stdout: String,
+    stderr: String,
+    took: Duration,
+}
+
+/// Waits for `child` at most `limit`; a hang kills it and fails the test.
+fn finish(mut child: Child, limit: Duration) -> Out {
+    let start = Instant::now();
+    let mut out_pipe = child.stdout.take().expect("stdout is piped");
+    let mut err_pipe = child.stderr.take().expect("stderr is piped");
+    let out = std::thread::spawn(move || {
+        let mut s = String::new();
+        let _ = out_pipe.read_to_string(&mut s);
+        s
+    });
+    let err = std::thread::spawn(move || {
+        let mut s = String::new();
+        let _ = err_pipe.read_to_string(&mut s);
+        s
+    });
+    let status = loop {
+        if let Some(status) = child.try_wait().expect("wait") {
+            break status;
+        }
+        if start.elapsed() > limit {
+            let _ = child.kill();
+            let _ = child.wait();
+            panic!("chasles did not finish within {limit:?}");
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    };
+    Out {
+        code: status.code(),
+        stdout: out.join().unwrap_or_default(),
+        stderr: err.join().unwrap_or_default(),
+        took: start.elapsed(),
+    }
+}
+
+fn spawn(args: &[&str]) -> Child {
+    Command::new(env!("CARGO_BIN_EXE_chasles"))
+        .args(args)
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("the binary starts")
+}
+
+fn run(args: &[&str]) -> Out {
+    finish(spawn(args), Duration::from_secs(120))
+}
+
+#[test]
+fn a_list_of_large_matrices_is_refused_with_its_size() {
+    // Without the budget: "memory allocation failed", SIGABRT.
+    let out = run(&[
+        "--keep-going",
+        "-e",
+        "x = 5\nx = [eye(2000) for k in 1:300]\nx",
+    ]);
+    assert_eq!(out.code, Some(1), "{}", out.stderr);
+    assert!(
+        out.stderr.contains(
+            "domain error: this would hold 1,200,000,300 numbers (9.6 GB); \
+             one statement may hold at most 50,000,000 numbers (400 MB)"
+        ),
+        "{}",
+        out.stderr
+    );
+    assert!(out.stderr.contains("--max-memory"), "{}", out.stderr);
+    // The session is as it was: x is still 5.
+    assert_eq!(out.stdout, "x = 5\n5\n");
+}
+
+#[test]
+fn a_grid_of_small_matrices_is_refused_with_its_size() {
+    // Without the budget: 3.5 GB in 10 s.
+    let out = run(&["--json", "-e", "[eye(64) for a in 1:1000, b in 1:1000]"]);
+    assert_eq!(out.code, Some(1), "{}", out.stderr);
+    let line: serde_json::Value = serde_json::from_str(out.stdout.trim()).expect("a JSON line");
+    assert_eq!(line["error"]["kind"], "domain");
+    let message = line["error"]["message"].as_str().unwrap_or("");
+    assert!(
+        message.starts_with("this would hold 4,097,000,000 numbers (32.8 GB)"),
+        "{message}"
+    );
+    // Refused long before it would have been built.
+    assert!(out.took < Duration::from_secs(60), "{:?}", out.took);
+}
+
+#[test]
+fn max_memory_caps_the_whole_run() {
+    // Each list fits in 100 MB; the bindings together do not.
+    let src = "a = len([eye(100) for k in 1:1000])\n\
+               b = [eye(100) for k in 1:1000]\n\
+               c = [eye(100) for k in 1:1000]";
+    let out = run(&["--max-memory", "100M", "-e", src]);
+    assert_eq!(out.code, Some(1), "{}", out.stderr);
+    assert!(
+        out.stdout.starts_with("a = 1000\nb = list of 1000"),
+        "{}",
+        out.stdout
+    );
+    assert!(
+        out.stderr
+            .contains("<-e>:3:5: domain error: this would hold")
+            && out
+                .stderr
+                .contains("--max-memory allows at most 12,500,000 numbers (100 MB)"),
+        "{}",
+        out.stderr
+    );
+    // A bad size is a usage error.
+    let out = run(&["--max-memory", "lots", "-e", "1"]);
+    assert_eq!(out.code, Some(2), "{}", out.stderr);
+    assert!(
+        out.stderr.contains("'lots' is not a size"),
+        "{}",
+        out.stderr
+    );
+}
+
+#[test]
+fn timeout_stops_a_long_script() {
+    let dir = std::env::temp_dir().join(format!("chasles-budget-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("a temp dir");
+    let script = dir.join("long.chs");
+    std::fs::write(
+        &script,
+        "x = 1\ny = len([det(k * eye(200)) for k in 1:1000000])\nz = 3\n",
+    )
+    .expect("the script is written");
+    let path = script.to_string_lossy().to_string();
+    let out = run(&["--timeout", "1", "--keep-going", "run", &path]);
+    assert_eq!(out.code, Some(1), "{}", out.stderr);
+    assert_eq!(out.stdout, "x = 1\n", "the run stops at the time budget");
+    assert!(
+        out.stderr.contains(
+            "long.chs:2:9: domain error: the time budget is spent: the run took more than 1 s (--timeout)"
+        ),
+        "{}",
+        out.stderr
+    );
+    // Well before the minutes the statement would take.
+    assert!(out.took < Duration::from_secs(60), "{:?}", out.took);
+    // `check` takes the flag too.
+    let out = run(&["--timeout", "5", "check", &path]);
+    assert_eq!(out.code, Some(0), "{}", out.stderr);
+    let out = run(&["--timeout", "-1", "check", &path]);
+    assert_eq!(out.code, Some(2), "{}", out.stderr);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_symbolic_expansion_stops_at_the_timeout() {
+    let out = run(&[
+        "--timeout",
+        "0.5",
+        "-e",
+        "given a, b, c, d : scalar\nx = (a + b + c + d + 1)^14",
+    ]);
+    assert_eq!(out.code, Some(1), "{}", out.stderr);
+    assert!(
+        out.stderr.contains("more than 500 ms (--timeout)"),
+        "{}",
+        out.stderr
+    );
+}
+
+/// Whether process `pid` catches SIGINT (its handler is installed).
+#[cfg(target_os = "linux")]
+fn catches_sigint(pid: u32) -> bool {
+    let status = std::fs::read_to_string(format!("/proc/{pid}/status")).unwrap_or_default();
+    status
+        .lines()
+        .find_map(|l| l.strip_prefix("SigCgt:"))
+        .and_then(|mask| u64::from_str_radix(mask.trim(), 16).ok())
+        .is_some_and(|mask| mask & (1 << (2 - 1)) != 0)
+}
+
+#[cfg(target_os = "linux")]
+#[test]
+fn ctrl_c_stops_run_with_exit_130_after_what_was_printed() {
+    let child = spawn(&[
+        "-e",
+        "x = 1\ny = len([det(k * eye(200)) for k in 1:1000000])\nz = 3",
+    ]);
+    let pid = child.id();
+    let start = Instant::now();
+    while !catches_sigint(pid) {
+        assert!(
+            start.elapsed() < Duration::from_secs(60),
+            "no SIGINT handler"
+        );
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    // The first statement runs in microseconds; give it ample time.
+    std::thread::sleep(Duration::from_millis(500));
+    let sent = Command::new("kill")
+        .args(["-INT", &pid.to_string()])
+        .status()
+        .expect("kill runs");
+    assert!(sent.success());
+    let out = finish(child, Duration::from_secs(60));
+    assert_eq!(out.code, Some(130), "{}", out.stderr);
+    assert_eq!(out.stdout, "x = 1\n");
+    assert_eq!(out.stderr, "chasles: interrupted\n");
+}
