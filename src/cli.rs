@@ -157,6 +157,71 @@ enum Command {
         #[arg(required = true, value_name = "FILE")]
         files: Vec<std::path::PathBuf>,
     },
+    /// The Jupyter kernel (started by Jupyter with --connection-file), or
+    /// `kernel install` to write its kernelspec.
+    Kernel {
+        /// The connection file Jupyter writes for the kernel.
+        #[arg(long, value_name = "FILE")]
+        connection_file: Option<std::path::PathBuf>,
+        #[command(subcommand)]
+        action: Option<KernelAction>,
+    },
+}
+
+#[derive(Subcommand, Debug)]
+enum KernelAction {
+    /// Install the kernelspec `chasles` so that Jupyter lists the kernel
+    /// (default: --user).
+    Install {
+        /// In the user's Jupyter data folder ($JUPYTER_DATA_DIR, else the
+        /// platform's).
+        #[arg(long, conflicts_with = "sys_prefix")]
+        user: bool,
+        /// In the active Python environment ($VIRTUAL_ENV or $CONDA_PREFIX).
+        #[arg(long)]
+        sys_prefix: bool,
+    },
+}
+
+/// `chasles kernel …`: serve a notebook or install the kernelspec.
+fn kernel(connection_file: Option<&std::path::Path>, action: Option<&KernelAction>) -> i32 {
+    use crate::kernel::install::{self, Place};
+    match (connection_file, action) {
+        (None, Some(KernelAction::Install { sys_prefix, .. })) => {
+            let place = if *sys_prefix {
+                Place::SysPrefix
+            } else {
+                Place::User
+            };
+            match install::install(place) {
+                Ok(dir) => {
+                    println!(
+                        "installed the Jupyter kernel 'chasles' in {}",
+                        dir.display()
+                    );
+                    0
+                }
+                Err(msg) => {
+                    emit_err(&format!("chasles: {msg}\n"));
+                    2
+                }
+            }
+        }
+        (Some(file), None) => match crate::kernel::serve(file) {
+            Ok(()) => 0,
+            Err(msg) => {
+                emit_err(&format!("chasles: {msg}\n"));
+                2
+            }
+        },
+        _ => {
+            emit_err(
+                "chasles: use `chasles kernel install [--user|--sys-prefix]`; Jupyter starts \
+                 `chasles kernel --connection-file FILE`\n",
+            );
+            2
+        }
+    }
 }
 
 /// Writes to stdout; a closed pipe ends the program quietly.
@@ -303,7 +368,7 @@ where
     };
     match (&cli.command, &cli.eval) {
         (Some(_), Some(_)) => {
-            emit_err("chasles: -e cannot be combined with run or check\n");
+            emit_err("chasles: -e cannot be combined with a command (run, check, kernel)\n");
             2
         }
         (None, Some(src)) => match eval_text(src) {
@@ -321,6 +386,13 @@ where
             Ok(s) => run_sources(&s, Mode::Check, &cli.opts),
             Err(code) => code,
         },
+        (
+            Some(Command::Kernel {
+                connection_file,
+                action,
+            }),
+            None,
+        ) => kernel(connection_file.as_deref(), action.as_ref()),
         (None, None) => {
             if std::io::stdin().is_terminal() {
                 let gate = match gate(&cli.opts) {

@@ -5,7 +5,8 @@
 //! by `layers.py`; `lie` and `mech` import nothing from the language):
 //!
 //! ```text
-//! cli, repl     front ends (the terminal, flags, `:` commands)
+//! cli, repl,    front ends (the terminal, flags, `:` commands; the
+//! kernel        Jupyter kernel)
 //! session       parse → check → evaluate over a source text; reading scripts
 //! effects       the one gate for files a statement asks to write (`save`,
 //!               printed pictures, `:save`): written, refused or confined
@@ -60,7 +61,7 @@
 //!   asks whether to go on;
 //! - [`session`]: the pipeline parse → check → evaluate over a source text;
 //! - [`effects`]: the gate every file write goes through;
-//! - [`cli`], [`repl`]: the front ends.
+//! - [`cli`], [`repl`], [`kernel`]: the front ends.
 #![forbid(unsafe_code)]
 // Errors carry spans, labels and help text; they are rare, so their size is not worth boxing.
 #![allow(clippy::result_large_err)]
@@ -77,6 +78,7 @@ pub mod diagnostics;
 pub mod draw;
 pub mod effects;
 pub mod eval;
+pub mod kernel;
 pub mod lie;
 pub mod mech;
 pub mod output;

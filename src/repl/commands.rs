@@ -164,7 +164,7 @@ fn execute_input(session: &mut Session, input: &str) -> Reply {
 /// `exit()`, `quit()`)
 /// typed without the colon, as the command they mean — unless the word is
 /// bound as a variable.
-fn bare_command(session: &Session, input: &str) -> Option<String> {
+pub fn bare_command(session: &Session, input: &str) -> Option<String> {
     let t = input.trim();
     // Python's help(name).
     if let Some(inner) = t.strip_prefix("help(").and_then(|s| s.strip_suffix(')'))

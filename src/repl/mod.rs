@@ -12,6 +12,7 @@ mod editor;
 pub mod help;
 pub mod keywords;
 mod open;
+pub mod reference;
 pub mod save;
 
 use std::io::{IsTerminal, Write};

@@ -8,21 +8,36 @@ use std::path::{Path, PathBuf};
 
 use crate::effects::{Effect, WriteError};
 use crate::eval::env::{FrameMode, Mode};
-use crate::session::Session;
+use crate::session::{Report, Session};
 
 /// Runs `src` in the session like [`Session::run_to_strings`], and records
 /// the text of every statement that succeeded in `session.accepted`.
 pub fn run_recording(session: &mut Session, file: &str, src: &str) -> (String, String, usize) {
     let (mut out, mut err) = (String::new(), String::new());
-    let mut accepted = Vec::new();
     let settings = session.settings;
-    let n = session.run(src, Mode::Run, false, |r| {
+    let n = run_recording_each(session, src, |r| {
         let o = r.stdout(&settings, src);
         if !o.is_empty() {
             out.push_str(&o);
             out.push('\n');
         }
         err.push_str(&r.stderr(&settings, file, src));
+    });
+    (out, err, n)
+}
+
+/// Runs `src` in the session as the REPL does (stopping at the first
+/// error), calling `each` with every statement's report, and records the
+/// text of every statement that succeeded in `session.accepted`. The
+/// terminal prints the reports as text; the notebook kernel as rich output.
+pub fn run_recording_each(
+    session: &mut Session,
+    src: &str,
+    mut each: impl FnMut(&Report),
+) -> usize {
+    let mut accepted = Vec::new();
+    let n = session.run(src, Mode::Run, false, |r| {
+        each(r);
         if let Ok(outcome) = &r.result
             && let Some(text) = src.get(outcome.span.start..outcome.span.end)
             && !text.trim().is_empty()
@@ -31,7 +46,7 @@ pub fn run_recording(session: &mut Session, file: &str, src: &str) -> (String, S
         }
     });
     session.accepted.extend(accepted);
-    (out, err, n)
+    n
 }
 
 /// `:history`: the accepted statements, numbered.
