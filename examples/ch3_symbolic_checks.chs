@@ -13,6 +13,7 @@
 #     angles outside the 15° family (20°); the derivative of a quotient;
 #   - √(x²) = |x|; log, euler_zyx, euler_zxz, quat, cayley of a symbolic
 #     rotation on their branch (a note names the branch assumed);
+#   - partial derivatives by q and q̇ (∂L/∂q̇ of a Lagrangian);
 #   - the symbolic inverse (inv(J) and J^-1 agree), SO(2)/SE(2) labels and
 #     the book's names on symbolic screws.
 
@@ -74,6 +75,15 @@ K = [a, b; c, L1]
 K^-1
 assert inv(K) K == I
 [cos(t), -sin(t), a; sin(t), cos(t), b; 0, 0, 1]
+
+# --- partial derivatives by a coordinate or its rate (issue 21, item 3) ---------
+given q1(t), q2(t), q(t), m, g : scalar
+diff(q1 q2, q1)                               # q2
+assert diff(q1 q2, q1) == q2
+assert diff(q1', q1') == 1
+Lag = m q'^2/2 + m g cos(q)
+diff(Lag, q')                                 # m q̇
+assert diff(Lag, q') == m q'
 
 # --- numbers bound later: π is a number -------------------------------------------
 given u : scalar

@@ -47,6 +47,7 @@ T_bc * T_cb                      # I
 T_sb * T_bc                      # = T_sc (subscript cancellation)
 T_ab = inv(T_sa) * T_sb          # = T_sb, since {a} = {s}
 
+given v_a, v_b, v_c : point      # v names a velocity elsewhere; here the book's point
 v_b = (0, 0, 1.5)                # the point v of Figure 3.13, in {b}
 v_a = T_ab * v_b                 # (1.5, -2, 0)
 v_c = T_cb * v_b                 # (-2.5, 0, -3)

@@ -269,6 +269,7 @@ pub fn product(l: &Ty, r: &Ty, kind: &Kind) -> Result<(Frames, Option<u32>), Cla
 /// symbols knew (`Ty::algebra`) is left to the numbers.
 pub fn with_kind(t: &Ty, kind: Kind) -> Ty {
     let mut out = Ty::new(kind, t.frames);
+    out.free = t.free && kind.is_vector();
     if let Factor::Untagged(k) = factor_of(t) {
         out.moves = unusual(k, &out.kind);
     }

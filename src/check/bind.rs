@@ -1,11 +1,13 @@
 //! Binding a value to a name: the name's frame subscript is a claim about
 //! the value's frames (LANGUAGE.md §3, §6), and the book's letters say what
 //! the value is (§5). `T_ad = T_ab * T_bc` fails: the value is {c} in {a}.
-//! Scalars take no frames from their name (`theta_b`, the power `P_b`);
+//! Scalars and bools take no frames from their name (`theta_b`, the power
+//! `P_b`, `ok_a`); axis names `x_a` none either (an axis *of* {a});
 //! `R_sb`, `T_ab` name group elements ([`named_group`]); only the book's
 //! letters `S`, `B`, `V`, `F` make a 6-vector a screw, twist or wrench.
 
 use super::error::{RuleError, describe};
+use super::role::{self, Role};
 use super::ty::{Frame, Frames, Kind, Ty};
 use crate::diagnostics::ErrorKind;
 use crate::syntax::ident::{NameFrames, base_name, name_frames, tagged_name};
@@ -20,21 +22,30 @@ pub struct Claim {
     /// of the book's names.
     pub letter: Option<char>,
     /// The frames of the subscript: none, {a} (`p_a`), or {a}, {b} (`T_ab`).
+    /// None for an axis name (`x_a` is an axis *of* {a}, [`Role::Axis`]).
     pub frames: Frames,
+    /// What the name says a vector is: a point (`p_b`), a free vector
+    /// (`ω_s`, `v_b`) or an axis (`x_a`); `given u : free` says it for
+    /// other names ([`super::role`]).
+    pub role: Option<Role>,
 }
 
 impl Claim {
     /// The claim of `name`: `T_sb''` is the letter T and the frames {s},
     /// {b''}; `theta_1` has no frames, `Sum` no letter.
     pub fn of(name: &str) -> Claim {
+        let role = role::of(name);
         let frames = match name_frames(name) {
             NameFrames::None => Frames::None,
+            // x̂_a is an axis of {a}, written in some other frame (§3.2.1).
+            NameFrames::One(_) if role == Some(Role::Axis) => Frames::None,
             NameFrames::One(a) => Frames::One(Frame::named(&a)),
             NameFrames::Pair(a, b) => Frames::Pair(Frame::named(&a), Frame::named(&b)),
         };
         Claim {
             letter: book_letter(name),
             frames,
+            role,
         }
     }
 
@@ -43,7 +54,7 @@ impl Claim {
     /// tagged {s}; a scalar claims none (`theta_b = 30 deg` is a plain angle).
     pub fn frames_for(&self, kind: &Kind) -> Frames {
         match self.frames {
-            _ if matches!(kind, Kind::Scalar) => Frames::None,
+            _ if matches!(kind, Kind::Scalar | Kind::Bool) => Frames::None,
             Frames::Pair(a, _) if kind.is_vector() || kind.is_algebra() => Frames::One(a),
             f => f,
         }
@@ -92,7 +103,7 @@ impl Claim {
 /// The frames a name claims, as a tag for a value of `kind`
 /// ([`Claim::frames_for`]).
 pub fn claimed_frames(name: &str, kind: &Kind) -> Frames {
-    if matches!(kind, Kind::Scalar) {
+    if matches!(kind, Kind::Scalar | Kind::Bool) {
         return Frames::None;
     }
     Claim::of(name).frames_for(kind)
@@ -173,10 +184,15 @@ pub fn bind_in_place(
     ty: &mut Ty,
 ) -> Result<Option<Box<RuleError>>, Box<RuleError>> {
     let kind = claim.kind_for(ty.kind);
-    if matches!(kind, Kind::Scalar) {
+    // Scalars and bools take no frames from their name (§2, §3).
+    if matches!(kind, Kind::Scalar | Kind::Bool) {
         *ty = Ty::new(kind, Frames::None);
         return Ok(None);
     }
+    ty.free = match claim.role {
+        Some(role) => role.is_free() && kind.is_vector(),
+        None => ty.free && kind.is_vector(),
+    };
     let claim = claim.frames_for(&kind);
     let mut warning = None;
     let frames = match (claim, ty.frames) {
@@ -202,7 +218,9 @@ pub fn bind_in_place(
         (Frames::One(x), Frames::One(a) | Frames::Disp(a)) if x == a => ty.frames,
         _ => {
             let error = Box::new(mismatch(name, &claim, &ty.frames));
+            let free = ty.free;
             *ty = Ty::new(kind, claim);
+            ty.free = free;
             return Err(error);
         }
     };
@@ -225,6 +243,14 @@ fn mismatch(name: &str, claim: &Frames, frames: &Frames) -> RuleError {
     e.lhs = format!("says {}", describe(claim));
     e.rhs = describe(frames);
     e.help = Some(suggest_name(name, frames));
+    // `ω_b = R.T ω_s` with an untagged R: the value stays in {s}.
+    if let (Frames::One(want), Frames::One(_)) = (claim, frames) {
+        e.help = e.help.map(|h| {
+            format!(
+                "{h}; or, if it is in {{{want}}}, give the matrix its frames: an untagged matrix keeps the frame of the vector it multiplies"
+            )
+        });
+    }
     e
 }
 

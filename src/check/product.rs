@@ -6,6 +6,7 @@
 
 use super::algebra::{self, Clash};
 use super::error::{Form, Operand, Operands, RuleError, describe};
+use super::hints;
 use super::ty::{Algebra, Frame, Frames, Kind, Ty};
 use crate::syntax::ident::{NameFrames, base_name, name_frames, tagged_name};
 
@@ -31,6 +32,14 @@ pub fn mul(l: &Ty, r: &Ty, ops: Operands) -> Result<Ty, RuleError> {
     ) {
         return Err(wrench_through_ad(l, r, ops));
     }
+    if r.kind.is_vector() && moves_points(&l.kind, &r.kind) {
+        if r.free {
+            return Err(super::free::through_transform(l, r, ops));
+        }
+        if r.kind.vec_len() == Some(6) {
+            return Err(super::free::six_through_transform(l, r, ops));
+        }
+    }
     // A row times a column, uᵀv: an inner product (the power V_bᵀF_b is a
     // plain scalar, §3.4: the same in every frame).
     let kind = if matches!(l.kind, Kind::Matrix(Some(1), _)) && r.kind.is_vector() {
@@ -53,7 +62,19 @@ pub fn mul(l: &Ty, r: &Ty, ops: Operands) -> Result<Ty, RuleError> {
     };
     let mut out = Ty::new(kind, frames);
     out.moves = moves;
+    // A rotation (or any matrix but a transform) of a free vector is one.
+    out.free = r.free && kind.is_vector();
     Ok(conjugation(l, r, out))
+}
+
+/// True when `l * r` would treat the vector `r` as a point: a transform
+/// (or a 4×4, 3×3 planar matrix) times a 3-vector (2-vector) is the
+/// homogeneous product T p (3.65); with a 6-vector, no product at all.
+fn moves_points(l: &Kind, r: &Kind) -> bool {
+    matches!(
+        (l, r.vec_len()),
+        (Kind::SE3, Some(3 | 6)) | (Kind::Matrix(Some(4), Some(4)), Some(3)) | (Kind::SE2, Some(2))
+    )
 }
 
 /// What a factor contributes to a product of group elements and one
@@ -281,7 +302,8 @@ fn inner_mismatch(l: &Ty, r: &Ty, a_in: &Frame, b_out: &Frame, ops: Operands) ->
         .into_iter()
         .filter_map(|(op, t)| plain_name_hint(op, t))
         .collect::<String>();
-    e.help = Some(product_help(l, r, ops) + &plain);
+    let help = product_help(l, r, ops) + &plain + &hints::one_frame_operator(ops, l, r);
+    e.help = Some(hints::not_as_typed(help, ops.rhs.text().trim()));
     e
 }
 
@@ -358,6 +380,9 @@ fn product_help(l: &Ty, r: &Ty, ops: Operands) -> String {
             } else {
                 format!("{rule}; find a transform from {{{b}}} to {{{c}}} (try derive)")
             }
+        }
+        (Frames::Pair(a, _), Frames::One(c)) if a == c && r.kind.is_vector() => {
+            hints::vector_in_outer(l, ops).unwrap_or_else(|| rule.to_string())
         }
         (Frames::Pair(_, b), Frames::One(c)) => format!(
             "{} takes coordinates in {{{b}}}, but {} is in {{{c}}}; express it in {{{b}}} first",

@@ -48,7 +48,10 @@ pub fn same_frames(what: &str, l: &Ty, r: &Ty) -> Result<Frames, RuleError> {
 pub fn add(l: &Ty, r: &Ty) -> Result<Ty, RuleError> {
     let kind = add_kind(&l.kind, &r.kind)?;
     let frames = same_frames("add", l, r)?;
-    Ok(Ty::new(kind, frames))
+    let mut out = Ty::new(kind, frames);
+    // ω_1 + ω_2 is an angular velocity; p + v is a point again.
+    out.free = l.free && r.free;
+    Ok(out)
 }
 
 fn add_kind(l: &Kind, r: &Kind) -> Result<Kind, RuleError> {
@@ -282,9 +285,10 @@ pub fn member(t: &Ty, name: &str) -> Result<Ty, RuleError> {
         ("p", SE3) => Ok(Ty::new(v3, outer())),
         ("p", SE2) => Ok(Ty::new(Vector(Some(2)), outer())),
         ("p", Unknown) => Ok(Ty::new(Unknown, outer())),
-        ("w" | "v", Se3) => Ok(Ty::new(v3, t.frames)),
-        ("w" | "v", k) if is6(k) && *k != Wrench => Ok(Ty::new(v3, t.frames)),
-        ("m" | "f", k) if is6(k) && !matches!(k, Twist | Screw) => Ok(Ty::new(v3, t.frames)),
+        // The parts of a twist and a wrench are free vectors (§4).
+        ("w" | "v", Se3) => Ok(free(v3, t.frames)),
+        ("w" | "v", k) if is6(k) && *k != Wrench => Ok(free(v3, t.frames)),
+        ("m" | "f", k) if is6(k) && !matches!(k, Twist | Screw) => Ok(free(v3, t.frames)),
         _ => {
             let known = match &t.kind {
                 SE3 | SE2 => ".R .p .T",
@@ -300,6 +304,13 @@ pub fn member(t: &Ty, name: &str) -> Result<Ty, RuleError> {
             )
         }
     }
+}
+
+/// A free vector of `kind` in `frames` ([`Ty::free`]).
+fn free(kind: Kind, frames: Frames) -> Ty {
+    let mut t = Ty::new(kind, frames);
+    t.free = true;
+    t
 }
 
 /// The tag a result of a builtin `name` may carry for its kind (§6): a
@@ -356,7 +367,7 @@ pub fn settle_in_place(t: &mut Ty) {
         t.algebra = None;
         return;
     }
-    if matches!(t.kind, Kind::Scalar) {
+    if matches!(t.kind, Kind::Scalar | Kind::Bool) {
         t.frames = Frames::None;
         return;
     }

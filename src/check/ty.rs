@@ -513,6 +513,9 @@ pub struct Ty {
     /// meets, an untagged [`Kind::So3`]/[`Kind::Se3`] matrix none), so that
     /// `A * B * T_sb` moves {b} alike under every bracketing.
     pub moves: Option<u32>,
+    /// For a vector: a free vector (ω, v, f, m, an axis; [`super::role`]),
+    /// which only rotates: a transform moves points, so `T * ω` is refused.
+    pub free: bool,
 }
 
 impl Ty {
@@ -522,6 +525,7 @@ impl Ty {
             frames,
             algebra: None,
             moves: None,
+            free: false,
         }
     }
     /// An untagged value of `kind`.
@@ -539,6 +543,7 @@ impl Ty {
             frames: self.frames,
             algebra: self.algebra,
             moves: self.moves,
+            free: self.free,
         }
     }
 }

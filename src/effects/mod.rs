@@ -6,6 +6,15 @@
 //! (`--no-write`), confine it to a folder (`--write-dir`, [`confine`]), or
 //! keep the picture in memory (a library session, a notebook, the REPL's
 //! live preview, which never even asks the gate).
+//!
+//! A front end sets [`crate::session::Session::gate`] once; `Session::run`
+//! then settles each statement's effects before its report is seen (a
+//! written picture says where, `→ pic.svg`; a refused write is the
+//! statement's domain error), while `Session::evaluate` performs none.
+//! Each report keeps its [`Effect`]s: a notebook, with
+//! `Gate::anywhere(None)`, writes what `save` asks and finds every printed
+//! picture among them (`PictureTo::Printed`) to show inline, as SVG from
+//! `crate::draw::file::bytes(picture, "x.svg")`.
 
 pub mod atomic;
 pub mod confine;

@@ -66,6 +66,11 @@ impl Interp<'_> {
         for i in items {
             ts.push(self.expr(i)?);
         }
+        self.paren_of(ts, span)
+    }
+
+    /// `(a, b, c)` of checked parts: a vector of scalars, else a tuple.
+    pub(super) fn paren_of(&mut self, ts: Vec<Typed>, span: Span) -> Result<Typed, Diagnostic> {
         // (A pattern, not `==`: kinds compare by a call.)
         let all_scalar = ts.iter().all(|t| matches!(t.ty.kind, Kind::Scalar));
         if all_scalar {

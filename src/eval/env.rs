@@ -250,6 +250,16 @@ impl Env {
             .entry(Key(name))
             .or_insert_with(|| Claim::of(name.as_str()))
     }
+    /// `given name : free` (or `: point`): from now on `name` says its
+    /// vector is `role` ([`crate::check::role`]); the claim it makes now.
+    pub fn declare_role(&mut self, name: Name, role: crate::check::role::Role) -> Claim {
+        let claim = self
+            .claims
+            .entry(Key(name))
+            .or_insert_with(|| Claim::of(name.as_str()));
+        claim.role = Some(role);
+        *claim
+    }
     /// Unbinds `name` (a function's parameter, a comprehension's variable,
     /// once its body is done).
     #[inline]

@@ -202,7 +202,7 @@ impl<'a> Interp<'a> {
                 Ok(o)
             }
             StmtKind::Assign { target, value } => {
-                let mut t = self.expr(value)?;
+                let mut t = self.assigned(target.name, value)?;
                 self.commit(t.value(), s.span)?;
                 crate::check::rules::settle_in_place(&mut t.ty);
                 self.bind_checked(target.name, &mut t, target.span, value.span)?;
@@ -233,6 +233,18 @@ impl<'a> Interp<'a> {
                 Ok(o)
             }
             StmtKind::Given { names, ty, times } => {
+                if let Some((role, len)) = crate::check::role::given_role(&ty.name) {
+                    for t in times.iter().flatten() {
+                        self.bind_time(t, &Kind::Vector(Some(len)))?;
+                    }
+                    self.given_role(names, role, len);
+                    let mut o = out(
+                        Names::Many(Vec::new()),
+                        Typed::new(Ty::plain(Kind::Vector(Some(len))), None),
+                    );
+                    o.prints = false;
+                    return Ok(o);
+                }
                 let kind = given_kind(&ty.name).ok_or_else(|| {
                     Diagnostic::error(
                         ErrorKind::Type,
@@ -240,7 +252,7 @@ impl<'a> Interp<'a> {
                         format!("unknown type '{}'", ty.name),
                     )
                     .with_help(
-                        "given types: scalar vec3 vec6 SO3 SE3 SO2 SE2 so3 se3 twist screw wrench",
+                        "given types: scalar vec3 vec6 SO3 SE3 SO2 SE2 so3 se3 twist screw wrench; free, point (a free vector, a point)",
                     )
                 })?;
                 for (n, time) in names.iter().zip(times) {
@@ -358,6 +370,9 @@ impl<'a> Interp<'a> {
             // the book's names label symbolic 6-vectors as they do numbers
             // (`S2 = (0, 0, 1, 0, -L1, 0)` is a screw axis, §5)
             *kind = ty;
+        }
+        if matches!(ty, Kind::Matrix(Some(4), Some(4))) {
+            self.transform_lookalike(&name, t, value_span);
         }
         Ok(())
     }

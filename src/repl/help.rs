@@ -42,9 +42,17 @@ statements end at a newline or `;`; a newline inside ( ) or [ ] continues
         "\
 a name's subscript gives its frames: T_sb is {s}←{b}, p_b and V_s one frame
   T_ab * T_bc  → {a}←{c}     inner frames must cancel, else a frame error
-  inv(T_ab), T_ab.T → {b}←{a}
+  R_ab * v_b   → v_a         T_ab * p_b → p_a for a point p (3.65)
+  inv(T_ab), R_ab.T → {b}←{a}   T_ab.T is no transform: inv(T_ab) is
   Ad(T_ab) * V_b → V_a      Ad(T_ab).T * F_a → F_b (wrenches, Prop. 3.17)
   exp([S_s] θ) * T_sb       a displacement in {s}: {s}←{b'}
+points p, q, r move with T; free vectors ω (w), v, f, m and axes ω̂, ŝ only
+rotate: T_sb * ω_b is an error, write R_sb * ω_b (Ad(T_sb) * V_b for a twist);
+  given u_b : free          say it for another name (given c : point)
+  x_a, y_a, z_a (x̂_a)       the axes of {a}, untagged: R_sa = [x_a, y_a, z_a]
+  V_s = (w_s, v_s)          named as a twist: the 6-vector (ω, v); F = (m, f)
+  Rx, R1 (no subscript)     R_x would name a frame {x}
+  scalars and bools (theta_b, ok_a) carry no frames
   untag(x)                  drop the frames of a value
   derive T_ce               find a chain of known transforms from {c} to {e}
 :frames shows the graph of known transforms; :frames strict|warn|off sets
@@ -54,7 +62,7 @@ whether a mismatch is an error, a warning, or ignored",
         "symbols",
         "\
 given T_ab, T_bc : SE3      symbols with a type and frames but no numbers
-  types: scalar vec3 vec6 SO3 SE3 SO2 SE2 so3 se3 twist screw wrench
+  types: scalar vec3 vec6 SO3 SE3 SO2 SE2 so3 se3 twist screw wrench free point
   T_ab * T_bc               → T_ab T_bc : SE(3) {a}←{c}, checked like numbers
   inv(T_ab) * T_ab          → I
 given t1, t2, L1 : scalar   symbols computed with (§7): Rotz(t1), exp([S] t1)

@@ -11,6 +11,8 @@ pub const KEYWORDS: &[(&[&str], &str)] = &[
         "given NAME, ... : TYPE    symbols with a type and frames but no numbers (§7)
   given T_ab, T_bc : SE3    → T_ab * T_bc checks frames and prints T_ab T_bc : SE(3) {a}←{c}
   given theta : scalar      a symbolic angle; given theta(t) : scalar a function of time
+  given u_b : free          u_b holds a free vector (only rotates; T * u_b is an error),
+                            given c : point a point; they stay so when bound to numbers
   types: scalar vec3 vec6 SO3 SE3 SO2 SE2 so3 se3 twist screw wrench
          (also spelled SO(3), SE(3), so(3), se(3)); binding numbers later makes them numeric",
     ),

@@ -15,6 +15,7 @@ pub mod matrix;
 pub mod print;
 pub mod rat;
 pub mod rational;
+pub mod size;
 pub mod trig;
 
 pub use expr::{Expr, Symbol, Wrt};

@@ -82,6 +82,19 @@ pub fn scalar(e: Expr) -> Value {
 /// the work before it is known).
 pub const MAX_WORK: usize = 4_000_000;
 
+/// Refuses a product whose terms, counted before it is formed
+/// ([`crate::sym::size::product`]), pass the expression limit: in
+/// milliseconds, not after the work (issue 21).
+fn fits(a: &Mat, b: &Mat) -> Result<(), String> {
+    match crate::sym::size::product(a, b) {
+        Some(n) if n > super::symbolic::MAX_SYM_NODES => Err(format!(
+            "symbolic expression too large: the product would have up to {n} terms (more than {})",
+            super::symbolic::MAX_SYM_NODES
+        )),
+        _ => Ok(()),
+    }
+}
+
 fn too_large() -> String {
     format!(
         "symbolic expression too large (more than {} terms)",
@@ -99,8 +112,11 @@ pub fn binary(op: BinOp, a: &Value, b: &Value, kind: &Kind) -> Result<Value, Str
         (Some(x), Some(y)) => (x, y),
         _ => return Err("these operands have no symbolic form".into()),
     };
-    if op == BinOp::Mul && x.size().saturating_mul(y.size()) > MAX_WORK {
-        return Err(too_large());
+    if op == BinOp::Mul {
+        if x.size().saturating_mul(y.size()) > MAX_WORK {
+            return Err(too_large());
+        }
+        fits(&x, &y)?;
     }
     let m = match op {
         BinOp::Mul => mul(&x, &y)?,
@@ -175,6 +191,16 @@ fn pow(x: &Mat, y: &Mat, base: Kind, kind: &Kind) -> Result<Value, String> {
 /// `acc · xⁿ` by squaring, refusing a product whose work or result passes
 /// the limits ([`MAX_WORK`], [`super::symbolic::MAX_SYM_NODES`]).
 fn checked_power(x: &Mat, mut n: u64, acc: &mut Mat) -> Result<Mat, String> {
+    // a scalar power's terms, counted before any is formed
+    if let [e] = x.data.as_slice()
+        && let Some(k) = crate::sym::size::power(e, n)
+        && k > super::symbolic::MAX_SYM_NODES
+    {
+        return Err(format!(
+            "symbolic expression too large: the power would have up to {k} terms (more than {})",
+            super::symbolic::MAX_SYM_NODES
+        ));
+    }
     let step = |a: &Mat, b: &Mat| -> Result<Mat, String> {
         let work = a
             .size()
@@ -183,6 +209,7 @@ fn checked_power(x: &Mat, mut n: u64, acc: &mut Mat) -> Result<Mat, String> {
         if work > MAX_WORK {
             return Err(too_large());
         }
+        fits(a, b)?;
         let m = mul(a, b)?;
         if m.size() > super::symbolic::MAX_SYM_NODES {
             return Err(too_large());

@@ -1,0 +1,194 @@
+//! Issue 22, "the first try should work": each form a student types in the
+//! second hour gives the value of its spelled-out equivalent (LANGUAGE.md
+//! §§2–4, 8, 9, 12), and the readings that are MATLAB's are errors that
+//! name the chasles form.
+
+use chasles::eval::env::Mode;
+use chasles::session::{Session, Settings};
+
+/// Runs `src`: the JSON lines, or the error text.
+fn run(src: &str) -> Result<Vec<serde_json::Value>, String> {
+    let mut s = Session::new(Settings {
+        json: true,
+        ..Settings::default()
+    });
+    let (out, err, n) = s.run_to_strings("t.chs", src, Mode::Run, false);
+    if n > 0 {
+        return Err(err);
+    }
+    Ok(out
+        .lines()
+        .map(|l| serde_json::from_str(l).expect("json"))
+        .collect())
+}
+
+fn numbers(v: &serde_json::Value) -> Vec<f64> {
+    match v {
+        serde_json::Value::Array(xs) => xs.iter().flat_map(numbers).collect(),
+        serde_json::Value::Bool(b) => vec![f64::from(u8::from(*b))],
+        serde_json::Value::Object(o) => o.get("dof").map(numbers).unwrap_or_default(),
+        x => vec![x.as_f64().expect("a number")],
+    }
+}
+
+/// The value of the last statement of `src`.
+fn last(src: &str) -> Vec<f64> {
+    let lines = run(src).unwrap_or_else(|e| panic!("{src}:\n{e}"));
+    numbers(&lines.last().expect("a value")["value"])
+}
+
+/// `a` and `b` after `setup` give the same numbers (within 1e-12).
+fn same(setup: &str, a: &str, b: &str) {
+    let x = last(&format!("{setup}\n{a}"));
+    let y = last(&format!("{setup}\n{b}"));
+    assert_eq!(x.len(), y.len(), "{a} vs {b}");
+    for (u, v) in x.iter().zip(&y) {
+        assert!((u - v).abs() <= 1e-12, "{a} = {x:?} but {b} = {y:?}");
+    }
+}
+
+/// The error text of `src`, as a terminal shows it.
+fn error(src: &str) -> String {
+    let mut s = Session::new(Settings::default());
+    let (_, err, n) = s.run_to_strings("t.chs", src, Mode::Run, false);
+    assert!(n > 0, "{src} should fail");
+    err
+}
+
+const R: &str = "R = Rotz(pi/6) Rotx(pi/4); p = (1, 2, 3); A = [1, 2; 3, 4]; n = 5";
+
+#[test]
+fn transpose_before_a_parenthesis() {
+    same(R, "[R^T, -R^T (p); 0, 1]", "inv(SE3(R, p))");
+    same(R, "R^T(p)", "R.T * p");
+    same(R, "R^{T} (p)", "R.T * p");
+}
+
+#[test]
+fn a_value_before_a_parenthesis_multiplies() {
+    same(R, "R (1, 0, 0)", "R * (1, 0, 0)");
+    same(R, "A (1, -3)", "A * (1, -3)");
+    same(R, "n (n - 1)/2", "10");
+    same(R, "2 (n - 1)", "8");
+    let e = error(&format!("{R}\nR(1, 2)"));
+    assert!(e.contains("R[1, 2]"), "{e}");
+    assert!(!e.contains("did you mean"), "{e}");
+}
+
+#[test]
+fn given_names_are_scalars_without_a_type() {
+    same("given α, β", "Rotz(α) Rotz(β) == Rotz(α + β)", "true");
+}
+
+#[test]
+fn roots_dots_and_crosses() {
+    same("", "√2", "sqrt(2)");
+    same("", "1/√2", "1/sqrt(2)");
+    same("", "3√2/4", "3 sqrt(2)/4");
+    same("", "√(1 + 3)", "2");
+    same(R, "p · (0, 1, 0)", "dot(p, (0, 1, 0))");
+    same("ŵ = (0, 0, 1); v1 = (1, 2, 3)", "ŵ·v1", "3");
+    same(R, "p × (0, 0, 1) + p", "cross(p, (0, 0, 1)) + p");
+}
+
+#[test]
+fn orders_of_numbers() {
+    same("", "1 < 2", "true");
+    same("", "2 <= 2", "true");
+    same("", "3 > 4", "false");
+    same("", "3 ≥ 3", "true");
+    assert!(run("assert pi > 3").is_ok());
+    let e = error("assert 3 < 2");
+    assert!(e.contains("assert error") && e.contains("left: 3"), "{e}");
+    let e = error("(1, 2) < (3, 4)");
+    assert!(e.contains("only numbers are ordered"), "{e}");
+}
+
+#[test]
+fn habits() {
+    same("", "diag(1, 2, 3)", "[1, 0, 0; 0, 2, 0; 0, 0, 3]");
+    same("", "diag((1, 2))", "[1, 0; 0, 2]");
+    same("", "linspace(0, 1, 5)", "0:0.25:1");
+    same(R, "frame(R, p)", "SE3(R, p)");
+    same("", "Trans(2, 2, 0)", "Trans((2, 2, 0))");
+}
+
+#[test]
+fn nested_comprehensions_as_python_writes_them() {
+    same(
+        "",
+        "[a + 10 b for a in 1:2 for b in 1:3]",
+        "[a + 10 b for a in 1:2, b in 1:3]",
+    );
+}
+
+#[test]
+fn ranges_and_end_index() {
+    let setup = "S = (0, 0, 1, 3, 0, 0); T = SE3(Rotz(1), (1, 2, 3)); v = (4, 5, 6)";
+    same(setup, "S[1:3]", "S.w");
+    same(setup, "S[4:6]", "S.v");
+    same(setup, "T[1:3, 4]", "T.p");
+    same(setup, "T[1:3, 1:3]", "T.R");
+    same(setup, "v[end]", "6");
+    same(setup, "v[end - 1]", "5");
+    same(setup, "v[2:end]", "(5, 6)");
+    let e = error(&format!("{setup}\nv[2:4]"));
+    assert!(e.contains("index 4 is outside 1..3"), "{e}");
+}
+
+#[test]
+fn mechanisms_with_names_commas_and_contacts() {
+    same("N = 4", "mech < links N; joints R, R, R, R; planar >", "1");
+    same("n = 6", "mech < legs n UPS; spatial >", "6");
+    same("k = 3", "mech < links k + 1; joints (k)R; planar >", "3");
+    // Exercise 2.18: a caterpillar of 8 links and 7 RP pairs; six sliding
+    // point contacts with the leaf (planar f = 2).
+    same("", "mech < links 8; joints 7RP; planar >", "14");
+    same("", "mech < links 8; joints 7RP, 6 sliding; planar >", "8");
+    // Exercise 2.19: spatial contacts, sliding f = 5 and rolling f = 3.
+    same("", "mech < links 14; joints 4U 8R sliding; spatial >", "21");
+    same(
+        "",
+        "mech < links 14; joints 4U 8R 4 rolling; spatial >",
+        "10",
+    );
+    same("", "mech < links 3; joints 2R rolling; planar >", "0");
+    let lines = run("mech < links 8; joints 7RP, 6 sliding; planar >").expect("runs");
+    let formula = lines[0]["value"]["formula"].as_str().unwrap_or_default();
+    assert_eq!(formula, "dof = 3(8 − 1 − 13) + 7·2 + 6·2 = 8");
+}
+
+#[test]
+fn near_the_domain_clamps_beyond_it_fails() {
+    same("", "acos(1 + 2e-16)", "0");
+    same("", "sqrt(-2e-16)", "0");
+    same("", "asin(-1 - 1e-15)", "-pi/2");
+    let e = error("acos(1.001)");
+    assert!(e.contains("acos(1.001)"), "{e}");
+}
+
+#[test]
+fn an_error_in_a_function_shows_the_call() {
+    let e = error("f(x) = sqrt(x - 3)\ny = 1\nf(2)");
+    assert!(e.contains("t.chs:1:13"), "{e}");
+    assert!(
+        e.contains("3 │ f(2)") && e.contains("in this call of f"),
+        "{e}"
+    );
+}
+
+#[test]
+fn a_list_of_points_draws() {
+    let lines = run("pts = [point((k, 0, 0)) for k in 1:3]").expect("runs");
+    assert_eq!(lines[0]["type"], "list");
+    let mut s = Session::new(Settings::default());
+    let (out, err, n) = s.run_to_strings(
+        "t.chs",
+        "pts = [point((k, 0, 0)) for k in 1:3]\nlen(pts)",
+        Mode::Run,
+        false,
+    );
+    assert_eq!(n, 0, "{err}");
+    assert!(out.contains("picture: point (1, 0, 0)"), "{out}");
+    assert!(out.contains("list of 3 pictures"), "{out}");
+}
