@@ -22,6 +22,11 @@ use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
+mod units;
+
+use units::seconds;
+pub use units::{bytes, count, parse_seconds, parse_size};
+
 /// The numbers one statement may hold by default (400 MB of `f64`): a
 /// comprehension of matrices larger than this is a mistake in a calculator
 /// for rigid-body motion, not a workspace.
@@ -191,97 +196,6 @@ impl std::fmt::Display for Stop {
 }
 
 impl std::error::Error for Stop {}
-
-/// `1200000000` as `1,200,000,000`.
-pub fn count(n: u64) -> String {
-    let digits = n.to_string();
-    let mut out = String::with_capacity(digits.len() + digits.len() / 3);
-    for (i, c) in digits.chars().enumerate() {
-        if i > 0 && (digits.len() - i).is_multiple_of(3) {
-            out.push(',');
-        }
-        out.push(c);
-    }
-    out
-}
-
-/// A size in bytes for people: `9.6 GB`, `400 MB`, `800 kB`.
-pub fn bytes(n: u64) -> String {
-    let units = [(1e12, "TB"), (1e9, "GB"), (1e6, "MB"), (1e3, "kB")];
-    let x = n as f64;
-    for (size, unit) in units {
-        if x >= size {
-            let v = x / size;
-            return if v >= 100.0 || v.fract() < 0.05 {
-                format!("{v:.0} {unit}")
-            } else {
-                format!("{v:.1} {unit}")
-            };
-        }
-    }
-    format!("{n} bytes")
-}
-
-/// A duration for people: `2 s`, `0.5 s`, `30 ms`.
-fn seconds(d: Duration) -> String {
-    if d < Duration::from_secs(1) {
-        format!("{} ms", d.as_millis())
-    } else {
-        let s = d.as_secs_f64();
-        if s.fract() == 0.0 {
-            format!("{s} s")
-        } else {
-            format!("{s:.1} s")
-        }
-    }
-}
-
-/// `--max-memory`'s SIZE: bytes, or a number with `k`, `M`, `G` or `T`
-/// (powers of 1000; `KiB`, `MiB`, `GiB` for powers of 1024; a trailing
-/// `B` is optional): `512M`, `2G`, `1.5GB`, `100000000`.
-pub fn parse_size(text: &str) -> Result<u64, String> {
-    let t = text.trim();
-    let split = t
-        .find(|c: char| !(c.is_ascii_digit() || c == '.'))
-        .unwrap_or(t.len());
-    let (num, unit) = t.split_at(split);
-    let x: f64 = num.parse().map_err(|_| {
-        format!("'{text}' is not a size: write bytes or a number with k, M, G (512M, 2G)")
-    })?;
-    let scale = match unit.trim().to_ascii_lowercase().as_str() {
-        "" | "b" => 1.0,
-        "k" | "kb" => 1e3,
-        "m" | "mb" => 1e6,
-        "g" | "gb" => 1e9,
-        "t" | "tb" => 1e12,
-        "kib" => 1024.0,
-        "mib" => 1024.0 * 1024.0,
-        "gib" => 1024.0 * 1024.0 * 1024.0,
-        "tib" => 1024.0 * 1024.0 * 1024.0 * 1024.0,
-        _ => {
-            return Err(format!(
-                "'{text}': unknown unit '{unit}' (use k, M, G or T: 512M, 2G)"
-            ));
-        }
-    };
-    let b = x * scale;
-    if !(b.is_finite() && b >= 1.0) {
-        return Err(format!("'{text}' is not a size of at least one byte"));
-    }
-    Ok(b.min(u64::MAX as f64) as u64)
-}
-
-/// `--timeout`'s SECONDS: a positive number of seconds (`2`, `0.5`).
-pub fn parse_seconds(text: &str) -> Result<Duration, String> {
-    let x: f64 = text
-        .trim()
-        .parse()
-        .map_err(|_| format!("'{text}' is not a number of seconds (e.g. 10 or 0.5)"))?;
-    if !(x.is_finite() && x > 0.0 && x < 1e9) {
-        return Err(format!("'{text}' is not a positive number of seconds"));
-    }
-    Ok(Duration::from_secs_f64(x))
-}
 
 /// The limits of an evaluation: what a front end sets up once (from
 /// `--timeout` and `--max-memory`, or the preview's small ones) and the
@@ -524,107 +438,4 @@ pub fn take_refusal() -> Option<Stop> {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn an_interrupt_from_another_thread_stops_the_check() {
-        let b = Budget::new();
-        let _on = b.enter();
-        assert_eq!(check(), Ok(()));
-        let h = b.interrupt_handle();
-        std::thread::spawn(move || h.interrupt()).join().unwrap();
-        assert_eq!(check(), Err(Stop::Interrupted));
-        assert!(stopped());
-        b.interrupt_handle().clear();
-        assert_eq!(check(), Ok(()));
-    }
-
-    #[test]
-    fn a_deadline_passes() {
-        let b = Budget::new().with_timeout(Duration::from_millis(1));
-        let _on = b.enter();
-        std::thread::sleep(Duration::from_millis(3));
-        assert_eq!(check(), Err(Stop::Timeout(Duration::from_millis(1))));
-        assert!(
-            check()
-                .unwrap_err()
-                .to_string()
-                .contains("more than 1 ms (--timeout)")
-        );
-    }
-
-    #[test]
-    fn the_budget_before_is_restored() {
-        let outer = Budget::new();
-        let _o = outer.enter();
-        {
-            let inner = Budget::preview();
-            let _i = inner.enter();
-            inner.interrupt_handle().interrupt();
-            assert!(stopped());
-            assert!(room(PREVIEW_NUMBERS + 1).is_err());
-        }
-        assert!(!stopped());
-        assert!(room(PREVIEW_NUMBERS + 1).is_ok());
-    }
-
-    #[test]
-    fn the_statement_cap_names_the_size_it_would_have_taken() {
-        let b = Budget::new();
-        let _on = b.enter();
-        begin_statement(0);
-        hold(STATEMENT_NUMBERS - 10).unwrap();
-        let e = hold(4_000_000).unwrap_err();
-        assert_eq!(
-            e,
-            Stop::Memory {
-                wanted: STATEMENT_NUMBERS + 3_999_990,
-                cap: STATEMENT_NUMBERS,
-                limit: Limit::Statement,
-                base: 0,
-            }
-        );
-        let e = e.wanting(1_200_000_000);
-        assert_eq!(
-            e.to_string(),
-            "this would hold 1,200,000,000 numbers (9.6 GB); one statement may hold at most 50,000,000 numbers (400 MB)"
-        );
-        // Nothing was counted by the refusal; a finished list is released.
-        assert_eq!(held(), STATEMENT_NUMBERS - 10);
-        release_to(0);
-        assert_eq!(held(), 0);
-    }
-
-    #[test]
-    fn the_run_cap_counts_the_bindings() {
-        let b = Budget::new().with_max_memory(8_000);
-        let _on = b.enter();
-        begin_statement(900);
-        assert!(room(100).is_ok());
-        let e = room(101).unwrap_err();
-        assert_eq!(
-            e.to_string(),
-            "this would hold 1,001 numbers (8 kB); --max-memory allows at most 1,000 numbers (8 kB)"
-        );
-    }
-
-    #[test]
-    fn sizes_and_seconds_parse() {
-        assert_eq!(parse_size("512M"), Ok(512_000_000));
-        assert_eq!(parse_size("2G"), Ok(2_000_000_000));
-        assert_eq!(parse_size("1.5GB"), Ok(1_500_000_000));
-        assert_eq!(parse_size("1GiB"), Ok(1 << 30));
-        assert_eq!(parse_size("100000"), Ok(100_000));
-        assert!(parse_size("lots").is_err());
-        assert!(parse_size("2X").is_err());
-        assert!(parse_size("0").is_err());
-        assert_eq!(parse_seconds("0.5"), Ok(Duration::from_millis(500)));
-        assert!(parse_seconds("-1").is_err());
-        assert!(parse_seconds("inf").is_err());
-        assert_eq!(count(1_200_000_000), "1,200,000,000");
-        assert_eq!(count(999), "999");
-        assert_eq!(bytes(9_600_000_000), "9.6 GB");
-        assert_eq!(bytes(400_000_000), "400 MB");
-    }
-}
+mod tests;
