@@ -220,6 +220,15 @@ impl T {
     /// (products of sums expand; `(a − b)^9` at a ≈ b cancels), carried
     /// through the functions by their derivatives.
     fn eval(&self, at: &At) -> (f64, f64) {
+        let (v, e) = self.eval_node(at);
+        if v.is_infinite() {
+            // an infinity inside (0^-1, t / inf) is no point to compare at
+            at.ill.set(true);
+        }
+        (v, e)
+    }
+
+    fn eval_node(&self, at: &At) -> (f64, f64) {
         let un = |x: &T, f: &dyn Fn(f64) -> f64, df: &dyn Fn(f64) -> f64| {
             let (v, e) = x.eval(at);
             let y = f(v);
