@@ -172,10 +172,26 @@ fn logs_in_the_language_with_their_branch() {
 }
 
 #[test]
+fn symbolic_axes_have_logs_on_the_branch() {
+    let (out, err) = run("given w : vec3\ngiven S : screw\ngiven t : scalar\n\
+         log(exp([w] t)) == [w] t\nMatrixLog3(Rot(w, t)) == w t\nlog(exp([S] t)) == [S] t\n");
+    assert_eq!(out, "true\ntrue\ntrue\n");
+    for note in [
+        "log of a symbolic rotation: the closed form on the branch t in (−π, π)",
+        "MatrixLog3 of a symbolic rotation: the closed form on the branch t in (−π, π)",
+        "log of a symbolic transform: the closed form on the branch t in (−π, π)",
+        "w is assumed to be a unit vector",
+        "S = (ω, v) is assumed to have ‖ω‖ = 1",
+    ] {
+        assert!(err.contains(note), "{note}\n{err}");
+    }
+}
+
+#[test]
 fn no_closed_form_keeps_the_call() {
-    // a symbolic axis: no numeric ω̂ to read the angle by
-    let (out, _) = run("given w : vec3\ngiven t : scalar\nlog(exp([w] t))\n");
-    assert!(out.starts_with("log(exp([w] t))"), "{out}");
+    // a rotation about an axis that is not the exponential's: no angle
+    let (out, _) = run("given w : vec3\ngiven t : scalar\nlog(exp([w] t) Rotx(t))\n");
+    assert!(out.starts_with("log("), "{out}");
     // two angles about different axes: no Rot(ω̂, θ) found
     let (out, _) = run("given a, b : scalar\nlog([Rotz(a) Rotx(b), (1, 2, 3); 0, 0, 0, 1])\n");
     assert!(out.starts_with("log("), "{out}");

@@ -155,9 +155,13 @@ pub fn axis_angle(r: &Mat) -> Option<(Vec<Expr>, Expr)> {
             continue;
         }
         let s = Expr::sin(&theta);
+        // a numeric axis, or the unit components of a `given` one
         let axis: Option<Vec<Expr>> = u
             .iter()
-            .map(|x| x.div_exact(&s).filter(|q| q.as_const().is_some()))
+            .map(|x| {
+                x.div_exact(&s)
+                    .filter(|q| q.as_const().is_some() || unit_part(q, &theta))
+            })
             .collect();
         let Some(axis) = axis else { continue };
         let n2 = axis.iter().fold(Expr::zero(), |acc, a| acc.add(&a.mul(a)));
@@ -166,6 +170,20 @@ pub fn axis_angle(r: &Mat) -> Option<(Vec<Expr>, Expr)> {
         }
     }
     None
+}
+
+/// True for an expression in the unit components of `given` axes only,
+/// free of θ (no angle, no other symbol).
+fn unit_part(q: &Expr, theta: &Expr) -> bool {
+    let mut syms = Vec::new();
+    q.symbols(&mut syms);
+    !syms.is_empty()
+        && syms.iter().all(|s| s.unit)
+        && !has_angle(q, theta)
+        && q.terms
+            .keys()
+            .flatten()
+            .all(|(v, _)| matches!(v, Var::Sym(_)))
 }
 
 /// log R = [ω̂]θ for R = Rot(ω̂, θ), θ assumed in (−π, π).
