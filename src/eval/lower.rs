@@ -248,6 +248,16 @@ impl Interp<'_> {
             ..Assumed::default()
         };
         let v = lower(s, &leaf, &assumed)?;
+        // a twist's ω has no unit norm to assume (Proposition 3.16 is for
+        // a screw axis): its exponential stays a call
+        let twist = |n: &Arc<str>| {
+            self.env
+                .get(&**n)
+                .is_some_and(|b| matches!(b.ty.kind, Kind::Twist | Kind::Wrench))
+        };
+        if assumed.axes.borrow().iter().any(twist) {
+            return None;
+        }
         match &v {
             Value::Formula { m, .. }
                 if m.size() > super::symbolic::MAX_SYM_NODES
