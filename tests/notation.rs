@@ -139,7 +139,7 @@ fn cot_sec_csc_without_parentheses() {
     same(SETUP, "csc θ", "csc(θ)");
     same(SETUP, "sec θ [w]", "sec(θ) * [w]");
     let close = |src: &str, want: f64| {
-        let got = last(src);
+        let got = last_numbers(src);
         assert!(
             got.len() == 1 && (got[0] - want).abs() < 1e-12,
             "{src} = {got:?}"
@@ -151,7 +151,7 @@ fn cot_sec_csc_without_parentheses() {
     close("x = 1\n1 - sec x", 1.0 - 1.0 / 1f64.cos());
     // Symbolic: the same canonical form as with parentheses.
     let text = |src: &str| {
-        let lines = run(src).unwrap_or_else(|e| panic!("{src}:\n{e}"));
+        let lines = try_json(src).unwrap_or_else(|e| panic!("{src}:\n{e}"));
         lines.last().expect("a value")["value"].clone()
     };
     for (f, want) in [("cot", "cot(t)"), ("sec", "1/cos(t)"), ("csc", "1/sin(t)")] {
@@ -160,7 +160,7 @@ fn cot_sec_csc_without_parentheses() {
         assert_eq!(bare, want, "{f} t");
     }
     // The same two readings as `sin θ^2` are refused.
-    let e = error("θ = 1\ncot θ^2");
+    let e = errors("θ = 1\ncot θ^2");
     assert!(e.contains("write (cot θ)^2, or cot(θ^2)"), "{e}");
 }
 

@@ -6,40 +6,17 @@
 //! as `==` with symbols; the unit relation never makes `==` say true of
 //! what is not (`dot(w, w) == 1` is false for a vector not used as an axis).
 
-use chasles::eval::env::Mode;
 use chasles::lie::{se3, so3};
-use chasles::session::{Session, Settings};
 use chasles::sym::axis::{components, symbolic_axis};
 use chasles::sym::matrix::{self, Mat};
 use chasles::sym::{Expr, Symbol};
 use nalgebra::{Vector3, Vector6};
 
-/// Runs `src` in a fresh session, failing on any error: (stdout, stderr).
-fn run(src: &str) -> (String, String) {
-    let mut s = Session::new(Settings::default());
-    let (out, err, n) = s.run_to_strings("t.chs", src, Mode::Run, false);
-    assert_eq!(n, 0, "{src}\n{err}");
-    (out, err)
-}
+mod common;
+use common::{Rng, error as fails, outputs as run};
 
-/// The error text of a script that must fail.
-fn fails(src: &str) -> String {
-    let mut s = Session::new(Settings::default());
-    let (_, err, n) = s.run_to_strings("t.chs", src, Mode::Run, false);
-    assert!(n > 0, "{src} should fail");
-    err
-}
-
-/// A small deterministic generator (xorshift), uniform in [-1, 1).
-struct Rng(u64);
-
+/// A random unit vector (an axis ω̂).
 impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        (self.0 >> 11) as f64 / (1u64 << 52) as f64 - 1.0
-    }
     fn unit(&mut self) -> Vector3<f64> {
         loop {
             let v = Vector3::new(self.next(), self.next(), self.next());

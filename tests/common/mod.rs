@@ -2,8 +2,8 @@
 //! the real `chasles` binary (once, in a folder, or bounded by a time limit
 //! so that a hang fails instead of blocking), running a script through a
 //! fresh [`Session`] and reading what it printed or its JSON lines
-//! (LANGUAGE.md §1), the numbers of a JSON value, a scratch folder, and
-//! (in [`pty`]) the steps of a session on a pseudo-terminal.
+//! (LANGUAGE.md §1), the numbers of a JSON value, random points, a scratch
+//! folder, and (in [`pty`]) the steps of a session on a pseudo-terminal.
 //!
 //! Each test file is its own crate and uses only a part of these, hence
 //! the `dead_code` allowance.
@@ -258,6 +258,22 @@ pub fn same(setup: &str, a: &str, b: &str) {
     assert_eq!(x.len(), y.len(), "{a} vs {b}");
     for (u, v) in x.iter().zip(&y) {
         assert!((u - v).abs() <= 1e-12, "{a} = {x:?} but {b} = {y:?}");
+    }
+}
+
+// ------------------------------------------------------------ random points
+
+/// A small deterministic generator (xorshift) of the points at which a
+/// closed form is compared with numbers.
+pub struct Rng(pub u64);
+
+impl Rng {
+    /// The next number, uniform in [-1, 1).
+    pub fn next(&mut self) -> f64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        (self.0 >> 11) as f64 / (1u64 << 52) as f64 - 1.0
     }
 }
 
