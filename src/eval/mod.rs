@@ -15,6 +15,7 @@ mod naming;
 mod notation;
 mod order;
 mod paren_product;
+mod replay;
 mod shapes;
 mod slice;
 mod substitute;
