@@ -142,7 +142,8 @@ pub fn eval_symbolic(name: &str, vals: &[Value], kind: &Kind) -> Out {
             ok(make(&Kind::SO3, sm::rot_axis(axis, &s(0)?)))
         }
         ("Rot", 2) if shape(0) == (3, 1) => {
-            ok(make(&Kind::SO3, sm::rodrigues(&unit(&ms[0])?, &s(1)?)))
+            let axis = unit(&ms[0]).or_else(|| crate::sym::axis::unit_direction(&ms[0].data))?;
+            ok(make(&Kind::SO3, sm::rodrigues(&axis, &s(1)?)))
         }
         ("exp" | "MatrixExp3" | "MatrixExp6", 1) => exp(&ms[0], kind),
         ("inv", 1) => ok(make(kind, formula::inverse(&vals[0].kind(), &ms[0])?)),

@@ -217,7 +217,10 @@ impl Interp<'_> {
             self.rule_failure(e, op_span, Some(lhs.span), Some(rhs.span), Some(op_span))?;
         }
         let verdict = match (l.val.as_deref(), r.val.as_deref()) {
-            (Some(a), Some(b)) => match equal(a, b, op) {
+            (Some(a), Some(b)) => match self
+                .lowered_equal(a, b, op, op_span)
+                .unwrap_or_else(|| equal(a, b, op))
+            {
                 Ok(Some(v)) => Some(v),
                 Ok(None) => {
                     return Err(Diagnostic::error(
