@@ -350,7 +350,10 @@ impl T {
                 let y = v.powi(*n);
                 let k = f64::from(n.abs());
                 // each of the ~2 log2|n| products rounds once
-                (y, k * (y / v).abs() * e + (1.0 + 2.0 * k.log2().max(1.0)) * y.abs())
+                (
+                    y,
+                    k * (y / v).abs() * e + (1.0 + 2.0 * k.log2().max(1.0)) * y.abs(),
+                )
             }
             T::Sqrt(x) => un(x, &f64::sqrt, &|v| 0.5 / v.sqrt()),
             T::Angle(sin, k, (p, d), off) => {
@@ -630,7 +633,7 @@ fn check(e: &T, p: &Point, tally: &mut Tally) -> Result<(), String> {
     // within a few times the rounding of the statements typed first.
     let tight = (!e.has_diff()).then(|| 16.0 * f64::EPSILON * e.direct(&at).1);
     let meaningless = match tight {
-        Some(tol) => !(tol <= 1e-6 * want.abs().max(1.0)),
+        Some(tol) => !tol.is_finite() || tol > 1e-6 * want.abs().max(1.0),
         None => !err.is_finite() || want.abs() > 1e8 || err > 1e12,
     };
     if at.ill.get() || !want.is_finite() || meaningless {
