@@ -214,3 +214,45 @@ fn json_output_carries_the_replayed_number() {
     let want = (0.3f64.sin() + (-1.1f64).cos()).powi(30);
     assert!((x - want).abs() <= 1e-15 * want, "{x} ≠ {want}: {last}");
 }
+
+/// `x` and `y` agree within a few roundings.
+fn close(x: f64, y: f64) {
+    assert!((x - y).abs() <= 8.0 * f64::EPSILON * y.abs(), "{x} ≠ {y}");
+}
+
+/// A derivative of a scalar replays the chain rule over how the scalar
+/// was made (d u^n = n u^(n−1) du, d sin u = cos u du, …), not its
+/// expanded form: `diff((sin a + cos b)^30, a)` bound later printed
+/// 0.006594933314; it is 0.006594870245.
+#[test]
+fn derivatives_replay_the_chain_rule() {
+    let (s, c) = (0.3f64.sin() + (-1.1f64).cos(), 0.3f64.cos());
+    let later = "given a, b\ny = diff((sin a + cos b)^30, a)\na = 0.3\nb = -1.1\ny";
+    close(
+        ans(later).as_scalar().expect("a number"),
+        30.0 * s.powi(29) * c,
+    );
+    let lines = printed(later, 12);
+    assert_eq!(lines.last().map(String::as_str), Some("0.006594870245"));
+    // the second derivative, through the first's steps
+    let later = "given a, b\ny = diff(diff((sin a + cos b)^20, a), a)\na = 0.3\nb = -1.1\ny";
+    let want = 380.0 * s.powi(18) * c * c - 20.0 * s.powi(19) * 0.3f64.sin();
+    close(ans(later).as_scalar().expect("a number"), want);
+    // by time: the chain rule through q and q̇ (q̈ bound too)
+    let later =
+        "given q(t)\nx = (sin(q) + cos(q'))^20\nv = diff(x, t)\nq = 0.3\nq' = -1.1\nq'' = 0.5\nv";
+    let (u, du) = (
+        0.3f64.sin() + (-1.1f64).cos(),
+        0.3f64.cos() * -1.1 - (-1.1f64).sin() * 0.5,
+    );
+    close(
+        ans(later).as_scalar().expect("a number"),
+        20.0 * u.powi(19) * du,
+    );
+    // partial by a rate: ∂/∂q̇ holds q fixed
+    let later = "given q(t)\nx = (sin(q) + cos(q'))^20\nv = diff(x, q')\nq = 0.3\nq' = -1.1\nv";
+    close(
+        ans(later).as_scalar().expect("a number"),
+        -20.0 * u.powi(19) * (-1.1f64).sin(),
+    );
+}

@@ -286,7 +286,8 @@ impl<'a> Op<'a> {
     /// What replaying this operation with numbers does (LANGUAGE.md §7,
     /// [`recipe`]): its own step, for every operation whose numeric
     /// function computes what its exact form does; `diff` and `subs` read
-    /// their operands' symbols (their results are leaves), `simplify` and
+    /// their operands' symbols (their results are leaves, or for `diff` of
+    /// a scalar the chain rule's steps, `super::chain`), `simplify` and
     /// `expand` give their operand's value.
     fn made(self) -> Made {
         Made::Step(match self {
@@ -345,8 +346,13 @@ impl<'a> Op<'a> {
         {
             // how it was made, to be replayed with numbers (§7)
             return Some(
-                v.map(|v| recipe::record(v, self.made(), args, kind))
-                    .map_err(OpError::Message),
+                v.map(|v| match (self, args) {
+                    (Op::Call(b, _), [x, by]) if b.name == "diff" => {
+                        recipe::attach(v, super::chain::derivative(x, by))
+                    }
+                    _ => recipe::record(v, self.made(), args, kind),
+                })
+                .map_err(OpError::Message),
             );
         }
         let formulas = self.formula_is_symbolic();

@@ -3,6 +3,7 @@
 //! [`crate::check`]'s rules and computing values through [`crate::lie`].
 
 pub mod apply;
+mod chain;
 mod compare;
 mod compound;
 mod derive;

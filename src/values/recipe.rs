@@ -159,7 +159,9 @@ pub fn record(v: Value, made: Made, args: &[&Value], kind: &Kind) -> Value {
     attach(v, how)
 }
 
-fn attach(v: Value, how: Option<Rc<Recipe>>) -> Value {
+/// `v` made by `how`: a formula gets it, each formula in a tuple the part
+/// it is of it; anything else is left as it is.
+pub fn attach(v: Value, how: Option<Rc<Recipe>>) -> Value {
     let Some(r) = how else { return v };
     match v {
         Value::Formula { kind, m, .. } => Value::Formula {
