@@ -110,8 +110,14 @@ fn share_units(args: Vec<Value>) -> Vec<Value> {
     args.into_iter().map(|a| assume(a, &names)).collect()
 }
 
-/// The axes assumed to be unit vectors on the way ([`lower`]).
-type Assumed = RefCell<Vec<Arc<str>>>;
+/// What [`lower`] assumed on the way: the axes taken as unit vectors, and
+/// the notes of closed forms on a branch (at `span`, the statement's).
+#[derive(Default)]
+struct Assumed {
+    axes: RefCell<Vec<Arc<str>>>,
+    notes: RefCell<Vec<Diagnostic>>,
+    span: Span,
+}
 
 /// `op` on computed operands: by numbers when all are numbers, else by
 /// the canonical forms ([`Op::formula`]); None when it has no exact form.
@@ -126,7 +132,7 @@ fn apply_op(op: Op, args: Vec<Value>, assumed: &Assumed) -> Option<Value> {
         return None;
     }
     let v = op.formula(&refs, &Kind::Unknown)?.ok()?;
-    let mut seen = assumed.borrow_mut();
+    let mut seen = assumed.axes.borrow_mut();
     for n in unit_axes(&v) {
         if !seen.contains(&n) {
             seen.push(n);
@@ -204,7 +210,10 @@ fn lower(s: &Sym, leaf: &dyn Fn(&str) -> Option<Leaf>, assumed: &Assumed) -> Opt
         Sym::Call(fun, args) => {
             let b = builtins::lookup(fun.name)?;
             let args: Vec<Value> = args.iter().map(go).collect::<Option<_>>()?;
-            apply_op(Op::Call(b, fun.name), args, assumed)
+            let v = apply_op(Op::Call(b, fun.name), args.clone(), assumed)?;
+            let note = builtins::branch_note(fun.name, &share_units(args), assumed.span);
+            assumed.notes.borrow_mut().extend(note);
+            Some(v)
         }
     }
 }
@@ -228,13 +237,16 @@ impl Interp<'_> {
     /// otherwise, or when the closed form has no exact form or is beyond
     /// the size limits. With `asked` false also a tree that asks for no
     /// closed form (`w` beside `R * w` in a comparison).
-    fn lower(&self, s: &Sym, asked: bool) -> Option<(Value, Vec<Arc<str>>)> {
+    fn lower(&self, s: &Sym, asked: bool, span: Span) -> Option<(Value, Assumed)> {
         let leaf = |n: &str| self.leaf(n);
         let mut asks = false;
         if !worth_lowering(s, &leaf, &mut asks) || (asked && !asks) {
             return None;
         }
-        let assumed = Assumed::default();
+        let assumed = Assumed {
+            span,
+            ..Assumed::default()
+        };
         let v = lower(s, &leaf, &assumed)?;
         match &v {
             Value::Formula { m, .. }
@@ -243,7 +255,7 @@ impl Interp<'_> {
             {
                 None
             }
-            Value::Formula { .. } | Value::Num { .. } => Some((v, assumed.into_inner())),
+            Value::Formula { .. } | Value::Num { .. } => Some((v, assumed)),
             _ => None,
         }
     }
@@ -264,15 +276,17 @@ impl Interp<'_> {
             return None;
         }
         let side = |v: &Value| match v {
-            Value::Sym(s) => self.lower(s, false),
-            v @ (Value::Num { .. } | Value::Formula { .. }) => Some((v.clone(), Vec::new())),
+            Value::Sym(s) => self.lower(s, false, span),
+            v @ (Value::Num { .. } | Value::Formula { .. }) => {
+                Some((v.clone(), Assumed::default()))
+            }
             _ => None,
         };
-        let ((x, mut assumed), (y, more)) = (side(a)?, side(b)?);
-        assumed.extend(more);
+        let ((x, one), (y, two)) = (side(a)?, side(b)?);
         let mut both = share_units(vec![x, y]).into_iter();
         let (x, y) = (both.next()?, both.next()?);
-        self.unit_note(&assumed, span);
+        self.assumed(one);
+        self.assumed(two);
         let reduced = |v: &Value| match v {
             Value::Formula { m, .. } => m.data.iter().all(crate::sym::Expr::unit_reduced),
             _ => true,
@@ -289,11 +303,21 @@ impl Interp<'_> {
     pub(super) fn shown(&mut self, val: &mut Option<Box<Value>>, span: Span) {
         if let Some(v) = val.as_deref()
             && let Value::Sym(s) = v
-            && let Some((l, assumed)) = self.lower(s, true)
+            && let Some((l, assumed)) = self.lower(s, true, span)
         {
-            self.unit_note(&assumed, span);
+            self.assumed(assumed);
             *val = Some(Box::new(l));
         }
+    }
+
+    /// The notes of what a closed form assumed: its branches, its axes.
+    fn assumed(&mut self, a: Assumed) {
+        for n in a.notes.into_inner() {
+            if !self.warnings.iter().any(|w| w.message == n.message) {
+                self.warnings.push(n);
+            }
+        }
+        self.unit_note(&a.axes.into_inner(), a.span);
     }
 
     /// The note, once a session for each axis, that it was assumed to be a
