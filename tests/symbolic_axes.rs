@@ -223,3 +223,12 @@ fn frame_algebra_keeps_its_names() {
     assert_eq!(out, "exp([S_s] (t1 + t2)) T_sb  : SE(3) {s}←{b'}\n");
     assert!(!err.contains("assumed"), "{err}");
 }
+
+#[test]
+fn a_twist_is_no_unit_axis() {
+    // Proposition 3.16 needs ‖ω‖ = 1 (a screw axis); a twist's exponential
+    // stays a call rather than assume it
+    let (out, err) = run("given V : twist\ngiven t : scalar\nexp([V] t)\n");
+    assert_eq!(out, "exp([V] t)  : SE(3)\n");
+    assert!(!err.contains("assumed"), "{err}");
+}

@@ -2,8 +2,8 @@
 //! vector, screw axis, twist or wrench is a name in the tree of symbols
 //! (`[w] t`, `exp([S] θ) T_sb`), so that frame algebra prints as the book
 //! writes it. Where a result is built from such names, numbers and
-//! symbolic scalars only, and asks for a closed form (an `exp`, `Rot`,
-//! `det`, a product with a symbolic scalar), it is shown computed: each
+//! symbolic values only, and asks for a closed form (an `exp`, `Rot`,
+//! `det`, a product with a symbolic matrix), it is shown computed: each
 //! name becomes the column of its components `w[1]`, `w[2]`, `w[3]` and
 //! the tree is evaluated by the same operations on canonical forms. An
 //! exponential of such an axis assumes the book's ω̂ is a unit vector
@@ -44,14 +44,15 @@ enum Leaf {
 
 /// Every leaf can be computed with: names of `given` vectors (or of
 /// numbers), numbers and formulas; and some node asks for a closed form
-/// (a call, or a symbolic scalar among the operands).
+/// (a call, or a symbolic matrix such as `Rotz(t)` among the operands —
+/// not a symbolic scalar: `[w] t` stays as typed).
 fn worth_lowering(s: &Sym, leaf: &dyn Fn(&str) -> Option<Leaf>, asks: &mut bool) -> bool {
     match s {
         Sym::Name(n) => n == "deg" || leaf(n).is_some(),
         Sym::Const(v, _) => match &**v {
             Value::Num { .. } => true,
-            Value::Formula { .. } => {
-                *asks = true;
+            Value::Formula { m, .. } => {
+                *asks |= m.data.len() > 1;
                 true
             }
             _ => false,
@@ -87,7 +88,7 @@ fn unit_axes(v: &Value) -> Vec<Arc<str>> {
 /// `v` with the axes `names` taken as unit vectors.
 fn assume(v: Value, names: &[Arc<str>]) -> Value {
     match v {
-        Value::Formula { kind, m } if !names.is_empty() => {
+        Value::Formula { kind, m, .. } if !names.is_empty() => {
             formula::make(&kind, m.map(|e| e.assume_unit(names)))
         }
         v => v,
@@ -248,6 +249,16 @@ impl Interp<'_> {
             ..Assumed::default()
         };
         let v = lower(s, &leaf, &assumed)?;
+        // a twist's ω has no unit norm to assume (Proposition 3.16 is for
+        // a screw axis): its exponential stays a call
+        let twist = |n: &Arc<str>| {
+            self.env
+                .get(&**n)
+                .is_some_and(|b| matches!(b.ty.kind, Kind::Twist | Kind::Wrench))
+        };
+        if assumed.axes.borrow().iter().any(twist) {
+            return None;
+        }
         match &v {
             Value::Formula { m, .. }
                 if m.size() > super::symbolic::MAX_SYM_NODES
