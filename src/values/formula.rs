@@ -68,7 +68,7 @@ pub fn make(kind: &Kind, m: Mat) -> Value {
             kind,
             m: nalgebra::DMatrix::from_row_slice(m.rows, m.cols, &xs).into(),
         },
-        None => Value::Formula { kind, m },
+        None => Value::Formula { kind, m, how: None },
     }
 }
 
