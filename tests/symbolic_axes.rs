@@ -209,3 +209,40 @@ fn a_twist_is_no_unit_axis() {
     assert_eq!(out, "exp([V] t)  : SE(3)\n");
     assert!(!err.contains("assumed"), "{err}");
 }
+
+#[test]
+fn a_passing_assert_leaves_the_note_to_be_said() {
+    // a passing assert prints no notes; the assumption is said where a
+    // value built on it is shown
+    let (_, err) = run(
+        "given w : vec3\ngiven t : scalar\nassert exp([w] t) * w == w\n\
+         exp([w] t) * w\n",
+    );
+    assert_eq!(
+        err.matches("w is assumed to be a unit vector").count(),
+        1,
+        "{err}"
+    );
+    assert!(err.contains("t.chs:4:1: note"), "{err}");
+}
+
+#[test]
+fn components_print_as_indexed() {
+    use chasles::sym::print::{self, Mode, Style};
+    let latex = Style {
+        mode: Mode::Latex,
+        digits: 4,
+    };
+    let w = components("omega_b", 3);
+    let e = w[0].mul(&w[1]).sub(&w[2]);
+    assert_eq!(
+        print::expr(&e, Style::default()),
+        "omega_b[1] omega_b[2] - omega_b[3]"
+    );
+    assert_eq!(
+        print::expr(&e, latex),
+        "\\omega_{b,1} \\omega_{b,2} - \\omega_{b,3}"
+    );
+    let v = components("w", 3);
+    assert_eq!(print::expr(&v[1], latex), "w_{2}");
+}
