@@ -115,13 +115,21 @@ impl Interp<'_> {
         let mut acc: Option<Value> = None;
         for s in &steps {
             let b = self.env.get(&s.name).expect("a step is a bound name");
-            let v = super::substitute::current(b, self.env).ok_or_else(|| {
-                Diagnostic::error(
-                    ErrorKind::Name,
-                    target.span,
-                    format!("{} has no value", s.name),
-                )
-            })?;
+            let v = super::substitute::current(b, self.env)
+                .map_err(|e| {
+                    Diagnostic::error(
+                        ErrorKind::Domain,
+                        target.span,
+                        format!("{} with the numbers bound since: {}", s.name, e.0),
+                    )
+                })?
+                .ok_or_else(|| {
+                    Diagnostic::error(
+                        ErrorKind::Name,
+                        target.span,
+                        format!("{} has no value", s.name),
+                    )
+                })?;
             let v = match (&v, s.inverted) {
                 (Value::Sym(x), true) => Value::Sym(x.clone().inverse()),
                 (Value::Formula { kind, m, .. }, true) => super::formula::inverse(kind, m)

@@ -183,14 +183,18 @@ impl Interp<'_> {
 
     fn var(&mut self, name: Name, span: Span) -> Result<Typed, Diagnostic> {
         if let Some(b) = self.env.get(name) {
-            return Ok(Typed::new(
-                b.ty,
-                if self.running() {
-                    super::substitute::current(b, self.env)
-                } else {
-                    None
-                },
-            ));
+            let v = if self.running() {
+                super::substitute::current(b, self.env).map_err(|e| {
+                    Diagnostic::error(
+                        ErrorKind::Domain,
+                        span,
+                        format!("{name} with the numbers bound since: {}", e.0),
+                    )
+                })?
+            } else {
+                None
+            };
+            return Ok(Typed::new(b.ty, v));
         }
         let name = name.as_str();
         if let Some(d) = self.derivative_symbol(name) {

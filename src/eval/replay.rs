@@ -47,24 +47,43 @@ pub(super) fn classify(m: &crate::values::num::Num) -> Kind {
 /// The value of recipe `r` with the numbers `at` gives: each step applied
 /// to its operands' numbers by [`Op::numeric`], as when they are typed
 /// first; shared operands computed once. None when a leaf's symbol has no
-/// number or a step fails with numbers (the caller then evaluates the
-/// canonical form, as before there were recipes).
-pub(super) fn numbers(r: &Rc<Recipe>, at: Lookup) -> Option<Value> {
-    let mut memo = HashMap::new();
-    replay(r, at, &mut memo)
+/// number or a step's operands are not what it takes (the caller then
+/// evaluates the canonical form, as before there were recipes). A step
+/// whose numbers are outside its domain (`(a² − b²)/(a − b)` at a = b,
+/// `cot u` at u = 0) is that step's error, as when the numbers are typed
+/// first: the canonical form, whose factors may have cancelled, must not
+/// answer in its place.
+pub(super) fn numbers(r: &Rc<Recipe>, at: Lookup) -> Result<Option<Value>, Failed> {
+    let mut memo = Memo::default();
+    let v = replay(r, at, &mut memo);
+    match memo.failed {
+        Some(msg) => Err(Failed(msg)),
+        None => Ok(v),
+    }
 }
 
-type Memo = HashMap<*const Recipe, Option<Value>>;
+/// Why a replayed step failed with numbers: the message of the numeric
+/// operation, as a user sees it when the numbers are typed first.
+#[derive(Debug, Clone)]
+pub struct Failed(pub String);
+
+/// The values of the steps replayed so far (shared operands are computed
+/// once), and the first step that failed with numbers outside its domain.
+#[derive(Default)]
+struct Memo {
+    seen: HashMap<*const Recipe, Option<Value>>,
+    failed: Option<String>,
+}
 
 fn replay(r: &Rc<Recipe>, at: Lookup, memo: &mut Memo) -> Option<Value> {
     let key = Rc::as_ptr(r);
-    if let Some(v) = memo.get(&key) {
+    if let Some(v) = memo.seen.get(&key) {
         return v.clone();
     }
     // (recipes are at most recipe::MAX_DEPTH deep; the stack grows on the
     // heap when it runs low, as the evaluator's does)
     let v = stacker::maybe_grow(64 * 1024, 1024 * 1024, || step(r, at, memo));
-    memo.insert(key, v.clone());
+    memo.seen.insert(key, v.clone());
     v
 }
 
@@ -113,7 +132,23 @@ fn step(r: &Recipe, at: Lookup, memo: &mut Memo) -> Option<Value> {
         Step::Vector => Op::Vector,
         Step::Call(name) => Op::Call(crate::builtins::lookup(name)?, name),
     };
-    op.numeric(&refs, Some(&r.kind)).ok()
+    match op.numeric(&refs, Some(&r.kind)) {
+        Ok(v) => Some(v),
+        Err(e) => {
+            if refusal(&e) && memo.failed.is_none() {
+                memo.failed = Some(e.to_string());
+            }
+            None
+        }
+    }
+}
+
+/// Whether a step's error says its numbers are outside its domain (the
+/// answer is a refusal) rather than that its operands are not what the
+/// numeric operation takes (then the canonical form answers).
+fn refusal(e: &crate::values::error::OpError) -> bool {
+    use crate::values::error::OpError as E;
+    !matches!(e, E::NotNumbers(_) | E::Operands)
 }
 
 /// Recipe `r` with the numbers bound so far put into its leaves (a value
@@ -156,4 +191,43 @@ fn rebase(r: &Rc<Recipe>, at: Lookup, memo: &mut HashMap<*const Recipe, Rc<Recip
     });
     memo.insert(key, out.clone());
     out
+}
+
+/// `subs(x, name, value)` with a number for the last symbol of `x`: the
+/// value `x` was made to have there, replayed as if the number had been
+/// typed first (§7) — refused where a step is outside its domain, as the
+/// substituted canonical form, whose factors may have cancelled
+/// (`(a² − 1)/(a − 1)` is `1 + a`), would not be. None when `x` keeps
+/// other symbols or was made by no recorded steps (the canonical form is
+/// substituted).
+pub(super) fn subs_numbers(args: &[&Value]) -> Option<Result<Value, String>> {
+    let [
+        Value::Formula {
+            m, how: Some(r), ..
+        },
+        Value::Formula { m: name, .. },
+        by,
+    ] = args
+    else {
+        return None;
+    };
+    let sym = match name.data.as_slice() {
+        [e] => crate::sym::expr::as_symbol(e)?,
+        _ => return None,
+    };
+    let x = by.as_scalar()?;
+    let mut syms = Vec::new();
+    m.data.iter().for_each(|e| e.symbols(&mut syms));
+    if syms.iter().any(|s| *s != sym) {
+        return None;
+    }
+    let at = |s: &Symbol| (*s == sym).then_some(x);
+    match numbers(r, &at) {
+        Err(Failed(msg)) => Some(Err(msg)),
+        Ok(Some(Value::Num { m: xs, .. })) if xs.shape() == (m.rows, m.cols) => {
+            let kind = classify(&xs);
+            Some(Ok(Value::Num { kind, m: xs }))
+        }
+        Ok(_) => None,
+    }
 }

@@ -26,35 +26,44 @@ pub(crate) use super::apply::to_sym;
 /// a list or tuple too); a numeric result takes the kind the checker gave
 /// the expression where that says more than the numbers can (a twist, a
 /// wrench). `given` symbols are themselves.
-pub fn current(b: &Binding, env: &Env) -> Option<Value> {
-    match b.val.as_ref()? {
-        Value::Sym(s) if !b.symbolic => Some(match resolve(s, env) {
+///
+/// Err when replaying it with the numbers fails as the numbers typed
+/// first would (a division by zero the canonical form cancelled).
+pub fn current(b: &Binding, env: &Env) -> Result<Option<Value>, replay::Failed> {
+    let Some(v) = b.val.as_ref() else {
+        return Ok(None);
+    };
+    Ok(Some(match v {
+        Value::Sym(s) if !b.symbolic => match resolve(s, env) {
             Sym::Const(v, _) => retag(*v, &b.ty.kind),
-            s => Value::Sym(s),
-        }),
-        v @ Value::Formula { .. } if !b.symbolic => Some(formula(v, env)),
-        v @ (Value::Tuple(_) | Value::List(_)) if b.derived => Some(now(v, env)),
-        v => Some(v.clone()),
-    }
+            s => match stuck(&s) {
+                Some(why) => return Err(replay::Failed(why)),
+                None => Value::Sym(s),
+            },
+        },
+        v @ Value::Formula { .. } if !b.symbolic => formula(v, env)?,
+        v @ (Value::Tuple(_) | Value::List(_)) if b.derived => now(v, env)?,
+        v => v.clone(),
+    }))
 }
 
 /// An item of a list or tuple as of now ([`current`] of a value not bound
 /// to a name of its own).
-fn now(v: &Value, env: &Env) -> Value {
-    match v {
+fn now(v: &Value, env: &Env) -> Result<Value, replay::Failed> {
+    Ok(match v {
         Value::Sym(s) => match resolve(s, env) {
             Sym::Const(v, _) => *v,
             s => Value::Sym(s),
         },
-        Value::Formula { .. } => formula(v, env),
+        Value::Formula { .. } => formula(v, env)?,
         Value::Tuple(vs) if vs.iter().any(recipe::holds_symbols) => {
-            Value::Tuple(vs.iter().map(|x| now(x, env)).collect())
+            Value::Tuple(vs.iter().map(|x| now(x, env)).collect::<Result<_, _>>()?)
         }
-        Value::List(vs) if vs.iter().any(recipe::holds_symbols) => {
-            Value::List(std::rc::Rc::new(vs.iter().map(|x| now(x, env)).collect()))
-        }
+        Value::List(vs) if vs.iter().any(recipe::holds_symbols) => Value::List(std::rc::Rc::new(
+            vs.iter().map(|x| now(x, env)).collect::<Result<_, _>>()?,
+        )),
         v => v.clone(),
-    }
+    })
 }
 
 /// A formula with the numbers bound since substituted. Once every symbol
@@ -68,9 +77,9 @@ fn now(v: &Value, env: &Env) -> Value {
 /// vector), else what the numbers are, as for numbers typed first (π
 /// alone is a number too: it is no symbol). Partly bound, the numbers are
 /// put in ([`crate::sym::Expr::at_numbers`], and into how it was made).
-fn formula(v: &Value, env: &Env) -> Value {
+fn formula(v: &Value, env: &Env) -> Result<Value, replay::Failed> {
     let Value::Formula { kind, m, how } = v else {
-        return v.clone();
+        return Ok(v.clone());
     };
     let lookup = |s: &Symbol| match env.get(&*super::formula::binding_name(s)) {
         Some(Binding {
@@ -82,41 +91,44 @@ fn formula(v: &Value, env: &Env) -> Value {
     let mut syms = Vec::new();
     m.data.iter().for_each(|e| e.symbols(&mut syms));
     if !syms.iter().any(|s| lookup(s).is_some()) && !syms.is_empty() {
-        return v.clone();
+        return Ok(v.clone());
     }
     if syms.iter().all(|s| lookup(s).is_some()) {
-        let replayed = how
-            .as_ref()
-            .and_then(|r| replay::numbers(r, &lookup))
-            .and_then(|x| match x {
-                Value::Num { m: xs, .. } if xs.shape() == (m.rows, m.cols) => Some(xs),
-                _ => None,
-            });
+        let replayed = match how {
+            Some(r) => replay::numbers(r, &lookup)?,
+            None => None,
+        };
+        let replayed = replayed.and_then(|x| match x {
+            Value::Num { m: xs, .. } if xs.shape() == (m.rows, m.cols) => Some(xs),
+            _ => None,
+        });
         if let Some(xs) = replayed {
             let kind = if recipe::vague(kind) {
                 replay::classify(&xs)
             } else {
                 *kind
             };
-            return Value::Num { kind, m: xs };
+            return Ok(Value::Num { kind, m: xs });
         }
         if let Some(v) = replay::canonical(kind, m, &lookup) {
-            return v;
+            return Ok(v);
         }
     }
-    match super::formula::make(kind, m.map(|e| e.at_numbers(&lookup))) {
-        Value::Formula { kind, m, .. } => Value::Formula {
-            kind,
-            m,
-            how: how.as_ref().map(|r| replay::at_numbers(r, &lookup)),
+    Ok(
+        match super::formula::make(kind, m.map(|e| e.at_numbers(&lookup))) {
+            Value::Formula { kind, m, .. } => Value::Formula {
+                kind,
+                m,
+                how: how.as_ref().map(|r| replay::at_numbers(r, &lookup)),
+            },
+            v => v,
         },
-        v => v,
-    }
+    )
 }
 
 /// `v` with the checker's kind, unless that is only a shape (a plain
 /// matrix or vector keeps the kind read from its entries).
-fn retag(v: Value, kind: &Kind) -> Value {
+pub(super) fn retag(v: Value, kind: &Kind) -> Value {
     match (v, kind) {
         (v, Kind::Unknown | Kind::Matrix(..) | Kind::Vector(_)) => v,
         (Value::Num { m, .. }, k) => Value::Num { kind: *k, m },
@@ -136,7 +148,12 @@ pub fn resolve(s: &Sym, env: &Env) -> Sym {
             _ => s.clone(),
         },
         Sym::Const(v, _) => match &**v {
-            v @ Value::Formula { .. } => to_sym(&formula(v, env)),
+            // (a factor whose numbers fail stays symbolic: the operation
+            // over it reports, as for any failing numeric operand)
+            v @ Value::Formula { .. } => match formula(v, env) {
+                Ok(x) => to_sym(&x),
+                Err(_) => s.clone(),
+            },
             _ => s.clone(),
         },
         Sym::Identity => s.clone(),
@@ -261,5 +278,41 @@ fn binary(op: BinOp, a: &Sym, b: &Sym, env: &Env) -> Sym {
         BinOp::Div => Sym::Div(a, b),
         BinOp::Pow => Sym::Pow(a, b),
         BinOp::Mul => Sym::times(*a, *b),
+    }
+}
+
+/// Why a resolved symbolic value whose `given` names all have numbers is
+/// still not a number: the message of its first operation whose operands
+/// are all numbers and which fails with them (`Rot(w, θ)` with w = 0), as
+/// when the numbers are typed first. None while a name or a formula with
+/// free symbols is left (the value is only partly bound).
+fn stuck(s: &Sym) -> Option<String> {
+    let parts: Vec<&Sym> = match s {
+        Sym::Name(_) => return None,
+        Sym::Const(..) | Sym::Identity => return None,
+        Sym::Product(fs) => fs.iter().collect(),
+        Sym::Inv(x) | Sym::Transpose(x) | Sym::Neg(x) | Sym::Member(x, _) | Sym::Bracket(x) => {
+            vec![&**x]
+        }
+        Sym::Index(x, _) => vec![&**x],
+        Sym::Add(a, b) | Sym::Sub(a, b) | Sym::Div(a, b) | Sym::Pow(a, b) => vec![&**a, &**b],
+        Sym::Block(rows) => rows.iter().flatten().collect(),
+        Sym::Vector(xs) | Sym::Call(_, xs) => xs.iter().collect(),
+    };
+    if let Some(why) = parts.iter().find_map(|p| stuck(p)) {
+        return Some(why);
+    }
+    let vals: Vec<&Value> = parts.iter().map(|p| num(p)).collect::<Option<_>>()?;
+    let failed = match s {
+        Sym::Call(fun, _) => crate::builtins::lookup(fun.name)
+            .map(|b| apply::call_nowhere(b, vals.into_iter().cloned().collect())),
+        Sym::Div(..) => Some(Op::Arith(BinOp::Div).numeric(&vals, None)),
+        Sym::Pow(..) => Some(Op::Arith(BinOp::Pow).numeric(&vals, None)),
+        Sym::Inv(_) => Some(Op::Inverse.numeric(&vals, None)),
+        _ => None,
+    };
+    match failed {
+        Some(Err(e)) => Some(e.to_string()),
+        _ => None,
     }
 }

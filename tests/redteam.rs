@@ -1,0 +1,56 @@
+//! Wrong answers a student could get by binding numbers later (issue 21:
+//! "never a wrong answer"). Each test binds the numbers after the value
+//! is made and asserts what the same statements give with the numbers
+//! typed first: the same refusal, or the same value.
+
+mod common;
+
+use common::{error, last_numbers};
+
+/// `(a² − b²)/(a − b)` cancels to `a + b` symbolically; at a = b the
+/// division it was made by is by zero, so it is refused, as typed first.
+#[test]
+fn a_cancelled_factor_bound_to_zero_is_refused() {
+    let first = error("a = 0.3\nb = 0.3\n(a^2 - b^2)/(a - b)");
+    assert!(first.contains("division by zero"), "{first}");
+    let later = error("given a, b\ny = (a^2 - b^2)/(a - b)\na = 0.3\nb = 0.3\ny");
+    assert!(later.contains("division by zero"), "{later}");
+    // away from the cancelled zero, the value is a + b
+    let v = last_numbers("given a, b\ny = (a^2 - b^2)/(a - b)\na = 0.3\nb = -1.1\ny");
+    assert!((v[0] - (0.3 - 1.1)).abs() < 1e-15, "{v:?}");
+}
+
+/// `cot u` at u = 0 and `tan t` at t = π/2 are infinite: refused when
+/// bound later as when typed first, not `inf` or 1.6e16.
+#[test]
+fn poles_bound_later_are_refused() {
+    let later = error("given u\nc = cot(u)\nu = 0\nc");
+    assert!(later.contains("cotangent is infinite"), "{later}");
+    let later = error("given t\nz = tan(t)\nt = pi/2\nz");
+    assert!(later.contains("tangent is infinite"), "{later}");
+    let later = error("given t\nz = 2 sec(t) + 1\nt = pi/2\nz");
+    assert!(later.contains("infinite"), "{later}");
+}
+
+/// `subs(x, a, 1)` of `(a² − 1)/(a − 1)` is the value of the division at
+/// a = 1 — by zero, refused — not `1 + a` at 1; elsewhere the value.
+#[test]
+fn subs_of_a_cancelled_factor_at_its_zero_is_refused() {
+    let e = error("given a\ny = (a^2 - 1)/(a - 1)\nsubs(y, a, 1)");
+    assert!(e.contains("division by zero"), "{e}");
+    let e = error("given a\nsubs((a^2 - 1)/(a - 1), a, 1)");
+    assert!(e.contains("division by zero"), "{e}");
+    let v = last_numbers("given a\ny = (a^2 - 1)/(a - 1)\nsubs(y, a, 3)");
+    assert_eq!(v, vec![4.0]);
+}
+
+/// `Rot(w, θ)` over a symbolic axis bound later to the zero vector has no
+/// value, as `Rot((0, 0, 0), 0.9)` has none: refused, not left printed as
+/// an unevaluated rotation.
+#[test]
+fn a_symbolic_call_that_fails_with_its_numbers_is_refused() {
+    let first = error("Rot((0, 0, 0), 0.9)");
+    assert!(first.contains("zero vector"), "{first}");
+    let later = error("given w : vec3\ngiven t\nR = Rot(w, t)\nw = (0, 0, 0)\nt = 0.9\nR");
+    assert!(later.contains("zero vector"), "{later}");
+}
