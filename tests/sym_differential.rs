@@ -9,6 +9,8 @@ use chasles::eval::env::Mode;
 use chasles::eval::value::Value;
 use chasles::session::{Session, Settings};
 
+mod common;
+
 /// Runs `src` in a fresh session; the session and the number of errors.
 fn session(src: &str) -> (Session, usize, String) {
     let mut s = Session::new(Settings::default());
@@ -26,10 +28,7 @@ fn number(s: &Session, name: &str) -> Option<f64> {
 
 /// The text `src` prints (failing on an error).
 fn prints(src: &str) -> String {
-    let mut s = Session::new(Settings::default());
-    let (out, err, n) = s.run_to_strings("t.chs", src, Mode::Run, false);
-    assert_eq!(n, 0, "{src}\n{err}");
-    out.trim_end().to_string()
+    common::printed(src).trim_end().to_string()
 }
 
 /// The last line `src` prints.

@@ -362,7 +362,11 @@ impl Expr {
                 out.push(mono_mul(a, b), c.mul(d));
             }
         }
-        out.fold_roots().fold_units()
+        let out = out.fold_roots().fold_units();
+        if self.has_phase() || o.has_phase() {
+            return out.fold_phases();
+        }
+        out
     }
 
     /// √x · √x = x: a square root's even powers become powers of x.
@@ -411,7 +415,7 @@ impl Expr {
             }
             out.push(m2, c.conj());
         }
-        out
+        out.fold_phases()
     }
     /// 1/x: exact for a single term, else a [`Func::Recip`] call of a *real*
     /// sum (calls are real), scaled so its first term prints as 1; a complex
@@ -425,7 +429,7 @@ impl Expr {
                 .collect();
             let mut out = Expr::zero();
             out.push(m, c.inv()?);
-            return Some(out);
+            return Some(out.fold_phases());
         }
         let bar = self.conj();
         if bar != *self {
@@ -468,10 +472,12 @@ impl Expr {
     }
 
     /// e^{i·arg} as a monomial in the z's, when `arg` is an integer
-    /// combination of symbols plus a multiple of π/12.
+    /// combination of symbols plus a multiple of π/12, or plus another
+    /// rational multiple of π or a decimal offset (a phase variable,
+    /// [`super::phase`]; only beside a symbol: `cos(π/5)` is a number).
     pub fn expi(arg: &Expr) -> Option<Expr> {
         let mut mono: Mono = Vec::new();
-        let mut coef = Coef::one();
+        let (mut pi, mut rad) = (Rat::ZERO, Rat::ZERO);
         for (m, c) in &arg.terms {
             let k = c.as_rat()?;
             match m.as_slice() {
@@ -479,10 +485,20 @@ impl Expr {
                     let k = i32::try_from(k.as_int()?).ok()?;
                     mono = mono_mul(&mono, &vec![(Var::Z(s.clone()), k)]);
                 }
-                [(Var::Pi, 1)] => coef = coef.mul(&Coef::unit_root(k)?),
+                [(Var::Pi, 1)] => pi = k,
+                [] => rad = k,
                 _ => return None,
             }
         }
+        let coef = match Coef::unit_root(pi.clone()) {
+            Some(c) if rad.is_zero() => c,
+            _ if mono.is_empty() => return None,
+            _ => {
+                let (m, c) = super::phase::offset(&pi, &rad)?;
+                mono = mono_mul(&mono, &m);
+                c
+            }
+        };
         let mut e = Expr::zero();
         e.push(mono, coef);
         Some(e)
@@ -542,7 +558,7 @@ impl Expr {
             for (v, _) in m {
                 match v {
                     Var::Sym(s) | Var::Z(s) => {
-                        if !out.contains(s) {
+                        if !out.contains(s) && !s.is_phase() {
                             out.push(s.clone());
                         }
                     }

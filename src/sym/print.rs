@@ -176,13 +176,9 @@ pub fn symbol(s: &Symbol, st: Style) -> String {
     if s.index > 0 {
         return component(s, st);
     }
-    // an angle's offset, `π/4`, `5π/12` (see `trig::fold_offsets`; no
-    // name the user can declare holds a `/`)
-    if let Some((p, q)) = s.name.split_once("π/") {
-        return match st.mode {
-            Mode::Latex => format!("\\frac{{{p}\\pi}}{{{q}}}"),
-            _ => s.name.to_string(),
-        };
+    // a constant offset: one unit of a phase variable (see `trig_factor`)
+    if let Some(unit) = s.phase() {
+        return super::phase::text(unit, 1, st.mode == Mode::Latex);
     }
     let (base, sub) = split_name(&s.name);
     if st.mode == Mode::Latex {
@@ -229,19 +225,25 @@ pub fn symbol(s: &Symbol, st: Style) -> String {
 }
 
 /// A component of a `given` vector as it is indexed, `w[2]` (LaTeX
-/// `w_{2}`, `\left(w_b\right)_{2}`).
+/// `w_{2}`, `\omega_{b,2}` for `omega_b`).
 fn component(s: &Symbol, st: Style) -> String {
+    let (letters, sub) = split_name(&s.name);
+    let name = if st.mode == Mode::Latex {
+        letters
+    } else {
+        &*s.name
+    };
     let base = symbol(
         &Symbol {
             index: 0,
             unit: false,
-            ..s.clone()
+            ..Symbol::new(name)
         },
         st,
     );
     match st.mode {
-        Mode::Latex if base.contains('_') => format!("\\left({base}\\right)_{{{}}}", s.index),
-        Mode::Latex => format!("{base}_{{{}}}", s.index),
+        Mode::Latex if sub.is_empty() => format!("{base}_{{{}}}", s.index),
+        Mode::Latex => format!("{base}_{{{sub},{}}}", s.index),
         _ => format!("{base}[{}]", s.index),
     }
 }
@@ -266,12 +268,12 @@ pub(super) fn trig_factor(k: &[(Symbol, i32)], f: &str, p: u32, st: Style) -> St
     }
     let mut arg = String::new();
     for (i, (s, c)) in k.iter().enumerate() {
-        let name = symbol(s, st);
         let mag = c.abs();
-        let piece = if mag == 1 {
-            name
-        } else {
-            format!("{mag} {name}")
+        let piece = match s.phase() {
+            // an offset, `π/5`, `0.3`, as its value
+            Some(unit) => super::phase::text(unit, i64::from(mag), st.mode == Mode::Latex),
+            None if mag == 1 => symbol(s, st),
+            None => format!("{mag} {}", symbol(s, st)),
         };
         match (i, *c < 0) {
             (0, _) => arg.push_str(&piece),
@@ -300,9 +302,7 @@ pub(super) fn trig_factor(k: &[(Symbol, i32)], f: &str, p: u32, st: Style) -> St
 /// applies (all coefficients 1, indexed names or a single angle).
 fn short_trig(k: &[(Symbol, i32)], sin: bool) -> Option<String> {
     const SUB: [char; 10] = ['₀', '₁', '₂', '₃', '₄', '₅', '₆', '₇', '₈', '₉'];
-    if k.iter()
-        .any(|(s, c)| *c != 1 || s.dots > 0 || s.name.contains('/'))
-    {
+    if k.iter().any(|(s, c)| *c != 1 || s.dots > 0 || s.is_phase()) {
         return None;
     }
     let f = if sin { 's' } else { 'c' };
