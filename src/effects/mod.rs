@@ -152,6 +152,16 @@ impl Gate {
         })
     }
 
+    /// The same policy with printed pictures kept in memory, as a notebook
+    /// wants (LANGUAGE.md §13: shown inline, no file unless `save` asks);
+    /// `save` still writes, refused or confined as before.
+    pub fn printed_in_memory(self) -> Gate {
+        Gate {
+            pictures: Pictures::Saved,
+            ..self
+        }
+    }
+
     /// Whether this gate refuses every write (`--no-write`).
     pub fn denies(&self) -> bool {
         matches!(self.policy, Policy::Deny)
