@@ -341,15 +341,6 @@ impl<'a> Op<'a> {
     /// The first two paths of [`Op::apply`]: None when the operands are
     /// numbers (a builtin call then computes with its spans and warnings).
     pub fn exact_or_symbolic(self, args: &[&Value], kind: &Kind) -> Option<Result<Value, OpError>> {
-        if let Op::Call(b, _) = self
-            && b.name == "subs"
-            && let Some(v) = super::replay::subs_numbers(args)
-        {
-            return Some(
-                v.map(|v| super::substitute::retag(v, kind))
-                    .map_err(OpError::Message),
-            );
-        }
         if formula::applies(args)
             && let Some(v) = self.formula(args, kind)
         {

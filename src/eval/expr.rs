@@ -442,7 +442,15 @@ impl Interp<'_> {
             .any(|v| matches!(v, Value::Sym(_) | Value::Formula { .. }))
         {
             let refs: Vec<&Value> = vals.iter().collect();
-            if let Some(v) = op.exact_or_symbolic(&refs, &ty.kind) {
+            // (subs with a number replays how its operand was made, §7)
+            let subs = (b.name == "subs")
+                .then(|| super::replay::subs_numbers(&refs))
+                .flatten()
+                .map(|v| {
+                    v.map(|v| super::substitute::retag(v, &ty.kind))
+                        .map_err(crate::values::error::OpError::Message)
+                });
+            if let Some(v) = subs.or_else(|| op.exact_or_symbolic(&refs, &ty.kind)) {
                 let val = Some(v.map_err(|m| op.failure(m, span))?);
                 self.warnings
                     .extend(builtins::branch_note(b.name, &vals, span));
