@@ -80,3 +80,117 @@ fn big_coefficients_stay_exact() {
     assert!(text.contains("112186277816662845432 t^35"), "{text}");
     assert!(!text.contains('e') && !text.contains('.'), "{text}");
 }
+
+// ------------------------------------------- item 5: exact `==`
+
+/// Text output and errors of `src` (notes go to the second).
+fn text(src: &str, exact: bool) -> (String, String) {
+    let mut s = Session::new(Settings {
+        exact,
+        ..Settings::default()
+    });
+    let (out, err, n) = s.run_to_strings("t.chs", src, Mode::Run, false);
+    assert_eq!(n, 0, "{src}\n{err}");
+    (out, err)
+}
+
+/// Issue 21 item 5's examples: `==` is true only when the difference is
+/// exactly zero, and gives the same answer with or without a symbol.
+#[test]
+fn equality_is_exact_with_and_without_symbols() {
+    let cases = [
+        ("given x : scalar\nx + 1e-13 == x", false),
+        (
+            "given L : scalar\nsqrt(5)*1e13*L^3 + sqrt(5)*L == sqrt(5)*1e13*L^3",
+            false,
+        ),
+        (
+            "given t : scalar\nw = (1, 1, 1)/sqrt(3)\nRot(w, t) * w == w",
+            true,
+        ),
+        ("sqrt(2)*sqrt(3) == sqrt(6)", true),
+        ("given t : scalar\nsqrt(2)*sqrt(3)*t == sqrt(6)*t", true),
+        ("0.1 + 0.2 == 0.3", true),
+        ("given t : scalar\n(0.1 + 0.2)*t == 0.3*t", true),
+        ("0.866 == sqrt(3)/2", false),
+        ("given t : scalar\n0.866*t == sqrt(3)/2*t", false),
+        ("20 deg == pi/9", true),
+        ("given t : scalar\n(20 deg)*t == pi/9*t", true),
+        ("1/sqrt(2) == sqrt(2)/2", true),
+        ("cos(pi/3) == 1/2", true),
+        ("given t : scalar\ncos(pi/3)*t == t/2", true),
+        (
+            "Rotz(30 deg) == [sqrt(3)/2, -0.5, 0; 0.5, sqrt(3)/2, 0; 0, 0, 1]",
+            true,
+        ),
+        (
+            "Rotz(30 deg) == [0.866, -0.5, 0; 0.5, 0.866, 0; 0, 0, 1]",
+            false,
+        ),
+        ("sqrt(8) == 2*sqrt(2)", true),
+        ("sqrt(3/4) == sqrt(3)/2", true),
+    ];
+    for (src, want) in cases {
+        assert_eq!(last(src), serde_json::Value::Bool(want), "{src}");
+    }
+}
+
+/// Floats with no exact form (√5 here) compare as floats: `==` is false
+/// when they differ by rounding only, with a note pointing to `≈`, which
+/// holds — on numbers and on symbolic sides alike.
+#[test]
+fn floats_that_differ_by_rounding_point_to_approx() {
+    for (eq, approx) in [
+        ("sqrt(5)^2 == 5", "sqrt(5)^2 ~= 5"),
+        (
+            "given t : scalar\nsqrt(5)^2*t == 5*t",
+            "given t : scalar\nsqrt(5)^2*t ~= 5*t",
+        ),
+    ] {
+        assert_eq!(last(eq), serde_json::Value::Bool(false), "{eq}");
+        let (out, err) = text(eq, false);
+        assert_eq!(out.trim(), "false");
+        assert!(err.contains("differ by rounding only"), "{err}");
+        assert!(err.contains("≈"), "{err}");
+        assert_eq!(last(approx), serde_json::Value::Bool(true), "{approx}");
+    }
+    // A real difference is no rounding: no note.
+    let (_, err) = text("given x : scalar\nx + 1e-13 == x", false);
+    assert!(!err.contains("rounding"), "{err}");
+    // sin(1)² + cos(1)² = 1 in floats is whatever the floats say, never a
+    // guess: true only with every digit equal, else false with the note.
+    let (out, err) = text("sin(1)^2 + cos(1)^2 == 1", false);
+    let s2c2 = 1f64.sin().powi(2) + 1f64.cos().powi(2);
+    assert_eq!(out.trim(), if s2c2 == 1.0 { "true" } else { "false" });
+    assert_eq!(err.contains("rounding only"), s2c2 != 1.0, "{err}");
+}
+
+/// `--exact` prints what is exact, in a form that reads back, and leaves
+/// decimals as typed and floats with no exact form as decimals.
+#[test]
+fn exact_output_reads_back() {
+    let (out, _) = text(
+        "a = sqrt(2)/2\nb = 20 deg\nc = 0.866\nd = sin(1)\ne = (pi/4, -pi/2, 1/3)",
+        true,
+    );
+    let lines: Vec<&str> = out.lines().collect();
+    assert_eq!(
+        lines,
+        [
+            "a = 1/√2",
+            "b = π/9",
+            "c = 0.866",
+            "d = 0.8415",
+            "e = (π/4, -π/2, 1/3)  : 3-vector"
+        ]
+    );
+    for (printed, value) in [("1/√2", "sqrt(2)/2"), ("π/9", "20 deg"), ("-π/2", "-pi/2")] {
+        let src = format!("{printed} == {value}");
+        assert_eq!(last(&src), serde_json::Value::Bool(true), "{src}");
+    }
+    let (out, _) = text("Rotz(pi/6)", true);
+    assert_eq!(
+        out,
+        "[√3/2, -1/2, 0\n  1/2, √3/2, 0\n    0,    0, 1]  : SO(3)\n"
+    );
+}

@@ -71,7 +71,11 @@ fn numeric(kind: &Kind, rows: usize, cols: usize, xs: &[f64]) -> Value {
         Kind::Unknown | Kind::Matrix(..) | Kind::Vector(None) => classify(&m),
         k => *k,
     };
-    Value::Num { kind, m }
+    Value::Num {
+        kind,
+        m,
+        exact: Default::default(),
+    }
 }
 
 /// `v` with the checker's kind, unless that is only a shape (a plain
@@ -79,7 +83,7 @@ fn numeric(kind: &Kind, rows: usize, cols: usize, xs: &[f64]) -> Value {
 fn retag(v: Value, kind: &Kind) -> Value {
     match (v, kind) {
         (v, Kind::Unknown | Kind::Matrix(..) | Kind::Vector(_)) => v,
-        (Value::Num { m, .. }, k) => Value::Num { kind: *k, m },
+        (Value::Num { m, exact, .. }, k) => Value::Num { kind: *k, m, exact },
         (v, _) => v,
     }
 }
@@ -186,9 +190,11 @@ fn constant(v: Value) -> Sym {
         Value::Num {
             kind: Kind::Unknown | Kind::Matrix(..),
             m,
+            exact,
         } => Value::Num {
             kind: classify(&m),
             m,
+            exact,
         },
         other => other,
     };

@@ -341,6 +341,31 @@ pub(super) fn coefficient(c: &Coef, st: Style) -> (bool, String) {
     }
 }
 
+/// p/q as typed in scientific notation, when that is much shorter: a
+/// long power of ten in it (`1e300`, `1e-13`), at most 15 digits.
+fn scientific(p: &str, q: &str) -> Option<String> {
+    let digits = |m: &str| -> Option<String> {
+        (m.len() <= 15).then(|| match m.len() {
+            1 => m.to_string(),
+            _ => format!("{}.{}", &m[..1], &m[1..]),
+        })
+    };
+    if q == "1" && p.len() > 15 {
+        let m = p.trim_end_matches('0');
+        if p.len() - m.len() < 10 {
+            return None;
+        }
+        return Some(format!("{}e{}", digits(m)?, p.len() - 1));
+    }
+    let zeros = q.strip_prefix('1')?;
+    if zeros.len() > 12 && zeros.bytes().all(|b| b == b'0') && p.len() <= 15 {
+        // p / 10^n = m · 10^(len(p) - 1 - n)
+        let m = p.trim_end_matches('0');
+        return Some(format!("{}e-{}", digits(m)?, zeros.len() + 1 - p.len()));
+    }
+    None
+}
+
 /// (p/q)√k as text or LaTeX: `3`, `17/40` (or `0.425`), `√2`, `1/√2`, `√3/2`.
 fn surd_term(r: &Rat, k: i64, latex: bool) -> String {
     let (p, q) = r.parts();
@@ -353,6 +378,9 @@ fn surd_term(r: &Rat, k: i64, latex: bool) -> String {
     };
     let p_one = *p == num_bigint::BigUint::from(1u8);
     if k == 1 {
+        if let Some(e) = scientific(&p.to_string(), &q.magnitude().to_string()) {
+            return format!("{sign}{e}");
+        }
         if q_small == Some(1) {
             return format!("{sign}{p}");
         }
@@ -544,7 +572,9 @@ mod tests {
     #[test]
     fn dots_and_exact_constants() {
         let th = Symbol::timed("theta");
-        let x = Expr::symbol(th.dot()).scale(&Coef::from_f64(0.5f64.sqrt()));
+        let half = crate::sym::coef::Rat::new(1, 2).unwrap();
+        let r2 = crate::sym::coef::Surd([Rat::ZERO, half, Rat::ZERO, Rat::ZERO]);
+        let x = Expr::symbol(th.dot()).scale(&Coef::real(r2));
         assert_eq!(expr(&x, Style::default()), "(1/√2) θ̇");
         let latex = Style {
             mode: Mode::Latex,
