@@ -169,6 +169,40 @@ fn scalar_functions_without_parentheses() {
 }
 
 #[test]
+fn cot_sec_csc_without_parentheses() {
+    // LANGUAGE.md §4: the scalar functions apply to one atom, tan's
+    // relatives included (issue 21).
+    same(SETUP, "cot θ", "cot(θ)");
+    same(SETUP, "sec θ", "sec(θ)");
+    same(SETUP, "csc θ", "csc(θ)");
+    same(SETUP, "sec θ [w]", "sec(θ) * [w]");
+    let close = |src: &str, want: f64| {
+        let got = last(src);
+        assert!(
+            got.len() == 1 && (got[0] - want).abs() < 1e-12,
+            "{src} = {got:?}"
+        );
+    };
+    close("cot 30°", 3f64.sqrt());
+    close("sec 60°", 2.0);
+    close("csc 30°", 2.0);
+    close("x = 1\n1 - sec x", 1.0 - 1.0 / 1f64.cos());
+    // Symbolic: the same canonical form as with parentheses.
+    let text = |src: &str| {
+        let lines = run(src).unwrap_or_else(|e| panic!("{src}:\n{e}"));
+        lines.last().expect("a value")["value"].clone()
+    };
+    for (f, want) in [("cot", "cot(t)"), ("sec", "1/cos(t)"), ("csc", "1/sin(t)")] {
+        let bare = text(&format!("given t : scalar\n{f} t"));
+        assert_eq!(bare, text(&format!("given t : scalar\n{f}(t)")), "{f}");
+        assert_eq!(bare, want, "{f} t");
+    }
+    // The same two readings as `sin θ^2` are refused.
+    let e = error("θ = 1\ncot θ^2");
+    assert!(e.contains("write (cot θ)^2, or cot(θ^2)"), "{e}");
+}
+
+#[test]
 fn identity_takes_the_size_it_needs() {
     // Rodrigues' formula (3.51) with I.
     same(

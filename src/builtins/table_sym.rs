@@ -142,7 +142,8 @@ pub fn eval_symbolic(name: &str, vals: &[Value], kind: &Kind) -> Out {
             ok(make(&Kind::SO3, sm::rot_axis(axis, &s(0)?)))
         }
         ("Rot", 2) if shape(0) == (3, 1) => {
-            ok(make(&Kind::SO3, sm::rodrigues(&unit(&ms[0])?, &s(1)?)))
+            let axis = unit(&ms[0]).or_else(|| crate::sym::axis::unit_direction(&ms[0].data))?;
+            ok(make(&Kind::SO3, sm::rodrigues(&axis, &s(1)?)))
         }
         ("exp" | "MatrixExp3" | "MatrixExp6", 1) => exp(&ms[0], kind),
         ("inv", 1) => ok(make(kind, formula::inverse(&vals[0].kind(), &ms[0])?)),
@@ -244,6 +245,7 @@ pub fn eval_symbolic(name: &str, vals: &[Value], kind: &Kind) -> Out {
         {
             inverse_map(name, &ms[0])
         }
+        ("log" | "MatrixLog6", 1) if shape(0) == (4, 4) => inverse_map(name, &ms[0]),
         ("sin", 1) => ok(scalar(Expr::sin(&s(0)?))),
         ("cos", 1) => ok(scalar(Expr::cos(&s(0)?))),
         ("tan" | "cot" | "sec" | "csc", 1) => ok(scalar(ratio(name, &s(0)?)?)),
@@ -289,6 +291,16 @@ fn on_branch(name: &str, r: &Mat) -> Option<(Value, Branch)> {
             let (v, b) = branch::cayley(r)?;
             (make(&Kind::Vector(Some(3)), Mat::column(v)), b)
         }
+        "log" if r.rows == 4 => {
+            let (m, b) = branch::log6(r)?;
+            (make(&Kind::Se3, m), b)
+        }
+        "MatrixLog6" => {
+            let (m, b) = branch::log6(r)?;
+            let mut v = sm::unskew(&m.block(0..3, 0..3));
+            v.extend(m.block(0..3, 3..4).data);
+            (make(&Kind::Vector(Some(6)), Mat::column(v)), b)
+        }
         "log" => {
             let (m, b) = branch::log3(r)?;
             (make(&Kind::So3, m), b)
@@ -325,7 +337,8 @@ pub fn branch_note(name: &str, vals: &[Value], span: Span) -> Option<Diagnostic>
         [v] => mat_of(v)?,
         _ => return None,
     };
-    if (r.rows, r.cols) != (3, 3) || r.as_f64().is_some() {
+    let transform = (r.rows, r.cols) == (4, 4) && matches!(name, "log" | "MatrixLog6");
+    if ((r.rows, r.cols) != (3, 3) && !transform) || r.as_f64().is_some() {
         return None;
     }
     let (_, b) = on_branch(name, &r)?;
@@ -340,7 +353,10 @@ pub fn branch_note(name: &str, vals: &[Value], span: Span) -> Option<Diagnostic>
         parts.push(format!("{} > 0", show(&b.positive)));
     }
     if !b.angles.is_empty() {
-        let open = if matches!(name, "log" | "MatrixLog3" | "quat" | "cayley") {
+        let open = if matches!(
+            name,
+            "log" | "MatrixLog3" | "MatrixLog6" | "quat" | "cayley"
+        ) {
             "(−π, π)"
         } else {
             "(−π, π]"
@@ -350,8 +366,9 @@ pub fn branch_note(name: &str, vals: &[Value], span: Span) -> Option<Diagnostic>
     if parts.is_empty() {
         return None;
     }
+    let what = if transform { "transform" } else { "rotation" };
     let text = format!(
-        "{name} of a symbolic rotation: the closed form on the branch {}",
+        "{name} of a symbolic {what}: the closed form on the branch {}",
         parts.join(" and ")
     );
     Some(Diagnostic::note(ErrorKind::Domain, span, text))

@@ -274,7 +274,10 @@ impl Interp<'_> {
             self.rule_failure(e, op_span, Some(lhs.span), Some(rhs.span), Some(op_span))?;
         }
         let verdict = match (l.val.as_deref(), r.val.as_deref()) {
-            (Some(a), Some(b)) => match equal(a, b, op) {
+            (Some(a), Some(b)) => match self
+                .lowered_equal(a, b, op, op_span)
+                .unwrap_or_else(|| equal(a, b, op))
+            {
                 Ok(Some(false)) if op == CmpOp::Eq && rounding_only(a, b) => {
                     self.warnings.push(rounding_note(op_span));
                     Some(false)

@@ -170,6 +170,9 @@ pub struct Env {
     /// The numbers the bindings hold ([`numbers`]), for the run's memory
     /// budget ([`crate::budget`]).
     held: u64,
+    /// The `given` axes already said to be assumed unit vectors (the note
+    /// of `super::lower`, once a session).
+    pub(super) units_noted: Vec<String>,
 }
 
 /// The numbers a value holds, as the memory budget counts them

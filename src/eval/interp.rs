@@ -199,6 +199,7 @@ impl<'a> Interp<'a> {
                 }
                 let mut o = out(Names::Many(Vec::new()), t);
                 o.labels = self.part_labels(e);
+                self.shown(&mut o.val, s.span);
                 Ok(o)
             }
             StmtKind::Assign { target, value } => {
@@ -207,7 +208,9 @@ impl<'a> Interp<'a> {
                 crate::check::rules::settle_in_place(&mut t.ty);
                 self.bind_checked(target.name, &mut t, target.span, value.span)?;
                 self.bind_value(target.name, &t);
-                Ok(out(Names::One([target.name]), t))
+                let mut o = out(Names::One([target.name]), t);
+                self.shown(&mut o.val, s.span);
+                Ok(o)
             }
             StmtKind::Destructure { targets, value } => {
                 let t = self.expr(value)?;

@@ -12,6 +12,7 @@ mod expr;
 pub mod graph;
 pub mod interp;
 pub mod list;
+mod lower;
 mod naming;
 mod notation;
 mod order;

@@ -1,6 +1,7 @@
-//! Closed forms of the inverse maps of a symbolic rotation (LANGUAGE.md
-//! §7, §8): atan2(k sin θ, k cos θ) = θ, the logarithm of Rot(ω̂, θ) (3.51
-//! read backwards, §3.2.3.3) and the Euler angles of Appendix B. Each
+//! Closed forms of the inverse maps of a symbolic rotation or transform
+//! (LANGUAGE.md §7, §8): atan2(k sin θ, k cos θ) = θ, the logarithm of
+//! Rot(ω̂, θ) (3.51 read backwards, §3.2.3.3), the logarithm of a transform
+//! (§3.3.3.2, with G⁻¹(θ) of 3.94) and the Euler angles of Appendix B. Each
 //! holds on one branch only — k > 0, θ ∈ (−π, π) — and returns the
 //! assumption with the value, so that the caller can say which branch was
 //! taken. Where no such form is found, the caller keeps its general form.
@@ -154,9 +155,13 @@ pub fn axis_angle(r: &Mat) -> Option<(Vec<Expr>, Expr)> {
             continue;
         }
         let s = Expr::sin(&theta);
+        // a numeric axis, or the unit components of a `given` one
         let axis: Option<Vec<Expr>> = u
             .iter()
-            .map(|x| x.div_exact(&s).filter(|q| q.as_const().is_some()))
+            .map(|x| {
+                x.div_exact(&s)
+                    .filter(|q| q.as_const().is_some() || unit_part(q, &theta))
+            })
             .collect();
         let Some(axis) = axis else { continue };
         let n2 = axis.iter().fold(Expr::zero(), |acc, a| acc.add(&a.mul(a)));
@@ -167,6 +172,20 @@ pub fn axis_angle(r: &Mat) -> Option<(Vec<Expr>, Expr)> {
     None
 }
 
+/// True for an expression in the unit components of `given` axes only,
+/// free of θ (no angle, no other symbol).
+fn unit_part(q: &Expr, theta: &Expr) -> bool {
+    let mut syms = Vec::new();
+    q.symbols(&mut syms);
+    !syms.is_empty()
+        && syms.iter().all(|s| s.unit)
+        && !has_angle(q, theta)
+        && q.terms
+            .keys()
+            .flatten()
+            .all(|(v, _)| matches!(v, Var::Sym(_)))
+}
+
 /// log R = [ω̂]θ for R = Rot(ω̂, θ), θ assumed in (−π, π).
 pub fn log3(r: &Mat) -> Option<(Mat, Branch)> {
     let (axis, theta) = axis_angle(r)?;
@@ -174,6 +193,72 @@ pub fn log3(r: &Mat) -> Option<(Mat, Branch)> {
     b.assume_angle(&theta);
     let w: Vec<Expr> = axis.iter().map(|a| a.mul(&theta)).collect();
     Some((skew(&w), b))
+}
+
+/// log T = \[S\]θ for T = \[R, p; 0, 1\] (§3.3.3.2): for R = I, \[0, p; 0, 0\]
+/// (case (i), no branch); for R = Rot(ω̂, θ) with a numeric ω̂ (case
+/// (iii)), \[ω̂\]θ and vθ = θ G⁻¹(θ) p = p − (θ/2)\[ω̂\]p + (1 − (θ/2)
+/// cot(θ/2))\[ω̂\]²p (3.94), cot(θ/2) = sin θ/(1 − cos θ), checked
+/// exactly by G(θ)(vθ) = θ p (3.93). θ is assumed in (−π, π), and
+/// 1 − cos θ > 0 where a quotient by it is left.
+pub fn log6(t: &Mat) -> Option<(Mat, Branch)> {
+    let mut last = Mat::zeros(1, 4);
+    last.set(0, 3, Expr::one());
+    if (t.rows, t.cols) != (4, 4) || t.block(3..4, 0..4) != last {
+        return None;
+    }
+    let (r, p) = (t.block(0..3, 0..3), t.block(0..3, 3..4));
+    let mut out = Mat::zeros(4, 4);
+    if r == Mat::identity(3) {
+        out.put(0, 3, &p);
+        return Some((out, Branch::default()));
+    }
+    let (axis, theta) = axis_angle(&r)?;
+    let w = skew(&axis);
+    let (wp, w2p) = (w.mul(&p)?, w.mul(&w.mul(&p)?)?);
+    let half = Coef::rat(super::coef::Rat::new(1, 2)?);
+    let h = theta.scale(&half);
+    let (s, c) = (Expr::sin(&theta), Expr::cos(&theta));
+    let one_c = Expr::one().sub(&c);
+    let cot_half = s.mul(&one_c.recip()?);
+    let k = Expr::one().sub(&h.mul(&cot_half));
+    let vt: Vec<Expr> = (0..3)
+        .map(|i| {
+            p.data[i]
+                .sub(&h.mul(&wp.data[i]))
+                .add(&k.mul(&w2p.data[i]))
+                .cancel()
+        })
+        .collect();
+    // G(θ)(vθ) = θ p, exactly
+    let w2 = w.mul(&w)?;
+    let mut g = Mat::identity(3).scale(&theta);
+    for i in 0..9 {
+        g.data[i] = g.data[i]
+            .add(&w.data[i].mul(&one_c))
+            .add(&w2.data[i].mul(&theta.sub(&s)));
+    }
+    let back = g.mul(&Mat::column(vt.clone()))?;
+    if back
+        .data
+        .iter()
+        .zip(&p.data)
+        .any(|(b, x)| b.cancel() != x.mul(&theta))
+    {
+        return None;
+    }
+    let mut b = Branch::default();
+    if vt.iter().any(Expr::has_recip) {
+        b.assume_positive(&one_c);
+    }
+    b.assume_angle(&theta);
+    out.put(
+        0,
+        0,
+        &skew(&axis.iter().map(|a| a.mul(&theta)).collect::<Vec<_>>()),
+    );
+    out.put(0, 3, &Mat::column(vt));
+    Some((out, b))
 }
 
 /// The unit quaternion (cos θ/2, ω̂ sin θ/2) of R = Rot(ω̂, θ) (Appendix

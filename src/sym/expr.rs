@@ -17,12 +17,17 @@ use num_traits::{One, Zero};
 
 /// A real symbol: a `given` name, possibly a function of time (`given
 /// theta(t) : scalar`: `time` names its variable t), differentiated `dots`
-/// times (θ̇ has one). The time variable t itself is a plain symbol.
+/// times (θ̇ has one). The time variable t itself is a plain symbol. A
+/// component of a `given` vector, `w[2]`, has its 1-based `index`; `unit`
+/// marks ω̂₁, ω̂₂, ω̂₃ of an axis assumed to be a unit vector, where
+/// ω̂₁² + ω̂₂² + ω̂₃² = 1 holds ([`super::axis`]).
 #[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub struct Symbol {
     pub name: Arc<str>,
     pub time: Option<Arc<str>>,
     pub dots: u8,
+    pub index: u8,
+    pub unit: bool,
 }
 
 impl Symbol {
@@ -32,6 +37,8 @@ impl Symbol {
             name: name.into(),
             time: None,
             dots: 0,
+            index: 0,
+            unit: false,
         }
     }
     /// A function of time, θ(t), of the variable `t`.
@@ -351,7 +358,7 @@ impl Expr {
                 out.push(mono_mul(a, b), c.mul(d));
             }
         }
-        out.fold_roots()
+        out.fold_roots().fold_units()
     }
 
     /// √x · √x = x: a square root's even powers become powers of x.

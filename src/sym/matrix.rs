@@ -314,8 +314,12 @@ pub fn exp3(m: &Mat) -> Option<Mat> {
     if w.iter().all(Expr::is_zero) {
         return Some(Mat::identity(3));
     }
-    let (ks, theta) = common_factor(&w)?;
-    let (axis, angle, _) = axis_angle(&ks, &theta)?;
+    if let Some((ks, theta)) = common_factor(&w) {
+        let (axis, angle, _) = axis_angle(&ks, &theta)?;
+        return Some(rodrigues(&axis, &angle));
+    }
+    // [ω̂]θ with ω̂ a `given` vector, assumed a unit axis
+    let (axis, angle) = super::axis::symbolic_axis(&w)?;
     Some(rodrigues(&axis, &angle))
 }
 
@@ -333,7 +337,9 @@ pub fn exp6(m: &Mat) -> Option<Mat> {
     }
     // ω = ω̂‖ω‖ with a numeric axis; v = v̂ ‖ω‖θ, v̂ found by dividing by
     // θ exactly (`L1 θ2 / θ2 = L1`, also for a compound θ).
-    let (ks, theta) = common_factor(&entries[..3])?;
+    let Some((ks, theta)) = common_factor(&entries[..3]) else {
+        return exp6_symbolic(&entries);
+    };
     let (axis, angle, inv) = axis_angle(&ks, &theta)?;
     let v = match common_factor(&entries) {
         // v a numeric multiple of θ as well
@@ -354,16 +360,40 @@ pub fn exp6(m: &Mat) -> Option<Mat> {
             v
         }
     };
-    let w = skew(&axis);
+    screw_exp(&axis, &angle, v)
+}
+
+/// (3.89) for a unit axis ω̂, an angle θ and v: \[e^{\[ω̂\]θ}, G(θ)v; 0, 1\].
+fn screw_exp(axis: &[Expr], angle: &Expr, v: Vec<Expr>) -> Option<Mat> {
+    let w = skew(axis);
     let w2 = w.mul(&w)?;
-    let c = Expr::one().sub(&Expr::cos(&angle));
-    let s = angle.sub(&Expr::sin(&angle));
-    let mut g = Mat::identity(3).scale(&angle);
+    let c = Expr::one().sub(&Expr::cos(angle));
+    let s = angle.sub(&Expr::sin(angle));
+    let mut g = Mat::identity(3).scale(angle);
     for i in 0..9 {
         g.data[i] = g.data[i].add(&w.data[i].mul(&c)).add(&w2.data[i].mul(&s));
     }
     let p = g.mul(&Mat::column(v))?;
-    Some(rp_to_trans(&rodrigues(&axis, &angle), &p))
+    Some(rp_to_trans(&rodrigues(axis, angle), &p))
+}
+
+/// e^{\[S\]θ} for S = (ω, v) whose ω is a `given` vector's components,
+/// assumed a unit axis (Proposition 3.16 with ‖ω‖ = 1): v = (\[S\]θ's
+/// linear part)/θ exactly.
+fn exp6_symbolic(entries: &[Expr]) -> Option<Mat> {
+    let (axis, angle) = super::axis::symbolic_axis(&entries[..3])?;
+    let mut names = Vec::new();
+    axis.iter().for_each(|a| a.unit_axes(&mut names));
+    let mut v = Vec::with_capacity(3);
+    for e in &entries[3..] {
+        let e = e.assume_unit(&names);
+        let x = e.div_exact(&angle)?;
+        if x.mul(&angle) != e {
+            return None;
+        }
+        v.push(x);
+    }
+    screw_exp(&axis, &angle, v)
 }
 
 /// [R, p; 0, 1].

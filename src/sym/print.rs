@@ -173,6 +173,9 @@ fn split_name(name: &str) -> (&str, &str) {
 /// A symbol's name: as typed; a time derivative θ̇ with the Greek letter
 /// and a dot (two dots for θ̈, primes beyond).
 pub fn symbol(s: &Symbol, st: Style) -> String {
+    if s.index > 0 {
+        return component(s, st);
+    }
     // an angle's offset, `π/4`, `5π/12` (see `trig::fold_offsets`; no
     // name the user can declare holds a `/`)
     if let Some((p, q)) = s.name.split_once("π/") {
@@ -223,6 +226,24 @@ pub fn symbol(s: &Symbol, st: Style) -> String {
     let mark = if s.dots == 1 { '\u{307}' } else { '\u{308}' };
     let tail = &s.name[base.len()..];
     format!("{first}{mark}{rest}{tail}")
+}
+
+/// A component of a `given` vector as it is indexed, `w[2]` (LaTeX
+/// `w_{2}`, `\left(w_b\right)_{2}`).
+fn component(s: &Symbol, st: Style) -> String {
+    let base = symbol(
+        &Symbol {
+            index: 0,
+            unit: false,
+            ..s.clone()
+        },
+        st,
+    );
+    match st.mode {
+        Mode::Latex if base.contains('_') => format!("\\left({base}\\right)_{{{}}}", s.index),
+        Mode::Latex => format!("{base}_{{{}}}", s.index),
+        _ => format!("{base}[{}]", s.index),
+    }
 }
 
 /// `f(k·θ)^p` for f one of sin, cos, tan, cot (the book's shorthand

@@ -425,6 +425,10 @@ pub fn classify(m: &Mat) -> Kind {
 
 /// The name a symbol is bound under: `theta`, `theta'` for θ̇.
 pub fn binding_name(s: &Symbol) -> String {
+    if s.index > 0 {
+        // a vector's component has no binding of its own
+        return format!("{}[{}]", s.name, s.index);
+    }
     format!("{}{}", s.name, "'".repeat(s.dots as usize))
 }
 

@@ -240,11 +240,37 @@ impl<C: Clone + PartialEq> Tree<C> {
     }
 
     fn needs_parens_in_product(&self) -> bool {
-        matches!(
-            self,
-            Tree::Add(..) | Tree::Sub(..) | Tree::Neg(_) | Tree::Div(..)
-        )
+        match self {
+            // a symbolic sum among the factors, `exp([S] (t1 + t2)) T_sb`
+            Tree::Const(_, text) => {
+                !wrapped(text) && (text.contains(" + ") || text.contains(" - "))
+            }
+            _ => matches!(
+                self,
+                Tree::Add(..) | Tree::Sub(..) | Tree::Neg(_) | Tree::Div(..)
+            ),
+        }
     }
+}
+
+/// True when the text is one bracket, `(…)` or `[…]`, from its first
+/// character to its last.
+fn wrapped(text: &str) -> bool {
+    let mut depth = 0usize;
+    for (i, c) in text.char_indices() {
+        match c {
+            '(' | '[' => depth += 1,
+            ')' | ']' => {
+                depth = depth.saturating_sub(1);
+                if depth == 0 {
+                    return i + c.len_utf8() == text.len();
+                }
+            }
+            _ if depth == 0 => return false,
+            _ => {}
+        }
+    }
+    false
 }
 
 impl<C: Clone + PartialEq> fmt::Display for Tree<C> {

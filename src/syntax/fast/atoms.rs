@@ -18,6 +18,9 @@ fn is_bare_fn(word: &[u8]) -> bool {
             | [b's', b'i', b'n']
             | [b'c', b'o', b's']
             | [b't', b'a', b'n']
+            | [b'c', b'o', b't']
+            | [b's', b'e', b'c']
+            | [b'c', b's', b'c']
             | [b's', b'q', b'r', b't']
     )
 }

@@ -118,6 +118,7 @@ fn fast_path_agrees_with_pest() {
         "T_sb T_bc + Ad(T_sb) V_b + sin(θ) W",
         "I + sin θ [w] + (1 - cos θ)[w]^2",
         "cos 30° + sqrt 2 + tan pi + asin x deg + acos θ_1'",
+        "cot t + sec θ [w] + csc 30° + cot(x) + sec_1 + csc'",
         "ans / deg",
         "I + sin θ [w] + (1 − cos θ)[w]² − −x + [1 −2 3] − [1 − x]",
         "T_01 * T_12 * T_s1",
@@ -134,8 +135,8 @@ const TOKENS: &[&str] = &[
     "2.5", ".5", "1e", "1e-3", "T_ab", "x", "θ", "=", "==", ":", "true", "false", "given",
     "derive", "mech", "assert", "~=", "≈", "<", ">", "\n", " ", "\t", "_{", "}", "f(", "**", ".T",
     "_", // The book's notation.
-    "ᵀ", "^T", "^{", "sin", "cos ", "sqrt", "e^", "0.", "1.e", "-1.", "[[", "]]", "I", "T_01", "²",
-    "−", " −", "⁻¹", "⁻", // Issue 22's forms.
+    "ᵀ", "^T", "^{", "sin", "cos ", "sqrt", "cot", "sec ", "csc", "e^", "0.", "1.e", "-1.", "[[",
+    "]]", "I", "T_01", "²", "−", " −", "⁻¹", "⁻", // Issue 22's forms.
     "√", "·", "ŵ·", "×", "<=", ">=", "≤", "≥", "end", "for", "in", "^T (", "R (", "links",
     "joints", "legs", "sliding", "6 ",
 ];
