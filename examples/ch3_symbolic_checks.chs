@@ -101,3 +101,19 @@ dq                                            # at t = 2
 t1 = 0.3
 L1 = 1
 E
+
+# --- numbers bound later are computed as typed, not from the expanded form --------
+# (sin a + cos b)^30 expands into exact coefficients up to 1e16 that cancel:
+# evaluated in floats at a = 0.3, b = -1.1 they gave 0.000172299068; the
+# value is 0.000172376436. Bound later, the value replays the operations as
+# written, exactly as if the numbers had been typed first.
+given pa, pb : scalar
+y30 = (sin pa + cos pb)^30
+cy = cos(pa)
+dy = cy^2 + 1                                 # a chain: dy is replayed through cy
+pa = 0.3
+pb = -1.1
+y30                                           # 0.0002 (0.000172376436 at 12 digits)
+assert y30 == (sin(0.3) + cos(-1.1))^30
+assert abs(y30 - 0.000172376436) < 1e-12
+assert dy == cos(0.3)^2 + 1

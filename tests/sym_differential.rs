@@ -2,7 +2,8 @@
 //! fixed regressions for the wrong answers found so far, and a
 //! differential test — random expressions over the engine's operations,
 //! written as chasles source, evaluated by the language and by an
-//! independent numeric evaluation of the same tree.
+//! independent numeric evaluation of the same tree (and, bound later,
+//! near machine precision: as if the numbers had been typed first).
 
 use chasles::eval::env::Mode;
 use chasles::eval::value::Value;
@@ -302,6 +303,80 @@ impl T {
         }
     }
 
+    /// The value and a bound on the rounding error of evaluating the tree
+    /// as written (each operation rounded once, errors carried to first
+    /// order by the derivatives), in units of the machine epsilon: how far
+    /// the same statements with the numbers typed first may be from the
+    /// true value, so how far numbers bound later may be from them. (Not
+    /// [`T::eval`]'s estimate, which allows for an expanded form's terms.)
+    fn direct(&self, at: &At) -> (f64, f64) {
+        let un = |x: &T, f: &dyn Fn(f64) -> f64, df: &dyn Fn(f64) -> f64| {
+            let (v, e) = x.direct(at);
+            let y = f(v);
+            (y, y.abs() + e * df(v).abs())
+        };
+        match self {
+            T::Sym(_) | T::Time | T::Q(..) | T::Int(_) => (self.eval(at).0, 0.0),
+            T::Dec(..) | T::Pi => {
+                let v = self.eval(at).0;
+                (v, v.abs())
+            }
+            T::Neg(x) => {
+                let (v, e) = x.direct(at);
+                (-v, e)
+            }
+            T::Add(x, y) | T::Sub(x, y) => {
+                let ((a, ea), (b, eb)) = (x.direct(at), y.direct(at));
+                let v = if matches!(self, T::Add(..)) {
+                    a + b
+                } else {
+                    a - b
+                };
+                (v, ea + eb + v.abs())
+            }
+            T::Mul(x, y) => {
+                let ((a, ea), (b, eb)) = (x.direct(at), y.direct(at));
+                let v = a * b;
+                (v, ea * b.abs() + eb * a.abs() + v.abs())
+            }
+            T::Div(x, y) => {
+                let ((a, ea), (b, eb)) = (x.direct(at), y.direct(at));
+                let v = a / b;
+                (v, (ea + v.abs() * eb) / b.abs() + v.abs())
+            }
+            T::Recip(x) => un(x, &|v| 1.0 / v, &|v| 1.0 / (v * v)),
+            T::Pow(x, n) => {
+                let (v, e) = x.direct(at);
+                let y = v.powi(*n);
+                let k = f64::from(n.abs());
+                // each of the ~2 log2|n| products rounds once
+                (
+                    y,
+                    k * (y / v).abs() * e + (1.0 + 2.0 * k.log2().max(1.0)) * y.abs(),
+                )
+            }
+            T::Sqrt(x) => un(x, &f64::sqrt, &|v| 0.5 / v.sqrt()),
+            T::Angle(sin, k, (p, d), off) => {
+                let (arg, _) = self.angle_arg(*k, *p, *d, *off, at);
+                let v = if *sin { arg.sin() } else { arg.cos() };
+                // the argument is a sum of rounded terms
+                (v, 1.0 + 4.0 * arg.abs())
+            }
+            T::Sin(x) => un(x, &f64::sin, &f64::cos),
+            T::Cos(x) => un(x, &f64::cos, &f64::sin),
+            T::Tan(x) => un(x, &f64::tan, &|v| 1.0 + v.tan().powi(2)),
+            T::Asin(x) => un(x, &f64::asin, &|v| 1.0 / (1.0 - v * v).sqrt()),
+            T::Acos(x) => un(x, &f64::acos, &|v| 1.0 / (1.0 - v * v).sqrt()),
+            T::Atan(x) => un(x, &f64::atan, &|v| 1.0 / (1.0 + v * v)),
+            T::Atan2(y, x) => {
+                let ((b, eb), (a, ea)) = (y.direct(at), x.direct(at));
+                let v = b.atan2(a);
+                (v, v.abs() + (ea + eb) / (a * a + b * b).sqrt())
+            }
+            T::Diff(..) => (f64::NAN, f64::INFINITY),
+        }
+    }
+
     fn angle_arg(&self, k: [i8; 4], p: i8, d: u8, off: Option<(i64, u32)>, at: &At) -> (f64, ()) {
         let vars = [at.syms[0], at.syms[1], at.t, at.q[0][0]];
         let mut arg = PI * f64::from(p) / f64::from(d);
@@ -447,6 +522,23 @@ const RECIPROCALS: bool = true;
 /// The generator (see the families left out above).
 fn expr() -> impl Strategy<Value = T> {
     let offset = prop::option::of((-300..300i64, 1..4u32));
+    let angle = (
+        any::<bool>(),
+        prop::array::uniform4(-2..3i8),
+        (-12..13i8, 1..13u8),
+        offset.clone(),
+    )
+        .prop_map(|(s, k, pd, off)| T::Angle(s, k, pd, off));
+    // `(sin a + cos b)^30`: a high power of a sum, whose expanded form has
+    // coefficients that cancel (1e16 and more) where the sum is small
+    let power = (
+        prop_oneof![angle.clone(), (0..3usize).prop_map(T::Sym)],
+        angle.clone(),
+        // (mostly up to 16, which shows the cancellation as well, and is
+        // cheaper to expand than 30)
+        prop_oneof![4 => 8..17i32, 1 => 17..31i32],
+    )
+        .prop_map(|(x, y, n)| T::Pow(b(T::Add(b(x), b(y))), n));
     let leaf = prop_oneof![
         (0..3usize).prop_map(T::Sym),
         Just(T::Time),
@@ -454,13 +546,7 @@ fn expr() -> impl Strategy<Value = T> {
         (-3..4i64).prop_map(T::Int),
         (-999..1000i64, 1..4u32).prop_map(|(m, k)| T::Dec(m, k)),
         Just(T::Pi),
-        (
-            any::<bool>(),
-            prop::array::uniform4(-2..3i8),
-            (-12..13i8, 1..13u8),
-            offset
-        )
-            .prop_map(|(s, k, pd, off)| T::Angle(s, k, pd, off)),
+        angle,
     ];
     let tree = leaf.prop_recursive(3, 16, 2, |inner| {
         prop_oneof![
@@ -492,9 +578,11 @@ fn expr() -> impl Strategy<Value = T> {
         (0..2usize, 0..2u8).prop_map(|(i, d)| By::Q(i, d)),
     ];
     prop_oneof![
-        3 => tree.clone(),
-        1 => (tree.clone(), by.clone()).prop_map(|(x, by)| T::Diff(b(x), by)),
-        1 => (tree.clone(), tree, by).prop_map(|(x, y, by)| T::Mul(b(x), b(T::Diff(b(y), by)))),
+        24 => tree.clone(),
+        8 => (tree.clone(), by.clone()).prop_map(|(x, by)| T::Diff(b(x), by)),
+        7 => (tree.clone(), tree.clone(), by).prop_map(|(x, y, by)| T::Mul(b(x), b(T::Diff(b(y), by)))),
+        1 => power.clone(),
+        1 => (power, tree).prop_map(|(p, x)| T::Mul(b(p), b(x))),
     ]
 }
 
@@ -533,10 +621,22 @@ struct Tally {
 }
 
 /// Checks one expression at one point; Err describes a wrong answer.
+/// Without a derivative, the value bound later must be within 16 ε times
+/// [`T::direct`]'s rounding bound of the tree's direct value (and of the
+/// value with the numbers typed first): near machine precision, so an
+/// expanded form evaluated in floats (whose coefficients cancel) fails
+/// it. A derivative is checked against finite differences, looser.
 fn check(e: &T, p: &Point, tally: &mut Tally) -> Result<(), String> {
     let at = p.at(p.t);
     let (want, err) = e.eval(&at);
-    if at.ill.get() || !want.is_finite() || !err.is_finite() || want.abs() > 1e8 || err > 1e12 {
+    // Without a derivative, the value is compared near machine precision:
+    // within a few times the rounding of the statements typed first.
+    let tight = (!e.has_diff()).then(|| 16.0 * f64::EPSILON * e.direct(&at).1);
+    let meaningless = match tight {
+        Some(tol) => !tol.is_finite() || tol > 1e-6 * want.abs().max(1.0),
+        None => !err.is_finite() || want.abs() > 1e8 || err > 1e12,
+    };
+    if at.ill.get() || !want.is_finite() || meaningless {
         tally.skipped += 1;
         return Ok(());
     }
@@ -558,11 +658,7 @@ fn check(e: &T, p: &Point, tally: &mut Tally) -> Result<(), String> {
             s.env.get("y").and_then(|b| b.val.clone())
         )
     })?;
-    let tol = if e.has_diff() {
-        1e-5 * err.max(1.0)
-    } else {
-        1e-9 * err.max(want.abs())
-    };
+    let tol = tight.unwrap_or(1e-5 * err.max(1.0));
     if !((got - want).abs() <= tol || (got.is_nan() && want.is_nan())) {
         return Err(format!(
             "bound later: {got} but {want} (tolerance {tol:e})\n{later}"
@@ -574,7 +670,9 @@ fn check(e: &T, p: &Point, tally: &mut Tally) -> Result<(), String> {
         if n == 0 {
             let typed = number(&s, "x")
                 .ok_or_else(|| format!("numbers first give no number\n{first}{msg}"))?;
-            if (typed - got).abs() > 1e-9 * err.max(typed.abs()).max(1e-300) {
+            // both within the rounding of the direct evaluation of the
+            // value; identical where no exact simplification intervenes
+            if (typed - got).abs() > 2.0 * tol {
                 return Err(format!(
                     "numbers first {typed}, bound later {got}\n{first}\n{later}"
                 ));

@@ -27,8 +27,9 @@ enum E {
     Sub(Box<E>, Box<E>),
     Mul(Box<E>, Box<E>),
     Pow(Box<E>, u8),
-    /// sin or cos of an integer combination of the variables plus k·π/4.
-    Trig(bool, [i8; 3], u8),
+    /// sin or cos of an integer combination of the variables plus q·π/d
+    /// plus a decimal offset in tenths (π/5, 0.3: phase variables).
+    Trig(bool, [i8; 3], u8, u8, i8),
     SqrtOf(u8),
 }
 
@@ -46,8 +47,12 @@ impl E {
             E::Sub(x, y) => x.build().sub(&y.build()),
             E::Mul(x, y) => x.build().mul(&y.build()),
             E::Pow(x, n) => x.build().powi(i64::from(*n)).unwrap(),
-            E::Trig(sin, k, q) => {
-                let mut arg = Expr::pi().scale(&Coef::rat(Rat::new(i128::from(*q), 4).unwrap()));
+            E::Trig(sin, k, q, d, tenths) => {
+                let mut arg = Expr::pi()
+                    .scale(&Coef::rat(
+                        Rat::new(i128::from(*q), i128::from(*d)).unwrap(),
+                    ))
+                    .add(&Expr::typed(f64::from(*tenths) / 10.0));
                 for (i, c) in k.iter().enumerate() {
                     let v = Expr::symbol(Symbol::new(NAMES[i]));
                     arg = arg.add(&v.scale(&Coef::int(i64::from(*c))));
@@ -72,8 +77,9 @@ impl E {
             E::Sub(x, y) => x.eval(at) - y.eval(at),
             E::Mul(x, y) => x.eval(at) * y.eval(at),
             E::Pow(x, n) => x.eval(at).powi(i32::from(*n)),
-            E::Trig(sin, k, q) => {
-                let arg: f64 = std::f64::consts::PI * f64::from(*q) / 4.0
+            E::Trig(sin, k, q, d, tenths) => {
+                let arg: f64 = std::f64::consts::PI * f64::from(*q) / f64::from(*d)
+                    + f64::from(*tenths) / 10.0
                     + k.iter()
                         .zip(at)
                         .map(|(c, x)| f64::from(*c) * x)
@@ -113,14 +119,17 @@ impl E {
             E::Sub(x, y) => format!("({} - {})", x.source(), y.source()),
             E::Mul(x, y) => format!("({} * {})", x.source(), y.source()),
             E::Pow(x, n) => format!("({})^{n}", x.source()),
-            E::Trig(sin, k, q) => {
+            E::Trig(sin, k, q, d, tenths) => {
                 let arg: Vec<String> = k
                     .iter()
                     .zip(NAMES)
                     .map(|(c, n)| format!("({c}) * {n}"))
                     .collect();
                 let f = if *sin { "sin" } else { "cos" };
-                format!("{f}({} + {q} * pi / 4)", arg.join(" + "))
+                format!(
+                    "{f}({} + {q} * pi / {d} + ({tenths}) / 10)",
+                    arg.join(" + ")
+                )
             }
             E::SqrtOf(n) => format!("sqrt({n})"),
         }
@@ -134,8 +143,14 @@ fn expr() -> impl Strategy<Value = E> {
         Just(E::Half),
         Just(E::Sqrt2),
         Just(E::Pi),
-        (any::<bool>(), prop::array::uniform3(-2..3i8), 0..8u8)
-            .prop_map(|(s, k, q)| E::Trig(s, k, q)),
+        (
+            any::<bool>(),
+            prop::array::uniform3(-2..3i8),
+            0..8u8,
+            prop::sample::select(vec![4u8, 4, 5, 7, 9]),
+            prop::sample::select(vec![0i8, 0, 0, 3, -7])
+        )
+            .prop_map(|(s, k, q, d, x)| E::Trig(s, k, q, d, x)),
         (0..13u8).prop_map(E::SqrtOf),
     ];
     leaf.prop_recursive(4, 24, 2, |inner| {
@@ -227,6 +242,30 @@ proptest! {
         prop_assert_eq!(
             Expr::cos(&a.scale(&Coef::int(3))),
             c.powi(3).unwrap().scale(&Coef::int(4)).sub(&c.scale(&Coef::int(3)))
+        );
+        // offsets that are no multiple of π/12 fold as angles do
+        let off = |q: i128, d: i128, x: f64| {
+            Expr::pi()
+                .scale(&Coef::rat(Rat::new(q, d).unwrap()))
+                .add(&Expr::typed(x))
+        };
+        let a5 = a.add(&off(k as i128, 5, 0.3));
+        prop_assert_eq!(sq(Expr::sin(&a5)).add(&sq(Expr::cos(&a5))), Expr::one());
+        prop_assert_eq!(
+            Expr::cos(&a5.add(&b)),
+            Expr::cos(&a5).mul(&Expr::cos(&b)).sub(&Expr::sin(&a5).mul(&Expr::sin(&b)))
+        );
+        // π/5 + π/12 = 17π/60: the exact part and the phase split alike
+        let (a17, a12) = (a.add(&off(17, 60, 0.0)), off(1, 12, 0.0));
+        let a5 = a.add(&off(1, 5, 0.0));
+        prop_assert_eq!(
+            Expr::sin(&a17),
+            Expr::sin(&a5).mul(&Expr::cos(&a12)).add(&Expr::cos(&a5).mul(&Expr::sin(&a12)))
+        );
+        // 10 (π/5) is a whole turn
+        prop_assert_eq!(
+            Expr::cos(&a5.scale(&Coef::int(10))),
+            Expr::cos(&a.scale(&Coef::int(10)))
         );
         let _ = p;
     }

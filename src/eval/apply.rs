@@ -27,6 +27,7 @@ use crate::check::rules::{self, Operands, RuleError};
 use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind, Severity};
 use crate::syntax::ast::{BinOp, Span};
+use crate::values::recipe::{self, Made, Step};
 
 /// One operation of the language: what a node of an expression does with
 /// the values of its children.
@@ -282,6 +283,30 @@ impl<'a> Op<'a> {
         }
     }
 
+    /// What replaying this operation with numbers does (LANGUAGE.md §7,
+    /// [`recipe`]): its own step, for every operation whose numeric
+    /// function computes what its exact form does; `diff` and `subs` read
+    /// their operands' symbols (their results are leaves, or for `diff` of
+    /// a scalar the chain rule's steps, `super::chain`), `simplify` and
+    /// `expand` give their operand's value.
+    fn made(self) -> Made {
+        Made::Step(match self {
+            Op::Neg => Step::Neg,
+            Op::Degrees => Step::Degrees,
+            Op::Arith(op) => Step::Arith(op),
+            Op::Transpose => Step::Transpose,
+            Op::Member(part) => Step::Member(part),
+            Op::Index(sels) => Step::Index(sels.to_vec()),
+            Op::Block(widths) => Step::Block(widths.to_vec()),
+            Op::Vector => Step::Vector,
+            Op::Call(b, _) if matches!(b.name, "diff" | "subs") => return Made::Opaque,
+            Op::Call(b, _) if matches!(b.name, "simplify" | "expand") => return Made::Same,
+            Op::Call(b, name) => Step::Call(b.names().find(|n| *n == name).unwrap_or(b.name)),
+            // (no exact form makes an inverse: `inv` is a call)
+            Op::Inverse => return Made::Opaque,
+        })
+    }
+
     /// Whether a formula operand, with no `given` symbol, makes the result
     /// symbolic when the exact path gives none (arithmetic and vectors of
     /// formulas have always an exact form or none at all).
@@ -322,7 +347,16 @@ impl<'a> Op<'a> {
         if formula::applies(args)
             && let Some(v) = self.formula(args, kind)
         {
-            return Some(v.map_err(OpError::Message));
+            // how it was made, to be replayed with numbers (§7)
+            return Some(
+                v.map(|v| match (self, args) {
+                    (Op::Call(b, _), [x, by]) if b.name == "diff" => {
+                        recipe::attach(v, super::chain::derivative(x, by))
+                    }
+                    _ => recipe::record(v, self.made(), args, kind),
+                })
+                .map_err(OpError::Message),
+            );
         }
         let formulas = self.formula_is_symbolic();
         args.iter()
@@ -340,7 +374,14 @@ impl<'a> Op<'a> {
 pub fn block(rows: &[Vec<Value>]) -> Option<Result<Value, OpError>> {
     let refs: Vec<&Value> = rows.iter().flatten().collect();
     if formula::applies(&refs) {
-        return Some(formula::brackets(rows).map_err(OpError::Message));
+        return Some(
+            formula::brackets(rows)
+                .map(|v| {
+                    let widths: Vec<usize> = rows.iter().map(Vec::len).collect();
+                    recipe::record(v, Op::Block(&widths).made(), &refs, &Kind::Unknown)
+                })
+                .map_err(OpError::Message),
+        );
     }
     refs.iter()
         .any(|v| v.is_symbolic() || matches!(v, Value::Formula { .. }))

@@ -124,7 +124,7 @@ impl Interp<'_> {
             })?;
             let v = match (&v, s.inverted) {
                 (Value::Sym(x), true) => Value::Sym(x.clone().inverse()),
-                (Value::Formula { kind, m }, true) => super::formula::inverse(kind, m)
+                (Value::Formula { kind, m, .. }, true) => super::formula::inverse(kind, m)
                     .map(|m| super::formula::make(kind, m))
                     .ok_or_else(|| {
                         Diagnostic::error(ErrorKind::Domain, target.span, "no symbolic inverse")

@@ -138,6 +138,17 @@ pub struct Binding {
     pub val: Option<Value>,
     /// True for `given` symbols.
     pub symbolic: bool,
+    /// True for a list or tuple holding values made from symbols: reading
+    /// it puts the numbers bound since into its items (§7). [`Env::set`]
+    /// and [`Env::set_value`] decide it from the value (a list is looked
+    /// through once, when it is bound, not at every read).
+    pub derived: bool,
+}
+
+/// Whether a binding of `v` is [`Binding::derived`].
+#[inline]
+fn derived(v: Option<&Value>) -> bool {
+    matches!(v, Some(v @ (Value::List(_) | Value::Tuple(_))) if crate::values::recipe::holds_symbols(v))
 }
 
 /// The builtins called so far, by name (none where a name is no builtin).
@@ -206,7 +217,8 @@ impl Env {
         self.vars.get(&name.key())
     }
     #[inline]
-    pub fn set(&mut self, name: impl AsKey, b: Binding) {
+    pub fn set(&mut self, name: impl AsKey, mut b: Binding) {
+        b.derived = derived(b.val.as_ref());
         self.held += binding_numbers(&b);
         if let Some(old) = self.vars.insert(name.key(), b) {
             self.held = self.held.saturating_sub(binding_numbers(&old));
@@ -232,6 +244,7 @@ impl Env {
                     (o, v) => *o = v.cloned(),
                 }
                 old.symbolic = false;
+                old.derived = derived(val);
             }
             None => {
                 self.held += val.map_or(0, numbers);
@@ -239,6 +252,7 @@ impl Env {
                     ty: *ty,
                     val: val.cloned(),
                     symbolic: false,
+                    derived: derived(val),
                 };
                 self.vars.insert(key, b);
             }

@@ -71,6 +71,7 @@ impl Op<'_> {
                     Some(Value::Formula {
                         kind: v.kind(),
                         m: v.exact_form()?,
+                        how: None,
                     })
                 })
                 .collect::<Option<Vec<Value>>>()?;

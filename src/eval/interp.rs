@@ -279,6 +279,7 @@ impl<'a> Interp<'a> {
                             ty: Ty::new(kind, frames),
                             val: Some(val),
                             symbolic: true,
+                            derived: false,
                         },
                     );
                 }
@@ -507,6 +508,16 @@ impl<'a> Interp<'a> {
             Some(Value::Tuple(vs)) => vs.iter().cloned().map(Some).collect(),
             Some(Value::List(vs)) => vs.iter().cloned().map(Some).collect(),
             Some(Value::Num { m, .. }) => m.iter().map(|x| Some(Value::scalar(*x))).collect(),
+            // a symbolic vector's entries, each `v[i]` (so each remembers
+            // how it was made, §7)
+            Some(v @ Value::Formula { .. }) if t.ty.kind.is_vector() => (1..=n)
+                .map(|i| {
+                    let sel = [super::ops::Sel::At(i as f64)];
+                    super::apply::Op::Index(&sel)
+                        .apply(&[v], &Kind::Scalar)
+                        .ok()
+                })
+                .collect(),
             _ => vec![None; n],
         };
         Ok(kinds
@@ -543,6 +554,7 @@ impl Interp<'_> {
                     ty: Ty::scalar(),
                     val: Some(super::formula::scalar(time)),
                     symbolic: true,
+                    derived: false,
                 },
             );
         }

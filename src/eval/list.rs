@@ -344,6 +344,7 @@ impl Interp<'_> {
                     ty: *ty,
                     val: None,
                     symbolic: false,
+                    derived: false,
                 },
             );
         }
@@ -407,6 +408,7 @@ impl Interp<'_> {
                             ty,
                             val: Some(v),
                             symbolic: false,
+                            derived: false,
                         },
                     );
                 }

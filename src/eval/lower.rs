@@ -88,7 +88,7 @@ fn unit_axes(v: &Value) -> Vec<Arc<str>> {
 /// `v` with the axes `names` taken as unit vectors.
 fn assume(v: Value, names: &[Arc<str>]) -> Value {
     match v {
-        Value::Formula { kind, m } if !names.is_empty() => {
+        Value::Formula { kind, m, .. } if !names.is_empty() => {
             formula::make(&kind, m.map(|e| e.assume_unit(names)))
         }
         v => v,

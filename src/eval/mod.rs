@@ -3,6 +3,7 @@
 //! [`crate::check`]'s rules and computing values through [`crate::lie`].
 
 pub mod apply;
+mod chain;
 mod compare;
 mod compound;
 mod derive;
@@ -17,6 +18,7 @@ mod naming;
 mod notation;
 mod order;
 mod paren_product;
+mod replay;
 mod shapes;
 mod slice;
 mod substitute;

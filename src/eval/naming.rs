@@ -99,6 +99,7 @@ impl Interp<'_> {
                     ty,
                     val: Some(val),
                     symbolic: true,
+                    derived: false,
                 },
             );
         }

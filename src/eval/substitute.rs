@@ -2,46 +2,76 @@
 //! "binding numbers later makes them numeric"). `X = T_ab * T_bc` over
 //! `given` symbols keeps the expression `T_ab T_bc`; once `T_ab` and `T_bc`
 //! are bound to numbers, reading `X` substitutes them and evaluates what
-//! has become numeric, so `X` is then the product's value. Partly numeric
-//! expressions keep their symbols (`[1, 0, …] T_bc`). Types and frames are
-//! not recomputed: they were checked when the expression was built.
-
+//! has become numeric, so `X` is then the product's value. A symbolic
+//! scalar, vector or matrix whose symbols all have numbers is computed by
+//! replaying how it was made ([`super::replay`]), as if the numbers had
+//! been typed first. Partly numeric expressions keep their symbols
+//! (`[1, 0, …] T_bc`). Types and frames are not recomputed: they were
+//! checked when the expression was built.
 use super::apply::{self, Op};
-use super::convert;
 use super::env::{Binding, Env};
 use super::ops::Sel;
+use super::replay;
 use super::value::Sym;
 use super::value::Value;
 use crate::check::ty::Kind;
 use crate::sym::Symbol;
 use crate::syntax::ast::BinOp;
+use crate::values::recipe;
 
 pub(crate) use super::apply::to_sym;
 
 /// The value of a binding as of now: a value derived from symbols has the
-/// numbers bound since substituted ([`resolve`]); a numeric result takes
-/// the kind the checker gave the expression where that says more than the
-/// numbers can (a twist, a wrench). `given` symbols are themselves.
+/// numbers bound since substituted ([`resolve`], [`formula`]; the items of
+/// a list or tuple too); a numeric result takes the kind the checker gave
+/// the expression where that says more than the numbers can (a twist, a
+/// wrench). `given` symbols are themselves.
 pub fn current(b: &Binding, env: &Env) -> Option<Value> {
     match b.val.as_ref()? {
         Value::Sym(s) if !b.symbolic => Some(match resolve(s, env) {
             Sym::Const(v, _) => retag(*v, &b.ty.kind),
             s => Value::Sym(s),
         }),
-        Value::Formula { kind, m } if !b.symbolic => Some(formula(kind, m, env)),
+        v @ Value::Formula { .. } if !b.symbolic => Some(formula(v, env)),
+        v @ (Value::Tuple(_) | Value::List(_)) if b.derived => Some(now(v, env)),
         v => Some(v.clone()),
     }
 }
 
+/// An item of a list or tuple as of now ([`current`] of a value not bound
+/// to a name of its own).
+fn now(v: &Value, env: &Env) -> Value {
+    match v {
+        Value::Sym(s) => match resolve(s, env) {
+            Sym::Const(v, _) => *v,
+            s => Value::Sym(s),
+        },
+        Value::Formula { .. } => formula(v, env),
+        Value::Tuple(vs) if vs.iter().any(recipe::holds_symbols) => {
+            Value::Tuple(vs.iter().map(|x| now(x, env)).collect())
+        }
+        Value::List(vs) if vs.iter().any(recipe::holds_symbols) => {
+            Value::List(std::rc::Rc::new(vs.iter().map(|x| now(x, env)).collect()))
+        }
+        v => v.clone(),
+    }
+}
+
 /// A formula with the numbers bound since substituted. Once every symbol
-/// has a number the value *is* a number (§7): each entry is evaluated at
-/// those numbers to machine precision (never left as calls of numbers such
-/// as `cos((1/9) π)`), typed by what it is — the formula's kind where the
-/// canonical form earned it exactly (a rotation, a scalar, a vector), else
-/// what the numbers are, as for numbers typed first (π alone is a number
-/// too: it is no symbol). Partly bound, the
-/// numbers are put in ([`crate::sym::Expr::at_numbers`]).
-fn formula(kind: &Kind, m: &crate::sym::Mat, env: &Env) -> Value {
+/// has a number the value *is* a number (§7), computed by replaying how
+/// it was made with those numbers ([`replay::numbers`]: the operations
+/// as typed, as if the numbers had been typed first), never from its
+/// expanded canonical form, whose coefficients can cancel; only a formula
+/// made by no replayable operation (a symbol, a derivative) is evaluated
+/// from its canonical form. It is typed by what it is — the formula's kind
+/// where the canonical form earned it exactly (a rotation, a scalar, a
+/// vector), else what the numbers are, as for numbers typed first (π
+/// alone is a number too: it is no symbol). Partly bound, the numbers are
+/// put in ([`crate::sym::Expr::at_numbers`], and into how it was made).
+fn formula(v: &Value, env: &Env) -> Value {
+    let Value::Formula { kind, m, how } = v else {
+        return v.clone();
+    };
     let lookup = |s: &Symbol| match env.get(&*super::formula::binding_name(s)) {
         Some(Binding {
             val: Some(v @ Value::Num { .. }),
@@ -52,29 +82,39 @@ fn formula(kind: &Kind, m: &crate::sym::Mat, env: &Env) -> Value {
     let mut syms = Vec::new();
     m.data.iter().for_each(|e| e.symbols(&mut syms));
     if !syms.iter().any(|s| lookup(s).is_some()) && !syms.is_empty() {
-        return super::formula::make(kind, m.clone());
+        return v.clone();
     }
     if syms.iter().all(|s| lookup(s).is_some()) {
-        let xs: Option<Vec<f64>> = m.data.iter().map(|e| e.eval(&lookup)).collect();
-        if let Some(xs) = xs {
-            return numeric(kind, m.rows, m.cols, &xs);
+        let replayed = how
+            .as_ref()
+            .and_then(|r| replay::numbers(r, &lookup))
+            .and_then(|x| match x {
+                Value::Num { m: xs, .. } if xs.shape() == (m.rows, m.cols) => Some(xs),
+                _ => None,
+            });
+        if let Some(xs) = replayed {
+            let kind = if recipe::vague(kind) {
+                replay::classify(&xs)
+            } else {
+                *kind
+            };
+            return Value::Num {
+                kind,
+                m: xs,
+                exact: Default::default(),
+            };
+        }
+        if let Some(v) = replay::canonical(kind, m, &lookup) {
+            return v;
         }
     }
-    super::formula::make(kind, m.map(|e| e.at_numbers(&lookup)))
-}
-
-/// The numbers of a fully bound formula with their kind: the formula's
-/// when it is a decided kind, else classified from the numbers.
-fn numeric(kind: &Kind, rows: usize, cols: usize, xs: &[f64]) -> Value {
-    let m: crate::values::num::Num = nalgebra::DMatrix::from_row_slice(rows, cols, xs).into();
-    let kind = match kind {
-        Kind::Unknown | Kind::Matrix(..) | Kind::Vector(None) => classify(&m),
-        k => *k,
-    };
-    Value::Num {
-        kind,
-        m,
-        exact: Default::default(),
+    match super::formula::make(kind, m.map(|e| e.at_numbers(&lookup))) {
+        Value::Formula { kind, m, .. } => Value::Formula {
+            kind,
+            m,
+            how: how.as_ref().map(|r| replay::at_numbers(r, &lookup)),
+        },
+        v => v,
     }
 }
 
@@ -100,7 +140,7 @@ pub fn resolve(s: &Sym, env: &Env) -> Sym {
             _ => s.clone(),
         },
         Sym::Const(v, _) => match &**v {
-            Value::Formula { kind, m } => to_sym(&formula(kind, m, env)),
+            v @ Value::Formula { .. } => to_sym(&formula(v, env)),
             _ => s.clone(),
         },
         Sym::Identity => s.clone(),
@@ -192,23 +232,13 @@ fn constant(v: Value) -> Sym {
             m,
             exact,
         } => Value::Num {
-            kind: classify(&m),
+            kind: replay::classify(&m),
             m,
             exact,
         },
         other => other,
     };
     to_sym(&v)
-}
-
-fn classify(m: &crate::values::num::Num) -> Kind {
-    if m.shape() == (1, 1) {
-        Kind::Scalar
-    } else if m.ncols() == 1 {
-        Kind::Vector(Some(m.nrows()))
-    } else {
-        convert::classify(m)
-    }
 }
 
 /// A unary operation on a resolved operand: its value when that is a

@@ -74,6 +74,7 @@ impl Interp<'_> {
                     ty: t.ty,
                     val: t.val.map(|v| *v),
                     symbolic: false,
+                    derived: false,
                 },
             );
         }

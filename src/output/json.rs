@@ -74,7 +74,9 @@ pub fn outcome(o: &Outcome, line: usize) -> Option<J> {
         "value": o.val.as_deref().map_or(J::Null, value),
     });
     // A symbolic value carries its LaTeX and what it is (§7).
-    if let (Some(Value::Formula { m, kind }), Some(obj)) = (o.val.as_deref(), out.as_object_mut()) {
+    if let (Some(Value::Formula { m, kind, .. }), Some(obj)) =
+        (o.val.as_deref(), out.as_object_mut())
+    {
         obj.insert(
             "latex".into(),
             json!(crate::values::format::formula_latex(m, 17.into())),

@@ -60,7 +60,7 @@ fn candidates(e: &Expr) -> Vec<Vec<(Symbol, i32)>> {
 
 fn angle_of(k: &[(Symbol, i32)]) -> Expr {
     k.iter().fold(Expr::zero(), |acc, (s, c)| {
-        acc.add(&Expr::symbol(s.clone()).scale(&Coef::int(i64::from(*c))))
+        acc.add(&Expr::angle(s).scale(&Coef::int(i64::from(*c))))
     })
 }
 

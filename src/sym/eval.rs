@@ -22,7 +22,11 @@ impl Expr {
                     Var::Pi => (std::f64::consts::PI.powi(*e), 0.0),
                     Var::Sym(s) => (at(s)?.powi(*e), 0.0),
                     Var::Z(s) => {
-                        let t = at(s)? * f64::from(*e);
+                        let x = match s.phase() {
+                            Some(unit) => unit.radians(),
+                            None => at(s)?,
+                        };
+                        let t = x * f64::from(*e);
                         (t.cos(), t.sin())
                     }
                     Var::Call(c) => (eval_call(c, at)?.powi(*e), 0.0),

@@ -226,6 +226,14 @@ impl Expr {
     pub fn num(x: f64) -> Expr {
         Expr::constant(Coef::from_f64(x))
     }
+    /// A number as typed, exactly: the shortest decimal that reads back as
+    /// `x` (`0.3` is 3/10; LANGUAGE.md §7), a float only for inf or NaN.
+    pub fn typed(x: f64) -> Expr {
+        match Rat::typed(x) {
+            Some(r) => Expr::constant(Coef::rat(r)),
+            None => Expr::num(x),
+        }
+    }
     /// One variable.
     pub fn var(v: Var) -> Expr {
         Expr::var_pow(v, 1)
@@ -358,7 +366,11 @@ impl Expr {
                 out.push(mono_mul(a, b), c.mul(d));
             }
         }
-        out.fold_roots().fold_units()
+        let out = out.fold_roots().fold_units();
+        if self.has_phase() || o.has_phase() {
+            return out.fold_phases();
+        }
+        out
     }
 
     /// √x · √x = x: a square root's even powers become powers of x.
@@ -407,7 +419,7 @@ impl Expr {
             }
             out.push(m2, c.conj());
         }
-        out
+        out.fold_phases()
     }
     /// 1/x: exact for a single term, else a [`Func::Recip`] call of a *real*
     /// sum (calls are real), scaled so its first term prints as 1; a complex
@@ -421,7 +433,7 @@ impl Expr {
                 .collect();
             let mut out = Expr::zero();
             out.push(m, c.inv()?);
-            return Some(out);
+            return Some(out.fold_phases());
         }
         let bar = self.conj();
         if bar != *self {
@@ -464,10 +476,12 @@ impl Expr {
     }
 
     /// e^{i·arg} as a monomial in the z's, when `arg` is an integer
-    /// combination of symbols plus a multiple of π/12.
+    /// combination of symbols plus a multiple of π/12, or plus another
+    /// rational multiple of π or a decimal offset (a phase variable,
+    /// [`super::phase`]; only beside a symbol: `cos(π/5)` is a number).
     pub fn expi(arg: &Expr) -> Option<Expr> {
         let mut mono: Mono = Vec::new();
-        let mut coef = Coef::one();
+        let (mut pi, mut rad) = (Rat::ZERO, Rat::ZERO);
         for (m, c) in &arg.terms {
             let k = c.as_rat()?;
             match m.as_slice() {
@@ -475,10 +489,20 @@ impl Expr {
                     let k = i32::try_from(k.as_int()?).ok()?;
                     mono = mono_mul(&mono, &vec![(Var::Z(s.clone()), k)]);
                 }
-                [(Var::Pi, 1)] => coef = coef.mul(&Coef::unit_root(k)?),
+                [(Var::Pi, 1)] => pi = k,
+                [] => rad = k,
                 _ => return None,
             }
         }
+        let coef = match Coef::unit_root(pi.clone()) {
+            Some(c) if rad.is_zero() => c,
+            _ if mono.is_empty() => return None,
+            _ => {
+                let (m, c) = super::phase::offset(&pi, &rad)?;
+                mono = mono_mul(&mono, &m);
+                c
+            }
+        };
         let mut e = Expr::zero();
         e.push(mono, coef);
         Some(e)
@@ -541,7 +565,7 @@ impl Expr {
             for (v, _) in m {
                 match v {
                     Var::Sym(s) | Var::Z(s) => {
-                        if !out.contains(s) {
+                        if !out.contains(s) && !s.is_phase() {
                             out.push(s.clone());
                         }
                     }

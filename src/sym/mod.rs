@@ -13,6 +13,7 @@ pub mod eval;
 pub mod expr;
 pub mod fraction;
 pub mod matrix;
+pub mod phase;
 pub mod print;
 pub mod rat;
 pub mod rational;

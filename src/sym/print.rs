@@ -176,13 +176,9 @@ pub fn symbol(s: &Symbol, st: Style) -> String {
     if s.index > 0 {
         return component(s, st);
     }
-    // an angle's offset, `π/4`, `5π/12` (see `trig::fold_offsets`; no
-    // name the user can declare holds a `/`)
-    if let Some((p, q)) = s.name.split_once("π/") {
-        return match st.mode {
-            Mode::Latex => format!("\\frac{{{p}\\pi}}{{{q}}}"),
-            _ => s.name.to_string(),
-        };
+    // a constant offset: one unit of a phase variable (see `trig_factor`)
+    if let Some(unit) = s.phase() {
+        return super::phase::text(unit, 1, st.mode == Mode::Latex);
     }
     let (base, sub) = split_name(&s.name);
     if st.mode == Mode::Latex {
@@ -266,12 +262,12 @@ pub(super) fn trig_factor(k: &[(Symbol, i32)], f: &str, p: u32, st: Style) -> St
     }
     let mut arg = String::new();
     for (i, (s, c)) in k.iter().enumerate() {
-        let name = symbol(s, st);
         let mag = c.abs();
-        let piece = if mag == 1 {
-            name
-        } else {
-            format!("{mag} {name}")
+        let piece = match s.phase() {
+            // an offset, `π/5`, `0.3`, as its value
+            Some(unit) => super::phase::text(unit, i64::from(mag), st.mode == Mode::Latex),
+            None if mag == 1 => symbol(s, st),
+            None => format!("{mag} {}", symbol(s, st)),
         };
         match (i, *c < 0) {
             (0, _) => arg.push_str(&piece),
@@ -300,9 +296,7 @@ pub(super) fn trig_factor(k: &[(Symbol, i32)], f: &str, p: u32, st: Style) -> St
 /// applies (all coefficients 1, indexed names or a single angle).
 fn short_trig(k: &[(Symbol, i32)], sin: bool) -> Option<String> {
     const SUB: [char; 10] = ['₀', '₁', '₂', '₃', '₄', '₅', '₆', '₇', '₈', '₉'];
-    if k.iter()
-        .any(|(s, c)| *c != 1 || s.dots > 0 || s.name.contains('/'))
-    {
+    if k.iter().any(|(s, c)| *c != 1 || s.dots > 0 || s.is_phase()) {
         return None;
     }
     let f = if sin { 's' } else { 'c' };
@@ -362,31 +356,6 @@ pub(super) fn coefficient(c: &Coef, st: Style) -> (bool, String) {
     }
 }
 
-/// p/q as typed in scientific notation, when that is much shorter: a
-/// long power of ten in it (`1e300`, `1e-13`), at most 15 digits.
-fn scientific(p: &str, q: &str) -> Option<String> {
-    let digits = |m: &str| -> Option<String> {
-        (m.len() <= 15).then(|| match m.len() {
-            1 => m.to_string(),
-            _ => format!("{}.{}", &m[..1], &m[1..]),
-        })
-    };
-    if q == "1" && p.len() > 15 {
-        let m = p.trim_end_matches('0');
-        if p.len() - m.len() < 10 {
-            return None;
-        }
-        return Some(format!("{}e{}", digits(m)?, p.len() - 1));
-    }
-    let zeros = q.strip_prefix('1')?;
-    if zeros.len() > 12 && zeros.bytes().all(|b| b == b'0') && p.len() <= 15 {
-        // p / 10^n = m · 10^(len(p) - 1 - n)
-        let m = p.trim_end_matches('0');
-        return Some(format!("{}e-{}", digits(m)?, zeros.len() + 1 - p.len()));
-    }
-    None
-}
-
 /// (p/q)√k as text or LaTeX: `3`, `17/40` (or `0.425`), `√2`, `1/√2`, `√3/2`.
 fn surd_term(r: &Rat, k: i64, latex: bool) -> String {
     let (p, q) = r.parts();
@@ -399,7 +368,7 @@ fn surd_term(r: &Rat, k: i64, latex: bool) -> String {
     };
     let p_one = *p == num_bigint::BigUint::from(1u8);
     if k == 1 {
-        if let Some(e) = scientific(&p.to_string(), &q.magnitude().to_string()) {
+        if let Some(e) = super::rat::scientific(&p.to_string(), &q.magnitude().to_string()) {
             return format!("{sign}{e}");
         }
         if q_small == Some(1) {

@@ -9,13 +9,14 @@ use std::collections::BTreeMap;
 
 use super::coef::Coef;
 use super::expr::{Expr, Mono, Symbol, Var};
+use super::phase::{PI_DEN, PI_EDGE, Unit};
 
 /// One trigonometric factor: an integer combination of angles (first
 /// coefficient positive), whether it is a sine, and its power (`cos(t)^2`
 /// where a single angle prints in powers of cos t and sin t).
 pub type Trig = (Vec<(Symbol, i32)>, bool, u32);
-/// An integer combination of angles (with an offset, `π/4`, as a
-/// pseudo-angle once folded).
+/// An integer combination of angles, constant offsets (`π/5`, `0.3`) as
+/// phase variables ([`super::phase`]).
 pub type Angle = Vec<(Symbol, i32)>;
 /// The real terms: (non-angle monomial, trigonometric factors) → coefficient.
 pub type Real = BTreeMap<(Mono, Vec<Trig>), Coef>;
@@ -84,10 +85,15 @@ pub fn realize(e: &Expr, groups: &[Vec<Symbol>], powers: &[Power]) -> Real {
             for x in &mut k {
                 x.1 *= sign;
             }
+            let edge = edge_turn(&mut k, sign);
             let sin_factor = half_i.mul(&Coef::int(i64::from(sign)));
             parts = parts
                 .into_iter()
                 .flat_map(|(t, c)| {
+                    let c = match &edge {
+                        Some(turn) => c.mul(turn),
+                        None => c,
+                    };
                     let mut ct = t.clone();
                     ct.push((k.clone(), false, 1));
                     let mut st = t;
@@ -106,8 +112,34 @@ pub fn realize(e: &Expr, groups: &[Vec<Symbol>], powers: &[Power]) -> Real {
             out.insert(key, sum);
         }
     }
+    // e is real, so it is the sum of the real parts: where a monomial's
+    // conjugate carries another phase (u^{N/2} and u^{−N/2} are one
+    // value), the imaginary parts cancel between keys, not within one
+    for c in out.values_mut() {
+        *c = real_part(c);
+    }
     out.retain(|_, c| !negligible(c));
     out
+}
+
+/// u^{−N/2} = u^{N/2} e^{−iπ/12} for the π-phase u (N units make π/12,
+/// [`super::phase`]): an angle whose sign was turned (a conjugate) ends
+/// with the offset +π/24 like its partner, not −π/24, so that the two
+/// print as one cosine. The factor this takes, e^{−i·sign·π/12}.
+fn edge_turn(k: &mut [(Symbol, i32)], sign: i32) -> Option<Coef> {
+    let pi = k
+        .iter_mut()
+        .find(|(s, e)| *e == -PI_EDGE && s.phase() == Some(Unit::Pi))?;
+    pi.1 = PI_EDGE;
+    Coef::unit_root(super::coef::Rat::new(i128::from(-sign), 12)?)
+}
+
+/// Re c, as a coefficient.
+fn real_part(c: &Coef) -> Coef {
+    match c {
+        Coef::Exact { re, .. } => Coef::real(re.clone()),
+        Coef::Approx { re, .. } => Coef::Approx { re: *re, im: 0.0 },
+    }
 }
 
 /// The largest |k| of e^{ikθ} written in powers of cos θ and sin θ.
@@ -162,6 +194,8 @@ type Cells = std::collections::HashMap<(usize, Vec<i32>), Vec<(f64, f64)>>;
 /// is exact).
 struct Compact {
     terms: Vec<(usize, Vec<i32>, (f64, f64))>,
+    /// The index of the π-phase among the angles.
+    pi: Option<usize>,
 }
 
 impl Compact {
@@ -190,7 +224,8 @@ impl Compact {
                 (id, exps, c.to_c64())
             })
             .collect();
-        Compact { terms }
+        let pi = angles.iter().position(|a| a.phase() == Some(Unit::Pi));
+        Compact { terms, pi }
     }
 
     /// The number of real terms when angle i is in group `of[i]`.
@@ -204,18 +239,27 @@ impl Compact {
                     sign[of[i]] = k.signum();
                 }
             }
-            let canon: Vec<i32> = exps
+            let mut canon: Vec<i32> = exps
                 .iter()
                 .enumerate()
                 .map(|(i, &k)| k * sign[of[i]])
                 .collect();
+            // the π-phase at −π/24 turned to +π/24 (see `edge_turn`)
+            let (mut re, mut im) = (*re, *im);
+            if let Some(i) = self.pi
+                && canon[i] == -PI_EDGE
+            {
+                canon[i] = PI_EDGE;
+                let a = -f64::from(sign[of[i]]) * std::f64::consts::PI / 12.0;
+                (re, im) = (re * a.cos() - im * a.sin(), re * a.sin() + im * a.cos());
+            }
             let active: Vec<i32> = sign.iter().copied().filter(|&s| s != 0).collect();
             let slot = acc
                 .entry((*id, canon))
                 .or_insert_with(|| vec![(0.0, 0.0); 1 << active.len()]);
             for (mask, cell) in slot.iter_mut().enumerate() {
                 // sin choices multiply by i·sign
-                let (mut a, mut b) = (*re, *im);
+                let (mut a, mut b) = (re, im);
                 for (g, sg) in active.iter().enumerate() {
                     if mask >> g & 1 == 1 {
                         (a, b) = (-b * f64::from(*sg), a * f64::from(*sg));
@@ -347,7 +391,7 @@ pub fn real_form(e: &Expr) -> Real {
 /// a cos K + b sin K = r cos(K − φ) (or r sin(K + ψ)) where the offset is
 /// a multiple of π/12 and r is exact: `cos(t1 + t2 + π/4)` prints as one
 /// term, not (1/√2) cos(t1 + t2) − (1/√2) sin(t1 + t2). The offset is
-/// carried as a pseudo-angle named as printed (`π/4`), coefficient ±1.
+/// added to the angle's π-phase ([`super::phase`]).
 fn fold_offsets(real: Real) -> Real {
     let mut out: Real = BTreeMap::new();
     let mut used: std::collections::BTreeSet<(Mono, Vec<Trig>)> = Default::default();
@@ -426,25 +470,65 @@ fn offset(a: &Coef, b: &Coef, k: &[(Symbol, i32)]) -> Option<(Coef, Angle, bool)
     } else {
         (6 - phi, false)
     };
+    let as_sin = (true, psi, if flip { r.neg() } else { r.clone() });
+    let as_cos = (false, -phi, r);
+    if k.iter().any(|(s, _)| s.phase() == Some(Unit::Pi)) {
+        // with a π-phase, the simplest total offset (denominator, then
+        // numerator), then a positive factor: −cos(t − 2π/5), not
+        // −sin(t + π/10), for cos(t + 3π/5)
+        let turned = |(sin, off, r): &(bool, i64, Coef)| (*sin, off + 12, r.neg());
+        let options = [turned(&as_sin), turned(&as_cos), as_sin, as_cos];
+        let key = |(_, off, r): &(bool, i64, Coef)| {
+            let (q, p, neg) = plainness(&with_offset(k, *off));
+            (q, p, r.to_c64().0 < 0.0, neg)
+        };
+        let (sin, off, r) = options.into_iter().min_by_key(key)?;
+        return Some((r, with_offset(k, off), sin));
+    }
     let (sin, off, r) = if psi.abs() < phi.abs() || (psi.abs() == phi.abs() && psi > 0) {
-        (true, psi, if flip { r.neg() } else { r })
+        as_sin
     } else {
-        (false, -phi, r)
+        as_cos
     };
-    let mut angle = k.to_vec();
-    let (p, q) = {
-        let g = gcd(off.abs(), 12);
-        (off.abs() / g, 12 / g)
-    };
-    let name = match (p, q) {
-        (1, 1) => "π".to_string(),
-        (1, q) => format!("π/{q}"),
-        (p, q) => format!("{p}π/{q}"),
-    };
-    angle.push((Symbol::new(&name), off.signum() as i32));
-    Some((r, angle, sin))
+    Some((r, with_offset(k, off), sin))
+}
+
+/// How plain an angle's π-offset p/q·π reads: (q, |p|, negative).
+fn plainness(k: &[(Symbol, i32)]) -> (i64, i64, bool) {
+    let e = k
+        .iter()
+        .find(|(s, _)| s.phase() == Some(Unit::Pi))
+        .map_or(0, |(_, e)| i64::from(*e));
+    let g = gcd(e.abs(), PI_DEN).max(1);
+    (PI_DEN / g, e.abs() / g, e < 0)
 }
 
 fn gcd(a: i64, b: i64) -> i64 {
     if b == 0 { a } else { gcd(b, a % b) }
+}
+
+/// The angle K + off·π/12, the offset added to K's π-phase (`t + π/5`, not
+/// `t + π/30 + π/6`), or one of its own.
+fn with_offset(k: &[(Symbol, i32)], off: i64) -> Angle {
+    let pi = Unit::Pi.symbol();
+    let units = off * (PI_DEN / 12);
+    let mut angle: Angle = k.iter().filter(|(s, _)| *s != pi).cloned().collect();
+    let old = k
+        .iter()
+        .find(|(s, _)| *s == pi)
+        .map_or(0, |(_, e)| i64::from(*e));
+    // within (−π, π]
+    let mut sum = (old + units).rem_euclid(2 * PI_DEN);
+    if sum > PI_DEN {
+        sum -= 2 * PI_DEN;
+    }
+    if sum != 0 {
+        // |sum| ≤ PI_DEN fits; the π-phase sorts before the radian one
+        let at = angle
+            .iter()
+            .position(|(s, _)| s.phase() == Some(Unit::Rad))
+            .unwrap_or(angle.len());
+        angle.insert(at, (pi, sum as i32));
+    }
+    angle
 }

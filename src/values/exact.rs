@@ -122,22 +122,9 @@ pub fn typed(m: &Num) -> Option<Mat> {
     })
 }
 
-/// The decimal a float was typed as: the shortest digits that read back
-/// as it (`0.1` is 1/10, `1e-13` is 1/10¹³); None for inf or NaN.
+/// The decimal a float was typed as ([`Rat::typed`]).
 pub fn decimal(x: f64) -> Option<Rat> {
-    if !x.is_finite() {
-        return None;
-    }
-    if x == x.trunc() && x.abs() < 9.0e15 {
-        return Some(Rat::int(x as i64));
-    }
-    // `{:e}` is the shortest round-trip form: `-8.66e-1`.
-    let text = format!("{x:e}");
-    let (mantissa, exp) = text.split_once('e')?;
-    let exp: i32 = exp.parse().ok()?;
-    let (int, frac) = mantissa.split_once('.').unwrap_or((mantissa, ""));
-    let digits: num_bigint::BigInt = format!("{int}{frac}").parse().ok()?;
-    Some(Rat::decimal(&digits, exp - frac.len() as i32))
+    Rat::typed(x)
 }
 
 /// True when `r` is a decimal that `--digits` printing shows as typed (a

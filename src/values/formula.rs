@@ -81,7 +81,7 @@ pub fn make(kind: &Kind, m: Mat) -> Value {
                 super::exact::Exact::Float
             },
         },
-        None => Value::Formula { kind, m },
+        None => Value::Formula { kind, m, how: None },
     }
 }
 

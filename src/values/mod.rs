@@ -2,7 +2,8 @@
 //! whose numbers are a [`num::Num`] (a scalar, the book's 3-, 4- and
 //! 6-vectors and 3×3, 4×4, 6×6 matrices in fixed-size nalgebra types, a
 //! general matrix only for other shapes), symbolic expressions over
-//! `given` names ([`symbolic`]), the group a
+//! `given` names ([`symbolic`]), how a symbolic value was made ([`recipe`],
+//! replayed with numbers once its symbols have them), the group a
 //! matrix belongs to ([`convert`]), the arithmetic of the language on values
 //! ([`ops`]: products, powers, inverses, members, indexing, brackets, with
 //! their errors in [`error`]), and
@@ -22,5 +23,6 @@ pub mod linalg;
 pub mod num;
 pub mod number;
 pub mod ops;
+pub mod recipe;
 pub mod symbolic;
 pub mod value;

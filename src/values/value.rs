@@ -39,10 +39,13 @@ pub enum Value {
     /// An expression over `given` symbols (LANGUAGE.md §7).
     Sym(Sym),
     /// A scalar, vector or matrix whose entries are symbolic scalars in
-    /// canonical form (`Rotz(theta)`), with its kind (LANGUAGE.md §7).
+    /// canonical form (`Rotz(theta)`), with its kind (LANGUAGE.md §7), and
+    /// how it was made, replayed with numbers once its symbols have them
+    /// ([`super::recipe`]; None for a leaf: a `given` symbol, a derivative).
     Formula {
         kind: Kind,
         m: crate::sym::Mat,
+        how: Option<Rc<super::recipe::Recipe>>,
     },
     /// A list (LANGUAGE.md §12): a range `0:4` or a comprehension.
     List(Rc<Vec<Value>>),
@@ -64,7 +67,8 @@ impl PartialEq for Value {
             (Value::Tuple(a), Value::Tuple(b)) => a == b,
             (Value::Mech(a), Value::Mech(b)) => Rc::ptr_eq(a, b),
             (Value::Sym(a), Value::Sym(b)) => a == b,
-            (Value::Formula { kind: a, m: x }, Value::Formula { kind: b, m: y }) => {
+            // (how a formula was made is no part of what it is)
+            (Value::Formula { kind: a, m: x, .. }, Value::Formula { kind: b, m: y, .. }) => {
                 a == b && x == y
             }
             (Value::List(a), Value::List(b)) => a == b,

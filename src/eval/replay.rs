@@ -1,0 +1,164 @@
+//! Values made from symbols, computed with numbers by replaying how they
+//! were made (LANGUAGE.md §7: once every symbol of a value has a number,
+//! the value *is* a number, to machine precision, exactly as if the
+//! numbers had been typed first). Every operation of the seam that makes a
+//! formula from formulas records its step (`Op::made`, a
+//! [`crate::values::recipe::Recipe`]); once the symbols have numbers,
+//! [`numbers`] runs the same steps through [`Op::numeric`] — the function
+//! the evaluator applies to numbers typed first — instead of evaluating
+//! the expanded canonical form, whose coefficients can cancel.
+//! [`at_numbers`] puts the numbers bound so far into a recipe's leaves,
+//! for a value read while some of its symbols are still free.
+
+use std::collections::HashMap;
+use std::rc::Rc;
+
+use super::apply::Op;
+use super::value::Value;
+use crate::check::ty::Kind;
+use crate::sym::{Mat, Symbol};
+use crate::values::recipe::{Recipe, Step, vague};
+
+/// A symbol's number, if it has one now.
+pub(super) type Lookup<'a> = &'a dyn Fn(&Symbol) -> Option<f64>;
+
+/// The numbers of a formula with numbers for its symbols, from its
+/// canonical form (a leaf; `kind` says what it is where the formula's
+/// kind says only a shape). None when a symbol has no number.
+pub(super) fn canonical(kind: &Kind, m: &Mat, at: Lookup) -> Option<Value> {
+    let xs: Vec<f64> = m.data.iter().map(|e| e.eval(at)).collect::<Option<_>>()?;
+    let m: crate::values::num::Num = nalgebra::DMatrix::from_row_slice(m.rows, m.cols, &xs).into();
+    let kind = if vague(kind) { classify(&m) } else { *kind };
+    Some(Value::Num {
+        kind,
+        m,
+        exact: Default::default(),
+    })
+}
+
+/// The kind of numbers by shape and, for a square matrix, by the group
+/// it is in ([`super::convert::classify`]).
+pub(super) fn classify(m: &crate::values::num::Num) -> Kind {
+    if m.shape() == (1, 1) {
+        Kind::Scalar
+    } else if m.ncols() == 1 {
+        Kind::Vector(Some(m.nrows()))
+    } else {
+        super::convert::classify(m)
+    }
+}
+
+/// The value of recipe `r` with the numbers `at` gives: each step applied
+/// to its operands' numbers by [`Op::numeric`], as when they are typed
+/// first; shared operands computed once. None when a leaf's symbol has no
+/// number or a step fails with numbers (the caller then evaluates the
+/// canonical form, as before there were recipes).
+pub(super) fn numbers(r: &Rc<Recipe>, at: Lookup) -> Option<Value> {
+    let mut memo = HashMap::new();
+    replay(r, at, &mut memo)
+}
+
+type Memo = HashMap<*const Recipe, Option<Value>>;
+
+fn replay(r: &Rc<Recipe>, at: Lookup, memo: &mut Memo) -> Option<Value> {
+    let key = Rc::as_ptr(r);
+    if let Some(v) = memo.get(&key) {
+        return v.clone();
+    }
+    // (recipes are at most recipe::MAX_DEPTH deep; the stack grows on the
+    // heap when it runs low, as the evaluator's does)
+    let v = stacker::maybe_grow(64 * 1024, 1024 * 1024, || step(r, at, memo));
+    memo.insert(key, v.clone());
+    v
+}
+
+fn step(r: &Recipe, at: Lookup, memo: &mut Memo) -> Option<Value> {
+    if let Step::Leaf(v) = &r.step {
+        return match v {
+            Value::Formula { kind, m, .. } => canonical(kind, m, at),
+            Value::Sym(_) => None,
+            v => Some(v.clone()),
+        };
+    }
+    let args: Vec<Value> = r
+        .args
+        .iter()
+        .map(|a| replay(a, at, memo))
+        .collect::<Option<_>>()?;
+    let refs: Vec<&Value> = args.iter().collect();
+    let op = match &r.step {
+        Step::Part(i) => {
+            return match refs.as_slice() {
+                [Value::Tuple(vs)] => vs.get(*i).cloned(),
+                // (numbers give the angles as a vector, symbols a tuple)
+                [Value::Num { m, .. }] if m.ncols() == 1 => {
+                    (*i < m.nrows()).then(|| Value::scalar(m[*i]))
+                }
+                _ => None,
+            };
+        }
+        Step::Retag => {
+            return match refs.as_slice() {
+                [Value::Num { m, exact, .. }] => Some(Value::Num {
+                    kind: r.kind,
+                    m: m.clone(),
+                    exact: exact.clone(),
+                }),
+                _ => None,
+            };
+        }
+        Step::Leaf(_) => return None,
+        Step::Neg => Op::Neg,
+        Step::Degrees => Op::Degrees,
+        Step::Arith(op) => Op::Arith(*op),
+        Step::Transpose => Op::Transpose,
+        Step::Member(part) => Op::Member(*part),
+        Step::Index(sels) => Op::Index(sels),
+        Step::Block(widths) => Op::Block(widths),
+        Step::Vector => Op::Vector,
+        Step::Call(name) => Op::Call(crate::builtins::lookup(name)?, name),
+    };
+    op.numeric(&refs, Some(&r.kind)).ok()
+}
+
+/// Recipe `r` with the numbers bound so far put into its leaves (a value
+/// read while some of its symbols are free keeps the numbers of the time
+/// it was read, as its canonical form does); unchanged parts are shared.
+pub(super) fn at_numbers(r: &Rc<Recipe>, at: Lookup) -> Rc<Recipe> {
+    let mut memo = HashMap::new();
+    rebase(r, at, &mut memo)
+}
+
+fn rebase(r: &Rc<Recipe>, at: Lookup, memo: &mut HashMap<*const Recipe, Rc<Recipe>>) -> Rc<Recipe> {
+    let key = Rc::as_ptr(r);
+    if let Some(x) = memo.get(&key) {
+        return x.clone();
+    }
+    let out = stacker::maybe_grow(64 * 1024, 1024 * 1024, || match &r.step {
+        Step::Leaf(Value::Formula { kind, m, .. }) => {
+            let mut syms = Vec::new();
+            m.data.iter().for_each(|e| e.symbols(&mut syms));
+            if !syms.iter().any(|s| at(s).is_some()) {
+                return r.clone();
+            }
+            let v = canonical(kind, m, at)
+                .unwrap_or_else(|| super::formula::make(kind, m.map(|e| e.at_numbers(at))));
+            Recipe::leaf(v)
+        }
+        Step::Leaf(_) => r.clone(),
+        step => {
+            let args: Vec<Rc<Recipe>> = r.args.iter().map(|a| rebase(a, at, memo)).collect();
+            if args.iter().zip(&r.args).all(|(a, b)| Rc::ptr_eq(a, b)) {
+                return r.clone();
+            }
+            Rc::new(Recipe {
+                step: step.clone(),
+                args,
+                kind: r.kind,
+                depth: r.depth,
+            })
+        }
+    });
+    memo.insert(key, out.clone());
+    out
+}
