@@ -12,11 +12,8 @@ use std::time::Duration;
 use rexpect::reader::Options;
 use rexpect::session::{PtySession, spawn_with_options};
 
-fn expect(p: &mut PtySession, text: &str) {
-    if let Err(e) = p.exp_string(text) {
-        panic!("waiting for {text:?}: {e}");
-    }
-}
+mod common;
+use common::pty::{TIMEOUT_MS, expect};
 
 /// Types `line` one character at a time, as a person does, so that the
 /// line editor refreshes its hint (the preview) after every key.
@@ -51,7 +48,7 @@ fn typing_a_save_line_writes_nothing_before_enter() {
         .env("TERM", "xterm")
         .env("CHASLES_HISTORY", dir.join("history.txt"));
     let options = Options::new()
-        .timeout_ms(Some(60_000))
+        .timeout_ms(Some(TIMEOUT_MS))
         .strip_ansi_escape_codes(true);
     let mut p = spawn_with_options(cmd, options).expect("the binary starts on a pty");
     expect(&mut p, ">>> ");
