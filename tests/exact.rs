@@ -4,6 +4,8 @@
 //! without symbols, and large coefficients are never rounding noise.
 
 mod common;
+use chasles::eval::env::Mode;
+use chasles::session::{Session, Settings};
 use common::json;
 
 /// The value of the last statement of `src`.
