@@ -25,17 +25,19 @@ import timeit
 
 N = 20000
 
-# benches/instructions.sh imports this file only for `script`, which needs
-# neither package: without them, the comparison below is what is skipped.
-try:
+
+def book():
+    """The book's library and numpy, imported where they are used: `script(n)`
+    needs neither (benches/instructions.sh imports it without them)."""
     import modern_robotics as mr
     import numpy as np
-except ImportError:
-    mr = np = None
+
+    return mr, np
 
 
 def single_operations():
     """Calls per second of each core operation (compare `cargo bench --bench lie`)."""
+    mr, np = book()
     v = np.array([0.3, -1.2, 0.7, 1.0, 2.0, -3.0])
     se3 = mr.VecTose3(v)
     T = mr.MatrixExp6(se3)
@@ -70,6 +72,7 @@ def script(n):
 
 def python_script(n, out):
     """The same n statements with the book's library, printing every result."""
+    mr, np = book()
     np.set_printoptions(precision=4, suppress=True)
     S = np.array([0.0, 0.0, 1.0, 0.0, 2.0, 0.0])
     print("S =", S, file=out)
@@ -115,7 +118,5 @@ def main():
 
 
 if __name__ == "__main__":
-    if mr is None:
-        sys.exit("needs the book's library: pip install modern_robotics numpy")
     single_operations()
     main()

@@ -236,3 +236,27 @@ fn a_file_name_of_250_bytes_is_saved() {
     assert_eq!(code, 1, "{err}");
     assert!(err.contains("domain error: cannot write"), "{err}");
 }
+
+/// The REPL's history is a write like any other (§§1, 11): none under
+/// `--no-write`; under `--write-dir` only a file inside DIR (a relative
+/// name is taken inside it); anywhere otherwise.
+#[test]
+fn history_is_kept_only_where_the_gate_allows() {
+    let dir = scratch("history");
+    let outside = scratch("history-outside").join("history.txt");
+    assert_eq!(Gate::deny().history(&outside), None);
+    assert_eq!(
+        Gate::anywhere(Some(".".into())).history(&outside),
+        Some(outside.clone())
+    );
+    let within = Gate::within(&dir, None).expect("a folder");
+    let real = std::fs::canonicalize(&dir).expect("exists");
+    assert_eq!(within.history(&outside), None);
+    assert_eq!(within.history(std::path::Path::new("../h.txt")), None);
+    assert_eq!(within.history(&dir.join("h.txt")), Some(real.join("h.txt")));
+    assert_eq!(
+        within.history(std::path::Path::new("sub/h.txt")),
+        Some(real.join("sub").join("h.txt"))
+    );
+    assert!(real.join("sub").is_dir(), "its folder is made inside DIR");
+}
