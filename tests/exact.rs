@@ -183,3 +183,73 @@ fn exact_output_reads_back() {
         "[√3/2, -1/2, 0\n  1/2, √3/2, 0\n    0,    0, 1]  : SO(3)\n"
     );
 }
+
+/// A random exact number as source text, and its value: integers,
+/// decimals as typed, square roots in ℚ(√2, √3), π and degrees, by sums,
+/// products and quotients.
+fn exact_number(seed: &mut u64, depth: u32) -> (String, f64) {
+    *seed = seed
+        .wrapping_mul(6364136223846793005)
+        .wrapping_add(1442695040888963407);
+    let pick = (*seed >> 33) % if depth == 0 { 5 } else { 8 };
+    let k = ((*seed >> 40) % 7) as i64 + 1;
+    match pick {
+        0 => (k.to_string(), k as f64),
+        1 => (format!("0.{k}"), k as f64 / 10.0),
+        2 => {
+            let r = [2, 3, 6, 8, 12][(k % 5) as usize];
+            (format!("sqrt({r})"), (r as f64).sqrt())
+        }
+        3 => (format!("pi/{k}"), std::f64::consts::PI / k as f64),
+        4 => (
+            format!("{}deg", 15 * k),
+            (15 * k) as f64 * std::f64::consts::PI / 180.0,
+        ),
+        _ => {
+            let (a, x) = exact_number(seed, depth - 1);
+            let (b, y) = exact_number(seed, depth - 1);
+            match pick {
+                5 => (format!("({a} + {b})"), x + y),
+                6 => (format!("({a} * {b})"), x * y),
+                _ => (format!("({a} - {b})"), x - y),
+            }
+        }
+    }
+}
+
+/// `==` on exact numbers gives the same answer with and without a symbol,
+/// never says true where the values differ, and says true on identities
+/// (a sum compared with itself rearranged, √a·√b with √(ab)).
+#[test]
+fn equality_is_the_same_with_or_without_a_symbol() {
+    let mut seed = 21u64;
+    for _ in 0..60 {
+        let (a, x) = exact_number(&mut seed, 2);
+        let (b, y) = exact_number(&mut seed, 2);
+        let plain = last(&format!("{a} == {b}"));
+        let with_t = last(&format!("given t : scalar\n{a}*t == {b}*t"));
+        assert_eq!(plain, with_t, "{a} == {b}");
+        if plain == serde_json::Value::Bool(true) {
+            assert!((x - y).abs() <= 1e-12 * x.abs().max(1.0), "{a} == {b}");
+        }
+        // identities: a + b == b + a, (a - b) + b == a, with and without t
+        for src in [
+            format!("{a} + {b} == {b} + {a}"),
+            format!("({a} - {b}) + {b} == {a}"),
+            format!("given t : scalar\n({a} + {b})*t == {a}*t + {b}*t"),
+        ] {
+            assert_eq!(last(&src), serde_json::Value::Bool(true), "{src}");
+        }
+    }
+    for (p, q) in [(2, 3), (2, 6), (3, 6), (2, 8), (3, 12), (6, 6)] {
+        for src in [
+            format!("sqrt({p})*sqrt({q}) == sqrt({})", p * q),
+            format!(
+                "given t : scalar\nsqrt({p})*sqrt({q})*t == sqrt({})*t",
+                p * q
+            ),
+        ] {
+            assert_eq!(last(&src), serde_json::Value::Bool(true), "{src}");
+        }
+    }
+}
