@@ -108,7 +108,11 @@ fn formula(v: &Value, env: &Env) -> Result<Value, replay::Failed> {
             } else {
                 *kind
             };
-            return Ok(Value::Num { kind, m: xs });
+            return Ok(Value::Num {
+                kind,
+                m: xs,
+                exact: Default::default(),
+            });
         }
         if let Some(v) = replay::canonical(kind, m, &lookup) {
             return Ok(v);
@@ -131,7 +135,7 @@ fn formula(v: &Value, env: &Env) -> Result<Value, replay::Failed> {
 pub(super) fn retag(v: Value, kind: &Kind) -> Value {
     match (v, kind) {
         (v, Kind::Unknown | Kind::Matrix(..) | Kind::Vector(_)) => v,
-        (Value::Num { m, .. }, k) => Value::Num { kind: *k, m },
+        (Value::Num { m, exact, .. }, k) => Value::Num { kind: *k, m, exact },
         (v, _) => v,
     }
 }
@@ -243,9 +247,11 @@ fn constant(v: Value) -> Sym {
         Value::Num {
             kind: Kind::Unknown | Kind::Matrix(..),
             m,
+            exact,
         } => Value::Num {
             kind: replay::classify(&m),
             m,
+            exact,
         },
         other => other,
     };
