@@ -23,19 +23,26 @@ import tempfile
 import time
 import timeit
 
-import modern_robotics as mr
-import numpy as np
-
-v = np.array([0.3, -1.2, 0.7, 1.0, 2.0, -3.0])
-se3 = mr.VecTose3(v)
-T = mr.MatrixExp6(se3)
-so3 = mr.VecToso3(v[:3])
-R = T[:3, :3]
 N = 20000
+
+
+def book():
+    """The book's library and numpy, imported where they are used: `script(n)`
+    needs neither (benches/instructions.sh imports it without them)."""
+    import modern_robotics as mr
+    import numpy as np
+
+    return mr, np
 
 
 def single_operations():
     """Calls per second of each core operation (compare `cargo bench --bench lie`)."""
+    mr, np = book()
+    v = np.array([0.3, -1.2, 0.7, 1.0, 2.0, -3.0])
+    se3 = mr.VecTose3(v)
+    T = mr.MatrixExp6(se3)
+    so3 = mr.VecToso3(v[:3])
+    R = T[:3, :3]
     for name, f in [
         ("MatrixExp6", lambda: mr.MatrixExp6(se3)),
         ("MatrixLog6", lambda: mr.MatrixLog6(T)),
@@ -65,6 +72,7 @@ def script(n):
 
 def python_script(n, out):
     """The same n statements with the book's library, printing every result."""
+    mr, np = book()
     np.set_printoptions(precision=4, suppress=True)
     S = np.array([0.0, 0.0, 1.0, 0.0, 2.0, 0.0])
     print("S =", S, file=out)

@@ -101,6 +101,35 @@ impl Opts {
         b
     }
 
+    /// The output settings of `--frames`, `--digits`, `--json`, `--exact`,
+    /// `--short` and `--latex`.
+    fn settings(&self) -> Settings {
+        Settings {
+            frames: self.frames,
+            digits: self.digits as usize,
+            json: self.json,
+            exact: self.exact,
+            sym: self.sym_mode(),
+        }
+    }
+
+    /// What the kernel's session gets from the flags, as a script does
+    /// (LANGUAGE.md §§1, 13): the settings, the effects gate, the memory
+    /// budget, and `--timeout` for each cell. Err is the exit code after
+    /// the message.
+    fn kernel_options(&self) -> Result<crate::kernel::cell::Options, i32> {
+        let mut budget = crate::budget::Budget::new();
+        if let Some(m) = self.max_memory {
+            budget = budget.with_max_memory(m);
+        }
+        Ok(crate::kernel::cell::Options {
+            settings: self.settings(),
+            gate: gate(self)?,
+            budget,
+            timeout: self.timeout,
+        })
+    }
+
     /// How symbolic values print (LANGUAGE.md §7).
     fn sym_mode(&self) -> crate::sym::print::Mode {
         use crate::sym::print::Mode;
@@ -184,7 +213,11 @@ enum KernelAction {
 }
 
 /// `chasles kernel …`: serve a notebook or install the kernelspec.
-fn kernel(connection_file: Option<&std::path::Path>, action: Option<&KernelAction>) -> i32 {
+fn kernel(
+    connection_file: Option<&std::path::Path>,
+    action: Option<&KernelAction>,
+    opts: &Opts,
+) -> i32 {
     use crate::kernel::install::{self, Place};
     match (connection_file, action) {
         (None, Some(KernelAction::Install { sys_prefix, .. })) => {
@@ -207,9 +240,10 @@ fn kernel(connection_file: Option<&std::path::Path>, action: Option<&KernelActio
                 }
             }
         }
-        (Some(file), None) => match crate::kernel::serve(file) {
-            Ok(()) => 0,
-            Err(msg) => {
+        (Some(file), None) => match opts.kernel_options().map(|o| crate::kernel::serve(file, o)) {
+            Err(code) => code,
+            Ok(Ok(())) => 0,
+            Ok(Err(msg)) => {
                 emit_err(&format!("chasles: {msg}\n"));
                 2
             }
@@ -238,13 +272,7 @@ fn emit_err(s: &str) {
 
 /// Runs the sources through one session; returns the exit code.
 fn run_sources(sources: &[(String, String)], mode: Mode, opts: &Opts) -> i32 {
-    let settings = Settings {
-        frames: opts.frames,
-        digits: opts.digits as usize,
-        json: opts.json,
-        exact: opts.exact,
-        sym: opts.sym_mode(),
-    };
+    let settings = opts.settings();
     let mut session = Session::new(settings);
     session.budget = opts.budget();
     if mode == Mode::Run {
@@ -392,24 +420,14 @@ where
                 action,
             }),
             None,
-        ) => kernel(connection_file.as_deref(), action.as_ref()),
+        ) => kernel(connection_file.as_deref(), action.as_ref(), &cli.opts),
         (None, None) => {
             if std::io::stdin().is_terminal() {
                 let gate = match gate(&cli.opts) {
                     Ok(g) => g,
                     Err(code) => return code,
                 };
-                crate::repl::run_terminal(
-                    &Settings {
-                        frames: cli.opts.frames,
-                        digits: cli.opts.digits as usize,
-                        json: cli.opts.json,
-                        exact: cli.opts.exact,
-                        sym: cli.opts.sym_mode(),
-                    },
-                    gate,
-                    cli.opts.budget(),
-                )
+                crate::repl::run_terminal(&cli.opts.settings(), gate, cli.opts.budget())
             } else {
                 match load(&["-".into()]) {
                     Ok(s) => run_sources(&s, Mode::Run, &cli.opts),
@@ -417,5 +435,83 @@ where
                 }
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    //! `chasles kernel` honours the flags of a script run (LANGUAGE.md
+    //! §§1, 13): the session the kernel builds from them refuses or
+    //! confines writes and stops a cell at `--timeout`.
+
+    use super::*;
+    use crate::kernel::cell::{Failure, Notebook};
+    use std::time::{Duration, Instant};
+
+    /// The kernel's session as `chasles kernel FLAGS --connection-file F`
+    /// makes it.
+    fn notebook(flags: &[&str]) -> Notebook {
+        let mut args = vec!["chasles", "kernel"];
+        args.extend_from_slice(flags);
+        args.extend(["--connection-file", "kernel.json"]);
+        let cli = Cli::try_parse_from(args).expect("the flags parse");
+        Notebook::with(cli.opts.kernel_options().expect("the options"))
+    }
+
+    fn cell(nb: &mut Notebook, code: &str) -> Result<(), Failure> {
+        nb.execute(code, true, &mut |_| {})
+    }
+
+    #[test]
+    fn the_kernel_refuses_writes_under_no_write() {
+        let mut nb = notebook(&["--no-write"]);
+        let err = cell(&mut nb, "save(draw(Rotz(1)), \"k.svg\")").expect_err("refused");
+        assert!(
+            err.evalue
+                .contains("cannot write 'k.svg': writing files is turned off (--no-write)"),
+            "{err:?}"
+        );
+        // A printed picture is shown inline: nothing to refuse.
+        assert_eq!(cell(&mut nb, "draw(Rotz(1))"), Ok(()));
+        assert!(!std::path::Path::new("k.svg").exists());
+    }
+
+    #[test]
+    fn the_kernel_confines_writes_under_write_dir() {
+        let dir = std::env::temp_dir().join(format!("chasles-kernel-wd-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        let mut nb = notebook(&["--write-dir", &dir.to_string_lossy()]);
+        assert_eq!(cell(&mut nb, "save(draw(Rotz(1)), \"in.svg\")"), Ok(()));
+        assert!(dir.join("in.svg").is_file());
+        let err = cell(&mut nb, "save(draw(Rotz(1)), \"../out.svg\")").expect_err("refused");
+        assert!(err.evalue.contains("(--write-dir)"), "{err:?}");
+        assert!(!dir.join("../out.svg").exists());
+        // Printed pictures stay inline, as without the flag.
+        assert_eq!(cell(&mut nb, "pic = draw(Rotz(1))"), Ok(()));
+        assert!(!dir.join("pic.svg").exists());
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn the_kernel_stops_each_cell_at_the_timeout() {
+        let mut nb = notebook(&["--timeout", "0.2"]);
+        let start = Instant::now();
+        let long = "y = len([det(k * eye(200)) for k in 1:1000000])";
+        let err = cell(&mut nb, long).expect_err("stopped");
+        assert!(
+            err.evalue
+                .contains("the time budget is spent: the run took more than 200 ms (--timeout)"),
+            "{err:?}"
+        );
+        assert!(
+            start.elapsed() < Duration::from_secs(30),
+            "{:?}",
+            start.elapsed()
+        );
+        // The time is each cell's: a later cell runs in full.
+        std::thread::sleep(Duration::from_millis(300));
+        assert_eq!(cell(&mut nb, "x = 1"), Ok(()));
+        assert!(nb.session.env.get("x").is_some());
+        assert!(nb.session.env.get("y").is_none());
     }
 }

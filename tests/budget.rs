@@ -4,69 +4,16 @@
 //! whole run, and Ctrl-C (SIGINT) stops `run` with exit 130 after what was
 //! printed. Every wait is bounded, so a regression fails instead of hanging.
 
-use std::io::Read;
-use std::process::{Child, Command, Stdio};
+use std::process::Command;
 use std::time::{Duration, Instant};
 
-struct Out {
-    code: Option<i32>,
-    stdout: String,
-    stderr: String,
-    took: Duration,
-}
-
-/// Waits for `child` at most `limit`; a hang kills it and fails the test.
-fn finish(mut child: Child, limit: Duration) -> Out {
-    let start = Instant::now();
-    let mut out_pipe = child.stdout.take().expect("stdout is piped");
-    let mut err_pipe = child.stderr.take().expect("stderr is piped");
-    let out = std::thread::spawn(move || {
-        let mut s = String::new();
-        let _ = out_pipe.read_to_string(&mut s);
-        s
-    });
-    let err = std::thread::spawn(move || {
-        let mut s = String::new();
-        let _ = err_pipe.read_to_string(&mut s);
-        s
-    });
-    let status = loop {
-        if let Some(status) = child.try_wait().expect("wait") {
-            break status;
-        }
-        if start.elapsed() > limit {
-            let _ = child.kill();
-            let _ = child.wait();
-            panic!("chasles did not finish within {limit:?}");
-        }
-        std::thread::sleep(Duration::from_millis(20));
-    };
-    Out {
-        code: status.code(),
-        stdout: out.join().unwrap_or_default(),
-        stderr: err.join().unwrap_or_default(),
-        took: start.elapsed(),
-    }
-}
-
-fn spawn(args: &[&str]) -> Child {
-    Command::new(env!("CARGO_BIN_EXE_chasles"))
-        .args(args)
-        .stdin(Stdio::null())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("the binary starts")
-}
-
-fn run(args: &[&str]) -> Out {
-    finish(spawn(args), Duration::from_secs(120))
-}
+mod common;
+use common::{bounded, finish, spawn};
 
 #[test]
 fn a_list_of_large_matrices_is_refused_with_its_size() {
     // Without the budget: "memory allocation failed", SIGABRT.
-    let out = run(&[
+    let out = bounded(&[
         "--keep-going",
         "-e",
         "x = 5\nx = [eye(2000) for k in 1:300]\nx",
@@ -88,7 +35,7 @@ fn a_list_of_large_matrices_is_refused_with_its_size() {
 #[test]
 fn a_grid_of_small_matrices_is_refused_with_its_size() {
     // Without the budget: 3.5 GB in 10 s.
-    let out = run(&["--json", "-e", "[eye(64) for a in 1:1000, b in 1:1000]"]);
+    let out = bounded(&["--json", "-e", "[eye(64) for a in 1:1000, b in 1:1000]"]);
     assert_eq!(out.code, Some(1), "{}", out.stderr);
     let line: serde_json::Value = serde_json::from_str(out.stdout.trim()).expect("a JSON line");
     assert_eq!(line["error"]["kind"], "domain");
@@ -107,7 +54,7 @@ fn max_memory_caps_the_whole_run() {
     let src = "a = len([eye(100) for k in 1:1000])\n\
                b = [eye(100) for k in 1:1000]\n\
                c = [eye(100) for k in 1:1000]";
-    let out = run(&["--max-memory", "100M", "-e", src]);
+    let out = bounded(&["--max-memory", "100M", "-e", src]);
     assert_eq!(out.code, Some(1), "{}", out.stderr);
     assert!(
         out.stdout.starts_with("a = 1000\nb = list of 1000"),
@@ -124,7 +71,7 @@ fn max_memory_caps_the_whole_run() {
         out.stderr
     );
     // A bad size is a usage error.
-    let out = run(&["--max-memory", "lots", "-e", "1"]);
+    let out = bounded(&["--max-memory", "lots", "-e", "1"]);
     assert_eq!(out.code, Some(2), "{}", out.stderr);
     assert!(
         out.stderr.contains("'lots' is not a size"),
@@ -144,7 +91,7 @@ fn timeout_stops_a_long_script() {
     )
     .expect("the script is written");
     let path = script.to_string_lossy().to_string();
-    let out = run(&["--timeout", "1", "--keep-going", "run", &path]);
+    let out = bounded(&["--timeout", "1", "--keep-going", "run", &path]);
     assert_eq!(out.code, Some(1), "{}", out.stderr);
     assert_eq!(out.stdout, "x = 1\n", "the run stops at the time budget");
     assert!(
@@ -157,16 +104,16 @@ fn timeout_stops_a_long_script() {
     // Well before the minutes the statement would take.
     assert!(out.took < Duration::from_secs(60), "{:?}", out.took);
     // `check` takes the flag too.
-    let out = run(&["--timeout", "5", "check", &path]);
+    let out = bounded(&["--timeout", "5", "check", &path]);
     assert_eq!(out.code, Some(0), "{}", out.stderr);
-    let out = run(&["--timeout", "-1", "check", &path]);
+    let out = bounded(&["--timeout", "-1", "check", &path]);
     assert_eq!(out.code, Some(2), "{}", out.stderr);
     let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
 fn a_symbolic_expansion_stops_at_the_timeout() {
-    let out = run(&[
+    let out = bounded(&[
         "--timeout",
         // the expansion takes about 0.45 s in a debug build on a quiet machine
         "0.1",

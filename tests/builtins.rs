@@ -8,28 +8,11 @@ use chasles::builtins;
 use chasles::eval::env::Mode;
 use chasles::session::{Session, Settings};
 
-fn run_json(src: &str) -> Vec<serde_json::Value> {
-    let mut s = Session::new(Settings {
-        json: true,
-        ..Settings::default()
-    });
-    let (out, err, n) = s.run_to_strings("t.chs", src, Mode::Run, false);
-    assert_eq!(n, 0, "{src}\n{err}");
-    out.lines()
-        .map(|l| serde_json::from_str(l).unwrap())
-        .collect()
-}
-
-fn numbers(v: &serde_json::Value) -> Vec<f64> {
-    match v {
-        serde_json::Value::Array(xs) => xs.iter().flat_map(numbers).collect(),
-        x => vec![x.as_f64().expect("a number")],
-    }
-}
+mod common;
+use common::{json, last_numbers, numbers};
 
 fn assert_close(src: &str, want: &[f64], tol: f64) {
-    let lines = run_json(src);
-    let got = numbers(&lines.last().unwrap()["value"]);
+    let got = last_numbers(src);
     assert_eq!(got.len(), want.len(), "{src}: {got:?}");
     for (g, w) in got.iter().zip(want) {
         assert!((g - w).abs() <= tol, "{src}: got {got:?}, want {want:?}");
@@ -229,7 +212,7 @@ fn representations_round_trip() {
 
 #[test]
 fn screw_params_of_a_pure_translation() {
-    let lines = run_json("(q, s, h) = screw_params((0, 0, 0, 0, 0, 2))");
+    let lines = json("(q, s, h) = screw_params((0, 0, 0, 0, 0, 2))");
     let v = &lines[0]["value"];
     assert_eq!(v[2], "inf");
     assert_eq!(numbers(&v[1]), vec![0., 0., 1.]);

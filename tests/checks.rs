@@ -7,13 +7,7 @@ use chasles::repl::commands::execute;
 use chasles::session::{Session, Settings};
 
 mod common;
-use common::run;
-
-fn json(s: &str) -> Vec<serde_json::Value> {
-    s.lines()
-        .map(|l| serde_json::from_str(l).expect("JSON line"))
-        .collect()
-}
+use common::{json_lines, run};
 
 #[test]
 fn comparisons_give_bools() {
@@ -23,7 +17,7 @@ fn comparisons_give_bools() {
         "0.1 + 0.2 == 0.3\n0.1 + 0.2 ~= 0.3\nRotz(pi/2) ≈ [0, -1, 0; 1, 0, 0; 0, 0, 1]\n(1, 2) == (1, 2)\n1e12 ≈ 1e12 + 1\n1 ≈ 1 + 1e-6",
     ]);
     assert_eq!(code, 0);
-    let lines = json(&out);
+    let lines = json_lines(&out);
     let vals: Vec<_> = lines.iter().map(|l| l["value"].clone()).collect();
     assert_eq!(
         vals,
@@ -43,7 +37,7 @@ fn a_failed_assert_stops_with_both_sides() {
 
     let (code, out, _) = run(&["--json", "-e", src]);
     assert_eq!(code, 1);
-    let lines = json(&out);
+    let lines = json_lines(&out);
     assert_eq!(lines.len(), 2, "a passing assert prints no line");
     assert_eq!(lines[1]["line"], 2);
     assert_eq!(lines[1]["error"]["kind"], "assert");
@@ -110,7 +104,7 @@ fn identity_is_sized_by_the_other_side() {
         "R = Rot((1, 2, 2)/3, 0.7)\nR Rᵀ ≈ I\nassert Trans((1, 2, 3)) * inv(Trans((1, 2, 3))) == I",
     ]);
     assert_eq!(code, 0, "{err}");
-    let lines = json(&out);
+    let lines = json_lines(&out);
     assert_eq!(lines[1]["value"], serde_json::Value::Bool(true));
 }
 

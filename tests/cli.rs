@@ -2,41 +2,8 @@
 //! JSON lines, exit codes, `check`, `-e`, `--frames`, `--digits`,
 //! `--keep-going`, and printed values parsing back to the same value.
 
-use std::io::Write;
-use std::process::{Command, Stdio};
-
-struct Out {
-    code: i32,
-    stdout: String,
-    stderr: String,
-}
-
-fn chasles(args: &[&str], stdin: Option<&str>) -> Out {
-    let mut cmd = Command::new(env!("CARGO_BIN_EXE_chasles"));
-    cmd.args(args)
-        .env("NO_COLOR", "1")
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped());
-    let mut child = cmd.spawn().expect("chasles starts");
-    if let Some(mut input) = child.stdin.take() {
-        input
-            .write_all(stdin.unwrap_or("").as_bytes())
-            .expect("stdin");
-    }
-    let out = child.wait_with_output().expect("chasles ends");
-    Out {
-        code: out.status.code().unwrap_or(-1),
-        stdout: String::from_utf8_lossy(&out.stdout).into_owned(),
-        stderr: String::from_utf8_lossy(&out.stderr).into_owned(),
-    }
-}
-
-fn json_lines(s: &str) -> Vec<serde_json::Value> {
-    s.lines()
-        .map(|l| serde_json::from_str(l).expect("each line is JSON"))
-        .collect()
-}
+mod common;
+use common::{chasles, json_lines};
 
 fn close(a: &serde_json::Value, b: f64) -> bool {
     (a.as_f64().expect("a number") - b).abs() < 1e-12
@@ -47,7 +14,7 @@ fn json_lines_follow_the_schema() {
     let src =
         "T_ab = Trans((1, 0, 0))\nT_bc = Trans((0, 2, 0))\nT_ac = T_ab * T_bc\npi/2\nT_ab * T_ab\n";
     let out = chasles(&["--json", "--keep-going", "-e", src], None);
-    assert_eq!(out.code, 1);
+    assert_eq!(out.code, Some(1));
     let lines = json_lines(&out.stdout);
     assert_eq!(lines.len(), 5);
     assert_eq!(lines[2]["line"], 3);
@@ -83,7 +50,7 @@ fn json_values_are_full_precision() {
 fn run_stops_at_the_first_error_unless_keep_going() {
     let src = "x = 1\ny = nope\nz = 3\n";
     let stop = chasles(&["-e", src], None);
-    assert_eq!(stop.code, 1);
+    assert_eq!(stop.code, Some(1));
     assert!(stop.stdout.contains("x = 1"));
     assert!(!stop.stdout.contains("z = 3"));
     assert!(
@@ -93,7 +60,7 @@ fn run_stops_at_the_first_error_unless_keep_going() {
         stop.stderr
     );
     let go = chasles(&["--keep-going", "-e", src], None);
-    assert_eq!(go.code, 1);
+    assert_eq!(go.code, Some(1));
     assert!(go.stdout.contains("z = 3"));
 }
 
@@ -108,7 +75,7 @@ fn check_reports_every_error_without_numbers() {
     )
     .unwrap();
     let out = chasles(&["check", path.to_str().unwrap()], None);
-    assert_eq!(out.code, 1);
+    assert_eq!(out.code, Some(1));
     assert_eq!(
         out.stderr.matches("frame error").count(),
         2,
@@ -118,7 +85,7 @@ fn check_reports_every_error_without_numbers() {
     assert!(out.stdout.contains("2 errors"), "{}", out.stdout);
     std::fs::write(&path, "given T_ab, T_bc : SE3\nT_ac = T_ab * T_bc\n").unwrap();
     let ok = chasles(&["check", path.to_str().unwrap()], None);
-    assert_eq!(ok.code, 0, "{}", ok.stderr);
+    assert_eq!(ok.code, Some(0), "{}", ok.stderr);
     assert!(ok.stdout.contains("frames consistent"));
     std::fs::remove_dir_all(&dir).ok();
 }
@@ -127,7 +94,7 @@ fn check_reports_every_error_without_numbers() {
 fn frames_warn_and_off() {
     let src = "T_ab = Trans((1, 0, 0))\nT_cb = Trans((0, 1, 0))\nT_ab * T_cb\n";
     let warn = chasles(&["--frames", "warn", "-e", src], None);
-    assert_eq!(warn.code, 0);
+    assert_eq!(warn.code, Some(0));
     assert!(
         warn.stderr.contains("warning: frames do not cancel"),
         "{}",
@@ -135,10 +102,10 @@ fn frames_warn_and_off() {
     );
     assert!(warn.stdout.contains("[1, 0, 0, 1"), "{}", warn.stdout);
     let off = chasles(&["--frames", "off", "-e", src], None);
-    assert_eq!(off.code, 0);
+    assert_eq!(off.code, Some(0));
     assert!(off.stderr.is_empty(), "{}", off.stderr);
     let bad = chasles(&["--frames", "loose", "-e", "1"], None);
-    assert_eq!(bad.code, 2);
+    assert_eq!(bad.code, Some(2));
 }
 
 #[test]
@@ -160,26 +127,26 @@ fn digits_controls_decimals() {
 
 #[test]
 fn piped_stdin_runs_like_run() {
-    let out = chasles(&[], Some("Rotz(pi/2) * (1, 0, 0)\n"));
-    assert_eq!(out.code, 0);
+    let out = chasles(&[], Some(b"Rotz(pi/2) * (1, 0, 0)\n"));
+    assert_eq!(out.code, Some(0));
     assert_eq!(out.stdout, "(0, 1, 0)  : 3-vector\n");
-    let dash = chasles(&["run", "-"], Some("1 + 1\n"));
+    let dash = chasles(&["run", "-"], Some(b"1 + 1\n"));
     assert_eq!(dash.stdout, "2\n");
 }
 
 #[test]
 fn usage_errors_exit_2() {
-    assert_eq!(chasles(&["run"], None).code, 2);
-    assert_eq!(chasles(&["--digits", "x", "-e", "1"], None).code, 2);
+    assert_eq!(chasles(&["run"], None).code, Some(2));
+    assert_eq!(chasles(&["--digits", "x", "-e", "1"], None).code, Some(2));
     let missing = chasles(&["run", "/nonexistent/file.chs"], None);
-    assert_eq!(missing.code, 2);
+    assert_eq!(missing.code, Some(2));
     assert!(
         missing.stderr.contains("no such file"),
         "{}",
         missing.stderr
     );
     let dir = chasles(&["run", "."], None);
-    assert_eq!(dir.code, 2);
+    assert_eq!(dir.code, Some(2));
     assert!(dir.stderr.contains("directory"), "{}", dir.stderr);
 }
 
@@ -212,7 +179,7 @@ fn printed_values_parse_back() {
 fn frame_error_names_both_frames_and_the_fix() {
     let src = "T_ab = Trans((1, 0, 0))\nT_cb = Trans((0, 1, 0))\nT_ab * T_cb\n";
     let out = chasles(&["-e", src], None);
-    assert_eq!(out.code, 1);
+    assert_eq!(out.code, Some(1));
     let err = out.stderr;
     assert!(
         err.starts_with("<-e>:3:6: frame error: frames do not cancel\n"),
@@ -249,7 +216,7 @@ fn derive_finds_a_chain_and_names_reachable_frames() {
         ],
         None,
     );
-    assert_eq!(none.code, 1);
+    assert_eq!(none.code, Some(1));
     assert!(
         none.stderr
             .contains("no chain of known transforms from {a} to {d}"),

@@ -8,25 +8,12 @@
 use chasles::eval::env::Mode;
 use chasles::session::{Session, Settings};
 
-/// Runs `src` in a fresh session, failing on any error; returns (stdout,
-/// stderr).
-fn run(src: &str) -> (String, String) {
-    let mut s = Session::new(Settings::default());
-    let (out, err, n) = s.run_to_strings("t.chs", src, Mode::Run, false);
-    assert_eq!(n, 0, "{src}\n{err}");
-    (out, err)
-}
+mod common;
+use common::{error, outputs, printed};
 
-/// The printed lines of `src` after its first line (the `given`).
+/// The printed lines of `src`.
 fn lines(src: &str) -> Vec<String> {
-    run(src).0.lines().map(str::to_string).collect()
-}
-
-fn fails(src: &str) -> String {
-    let mut s = Session::new(Settings::default());
-    let (_, err, n) = s.run_to_strings("t.chs", src, Mode::Run, false);
-    assert!(n > 0, "{src} should fail");
-    err
+    printed(src).lines().map(str::to_string).collect()
 }
 
 #[test]
@@ -46,7 +33,7 @@ fn tan_cot_sec_csc_are_quotients_of_sin_and_cos() {
         ["1", "1", "2", "2"]
     );
     for pole in ["tan(pi/2)", "cot(0)", "sec(pi/2)", "csc(pi)"] {
-        assert!(fails(pole).contains("domain error"), "{pole}");
+        assert!(error(pole).contains("domain error"), "{pole}");
     }
     // bound later, the quotient is the number
     let out = lines("given t : scalar\nx = tan(t) + cot(t)\nt = 0.3\nx");
@@ -69,7 +56,7 @@ fn quotients_cancel_common_factors() {
             "1"
         ]
     );
-    let (out, _) = run("given a, b : scalar\n(1 + a)/(a + b sin(a)) == (1 + a)/(a + b sin(a))");
+    let (out, _) = outputs("given a, b : scalar\n(1 + a)/(a + b sin(a)) == (1 + a)/(a + b sin(a))");
     assert_eq!(out.trim(), "true");
 }
 
@@ -88,12 +75,13 @@ fn simplify_expand_and_subs() {
             "0.4546"
         ]
     );
-    assert!(fails("given a : scalar\nsubs(a, 2, 3)").contains("replaces a symbol"));
+    assert!(error("given a : scalar\nsubs(a, 2, 3)").contains("replaces a symbol"));
 }
 
 #[test]
 fn exp_of_a_compound_angle_is_the_closed_form() {
-    let (out, _) = run("given t1, t2, L1 : scalar
+    let (out, _) = outputs(
+        "given t1, t2, L1 : scalar
         w = (0, 0, 1)
         exp([w] (t1 + t2)) == Rotz(t1 + t2)
         S2 = (0, 0, 1, 0, -L1, 0)
@@ -101,7 +89,8 @@ fn exp_of_a_compound_angle_is_the_closed_form() {
         E == exp([S2] t2) exp([S2] (-pi/2))
         t2 = 0.4
         L1 = 2
-        E");
+        E",
+    );
     assert!(!out.contains("exp("), "{out}");
     assert!(
         out.contains("S2 = (0, 0, 1, 0, -L1, 0)  : screw axis"),
@@ -188,12 +177,14 @@ fn roots_of_squares_are_absolute_values() {
 
 #[test]
 fn inverse_maps_of_a_symbolic_rotation_on_their_branch() {
-    let (out, err) = run("given t, a, b, c : scalar
+    let (out, err) = outputs(
+        "given t, a, b, c : scalar
         log(Rotz(t))
         euler_zyx(Rotz(a) Roty(b) Rotx(c))
         quat(Rotz(t))
         cayley(Rotz(t))
-        euler_zxz(rot_zxz(a, b, c))");
+        euler_zxz(rot_zxz(a, b, c))",
+    );
     assert!(
         out.starts_with("[0, -t, 0\n t, 0,  0\n 0, 0,  0]  : so(3)\na\nb\nc\n"),
         "{out}"
@@ -207,15 +198,17 @@ fn inverse_maps_of_a_symbolic_rotation_on_their_branch() {
     assert!(err.contains("cos(b) > 0 and a, b, c in (−π, π]"), "{err}");
     assert!(err.contains("sin(b) > 0"), "{err}");
     // no single axis: kept as a call, never a wrong closed form
-    let (out, _) = run("given a, b : scalar\nlog(Rotz(a) Rotx(b))");
+    let (out, _) = outputs("given a, b : scalar\nlog(Rotz(a) Rotx(b))");
     assert!(out.starts_with("log("), "{out}");
     // the closed form agrees with the numbers where its branch holds
-    let (out, _) = run("given a, b, c : scalar
+    let (out, _) = outputs(
+        "given a, b, c : scalar
         (x, y, z) = euler_zyx(Rotz(a) Roty(b) Rotx(c))
         a = 0.3
         b = -0.4
         c = 2.5
-        (x, y, z)");
+        (x, y, z)",
+    );
     assert!(out.contains("\n(0.3, -0.4, 2.5)"), "{out}");
 }
 
@@ -231,5 +224,5 @@ fn symbolic_inverse_and_labels() {
     assert_eq!(out.last().map(String::as_str), Some("true"));
     let out = lines("given t, a, b : scalar\n[cos(t), -sin(t), a; sin(t), cos(t), b; 0, 0, 1]");
     assert!(out[2].ends_with(": SE(2)"), "{out:?}");
-    assert!(fails("given a : scalar\n[a, a; a, a]^-1").contains("singular"));
+    assert!(error("given a : scalar\n[a, a; a, a]^-1").contains("singular"));
 }

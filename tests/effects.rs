@@ -3,36 +3,15 @@
 //! confines them (absolute paths, `..` and links leading out are refused),
 //! and the REPL's live preview writes nothing, whatever is typed.
 
-use std::path::{Path, PathBuf};
-use std::process::Command;
+use std::path::Path;
 
 use chasles::effects::Gate;
 use chasles::repl::commands::execute;
 use chasles::repl::complete::{hint, preview};
 use chasles::session::{Session, Settings};
 
-/// A fresh, empty scratch folder under the target folder.
-fn tmp(name: &str) -> PathBuf {
-    let d = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("effects-{name}"));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).expect("a temporary folder");
-    d
-}
-
-/// Runs the binary in `dir`: exit code, stdout, stderr.
-fn cli(args: &[&str], dir: &Path) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_chasles"))
-        .args(args)
-        .current_dir(dir)
-        .env("NO_COLOR", "1")
-        .output()
-        .expect("the binary runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into(),
-        String::from_utf8_lossy(&out.stderr).into(),
-    )
-}
+mod common;
+use common::{run_in, scratch};
 
 /// Every file under `dir`, as paths relative to it, sorted.
 fn files(dir: &Path) -> Vec<String> {
@@ -53,14 +32,14 @@ fn files(dir: &Path) -> Vec<String> {
 
 #[test]
 fn no_write_refuses_every_write_with_a_clear_error() {
-    let dir = tmp("no-write");
+    let dir = scratch("no-write");
     for (src, name) in [
         ("save(draw(Rotz(1)), \"keep.svg\")", "keep.svg"),
         ("draw(Rotz(1))", "draw-1.svg"),
         ("pic = draw(Rotz(1))", "pic.svg"),
         ("save(draw(Rotz(1)), \"k.png\")", "k.png"),
     ] {
-        let (code, out, err) = cli(&["--no-write", "-e", src], &dir);
+        let (code, out, err) = run_in(&["--no-write", "-e", src], &dir);
         assert_eq!(code, 1, "{src}: {out}{err}");
         assert!(
             err.contains(&format!(
@@ -69,7 +48,7 @@ fn no_write_refuses_every_write_with_a_clear_error() {
             "{src}: {err}"
         );
         // JSON names the error's kind.
-        let (code, out, _) = cli(&["--no-write", "--json", "-e", src], &dir);
+        let (code, out, _) = run_in(&["--no-write", "--json", "-e", src], &dir);
         assert_eq!(code, 1);
         assert!(
             out.contains("\"kind\":\"domain\"") && out.contains("--no-write"),
@@ -77,11 +56,11 @@ fn no_write_refuses_every_write_with_a_clear_error() {
         );
     }
     // Values that are no pictures print as before.
-    let (code, out, _) = cli(&["--no-write", "-e", "x = 2 + 2"], &dir);
+    let (code, out, _) = run_in(&["--no-write", "-e", "x = 2 + 2"], &dir);
     assert_eq!((code, out.as_str()), (0, "x = 4\n"));
     // --no-write with a folder to write into is bad usage.
     for flag in ["--write-dir", "--draw-dir"] {
-        let (code, _, err) = cli(&["--no-write", flag, "out", "-e", "1"], &dir);
+        let (code, _, err) = run_in(&["--no-write", flag, "out", "-e", "1"], &dir);
         assert_eq!(code, 2, "{err}");
         assert!(err.contains("cannot be used with"), "{err}");
     }
@@ -90,8 +69,8 @@ fn no_write_refuses_every_write_with_a_clear_error() {
 
 #[test]
 fn write_dir_confines_every_write_and_refuses_escapes() {
-    let dir = tmp("write-dir");
-    let outside = tmp("write-dir-outside");
+    let dir = scratch("write-dir");
+    let outside = scratch("write-dir-outside");
     let jail = dir.join("jail");
     std::fs::create_dir_all(jail.join("sub")).unwrap();
     #[cfg(unix)]
@@ -121,7 +100,7 @@ fn write_dir_confines_every_write_and_refuses_escapes() {
     ];
     for (name, why) in &cases {
         let src = format!("save(draw(Rotz(1)), \"{name}\")");
-        let (code, out, err) = cli(&["--write-dir", "jail", "-e", &src], &dir);
+        let (code, out, err) = run_in(&["--write-dir", "jail", "-e", &src], &dir);
         assert_eq!(code, 1, "{name}: {out}{err}");
         assert!(err.contains(why), "{name}: {err}");
         assert!(err.contains("cannot write '"), "{name}: {err}");
@@ -133,7 +112,7 @@ fn write_dir_confines_every_write_and_refuses_escapes() {
     // into DIR too, and --draw-dir is a folder inside it.
     let src =
         "pic = draw(Rotz(1))\nsave(pic, \"sub/a.svg\")\nsave(pic, \"in/b.svg\")\ndraw(Rotx(1))";
-    let (code, out, err) = cli(&["--write-dir", "jail", "-e", src], &dir);
+    let (code, out, err) = run_in(&["--write-dir", "jail", "-e", src], &dir);
     assert_eq!(code, 0, "{err}");
     for shown in [
         "→ jail/pic.svg",
@@ -143,7 +122,7 @@ fn write_dir_confines_every_write_and_refuses_escapes() {
     ] {
         assert!(out.contains(shown), "{shown}: {out}");
     }
-    let (code, out, err) = cli(
+    let (code, out, err) = run_in(
         &[
             "--write-dir",
             "jail",
@@ -168,20 +147,20 @@ fn write_dir_confines_every_write_and_refuses_escapes() {
     }
     // A --draw-dir leading out of the write dir is bad usage.
     for d in ["../figs", "/tmp", "out"] {
-        let (code, _, err) = cli(&["--write-dir", "jail", "--draw-dir", d, "-e", "1"], &dir);
+        let (code, _, err) = run_in(&["--write-dir", "jail", "--draw-dir", d, "-e", "1"], &dir);
         assert_eq!(code, 2, "{d}: {err}");
         assert!(err.contains("cannot use --draw-dir"), "{d}: {err}");
     }
     assert!(files(&outside).is_empty(), "{:?}", files(&outside));
     // The write dir is created when missing.
-    let (code, _, err) = cli(&["--write-dir", "new/deep", "-e", "draw(Rotz(1))"], &dir);
+    let (code, _, err) = run_in(&["--write-dir", "new/deep", "-e", "draw(Rotz(1))"], &dir);
     assert_eq!(code, 0, "{err}");
     assert!(dir.join("new/deep/draw-1.svg").is_file());
 }
 
 #[test]
 fn repl_save_goes_through_the_gate() {
-    let dir = tmp("repl-save");
+    let dir = scratch("repl-save");
     let mut s = Session::new(Settings::default());
     s.gate = Gate::deny();
     execute(&mut s, "x = 1");
@@ -211,7 +190,7 @@ fn repl_save_goes_through_the_gate() {
 
 #[test]
 fn the_live_preview_writes_nothing() {
-    let dir = tmp("preview");
+    let dir = scratch("preview");
     let mut s = Session::new(Settings::default());
     // The session itself would write pictures into `dir`.
     s.gate = Gate::anywhere(Some(dir.clone()));
@@ -243,17 +222,41 @@ fn the_live_preview_writes_nothing() {
 
 #[test]
 fn a_file_name_of_250_bytes_is_saved() {
-    let dir = tmp("long-name");
+    let dir = scratch("long-name");
     let name = format!("{}.svg", "n".repeat(246));
     assert_eq!(name.len(), 250);
     let src = format!("save(draw(Rotz(1)), \"{name}\")");
-    let (code, out, err) = cli(&["-e", &src], &dir);
+    let (code, out, err) = run_in(&["-e", &src], &dir);
     assert_eq!(code, 0, "{err}");
     assert!(out.contains(&name), "{out}");
     assert_eq!(files(&dir), [name]);
     // Too long for the file system: a clear error, no panic.
     let src = format!("save(draw(Rotz(1)), \"{}.svg\")", "n".repeat(300));
-    let (code, _, err) = cli(&["-e", &src], &dir);
+    let (code, _, err) = run_in(&["-e", &src], &dir);
     assert_eq!(code, 1, "{err}");
     assert!(err.contains("domain error: cannot write"), "{err}");
+}
+
+/// The REPL's history is a write like any other (§§1, 11): none under
+/// `--no-write`; under `--write-dir` only a file inside DIR (a relative
+/// name is taken inside it); anywhere otherwise.
+#[test]
+fn history_is_kept_only_where_the_gate_allows() {
+    let dir = scratch("history");
+    let outside = scratch("history-outside").join("history.txt");
+    assert_eq!(Gate::deny().history(&outside), None);
+    assert_eq!(
+        Gate::anywhere(Some(".".into())).history(&outside),
+        Some(outside.clone())
+    );
+    let within = Gate::within(&dir, None).expect("a folder");
+    let real = std::fs::canonicalize(&dir).expect("exists");
+    assert_eq!(within.history(&outside), None);
+    assert_eq!(within.history(std::path::Path::new("../h.txt")), None);
+    assert_eq!(within.history(&dir.join("h.txt")), Some(real.join("h.txt")));
+    assert_eq!(
+        within.history(std::path::Path::new("sub/h.txt")),
+        Some(real.join("sub").join("h.txt"))
+    );
+    assert!(real.join("sub").is_dir(), "its folder is made inside DIR");
 }

@@ -12,11 +12,8 @@ use std::time::Duration;
 use rexpect::reader::Options;
 use rexpect::session::{PtySession, spawn_with_options};
 
-fn expect(p: &mut PtySession, text: &str) {
-    if let Err(e) = p.exp_string(text) {
-        panic!("waiting for {text:?}: {e}");
-    }
-}
+mod common;
+use common::pty::{TIMEOUT_MS, expect};
 
 /// Types `line` one character at a time, as a person does, so that the
 /// line editor refreshes its hint (the preview) after every key.
@@ -51,7 +48,7 @@ fn typing_a_save_line_writes_nothing_before_enter() {
         .env("TERM", "xterm")
         .env("CHASLES_HISTORY", dir.join("history.txt"));
     let options = Options::new()
-        .timeout_ms(Some(60_000))
+        .timeout_ms(Some(TIMEOUT_MS))
         .strip_ansi_escape_codes(true);
     let mut p = spawn_with_options(cmd, options).expect("the binary starts on a pty");
     expect(&mut p, ">>> ");
@@ -84,4 +81,42 @@ fn typing_a_save_line_writes_nothing_before_enter() {
     let _ = p.exp_eof();
     let _ = p.process().wait();
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Under `--no-write` the REPL keeps no history file (LANGUAGE.md §§1,
+/// 11): the line editor's history is a write like `save`'s; without the
+/// flag the same session writes it.
+#[test]
+fn no_write_keeps_no_history() {
+    for (flags, kept) in [(&["--no-write"][..], false), (&[][..], true)] {
+        let dir =
+            std::env::temp_dir().join(format!("chasles-history-pty-{}-{kept}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).expect("a temporary folder");
+        let history = dir.join("history.txt");
+        let mut cmd = Command::new(env!("CARGO_BIN_EXE_chasles"));
+        cmd.args(flags)
+            .current_dir(&dir)
+            .env("NO_COLOR", "1")
+            .env("TERM", "xterm")
+            .env("CHASLES_HISTORY", &history);
+        let options = Options::new()
+            .timeout_ms(Some(TIMEOUT_MS))
+            .strip_ansi_escape_codes(true);
+        let mut p = spawn_with_options(cmd, options).expect("the binary starts on a pty");
+        expect(&mut p, ">>> ");
+        p.send("x = 41 + 1\r").expect("the terminal takes input");
+        p.flush().expect("the terminal takes input");
+        expect(&mut p, "x = 42");
+        expect(&mut p, ">>> ");
+        p.send_control('d').expect("Ctrl-D is sent");
+        let _ = p.exp_eof();
+        let _ = p.process().wait();
+        assert_eq!(history.exists(), kept, "{flags:?}");
+        if kept {
+            let text = std::fs::read_to_string(&history).expect("readable");
+            assert!(text.contains("x = 41 + 1"), "{text}");
+        }
+        let _ = std::fs::remove_dir_all(&dir);
+    }
 }

@@ -3,21 +3,8 @@
 //! when the difference is exactly zero, exact numbers stay exact with and
 //! without symbols, and large coefficients are never rounding noise.
 
-use chasles::eval::env::Mode;
-use chasles::session::{Session, Settings};
-
-/// The JSON lines of `src`, failing on any error.
-fn json(src: &str) -> Vec<serde_json::Value> {
-    let mut s = Session::new(Settings {
-        json: true,
-        ..Settings::default()
-    });
-    let (out, err, n) = s.run_to_strings("t.chs", src, Mode::Run, false);
-    assert_eq!(n, 0, "{src}\n{err}");
-    out.lines()
-        .map(|l| serde_json::from_str(l).expect("one JSON object a line"))
-        .collect()
-}
+mod common;
+use common::json;
 
 /// The value of the last statement of `src`.
 fn last(src: &str) -> serde_json::Value {

@@ -5,22 +5,13 @@
 //! snapshotted the same way, one folder per error kind.
 
 use std::path::Path;
-use std::process::Command;
 
+mod common;
+use common::{command, report};
+
+/// The whole output of the binary with `args`, as snapshotted.
 fn run(args: &[&str]) -> String {
-    let out = Command::new(env!("CARGO_BIN_EXE_chasles"))
-        .args(args)
-        .env("NO_COLOR", "1")
-        .output()
-        .expect("the chasles binary runs");
-    format!(
-        "exit: {}\n--- stdout\n{}--- stderr\n{}",
-        out.status
-            .code()
-            .map_or("signal".to_string(), |c| c.to_string()),
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
-    )
+    report(&command(args).output().expect("the chasles binary runs"))
 }
 
 fn rel(path: &Path) -> String {

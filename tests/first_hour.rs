@@ -3,7 +3,7 @@
 //! way, MATLAB and Python habits, `--exact`, θ = π logs and small hints.
 
 mod common;
-use common::run;
+use common::{json_lines, run};
 
 fn eval(src: &str) -> String {
     let (code, out, err) = run(&["-e", src]);
@@ -11,11 +11,9 @@ fn eval(src: &str) -> String {
     out
 }
 
+/// The `--json` lines of `chasles --json -e SRC`.
 fn json(src: &str) -> Vec<serde_json::Value> {
-    let (_, out, _) = run(&["--json", "-e", src]);
-    out.lines()
-        .map(|l| serde_json::from_str(l).expect("JSON line"))
-        .collect()
+    json_lines(&run(&["--json", "-e", src]).1)
 }
 
 #[test]

@@ -4,6 +4,9 @@
 use chasles::eval::env::Mode;
 use chasles::session::{Session, Settings};
 
+mod common;
+use common::printed;
+
 /// The frames and JSON type of a result, or an error's kind and message.
 type Outcome = Result<(Vec<String>, String), (String, String)>;
 
@@ -144,23 +147,15 @@ fn contains_all(out: &str, wants: &[&str]) {
     }
 }
 
-/// The text output of running `src`, which must have no error.
-fn text(src: &str) -> String {
-    let mut s = Session::new(Settings::default());
-    let (out, err, n) = s.run_to_strings("t.chs", src, Mode::Run, false);
-    assert_eq!(n, 0, "{err}");
-    out
-}
-
 #[test]
 fn symbols_simplify() {
-    let out = text("given T_ab, T_bc, T_cd : SE3\ninv(T_ab) * T_ab\nT_ab * T_bc * T_cd\n");
+    let out = printed("given T_ab, T_bc, T_cd : SE3\ninv(T_ab) * T_ab\nT_ab * T_bc * T_cd\n");
     assert_eq!(out, "I  : SE(3) {b}←{b}\nT_ab T_bc T_cd  : SE(3) {a}←{d}\n");
 }
 
 #[test]
 fn destructured_parts_keep_their_frames() {
-    let out = text(
+    let out = printed(
         "T_ab = SE3(Rotz(1), (1, 2, 3))\n(R, p) = TransToRp(T_ab)\n\
          (w, theta) = AxisAng3(MatrixLog3(R))\n(w_s, t) = AxisAng3((0, 0, 2))\n",
     );
@@ -178,7 +173,7 @@ fn destructured_parts_keep_their_frames() {
 fn numbers_bound_later_reach_derived_symbols() {
     // §7: X is built over symbols; once they have numbers, X has them too,
     // partly numeric first, then fully.
-    let out = text(
+    let out = printed(
         "given T_ab, T_bc : SE3\ngiven theta : scalar\ngiven V_b : twist\n\
          X = T_ab * T_bc\nY = Rotz(theta) * Rotx(2 * theta)\nW = Ad(T_ab) * V_b\n\
          T_ab = Trans((1, 0, 0))\nX\nT_bc = Trans((0, 1, 0))\nX\n\
@@ -208,7 +203,7 @@ fn numbers_bound_later_reach_derived_symbols() {
 
 #[test]
 fn derive_again_shows_the_chain() {
-    let out = text(
+    let out = printed(
         "given T_ab, T_bc : SE3\nderive T_ac\nderive T_ac\nT_xy = Trans((1, 2, 3))\nderive T_xy\n",
     );
     assert_eq!(out.matches("T_ac = T_ab * T_bc\n").count(), 2, "{out}");

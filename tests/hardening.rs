@@ -11,88 +11,26 @@
 //!   closed stdout;
 //! - a Session keeps its bindings after every kind of error.
 
-use std::io::{Read, Write};
+use std::io::Read;
 use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
+use std::process::Stdio;
 use std::time::{Duration, Instant};
 
 use chasles::eval::env::Mode;
 use chasles::session::{Session, Settings};
 use proptest::prelude::*;
 
+mod common;
+use common::{Out, bounded, chasles, command};
+
 // ---------------------------------------------------------------------------
 // Helpers
 // ---------------------------------------------------------------------------
 
-/// The output of one run of the binary.
-#[derive(Debug)]
-struct Out {
-    code: Option<i32>,
-    stdout: String,
-    stderr: String,
-}
-
-/// Runs the binary with `args` (and `stdin`), failing the test instead of
-/// blocking if it has not finished within `limit`.
-fn run_with(args: &[&str], stdin: Option<&[u8]>, limit: Duration) -> Out {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_chasles"))
-        .args(args)
-        .env("NO_COLOR", "1")
-        .stdin(if stdin.is_some() {
-            Stdio::piped()
-        } else {
-            Stdio::null()
-        })
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("the chasles binary starts");
-    if let Some(bytes) = stdin {
-        let mut pipe = child.stdin.take().expect("stdin is piped");
-        let bytes = bytes.to_vec();
-        std::thread::spawn(move || {
-            let _ = pipe.write_all(&bytes);
-        });
-    }
-    let mut out_pipe = child.stdout.take().expect("stdout is piped");
-    let mut err_pipe = child.stderr.take().expect("stderr is piped");
-    let out_reader = std::thread::spawn(move || {
-        let mut s = Vec::new();
-        let _ = out_pipe.read_to_end(&mut s);
-        s
-    });
-    let err_reader = std::thread::spawn(move || {
-        let mut s = Vec::new();
-        let _ = err_pipe.read_to_end(&mut s);
-        s
-    });
-    let start = Instant::now();
-    let status = loop {
-        if let Some(status) = child.try_wait().expect("wait") {
-            break status;
-        }
-        if start.elapsed() > limit {
-            let _ = child.kill();
-            let _ = child.wait();
-            panic!("chasles {args:?} did not finish within {limit:?} (a hang)");
-        }
-        std::thread::sleep(Duration::from_millis(20));
-    };
-    Out {
-        code: status.code(),
-        stdout: String::from_utf8_lossy(&out_reader.join().unwrap_or_default()).into_owned(),
-        stderr: String::from_utf8_lossy(&err_reader.join().unwrap_or_default()).into_owned(),
-    }
-}
-
-fn run(args: &[&str]) -> Out {
-    run_with(args, None, Duration::from_secs(60))
-}
-
 /// `chasles -e SRC`.
 fn eval(src: &str) -> Out {
-    run(&["-e", src])
+    bounded(&["-e", src])
 }
 
 /// Asserts a clean failure: `code`, the `needle` in stderr, no panic.
@@ -391,8 +329,8 @@ fn deep_nesting_is_a_syntax_error_in_every_mode() {
             "syntax error: expression nested too deeply (limit 200)",
         );
         let f = dir.file(&format!("deep{i}.chs"), src.as_bytes());
-        assert_fails(&run(&["check", &f]), 1, "expression nested too deeply");
-        assert_fails(&run(&["run", &f]), 1, "expression nested too deeply");
+        assert_fails(&bounded(&["check", &f]), 1, "expression nested too deeply");
+        assert_fails(&bounded(&["run", &f]), 1, "expression nested too deeply");
     }
 }
 
@@ -604,7 +542,7 @@ fn long_lines_are_refused_and_long_files_run() {
     // A 2 MB statement: refused quickly with a syntax error.
     let long = format!("x = 1{}\ny = 2\ny\n", " + 1".repeat(500_000));
     let f = dir.file("long_line.chs", long.as_bytes());
-    let out = run(&["run", "--keep-going", &f]);
+    let out = bounded(&["run", "--keep-going", &f]);
     assert_fails(&out, 1, "syntax error: statement too long (2000005 bytes");
     assert!(out.stdout.contains("y = 2"), "{out:#?}");
     // A long comment is fine.
@@ -612,14 +550,14 @@ fn long_lines_are_refused_and_long_files_run() {
         "long_comment.chs",
         format!("x = 1 # {}\nx\n", "c".repeat(3_000_000)).as_bytes(),
     );
-    let out = run(&["run", &f]);
+    let out = bounded(&["run", &f]);
     assert_eq!(out.code, Some(0), "{out:#?}");
     assert_eq!(out.stdout, "x = 1\n1\n");
     // Many statements: linear, all run, the line numbers right at the end.
     let mut many = "y = 2\n".repeat(50_000);
     many.push_str("T_ab * T_cb\n");
     let f = dir.file("many.chs", many.as_bytes());
-    let out = run(&["check", &f]);
+    let out = bounded(&["check", &f]);
     assert_fails(&out, 1, "many.chs:50001:1: name error");
 }
 
@@ -630,7 +568,7 @@ fn files_over_100_mb_are_refused() {
     let f = std::fs::File::create(&path).expect("create");
     f.set_len(100 * 1024 * 1024 + 1).expect("sparse file");
     let path = path.to_string_lossy().into_owned();
-    let out = run(&["run", &path]);
+    let out = bounded(&["run", &path]);
     assert_fails(
         &out,
         2,
@@ -737,13 +675,13 @@ fn ieee_values_come_with_a_warning() {
 fn missing_and_directory_exit_2() {
     let dir = Scratch::new("files");
     let missing = dir.0.join("missing.chs").to_string_lossy().into_owned();
-    assert_fails(&run(&["run", &missing]), 2, "no such file");
-    assert_fails(&run(&["check", &missing]), 2, "no such file");
+    assert_fails(&bounded(&["run", &missing]), 2, "no such file");
+    assert_fails(&bounded(&["check", &missing]), 2, "no such file");
     let d = dir.0.to_string_lossy().into_owned();
-    assert_fails(&run(&["run", &d]), 2, "it is a directory");
+    assert_fails(&bounded(&["run", &d]), 2, "it is a directory");
     // An unreadable second file stops before running anything.
     let ok = dir.file("ok.chs", b"x = 1\n");
-    let out = run(&["run", &ok, &missing]);
+    let out = bounded(&["run", &ok, &missing]);
     assert_fails(&out, 2, "no such file");
     assert!(out.stdout.is_empty(), "{out:#?}");
 }
@@ -756,11 +694,11 @@ fn unreadable_file_exits_2() {
     std::fs::set_permissions(&f, std::fs::Permissions::from_mode(0o000)).expect("chmod");
     if std::fs::read(&f).is_ok() {
         // Running as root: permissions do not apply; the file runs.
-        let out = run(&["run", &f]);
+        let out = bounded(&["run", &f]);
         assert_eq!(out.code, Some(0), "{out:#?}");
         assert_eq!(out.stdout, "x = 1\n");
     } else {
-        assert_fails(&run(&["run", &f]), 2, "permission denied");
+        assert_fails(&bounded(&["run", &f]), 2, "permission denied");
     }
 }
 
@@ -768,20 +706,16 @@ fn unreadable_file_exits_2() {
 fn non_utf8_is_an_error_with_the_byte_offset() {
     let dir = Scratch::new("utf8");
     let f = dir.file("latin1.chs", b"x = 1\ny = \xe9\n");
-    let out = run(&["run", &f]);
+    let out = bounded(&["run", &f]);
     assert_fails(&out, 2, "is not UTF-8 text: invalid byte at offset 10");
     assert!(out.stdout.is_empty(), "{out:#?}");
-    let out = run_with(
-        &["run", "-"],
-        Some(b"x = 1\n\xff\xfe"),
-        Duration::from_secs(60),
-    );
+    let out = chasles(&["run", "-"], Some(b"x = 1\n\xff\xfe"));
     assert_fails(
         &out,
         2,
         "standard input is not UTF-8 text: invalid byte at offset 6",
     );
-    let out = run_with(&[], Some(b"\x80"), Duration::from_secs(60));
+    let out = chasles(&[], Some(b"\x80"));
     assert_fails(&out, 2, "invalid byte at offset 0");
 }
 
@@ -789,14 +723,14 @@ fn non_utf8_is_an_error_with_the_byte_offset() {
 fn empty_file_runs_nothing() {
     let dir = Scratch::new("empty");
     let f = dir.file("empty.chs", b"");
-    let out = run(&["run", &f]);
+    let out = bounded(&["run", &f]);
     assert_eq!(out.code, Some(0), "{out:#?}");
     assert_eq!(out.stdout, "");
     assert_eq!(out.stderr, "");
     let f = dir.file("blank.chs", b"\n\n# only a comment\n  \n");
-    let out = run(&["run", &f]);
+    let out = bounded(&["run", &f]);
     assert_eq!((out.code, out.stdout.as_str()), (Some(0), ""), "{out:#?}");
-    let out = run_with(&[], Some(b""), Duration::from_secs(60));
+    let out = chasles(&[], Some(b""));
     assert_eq!((out.code, out.stdout.as_str()), (Some(0), ""), "{out:#?}");
 }
 
@@ -805,8 +739,7 @@ fn closed_stdout_ends_quietly() {
     let dir = Scratch::new("pipe");
     let script = "Rotz(1)\n".repeat(20_000);
     let f = dir.file("big.chs", script.as_bytes());
-    let mut child = Command::new(env!("CARGO_BIN_EXE_chasles"))
-        .args(["run", &f])
+    let mut child = command(&["run", &f])
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()

@@ -5,55 +5,10 @@
 //! is echoed as a window around the caret, and `inv`/`det` are judged by
 //! conditioning, not by the size of the determinant.
 
-use std::io::Write;
-use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
 use std::time::Instant;
 
-struct Out {
-    code: Option<i32>,
-    stdout: Vec<u8>,
-    stderr: Vec<u8>,
-}
-
-impl Out {
-    fn out(&self) -> String {
-        String::from_utf8_lossy(&self.stdout).into_owned()
-    }
-    fn err(&self) -> String {
-        String::from_utf8_lossy(&self.stderr).into_owned()
-    }
-}
-
-fn chasles<S: AsRef<std::ffi::OsStr>>(args: &[S], stdin: Option<&[u8]>) -> Out {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_chasles"))
-        .args(args)
-        .env("NO_COLOR", "1")
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("the binary runs");
-    let mut pipe = child.stdin.take().expect("stdin");
-    let input = stdin.map(<[u8]>::to_vec).unwrap_or_default();
-    let feeder = std::thread::spawn(move || {
-        let _ = pipe.write_all(&input);
-    });
-    let out = child.wait_with_output().expect("the binary ends");
-    let _ = feeder.join();
-    Out {
-        code: out.status.code(),
-        stdout: out.stdout,
-        stderr: out.stderr,
-    }
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let d = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("hygiene-{name}"));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).expect("a temporary folder");
-    d
-}
+mod common;
+use common::{LIMIT, chasles, run_with, scratch};
 
 /// No byte of `bytes` is a control character other than newline.
 fn no_raw_controls(bytes: &[u8]) -> bool {
@@ -67,47 +22,49 @@ fn no_raw_controls(bytes: &[u8]) -> bool {
 fn arguments_that_are_not_utf8_are_errors_not_panics() {
     use std::ffi::OsStr;
     use std::os::unix::ffi::OsStrExt;
-    let out = chasles(
+    let out = run_with(
         &[OsStr::new("run"), OsStr::from_bytes(b"bad\xff.chs")],
         None,
+        LIMIT,
     );
-    assert_eq!(out.code, Some(2), "{}", out.err());
+    assert_eq!(out.code, Some(2), "{}", out.stderr);
     assert!(
-        out.err()
+        out.stderr
             .contains("cannot read 'bad\\xff.chs': no such file"),
         "{}",
-        out.err()
+        out.stderr
     );
-    let out = chasles(
+    let out = run_with(
         &[OsStr::new("-e"), OsStr::from_bytes(b"x = \"\xff\"")],
         None,
+        LIMIT,
     );
-    assert_eq!(out.code, Some(2), "{}", out.err());
+    assert_eq!(out.code, Some(2), "{}", out.stderr);
     assert!(
-        out.err().contains(
+        out.stderr.contains(
             "-e: the statements are not UTF-8 text (invalid byte at offset 5): x = \"\\xff\""
         ),
         "{}",
-        out.err()
+        out.stderr
     );
     // A script whose name is not UTF-8 runs, and its errors name it escaped.
     let dir = scratch("names");
     let name = dir.join(OsStr::from_bytes(b"ok\xff\x1b.chs"));
     std::fs::write(&name, "x = 1\ny = nope\n").unwrap();
-    let out = chasles(&[OsStr::new("run"), name.as_os_str()], None);
+    let out = run_with(&[OsStr::new("run"), name.as_os_str()], None, LIMIT);
     assert_eq!(out.code, Some(1));
-    assert_eq!(out.out(), "x = 1\n");
+    assert_eq!(out.stdout, "x = 1\n");
     assert!(
-        out.err().contains("ok\\xff\\x1b.chs:2:5: name error"),
+        out.stderr.contains("ok\\xff\\x1b.chs:2:5: name error"),
         "{}",
-        out.err()
+        out.stderr
     );
-    assert!(no_raw_controls(&out.stderr), "{}", out.err());
+    assert!(no_raw_controls(&out.stderr_bytes), "{}", out.stderr);
     // Bad values for flags are usage errors, shown without raw controls.
     let out = chasles(&["--frames", "\x07\x1b[2J", "-e", "1"], None);
     assert_eq!(out.code, Some(2));
-    assert!(no_raw_controls(&out.stderr), "{:?}", out.err());
-    assert!(!out.err().contains("panicked"));
+    assert!(no_raw_controls(&out.stderr_bytes), "{:?}", out.stderr);
+    assert!(!out.stderr.contains("panicked"));
 }
 
 #[cfg(unix)]
@@ -117,11 +74,11 @@ fn files_are_read_under_the_stdin_cap() {
     let out = chasles(&["run", "/dev/zero"], None);
     assert_eq!(out.code, Some(2));
     assert!(
-        out.err().contains(
+        out.stderr.contains(
             "'/dev/zero' is more than 104857600 bytes; scripts are limited to 104857600 bytes"
         ),
         "{}",
-        out.err()
+        out.stderr
     );
     assert!(start.elapsed().as_secs() < 30, "{:?}", start.elapsed());
 }
@@ -132,20 +89,20 @@ fn a_leading_byte_order_mark_is_skipped() {
     let f = dir.join("bom.chs");
     std::fs::write(&f, "\u{feff}x = 1\ny = x + 1\n").unwrap();
     let out = chasles(&["run", f.to_str().unwrap()], None);
-    assert_eq!(out.code, Some(0), "{}", out.err());
-    assert_eq!(out.out(), "x = 1\ny = 2\n");
+    assert_eq!(out.code, Some(0), "{}", out.stderr);
+    assert_eq!(out.stdout, "x = 1\ny = 2\n");
     // An error after a BOM is at the right column.
     std::fs::write(&f, "\u{feff}x = nope\n").unwrap();
     let out = chasles(&["run", f.to_str().unwrap()], None);
     assert!(
-        out.err().contains("bom.chs:1:5: name error"),
+        out.stderr.contains("bom.chs:1:5: name error"),
         "{}",
-        out.err()
+        out.stderr
     );
     let out = chasles(&["run", "-"], Some("\u{feff}z = 3\n".as_bytes()));
-    assert_eq!(out.out(), "z = 3\n");
+    assert_eq!(out.stdout, "z = 3\n");
     let out = chasles(&["-e", "\u{feff}w = 4"], None);
-    assert_eq!(out.out(), "w = 4\n");
+    assert_eq!(out.stdout, "w = 4\n");
 }
 
 #[test]
@@ -165,15 +122,20 @@ fn control_characters_are_shown_escaped() {
         let f = dir.join("c.chs");
         std::fs::write(&f, src).unwrap();
         let out = chasles(&["run", f.to_str().unwrap()], None);
-        assert!(matches!(out.code, Some(1 | 2)), "{:?}: {}", src, out.err());
-        assert!(no_raw_controls(&out.stderr), "{:?}: {:?}", src, out.err());
-        assert!(out.err().contains(echoed), "{:?}: {}", src, out.err());
-        assert!(!out.err().contains("panicked"));
+        assert!(matches!(out.code, Some(1 | 2)), "{:?}: {}", src, out.stderr);
+        assert!(
+            no_raw_controls(&out.stderr_bytes),
+            "{:?}: {:?}",
+            src,
+            out.stderr
+        );
+        assert!(out.stderr.contains(echoed), "{:?}: {}", src, out.stderr);
+        assert!(!out.stderr.contains("panicked"));
     }
     // -e as well, and the caret still under what it labels.
     let out = chasles(&["-e", "\x1b[2J + nope"], None);
-    let err = out.err();
-    assert!(no_raw_controls(&out.stderr), "{err:?}");
+    let err = out.stderr.clone();
+    assert!(no_raw_controls(&out.stderr_bytes), "{err:?}");
     assert!(err.contains("<-e>:1:2: syntax error"), "{err}");
     assert!(err.contains("1 │ \\x1b[2J + nope\n"), "{err}");
 }
@@ -187,8 +149,12 @@ fn a_long_line_is_echoed_as_a_window_around_the_caret() {
     std::fs::write(&f, &line).unwrap();
     let out = chasles(&["run", f.to_str().unwrap()], None);
     assert_eq!(out.code, Some(1));
-    assert!(out.stderr.len() < 1_000, "{} bytes", out.stderr.len());
-    assert!(out.err().contains("statement too long"), "{}", out.err());
+    assert!(
+        out.stderr_bytes.len() < 1_000,
+        "{} bytes",
+        out.stderr_bytes.len()
+    );
+    assert!(out.stderr.contains("statement too long"), "{}", out.stderr);
     // An unknown name in the middle of a 300 kB line: the window shows it
     // with the caret under it.
     let line = format!(
@@ -198,9 +164,13 @@ fn a_long_line_is_echoed_as_a_window_around_the_caret() {
     );
     std::fs::write(&f, &line).unwrap();
     let out = chasles(&["run", f.to_str().unwrap()], None);
-    let err = out.err();
+    let err = out.stderr.clone();
     assert_eq!(out.code, Some(1), "{err}");
-    assert!(out.stderr.len() < 1_500, "{} bytes", out.stderr.len());
+    assert!(
+        out.stderr_bytes.len() < 1_500,
+        "{} bytes",
+        out.stderr_bytes.len()
+    );
     assert!(
         err.contains("long.chs:1:150006: name error: unknown name 'nope'"),
         "{err}"
@@ -224,7 +194,7 @@ fn a_long_line_is_echoed_as_a_window_around_the_caret() {
 /// The JSON value of `src`'s last statement as a matrix.
 fn matrix(src: &str) -> (Vec<Vec<f64>>, String) {
     let out = chasles(&["--json", "-e", src], None);
-    let last = out.out().lines().last().unwrap_or("").to_string();
+    let last = out.stdout.lines().last().unwrap_or("").to_string();
     let j: serde_json::Value =
         serde_json::from_str(&last).unwrap_or_else(|e| panic!("{src}: {e}: {last}"));
     let rows = j["value"]
@@ -239,7 +209,7 @@ fn matrix(src: &str) -> (Vec<Vec<f64>>, String) {
                 .collect()
         })
         .collect();
-    (rows, out.err())
+    (rows, out.stderr)
 }
 
 #[test]
@@ -278,29 +248,31 @@ fn inverses_of_scaled_matrices_are_accurate() {
         ],
         None,
     );
-    assert_eq!(out.code, Some(0), "{}", out.err());
-    let last = out.out().lines().last().unwrap().to_string();
+    assert_eq!(out.code, Some(0), "{}", out.stderr);
+    let last = out.stdout.lines().last().unwrap().to_string();
     let j: serde_json::Value = serde_json::from_str(&last).unwrap();
     assert!(j["value"].as_f64().unwrap() < 1e-12, "{last}");
     // Singular only when it is; a warning when ill-conditioned.
     let out = chasles(&["-e", "inv([1, 2; 2, 4])"], None);
     assert!(
-        out.err().contains("the matrix is singular (determinant 0)"),
+        out.stderr
+            .contains("the matrix is singular (determinant 0)"),
         "{}",
-        out.err()
+        out.stderr
     );
     let out = chasles(&["-e", "inv([1, 2, 3; 4, 5, 6; 7, 8, 9])"], None);
     assert!(
-        out.err().contains("singular to working precision"),
+        out.stderr.contains("singular to working precision"),
         "{}",
-        out.err()
+        out.stderr
     );
     let out = chasles(&["-e", "inv([1, 1; 1, 1 + 1e-11])"], None);
     assert_eq!(out.code, Some(0));
     assert!(
-        out.err().contains("warning: the matrix is ill-conditioned"),
+        out.stderr
+            .contains("warning: the matrix is ill-conditioned"),
         "{}",
-        out.err()
+        out.stderr
     );
 }
 
@@ -308,19 +280,19 @@ fn inverses_of_scaled_matrices_are_accurate() {
 fn determinants_warn_when_they_underflow() {
     let out = chasles(&["-e", "det(1e-200*eye(3))"], None);
     assert_eq!(out.code, Some(0));
-    assert_eq!(out.out(), "0\n");
+    assert_eq!(out.stdout, "0\n");
     assert!(
-        out.err()
+        out.stderr
             .contains("warning: the determinant underflows: it is about 1e-600"),
         "{}",
-        out.err()
+        out.stderr
     );
     let out = chasles(&["-e", "det(1e200*eye(3))"], None);
     assert!(
-        out.err().contains("warning: the result is infinite"),
+        out.stderr.contains("warning: the result is infinite"),
         "{}",
-        out.err()
+        out.stderr
     );
     let out = chasles(&["-e", "det([1, 2; 2, 4])"], None);
-    assert_eq!((out.out().as_str(), out.err().as_str()), ("0\n", ""));
+    assert_eq!((out.stdout.as_str(), out.stderr.as_str()), ("0\n", ""));
 }

@@ -5,52 +5,8 @@
 use chasles::eval::env::Mode;
 use chasles::session::{Session, Settings};
 
-/// Runs `src`; the JSON line of each statement.
-fn run(src: &str) -> Result<Vec<serde_json::Value>, String> {
-    let mut s = Session::new(Settings {
-        json: true,
-        ..Settings::default()
-    });
-    let (out, err, n) = s.run_to_strings("t.chs", src, Mode::Run, false);
-    if n > 0 {
-        return Err(err);
-    }
-    Ok(out
-        .lines()
-        .map(|l| serde_json::from_str(l).expect("json"))
-        .collect())
-}
-
-fn numbers(v: &serde_json::Value) -> Vec<f64> {
-    match v {
-        serde_json::Value::Array(xs) => xs.iter().flat_map(numbers).collect(),
-        x => vec![x.as_f64().expect("a number")],
-    }
-}
-
-/// The value of the last statement of `src`.
-fn last(src: &str) -> Vec<f64> {
-    let lines = run(src).unwrap_or_else(|e| panic!("{src}:\n{e}"));
-    numbers(&lines.last().expect("a value")["value"])
-}
-
-/// The last statement of `setup; a` equals that of `setup; b`.
-fn same(setup: &str, a: &str, b: &str) {
-    let x = last(&format!("{setup}\n{a}"));
-    let y = last(&format!("{setup}\n{b}"));
-    assert_eq!(x.len(), y.len(), "{a} vs {b}");
-    for (p, q) in x.iter().zip(&y) {
-        assert!((p - q).abs() < 1e-12, "{a} = {x:?} but {b} = {y:?}");
-    }
-}
-
-/// The error messages and help of `src`, as printed.
-fn error(src: &str) -> String {
-    let mut s = Session::new(Settings::default());
-    let (_, err, n) = s.run_to_strings("t.chs", src, Mode::Run, true);
-    assert!(n > 0, "{src} should fail");
-    err
-}
+mod common;
+use common::{errors, last_numbers, numbers, same, try_json};
 
 const SETUP: &str = "w = (0, 0.866, 0.5)\nθ = 30 deg\nR = Rot(w, θ)\nA = [0, 1; -1, 0]\nt = 0.5\nT_sb = SE3(Rotz(0.3), (1, 2, 3))\nT_bc = SE3(Rotx(0.2), (0, 1, 0))\nV_b = (1, 2, 3, 4, 5, 6)";
 
@@ -58,16 +14,22 @@ const SETUP: &str = "w = (0, 0.866, 0.5)\nθ = 30 deg\nR = Rot(w, θ)\nA = [0, 1
 fn nested_brackets_are_rows() {
     // numpy's nested lists are rows, not columns: the silent wrong answer.
     let rows = [0.0, -1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0];
-    assert_eq!(last("R_sb = [[0, -1, 0], [1, 0, 0], [0, 0, 1]]"), rows);
-    assert_eq!(last("[[0, -1, 0],\n [1, 0, 0],\n [0, 0, 1]]"), rows);
-    // Pasted numpy and MATLAB output reads as printed.
-    assert_eq!(last("[[ 0. -1.  0.] [ 1.  0.  0.] [ 0.  0.  1.]]"), rows);
     assert_eq!(
-        last("[[ 0. -1.  0.]\n [ 1.  0.  0.]\n [ 0.  0.  1.]]"),
+        last_numbers("R_sb = [[0, -1, 0], [1, 0, 0], [0, 0, 1]]"),
         rows
     );
-    assert_eq!(last("[0 -1 0; 1 0 0; 0 0 1]"), rows);
-    assert_eq!(last("[1.e-3 -2 +3]"), [0.001, -2.0, 3.0]);
+    assert_eq!(last_numbers("[[0, -1, 0],\n [1, 0, 0],\n [0, 0, 1]]"), rows);
+    // Pasted numpy and MATLAB output reads as printed.
+    assert_eq!(
+        last_numbers("[[ 0. -1.  0.] [ 1.  0.  0.] [ 0.  0.  1.]]"),
+        rows
+    );
+    assert_eq!(
+        last_numbers("[[ 0. -1.  0.]\n [ 1.  0.  0.]\n [ 0.  0.  1.]]"),
+        rows
+    );
+    assert_eq!(last_numbers("[0 -1 0; 1 0 0; 0 0 1]"), rows);
+    assert_eq!(last_numbers("[1.e-3 -2 +3]"), [0.001, -2.0, 3.0]);
     // The book's bracket inside a block is not a row list.
     same(
         "w = (1, 2, 3)",
@@ -89,7 +51,7 @@ fn space_separated_rows_with_names_read_two_ways() {
             "write `1, -x` for two entries or `1 - x` for the difference",
         ),
     ] {
-        let e = error(src);
+        let e = errors(src);
         assert!(e.contains("inside brackets is ambiguous"), "{e}");
         assert!(e.contains(readings), "{e}");
     }
@@ -135,7 +97,7 @@ fn juxtaposition_multiplies() {
     same(SETUP, "θ[w]", "θ * [w]");
     // Numbers inside are an index.
     same(SETUP, "R[2, 3]", "R[2, 3]");
-    assert_eq!(last("x = (4, 5, 6)\nx[2]"), [5.0]);
+    assert_eq!(last_numbers("x = (4, 5, 6)\nx[2]"), [5.0]);
 }
 
 #[test]
@@ -150,7 +112,7 @@ fn scalar_functions_without_parentheses() {
     // The book's minus sign, as copied from the PDF.
     same(SETUP, "1 − cos θ", "1 - cos(θ)");
     same(SETUP, "−θ", "-θ");
-    assert_eq!(last("[1 −2]"), [1.0, -2.0]);
+    assert_eq!(last_numbers("[1 −2]"), [1.0, -2.0]);
     same(SETUP, "cos θ / 2", "cos(θ) / 2");
     for (src, help) in [
         ("sin θ^2", "write (sin θ)^2, or sin(θ^2)"),
@@ -158,14 +120,14 @@ fn scalar_functions_without_parentheses() {
         ("sin 2θ", "write sin(2θ), or (sin 2) θ for the product"),
         ("cos θ/2", "write cos(θ/2), or (cos θ)/2"),
     ] {
-        let e = error(&format!("θ = 1\n{src}"));
+        let e = errors(&format!("θ = 1\n{src}"));
         assert!(
             e.contains("reads two ways") && e.contains(help),
             "{src}: {e}"
         );
     }
     // The old hints pointed the wrong way (`sin * θ`, an index).
-    assert!(!error("θ = 1\nsin θ^2").contains("sin * θ"));
+    assert!(!errors("θ = 1\nsin θ^2").contains("sin * θ"));
 }
 
 #[test]
@@ -177,7 +139,7 @@ fn cot_sec_csc_without_parentheses() {
     same(SETUP, "csc θ", "csc(θ)");
     same(SETUP, "sec θ [w]", "sec(θ) * [w]");
     let close = |src: &str, want: f64| {
-        let got = last(src);
+        let got = last_numbers(src);
         assert!(
             got.len() == 1 && (got[0] - want).abs() < 1e-12,
             "{src} = {got:?}"
@@ -189,7 +151,7 @@ fn cot_sec_csc_without_parentheses() {
     close("x = 1\n1 - sec x", 1.0 - 1.0 / 1f64.cos());
     // Symbolic: the same canonical form as with parentheses.
     let text = |src: &str| {
-        let lines = run(src).unwrap_or_else(|e| panic!("{src}:\n{e}"));
+        let lines = try_json(src).unwrap_or_else(|e| panic!("{src}:\n{e}"));
         lines.last().expect("a value")["value"].clone()
     };
     for (f, want) in [("cot", "cot(t)"), ("sec", "1/cos(t)"), ("csc", "1/sin(t)")] {
@@ -198,7 +160,7 @@ fn cot_sec_csc_without_parentheses() {
         assert_eq!(bare, want, "{f} t");
     }
     // The same two readings as `sin θ^2` are refused.
-    let e = error("θ = 1\ncot θ^2");
+    let e = errors("θ = 1\ncot θ^2");
     assert!(e.contains("write (cot θ)^2, or cot(θ^2)"), "{e}");
 }
 
@@ -216,8 +178,8 @@ fn identity_takes_the_size_it_needs() {
     same(SETUP, "I * V_b", "eye(6) * V_b");
     same(SETUP, "[I, (1, 2, 3); 0, 1]", "SE3(eye(3), (1, 2, 3))");
     // A bound I is the user's.
-    assert_eq!(last("I = 7\nI + 1"), [8.0]);
-    let e = error("I");
+    assert_eq!(last_numbers("I = 7\nI + 1"), [8.0]);
+    let e = errors("I");
     assert!(
         e.contains("`I` has no size here") && e.contains("eye(3)"),
         "{e}"
@@ -238,23 +200,23 @@ fn lone_zero_is_the_zero_block() {
 
 #[test]
 fn numbered_frames() {
-    let lines = run("T_01 = Trans((1, 0, 0))\nT_12 = Trans((0, 1, 0))\nT_02 = T_01 * T_12\nT_s1 = Trans((0, 0, 1))\np_{1} = (1, 2, 3)\nT_{0,1} = T_01\nT_{0,1} * p_{1}").expect("runs");
+    let lines = try_json("T_01 = Trans((1, 0, 0))\nT_12 = Trans((0, 1, 0))\nT_02 = T_01 * T_12\nT_s1 = Trans((0, 0, 1))\np_{1} = (1, 2, 3)\nT_{0,1} = T_01\nT_{0,1} * p_{1}").expect("runs");
     assert_eq!(lines[0]["frames"], serde_json::json!(["0", "1"]));
     assert_eq!(lines[2]["frames"], serde_json::json!(["0", "2"]));
     assert_eq!(lines[3]["frames"], serde_json::json!(["s", "1"]));
     assert_eq!(lines[5]["frames"], serde_json::json!(["0", "1"]));
     assert_eq!(lines[6]["frames"], serde_json::json!(["0"]));
     // T_01 * T_21 is a frame error like any other.
-    let e = error("T_01 = Trans((1, 0, 0))\nT_21 = Trans((0, 1, 0))\nT_01 * T_21");
+    let e = errors("T_01 = Trans((1, 0, 0))\nT_21 = Trans((0, 1, 0))\nT_01 * T_21");
     assert!(e.contains("frame error") && e.contains("1 ≠ 2"), "{e}");
     // S_1, B_2, theta_1 stay indices.
-    let lines = run("S_1 = (0, 0, 1, 0, 0, 0)\ntheta_1 = 1").expect("runs");
+    let lines = try_json("S_1 = (0, 0, 1, 0, 0, 0)\ntheta_1 = 1").expect("runs");
     assert_eq!(lines[0]["frames"], serde_json::json!([]));
     // The same frames spelled otherwise are named in the help.
-    let e = error("T_01 = Trans((1, 0, 0))\nT_{0,1}");
+    let e = errors("T_01 = Trans((1, 0, 0))\nT_{0,1}");
     assert!(e.contains("T_01 names the same frames"), "{e}");
     // T_123 asks for braces.
-    let e = error("T_123 = Trans((1, 0, 0))");
+    let e = errors("T_123 = Trans((1, 0, 0))");
     assert!(e.contains("T_{1,23} or T_{12,3}"), "{e}");
 }
 
@@ -262,15 +224,15 @@ fn numbered_frames() {
 fn statements_as_chasles_prints_them() {
     // given with the spellings chasles prints.
     let lines =
-        run("given T_sa : SE(3)\ngiven W_s : so(3)\ngiven T_ab : SE3\ngiven p_b : 3-vector\nT_sa T_ab p_b").expect("runs");
+        try_json("given T_sa : SE(3)\ngiven W_s : so(3)\ngiven T_ab : SE3\ngiven p_b : 3-vector\nT_sa T_ab p_b").expect("runs");
     assert_eq!(lines.last().unwrap()["frames"], serde_json::json!(["s"]));
     // One tuple as a function's arguments.
     same(SETUP, "rot_zyx(euler_zyx(R))", "R");
     same("f(a, b) = a - b", "f((5, 2))", "3");
     // A newline after a trailing comma continues the row.
-    assert_eq!(last("[1, 2,\n 3, 4]"), [1.0, 2.0, 3.0, 4.0]);
+    assert_eq!(last_numbers("[1, 2,\n 3, 4]"), [1.0, 2.0, 3.0, 4.0]);
     // `ans / deg` converts radians to degrees.
-    assert_eq!(last("pi / 2\nans / deg"), [90.0]);
+    assert_eq!(last_numbers("pi / 2\nans / deg"), [90.0]);
 }
 
 /// Builtin calls nested in each other's arguments, and one given a tuple

@@ -5,20 +5,15 @@
 //! against the view's geometry, and bad input is a clear error that writes
 //! no file.
 
-use std::path::{Path, PathBuf};
-use std::process::Command;
+use std::path::Path;
 
 use chasles::draw::{self, Probe};
 use chasles::eval::env::Mode;
 use chasles::eval::value::Value;
 use chasles::session::{Session, Settings};
 
-fn tmp(name: &str) -> PathBuf {
-    let d = Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).expect("a temporary folder");
-    d
-}
+mod common;
+use common::{run_in, scratch};
 
 /// Runs `src` in a session that writes pictures into `dir`; returns each
 /// picture with the statement's line.
@@ -161,7 +156,7 @@ fn labels_apart(name: &str, svg: &str) {
 #[test]
 fn example_pictures_render_with_their_axes_where_projected() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let dir = tmp("example-pictures");
+    let dir = scratch("example-pictures");
     let mut checked = 0;
     for script in [
         "ch3_exercise48_screw_motion",
@@ -204,7 +199,7 @@ fn example_pictures_render_with_their_axes_where_projected() {
 }
 
 fn one(src: &str) -> (String, Vec<Probe>) {
-    let pics = pictures(src, &tmp("one"));
+    let pics = pictures(src, &scratch("one"));
     let (_, p) = pics.last().expect("a picture").clone();
     draw::svg(&p).expect("draws")
 }
@@ -272,29 +267,15 @@ fn the_output_is_deterministic_and_says_what_it_shows() {
     let (b, _) = one(src);
     assert_eq!(a, b);
     assert!(a.starts_with("<svg"));
-    let pics = pictures(src, &tmp("summary"));
+    let pics = pictures(src, &scratch("summary"));
     assert_eq!(pics[0].1.summary, "1 frame and 1 screw axis in {s}");
     assert!(a.contains("h = 2"), "the pitch is written beside the axis");
 }
 
-fn cli(args: &[&str], dir: &Path) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_chasles"))
-        .args(args)
-        .current_dir(dir)
-        .env("NO_COLOR", "1")
-        .output()
-        .expect("runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into(),
-        String::from_utf8_lossy(&out.stderr).into(),
-    )
-}
-
 #[test]
 fn printed_pictures_are_written_where_the_line_says() {
-    let dir = tmp("cli-default");
-    let (code, out, err) = cli(&["-e", "pic = draw(Rotx(pi/4))\ndraw(Roty(1))"], &dir);
+    let dir = scratch("cli-default");
+    let (code, out, err) = run_in(&["-e", "pic = draw(Rotx(pi/4))\ndraw(Roty(1))"], &dir);
     assert_eq!(code, 0, "{err}");
     assert!(
         out.contains("pic = picture: 1 frame in {s} → pic.svg"),
@@ -306,7 +287,7 @@ fn printed_pictures_are_written_where_the_line_says() {
     );
     assert!(dir.join("pic.svg").is_file() && dir.join("draw-2.svg").is_file());
     // --draw-dir, created when missing; save() writes PNG by the name.
-    let (code, out, err) = cli(
+    let (code, out, err) = run_in(
         &[
             "--draw-dir",
             "figs",
@@ -321,12 +302,12 @@ fn printed_pictures_are_written_where_the_line_says() {
     let png = std::fs::read(dir.join("p.png")).expect("the PNG");
     assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
     // JSON names the type and the file.
-    let (_, out, _) = cli(&["--json", "-e", "q = draw(Rotz(1))"], &dir);
+    let (_, out, _) = run_in(&["--json", "-e", "q = draw(Rotz(1))"], &dir);
     assert!(out.contains("\"type\":\"picture\""), "{out}");
     assert!(out.contains("\"file\":\"q.svg\""), "{out}");
     // A --draw-dir that cannot be made is bad usage (exit 2).
     std::fs::write(dir.join("a-file"), "x").expect("writes");
-    let (code, _, err) = cli(&["--draw-dir", "a-file/sub", "-e", "1"], &dir);
+    let (code, _, err) = run_in(&["--draw-dir", "a-file/sub", "-e", "1"], &dir);
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("cannot use --draw-dir 'a-file/sub'"), "{err}");
     std::fs::remove_file(dir.join("a-file")).expect("removes");
@@ -341,7 +322,7 @@ fn printed_pictures_are_written_where_the_line_says() {
 
 #[test]
 fn bad_input_is_a_clear_error_and_no_file() {
-    let dir = tmp("cli-errors");
+    let dir = scratch("cli-errors");
     let cases: &[(&str, &str)] = &[
         ("draw(3)", "type error: cannot draw a scalar"),
         (
@@ -375,7 +356,7 @@ fn bad_input_is_a_clear_error_and_no_file() {
         ),
     ];
     for (src, want) in cases {
-        let (code, out, err) = cli(&["-e", src], &dir);
+        let (code, out, err) = run_in(&["-e", src], &dir);
         assert_eq!(code, 1, "{src}: {out}{err}");
         assert!(err.contains(want), "{src}: {err}");
     }
@@ -386,7 +367,7 @@ fn bad_input_is_a_clear_error_and_no_file() {
 #[test]
 fn the_repl_writes_pictures_and_opens_the_last_one() {
     use chasles::repl::commands::execute;
-    let dir = tmp("repl");
+    let dir = scratch("repl");
     let mut s = Session::new(Settings::default());
     s.gate = chasles::effects::Gate::anywhere(Some(dir.clone()));
     let r = execute(&mut s, ":open");
@@ -495,7 +476,7 @@ fn marks_follow_the_book() {
 
 #[test]
 fn a_png_shows_the_axes_where_the_svg_has_them() {
-    let dir = tmp("png");
+    let dir = scratch("png");
     let src = format!(
         "T_sa = RpToTrans(Rotz(0.5), (1, 1, 0))\npic = draw(T_sa, ScrewToAxis((0, 1, 0), (0, 0, 1), 1))\nsave(pic, \"{}\")",
         dir.join("pic.png").display()

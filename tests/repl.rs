@@ -2,11 +2,14 @@
 //! and every `:` command, completion and hint through the library.
 
 use std::io::Write;
-use std::process::{Command, Stdio};
+use std::process::Stdio;
 
 use chasles::repl::commands::{Reply, execute};
 use chasles::repl::complete::{complete, hint, open_call_signature, preview};
 use chasles::session::{Session, Settings};
+
+mod common;
+use common::{command, report};
 
 /// Runs one input and renders the reply for a snapshot.
 fn show(session: &mut Session, input: &str) -> String {
@@ -32,8 +35,7 @@ fn transcript(inputs: &[&str]) -> String {
 fn piped_session() {
     let history =
         std::env::temp_dir().join(format!("chasles-piped-history-{}", std::process::id()));
-    let mut child = Command::new(env!("CARGO_BIN_EXE_chasles"))
-        .env("NO_COLOR", "1")
+    let mut child = command(&[])
         .env("CHASLES_HISTORY", &history)
         .stdin(Stdio::piped())
         .stdout(Stdio::piped())
@@ -58,14 +60,7 @@ T * T_cb
         .write_all(input.as_bytes())
         .expect("the input is written");
     let out = child.wait_with_output().expect("the binary finishes");
-    let text = format!(
-        "exit: {}\n--- stdout\n{}--- stderr\n{}",
-        out.status
-            .code()
-            .map_or("signal".to_string(), |c| c.to_string()),
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let text = report(&out);
     insta::assert_snapshot!(text);
     assert!(!history.exists(), "history is only written on a terminal");
 }

@@ -12,19 +12,8 @@ use std::time::{Duration, Instant};
 use rexpect::reader::Options;
 use rexpect::session::{PtySession, spawn_with_options};
 
-/// How long one expected output may take (the CI machine is slow).
-const TIMEOUT_MS: u64 = 60_000;
-
-fn expect(p: &mut PtySession, text: &str) {
-    if let Err(e) = p.exp_string(text) {
-        panic!("waiting for {text:?}: {e}");
-    }
-}
-
-fn send(p: &mut PtySession, keys: &str) {
-    p.send(keys).expect("the terminal takes input");
-    p.flush().expect("the terminal takes input");
-}
+mod common;
+use common::pty::{TIMEOUT_MS, expect, send};
 
 fn start(name: &str) -> (PtySession, std::path::PathBuf) {
     let dir = std::env::temp_dir().join(format!("chasles-{name}-{}", std::process::id()));

@@ -11,25 +11,12 @@ use rexpect::process::WaitStatus;
 use rexpect::reader::Options;
 use rexpect::session::{PtySession, spawn_with_options};
 
-/// How long one expected output may take (the CI machine is slow).
-const TIMEOUT_MS: u64 = 60_000;
-
-/// Waits for `text`; on a timeout the test fails showing what was read.
-fn expect(p: &mut PtySession, text: &str) {
-    if let Err(e) = p.exp_string(text) {
-        panic!("waiting for {text:?}: {e}");
-    }
-}
+mod common;
+use common::pty::{TIMEOUT_MS, expect, send};
 
 /// Waits for the prompt of a fresh line.
 fn prompt(p: &mut PtySession) {
     expect(p, ">>> ");
-}
-
-/// Types `keys` (a `\r` is Enter).
-fn send(p: &mut PtySession, keys: &str) {
-    p.send(keys).expect("the terminal takes input");
-    p.flush().expect("the terminal takes input");
 }
 
 #[test]

@@ -6,54 +6,8 @@
 use chasles::eval::env::Mode;
 use chasles::session::{Session, Settings};
 
-/// Runs `src`: the JSON lines, or the error text.
-fn run(src: &str) -> Result<Vec<serde_json::Value>, String> {
-    let mut s = Session::new(Settings {
-        json: true,
-        ..Settings::default()
-    });
-    let (out, err, n) = s.run_to_strings("t.chs", src, Mode::Run, false);
-    if n > 0 {
-        return Err(err);
-    }
-    Ok(out
-        .lines()
-        .map(|l| serde_json::from_str(l).expect("json"))
-        .collect())
-}
-
-fn numbers(v: &serde_json::Value) -> Vec<f64> {
-    match v {
-        serde_json::Value::Array(xs) => xs.iter().flat_map(numbers).collect(),
-        serde_json::Value::Bool(b) => vec![f64::from(u8::from(*b))],
-        serde_json::Value::Object(o) => o.get("dof").map(numbers).unwrap_or_default(),
-        x => vec![x.as_f64().expect("a number")],
-    }
-}
-
-/// The value of the last statement of `src`.
-fn last(src: &str) -> Vec<f64> {
-    let lines = run(src).unwrap_or_else(|e| panic!("{src}:\n{e}"));
-    numbers(&lines.last().expect("a value")["value"])
-}
-
-/// `a` and `b` after `setup` give the same numbers (within 1e-12).
-fn same(setup: &str, a: &str, b: &str) {
-    let x = last(&format!("{setup}\n{a}"));
-    let y = last(&format!("{setup}\n{b}"));
-    assert_eq!(x.len(), y.len(), "{a} vs {b}");
-    for (u, v) in x.iter().zip(&y) {
-        assert!((u - v).abs() <= 1e-12, "{a} = {x:?} but {b} = {y:?}");
-    }
-}
-
-/// The error text of `src`, as a terminal shows it.
-fn error(src: &str) -> String {
-    let mut s = Session::new(Settings::default());
-    let (_, err, n) = s.run_to_strings("t.chs", src, Mode::Run, false);
-    assert!(n > 0, "{src} should fail");
-    err
-}
+mod common;
+use common::{error, same, try_json};
 
 const R: &str = "R = Rotz(pi/6) Rotx(pi/4); p = (1, 2, 3); A = [1, 2; 3, 4]; n = 5";
 
@@ -97,7 +51,7 @@ fn orders_of_numbers() {
     same("", "2 <= 2", "true");
     same("", "3 > 4", "false");
     same("", "3 ≥ 3", "true");
-    assert!(run("assert pi > 3").is_ok());
+    assert!(try_json("assert pi > 3").is_ok());
     let e = error("assert 3 < 2");
     assert!(e.contains("assert error") && e.contains("left: 3"), "{e}");
     let e = error("(1, 2) < (3, 4)");
@@ -153,7 +107,7 @@ fn mechanisms_with_names_commas_and_contacts() {
         "10",
     );
     same("", "mech < links 3; joints 2R rolling; planar >", "0");
-    let lines = run("mech < links 8; joints 7RP, 6 sliding; planar >").expect("runs");
+    let lines = try_json("mech < links 8; joints 7RP, 6 sliding; planar >").expect("runs");
     let formula = lines[0]["value"]["formula"].as_str().unwrap_or_default();
     assert_eq!(formula, "dof = 3(8 − 1 − 13) + 7·2 + 6·2 = 8");
 }
@@ -179,7 +133,7 @@ fn an_error_in_a_function_shows_the_call() {
 
 #[test]
 fn a_list_of_points_draws() {
-    let lines = run("pts = [point((k, 0, 0)) for k in 1:3]").expect("runs");
+    let lines = try_json("pts = [point((k, 0, 0)) for k in 1:3]").expect("runs");
     assert_eq!(lines[0]["type"], "list");
     let mut s = Session::new(Settings::default());
     let (out, err, n) = s.run_to_strings(

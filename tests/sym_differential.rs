@@ -9,6 +9,8 @@ use chasles::eval::env::Mode;
 use chasles::eval::value::Value;
 use chasles::session::{Session, Settings};
 
+mod common;
+
 /// Runs `src` in a fresh session; the session and the number of errors.
 fn session(src: &str) -> (Session, usize, String) {
     let mut s = Session::new(Settings::default());
@@ -26,10 +28,7 @@ fn number(s: &Session, name: &str) -> Option<f64> {
 
 /// The text `src` prints (failing on an error).
 fn prints(src: &str) -> String {
-    let mut s = Session::new(Settings::default());
-    let (out, err, n) = s.run_to_strings("t.chs", src, Mode::Run, false);
-    assert_eq!(n, 0, "{src}\n{err}");
-    out.trim_end().to_string()
+    common::printed(src).trim_end().to_string()
 }
 
 /// The last line `src` prints.
@@ -373,7 +372,144 @@ impl T {
                 let v = b.atan2(a);
                 (v, v.abs() + (ea + eb) / (a * a + b * b).sqrt())
             }
-            T::Diff(..) => (f64::NAN, f64::INFINITY),
+            T::Diff(x, by) => {
+                let (_, _, d, ed) = x.dual(at, *by);
+                (d, ed)
+            }
+        }
+    }
+
+    /// The derivative by `by` of the tree written without derivatives,
+    /// computed directly (forward mode: each node's value and derivative),
+    /// with rounding bounds for both in units of the machine epsilon:
+    /// (value, its bound, derivative, its bound).
+    fn dual(&self, at: &At, by: By) -> (f64, f64, f64, f64) {
+        // f(u) with f' and f'' at u
+        let un = |x: &T, f: &dyn Fn(f64) -> (f64, f64, f64)| {
+            let (u, eu, du, edu) = x.dual(at, by);
+            let (v, d1, d2) = f(u);
+            let d = d1 * du;
+            (
+                v,
+                v.abs() + d1.abs() * eu,
+                d,
+                d1.abs() * edu + d2.abs() * eu * du.abs() + 2.0 * d.abs(),
+            )
+        };
+        // how fast a leaf moves with `by`
+        let rate = |leaf: &T| -> f64 {
+            match (leaf, by) {
+                (T::Sym(i), By::Sym(j)) if *i == j => 1.0,
+                (T::Time, By::Time) => 1.0,
+                (T::Q(i, k), By::Time) => at.q[*i][*k as usize + 1],
+                (T::Q(i, k), By::Q(j, m)) if *i == j && *k == m => 1.0,
+                _ => 0.0,
+            }
+        };
+        match self {
+            T::Sym(_) | T::Time | T::Q(..) | T::Int(_) | T::Dec(..) | T::Pi => {
+                let (v, e) = self.direct(at);
+                (v, e, rate(self), 0.0)
+            }
+            T::Neg(x) => {
+                let (v, e, d, ed) = x.dual(at, by);
+                (-v, e, -d, ed)
+            }
+            T::Add(x, y) | T::Sub(x, y) => {
+                let ((a, ea, da, eda), (b, eb, db, edb)) = (x.dual(at, by), y.dual(at, by));
+                let s = if matches!(self, T::Add(..)) {
+                    1.0
+                } else {
+                    -1.0
+                };
+                let (v, d) = (a + s * b, da + s * db);
+                (v, ea + eb + v.abs(), d, eda + edb + d.abs())
+            }
+            T::Mul(x, y) => {
+                let ((a, ea, da, eda), (b, eb, db, edb)) = (x.dual(at, by), y.dual(at, by));
+                let (v, d) = (a * b, da * b + a * db);
+                let ed = eda * b.abs() + da.abs() * eb + ea * db.abs() + a.abs() * edb;
+                (
+                    v,
+                    ea * b.abs() + eb * a.abs() + v.abs(),
+                    d,
+                    ed + (da * b).abs() + (a * db).abs() + d.abs(),
+                )
+            }
+            T::Div(x, y) => {
+                let ((a, ea, da, eda), (b, eb, db, edb)) = (x.dual(at, by), y.dual(at, by));
+                let v = a / b;
+                let ev = (ea + v.abs() * eb) / b.abs() + v.abs();
+                let d = (da - v * db) / b;
+                let ed = (eda + ev * db.abs() + v.abs() * edb + (v * db).abs() + da.abs())
+                    / b.abs()
+                    + d.abs() * (eb / b.abs() + 3.0);
+                (v, ev, d, ed)
+            }
+            T::Recip(x) => un(x, &|u| (1.0 / u, -1.0 / (u * u), 2.0 / (u * u * u))),
+            T::Pow(x, n) => {
+                let (n, k) = (*n, f64::from(*n));
+                let (v, ev, d, ed) = un(x, &|u| {
+                    (u.powi(n), k * u.powi(n - 1), k * (k - 1.0) * u.powi(n - 2))
+                });
+                // each of the ~2 log2|n| products rounds once
+                let r = 1.0 + 2.0 * k.abs().log2().max(1.0);
+                (v, ev + r * v.abs(), d, ed + r * d.abs())
+            }
+            T::Sqrt(x) => un(x, &|u| (u.sqrt(), 0.5 / u.sqrt(), -0.25 / (u * u.sqrt()))),
+            T::Angle(sin, k, (p, d), off) => {
+                let (arg, _) = self.angle_arg(*k, *p, *d, *off, at);
+                let leaves = [T::Sym(0), T::Sym(1), T::Time, T::Q(0, 0)];
+                let darg: f64 = k
+                    .iter()
+                    .zip(&leaves)
+                    .map(|(c, l)| f64::from(*c) * rate(l))
+                    .sum();
+                let ea = 1.0 + 4.0 * arg.abs();
+                let (v, d1) = if *sin {
+                    (arg.sin(), arg.cos())
+                } else {
+                    (arg.cos(), -arg.sin())
+                };
+                let d = d1 * darg;
+                (v, ea, d, ea * darg.abs() + 4.0 * d.abs())
+            }
+            T::Sin(x) => un(x, &|u| (u.sin(), u.cos(), -u.sin())),
+            T::Cos(x) => un(x, &|u| (u.cos(), -u.sin(), -u.cos())),
+            T::Tan(x) => un(x, &|u| {
+                let s = 1.0 + u.tan().powi(2);
+                (u.tan(), s, 2.0 * u.tan() * s)
+            }),
+            T::Asin(x) => un(x, &|u| {
+                let r = 1.0 - u * u;
+                (u.asin(), 1.0 / r.sqrt(), u / (r * r.sqrt()))
+            }),
+            T::Acos(x) => un(x, &|u| {
+                let r = 1.0 - u * u;
+                (u.acos(), -1.0 / r.sqrt(), -u / (r * r.sqrt()))
+            }),
+            T::Atan(x) => un(x, &|u| {
+                let r = 1.0 + u * u;
+                (u.atan(), 1.0 / r, -2.0 * u / (r * r))
+            }),
+            T::Atan2(y, x) => {
+                let ((b, eb, db, edb), (a, ea, da, eda)) = (y.dual(at, by), x.dual(at, by));
+                let r2 = a * a + b * b;
+                let v = b.atan2(a);
+                let d = (a * db - b * da) / r2;
+                let ev = v.abs() + (ea + eb) / r2.sqrt();
+                let ed = (a.abs() * edb
+                    + db.abs() * ea
+                    + b.abs() * eda
+                    + da.abs() * eb
+                    + (a * db).abs()
+                    + (b * da).abs())
+                    / r2
+                    + d.abs() * (2.0 * (a.abs() * ea + b.abs() * eb) / r2 + 4.0);
+                (v, ev, d, ed)
+            }
+            // (the generator writes no derivative inside a derivative)
+            T::Diff(..) => (f64::NAN, f64::INFINITY, f64::NAN, f64::INFINITY),
         }
     }
 
@@ -580,9 +716,10 @@ fn expr() -> impl Strategy<Value = T> {
     prop_oneof![
         24 => tree.clone(),
         8 => (tree.clone(), by.clone()).prop_map(|(x, by)| T::Diff(b(x), by)),
-        7 => (tree.clone(), tree.clone(), by).prop_map(|(x, y, by)| T::Mul(b(x), b(T::Diff(b(y), by)))),
+        7 => (tree.clone(), tree.clone(), by.clone()).prop_map(|(x, y, by)| T::Mul(b(x), b(T::Diff(b(y), by)))),
         1 => power.clone(),
-        1 => (power, tree).prop_map(|(p, x)| T::Mul(b(p), b(x))),
+        1 => (power.clone(), tree).prop_map(|(p, x)| T::Mul(b(p), b(x))),
+        1 => (power, by).prop_map(|(p, by)| T::Diff(b(p), by)),
     ]
 }
 
@@ -621,21 +758,20 @@ struct Tally {
 }
 
 /// Checks one expression at one point; Err describes a wrong answer.
-/// Without a derivative, the value bound later must be within 16 ε times
-/// [`T::direct`]'s rounding bound of the tree's direct value (and of the
-/// value with the numbers typed first): near machine precision, so an
-/// expanded form evaluated in floats (whose coefficients cancel) fails
-/// it. A derivative is checked against finite differences, looser.
+/// The value bound later must be within 16 ε times [`T::direct`]'s
+/// rounding bound of the tree's direct value (a derivative's computed in
+/// forward mode, [`T::dual`]), and without a derivative of the value with
+/// the numbers typed first: near machine precision, so an expanded form
+/// evaluated in floats (whose coefficients cancel) fails it.
 fn check(e: &T, p: &Point, tally: &mut Tally) -> Result<(), String> {
     let at = p.at(p.t);
-    let (want, err) = e.eval(&at);
-    // Without a derivative, the value is compared near machine precision:
-    // within a few times the rounding of the statements typed first.
-    let tight = (!e.has_diff()).then(|| 16.0 * f64::EPSILON * e.direct(&at).1);
-    let meaningless = match tight {
-        Some(tol) => !tol.is_finite() || tol > 1e-6 * want.abs().max(1.0),
-        None => !err.is_finite() || want.abs() > 1e8 || err > 1e12,
-    };
+    // (marks the points on a branch cut or at an infinity)
+    let _ = e.eval(&at);
+    // The value is compared near machine precision: within a few times the
+    // rounding of its direct evaluation (of the statements typed first).
+    let (want, rounding) = e.direct(&at);
+    let tol = 16.0 * f64::EPSILON * rounding;
+    let meaningless = !tol.is_finite() || tol > 1e-6 * want.abs().max(1.0);
     if at.ill.get() || !want.is_finite() || meaningless {
         tally.skipped += 1;
         return Ok(());
@@ -658,7 +794,6 @@ fn check(e: &T, p: &Point, tally: &mut Tally) -> Result<(), String> {
             s.env.get("y").and_then(|b| b.val.clone())
         )
     })?;
-    let tol = tight.unwrap_or(1e-5 * err.max(1.0));
     if !((got - want).abs() <= tol || (got.is_nan() && want.is_nan())) {
         return Err(format!(
             "bound later: {got} but {want} (tolerance {tol:e})\n{later}"

@@ -6,40 +6,17 @@
 //! as `==` with symbols; the unit relation never makes `==` say true of
 //! what is not (`dot(w, w) == 1` is false for a vector not used as an axis).
 
-use chasles::eval::env::Mode;
 use chasles::lie::{se3, so3};
-use chasles::session::{Session, Settings};
 use chasles::sym::axis::{components, symbolic_axis};
 use chasles::sym::matrix::{self, Mat};
 use chasles::sym::{Expr, Symbol};
 use nalgebra::{Vector3, Vector6};
 
-/// Runs `src` in a fresh session, failing on any error: (stdout, stderr).
-fn run(src: &str) -> (String, String) {
-    let mut s = Session::new(Settings::default());
-    let (out, err, n) = s.run_to_strings("t.chs", src, Mode::Run, false);
-    assert_eq!(n, 0, "{src}\n{err}");
-    (out, err)
-}
+mod common;
+use common::{Rng, error as fails, outputs as run};
 
-/// The error text of a script that must fail.
-fn fails(src: &str) -> String {
-    let mut s = Session::new(Settings::default());
-    let (_, err, n) = s.run_to_strings("t.chs", src, Mode::Run, false);
-    assert!(n > 0, "{src} should fail");
-    err
-}
-
-/// A small deterministic generator (xorshift), uniform in [-1, 1).
-struct Rng(u64);
-
+/// A random unit vector (an axis ω̂).
 impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        (self.0 >> 11) as f64 / (1u64 << 52) as f64 - 1.0
-    }
     fn unit(&mut self) -> Vector3<f64> {
         loop {
             let v = Vector3::new(self.next(), self.next(), self.next());
@@ -228,4 +205,41 @@ fn a_twist_is_no_unit_axis() {
     let (out, err) = run("given V : twist\ngiven t : scalar\nexp([V] t)\n");
     assert_eq!(out, "exp([V] t)  : SE(3)\n");
     assert!(!err.contains("assumed"), "{err}");
+}
+
+#[test]
+fn a_passing_assert_leaves_the_note_to_be_said() {
+    // a passing assert prints no notes; the assumption is said where a
+    // value built on it is shown
+    let (_, err) = run(
+        "given w : vec3\ngiven t : scalar\nassert exp([w] t) * w == w\n\
+         exp([w] t) * w\n",
+    );
+    assert_eq!(
+        err.matches("w is assumed to be a unit vector").count(),
+        1,
+        "{err}"
+    );
+    assert!(err.contains("t.chs:4:1: note"), "{err}");
+}
+
+#[test]
+fn components_print_as_indexed() {
+    use chasles::sym::print::{self, Mode, Style};
+    let latex = Style {
+        mode: Mode::Latex,
+        digits: 4,
+    };
+    let w = components("omega_b", 3);
+    let e = w[0].mul(&w[1]).sub(&w[2]);
+    assert_eq!(
+        print::expr(&e, Style::default()),
+        "omega_b[1] omega_b[2] - omega_b[3]"
+    );
+    assert_eq!(
+        print::expr(&e, latex),
+        "\\omega_{b,1} \\omega_{b,2} - \\omega_{b,3}"
+    );
+    let v = components("w", 3);
+    assert_eq!(print::expr(&v[1], latex), "w_{2}");
 }

@@ -5,9 +5,7 @@
 //! agreeing with the numeric `log` at random points to 1e-12. Where no
 //! closed form is found the call is kept — never a wrong value.
 
-use chasles::eval::env::Mode;
 use chasles::lie::se3;
-use chasles::session::{Session, Settings};
 use chasles::sym::branch::log6;
 use chasles::sym::coef::{Coef, Rat};
 use chasles::sym::matrix::{self, Mat};
@@ -15,24 +13,8 @@ use chasles::sym::{Expr, Symbol};
 use nalgebra::Matrix4;
 use num_traits::One;
 
-fn run(src: &str) -> (String, String) {
-    let mut s = Session::new(Settings::default());
-    let (out, err, n) = s.run_to_strings("t.chs", src, Mode::Run, false);
-    assert_eq!(n, 0, "{src}\n{err}");
-    (out, err)
-}
-
-/// Deterministic numbers in [-1, 1) (xorshift).
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 ^= self.0 << 13;
-        self.0 ^= self.0 >> 7;
-        self.0 ^= self.0 << 17;
-        (self.0 >> 11) as f64 / (1u64 << 52) as f64 - 1.0
-    }
-}
+mod common;
+use common::{Rng, outputs as run};
 
 fn t() -> Expr {
     Expr::symbol(Symbol::new("t"))

@@ -93,6 +93,26 @@ impl Root {
         Ok(sub.to_path_buf())
     }
 
+    /// Where a file the front end keeps for itself (the REPL's history,
+    /// LANGUAGE.md §11) may be written: a relative `path` inside DIR, an
+    /// absolute one only where its folder already lies inside DIR's real
+    /// path. Err when it would lead out.
+    pub fn inside(&self, path: &Path) -> Result<PathBuf, String> {
+        let name = if path.is_absolute() {
+            let outside = || format!("'{}' is not inside '{}'", show(path), show(&self.shown));
+            let folder = path.parent().ok_or_else(outside)?;
+            let real = std::fs::canonicalize(folder).map_err(|_| outside())?;
+            let sub = real.strip_prefix(&self.real).map_err(|_| outside())?;
+            sub.join(path.file_name().ok_or_else(outside)?)
+        } else {
+            path.to_path_buf()
+        };
+        if let Some(sub) = name.parent().filter(|s| !s.as_os_str().is_empty()) {
+            self.folder(sub)?;
+        }
+        self.resolve(Path::new(""), &name).map(|(real, _)| real)
+    }
+
     /// Where `name` (inside the folder `sub` of DIR) is written: its real
     /// path, and the path to show (DIR as given, then `sub`, then `name`).
     pub fn resolve(&self, sub: &Path, name: &Path) -> Result<(PathBuf, String), String> {

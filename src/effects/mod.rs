@@ -14,7 +14,9 @@
 //! Each report keeps its [`Effect`]s: a notebook, with
 //! `Gate::anywhere(None)`, writes what `save` asks and finds every printed
 //! picture among them (`PictureTo::Printed`) to show inline, as SVG from
-//! `crate::draw::file::bytes(picture, "x.svg")`.
+//! `crate::draw::file::bytes(picture, "x.svg")`. The REPL's history file,
+//! which the line editor appends itself, is kept only where
+//! [`Gate::history`] allows.
 
 pub mod atomic;
 pub mod confine;
@@ -150,9 +152,31 @@ impl Gate {
         })
     }
 
+    /// The same policy with printed pictures kept in memory, as a notebook
+    /// wants (LANGUAGE.md §13: shown inline, no file unless `save` asks);
+    /// `save` still writes, refused or confined as before.
+    pub fn printed_in_memory(self) -> Gate {
+        Gate {
+            pictures: Pictures::Saved,
+            ..self
+        }
+    }
+
     /// Whether this gate refuses every write (`--no-write`).
     pub fn denies(&self) -> bool {
         matches!(self.policy, Policy::Deny)
+    }
+
+    /// Where the REPL may keep its history file `path` (LANGUAGE.md §11):
+    /// `None` under `--no-write`, and under `--write-dir` unless the file
+    /// lies inside DIR (a relative `path` is taken inside it, as `save`'s
+    /// names are). History is a convenience, so a refusal is silent.
+    pub fn history(&self, path: &Path) -> Option<PathBuf> {
+        match &self.policy {
+            Policy::Deny => None,
+            Policy::Anywhere => Some(path.to_path_buf()),
+            Policy::Within(root) => root.inside(path).ok(),
+        }
     }
 
     /// Performs `effect` if allowed: Ok(Some(path shown)) when written,

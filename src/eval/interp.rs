@@ -312,11 +312,14 @@ impl<'a> Interp<'a> {
                 Ok(o)
             }
             StmtKind::Assert(cond) => {
+                let noted = self.env.units_noted.len();
                 self.assert(cond)?;
                 self.commit(None, s.span)?;
-                // A passing check needs no remarks on its values (θ = π notes).
+                // A passing check needs no remarks on its values (θ = π
+                // notes); an axis assumed unit is still to be said.
                 self.warnings
                     .retain(|w| w.severity != crate::diagnostics::Severity::Note);
+                self.env.units_noted.truncate(noted);
                 let mut o = out(
                     Names::Many(Vec::new()),
                     Typed::new(Ty::plain(Kind::Bool), None),

@@ -8,7 +8,9 @@
 
 use serde_json::{Map, Value as J, json};
 
-use crate::budget::Interrupt;
+use std::time::Duration;
+
+use crate::budget::{Budget, Interrupt};
 use crate::diagnostics::render;
 use crate::effects::Gate;
 use crate::repl::{commands, complete, help, save};
@@ -44,6 +46,34 @@ pub struct Notebook {
     /// The cells run with `store_history`, in order; cell `i` is
     /// execution count `i + 1`.
     pub history: Vec<String>,
+    /// The time each cell may take (`--timeout`), if limited.
+    timeout: Option<Duration>,
+}
+
+/// What `chasles kernel`'s flags set for its session (LANGUAGE.md §§1,
+/// 13), as for a script: the settings (`--frames`, `--digits`, …), the
+/// effects gate (`--no-write`, `--write-dir`; printed pictures stay in
+/// memory, shown inline), the budget (`--max-memory`, the interrupt flag)
+/// and `--timeout`, which a kernel applies to each cell: a notebook has
+/// no end, so the time of one run is the time of one cell.
+#[derive(Debug, Clone)]
+pub struct Options {
+    pub settings: Settings,
+    pub gate: Gate,
+    pub budget: Budget,
+    pub timeout: Option<Duration>,
+}
+
+/// The default settings, `save` writing where asked, no time limit.
+impl Default for Options {
+    fn default() -> Options {
+        Options {
+            settings: Settings::default(),
+            gate: Gate::anywhere(None),
+            budget: Budget::new(),
+            timeout: None,
+        }
+    }
 }
 
 /// A piece of a cell: statements (with the cell's line number of their
@@ -87,11 +117,21 @@ impl Notebook {
     /// what `save` asks for and keeps printed pictures in memory: a
     /// notebook shows them inline and writes no file for them (§13).
     pub fn new() -> Notebook {
-        let mut session = Session::new(Settings::default());
-        session.gate = Gate::anywhere(None);
+        Notebook::with(Options::default())
+    }
+
+    /// A fresh session under the command line's `options`.
+    pub fn with(options: Options) -> Notebook {
+        let mut session = Session::new(Settings {
+            json: false,
+            ..options.settings
+        });
+        session.gate = options.gate.printed_in_memory();
+        session.budget = options.budget;
         Notebook {
             session,
             history: Vec::new(),
+            timeout: options.timeout,
         }
     }
 
@@ -122,6 +162,9 @@ impl Notebook {
         }
         // An interrupt that came while no cell ran stops nothing.
         self.interrupter().clear();
+        if let Some(t) = self.timeout {
+            self.session.budget = self.session.budget.clone().with_timeout(t);
+        }
         let r = self.pieces(&file, code, emit);
         self.interrupter().clear();
         r

@@ -16,10 +16,13 @@ pub mod rich;
 mod wire;
 
 /// Serves the kernel on the sockets named in `connection_file` until the
-/// notebook shuts it down; Err is the message for exit code 2 or 1.
-pub fn serve(connection_file: &std::path::Path) -> Result<(), String> {
+/// notebook shuts it down, its session under the command line's
+/// `options`; Err is the message for exit code 2 or 1.
+pub fn serve(connection_file: &std::path::Path, options: cell::Options) -> Result<(), String> {
     #[cfg(feature = "jupyter")]
-    return wire::serve(connection_file);
+    return wire::serve(connection_file, options);
+    #[cfg(not(feature = "jupyter"))]
+    let _ = options;
     #[cfg(not(feature = "jupyter"))]
     Err(format!(
         "this chasles was built without the `jupyter` feature; cannot serve '{}'",

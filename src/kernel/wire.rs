@@ -22,7 +22,7 @@ use jupyter_zmq_client::{
 use serde_json::{Map, Value as J};
 use tokio::sync::{mpsc, oneshot};
 
-use super::cell::{Failure, Notebook, Output};
+use super::cell::{Failure, Notebook, Options, Output};
 use crate::budget::Interrupt;
 
 /// What the socket side asks of the session thread.
@@ -49,8 +49,8 @@ enum Job {
 }
 
 /// The session thread: one [`Notebook`], jobs in order.
-fn worker(jobs: std_mpsc::Receiver<Job>, ready: oneshot::Sender<Interrupt>) {
-    let mut nb = Notebook::new();
+fn worker(jobs: std_mpsc::Receiver<Job>, ready: oneshot::Sender<Interrupt>, options: Options) {
+    let mut nb = Notebook::with(options);
     // SIGINT (Jupyter's `interrupt_mode: signal`, a `kill -INT`) sets the
     // same flag as `interrupt_request`.
     let _ = nb.interrupter().on_ctrl_c();
@@ -116,8 +116,8 @@ fn kernel_info() -> KernelInfoReply {
 }
 
 /// Runs the kernel on the sockets of `connection_file` until a
-/// `shutdown_request`.
-pub fn serve(connection_file: &Path) -> Result<(), String> {
+/// `shutdown_request`, its session under `options`.
+pub fn serve(connection_file: &Path, options: Options) -> Result<(), String> {
     let text = std::fs::read_to_string(connection_file).map_err(|e| {
         format!(
             "cannot read the connection file '{}': {}",
@@ -135,14 +135,14 @@ pub fn serve(connection_file: &Path) -> Result<(), String> {
         .enable_all()
         .build()
         .map_err(|e| format!("cannot start the kernel's event loop: {e}"))?;
-    rt.block_on(sockets(info))
+    rt.block_on(sockets(info, options))
 }
 
 fn wire_err(e: impl std::fmt::Display) -> String {
     format!("kernel: {e}")
 }
 
-async fn sockets(info: ConnectionInfo) -> Result<(), String> {
+async fn sockets(info: ConnectionInfo, options: Options) -> Result<(), String> {
     let id = uuid::Uuid::new_v4().to_string();
     let mut heartbeat = create_kernel_heartbeat_connection(&info)
         .await
@@ -165,7 +165,7 @@ async fn sockets(info: ConnectionInfo) -> Result<(), String> {
     std::thread::Builder::new()
         .name("chasles-kernel".into())
         .stack_size(256 * 1024 * 1024)
-        .spawn(move || worker(queue, ready))
+        .spawn(move || worker(queue, ready, options))
         .map_err(|e| format!("cannot start the session thread: {e}"))?;
     let interrupt = interrupt
         .await

@@ -32,7 +32,9 @@ pub const PROMPT: &str = ">>> ";
 pub const CONTINUE: &str = "... ";
 
 /// Where history is kept: `$CHASLES_HISTORY` if set and not empty, else
-/// `chasles/history.txt` in the user's data directory.
+/// `chasles/history.txt` in the user's data directory. It is read and
+/// written only where the effects gate allows (`crate::effects::Gate::history`):
+/// never under `--no-write`, only inside DIR under `--write-dir`.
 pub fn history_path() -> Option<PathBuf> {
     match std::env::var_os("CHASLES_HISTORY") {
         Some(p) if !p.is_empty() => Some(PathBuf::from(p)),
@@ -66,6 +68,7 @@ pub fn run_terminal(
         json: false,
         ..*settings
     });
+    let history = history_path().and_then(|p| gate.history(&p));
     session.gate = gate;
     session.budget = budget;
     let colour = colour_enabled();
@@ -91,7 +94,6 @@ pub fn run_terminal(
         colour,
         continuing: false,
     }));
-    let history = history_path();
     if let Some(path) = &history {
         let _ = rl.load_history(path);
     }

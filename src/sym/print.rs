@@ -225,19 +225,25 @@ pub fn symbol(s: &Symbol, st: Style) -> String {
 }
 
 /// A component of a `given` vector as it is indexed, `w[2]` (LaTeX
-/// `w_{2}`, `\left(w_b\right)_{2}`).
+/// `w_{2}`, `\omega_{b,2}` for `omega_b`).
 fn component(s: &Symbol, st: Style) -> String {
+    let (letters, sub) = split_name(&s.name);
+    let name = if st.mode == Mode::Latex {
+        letters
+    } else {
+        &*s.name
+    };
     let base = symbol(
         &Symbol {
             index: 0,
             unit: false,
-            ..s.clone()
+            ..Symbol::new(name)
         },
         st,
     );
     match st.mode {
-        Mode::Latex if base.contains('_') => format!("\\left({base}\\right)_{{{}}}", s.index),
-        Mode::Latex => format!("{base}_{{{}}}", s.index),
+        Mode::Latex if sub.is_empty() => format!("{base}_{{{}}}", s.index),
+        Mode::Latex => format!("{base}_{{{sub},{}}}", s.index),
         _ => format!("{base}[{}]", s.index),
     }
 }
