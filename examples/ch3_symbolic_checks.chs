@@ -15,7 +15,8 @@
 #     rotation on their branch (a note names the branch assumed);
 #   - partial derivatives by q and q̇ (∂L/∂q̇ of a Lagrangian);
 #   - the symbolic inverse (inv(J) and J^-1 agree), SO(2)/SE(2) labels and
-#     the book's names on symbolic screws.
+#     the book's names on symbolic screws;
+#   - == exact with and without symbols (0.1 + 0.2 == 0.3, √2√3 == √6).
 
 given t, t1, t2, a, b, c, L1 : scalar
 
@@ -117,3 +118,22 @@ y30                                           # 0.0002 (0.000172376436 at 12 dig
 assert y30 == (sin(0.3) + cos(-1.1))^30
 assert abs(y30 - 0.000172376436) < 1e-12
 assert dy == cos(0.3)^2 + 1
+
+# --- == is exact, with or without a symbol (item 5) ---------------------------
+# Numbers stay exact: decimals as typed (0.866 is 866/1000, not √3/2), π,
+# square roots and what arithmetic makes of them; 20 deg is π/9 because
+# deg is π/180. == is true only when the difference is exactly zero.
+given x5, t5 : scalar
+x5 + 1e-13 == x5                              # false: 1e-13 is no rounding
+sqrt(5)*1e13*t5^3 + sqrt(5)*t5 == sqrt(5)*1e13*t5^3   # false
+w5 = (1, 1, 1)/sqrt(3)
+assert Rot(w5, t5) * w5 == w5
+assert sqrt(2)*sqrt(3) == sqrt(6)
+assert sqrt(2)*sqrt(3)*t5 == sqrt(6)*t5
+assert 0.1 + 0.2 == 0.3
+0.866 == sqrt(3)/2                            # false: 0.866 is a decimal
+assert 20 deg == pi/9
+# √5 has no exact form here: a float, so == on rounding only says so.
+sqrt(5)^2 == 5                                # false, with a note: use ≈
+assert sqrt(5)^2 ≈ 5
+assert sqrt(5)^2*t5 ≈ 5*t5

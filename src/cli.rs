@@ -52,8 +52,8 @@ struct Opts {
     /// Keep running after an error.
     #[arg(long, global = true)]
     keep_going: bool,
-    /// Print numbers within 1e-12 of simple closed forms as 1/√2, √3/2,
-    /// π/6 (text output; the REPL's :exact).
+    /// Print exact numbers as such: 1/√2, √3/2, π/6 (floats stay decimals;
+    /// text output; the REPL's :exact).
     #[arg(long, global = true)]
     exact: bool,
     /// Symbolic values in the book's shorthand (c₁, s₁₂).

@@ -21,7 +21,8 @@ fn comparisons_give_bools() {
     let vals: Vec<_> = lines.iter().map(|l| l["value"].clone()).collect();
     assert_eq!(
         vals,
-        [false, true, true, true, true, false].map(serde_json::Value::Bool)
+        // 0.1 + 0.2 == 0.3: decimals as typed are exact (LANGUAGE.md §3)
+        [true, true, true, true, true, false].map(serde_json::Value::Bool)
     );
     assert!(lines.iter().all(|l| l["type"] == "bool"));
 }

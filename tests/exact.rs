@@ -4,6 +4,8 @@
 //! without symbols, and large coefficients are never rounding noise.
 
 mod common;
+use chasles::eval::env::Mode;
+use chasles::session::{Session, Settings};
 use common::json;
 
 /// The value of the last statement of `src`.
@@ -66,4 +68,188 @@ fn big_coefficients_stay_exact() {
     let text = printed.as_str().unwrap_or_default();
     assert!(text.contains("112186277816662845432 t^35"), "{text}");
     assert!(!text.contains('e') && !text.contains('.'), "{text}");
+}
+
+// ------------------------------------------- item 5: exact `==`
+
+/// Text output and errors of `src` (notes go to the second).
+fn text(src: &str, exact: bool) -> (String, String) {
+    let mut s = Session::new(Settings {
+        exact,
+        ..Settings::default()
+    });
+    let (out, err, n) = s.run_to_strings("t.chs", src, Mode::Run, false);
+    assert_eq!(n, 0, "{src}\n{err}");
+    (out, err)
+}
+
+/// Issue 21 item 5's examples: `==` is true only when the difference is
+/// exactly zero, and gives the same answer with or without a symbol.
+#[test]
+fn equality_is_exact_with_and_without_symbols() {
+    let cases = [
+        ("given x : scalar\nx + 1e-13 == x", false),
+        (
+            "given L : scalar\nsqrt(5)*1e13*L^3 + sqrt(5)*L == sqrt(5)*1e13*L^3",
+            false,
+        ),
+        (
+            "given t : scalar\nw = (1, 1, 1)/sqrt(3)\nRot(w, t) * w == w",
+            true,
+        ),
+        ("sqrt(2)*sqrt(3) == sqrt(6)", true),
+        ("given t : scalar\nsqrt(2)*sqrt(3)*t == sqrt(6)*t", true),
+        ("0.1 + 0.2 == 0.3", true),
+        ("given t : scalar\n(0.1 + 0.2)*t == 0.3*t", true),
+        ("0.866 == sqrt(3)/2", false),
+        ("given t : scalar\n0.866*t == sqrt(3)/2*t", false),
+        ("20 deg == pi/9", true),
+        ("given t : scalar\n(20 deg)*t == pi/9*t", true),
+        ("1/sqrt(2) == sqrt(2)/2", true),
+        ("cos(pi/3) == 1/2", true),
+        ("given t : scalar\ncos(pi/3)*t == t/2", true),
+        (
+            "Rotz(30 deg) == [sqrt(3)/2, -0.5, 0; 0.5, sqrt(3)/2, 0; 0, 0, 1]",
+            true,
+        ),
+        (
+            "Rotz(30 deg) == [0.866, -0.5, 0; 0.5, 0.866, 0; 0, 0, 1]",
+            false,
+        ),
+        ("sqrt(8) == 2*sqrt(2)", true),
+        ("sqrt(3/4) == sqrt(3)/2", true),
+    ];
+    for (src, want) in cases {
+        assert_eq!(last(src), serde_json::Value::Bool(want), "{src}");
+    }
+}
+
+/// Floats with no exact form (√5 here) compare as floats: `==` is false
+/// when they differ by rounding only, with a note pointing to `≈`, which
+/// holds — on numbers and on symbolic sides alike.
+#[test]
+fn floats_that_differ_by_rounding_point_to_approx() {
+    for (eq, approx) in [
+        ("sqrt(5)^2 == 5", "sqrt(5)^2 ~= 5"),
+        (
+            "given t : scalar\nsqrt(5)^2*t == 5*t",
+            "given t : scalar\nsqrt(5)^2*t ~= 5*t",
+        ),
+    ] {
+        assert_eq!(last(eq), serde_json::Value::Bool(false), "{eq}");
+        let (out, err) = text(eq, false);
+        assert_eq!(out.trim(), "false");
+        assert!(err.contains("differ by rounding only"), "{err}");
+        assert!(err.contains("≈"), "{err}");
+        assert_eq!(last(approx), serde_json::Value::Bool(true), "{approx}");
+    }
+    // A real difference is no rounding: no note.
+    let (_, err) = text("given x : scalar\nx + 1e-13 == x", false);
+    assert!(!err.contains("rounding"), "{err}");
+    // sin(1)² + cos(1)² = 1 in floats is whatever the floats say, never a
+    // guess: true only with every digit equal, else false with the note.
+    let (out, err) = text("sin(1)^2 + cos(1)^2 == 1", false);
+    let s2c2 = 1f64.sin().powi(2) + 1f64.cos().powi(2);
+    assert_eq!(out.trim(), if s2c2 == 1.0 { "true" } else { "false" });
+    assert_eq!(err.contains("rounding only"), s2c2 != 1.0, "{err}");
+}
+
+/// `--exact` prints what is exact, in a form that reads back, and leaves
+/// decimals as typed and floats with no exact form as decimals.
+#[test]
+fn exact_output_reads_back() {
+    let (out, _) = text(
+        "a = sqrt(2)/2\nb = 20 deg\nc = 0.866\nd = sin(1)\ne = (pi/4, -pi/2, 1/3)",
+        true,
+    );
+    let lines: Vec<&str> = out.lines().collect();
+    assert_eq!(
+        lines,
+        [
+            "a = 1/√2",
+            "b = π/9",
+            "c = 0.866",
+            "d = 0.8415",
+            "e = (π/4, -π/2, 1/3)  : 3-vector"
+        ]
+    );
+    for (printed, value) in [("1/√2", "sqrt(2)/2"), ("π/9", "20 deg"), ("-π/2", "-pi/2")] {
+        let src = format!("{printed} == {value}");
+        assert_eq!(last(&src), serde_json::Value::Bool(true), "{src}");
+    }
+    let (out, _) = text("Rotz(pi/6)", true);
+    assert_eq!(
+        out,
+        "[√3/2, -1/2, 0\n  1/2, √3/2, 0\n    0,    0, 1]  : SO(3)\n"
+    );
+}
+
+/// A random exact number as source text, and its value: integers,
+/// decimals as typed, square roots in ℚ(√2, √3), π and degrees, by sums,
+/// products and quotients.
+fn exact_number(seed: &mut u64, depth: u32) -> (String, f64) {
+    *seed = seed
+        .wrapping_mul(6364136223846793005)
+        .wrapping_add(1442695040888963407);
+    let pick = (*seed >> 33) % if depth == 0 { 5 } else { 8 };
+    let k = ((*seed >> 40) % 7) as i64 + 1;
+    match pick {
+        0 => (k.to_string(), k as f64),
+        1 => (format!("0.{k}"), k as f64 / 10.0),
+        2 => {
+            let r = [2, 3, 6, 8, 12][(k % 5) as usize];
+            (format!("sqrt({r})"), (r as f64).sqrt())
+        }
+        3 => (format!("pi/{k}"), std::f64::consts::PI / k as f64),
+        4 => (
+            format!("{}deg", 15 * k),
+            (15 * k) as f64 * std::f64::consts::PI / 180.0,
+        ),
+        _ => {
+            let (a, x) = exact_number(seed, depth - 1);
+            let (b, y) = exact_number(seed, depth - 1);
+            match pick {
+                5 => (format!("({a} + {b})"), x + y),
+                6 => (format!("({a} * {b})"), x * y),
+                _ => (format!("({a} - {b})"), x - y),
+            }
+        }
+    }
+}
+
+/// `==` on exact numbers gives the same answer with and without a symbol,
+/// never says true where the values differ, and says true on identities
+/// (a sum compared with itself rearranged, √a·√b with √(ab)).
+#[test]
+fn equality_is_the_same_with_or_without_a_symbol() {
+    let mut seed = 21u64;
+    for _ in 0..60 {
+        let (a, x) = exact_number(&mut seed, 2);
+        let (b, y) = exact_number(&mut seed, 2);
+        let plain = last(&format!("{a} == {b}"));
+        let with_t = last(&format!("given t : scalar\n{a}*t == {b}*t"));
+        assert_eq!(plain, with_t, "{a} == {b}");
+        if plain == serde_json::Value::Bool(true) {
+            assert!((x - y).abs() <= 1e-12 * x.abs().max(1.0), "{a} == {b}");
+        }
+        // identities: a + b == b + a, (a - b) + b == a, with and without t
+        for src in [
+            format!("{a} + {b} == {b} + {a}"),
+            format!("({a} - {b}) + {b} == {a}"),
+            format!("given t : scalar\n({a} + {b})*t == {a}*t + {b}*t"),
+        ] {
+            assert_eq!(last(&src), serde_json::Value::Bool(true), "{src}");
+        }
+    }
+    for (p, q) in [(2, 3), (2, 6), (3, 6), (2, 8), (3, 12), (6, 6)] {
+        for src in [
+            format!("sqrt({p})*sqrt({q}) == sqrt({})", p * q),
+            format!(
+                "given t : scalar\nsqrt({p})*sqrt({q})*t == sqrt({})*t",
+                p * q
+            ),
+        ] {
+            assert_eq!(last(&src), serde_json::Value::Bool(true), "{src}");
+        }
+    }
 }

@@ -108,7 +108,8 @@ fn screw_to_axis_normalises_with_a_warning() {
 fn exact_on_the_command_line() {
     let (code, out, _) = run(&["--exact", "-e", "pi/6\nsqrt(3)/2\n0.25"]);
     assert_eq!(code, 0);
-    assert_eq!(out, "π/6\n√3/2\n1/4\n");
+    // 0.25 as typed is a decimal and prints as one (LANGUAGE.md §10)
+    assert_eq!(out, "π/6\n√3/2\n0.25\n");
     let (_, help, _) = run(&["--help"]);
     assert!(help.contains("--exact"), "{help}");
 }

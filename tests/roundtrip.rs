@@ -36,7 +36,7 @@ proptest! {
     #[test]
     fn matrices_read_back_exactly(r in 1usize..6, c in 1usize..6, xs in proptest::collection::vec(finite(), 36)) {
         let m = DMatrix::from_iterator(r, c, xs.into_iter().take(r * c));
-        let v = Value::Num { kind: if c == 1 { Kind::Vector(Some(r)) } else { Kind::Matrix(Some(r), Some(c)) }, m: m.clone().into() };
+        let v = Value::Num { kind: if c == 1 { Kind::Vector(Some(r)) } else { Kind::Matrix(Some(r), Some(c)) }, m: m.clone().into(), exact: Default::default() };
         let back = reread(&v);
         let bm = back.as_matrix().expect("numbers").clone();
         prop_assert_eq!(bm.shape(), m.shape());

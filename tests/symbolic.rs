@@ -52,7 +52,7 @@ impl E {
                     .scale(&Coef::rat(
                         Rat::new(i128::from(*q), i128::from(*d)).unwrap(),
                     ))
-                    .add(&Expr::num(f64::from(*tenths) / 10.0));
+                    .add(&Expr::typed(f64::from(*tenths) / 10.0));
                 for (i, c) in k.iter().enumerate() {
                     let v = Expr::symbol(Symbol::new(NAMES[i]));
                     arg = arg.add(&v.scale(&Coef::int(i64::from(*c))));
@@ -247,7 +247,7 @@ proptest! {
         let off = |q: i128, d: i128, x: f64| {
             Expr::pi()
                 .scale(&Coef::rat(Rat::new(q, d).unwrap()))
-                .add(&Expr::num(x))
+                .add(&Expr::typed(x))
         };
         let a5 = a.add(&off(k as i128, 5, 0.3));
         prop_assert_eq!(sq(Expr::sin(&a5)).add(&sq(Expr::cos(&a5))), Expr::one());
@@ -274,8 +274,9 @@ proptest! {
     /// and exponentials of one screw add their angles.
     #[test]
     fn rotation_identities((x, y, z) in prop::sample::select(exact_axes())) {
-        let n = ((x * x + y * y + z * z) as f64).sqrt();
-        let w: Vec<Expr> = [x, y, z].iter().map(|c| Expr::num(*c as f64 / n)).collect();
+        // the axis exactly: c/√(x² + y² + z²) (no closed form is guessed from floats)
+        let n = Expr::sqrt(&Expr::int(x * x + y * y + z * z));
+        let w: Vec<Expr> = [x, y, z].iter().map(|c| Expr::int(*c).div(&n).unwrap()).collect();
         let t = Expr::symbol(Symbol::new("a"));
         let r = matrix::rodrigues(&w, &t);
         prop_assert_eq!(r.mul(&r.transpose()).unwrap(), Mat::identity(3));

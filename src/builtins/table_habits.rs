@@ -67,6 +67,7 @@ fn eval_diag(a: &mut Args) -> Result<Value, Diagnostic> {
     Ok(Value::Num {
         kind: Kind::Matrix(Some(n), Some(n)),
         m: Num::from_dmatrix(m),
+        exact: Default::default(),
     })
 }
 

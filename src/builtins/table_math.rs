@@ -109,6 +109,7 @@ fn eval_exp(a: &mut Args) -> Result<Value, Diagnostic> {
             Ok(Value::Num {
                 kind: convert::classify(&e),
                 m: e,
+                exact: Default::default(),
             })
         }
         _ => Err(a.error(0, ErrorKind::Type, "exp needs a square matrix")),
@@ -481,6 +482,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 Ok(Value::Num {
                     kind: convert::classify(&m),
                     m,
+                    exact: crate::values::exact::Exact::Typed,
                 })
             },
         },
@@ -502,6 +504,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 Ok(Value::Num {
                     kind: convert::classify(&m),
                     m,
+                    exact: crate::values::exact::Exact::Typed,
                 })
             },
         },
@@ -546,6 +549,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                     Some(u) => Ok(Value::Num {
                         kind: a.value(0).kind(),
                         m: Num::vector(u.as_slice()),
+                        exact: Default::default(),
                     }),
                     None => Err(a.error(
                         0,

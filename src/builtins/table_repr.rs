@@ -97,6 +97,7 @@ fn projection(a: &Args, g: Group) -> Result<Value, Diagnostic> {
     Ok(Value::Num {
         kind: g.kind(),
         m: convert::project(m, g),
+        exact: Default::default(),
     })
 }
 

@@ -486,6 +486,7 @@ fn eval_diff(a: &mut Args) -> Result<Value, Diagnostic> {
     Ok(Value::Num {
         kind: a.value(0).kind(),
         m: crate::values::num::Num::zeros(m.nrows(), m.ncols()),
+        exact: Default::default(),
     })
 }
 

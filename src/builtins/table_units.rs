@@ -39,7 +39,11 @@ fn scale(a: &mut Args, factor: f64) -> Result<Value, Diagnostic> {
     if m.iter().any(|x| x.is_nan()) {
         return Err(a.error(0, ErrorKind::Domain, "an entry is NaN"));
     }
-    Ok(Value::Num { kind, m })
+    Ok(Value::Num {
+        kind,
+        m,
+        exact: Default::default(),
+    })
 }
 
 /// round(x, n): numbers, vectors, matrices; n a whole number of decimals.
@@ -62,7 +66,11 @@ fn eval_round(a: &mut Args) -> Result<Value, Diagnostic> {
         Kind::Twist | Kind::Screw | Kind::Wrench => Kind::Vector(Some(6)),
         k => scaled_kind(&k),
     };
-    Ok(Value::Num { kind, m })
+    Ok(Value::Num {
+        kind,
+        m,
+        exact: Default::default(),
+    })
 }
 
 pub(super) fn builtins() -> Vec<Builtin> {

@@ -138,7 +138,7 @@ impl Builder {
                 Ok(())
             }
             Value::Tuple(items) => self.items(items, label, style),
-            Value::Num { kind, m } => {
+            Value::Num { kind, m, .. } => {
                 let m = &*m.to_dmatrix();
                 if !finite(m) {
                     return Err(format!(

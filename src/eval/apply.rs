@@ -334,7 +334,10 @@ impl<'a> Op<'a> {
     pub fn apply(self, args: &[&Value], kind: &Kind) -> Result<Value, OpError> {
         match self.exact_or_symbolic(args, kind) {
             Some(v) => v,
-            None => self.numeric(args, Some(kind)),
+            None => {
+                let v = self.numeric(args, Some(kind))?;
+                Ok(self.with_exact(v, args, kind))
+            }
         }
     }
 
@@ -420,9 +423,16 @@ fn block_of_entries(widths: &[usize], args: &[&Value]) -> Result<Value, OpError>
     block_numeric(&rows)
 }
 
-/// `[ ... ]` on numbers: [`ops::brackets`].
+/// `[ ... ]` on numbers: [`ops::brackets`], with its exact form when
+/// every entry has one ([`Op::exact_of`]).
 pub fn block_numeric(rows: &[Vec<Value>]) -> Result<Value, OpError> {
-    ops::brackets(rows)
+    let v = ops::brackets(rows)?;
+    if !rows.iter().flatten().all(Value::may_be_exact) {
+        return Ok(v);
+    }
+    let refs: Vec<&Value> = rows.iter().flatten().collect();
+    let widths: Vec<usize> = rows.iter().map(Vec::len).collect();
+    Ok(Op::Block(&widths).with_exact(v, &refs, &Kind::Unknown))
 }
 
 /// `[ ... ]` over symbols: the bracket `[x]` of one entry, else a block.

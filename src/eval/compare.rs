@@ -50,7 +50,7 @@ pub fn equal(a: &Value, b: &Value, op: CmpOp) -> Result<Option<bool>, String> {
             }
             Ok(Some(match op {
                 CmpOp::Approx => approx(x, y),
-                _ => x == y,
+                _ => exactly_equal(a, b),
             }))
         }
         (Value::Bool(x), Value::Bool(y)) => Ok(Some(x == y)),
@@ -71,6 +71,16 @@ pub fn equal(a: &Value, b: &Value, op: CmpOp) -> Result<Option<bool>, String> {
             b.kind().a()
         )),
     }
+}
+
+/// The note on `a == b` false by rounding only (LANGUAGE.md §3).
+fn rounding_note(span: Span) -> Diagnostic {
+    Diagnostic::note(
+        ErrorKind::Domain,
+        span,
+        "the two sides differ by rounding only: floats with no exact form are equal only when every digit is",
+    )
+    .with_help("compare within rounding with ≈ (typed ~=)")
 }
 
 /// Equality of symbolic expressions (LANGUAGE.md §7). Today it is
@@ -95,9 +105,56 @@ pub fn symbolic_equal(a: &Sym, b: &Sym, _op: CmpOp) -> Option<bool> {
     (a == b).then_some(true)
 }
 
+/// `a == b` on numbers (LANGUAGE.md §3): by their exact forms when both
+/// have one (`0.1 + 0.2 == 0.3`, `sqrt(2)*sqrt(3) == sqrt(6)`), else as
+/// floats, equal only when every entry is the same float.
+fn exactly_equal(a: &Value, b: &Value) -> bool {
+    if a.may_be_exact()
+        && b.may_be_exact()
+        && let (Some(x), Some(y)) = (a.exact_form(), b.exact_form())
+    {
+        return x == y;
+    }
+    match (a, b) {
+        (Value::Num { m: x, .. }, Value::Num { m: y, .. }) => x == y,
+        _ => false,
+    }
+}
+
+/// True when `a == b` is false by rounding only: the sides are floats (one
+/// at least has no exact form) within 1e-12 relative, so `≈` is meant.
+pub fn rounding_only(a: &Value, b: &Value) -> bool {
+    match (a, b) {
+        (Value::Num { m: x, .. }, Value::Num { m: y, .. }) => {
+            x.shape() == y.shape()
+                && !(a.may_be_exact()
+                    && b.may_be_exact()
+                    && a.exact_form().is_some()
+                    && b.exact_form().is_some())
+                && within(x, y, 1e-12)
+        }
+        (Value::Formula { .. }, _) | (_, Value::Formula { .. }) => {
+            super::formula::rounding_only(a, b)
+        }
+        (Value::Tuple(xs), Value::Tuple(ys)) if xs.len() == ys.len() => {
+            xs.iter()
+                .zip(ys)
+                .all(|(x, y)| exactly_equal(x, y) || rounding_only(x, y))
+                && xs.iter().zip(ys).any(|(x, y)| rounding_only(x, y))
+        }
+        _ => false,
+    }
+}
+
 /// Entrywise within [`APPROX_TOL`] relative to the larger side (absolute
 /// near zero); infinite entries must agree exactly, NaN never does.
 fn approx(x: &Num, y: &Num) -> bool {
+    within(x, y, APPROX_TOL)
+}
+
+/// Entrywise within `tol` relative to the larger side (absolute near
+/// zero); infinite entries must agree exactly, NaN never does.
+fn within(x: &Num, y: &Num, tol: f64) -> bool {
     let scale = x
         .iter()
         .chain(y.iter())
@@ -105,7 +162,7 @@ fn approx(x: &Num, y: &Num) -> bool {
         .fold(1.0f64, |s, v| s.max(v.abs()));
     x.iter().zip(y.iter()).all(|(a, b)| {
         if a.is_finite() && b.is_finite() {
-            (a - b).abs() <= APPROX_TOL * scale
+            (a - b).abs() <= tol * scale
         } else {
             a == b
         }
@@ -221,6 +278,10 @@ impl Interp<'_> {
                 .lowered_equal(a, b, op, op_span)
                 .unwrap_or_else(|| equal(a, b, op))
             {
+                Ok(Some(false)) if op == CmpOp::Eq && rounding_only(a, b) => {
+                    self.warnings.push(rounding_note(op_span));
+                    Some(false)
+                }
                 Ok(Some(v)) => Some(v),
                 Ok(None) => {
                     return Err(Diagnostic::error(
@@ -372,6 +433,7 @@ mod tests {
         let m = |xs: &[f64]| Value::Num {
             kind: Kind::Matrix(Some(2), Some(2)),
             m: nalgebra::DMatrix::from_row_slice(2, 2, xs).into(),
+            exact: Default::default(),
         };
         let (d, i, j) = largest_difference(&m(&[1.0, 2.0, 3.0, 4.0]), &m(&[1.0, 2.0, 3.5, 4.1]))
             .expect("same shape");

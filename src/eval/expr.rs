@@ -12,6 +12,7 @@ use crate::check::rules::{self, Operands};
 use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind, suggest};
 use crate::syntax::ast::{BinOp, Expr, ExprKind, Name, Span, UnOp};
+use crate::values::exact::Exact;
 
 fn strip(t: &Ty) -> Ty {
     Ty::plain(t.kind)
@@ -60,7 +61,7 @@ impl Interp<'_> {
         if let ExprKind::Number(x) = e.kind {
             return Ok(Typed::new(
                 Ty::scalar(),
-                self.running().then(|| Value::scalar(x)),
+                self.running().then(|| self.literal(x, e.span)),
             ));
         }
         let nest = self.nest;
@@ -86,7 +87,7 @@ impl Interp<'_> {
         match &e.kind {
             ExprKind::Number(x) => Ok(Typed::new(
                 Ty::scalar(),
-                self.running().then(|| Value::scalar(*x)),
+                self.running().then(|| self.literal(*x, e.span)),
             )),
             ExprKind::Bool(b) => Ok(Typed::new(
                 Ty::plain(Kind::Bool),
@@ -179,6 +180,18 @@ impl Interp<'_> {
             } => self.compare(*op, lhs, rhs, *op_span),
             _ => self.list_expr(e), // ranges, comprehensions, strings (§12)
         }
+    }
+
+    /// A number as typed, exact (LANGUAGE.md §3, §7): its decimals
+    /// (`0.866` is 866/1000), or π where `pi` or `π` was written.
+    fn literal(&self, x: f64, span: Span) -> Value {
+        let v = Value::scalar(x);
+        if x == std::f64::consts::PI && matches!(self.text(span).trim(), "pi" | "π") {
+            return v.with_exact(Exact::known(
+                crate::sym::Mat::scalar(crate::sym::Expr::pi()),
+            ));
+        }
+        v.with_exact(Exact::Typed)
     }
 
     fn var(&mut self, name: Name, span: Span) -> Result<Typed, Diagnostic> {
@@ -461,7 +474,11 @@ impl Interp<'_> {
             typed,
             warnings: &mut self.warnings,
         };
-        let v = apply::call(b, vals, site)?;
+        let exact = {
+            let refs: Vec<&Value> = vals.iter().collect();
+            op.exact_of(&refs, &ty.kind)
+        };
+        let v = apply::call(b, vals, site)?.with_exact(exact);
         not_finite_group(&v, b.name, span)?;
         let val = Some(v);
         Ok(Typed::new(refine(ty, &val), val))
@@ -498,7 +515,7 @@ fn literal_number(e: &Expr) -> Option<f64> {
 /// entry is not one: a domain error (`Rotz(inf)`), rather than a NaN matrix
 /// labelled SO(3).
 fn not_finite_group(v: &Value, name: &str, span: Span) -> Result<(), Diagnostic> {
-    if let Value::Num { kind, m } = v
+    if let Value::Num { kind, m, .. } = v
         && matches!(
             kind,
             Kind::SO3

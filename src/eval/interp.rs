@@ -362,12 +362,17 @@ impl<'a> Interp<'a> {
         }
         let ty = t.ty.kind;
         // (The value first: checking has none, and kinds compare by a call.)
-        if let Some(Value::Num { m, kind }) = t.val.as_deref_mut()
+        if let Some(Value::Num { m, kind, exact }) = t.val.as_deref_mut()
             && ty != Kind::Unknown
         {
             if ty.is_group() && *kind != ty {
                 let owned = std::mem::replace(m, crate::values::num::Num::Scalar(0.0));
+                let before = owned.clone();
                 *m = self.group_at_binding(&name, &ty, owned, value_span)?;
+                // Numbers moved onto the group are no longer what was typed.
+                if *m != before {
+                    *exact = Default::default();
+                }
             }
             *kind = ty;
         } else if let Some(Value::Formula { kind, .. }) = t.val.as_deref_mut()

@@ -8,6 +8,7 @@ mod compare;
 mod compound;
 mod derive;
 pub mod env;
+mod exactness;
 mod expr;
 pub mod graph;
 pub mod interp;

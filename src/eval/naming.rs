@@ -115,6 +115,7 @@ impl Interp<'_> {
         let Some(Value::Num {
             m,
             kind: Kind::Matrix(Some(4), Some(4)),
+            ..
         }) = t.value()
         else {
             return;

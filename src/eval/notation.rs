@@ -158,6 +158,7 @@ impl Interp<'_> {
         let val = self.running().then(|| Value::Num {
             kind: convert::classify(&m),
             m,
+            exact: crate::values::exact::Exact::Typed,
         });
         let kind = match &val {
             Some(v) => v.kind(),
@@ -345,6 +346,7 @@ pub(super) fn zero_blocks(rows: &[&Vec<Expr>], vals: &mut [Vec<Value>]) {
         vals[i][j] = Value::Num {
             kind: Kind::Matrix(Some(h), Some(w)),
             m: crate::values::num::Num::zeros(h, w),
+            exact: crate::values::exact::Exact::Typed,
         };
     }
 }

@@ -29,7 +29,11 @@ pub(super) fn canonical(kind: &Kind, m: &Mat, at: Lookup) -> Option<Value> {
     let xs: Vec<f64> = m.data.iter().map(|e| e.eval(at)).collect::<Option<_>>()?;
     let m: crate::values::num::Num = nalgebra::DMatrix::from_row_slice(m.rows, m.cols, &xs).into();
     let kind = if vague(kind) { classify(&m) } else { *kind };
-    Some(Value::Num { kind, m })
+    Some(Value::Num {
+        kind,
+        m,
+        exact: Default::default(),
+    })
 }
 
 /// The kind of numbers by shape and, for a square matrix, by the group
@@ -95,9 +99,10 @@ fn step(r: &Recipe, at: Lookup, memo: &mut Memo) -> Option<Value> {
         }
         Step::Retag => {
             return match refs.as_slice() {
-                [Value::Num { m, .. }] => Some(Value::Num {
+                [Value::Num { m, exact, .. }] => Some(Value::Num {
                     kind: r.kind,
                     m: m.clone(),
+                    exact: exact.clone(),
                 }),
                 _ => None,
             };

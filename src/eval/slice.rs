@@ -195,6 +195,7 @@ impl Interp<'_> {
         let val = Some(Value::Num {
             kind,
             m: Num::from_dmatrix(sub),
+            exact: Default::default(),
         });
         Ok(Typed::new(refine(Ty::new(kind, frames), &val), val))
     }

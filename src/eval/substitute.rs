@@ -98,7 +98,11 @@ fn formula(v: &Value, env: &Env) -> Value {
             } else {
                 *kind
             };
-            return Value::Num { kind, m: xs };
+            return Value::Num {
+                kind,
+                m: xs,
+                exact: Default::default(),
+            };
         }
         if let Some(v) = replay::canonical(kind, m, &lookup) {
             return v;
@@ -119,7 +123,7 @@ fn formula(v: &Value, env: &Env) -> Value {
 fn retag(v: Value, kind: &Kind) -> Value {
     match (v, kind) {
         (v, Kind::Unknown | Kind::Matrix(..) | Kind::Vector(_)) => v,
-        (Value::Num { m, .. }, k) => Value::Num { kind: *k, m },
+        (Value::Num { m, exact, .. }, k) => Value::Num { kind: *k, m, exact },
         (v, _) => v,
     }
 }
@@ -226,9 +230,11 @@ fn constant(v: Value) -> Sym {
         Value::Num {
             kind: Kind::Unknown | Kind::Matrix(..),
             m,
+            exact,
         } => Value::Num {
             kind: replay::classify(&m),
             m,
+            exact,
         },
         other => other,
     };

@@ -67,6 +67,15 @@ pub fn outcome_latex(o: &Outcome, style: Style) -> Option<String> {
 /// A value's LaTeX body: a symbolic value as its formula, a numeric
 /// matrix or vector as a `bmatrix` of its printed numbers.
 pub fn value_latex(v: &Value, style: Style) -> Option<String> {
+    // `:exact`: a value with an exact form prints it (LANGUAGE.md §10).
+    if style.exact
+        && v.may_be_exact()
+        && let Some(m) = v
+            .exact_form()
+            .filter(|m| !crate::values::exact::prints_as_decimals(m))
+    {
+        return Some(formula_latex(&m, style));
+    }
     match v {
         Value::Formula { m, .. } => Some(formula_latex(m, style)),
         Value::Num { m, .. } if m.len() > 1 => Some(matrix_latex(m, style)),

@@ -100,12 +100,10 @@ thread_local! {
 /// [`matrix_block`], appended to `out`: the cells are written once into
 /// one buffer (reused from call to call), then aligned.
 fn write_matrix_block(out: &mut String, m: &Num, style: Style, indent: usize) {
-    // Decimals (not `:exact`'s closed forms such as √3/2) are ASCII, so
-    // widths are byte counts and the block is built as bytes.
-    let ascii = !style.exact || style.sym == crate::sym::print::Mode::Latex;
+    // Decimals are ASCII, so widths are byte counts and the block is
+    // built as bytes (exact forms print as formulas, not here).
     SCRATCH.with(|s| match s.try_borrow_mut() {
-        Ok(mut s) if ascii => align_ascii(out, m, style.digits, indent, &mut s),
-        Ok(mut s) => align(out, m, style, indent, &mut s),
+        Ok(mut s) => align_ascii(out, m, style.digits, indent, &mut s),
         Err(_) => align(out, m, style, indent, &mut Scratch::default()),
     });
 }
@@ -359,6 +357,14 @@ fn write_value(out: &mut String, prefix: &str, ty: &Ty, v: &Value, style: Style)
 /// A number, vector or matrix after its prefix (which ends at column
 /// `indent`), then its label.
 fn write_number(out: &mut String, indent: usize, ty: &Ty, v: &Value, style: Style) {
+    if let Some(m) = crate::values::format::exact_text(v, style) {
+        let st = crate::sym::print::Style {
+            mode: style.sym,
+            digits: style.digits,
+        };
+        out.push_str(&crate::values::exact::block(&m, st, indent, false));
+        return write_label(out, ty, v, style);
+    }
     match v {
         Value::Num { m, .. } if m.ncols() > 1 && m.nrows() > 1 => {
             write_matrix_block(out, m, style, indent)

@@ -68,7 +68,7 @@ pub const COMMANDS: &[Command] = &[
     Command {
         name: "exact",
         args: "[on|off]",
-        doc: "toggle closed forms: 1/√2, √3/2, π/6 instead of decimals",
+        doc: "toggle exact forms: exact numbers as 1/√2, √3/2, π/6, floats as decimals",
     },
     Command {
         name: "short",
@@ -419,7 +419,7 @@ fn sym_mode(session: &mut Session, arg: &str, mode: crate::sym::print::Mode) -> 
     Reply::out(format!("{name}: {}", if on { "on" } else { "off" }))
 }
 
-/// `:exact [on|off]`: toggles (or sets) closed-form printing.
+/// `:exact [on|off]`: toggles (or sets) the printing of exact forms.
 fn exact(session: &mut Session, arg: &str) -> Reply {
     let on = match arg {
         "" => !session.settings.exact,
@@ -429,7 +429,7 @@ fn exact(session: &mut Session, arg: &str) -> Reply {
     };
     session.settings.exact = on;
     Reply::out(if on {
-        "exact: on (values within 1e-12 of forms like 1/√2, √3/2, π/6 print as those)"
+        "exact: on (exact numbers print as such: 1/√2, √3/2, π/6; floats as decimals)"
     } else {
         "exact: off"
     })

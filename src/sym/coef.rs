@@ -142,32 +142,50 @@ impl Surd {
         let r1 = m(a, b, 2).add(&m(c, d, -6));
         f64::from(sp * sign2(&r0, &r1))
     }
+    /// √r exactly, when it lies in ℚ(√2, √3): r = (p/q) is s²·k/q² with k
+    /// among 1, 2, 3, 6 once squares are taken out of p·q (√8 = 2√2,
+    /// √(3/4) = √3/2); None otherwise (√5) or when p·q is too large.
+    pub fn sqrt_of(r: &Rat) -> Option<Surd> {
+        if r.is_negative() {
+            return None;
+        }
+        if r.is_zero() {
+            return Some(Surd::ZERO);
+        }
+        let (p, q) = r.small()?;
+        let n = u128::try_from(i128::from(p).checked_mul(i128::from(q))?).ok()?;
+        // n = s²·k: take out square factors of primes below 1000, then the
+        // rest must be a square times a root of the basis.
+        let (mut s, mut k) = (1u128, n);
+        let mut f = 2u128;
+        while f < 1000 && f * f <= k {
+            while k % (f * f) == 0 {
+                k /= f * f;
+                s *= f;
+            }
+            f += 1;
+        }
+        let (i, t) = ROOTS.iter().enumerate().find_map(|(i, &b)| {
+            let b = b as u128;
+            if k % b != 0 {
+                return None;
+            }
+            let m = k / b;
+            let t = m.isqrt();
+            (t * t == m).then_some((i, t))
+        })?;
+        // √(p/q) = √(p q)/q = s t √b / q
+        let coef = Rat::new(i128::try_from(s.checked_mul(t)?).ok()?, i128::from(q))?;
+        let mut out = Surd::ZERO;
+        out.0[i] = coef;
+        Some(out)
+    }
     /// The rational, when only the rational part is present.
     pub fn as_rat(&self) -> Option<Rat> {
         self.0[1..]
             .iter()
             .all(|r| r.is_zero())
             .then(|| self.0[0].clone())
-    }
-    /// A closed form of `x`: p/q, or p/q times √2, √3 or √6.
-    pub fn recognize(x: f64) -> Option<Surd> {
-        if x == 0.0 {
-            return Some(Surd::ZERO);
-        }
-        if let Some(r) = Rat::approximate(x, 10_000) {
-            return Some(Surd::rat(r));
-        }
-        for (i, k) in ROOTS.iter().enumerate().skip(1) {
-            if let Some(r) = Rat::approximate(x / (*k as f64).sqrt(), 1000) {
-                let mut s = Surd::ZERO;
-                s.0[i] = r;
-                return Some(s);
-            }
-        }
-        // A decimal as typed: 0.425, 0.0823 (a denominator of 2s and 5s only).
-        Rat::approximate(x, 1_000_000_000)
-            .filter(|r| r.small().is_some_and(|(_, d)| 1_000_000_000 % d == 0))
-            .map(Surd::rat)
     }
 }
 
@@ -255,12 +273,20 @@ impl Coef {
             im: Surd::ZERO,
         }
     }
-    /// A number as a coefficient: exact when it is a simple closed form.
+    /// A float as a coefficient (LANGUAGE.md §7): exact only when the
+    /// float is itself a simple fraction — an integer, or a fraction whose
+    /// denominator is a power of two up to 1024 (0.5, 0.25) — else a float.
+    /// No closed form is guessed: a number that has one (1/√2, π/9) enters
+    /// a symbolic expression through its exact form, not through its float.
     pub fn from_f64(x: f64) -> Coef {
-        match Surd::recognize(x) {
-            Some(s) => Coef::real(s),
-            None => Coef::Approx { re: x, im: 0.0 },
+        let scaled = x * 1024.0;
+        if x.is_finite() && scaled == scaled.trunc() && scaled.abs() < 9.0e15 {
+            let r = Rat::new(scaled as i128, 1024);
+            if let Some(r) = r {
+                return Coef::rat(r);
+            }
         }
+        Coef::Approx { re: x, im: 0.0 }
     }
     /// True for 0.
     pub fn is_zero(&self) -> bool {
@@ -446,14 +472,31 @@ mod tests {
     }
 
     #[test]
-    fn recognizes_closed_forms() {
-        let h = Surd::recognize(std::f64::consts::FRAC_1_SQRT_2).unwrap();
-        assert_eq!(h.0[1], Rat::new(1, 2).unwrap());
-        assert_eq!(
-            Surd::recognize(0.425).unwrap(),
-            Surd::rat(Rat::new(17, 40).unwrap())
-        );
-        assert!(Surd::recognize(std::f64::consts::PI).is_none());
+    fn square_roots_in_the_field_are_exact() {
+        let r = |p, q| Rat::new(p, q).unwrap();
+        let s = Surd::sqrt_of(&r(8, 1)).unwrap();
+        assert_eq!(s.0[1], Rat::int(2));
+        let s = Surd::sqrt_of(&r(3, 4)).unwrap();
+        assert_eq!(s.0[2], r(1, 2));
+        let s = Surd::sqrt_of(&r(1, 2)).unwrap();
+        assert_eq!(s.0[1], r(1, 2));
+        assert_eq!(Surd::sqrt_of(&r(9, 4)), Some(Surd::rat(r(3, 2))));
+        assert_eq!(Surd::sqrt_of(&Rat::int(5)), None);
+        assert_eq!(Surd::sqrt_of(&Rat::int(-4)), None);
+    }
+
+    #[test]
+    fn floats_are_exact_only_as_themselves() {
+        assert_eq!(Coef::from_f64(0.5), Coef::rat(Rat::new(1, 2).unwrap()));
+        assert_eq!(Coef::from_f64(-3.0), Coef::int(-3));
+        // No closed form is guessed from a float.
+        for x in [
+            std::f64::consts::FRAC_1_SQRT_2,
+            0.1,
+            std::f64::consts::PI / 9.0,
+        ] {
+            assert_eq!(Coef::from_f64(x), Coef::Approx { re: x, im: 0.0 });
+        }
     }
 
     #[test]

@@ -219,16 +219,20 @@ impl Expr {
     pub fn int(n: i64) -> Expr {
         Expr::constant(Coef::int(n))
     }
-    /// A number, exact when it is a simple closed form (p/q, p/q·√2, …,
-    /// or a multiple of π with a small denominator).
+    /// A float as a constant ([`Coef::from_f64`]): exact only when the
+    /// float is itself a simple fraction (an integer, 0.5), else a float.
+    /// No closed form (1/√2, π/9) is guessed: exact numbers come in with
+    /// their exact forms (LANGUAGE.md §7).
     pub fn num(x: f64) -> Expr {
-        let c = Coef::from_f64(x);
-        if let Coef::Approx { .. } = c
-            && let Some(p) = Rat::approximate(x / std::f64::consts::PI, 1000)
-        {
-            return Expr::pi().scale(&Coef::rat(p));
+        Expr::constant(Coef::from_f64(x))
+    }
+    /// A number as typed, exactly: the shortest decimal that reads back as
+    /// `x` (`0.3` is 3/10; LANGUAGE.md §7), a float only for inf or NaN.
+    pub fn typed(x: f64) -> Expr {
+        match Rat::typed(x) {
+            Some(r) => Expr::constant(Coef::rat(r)),
+            None => Expr::num(x),
         }
-        Expr::constant(c)
     }
     /// One variable.
     pub fn var(v: Var) -> Expr {
@@ -535,7 +539,10 @@ impl Expr {
         if let Some(r) = x.as_const().and_then(|c| c.as_rat())
             && !r.is_negative()
         {
-            return Expr::num(r.to_f64().sqrt());
+            return match super::coef::Surd::sqrt_of(&r) {
+                Some(s) => Expr::constant(Coef::real(s)),
+                None => Expr::num(r.to_f64().sqrt()),
+            };
         }
         if x.as_const().is_none()
             && let Some(r) = x.sqrt_of_square()

@@ -431,7 +431,8 @@ mod tests {
     #[test]
     fn rotation_times_transpose_is_identity() {
         let th = Expr::symbol(Symbol::new("theta"));
-        let w: Vec<Expr> = [1.0, 2.0, 2.0].iter().map(|x| Expr::num(x / 3.0)).collect();
+        let third = |k| Expr::constant(Coef::rat(crate::sym::coef::Rat::new(k, 3).unwrap()));
+        let w: Vec<Expr> = [1, 2, 2].into_iter().map(third).collect();
         let r = rodrigues(&w, &th);
         assert_eq!(r.mul(&r.transpose()).unwrap(), Mat::identity(3));
         assert_eq!(r.det().unwrap(), Expr::one());

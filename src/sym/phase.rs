@@ -251,11 +251,11 @@ mod tests {
         let (t, t1, t2) = (s("t"), s("t1"), s("t2"));
         assert_eq!(show(&Expr::cos(&t.add(&pi(1, 5)))), "cos(t + π/5)");
         assert_eq!(show(&Expr::sin(&t.sub(&pi(1, 8)))), "sin(t - π/8)");
-        let a = t1.add(&Expr::num(0.3));
+        let a = t1.add(&Expr::typed(0.3));
         let sum = Expr::cos(&a)
             .mul(&Expr::cos(&t2))
             .sub(&Expr::sin(&a).mul(&Expr::sin(&t2)));
-        assert_eq!(sum, Expr::cos(&t1.add(&t2).add(&Expr::num(0.3))));
+        assert_eq!(sum, Expr::cos(&t1.add(&t2).add(&Expr::typed(0.3))));
         assert_eq!(show(&sum), "cos(t1 + t2 + 0.3)");
         let b = t.add(&pi(2, 7));
         let one = Expr::cos(&b)
@@ -264,9 +264,9 @@ mod tests {
             .add(&Expr::sin(&b).powi(2).unwrap());
         assert_eq!(one, Expr::one());
         // π/5 + 0.3 and 2.5 rad print as typed
-        let c = t.add(&pi(1, 5)).add(&Expr::num(0.3));
+        let c = t.add(&pi(1, 5)).add(&Expr::typed(0.3));
         assert_eq!(show(&Expr::sin(&c)), "sin(t + π/5 + 0.3)");
-        assert_eq!(show(&Expr::cos(&t.add(&Expr::num(2.5)))), "cos(t + 2.5)");
+        assert_eq!(show(&Expr::cos(&t.add(&Expr::typed(2.5)))), "cos(t + 2.5)");
     }
 
     #[test]
@@ -291,7 +291,10 @@ mod tests {
     #[test]
     fn phases_evaluate_and_differentiate() {
         let t = s("t");
-        let a = t.scale(&Coef::int(2)).add(&pi(3, 7)).add(&Expr::num(-0.25));
+        let a = t
+            .scale(&Coef::int(2))
+            .add(&pi(3, 7))
+            .add(&Expr::typed(-0.25));
         let e = Expr::sin(&a).mul(&Expr::cos(&t.add(&pi(1, 9))));
         let at = |x: f64| move |_: &Symbol| Some(x);
         for x in [-2.0, 0.1, 1.3] {
@@ -300,8 +303,8 @@ mod tests {
             let got = e.eval(&at(x)).unwrap();
             assert!((got - want).abs() < 1e-13, "{got} vs {want}");
         }
-        let d = Expr::cos(&t.add(&Expr::num(0.3))).diff(&crate::sym::Wrt::Time(Symbol::new("t")));
-        assert_eq!(d, Expr::sin(&t.add(&Expr::num(0.3))).neg());
+        let d = Expr::cos(&t.add(&Expr::typed(0.3))).diff(&crate::sym::Wrt::Time(Symbol::new("t")));
+        assert_eq!(d, Expr::sin(&t.add(&Expr::typed(0.3))).neg());
     }
 
     #[test]

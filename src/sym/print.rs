@@ -374,6 +374,9 @@ fn surd_term(r: &Rat, k: i64, latex: bool) -> String {
     };
     let p_one = *p == num_bigint::BigUint::from(1u8);
     if k == 1 {
+        if let Some(e) = super::rat::scientific(&p.to_string(), &q.magnitude().to_string()) {
+            return format!("{sign}{e}");
+        }
         if q_small == Some(1) {
             return format!("{sign}{p}");
         }
@@ -565,7 +568,9 @@ mod tests {
     #[test]
     fn dots_and_exact_constants() {
         let th = Symbol::timed("theta");
-        let x = Expr::symbol(th.dot()).scale(&Coef::from_f64(0.5f64.sqrt()));
+        let half = crate::sym::coef::Rat::new(1, 2).unwrap();
+        let r2 = crate::sym::coef::Surd([Rat::ZERO, half, Rat::ZERO, Rat::ZERO]);
+        let x = Expr::symbol(th.dot()).scale(&Coef::real(r2));
         assert_eq!(expr(&x, Style::default()), "(1/√2) θ̇");
         let latex = Style {
             mode: Mode::Latex,

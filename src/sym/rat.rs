@@ -214,6 +214,23 @@ impl Rat {
         }
         BigRational::from_float(x).map(Rat::from_big)
     }
+    /// The decimal a float was typed as: the shortest digits that read back
+    /// as it (`0.1` is 1/10, `1e-13` is 1/10¹³); None for inf or NaN.
+    pub fn typed(x: f64) -> Option<Rat> {
+        if !x.is_finite() {
+            return None;
+        }
+        if x == x.trunc() && x.abs() < 9.0e15 {
+            return Some(Rat::int(x as i64));
+        }
+        // `{:e}` is the shortest round-trip form: `-8.66e-1`.
+        let text = format!("{x:e}");
+        let (mantissa, exp) = text.split_once('e')?;
+        let exp: i32 = exp.parse().ok()?;
+        let (int, frac) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+        let digits: BigInt = format!("{int}{frac}").parse().ok()?;
+        Some(Rat::decimal(&digits, exp - frac.len() as i32))
+    }
     /// The decimal `digits · 10^exp` exactly (a number as typed: `0.866`
     /// is 866/1000, `1e-13` is 1/10¹³).
     pub fn decimal(digits: &BigInt, exp: i32) -> Rat {
@@ -319,6 +336,31 @@ impl std::fmt::Display for Rat {
             write!(f, "{p}/{q}")
         }
     }
+}
+
+/// p/q (digits of a fraction in lowest terms) as typed in scientific notation, when that is much shorter: a
+/// long power of ten in it (`1e300`, `1e-13`), at most 15 digits.
+pub fn scientific(p: &str, q: &str) -> Option<String> {
+    let digits = |m: &str| -> Option<String> {
+        (m.len() <= 15).then(|| match m.len() {
+            1 => m.to_string(),
+            _ => format!("{}.{}", &m[..1], &m[1..]),
+        })
+    };
+    if q == "1" && p.len() > 15 {
+        let m = p.trim_end_matches('0');
+        if p.len() - m.len() < 10 {
+            return None;
+        }
+        return Some(format!("{}e{}", digits(m)?, p.len() - 1));
+    }
+    let zeros = q.strip_prefix('1')?;
+    if zeros.len() > 12 && zeros.bytes().all(|b| b == b'0') && p.len() <= 15 {
+        // p / 10^n = m · 10^(len(p) - 1 - n)
+        let m = p.trim_end_matches('0');
+        return Some(format!("{}e-{}", digits(m)?, zeros.len() + 1 - p.len()));
+    }
+    None
 }
 
 #[cfg(test)]

@@ -1,116 +1,271 @@
-//! Closed forms for the REPL's `:exact` mode (LANGUAGE.md §10): a number
-//! within 1e-12 of a simple closed form prints as that form — `1/2`,
-//! `1/√2`, `√3/2`, `2√2`, `π/6`, `-π/2`, `2π/3` — instead of decimals.
+//! Exact numbers (LANGUAGE.md §3, §7, §10): a numeric value carries its
+//! exact form while it has one — integers and decimals as typed (`0.866`
+//! is 866/1000, not √3/2), π, square roots of exact numbers and what
+//! arithmetic makes of them (`1/sqrt(2)` stays 1/√2) — as an [`Exact`]
+//! beside its floats. The floats are what every numeric operation reads;
+//! the exact form is asked for only by `==`, by a number entering a
+//! symbolic expression, and by `--exact` printing.
 //!
-//! The forms tried, in order: a fraction p/q, p/q·√k for k = 2, 3, 5, 6,
-//! and p/q·π, each with a denominator q ≤ 12 and a small numerator.
-//! Integers are left to the ordinary printer.
+//! Exactness costs nothing where no one asks for it (issue 21): a literal
+//! is only marked as typed ([`Exact::Typed`]: its digits are read back
+//! from the float when asked), and an operation on exact operands records
+//! how to compute its exact form ([`Exact::later`]), which runs the first
+//! time the form is asked for and is kept. A value with no exact form
+//! (sin 1, a numeric matrix exponential) is a float ([`Exact::Float`]):
+//! it compares as a float, and nothing guesses a closed form for it.
 
-/// How close a value must be to a closed form.
-pub const TOLERANCE: f64 = 1e-12;
+use std::cell::{Cell, OnceCell};
+use std::rc::Rc;
 
-/// Largest denominator tried.
-const MAX_DEN: i64 = 12;
+use super::num::Num;
+use crate::sym::Mat;
+use crate::sym::coef::{Coef, Rat};
+use crate::sym::expr::{Expr, Var};
 
-/// Largest numerator (in absolute value) tried.
-const MAX_NUM: i64 = 144;
-
-/// Square roots tried (square-free, so each form is unique).
-const ROOTS: [i64; 4] = [2, 3, 5, 6];
-
-/// The closed form of `x`, if it is within [`TOLERANCE`] of one and not
-/// an integer (integers print as themselves anyway).
-pub fn closed_form(x: f64) -> Option<String> {
-    if !x.is_finite() || (x - x.round()).abs() <= TOLERANCE {
-        return None;
-    }
-    if let Some((p, q)) = fraction(x) {
-        return Some(ratio(p, q));
-    }
-    for k in ROOTS {
-        if let Some((p, q)) = fraction(x / (k as f64).sqrt()) {
-            return Some(times(p, q, &format!("√{k}"), Some(k)));
-        }
-    }
-    fraction(x / std::f64::consts::PI).map(|(p, q)| times(p, q, "π", None))
+/// What is known of a numeric value's exact form.
+#[derive(Clone, Default)]
+pub enum Exact {
+    /// No exact form: the numbers are floats.
+    #[default]
+    Float,
+    /// The numbers as typed: each entry is the shortest decimal that reads
+    /// back as its float (`0.866`, `1e-13`, `2`).
+    Typed,
+    /// An exact form computed the first time it is asked for.
+    Later(Rc<Later>),
 }
 
-/// The smallest denominator q ≤ 12 with x ≈ p/q (so p/q is in lowest terms).
-fn fraction(x: f64) -> Option<(i64, i64)> {
-    if !x.is_finite() || x.abs() > MAX_NUM as f64 {
-        return None;
+impl std::fmt::Debug for Exact {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Exact::Float => f.write_str("Float"),
+            Exact::Typed => f.write_str("Typed"),
+            Exact::Later(l) => match l.form.get() {
+                Some(Some(m)) => write!(f, "Exact({m:?})"),
+                Some(None) => f.write_str("Float"),
+                None => f.write_str("Later"),
+            },
+        }
     }
-    (1..=MAX_DEN).find_map(|q| {
-        let p = (x * q as f64).round();
-        let close = (x - p / q as f64).abs() <= TOLERANCE;
-        (close && p != 0.0 && p.abs() <= MAX_NUM as f64).then_some((p as i64, q))
+}
+
+/// The recipe of an exact form, run once; its result is kept.
+pub struct Later {
+    form: OnceCell<Option<Mat>>,
+    make: Cell<Option<Recipe>>,
+}
+
+/// How an exact form is made from the exact forms of the operands.
+type Recipe = Box<dyn FnOnce() -> Option<Mat>>;
+
+impl Exact {
+    /// A form known now (a formula whose entries are all exact numbers).
+    pub fn known(m: Mat) -> Exact {
+        let form = OnceCell::new();
+        let _ = form.set(is_exact(&m).then_some(m));
+        Exact::Later(Rc::new(Later {
+            form,
+            make: Cell::new(None),
+        }))
+    }
+    /// A form computed by `make` when first asked for (None: no exact form).
+    pub fn later(make: impl FnOnce() -> Option<Mat> + 'static) -> Exact {
+        Exact::Later(Rc::new(Later {
+            form: OnceCell::new(),
+            make: Cell::new(Some(Box::new(make))),
+        }))
+    }
+    /// True when no exact form is known (nothing to ask).
+    pub fn is_float(&self) -> bool {
+        matches!(self, Exact::Float)
+    }
+    /// The exact form of numbers `m` carrying this: None for a float.
+    pub fn form(&self, m: &Num) -> Option<Mat> {
+        match self {
+            Exact::Float => None,
+            Exact::Typed => typed(m),
+            Exact::Later(l) => l
+                .form
+                .get_or_init(|| {
+                    let m = l.make.take().and_then(|f| f())?;
+                    is_exact(&m).then_some(m)
+                })
+                .clone(),
+        }
+    }
+}
+
+/// True when every entry is an exact number: exact coefficients over π
+/// alone (no symbol, no kept call, no float).
+pub fn is_exact(m: &Mat) -> bool {
+    m.data.iter().all(|e| {
+        e.terms
+            .iter()
+            .all(|(mono, c)| c.is_exact() && mono.iter().all(|(v, _)| matches!(v, Var::Pi)))
     })
 }
 
-/// `p/q` with the sign in front.
-fn ratio(p: i64, q: i64) -> String {
-    if q == 1 {
-        p.to_string()
-    } else {
-        format!("{p}/{q}")
+/// The exact form of numbers as typed: each entry the decimal its float
+/// prints as (the shortest that reads back), None for inf or NaN.
+pub fn typed(m: &Num) -> Option<Mat> {
+    let (r, c) = m.shape();
+    let mut data = Vec::with_capacity(r * c);
+    for i in 0..r {
+        for j in 0..c {
+            data.push(Expr::constant(Coef::rat(decimal(m[(i, j)])?)));
+        }
     }
+    Some(Mat {
+        rows: r,
+        cols: c,
+        data,
+    })
 }
 
-/// p/q times a symbol: `π/6`, `-2π/3`, `√3/2`, `3√2`; `1/√k` for √k/k.
-fn times(p: i64, q: i64, symbol: &str, root: Option<i64>) -> String {
-    let sign = if p < 0 { "-" } else { "" };
-    let p = p.abs();
-    if root == Some(q) && p == 1 {
-        return format!("{sign}1/{symbol}");
+/// The decimal a float was typed as ([`Rat::typed`]).
+pub fn decimal(x: f64) -> Option<Rat> {
+    Rat::typed(x)
+}
+
+/// True when `r` is a decimal that `--digits` printing shows as typed (a
+/// denominator of 2s and 5s only, at most 12 places).
+pub fn is_short_decimal(r: &Rat) -> bool {
+    let (_, den) = r.parts();
+    let mut d = den;
+    let (two, five) = (num_bigint::BigInt::from(2), num_bigint::BigInt::from(5));
+    let zero = num_bigint::BigInt::from(0);
+    let mut places = 0;
+    while &d % &two == zero || &d % &five == zero {
+        if &d % &two == zero {
+            d /= &two;
+        } else {
+            d /= &five;
+        }
+        places += 1;
     }
-    let coef = if p == 1 { String::new() } else { p.to_string() };
-    if q == 1 {
-        format!("{sign}{coef}{symbol}")
-    } else {
-        format!("{sign}{coef}{symbol}/{q}")
+    d == num_bigint::BigInt::from(1) && places <= 12
+}
+
+/// True when the exact form of a value prints as its decimals anyway
+/// (every entry a short decimal, [`is_short_decimal`]): `--exact` then
+/// prints the value as usual.
+pub fn prints_as_decimals(m: &Mat) -> bool {
+    m.data.iter().all(|e| match e.as_const() {
+        Some(c) => c.as_rat().is_some_and(|r| is_short_decimal(&r)),
+        None => false,
+    })
+}
+
+/// An exact number as `--exact` prints it, so that it reads back: a
+/// multiple of π as `π/6`, `-π/2`, `2π/3`; anything else as the symbolic
+/// printer writes a constant (`√3/2`, `1/√2`, `1/3`).
+pub fn text(e: &Expr, st: crate::sym::print::Style) -> String {
+    // A decimal prints as numbers do, to `--digits` places; halves,
+    // quarters and fifths stay fractions, as in symbolic output.
+    if let Some(r) = e.as_const().and_then(|c| c.as_rat())
+        && is_short_decimal(&r)
+        && r.small().is_none_or(|(_, q)| q == 1 || q > 5)
+    {
+        return super::number::fmt_num(r.to_f64(), st.digits);
+    }
+    if let [(mono, c)] = e.terms.iter().collect::<Vec<_>>().as_slice()
+        && let [(Var::Pi, 1)] = mono.as_slice()
+        && let Some((p, q)) = c.as_rat().and_then(|r| r.small())
+    {
+        let sign = if p < 0 { "-" } else { "" };
+        let p = p.unsigned_abs();
+        let num = if p == 1 { String::new() } else { p.to_string() };
+        return if q == 1 {
+            format!("{sign}{num}π")
+        } else {
+            format!("{sign}{num}π/{q}")
+        };
+    }
+    crate::sym::print::expr(e, st)
+}
+
+/// A matrix of exact numbers as `--exact` prints it: a number alone, a
+/// vector `(a, b, c)`, a matrix with right-aligned columns starting at
+/// column `indent` (as numbers print, with [`text`] for each entry).
+pub fn block(m: &Mat, st: crate::sym::print::Style, indent: usize, one_line: bool) -> String {
+    let cells: Vec<String> = m.data.iter().map(|e| text(e, st)).collect();
+    match (m.rows, m.cols) {
+        (1, 1) => cells[0].clone(),
+        (_, 1) => format!("({})", cells.join(", ")),
+        (1, _) => format!("({}).T", cells.join(", ")),
+        _ if one_line => {
+            let rows: Vec<String> = cells.chunks(m.cols).map(|r| r.join(", ")).collect();
+            format!("[{}]", rows.join("; "))
+        }
+        _ => {
+            let w = |s: &String| s.chars().count();
+            let widths: Vec<usize> = (0..m.cols)
+                .map(|j| {
+                    (0..m.rows)
+                        .map(|i| w(&cells[i * m.cols + j]))
+                        .max()
+                        .unwrap_or(0)
+                })
+                .collect();
+            let mut out = String::from("[");
+            for i in 0..m.rows {
+                if i > 0 {
+                    out.push('\n');
+                    out.push_str(&" ".repeat(indent + 1));
+                }
+                for j in 0..m.cols {
+                    let c = &cells[i * m.cols + j];
+                    out.push_str(&" ".repeat(widths[j] - w(c)));
+                    out.push_str(c);
+                    if j + 1 < m.cols {
+                        out.push_str(", ");
+                    }
+                }
+            }
+            out.push(']');
+            out
+        }
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use std::f64::consts::PI;
 
     #[test]
-    fn book_forms() {
-        let cases = [
-            (1.0 / 2f64.sqrt(), "1/√2"),
-            (-1.0 / 2f64.sqrt(), "-1/√2"),
-            (3f64.sqrt() / 2.0, "√3/2"),
-            (PI / 6.0, "π/6"),
-            (-PI / 2.0, "-π/2"),
-            (2.0 * PI / 3.0, "2π/3"),
-            (PI, "π"),
-            (2f64.sqrt(), "√2"),
-            (2.0 * 2f64.sqrt(), "2√2"),
-            (1.0 / 3f64.sqrt(), "1/√3"),
-            (0.5, "1/2"),
-            (-0.25, "-1/4"),
-            (2.0 / 3.0, "2/3"),
-        ];
-        for (x, want) in cases {
-            assert_eq!(closed_form(x).as_deref(), Some(want), "{x}");
-        }
+    fn decimals_are_read_as_typed() {
+        assert_eq!(decimal(0.866), Rat::new(433, 500));
+        assert_eq!(decimal(0.1), Rat::new(1, 10));
+        assert_eq!(decimal(-2.5), Rat::new(-5, 2));
+        assert_eq!(decimal(3.0), Some(Rat::int(3)));
+        let tiny = decimal(1e-13).expect("finite");
+        assert_eq!(tiny.mul(&Rat::int(10_000_000_000_000)), Rat::ONE);
+        assert_eq!(decimal(f64::NAN), None);
+        assert!(is_short_decimal(&Rat::new(433, 500).unwrap()));
+        assert!(!is_short_decimal(&Rat::new(1, 3).unwrap()));
     }
 
     #[test]
-    fn leaves_others_alone() {
-        for x in [
-            0.0,
-            1.0,
-            -3.0,
-            0.123456789,
-            1.0 / 2f64.sqrt() + 1e-9,
-            f64::NAN,
-            f64::INFINITY,
-            1e300,
-        ] {
-            assert_eq!(closed_form(x), None, "{x}");
-        }
+    fn a_recipe_runs_once_and_a_float_has_no_form() {
+        let m = Num::Scalar(0.5);
+        let calls = Rc::new(Cell::new(0));
+        let c = calls.clone();
+        let e = Exact::later(move || {
+            c.set(c.get() + 1);
+            Some(Mat::scalar(Expr::pi()))
+        });
+        assert_eq!(e.form(&m), Some(Mat::scalar(Expr::pi())));
+        assert_eq!(e.form(&m), Some(Mat::scalar(Expr::pi())));
+        assert_eq!(calls.get(), 1);
+        assert_eq!(Exact::Float.form(&m), None);
+        assert_eq!(
+            Exact::Typed.form(&m),
+            Some(Mat::scalar(Expr::constant(Coef::rat(
+                Rat::new(1, 2).unwrap()
+            ))))
+        );
+        // A float coefficient is no exact form.
+        let approx = Mat::scalar(Expr::constant(Coef::Approx { re: 0.3, im: 0.0 }));
+        assert_eq!(Exact::known(approx).form(&m), None);
     }
 }

@@ -12,14 +12,14 @@ use super::value::Value;
 use crate::sym::Mat;
 use crate::sym::print::{self, Mode};
 
-/// How numbers print: `digits` decimals (trailing zeros trimmed), or with
-/// `exact`, a closed form such as `1/√2` or `π/6` where one is within
-/// 1e-12 (the REPL's `:exact`). A plain `usize` converts to decimals only.
+/// How numbers print: `digits` decimals (trailing zeros trimmed); with
+/// `exact`, values that have an exact form print it (`1/√2`, `(1/9) π`;
+/// the REPL's `:exact`). A plain `usize` converts to decimals only.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Style {
     /// Decimals.
     pub digits: usize,
-    /// Print simple closed forms (`√3/2`, `-π/2`) instead of decimals.
+    /// Print exact forms (`√3/2`, `-(1/2) π`) instead of decimals.
     pub exact: bool,
     /// Symbolic values: plain text, the book's shorthand or LaTeX (§7).
     pub sym: Mode,
@@ -32,14 +32,23 @@ impl Style {
         self.write(&mut s, x);
         s
     }
-    /// One number in this style, appended to `out`.
+    /// One number in this style, appended to `out` (decimals: `--exact`
+    /// prints a value's exact form, which [`exact_text`] finds, never a
+    /// closed form guessed from a float).
     pub fn write(self, out: &mut String, x: f64) {
-        let exact = self.exact && self.sym != Mode::Latex;
-        match exact.then(|| super::exact::closed_form(x)).flatten() {
-            Some(form) => out.push_str(&form),
-            None => write_num(out, x, self.digits),
-        }
+        write_num(out, x, self.digits);
     }
+}
+
+/// The exact form `--exact` prints for a value (LANGUAGE.md §10): its
+/// entries as exact numbers (`1/√2`, `(1/9) π`), when it has an exact form
+/// that is not just the decimals it prints anyway (`0.866` stays `0.866`).
+pub fn exact_text(v: &Value, style: Style) -> Option<Mat> {
+    if !style.exact || style.sym == Mode::Latex || !v.may_be_exact() {
+        return None;
+    }
+    v.exact_form()
+        .filter(|m| !super::exact::prints_as_decimals(m))
 }
 
 impl From<usize> for Style {
@@ -71,6 +80,10 @@ fn write_list(out: &mut String, xs: impl Iterator<Item = f64>, style: Style) {
 
 /// [`inline`], appended to `out`.
 pub fn write_inline(out: &mut String, v: &Value, style: Style) {
+    if let Some(m) = exact_text(v, style) {
+        out.push_str(&super::exact::block(&m, sym_style(style), 0, true));
+        return;
+    }
     match v {
         Value::Num { m, .. } if m.is_empty() => {
             let _ = write!(out, "zeros({}, {})", m.nrows(), m.ncols());

@@ -13,12 +13,19 @@ use crate::sym::{Expr, Symbol};
 use crate::syntax::ast::BinOp;
 use num_traits::{One, Zero};
 
-/// A numeric or symbolic value as a matrix of expressions (numbers become
-/// exact constants where they have a closed form).
+pub use super::equality::{equal, rounding_only};
+
+/// A numeric or symbolic value as a matrix of expressions: a number
+/// enters with its exact form when it has one (LANGUAGE.md §7: `0.866` is
+/// 866/1000, `1/sqrt(2)` is 1/√2, `20 deg` is (1/9) π), else as a float
+/// ([`Expr::num`] guesses no closed form).
 pub fn mat_of(v: &Value) -> Option<Mat> {
     match v {
         Value::Formula { m, .. } => Some(m.clone()),
-        Value::Num { m, .. } => {
+        Value::Num { m, exact, .. } => {
+            if let Some(e) = exact.form(m) {
+                return Some(e);
+            }
             let rows = (0..m.nrows())
                 .map(|i| (0..m.ncols()).map(|j| Expr::num(m[(i, j)])).collect())
                 .collect();
@@ -60,13 +67,19 @@ fn settle_kind(kind: &Kind, m: &Mat) -> Kind {
 }
 
 /// A value from a matrix of expressions: numeric when every entry is a
-/// number (binding numbers later makes a value numeric, §7).
+/// number (binding numbers later makes a value numeric, §7), carrying its
+/// exact form when every entry is exact.
 pub fn make(kind: &Kind, m: Mat) -> Value {
     let kind = settle_kind(kind, &m);
     match m.as_f64() {
         Some(xs) => Value::Num {
             kind,
             m: nalgebra::DMatrix::from_row_slice(m.rows, m.cols, &xs).into(),
+            exact: if super::exact::is_exact(&m) {
+                super::exact::Exact::known(m)
+            } else {
+                super::exact::Exact::Float
+            },
         },
         None => Value::Formula { kind, m, how: None },
     }
@@ -426,54 +439,6 @@ pub fn substitute(kind: &Kind, m: &Mat, lookup: &dyn Fn(&str) -> Option<f64>) ->
     make(kind, m.map(|e| e.subst(&by)))
 }
 
-/// `a == b` (or `a ≈ b` when `approx`) with a formula on a side (§7),
-/// decided by canonical forms: equal forms are equal; forms that differ
-/// by a trigonometric polynomial (no kept call such as sqrt or atan2) are
-/// different functions, since the symbols and the z = e^{iθ} are
-/// algebraically independent; a difference with a kept call is undecided
-/// (`Ok(None)`). Coefficients without a closed form are floats: they count
-/// as zero within 1e-12 (1e-9 for `≈`) of the largest coefficient.
-pub fn equal(a: &Value, b: &Value, approx: bool) -> Result<Option<bool>, String> {
-    let (x, y) = match (mat_of(a), mat_of(b)) {
-        (Some(x), Some(y)) if (x.rows, x.cols) == (y.rows, y.cols) => (x, y),
-        _ => {
-            return Err(format!(
-                "cannot compare {} with {}",
-                a.kind().a(),
-                b.kind().a()
-            ));
-        }
-    };
-    let tol = if approx { 1e-9 } else { 1e-12 };
-    let mut decided = Some(true);
-    for (p, q) in x.data.iter().zip(&y.data) {
-        let d = p.sub(q);
-        let scale = [p, q]
-            .iter()
-            .flat_map(|e| e.terms.values())
-            .map(|c| c.to_c64().0.abs().max(c.to_c64().1.abs()))
-            .fold(1.0f64, f64::max);
-        let residue = d.terms.values().all(|c| match c {
-            crate::sym::coef::Coef::Approx { re, im } => re.abs().max(im.abs()) <= tol * scale,
-            exact => approx && exact.to_c64().0.abs().max(exact.to_c64().1.abs()) <= tol * scale,
-        });
-        if d.is_zero() || residue {
-            continue;
-        }
-        let kept_call = d
-            .terms
-            .keys()
-            .flatten()
-            .any(|(v, _)| matches!(v, crate::sym::expr::Var::Call(_)));
-        if kept_call {
-            decided = None;
-        } else {
-            return Ok(Some(false));
-        }
-    }
-    Ok(decided)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -491,6 +456,7 @@ mod tests {
         let eye = Value::Num {
             kind: Kind::SO3,
             m: nalgebra::DMatrix::identity(3, 3).into(),
+            exact: Default::default(),
         };
         assert_eq!(equal(&rrt, &eye, false), Ok(Some(true)));
         assert_eq!(equal(&r, &eye, false), Ok(Some(false)));

@@ -14,6 +14,7 @@
 //! modules under their former paths.
 
 pub mod convert;
+pub mod equality;
 pub mod error;
 pub mod exact;
 pub mod format;

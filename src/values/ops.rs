@@ -15,7 +15,7 @@ use crate::lie::{LieGroup, SE2, SE3, SO3, Vec3, se3};
 
 fn num(v: &Value) -> Result<(&Kind, &Num), OpError> {
     match v {
-        Value::Num { kind, m } => Ok((kind, m)),
+        Value::Num { kind, m, .. } => Ok((kind, m)),
         other => Err(OpError::NotNumbers(other.kind())),
     }
 }
@@ -33,7 +33,11 @@ fn out(kind: &Kind, m: Num) -> Value {
     } else {
         kind
     };
-    Value::Num { kind, m }
+    Value::Num {
+        kind,
+        m,
+        exact: Default::default(),
+    }
 }
 
 /// `l * r` with the result kind the checker found.
@@ -44,12 +48,14 @@ pub fn mul(l: &Value, r: &Value, kind: &Kind) -> Result<Value, OpError> {
         return Ok(Value::Num {
             kind: *kind,
             m: rm.map(|y| y * x),
+            exact: Default::default(),
         });
     }
     if let (Num::Scalar(y), Kind::Scalar) = (rm, rk) {
         return Ok(Value::Num {
             kind: *kind,
             m: lm.map(|x| x * y),
+            exact: Default::default(),
         });
     }
     // The book's products of fixed shapes, without a general matrix:
@@ -78,6 +84,7 @@ pub fn mul(l: &Value, r: &Value, kind: &Kind) -> Result<Value, OpError> {
         return Ok(Value::Num {
             kind: *kind,
             m: Num::V3(p),
+            exact: Default::default(),
         });
     }
     if let (Num::M3(t), (2, 1), Kind::SE2 | Kind::Se2) = (lm, rm.shape(), lk) {
@@ -86,6 +93,7 @@ pub fn mul(l: &Value, r: &Value, kind: &Kind) -> Result<Value, OpError> {
         return Ok(Value::Num {
             kind: *kind,
             m: Num::from_slice(2, 1, p.as_slice()),
+            exact: Default::default(),
         });
     }
     if lm.ncols() != rm.nrows() {
@@ -182,6 +190,7 @@ pub fn neg(v: &Value, kind: &Kind) -> Result<Value, OpError> {
     Ok(Value::Num {
         kind: *kind,
         m: m.map(|x| -x),
+        exact: Default::default(),
     })
 }
 
@@ -195,6 +204,7 @@ pub fn div(l: &Value, r: &Value, kind: &Kind) -> Result<Value, OpError> {
     Ok(Value::Num {
         kind: *kind,
         m: lm.map(|x| x / d),
+        exact: Default::default(),
     })
 }
 
@@ -256,6 +266,7 @@ pub fn pow(b: &Value, e: f64, kind: &Kind) -> Result<Value, OpError> {
         return Ok(Value::Num {
             kind: Kind::Matrix(Some(r), Some(c)),
             m: acc,
+            exact: Default::default(),
         });
     }
     Ok(out(kind, acc))
@@ -312,7 +323,7 @@ fn num_inverse(k: &Kind, m: &Num) -> Result<(Num, Option<f64>), OpError> {
 /// `x.T`.
 pub fn transpose(v: &Value) -> Value {
     match v {
-        Value::Num { kind, m } => {
+        Value::Num { kind, m, .. } => {
             let kind = match kind {
                 // [ω]ᵀ = −[ω]: the transpose of so(3) is in so(3).
                 Kind::SO3 | Kind::SO2 | Kind::So3 | Kind::So2 | Kind::Scalar => *kind,
@@ -325,6 +336,7 @@ pub fn transpose(v: &Value) -> Value {
             Value::Num {
                 kind,
                 m: m.transpose(),
+                exact: Default::default(),
             }
         }
         other => other.clone(),
@@ -340,15 +352,18 @@ pub fn member(v: &Value, name: &'static str) -> Result<Value, OpError> {
     let v3 = |v: Vec3| Value::Num {
         kind: Kind::Vector(Some(3)),
         m: Num::V3(v),
+        exact: Default::default(),
     };
     match (name, m) {
         ("R", Num::M4(t)) => Ok(Value::Num {
             kind: Kind::SO3,
             m: Num::M3(t.fixed_view::<3, 3>(0, 0).into_owned()),
+            exact: Default::default(),
         }),
         ("R", Num::M3(t)) if *k == Kind::SE2 => Ok(Value::Num {
             kind: Kind::SO2,
             m: Num::from_slice(2, 2, t.fixed_view::<2, 2>(0, 0).into_owned().as_slice()),
+            exact: Default::default(),
         }),
         ("p", Num::M4(t)) => Ok(v3(t.fixed_view::<3, 1>(0, 3).into_owned())),
         ("p", Num::M3(t)) if *k == Kind::SE2 => Ok(Value::vector(
@@ -404,6 +419,7 @@ pub fn index(v: &Value, sels: &[Sel]) -> Result<Value, OpError> {
             Ok(Value::Num {
                 kind: Kind::Matrix(Some(1), Some(m.ncols())),
                 m: Num::from_slice(1, m.ncols(), &row),
+                exact: Default::default(),
             })
         }
         [Sel::All, Sel::At(j)] => {
@@ -411,6 +427,7 @@ pub fn index(v: &Value, sels: &[Sel]) -> Result<Value, OpError> {
             Ok(Value::Num {
                 kind: Kind::Vector(Some(n)),
                 m: Num::vector(&m.as_slice()[j * n..(j + 1) * n]),
+                exact: Default::default(),
             })
         }
         [Sel::All, Sel::All] | [Sel::All] => Ok(v.clone()),
@@ -430,6 +447,7 @@ pub fn brackets(rows: &[Vec<Value>]) -> Result<Value, OpError> {
             _ => Value::Num {
                 kind: *k,
                 m: m.clone(),
+                exact: Default::default(),
             },
         });
     }
@@ -477,6 +495,7 @@ pub fn brackets(rows: &[Vec<Value>]) -> Result<Value, OpError> {
     Ok(Value::Num {
         kind: convert::classify(&m),
         m,
+        exact: Default::default(),
     })
 }
 

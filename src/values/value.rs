@@ -3,6 +3,7 @@
 
 use std::rc::Rc;
 
+use super::exact::Exact;
 use super::num::Num;
 use super::symbolic::Tree;
 use crate::check::ty::{Kind, Ty};
@@ -29,6 +30,8 @@ pub enum Value {
     Num {
         kind: Kind,
         m: Num,
+        /// The exact form of the numbers, while they have one (§3, §7).
+        exact: Exact,
     },
     Bool(bool),
     Tuple(Vec<Value>),
@@ -57,7 +60,9 @@ impl PartialEq for Value {
     /// trees and canonical forms; mechanisms and functions by identity).
     fn eq(&self, other: &Value) -> bool {
         match (self, other) {
-            (Value::Num { kind: a, m: x }, Value::Num { kind: b, m: y }) => a == b && x == y,
+            (Value::Num { kind: a, m: x, .. }, Value::Num { kind: b, m: y, .. }) => {
+                a == b && x == y
+            }
             (Value::Bool(a), Value::Bool(b)) => a == b,
             (Value::Tuple(a), Value::Tuple(b)) => a == b,
             (Value::Mech(a), Value::Mech(b)) => Rc::ptr_eq(a, b),
@@ -79,6 +84,7 @@ impl Value {
         Value::Num {
             kind: Kind::Scalar,
             m: Num::Scalar(x),
+            exact: Exact::Float,
         }
     }
     /// A value of `kind` from any nalgebra matrix (held inline when its
@@ -100,17 +106,26 @@ impl Value {
         } else {
             Num::Dyn(nalgebra::DMatrix::from_iterator(r, c, m.iter().copied()))
         };
-        Value::Num { kind, m }
+        Value::Num {
+            kind,
+            m,
+            exact: Exact::Float,
+        }
     }
     /// A value of `kind` holding `m`.
     pub fn of(kind: Kind, m: impl Into<Num>) -> Value {
-        Value::Num { kind, m: m.into() }
+        Value::Num {
+            kind,
+            m: m.into(),
+            exact: Exact::Float,
+        }
     }
     /// A column vector.
     pub fn vector(kind: Kind, v: &[f64]) -> Value {
         Value::Num {
             kind,
             m: Num::vector(v),
+            exact: Exact::Float,
         }
     }
     /// The kind this value has at run time.
@@ -140,6 +155,24 @@ impl Value {
             Value::Num { m, .. } => Some(m),
             _ => None,
         }
+    }
+    /// The same value with the exact form `exact` (numbers only).
+    pub fn with_exact(mut self, e: Exact) -> Value {
+        if let Value::Num { exact, .. } = &mut self {
+            *exact = e;
+        }
+        self
+    }
+    /// The exact form of a numeric value, when it has one (§3, §7).
+    pub fn exact_form(&self) -> Option<crate::sym::Mat> {
+        match self {
+            Value::Num { m, exact, .. } => exact.form(m),
+            _ => None,
+        }
+    }
+    /// True for a numeric value with an exact form known or to be computed.
+    pub fn may_be_exact(&self) -> bool {
+        matches!(self, Value::Num { exact, .. } if !exact.is_float())
     }
     pub fn is_symbolic(&self) -> bool {
         matches!(self, Value::Sym(_))

@@ -119,7 +119,7 @@ fn commands_work_in_a_cell() {
     let plain = data(&outs)[0]["text/plain"].as_str().expect("text");
     assert!(plain.contains("√3/2"), "{plain}");
     let latex = data(&outs)[0]["text/latex"].as_str().expect("latex");
-    assert!(latex.contains("\\sqrt{3}/2"), "{latex}");
+    assert!(latex.contains("\\frac{\\sqrt{3}}{2}"), "{latex}");
     let (outs, _) = run(&mut nb, ":digits 2\n:exact off\npi");
     assert_eq!(data(&outs)[0]["text/plain"], "3.14");
     let (outs, _) = run(&mut nb, "help Rotz");

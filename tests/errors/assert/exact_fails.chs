@@ -1,3 +1,5 @@
-# `==` is exact: 0.1 + 0.2 is not 0.3 in floating point, but it is ≈ 0.3.
-assert 0.1 + 0.2 ≈ 0.3
+# `==` is exact: decimals as typed are exact (0.1 + 0.2 == 0.3), but √5 has
+# no exact form here, so sqrt(5)^2 is a float that misses 5 by rounding: ≈.
 assert 0.1 + 0.2 == 0.3
+assert sqrt(5)^2 ≈ 5
+assert sqrt(5)^2 == 5

@@ -1,0 +1,152 @@
+//! Equality of values with symbolic sides (LANGUAGE.md §3, §7): `==` by
+//! canonical forms, exactly — numbers enter with their exact forms, a
+//! float coefficient (no exact form) compares as a float and is equal
+//! only when every digit is — and `≈` within 1e-9 of the largest
+//! coefficient. [`rounding_only`] tells a `==` that failed by rounding
+//! alone, so that the answer can point to `≈`.
+
+use super::formula::mat_of;
+use super::value::Value;
+use crate::sym::coef::Coef;
+use crate::sym::expr::{Mono, Var};
+use crate::sym::{Expr, Mat};
+
+/// `a == b` (or `a ≈ b` when `approx`) with a formula on a side (§7),
+/// decided by canonical forms: equal forms are equal; forms that differ
+/// by a trigonometric polynomial (no kept call such as sqrt or atan2) are
+/// different functions, since the symbols and the z = e^{iθ} are
+/// algebraically independent; a difference with a kept call is undecided
+/// (`Ok(None)`). `==` is exact: numbers enter with their exact forms
+/// ([`mat_of`]), and a coefficient that is a float (no exact form: sin 1,
+/// √5) compares as a float, equal only when the floats are
+/// ([`rounding_only`] tells when they differ by rounding only). `≈` lets
+/// each coefficient of the difference be within 1e-9 of the largest.
+pub fn equal(a: &Value, b: &Value, approx: bool) -> Result<Option<bool>, String> {
+    let (x, y) = sides(a, b)?;
+    let mut decided = Some(true);
+    for (p, q) in x.data.iter().zip(&y.data) {
+        let differing = if approx {
+            approx_difference(p, q)
+        } else {
+            exact_difference(p, q)
+        };
+        if differing.is_empty() {
+            continue;
+        }
+        if differing
+            .iter()
+            .any(|m| m.iter().any(|(v, _)| matches!(v, Var::Call(_))))
+        {
+            decided = None;
+        } else {
+            return Ok(Some(false));
+        }
+    }
+    Ok(decided)
+}
+
+/// Both sides as matrices of one shape.
+fn sides(a: &Value, b: &Value) -> Result<(Mat, Mat), String> {
+    match (mat_of(a), mat_of(b)) {
+        (Some(x), Some(y)) if (x.rows, x.cols) == (y.rows, y.cols) => Ok((x, y)),
+        _ => Err(format!(
+            "cannot compare {} with {}",
+            a.kind().a(),
+            b.kind().a()
+        )),
+    }
+}
+
+/// The coefficients of `p` and `q` at each monomial of either (0 where
+/// one has none).
+fn pairs<'a>(p: &'a Expr, q: &'a Expr) -> Vec<(&'a Mono, Coef, Coef)> {
+    let mut out: Vec<(&Mono, Coef, Coef)> = Vec::new();
+    for (m, c) in &p.terms {
+        let d = q.terms.get(m).cloned().unwrap_or(Coef::ZERO);
+        out.push((m, c.clone(), d));
+    }
+    for (m, d) in &q.terms {
+        if !p.terms.contains_key(m) {
+            out.push((m, Coef::ZERO, d.clone()));
+        }
+    }
+    out
+}
+
+/// The monomials where `p` and `q` differ exactly: exact coefficients
+/// compared exactly, a float with anything as floats.
+fn exact_difference<'a>(p: &'a Expr, q: &'a Expr) -> Vec<&'a Mono> {
+    pairs(p, q)
+        .into_iter()
+        .filter(|(_, c, d)| {
+            if c.is_exact() && d.is_exact() {
+                c != d
+            } else {
+                c.to_c64() != d.to_c64()
+            }
+        })
+        .map(|(m, ..)| m)
+        .collect()
+}
+
+/// The largest coefficient of either side (at least 1): the scale of
+/// rounding and of `≈`.
+fn scale(p: &Expr, q: &Expr) -> f64 {
+    [p, q]
+        .iter()
+        .flat_map(|e| e.terms.values())
+        .map(|c| {
+            let (re, im) = c.to_c64();
+            re.abs().max(im.abs())
+        })
+        .fold(1.0f64, f64::max)
+}
+
+/// The monomials where `p` and `q` differ by more than 1e-9 of the
+/// largest coefficient (`≈`).
+fn approx_difference<'a>(p: &'a Expr, q: &'a Expr) -> Vec<&'a Mono> {
+    let tol = 1e-9 * scale(p, q);
+    pairs(p, q)
+        .into_iter()
+        .filter(|(_, c, d)| {
+            let ((a, b), (e, f)) = (c.to_c64(), d.to_c64());
+            (a - e).abs().max((b - f).abs()) > tol
+        })
+        .map(|(m, ..)| m)
+        .collect()
+}
+
+/// True when `a == b` is false only by rounding: every coefficient that
+/// differs is a float on one side at least, within 1e-12 of itself (or
+/// below 1e-15 of the largest coefficient: noise), and no kept call
+/// differs (the answer then points to `≈`).
+pub fn rounding_only(a: &Value, b: &Value) -> bool {
+    let Ok((x, y)) = sides(a, b) else {
+        return false;
+    };
+    let mut any = false;
+    for (p, q) in x.data.iter().zip(&y.data) {
+        let tol = 1e-12 * scale(p, q);
+        for (m, c, d) in pairs(p, q) {
+            let differs = if c.is_exact() && d.is_exact() {
+                c != d
+            } else {
+                c.to_c64() != d.to_c64()
+            };
+            if !differs {
+                continue;
+            }
+            // Within 1e-12 of the term itself, or noise far below the entry.
+            let ((re1, im1), (re2, im2)) = (c.to_c64(), d.to_c64());
+            let size = re1.abs().max(im1.abs()).max(re2.abs()).max(im2.abs());
+            let gap = (re1 - re2).abs().max((im1 - im2).abs());
+            let small = gap <= 1e-12 * size || gap <= 1e-3 * tol;
+            let float = !c.is_exact() || !d.is_exact();
+            if !small || !float || m.iter().any(|(v, _)| matches!(v, Var::Call(_))) {
+                return false;
+            }
+            any = true;
+        }
+    }
+    any
+}
