@@ -67,10 +67,7 @@ pub fn terms(e: &Expr, st: Style) -> Vec<(bool, String)> {
 }
 
 fn plain(e: &Expr, st: Style) -> Vec<(bool, String)> {
-    real_form(e)
-        .iter()
-        .map(|((poly, trig), c)| term(c, poly, trig, st))
-        .collect()
+    super::factor::factored(&real_form(e), st)
 }
 
 /// A kept reciprocal 1/(d)^e whose d is one real term k·(variables)·(trig

@@ -11,6 +11,7 @@ pub mod coef;
 pub mod diff;
 pub mod eval;
 pub mod expr;
+pub mod factor;
 pub mod fraction;
 pub mod matrix;
 pub mod phase;
