@@ -36,6 +36,7 @@ pub fn equal(a: &Value, b: &Value, approx: bool) -> Result<Option<bool>, String>
         if differing
             .iter()
             .any(|m| m.iter().any(|(v, _)| matches!(v, Var::Call(_))))
+            || (differing.iter().any(|m| has_pi_phase(m)) && !witnessed(p, q))
         {
             decided = None;
         } else {
@@ -43,6 +44,36 @@ pub fn equal(a: &Value, b: &Value, approx: bool) -> Result<Option<bool>, String>
         }
     }
     Ok(decided)
+}
+
+/// True when a monomial holds a π-phase u = e^{iπ/27720} (`sym::phase`).
+/// u is a root of unity, so its powers satisfy linear relations (the
+/// cyclotomic ones: 1 + 2 cos(2π/5) − 2 cos(π/5) = 0) that the canonical
+/// form does not reduce: a difference in such terms may still be zero.
+fn has_pi_phase(m: &Mono) -> bool {
+    m.iter().any(|(v, _)| match v {
+        Var::Z(s) | Var::Sym(s) => s.phase() == Some(crate::sym::phase::Unit::Pi),
+        _ => false,
+    })
+}
+
+/// True when p − q is clearly nonzero at one of a few fixed points (far
+/// above rounding): a witness that the sides differ. Without one, a
+/// difference the canonical form cannot reduce is left undecided, never
+/// answered `false`.
+fn witnessed(p: &Expr, q: &Expr) -> bool {
+    const POINTS: [f64; 4] = [0.3719, -1.2345, 2.0821, 0.9137];
+    let d = p.sub(q);
+    let mut names = Vec::new();
+    d.symbols(&mut names);
+    let size = scale(p, q);
+    POINTS.iter().enumerate().any(|(k, x0)| {
+        let at = |s: &crate::sym::Symbol| {
+            let i = names.iter().position(|n| n == s)?;
+            Some(x0 + 0.7071 * (i + k) as f64)
+        };
+        d.eval(&at).is_some_and(|v| v.abs() > 1e-8 * size)
+    })
 }
 
 /// Both sides as matrices of one shape.
