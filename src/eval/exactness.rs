@@ -34,6 +34,16 @@ impl Op<'_> {
         if args.is_empty() || !args.iter().all(|a| a.may_be_exact()) {
             return Exact::Float;
         }
+        // Builtins whose results are exact at exact arguments often enough
+        // to be worth a recipe (square roots, trigonometry at multiples of
+        // π/12, rotations by them, products); exp, log and the adjoint of
+        // numbers are floats (issue 14's benchmark makes them by the
+        // thousand).
+        if let Op::Call(b, _) = self
+            && !EXACT_CALLS.contains(&b.name)
+        {
+            return Exact::Float;
+        }
         let typed = args.iter().all(|a| {
             matches!(
                 a,
@@ -95,6 +105,36 @@ impl Op<'_> {
         })
     }
 }
+
+/// The builtins [`Op::exact_of`] gives an exact form.
+const EXACT_CALLS: &[&str] = &[
+    "sqrt",
+    "abs",
+    "sin",
+    "cos",
+    "tan",
+    "cot",
+    "sec",
+    "csc",
+    "Rotx",
+    "Roty",
+    "Rotz",
+    "Rot",
+    "cross",
+    "dot",
+    "det",
+    "trace",
+    "inv",
+    "RotInv",
+    "TransInv",
+    "VecToso3",
+    "VecTose3",
+    "so3ToVec",
+    "se3ToVec",
+    "RpToTrans",
+    "norm",
+    "transpose",
+];
 
 /// An operation as [`Op::exact_of`] keeps it until its exact form is
 /// asked for (owning what [`Op`] borrows).
