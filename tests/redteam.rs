@@ -54,3 +54,23 @@ fn a_symbolic_call_that_fails_with_its_numbers_is_refused() {
     let later = error("given w : vec3\ngiven t\nR = Rot(w, t)\nw = (0, 0, 0)\nt = 0.9\nR");
     assert!(later.contains("zero vector"), "{later}");
 }
+
+/// Offsets of π/5 and π/7 are roots of unity: sums of them can vanish
+/// (the five cosines of t + 2πk/5 add to 0) though the canonical form
+/// keeps them apart. `==` says `cannot decide` there, never a wrong
+/// `false`; it says `false` only with a point where the sides differ.
+#[test]
+fn cyclotomic_identities_are_never_false() {
+    let fifths = "given t\ncos(t) + cos(t + 2 pi/5) + cos(t + 4 pi/5) + cos(t + 6 pi/5) + cos(t + 8 pi/5) == 0";
+    let e = error(fifths);
+    assert!(e.contains("cannot decide"), "{e}");
+    let sevenths = "given t\ncos(t + pi/7) + cos(t + 3 pi/7) + cos(t + 5 pi/7) + cos(t + pi) + cos(t + 9 pi/7) + cos(t + 11 pi/7) + cos(t + 13 pi/7) == 0";
+    let e = error(sevenths);
+    assert!(e.contains("cannot decide"), "{e}");
+    // cos A + cos B = 2 cos((A+B)/2) cos((A−B)/2): here 2 cos(π/5) ≠ 1, so false
+    let v = last_numbers("given t\ncos(t + pi/5) + cos(t + 3 pi/5) == cos(t + 2 pi/5)");
+    assert_eq!(v, vec![0.0], "{v:?}");
+    // true, but cos(π/5) typed as a number is a float: not decided, not false
+    let e = error("given t\ncos(t + pi/5) + cos(t + 3 pi/5) == 2 cos(pi/5) cos(t + 2 pi/5)");
+    assert!(e.contains("cannot decide"), "{e}");
+}
