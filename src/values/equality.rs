@@ -70,7 +70,7 @@ fn witnessed(p: &Expr, q: &Expr) -> bool {
     POINTS.iter().enumerate().any(|(k, x0)| {
         let at = |s: &crate::sym::Symbol| {
             let i = names.iter().position(|n| n == s)?;
-            Some(x0 + 0.7071 * (i + k) as f64)
+            Some(x0 + 0.6180 * (i + k) as f64)
         };
         d.eval(&at).is_some_and(|v| v.abs() > 1e-8 * size)
     })
