@@ -3,7 +3,7 @@
 //! as one, `(sin(t1) sin(t5) + cos(t1) cos(t5) cos(t2 + t3 + t4)) cos(t6)`
 //! for sin(t1) sin(t5) cos(t6) + cos(t1) cos(t5) cos(t2 + t3 + t4) cos(t6).
 //! Greedy and one level deep: the factor shared by the most terms first,
-//! then again among the terms left; a sum of more than [`MAX_TERMS`] terms
+//! then again among the terms left; a sum of more than `MAX_TERMS` (12) terms
 //! is left as it is. Only the printing changes; the canonical form stays
 //! expanded.
 
