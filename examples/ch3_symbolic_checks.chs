@@ -137,3 +137,12 @@ assert 20 deg == pi/9
 sqrt(5)^2 == 5                                # false, with a note: use ≈
 assert sqrt(5)^2 ≈ 5
 assert sqrt(5)^2*t5 ≈ 5*t5
+
+# --- constant offsets fold like angles (π/5, 0.3); cot/sec/csc bare ----------
+given s1, s2 : scalar
+cos(s1 + 0.3) cos(s2) - sin(s1 + 0.3) sin(s2)   # cos(s1 + s2 + 0.3)
+assert cos(s1 + 0.3) cos(s2) - sin(s1 + 0.3) sin(s2) == cos(s1 + s2 + 0.3)
+cos(s1 + pi/5)
+assert cos(s1 + pi/5)^2 + sin(s1 + pi/5)^2 == 1
+assert cot s1 == cot(s1)
+sec s1 + csc s2

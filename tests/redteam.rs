@@ -74,3 +74,16 @@ fn cyclotomic_identities_are_never_false() {
     let e = error("given t\ncos(t + pi/5) + cos(t + 3 pi/5) == 2 cos(pi/5) cos(t + 2 pi/5)");
     assert!(e.contains("cannot decide"), "{e}");
 }
+
+/// A decimal phase on one side and its float cosine on the other
+/// (t1 bound to 0.3 first): the sides are equal but for rounding, so `==`
+/// is `cannot decide`, never `false`; a real difference is still `false`.
+#[test]
+fn a_phase_against_its_float_is_never_false() {
+    let e = error(
+        "given t2\nt1 = 0.3\ncos(t1 + 0.3) cos(t2) - sin(t1 + 0.3) sin(t2) == cos(t1 + t2 + 0.3)",
+    );
+    assert!(e.contains("cannot decide"), "{e}");
+    let v = last_numbers("given t2\ncos(t2 + 0.6) == cos(t2 + 0.5)");
+    assert_eq!(v, vec![0.0], "{v:?}");
+}

@@ -36,7 +36,7 @@ pub fn equal(a: &Value, b: &Value, approx: bool) -> Result<Option<bool>, String>
         if differing
             .iter()
             .any(|m| m.iter().any(|(v, _)| matches!(v, Var::Call(_))))
-            || (differing.iter().any(|m| has_pi_phase(m)) && !witnessed(p, q))
+            || (differing.iter().any(|m| has_phase(m)) && !witnessed(p, q))
         {
             decided = None;
         } else {
@@ -46,13 +46,16 @@ pub fn equal(a: &Value, b: &Value, approx: bool) -> Result<Option<bool>, String>
     Ok(decided)
 }
 
-/// True when a monomial holds a π-phase u = e^{iπ/27720} (`sym::phase`).
-/// u is a root of unity, so its powers satisfy linear relations (the
-/// cyclotomic ones: 1 + 2 cos(2π/5) − 2 cos(π/5) = 0) that the canonical
-/// form does not reduce: a difference in such terms may still be zero.
-fn has_pi_phase(m: &Mono) -> bool {
+/// True when a monomial holds a phase variable (`sym::phase`). A π-phase
+/// u = e^{iπ/27720} is a root of unity, so its powers satisfy linear
+/// relations (the cyclotomic ones: 1 + 2 cos(2π/5) − 2 cos(π/5) = 0) that
+/// the canonical form does not reduce; and a phase on one side may stand
+/// for a float on the other (cos(t2 + 0.6) against 0.8253 cos t2 −
+/// 0.5646 sin t2, equal but for rounding). Either way a difference in such
+/// terms may still be zero.
+fn has_phase(m: &Mono) -> bool {
     m.iter().any(|(v, _)| match v {
-        Var::Z(s) | Var::Sym(s) => s.phase() == Some(crate::sym::phase::Unit::Pi),
+        Var::Z(s) | Var::Sym(s) => s.is_phase(),
         _ => false,
     })
 }
