@@ -353,6 +353,9 @@ impl<'a> Op<'a> {
                     (Op::Call(b, _), [x, by]) if b.name == "diff" => {
                         recipe::attach(v, super::chain::derivative(x, by))
                     }
+                    (Op::Call(b, _), [x, name, by]) if b.name == "subs" => {
+                        recipe::attach(v, super::replay::substituted(x, name, by))
+                    }
                     _ => recipe::record(v, self.made(), args, kind),
                 })
                 .map_err(OpError::Message),

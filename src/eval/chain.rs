@@ -7,8 +7,12 @@
 //! canonical engine gives (a symbol's is 0 or 1, q's by t is q̇). So the
 //! derivative of `(sin a + cos b)^30` bound later is 30 (sin a + cos b)^29
 //! cos a replayed with numbers, not its expanded form, whose coefficients
-//! cancel. Scalars only: where a step is not a scalar function this
-//! module knows, the derivative is a leaf, as before.
+//! cancel. Vectors and matrices too (`diff(Rotz(a) Roty(b), a)`,
+//! `diff((sin a + cos b)^30 (1, 2, 3), a)`): products keep their order,
+//! d(M⁻¹) = −M⁻¹ dM M⁻¹, dRotz(u) = Rotz(u) [ẑ] du (3.51),
+//! d exp(A u) = A exp(A u) du for a constant A (`exp([S] θ)`, 3.86),
+//! d Ad_T = Ad_T [ad_V] with [V] = T⁻¹ dT (3.83, 8.3); where a step is
+//! not one this module knows, the derivative is a leaf, as before.
 
 use std::collections::HashMap;
 use std::rc::Rc;
@@ -25,16 +29,48 @@ type D = Option<Rc<Recipe>>;
 /// the chain rule here does not reach (then the result is a leaf).
 pub(super) fn derivative(x: &Value, by: &Value) -> Option<Rc<Recipe>> {
     let r = match x {
-        Value::Formula { how: Some(r), .. } if r.kind == Kind::Scalar => r,
+        Value::Formula { how: Some(r), .. } => r,
         _ => return None,
     };
+    let kind = shape_of(&r.kind)?;
     let mut memo = HashMap::new();
     let d = Chain {
         by,
         memo: &mut memo,
     }
     .of(r)?;
-    Some(d.unwrap_or_else(|| number(0.0)))
+    Some(d.unwrap_or_else(|| zero(&kind)))
+}
+
+/// The kind of a derivative of a value of kind `k`: its shape only (the
+/// derivative of a rotation is no rotation); None for what has no shape.
+fn shape_of(k: &Kind) -> Option<Kind> {
+    Some(match k {
+        Kind::Scalar => Kind::Scalar,
+        k if k.is_vector() => Kind::Vector(Some(k.vec_len()?)),
+        k => match k.shape()? {
+            (Some(r), Some(c)) => Kind::Matrix(Some(r), Some(c)),
+            _ => return None,
+        },
+    })
+}
+
+/// A zero of kind `k` (a shape).
+fn zero(k: &Kind) -> Rc<Recipe> {
+    match k.shape() {
+        Some((Some(r), Some(c))) if *k != Kind::Scalar => matrix(r, c, &vec![0.0; r * c], *k),
+        _ => number(0.0),
+    }
+}
+
+/// The constant r×c matrix with entries `xs` (row by row), of kind `k`.
+fn matrix(r: usize, c: usize, xs: &[f64], k: Kind) -> Rc<Recipe> {
+    let m = nalgebra::DMatrix::from_row_slice(r, c, xs).into();
+    Recipe::leaf(Value::Num {
+        kind: k,
+        m,
+        exact: Default::default(),
+    })
 }
 
 struct Chain<'a> {
@@ -50,8 +86,32 @@ fn node(step: Step, args: Vec<Rc<Recipe>>) -> Option<Rc<Recipe>> {
     Recipe::node(step, args, Kind::Scalar)
 }
 
+/// `step` over `args`, of kind `k` (a shape).
+fn node_k(step: Step, args: Vec<Rc<Recipe>>, k: Kind) -> Option<Rc<Recipe>> {
+    Recipe::node(step, args, k)
+}
+
+/// `a op b` whose result has the shape of the bigger operand (a scalar
+/// times a matrix is a matrix).
 fn arith(op: BinOp, a: Rc<Recipe>, b: Rc<Recipe>) -> Option<Rc<Recipe>> {
-    node(Step::Arith(op), vec![a, b])
+    let k = match (op, a.kind, b.kind) {
+        (BinOp::Mul, ka, kb) => product(&ka, &kb)?,
+        (_, Kind::Scalar, kb) if op != BinOp::Pow => shape_of(&kb)?,
+        (_, ka, _) => shape_of(&ka)?,
+    };
+    node_k(Step::Arith(op), vec![a, b], k)
+}
+
+/// The shape of a product of values of kinds `a` and `b`.
+fn product(a: &Kind, b: &Kind) -> Option<Kind> {
+    let (a, b) = (shape_of(a)?, shape_of(b)?);
+    Some(match (a, b) {
+        (Kind::Scalar, k) | (k, Kind::Scalar) => k,
+        (a, b) => match (a.shape()?, b.shape()?) {
+            ((r, _), (_, Some(1))) => Kind::Vector(r),
+            ((r, _), (_, c)) => Kind::Matrix(r, c),
+        },
+    })
 }
 
 fn call(name: &'static str, args: Vec<Rc<Recipe>>) -> Option<Rc<Recipe>> {
@@ -74,11 +134,31 @@ fn times(f: Option<Rc<Recipe>>, du: D) -> Option<D> {
     }
 }
 
+/// `du f` (0 when du is): the order of a matrix product kept.
+fn times_after(du: D, f: Rc<Recipe>) -> Option<D> {
+    match du {
+        None => Some(None),
+        Some(du) => Some(Some(arith(BinOp::Mul, du, f)?)),
+    }
+}
+
+/// The same linear step (`transpose`, `x[i]`, `T.R`, …) over a
+/// derivative, of kind `k`.
+fn linear(step: &Step, du: D, k: Kind) -> Option<D> {
+    match du {
+        None => Some(None),
+        Some(du) => Some(Some(node_k(step.clone(), vec![du], k)?)),
+    }
+}
+
 /// `-x`.
 fn neg(x: D) -> Option<D> {
     match x {
         None => Some(None),
-        Some(x) => Some(Some(node(Step::Neg, vec![x])?)),
+        Some(x) => {
+            let k = x.kind;
+            Some(Some(node_k(Step::Neg, vec![x], k)?))
+        }
     }
 }
 
@@ -101,12 +181,13 @@ impl Chain<'_> {
     }
 
     fn step(&mut self, r: &Rc<Recipe>) -> Option<D> {
-        if r.kind != Kind::Scalar {
-            return None;
+        let k = shape_of(&r.kind)?;
+        if k != Kind::Scalar {
+            return self.matrix_step(r, k);
         }
         let x = |i: usize| r.args.get(i).cloned();
         match &r.step {
-            Step::Leaf(v) => self.leaf(v),
+            Step::Leaf(v) => self.leaf(v, &k),
             Step::Neg => neg(self.of(&x(0)?)?),
             // x deg = x π/180
             Step::Degrees => match self.of(&x(0)?)? {
@@ -119,10 +200,13 @@ impl Chain<'_> {
                 match op {
                     BinOp::Add => plus(du, dv),
                     BinOp::Sub => plus(du, neg(dv)?),
-                    // d(u v) = du v + u dv
-                    BinOp::Mul => plus(times(Some(v), du)?, times(Some(u), dv)?),
+                    // d(u v) = du v + u dv (a row times a column too)
+                    BinOp::Mul => plus(times_after(du, v)?, times(Some(u), dv)?),
                     // d(u / v) = du / v − u dv / v²
                     BinOp::Div => {
+                        if v.kind != Kind::Scalar {
+                            return None;
+                        }
                         let a = match du {
                             None => None,
                             Some(du) => Some(arith(BinOp::Div, du, v.clone())?),
@@ -138,7 +222,7 @@ impl Chain<'_> {
                     }
                     // d(u^n) = n u^(n−1) du, for a number n
                     BinOp::Pow => {
-                        if dv.is_some() {
+                        if dv.is_some() || u.kind != Kind::Scalar {
                             return None;
                         }
                         let n = match &v.step {
@@ -153,21 +237,193 @@ impl Chain<'_> {
                     }
                 }
             }
+            // a scalar part of a vector or matrix: the same part of its
+            // derivative
+            Step::Index(_) | Step::Member(_) | Step::Retag => {
+                linear(&r.step, self.of(&x(0)?)?, k)
+            }
             Step::Call(name) => self.call(name, &r.args),
             _ => None,
         }
     }
 
+    /// The derivative of a vector or matrix step (of shape `k`).
+    fn matrix_step(&mut self, r: &Rc<Recipe>, k: Kind) -> Option<D> {
+        let x = |i: usize| r.args.get(i).cloned();
+        match &r.step {
+            Step::Leaf(v) => self.leaf(v, &k),
+            Step::Neg => neg(self.of(&x(0)?)?),
+            Step::Transpose | Step::Index(_) | Step::Member(_) | Step::Retag => {
+                linear(&r.step, self.of(&x(0)?)?, k)
+            }
+            Step::Arith(op) => {
+                let (u, v) = (x(0)?, x(1)?);
+                let (du, dv) = (self.of(&u)?, self.of(&v)?);
+                match op {
+                    BinOp::Add => plus(du, dv),
+                    BinOp::Sub => plus(du, neg(dv)?),
+                    BinOp::Mul => plus(times_after(du, v)?, times(Some(u), dv)?),
+                    // M / s = M (1/s)
+                    BinOp::Div if v.kind == Kind::Scalar => {
+                        let a = match du {
+                            None => None,
+                            Some(du) => Some(arith(BinOp::Div, du, v.clone())?),
+                        };
+                        let b = match dv {
+                            None => None,
+                            Some(dv) => {
+                                let udv = arith(BinOp::Mul, u, dv)?;
+                                Some(arith(BinOp::Div, udv, pow(&v, 2.0)?)?)
+                            }
+                        };
+                        plus(a, neg(b)?)
+                    }
+                    // d(M^n) = Σ M^j dM M^(n−1−j), for a whole n ≥ 1
+                    BinOp::Pow if dv.is_none() => {
+                        let n = match &v.step {
+                            Step::Leaf(n) => n.as_scalar()?,
+                            _ => return None,
+                        };
+                        if n.fract() != 0.0 || !(1.0..=16.0).contains(&n) {
+                            return None;
+                        }
+                        let n = n as i32;
+                        let power = |j: i32| pow(&u, f64::from(j));
+                        let mut sum: D = None;
+                        for j in 0..n {
+                            let mut term = du.clone();
+                            if j > 0 {
+                                term = times(Some(power(j)?), term)?;
+                            }
+                            if n - 1 - j > 0 {
+                                term = times_after(term, power(n - 1 - j)?)?;
+                            }
+                            sum = plus(sum, term)?;
+                        }
+                        Some(sum)
+                    }
+                    _ => None,
+                }
+            }
+            Step::Vector | Step::Block(_) => {
+                let mut ds = Vec::with_capacity(r.args.len());
+                let mut any = false;
+                for a in &r.args {
+                    let d = self.of(a)?;
+                    any |= d.is_some();
+                    ds.push(d.unwrap_or_else(|| zero(&shape_of(&a.kind).unwrap_or(Kind::Scalar))));
+                }
+                if !any {
+                    return Some(None);
+                }
+                Some(Some(node_k(r.step.clone(), ds, k)?))
+            }
+            Step::Call(name) => self.matrix_call(name, r, k),
+            _ => None,
+        }
+    }
+
+    /// The derivative of a builtin whose value is a vector or matrix.
+    fn matrix_call(&mut self, name: &str, r: &Rc<Recipe>, k: Kind) -> Option<D> {
+        let b = crate::builtins::lookup(name)?;
+        let args = &r.args;
+        let u = args.first()?.clone();
+        let du = self.of(&u)?;
+        match b.name {
+            // linear in their one operand
+            "transpose" | "VecToso3" | "VecTose3" | "so3ToVec" | "se3ToVec" | "untag" | "vee"
+                if args.len() == 1 =>
+            {
+                linear(&r.step, du, k)
+            }
+            // bilinear: d(u × v) = du × v + u × dv
+            "cross" if args.len() == 2 => {
+                let v = args[1].clone();
+                let dv = self.of(&v)?;
+                let a = match du {
+                    None => None,
+                    Some(du) => Some(node_k(r.step.clone(), vec![du, v], k)?),
+                };
+                let b = match dv {
+                    None => None,
+                    Some(dv) => Some(node_k(r.step.clone(), vec![u, dv], k)?),
+                };
+                plus(a, b)
+            }
+            // dRotz(u) = Rotz(u) [ẑ] du (and x, y alike)
+            "Rotx" | "Roty" | "Rotz" if args.len() == 1 && u.kind == Kind::Scalar => {
+                let g: [f64; 9] = match b.name {
+                    "Rotx" => [0., 0., 0., 0., 0., -1., 0., 1., 0.],
+                    "Roty" => [0., 0., 1., 0., 0., 0., -1., 0., 0.],
+                    _ => [0., -1., 0., 1., 0., 0., 0., 0., 0.],
+                };
+                let rg = arith(BinOp::Mul, r.clone(), matrix(3, 3, &g, Kind::So3))?;
+                times_after(du, rg)
+            }
+            // d Rot(ω̂, θ) = [ω̂] Rot(ω̂, θ) dθ for a constant axis (3.51)
+            "Rot" if args.len() == 2 => {
+                let (w, t) = (u, args[1].clone());
+                if du.is_some() {
+                    return None;
+                }
+                let dt = self.of(&t)?;
+                let unit = node_k(Step::Call("Normalize"), vec![w], Kind::Vector(Some(3)))?;
+                let hat = node_k(Step::Call("VecToso3"), vec![unit], Kind::So3)?;
+                let f = arith(BinOp::Mul, hat, r.clone());
+                times_after(dt, f?)
+            }
+            // d exp(A u) = A exp(A u) du for a constant A ([S] θ, [ω̂] θ)
+            "exp" | "MatrixExp3" | "MatrixExp6" if args.len() == 1 => {
+                let Step::Arith(BinOp::Mul) = u.step else {
+                    return None;
+                };
+                let (p, q) = (u.args.first()?.clone(), u.args.get(1)?.clone());
+                let (a, s) = match (p.kind, q.kind) {
+                    (Kind::Scalar, Kind::Scalar) => return None,
+                    (Kind::Scalar, _) => (q, p),
+                    (_, Kind::Scalar) => (p, q),
+                    _ => return None,
+                };
+                if self.of(&a)?.is_some() {
+                    return None;
+                }
+                let ds = self.of(&s)?;
+                let f = arith(BinOp::Mul, a, r.clone())?;
+                times_after(ds, f)
+            }
+            // d(M⁻¹) = −M⁻¹ dM M⁻¹
+            "inv" | "RotInv" | "TransInv" if args.len() == 1 => {
+                let Some(du) = du else {
+                    return Some(None);
+                };
+                let left = arith(BinOp::Mul, r.clone(), du)?;
+                neg(Some(arith(BinOp::Mul, left, r.clone())?))
+            }
+            // d Ad_T = Ad_T [ad_V], [V] = T⁻¹ dT (for T in SE(3))
+            "Adjoint" if args.len() == 1 && u.kind == Kind::SE3 => {
+                let Some(du) = du else {
+                    return Some(None);
+                };
+                let tinv = node_k(Step::Call("TransInv"), vec![u], Kind::SE3)?;
+                let body = arith(BinOp::Mul, tinv, du)?;
+                let v = node_k(Step::Call("se3ToVec"), vec![body], Kind::Vector(Some(6)))?;
+                let ad = node_k(Step::Call("ad"), vec![v], Kind::Matrix(Some(6), Some(6)))?;
+                Some(Some(arith(BinOp::Mul, r.clone(), ad)?))
+            }
+            _ => None,
+        }
+    }
+
     /// A leaf's derivative by the canonical engine (a number's is 0).
-    fn leaf(&mut self, v: &Value) -> Option<D> {
+    fn leaf(&mut self, v: &Value, kind: &Kind) -> Option<D> {
         match v {
             Value::Num { .. } => Some(None),
             Value::Formula { .. } => {
-                let kind = Kind::Scalar;
-                match crate::builtins::eval_symbolic("diff", &[v.clone(), self.by.clone()], &kind)?
+                match crate::builtins::eval_symbolic("diff", &[v.clone(), self.by.clone()], kind)?
                     .ok()?
                 {
                     d @ Value::Num { .. } if d.as_scalar() == Some(0.0) => Some(None),
+                    Value::Num { m, .. } if m.iter().all(|x| *x == 0.0) => Some(None),
                     d => Some(Some(Recipe::leaf(d))),
                 }
             }
@@ -184,6 +440,22 @@ impl Chain<'_> {
         let one_minus_sq = || arith(BinOp::Sub, one(), pow(&u, 2.0)?);
         let one_plus_sq = |x: &Rc<Recipe>| arith(BinOp::Add, one(), pow(x, 2.0)?);
         let f = match name {
+            // d(u · v) = du · v + u · dv
+            "dot" => {
+                let v = args.get(1)?.clone();
+                let dv = self.of(&v)?;
+                let a = match du {
+                    None => None,
+                    Some(du) => Some(call("dot", vec![du, v])?),
+                };
+                let b = match dv {
+                    None => None,
+                    Some(dv) => Some(call("dot", vec![u, dv])?),
+                };
+                return plus(a, b);
+            }
+            "trace" => return linear(&Step::Call("trace"), du, Kind::Scalar),
+            _ if u.kind != Kind::Scalar => return None,
             "atan2" => {
                 // d atan2(u, w) = (w du − u dw) / (u² + w²)
                 let w = args.get(1)?.clone();

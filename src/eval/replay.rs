@@ -161,28 +161,80 @@ fn refusal(e: &crate::values::error::OpError) -> bool {
 /// it was read, as its canonical form does); unchanged parts are shared.
 pub(super) fn at_numbers(r: &Rc<Recipe>, at: Lookup) -> Rc<Recipe> {
     let mut memo = HashMap::new();
-    rebase(r, at, &mut memo)
+    let leaf = |v: &Value| -> Option<Value> {
+        let Value::Formula { kind, m, .. } = v else {
+            return None;
+        };
+        let mut syms = Vec::new();
+        m.data.iter().for_each(|e| e.symbols(&mut syms));
+        if !syms.iter().any(|s| at(s).is_some()) {
+            return None;
+        }
+        Some(
+            canonical(kind, m, at)
+                .unwrap_or_else(|| super::formula::make(kind, m.map(|e| e.at_numbers(at)))),
+        )
+    };
+    rebase(r, &leaf, &mut memo)
 }
 
-fn rebase(r: &Rc<Recipe>, at: Lookup, memo: &mut HashMap<*const Recipe, Rc<Recipe>>) -> Rc<Recipe> {
+/// How `subs(x, name, by)` is made: the recipe of `x` with `by` put for
+/// `name` in its leaves (each leaf substituted by the canonical engine), so
+/// that the numbers bound later replay the steps of `x` (§7), as
+/// [`subs_numbers`] does when `by` leaves no symbol. None when `x` keeps
+/// no recipe or a leaf cannot be substituted (the result is then a leaf).
+pub(super) fn substituted(x: &Value, name: &Value, by: &Value) -> Option<Rc<Recipe>> {
+    let Value::Formula { how: Some(r), .. } = x else {
+        return None;
+    };
+    let sym = match name {
+        Value::Formula { m, .. } => match m.data.as_slice() {
+            [e] => crate::sym::expr::as_symbol(e)?,
+            _ => return None,
+        },
+        _ => return None,
+    };
+    let failed = std::cell::Cell::new(false);
+    let leaf = |v: &Value| -> Option<Value> {
+        let Value::Formula { kind, m, .. } = v else {
+            return None;
+        };
+        let mut syms = Vec::new();
+        m.data.iter().for_each(|e| e.symbols(&mut syms));
+        if !syms.contains(&sym) {
+            return None;
+        }
+        let args = [v.clone(), name.clone(), by.clone()];
+        match crate::builtins::eval_symbolic("subs", &args, kind) {
+            Some(Ok(v)) => Some(v),
+            _ => {
+                failed.set(true);
+                None
+            }
+        }
+    };
+    let out = rebase(r, &leaf, &mut HashMap::new());
+    (!failed.get()).then_some(out)
+}
+
+/// `r` with each leaf `leaf` gives a new value for replaced; unchanged
+/// parts are shared.
+fn rebase(
+    r: &Rc<Recipe>,
+    leaf: &dyn Fn(&Value) -> Option<Value>,
+    memo: &mut HashMap<*const Recipe, Rc<Recipe>>,
+) -> Rc<Recipe> {
     let key = Rc::as_ptr(r);
     if let Some(x) = memo.get(&key) {
         return x.clone();
     }
     let out = stacker::maybe_grow(64 * 1024, 1024 * 1024, || match &r.step {
-        Step::Leaf(Value::Formula { kind, m, .. }) => {
-            let mut syms = Vec::new();
-            m.data.iter().for_each(|e| e.symbols(&mut syms));
-            if !syms.iter().any(|s| at(s).is_some()) {
-                return r.clone();
-            }
-            let v = canonical(kind, m, at)
-                .unwrap_or_else(|| super::formula::make(kind, m.map(|e| e.at_numbers(at))));
-            Recipe::leaf(v)
-        }
-        Step::Leaf(_) => r.clone(),
+        Step::Leaf(v) => match leaf(v) {
+            Some(v) => Recipe::leaf(v),
+            None => r.clone(),
+        },
         step => {
-            let args: Vec<Rc<Recipe>> = r.args.iter().map(|a| rebase(a, at, memo)).collect();
+            let args: Vec<Rc<Recipe>> = r.args.iter().map(|a| rebase(a, leaf, memo)).collect();
             if args.iter().zip(&r.args).all(|(a, b)| Rc::ptr_eq(a, b)) {
                 return r.clone();
             }

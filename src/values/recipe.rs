@@ -25,9 +25,10 @@ use crate::syntax::ast::BinOp;
 
 /// The deepest recipe kept: a value made by a longer chain of operations
 /// keeps none and is a leaf of the values made from it (its canonical
-/// form, evaluated at the numbers), so that replaying and dropping a
-/// recipe stay within the stack.
-pub const MAX_DEPTH: u32 = 1_000;
+/// form, evaluated at the numbers), so that replaying a recipe stays
+/// within memory (each step replayed grows the stack on the heap, a few
+/// hundred bytes; dropping one does not recurse, [`Recipe`]'s `Drop`).
+pub const MAX_DEPTH: u32 = 20_000;
 
 /// One step of a recipe: an operation of the evaluator's seam with its
 /// data owned (`eval::apply::Op` borrows its selectors and widths), or a
@@ -82,6 +83,20 @@ impl std::fmt::Debug for Recipe {
         match &self.step {
             Step::Leaf(_) => write!(f, "Recipe(leaf)"),
             step => write!(f, "Recipe({step:?}, depth {})", self.depth),
+        }
+    }
+}
+
+impl Drop for Recipe {
+    /// Drops the operands no other recipe shares one by one, without
+    /// recursion: a chain of thousands of steps (a statement repeated in a
+    /// long script) must not overflow the stack.
+    fn drop(&mut self) {
+        let mut stack = std::mem::take(&mut self.args);
+        while let Some(r) = stack.pop() {
+            if let Ok(mut inner) = Rc::try_unwrap(r) {
+                stack.append(&mut inner.args);
+            }
         }
     }
 }
