@@ -197,13 +197,22 @@ impl Interp<'_> {
     fn var(&mut self, name: Name, span: Span) -> Result<Typed, Diagnostic> {
         if let Some(b) = self.env.get(name) {
             let v = if self.running() {
-                super::substitute::current(b, self.env).map_err(|e| {
+                let mut warnings = Vec::new();
+                let v = super::substitute::current(b, self.env, &mut warnings).map_err(|e| {
                     Diagnostic::error(
                         ErrorKind::Domain,
                         span,
                         format!("{name} with the numbers bound since: {}", e.0),
                     )
-                })?
+                })?;
+                // (the warnings of the steps replayed, at the name read)
+                for mut w in warnings {
+                    w.span = span;
+                    if !self.warnings.iter().any(|x| x.message == w.message) {
+                        self.warnings.push(w);
+                    }
+                }
+                v
             } else {
                 None
             };
@@ -457,7 +466,7 @@ impl Interp<'_> {
             let refs: Vec<&Value> = vals.iter().collect();
             // (subs with a number replays how its operand was made, §7)
             let subs = (b.name == "subs")
-                .then(|| super::replay::subs_numbers(&refs))
+                .then(|| super::replay::subs_numbers(&refs, &mut self.warnings))
                 .flatten()
                 .map(|v| {
                     v.map(|v| super::substitute::retag(v, &ty.kind))
@@ -526,7 +535,7 @@ fn literal_number(e: &Expr) -> Option<f64> {
 /// A rotation, transform, Lie-algebra element or adjoint with an inf or NaN
 /// entry is not one: a domain error (`Rotz(inf)`), rather than a NaN matrix
 /// labelled SO(3).
-fn not_finite_group(v: &Value, name: &str, span: Span) -> Result<(), Diagnostic> {
+pub(super) fn not_finite_group(v: &Value, name: &str, span: Span) -> Result<(), Diagnostic> {
     if let Value::Num { kind, m, .. } = v
         && matches!(
             kind,

@@ -15,9 +15,11 @@ use super::replay;
 use super::value::Sym;
 use super::value::Value;
 use crate::check::ty::Kind;
-use crate::sym::Symbol;
+use crate::diagnostics::Diagnostic;
+use crate::sym::{Mat, Symbol};
 use crate::syntax::ast::BinOp;
 use crate::values::recipe;
+use std::rc::Rc;
 
 pub(crate) use super::apply::to_sym;
 
@@ -25,11 +27,17 @@ pub(crate) use super::apply::to_sym;
 /// numbers bound since substituted ([`resolve`], [`formula`]; the items of
 /// a list or tuple too); a numeric result takes the kind the checker gave
 /// the expression where that says more than the numbers can (a twist, a
-/// wrench). `given` symbols are themselves.
+/// wrench). `given` symbols are themselves. The warnings of the steps
+/// replayed with numbers (a gimbal lock) go to `warnings`, as when the
+/// numbers are typed first.
 ///
 /// Err when replaying it with the numbers fails as the numbers typed
 /// first would (a division by zero the canonical form cancelled).
-pub fn current(b: &Binding, env: &Env) -> Result<Option<Value>, replay::Failed> {
+pub fn current(
+    b: &Binding,
+    env: &Env,
+    warnings: &mut Vec<Diagnostic>,
+) -> Result<Option<Value>, replay::Failed> {
     let Some(v) = b.val.as_ref() else {
         return Ok(None);
     };
@@ -41,89 +49,151 @@ pub fn current(b: &Binding, env: &Env) -> Result<Option<Value>, replay::Failed> 
                 None => Value::Sym(s),
             },
         },
-        v @ Value::Formula { .. } if !b.symbolic => formula(v, env)?,
-        v @ (Value::Tuple(_) | Value::List(_)) if b.derived => now(v, env)?,
+        v @ Value::Formula { .. } if !b.symbolic => formula(v, env, warnings)?,
+        v @ (Value::Tuple(_) | Value::List(_)) if b.derived => now(v, env, warnings)?,
         v => v.clone(),
     }))
 }
 
 /// An item of a list or tuple as of now ([`current`] of a value not bound
-/// to a name of its own).
-fn now(v: &Value, env: &Env) -> Result<Value, replay::Failed> {
+/// to a name of its own). A tuple whose items are the parts of one
+/// operation's result (`rpy(R)`'s angles) is that operation's value once
+/// its symbols have numbers: a vector, as typed first.
+fn now(v: &Value, env: &Env, warnings: &mut Vec<Diagnostic>) -> Result<Value, replay::Failed> {
     Ok(match v {
         Value::Sym(s) => match resolve(s, env) {
             Sym::Const(v, _) => *v,
             s => Value::Sym(s),
         },
-        Value::Formula { .. } => formula(v, env)?,
+        Value::Formula { .. } => formula(v, env, warnings)?,
         Value::Tuple(vs) if vs.iter().any(recipe::holds_symbols) => {
-            Value::Tuple(vs.iter().map(|x| now(x, env)).collect::<Result<_, _>>()?)
+            if let Some(whole) = parts_of_one(vs)
+                && let Some(x) = numbers(&whole, env, warnings)?
+            {
+                return Ok(x);
+            }
+            Value::Tuple(
+                vs.iter()
+                    .map(|x| now(x, env, warnings))
+                    .collect::<Result<_, _>>()?,
+            )
         }
         Value::List(vs) if vs.iter().any(recipe::holds_symbols) => Value::List(std::rc::Rc::new(
-            vs.iter().map(|x| now(x, env)).collect::<Result<_, _>>()?,
+            vs.iter()
+                .map(|x| now(x, env, warnings))
+                .collect::<Result<_, _>>()?,
         )),
         v => v.clone(),
     })
 }
 
-/// A formula with the numbers bound since substituted. Once every symbol
-/// has a number the value *is* a number (§7), computed by replaying how
-/// it was made with those numbers ([`replay::numbers`]: the operations
-/// as typed, as if the numbers had been typed first), never from its
-/// expanded canonical form, whose coefficients can cancel; only a formula
-/// made by no replayable operation (a symbol, a derivative) is evaluated
-/// from its canonical form. It is typed by what it is — the formula's kind
-/// where the canonical form earned it exactly (a rotation, a scalar, a
-/// vector), else what the numbers are, as for numbers typed first (π
-/// alone is a number too: it is no symbol). Partly bound, the numbers are
-/// put in ([`crate::sym::Expr::at_numbers`], and into how it was made).
-fn formula(v: &Value, env: &Env) -> Result<Value, replay::Failed> {
-    let Value::Formula { kind, m, how } = v else {
-        return Ok(v.clone());
-    };
-    let lookup = |s: &Symbol| match env.get(&*super::formula::binding_name(s)) {
+/// The recipe whose result a tuple is, when each of its items is that
+/// result's part of the same place (`euler_zyx(R)` gives its three
+/// angles as parts 0, 1, 2 of one call); numbers among them are parts
+/// that came out as numbers.
+fn parts_of_one(vs: &[Value]) -> Option<Rc<recipe::Recipe>> {
+    let mut whole: Option<Rc<recipe::Recipe>> = None;
+    for (i, v) in vs.iter().enumerate() {
+        let Value::Formula { how: Some(r), .. } = v else {
+            continue;
+        };
+        match (&r.step, r.args.as_slice()) {
+            (recipe::Step::Part(j), [w]) if *j == i => match &whole {
+                Some(x) if !Rc::ptr_eq(x, w) => return None,
+                _ => whole = Some(w.clone()),
+            },
+            _ => return None,
+        }
+    }
+    whole
+}
+
+/// The symbols a formula depends on: those of its canonical form and of
+/// how it was made (`a/a` is 1, yet depends on `a`).
+fn symbols_of(m: &Mat, how: Option<&Rc<recipe::Recipe>>) -> Vec<Symbol> {
+    let mut syms = Vec::new();
+    m.data.iter().for_each(|e| e.symbols(&mut syms));
+    if let Some(r) = how {
+        recipe::symbols(r, &mut syms);
+    }
+    syms
+}
+
+/// The value bound to a symbol now, if it is a number.
+fn bound(env: &Env, s: &Symbol) -> Option<Value> {
+    match env.get(&*super::formula::binding_name(s)) {
         Some(Binding {
             val: Some(v @ Value::Num { .. }),
             ..
-        }) => v.as_scalar(),
+        }) => Some(v.clone()),
         _ => None,
-    };
+    }
+}
+
+/// The value of recipe `r` once every symbol it reads has a number
+/// (replayed as typed first); None while one is free.
+fn numbers(
+    r: &Rc<recipe::Recipe>,
+    env: &Env,
+    warnings: &mut Vec<Diagnostic>,
+) -> Result<Option<Value>, replay::Failed> {
+    let lookup = |s: &Symbol| bound(env, s);
     let mut syms = Vec::new();
-    m.data.iter().for_each(|e| e.symbols(&mut syms));
-    if !syms.iter().any(|s| lookup(s).is_some()) && !syms.is_empty() {
+    recipe::symbols(r, &mut syms);
+    if !syms.iter().all(|s| lookup(s).is_some()) {
+        return Ok(None);
+    }
+    replay::numbers(r, &lookup, warnings)
+}
+
+/// A formula with the numbers bound since substituted. Once every symbol
+/// it depends on has a number (those of its canonical form and of how it
+/// was made: `a/a` at a = 0 is a division by zero, as typed first) the
+/// value *is* a number (§7), computed by replaying how it was made with
+/// those numbers ([`replay::numbers`]: the operations as typed, with the
+/// numbers' exact forms, as if the numbers had been typed first), never
+/// from its expanded canonical form, whose coefficients can cancel; only
+/// a formula made by no replayable operation (a symbol, a derivative) is
+/// evaluated from its canonical form. It is typed by what it is: what the
+/// operations give the numbers, as typed first. Partly bound, the numbers
+/// are put in, exactly where they are exact ([`replay::put_numbers`], and
+/// into how it was made).
+fn formula(v: &Value, env: &Env, warnings: &mut Vec<Diagnostic>) -> Result<Value, replay::Failed> {
+    let Value::Formula { kind, m, how } = v else {
+        return Ok(v.clone());
+    };
+    let lookup = |s: &Symbol| bound(env, s);
+    let syms = symbols_of(m, how.as_ref());
+    if !syms.iter().any(|s| lookup(s).is_some()) {
         return Ok(v.clone());
     }
     if syms.iter().all(|s| lookup(s).is_some()) {
-        let replayed = match how {
-            Some(r) => replay::numbers(r, &lookup)?,
-            None => None,
-        };
-        let replayed = replayed.and_then(|x| match x {
-            Value::Num { m: xs, .. } if xs.shape() == (m.rows, m.cols) => Some(xs),
-            _ => None,
-        });
-        if let Some(xs) = replayed {
-            let kind = if recipe::vague(kind) {
-                replay::classify(&xs)
-            } else {
-                *kind
-            };
-            return Ok(Value::Num {
-                kind,
-                m: xs,
-                exact: Default::default(),
-            });
+        // (with the kind its binding gave it: `V_b = (…)` is a twist)
+        if how.is_some()
+            && let Some(x) = replay::numbers(&recipe::Recipe::of(v), &lookup, warnings)?
+            && replay::same_shape(&x, m)
+        {
+            return Ok(x);
         }
         if let Some(v) = replay::canonical(kind, m, &lookup) {
             return Ok(v);
         }
     }
     Ok(
-        match super::formula::make(kind, m.map(|e| e.at_numbers(&lookup))) {
+        match super::formula::make(kind, m.map(|e| replay::put_numbers(e, &lookup))) {
             Value::Formula { kind, m, .. } => Value::Formula {
                 kind,
                 m,
                 how: how.as_ref().map(|r| replay::at_numbers(r, &lookup)),
+            },
+            // (numbers with symbols left in how it was made stay a formula)
+            Value::Num { kind, m: xs, exact } => match how {
+                Some(r) => Value::Formula {
+                    kind,
+                    m: m.map(|e| replay::put_numbers(e, &lookup)),
+                    how: Some(replay::at_numbers(r, &lookup)),
+                },
+                None => Value::Num { kind, m: xs, exact },
             },
             v => v,
         },
@@ -154,7 +224,7 @@ pub fn resolve(s: &Sym, env: &Env) -> Sym {
         Sym::Const(v, _) => match &**v {
             // (a factor whose numbers fail stays symbolic: the operation
             // over it reports, as for any failing numeric operand)
-            v @ Value::Formula { .. } => match formula(v, env) {
+            v @ Value::Formula { .. } => match formula(v, env, &mut Vec::new()) {
                 Ok(x) => to_sym(&x),
                 Err(_) => s.clone(),
             },

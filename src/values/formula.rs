@@ -85,6 +85,22 @@ pub fn make(kind: &Kind, m: Mat) -> Value {
     }
 }
 
+/// A formula whose canonical form is numbers (it depends on symbols only
+/// through how it was made: `a/a` is 1) as it is shown: those numbers;
+/// a tuple of values with such parts, each shown so. None when there is
+/// nothing to show otherwise.
+pub fn constant_shown(v: &Value) -> Option<Value> {
+    match v {
+        Value::Formula { kind, m, .. } if m.as_f64().is_some() => Some(make(kind, m.clone())),
+        Value::Tuple(vs) if vs.iter().any(|x| constant_shown(x).is_some()) => Some(Value::Tuple(
+            vs.iter()
+                .map(|x| constant_shown(x).unwrap_or_else(|| x.clone()))
+                .collect(),
+        )),
+        _ => None,
+    }
+}
+
 /// A scalar formula.
 pub fn scalar(e: Expr) -> Value {
     make(&Kind::Scalar, Mat::scalar(e))

@@ -148,6 +148,21 @@ pub enum Made {
 /// formula in a tuple the part it is of that step. `kind` is the result's
 /// kind as checked.
 pub fn record(v: Value, made: Made, args: &[&Value], kind: &Kind) -> Value {
+    // A number made from formulas (`a/a` is 1) depends on their symbols:
+    // it stays a formula, of constant entries, made by its step.
+    let v = match v {
+        Value::Num { kind, m, exact }
+            if !matches!(made, Made::Opaque)
+                && args.iter().any(|a| matches!(a, Value::Formula { .. })) =>
+        {
+            Value::Formula {
+                kind,
+                m: constant(&m, &exact),
+                how: None,
+            }
+        }
+        v => v,
+    };
     if !matches!(v, Value::Formula { .. } | Value::Tuple(_)) {
         return v;
     }
@@ -157,6 +172,24 @@ pub fn record(v: Value, made: Made, args: &[&Value], kind: &Kind) -> Value {
         Made::Step(step) => Recipe::node(step, args.iter().map(|a| Recipe::of(a)).collect(), *kind),
     };
     attach(v, how)
+}
+
+/// Numbers `m` as a formula of constant entries: their exact form, else
+/// their floats.
+fn constant(m: &super::num::Num, exact: &super::exact::Exact) -> crate::sym::Mat {
+    if let Some(form) = exact.form(m) {
+        return form;
+    }
+    let (r, c) = m.shape();
+    let data = (0..r)
+        .flat_map(|i| (0..c).map(move |j| (i, j)))
+        .map(|(i, j)| crate::sym::Expr::num(m[(i, j)]))
+        .collect();
+    crate::sym::Mat {
+        rows: r,
+        cols: c,
+        data,
+    }
 }
 
 /// `v` made by `how`: a formula gets it, each formula in a tuple the part
@@ -193,6 +226,24 @@ pub fn holds_symbols(v: &Value) -> bool {
         Value::Tuple(vs) => vs.iter().any(holds_symbols),
         Value::List(vs) => vs.iter().any(holds_symbols),
         _ => false,
+    }
+}
+
+/// Adds to `out` the symbols of the leaves of `r` (those a value made by
+/// `r` depends on, though its canonical form may have lost them: `a/a`
+/// is 1 but is no number until `a` has one, and not at a = 0). Shared
+/// operands are visited once.
+pub fn symbols(r: &Rc<Recipe>, out: &mut Vec<crate::sym::Symbol>) {
+    let mut seen = std::collections::HashSet::new();
+    let mut todo = vec![r];
+    while let Some(r) = todo.pop() {
+        if !seen.insert(Rc::as_ptr(r)) {
+            continue;
+        }
+        match &r.step {
+            Step::Leaf(Value::Formula { m, .. }) => m.data.iter().for_each(|e| e.symbols(out)),
+            _ => todo.extend(r.args.iter()),
+        }
     }
 }
 
