@@ -115,7 +115,7 @@ impl Interp<'_> {
         let mut acc: Option<Value> = None;
         for s in &steps {
             let b = self.env.get(&s.name).expect("a step is a bound name");
-            let v = super::substitute::current(b, self.env)
+            let v = super::substitute::current(b, self.env, &mut self.warnings)
                 .map_err(|e| {
                     Diagnostic::error(
                         ErrorKind::Domain,

@@ -197,17 +197,34 @@ impl Interp<'_> {
     fn var(&mut self, name: Name, span: Span) -> Result<Typed, Diagnostic> {
         if let Some(b) = self.env.get(name) {
             let v = if self.running() {
-                super::substitute::current(b, self.env).map_err(|e| {
+                let mut warnings = Vec::new();
+                let v = super::substitute::current(b, self.env, &mut warnings).map_err(|e| {
                     Diagnostic::error(
                         ErrorKind::Domain,
                         span,
                         format!("{name} with the numbers bound since: {}", e.0),
                     )
-                })?
+                })?;
+                // (the warnings of the steps replayed, at the name read)
+                for mut w in warnings {
+                    w.span = span;
+                    if !self.warnings.iter().any(|x| x.message == w.message) {
+                        self.warnings.push(w);
+                    }
+                }
+                v
             } else {
                 None
             };
-            return Ok(Typed::new(b.ty, v));
+            // (a value made from symbols that has become numbers is typed
+            // by what it is now, as typed first: `rpy` gives a vector)
+            let ty = match (&b.val, &v) {
+                (Some(old), Some(_)) if crate::values::recipe::holds_symbols(old) => {
+                    refine(b.ty, &v)
+                }
+                _ => b.ty,
+            };
+            return Ok(Typed::new(ty, v));
         }
         let name = name.as_str();
         if let Some(d) = self.derivative_symbol(name) {
@@ -457,7 +474,7 @@ impl Interp<'_> {
             let refs: Vec<&Value> = vals.iter().collect();
             // (subs with a number replays how its operand was made, §7)
             let subs = (b.name == "subs")
-                .then(|| super::replay::subs_numbers(&refs))
+                .then(|| super::replay::subs_numbers(&refs, &mut self.warnings))
                 .flatten()
                 .map(|v| {
                     v.map(|v| super::substitute::retag(v, &ty.kind))
@@ -491,7 +508,7 @@ impl Interp<'_> {
             op.exact_of(&refs, &ty.kind)
         };
         let v = apply::call(b, vals, site)?.with_exact(exact);
-        not_finite_group(&v, b.name, span)?;
+        super::replay::not_finite_group(&v, b.name, span)?;
         let val = Some(v);
         Ok(Typed::new(refine(ty, &val), val))
     }
@@ -521,32 +538,4 @@ fn literal_number(e: &Expr) -> Option<f64> {
         } => literal_number(operand).map(|x| -x),
         _ => None,
     }
-}
-
-/// A rotation, transform, Lie-algebra element or adjoint with an inf or NaN
-/// entry is not one: a domain error (`Rotz(inf)`), rather than a NaN matrix
-/// labelled SO(3).
-fn not_finite_group(v: &Value, name: &str, span: Span) -> Result<(), Diagnostic> {
-    if let Value::Num { kind, m, .. } = v
-        && matches!(
-            kind,
-            Kind::SO3
-                | Kind::SE3
-                | Kind::SO2
-                | Kind::SE2
-                | Kind::So3
-                | Kind::Se3
-                | Kind::So2
-                | Kind::Se2
-                | Kind::Adjoint { .. }
-        )
-        && m.iter().any(|x| !x.is_finite())
-    {
-        return Err(Diagnostic::error(
-            ErrorKind::Domain,
-            span,
-            format!("{name} gives no finite {kind}: an argument is inf or NaN"),
-        ));
-    }
-    Ok(())
 }

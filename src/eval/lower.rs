@@ -312,6 +312,13 @@ impl Interp<'_> {
     /// [`Interp::lower`] gives one, with the note of the axes assumed to
     /// be unit vectors. The binding keeps the tree.
     pub(super) fn shown(&mut self, val: &mut Option<Box<Value>>, span: Span) {
+        // (a formula whose canonical form is a number, `a/a` with `a`
+        // free, shows that number; the binding keeps how it was made)
+        if let Some(v) = val.as_deref()
+            && let Some(n) = super::formula::constant_shown(v)
+        {
+            *val = Some(Box::new(n));
+        }
         if let Some(v) = val.as_deref()
             && let Value::Sym(s) = v
             && let Some((l, assumed)) = self.lower(s, true, span)

@@ -13,27 +13,116 @@
 use std::collections::HashMap;
 use std::rc::Rc;
 
-use super::apply::Op;
+use super::apply::{self, Op};
 use super::value::Value;
 use crate::check::ty::Kind;
-use crate::sym::{Mat, Symbol};
+use crate::diagnostics::Diagnostic;
+use crate::sym::{Expr, Mat, Symbol};
+use crate::values::exact::Exact;
 use crate::values::recipe::{Recipe, Step, vague};
 
-/// A symbol's number, if it has one now.
-pub(super) type Lookup<'a> = &'a dyn Fn(&Symbol) -> Option<f64>;
+/// A symbol's number, if it has one now: the value bound to it, with its
+/// exact form (`a = 60 deg` is π/3, §3), as typed first.
+pub(super) type Lookup<'a> = &'a dyn Fn(&Symbol) -> Option<Value>;
+
+/// A symbol's number as a float.
+fn float(at: Lookup, s: &Symbol) -> Option<f64> {
+    at(s).and_then(|v| v.as_scalar())
+}
+
+/// A symbol's exact number, as an expression.
+fn exact(at: Lookup, s: &Symbol) -> Option<Expr> {
+    at(s)?.exact_form()?.data.into_iter().next()
+}
 
 /// The numbers of a formula with numbers for its symbols, from its
 /// canonical form (a leaf; `kind` says what it is where the formula's
-/// kind says only a shape). None when a symbol has no number.
+/// kind says only a shape), with its exact form when every symbol's
+/// number has one (`cos(a)` at a = π/3 is 1/2). A formula that is one
+/// symbol is the value bound to it. None when a symbol has no number.
 pub(super) fn canonical(kind: &Kind, m: &Mat, at: Lookup) -> Option<Value> {
-    let xs: Vec<f64> = m.data.iter().map(|e| e.eval(at)).collect::<Option<_>>()?;
-    let m: crate::values::num::Num = nalgebra::DMatrix::from_row_slice(m.rows, m.cols, &xs).into();
-    let kind = if vague(kind) { classify(&m) } else { *kind };
+    if *kind == Kind::Bool {
+        return super::formula::constant_shown(&Value::Formula {
+            kind: *kind,
+            m: m.clone(),
+            how: None,
+        });
+    }
+    if let [e] = m.data.as_slice()
+        && let Some(s) = crate::sym::expr::as_symbol(e)
+    {
+        return at(&s).filter(|v| v.as_scalar().is_some());
+    }
+    let f = |s: &Symbol| float(at, s);
+    let xs: Vec<f64> = m.data.iter().map(|e| e.eval(&f)).collect::<Option<_>>()?;
+    let nums: crate::values::num::Num =
+        nalgebra::DMatrix::from_row_slice(m.rows, m.cols, &xs).into();
+    let kind = if vague(kind) { classify(&nums) } else { *kind };
+    let mut syms = Vec::new();
+    m.data.iter().for_each(|e| e.symbols(&mut syms));
+    let forms: Option<Vec<(Symbol, Expr)>> = syms
+        .into_iter()
+        .map(|s| exact(at, &s).map(|e| (s, e)))
+        .collect();
+    let exact = match forms {
+        Some(forms) => {
+            let m = m.clone();
+            Exact::later(move || {
+                let by = |s: &Symbol| forms.iter().find(|(t, _)| t == s).map(|(_, e)| e.clone());
+                Some(m.map(|e| e.subst(&by)))
+            })
+        }
+        None => Exact::Float,
+    };
     Some(Value::Num {
         kind,
-        m,
-        exact: Default::default(),
+        m: nums,
+        exact,
     })
+}
+
+/// `e` with the numbers bound so far put in: exact where the number has
+/// an exact form (`cos(b) x` at b = π/6 is `(√3/2) x`), else as a float.
+pub(super) fn put_numbers(e: &Expr, at: Lookup) -> Expr {
+    let by = |s: &Symbol| exact(at, s);
+    e.subst(&by).at_numbers(&|s: &Symbol| float(at, s))
+}
+
+/// Operation `op` on numbers `args`, exactly as the evaluator applies it
+/// to numbers typed first: its numeric function with its exact form
+/// ([`Op::with_exact`]); a builtin by its table row with its warnings
+/// (the gimbal lock of `euler_zyx`) put in `warnings`, and a group
+/// element with an inf or NaN entry refused.
+pub(super) fn typed_first(
+    op: Op,
+    args: &[&Value],
+    kind: &Kind,
+    warnings: &mut Vec<Diagnostic>,
+) -> Result<Value, crate::values::error::OpError> {
+    use crate::values::error::OpError;
+    match op {
+        Op::Call(b, _) => {
+            let exact = op.exact_of(args, kind);
+            let site = apply::Site {
+                spans: vec![Default::default(); args.len()],
+                call_span: Default::default(),
+                typed: Vec::new(),
+                warnings,
+            };
+            let vals = args.iter().map(|v| (*v).clone()).collect();
+            let v = apply::call(b, vals, site)
+                .map_err(|d| OpError::Message(d.message))?
+                .with_exact(exact);
+            not_finite_group(&v, b.name, Default::default())
+                .map_err(|d| OpError::Message(d.message))?;
+            Ok(v)
+        }
+        Op::Block(_) => op.numeric(args, Some(kind)),
+        _ => {
+            let v = op.numeric(args, Some(kind))?;
+            Ok(op.with_exact(v, args, kind))
+        }
+    }
 }
 
 /// The kind of numbers by shape and, for a square matrix, by the group
@@ -57,9 +146,18 @@ pub(super) fn classify(m: &crate::values::num::Num) -> Kind {
 /// `cot u` at u = 0) is that step's error, as when the numbers are typed
 /// first: the canonical form, whose factors may have cancelled, must not
 /// answer in its place.
-pub(super) fn numbers(r: &Rc<Recipe>, at: Lookup) -> Result<Option<Value>, Failed> {
+pub(super) fn numbers(
+    r: &Rc<Recipe>,
+    at: Lookup,
+    warnings: &mut Vec<Diagnostic>,
+) -> Result<Option<Value>, Failed> {
     let mut memo = Memo::default();
     let v = replay(r, at, &mut memo);
+    for w in memo.warnings {
+        if !warnings.iter().any(|x| x.message == w.message) {
+            warnings.push(w);
+        }
+    }
     match memo.failed {
         Some(msg) => Err(Failed(msg)),
         None => Ok(v),
@@ -77,6 +175,8 @@ pub struct Failed(pub String);
 struct Memo {
     seen: HashMap<*const Recipe, Option<Value>>,
     failed: Option<String>,
+    /// The warnings of the steps (a builtin's, as typed first).
+    warnings: Vec<Diagnostic>,
 }
 
 fn replay(r: &Rc<Recipe>, at: Lookup, memo: &mut Memo) -> Option<Value> {
@@ -127,6 +227,28 @@ fn step(r: &Recipe, at: Lookup, memo: &mut Memo) -> Option<Value> {
             };
         }
         Step::Leaf(_) => return None,
+        Step::Compare(op) => {
+            let [a, b] = refs.as_slice() else {
+                return None;
+            };
+            return match super::decide::equal(a, b, *op) {
+                Ok(Some(v)) => {
+                    if !v
+                        && *op == crate::syntax::ast::CmpOp::Eq
+                        && super::decide::rounding_only(a, b)
+                    {
+                        let note = super::decide::rounding_note(Default::default());
+                        memo.warnings.push(note);
+                    }
+                    Some(Value::Bool(v))
+                }
+                Ok(None) => None,
+                Err(m) => {
+                    memo.failed.get_or_insert(m);
+                    None
+                }
+            };
+        }
         Step::Neg => Op::Neg,
         Step::Degrees => Op::Degrees,
         Step::Arith(op) => Op::Arith(*op),
@@ -137,7 +259,9 @@ fn step(r: &Recipe, at: Lookup, memo: &mut Memo) -> Option<Value> {
         Step::Vector => Op::Vector,
         Step::Call(name) => Op::Call(crate::builtins::lookup(name)?, name),
     };
-    match op.numeric(&refs, Some(&r.kind)) {
+    // (the kind as the checker gives it for these numbers typed first)
+    let kind = rule_kind(op, &refs).unwrap_or(r.kind);
+    match typed_first(op, &refs, &kind, &mut memo.warnings) {
         Ok(v) => Some(v),
         Err(e) => {
             if refusal(&e) && memo.failed.is_none() {
@@ -148,10 +272,42 @@ fn step(r: &Recipe, at: Lookup, memo: &mut Memo) -> Option<Value> {
     }
 }
 
+/// Operation `op` on numbers `args` as typed first ([`typed_first`]),
+/// its result's kind given by its rule on the operands' kinds, as the
+/// checker gives it when the numbers are typed first (`[1, 0; 0, 1]^-1`
+/// is SO(2)); an operation the rule refuses gets no kind from it.
+pub(super) fn as_typed(
+    op: Op,
+    args: &[&Value],
+    warnings: &mut Vec<Diagnostic>,
+) -> Result<Value, crate::values::error::OpError> {
+    let kind = rule_kind(op, args).unwrap_or(Kind::Unknown);
+    typed_first(op, args, &kind, warnings)
+}
+
+/// The kind `op`'s rule gives its result from the kinds of numbers
+/// `args`, as the checker does when they are typed first; None when the
+/// rule refuses them.
+fn rule_kind(op: Op, args: &[&Value]) -> Option<Kind> {
+    let tys: Vec<crate::check::ty::Ty> = args
+        .iter()
+        .map(|v| crate::check::ty::Ty::plain(v.kind()))
+        .collect();
+    let exponent = match (op, args) {
+        (Op::Arith(crate::syntax::ast::BinOp::Pow), [_, e]) => e.as_scalar(),
+        _ => None,
+    };
+    let hints = super::apply::Hints {
+        exponent,
+        ..Default::default()
+    };
+    op.rule(&tys, hints).ok().map(|t| t.kind)
+}
+
 /// Whether a step's error says its numbers are outside its domain (the
 /// answer is a refusal) rather than that its operands are not what the
 /// numeric operation takes (then the canonical form answers).
-fn refusal(e: &crate::values::error::OpError) -> bool {
+pub(super) fn refusal(e: &crate::values::error::OpError) -> bool {
     use crate::values::error::OpError as E;
     !matches!(e, E::NotNumbers(_) | E::Operands)
 }
@@ -172,7 +328,7 @@ pub(super) fn at_numbers(r: &Rc<Recipe>, at: Lookup) -> Rc<Recipe> {
         }
         Some(
             canonical(kind, m, at)
-                .unwrap_or_else(|| super::formula::make(kind, m.map(|e| e.at_numbers(at)))),
+                .unwrap_or_else(|| super::formula::make(kind, m.map(|e| put_numbers(e, at)))),
         )
     };
     rebase(r, &leaf, &mut memo)
@@ -257,7 +413,10 @@ fn rebase(
 /// (`(a² − 1)/(a − 1)` is `1 + a`), would not be. None when `x` keeps
 /// other symbols or was made by no recorded steps (the canonical form is
 /// substituted).
-pub(super) fn subs_numbers(args: &[&Value]) -> Option<Result<Value, String>> {
+pub(super) fn subs_numbers(
+    args: &[&Value],
+    warnings: &mut Vec<Diagnostic>,
+) -> Option<Result<Value, String>> {
     let [
         Value::Formula {
             m, how: Some(r), ..
@@ -272,23 +431,55 @@ pub(super) fn subs_numbers(args: &[&Value]) -> Option<Result<Value, String>> {
         [e] => crate::sym::expr::as_symbol(e)?,
         _ => return None,
     };
-    let x = by.as_scalar()?;
+    by.as_scalar()?;
     let mut syms = Vec::new();
     m.data.iter().for_each(|e| e.symbols(&mut syms));
+    crate::values::recipe::symbols(r, &mut syms);
     if syms.iter().any(|s| *s != sym) {
         return None;
     }
-    let at = |s: &Symbol| (*s == sym).then_some(x);
-    match numbers(r, &at) {
+    let at = |s: &Symbol| (*s == sym).then(|| (*by).clone());
+    match numbers(r, &at, warnings) {
         Err(Failed(msg)) => Some(Err(msg)),
-        Ok(Some(Value::Num { m: xs, .. })) if xs.shape() == (m.rows, m.cols) => {
-            let kind = classify(&xs);
-            Some(Ok(Value::Num {
-                kind,
-                m: xs,
-                exact: Default::default(),
-            }))
-        }
+        Ok(Some(v @ Value::Num { .. })) if same_shape(&v, m) => Some(Ok(v)),
         Ok(_) => None,
     }
+}
+
+/// True when numbers `v` have the shape of formula `m`.
+pub(super) fn same_shape(v: &Value, m: &Mat) -> bool {
+    matches!(v, Value::Num { m: xs, .. } if xs.shape() == (m.rows, m.cols))
+        || matches!(v, Value::Bool(_))
+}
+
+/// A rotation, transform, Lie-algebra element or adjoint with an inf or NaN
+/// entry is not one: a domain error (`Rotz(inf)`), rather than a NaN matrix
+/// labelled SO(3).
+pub(super) fn not_finite_group(
+    v: &Value,
+    name: &str,
+    span: crate::span::Span,
+) -> Result<(), Diagnostic> {
+    if let Value::Num { kind, m, .. } = v
+        && matches!(
+            kind,
+            Kind::SO3
+                | Kind::SE3
+                | Kind::SO2
+                | Kind::SE2
+                | Kind::So3
+                | Kind::Se3
+                | Kind::So2
+                | Kind::Se2
+                | Kind::Adjoint { .. }
+        )
+        && m.iter().any(|x| !x.is_finite())
+    {
+        return Err(Diagnostic::error(
+            crate::diagnostics::ErrorKind::Domain,
+            span,
+            format!("{name} gives no finite {kind}: an argument is inf or NaN"),
+        ));
+    }
+    Ok(())
 }

@@ -62,6 +62,9 @@ pub enum Step {
     /// Its one operand, with the kind its name gave it when it was bound
     /// (`V_b = (…)` is a twist).
     Retag,
+    /// `a == b`, `a ≈ b`, `a < b`, …: a bool, decided with the numbers as
+    /// typed first (over free symbols `==` asks for an identity).
+    Compare(crate::syntax::ast::CmpOp),
 }
 
 /// A recipe: a step over the recipes of its operands, with the kind the
@@ -163,6 +166,21 @@ pub enum Made {
 /// formula in a tuple the part it is of that step. `kind` is the result's
 /// kind as checked.
 pub fn record(v: Value, made: Made, args: &[&Value], kind: &Kind) -> Value {
+    // A number made from formulas (`a/a` is 1) depends on their symbols:
+    // it stays a formula, of constant entries, made by its step.
+    let v = match v {
+        Value::Num { kind, m, exact }
+            if !matches!(made, Made::Opaque)
+                && args.iter().any(|a| matches!(a, Value::Formula { .. })) =>
+        {
+            Value::Formula {
+                kind,
+                m: constant(&m, &exact),
+                how: None,
+            }
+        }
+        v => v,
+    };
     if !matches!(v, Value::Formula { .. } | Value::Tuple(_)) {
         return v;
     }
@@ -172,6 +190,53 @@ pub fn record(v: Value, made: Made, args: &[&Value], kind: &Kind) -> Value {
         Made::Step(step) => Recipe::node(step, args.iter().map(|a| Recipe::of(a)).collect(), *kind),
     };
     attach(v, how)
+}
+
+/// The bool of comparison `op` decided `verdict` over sides `a`, `b` of
+/// which one at least is a formula: a formula of kind bool (1 or 0) made
+/// by the comparison, decided again with the numbers once its symbols
+/// have them (`y = a == 2` is false for every a, and true at a = 2, as
+/// typed first). Else the bool itself.
+pub fn compared(verdict: bool, op: crate::syntax::ast::CmpOp, a: &Value, b: &Value) -> Value {
+    let symbolic = |v: &Value| matches!(v, Value::Formula { .. });
+    let numbers = |v: &Value| matches!(v, Value::Formula { .. } | Value::Num { .. });
+    if !(symbolic(a) || symbolic(b)) || !numbers(a) || !numbers(b) {
+        return Value::Bool(verdict);
+    }
+    let how = Recipe::node(
+        Step::Compare(op),
+        vec![Recipe::of(a), Recipe::of(b)],
+        Kind::Bool,
+    );
+    let one = crate::sym::Expr::constant(crate::sym::coef::Coef::rat(crate::sym::coef::Rat::int(
+        i64::from(verdict),
+    )));
+    match how {
+        Some(how) => Value::Formula {
+            kind: Kind::Bool,
+            m: crate::sym::Mat::scalar(one),
+            how: Some(how),
+        },
+        None => Value::Bool(verdict),
+    }
+}
+
+/// Numbers `m` as a formula of constant entries: their exact form, else
+/// their floats.
+fn constant(m: &super::num::Num, exact: &super::exact::Exact) -> crate::sym::Mat {
+    if let Some(form) = exact.form(m) {
+        return form;
+    }
+    let (r, c) = m.shape();
+    let data = (0..r)
+        .flat_map(|i| (0..c).map(move |j| (i, j)))
+        .map(|(i, j)| crate::sym::Expr::num(m[(i, j)]))
+        .collect();
+    crate::sym::Mat {
+        rows: r,
+        cols: c,
+        data,
+    }
 }
 
 /// `v` made by `how`: a formula gets it, each formula in a tuple the part
@@ -192,6 +257,19 @@ pub fn attach(v: Value, how: Option<Rc<Recipe>>) -> Value {
                         let kind = x.kind();
                         attach(x, Recipe::node(Step::Part(i), vec![r.clone()], kind))
                     }
+                    // (a part that came out as numbers is still made by
+                    // the call, and replayed with it: `TransToRp`'s R)
+                    Value::Num { kind, m, exact } => {
+                        let part = Recipe::node(Step::Part(i), vec![r.clone()], kind);
+                        match part {
+                            Some(p) => Value::Formula {
+                                kind,
+                                m: constant(&m, &exact),
+                                how: Some(p),
+                            },
+                            None => Value::Num { kind, m, exact },
+                        }
+                    }
                     x => x,
                 })
                 .collect(),
@@ -208,6 +286,24 @@ pub fn holds_symbols(v: &Value) -> bool {
         Value::Tuple(vs) => vs.iter().any(holds_symbols),
         Value::List(vs) => vs.iter().any(holds_symbols),
         _ => false,
+    }
+}
+
+/// Adds to `out` the symbols of the leaves of `r` (those a value made by
+/// `r` depends on, though its canonical form may have lost them: `a/a`
+/// is 1 but is no number until `a` has one, and not at a = 0). Shared
+/// operands are visited once.
+pub fn symbols(r: &Rc<Recipe>, out: &mut Vec<crate::sym::Symbol>) {
+    let mut seen = std::collections::HashSet::new();
+    let mut todo = vec![r];
+    while let Some(r) = todo.pop() {
+        if !seen.insert(Rc::as_ptr(r)) {
+            continue;
+        }
+        match &r.step {
+            Step::Leaf(Value::Formula { m, .. }) => m.data.iter().for_each(|e| e.symbols(out)),
+            _ => todo.extend(r.args.iter()),
+        }
     }
 }
 
