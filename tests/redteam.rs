@@ -167,4 +167,3 @@ fn a_long_chain_of_statements_replays_every_step() {
     let (a, b) = (0.3f64, -1.1f64);
     close(&src, &[(a.sin() + b.cos()).powi(30)], 1e-13);
 }
-

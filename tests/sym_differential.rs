@@ -910,4 +910,3 @@ fn random_expressions_agree_with_numbers() {
         t.checked, t.refused, t.skipped
     );
 }
-

@@ -239,9 +239,7 @@ impl Chain<'_> {
             }
             // a scalar part of a vector or matrix: the same part of its
             // derivative
-            Step::Index(_) | Step::Member(_) | Step::Retag => {
-                linear(&r.step, self.of(&x(0)?)?, k)
-            }
+            Step::Index(_) | Step::Member(_) | Step::Retag => linear(&r.step, self.of(&x(0)?)?, k),
             Step::Call(name) => self.call(name, &r.args),
             _ => None,
         }

@@ -125,7 +125,11 @@ impl Mx {
                 x.push(s);
             }
         }
-        Mx { r: self.r, c: o.c, x }
+        Mx {
+            r: self.r,
+            c: o.c,
+            x,
+        }
     }
     fn add(&self, o: &Mx) -> Mx {
         Mx {
@@ -452,7 +456,11 @@ impl Out {
             }
             Out::Entry(m, i, j) => {
                 let x = m.eval(at, by).at(*i as usize - 1, *j as usize - 1);
-                Mx { r: 1, c: 1, x: vec![x] }
+                Mx {
+                    r: 1,
+                    c: 1,
+                    x: vec![x],
+                }
             }
             Out::Trace(m) => {
                 let x = m.eval(at, by);
@@ -460,7 +468,11 @@ impl Out {
                 for i in 1..x.r {
                     s = s.add(x.at(i, i));
                 }
-                Mx { r: 1, c: 1, x: vec![s] }
+                Mx {
+                    r: 1,
+                    c: 1,
+                    x: vec![s],
+                }
             }
         }
     }
@@ -500,8 +512,8 @@ fn scalar() -> impl Strategy<Value = T> {
             (inner, 2..4i32).prop_map(|(x, n)| T::Pow(b(x), n)),
         ]
     });
-    let power = (angle.clone(), angle, 8..16i32)
-        .prop_map(|(x, y, n)| T::Pow(b(T::Add(b(x), b(y))), n));
+    let power =
+        (angle.clone(), angle, 8..16i32).prop_map(|(x, y, n)| T::Pow(b(T::Add(b(x), b(y))), n));
     prop_oneof![12 => small, 1 => power]
 }
 
@@ -612,7 +624,12 @@ pub fn check((o, w, p): &(Out, Wrap, Point)) -> Result<(), String> {
         .iter()
         .flat_map(|m| m.scalars())
         .any(|t| !t.eval(&at).0.is_finite());
-    if ill || at.ill.get() || reference.iter().any(|(v, e)| !v.is_finite() || !e.is_finite()) {
+    if ill
+        || at.ill.get()
+        || reference
+            .iter()
+            .any(|(v, e)| !v.is_finite() || !e.is_finite())
+    {
         return Ok(());
     }
     let src = o.source();
@@ -633,10 +650,13 @@ pub fn check((o, w, p): &(Out, Wrap, Point)) -> Result<(), String> {
     let decl = "given a, b, c : scalar\ngiven q1(t), q2(t) : scalar\n";
     let later = format!("{decl}x = {src}\n{}y = x\n", bindings(&p.at(p.t)));
     let compare = |got: &Value, how: &str, script: &str| -> Result<(), String> {
-        let (r, c, xs) = entries(got)
-            .ok_or_else(|| format!("{how}: not numbers: {got:?}\n{script}"))?;
+        let (r, c, xs) =
+            entries(got).ok_or_else(|| format!("{how}: not numbers: {got:?}\n{script}"))?;
         if (r, c) != (want.r, want.c) {
-            return Err(format!("{how}: {r}×{c}, not {}×{}\n{script}", want.r, want.c));
+            return Err(format!(
+                "{how}: {r}×{c}, not {}×{}\n{script}",
+                want.r, want.c
+            ));
         }
         for (k, (g, (v, e))) in xs.iter().zip(&reference).enumerate() {
             let tol = 64.0 * f64::EPSILON * e + 1e-300;
