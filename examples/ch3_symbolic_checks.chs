@@ -16,7 +16,9 @@
 #   - partial derivatives by q and q̇ (∂L/∂q̇ of a Lagrangian);
 #   - the symbolic inverse (inv(J) and J^-1 agree), SO(2)/SE(2) labels and
 #     the book's names on symbolic screws;
-#   - == exact with and without symbols (0.1 + 0.2 == 0.3, √2√3 == √6).
+#   - == exact with and without symbols (0.1 + 0.2 == 0.3, √2√3 == √6);
+#   - bound later is typed first: a/a at 0 is refused, exact forms, bools,
+#     types and warnings as if the numbers had been typed first.
 
 given t, t1, t2, a, b, c, L1 : scalar
 
@@ -118,6 +120,38 @@ y30                                           # 0.0002 (0.000172376436 at 12 dig
 assert y30 == (sin(0.3) + cos(-1.1))^30
 assert abs(y30 - 0.000172376436) < 1e-12
 assert dy == cos(0.3)^2 + 1
+
+# --- bound later is exactly typed first -----------------------------------------
+# A value remembers how it was made, not only its canonical form: ba/ba is 1
+# while ba is free, yet at ba = 0 it is a division by zero, as typed first
+# (it printed 1). The number bound keeps its exact form (60° is π/3, so
+# cos is exactly 1/2), a comparison over a free symbol asks for an identity
+# and is decided again once the symbol has a number, and a value bound
+# later has the type and the warnings the numbers typed first give.
+given ba, bb, bc, bx : scalar
+q1 = ba/ba
+q1                                            # 1 while ba is free
+e2 = ba == 2                                  # false: not true for every ba
+c60 = cos(ba)
+z30 = cos(bb) bx
+ang = rpy(Rotz(bb))
+(wb, thb) = axis_ang3((0, 0, bb))
+eg = euler_zyx(Roty(bc))
+ba = 2
+assert q1 == 1
+assert e2 == true                             # at ba = 2, as typed first
+ba = 60 deg
+assert c60 == 1/2                             # exact, no rounding note
+assert e2 == false
+bb = 30 deg
+z30                                           # (√3/2) bx, as cos(30 deg) bx prints
+assert z30 == cos(30 deg) bx
+ang                                           # a 3-vector, as rpy(Rotz(30 deg))
+assert ang == (0, 0, 30 deg)
+wb                                            # (0, 0, 1) : 3-vector
+assert thb == 30 deg
+bc = pi/2
+eg                                            # the gimbal-lock warning, as typed first
 
 # --- == is exact, with or without a symbol (item 5) ---------------------------
 # Numbers stay exact: decimals as typed (0.866 is 866/1000, not √3/2), π,

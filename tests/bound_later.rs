@@ -331,3 +331,75 @@ fn angles_bound_later_are_a_vector_with_their_warning() {
     let (_, err) = common::outputs("given a\ny = euler_zyx(Roty(a))\na = pi/2\ny");
     assert!(err.contains("gimbal lock"), "{err}");
 }
+
+/// A comparison over free symbols asks for an identity (§7: `a == 2` is
+/// not true for every a); once its symbols have numbers it is decided as
+/// typed first (issue 21: `y = a == 2; a = 2; y` printed false).
+#[test]
+fn comparisons_bound_later_are_decided_as_typed_first() {
+    let last = |src: &str| common::printed(src).lines().last().map(str::to_string);
+    assert_eq!(last("given a\ny = a == 2\ny").as_deref(), Some("false"));
+    assert_eq!(
+        last("given a\ny = a == 2\na = 2\ny").as_deref(),
+        Some("true")
+    );
+    assert_eq!(
+        last("given a\ny = a == 2\na = 3\ny").as_deref(),
+        Some("false")
+    );
+    assert_eq!(
+        last("given a\ny = a ~= 2\na = 2.0000000001\ny").as_deref(),
+        Some("true")
+    );
+    assert_eq!(
+        last("given a\ny = a^2 == a*a\na = 0.3\ny").as_deref(),
+        Some("true")
+    );
+    assert_eq!(
+        last("given a\ny = cos(a) == 1/2\na = 60 deg\ny").as_deref(),
+        Some("true")
+    );
+    // the rounding note of typed first, where the value becomes a bool
+    let (_, err) = common::outputs("given a\ny = sqrt(a)^2 == 5\na = 5\ny");
+    let (_, first) = common::outputs("a = 5\nsqrt(a)^2 == 5");
+    assert!(first.contains("rounding only"), "{first}");
+    assert!(err.contains("rounding only"), "{err}");
+    // assert on the bool bound later
+    common::printed("given a\ny = a == 2\na = 2\nassert y == true");
+    // an order of free symbols is not decided: said, not guessed
+    assert!(common::error("given a\ny = a < 2").contains("cannot decide"));
+    let j = common::json("given a\ny = a == 2\na = 2\ny");
+    assert_eq!(j.last().expect("a line")["type"], "bool");
+    assert_eq!(j.last().expect("a line")["value"], true);
+}
+
+/// A builtin with no closed form over symbols (`axis_ang3` of a symbolic
+/// vector) destructures into parts that become numbers, typed as typed
+/// first (issue 21: `w` printed only "3-vector", JSON type null); a kind
+/// is the one the numbers earn (`[a, 0; 0, 1]^-1` at a = 1 is SO(2)).
+#[test]
+fn destructured_calls_and_kinds_bound_later_are_typed_first() {
+    let later = common::json("given a\n(w, th) = axis_ang3((0, 0, a))\na = 0.5\nw\nth");
+    let first = common::json("given b\n(w, th) = axis_ang3((0, 0, 0.5))\nb = 1\nw\nth");
+    let n = later.len();
+    assert_eq!(later[n - 2]["value"], first[first.len() - 2]["value"]);
+    assert_eq!(later[n - 2]["type"], "vector");
+    assert_eq!(later[n - 1]["value"], 0.5);
+    agree(
+        "given a\n(R, p) = TransToRp(RpToTrans(Rotz(pi/2), (a, 2, 3)))\na = 1\nR",
+        "(R, p) = TransToRp(RpToTrans(Rotz(pi/2), (1, 2, 3)))\nR",
+    );
+    agree("given a\ny = [a, 0; 0, 1]^-1\na = 1\ny", "[1, 0; 0, 1]^-1");
+    assert_eq!(
+        ans("given a\ny = [a, 0; 0, 1]^-1\na = 1\ny").kind(),
+        Kind::SO2
+    );
+    agree(
+        "given a\ny = round(Rotz(a deg), 3)\na = 30\ny",
+        "round(Rotz(30 deg), 3)",
+    );
+    agree("given a\ny = 2^a + a^0.5\na = 2\ny", "2^2 + 2^0.5");
+    // a failure inside a tree is the value's refusal, as typed first
+    let e = common::error("given a\ny = rad2deg((pi/a, 1, 2))\na = 0\ny");
+    assert!(e.contains("division by zero"), "{e}");
+}

@@ -182,6 +182,14 @@ fn exact_output_reads_back() {
         out,
         "[√3/2, -1/2, 0\n  1/2, √3/2, 0\n    0,    0, 1]  : SO(3)\n"
     );
+    // a decimal of more than twelve places prints as typed, not as a
+    // fraction (it printed 3/20000000000000), and reads back
+    let (out, _) = text("1.5e-13\n(1e-13, 2.5e-20, 0.866)", true);
+    assert_eq!(out, "1.5e-13\n(1e-13, 2.5e-20, 0.866)  : 3-vector\n");
+    assert_eq!(
+        last("1.5e-13 == 15/100000000000000"),
+        serde_json::Value::Bool(true)
+    );
 }
 
 /// A random exact number as source text, and its value: integers,

@@ -858,8 +858,11 @@ fn check_equal(x: &T, y: &T, which: usize, p: &Point) -> Result<(), String> {
     Ok(())
 }
 
+/// The value bound to `name` as it is shown (a comparison over symbols is
+/// kept as a bool decided again once they have numbers: its bool).
 fn value(s: &Session, name: &str) -> Option<Value> {
-    s.env.get(name).and_then(|b| b.val.clone())
+    let v = s.env.get(name).and_then(|b| b.val.clone())?;
+    Some(chasles::eval::formula::constant_shown(&v).unwrap_or(v))
 }
 
 /// `==` over the same random expressions: `CHASLES_DIFF_CASES` / 4 cases.

@@ -209,7 +209,7 @@ impl<'a> Op<'a> {
                     crate::sym::Expr::pi().scale(&Coef::rat(Rat::new(1, 180).unwrap_or(Rat::ONE)));
                 Ok(formula::scalar(x.mul(&deg)))
             }),
-            (Op::Arith(op), [a, b]) => Some(formula::binary(op, a, b, kind)),
+            (Op::Arith(op), [a, b]) => formula::binary_or_tree(op, a, b, kind),
             (Op::Transpose, [v]) => Some(formula::member(v, "T")),
             (Op::Member(part), [v]) => Some(formula::member(v, part.name())),
             (Op::Index(sels), [v]) => Some(formula::index(v, sels)),
@@ -311,7 +311,7 @@ impl<'a> Op<'a> {
     /// symbolic when the exact path gives none (arithmetic and vectors of
     /// formulas have always an exact form or none at all).
     fn formula_is_symbolic(self) -> bool {
-        !matches!(self, Op::Arith(_) | Op::Vector)
+        !matches!(self, Op::Vector) && !matches!(self, Op::Arith(o) if o != BinOp::Pow)
     }
 
     /// The error of this operation on values ([`Op::apply`]) as the

@@ -5,191 +5,21 @@
 //! checked: they must have the same shape and the same frames.
 //!
 //! [`equal`] is the one place that decides equality of two values; for
-//! symbolic sides it asks [`symbolic_equal`] (trees over `given` matrices)
+//! symbolic sides it asks [`super::decide::symbolic_equal`] (trees over `given` matrices)
 //! or the canonical forms of [`super::formula::equal`] (symbolic scalars).
 
-use crate::values::num::Num;
-
 use super::interp::{Interp, Typed};
-use super::substitute::to_sym;
-use super::value::Sym;
 use super::value::Value;
+
+pub use super::decide::{APPROX_TOL, equal, largest_difference, rounding_note, rounding_only};
 use crate::check::rules::{self, RuleError};
 use crate::check::ty::{Frames, Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
 use crate::syntax::ast::{BinOp, CmpOp, Expr, ExprKind, Span};
 
-/// The tolerance of `a ≈ b`: every entry within 1e-9 · max(1, |a|∞, |b|∞).
-pub const APPROX_TOL: f64 = 1e-9;
-
 /// How `op` reads in messages.
 fn op_text(op: CmpOp) -> &'static str {
     op.text()
-}
-
-/// Whether `a op b` holds: `Ok(Some(..))` decided, `Ok(None)` undecided
-/// (symbolic sides the canonical form cannot settle), `Err` a message when
-/// the two cannot be compared (different shapes, mechanisms).
-pub fn equal(a: &Value, b: &Value, op: CmpOp) -> Result<Option<bool>, String> {
-    if op.is_order() {
-        return super::order::holds(a, b, op);
-    }
-    match (a, b) {
-        (Value::Sym(_), _) | (_, Value::Sym(_)) => Ok(symbolic_equal(&to_sym(a), &to_sym(b), op)),
-        // Symbolic scalars and matrices: by their canonical forms (§7).
-        (Value::Formula { .. }, _) | (_, Value::Formula { .. }) => {
-            super::formula::equal(a, b, op == CmpOp::Approx)
-        }
-        (Value::Num { m: x, .. }, Value::Num { m: y, .. }) => {
-            if x.shape() != y.shape() {
-                return Err(format!(
-                    "cannot compare {} with {}",
-                    a.kind().a(),
-                    b.kind().a()
-                ));
-            }
-            Ok(Some(match op {
-                CmpOp::Approx => approx(x, y),
-                _ => exactly_equal(a, b),
-            }))
-        }
-        (Value::Bool(x), Value::Bool(y)) => Ok(Some(x == y)),
-        (Value::Tuple(xs), Value::Tuple(ys)) if xs.len() == ys.len() => {
-            let mut all = Some(true);
-            for (x, y) in xs.iter().zip(ys) {
-                match equal(x, y, op)? {
-                    Some(false) => return Ok(Some(false)),
-                    Some(true) => {}
-                    None => all = None,
-                }
-            }
-            Ok(all)
-        }
-        _ => Err(format!(
-            "cannot compare {} with {}",
-            a.kind().a(),
-            b.kind().a()
-        )),
-    }
-}
-
-/// The note on `a == b` false by rounding only (LANGUAGE.md §3).
-fn rounding_note(span: Span) -> Diagnostic {
-    Diagnostic::note(
-        ErrorKind::Domain,
-        span,
-        "the two sides differ by rounding only: floats with no exact form are equal only when every digit is",
-    )
-    .with_help("compare within rounding with ≈ (typed ~=)")
-}
-
-/// Equality of symbolic expressions (LANGUAGE.md §7). Today it is
-/// structural: equal trees are equal, and anything else is undecided
-/// (`None`). A canonical form decides more pairs by extending this one
-/// function. `Sym`'s own `==` compares constants by their 4-digit text, so
-/// the trees are also compared in full (their `Debug` form holds every
-/// constant's exact value): `t + 1.00001` is not `t + 1.00002`.
-pub fn symbolic_equal(a: &Sym, b: &Sym, _op: CmpOp) -> Option<bool> {
-    // What cancelled products leave (`inv(T) * T`) is the identity `I`.
-    let identity = |s: &Sym| match s {
-        Sym::Identity => true,
-        Sym::Const(v, _) => v
-            .as_matrix()
-            .is_some_and(|m| m.is_square() && m.nrows() > 1 && m.is_identity(0.0)),
-        _ => false,
-    };
-    if identity(a) && identity(b) {
-        return Some(true);
-    }
-    // Trees compare structurally, constants by value (not printed text).
-    (a == b).then_some(true)
-}
-
-/// `a == b` on numbers (LANGUAGE.md §3): by their exact forms when both
-/// have one (`0.1 + 0.2 == 0.3`, `sqrt(2)*sqrt(3) == sqrt(6)`), else as
-/// floats, equal only when every entry is the same float.
-fn exactly_equal(a: &Value, b: &Value) -> bool {
-    if a.may_be_exact()
-        && b.may_be_exact()
-        && let (Some(x), Some(y)) = (a.exact_form(), b.exact_form())
-    {
-        return x == y;
-    }
-    match (a, b) {
-        (Value::Num { m: x, .. }, Value::Num { m: y, .. }) => x == y,
-        _ => false,
-    }
-}
-
-/// True when `a == b` is false by rounding only: the sides are floats (one
-/// at least has no exact form) within 1e-12 relative, so `≈` is meant.
-pub fn rounding_only(a: &Value, b: &Value) -> bool {
-    match (a, b) {
-        (Value::Num { m: x, .. }, Value::Num { m: y, .. }) => {
-            x.shape() == y.shape()
-                && !(a.may_be_exact()
-                    && b.may_be_exact()
-                    && a.exact_form().is_some()
-                    && b.exact_form().is_some())
-                && within(x, y, 1e-12)
-        }
-        (Value::Formula { .. }, _) | (_, Value::Formula { .. }) => {
-            super::formula::rounding_only(a, b)
-        }
-        (Value::Tuple(xs), Value::Tuple(ys)) if xs.len() == ys.len() => {
-            xs.iter()
-                .zip(ys)
-                .all(|(x, y)| exactly_equal(x, y) || rounding_only(x, y))
-                && xs.iter().zip(ys).any(|(x, y)| rounding_only(x, y))
-        }
-        _ => false,
-    }
-}
-
-/// Entrywise within [`APPROX_TOL`] relative to the larger side (absolute
-/// near zero); infinite entries must agree exactly, NaN never does.
-fn approx(x: &Num, y: &Num) -> bool {
-    within(x, y, APPROX_TOL)
-}
-
-/// Entrywise within `tol` relative to the larger side (absolute near
-/// zero); infinite entries must agree exactly, NaN never does.
-fn within(x: &Num, y: &Num, tol: f64) -> bool {
-    let scale = x
-        .iter()
-        .chain(y.iter())
-        .filter(|v| v.is_finite())
-        .fold(1.0f64, |s, v| s.max(v.abs()));
-    x.iter().zip(y.iter()).all(|(a, b)| {
-        if a.is_finite() && b.is_finite() {
-            (a - b).abs() <= tol * scale
-        } else {
-            a == b
-        }
-    })
-}
-
-/// The largest entrywise difference of two numeric values of one shape,
-/// and where it is: the 1-based (row, column) of the first such entry
-/// (NaN counts as the largest).
-pub fn largest_difference(a: &Value, b: &Value) -> Option<(f64, usize, usize)> {
-    let (Value::Num { m: x, .. }, Value::Num { m: y, .. }) = (a, b) else {
-        return None;
-    };
-    if x.shape() != y.shape() {
-        return None;
-    }
-    let mut best = (0.0f64, 1, 1);
-    for j in 0..x.ncols() {
-        for i in 0..x.nrows() {
-            let e = (x[(i, j)] - y[(i, j)]).abs();
-            let e = if e.is_nan() { f64::INFINITY } else { e };
-            if e > best.0 {
-                best = (e, i + 1, j + 1);
-            }
-        }
-    }
-    Some(best)
 }
 
 /// The static rule: both sides of one shape (when known) and one frame
@@ -250,10 +80,12 @@ impl Interp<'_> {
         op_span: Span,
     ) -> Result<Typed, Diagnostic> {
         let sides = self.sides(op, lhs, rhs, op_span)?;
-        Ok(Typed::new(
-            Ty::plain(Kind::Bool),
-            sides.verdict.map(Value::Bool),
-        ))
+        // (over symbols, the bool is decided again once they have numbers)
+        let val = match (sides.verdict, sides.l.value(), sides.r.value()) {
+            (Some(v), Some(a), Some(b)) => Some(crate::values::recipe::compared(v, op, a, b)),
+            (v, ..) => v.map(Value::Bool),
+        };
+        Ok(Typed::new(Ty::plain(Kind::Bool), val))
     }
 
     fn sides(
@@ -398,6 +230,8 @@ impl Interp<'_> {
 
 #[cfg(test)]
 mod tests {
+    use super::super::decide::symbolic_equal;
+    use super::super::value::Sym;
     use super::*;
 
     fn v(xs: &[f64]) -> Value {

@@ -265,6 +265,19 @@ impl Interp<'_> {
                 format!("a count must be a whole number, not {}", t.ty.kind.a()),
             ));
         }
+        if let Some(v) = t.value()
+            && crate::values::recipe::holds_symbols(v)
+        {
+            return Err(Diagnostic::error(
+                ErrorKind::Type,
+                e.span,
+                format!(
+                    "a count takes a number, not the symbolic {}",
+                    crate::values::format::inline(v, 4)
+                ),
+            )
+            .with_help("bind a number to its given names first (§7)"));
+        }
         let Some(x) = t.value().and_then(Value::as_scalar) else {
             return Ok(0);
         };

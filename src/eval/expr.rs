@@ -231,7 +231,15 @@ impl Interp<'_> {
             } else {
                 None
             };
-            return Ok(Typed::new(b.ty, v));
+            // (a value made from symbols that has become numbers is typed
+            // by what it is now, as typed first: `rpy` gives a vector)
+            let ty = match (&b.val, &v) {
+                (Some(old), Some(_)) if crate::values::recipe::holds_symbols(old) => {
+                    refine(b.ty, &v)
+                }
+                _ => b.ty,
+            };
+            return Ok(Typed::new(ty, v));
         }
         let name = name.as_str();
         if let Some(d) = self.derivative_symbol(name) {
@@ -513,7 +521,7 @@ impl Interp<'_> {
         let exact = op.exact_of(&vals, &ty.kind);
         let mut v = apply::call(b, vals, site)?;
         v.set_exact(exact);
-        not_finite_group(&v, b.name, span)?;
+        super::replay::not_finite_group(&v, b.name, span)?;
         let val = Some(v);
         Ok(Typed::new(refine(ty, &val), val))
     }
@@ -543,32 +551,4 @@ fn literal_number(e: &Expr) -> Option<f64> {
         } => literal_number(operand).map(|x| -x),
         _ => None,
     }
-}
-
-/// A rotation, transform, Lie-algebra element or adjoint with an inf or NaN
-/// entry is not one: a domain error (`Rotz(inf)`), rather than a NaN matrix
-/// labelled SO(3).
-pub(super) fn not_finite_group(v: &Value, name: &str, span: Span) -> Result<(), Diagnostic> {
-    if let Value::Num { kind, m, .. } = v
-        && matches!(
-            kind,
-            Kind::SO3
-                | Kind::SE3
-                | Kind::SO2
-                | Kind::SE2
-                | Kind::So3
-                | Kind::Se3
-                | Kind::So2
-                | Kind::Se2
-                | Kind::Adjoint { .. }
-        )
-        && m.iter().any(|x| !x.is_finite())
-    {
-        return Err(Diagnostic::error(
-            ErrorKind::Domain,
-            span,
-            format!("{name} gives no finite {kind}: an argument is inf or NaN"),
-        ));
-    }
-    Ok(())
 }

@@ -231,6 +231,7 @@ impl<'a> Interp<'a> {
                     .map(|b| b.value().cloned())
                     .collect::<Option<Vec<_>>>()
                     .map(Value::Tuple);
+                let val = val.map(|v| super::formula::constant_shown(&v).unwrap_or(v));
                 let mut o = out(names, Typed::new(ty, val));
                 o.parts = bound.into_iter().map(|b| b.ty).collect();
                 Ok(o)
@@ -521,6 +522,16 @@ impl<'a> Interp<'a> {
                         .ok()
                 })
                 .collect(),
+            // a symbolic call's tuple (`axis_ang3((0, 0, a))`): each part
+            // its index, computed once the symbols have numbers (§7)
+            Some(Value::Sym(s)) if matches!(t.ty.kind, Kind::Tuple(_)) => (1..=n)
+                .map(|i| {
+                    Some(Value::Sym(super::value::Sym::Index(
+                        Box::new(s.clone()),
+                        vec![Some(i as f64)],
+                    )))
+                })
+                .collect(),
             _ => vec![None; n],
         };
         Ok(kinds
@@ -528,7 +539,10 @@ impl<'a> Interp<'a> {
             .zip(vals)
             .map(|(k, v)| {
                 let frames = t.ty.frames.part(&k);
-                let k = v.as_ref().map_or(k, Value::kind);
+                let k = match &v {
+                    Some(Value::Sym(_)) | None => k,
+                    Some(v) => v.kind(),
+                };
                 Typed::new(Ty::new(k, frames), v)
             })
             .collect())

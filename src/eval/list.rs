@@ -86,7 +86,9 @@ pub(super) fn numbers_only(
     vals: &[Value],
     span: Span,
 ) -> Result<(), Diagnostic> {
-    if b.area == crate::builtins::Area::Pictures && vals.iter().any(Value::is_symbolic) {
+    if b.area == crate::builtins::Area::Pictures
+        && vals.iter().any(crate::values::recipe::holds_symbols)
+    {
         return Err(Diagnostic::error(
             ErrorKind::Domain,
             span,
@@ -165,6 +167,18 @@ impl Interp<'_> {
                 format!("a range takes numbers, not the symbol {s}"),
             )
             .with_help("bind a number to it first (§7)"));
+        }
+        // (a value made from symbols has no number yet: its length is unknown)
+        if let Some(v @ Value::Formula { .. }) = t.val.as_deref() {
+            return Err(Diagnostic::error(
+                ErrorKind::Type,
+                e.span,
+                format!(
+                    "a range takes numbers, not the symbolic {}",
+                    crate::values::format::inline(v, 4)
+                ),
+            )
+            .with_help("bind numbers to its given names first (§7)"));
         }
         if !t.ty.kind.maybe_scalar() {
             return Err(Diagnostic::error(

@@ -41,6 +41,13 @@ fn exact(at: Lookup, s: &Symbol) -> Option<Expr> {
 /// number has one (`cos(a)` at a = π/3 is 1/2). A formula that is one
 /// symbol is the value bound to it. None when a symbol has no number.
 pub(super) fn canonical(kind: &Kind, m: &Mat, at: Lookup) -> Option<Value> {
+    if *kind == Kind::Bool {
+        return super::formula::constant_shown(&Value::Formula {
+            kind: *kind,
+            m: m.clone(),
+            how: None,
+        });
+    }
     if let [e] = m.data.as_slice()
         && let Some(s) = crate::sym::expr::as_symbol(e)
     {
@@ -106,7 +113,7 @@ pub(super) fn typed_first(
             let v = apply::call(b, vals, site)
                 .map_err(|d| OpError::Message(d.message))?
                 .with_exact(exact);
-            super::expr::not_finite_group(&v, b.name, Default::default())
+            not_finite_group(&v, b.name, Default::default())
                 .map_err(|d| OpError::Message(d.message))?;
             Ok(v)
         }
@@ -220,6 +227,28 @@ fn step(r: &Recipe, at: Lookup, memo: &mut Memo) -> Option<Value> {
             };
         }
         Step::Leaf(_) => return None,
+        Step::Compare(op) => {
+            let [a, b] = refs.as_slice() else {
+                return None;
+            };
+            return match super::decide::equal(a, b, *op) {
+                Ok(Some(v)) => {
+                    if !v
+                        && *op == crate::syntax::ast::CmpOp::Eq
+                        && super::decide::rounding_only(a, b)
+                    {
+                        let note = super::decide::rounding_note(Default::default());
+                        memo.warnings.push(note);
+                    }
+                    Some(Value::Bool(v))
+                }
+                Ok(None) => None,
+                Err(m) => {
+                    memo.failed.get_or_insert(m);
+                    None
+                }
+            };
+        }
         Step::Neg => Op::Neg,
         Step::Degrees => Op::Degrees,
         Step::Arith(op) => Op::Arith(*op),
@@ -230,7 +259,9 @@ fn step(r: &Recipe, at: Lookup, memo: &mut Memo) -> Option<Value> {
         Step::Vector => Op::Vector,
         Step::Call(name) => Op::Call(crate::builtins::lookup(name)?, name),
     };
-    match typed_first(op, &refs, &r.kind, &mut memo.warnings) {
+    // (the kind as the checker gives it for these numbers typed first)
+    let kind = rule_kind(op, &refs).unwrap_or(r.kind);
+    match typed_first(op, &refs, &kind, &mut memo.warnings) {
         Ok(v) => Some(v),
         Err(e) => {
             if refusal(&e) && memo.failed.is_none() {
@@ -241,10 +272,42 @@ fn step(r: &Recipe, at: Lookup, memo: &mut Memo) -> Option<Value> {
     }
 }
 
+/// Operation `op` on numbers `args` as typed first ([`typed_first`]),
+/// its result's kind given by its rule on the operands' kinds, as the
+/// checker gives it when the numbers are typed first (`[1, 0; 0, 1]^-1`
+/// is SO(2)); an operation the rule refuses gets no kind from it.
+pub(super) fn as_typed(
+    op: Op,
+    args: &[&Value],
+    warnings: &mut Vec<Diagnostic>,
+) -> Result<Value, crate::values::error::OpError> {
+    let kind = rule_kind(op, args).unwrap_or(Kind::Unknown);
+    typed_first(op, args, &kind, warnings)
+}
+
+/// The kind `op`'s rule gives its result from the kinds of numbers
+/// `args`, as the checker does when they are typed first; None when the
+/// rule refuses them.
+fn rule_kind(op: Op, args: &[&Value]) -> Option<Kind> {
+    let tys: Vec<crate::check::ty::Ty> = args
+        .iter()
+        .map(|v| crate::check::ty::Ty::plain(v.kind()))
+        .collect();
+    let exponent = match (op, args) {
+        (Op::Arith(crate::syntax::ast::BinOp::Pow), [_, e]) => e.as_scalar(),
+        _ => None,
+    };
+    let hints = super::apply::Hints {
+        exponent,
+        ..Default::default()
+    };
+    op.rule(&tys, hints).ok().map(|t| t.kind)
+}
+
 /// Whether a step's error says its numbers are outside its domain (the
 /// answer is a refusal) rather than that its operands are not what the
 /// numeric operation takes (then the canonical form answers).
-fn refusal(e: &crate::values::error::OpError) -> bool {
+pub(super) fn refusal(e: &crate::values::error::OpError) -> bool {
     use crate::values::error::OpError as E;
     !matches!(e, E::NotNumbers(_) | E::Operands)
 }
@@ -334,4 +397,37 @@ pub(super) fn subs_numbers(
 /// True when numbers `v` have the shape of formula `m`.
 pub(super) fn same_shape(v: &Value, m: &Mat) -> bool {
     matches!(v, Value::Num { m: xs, .. } if xs.shape() == (m.rows, m.cols))
+        || matches!(v, Value::Bool(_))
+}
+
+/// A rotation, transform, Lie-algebra element or adjoint with an inf or NaN
+/// entry is not one: a domain error (`Rotz(inf)`), rather than a NaN matrix
+/// labelled SO(3).
+pub(super) fn not_finite_group(
+    v: &Value,
+    name: &str,
+    span: crate::span::Span,
+) -> Result<(), Diagnostic> {
+    if let Value::Num { kind, m, .. } = v
+        && matches!(
+            kind,
+            Kind::SO3
+                | Kind::SE3
+                | Kind::SO2
+                | Kind::SE2
+                | Kind::So3
+                | Kind::Se3
+                | Kind::So2
+                | Kind::Se2
+                | Kind::Adjoint { .. }
+        )
+        && m.iter().any(|x| !x.is_finite())
+    {
+        return Err(Diagnostic::error(
+            crate::diagnostics::ErrorKind::Domain,
+            span,
+            format!("{name} gives no finite {kind}: an argument is inf or NaN"),
+        ));
+    }
+    Ok(())
 }

@@ -235,6 +235,20 @@ pub fn is_short_decimal(r: &Rat) -> bool {
     d == num_bigint::BigInt::from(1) && places <= 12
 }
 
+/// True when `r` is a decimal: a denominator of 2s and 5s only.
+pub fn is_decimal(r: &Rat) -> bool {
+    let (_, mut d) = r.parts();
+    let (two, five) = (num_bigint::BigInt::from(2), num_bigint::BigInt::from(5));
+    let zero = num_bigint::BigInt::from(0);
+    while &d % &two == zero {
+        d /= &two;
+    }
+    while &d % &five == zero {
+        d /= &five;
+    }
+    d == num_bigint::BigInt::from(1)
+}
+
 /// True when the exact form of a value prints as its decimals anyway
 /// (every entry a short decimal, [`is_short_decimal`]): `--exact` then
 /// prints the value as usual.
@@ -256,6 +270,15 @@ pub fn text(e: &Expr, st: crate::sym::print::Style) -> String {
         && r.small().is_none_or(|(_, q)| q == 1 || q > 5)
     {
         return super::number::fmt_num(r.to_f64(), st.digits);
+    }
+    // A decimal of more places prints as it was typed (`1.5e-13`), the
+    // shortest text that reads back as it, not as a fraction.
+    if let Some(r) = e.as_const().and_then(|c| c.as_rat())
+        && is_decimal(&r)
+        && !is_short_decimal(&r)
+        && Rat::typed(r.to_f64()).is_some_and(|t| t == r)
+    {
+        return format!("{:?}", r.to_f64());
     }
     if let [(mono, c)] = e.terms.iter().collect::<Vec<_>>().as_slice()
         && let [(Var::Pi, 1)] = mono.as_slice()

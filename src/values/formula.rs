@@ -91,6 +91,14 @@ pub fn make(kind: &Kind, m: Mat) -> Value {
 /// nothing to show otherwise.
 pub fn constant_shown(v: &Value) -> Option<Value> {
     match v {
+        // (a comparison decided over symbols: a bool)
+        Value::Formula {
+            kind: Kind::Bool,
+            m,
+            ..
+        } => Some(Value::Bool(
+            m.as_f64().is_some_and(|x| x.iter().any(|x| *x != 0.0)),
+        )),
         Value::Formula { kind, m, .. } if m.as_f64().is_some() => Some(make(kind, m.clone())),
         Value::Tuple(vs) if vs.iter().any(|x| constant_shown(x).is_some()) => Some(Value::Tuple(
             vs.iter()
@@ -187,6 +195,29 @@ pub fn mul(x: &Mat, y: &Mat) -> Result<Mat, String> {
     }
     x.mul(y)
         .ok_or_else(|| format!("cannot multiply matrices of sizes {}", sizes(x, y)))
+}
+
+/// `a op b` over formulas ([`binary`]); None for a power of a scalar whose
+/// exponent is no integer (`2^a`, `a^0.5`): it has no exact form here and
+/// stays a tree, computed as typed first once its symbols have numbers.
+pub fn binary_or_tree(
+    op: BinOp,
+    a: &Value,
+    b: &Value,
+    kind: &Kind,
+) -> Option<Result<Value, String>> {
+    let integer = |v: &Value| match v {
+        Value::Num { m, .. } => m.shape() == (1, 1) && m[(0, 0)].fract() == 0.0,
+        Value::Formula { m, .. } => {
+            matches!(m.data.as_slice(), [e] if e.as_f64().is_some_and(|n| n.fract() == 0.0))
+        }
+        _ => false,
+    };
+    let scalar = matches!(a.kind(), Kind::Scalar);
+    if op == BinOp::Pow && scalar && !integer(b) {
+        return None;
+    }
+    Some(binary(op, a, b, kind))
 }
 
 fn pow(x: &Mat, y: &Mat, base: Kind, kind: &Kind) -> Result<Value, String> {

@@ -61,6 +61,9 @@ pub enum Step {
     /// Its one operand, with the kind its name gave it when it was bound
     /// (`V_b = (…)` is a twist).
     Retag,
+    /// `a == b`, `a ≈ b`, `a < b`, …: a bool, decided with the numbers as
+    /// typed first (over free symbols `==` asks for an identity).
+    Compare(crate::syntax::ast::CmpOp),
 }
 
 /// A recipe: a step over the recipes of its operands, with the kind the
@@ -174,6 +177,35 @@ pub fn record(v: Value, made: Made, args: &[&Value], kind: &Kind) -> Value {
     attach(v, how)
 }
 
+/// The bool of comparison `op` decided `verdict` over sides `a`, `b` of
+/// which one at least is a formula: a formula of kind bool (1 or 0) made
+/// by the comparison, decided again with the numbers once its symbols
+/// have them (`y = a == 2` is false for every a, and true at a = 2, as
+/// typed first). Else the bool itself.
+pub fn compared(verdict: bool, op: crate::syntax::ast::CmpOp, a: &Value, b: &Value) -> Value {
+    let symbolic = |v: &Value| matches!(v, Value::Formula { .. });
+    let numbers = |v: &Value| matches!(v, Value::Formula { .. } | Value::Num { .. });
+    if !(symbolic(a) || symbolic(b)) || !numbers(a) || !numbers(b) {
+        return Value::Bool(verdict);
+    }
+    let how = Recipe::node(
+        Step::Compare(op),
+        vec![Recipe::of(a), Recipe::of(b)],
+        Kind::Bool,
+    );
+    let one = crate::sym::Expr::constant(crate::sym::coef::Coef::rat(crate::sym::coef::Rat::int(
+        i64::from(verdict),
+    )));
+    match how {
+        Some(how) => Value::Formula {
+            kind: Kind::Bool,
+            m: crate::sym::Mat::scalar(one),
+            how: Some(how),
+        },
+        None => Value::Bool(verdict),
+    }
+}
+
 /// Numbers `m` as a formula of constant entries: their exact form, else
 /// their floats.
 fn constant(m: &super::num::Num, exact: &super::exact::Exact) -> crate::sym::Mat {
@@ -209,6 +241,19 @@ pub fn attach(v: Value, how: Option<Rc<Recipe>>) -> Value {
                     Value::Formula { .. } => {
                         let kind = x.kind();
                         attach(x, Recipe::node(Step::Part(i), vec![r.clone()], kind))
+                    }
+                    // (a part that came out as numbers is still made by
+                    // the call, and replayed with it: `TransToRp`'s R)
+                    Value::Num { kind, m, exact } => {
+                        let part = Recipe::node(Step::Part(i), vec![r.clone()], kind);
+                        match part {
+                            Some(p) => Value::Formula {
+                                kind,
+                                m: constant(&m, &exact),
+                                how: Some(p),
+                            },
+                            None => Value::Num { kind, m, exact },
+                        }
                     }
                     x => x,
                 })

@@ -1,0 +1,196 @@
+//! Whether two values are equal, or in order (LANGUAGE.md §3, §7): the one
+//! place that decides `a == b` (exact: by exact forms when both sides have
+//! them, else float by float, with a note when they differ by rounding
+//! only), `a ≈ b` (within 1e-9 relative) and `a < b`, for numbers typed
+//! first and for numbers bound later alike (a comparison over symbols is
+//! decided again with their numbers, `super::replay`). Symbolic sides ask
+//! the canonical forms ([`super::formula::equal`]) or the trees
+//! ([`symbolic_equal`]).
+
+use super::apply::to_sym;
+use super::value::{Sym, Value};
+use crate::check::ty::Kind;
+use crate::diagnostics::{Diagnostic, ErrorKind};
+use crate::syntax::ast::{CmpOp, Span};
+use crate::values::num::Num;
+
+/// The tolerance of `a ≈ b`: every entry within 1e-9 · max(1, |a|∞, |b|∞).
+pub const APPROX_TOL: f64 = 1e-9;
+
+/// Whether `a op b` holds: `Ok(Some(..))` decided, `Ok(None)` undecided
+/// (symbolic sides the canonical form cannot settle), `Err` a message when
+/// the two cannot be compared (different shapes, mechanisms).
+pub fn equal(a: &Value, b: &Value, op: CmpOp) -> Result<Option<bool>, String> {
+    // (a bool decided over symbols is that bool)
+    let shown = |v: &Value| match v {
+        Value::Formula {
+            kind: Kind::Bool, ..
+        } => super::formula::constant_shown(v),
+        _ => None,
+    };
+    if let Some(x) = shown(a) {
+        return equal(&x, b, op);
+    }
+    if let Some(y) = shown(b) {
+        return equal(a, &y, op);
+    }
+    if op.is_order() {
+        return super::order::holds(a, b, op);
+    }
+    match (a, b) {
+        (Value::Sym(_), _) | (_, Value::Sym(_)) => Ok(symbolic_equal(&to_sym(a), &to_sym(b), op)),
+        // Symbolic scalars and matrices: by their canonical forms (§7).
+        (Value::Formula { .. }, _) | (_, Value::Formula { .. }) => {
+            super::formula::equal(a, b, op == CmpOp::Approx)
+        }
+        (Value::Num { m: x, .. }, Value::Num { m: y, .. }) => {
+            if x.shape() != y.shape() {
+                return Err(format!(
+                    "cannot compare {} with {}",
+                    a.kind().a(),
+                    b.kind().a()
+                ));
+            }
+            Ok(Some(match op {
+                CmpOp::Approx => approx(x, y),
+                _ => exactly_equal(a, b),
+            }))
+        }
+        (Value::Bool(x), Value::Bool(y)) => Ok(Some(x == y)),
+        (Value::Tuple(xs), Value::Tuple(ys)) if xs.len() == ys.len() => {
+            let mut all = Some(true);
+            for (x, y) in xs.iter().zip(ys) {
+                match equal(x, y, op)? {
+                    Some(false) => return Ok(Some(false)),
+                    Some(true) => {}
+                    None => all = None,
+                }
+            }
+            Ok(all)
+        }
+        _ => Err(format!(
+            "cannot compare {} with {}",
+            a.kind().a(),
+            b.kind().a()
+        )),
+    }
+}
+
+/// The note on `a == b` false by rounding only (LANGUAGE.md §3).
+pub fn rounding_note(span: Span) -> Diagnostic {
+    Diagnostic::note(
+        ErrorKind::Domain,
+        span,
+        "the two sides differ by rounding only: floats with no exact form are equal only when every digit is",
+    )
+    .with_help("compare within rounding with ≈ (typed ~=)")
+}
+
+/// Equality of symbolic expressions (LANGUAGE.md §7). Today it is
+/// structural: equal trees are equal, and anything else is undecided
+/// (`None`). A canonical form decides more pairs by extending this one
+/// function. `Sym`'s own `==` compares constants by their 4-digit text, so
+/// the trees are also compared in full (their `Debug` form holds every
+/// constant's exact value): `t + 1.00001` is not `t + 1.00002`.
+pub fn symbolic_equal(a: &Sym, b: &Sym, _op: CmpOp) -> Option<bool> {
+    // What cancelled products leave (`inv(T) * T`) is the identity `I`.
+    let identity = |s: &Sym| match s {
+        Sym::Identity => true,
+        Sym::Const(v, _) => v
+            .as_matrix()
+            .is_some_and(|m| m.is_square() && m.nrows() > 1 && m.is_identity(0.0)),
+        _ => false,
+    };
+    if identity(a) && identity(b) {
+        return Some(true);
+    }
+    // Trees compare structurally, constants by value (not printed text).
+    (a == b).then_some(true)
+}
+
+/// `a == b` on numbers (LANGUAGE.md §3): by their exact forms when both
+/// have one (`0.1 + 0.2 == 0.3`, `sqrt(2)*sqrt(3) == sqrt(6)`), else as
+/// floats, equal only when every entry is the same float.
+fn exactly_equal(a: &Value, b: &Value) -> bool {
+    if a.may_be_exact()
+        && b.may_be_exact()
+        && let (Some(x), Some(y)) = (a.exact_form(), b.exact_form())
+    {
+        return x == y;
+    }
+    match (a, b) {
+        (Value::Num { m: x, .. }, Value::Num { m: y, .. }) => x == y,
+        _ => false,
+    }
+}
+
+/// True when `a == b` is false by rounding only: the sides are floats (one
+/// at least has no exact form) within 1e-12 relative, so `≈` is meant.
+pub fn rounding_only(a: &Value, b: &Value) -> bool {
+    match (a, b) {
+        (Value::Num { m: x, .. }, Value::Num { m: y, .. }) => {
+            x.shape() == y.shape()
+                && !(a.may_be_exact()
+                    && b.may_be_exact()
+                    && a.exact_form().is_some()
+                    && b.exact_form().is_some())
+                && within(x, y, 1e-12)
+        }
+        (Value::Formula { .. }, _) | (_, Value::Formula { .. }) => {
+            super::formula::rounding_only(a, b)
+        }
+        (Value::Tuple(xs), Value::Tuple(ys)) if xs.len() == ys.len() => {
+            xs.iter()
+                .zip(ys)
+                .all(|(x, y)| exactly_equal(x, y) || rounding_only(x, y))
+                && xs.iter().zip(ys).any(|(x, y)| rounding_only(x, y))
+        }
+        _ => false,
+    }
+}
+
+/// Entrywise within [`APPROX_TOL`] relative to the larger side (absolute
+/// near zero); infinite entries must agree exactly, NaN never does.
+fn approx(x: &Num, y: &Num) -> bool {
+    within(x, y, APPROX_TOL)
+}
+
+/// Entrywise within `tol` relative to the larger side (absolute near
+/// zero); infinite entries must agree exactly, NaN never does.
+fn within(x: &Num, y: &Num, tol: f64) -> bool {
+    let scale = x
+        .iter()
+        .chain(y.iter())
+        .filter(|v| v.is_finite())
+        .fold(1.0f64, |s, v| s.max(v.abs()));
+    x.iter().zip(y.iter()).all(|(a, b)| {
+        if a.is_finite() && b.is_finite() {
+            (a - b).abs() <= tol * scale
+        } else {
+            a == b
+        }
+    })
+}
+
+/// The largest entrywise difference of two numeric values of one shape,
+/// and where it is: the 1-based (row, column) of the first such entry
+/// (NaN counts as the largest).
+pub fn largest_difference(a: &Value, b: &Value) -> Option<(f64, usize, usize)> {
+    let (Value::Num { m: x, .. }, Value::Num { m: y, .. }) = (a, b) else {
+        return None;
+    };
+    if x.shape() != y.shape() {
+        return None;
+    }
+    let mut best = (0.0f64, 1, 1);
+    for j in 0..x.ncols() {
+        for i in 0..x.nrows() {
+            let e = (x[(i, j)] - y[(i, j)]).abs();
+            let e = if e.is_nan() { f64::INFINITY } else { e };
+            if e > best.0 {
+                best = (e, i + 1, j + 1);
+            }
+        }
+    }
+    Some(best)
+}

@@ -1,0 +1,325 @@
+//! Trees over `given` symbols with the numbers bound since put in
+//! (LANGUAGE.md §7: "binding numbers later makes them numeric"):
+//! `T_ab * T_bc` over `given` transforms is the product's value once both
+//! have numbers. Every operation whose operands have all become numbers is
+//! computed as when the numbers are typed first ([`replay::as_typed`]: its
+//! kind by its rule on the operands' kinds, its exact form, a builtin's
+//! warnings); one that fails with its numbers (`Rot(w, θ)` with w = 0)
+//! is the value's refusal, as typed first.
+
+use super::apply::to_sym;
+use super::apply::{self, Op};
+use super::env::Binding;
+use super::env::Env;
+use super::ops::Sel;
+use super::replay::{self, Failed};
+use super::value::{Sym, Value};
+use crate::check::ty::Kind;
+use crate::diagnostics::Diagnostic;
+use crate::sym::{Mat, Symbol};
+use crate::syntax::ast::BinOp;
+use crate::values::recipe;
+use std::rc::Rc;
+
+/// Where a tree is resolved: the session's bindings, the warnings of the
+/// operations computed, and the first that failed with its numbers.
+struct Resolving<'a, 'w> {
+    env: &'a Env,
+    warnings: &'w mut Vec<Diagnostic>,
+    failed: Option<String>,
+}
+
+/// `s` with every `given` name that is now bound to numbers replaced by
+/// them, and every operation whose operands are all numbers computed as
+/// typed first. Err with the message of the first operation that fails
+/// with its numbers (the value is refused, as typed first); an operation
+/// whose operands are not yet all numbers stays symbolic.
+pub fn resolve(s: &Sym, env: &Env, warnings: &mut Vec<Diagnostic>) -> Result<Sym, Failed> {
+    let mut r = Resolving {
+        env,
+        warnings,
+        failed: None,
+    };
+    let out = r.go(s);
+    match r.failed {
+        Some(why) => Err(Failed(why)),
+        None => Ok(out),
+    }
+}
+
+impl Resolving<'_, '_> {
+    /// `op` on numbers, as typed first; None (and the failure kept) when
+    /// it fails with them.
+    fn compute(&mut self, op: Op, args: &[&Value]) -> Option<Value> {
+        match replay::as_typed(op, args, self.warnings) {
+            Ok(v) => Some(v),
+            Err(e) => {
+                if replay::refusal(&e) && self.failed.is_none() {
+                    self.failed = Some(e.to_string());
+                }
+                None
+            }
+        }
+    }
+
+    fn go(&mut self, s: &Sym) -> Sym {
+        match s {
+            Sym::Name(n) => match self.env.get(n).and_then(|b| b.val.as_ref()) {
+                Some(v @ Value::Num { .. }) => to_sym(v),
+                _ if n == "deg" => to_sym(&Value::scalar(std::f64::consts::PI / 180.0)),
+                _ => s.clone(),
+            },
+            Sym::Const(v, _) => match &**v {
+                v @ Value::Formula { .. } => match formula_now(v, self.env, self.warnings) {
+                    Ok(x) => to_sym(&x),
+                    Err(Failed(why)) => {
+                        self.failed.get_or_insert(why);
+                        s.clone()
+                    }
+                },
+                _ => s.clone(),
+            },
+            Sym::Identity => s.clone(),
+            Sym::Product(fs) => {
+                let mut out: Vec<Sym> = Vec::new();
+                for f in fs.iter() {
+                    let f = self.go(f);
+                    let merged = match (out.last().and_then(num), num(&f)) {
+                        (Some(a), Some(b)) => {
+                            let (a, b) = (a.clone(), b.clone());
+                            self.compute(Op::Arith(BinOp::Mul), &[&a, &b])
+                        }
+                        _ => None,
+                    };
+                    match merged {
+                        Some(v) => {
+                            out.pop();
+                            out.push(constant(v));
+                        }
+                        None => out.push(f),
+                    }
+                }
+                Sym::product(out)
+            }
+            Sym::Inv(x) => self.unary(Op::Inverse, x),
+            Sym::Transpose(x) => self.unary(Op::Transpose, x),
+            Sym::Neg(x) => self.unary(Op::Neg, x),
+            Sym::Member(x, part) => self.unary(Op::Member(*part), x),
+            Sym::Index(x, sels) => {
+                let sel: Vec<Sel> = sels.iter().map(|s| s.map_or(Sel::All, Sel::At)).collect();
+                self.unary(Op::Index(&sel), x)
+            }
+            Sym::Add(a, b) => self.binary(BinOp::Add, a, b),
+            Sym::Sub(a, b) => self.binary(BinOp::Sub, a, b),
+            Sym::Div(a, b) => self.binary(BinOp::Div, a, b),
+            Sym::Pow(a, b) => self.binary(BinOp::Pow, a, b),
+            Sym::Bracket(x) => {
+                let x = self.go(x);
+                match num(&x).map(|v| apply::block_numeric(&[vec![v.clone()]])) {
+                    Some(Ok(v)) => constant(v),
+                    Some(Err(e)) => {
+                        self.fail(&e);
+                        Sym::Bracket(Box::new(x))
+                    }
+                    None => Sym::Bracket(Box::new(x)),
+                }
+            }
+            Sym::Block(rows) => {
+                let rows: Vec<Vec<Sym>> = rows
+                    .iter()
+                    .map(|r| r.iter().map(|x| self.go(x)).collect())
+                    .collect();
+                let vals: Option<Vec<Vec<Value>>> = rows
+                    .iter()
+                    .map(|r| r.iter().map(|x| num(x).cloned()).collect())
+                    .collect();
+                match vals.map(|v| apply::block_numeric(&v)) {
+                    Some(Ok(v)) => constant(v),
+                    Some(Err(e)) => {
+                        self.fail(&e);
+                        Sym::Block(rows)
+                    }
+                    None => Sym::Block(rows),
+                }
+            }
+            Sym::Vector(parts) => {
+                let parts: Vec<Sym> = parts.iter().map(|x| self.go(x)).collect();
+                let vals: Option<Vec<Value>> = parts
+                    .iter()
+                    .map(|x| num(x).filter(|v| v.as_scalar().is_some()).cloned())
+                    .collect();
+                match vals {
+                    Some(vals) => {
+                        let refs: Vec<&Value> = vals.iter().collect();
+                        match self.compute(Op::Vector, &refs) {
+                            Some(v) => constant(v),
+                            None => Sym::Vector(parts),
+                        }
+                    }
+                    None => Sym::Vector(parts),
+                }
+            }
+            Sym::Call(fun, args) => {
+                let args: Vec<Sym> = args.iter().map(|a| self.go(a)).collect();
+                let vals: Option<Vec<Value>> = args.iter().map(|a| num(a).cloned()).collect();
+                match vals.zip(crate::builtins::lookup(fun.name)) {
+                    Some((vals, b)) => {
+                        let refs: Vec<&Value> = vals.iter().collect();
+                        match self.compute(Op::Call(b, fun.name), &refs) {
+                            Some(v) => constant(v),
+                            None => Sym::Call(*fun, args),
+                        }
+                    }
+                    None => Sym::Call(*fun, args),
+                }
+            }
+        }
+    }
+
+    fn fail(&mut self, e: &crate::values::error::OpError) {
+        if replay::refusal(e) && self.failed.is_none() {
+            self.failed = Some(e.to_string());
+        }
+    }
+
+    /// A unary operation on a resolved operand: its value when that is a
+    /// number, else its symbolic form.
+    fn unary(&mut self, op: Op, x: &Sym) -> Sym {
+        let x = self.go(x);
+        match num(&x).cloned().and_then(|v| self.compute(op, &[&v])) {
+            Some(v) => constant(v),
+            None => op.symbolic(vec![x]),
+        }
+    }
+
+    /// An arithmetic operation on resolved operands, computed when both
+    /// are numbers.
+    fn binary(&mut self, op: BinOp, a: &Sym, b: &Sym) -> Sym {
+        let (a, b) = (self.go(a), self.go(b));
+        if let (Some(l), Some(r)) = (num(&a).cloned(), num(&b).cloned())
+            && let Some(v) = self.compute(Op::Arith(op), &[&l, &r])
+        {
+            return constant(v);
+        }
+        let (a, b) = (Box::new(a), Box::new(b));
+        match op {
+            BinOp::Add => Sym::Add(a, b),
+            BinOp::Sub => Sym::Sub(a, b),
+            BinOp::Div => Sym::Div(a, b),
+            BinOp::Pow => Sym::Pow(a, b),
+            BinOp::Mul => Sym::times(*a, *b),
+        }
+    }
+}
+
+/// The numbers of a constant operand (a tuple of numbers too: a
+/// builtin's result, whose parts are read by index).
+fn num(s: &Sym) -> Option<&Value> {
+    let numbers = |v: &Value| match v {
+        Value::Num { .. } => true,
+        Value::Tuple(vs) => vs.iter().all(|x| matches!(x, Value::Num { .. })),
+        _ => false,
+    };
+    match s {
+        Sym::Const(v, _) if numbers(v) => Some(v),
+        _ => None,
+    }
+}
+
+/// A computed value as a constant, its kind recognized by its entries when
+/// the operation could not tell it.
+fn constant(v: Value) -> Sym {
+    let v = match v {
+        Value::Num {
+            kind: Kind::Unknown,
+            m,
+            exact,
+        } => Value::Num {
+            kind: replay::classify(&m),
+            m,
+            exact,
+        },
+        other => other,
+    };
+    to_sym(&v)
+}
+
+/// The symbols a formula depends on: those of its canonical form and of
+/// how it was made (`a/a` is 1, yet depends on `a`).
+fn symbols_of(m: &Mat, how: Option<&Rc<recipe::Recipe>>) -> Vec<Symbol> {
+    let mut syms = Vec::new();
+    m.data.iter().for_each(|e| e.symbols(&mut syms));
+    if let Some(r) = how {
+        recipe::symbols(r, &mut syms);
+    }
+    syms
+}
+
+/// The value bound to a symbol now, if it is a number.
+pub(super) fn bound(env: &Env, s: &Symbol) -> Option<Value> {
+    match env.get(&*super::formula::binding_name(s)) {
+        Some(Binding {
+            val: Some(v @ Value::Num { .. }),
+            ..
+        }) => Some(v.clone()),
+        _ => None,
+    }
+}
+
+/// A formula with the numbers bound since substituted. Once every symbol
+/// it depends on has a number (those of its canonical form and of how it
+/// was made: `a/a` at a = 0 is a division by zero, as typed first) the
+/// value *is* a number (§7), computed by replaying how it was made with
+/// those numbers ([`replay::numbers`]: the operations as typed, with the
+/// numbers' exact forms, as if the numbers had been typed first), never
+/// from its expanded canonical form, whose coefficients can cancel; only
+/// a formula made by no replayable operation (a symbol, a derivative) is
+/// evaluated from its canonical form. It is typed by what it is: what the
+/// operations give the numbers, as typed first. Partly bound, the numbers
+/// are put in, exactly where they are exact ([`replay::put_numbers`], and
+/// into how it was made).
+pub(super) fn formula_now(
+    v: &Value,
+    env: &Env,
+    warnings: &mut Vec<Diagnostic>,
+) -> Result<Value, replay::Failed> {
+    let Value::Formula { kind, m, how } = v else {
+        return Ok(v.clone());
+    };
+    let lookup = |s: &Symbol| bound(env, s);
+    let syms = symbols_of(m, how.as_ref());
+    if !syms.iter().any(|s| lookup(s).is_some()) {
+        return Ok(v.clone());
+    }
+    if syms.iter().all(|s| lookup(s).is_some()) {
+        // (with the kind its binding gave it: `V_b = (…)` is a twist)
+        if how.is_some()
+            && let Some(x) = replay::numbers(&recipe::Recipe::of(v), &lookup, warnings)?
+            && replay::same_shape(&x, m)
+        {
+            return Ok(x);
+        }
+        if let Some(v) = replay::canonical(kind, m, &lookup) {
+            return Ok(v);
+        }
+    }
+    Ok(
+        match super::formula::make(kind, m.map(|e| replay::put_numbers(e, &lookup))) {
+            Value::Formula { kind, m, .. } => Value::Formula {
+                kind,
+                m,
+                how: how.as_ref().map(|r| replay::at_numbers(r, &lookup)),
+            },
+            // (numbers with symbols left in how it was made stay a formula)
+            Value::Num { kind, m: xs, exact } => match how {
+                Some(r) => Value::Formula {
+                    kind,
+                    m: m.map(|e| replay::put_numbers(e, &lookup)),
+                    how: Some(replay::at_numbers(r, &lookup)),
+                },
+                None => Value::Num { kind, m: xs, exact },
+            },
+            v => v,
+        },
+    )
+}
