@@ -150,17 +150,21 @@ pub fn eval_symbolic(name: &str, vals: &[Value], kind: &Kind) -> Out {
         ("RotInv", 1) if shape(0) == (3, 3) => ok(make(&Kind::SO3, ms[0].transpose())),
         ("TransInv", 1) if shape(0) == (4, 4) => ok(make(&Kind::SE3, sm::trans_inv(&ms[0])?)),
         ("Adjoint", 1) if shape(0) == (4, 4) => {
-            // [p] R's terms counted before it is formed (issue 21)
+            // [p] R's work and terms counted before it is formed, its size
+            // after (issue 21)
             let (r, p) = (ms[0].block(0..3, 0..3), ms[0].block(0..3, 3..4));
-            let n = crate::sym::size::product(&sm::skew(&p.data), &r).unwrap_or(0);
-            if n + 2 * r.size() > crate::values::symbolic::MAX_SYM_NODES {
+            if let Err(e) = formula::fits(&sm::skew(&p.data), &r, "adjoint") {
+                return Some(Err(e));
+            }
+            let a = sm::adjoint(&ms[0])?;
+            let limit = crate::values::symbolic::MAX_SYM_NODES;
+            if a.size() > limit {
                 return Some(Err(format!(
-                    "symbolic expression too large: the adjoint would have up to {} terms (more than {})",
-                    n + 2 * r.size(),
-                    crate::values::symbolic::MAX_SYM_NODES
+                    "symbolic expression too large: the adjoint has {} terms (more than {limit})",
+                    a.size()
                 )));
             }
-            ok(make(kind, sm::adjoint(&ms[0])?))
+            ok(make(kind, a))
         }
         ("VecToso3", 1) if shape(0) == (3, 1) => ok(make(&Kind::So3, sm::skew(&ms[0].data))),
         ("VecTose3", 1) if shape(0) == (6, 1) => {

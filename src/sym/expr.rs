@@ -355,19 +355,21 @@ impl Expr {
     }
     /// a·b, monomial by monomial.
     pub fn mul(&self, o: &Expr) -> Expr {
-        let mut out = Expr::zero();
-        for (a, c) in &self.terms {
-            // Past the evaluation budget, a cut-short product (discarded
-            // by the session: `crate::budget`).
-            if crate::budget::stopped() {
-                break;
-            }
-            for (b, d) in &o.terms {
-                out.push(mono_mul(a, b), c.mul(d));
-            }
-        }
-        let out = out.fold_roots().fold_units();
-        if self.has_phase() || o.has_phase() {
+        // large products over small fractions: packed ([`super::dense`])
+        let work = self.terms.len().saturating_mul(o.terms.len());
+        let packed = (work >= super::dense::MIN_WORK)
+            .then(|| super::dense::product(self, o))
+            .flatten();
+        let out = packed.unwrap_or_else(|| super::dense::term_by_term(self, o));
+        out.folded(self.has_phase() || o.has_phase())
+    }
+
+    /// A raw product made canonical: roots, unit axes and (when a factor
+    /// had one) phases folded. Each fold maps term by term, so a sum of
+    /// raw products folds to the sum of the folded products.
+    pub(super) fn folded(self, phases: bool) -> Expr {
+        let out = self.fold_roots().fold_units();
+        if phases {
             return out.fold_phases();
         }
         out

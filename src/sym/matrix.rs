@@ -114,14 +114,10 @@ impl Mat {
         let mut m = Mat::zeros(self.rows, o.cols);
         for i in 0..self.rows {
             for j in 0..o.cols {
-                let mut acc = Expr::zero();
-                for k in 0..self.cols {
-                    let (a, b) = (self.get(i, k), o.get(k, j));
-                    if !a.is_zero() && !b.is_zero() {
-                        acc = acc.add(&a.mul(b));
-                    }
-                }
-                m.set(i, j, acc);
+                let pairs: Vec<(&Expr, &Expr)> = (0..self.cols)
+                    .map(|k| (self.get(i, k), o.get(k, j)))
+                    .collect();
+                m.set(i, j, super::dense::sum_of_products(&pairs));
             }
         }
         Some(m)

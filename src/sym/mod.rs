@@ -8,6 +8,7 @@
 pub mod axis;
 pub mod branch;
 pub mod coef;
+pub mod dense;
 pub mod diff;
 pub mod eval;
 pub mod expr;

@@ -13,7 +13,7 @@ use super::matrix::Mat;
 /// the shifts would cost more than [`MAX_OPS`], there is no estimate.
 const MAX_BITS: usize = 1 << 24;
 /// The most word operations an estimate may take.
-const MAX_OPS: usize = 50_000_000;
+const MAX_OPS: usize = 10_000_000;
 
 /// The number of terms of Σ_k a_k·b_k before cancellation (the Minkowski
 /// sums of their monomials, united): the size of one entry of a matrix
@@ -137,9 +137,11 @@ pub fn product(a: &Mat, b: &Mat) -> Option<usize> {
 }
 
 /// The number of terms of xⁿ before cancellation (n·supp x, formed on bit
-/// sets by squaring as the power itself is); None when it cannot be told
-/// cheaply.
-pub fn power(x: &Expr, n: u64) -> Option<usize> {
+/// sets by squaring as the power itself is), or at least that many once
+/// it passes `limit`: x^m has no more terms than xⁿ for m ≤ n (n·S holds a
+/// translate of m·S), so the count stops at the first power past the
+/// limit. None when it cannot be told cheaply.
+pub fn power(x: &Expr, n: u64, limit: usize) -> Option<usize> {
     if n == 0 || x.terms.len() <= 1 {
         return Some(x.terms.len().min(1).max(usize::from(n == 0)));
     }
@@ -175,50 +177,154 @@ pub fn power(x: &Expr, n: u64) -> Option<usize> {
     for i in 0..vars.len() {
         strides.push(bits);
         let span = usize::try_from((hi[i] - lo[i]).checked_mul(n)? + 1).ok()?;
-        bits = bits.checked_mul(span).filter(|b| *b <= MAX_BITS)?;
+        bits = bits.checked_mul(span)?;
     }
-    let words = bits.div_ceil(64);
-    let mut base = vec![0u64; words];
-    for e in &all {
-        let k: usize = (0..vars.len())
-            .map(|i| (e[i] - lo[i]) as usize * strides[i])
-            .sum();
-        base[k / 64] |= 1 << (k % 64);
-    }
-    let mut ops = 0usize;
-    let mut sum = |a: &[u64], b: &[u64]| -> Option<Vec<u64>> {
-        let count = |s: &[u64]| s.iter().map(|w| w.count_ones() as usize).sum::<usize>();
-        let (shifts, set) = if count(a) <= count(b) { (a, b) } else { (b, a) };
-        ops = ops.checked_add(count(shifts).checked_mul(words)?)?;
-        if ops > MAX_OPS {
-            return None;
+    let points: Vec<usize> = all
+        .iter()
+        .map(|e| {
+            (0..vars.len())
+                .map(|i| (e[i] - lo[i]) as usize * strides[i])
+                .sum()
+        })
+        .collect();
+    if bits <= MAX_BITS {
+        let words = bits.div_ceil(64);
+        let mut base = vec![0u64; words];
+        for k in &points {
+            base[k / 64] |= 1 << (k % 64);
         }
-        let mut out = vec![0u64; words];
-        for (w, word) in shifts.iter().enumerate() {
-            let mut bits = *word;
-            while bits != 0 {
-                let b = bits.trailing_zeros() as usize;
-                bits &= bits - 1;
-                or_shifted(&mut out, set, w * 64 + b);
+        let mut ops = 0usize;
+        let mut sum = |a: &Vec<u64>, b: &Vec<u64>| -> Option<Vec<u64>> {
+            let (shifts, set) = if count(a) <= count(b) { (a, b) } else { (b, a) };
+            ops = ops.checked_add(count(shifts).checked_mul(words)?)?;
+            if ops > MAX_OPS {
+                return None;
+            }
+            let mut out = vec![0u64; words];
+            for (w, word) in shifts.iter().enumerate() {
+                let mut bits = *word;
+                while bits != 0 {
+                    let b = bits.trailing_zeros() as usize;
+                    bits &= bits - 1;
+                    or_shifted(&mut out, set, w * 64 + b);
+                }
+            }
+            Some(out)
+        };
+        if let Some(k) = by_squaring(base, n, limit, &mut sum, |s| count(s)) {
+            return Some(k);
+        }
+    }
+    // a box too large for bits (many angles): sets of indices, each sum
+    // stopped past the limit
+    let mut pairs = 0usize;
+    let mut sum = |a: &Vec<usize>, b: &Vec<usize>| -> Option<Vec<usize>> {
+        let mut out = std::collections::HashSet::new();
+        'all: for x in a {
+            for y in b {
+                pairs += 1;
+                if pairs > MAX_PAIRS {
+                    return None;
+                }
+                out.insert(x + y);
+                if out.len() > limit {
+                    break 'all;
+                }
             }
         }
-        Some(out)
+        Some(out.into_iter().collect())
     };
-    let mut acc: Option<Vec<u64>> = None;
-    let mut n = n;
+    by_squaring(points, n, limit, &mut sum, Vec::len)
+}
+
+/// The most index pairs the set form of [`power`] may add.
+const MAX_PAIRS: usize = 4_000_000;
+
+/// The members of a bit set.
+fn count(s: &[u64]) -> usize {
+    s.iter().map(|w| w.count_ones() as usize).sum()
+}
+
+/// n·S by squaring with the Minkowski sum `sum`, stopped as soon as a
+/// partial sum has more than `limit` members (returning that count).
+fn by_squaring<S: Clone>(
+    mut base: S,
+    mut n: i64,
+    limit: usize,
+    sum: &mut impl FnMut(&S, &S) -> Option<S>,
+    len: impl Fn(&S) -> usize,
+) -> Option<usize> {
+    let mut acc: Option<S> = None;
     while n > 0 {
         if n & 1 == 1 {
-            acc = Some(match &acc {
+            let a = match &acc {
                 None => base.clone(),
                 Some(a) => sum(a, &base)?,
-            });
+            };
+            if len(&a) > limit {
+                return Some(len(&a));
+            }
+            acc = Some(a);
         }
         n >>= 1;
         if n > 0 {
             base = sum(&base, &base)?;
+            if len(&base) > limit {
+                return Some(len(&base));
+            }
         }
     }
-    acc.map(|a| a.iter().map(|w| w.count_ones() as usize).sum())
+    acc.map(|a| len(&a))
+}
+
+/// The work of one term product by the general path, in packed term
+/// products ([`super::dense`]; measured in release builds, about 30 times
+/// slower).
+pub const GENERAL_COST: usize = 32;
+
+/// The work of forming Σ_k a_k·b_k, in packed term products: each pair's
+/// terms multiplied, weighted by the path the product takes (and, on the
+/// general path, by the words of big coefficients, [`Expr::size`]). Known
+/// before any of it is done, so that an operation can be refused in time.
+pub fn work(pairs: &[(&Expr, &Expr)]) -> usize {
+    pairs
+        .iter()
+        .map(|(a, b)| {
+            let n = a.terms.len().saturating_mul(b.terms.len());
+            let packed = n >= super::dense::MIN_WORK
+                && super::dense::packable(a)
+                && super::dense::packable(b);
+            if packed {
+                n
+            } else {
+                a.size()
+                    .saturating_mul(b.size())
+                    .saturating_mul(GENERAL_COST)
+            }
+        })
+        .fold(0, usize::saturating_add)
+}
+
+/// The work of the product `a b` (as [`product`] forms it), in packed term
+/// products; None for sizes that do not multiply.
+pub fn product_work(a: &Mat, b: &Mat) -> Option<usize> {
+    let scaled = |k: &Expr, m: &Mat| m.data.iter().map(|e| work(&[(k, e)])).sum();
+    match (a.data.as_slice(), b.data.as_slice()) {
+        ([k], _) => Some(scaled(k, b)),
+        (_, [k]) => Some(scaled(k, a)),
+        _ if a.cols == b.rows => {
+            let mut n = 0usize;
+            for i in 0..a.rows {
+                for j in 0..b.cols {
+                    let pairs: Vec<(&Expr, &Expr)> =
+                        (0..a.cols).map(|k| (a.get(i, k), b.get(k, j))).collect();
+                    n = n.saturating_add(work(&pairs));
+                }
+            }
+            Some(n)
+        }
+        _ => None,
+    }
 }
 
 /// `out |= base << s` (bit sets of the same length; bits shifted past the
@@ -256,8 +362,8 @@ mod tests {
             sum_of_products(&[(&y, &x)]),
             Some(y.mul(&x).terms.len() + 1)
         );
-        assert_eq!(power(&x, 8), Some(x8.terms.len()));
-        assert!(power(&y, 5) >= Some(y.powi(5).unwrap().terms.len()));
+        assert_eq!(power(&x, 8, usize::MAX), Some(x8.terms.len()));
+        assert!(power(&y, 5, usize::MAX) >= Some(y.powi(5).unwrap().terms.len()));
         // a sum of products: the union
         let both = x.mul(&x).add(&y.mul(&y));
         assert!(sum_of_products(&[(&x, &x), (&y, &y)]) >= Some(both.terms.len()));

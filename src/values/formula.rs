@@ -114,19 +114,40 @@ pub fn scalar(e: Expr) -> Value {
     make(&Kind::Scalar, Mat::scalar(e))
 }
 
-/// The most term products one operation may form (the expression limit
-/// of [`super::symbolic::MAX_SYM_NODES`] bounds what is kept; this bounds
-/// the work before it is known).
-pub const MAX_WORK: usize = 4_000_000;
+/// The most work one operation may do, in packed term products
+/// ([`crate::sym::size::work`]; a general term product counts 32): about
+/// 0.2 s in a release build. The expression limit of
+/// [`super::symbolic::MAX_SYM_NODES`] bounds what is kept; this bounds the
+/// work before it is known.
+pub const MAX_WORK: usize = 64_000_000;
 
-/// Refuses a product whose terms, counted before it is formed
-/// ([`crate::sym::size::product`]), pass the expression limit: in
-/// milliseconds, not after the work (issue 21).
-fn fits(a: &Mat, b: &Mat) -> Result<(), String> {
+/// The work an operation may do before the size of its result is known
+/// (about 0.05 s in a release build): a product that costs more, and whose
+/// terms counted before cancellation pass the expression limit, is
+/// refused before any of it is formed (issue 21: refuse in time, never
+/// after seconds of work). Cheaper products are formed, and their size
+/// checked after (the adjoint of a tilted 6-joint chain cancels from up to
+/// 72,105 terms to 6,561).
+pub const CHEAP_WORK: usize = 16_000_000;
+
+/// Refuses the product `a b` (`what` names it) before it is formed when
+/// its work passes [`MAX_WORK`], or when its work passes [`CHEAP_WORK`]
+/// and its terms, counted before cancellation
+/// ([`crate::sym::size::product`]), pass the expression limit.
+pub fn fits(a: &Mat, b: &Mat, what: &str) -> Result<(), String> {
+    let limit = super::symbolic::MAX_SYM_NODES;
+    let work = crate::sym::size::product_work(a, b).unwrap_or(0);
+    if work > MAX_WORK {
+        return Err(format!(
+            "symbolic expression too large: the {what} would take {work} term products (more than {MAX_WORK})"
+        ));
+    }
+    if work <= CHEAP_WORK {
+        return Ok(());
+    }
     match crate::sym::size::product(a, b) {
-        Some(n) if n > super::symbolic::MAX_SYM_NODES => Err(format!(
-            "symbolic expression too large: the product would have up to {n} terms (more than {})",
-            super::symbolic::MAX_SYM_NODES
+        Some(n) if n > limit => Err(format!(
+            "symbolic expression too large: the {what} would have up to {n} terms (more than {limit})"
         )),
         _ => Ok(()),
     }
@@ -150,10 +171,7 @@ pub fn binary(op: BinOp, a: &Value, b: &Value, kind: &Kind) -> Result<Value, Str
         _ => return Err("these operands have no symbolic form".into()),
     };
     if op == BinOp::Mul {
-        if x.size().saturating_mul(y.size()) > MAX_WORK {
-            return Err(too_large());
-        }
-        fits(&x, &y)?;
+        fits(&x, &y, "product")?;
     }
     let m = match op {
         BinOp::Mul => mul(&x, &y)?,
@@ -253,7 +271,7 @@ fn pow(x: &Mat, y: &Mat, base: Kind, kind: &Kind) -> Result<Value, String> {
 fn checked_power(x: &Mat, mut n: u64, acc: &mut Mat) -> Result<Mat, String> {
     // a scalar power's terms, counted before any is formed
     if let [e] = x.data.as_slice()
-        && let Some(k) = crate::sym::size::power(e, n)
+        && let Some(k) = crate::sym::size::power(e, n, super::symbolic::MAX_SYM_NODES)
         && k > super::symbolic::MAX_SYM_NODES
     {
         return Err(format!(
@@ -262,14 +280,7 @@ fn checked_power(x: &Mat, mut n: u64, acc: &mut Mat) -> Result<Mat, String> {
         ));
     }
     let step = |a: &Mat, b: &Mat| -> Result<Mat, String> {
-        let work = a
-            .size()
-            .saturating_mul(b.size())
-            .saturating_mul(a.cols.max(1));
-        if work > MAX_WORK {
-            return Err(too_large());
-        }
-        fits(a, b)?;
+        fits(a, b, "power")?;
         let m = mul(a, b)?;
         if m.size() > super::symbolic::MAX_SYM_NODES {
             return Err(too_large());
