@@ -115,16 +115,61 @@ impl Case {
     }
 }
 
-/// The difference between typed first and bound later for `case` at
-/// a = `v`, if any (None: they agree, or both refuse alike).
-fn differ(case: &Case, v: &str) -> Option<String> {
+/// What a statement of a script is for.
+#[derive(Clone, Copy, PartialEq)]
+enum Role {
+    Setup,
+    Def,
+    Read(usize),
+    /// `z = y` read back at the end: a value read while its symbols were
+    /// (partly) free, that keeps following them.
+    Alias,
+}
+
+/// The difference between typed first and bound later for `case` with
+/// the numbers `binds` (`a`, then `b`), if any (None: they agree, or both
+/// refuse alike). Bound later, `z = y` is read after the first number is
+/// bound (partly bound with two symbols) and compared at the end too.
+fn differ(case: &Case, binds: &[(&str, String)]) -> Option<String> {
+    let names: Vec<&str> = binds.iter().map(|b| b.0).collect();
+    differ_given(case, &format!("given {}", names.join(", ")), binds)
+}
+
+/// [`differ`] with the symbols declared by `given` (typed: `given R : SO3`).
+fn differ_given(case: &Case, given: &str, binds: &[(&str, String)]) -> Option<String> {
+    let single = case.reads == ["y"];
+    let mut first: Vec<(String, Role)> = binds
+        .iter()
+        .map(|(n, v)| (format!("{n} = {v}"), Role::Setup))
+        .collect();
+    first.push((case.def.clone(), Role::Def));
+    for (i, r) in case.reads.iter().enumerate() {
+        first.push((r.clone(), Role::Read(i)));
+    }
+    let mut later = vec![
+        (given.to_string(), Role::Setup),
+        (case.def.clone(), Role::Def),
+    ];
+    for (k, (n, v)) in binds.iter().enumerate() {
+        later.push((format!("{n} = {v}"), Role::Setup));
+        if k == 0 && single && binds.len() > 1 {
+            later.push(("z = y".to_string(), Role::Setup));
+        }
+    }
+    if single && binds.len() == 1 {
+        later.insert(2, ("z = y".to_string(), Role::Setup));
+    }
+    for (i, r) in case.reads.iter().enumerate() {
+        later.push((r.clone(), Role::Read(i)));
+    }
+    if single {
+        later.push(("z".to_string(), Role::Alias));
+    }
+    let at = |script: &[(String, Role)], role: Role| script.iter().position(|s| s.1 == role);
+    let steps = |script: &[(String, Role)]| script.iter().map(|s| s.0.clone()).collect::<Vec<_>>();
     for set in settings() {
-        let mut first = vec![format!("a = {v}"), case.def.clone()];
-        first.extend(case.reads.iter().cloned());
-        let mut later = vec!["given a".to_string(), case.def.clone(), format!("a = {v}")];
-        later.extend(case.reads.iter().cloned());
-        let f = run(&set, &first);
-        let l = run(&set, &later);
+        let f = run(&set, &steps(&first));
+        let l = run(&set, &steps(&later));
         let what = if set.json {
             "--json"
         } else if set.exact {
@@ -134,41 +179,42 @@ fn differ(case: &Case, v: &str) -> Option<String> {
         };
         let show = || {
             format!(
-                "[{what}] a = {v}: {}\n  typed first: {f:#?}\n  bound later: {l:#?}",
+                "[{what}] {binds:?}: {}\n  typed first: {f:#?}\n  bound later: {l:#?}",
                 case.def
             )
         };
-        if f[0].failed {
-            return None; // (the value itself is refused: nothing to compare)
+        let (fd, ld) = (at(&first, Role::Def)?, at(&later, Role::Def)?);
+        if f.len() <= fd {
+            return None; // (a number itself is refused: nothing to compare)
         }
         // an honest refusal where the value needs numbers to exist (a
         // range's length, a picture, a count) or an order of free symbols
         // that cannot be decided (§7: said, never guessed)
-        let honest = l.len() > 1
-            && l[1].failed
-            && l[1].notes.first().is_some_and(|m| {
+        let honest = l.len() > ld
+            && l[ld].failed
+            && l[ld].notes.first().is_some_and(|m| {
                 ["needs numbers", "not the symbol", "cannot decide"]
                     .iter()
                     .any(|k| m.contains(k))
             });
-        if f[1].failed {
+        if f[fd].failed {
             if honest {
                 return None;
             }
             // typed first refuses the call: bound later must refuse it too,
             // with the same message, where the numbers arrive (or earlier)
-            let refused = l.iter().skip(1).find(|s| s.failed);
+            let refused = l.iter().skip(ld).find(|s| s.failed);
             let same = refused.is_some_and(|s| {
                 s.notes
                     .first()
-                    .zip(f[1].notes.first())
+                    .zip(f[fd].notes.first())
                     .is_some_and(|(b, a)| {
                         b.ends_with(a.split_once(": ").map_or(a.as_str(), |x| x.1))
                     })
             });
             return (!same).then(show);
         }
-        if l[1].failed {
+        if l.len() > ld && l[ld].failed {
             return (!honest)
                 .then(|| format!("refused with a symbol, not typed first: {}", show()));
         }
@@ -176,17 +222,29 @@ fn differ(case: &Case, v: &str) -> Option<String> {
             return Some(show());
         }
         // the values read, each as typed first shows it
-        let reads = case.reads.len();
-        for i in 0..reads {
-            let (a, b) = (&f[2 + i], &l[3 + i]);
-            if a.out != b.out {
+        for (i, _) in case.reads.iter().enumerate() {
+            let (a, b) = (at(&first, Role::Read(i))?, at(&later, Role::Read(i))?);
+            if f[a].out != l[b].out {
                 return Some(show());
             }
         }
+        if let (Some(a), Some(b)) = (at(&first, Role::Read(0)), at(&later, Role::Alias))
+            && f[a].out != l[b].out
+        {
+            return Some(format!("read while free, then bound: {}", show()));
+        }
         // warnings: typed first's at the call and reads, bound later's at
         // the reads (the symbolic call's own notes are about the formula)
-        let mut want: Vec<String> = f[1..].iter().flat_map(|s| s.notes.clone()).collect();
-        let mut got: Vec<String> = l[3..].iter().flat_map(|s| s.notes.clone()).collect();
+        let mut want: Vec<String> = f[fd..].iter().flat_map(|s| s.notes.clone()).collect();
+        // (each read of a value bound later computes it, and warns again:
+        // the alias read at the end is not counted)
+        let first_read = at(&later, Role::Read(0))?;
+        let mut got: Vec<String> = l[first_read..]
+            .iter()
+            .zip(&later[first_read..])
+            .filter(|(_, s)| s.1 != Role::Alias)
+            .flat_map(|(s, _)| s.notes.clone())
+            .collect();
         want.dedup();
         got.dedup();
         if want != got {
@@ -229,7 +287,8 @@ fn numbers(src: &str) -> Vec<(usize, usize)> {
 }
 
 /// The values `a` takes for a number written `lit`: itself, the special
-/// ones (0, 1, 90, π/2) and `n` random ones near it.
+/// ones (0, 1, 90, π/2), exact ones (30°, 1/√2, −1/3) and `n` random ones
+/// near it.
 fn values(lit: &str, n: usize, rng: &mut common::Rng) -> Vec<String> {
     let x: f64 = lit.parse().unwrap_or(1.0);
     let mut vs = vec![
@@ -238,6 +297,9 @@ fn values(lit: &str, n: usize, rng: &mut common::Rng) -> Vec<String> {
         "1".into(),
         "90".into(),
         "pi/2".into(),
+        "30 deg".into(),
+        "sqrt(2)/2".into(),
+        "-1/3".into(),
     ];
     for _ in 0..n {
         let r = x * (1.0 + 0.5 * rng.next()) + 0.3 * rng.next();
@@ -260,16 +322,27 @@ const KNOWN: &[(&str, &str)] = &[("SO3", "0")];
 
 /// The cases of the table: each builtin's example with each of its numbers
 /// (up to four) made the symbol `a`.
-fn table_cases() -> Vec<(String, Case, String)> {
+fn table_cases() -> Vec<(String, Case, Vec<String>)> {
     let mut out = Vec::new();
     for b in chasles::builtins::table() {
         if reads_symbols(b.name, b.example) {
             continue;
         }
         let ex = b.example;
-        for (s, e) in numbers(ex).into_iter().take(4) {
+        let nums = numbers(ex);
+        for &(s, e) in nums.iter().take(4) {
             let expr = format!("{}a{}", &ex[..s], &ex[e..]);
-            out.push((b.name.to_string(), Case::new(&expr), ex[s..e].to_string()));
+            out.push((
+                b.name.to_string(),
+                Case::new(&expr),
+                vec![ex[s..e].to_string()],
+            ));
+        }
+        // two numbers made symbols `a` and `b`, bound one after the other
+        if let [(s1, e1), (s2, e2), ..] = nums[..] {
+            let expr = format!("{}a{}b{}", &ex[..s1], &ex[e1..s2], &ex[e2..]);
+            let lits = vec![ex[s1..e1].to_string(), ex[s2..e2].to_string()];
+            out.push((b.name.to_string(), Case::new(&expr), lits));
         }
     }
     out
@@ -331,13 +404,25 @@ fn every_builtin_bound_later_is_typed_first() {
         "the table gave {} builtins",
         builtins.len()
     );
-    for (name, case, lit) in &cases {
-        for v in values(lit, n, &mut rng) {
+    for (name, case, lits) in &cases {
+        let mut vals: Vec<Vec<String>> = lits.iter().map(|l| values(l, n, &mut rng)).collect();
+        if let [va, vb] = &mut vals[..] {
+            // two symbols: each value of a with a value of b
+            vb.rotate_left(1);
+            for (x, y) in va.iter().zip(vb.iter()) {
+                ran += 1;
+                if let Some(d) = differ(case, &[("a", x.clone()), ("b", y.clone())]) {
+                    found.push(format!("{name}: {d}"));
+                }
+            }
+            continue;
+        }
+        for v in vals.concat() {
             ran += 1;
             if KNOWN.contains(&(name.as_str(), v.as_str())) {
                 continue;
             }
-            if let Some(d) = differ(case, &v) {
+            if let Some(d) = differ(case, &[("a", v)]) {
                 found.push(format!("{name}: {d}"));
             }
         }
@@ -357,10 +442,103 @@ fn every_operator_bound_later_is_typed_first() {
     for op in OPERATORS {
         let case = Case::new(op);
         for v in values("2", 2, &mut rng) {
-            if let Some(d) = differ(&case, &v) {
+            if let Some(d) = differ(&case, &[("a", v)]) {
                 found.push(d);
             }
         }
     }
     assert!(found.is_empty(), "{}", found.join("\n\n"));
+}
+
+/// A `given` symbol of the type a parameter takes, and the numbers it is
+/// bound to (unit axes: a symbolic axis is assumed unit, §7).
+fn given_of(p: chasles::builtins::Param, i: usize) -> Option<(String, String, Vec<String>)> {
+    use chasles::builtins::Param;
+    let n = |s: &str| format!("{s}{i}");
+    Some(match p {
+        Param::Scalar => (
+            n("s"),
+            "scalar".into(),
+            vec!["0.3".into(), "0".into(), "pi/2".into()],
+        ),
+        Param::Rot => (
+            n("R"),
+            "SO3".into(),
+            vec![
+                "Rotz(0.3) Rotx(-1.1)".into(),
+                "Roty(pi/2)".into(),
+                "Rotx(pi)".into(),
+            ],
+        ),
+        Param::Trans => (
+            n("T"),
+            "SE3".into(),
+            vec![
+                "RpToTrans(Rotz(0.3), (1, 2, 3))".into(),
+                "RpToTrans(Roty(pi/2), (0, 0, 1))".into(),
+            ],
+        ),
+        Param::Vec(3) | Param::Expc3 => (
+            n("w"),
+            "vec3".into(),
+            vec!["(0.6, 0, 0.8)".into(), "(0, 0, 1)".into()],
+        ),
+        Param::Vec(6) | Param::Expc6 => (
+            n("V"),
+            "vec6".into(),
+            vec!["(0, 0.6, 0.8, 1, 2, 3)".into(), "(0, 0, 0, 1, 0, 0)".into()],
+        ),
+        _ => return None,
+    })
+}
+
+/// Every builtin of fixed parameters called on `given` symbols of those
+/// types (`Ad(T)` over `given T : SE3`), bound later to numbers: the value
+/// is the one typed first.
+#[test]
+fn every_builtin_on_given_values_bound_later_is_typed_first() {
+    use chasles::builtins::Typing;
+    let mut found = Vec::new();
+    let mut ran = 0;
+    for b in chasles::builtins::table() {
+        let Typing::Fixed { params, .. } = b.typing else {
+            continue;
+        };
+        if params.is_empty() || reads_symbols(b.name, b.example) {
+            continue;
+        }
+        let Some(gs): Option<Vec<_>> = params
+            .iter()
+            .enumerate()
+            .map(|(i, p)| given_of(*p, i + 1))
+            .collect()
+        else {
+            continue;
+        };
+        let given = gs
+            .iter()
+            .map(|(n, t, _)| format!("given {n} : {t}"))
+            .collect::<Vec<_>>()
+            .join("; ");
+        let args: Vec<&str> = gs.iter().map(|g| g.0.as_str()).collect();
+        let case = Case::new(&format!("{}({})", b.name, args.join(", ")));
+        let most = gs.iter().map(|g| g.2.len()).max().unwrap_or(0);
+        for k in 0..most {
+            let binds: Vec<(&str, String)> = gs
+                .iter()
+                .map(|(n, _, vs)| (n.as_str(), vs[k % vs.len()].clone()))
+                .collect();
+            ran += 1;
+            if let Some(d) = differ_given(&case, &given, &binds) {
+                found.push(format!("{}: {d}", b.name));
+            }
+        }
+    }
+    assert!(ran > 30, "only {ran} cases");
+    assert!(
+        found.is_empty(),
+        "{} of {ran} cases differ:\n{}",
+        found.len(),
+        found.join("\n\n")
+    );
 }

@@ -62,16 +62,42 @@ fn now(v: &Value, env: &Env, warnings: &mut Vec<Diagnostic>) -> Result<Value, re
         },
         Value::Formula { .. } => super::resolve::formula_now(v, env, warnings)?,
         Value::Tuple(vs) if vs.iter().any(recipe::holds_symbols) => {
-            if let Some(whole) = parts_of_one(vs)
-                && let Some(x) = numbers(&whole, env, warnings)?
+            let whole = parts_of_one(vs);
+            if let Some(whole) = &whole
+                && let Some(x) = numbers(whole, env, warnings)?
             {
                 return Ok(x);
             }
-            Value::Tuple(
-                vs.iter()
-                    .map(|x| now(x, env, warnings))
-                    .collect::<Result<_, _>>()?,
-            )
+            let items: Vec<Value> = vs
+                .iter()
+                .map(|x| now(x, env, warnings))
+                .collect::<Result<_, _>>()?;
+            match whole {
+                // partly bound: the parts stay parts of one call (rebased once)
+                Some(whole) => {
+                    let lookup = |s: &Symbol| super::resolve::bound(env, s);
+                    let shared = replay::at_numbers(&whole, &lookup);
+                    Value::Tuple(
+                        items
+                            .into_iter()
+                            .enumerate()
+                            .map(|(i, x)| match x {
+                                Value::Formula { kind, m, .. } => Value::Formula {
+                                    kind,
+                                    m,
+                                    how: recipe::Recipe::node(
+                                        recipe::Step::Part(i),
+                                        vec![shared.clone()],
+                                        kind,
+                                    ),
+                                },
+                                x => x,
+                            })
+                            .collect(),
+                    )
+                }
+                None => Value::Tuple(items),
+            }
         }
         Value::List(vs) if vs.iter().any(recipe::holds_symbols) => Value::List(std::rc::Rc::new(
             vs.iter()
