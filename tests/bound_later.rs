@@ -364,8 +364,13 @@ fn comparisons_bound_later_are_decided_as_typed_first() {
     let (_, first) = common::outputs("a = 5\nsqrt(a)^2 == 5");
     assert!(first.contains("rounding only"), "{first}");
     assert!(err.contains("rounding only"), "{err}");
-    // assert on the bool bound later
-    common::printed("given a\ny = a == 2\na = 2\nassert y == true");
+    // assert on the bool bound later; a bool of free symbols that is false
+    // fails its assert (it must not pass for being a formula)
+    common::printed("given a\ny = a == 2\na = 2\nassert y == true\nassert y");
+    let e = common::error("given a\ny = a == 2\nassert y");
+    assert!(e.contains("assertion failed"), "{e}");
+    let out = common::printed("given a\ny = a == 2\nz = [y for k in 1:2]\nz");
+    assert_eq!(out.lines().last(), Some("[false, false]  : list of 2 bool"));
     // an order of free symbols is not decided: said, not guessed
     assert!(common::error("given a\ny = a < 2").contains("cannot decide"));
     let j = common::json("given a\ny = a == 2\na = 2\ny");

@@ -616,23 +616,45 @@ fn expression_limit_is_a_domain_error() {
 /// The UR5 of chapter 4 (`shared/data/ur5.md`) with symbolic joint angles.
 const UR5: &str = include_str!("../benches/ur5.chs");
 
-#[test]
-fn factored_entries_read_back_to_the_same_form() {
-    // Each printed entry of the UR5's T, common factors taken out, typed
-    // back in is the same canonical form (`==` decides it exactly).
+/// Types each printed entry of the top three rows of `T` (after `src`)
+/// back in and asks `==` against the entry; returns the entries printed
+/// with a factor taken out, and those with one nested inside another.
+fn entries_read_back(src: &str) -> (usize, usize) {
     let mut s = session();
-    run(&mut s, UR5);
-    let mut factored = 0;
+    run(&mut s, src);
+    let (mut factored, mut nested) = (0, 0);
     for i in 1..=3 {
         for j in 1..=4 {
             let text = run(&mut s, &format!("T[{i}, {j}]"));
             let text = text.trim();
             factored += usize::from(text.contains(") cos(") || text.contains(") sin("));
+            nested += usize::from(text.contains("(("));
             let back = run(&mut s, &format!("({text}) == T[{i}, {j}]"));
             assert_eq!(back.trim(), "true", "T[{i}, {j}] = {text}");
         }
     }
+    (factored, nested)
+}
+
+#[test]
+fn factored_entries_read_back_to_the_same_form() {
+    // Each printed entry of the UR5's T, common factors taken out, typed
+    // back in is the same canonical form (`==` decides it exactly).
+    let (factored, _) = entries_read_back(UR5);
     assert!(factored >= 6, "{factored} entries factored");
+    // A chain with tilted axes: long entries, factors taken out again
+    // inside each group, `((…) cos(t3) + …) sin(t2)`.
+    let tilted = "given t1, t2, t3, t4 : scalar
+        S1 = (0, 0, 1, 0, 0, 0)
+        S2 = (0, 0.6, 0.8, -0.12, -0.08, 0.06)
+        S3 = (0.6, 0, 0.8, 0, -0.12, 0)
+        S4 = (0.8, 0.6, 0, -0.12, 0.16, 0.22)
+        T = exp([S1] t1) exp([S2] t2) exp([S3] t3) exp([S4] t4)";
+    let (factored, nested) = entries_read_back(tilted);
+    assert!(
+        factored >= 9 && nested >= 6,
+        "{factored} factored, {nested} nested"
+    );
 }
 
 #[test]

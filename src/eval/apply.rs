@@ -335,8 +335,9 @@ impl<'a> Op<'a> {
         match self.exact_or_symbolic(args, kind) {
             Some(v) => v,
             None => {
-                let v = self.numeric(args, Some(kind))?;
-                Ok(self.with_exact(v, args, kind))
+                let mut v = self.numeric(args, Some(kind))?;
+                self.set_exact(&mut v, args, kind);
+                Ok(v)
             }
         }
     }
@@ -429,13 +430,9 @@ fn block_of_entries(widths: &[usize], args: &[&Value]) -> Result<Value, OpError>
 /// `[ ... ]` on numbers: [`ops::brackets`], with its exact form when
 /// every entry has one ([`Op::exact_of`]).
 pub fn block_numeric(rows: &[Vec<Value>]) -> Result<Value, OpError> {
-    let v = ops::brackets(rows)?;
-    if !rows.iter().flatten().all(Value::may_be_exact) {
-        return Ok(v);
-    }
-    let refs: Vec<&Value> = rows.iter().flatten().collect();
-    let widths: Vec<usize> = rows.iter().map(Vec::len).collect();
-    Ok(Op::Block(&widths).with_exact(v, &refs, &Kind::Unknown))
+    let mut v = ops::brackets(rows)?;
+    v.set_exact(Op::exact_of_rows(rows));
+    Ok(v)
 }
 
 /// `[ ... ]` over symbols: the bracket `[x]` of one entry, else a block.

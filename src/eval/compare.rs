@@ -163,7 +163,9 @@ impl Interp<'_> {
             )
             .with_help("compare two values: assert a == b, or assert a ≈ b (typed ~=)"));
         }
-        match t.value() {
+        // (a comparison decided over free symbols is its bool)
+        let shown = t.value().and_then(super::formula::constant_shown);
+        match shown.as_ref().or(t.value()) {
             Some(Value::Bool(false)) => Err(Diagnostic::error(
                 ErrorKind::Assert,
                 cond.span,

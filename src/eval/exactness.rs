@@ -6,22 +6,51 @@
 //! run only when the form is asked for (`==`, a symbolic expression,
 //! `--exact`). So exactness costs a flag where no one asks for it.
 
+use std::sync::OnceLock;
+
 use super::apply::Op;
 use super::formula;
-use super::ops::Sel;
 use super::value::Value;
 use crate::check::ty::Kind;
-use crate::values::exact::Exact;
+use crate::sym::Mat;
+use crate::values::error::OpError;
+use crate::values::exact::{Exact, Operands, Operation, Pending};
 
 impl Op<'_> {
+    /// [`Op::apply`] on two operands the evaluator gives away: the recipe
+    /// of the result's exact form keeps them as they are ([`Op::exact_of_pair`]).
+    pub fn apply_pair(self, a: Box<Value>, b: Box<Value>, kind: &Kind) -> Result<Value, OpError> {
+        let args = [&*a, &*b];
+        if let Some(v) = self.exact_or_symbolic(&args, kind) {
+            return v;
+        }
+        let mut v = self.numeric(&args, Some(kind))?;
+        if let Value::Num { exact, .. } = &mut v
+            && a.may_be_exact()
+            && b.may_be_exact()
+        {
+            *exact = self.exact_of_pair(a, b, kind);
+        }
+        Ok(v)
+    }
+
     /// `v`, the result of this operation on numbers `args`, with its exact
     /// form ([`Op::exact_of`]) when it is a number.
     #[inline]
-    pub fn with_exact(self, v: Value, args: &[&Value], kind: &Kind) -> Value {
-        if !matches!(v, Value::Num { .. }) || !args.iter().all(|a| a.may_be_exact()) {
-            return v;
+    pub fn with_exact(self, mut v: Value, args: &[&Value], kind: &Kind) -> Value {
+        self.set_exact(&mut v, args, kind);
+        v
+    }
+
+    /// Gives `v`, the result of this operation on numbers `args`, its
+    /// exact form ([`Op::exact_of`]) when it is a number.
+    #[inline]
+    pub fn set_exact(self, v: &mut Value, args: &[&Value], kind: &Kind) {
+        if let Value::Num { exact, .. } = v
+            && args.iter().all(|a| a.may_be_exact())
+        {
+            *exact = self.exact_of(args, kind);
         }
-        v.with_exact(self.exact_of(args, kind))
     }
 
     /// The exact form of this operation on numbers `args` that all have one
@@ -30,116 +59,246 @@ impl Op<'_> {
     /// operation records how to compute its exact form by its exact path
     /// ([`Op::formula`]) over the operands' exact forms, run only when the
     /// form is asked for (`==`, a symbolic expression, `--exact`).
-    pub fn exact_of(self, args: &[&Value], kind: &Kind) -> Exact {
-        if args.is_empty() || !args.iter().all(|a| a.may_be_exact()) {
-            return Exact::Float;
+    pub fn exact_of<V: std::borrow::Borrow<Value>>(self, args: &[V], kind: &Kind) -> Exact {
+        match self.exactness(args) {
+            Some(e) => e,
+            None => self.pending(Operands::of(args), kind),
         }
-        // Builtins whose results are exact at exact arguments often enough
-        // to be worth a recipe (square roots, trigonometry at multiples of
-        // π/12, rotations by them, products); exp, log and the adjoint of
-        // numbers are floats (issue 14's benchmark makes them by the
-        // thousand).
-        if let Op::Call(b, _) = self
-            && !EXACT_CALLS.contains(&b.name)
-        {
-            return Exact::Float;
+    }
+
+    /// [`Op::exact_of`] two operands the evaluator gives away: a recipe
+    /// keeps them as they are, boxed (no copy of a 4×4 per product).
+    pub fn exact_of_pair(self, a: Box<Value>, b: Box<Value>, kind: &Kind) -> Exact {
+        match self.exactness(&[&*a, &*b]) {
+            Some(e) => e,
+            None => self.pending(Operands::Pair(a, b), kind),
         }
-        let typed = args.iter().all(|a| {
-            matches!(
-                a,
+    }
+
+    /// The exact form of `[ ... ]` of numbers given its entries row by
+    /// row ([`super::apply::block_numeric`]): `[x]` of numbers as typed is
+    /// typed, with no list of the operands to make.
+    pub fn exact_of_rows(rows: &[Vec<Value>]) -> Exact {
+        match rows {
+            [row] if row.len() == 1 => Op::Block(&[1]).exact_of(row, &Kind::Unknown),
+            _ => {
+                if !rows.iter().flatten().all(Value::may_be_exact) {
+                    return Exact::Float;
+                }
+                let widths: Vec<usize> = rows.iter().map(Vec::len).collect();
+                let entries: Vec<&Value> = rows.iter().flatten().collect();
+                Op::Block(&widths).exact_of(&entries, &Kind::Unknown)
+            }
+        }
+    }
+
+    /// The exact form of this operation on `args` when it needs no recipe
+    /// (a float, or numbers as typed moved about); None when it needs one.
+    fn exactness<V: std::borrow::Borrow<Value>>(self, args: &[V]) -> Option<Exact> {
+        let mut typed = true;
+        for a in args {
+            match a.borrow() {
                 Value::Num {
                     exact: Exact::Typed,
                     ..
-                }
-            )
-        });
+                } => {}
+                a if a.may_be_exact() => typed = false,
+                _ => return Some(Exact::Float),
+            }
+        }
+        if args.is_empty() || !self.may_be_exact() {
+            return Some(Exact::Float);
+        }
         let moves = matches!(
             self,
             Op::Neg | Op::Transpose | Op::Member(_) | Op::Index(_) | Op::Vector | Op::Block(_)
         );
-        if typed && moves {
-            return Exact::Typed;
-        }
+        (typed && moves).then_some(Exact::Typed)
+    }
+
+    /// The recipe of this operation's exact form over `args`.
+    fn pending(self, args: Operands, kind: &Kind) -> Exact {
         let op = match self {
-            Op::Index(sels) => Owned::Index(sels.to_vec()),
-            Op::Block(widths) => Owned::Block(widths.to_vec()),
-            Op::Call(b, _) => Owned::Plain(Op::Call(b, b.name)),
-            Op::Neg => Owned::Plain(Op::Neg),
-            Op::Degrees => Owned::Plain(Op::Degrees),
-            Op::Arith(o) => Owned::Plain(Op::Arith(o)),
-            Op::Inverse => Owned::Plain(Op::Inverse),
-            Op::Transpose => Owned::Plain(Op::Transpose),
-            Op::Member(part) => Owned::Plain(Op::Member(part)),
-            Op::Vector => Owned::Plain(Op::Vector),
+            Op::Neg => Operation::Neg,
+            Op::Degrees => Operation::Degrees,
+            Op::Arith(o) => Operation::Arith(o),
+            Op::Inverse => Operation::Inverse,
+            Op::Transpose => Operation::Transpose,
+            Op::Member(part) => Operation::Member(part),
+            Op::Index(sels) => Operation::Index(sels.to_vec()),
+            Op::Block(widths) => Operation::Block(widths.to_vec()),
+            Op::Vector => Operation::Vector,
+            Op::Call(b, _) => Operation::Call(b.name),
         };
-        let vals: Vec<Value> = args.iter().map(|v| (*v).clone()).collect();
-        let kind = *kind;
-        Exact::later(move || {
-            let forms = vals
-                .iter()
-                .map(|v| {
-                    Some(Value::Formula {
-                        kind: v.kind(),
-                        m: v.exact_form()?,
-                        how: None,
-                    })
-                })
-                .collect::<Option<Vec<Value>>>()?;
-            let refs: Vec<&Value> = forms.iter().collect();
-            let out = match &op {
-                Owned::Plain(op) => op.formula(&refs, &kind),
-                Owned::Index(sels) => Op::Index(sels).formula(&refs, &kind),
-                Owned::Block(widths) => {
-                    let mut rest = forms.into_iter();
-                    let rows: Vec<Vec<Value>> = widths
-                        .iter()
-                        .map(|&n| rest.by_ref().take(n).collect())
-                        .collect();
-                    Some(formula::brackets(&rows))
-                }
-            };
-            match out?.ok()? {
-                Value::Formula { m, .. } => crate::values::exact::is_exact(&m).then_some(m),
-                v => v.exact_form(),
-            }
+        Exact::pending(Pending {
+            op,
+            args,
+            kind: *kind,
+            run,
         })
+    }
+
+    /// False for an operation whose result is never given an exact form:
+    /// a builtin outside the list of `exact_name` (exp, log and the adjoint
+    /// of numbers are floats: issue 14's benchmark makes them by the
+    /// thousand).
+    #[inline]
+    pub fn may_be_exact(self) -> bool {
+        match self {
+            Op::Call(b, _) => exact_call(b),
+            _ => true,
+        }
     }
 }
 
-/// The builtins [`Op::exact_of`] gives an exact form.
-const EXACT_CALLS: &[&str] = &[
-    "sqrt",
-    "abs",
-    "sin",
-    "cos",
-    "tan",
-    "cot",
-    "sec",
-    "csc",
-    "Rotx",
-    "Roty",
-    "Rotz",
-    "Rot",
-    "cross",
-    "dot",
-    "det",
-    "trace",
-    "inv",
-    "RotInv",
-    "TransInv",
-    "VecToso3",
-    "VecTose3",
-    "so3ToVec",
-    "se3ToVec",
-    "RpToTrans",
-    "norm",
-    "transpose",
-];
+/// The exact form of `op` on operands `vals` (a [`Pending`] recipe, run
+/// when the form is first asked for): the operation's exact path
+/// ([`Op::formula`]) over the operands' exact forms; None when an operand
+/// or the result has none.
+fn run(op: &Operation, vals: &[&Value], kind: &Kind) -> Option<Mat> {
+    let forms = vals
+        .iter()
+        .map(|v| {
+            Some(Value::Formula {
+                kind: v.kind(),
+                m: v.exact_form()?,
+                how: None,
+            })
+        })
+        .collect::<Option<Vec<Value>>>()?;
+    let refs: Vec<&Value> = forms.iter().collect();
+    let out = match op {
+        Operation::Neg => Op::Neg.formula(&refs, kind),
+        Operation::Degrees => Op::Degrees.formula(&refs, kind),
+        Operation::Arith(o) => Op::Arith(*o).formula(&refs, kind),
+        Operation::Inverse => Op::Inverse.formula(&refs, kind),
+        Operation::Transpose => Op::Transpose.formula(&refs, kind),
+        Operation::Member(part) => Op::Member(*part).formula(&refs, kind),
+        Operation::Index(sels) => Op::Index(sels).formula(&refs, kind),
+        Operation::Vector => Op::Vector.formula(&refs, kind),
+        Operation::Call(name) => {
+            let b = crate::builtins::lookup(name)?;
+            Op::Call(b, name).formula(&refs, kind)
+        }
+        Operation::Block(widths) => {
+            let mut rest = forms.into_iter();
+            let rows: Vec<Vec<Value>> = widths
+                .iter()
+                .map(|&n| rest.by_ref().take(n).collect())
+                .collect();
+            Some(formula::brackets(&rows))
+        }
+    };
+    match out?.ok()? {
+        Value::Formula { m, .. } => crate::values::exact::is_exact(&m).then_some(m),
+        v => v.exact_form(),
+    }
+}
 
-/// An operation as [`Op::exact_of`] keeps it until its exact form is
-/// asked for (owning what [`Op`] borrows).
-enum Owned {
-    Plain(Op<'static>),
-    Index(Vec<Sel>),
-    Block(Vec<usize>),
+/// True for the builtins [`Op::exact_of`] gives an exact form, read from
+/// a table made once beside the builtins' table ([`exact_name`] of each
+/// row): the row is found by its place in the table, not by comparing its
+/// name with every name of the list.
+fn exact_call(b: &crate::builtins::Builtin) -> bool {
+    static EXACT: OnceLock<Vec<bool>> = OnceLock::new();
+    let table = crate::builtins::table();
+    let exact = EXACT.get_or_init(|| table.iter().map(|b| exact_name(b.name)).collect());
+    let at = (b as *const crate::builtins::Builtin as usize).wrapping_sub(table.as_ptr() as usize)
+        / std::mem::size_of::<crate::builtins::Builtin>().max(1);
+    match (exact.get(at), table.get(at)) {
+        (Some(&e), Some(row)) if std::ptr::eq(row, b) => e,
+        _ => exact_name(b.name),
+    }
+}
+
+/// The builtins whose results are exact at exact arguments often enough
+/// to be worth a recipe (square roots, trigonometry at multiples of π/12,
+/// rotations by them, products); exp, log and the adjoint of numbers are
+/// floats (issue 14's benchmark makes them by the thousand).
+fn exact_name(name: &str) -> bool {
+    matches!(
+        name,
+        "sqrt"
+            | "abs"
+            | "sin"
+            | "cos"
+            | "tan"
+            | "cot"
+            | "sec"
+            | "csc"
+            | "Rotx"
+            | "Roty"
+            | "Rotz"
+            | "Rot"
+            | "cross"
+            | "dot"
+            | "det"
+            | "trace"
+            | "inv"
+            | "RotInv"
+            | "TransInv"
+            | "VecToso3"
+            | "VecTose3"
+            | "so3ToVec"
+            | "se3ToVec"
+            | "RpToTrans"
+            | "norm"
+            | "transpose"
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::builtins::{lookup, table};
+
+    #[test]
+    fn the_table_of_exact_calls_agrees_with_the_names() {
+        for b in table() {
+            assert_eq!(exact_call(b), exact_name(b.name), "{}", b.name);
+        }
+        let row = |n| lookup(n).expect("a builtin");
+        assert!(exact_call(row("sqrt")) && exact_call(row("Rotz")));
+        assert!(!exact_call(row("exp")) && !exact_call(row("Ad")));
+    }
+
+    /// A product of numbers as typed keeps its operands, not copies, and
+    /// its exact form is the product of theirs (`[S] 0.1` as in issue
+    /// 14's benchmark).
+    #[test]
+    fn a_product_keeps_its_operands_and_is_exact() {
+        let as_typed = |mut v: Value| {
+            v.set_exact(Exact::Typed);
+            v
+        };
+        let typed = |x: f64| as_typed(Value::scalar(x));
+        let m = Box::new(as_typed(Value::vector(Kind::Vector(Some(2)), &[1.0, 3.0])));
+        let e = Op::Arith(crate::syntax::ast::BinOp::Mul).exact_of_pair(
+            m,
+            Box::new(typed(0.1)),
+            &Kind::Vector(Some(2)),
+        );
+        let Exact::Later(_) = &e else {
+            panic!("a recipe: {e:?}")
+        };
+        let form = e
+            .form(&crate::values::num::Num::vector(&[
+                0.1,
+                0.30000000000000004,
+            ]))
+            .expect("exact");
+        let tenth = |n| {
+            crate::sym::Expr::constant(crate::sym::coef::Coef::rat(
+                crate::sym::coef::Rat::new(n, 10).expect("a fraction"),
+            ))
+        };
+        assert_eq!(form.data, vec![tenth(1), tenth(3)]);
+        // A float operand: no recipe.
+        let f = Op::Arith(crate::syntax::ast::BinOp::Mul).exact_of_pair(
+            Box::new(Value::scalar(0.1)),
+            Box::new(typed(2.0)),
+            &Kind::Scalar,
+        );
+        assert!(f.is_float());
+    }
 }

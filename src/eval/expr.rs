@@ -184,14 +184,29 @@ impl Interp<'_> {
 
     /// A number as typed, exact (LANGUAGE.md §3, §7): its decimals
     /// (`0.866` is 866/1000), or π where `pi` or `π` was written.
+    #[inline]
     fn literal(&self, x: f64, span: Span) -> Value {
-        let v = Value::scalar(x);
-        if x == std::f64::consts::PI && matches!(self.text(span).trim(), "pi" | "π") {
-            return v.with_exact(Exact::known(
-                crate::sym::Mat::scalar(crate::sym::Expr::pi()),
-            ));
+        let exact = if x == std::f64::consts::PI {
+            self.pi_literal(span)
+        } else {
+            Exact::Typed
+        };
+        Value::Num {
+            kind: Kind::Scalar,
+            m: crate::values::num::Num::Scalar(x),
+            exact,
         }
-        v.with_exact(Exact::Typed)
+    }
+
+    /// The exact form of a literal whose float is π's: π where `pi` or
+    /// `π` was written, else the decimals typed.
+    #[cold]
+    fn pi_literal(&self, span: Span) -> Exact {
+        if matches!(self.text(span).trim(), "pi" | "π") {
+            Exact::known(crate::sym::Mat::scalar(crate::sym::Expr::pi()))
+        } else {
+            Exact::Typed
+        }
     }
 
     fn var(&mut self, name: Name, span: Span) -> Result<Typed, Diagnostic> {
@@ -339,9 +354,9 @@ impl Interp<'_> {
                     .map_err(|e| Diagnostic::error(ErrorKind::Type, op_span, e.message))?
             }
         };
-        let val = match (l.val.as_deref(), r.val.as_deref()) {
+        let val = match (l.val, r.val) {
             (Some(a), Some(b)) => Some(
-                op.apply(&[a, b], &ty.kind)
+                op.apply_pair(a, b, &ty.kind)
                     .map_err(|m| op.failure(m, op_span))?,
             ),
             _ => None,
@@ -503,11 +518,9 @@ impl Interp<'_> {
             typed,
             warnings: &mut self.warnings,
         };
-        let exact = {
-            let refs: Vec<&Value> = vals.iter().collect();
-            op.exact_of(&refs, &ty.kind)
-        };
-        let v = apply::call(b, vals, site)?.with_exact(exact);
+        let exact = op.exact_of(&vals, &ty.kind);
+        let mut v = apply::call(b, vals, site)?;
+        v.set_exact(exact);
         super::replay::not_finite_group(&v, b.name, span)?;
         let val = Some(v);
         Ok(Typed::new(refine(ty, &val), val))

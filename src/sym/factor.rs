@@ -2,10 +2,13 @@
 //! sin/cos calls than SymPy's `simplify`): terms that share a factor print
 //! as one, `(sin(t1) sin(t5) + cos(t1) cos(t5) cos(t2 + t3 + t4)) cos(t6)`
 //! for sin(t1) sin(t5) cos(t6) + cos(t1) cos(t5) cos(t2 + t3 + t4) cos(t6).
-//! Greedy and one level deep: the factor shared by the most terms first,
-//! then again among the terms left; a sum of more than `MAX_TERMS` (12) terms
-//! is left as it is. Only the printing changes; the canonical form stays
-//! expanded.
+//! Greedy: the factor shared by the most terms first, then again among
+//! the terms left, and again inside each group (a tilted 6-joint chain's
+//! entries print nested, `((…) cos(t3) + …) cos(t2)`: 1,296 sin/cos calls
+//! fall to 598). A sum of more than 12 terms with multiple angles
+//! (`(sin a + cos b)^30`) is an expansion and stays a sum of short lines.
+//! Only the printing changes; the canonical form stays expanded, and the
+//! printed form reads back to it.
 
 use super::coef::Coef;
 use super::expr::Mono;
@@ -13,38 +16,56 @@ use super::fraction::term;
 use super::print::{Mode, Style, join, trig_factor};
 use super::trig::{Real, Trig};
 
-/// The most terms an expression may have for its factors to be taken out:
-/// a long expansion (`(sin a + cos b)^30`) stays a sum of short lines.
-const MAX_TERMS: usize = 12;
+/// The most terms an expression may have for its factors to be taken out
+/// (past the expression limit: every printed expression).
+const MAX_TERMS: usize = 100_000;
+/// The most terms of a sum with multiple angles (`cos(3 b)`) whose factors
+/// are taken out.
+const LONG: usize = 12;
 
-/// The signed terms of a real form, common factors taken out.
+/// One term being grouped: its place in print order, its monomial, its
+/// trigonometric factors left, its coefficient.
+type Item<'a> = (usize, &'a Mono, Vec<Trig>, &'a Coef);
+
+/// The signed terms of a real form, common factors taken out (again
+/// inside each group: `((a + b) cos(t2) + c) cos(t1)`).
 pub fn factored(real: &Real, st: Style) -> Vec<(bool, String)> {
-    if real.len() > MAX_TERMS {
+    // a long sum with multiple angles is an expansion (`(sin a + cos b)^30`,
+    // `cos(3 b)`): it stays a sum of short lines
+    let multiple = || {
+        real.keys()
+            .flat_map(|(_, trig)| trig)
+            .any(|(k, _, _)| k.iter().any(|(s, e)| e.abs() >= 2 && !s.is_phase()))
+    };
+    if real.len() > MAX_TERMS || (real.len() > LONG && multiple()) {
         return real
             .iter()
             .map(|((poly, trig), c)| term(c, poly, trig, st))
             .collect();
     }
-    let mut left: Vec<(&Mono, &[Trig], &Coef)> = real
+    let items: Vec<Item> = real
         .iter()
-        .map(|((poly, trig), c)| (poly, trig.as_slice(), c))
+        .enumerate()
+        .map(|(i, ((poly, trig), c))| (i, poly, trig.clone(), c))
         .collect();
-    // (position of the first term, the text) of each printed term
+    group(items, st).into_iter().map(|(_, t)| t).collect()
+}
+
+/// The terms grouped by their most shared factor, each group's inner sum
+/// grouped in turn; in the order of each group's first term.
+fn group(items: Vec<Item>, st: Style) -> Vec<(usize, (bool, String))> {
+    let mut left = items;
     let mut out: Vec<(usize, (bool, String))> = Vec::new();
-    let order: Vec<*const Coef> = left.iter().map(|(_, _, c)| *c as *const Coef).collect();
-    let at = |c: &Coef| order.iter().position(|p| std::ptr::eq(*p, c)).unwrap_or(0);
     while let Some(f) = most_shared(&left) {
         let (shared, rest): (Vec<_>, Vec<_>) =
-            left.into_iter().partition(|(_, t, _)| t.contains(&f));
+            left.into_iter().partition(|(_, _, t, _)| t.contains(&f));
         left = rest;
-        let first = at(shared[0].2);
-        let mut inner: Vec<(bool, String)> = shared
-            .iter()
-            .map(|(poly, trig, c)| {
-                let without: Vec<Trig> = trig.iter().filter(|x| **x != f).cloned().collect();
-                term(c, poly, &without, st)
-            })
+        let first = shared.iter().map(|x| x.0).min().unwrap_or(0);
+        let inner: Vec<Item> = shared
+            .into_iter()
+            .map(|(i, poly, trig, c)| (i, poly, trig.into_iter().filter(|x| *x != f).collect(), c))
             .collect();
+        let mut inner: Vec<(bool, String)> = group(inner, st).into_iter().map(|(_, t)| t).collect();
         let neg = inner[0].0;
         if neg {
             inner.iter_mut().for_each(|t| t.0 = !t.0);
@@ -59,26 +80,31 @@ pub fn factored(real: &Real, st: Style) -> Vec<(bool, String)> {
         };
         out.push((first, (neg, text)));
     }
-    for (poly, trig, c) in left {
-        out.push((at(c), term(c, poly, trig, st)));
+    for (i, poly, trig, c) in left {
+        out.push((i, term(c, poly, &trig, st)));
     }
     out.sort_by_key(|(i, _)| *i);
-    out.into_iter().map(|(_, t)| t).collect()
+    out
 }
 
 /// The trigonometric factor shared by the most terms (at least two; the
-/// first in print order on a tie).
-fn most_shared(terms: &[(&Mono, &[Trig], &Coef)]) -> Option<Trig> {
-    let mut best: Option<(usize, &Trig)> = None;
-    for (_, trig, _) in terms {
-        for f in *trig {
-            let n = terms.iter().filter(|(_, t, _)| t.contains(f)).count();
-            if n >= 2 && best.is_none_or(|(m, _)| n > m) {
-                best = Some((n, f));
-            }
+/// first in print order on a tie): one count per factor, so that a long
+/// sum is factored in time linear in its terms per factor taken out.
+fn most_shared(terms: &[Item]) -> Option<Trig> {
+    let mut counts: std::collections::HashMap<&Trig, (usize, usize)> = Default::default();
+    let mut order = 0;
+    for (_, _, trig, _) in terms {
+        for f in trig {
+            let e = counts.entry(f).or_insert((0, order));
+            e.0 += 1;
+            order += 1;
         }
     }
-    best.map(|(_, f)| f.clone())
+    counts
+        .into_iter()
+        .filter(|(_, (n, _))| *n >= 2)
+        .min_by_key(|(_, (n, first))| (std::cmp::Reverse(*n), *first))
+        .map(|(f, _)| f.clone())
 }
 
 #[cfg(test)]

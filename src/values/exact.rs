@@ -9,18 +9,24 @@
 //! Exactness costs nothing where no one asks for it (issue 21): a literal
 //! is only marked as typed ([`Exact::Typed`]: its digits are read back
 //! from the float when asked), and an operation on exact operands records
-//! how to compute its exact form ([`Exact::later`]), which runs the first
-//! time the form is asked for and is kept. A value with no exact form
-//! (sin 1, a numeric matrix exponential) is a float ([`Exact::Float`]):
-//! it compares as a float, and nothing guesses a closed form for it.
+//! how to compute its exact form ([`Exact::pending`]: the operation and
+//! its operands in one allocation, no closure), which runs the first time
+//! the form is asked for and is kept. A value with no exact form (sin 1,
+//! a numeric matrix exponential) is a float ([`Exact::Float`]): it
+//! compares as a float, and nothing guesses a closed form for it.
 
 use std::cell::{Cell, OnceCell};
 use std::rc::Rc;
 
 use super::num::Num;
+use super::ops::Sel;
+use super::symbolic::Part;
+use super::value::Value;
+use crate::check::ty::Kind;
 use crate::sym::Mat;
 use crate::sym::coef::{Coef, Rat};
 use crate::sym::expr::{Expr, Var};
+use crate::syntax::ast::BinOp;
 
 /// What is known of a numeric value's exact form.
 #[derive(Clone, Default)]
@@ -49,14 +55,84 @@ impl std::fmt::Debug for Exact {
     }
 }
 
-/// The recipe of an exact form, run once; its result is kept.
+/// An exact form made when first asked for, from its [`Pending`] recipe;
+/// the result is kept.
 pub struct Later {
     form: OnceCell<Option<Mat>>,
-    make: Cell<Option<Recipe>>,
+    make: Cell<Option<Make>>,
 }
 
-/// How an exact form is made from the exact forms of the operands.
-type Recipe = Box<dyn FnOnce() -> Option<Mat>>;
+/// How a [`Later`] form is made: an operation's [`Pending`] recipe (the
+/// common case), or a closure (numbers bound later into a formula,
+/// `eval::replay`).
+enum Make {
+    Op(Pending),
+    Fn(Box<dyn FnOnce() -> Option<Mat>>),
+}
+
+/// How an exact form is made: one operation of the evaluator's seam over
+/// its operands as they were (their numbers and their exact forms), run
+/// by `run`, the evaluator's exact path (`eval::exactness`, which `values`
+/// cannot name). Data, not a closure: recording it is one allocation with
+/// the operands inline.
+pub struct Pending {
+    /// The operation.
+    pub op: Operation,
+    /// Its operands as they were.
+    pub args: Operands,
+    /// The result's kind as checked.
+    pub kind: Kind,
+    /// The exact path: the operation on the operands' exact forms (None:
+    /// no exact form).
+    pub run: fn(&Operation, &[&Value], &Kind) -> Option<Mat>,
+}
+
+/// An operation of the evaluator's seam (`eval::apply::Op`) with its data
+/// owned, as [`Pending`] keeps it.
+#[derive(Debug, Clone)]
+pub enum Operation {
+    /// `-x`.
+    Neg,
+    /// `x deg`.
+    Degrees,
+    /// `a + b`, `a - b`, `a b`, `a / b`, `a ^ b`.
+    Arith(BinOp),
+    /// `X^-1`.
+    Inverse,
+    /// `x.T`.
+    Transpose,
+    /// `T.R`, `T.p`, `V.w`, …
+    Member(Part),
+    /// `x[i]`, `M[i, j]`, `M[:, j]`.
+    Index(Vec<Sel>),
+    /// `[x]` and `[a, b; c, d]`: the number of entries of each row.
+    Block(Vec<usize>),
+    /// `(a, b, c)`.
+    Vector,
+    /// A builtin, by its name.
+    Call(&'static str),
+}
+
+/// The operands of a [`Pending`] recipe: the two operands of an operator
+/// moved in as the evaluator held them (boxed: no copy), or copies.
+pub enum Operands {
+    Pair(Box<Value>, Box<Value>),
+    Copied(Box<[Value]>),
+}
+
+impl Operands {
+    /// Copies of the operands `args`.
+    pub fn of<V: std::borrow::Borrow<Value>>(args: &[V]) -> Operands {
+        Operands::Copied(args.iter().map(|v| v.borrow().clone()).collect())
+    }
+    /// The operands in order.
+    pub fn refs(&self) -> Vec<&Value> {
+        match self {
+            Operands::Pair(a, b) => vec![a, b],
+            Operands::Copied(vs) => vs.iter().collect(),
+        }
+    }
+}
 
 impl Exact {
     /// A form known now (a formula whose entries are all exact numbers).
@@ -68,14 +144,24 @@ impl Exact {
             make: Cell::new(None),
         }))
     }
-    /// A form computed by `make` when first asked for (None: no exact form).
+    /// A form computed by `p` when first asked for.
+    pub fn pending(p: Pending) -> Exact {
+        Exact::Later(Rc::new(Later {
+            form: OnceCell::new(),
+            make: Cell::new(Some(Make::Op(p))),
+        }))
+    }
+    /// A form computed by `make` when first asked for (None: no exact
+    /// form); for the rarer paths, where a closure costs nothing that
+    /// matters.
     pub fn later(make: impl FnOnce() -> Option<Mat> + 'static) -> Exact {
         Exact::Later(Rc::new(Later {
             form: OnceCell::new(),
-            make: Cell::new(Some(Box::new(make))),
+            make: Cell::new(Some(Make::Fn(Box::new(make)))),
         }))
     }
     /// True when no exact form is known (nothing to ask).
+    #[inline]
     pub fn is_float(&self) -> bool {
         matches!(self, Exact::Float)
     }
@@ -87,7 +173,10 @@ impl Exact {
             Exact::Later(l) => l
                 .form
                 .get_or_init(|| {
-                    let m = l.make.take().and_then(|f| f())?;
+                    let m = match l.make.take()? {
+                        Make::Op(p) => (p.run)(&p.op, &p.args.refs(), &p.kind)?,
+                        Make::Fn(f) => f()?,
+                    };
                     is_exact(&m).then_some(m)
                 })
                 .clone(),
@@ -270,16 +359,21 @@ mod tests {
 
     #[test]
     fn a_recipe_runs_once_and_a_float_has_no_form() {
-        let m = Num::Scalar(0.5);
-        let calls = Rc::new(Cell::new(0));
-        let c = calls.clone();
-        let e = Exact::later(move || {
-            c.set(c.get() + 1);
+        thread_local!(static CALLS: Cell<u32> = const { Cell::new(0) });
+        fn pi(_: &Operation, _: &[&Value], _: &Kind) -> Option<Mat> {
+            CALLS.with(|c| c.set(c.get() + 1));
             Some(Mat::scalar(Expr::pi()))
+        }
+        let m = Num::Scalar(0.5);
+        let e = Exact::pending(Pending {
+            op: Operation::Neg,
+            args: Operands::of(&[Value::scalar(0.5)]),
+            kind: Kind::Scalar,
+            run: pi,
         });
         assert_eq!(e.form(&m), Some(Mat::scalar(Expr::pi())));
-        assert_eq!(e.form(&m), Some(Mat::scalar(Expr::pi())));
-        assert_eq!(calls.get(), 1);
+        assert_eq!(e.clone().form(&m), Some(Mat::scalar(Expr::pi())));
+        assert_eq!(CALLS.with(Cell::get), 1);
         assert_eq!(Exact::Float.form(&m), None);
         assert_eq!(
             Exact::Typed.form(&m),

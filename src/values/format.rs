@@ -43,10 +43,17 @@ impl Style {
 /// The exact form `--exact` prints for a value (LANGUAGE.md §10): its
 /// entries as exact numbers (`1/√2`, `(1/9) π`), when it has an exact form
 /// that is not just the decimals it prints anyway (`0.866` stays `0.866`).
+#[inline]
 pub fn exact_text(v: &Value, style: Style) -> Option<Mat> {
     if !style.exact || style.sym == Mode::Latex || !v.may_be_exact() {
         return None;
     }
+    exact_form_text(v)
+}
+
+/// [`exact_text`] once `--exact` asks for it.
+#[cold]
+fn exact_form_text(v: &Value) -> Option<Mat> {
     v.exact_form()
         .filter(|m| !super::exact::prints_as_decimals(m))
 }

@@ -105,6 +105,13 @@ pub fn constant_shown(v: &Value) -> Option<Value> {
                 .map(|x| constant_shown(x).unwrap_or_else(|| x.clone()))
                 .collect(),
         )),
+        Value::List(vs) if vs.iter().any(|x| constant_shown(x).is_some()) => {
+            Some(Value::List(std::rc::Rc::new(
+                vs.iter()
+                    .map(|x| constant_shown(x).unwrap_or_else(|| x.clone()))
+                    .collect(),
+            )))
+        }
         _ => None,
     }
 }

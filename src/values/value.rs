@@ -158,10 +158,16 @@ impl Value {
     }
     /// The same value with the exact form `exact` (numbers only).
     pub fn with_exact(mut self, e: Exact) -> Value {
-        if let Value::Num { exact, .. } = &mut self {
+        self.set_exact(e);
+        self
+    }
+    /// Gives a number the exact form `e` (in place: a value is too large
+    /// to move for nothing).
+    #[inline]
+    pub fn set_exact(&mut self, e: Exact) {
+        if let Value::Num { exact, .. } = self {
             *exact = e;
         }
-        self
     }
     /// The exact form of a numeric value, when it has one (§3, §7).
     pub fn exact_form(&self) -> Option<crate::sym::Mat> {
@@ -171,6 +177,7 @@ impl Value {
         }
     }
     /// True for a numeric value with an exact form known or to be computed.
+    #[inline]
     pub fn may_be_exact(&self) -> bool {
         matches!(self, Value::Num { exact, .. } if !exact.is_float())
     }
