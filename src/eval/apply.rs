@@ -355,7 +355,7 @@ impl<'a> Op<'a> {
                         recipe::attach(v, super::chain::derivative(x, by))
                     }
                     (Op::Call(b, _), [x, name, by]) if b.name == "subs" => {
-                        recipe::attach(v, super::replay::substituted(x, name, by))
+                        recipe::attach(v, super::chain::substituted(x, name, by))
                     }
                     _ => recipe::record(v, self.made(), args, kind),
                 })

@@ -15,6 +15,7 @@
 //! [`Rc`]) that holds no names: a value keeps what it was made of when it
 //! was made, so rebinding a name it read changes nothing.
 
+use std::collections::HashMap;
 use std::rc::Rc;
 
 use super::ops::Sel;
@@ -310,4 +311,37 @@ pub fn symbols(r: &Rc<Recipe>, out: &mut Vec<crate::sym::Symbol>) {
 /// A kind that says only a shape (the numbers then say more).
 pub fn vague(kind: &Kind) -> bool {
     matches!(kind, Kind::Unknown | Kind::Matrix(..) | Kind::Vector(None))
+}
+
+/// `r` with each leaf `leaf` gives a new value for replaced; unchanged
+/// parts are shared.
+pub fn rebase(
+    r: &Rc<Recipe>,
+    leaf: &dyn Fn(&Value) -> Option<Value>,
+    memo: &mut HashMap<*const Recipe, Rc<Recipe>>,
+) -> Rc<Recipe> {
+    let key = Rc::as_ptr(r);
+    if let Some(x) = memo.get(&key) {
+        return x.clone();
+    }
+    let out = stacker::maybe_grow(64 * 1024, 1024 * 1024, || match &r.step {
+        Step::Leaf(v) => match leaf(v) {
+            Some(v) => Recipe::leaf(v),
+            None => r.clone(),
+        },
+        step => {
+            let args: Vec<Rc<Recipe>> = r.args.iter().map(|a| rebase(a, leaf, memo)).collect();
+            if args.iter().zip(&r.args).all(|(a, b)| Rc::ptr_eq(a, b)) {
+                return r.clone();
+            }
+            Rc::new(Recipe {
+                step: step.clone(),
+                args,
+                kind: r.kind,
+                depth: r.depth,
+            })
+        }
+    });
+    memo.insert(key, out.clone());
+    out
 }
