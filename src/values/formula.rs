@@ -282,7 +282,8 @@ fn checked_power(x: &Mat, mut n: u64, acc: &mut Mat) -> Result<Mat, String> {
         && k > super::symbolic::MAX_SYM_NODES
     {
         return Err(format!(
-            "symbolic expression too large: the power would have up to {k} terms (more than {})",
+            "symbolic expression too large: the power would have {k} terms or more before \
+             cancellation (more than {})",
             super::symbolic::MAX_SYM_NODES
         ));
     }
