@@ -373,6 +373,32 @@ fn deepest_accepted_nesting_checks_and_runs_on_a_small_stack() {
     }
 }
 
+/// Exact forms wait as recipes until asked for (`values::exact`): a
+/// script that adds 0.1 five thousand times builds a chain of them. It
+/// must stay exact (`x == 500.1` is true: decimals are exact) and neither
+/// working the form out nor dropping the chain may overflow a 2 MB thread.
+#[test]
+fn a_long_chain_of_exact_operations_fits_a_small_stack() {
+    let mut src = String::from("x = 0.1\n");
+    for _ in 0..5000 {
+        src.push_str("x = x + 0.1\n");
+    }
+    src.push_str("x == 500.1\nx == 500.2\n");
+    let worker = std::thread::Builder::new()
+        .stack_size(2 * 1024 * 1024)
+        .spawn(move || {
+            let mut s = Session::new(Settings::default());
+            let out = s.run_to_strings("<chain>", &src, Mode::Run, false);
+            drop(s);
+            out
+        })
+        .expect("spawn");
+    let (out, err, errors) = worker.join().expect("no stack overflow or panic");
+    assert_eq!(errors, 0, "{err}");
+    let last: Vec<&str> = out.lines().rev().take(2).collect();
+    assert_eq!(last, ["false", "true"], "{err}");
+}
+
 /// User functions nest the tree: 64 calls deep, each 190 brackets deep,
 /// on a 2 MB thread (the stack grows on the heap instead of overflowing).
 #[test]

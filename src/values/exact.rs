@@ -60,7 +60,16 @@ impl std::fmt::Debug for Exact {
 pub struct Later {
     form: OnceCell<Option<Mat>>,
     make: Cell<Option<Make>>,
+    /// The longest chain of recipes still waiting under this one (0 once
+    /// the form is known); bounded by [`MAX_PENDING_DEPTH`].
+    depth: u32,
 }
+
+/// The longest chain of waiting recipes kept (`x = x + 0.1` typed
+/// 200,000 times): past it, the form is worked out at once, so working
+/// it out later, and dropping the chain, never recurses deeper than
+/// this on the stack.
+pub const MAX_PENDING_DEPTH: u32 = 64;
 
 /// How a [`Later`] form is made: an operation's [`Pending`] recipe (the
 /// common case), or a closure (numbers bound later into a formula,
@@ -125,6 +134,13 @@ impl Operands {
     pub fn of<V: std::borrow::Borrow<Value>>(args: &[V]) -> Operands {
         Operands::Copied(args.iter().map(|v| v.borrow().clone()).collect())
     }
+    /// The longest chain of waiting recipes under the operands.
+    fn max_depth(&self) -> u32 {
+        match self {
+            Operands::Pair(a, b) => pending_depth(a).max(pending_depth(b)),
+            Operands::Copied(vs) => vs.iter().map(pending_depth).max().unwrap_or(0),
+        }
+    }
     /// The operands in order.
     pub fn refs(&self) -> Vec<&Value> {
         match self {
@@ -142,13 +158,25 @@ impl Exact {
         Exact::Later(Rc::new(Later {
             form,
             make: Cell::new(None),
+            depth: 0,
         }))
     }
-    /// A form computed by `p` when first asked for.
+    /// A form computed by `p` when first asked for; at once when the
+    /// chain of waiting recipes under it is longer than
+    /// [`MAX_PENDING_DEPTH`].
     pub fn pending(p: Pending) -> Exact {
+        let depth = 1 + p.args.max_depth();
+        if depth > MAX_PENDING_DEPTH {
+            let form = (p.run)(&p.op, &p.args.refs(), &p.kind).filter(is_exact);
+            return match form {
+                Some(m) => Exact::known(m),
+                None => Exact::Float,
+            };
+        }
         Exact::Later(Rc::new(Later {
             form: OnceCell::new(),
             make: Cell::new(Some(Make::Op(p))),
+            depth,
         }))
     }
     /// A form computed by `make` when first asked for (None: no exact
@@ -158,6 +186,7 @@ impl Exact {
         Exact::Later(Rc::new(Later {
             form: OnceCell::new(),
             make: Cell::new(Some(Make::Fn(Box::new(make)))),
+            depth: 0,
         }))
     }
     /// True when no exact form is known (nothing to ask).
@@ -181,6 +210,18 @@ impl Exact {
                 })
                 .clone(),
         }
+    }
+}
+
+/// The chain of waiting recipes under a value's exact form (0 when it
+/// is known or there is none).
+fn pending_depth(v: &Value) -> u32 {
+    match v {
+        Value::Num {
+            exact: Exact::Later(l),
+            ..
+        } if l.form.get().is_none() => l.depth,
+        _ => 0,
     }
 }
 
