@@ -169,3 +169,35 @@ fn a_long_chain_of_statements_replays_every_step() {
     let (a, b) = (0.3f64, -1.1f64);
     close(&src, &[(a.sin() + b.cos()).powi(30)], 1e-13);
 }
+
+/// `diff` and `subs` of an expression kept as a call (an exponential with
+/// no closed form) act on its symbols: once numbers replace them, `diff`
+/// of what is left would be 0 and `subs` would replace nothing. Bound
+/// later, such a value was the zero vector (the right derivative is not
+/// zero); it is refused, while nothing is bound it stays the call.
+#[test]
+fn diff_of_a_kept_call_bound_later_is_refused_not_zero() {
+    let src = "given q1(t) : scalar\n\
+               x = diff(exp([(1,0,0,0,0,0)] * (cos(q1) + sin(q1))^9) * (0,0,1,1), t)\n";
+    let free = common::printed(&format!("{src}x"));
+    assert!(
+        free.lines().last().unwrap_or("").starts_with("diff(exp("),
+        "{free}"
+    );
+    let later = error(&format!("{src}q1 = 0.3\nq1' = 1\nx"));
+    assert!(
+        later.contains("diff(…) of an expression with no closed form"),
+        "{later}"
+    );
+    // subs of the same kind of expression is done when typed (the
+    // exponential of numbers at a = 3), so binding later replays it
+    let v = last_numbers(
+        "given a, b\ny = subs(exp([(1,0,0,0,0,0)] * (cos(a) + sin(b))^9) * (0,0,1,1), a, 3)\n\
+         a = 5\nb = 1\ny",
+    );
+    let th = (3f64.cos() + 1f64.sin()).powi(9);
+    assert!(
+        (v[1] + th.sin()).abs() < 1e-15 && (v[2] - th.cos()).abs() < 1e-15,
+        "{v:?}"
+    );
+}

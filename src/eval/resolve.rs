@@ -159,6 +159,34 @@ impl Resolving<'_, '_> {
                     None => Sym::Vector(parts),
                 }
             }
+            Sym::Call(fun, args)
+                if matches!(fun.name, "diff" | "subs") && num(&args[0]).is_none() =>
+            {
+                // diff and subs of an expression kept as a call act on its
+                // symbols: once numbers replace some of them, diff would
+                // see constants (0) and subs nothing to replace — refused,
+                // never computed from what is left.
+                let x = self.go(&args[0]);
+                if x != args[0] {
+                    if self.failed.is_none() {
+                        self.failed = Some(format!(
+                            "{}(…) of an expression with no closed form cannot be computed once \
+                             its symbols have numbers (the {} of a kept call is not known); \
+                             bind the numbers first and compute it numerically, or give it a closed form",
+                            fun.name,
+                            if fun.name == "diff" {
+                                "derivative"
+                            } else {
+                                "substitution"
+                            }
+                        ));
+                    }
+                    return s.clone();
+                }
+                let mut rest: Vec<Sym> = args[1..].iter().map(|a| self.go(a)).collect();
+                rest.insert(0, x);
+                Sym::Call(*fun, rest)
+            }
             Sym::Call(fun, args) => {
                 let args: Vec<Sym> = args.iter().map(|a| self.go(a)).collect();
                 let vals: Option<Vec<Value>> = args.iter().map(|a| num(a).cloned()).collect();
