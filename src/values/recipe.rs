@@ -78,6 +78,10 @@ pub struct Recipe {
     pub kind: Kind,
     /// The longest chain of steps down to a leaf (a leaf is 0).
     pub depth: u32,
+    /// The symbols of its leaves, kept the first time [`symbols`] is
+    /// asked (a chain `x = x + 0.1` read at every step is then walked
+    /// once, not once per step).
+    syms: std::cell::OnceCell<Vec<crate::sym::Symbol>>,
 }
 
 impl std::fmt::Debug for Recipe {
@@ -114,6 +118,7 @@ impl Recipe {
             args: Vec::new(),
             kind,
             depth: 0,
+            syms: Default::default(),
         })
     }
 
@@ -127,6 +132,7 @@ impl Recipe {
                 args,
                 kind,
                 depth,
+                syms: Default::default(),
             })
         })
     }
@@ -295,15 +301,34 @@ pub fn holds_symbols(v: &Value) -> bool {
 /// is 1 but is no number until `a` has one, and not at a = 0). Shared
 /// operands are visited once.
 pub fn symbols(r: &Rc<Recipe>, out: &mut Vec<crate::sym::Symbol>) {
-    let mut seen = std::collections::HashSet::new();
-    let mut todo = vec![r];
-    while let Some(r) = todo.pop() {
-        if !seen.insert(Rc::as_ptr(r)) {
-            continue;
+    let own = r.syms.get_or_init(|| {
+        let mut found = Vec::new();
+        let mut seen = std::collections::HashSet::new();
+        let mut todo = vec![r];
+        while let Some(r) = todo.pop() {
+            if !seen.insert(Rc::as_ptr(r)) {
+                continue;
+            }
+            if let Some(known) = r.syms.get() {
+                for s in known {
+                    if !found.contains(s) {
+                        found.push(s.clone());
+                    }
+                }
+                continue;
+            }
+            match &r.step {
+                Step::Leaf(Value::Formula { m, .. }) => {
+                    m.data.iter().for_each(|e| e.symbols(&mut found))
+                }
+                _ => todo.extend(r.args.iter()),
+            }
         }
-        match &r.step {
-            Step::Leaf(Value::Formula { m, .. }) => m.data.iter().for_each(|e| e.symbols(out)),
-            _ => todo.extend(r.args.iter()),
+        found
+    });
+    for s in own {
+        if !out.contains(s) {
+            out.push(s.clone());
         }
     }
 }
@@ -339,6 +364,7 @@ pub fn rebase(
                 args,
                 kind: r.kind,
                 depth: r.depth,
+                syms: Default::default(),
             })
         }
     });
