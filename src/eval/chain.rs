@@ -246,18 +246,7 @@ impl Chain<'_> {
                         if v.kind != Kind::Scalar {
                             return None;
                         }
-                        let a = match du {
-                            None => None,
-                            Some(du) => Some(arith(BinOp::Div, du, v.clone())?),
-                        };
-                        let b = match dv {
-                            None => None,
-                            Some(dv) => {
-                                let udv = arith(BinOp::Mul, u, dv)?;
-                                Some(arith(BinOp::Div, udv, pow(&v, 2.0)?)?)
-                            }
-                        };
-                        plus(a, neg(b)?)
+                        quotient(u, &v, du, dv)
                     }
                     // d(u^n) = n u^(n−1) du, for a number n
                     BinOp::Pow => {
@@ -301,20 +290,7 @@ impl Chain<'_> {
                     BinOp::Sub => plus(du, neg(dv)?),
                     BinOp::Mul => plus(times_after(du, v)?, times(Some(u), dv)?),
                     // M / s = M (1/s)
-                    BinOp::Div if v.kind == Kind::Scalar => {
-                        let a = match du {
-                            None => None,
-                            Some(du) => Some(arith(BinOp::Div, du, v.clone())?),
-                        };
-                        let b = match dv {
-                            None => None,
-                            Some(dv) => {
-                                let udv = arith(BinOp::Mul, u, dv)?;
-                                Some(arith(BinOp::Div, udv, pow(&v, 2.0)?)?)
-                            }
-                        };
-                        plus(a, neg(b)?)
-                    }
+                    BinOp::Div if v.kind == Kind::Scalar => quotient(u, &v, du, dv),
                     // d(M^n) = Σ M^j dM M^(n−1−j), for a whole n ≥ 1
                     BinOp::Pow if dv.is_none() => {
                         let n = match &v.step {
@@ -533,4 +509,21 @@ impl Chain<'_> {
         };
         times(f, du)
     }
+}
+
+/// The quotient rule, d(u/v) = du/v − u dv/v² (v a scalar; u a scalar,
+/// vector or matrix).
+fn quotient(u: Rc<Recipe>, v: &Rc<Recipe>, du: D, dv: D) -> Option<D> {
+    let a = match du {
+        None => None,
+        Some(du) => Some(arith(BinOp::Div, du, v.clone())?),
+    };
+    let b = match dv {
+        None => None,
+        Some(dv) => {
+            let udv = arith(BinOp::Mul, u, dv)?;
+            Some(arith(BinOp::Div, udv, pow(v, 2.0)?)?)
+        }
+    };
+    plus(a, neg(b)?)
 }
