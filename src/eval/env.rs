@@ -143,6 +143,10 @@ pub struct Binding {
     /// and [`Env::set_value`] decide it from the value (a list is looked
     /// through once, when it is bound, not at every read).
     pub derived: bool,
+    /// When it was bound: [`Env::set`] and [`Env::set_value`] give each
+    /// binding a new stamp (a value bound later warns once per binding of
+    /// the numbers it reads, `super::warned`).
+    pub stamp: u64,
 }
 
 /// Whether a binding of `v` is [`Binding::derived`].
@@ -184,6 +188,11 @@ pub struct Env {
     /// The `given` axes already said to be assumed unit vectors (the note
     /// of `super::lower`, once a session).
     pub(super) units_noted: Vec<String>,
+    /// The last stamp given to a binding ([`Binding::stamp`]).
+    stamp: u64,
+    /// The warnings given by reads of values bound later (once per
+    /// binding of their numbers).
+    pub(super) warned: super::warned::Warned,
 }
 
 /// The numbers a value holds, as the memory budget counts them
@@ -219,6 +228,8 @@ impl Env {
     #[inline]
     pub fn set(&mut self, name: impl AsKey, mut b: Binding) {
         b.derived = derived(b.val.as_ref());
+        self.stamp += 1;
+        b.stamp = self.stamp;
         self.held += binding_numbers(&b);
         if let Some(old) = self.vars.insert(name.key(), b) {
             self.held = self.held.saturating_sub(binding_numbers(&old));
@@ -233,6 +244,7 @@ impl Env {
     #[inline]
     pub fn set_value(&mut self, name: impl AsKey, ty: &Ty, val: Option<&Value>) {
         let key = name.key();
+        self.stamp += 1;
         match self.vars.get_mut(&key) {
             Some(old) => {
                 self.held = self.held.saturating_sub(binding_numbers(old)) + val.map_or(0, numbers);
@@ -245,6 +257,7 @@ impl Env {
                 }
                 old.symbolic = false;
                 old.derived = derived(val);
+                old.stamp = self.stamp;
             }
             None => {
                 self.held += val.map_or(0, numbers);
@@ -253,6 +266,7 @@ impl Env {
                     val: val.cloned(),
                     symbolic: false,
                     derived: derived(val),
+                    stamp: self.stamp,
                 };
                 self.vars.insert(key, b);
             }

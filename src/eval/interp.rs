@@ -281,6 +281,7 @@ impl<'a> Interp<'a> {
                             val: Some(val),
                             symbolic: true,
                             derived: false,
+                            stamp: 0,
                         },
                     );
                 }
@@ -572,6 +573,7 @@ impl Interp<'_> {
                     val: Some(super::formula::scalar(time)),
                     symbolic: true,
                     derived: false,
+                    stamp: 0,
                 },
             );
         }
