@@ -149,6 +149,19 @@ pub struct Binding {
     pub stamp: u64,
 }
 
+impl Binding {
+    /// A `given` symbol of type `ty` (its value the symbol itself).
+    pub fn given(ty: Ty, val: Value) -> Binding {
+        Binding {
+            ty,
+            val: Some(val),
+            symbolic: true,
+            derived: false,
+            stamp: 0,
+        }
+    }
+}
+
 /// Whether a binding of `v` is [`Binding::derived`].
 #[inline]
 fn derived(v: Option<&Value>) -> bool {
@@ -234,6 +247,29 @@ impl Env {
         if let Some(old) = self.vars.insert(name.key(), b) {
             self.held = self.held.saturating_sub(binding_numbers(&old));
         }
+    }
+    /// Of `warnings`, given by reading `name` now, those that reading the
+    /// same value with the same bindings of its symbols has not given
+    /// already (`super::warned`: once per binding of its numbers).
+    pub(super) fn fresh_warnings(
+        &mut self,
+        name: &str,
+        warnings: Vec<crate::diagnostics::Diagnostic>,
+    ) -> Vec<crate::diagnostics::Diagnostic> {
+        let mut warned = std::mem::take(&mut self.warned);
+        let out = match self.get(name) {
+            Some(Binding {
+                val: Some(v),
+                stamp,
+                ..
+            }) => {
+                let stamp_of = |n: &str| self.get(n).map_or(0, |b| b.stamp);
+                warned.keep(name, v, *stamp, &stamp_of, warnings)
+            }
+            _ => warnings,
+        };
+        self.warned = warned;
+        out
     }
     /// The numbers the bindings hold ([`numbers`]).
     pub fn held(&self) -> u64 {

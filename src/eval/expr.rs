@@ -234,7 +234,7 @@ impl Interp<'_> {
             // (the warnings of the steps replayed, at the name read: once
             // per binding of the numbers it reads, as typed first)
             if !warnings.is_empty() {
-                for mut w in super::warned::keep(self.env, name.as_str(), warnings) {
+                for mut w in self.env.fresh_warnings(name.as_str(), warnings) {
                     w.span = span;
                     if !self.warnings.iter().any(|x| x.message == w.message) {
                         self.warnings.push(w);

@@ -6,13 +6,12 @@
 //! value remembers the warnings it gave, with what the value was made by
 //! (its recipe, shared by `z = y`, or its binding) and the bindings of
 //! the symbols it reads (each binding has its own stamp,
-//! [`super::env::Binding::stamp`]). A later read of the same value with
+//! `Binding::stamp` in `super::env`). A later read of the same value with
 //! the same bindings gives those warnings no more; once a symbol it reads
 //! is bound again, the numbers are new and their warnings are given again.
 
 use std::rc::Rc;
 
-use super::env::Env;
 use super::value::{Sym, Value};
 use crate::diagnostics::Diagnostic;
 use crate::sym::Symbol;
@@ -50,51 +49,52 @@ struct Entry {
     said: Vec<String>,
 }
 
-/// The warnings given by reads of values bound later ([`keep`]).
+/// The warnings given by reads of values bound later ([`Warned::keep`]).
 #[derive(Debug, Clone, Default)]
 pub struct Warned(Vec<Entry>);
 
-/// Of `warnings`, given by reading the binding `name` with `env`'s
-/// numbers, those not given already by a read of the same value with the
-/// same bindings of its symbols; remembers them.
-pub fn keep(env: &mut Env, name: &str, warnings: Vec<Diagnostic>) -> Vec<Diagnostic> {
-    let Some((origin, stamps)) = env.get(name).and_then(|b| {
-        let v = b.val.as_ref()?;
-        let origin = origin(v).unwrap_or_else(|| Origin::Bound(name.to_string(), b.stamp));
+impl Warned {
+    /// Of `warnings`, given by reading `name` (bound to `v` at `stamp`)
+    /// with the numbers bound now (`stamp_of` a name's binding's stamp,
+    /// 0 when unbound), those not given already by a read of the same
+    /// value with the same bindings of its symbols; remembers them.
+    pub fn keep(
+        &mut self,
+        name: &str,
+        v: &Value,
+        stamp: u64,
+        stamp_of: &dyn Fn(&str) -> u64,
+        warnings: Vec<Diagnostic>,
+    ) -> Vec<Diagnostic> {
+        let origin = origin(v).unwrap_or_else(|| Origin::Bound(name.to_string(), stamp));
         let mut syms = Vec::new();
         depends(v, &mut syms);
-        let stamps: Vec<u64> = syms
-            .iter()
-            .map(|s| env.get(binding(s).as_str()).map_or(0, |b| b.stamp))
+        let stamps: Vec<u64> = syms.iter().map(|s| stamp_of(&binding(s))).collect();
+        let kept = &mut self.0;
+        let mut entry = match kept.iter().position(|e| e.origin == origin) {
+            Some(i) if kept[i].stamps == stamps => kept.remove(i),
+            found => {
+                if let Some(i) = found {
+                    kept.remove(i);
+                }
+                Entry {
+                    origin,
+                    stamps,
+                    said: Vec::new(),
+                }
+            }
+        };
+        let fresh: Vec<Diagnostic> = warnings
+            .into_iter()
+            .filter(|w| !entry.said.contains(&w.message))
             .collect();
-        Some((origin, stamps))
-    }) else {
-        return warnings;
-    };
-    let kept = &mut env.warned.0;
-    let mut entry = match kept.iter().position(|e| e.origin == origin) {
-        Some(i) if kept[i].stamps == stamps => kept.remove(i),
-        found => {
-            if let Some(i) = found {
-                kept.remove(i);
-            }
-            Entry {
-                origin,
-                stamps,
-                said: Vec::new(),
-            }
+        entry.said.extend(fresh.iter().map(|w| w.message.clone()));
+        kept.push(entry);
+        if kept.len() > KEPT {
+            kept.remove(0);
         }
-    };
-    let fresh: Vec<Diagnostic> = warnings
-        .into_iter()
-        .filter(|w| !entry.said.contains(&w.message))
-        .collect();
-    entry.said.extend(fresh.iter().map(|w| w.message.clone()));
-    kept.push(entry);
-    if kept.len() > KEPT {
-        kept.remove(0);
+        fresh
     }
-    fresh
 }
 
 /// The recipe that made `v` (a tuple's: its parts' call), through the
