@@ -19,14 +19,12 @@ use std::cell::{Cell, OnceCell};
 use std::rc::Rc;
 
 use super::num::Num;
-use super::ops::Sel;
-use super::symbolic::Part;
+pub use super::operation::Operation;
 use super::value::Value;
 use crate::check::ty::Kind;
 use crate::sym::Mat;
 use crate::sym::coef::{Coef, Rat};
 use crate::sym::expr::{Expr, Var};
-use crate::syntax::ast::BinOp;
 
 /// What is known of a numeric value's exact form.
 #[derive(Clone, Default)]
@@ -94,32 +92,6 @@ pub struct Pending {
     /// The exact path: the operation on the operands' exact forms (None:
     /// no exact form).
     pub run: fn(&Operation, &[&Value], &Kind) -> Option<Mat>,
-}
-
-/// An operation of the evaluator's seam (`eval::apply::Op`) with its data
-/// owned, as [`Pending`] keeps it.
-#[derive(Debug, Clone)]
-pub enum Operation {
-    /// `-x`.
-    Neg,
-    /// `x deg`.
-    Degrees,
-    /// `a + b`, `a - b`, `a b`, `a / b`, `a ^ b`.
-    Arith(BinOp),
-    /// `X^-1`.
-    Inverse,
-    /// `x.T`.
-    Transpose,
-    /// `T.R`, `T.p`, `V.w`, …
-    Member(Part),
-    /// `x[i]`, `M[i, j]`, `M[:, j]`.
-    Index(Vec<Sel>),
-    /// `[x]` and `[a, b; c, d]`: the number of entries of each row.
-    Block(Vec<usize>),
-    /// `(a, b, c)`.
-    Vector,
-    /// A builtin, by its name.
-    Call(&'static str),
 }
 
 /// The operands of a [`Pending`] recipe: the two operands of an operator
