@@ -72,7 +72,7 @@ pub fn holds(a: &Value, b: &Value, op: CmpOp) -> Result<Option<bool>, String> {
 /// `a op b` over free symbols when it holds (or fails) for every real
 /// number they may take, proven from the canonical form of `a − b`: a sum
 /// of positive multiples of even powers of symbols (and of π) is ≥ 0, and
-/// > 0 with a positive constant term (`a^2 + 1 > 0`). None when not
+/// positive with a positive constant term (`a^2 + 1 > 0`). None when not
 /// proven: the comparison then waits for the numbers (§7: "what cannot be
 /// decided is said, never guessed").
 fn proven(a: &Value, b: &Value, op: CmpOp) -> Option<bool> {
