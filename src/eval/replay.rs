@@ -110,9 +110,8 @@ pub(super) fn typed_first(
                 warnings,
             };
             let vals = args.iter().map(|v| (*v).clone()).collect();
-            let v = apply::call(b, vals, site)
-                .map_err(|d| OpError::Message(d.message))?
-                .with_exact(exact);
+            let mut v = apply::call(b, vals, site).map_err(|d| OpError::Message(d.message))?;
+            v.set_call_exact(exact);
             not_finite_group(&v, b.name, Default::default())
                 .map_err(|d| OpError::Message(d.message))?;
             Ok(v)
