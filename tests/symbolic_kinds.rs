@@ -11,7 +11,7 @@ mod common;
 use serde_json::Value as J;
 
 /// What a JSON record says the value is: its type, or for a symbolic value
-/// the kind it carries.
+/// the kind it carries (a formula's own, a kept call's from the checker).
 fn kind_of(r: &J) -> String {
     let ty = r["type"].as_str().unwrap_or("").to_string();
     if ty == "symbolic" {
@@ -54,7 +54,12 @@ fn every_builtin_on_a_free_symbol_gives_the_kind_numbers_give() {
                     b.name,
                     kind_of(&typed)
                 ));
-            } else if sym["type"] == "symbolic" && kind_of(&sym) != kind_of(&typed) {
+            } else if sym["type"] == "symbolic"
+                && kind_of(&sym) != kind_of(&typed)
+                // a call kept over its symbols whose kind depends on the
+                // numbers (`eye(a)`, `log` of a literal) is a matrix
+                && (sym.get("latex").is_some() || kind_of(&sym) != "matrix")
+            {
                 found.push(format!(
                     "{}: `{expr}` is {}, typed first {}",
                     b.name,

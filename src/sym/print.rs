@@ -208,10 +208,12 @@ pub fn symbol(s: &Symbol, st: Style) -> String {
     if s.dots == 0 {
         return s.name.to_string();
     }
-    if s.dots > 2 {
+    let greek = GREEK.iter().find(|(w, _, _)| *w == base).map(|g| g.1);
+    // beyond two dots, or over a name of several letters (`th`: a dot over
+    // the first would read ṫh), the rate as it is typed: th', q'''
+    if s.dots > 2 || (greek.is_none() && base.chars().count() > 1) {
         return format!("{}{}", s.name, "'".repeat(s.dots as usize));
     }
-    let greek = GREEK.iter().find(|(w, _, _)| *w == base).map(|g| g.1);
     let mut chars = base.chars();
     let first = greek.or_else(|| chars.next()).unwrap_or('?');
     let rest: String = if greek.is_some() {
@@ -577,5 +579,14 @@ mod tests {
             digits: 4,
         };
         assert_eq!(expr(&Expr::symbol(th.dot()), latex), "\\dot\\theta");
+        // a name of several letters: the rate as typed, the LaTeX dot over
+        // the whole name
+        let th = Symbol::timed("th1");
+        assert_eq!(expr(&Expr::symbol(th.dot()), Style::default()), "th1'");
+        assert_eq!(
+            expr(&Expr::symbol(th.dot().dot()), Style::default()),
+            "th1''"
+        );
+        assert_eq!(expr(&Expr::symbol(th.dot()), latex), "\\dot{th}_1");
     }
 }
