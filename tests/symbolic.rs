@@ -714,3 +714,31 @@ fn ur5_product_of_exponentials_matches_numbers() {
         }
     }
 }
+
+#[test]
+fn long_factored_groups_break_inside_under_their_first_terms() {
+    // A tilted 4-joint chain: its entries' nested groups were printed on
+    // one long line; now every line fits in 100 columns, broken
+    // before a `+` or `-` inside the groups, under each group's first term.
+    let tilted = "given t1, t2, t3, t4 : scalar
+        S1 = (0, 0, 1, 0, 0, 0)
+        S2 = (0, 0.6, 0.8, -0.12, -0.08, 0.06)
+        S3 = (0.6, 0, 0.8, 0, -0.12, 0)
+        S4 = (0.8, 0.6, 0, -0.12, 0.16, 0.22)
+        T = exp([S1] t1) exp([S2] t2) exp([S3] t3) exp([S4] t4)";
+    let mut s = session();
+    let out = run(&mut s, tilted);
+    let wide: Vec<&str> = out.lines().filter(|l| l.chars().count() > 100).collect();
+    assert!(wide.is_empty(), "{wide:#?}");
+    assert!(
+        out.contains("T = [((0.2304 + (0.4096 + 0.2304 cos(t4) + 0.288 sin(t4)) cos(t3)"),
+        "{out}"
+    );
+    // `+ 0.1296 cos(t4)` continues the group opened at column 6
+    assert!(
+        out.contains(
+            " sin(t3)\n       + 0.1296 cos(t4) - 0.288 sin(t4)) cos(t2)\n      - ((0.56832"
+        ),
+        "{out}"
+    );
+}
