@@ -121,6 +121,10 @@ enum Role {
     Setup,
     Def,
     Read(usize),
+    /// The same name read again: typed first it warns no more (its
+    /// warnings were given at the call), and bound later neither (once
+    /// per binding of the numbers).
+    Again(usize),
     /// `z = y` read back at the end: a value read while its symbols were
     /// (partly) free, that keeps following them.
     Alias,
@@ -146,6 +150,9 @@ fn differ_given(case: &Case, given: &str, binds: &[(&str, String)]) -> Option<St
     for (i, r) in case.reads.iter().enumerate() {
         first.push((r.clone(), Role::Read(i)));
     }
+    for (i, r) in case.reads.iter().enumerate() {
+        first.push((r.clone(), Role::Again(i)));
+    }
     let mut later = vec![
         (given.to_string(), Role::Setup),
         (case.def.clone(), Role::Def),
@@ -161,6 +168,9 @@ fn differ_given(case: &Case, given: &str, binds: &[(&str, String)]) -> Option<St
     }
     for (i, r) in case.reads.iter().enumerate() {
         later.push((r.clone(), Role::Read(i)));
+    }
+    for (i, r) in case.reads.iter().enumerate() {
+        later.push((r.clone(), Role::Again(i)));
     }
     if single {
         later.push(("z".to_string(), Role::Alias));
@@ -193,7 +203,7 @@ fn differ_given(case: &Case, given: &str, binds: &[(&str, String)]) -> Option<St
         let honest = l.len() > ld
             && l[ld].failed
             && l[ld].notes.first().is_some_and(|m| {
-                ["needs numbers", "not the symbol", "cannot decide"]
+                ["needs numbers", "not the symbol"]
                     .iter()
                     .any(|k| m.contains(k))
             });
@@ -233,11 +243,18 @@ fn differ_given(case: &Case, given: &str, binds: &[(&str, String)]) -> Option<St
         {
             return Some(format!("read while free, then bound: {}", show()));
         }
+        // a name read again prints the same and warns as typed first: no
+        // more (bound later, once per binding of the numbers)
+        for (i, _) in case.reads.iter().enumerate() {
+            let (a, b) = (at(&first, Role::Again(i))?, at(&later, Role::Again(i))?);
+            if f[a].out != l[b].out || f[a].notes != l[b].notes {
+                return Some(format!("read again: {}", show()));
+            }
+        }
         // warnings: typed first's at the call and reads, bound later's at
         // the reads (the symbolic call's own notes are about the formula)
         let mut want: Vec<String> = f[fd..].iter().flat_map(|s| s.notes.clone()).collect();
-        // (each read of a value bound later computes it, and warns again:
-        // the alias read at the end is not counted)
+        // (the alias read at the end is another value: not counted)
         let first_read = at(&later, Role::Read(0))?;
         let mut got: Vec<String> = l[first_read..]
             .iter()

@@ -211,23 +211,15 @@ impl Interp<'_> {
 
     fn var(&mut self, name: Name, span: Span) -> Result<Typed, Diagnostic> {
         if let Some(b) = self.env.get(name) {
+            let mut warnings = Vec::new();
             let v = if self.running() {
-                let mut warnings = Vec::new();
-                let v = super::substitute::current(b, self.env, &mut warnings).map_err(|e| {
+                super::substitute::current(b, self.env, &mut warnings).map_err(|e| {
                     Diagnostic::error(
                         ErrorKind::Domain,
                         span,
                         format!("{name} with the numbers bound since: {}", e.0),
                     )
-                })?;
-                // (the warnings of the steps replayed, at the name read)
-                for mut w in warnings {
-                    w.span = span;
-                    if !self.warnings.iter().any(|x| x.message == w.message) {
-                        self.warnings.push(w);
-                    }
-                }
-                v
+                })?
             } else {
                 None
             };
@@ -239,6 +231,16 @@ impl Interp<'_> {
                 }
                 _ => b.ty,
             };
+            // (the warnings of the steps replayed, at the name read: once
+            // per binding of the numbers it reads, as typed first)
+            if !warnings.is_empty() {
+                for mut w in self.env.fresh_warnings(name.as_str(), warnings) {
+                    w.span = span;
+                    if !self.warnings.iter().any(|x| x.message == w.message) {
+                        self.warnings.push(w);
+                    }
+                }
+            }
             return Ok(Typed::new(ty, v));
         }
         let name = name.as_str();

@@ -359,6 +359,7 @@ impl Interp<'_> {
                     val: None,
                     symbolic: false,
                     derived: false,
+                    stamp: 0,
                 },
             );
         }
@@ -423,6 +424,7 @@ impl Interp<'_> {
                             val: Some(v),
                             symbolic: false,
                             derived: false,
+                            stamp: 0,
                         },
                     );
                 }

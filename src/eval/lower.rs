@@ -319,6 +319,21 @@ impl Interp<'_> {
         {
             *val = Some(Box::new(n));
         }
+        // (a comparison waiting for numbers says so where it is shown)
+        if let Some(w) = val.as_deref().and_then(crate::values::waiting::first) {
+            let note = Diagnostic::note(
+                crate::diagnostics::ErrorKind::Domain,
+                span,
+                format!(
+                    "cannot decide `{}` without numbers: it is decided once {}",
+                    crate::values::waiting::text(w, 4.into()).unwrap_or_default(),
+                    crate::values::waiting::once(w)
+                ),
+            );
+            if !self.warnings.iter().any(|w| w.message == note.message) {
+                self.warnings.push(note);
+            }
+        }
         if let Some(v) = val.as_deref()
             && let Value::Sym(s) = v
             && let Some((l, assumed)) = self.lower(s, true, span)

@@ -26,5 +26,6 @@ mod slice;
 mod substitute;
 mod symbols;
 mod user_fn;
+mod warned;
 
 pub use crate::values::{convert, formula, ops, symbolic, value};

@@ -77,7 +77,16 @@ pub fn value_latex(v: &Value, style: Style) -> Option<String> {
         return Some(formula_latex(&m, style));
     }
     match v {
-        Value::Formula { m, .. } => Some(formula_latex(m, style)),
+        Value::Formula { m, .. } => Some(
+            crate::values::waiting::text(
+                v,
+                Style {
+                    sym: crate::sym::print::Mode::Latex,
+                    ..style
+                },
+            )
+            .unwrap_or_else(|| formula_latex(m, style)),
+        ),
         Value::Num { m, .. } if m.len() > 1 => Some(matrix_latex(m, style)),
         _ => None,
     }

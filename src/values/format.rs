@@ -158,7 +158,10 @@ pub fn write_inline(out: &mut String, v: &Value, style: Style) {
             let _ = write!(out, "{t:?}");
         }
         Value::Picture(p) => out.push_str(&picture(p)),
-        Value::Formula { m, .. } => out.push_str(&formula_inline(m, style)),
+        Value::Formula { m, .. } => match super::waiting::text(v, style) {
+            Some(t) => out.push_str(&t),
+            None => out.push_str(&formula_inline(m, style)),
+        },
     }
 }
 

@@ -26,3 +26,4 @@ pub mod ops;
 pub mod recipe;
 pub mod symbolic;
 pub mod value;
+pub mod waiting;
