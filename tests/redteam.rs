@@ -208,3 +208,81 @@ fn diff_of_a_kept_call_bound_later_is_refused_not_zero() {
         "{v:?}"
     );
 }
+
+// ------------------------------------------------ exact numbers (session 9)
+
+/// What `src` prints under `--exact` (failing on an error).
+fn exact_printed(src: &str) -> String {
+    let mut s = chasles::session::Session::new(chasles::session::Settings {
+        exact: true,
+        ..Default::default()
+    });
+    let (out, err, n) = s.run_to_strings("t.chs", src, chasles::eval::env::Mode::Run, false);
+    assert_eq!(n, 0, "{src}\n{err}");
+    out
+}
+
+/// `--exact` prints an exact decimal with every place it has, not
+/// rounded to `--digits` (`0.12345` printed `0.1235`, `-0.00561` printed
+/// `-0.0056`), and an integer beyond a float's digits in full (10²⁰ + 1
+/// printed `1e20`, alone and in a vector). Found by
+/// `tests/exact_differential.rs`.
+#[test]
+fn exact_output_prints_every_digit_of_an_exact_decimal() {
+    assert_eq!(exact_printed("0.12345"), "0.12345\n");
+    assert_eq!(exact_printed("-0.00561"), "-0.00561\n");
+    assert_eq!(exact_printed("10^20 + 1"), "100000000000000000001\n");
+    assert_eq!(
+        exact_printed("(10^20 + 1, 1/3)"),
+        "(100000000000000000001, 1/3)  : 2-vector\n"
+    );
+    assert_eq!(
+        exact_printed("[0.12345, 1; 2, 3]"),
+        "[0.12345, 1\n       2, 3]  : 2×2 matrix\n"
+    );
+    // what prints exactly anyway prints as before
+    assert_eq!(
+        exact_printed("0.866\n1e20\n(1e-13, 2)"),
+        "0.866\n1e20\n(1e-13, 2)  : 2-vector\n"
+    );
+}
+
+/// `--exact` of a value whose floats cancelled prints its exact value:
+/// `(0.1 − 10¹³) + 10¹³` is 1/10 (its float is 0.099609375, and `--exact`
+/// printed `0.0996`, taking the float for the decimal it stands for).
+#[test]
+fn exact_output_of_cancelled_floats_is_the_exact_value() {
+    assert_eq!(exact_printed("(0.1 - 10^13) + 10^13"), "0.1\n");
+    assert_eq!(exact_printed("(0.1 - 10^13) + 10^13 == 0.1"), "true\n");
+}
+
+/// A decimal coefficient of 16 or more digits prints every digit:
+/// `(9999 + 0.999999999999) t` printed `10000 t` (the fraction's float,
+/// two roundings), and `(11 + 1e-13) t` panicked (a debug build) or
+/// printed an exponent of −18446744073709551615 (a release build: the
+/// value 0).
+#[test]
+fn long_decimal_coefficients_print_their_value() {
+    let out = common::printed("given t\n(9999 + 0.999999999999)*t\n(11 + 1e-13)*t");
+    assert_eq!(out, "9999.999999999999 t\n1.10000000000001e1 t\n");
+}
+
+/// A number literal of more than 15 significant digits is the decimal
+/// written, not its float read back: `1.00000000000000001 == 1` and
+/// `10000000000000000001 == 10^19` were true.
+#[test]
+fn long_literals_are_the_decimals_written() {
+    let out = common::printed(
+        "1.00000000000000001 == 1\n10000000000000000001 == 10^19\n\
+         10000000000000000001 == 10^19 + 1\ngiven t\n1.00000000000000001*t == t",
+    );
+    assert_eq!(out, "false\nfalse\ntrue\nfalse\n");
+    assert_eq!(
+        exact_printed("10000000000000000001"),
+        "10000000000000000001\n"
+    );
+    assert_eq!(
+        exact_printed("1.00000000000000001"),
+        "1.00000000000000001\n"
+    );
+}

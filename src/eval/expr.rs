@@ -188,6 +188,8 @@ impl Interp<'_> {
     fn literal(&self, x: f64, span: Span) -> Value {
         let exact = if x == std::f64::consts::PI {
             self.pi_literal(span)
+        } else if span.end - span.start > 15 {
+            self.long_literal(x, span)
         } else {
             Exact::Typed
         };
@@ -195,6 +197,20 @@ impl Interp<'_> {
             kind: Kind::Scalar,
             m: crate::values::num::Num::Scalar(x),
             exact,
+        }
+    }
+
+    /// The exact form of a literal of more than 15 characters: the
+    /// decimal written, when its float does not read back as it (more
+    /// than 15 significant digits: `1.00000000000000001` is not 1, nor
+    /// `10000000000000000001` 10¹⁹).
+    #[cold]
+    fn long_literal(&self, x: f64, span: Span) -> Exact {
+        match crate::values::exact::written(self.text(span).trim()) {
+            Some(r) if Some(&r) != crate::values::exact::decimal(x).as_ref() => Exact::known(
+                crate::sym::Mat::scalar(crate::sym::Expr::constant(crate::sym::coef::Coef::rat(r))),
+            ),
+            _ => Exact::Typed,
         }
     }
 

@@ -17,6 +17,7 @@ pub mod list;
 mod lower;
 mod naming;
 mod notation;
+mod operation;
 mod order;
 mod paren_product;
 mod replay;

@@ -249,15 +249,7 @@ fn step(r: &Recipe, at: Lookup, memo: &mut Memo) -> Option<Value> {
                 }
             };
         }
-        Step::Neg => Op::Neg,
-        Step::Degrees => Op::Degrees,
-        Step::Arith(op) => Op::Arith(*op),
-        Step::Transpose => Op::Transpose,
-        Step::Member(part) => Op::Member(*part),
-        Step::Index(sels) => Op::Index(sels),
-        Step::Block(widths) => Op::Block(widths),
-        Step::Vector => Op::Vector,
-        Step::Call(name) => Op::Call(crate::builtins::lookup(name)?, name),
+        Step::Op(o) => Op::of(o)?,
     };
     // (the kind as the checker gives it for these numbers typed first)
     let kind = rule_kind(op, &refs).unwrap_or(r.kind);

@@ -70,9 +70,12 @@ pub fn value_latex(v: &Value, style: Style) -> Option<String> {
     // `:exact`: a value with an exact form prints it (LANGUAGE.md §10).
     if style.exact
         && v.may_be_exact()
-        && let Some(m) = v
-            .exact_form()
-            .filter(|m| !crate::values::exact::prints_as_decimals(m))
+        && let Some(m) = v.exact_form().filter(|m| match v {
+            Value::Num { m: floats, .. } => {
+                !crate::values::exact::prints_as_decimals(m, style.digits, floats)
+            }
+            _ => true,
+        })
     {
         return Some(formula_latex(&m, style));
     }

@@ -48,14 +48,17 @@ pub fn exact_text(v: &Value, style: Style) -> Option<Mat> {
     if !style.exact || style.sym == Mode::Latex || !v.may_be_exact() {
         return None;
     }
-    exact_form_text(v)
+    exact_form_text(v, style.digits)
 }
 
 /// [`exact_text`] once `--exact` asks for it.
 #[cold]
-fn exact_form_text(v: &Value) -> Option<Mat> {
+fn exact_form_text(v: &Value, digits: usize) -> Option<Mat> {
+    let Value::Num { m: floats, .. } = v else {
+        return v.exact_form();
+    };
     v.exact_form()
-        .filter(|m| !super::exact::prints_as_decimals(m))
+        .filter(|m| !super::exact::prints_as_decimals(m, digits, floats))
 }
 
 impl From<usize> for Style {

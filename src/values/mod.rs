@@ -22,6 +22,7 @@ pub mod formula;
 pub mod linalg;
 pub mod num;
 pub mod number;
+pub mod operation;
 pub mod ops;
 pub mod recipe;
 pub mod symbolic;
