@@ -15,6 +15,7 @@ use std::rc::Rc;
 use super::value::{Sym, Value};
 use crate::diagnostics::Diagnostic;
 use crate::sym::Symbol;
+use crate::values::operation::Operation;
 use crate::values::recipe::{self, Recipe, Step};
 
 /// The most values remembered (the oldest are forgotten first: a value
@@ -111,7 +112,7 @@ fn origin(v: &Value) -> Option<Origin> {
     Some(Origin::Made(match (&r.step, r.args.as_slice()) {
         // a part of a call's tuple, or an entry of its vector (the angles
         // of `(r, p, w) = euler_zyx(…)`, each `v[i]`): the call's
-        (Step::Part(_) | Step::Index(_), [whole]) => whole.clone(),
+        (Step::Part(_) | Step::Op(Operation::Index(_)), [whole]) => whole.clone(),
         _ => r.clone(),
     }))
 }
