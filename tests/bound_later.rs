@@ -496,3 +496,52 @@ fn a_value_bound_later_warns_once_per_binding_of_its_numbers() {
     let parts = "given a\n(r, p, w) = euler_zyx(Roty(a))\na = pi/2\nr\np\nw\nr";
     assert_eq!(count(parts), 1);
 }
+
+/// A range with a bound made from symbols waits for their numbers (issue
+/// 21: `0:a:1` over a free `a` was refused): shown as typed, with why it
+/// has no items yet, and once bound it is the list typed first gives —
+/// refused where typed first is (step 0, inf). What is computed from it
+/// item by item (a comprehension) or needs its items (`len`) before then
+/// is refused, saying to bind the numbers first.
+#[test]
+fn ranges_wait_for_numbers() {
+    for (range, at) in [
+        ("0:a:1", "0.25"),
+        ("a:3", "0"),
+        ("a:3", "5"),
+        ("(a+1):2:9", "0"),
+        ("0:pi/a:pi", "8"),
+    ] {
+        let later = common::json(&format!("given a\nr = {range}\na = {at}\nr\nlen(r)"));
+        let first = common::json(&format!("a = {at}\nr = {range}\nr\nlen(r)"));
+        let n = later.len();
+        let m = first.len();
+        for k in 1..=2 {
+            for field in ["type", "value"] {
+                assert_eq!(later[n - k][field], first[m - k][field], "{range} at {at}");
+            }
+        }
+    }
+    let (out, err) = common::outputs("given a\nr = 0:a:1\nr");
+    assert_eq!(
+        out.lines().last(),
+        Some("0:a:1  : list of numbers"),
+        "{out}"
+    );
+    assert!(
+        err.contains("the range `0:a:1` has no items without numbers"),
+        "{err}"
+    );
+    let e = common::error("given a\nr = 0:a:1\na = 0\nr");
+    assert!(
+        e.contains("a range with step 0 never reaches its end"),
+        "{e}"
+    );
+    let e = common::error("given a\ny = [k^2 for k in 0:a]");
+    assert!(
+        e.contains("a comprehension needs numbers to run over: 0:a waits for a"),
+        "{e}"
+    );
+    let e = common::error("given a\nn = len(0:a:1)");
+    assert!(e.contains("needs numbers"), "{e}");
+}

@@ -197,9 +197,9 @@ fn differ_given(case: &Case, given: &str, binds: &[(&str, String)]) -> Option<St
         if f.len() <= fd {
             return None; // (a number itself is refused: nothing to compare)
         }
-        // an honest refusal where the value needs numbers to exist (a
-        // range's length, a picture, a count) or an order of free symbols
-        // that cannot be decided (§7: said, never guessed)
+        // an honest refusal where the value needs numbers to exist (the
+        // length of a range still waiting for them, a picture, a count);
+        // an order of free symbols is no refusal: it waits for its numbers
         let honest = l.len() > ld
             && l[ld].failed
             && l[ld].notes.first().is_some_and(|m| {
@@ -371,6 +371,17 @@ const OPERATORS: &[&str] = &[
     "Rotz(a) * (1, 0, 0)",
     "exp([(0, 0, 1)] a)",
     "exp([(0, 0, 1, 0, a, 0)] 1)",
+    // orders wait for their numbers (issue 21), exact numbers exactly
+    "a < a + 1",
+    "a - a < 1",
+    "a^2 + 1 > 0",
+    "sqrt(a) sqrt(a) <= a",
+    "cos(a) >= 1/2",
+    // ranges wait for their numbers, then are the list typed first gives
+    "0:a:3",
+    "a:5",
+    "1:0.5:a",
+    "(a - 1):a:(a + 3)",
 ];
 
 #[test]

@@ -27,6 +27,8 @@ use chasles::session::{Report, Session, Settings};
 
 #[path = "sym_differential/cases.rs"]
 mod cases;
+#[path = "exact_differential/matrix.rs"]
+mod emat;
 #[path = "exact_differential/gen.rs"]
 mod generator;
 #[path = "exact_differential/hp.rs"]
@@ -34,6 +36,7 @@ mod hp;
 #[path = "exact_differential/read.rs"]
 mod read;
 
+use emat::M;
 use generator::{E, V};
 use hp::H;
 
@@ -92,54 +95,60 @@ fn numbers(v: &serde_json::Value) -> Vec<f64> {
     }
 }
 
-/// (a): the printed number is the value to within its rounding bound.
-fn check_value(what: &str, line: &Line, v: &V) -> Result<(), String> {
+/// (a): the printed numbers are the values to within their rounding
+/// bounds.
+fn check_value(what: &str, line: &Line, vs: &[V]) -> Result<(), String> {
     if let Some(e) = &line.error {
-        return Err(format!(
-            "{what}: error `{e}` for a defined value {}",
-            v.h.to_f64()
-        ));
+        return Err(format!("{what}: error `{e}` for a defined value"));
     }
     let got = line.json.as_ref().map(numbers).unwrap_or_default();
-    let [x] = got.as_slice() else {
-        return Err(format!("{what}: not one number: {:?}", line.json));
-    };
-    let want = v.h.to_f64();
-    let tol = 8.0 * v.err + 4.0 * f64::EPSILON * want.abs() + 1e-300;
-    if (x - want).abs() > tol {
-        return Err(format!(
-            "{what}: printed {x:e}, the value is {want:e} (bound {tol:e})"
-        ));
+    if got.len() != vs.len() {
+        return Err(format!("{what}: not {} numbers: {:?}", vs.len(), line.json));
+    }
+    for (k, (x, v)) in got.iter().zip(vs).enumerate() {
+        let want = v.h.to_f64();
+        let tol = 8.0 * v.err + 4.0 * f64::EPSILON * want.abs() + 1e-300;
+        if (x - want).abs() > tol {
+            return Err(format!(
+                "{what}: entry {k} printed {x:e}, the value is {want:e} (bound {tol:e})"
+            ));
+        }
     }
     Ok(())
 }
 
-/// (f): what `--exact` prints is exactly the value when the value is
-/// exact, and anything that looks exact (a root, π, a fraction) is.
-fn check_exact_text(what: &str, line: &Line, v: &V) -> Result<(), String> {
+/// (f): what `--exact` prints is exactly the value when every entry is
+/// exact, and any entry that looks exact (a root, π, a fraction) is.
+fn check_exact_text(what: &str, line: &Line, vs: &[V]) -> Result<(), String> {
     let text = line.exact_text.trim();
     let text = text.split_once(" = ").map_or(text, |(_, t)| t);
     let read = read::entries(text).map_err(|e| format!("{what}: --exact `{text}`: {e}"))?;
-    let [r] = read.as_slice() else {
-        return Err(format!("{what}: --exact `{text}` is not one number"));
-    };
-    let same = hp::same(&r.value, &v.h);
-    if (v.exact || r.claims_exact) && !same {
+    if read.len() != vs.len() {
         return Err(format!(
-            "{what}: --exact prints `{text}` = {:e}, the value is {:e}{}",
-            r.value.to_f64(),
-            v.h.to_f64(),
-            if v.exact { " (exact)" } else { "" }
+            "{what}: --exact `{text}` is not {} numbers",
+            vs.len()
         ));
     }
-    if !same {
-        // a rounded decimal: to the printed digits
-        let want = v.h.to_f64();
-        let got = r.value.to_f64();
-        if (got - want).abs() > 5.1e-5 * want.abs().max(1.0) + 8.0 * v.err {
+    let exact = vs.iter().all(|v| v.exact);
+    for (k, (r, v)) in read.iter().zip(vs).enumerate() {
+        let same = hp::same(&r.value, &v.h);
+        if (exact || r.claims_exact) && !same {
             return Err(format!(
-                "{what}: --exact prints `{text}`, the value is {want:e}"
+                "{what}: --exact prints `{text}`: entry {k} = {:e}, the value is {:e}{}",
+                r.value.to_f64(),
+                v.h.to_f64(),
+                if exact { " (exact)" } else { "" }
             ));
+        }
+        if !same {
+            // a rounded decimal: to the printed digits
+            let want = v.h.to_f64();
+            let got = r.value.to_f64();
+            if (got - want).abs() > 5.1e-5 * want.abs().max(1.0) + 8.0 * v.err {
+                return Err(format!(
+                    "{what}: --exact prints `{text}`: entry {k} is {want:e}"
+                ));
+            }
         }
     }
     Ok(())
@@ -168,7 +177,8 @@ fn rounding_note(line: &Line) -> bool {
 /// end of a run.
 #[derive(Default)]
 struct Tally {
-    /// `==` true on two floats with no exact form that are the same float.
+    /// `==` true on sides with a float among them whose floats are a few
+    /// units in the last place apart (or the same).
     float_true: u64,
     /// `==` false with the rounding note where the values are equal.
     float_false: u64,
@@ -179,6 +189,8 @@ struct Tally {
     /// `==` false with no note on floats that cancelled (equal values,
     /// floats apart by more than 1e-12 relative but within rounding).
     cancelled: u64,
+    /// Pairs checked (the others were out of the oracle's range).
+    checked: u64,
 }
 
 thread_local!(static TALLY: std::cell::RefCell<Tally> = std::cell::RefCell::new(Tally::default()));
@@ -189,11 +201,11 @@ fn judge(
     what: &str,
     got: Option<bool>,
     line: &Line,
-    (x, y): (&V, &V),
+    (x, y): (&[V], &[V]),
     (floats_equal, within_rounding): (bool, bool),
 ) -> Result<(), String> {
-    let equal = hp::same(&x.h, &y.h);
-    let exact = x.exact && y.exact;
+    let equal = x.iter().zip(y).all(|(p, q)| hp::same(&p.h, &q.h));
+    let exact = x.iter().chain(y).all(|v| v.exact);
     let note = rounding_note(line);
     match (got, equal) {
         (None, _) => {
@@ -217,10 +229,12 @@ fn judge(
                 TALLY.with(|t| t.borrow_mut().float_true += 1);
                 return Ok(());
             }
-            Err(format!(
-                "{what}: true, but the sides differ by {:e}",
-                x.h.sub(&y.h).to_f64()
-            ))
+            let d = x
+                .iter()
+                .zip(y)
+                .map(|(p, q)| p.h.sub(&q.h).to_f64().abs())
+                .fold(0.0, f64::max);
+            Err(format!("{what}: true, but the sides differ by {d:e}"))
         }
         (Some(false), true) => {
             if exact {
@@ -248,41 +262,72 @@ fn check_scalars((ex, ey): &(E, E)) -> Result<(), String> {
     let (Some(x), Some(y)) = (ex.eval(), ey.eval()) else {
         return Ok(());
     };
+    check_pair(&ex.src(), &ey.src(), &[x], &[y])
+}
+
+/// One pair of matrices: every check (a)–(f).
+fn check_matrices((mx, my): &(M, M)) -> Result<(), String> {
+    let (Some(x), Some(y)) = (mx.eval(), my.eval()) else {
+        return Ok(());
+    };
+    if x.n != y.n {
+        return Ok(());
+    }
+    check_pair(&mx.src(), &my.src(), &x.e, &y.e)
+}
+
+/// Checks (a)–(f) on values `x` and `y` typed as `xs` and `ys`.
+fn check_pair(xs: &str, ys: &str, x: &[V], y: &[V]) -> Result<(), String> {
     // values too large or small for an f64 are not this test's subject
-    if [&x, &y].iter().any(|v| {
+    if x.iter().chain(y).any(|v| {
         let f = v.h.to_f64().abs();
         !(f == 0.0 || (1e-250..1e250).contains(&f)) || !v.err.is_finite()
     }) {
         return Ok(());
     }
-    let (xs, ys) = (ex.src(), ey.src());
     let src = format!(
         "x = {xs}\ny = {ys}\nx == y\nx ~= y\ngiven t\n({xs})*t == ({ys})*t\nu = ({xs})*t\nt = 1\nu == x\nu\n"
     );
+    TALLY.with(|t| t.borrow_mut().checked += 1);
     let ctx = |e: String| format!("{e}\n--- script:\n{src}");
     let lines = std::panic::catch_unwind(|| run(&src))
         .map_err(|p| ctx(format!("panicked: {:?}", p.downcast_ref::<String>())))?;
-    check_value("x", &lines[1], &x).map_err(ctx)?;
-    check_value("y", &lines[2], &y).map_err(ctx)?;
-    check_exact_text("x", &lines[1], &x).map_err(ctx)?;
-    check_exact_text("y", &lines[2], &y).map_err(ctx)?;
+    check_value("x", &lines[1], x).map_err(ctx)?;
+    check_value("y", &lines[2], y).map_err(ctx)?;
+    check_exact_text("x", &lines[1], x).map_err(ctx)?;
+    check_exact_text("y", &lines[2], y).map_err(ctx)?;
     let fx = lines[1].json.as_ref().map(numbers).unwrap_or_default();
     let fy = lines[2].json.as_ref().map(numbers).unwrap_or_default();
+    // (floats a few units in the last place apart: a float side compared
+    // with an exact one may read the exact one as its nearest float or
+    // as computed, one rounding apart)
     let floats = (
-        fx == fy,
-        fx.len() == 1 && fy.len() == 1 && (fx[0] - fy[0]).abs() <= 8.0 * (x.err + y.err),
+        fx.len() == fy.len()
+            && fx
+                .iter()
+                .zip(&fy)
+                .all(|(p, q)| (p - q).abs() <= 4.0 * f64::EPSILON * p.abs().max(q.abs())),
+        fx.iter()
+            .zip(&fy)
+            .zip(x.iter().zip(y))
+            .all(|((p, q), (u, v))| (p - q).abs() <= 8.0 * (u.err + v.err)),
     );
     // (b), (d)
     let eq = bool_of("x == y", &lines[3]).map_err(ctx)?;
     if eq.is_none() {
         return Err(ctx("x == y on numbers undecided".into()));
     }
-    judge("x == y", eq, &lines[3], (&x, &y), floats).map_err(ctx)?;
+    judge("x == y", eq, &lines[3], (x, y), floats).map_err(ctx)?;
     // (e): ≈ within 1e-9 of the larger (away from the boundary)
     let approx = bool_of("x ~= y", &lines[4]).map_err(ctx)?;
-    let scale = x.size().max(y.size()).max(1.0);
-    let gap = x.h.sub(&y.h).to_f64().abs() / scale;
-    let slack = 4.0 * (x.err + y.err) / scale;
+    let scale = x.iter().chain(y).map(V::size).fold(1.0, f64::max);
+    let gap = x
+        .iter()
+        .zip(y)
+        .map(|(p, q)| p.h.sub(&q.h).to_f64().abs())
+        .fold(0.0, f64::max)
+        / scale;
+    let slack = 4.0 * x.iter().chain(y).map(|v| v.err).fold(0.0, f64::max) / scale;
     if gap + slack < 0.5e-9 && approx != Some(true) {
         return Err(ctx(format!(
             "x ~= y: {approx:?}, but they differ by {gap:e} relative"
@@ -295,22 +340,23 @@ fn check_scalars((ex, ey): &(E, E)) -> Result<(), String> {
     }
     // (c): the same with a symbol in both sides
     let eq_t = bool_of("(x)*t == (y)*t", &lines[6]).map_err(ctx)?;
-    judge("(x)*t == (y)*t", eq_t, &lines[6], (&x, &y), floats).map_err(ctx)?;
-    if x.exact && y.exact && eq_t.is_some() && eq_t != eq {
+    judge("(x)*t == (y)*t", eq_t, &lines[6], (x, y), floats).map_err(ctx)?;
+    let exact = x.iter().chain(y).all(|v| v.exact);
+    if exact && eq_t.is_some() && eq_t != eq {
         return Err(ctx(format!(
             "x == y is {eq:?} but (x)*t == (y)*t is {eq_t:?}"
         )));
     }
     // bound later: u = x·t at t = 1 is x, exactly
     let back = bool_of("u == x", &lines[9]).map_err(ctx)?;
-    if x.exact && back != Some(true) {
+    if x.iter().all(|v| v.exact) && back != Some(true) {
         return Err(ctx(format!("u = (x)*t at t = 1: u == x is {back:?}")));
     }
-    if !x.exact && back == Some(false) && !rounding_note(&lines[9]) {
+    if back == Some(false) && !rounding_note(&lines[9]) {
         return Err(ctx("u = (x)*t at t = 1: u == x false with no note".into()));
     }
-    check_value("u", &lines[10], &x).map_err(ctx)?;
-    check_exact_text("u", &lines[10], &x).map_err(ctx)?;
+    check_value("u", &lines[10], x).map_err(ctx)?;
+    check_exact_text("u", &lines[10], x).map_err(ctx)?;
     Ok(())
 }
 
@@ -324,15 +370,34 @@ fn exact_numbers_agree_with_the_oracle() {
         generator::pair(),
         check_scalars,
     );
+    tally();
+}
+
+/// Prints the tallies of a run.
+fn tally() {
     TALLY.with(|t| {
         let t = t.borrow();
         eprintln!(
-            "honest but not ideal: float == true {}, float == false with the note {}, \
+            "{} pairs checked; honest but not ideal: float == true {}, float == false with the note {}, \
              the note on a real difference {}, undecided over a symbol {}, \
              cancelled floats == false with no note {}",
-            t.float_true, t.float_false, t.note_on_real_difference, t.undecided, t.cancelled
+            t.checked, t.float_true, t.float_false, t.note_on_real_difference, t.undecided, t.cancelled
         );
     });
+}
+
+/// (a)–(f) over random pairs of exact matrices: rotations of exact
+/// angles, transforms, products, inverses, transposes.
+#[test]
+fn exact_matrices_agree_with_the_oracle() {
+    TALLY.with(|t| *t.borrow_mut() = Tally::default());
+    cases::run(
+        "exact_matrices_agree_with_the_oracle",
+        cases::count(400, 0.2),
+        emat::pair(),
+        check_matrices,
+    );
+    tally();
 }
 
 /// The oracle and its reader agree with known values.

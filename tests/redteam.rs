@@ -286,3 +286,20 @@ fn long_literals_are_the_decimals_written() {
         "1.00000000000000001\n"
     );
 }
+
+/// `eye(n)` and `zeros(n)` are 0s and 1s as typed: a product of exact
+/// rotations equal to the identity is `== eye(3)` (it was false, "differ
+/// by rounding only": the call's float exact form replaced the
+/// builtin's typed one), alone, bound, with a symbol, and for transforms.
+/// Found by `tests/exact_differential.rs`.
+#[test]
+fn eye_and_zeros_are_exact() {
+    let out = common::printed(
+        "Rotx(2*pi/3) * Rotx(2*pi/3).T == eye(3)\n\
+         Rotx(2*pi/3) * inv(Rotx(2*pi/3)) == eye(3)\n\
+         T = RpToTrans(Rotz(pi/6), (1, 2, 3))\nT * inv(T) == eye(4)\n\
+         A = Rotx(2*pi/3) * Rotx(2*pi/3).T\nA - eye(3) == zeros(3)\n\
+         given t\nA*t == eye(3)*t",
+    );
+    assert_eq!(out.lines().filter(|l| *l == "true").count(), 5, "{out}");
+}

@@ -538,7 +538,7 @@ impl Interp<'_> {
         };
         let exact = op.exact_of(&vals, &ty.kind);
         let mut v = apply::call(b, vals, site)?;
-        v.set_exact(exact);
+        v.set_call_exact(exact);
         super::replay::not_finite_group(&v, b.name, span)?;
         let val = Some(v);
         Ok(Typed::new(refine(ty, &val), val))

@@ -319,16 +319,12 @@ impl Interp<'_> {
         {
             *val = Some(Box::new(n));
         }
-        // (a comparison waiting for numbers says so where it is shown)
+        // (a comparison or range waiting for numbers says so where it is shown)
         if let Some(w) = val.as_deref().and_then(crate::values::waiting::first) {
             let note = Diagnostic::note(
                 crate::diagnostics::ErrorKind::Domain,
                 span,
-                format!(
-                    "cannot decide `{}` without numbers: it is decided once {}",
-                    crate::values::waiting::text(w, 4.into()).unwrap_or_default(),
-                    crate::values::waiting::once(w)
-                ),
+                crate::values::waiting::note(w),
             );
             if !self.warnings.iter().any(|w| w.message == note.message) {
                 self.warnings.push(note);

@@ -45,6 +45,10 @@ pub enum Step {
     /// Its one operand, with the kind its name gave it when it was bound
     /// (`V_b = (…)` is a twist).
     Retag,
+    /// `start:end` (false) or `start:step:end` (true) over its three
+    /// bounds (the step 1 when none was typed): the list, once they have
+    /// numbers (`super::waiting`).
+    Range(bool),
     /// `a == b`, `a ≈ b`, `a < b`, …: a bool, decided with the numbers as
     /// typed first (over free symbols `==` asks for an identity).
     Compare(crate::syntax::ast::CmpOp),

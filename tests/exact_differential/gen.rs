@@ -291,6 +291,16 @@ impl E {
     }
 }
 
+/// −a.
+pub fn neg(a: &V) -> V {
+    V {
+        h: a.h.neg(),
+        rat: a.rat.clone().map(|x| -x),
+        pim: a.pim.clone().map(|x| -x),
+        ..a.clone()
+    }
+}
+
 /// An exact sin/cos/tan that is 0 within the oracle's rounding is 0
 /// (cos(−5π/2)), so that a root of it is 0 too.
 fn snap_zero(mut v: V) -> V {
@@ -302,7 +312,8 @@ fn snap_zero(mut v: V) -> V {
     v
 }
 
-fn add(a: &V, b: &V, minus: bool) -> V {
+/// a + b (a − b when `minus`).
+pub fn add(a: &V, b: &V, minus: bool) -> V {
     let h = if minus { a.h.sub(&b.h) } else { a.h.add(&b.h) };
     let size = a.size() + b.size();
     let rat = match (&a.rat, &b.rat) {
@@ -328,7 +339,8 @@ fn add(a: &V, b: &V, minus: bool) -> V {
     }
 }
 
-fn mul(a: &V, b: &V) -> V {
+/// a · b.
+pub fn mul(a: &V, b: &V) -> V {
     let h = a.h.mul(&b.h);
     let rat = match (&a.rat, &b.rat) {
         (Some(x), Some(y)) => Some(x * y),
@@ -494,7 +506,7 @@ fn cos15(k: i64) -> &'static str {
 }
 
 /// An angle: exact (p/q π, k deg) or a float (a decimal in radians).
-fn angle() -> impl Strategy<Value = E> {
+pub fn angle() -> impl Strategy<Value = E> {
     prop_oneof![
         3 => (-24i64..=24, 1i64..=12).prop_map(|(p, q)| E::Mul(b(E::Frac(p, q)), b(E::Pi))),
         1 => (-360i64..=360).prop_map(E::Deg),
