@@ -121,6 +121,10 @@ enum Role {
     Setup,
     Def,
     Read(usize),
+    /// The same name read again: typed first it warns no more (its
+    /// warnings were given at the call), and bound later neither (once
+    /// per binding of the numbers).
+    Again(usize),
     /// `z = y` read back at the end: a value read while its symbols were
     /// (partly) free, that keeps following them.
     Alias,
@@ -146,6 +150,9 @@ fn differ_given(case: &Case, given: &str, binds: &[(&str, String)]) -> Option<St
     for (i, r) in case.reads.iter().enumerate() {
         first.push((r.clone(), Role::Read(i)));
     }
+    for (i, r) in case.reads.iter().enumerate() {
+        first.push((r.clone(), Role::Again(i)));
+    }
     let mut later = vec![
         (given.to_string(), Role::Setup),
         (case.def.clone(), Role::Def),
@@ -161,6 +168,9 @@ fn differ_given(case: &Case, given: &str, binds: &[(&str, String)]) -> Option<St
     }
     for (i, r) in case.reads.iter().enumerate() {
         later.push((r.clone(), Role::Read(i)));
+    }
+    for (i, r) in case.reads.iter().enumerate() {
+        later.push((r.clone(), Role::Again(i)));
     }
     if single {
         later.push(("z".to_string(), Role::Alias));
@@ -187,13 +197,13 @@ fn differ_given(case: &Case, given: &str, binds: &[(&str, String)]) -> Option<St
         if f.len() <= fd {
             return None; // (a number itself is refused: nothing to compare)
         }
-        // an honest refusal where the value needs numbers to exist (a
-        // range's length, a picture, a count) or an order of free symbols
-        // that cannot be decided (§7: said, never guessed)
+        // an honest refusal where the value needs numbers to exist (the
+        // length of a range still waiting for them, a picture, a count);
+        // an order of free symbols is no refusal: it waits for its numbers
         let honest = l.len() > ld
             && l[ld].failed
             && l[ld].notes.first().is_some_and(|m| {
-                ["needs numbers", "not the symbol", "cannot decide"]
+                ["needs numbers", "not the symbol"]
                     .iter()
                     .any(|k| m.contains(k))
             });
@@ -233,11 +243,18 @@ fn differ_given(case: &Case, given: &str, binds: &[(&str, String)]) -> Option<St
         {
             return Some(format!("read while free, then bound: {}", show()));
         }
+        // a name read again prints the same and warns as typed first: no
+        // more (bound later, once per binding of the numbers)
+        for (i, _) in case.reads.iter().enumerate() {
+            let (a, b) = (at(&first, Role::Again(i))?, at(&later, Role::Again(i))?);
+            if f[a].out != l[b].out || f[a].notes != l[b].notes {
+                return Some(format!("read again: {}", show()));
+            }
+        }
         // warnings: typed first's at the call and reads, bound later's at
         // the reads (the symbolic call's own notes are about the formula)
         let mut want: Vec<String> = f[fd..].iter().flat_map(|s| s.notes.clone()).collect();
-        // (each read of a value bound later computes it, and warns again:
-        // the alias read at the end is not counted)
+        // (the alias read at the end is another value: not counted)
         let first_read = at(&later, Role::Read(0))?;
         let mut got: Vec<String> = l[first_read..]
             .iter()
@@ -386,6 +403,17 @@ const OPERATORS: &[&str] = &[
     "Rotz(a) * (1, 0, 0)",
     "exp([(0, 0, 1)] a)",
     "exp([(0, 0, 1, 0, a, 0)] 1)",
+    // orders wait for their numbers (issue 21), exact numbers exactly
+    "a < a + 1",
+    "a - a < 1",
+    "a^2 + 1 > 0",
+    "sqrt(a) sqrt(a) <= a",
+    "cos(a) >= 1/2",
+    // ranges wait for their numbers, then are the list typed first gives
+    "0:a:3",
+    "a:5",
+    "1:0.5:a",
+    "(a - 1):a:(a + 3)",
 ];
 
 #[test]

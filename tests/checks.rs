@@ -111,7 +111,7 @@ fn identity_is_sized_by_the_other_side() {
 
 /// Symbols: equal trees are equal, what cancels is `I`, symbolic scalars
 /// compare by canonical forms, and what neither settles (a kept call such
-/// as sqrt) is an honest domain error.
+/// as sqrt) says it cannot decide and waits for numbers (issue 21).
 #[test]
 fn symbolic_sides() {
     let (code, out, err) = run(&[
@@ -123,7 +123,13 @@ fn symbolic_sides() {
     // symbolic scalars compare by their canonical forms (§7)
     let (code, out, err) = run(&["-e", "given t : scalar\nt + 1.00001 == t + 1.00002"]);
     assert_eq!((code, out.as_str()), (0, "false\n"), "{err}");
-    let (code, _, err) = run(&["-e", "given t : scalar\nsqrt(t^2) == t"]);
+    let (code, out, err) = run(&["-e", "given t : scalar\nsqrt(t^2) == t"]);
+    assert_eq!((code, out.as_str()), (0, "abs(t) == t\n"), "{err}");
+    assert!(err.contains("note: cannot decide"), "{err}");
+    let (code, out, err) = run(&["-e", "given t : scalar\nc = sqrt(t^2) == t\nt = -2\nc"]);
+    assert_eq!((code, out.lines().last()), (0, Some("false")), "{err}");
+    // an assert cannot wait: refused, never passed
+    let (code, _, err) = run(&["-e", "given t : scalar\nassert sqrt(t^2) == t"]);
     assert_eq!(code, 1);
     assert!(err.contains("domain error: cannot decide"), "{err}");
 }

@@ -290,21 +290,13 @@ impl<'a> Op<'a> {
     /// a scalar the chain rule's steps, `super::chain`), `simplify` and
     /// `expand` give their operand's value.
     fn made(self) -> Made {
-        Made::Step(match self {
-            Op::Neg => Step::Neg,
-            Op::Degrees => Step::Degrees,
-            Op::Arith(op) => Step::Arith(op),
-            Op::Transpose => Step::Transpose,
-            Op::Member(part) => Step::Member(part),
-            Op::Index(sels) => Step::Index(sels.to_vec()),
-            Op::Block(widths) => Step::Block(widths.to_vec()),
-            Op::Vector => Step::Vector,
-            Op::Call(b, _) if matches!(b.name, "diff" | "subs") => return Made::Opaque,
-            Op::Call(b, _) if matches!(b.name, "simplify" | "expand") => return Made::Same,
-            Op::Call(b, name) => Step::Call(b.names().find(|n| *n == name).unwrap_or(b.name)),
+        match self {
+            Op::Call(b, _) if matches!(b.name, "diff" | "subs") => Made::Opaque,
+            Op::Call(b, _) if matches!(b.name, "simplify" | "expand") => Made::Same,
             // (no exact form makes an inverse: `inv` is a call)
-            Op::Inverse => return Made::Opaque,
-        })
+            Op::Inverse => Made::Opaque,
+            op => Made::Step(Step::Op(op.owned())),
+        }
     }
 
     /// Whether a formula operand, with no `given` symbol, makes the result

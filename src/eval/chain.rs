@@ -20,7 +20,7 @@ use std::rc::Rc;
 use super::value::Value;
 use crate::check::ty::Kind;
 use crate::syntax::ast::BinOp;
-use crate::values::recipe::{Recipe, Step};
+use crate::values::recipe::{Operation, Recipe, Step};
 
 /// A derivative: None for 0 (so that products with it vanish).
 type D = Option<Rc<Recipe>>;
@@ -138,7 +138,7 @@ fn arith(op: BinOp, a: Rc<Recipe>, b: Rc<Recipe>) -> Option<Rc<Recipe>> {
         (_, Kind::Scalar, kb) if op != BinOp::Pow => shape_of(&kb)?,
         (_, ka, _) => shape_of(&ka)?,
     };
-    node_k(Step::Arith(op), vec![a, b], k)
+    node_k(Step::Op(Operation::Arith(op)), vec![a, b], k)
 }
 
 /// The shape of a product of values of kinds `a` and `b`.
@@ -154,7 +154,7 @@ fn product(a: &Kind, b: &Kind) -> Option<Kind> {
 }
 
 fn call(name: &'static str, args: Vec<Rc<Recipe>>) -> Option<Rc<Recipe>> {
-    node(Step::Call(name), args)
+    node(Step::Op(Operation::Call(name)), args)
 }
 
 /// `a + b` of derivatives (0 + b = b).
@@ -196,7 +196,7 @@ fn neg(x: D) -> Option<D> {
         None => Some(None),
         Some(x) => {
             let k = x.kind;
-            Some(Some(node_k(Step::Neg, vec![x], k)?))
+            Some(Some(node_k(Step::Op(Operation::Neg), vec![x], k)?))
         }
     }
 }
@@ -227,13 +227,13 @@ impl Chain<'_> {
         let x = |i: usize| r.args.get(i).cloned();
         match &r.step {
             Step::Leaf(v) => self.leaf(v, &k),
-            Step::Neg => neg(self.of(&x(0)?)?),
+            Step::Op(Operation::Neg) => neg(self.of(&x(0)?)?),
             // x deg = x π/180
-            Step::Degrees => match self.of(&x(0)?)? {
+            Step::Op(Operation::Degrees) => match self.of(&x(0)?)? {
                 None => Some(None),
-                Some(dx) => Some(Some(node(Step::Degrees, vec![dx])?)),
+                Some(dx) => Some(Some(node(Step::Op(Operation::Degrees), vec![dx])?)),
             },
-            Step::Arith(op) => {
+            Step::Op(Operation::Arith(op)) => {
                 let (u, v) = (x(0)?, x(1)?);
                 let (du, dv) = (self.of(&u)?, self.of(&v)?);
                 match op {
@@ -267,8 +267,10 @@ impl Chain<'_> {
             }
             // a scalar part of a vector or matrix: the same part of its
             // derivative
-            Step::Index(_) | Step::Member(_) | Step::Retag => linear(&r.step, self.of(&x(0)?)?, k),
-            Step::Call(name) => self.call(name, &r.args),
+            Step::Op(Operation::Index(_) | Operation::Member(_)) | Step::Retag => {
+                linear(&r.step, self.of(&x(0)?)?, k)
+            }
+            Step::Op(Operation::Call(name)) => self.call(name, &r.args),
             _ => None,
         }
     }
@@ -278,11 +280,10 @@ impl Chain<'_> {
         let x = |i: usize| r.args.get(i).cloned();
         match &r.step {
             Step::Leaf(v) => self.leaf(v, &k),
-            Step::Neg => neg(self.of(&x(0)?)?),
-            Step::Transpose | Step::Index(_) | Step::Member(_) | Step::Retag => {
-                linear(&r.step, self.of(&x(0)?)?, k)
-            }
-            Step::Arith(op) => {
+            Step::Op(Operation::Neg) => neg(self.of(&x(0)?)?),
+            Step::Op(Operation::Transpose | Operation::Index(_) | Operation::Member(_))
+            | Step::Retag => linear(&r.step, self.of(&x(0)?)?, k),
+            Step::Op(Operation::Arith(op)) => {
                 let (u, v) = (x(0)?, x(1)?);
                 let (du, dv) = (self.of(&u)?, self.of(&v)?);
                 match op {
@@ -318,7 +319,7 @@ impl Chain<'_> {
                     _ => None,
                 }
             }
-            Step::Vector | Step::Block(_) => {
+            Step::Op(Operation::Vector | Operation::Block(_)) => {
                 let mut ds = Vec::with_capacity(r.args.len());
                 let mut any = false;
                 for a in &r.args {
@@ -331,7 +332,7 @@ impl Chain<'_> {
                 }
                 Some(Some(node_k(r.step.clone(), ds, k)?))
             }
-            Step::Call(name) => self.matrix_call(name, r, k),
+            Step::Op(Operation::Call(name)) => self.matrix_call(name, r, k),
             _ => None,
         }
     }
@@ -380,14 +381,18 @@ impl Chain<'_> {
                     return None;
                 }
                 let dt = self.of(&t)?;
-                let unit = node_k(Step::Call("Normalize"), vec![w], Kind::Vector(Some(3)))?;
-                let hat = node_k(Step::Call("VecToso3"), vec![unit], Kind::So3)?;
+                let unit = node_k(
+                    Step::Op(Operation::Call("Normalize")),
+                    vec![w],
+                    Kind::Vector(Some(3)),
+                )?;
+                let hat = node_k(Step::Op(Operation::Call("VecToso3")), vec![unit], Kind::So3)?;
                 let f = arith(BinOp::Mul, hat, r.clone());
                 times_after(dt, f?)
             }
             // d exp(A u) = A exp(A u) du for a constant A ([S] θ, [ω̂] θ)
             "exp" | "MatrixExp3" | "MatrixExp6" if args.len() == 1 => {
-                let Step::Arith(BinOp::Mul) = u.step else {
+                let Step::Op(Operation::Arith(BinOp::Mul)) = u.step else {
                     return None;
                 };
                 let (p, q) = (u.args.first()?.clone(), u.args.get(1)?.clone());
@@ -417,10 +422,18 @@ impl Chain<'_> {
                 let Some(du) = du else {
                     return Some(None);
                 };
-                let tinv = node_k(Step::Call("TransInv"), vec![u], Kind::SE3)?;
+                let tinv = node_k(Step::Op(Operation::Call("TransInv")), vec![u], Kind::SE3)?;
                 let body = arith(BinOp::Mul, tinv, du)?;
-                let v = node_k(Step::Call("se3ToVec"), vec![body], Kind::Vector(Some(6)))?;
-                let ad = node_k(Step::Call("ad"), vec![v], Kind::Matrix(Some(6), Some(6)))?;
+                let v = node_k(
+                    Step::Op(Operation::Call("se3ToVec")),
+                    vec![body],
+                    Kind::Vector(Some(6)),
+                )?;
+                let ad = node_k(
+                    Step::Op(Operation::Call("ad")),
+                    vec![v],
+                    Kind::Matrix(Some(6), Some(6)),
+                )?;
                 Some(Some(arith(BinOp::Mul, r.clone(), ad)?))
             }
             _ => None,
@@ -467,7 +480,7 @@ impl Chain<'_> {
                 };
                 return plus(a, b);
             }
-            "trace" => return linear(&Step::Call("trace"), du, Kind::Scalar),
+            "trace" => return linear(&Step::Op(Operation::Call("trace")), du, Kind::Scalar),
             _ if u.kind != Kind::Scalar => return None,
             "atan2" => {
                 // d atan2(u, w) = (w du − u dw) / (u² + w²)

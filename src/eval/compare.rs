@@ -68,6 +68,9 @@ struct Sides {
     l: Typed,
     r: Typed,
     verdict: Option<bool>,
+    /// Both sides have values, and the comparison cannot be decided
+    /// while their symbols are free.
+    undecided: bool,
 }
 
 impl Interp<'_> {
@@ -83,9 +86,44 @@ impl Interp<'_> {
         // (over symbols, the bool is decided again once they have numbers)
         let val = match (sides.verdict, sides.l.value(), sides.r.value()) {
             (Some(v), Some(a), Some(b)) => Some(crate::values::recipe::compared(v, op, a, b)),
+            // Undecided while its symbols are free: a bool that waits for
+            // their numbers and is then decided as typed first (§7).
+            (None, Some(a), Some(b)) if sides.undecided => {
+                match crate::values::waiting::make(op, a, b) {
+                    Some(w) => Some(w),
+                    None => return Err(self.undecided(op, lhs, rhs, op_span, false)),
+                }
+            }
             (v, ..) => v.map(Value::Bool),
         };
         Ok(Typed::new(Ty::plain(Kind::Bool), val))
+    }
+
+    /// "cannot decide `a < b` without numbers"; in an `assert`, which
+    /// checks its condition when it runs, the help says to bind first.
+    fn undecided(
+        &self,
+        op: CmpOp,
+        lhs: &Expr,
+        rhs: &Expr,
+        op_span: Span,
+        assert: bool,
+    ) -> Diagnostic {
+        Diagnostic::error(
+            ErrorKind::Domain,
+            op_span,
+            format!(
+                "cannot decide `{} {} {}` without numbers",
+                self.text(lhs.span).trim(),
+                op_text(op),
+                self.text(rhs.span).trim()
+            ),
+        )
+        .with_help(if assert {
+            "an assert checks its condition when it runs: bind numbers to the given names before it"
+        } else {
+            "bind numbers to the given names, then compare"
+        })
     }
 
     fn sides(
@@ -105,6 +143,7 @@ impl Interp<'_> {
         if let Err(e) = rule(&l.ty, &r.ty) {
             self.rule_failure(e, op_span, Some(lhs.span), Some(rhs.span), Some(op_span))?;
         }
+        let mut undecided = false;
         let verdict = match (l.val.as_deref(), r.val.as_deref()) {
             (Some(a), Some(b)) => match self
                 .lowered_equal(a, b, op, op_span)
@@ -116,23 +155,19 @@ impl Interp<'_> {
                 }
                 Ok(Some(v)) => Some(v),
                 Ok(None) => {
-                    return Err(Diagnostic::error(
-                        ErrorKind::Domain,
-                        op_span,
-                        format!(
-                            "cannot decide `{} {} {}` without numbers",
-                            self.text(lhs.span).trim(),
-                            op_text(op),
-                            self.text(rhs.span).trim()
-                        ),
-                    )
-                    .with_help("bind numbers to the given names, then compare"));
+                    undecided = true;
+                    None
                 }
                 Err(m) => return Err(Diagnostic::error(ErrorKind::Type, op_span, m)),
             },
             _ => None,
         };
-        Ok(Sides { l, r, verdict })
+        Ok(Sides {
+            l,
+            r,
+            verdict,
+            undecided,
+        })
     }
 
     /// `assert cond`: Ok when the condition holds (or, in `check`, when it
@@ -146,6 +181,10 @@ impl Interp<'_> {
         } = &cond.kind
         {
             let s = self.sides(*op, lhs, rhs, *op_span)?;
+            // (an assert over free symbols can neither pass nor fail)
+            if s.undecided {
+                return Err(self.undecided(*op, lhs, rhs, *op_span, true));
+            }
             if s.verdict != Some(false) {
                 return Ok(());
             }
@@ -162,6 +201,21 @@ impl Interp<'_> {
                 format!("assert needs a condition, not {}", t.ty.kind.a()),
             )
             .with_help("compare two values: assert a == b, or assert a ≈ b (typed ~=)"));
+        }
+        // (a comparison waiting for numbers can neither pass nor fail)
+        if let Some(w) = t.value().and_then(crate::values::waiting::first) {
+            return Err(Diagnostic::error(
+                ErrorKind::Domain,
+                cond.span,
+                format!(
+                    "cannot decide `{}` without numbers for {}",
+                    crate::values::waiting::text(w, 4.into()).unwrap_or_default(),
+                    crate::values::waiting::symbols(w)
+                ),
+            )
+            .with_help(
+                "an assert checks its condition when it runs: bind numbers to the given names before it",
+            ));
         }
         // (a comparison decided over free symbols is its bool)
         let shown = t.value().and_then(super::formula::constant_shown);

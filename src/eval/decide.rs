@@ -28,6 +28,10 @@ pub fn equal(a: &Value, b: &Value, op: CmpOp) -> Result<Option<bool>, String> {
         } => super::formula::constant_shown(v),
         _ => None,
     };
+    // (a comparison still waiting for numbers is neither true nor false)
+    if crate::values::waiting::sides(a).is_some() || crate::values::waiting::sides(b).is_some() {
+        return Ok(None);
+    }
     if let Some(x) = shown(a) {
         return equal(&x, b, op);
     }

@@ -143,6 +143,23 @@ pub struct Binding {
     /// and [`Env::set_value`] decide it from the value (a list is looked
     /// through once, when it is bound, not at every read).
     pub derived: bool,
+    /// When it was bound: [`Env::set`] and [`Env::set_value`] give each
+    /// binding a new stamp (a value bound later warns once per binding of
+    /// the numbers it reads, `super::warned`).
+    pub stamp: u64,
+}
+
+impl Binding {
+    /// A `given` symbol of type `ty` (its value the symbol itself).
+    pub fn given(ty: Ty, val: Value) -> Binding {
+        Binding {
+            ty,
+            val: Some(val),
+            symbolic: true,
+            derived: false,
+            stamp: 0,
+        }
+    }
 }
 
 /// Whether a binding of `v` is [`Binding::derived`].
@@ -184,6 +201,11 @@ pub struct Env {
     /// The `given` axes already said to be assumed unit vectors (the note
     /// of `super::lower`, once a session).
     pub(super) units_noted: Vec<String>,
+    /// The last stamp given to a binding ([`Binding::stamp`]).
+    stamp: u64,
+    /// The warnings given by reads of values bound later (once per
+    /// binding of their numbers).
+    pub(super) warned: super::warned::Warned,
 }
 
 /// The numbers a value holds, as the memory budget counts them
@@ -219,10 +241,35 @@ impl Env {
     #[inline]
     pub fn set(&mut self, name: impl AsKey, mut b: Binding) {
         b.derived = derived(b.val.as_ref());
+        self.stamp += 1;
+        b.stamp = self.stamp;
         self.held += binding_numbers(&b);
         if let Some(old) = self.vars.insert(name.key(), b) {
             self.held = self.held.saturating_sub(binding_numbers(&old));
         }
+    }
+    /// Of `warnings`, given by reading `name` now, those that reading the
+    /// same value with the same bindings of its symbols has not given
+    /// already (`super::warned`: once per binding of its numbers).
+    pub(super) fn fresh_warnings(
+        &mut self,
+        name: &str,
+        warnings: Vec<crate::diagnostics::Diagnostic>,
+    ) -> Vec<crate::diagnostics::Diagnostic> {
+        let mut warned = std::mem::take(&mut self.warned);
+        let out = match self.get(name) {
+            Some(Binding {
+                val: Some(v),
+                stamp,
+                ..
+            }) => {
+                let stamp_of = |n: &str| self.get(n).map_or(0, |b| b.stamp);
+                warned.keep(name, v, *stamp, &stamp_of, warnings)
+            }
+            _ => warnings,
+        };
+        self.warned = warned;
+        out
     }
     /// The numbers the bindings hold ([`numbers`]).
     pub fn held(&self) -> u64 {
@@ -233,6 +280,7 @@ impl Env {
     #[inline]
     pub fn set_value(&mut self, name: impl AsKey, ty: &Ty, val: Option<&Value>) {
         let key = name.key();
+        self.stamp += 1;
         match self.vars.get_mut(&key) {
             Some(old) => {
                 self.held = self.held.saturating_sub(binding_numbers(old)) + val.map_or(0, numbers);
@@ -245,6 +293,7 @@ impl Env {
                 }
                 old.symbolic = false;
                 old.derived = derived(val);
+                old.stamp = self.stamp;
             }
             None => {
                 self.held += val.map_or(0, numbers);
@@ -253,6 +302,7 @@ impl Env {
                     val: val.cloned(),
                     symbolic: false,
                     derived: derived(val),
+                    stamp: self.stamp,
                 };
                 self.vars.insert(key, b);
             }

@@ -118,18 +118,7 @@ impl Op<'_> {
 
     /// The recipe of this operation's exact form over `args`.
     fn pending(self, args: Operands, kind: &Kind) -> Exact {
-        let op = match self {
-            Op::Neg => Operation::Neg,
-            Op::Degrees => Operation::Degrees,
-            Op::Arith(o) => Operation::Arith(o),
-            Op::Inverse => Operation::Inverse,
-            Op::Transpose => Operation::Transpose,
-            Op::Member(part) => Operation::Member(part),
-            Op::Index(sels) => Operation::Index(sels.to_vec()),
-            Op::Block(widths) => Operation::Block(widths.to_vec()),
-            Op::Vector => Operation::Vector,
-            Op::Call(b, _) => Operation::Call(b.name),
-        };
+        let op = self.owned();
         Exact::pending(Pending {
             op,
             args,
@@ -168,18 +157,6 @@ fn run(op: &Operation, vals: &[&Value], kind: &Kind) -> Option<Mat> {
         .collect::<Option<Vec<Value>>>()?;
     let refs: Vec<&Value> = forms.iter().collect();
     let out = match op {
-        Operation::Neg => Op::Neg.formula(&refs, kind),
-        Operation::Degrees => Op::Degrees.formula(&refs, kind),
-        Operation::Arith(o) => Op::Arith(*o).formula(&refs, kind),
-        Operation::Inverse => Op::Inverse.formula(&refs, kind),
-        Operation::Transpose => Op::Transpose.formula(&refs, kind),
-        Operation::Member(part) => Op::Member(*part).formula(&refs, kind),
-        Operation::Index(sels) => Op::Index(sels).formula(&refs, kind),
-        Operation::Vector => Op::Vector.formula(&refs, kind),
-        Operation::Call(name) => {
-            let b = crate::builtins::lookup(name)?;
-            Op::Call(b, name).formula(&refs, kind)
-        }
         Operation::Block(widths) => {
             let mut rest = forms.into_iter();
             let rows: Vec<Vec<Value>> = widths
@@ -188,6 +165,7 @@ fn run(op: &Operation, vals: &[&Value], kind: &Kind) -> Option<Mat> {
                 .collect();
             Some(formula::brackets(&rows))
         }
+        op => Op::of(op)?.formula(&refs, kind),
     };
     match out?.ok()? {
         Value::Formula { m, .. } => crate::values::exact::is_exact(&m).then_some(m),

@@ -188,6 +188,8 @@ impl Interp<'_> {
     fn literal(&self, x: f64, span: Span) -> Value {
         let exact = if x == std::f64::consts::PI {
             self.pi_literal(span)
+        } else if span.end - span.start > 15 {
+            self.long_literal(x, span)
         } else {
             Exact::Typed
         };
@@ -195,6 +197,20 @@ impl Interp<'_> {
             kind: Kind::Scalar,
             m: crate::values::num::Num::Scalar(x),
             exact,
+        }
+    }
+
+    /// The exact form of a literal of more than 15 characters: the
+    /// decimal written, when its float does not read back as it (more
+    /// than 15 significant digits: `1.00000000000000001` is not 1, nor
+    /// `10000000000000000001` 10¹⁹).
+    #[cold]
+    fn long_literal(&self, x: f64, span: Span) -> Exact {
+        match crate::values::exact::written(self.text(span).trim()) {
+            Some(r) if Some(&r) != crate::values::exact::decimal(x).as_ref() => Exact::known(
+                crate::sym::Mat::scalar(crate::sym::Expr::constant(crate::sym::coef::Coef::rat(r))),
+            ),
+            _ => Exact::Typed,
         }
     }
 
@@ -211,23 +227,15 @@ impl Interp<'_> {
 
     fn var(&mut self, name: Name, span: Span) -> Result<Typed, Diagnostic> {
         if let Some(b) = self.env.get(name) {
+            let mut warnings = Vec::new();
             let v = if self.running() {
-                let mut warnings = Vec::new();
-                let v = super::substitute::current(b, self.env, &mut warnings).map_err(|e| {
+                super::substitute::current(b, self.env, &mut warnings).map_err(|e| {
                     Diagnostic::error(
                         ErrorKind::Domain,
                         span,
                         format!("{name} with the numbers bound since: {}", e.0),
                     )
-                })?;
-                // (the warnings of the steps replayed, at the name read)
-                for mut w in warnings {
-                    w.span = span;
-                    if !self.warnings.iter().any(|x| x.message == w.message) {
-                        self.warnings.push(w);
-                    }
-                }
-                v
+                })?
             } else {
                 None
             };
@@ -239,6 +247,16 @@ impl Interp<'_> {
                 }
                 _ => b.ty,
             };
+            // (the warnings of the steps replayed, at the name read: once
+            // per binding of the numbers it reads, as typed first)
+            if !warnings.is_empty() {
+                for mut w in self.env.fresh_warnings(name.as_str(), warnings) {
+                    w.span = span;
+                    if !self.warnings.iter().any(|x| x.message == w.message) {
+                        self.warnings.push(w);
+                    }
+                }
+            }
             return Ok(Typed::new(ty, v));
         }
         let name = name.as_str();
@@ -520,7 +538,7 @@ impl Interp<'_> {
         };
         let exact = op.exact_of(&vals, &ty.kind);
         let mut v = apply::call(b, vals, site)?;
-        v.set_exact(exact);
+        v.set_call_exact(exact);
         super::replay::not_finite_group(&v, b.name, span)?;
         let val = Some(v);
         Ok(Typed::new(refine(ty, &val), val))

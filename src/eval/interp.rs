@@ -274,15 +274,8 @@ impl<'a> Interp<'a> {
                     } else {
                         Value::Sym(super::value::Sym::Name(String::from(n.name)))
                     };
-                    self.env.set(
-                        n.name,
-                        Binding {
-                            ty: Ty::new(kind, frames),
-                            val: Some(val),
-                            symbolic: true,
-                            derived: false,
-                        },
-                    );
+                    self.env
+                        .set(n.name, Binding::given(Ty::new(kind, frames), val));
                 }
                 let mut o = out(Names::Many(Vec::new()), Typed::new(Ty::plain(kind), None));
                 o.prints = false;
@@ -565,15 +558,8 @@ impl Interp<'_> {
         // (`given t : scalar`) changes nothing (§7).
         if self.env.get(t.name).is_none() {
             let time = crate::sym::Expr::symbol(crate::sym::Symbol::new(&t.name));
-            self.env.set(
-                t.name,
-                Binding {
-                    ty: Ty::scalar(),
-                    val: Some(super::formula::scalar(time)),
-                    symbolic: true,
-                    derived: false,
-                },
-            );
+            let time = super::formula::scalar(time);
+            self.env.set(t.name, Binding::given(Ty::scalar(), time));
         }
         Ok(())
     }

@@ -54,17 +54,71 @@ fn spend(n: usize, span: Span) -> Result<(), Diagnostic> {
 }
 
 fn too_long(span: Span, n: f64) -> Diagnostic {
-    let count = if n < 1e15 {
-        format!("{}", n as u64)
+    Diagnostic::error(ErrorKind::Domain, span, RangeFail::TooLong(n).to_string())
+        .with_help("use a larger step, e.g. 0:0.01:1 has 101 items")
+}
+
+/// Why a range has no items: its numbers are not finite, its step is 0,
+/// or it would be too long.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) enum RangeFail {
+    NotFinite,
+    ZeroStep,
+    TooLong(f64),
+}
+
+impl std::fmt::Display for RangeFail {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            RangeFail::NotFinite => write!(f, "a range needs finite numbers (no inf or NaN)"),
+            RangeFail::ZeroStep => write!(f, "a range with step 0 never reaches its end"),
+            RangeFail::TooLong(n) => {
+                let count = if *n < 1e15 {
+                    format!("{}", *n as u64)
+                } else {
+                    format!("{n:.3e}")
+                };
+                write!(
+                    f,
+                    "the list would have {count} items; lists are limited to {MAX_LIST}"
+                )
+            }
+        }
+    }
+}
+
+/// The number of items of `a:h:b` (MATLAB's: the end is included when
+/// within rounding, so 0:pi/8:pi has 9 items).
+pub(super) fn range_count(a: f64, h: f64, b: f64) -> Result<usize, RangeFail> {
+    if !(a.is_finite() && h.is_finite() && b.is_finite()) {
+        return Err(RangeFail::NotFinite);
+    }
+    if h == 0.0 {
+        return Err(RangeFail::ZeroStep);
+    }
+    let steps = (b - a) / h;
+    let tol = 1e-10 * (1.0 + steps.abs());
+    let n = if steps < -tol {
+        0.0
     } else {
-        format!("{n:.3e}")
+        (steps + tol).floor() + 1.0
     };
-    Diagnostic::error(
-        ErrorKind::Domain,
-        span,
-        format!("the list would have {count} items; lists are limited to {MAX_LIST}"),
-    )
-    .with_help("use a larger step, e.g. 0:0.01:1 has 101 items")
+    if n > MAX_LIST as f64 {
+        return Err(RangeFail::TooLong(n));
+    }
+    Ok(n as usize)
+}
+
+/// The `n` items of the range from `a` by `h`.
+fn items(a: f64, h: f64, n: usize) -> Vec<Value> {
+    (0..n).map(|k| Value::scalar(a + k as f64 * h)).collect()
+}
+
+/// The list `a:h:b` as typed first, once a range that waited has its
+/// numbers (`super::replay`); Err why it has none.
+pub(super) fn range_items(a: f64, h: f64, b: f64) -> Result<Value, RangeFail> {
+    let n = range_count(a, h, b)?;
+    Ok(Value::List(Rc::new(items(a, h, n))))
 }
 
 /// The help for arithmetic on a list, a picture or a string.
@@ -157,8 +211,9 @@ impl Interp<'_> {
         )
     }
 
-    /// One bound of a range: a number.
-    fn bound(&mut self, e: &Expr) -> Result<Option<f64>, Diagnostic> {
+    /// One bound of a range: a number, or a scalar made from symbols (the
+    /// range then waits for their numbers, `crate::values::waiting`).
+    fn bound(&mut self, e: &Expr) -> Result<Option<Value>, Diagnostic> {
         let t = self.expr(e)?;
         if let Some(Value::Sym(s)) = t.val.as_deref() {
             return Err(Diagnostic::error(
@@ -168,18 +223,6 @@ impl Interp<'_> {
             )
             .with_help("bind a number to it first (§7)"));
         }
-        // (a value made from symbols has no number yet: its length is unknown)
-        if let Some(v @ Value::Formula { .. }) = t.val.as_deref() {
-            return Err(Diagnostic::error(
-                ErrorKind::Type,
-                e.span,
-                format!(
-                    "a range takes numbers, not the symbolic {}",
-                    crate::values::format::inline(v, 4)
-                ),
-            )
-            .with_help("bind numbers to its given names first (§7)"));
-        }
         if !t.ty.kind.maybe_scalar() {
             return Err(Diagnostic::error(
                 ErrorKind::Type,
@@ -188,10 +231,12 @@ impl Interp<'_> {
             )
             .with_help("write start:end or start:step:end, e.g. 0:pi/8:pi"));
         }
-        Ok(t.val.as_deref().and_then(Value::as_scalar))
+        Ok(t.val.map(|v| *v))
     }
 
-    /// `start:end`, `start:step:end`.
+    /// `start:end`, `start:step:end`. With a bound made from symbols
+    /// (`0:a:1` over a free `a`) the range waits for their numbers, and
+    /// is then the list typed first gives ([`range_items`]).
     pub(super) fn range(
         &mut self,
         start: &Expr,
@@ -202,39 +247,40 @@ impl Interp<'_> {
         let a = self.bound(start)?;
         let h = match step {
             Some(s) => self.bound(s)?,
-            None => Some(1.0),
+            None => Some(Value::scalar(1.0)),
         };
         let b = self.bound(end)?;
         let ty = Ty::plain(Kind::list(Kind::Scalar));
         let (Some(a), Some(h), Some(b)) = (a, h, b) else {
             return Ok(Typed::new(ty, None));
         };
-        if !(a.is_finite() && h.is_finite() && b.is_finite()) {
-            return Err(self.domain(span, "a range needs finite numbers (no inf or NaN)"));
+        if [&a, &h, &b]
+            .iter()
+            .any(|v| matches!(v, Value::Formula { .. }))
+        {
+            return match crate::values::waiting::range(&a, &h, &b, step.is_some()) {
+                Some(r) => Ok(Typed::new(ty, Some(r))),
+                None => Err(Diagnostic::error(
+                    ErrorKind::Type,
+                    span,
+                    "a range takes numbers: its bounds are not scalars",
+                )),
+            };
         }
-        if h == 0.0 {
-            return Err(self
-                .domain(span, "a range with step 0 never reaches its end")
-                .with_help("give a nonzero step: start:step:end"));
-        }
-        // The end is included when within rounding: 0:pi/8:pi has 9 items.
-        let steps = (b - a) / h;
-        let tol = 1e-10 * (1.0 + steps.abs());
-        let n = if steps < -tol {
-            0.0
-        } else {
-            (steps + tol).floor() + 1.0
+        let (Some(a), Some(h), Some(b)) = (a.as_scalar(), h.as_scalar(), b.as_scalar()) else {
+            return Ok(Typed::new(ty, None));
         };
-        if n > MAX_LIST as f64 {
-            return Err(too_long(span, n));
-        }
-        spend(n as usize, span)?;
+        let n = range_count(a, h, b).map_err(|e| match e {
+            RangeFail::ZeroStep => self
+                .domain(span, e.to_string())
+                .with_help("give a nonzero step: start:step:end"),
+            RangeFail::TooLong(n) => too_long(span, n),
+            e => self.domain(span, e.to_string()),
+        })?;
+        spend(n, span)?;
         crate::budget::hold(2 * n as u64)
             .map_err(|stop| super::interp::budget_error(stop, span))?;
-        let items: Vec<Value> = (0..n as usize)
-            .map(|k| Value::scalar(a + k as f64 * h))
-            .collect();
-        Ok(Typed::new(ty, Some(Value::List(Rc::new(items)))))
+        Ok(Typed::new(ty, Some(Value::List(Rc::new(items(a, h, n))))))
     }
 
     /// `xs[i]`: the i-th item (from 1), with the list's frames.
@@ -292,6 +338,20 @@ impl Interp<'_> {
         };
         let vals = match t.val.map(|v| *v) {
             Some(Value::List(vs)) => Some(vs.as_ref().clone()),
+            // (a range waiting for numbers has no items to run over yet;
+            // a comprehension is evaluated item by item, so it cannot wait)
+            Some(v @ Value::Formula { .. }) => {
+                return Err(Diagnostic::error(
+                    ErrorKind::Domain,
+                    e.span,
+                    format!(
+                        "a comprehension needs numbers to run over: {} waits for {}",
+                        crate::values::format::inline(&v, 4),
+                        crate::values::waiting::symbols(&v)
+                    ),
+                )
+                .with_help("bind numbers to the given names first, then build the list (§7)"));
+            }
             Some(Value::Num { m, .. }) => Some(m.iter().map(|x| Value::scalar(*x)).collect()),
             Some(Value::Sym(_)) => {
                 return Err(Diagnostic::error(
@@ -359,6 +419,7 @@ impl Interp<'_> {
                     val: None,
                     symbolic: false,
                     derived: false,
+                    stamp: 0,
                 },
             );
         }
@@ -423,6 +484,7 @@ impl Interp<'_> {
                             val: Some(v),
                             symbolic: false,
                             derived: false,
+                            stamp: 0,
                         },
                     );
                 }

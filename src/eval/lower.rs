@@ -319,6 +319,17 @@ impl Interp<'_> {
         {
             *val = Some(Box::new(n));
         }
+        // (a comparison or range waiting for numbers says so where it is shown)
+        if let Some(w) = val.as_deref().and_then(crate::values::waiting::first) {
+            let note = Diagnostic::note(
+                crate::diagnostics::ErrorKind::Domain,
+                span,
+                crate::values::waiting::note(w),
+            );
+            if !self.warnings.iter().any(|w| w.message == note.message) {
+                self.warnings.push(note);
+            }
+        }
         if let Some(v) = val.as_deref()
             && let Value::Sym(s) = v
             && let Some((l, assumed)) = self.lower(s, true, span)

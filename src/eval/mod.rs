@@ -17,6 +17,7 @@ pub mod list;
 mod lower;
 mod naming;
 mod notation;
+mod operation;
 mod order;
 mod paren_product;
 mod replay;
@@ -26,5 +27,6 @@ mod slice;
 mod substitute;
 mod symbols;
 mod user_fn;
+mod warned;
 
 pub use crate::values::{convert, formula, ops, symbolic, value};

@@ -100,6 +100,7 @@ impl Interp<'_> {
                     val: Some(val),
                     symbolic: true,
                     derived: false,
+                    stamp: 0,
                 },
             );
         }

@@ -50,14 +50,52 @@ pub fn holds(a: &Value, b: &Value, op: CmpOp) -> Result<Option<bool>, String> {
             b.kind().a()
         ));
     };
-    Ok(Some(match op {
-        CmpOp::Lt => x < y,
-        CmpOp::Le => x <= y,
-        CmpOp::Gt => x > y,
-        CmpOp::Ge => x >= y,
+    // Exact numbers compare exactly (§3, §7): `sqrt(2)*sqrt(3) <= sqrt(6)`
+    // is true though the floats may differ in the last bit.
+    // (floats farther apart than rounding are in their exact numbers'
+    // order: the exact forms are worked out only for close ones)
+    let close = (x - y).abs() <= 1e-9 * x.abs().max(y.abs());
+    let order = if close { exact_order(a, b) } else { None }.or_else(|| x.partial_cmp(&y));
+    use std::cmp::Ordering::{Equal, Greater, Less};
+    Ok(Some(match (op, order) {
+        // (NaN is in no order: every comparison with it is false)
+        (_, None) => false,
+        (CmpOp::Lt, Some(o)) => o == Less,
+        (CmpOp::Le, Some(o)) => o != Greater,
+        (CmpOp::Gt, Some(o)) => o == Greater,
+        (CmpOp::Ge, Some(o)) => o != Less,
         // Equalities are decided by `equal`; as numbers they are these.
-        CmpOp::Eq | CmpOp::Approx => x == y,
+        (CmpOp::Eq | CmpOp::Approx, Some(o)) => o == Equal,
     }))
+}
+
+/// The order of two scalars that both have exact forms (a number typed
+/// or made exactly, or a formula with no symbols left): by the sign of
+/// their exact difference, exactly when it is a number of ℚ(√2, √3),
+/// else by the float of the difference, which keeps the digits two close
+/// floats lose. None when a side has no exact form.
+fn exact_order(a: &Value, b: &Value) -> Option<std::cmp::Ordering> {
+    let form = |v: &Value| -> Option<crate::sym::Expr> {
+        let m = match v {
+            Value::Formula { m, .. } => m.clone(),
+            v if v.may_be_exact() => v.exact_form()?,
+            _ => return None,
+        };
+        if m.data.len() != 1 || !crate::values::exact::is_exact(&m) {
+            return None;
+        }
+        m.data.into_iter().next()
+    };
+    let (x, y) = (form(a)?, form(b)?);
+    if x == y {
+        return Some(std::cmp::Ordering::Equal);
+    }
+    let d = x.sub(&y);
+    let sign = match d.as_const() {
+        Some(crate::sym::coef::Coef::Exact { re, im }) if im.is_zero() => re.signum(),
+        _ => d.as_f64()?,
+    };
+    sign.partial_cmp(&0.0)
 }
 
 #[cfg(test)]

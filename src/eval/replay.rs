@@ -110,9 +110,8 @@ pub(super) fn typed_first(
                 warnings,
             };
             let vals = args.iter().map(|v| (*v).clone()).collect();
-            let v = apply::call(b, vals, site)
-                .map_err(|d| OpError::Message(d.message))?
-                .with_exact(exact);
+            let mut v = apply::call(b, vals, site).map_err(|d| OpError::Message(d.message))?;
+            v.set_call_exact(exact);
             not_finite_group(&v, b.name, Default::default())
                 .map_err(|d| OpError::Message(d.message))?;
             Ok(v)
@@ -227,6 +226,19 @@ fn step(r: &Recipe, at: Lookup, memo: &mut Memo) -> Option<Value> {
             };
         }
         Step::Leaf(_) => return None,
+        // a range that waited for its numbers: the list typed first gives
+        Step::Range(_) => {
+            let [a, h, b] = refs.as_slice() else {
+                return None;
+            };
+            return match super::list::range_items(a.as_scalar()?, h.as_scalar()?, b.as_scalar()?) {
+                Ok(v) => Some(v),
+                Err(e) => {
+                    memo.failed.get_or_insert(e.to_string());
+                    None
+                }
+            };
+        }
         Step::Compare(op) => {
             let [a, b] = refs.as_slice() else {
                 return None;
@@ -249,15 +261,7 @@ fn step(r: &Recipe, at: Lookup, memo: &mut Memo) -> Option<Value> {
                 }
             };
         }
-        Step::Neg => Op::Neg,
-        Step::Degrees => Op::Degrees,
-        Step::Arith(op) => Op::Arith(*op),
-        Step::Transpose => Op::Transpose,
-        Step::Member(part) => Op::Member(*part),
-        Step::Index(sels) => Op::Index(sels),
-        Step::Block(widths) => Op::Block(widths),
-        Step::Vector => Op::Vector,
-        Step::Call(name) => Op::Call(crate::builtins::lookup(name)?, name),
+        Step::Op(o) => Op::of(o)?,
     };
     // (the kind as the checker gives it for these numbers typed first)
     let kind = rule_kind(op, &refs).unwrap_or(r.kind);
@@ -374,10 +378,11 @@ pub(super) fn subs_numbers(
     }
 }
 
-/// True when numbers `v` have the shape of formula `m`.
+/// True when numbers `v` have the shape of formula `m` (a bool is what a
+/// comparison gives, a list what a range gives).
 pub(super) fn same_shape(v: &Value, m: &Mat) -> bool {
     matches!(v, Value::Num { m: xs, .. } if xs.shape() == (m.rows, m.cols))
-        || matches!(v, Value::Bool(_))
+        || matches!(v, Value::Bool(_) | Value::List(_))
 }
 
 /// A rotation, transform, Lie-algebra element or adjoint with an inf or NaN

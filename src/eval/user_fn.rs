@@ -75,6 +75,7 @@ impl Interp<'_> {
                     val: t.val.map(|v| *v),
                     symbolic: false,
                     derived: false,
+                    stamp: 0,
                 },
             );
         }

@@ -70,14 +70,26 @@ pub fn value_latex(v: &Value, style: Style) -> Option<String> {
     // `:exact`: a value with an exact form prints it (LANGUAGE.md §10).
     if style.exact
         && v.may_be_exact()
-        && let Some(m) = v
-            .exact_form()
-            .filter(|m| !crate::values::exact::prints_as_decimals(m))
+        && let Some(m) = v.exact_form().filter(|m| match v {
+            Value::Num { m: floats, .. } => {
+                !crate::values::exact::prints_as_decimals(m, style.digits, floats)
+            }
+            _ => true,
+        })
     {
         return Some(formula_latex(&m, style));
     }
     match v {
-        Value::Formula { m, .. } => Some(formula_latex(m, style)),
+        Value::Formula { m, .. } => Some(
+            crate::values::waiting::text(
+                v,
+                Style {
+                    sym: crate::sym::print::Mode::Latex,
+                    ..style
+                },
+            )
+            .unwrap_or_else(|| formula_latex(m, style)),
+        ),
         Value::Num { m, .. } if m.len() > 1 => Some(matrix_latex(m, style)),
         _ => None,
     }

@@ -47,7 +47,10 @@ pub fn value(v: &Value) -> J {
             "shows": p.summary,
             "panels": p.panels.len(),
         }),
-        Value::Formula { m, .. } => json!(crate::values::format::formula_inline(m, 17.into())),
+        Value::Formula { m, .. } => json!(
+            crate::values::waiting::text(v, 17.into())
+                .unwrap_or_else(|| crate::values::format::formula_inline(m, 17.into()))
+        ),
     }
 }
 
@@ -77,9 +80,17 @@ pub fn outcome(o: &Outcome, line: usize) -> Option<J> {
     if let (Some(Value::Formula { m, kind, .. }), Some(obj)) =
         (o.val.as_deref(), out.as_object_mut())
     {
+        let style = crate::values::format::Style {
+            sym: crate::sym::print::Mode::Latex,
+            ..17.into()
+        };
+        let waiting = o
+            .val
+            .as_deref()
+            .and_then(|v| crate::values::waiting::text(v, style));
         obj.insert(
             "latex".into(),
-            json!(crate::values::format::formula_latex(m, 17.into())),
+            json!(waiting.unwrap_or_else(|| crate::values::format::formula_latex(m, 17.into()))),
         );
         obj.insert("kind".into(), json!(kind.json_name()));
     }

@@ -336,7 +336,10 @@ fn write_value(out: &mut String, prefix: &str, ty: &Ty, v: &Value, style: Style)
         }
         Value::Formula { m, .. } => {
             out.push_str(&super::formula::name_prefix(prefix, style));
-            out.push_str(&super::formula::block(m, style, width(prefix)));
+            match crate::values::waiting::text(v, style) {
+                Some(t) => out.push_str(&t),
+                None => out.push_str(&super::formula::block(m, style, width(prefix))),
+            }
         }
         Value::Mech(mech) => {
             if !prefix.is_empty() {

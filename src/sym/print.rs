@@ -384,9 +384,10 @@ fn surd_term(r: &Rat, k: i64, latex: bool) -> String {
         // quarters and fifths stay fractions (0.392 = 49/125 is a decimal)
         if let Some(q) = q_small
             && q > 5
-            && let Some(k) = (1..=12).find(|k| 10i128.pow(*k) % q == 0)
+            && (1..=12).any(|k| 10i128.pow(k) % q == 0)
+            && let Some(digits) = (if r.is_negative() { r.neg() } else { r.clone() }).decimal_text()
         {
-            return format!("{sign}{}", fmt_float(r.to_f64().abs(), k as usize));
+            return format!("{sign}{digits}");
         }
         return if latex {
             format!("{sign}\\frac{{{p}}}{{{q}}}")

@@ -188,9 +188,39 @@ impl Rat {
     /// The nearest float (±inf beyond the range of `f64`).
     pub fn to_f64(&self) -> f64 {
         match self {
-            Rat::Small { num, den } => *num as f64 / *den as f64,
+            // both exact in an f64: one rounding, the nearest float
+            Rat::Small { num, den } if num.unsigned_abs() <= 1 << 53 && *den <= 1 << 53 => {
+                *num as f64 / *den as f64
+            }
+            Rat::Small { .. } => self.to_big().to_f64().unwrap_or(f64::NAN),
             Rat::Big(b) => b.to_f64().unwrap_or(f64::NAN),
         }
+    }
+    /// Every digit of a decimal (a denominator of 2s and 5s only):
+    /// `99999.999999999999`, `100000000000000000001`, `-0.00561`; None for
+    /// any other fraction.
+    pub fn decimal_text(&self) -> Option<String> {
+        let (p, q) = self.parts();
+        let ten = BigInt::from(10);
+        // q divides 10^k for the least such k
+        let (mut k, mut d) = (0usize, q.clone());
+        while !d.is_one() {
+            let g = d.gcd(&ten);
+            if g.is_one() {
+                return None;
+            }
+            d /= g;
+            k += 1;
+        }
+        let scaled = &p * num_traits::pow(ten, k) / &q;
+        let digits = scaled.magnitude().to_string();
+        let sign = if scaled.is_negative() { "-" } else { "" };
+        if k == 0 {
+            return Some(format!("{sign}{digits}"));
+        }
+        let padded = format!("{digits:0>width$}", width = k + 1);
+        let (int, frac) = padded.split_at(padded.len() - k);
+        Some(format!("{sign}{int}.{frac}"))
     }
     /// The integer, when the fraction is one that fits an `i64`.
     pub fn as_int(&self) -> Option<i64> {
@@ -356,9 +386,11 @@ pub fn scientific(p: &str, q: &str) -> Option<String> {
     }
     let zeros = q.strip_prefix('1')?;
     if zeros.len() > 12 && zeros.bytes().all(|b| b == b'0') && p.len() <= 15 {
-        // p / 10^n = m · 10^(len(p) - 1 - n)
+        // p / 10^n = m · 10^(len(p) - 1 - n), m = p.ddd (a number of
+        // more than 12 places above 1 too: 11 + 1e-13 is 1.10000000000001e1)
         let m = p.trim_end_matches('0');
-        return Some(format!("{}e-{}", digits(m)?, zeros.len() + 1 - p.len()));
+        let exp = p.len() as i64 - 1 - zeros.len() as i64;
+        return Some(format!("{}e{exp}", digits(m)?));
     }
     None
 }

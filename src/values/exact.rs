@@ -19,14 +19,12 @@ use std::cell::{Cell, OnceCell};
 use std::rc::Rc;
 
 use super::num::Num;
-use super::ops::Sel;
-use super::symbolic::Part;
+pub use super::operation::Operation;
 use super::value::Value;
 use crate::check::ty::Kind;
 use crate::sym::Mat;
 use crate::sym::coef::{Coef, Rat};
 use crate::sym::expr::{Expr, Var};
-use crate::syntax::ast::BinOp;
 
 /// What is known of a numeric value's exact form.
 #[derive(Clone, Default)]
@@ -94,32 +92,6 @@ pub struct Pending {
     /// The exact path: the operation on the operands' exact forms (None:
     /// no exact form).
     pub run: fn(&Operation, &[&Value], &Kind) -> Option<Mat>,
-}
-
-/// An operation of the evaluator's seam (`eval::apply::Op`) with its data
-/// owned, as [`Pending`] keeps it.
-#[derive(Debug, Clone)]
-pub enum Operation {
-    /// `-x`.
-    Neg,
-    /// `x deg`.
-    Degrees,
-    /// `a + b`, `a - b`, `a b`, `a / b`, `a ^ b`.
-    Arith(BinOp),
-    /// `X^-1`.
-    Inverse,
-    /// `x.T`.
-    Transpose,
-    /// `T.R`, `T.p`, `V.w`, …
-    Member(Part),
-    /// `x[i]`, `M[i, j]`, `M[:, j]`.
-    Index(Vec<Sel>),
-    /// `[x]` and `[a, b; c, d]`: the number of entries of each row.
-    Block(Vec<usize>),
-    /// `(a, b, c)`.
-    Vector,
-    /// A builtin, by its name.
-    Call(&'static str),
 }
 
 /// The operands of a [`Pending`] recipe: the two operands of an operator
@@ -257,6 +229,23 @@ pub fn typed(m: &Num) -> Option<Mat> {
     })
 }
 
+/// The decimal a number literal writes (`0.866`, `.5`, `1.5e-13`,
+/// `10000000000000000001`), exactly; None for other text.
+pub fn written(text: &str) -> Option<Rat> {
+    let (mantissa, exp) = match text.split_once(['e', 'E']) {
+        Some((m, e)) => (m, e.parse::<i32>().ok()?),
+        None => (text, 0),
+    };
+    let (int, frac) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+    if !int.bytes().chain(frac.bytes()).all(|b| b.is_ascii_digit()) || int.len() + frac.len() == 0 {
+        return None;
+    }
+    let digits: num_bigint::BigInt = format!("{int}{frac}").parse().ok()?;
+    let exp = exp.checked_sub(i32::try_from(frac.len()).ok()?)?;
+    // (a literal far beyond a float's range is a float anyway)
+    (exp.unsigned_abs() < 400).then(|| Rat::decimal(&digits, exp))
+}
+
 /// The decimal a float was typed as ([`Rat::typed`]).
 pub fn decimal(x: f64) -> Option<Rat> {
     Rat::typed(x)
@@ -295,14 +284,51 @@ pub fn is_decimal(r: &Rat) -> bool {
     d == num_bigint::BigInt::from(1)
 }
 
-/// True when the exact form of a value prints as its decimals anyway
-/// (every entry a short decimal, [`is_short_decimal`]): `--exact` then
+/// True when the exact form of a value prints as its decimals anyway:
+/// every entry a decimal that its float `floats` at `digits` decimals
+/// shows exactly (`0.866`,
+/// `1e20`; not `0.12345` at 4 digits, nor 10²⁰ + 1): `--exact` then
 /// prints the value as usual.
-pub fn prints_as_decimals(m: &Mat) -> bool {
-    m.data.iter().all(|e| match e.as_const() {
-        Some(c) => c.as_rat().is_some_and(|r| is_short_decimal(&r)),
-        None => false,
-    })
+pub fn prints_as_decimals(m: &Mat, digits: usize, floats: &Num) -> bool {
+    floats.shape() == (m.rows, m.cols)
+        && m.data.iter().enumerate().all(|(k, e)| {
+            match e.as_const().and_then(|c| c.as_rat()) {
+                // (the float printed, not the exact value's: they differ
+                // where floats cancelled, (0.1 − 10¹³) + 10¹³)
+                Some(r) => {
+                    let x = floats[(k / m.cols, k % m.cols)];
+                    is_short_decimal(&r) && reads_as(&super::number::fmt_num(x, digits), &r)
+                }
+                None => false,
+            }
+        })
+}
+
+/// True when `text`, read as a decimal, is exactly `r`.
+fn reads_as(text: &str, r: &Rat) -> bool {
+    text.parse::<f64>()
+        .ok()
+        .and_then(Rat::typed)
+        .is_some_and(|t| &t == r)
+}
+
+/// A decimal `r` as text that reads back as exactly `r`: as numbers print
+/// at `digits` decimals when that is exact, else the shortest float text
+/// when that is (`0.12345`, `1.5e-13`), else every digit
+/// (`100000000000000000001`).
+fn decimal_text(r: &Rat, digits: usize) -> String {
+    let x = r.to_f64();
+    let printed = super::number::fmt_num(x, digits);
+    if reads_as(&printed, r) {
+        return printed;
+    }
+    let shortest = format!("{x:?}");
+    let shortest = shortest.strip_suffix(".0").unwrap_or(&shortest).to_string();
+    if reads_as(&shortest, r) {
+        return shortest;
+    }
+    // every digit
+    r.decimal_text().unwrap_or(printed)
 }
 
 /// An exact number as `--exact` prints it, so that it reads back: a
@@ -315,16 +341,21 @@ pub fn text(e: &Expr, st: crate::sym::print::Style) -> String {
         && is_short_decimal(&r)
         && r.small().is_none_or(|(_, q)| q == 1 || q > 5)
     {
-        return super::number::fmt_num(r.to_f64(), st.digits);
+        return decimal_text(&r, st.digits);
     }
     // A decimal of more places prints as it was typed (`1.5e-13`), the
     // shortest text that reads back as it, not as a fraction.
     if let Some(r) = e.as_const().and_then(|c| c.as_rat())
         && is_decimal(&r)
         && !is_short_decimal(&r)
-        && Rat::typed(r.to_f64()).is_some_and(|t| t == r)
     {
-        return format!("{:?}", r.to_f64());
+        if Rat::typed(r.to_f64()).is_some_and(|t| t == r) {
+            return format!("{:?}", r.to_f64());
+        }
+        // more digits than a float holds (`1.00000000000000001`): all of them
+        if let Some(d) = r.decimal_text().filter(|d| d.len() <= 40) {
+            return d;
+        }
     }
     if let [(mono, c)] = e.terms.iter().collect::<Vec<_>>().as_slice()
         && let [(Var::Pi, 1)] = mono.as_slice()

@@ -48,14 +48,17 @@ pub fn exact_text(v: &Value, style: Style) -> Option<Mat> {
     if !style.exact || style.sym == Mode::Latex || !v.may_be_exact() {
         return None;
     }
-    exact_form_text(v)
+    exact_form_text(v, style.digits)
 }
 
 /// [`exact_text`] once `--exact` asks for it.
 #[cold]
-fn exact_form_text(v: &Value) -> Option<Mat> {
+fn exact_form_text(v: &Value, digits: usize) -> Option<Mat> {
+    let Value::Num { m: floats, .. } = v else {
+        return v.exact_form();
+    };
     v.exact_form()
-        .filter(|m| !super::exact::prints_as_decimals(m))
+        .filter(|m| !super::exact::prints_as_decimals(m, digits, floats))
 }
 
 impl From<usize> for Style {
@@ -158,7 +161,10 @@ pub fn write_inline(out: &mut String, v: &Value, style: Style) {
             let _ = write!(out, "{t:?}");
         }
         Value::Picture(p) => out.push_str(&picture(p)),
-        Value::Formula { m, .. } => out.push_str(&formula_inline(m, style)),
+        Value::Formula { m, .. } => match super::waiting::text(v, style) {
+            Some(t) => out.push_str(&t),
+            None => out.push_str(&formula_inline(m, style)),
+        },
     }
 }
 

@@ -91,14 +91,14 @@ pub fn make(kind: &Kind, m: Mat) -> Value {
 /// nothing to show otherwise.
 pub fn constant_shown(v: &Value) -> Option<Value> {
     match v {
-        // (a comparison decided over symbols: a bool)
+        // (a comparison decided over symbols: a bool; one that waits for
+        // numbers, `super::waiting`, shows nothing else)
         Value::Formula {
             kind: Kind::Bool,
             m,
             ..
-        } => Some(Value::Bool(
-            m.as_f64().is_some_and(|x| x.iter().any(|x| *x != 0.0)),
-        )),
+        } => (m.rows == 1 && m.cols == 1)
+            .then(|| Value::Bool(m.as_f64().is_some_and(|x| x.iter().any(|x| *x != 0.0)))),
         Value::Formula { kind, m, .. } if m.as_f64().is_some() => Some(make(kind, m.clone())),
         Value::Tuple(vs) if vs.iter().any(|x| constant_shown(x).is_some()) => Some(Value::Tuple(
             vs.iter()

@@ -18,11 +18,9 @@
 use std::collections::HashMap;
 use std::rc::Rc;
 
-use super::ops::Sel;
-use super::symbolic::Part;
+pub use super::operation::Operation;
 use super::value::Value;
 use crate::check::ty::Kind;
-use crate::syntax::ast::BinOp;
 
 /// The deepest recipe kept: a value made by a longer chain of operations
 /// keeps none and is a leaf of the values made from it (its canonical
@@ -32,37 +30,25 @@ use crate::syntax::ast::BinOp;
 pub const MAX_DEPTH: u32 = 20_000;
 
 /// One step of a recipe: an operation of the evaluator's seam with its
-/// data owned (`eval::apply::Op` borrows its selectors and widths), or a
-/// leaf.
+/// data owned ([`Operation`]), a leaf, or one of the steps only a recipe
+/// needs (a part of a tuple, a kind given by a name, a comparison).
 #[derive(Debug, Clone)]
 pub enum Step {
     /// An operand as it was: a number, or a formula no replayable
     /// operation made (a `given` symbol `a`, the rate `q̇`, `diff(x, t)`),
     /// evaluated from its canonical form at the numbers.
     Leaf(Value),
-    /// `-x`.
-    Neg,
-    /// `x deg`.
-    Degrees,
-    /// `a + b`, `a - b`, `a b`, `a / b`, `a ^ b`.
-    Arith(BinOp),
-    /// `x.T`.
-    Transpose,
-    /// `T.R`, `T.p`, `V.w`, …
-    Member(Part),
-    /// `x[i]`, `M[i, j]`, `M[:, j]`.
-    Index(Vec<Sel>),
-    /// `[x]` and `[a, b; c, d]`: the number of entries of each row.
-    Block(Vec<usize>),
-    /// `(a, b, c)`.
-    Vector,
-    /// A builtin, by the name it was called with.
-    Call(&'static str),
+    /// An operation of the seam over the step's operands.
+    Op(Operation),
     /// Part `i` of the tuple its one operand gives (`euler_zyx(R)`'s angles).
     Part(usize),
     /// Its one operand, with the kind its name gave it when it was bound
     /// (`V_b = (…)` is a twist).
     Retag,
+    /// `start:end` (false) or `start:step:end` (true) over its three
+    /// bounds (the step 1 when none was typed): the list, once they have
+    /// numbers (`super::waiting`).
+    Range(bool),
     /// `a == b`, `a ≈ b`, `a < b`, …: a bool, decided with the numbers as
     /// typed first (over free symbols `==` asks for an identity).
     Compare(crate::syntax::ast::CmpOp),

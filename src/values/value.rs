@@ -169,6 +169,18 @@ impl Value {
             *exact = e;
         }
     }
+    /// Gives the result of a builtin the exact form `e` of its call,
+    /// unless the call has none (a float) and the builtin knows its
+    /// numbers exactly: `eye(3)`, `zeros(2)` are 0s and 1s as typed
+    /// (`Rotx(2π/3) Rotx(2π/3)ᵀ == eye(3)` was false).
+    #[inline]
+    pub fn set_call_exact(&mut self, e: Exact) {
+        if let Value::Num { exact, .. } = self
+            && !(e.is_float() && matches!(exact, Exact::Typed))
+        {
+            *exact = e;
+        }
+    }
     /// The exact form of a numeric value, when it has one (§3, §7).
     pub fn exact_form(&self) -> Option<crate::sym::Mat> {
         match self {
