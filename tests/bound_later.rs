@@ -457,8 +457,19 @@ fn order_comparisons_wait_for_numbers() {
         last("given a\nc = a > 0\na = 1\nc\na = -1\nc").as_deref(),
         Some("false")
     );
-    // proven over every number: decided at once
+    // proven over every number: decided at once; else it waits
     assert_eq!(last("given a\nc = a - a < 1\nc").as_deref(), Some("true"));
+    assert_eq!(
+        last("given a, b\na^2 + b^2 + 1 > 0").as_deref(),
+        Some("true")
+    );
+    assert_eq!(last("given a\na^2 < 0").as_deref(), Some("false"));
+    assert_eq!(last("given a\na^2 >= 0").as_deref(), Some("true"));
+    assert_eq!(last("given a\na^2 <= 0").as_deref(), Some("a^2 <= 0"));
+    assert_eq!(
+        last("given a\nc = a^2 <= 0\na = 0\nc").as_deref(),
+        Some("true")
+    );
     // an assert cannot wait: refused, never passed
     let e = common::error("given a, b\nassert a < b");
     assert!(e.contains("cannot decide `a < b` without numbers"), "{e}");
@@ -501,8 +512,9 @@ fn a_value_bound_later_warns_once_per_binding_of_its_numbers() {
 /// 21: `0:a:1` over a free `a` was refused): shown as typed, with why it
 /// has no items yet, and once bound it is the list typed first gives —
 /// refused where typed first is (step 0, inf). What is computed from it
-/// item by item (a comprehension) or needs its items (`len`) before then
-/// is refused, saying to bind the numbers first.
+/// item by item (a comprehension) or an item of it before then
+/// is refused, saying to bind the numbers first; `len`, `sum`, `min` and
+/// `max` of it wait too.
 #[test]
 fn ranges_wait_for_numbers() {
     for (range, at) in [
@@ -542,6 +554,25 @@ fn ranges_wait_for_numbers() {
         e.contains("a comprehension needs numbers to run over: 0:a waits for a"),
         "{e}"
     );
-    let e = common::error("given a\nn = len(0:a:1)");
-    assert!(e.contains("needs numbers"), "{e}");
+    // len, sum, min, max of it wait too, standing as the call until then
+    for f in ["len", "sum", "min", "max"] {
+        let later = common::printed(&format!("given a\nn = {f}(0:a:1) + 1\nn\na = 0.25\nn"));
+        let first = common::printed(&format!("a = 0.25\nn = {f}(0:a:1) + 1\nn"));
+        let lines: Vec<&str> = later.lines().collect();
+        assert_eq!(lines[1], format!("1 + {f}(0:a:1)"), "{later}");
+        assert_eq!(lines.last().copied(), first.lines().last(), "{f}: {later}");
+    }
+    let out = common::printed("given a\nc = len(0:a:1) < 5\na = 0.25\nc");
+    assert_eq!(out.lines().last(), Some("false"), "{out}");
+    let e = common::error("given a\nn = len(0:a:1)\na = 0\nn");
+    assert!(
+        e.contains("a range with step 0 never reaches its end"),
+        "{e}"
+    );
+    // an item of it is refused until then
+    let e = common::error("given a\nr = 0:a:1\nx = r[2]");
+    assert!(
+        e.contains("the range 0:a:1 has no items until a has a number"),
+        "{e}"
+    );
 }

@@ -499,6 +499,13 @@ impl Interp<'_> {
         if !self.running() {
             return Ok(Typed::new(ty, None));
         }
+        // (len, sum, min, max of a range that waits for numbers wait too)
+        if let [range] = vals.as_slice()
+            && matches!(b.name, "len" | "sum" | "min" | "max")
+            && let Some(v) = crate::values::waiting::of_range(b.name, range, ty.kind)
+        {
+            return Ok(Typed::new(ty, Some(v)));
+        }
         super::list::numbers_only(b, &vals, span)?;
         if vals
             .iter()

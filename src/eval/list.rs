@@ -301,6 +301,23 @@ impl Interp<'_> {
             ));
         };
         let ty = Ty::new(**elem, t.ty.frames);
+        // (a range waiting for numbers has no items yet)
+        if let Some(v) = t
+            .val
+            .as_deref()
+            .filter(|v| crate::values::waiting::is_range(v))
+        {
+            return Err(self
+                .domain(
+                    span,
+                    format!(
+                        "the range {} has no items until {}",
+                        crate::values::format::inline(v, 4),
+                        crate::values::waiting::once(v)
+                    ),
+                )
+                .with_help("bind numbers to the given names first, then index it (§7)"));
+        }
         let Some(Value::List(items)) = t.val.as_deref() else {
             return Ok(Typed::new(ty, None));
         };

@@ -42,7 +42,7 @@ pub fn holds(a: &Value, b: &Value, op: CmpOp) -> Result<Option<bool>, String> {
         if matches!(a, Value::Formula { .. } | Value::Sym(_))
             || matches!(b, Value::Formula { .. } | Value::Sym(_))
         {
-            return Ok(None);
+            return Ok(proven(a, b, op));
         }
         return Err(format!(
             "only numbers are ordered: cannot compare {} with {}",
@@ -67,6 +67,74 @@ pub fn holds(a: &Value, b: &Value, op: CmpOp) -> Result<Option<bool>, String> {
         // Equalities are decided by `equal`; as numbers they are these.
         (CmpOp::Eq | CmpOp::Approx, Some(o)) => o == Equal,
     }))
+}
+
+/// `a op b` over free symbols when it holds (or fails) for every real
+/// number they may take, proven from the canonical form of `a − b`: a sum
+/// of positive multiples of even powers of symbols (and of π) is ≥ 0, and
+/// positive with a positive constant term (`a^2 + 1 > 0`). None when not
+/// proven: the comparison then waits for the numbers (§7: "what cannot be
+/// decided is said, never guessed").
+fn proven(a: &Value, b: &Value, op: CmpOp) -> Option<bool> {
+    let side = |v: &Value| match v {
+        Value::Formula { kind, .. } if *kind == crate::check::ty::Kind::Bool => None,
+        Value::Formula { .. } | Value::Num { .. } => crate::values::formula::scalar_of(v),
+        _ => None,
+    };
+    let d = side(a)?.sub(&side(b)?);
+    let (up, down) = (sign(&d), sign(&d.neg()));
+    // (`Some(true)`: > 0 for every number; `Some(false)`: ≥ 0)
+    match op {
+        CmpOp::Gt => match (up, down) {
+            (Some(true), _) => Some(true),
+            (_, Some(_)) => Some(false),
+            _ => None,
+        },
+        CmpOp::Ge => match (up, down) {
+            (Some(_), _) => Some(true),
+            (_, Some(true)) => Some(false),
+            _ => None,
+        },
+        CmpOp::Lt => match (down, up) {
+            (Some(true), _) => Some(true),
+            (_, Some(_)) => Some(false),
+            _ => None,
+        },
+        CmpOp::Le => match (down, up) {
+            (Some(_), _) => Some(true),
+            (_, Some(true)) => Some(false),
+            _ => None,
+        },
+        CmpOp::Eq | CmpOp::Approx => None,
+    }
+}
+
+/// Some(true) when `e` > 0 for every real value of its symbols, Some(false)
+/// when only `e` ≥ 0 is proven, None when neither: each term a positive
+/// real coefficient times π and even powers of real symbols.
+fn sign(e: &crate::sym::Expr) -> Option<bool> {
+    use crate::sym::coef::Coef;
+    use crate::sym::expr::Var;
+    let mut strict = false;
+    for (mono, c) in &e.terms {
+        let positive = match c {
+            Coef::Exact { re, im } => im.is_zero() && re.signum() > 0.0,
+            Coef::Approx { re, im } => *im == 0.0 && *re > 0.0,
+        };
+        if !positive {
+            return None;
+        }
+        let mut constant = true;
+        for (v, k) in mono {
+            match v {
+                Var::Pi => {}
+                Var::Sym(_) if *k > 0 && k % 2 == 0 => constant = false,
+                _ => return None,
+            }
+        }
+        strict |= constant;
+    }
+    Some(strict)
 }
 
 /// The order of two scalars that both have exact forms (a number typed

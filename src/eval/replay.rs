@@ -366,6 +366,7 @@ pub(super) fn subs_numbers(
     by.as_scalar()?;
     let mut syms = Vec::new();
     m.data.iter().for_each(|e| e.symbols(&mut syms));
+    syms.retain(|s| !crate::values::waiting::stand_in(s));
     crate::values::recipe::symbols(r, &mut syms);
     if syms.iter().any(|s| *s != sym) {
         return None;

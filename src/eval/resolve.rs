@@ -277,6 +277,9 @@ fn constant(v: Value) -> Sym {
 fn symbols_of(m: &Mat, how: Option<&Rc<recipe::Recipe>>) -> Vec<Symbol> {
     let mut syms = Vec::new();
     m.data.iter().for_each(|e| e.symbols(&mut syms));
+    // (a value computed from a range that waits stands as a symbol no
+    // binding gives a number: it depends on the range's symbols)
+    syms.retain(|s| !crate::values::waiting::stand_in(s));
     if let Some(r) = how {
         recipe::symbols(r, &mut syms);
     }

@@ -15,6 +15,7 @@ pub mod expr;
 pub mod factor;
 pub mod fraction;
 pub mod intern;
+pub mod layout;
 pub mod matrix;
 pub mod phase;
 pub mod print;

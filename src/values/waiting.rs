@@ -89,6 +89,35 @@ pub fn range(a: &Value, h: &Value, b: &Value, stepped: bool) -> Option<Value> {
     })
 }
 
+/// `len`, `sum`, `min` or `max` (builtin `name`, its result of kind
+/// `kind`) of a range waiting for numbers: a scalar that waits too. It
+/// has no canonical form before the numbers, so it stands for itself, as
+/// a symbol named by the call (`len(0:a:1)`, [`stand_in`]) that nothing
+/// binds: what it depends on is the range's symbols, through how it was
+/// made, and once they have numbers it is the call's value as typed
+/// first. None when `range` is not a waiting range.
+pub fn of_range(name: &'static str, range: &Value, kind: Kind) -> Option<Value> {
+    let text = text(range, 4.into()).filter(|_| is_range(range))?;
+    let how = Recipe::node(
+        Step::Op(super::operation::Operation::Call(name)),
+        vec![Recipe::of(range)],
+        kind,
+    )?;
+    let me = crate::sym::Symbol::new(&format!("{name}({text})"));
+    Some(Value::Formula {
+        kind,
+        m: Mat::scalar(crate::sym::Expr::symbol(me)),
+        how: Some(how),
+    })
+}
+
+/// True for the symbol a value computed from a waiting range stands as
+/// ([`of_range`]): no `given` name has a parenthesis, and no binding
+/// gives it a number; the value waits for the range's symbols instead.
+pub fn stand_in(s: &crate::sym::Symbol) -> bool {
+    s.name.contains('(')
+}
+
 /// True when `v` is a range waiting for numbers.
 pub fn is_range(v: &Value) -> bool {
     matches!(v, Value::Formula { how: Some(r), m, .. }
@@ -180,7 +209,11 @@ pub fn symbols(v: &Value) -> String {
         mode: Mode::Text,
         digits: 4,
     };
-    let mut names: Vec<String> = syms.iter().map(|s| print::symbol(s, st)).collect();
+    let mut names: Vec<String> = syms
+        .iter()
+        .filter(|s| !stand_in(s))
+        .map(|s| print::symbol(s, st))
+        .collect();
     names.dedup();
     names.join(", ")
 }
