@@ -22,6 +22,7 @@ pub mod print;
 pub mod probe;
 pub mod rat;
 pub mod rational;
+pub mod sign;
 pub mod size;
 pub mod trig;
 
