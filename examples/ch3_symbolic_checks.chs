@@ -18,7 +18,9 @@
 #     the book's names on symbolic screws;
 #   - == exact with and without symbols (0.1 + 0.2 == 0.3, √2√3 == √6);
 #   - bound later is typed first: a/a at 0 is refused, exact forms, bools,
-#     types and warnings as if the numbers had been typed first.
+#     types and warnings as if the numbers had been typed first;
+#   - Euler angles of a symbolic rotation are a 3-vector; atan2 of a common
+#     factor reduces on the stated branch only; rates of long names (th').
 
 given t, t1, t2, a, b, c, L1 : scalar
 
@@ -180,3 +182,21 @@ cos(s1 + pi/5)
 assert cos(s1 + pi/5)^2 + sin(s1 + pi/5)^2 == 1
 assert cot s1 == cot(s1)
 sec s1 + csc s2
+
+# --- closed forms on a stated branch; rates of long names ----------------------
+# euler_zyx of a symbolic rotation is a 3-vector, as of numbers. atan2 of
+# k sin u and k cos u is u where the branch makes k > 0: here cos(e2) > 0,
+# as numbers choose e2 in [−π/2, π/2], and atan2(0, cos e2) = 0. The note
+# names the branch; a factor whose sign no branch states is kept.
+given e1, e2 : scalar
+ev = euler_zyx(Rotz(e1) Roty(e2))             # (e1, e2, 0) : 3-vector
+assert ev == (e1, e2, 0)
+atan2(2 sin(e1 + e2), 2 cos(e1 + e2))         # e1 + e2 in (−π, π]
+atan2(sin(e1) cos(e2), cos(e1) cos(e2))       # kept: cos(e2) may be negative
+log(Rotx(2 e1))                               # the note: 2 e1 in (−π, π)
+e1 = 0.5
+e2 = 2                                        # cos(e2) < 0: off the branch
+ev                                            # the numbers' angles, as typed first
+assert ev == euler_zyx(Rotz(0.5) Roty(2))
+given th(tau) : scalar
+diff(th^2, tau)                               # 2 th th': no dot over one letter of two

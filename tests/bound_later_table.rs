@@ -271,38 +271,6 @@ fn differ_given(case: &Case, given: &str, binds: &[(&str, String)]) -> Option<St
     None
 }
 
-/// The numbers of an example as they are written (their byte ranges),
-/// not those inside names (`Rotz`, `t2`, `1e-7` is one number).
-fn numbers(src: &str) -> Vec<(usize, usize)> {
-    let b = src.as_bytes();
-    let mut out = Vec::new();
-    let mut i = 0;
-    let mut in_string = false;
-    while i < b.len() {
-        let c = b[i];
-        if c == b'"' {
-            in_string = !in_string;
-        }
-        let word_before = i > 0 && (b[i - 1].is_ascii_alphanumeric() || b[i - 1] == b'_');
-        if !in_string && c.is_ascii_digit() && !word_before {
-            let start = i;
-            while i < b.len() && (b[i].is_ascii_digit() || b[i] == b'.') {
-                i += 1;
-            }
-            if i + 1 < b.len() && b[i] == b'e' && (b[i + 1] == b'-' || b[i + 1].is_ascii_digit()) {
-                i += 2;
-                while i < b.len() && b[i].is_ascii_digit() {
-                    i += 1;
-                }
-            }
-            out.push((start, i));
-            continue;
-        }
-        i += 1;
-    }
-    out
-}
-
 /// The values `a` takes for a number written `lit`: itself, the special
 /// ones (0, 1, 90, π/2), exact ones (30°, 1/√2, −1/3) and `n` random ones
 /// near it.
@@ -346,7 +314,7 @@ fn table_cases() -> Vec<(String, Case, Vec<String>)> {
             continue;
         }
         let ex = b.example;
-        let nums = numbers(ex);
+        let nums = common::literals(ex);
         for &(s, e) in nums.iter().take(4) {
             let expr = format!("{}a{}", &ex[..s], &ex[e..]);
             out.push((

@@ -186,7 +186,7 @@ fn inverse_maps_of_a_symbolic_rotation_on_their_branch() {
         euler_zxz(rot_zxz(a, b, c))",
     );
     assert!(
-        out.starts_with("[0, -t, 0\n t, 0,  0\n 0, 0,  0]  : so(3)\na\nb\nc\n"),
+        out.starts_with("[0, -t, 0\n t, 0,  0\n 0, 0,  0]  : so(3)\n(a, b, c)  : 3-vector\n"),
         "{out}"
     );
     assert!(out.contains("(cos(t/2), 0, 0, sin(t/2))"), "{out}");
@@ -225,4 +225,91 @@ fn symbolic_inverse_and_labels() {
     let out = lines("given t, a, b : scalar\n[cos(t), -sin(t), a; sin(t), cos(t), b; 0, 0, 1]");
     assert!(out[2].ends_with(": SE(2)"), "{out:?}");
     assert!(error("given a : scalar\n[a, a; a, a]^-1").contains("singular"));
+}
+
+#[test]
+fn euler_angles_of_a_symbolic_rotation_are_a_vector_as_of_numbers() {
+    // printed with its label, bound and read back alike, JSON kind vector
+    let out = lines(
+        "given a, b, c : scalar\nv = euler_zyx(Rotz(a) * Roty(b) * Rotx(c))\nv\nw = euler_zyx(Rotz(0.1))\nw",
+    );
+    assert_eq!(
+        out,
+        [
+            "v = (a, b, c)  : 3-vector",
+            "(a, b, c)  : 3-vector",
+            "w = (0.1, 0, 0)  : 3-vector",
+            "(0.1, 0, 0)  : 3-vector"
+        ]
+    );
+    let j = common::json(
+        "given a, b, c : scalar\nv = rpy(rot_rpy(a, b, c))\nu = euler_zxz(rot_zxz(a, b, c))",
+    );
+    for r in &j[1..] {
+        assert_eq!(r["type"], "symbolic", "{r}");
+        assert_eq!(r["kind"], "vector", "{r}");
+    }
+    assert_eq!(j[1]["value"], "(a, b, c)");
+    // destructuring still gives the angles, and bound later the numbers
+    let out = lines(
+        "given a, b, c : scalar\n(x, y, z) = euler_zyx(Rotz(a) Roty(b) Rotx(c))\ny\nb = 0.25\ny",
+    );
+    assert_eq!(out[1], "y = b");
+    assert_eq!(out[3], "b");
+    assert_eq!(out[5], "0.25");
+}
+
+#[test]
+fn atan2_of_a_common_factor_reduces_on_the_stated_branch() {
+    // cos b > 0 (b ∈ (−π/2, π/2) as numbers choose): atan2(sin a cos b,
+    // cos a cos b) = a, atan2(0, cos b) = 0, atan2(sin b, |cos b|) = b
+    let (out, err) = outputs("given a, b : scalar\neuler_zyx(Rotz(a) * Roty(b))");
+    assert_eq!(out.trim(), "(a, b, 0)  : 3-vector");
+    assert!(
+        err.contains("the closed form on the branch cos(b) > 0 and a, b in (−π, π]"),
+        "{err}"
+    );
+    let (out, _) = outputs("given a, b : scalar\neuler_zxz(Rotz(a) * Rotx(b))");
+    assert_eq!(out.trim(), "(a, b, 0)  : 3-vector");
+    // a positive constant factor needs only the angle's range
+    let (out, err) =
+        outputs("given a, b : scalar\natan2(2 sin(a + b), 2 cos(a + b))\natan2(sin(a), -cos(a))");
+    assert_eq!(out, "a + b\nπ - a\n");
+    assert!(
+        err.contains("atan2 of symbolic arguments: the closed form on the branch a + b in (−π, π]"),
+        "{err}"
+    );
+    // a factor whose sign no branch states: kept, never reduced
+    let (out, err) =
+        outputs("given a, b : scalar\natan2(sin(a) cos(b), cos(a) cos(b))\natan2(0, cos(b))");
+    assert_eq!(
+        out,
+        "atan2(sin(a) cos(b), cos(a) cos(b))\natan2(0, cos(b))\n"
+    );
+    assert!(!err.contains("branch"), "{err}");
+    // off the branch the value bound later is the numbers' (b = 2: cos b < 0)
+    let out = lines("given a, b : scalar\nv = euler_zyx(Rotz(a) * Roty(b))\na = 0.5\nb = 2\nv");
+    let r = chasles::lie::repr::euler_zyx(
+        &(chasles::lie::so3::rotz(0.5) * chasles::lie::so3::roty(2.0)),
+    );
+    let f = |x: f64| format!("{}", (x * 1e4).round() / 1e4);
+    assert_eq!(
+        out[3],
+        format!(
+            "({}, {}, {})  : 3-vector",
+            f(r.angles[0]),
+            f(r.angles[1]),
+            f(r.angles[2])
+        )
+    );
+}
+
+#[test]
+fn branch_notes_take_the_sign_out_of_an_angle() {
+    let (_, err) = outputs("given t : scalar\nlog(Rotx(2 t))");
+    assert!(err.contains("on the branch 2 t in (−π, π)"), "{err}");
+    // half-open: −a in (−π, π] is a in [−π, π)
+    let (out, err) = outputs("given a : scalar\neuler_zyx(Rotz(-a))");
+    assert_eq!(out.trim(), "(-a, 0, 0)  : 3-vector");
+    assert!(err.contains("on the branch a in [−π, π)"), "{err}");
 }

@@ -669,7 +669,10 @@ fn ur5_product_of_exponentials_matches_numbers() {
          - 0.095 sin(t2 + t3 + t4)) cos(t1)",
         "- (0.109 + 0.082 cos(t5)) sin(t1)",
     ] {
-        assert!(out.contains(term), "{term} missing:\n{out}");
+        // (a long group is broken inside over two lines: read as one)
+        let flat = out.split_whitespace().collect::<Vec<_>>().join(" ");
+        let term = term.split_whitespace().collect::<Vec<_>>().join(" ");
+        assert!(flat.contains(&term), "{term} missing:\n{out}");
     }
     let t = formula(&s, "T");
     let (w1, w2, l1, l2, h1, h2) = (0.109, 0.082, 0.425, 0.392, 0.089, 0.095);
@@ -713,4 +716,32 @@ fn ur5_product_of_exponentials_matches_numbers() {
             }
         }
     }
+}
+
+#[test]
+fn long_factored_groups_break_inside_under_their_first_terms() {
+    // A tilted 4-joint chain: its entries' nested groups were printed on
+    // one long line; now every line fits in 100 columns, broken
+    // before a `+` or `-` inside the groups, under each group's first term.
+    let tilted = "given t1, t2, t3, t4 : scalar
+        S1 = (0, 0, 1, 0, 0, 0)
+        S2 = (0, 0.6, 0.8, -0.12, -0.08, 0.06)
+        S3 = (0.6, 0, 0.8, 0, -0.12, 0)
+        S4 = (0.8, 0.6, 0, -0.12, 0.16, 0.22)
+        T = exp([S1] t1) exp([S2] t2) exp([S3] t3) exp([S4] t4)";
+    let mut s = session();
+    let out = run(&mut s, tilted);
+    let wide: Vec<&str> = out.lines().filter(|l| l.chars().count() > 100).collect();
+    assert!(wide.is_empty(), "{wide:#?}");
+    assert!(
+        out.contains("T = [((0.2304 + (0.4096 + 0.2304 cos(t4) + 0.288 sin(t4)) cos(t3)"),
+        "{out}"
+    );
+    // `+ 0.1296 cos(t4)` continues the group opened at column 6
+    assert!(
+        out.contains(
+            " sin(t3)\n       + 0.1296 cos(t4) - 0.288 sin(t4)) cos(t2)\n      - ((0.56832"
+        ),
+        "{out}"
+    );
 }

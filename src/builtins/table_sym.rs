@@ -83,36 +83,6 @@ fn rot_quat(q: &[Expr]) -> Mat {
     Mat::from_rows(rows).unwrap_or_else(|| Mat::zeros(3, 3))
 }
 
-/// ZYX Euler angles (a, b, c) of R = Rotz(a) Roty(b) Rotx(c), cos b > 0.
-fn euler_zyx(r: &Mat) -> Option<Vec<Expr>> {
-    let g = |i: usize, j: usize| r.get(i, j).clone();
-    // cos b ≡ 0 is gimbal lock, where numbers choose one of a, c
-    if g(0, 0).is_zero() && g(1, 0).is_zero() {
-        return None;
-    }
-    let c = Expr::sqrt(&g(2, 1).mul(&g(2, 1)).add(&g(2, 2).mul(&g(2, 2))));
-    Some(vec![
-        Expr::atan2(&g(1, 0), &g(0, 0)),
-        Expr::atan2(&g(2, 0).neg(), &c),
-        Expr::atan2(&g(2, 1), &g(2, 2)),
-    ])
-}
-
-/// ZXZ Euler angles (a, b, c) of R = Rotz(a) Rotx(b) Rotz(c), sin b > 0.
-fn euler_zxz(r: &Mat) -> Option<Vec<Expr>> {
-    let g = |i: usize, j: usize| r.get(i, j).clone();
-    // sin b ≡ 0 is the singular case, where numbers choose c = 0
-    if g(0, 2).is_zero() && g(1, 2).is_zero() {
-        return None;
-    }
-    let s = Expr::sqrt(&g(0, 2).mul(&g(0, 2)).add(&g(1, 2).mul(&g(1, 2))));
-    Some(vec![
-        Expr::atan2(&g(0, 2), &g(1, 2).neg()),
-        Expr::atan2(&s, &g(2, 2)),
-        Expr::atan2(&g(2, 0), &g(2, 1)),
-    ])
-}
-
 /// The unit quaternion (w, x, y, z) of R, w = √(1 + tr R)/2 ≥ 0 (Appendix B).
 fn quat(r: &Mat) -> Option<Vec<Expr>> {
     let g = |i: usize, j: usize| r.get(i, j).clone();
@@ -254,7 +224,12 @@ pub fn eval_symbolic(name: &str, vals: &[Value], kind: &Kind) -> Out {
         ("cos", 1) => ok(scalar(Expr::cos(&s(0)?))),
         ("tan" | "cot" | "sec" | "csc", 1) => ok(scalar(ratio(name, &s(0)?)?)),
         ("sqrt", 1) => ok(scalar(Expr::sqrt(&s(0)?))),
-        ("atan2", 2) => ok(scalar(Expr::atan2(&s(0)?, &s(1)?))),
+        ("atan2", 2) => {
+            let (y, x) = (s(0)?, s(1)?);
+            ok(scalar(
+                branch::atan2(&y, &x).map_or_else(|| Expr::atan2(&y, &x), |(t, _)| t),
+            ))
+        }
         ("asin" | "acos" | "atan" | "abs", 1) => {
             let (f, g): (Func, fn(f64) -> f64) = match name {
                 "asin" => (Func::Asin, f64::asin),
@@ -274,7 +249,7 @@ pub fn eval_symbolic(name: &str, vals: &[Value], kind: &Kind) -> Out {
 /// The closed form of an inverse map of a symbolic rotation on its branch
 /// ([`branch`]), and that branch; None where there is none.
 fn on_branch(name: &str, r: &Mat) -> Option<(Value, Branch)> {
-    let scalars = |v: Vec<Expr>| tuple(v.into_iter().map(scalar).collect());
+    let scalars = |v: Vec<Expr>| vec3(&v);
     Some(match name {
         "euler_zyx" | "rpy" => {
             let (mut v, b) = branch::euler(r, true)?;
@@ -325,10 +300,7 @@ fn inverse_map(name: &str, r: &Mat) -> Out {
         return ok(v);
     }
     match name {
-        "euler_zyx" => ok(tuple(euler_zyx(r)?.into_iter().map(scalar).collect())),
-        "euler_zxz" => ok(tuple(euler_zxz(r)?.into_iter().map(scalar).collect())),
         "quat" => ok(make(&Kind::Vector(Some(4)), Mat::column(quat(r)?))),
-        "rpy" => ok(tuple(euler_zyx(r)?.into_iter().rev().map(scalar).collect())),
         _ => None,
     }
 }
@@ -337,15 +309,26 @@ fn inverse_map(name: &str, r: &Mat) -> Out {
 /// say which branch was assumed): `assumed cos(b) > 0 and a, b, c in
 /// (−π, π]`. None when the call has no such form.
 pub fn branch_note(name: &str, vals: &[Value], span: Span) -> Option<Diagnostic> {
-    let r = match vals {
-        [v] => mat_of(v)?,
+    let (b, what) = match vals {
+        [y, x] if name == "atan2" => {
+            let (y, x) = (scalar_of(y)?, scalar_of(x)?);
+            (branch::atan2(&y, &x)?.1, "symbolic arguments")
+        }
+        [v] => {
+            let r = mat_of(v)?;
+            let transform = (r.rows, r.cols) == (4, 4) && matches!(name, "log" | "MatrixLog6");
+            if ((r.rows, r.cols) != (3, 3) && !transform) || r.as_f64().is_some() {
+                return None;
+            }
+            let what = if transform {
+                "a symbolic transform"
+            } else {
+                "a symbolic rotation"
+            };
+            (on_branch(name, &r)?.1, what)
+        }
         _ => return None,
     };
-    let transform = (r.rows, r.cols) == (4, 4) && matches!(name, "log" | "MatrixLog6");
-    if ((r.rows, r.cols) != (3, 3) && !transform) || r.as_f64().is_some() {
-        return None;
-    }
-    let (_, b) = on_branch(name, &r)?;
     let show = |es: &[Expr]| {
         es.iter()
             .map(|e| crate::sym::print::expr(e, Default::default()))
@@ -356,23 +339,32 @@ pub fn branch_note(name: &str, vals: &[Value], span: Span) -> Option<Diagnostic>
     if !b.positive.is_empty() {
         parts.push(format!("{} > 0", show(&b.positive)));
     }
-    if !b.angles.is_empty() {
-        let open = if matches!(
-            name,
-            "log" | "MatrixLog3" | "MatrixLog6" | "quat" | "cayley"
-        ) {
-            "(−π, π)"
-        } else {
-            "(−π, π]"
-        };
-        parts.push(format!("{} in {open}", show(&b.angles)));
+    // −θ in (−π, π) is θ in (−π, π): each angle with its sign taken out
+    // (θ in (−π, π] read so is −θ in [−π, π))
+    let open = matches!(
+        name,
+        "log" | "MatrixLog3" | "MatrixLog6" | "quat" | "cayley"
+    );
+    let leads_minus = |e: &Expr| crate::sym::print::expr(e, Default::default()).starts_with('-');
+    let (minus, plus): (Vec<Expr>, Vec<Expr>) = b.angles.iter().cloned().partition(leads_minus);
+    let minus: Vec<Expr> = minus.iter().map(Expr::neg).collect();
+    let (plus, minus) = if open {
+        ([plus, minus].concat(), Vec::new())
+    } else {
+        (plus, minus)
+    };
+    let range = if open { "(−π, π)" } else { "(−π, π]" };
+    if !plus.is_empty() {
+        parts.push(format!("{} in {range}", show(&plus)));
+    }
+    if !minus.is_empty() {
+        parts.push(format!("{} in [−π, π)", show(&minus)));
     }
     if parts.is_empty() {
         return None;
     }
-    let what = if transform { "transform" } else { "rotation" };
     let text = format!(
-        "{name} of a symbolic {what}: the closed form on the branch {}",
+        "{name} of {what}: the closed form on the branch {}",
         parts.join(" and ")
     );
     Some(Diagnostic::note(ErrorKind::Domain, span, text))

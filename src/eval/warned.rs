@@ -15,6 +15,7 @@ use std::rc::Rc;
 use super::value::{Sym, Value};
 use crate::diagnostics::Diagnostic;
 use crate::sym::Symbol;
+use crate::values::operation::Operation;
 use crate::values::recipe::{self, Recipe, Step};
 
 /// The most values remembered (the oldest are forgotten first: a value
@@ -98,7 +99,7 @@ impl Warned {
 }
 
 /// The recipe that made `v` (a tuple's: its parts' call), through the
-/// part of a call it is.
+/// part or entry of a call it is.
 fn origin(v: &Value) -> Option<Origin> {
     let r = match v {
         Value::Formula { how: Some(r), .. } => r,
@@ -109,7 +110,9 @@ fn origin(v: &Value) -> Option<Origin> {
         _ => return None,
     };
     Some(Origin::Made(match (&r.step, r.args.as_slice()) {
-        (Step::Part(_), [whole]) => whole.clone(),
+        // a part of a call's tuple, or an entry of its vector (the angles
+        // of `(r, p, w) = euler_zyx(…)`, each `v[i]`): the call's
+        (Step::Part(_) | Step::Op(Operation::Index(_)), [whole]) => whole.clone(),
         _ => r.clone(),
     }))
 }

@@ -36,7 +36,9 @@ pub fn block(m: &Mat, style: Style, indent: usize) -> String {
         return latex(m, style);
     }
     match (m.rows, m.cols) {
-        (1, 1) => print::join(&print::terms(&m.data[0], st), WIDTH, indent),
+        (1, 1) => {
+            crate::sym::layout::join_from(&print::terms(&m.data[0], st), WIDTH, indent, indent)
+        }
         (_, 1) => {
             let one = inline(m, style);
             if one.chars().count() + indent <= WIDTH {

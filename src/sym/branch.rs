@@ -76,7 +76,10 @@ pub fn atan2_angle(y: &Expr, x: &Expr) -> Option<(Expr, Expr)> {
         return Some((Expr::num(a.atan2(b)), Expr::num(a.hypot(b))));
     }
     let mut best: Option<(Expr, Expr)> = None;
-    for k in candidates(&w) {
+    // θ = 0 first: atan2(0, cos b) = 0 and atan2(cos b, 0) = π/2 for cos b > 0
+    let mut tries = vec![Vec::new()];
+    tries.extend(candidates(&w));
+    for k in tries {
         let theta = angle_of(&k);
         let Some(turn) = Expr::expi(&theta.neg()) else {
             continue;
@@ -285,87 +288,112 @@ pub fn cayley(r: &Mat) -> Option<(Vec<Expr>, Branch)> {
     Some((axis.iter().map(|a| a.mul(&t)).collect(), b))
 }
 
-/// Euler angles (a, b, c) of R = Rot(i, a) Rot(j, b) Rot(i or k, c) from
-/// three atan2's whose common factor is assumed positive: for ZYX
-/// (`zyx` true) a = atan2(r21, r11) with k = cos b, b = atan2(−r31, k),
-/// c = atan2(r32, r33); for ZXZ a = atan2(r13, −r23) with k = sin b,
-/// b = atan2(k, r33), c = atan2(r31, r32).
-pub fn euler(r: &Mat, zyx: bool) -> Option<(Vec<Expr>, Branch)> {
-    let g = |i: usize, j: usize| r.get(i, j).clone();
-    let mut br = Branch::default();
-    let (a, k) = if zyx {
-        atan2_angle(&g(1, 0), &g(0, 0))?
-    } else {
-        atan2_angle(&g(0, 2), &g(1, 2).neg())?
+/// `e` with a lone `abs(f)` (times a constant) read as f where f is
+/// assumed positive on the branch — or, when nothing is assumed yet, with
+/// f > 0 assumed now (√(cos² b) = |cos b| = cos b for cos b > 0).
+fn drop_abs(e: &Expr, br: &mut Branch) -> Expr {
+    let Some((m, c)) = e.terms.iter().next() else {
+        return e.clone();
     };
-    let (b, kb) = if zyx {
-        atan2_angle(&g(2, 0).neg(), &k)?
-    } else {
-        atan2_angle(&k, &g(2, 2))?
+    let f = match (e.terms.len(), m.as_slice()) {
+        (1, [(Var::Call(call), 1)]) if call.f == super::expr::Func::Abs => match &call.args[..] {
+            [f] => f,
+            _ => return e.clone(),
+        },
+        _ => return e.clone(),
     };
-    let (c, kc) = if zyx {
-        atan2_angle(&g(2, 1), &g(2, 2))?
+    if br.positive.is_empty() {
+        br.assume_positive(f);
+    }
+    if br.positive.contains(f) {
+        f.scale(c)
     } else {
-        atan2_angle(&g(2, 0), &g(2, 1))?
-    };
-    // one assumption: the factors are k itself or positive constants
-    for f in [&kb, &kc] {
-        if f.as_const().is_none() && *f != k {
-            return None;
+        e.clone()
+    }
+}
+
+/// atan2(y, x) on the branch `br`: θ when y = k sin θ and x = k cos θ with
+/// k a positive constant or a factor assumed positive on the branch (or,
+/// when nothing is assumed yet, assumed now), θ then assumed in (−π, π];
+/// else the call itself (right on every branch).
+fn reduce(y: &Expr, x: &Expr, br: &mut Branch) -> (Expr, bool) {
+    let mut tried = br.clone();
+    let (y2, x2) = (drop_abs(y, &mut tried), drop_abs(x, &mut tried));
+    if let Some((theta, k)) = atan2_angle(&y2, &x2) {
+        let known = k.as_const().is_some() || tried.positive.contains(&k);
+        if known || tried.positive.is_empty() {
+            tried.assume_positive(&k);
+            tried.assume_angle(&theta);
+            *br = tried;
+            return (theta, true);
         }
     }
-    br.assume_positive(&k);
-    for x in [&a, &b, &c] {
-        br.assume_angle(x);
+    (Expr::atan2(y, x), false)
+}
+
+/// atan2(y, x) of symbolic arguments where a closed form holds with no
+/// assumption but the angle's range: y = k sin θ, x = k cos θ with k a
+/// positive constant gives θ, assumed in (−π, π].
+pub fn atan2(y: &Expr, x: &Expr) -> Option<(Expr, Branch)> {
+    if y.as_f64().is_some() && x.as_f64().is_some() {
+        return None;
     }
-    Some((vec![a, b, c], br))
+    let (theta, k) = atan2_angle(y, x)?;
+    k.as_const()?;
+    let mut b = Branch::default();
+    b.assume_angle(&theta);
+    Some((theta, b))
+}
+
+/// Euler angles (a, b, c) of R = Rot(i, a) Rot(j, b) Rot(i or k, c): for
+/// ZYX (`zyx` true) a = atan2(r21, r11) and c = atan2(r32, r33) with the
+/// common factor k = cos b, and b = atan2(−r31, k) where k = √(r32² +
+/// r33²); for ZXZ a = atan2(r13, −r23) and c = atan2(r31, r32) with k =
+/// sin b, and b = atan2(k, r33). Each atan2 whose arguments are k sin θ and
+/// k cos θ is θ on the branch k > 0, θ ∈ (−π, π] (one factor assumed
+/// positive, the others positive constants or the same); the others are
+/// kept as atan2 calls, right on every branch. None at gimbal lock (k ≡ 0),
+/// where numbers choose c = 0.
+pub fn euler(r: &Mat, zyx: bool) -> Option<(Vec<Expr>, Branch)> {
+    let g = |i: usize, j: usize| r.get(i, j).clone();
+    let sq = |e: &Expr| e.mul(e);
+    let mut br = Branch::default();
+    let ((ya, xa), (yc, xc)) = if zyx {
+        ((g(1, 0), g(0, 0)), (g(2, 1), g(2, 2)))
+    } else {
+        ((g(0, 2), g(1, 2).neg()), (g(2, 0), g(2, 1)))
+    };
+    if ya.is_zero() && xa.is_zero() {
+        return None;
+    }
+    let (a, a_done) = reduce(&ya, &xa, &mut br);
+    let (c, c_done) = reduce(&yc, &xc, &mut br);
+    // k: the factor a or c was found with, else √(the sum of squares)
+    let k = match (a_done || c_done, br.positive.first()) {
+        (true, Some(k)) => k.clone(),
+        (true, None) => {
+            let (y, x) = if a_done { (&ya, &xa) } else { (&yc, &xc) };
+            atan2_angle(y, x).map_or_else(|| Expr::sqrt(&sq(&ya).add(&sq(&xa))), |(_, k)| k)
+        }
+        _ => Expr::sqrt(&sq(&yc).add(&sq(&xc))),
+    };
+    let (b, _) = if zyx {
+        reduce(&g(2, 0).neg(), &k, &mut br)
+    } else {
+        reduce(&k, &g(2, 2), &mut br)
+    };
+    // the angles assumed, in the order a, b, c
+    let mut out = Branch {
+        positive: br.positive.clone(),
+        angles: Vec::new(),
+    };
+    for x in [&a, &b, &c] {
+        if br.angles.contains(x) {
+            out.assume_angle(x);
+        }
+    }
+    Some((vec![a, b, c], out))
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::sym::matrix::rot_axis;
-
-    fn s(n: &str) -> Expr {
-        Expr::symbol(Symbol::new(n))
-    }
-
-    #[test]
-    fn atan2_of_a_scaled_sine_and_cosine_is_the_angle() {
-        let (a, b) = (s("a"), s("b"));
-        let k = Expr::cos(&b);
-        let (t, f) = atan2_angle(&Expr::sin(&a).mul(&k), &Expr::cos(&a).mul(&k)).unwrap();
-        assert_eq!((t, f), (a.clone(), k));
-        // sin(a + π/2) = cos a: the angle carries its quarter turn
-        let (t, f) = atan2_angle(&Expr::cos(&a), &Expr::sin(&a).neg()).unwrap();
-        assert_eq!(
-            t,
-            a.add(&Expr::pi().scale(&Coef::rat(crate::sym::coef::Rat::new(1, 2).unwrap())))
-        );
-        assert_eq!(f, Expr::one());
-    }
-
-    #[test]
-    fn log_and_euler_angles_of_symbolic_rotations() {
-        let (a, b, c) = (s("a"), s("b"), s("c"));
-        let (log, br) = log3(&rot_axis(2, &a)).unwrap();
-        assert_eq!(log, skew(&[Expr::zero(), Expr::zero(), a.clone()]));
-        assert_eq!(br.angles, vec![a.clone()]);
-        let r = rot_axis(2, &a)
-            .mul(&rot_axis(1, &b))
-            .unwrap()
-            .mul(&rot_axis(0, &c))
-            .unwrap();
-        let (angles, br) = euler(&r, true).unwrap();
-        assert_eq!(angles, vec![a.clone(), b.clone(), c.clone()]);
-        assert_eq!(br.positive, vec![Expr::cos(&b)]);
-        let r = rot_axis(2, &a)
-            .mul(&rot_axis(0, &b))
-            .unwrap()
-            .mul(&rot_axis(2, &c))
-            .unwrap();
-        let (angles, br) = euler(&r, false).unwrap();
-        assert_eq!(angles, vec![a, b.clone(), c]);
-        assert_eq!(br.positive, vec![Expr::sin(&b)]);
-    }
-}
+mod tests;

@@ -14,6 +14,7 @@ pub mod eval;
 pub mod expr;
 pub mod factor;
 pub mod fraction;
+pub mod layout;
 pub mod matrix;
 pub mod phase;
 pub mod print;

@@ -39,39 +39,11 @@ pub fn terms(e: &Expr, st: Style) -> Vec<(bool, String)> {
     super::fraction::terms(e, st)
 }
 
+pub use super::layout::join;
+
 /// An expression on one line.
 pub fn expr(e: &Expr, st: Style) -> String {
     join(&terms(e, st), usize::MAX, 0)
-}
-
-/// Signed terms joined, broken before a `+` or `-` where a line would pass
-/// `width`, continuation lines indented by `indent`.
-pub fn join(ts: &[(bool, String)], width: usize, indent: usize) -> String {
-    if ts.is_empty() {
-        return "0".into();
-    }
-    let mut out = String::new();
-    let mut line = 0usize;
-    for (i, (neg, body)) in ts.iter().enumerate() {
-        let piece = match (i, neg) {
-            (0, false) => body.clone(),
-            (0, true) => format!("-{body}"),
-            (_, false) => format!(" + {body}"),
-            (_, true) => format!(" - {body}"),
-        };
-        let len = text_width(&piece);
-        if i > 0 && line + len > width {
-            out.push('\n');
-            out.push_str(&" ".repeat(indent));
-            let p = piece.trim_start();
-            line = indent + text_width(p);
-            out.push_str(p);
-        } else {
-            line += len;
-            out.push_str(&piece);
-        }
-    }
-    out
 }
 
 pub(super) fn power(base: &str, e: i32, latex: bool) -> String {
@@ -208,10 +180,12 @@ pub fn symbol(s: &Symbol, st: Style) -> String {
     if s.dots == 0 {
         return s.name.to_string();
     }
-    if s.dots > 2 {
+    let greek = GREEK.iter().find(|(w, _, _)| *w == base).map(|g| g.1);
+    // beyond two dots, or over a name of several letters (`th`: a dot over
+    // the first would read ṫh), the rate as it is typed: th', q'''
+    if s.dots > 2 || (greek.is_none() && base.chars().count() > 1) {
         return format!("{}{}", s.name, "'".repeat(s.dots as usize));
     }
-    let greek = GREEK.iter().find(|(w, _, _)| *w == base).map(|g| g.1);
     let mut chars = base.chars();
     let first = greek.or_else(|| chars.next()).unwrap_or('?');
     let rest: String = if greek.is_some() {
@@ -508,7 +482,10 @@ pub fn matrix(cells: &[Vec<Expr>], st: Style, indent: usize, width: usize) -> St
                 return line;
             }
             r.iter()
-                .map(|t| join(t, width.saturating_sub(indent + 1).max(40), indent + 3))
+                .map(|t| {
+                    let w = width.saturating_sub(indent + 1).max(40);
+                    super::layout::join_from(t, w, indent + 3, indent + 1)
+                })
                 .collect::<Vec<_>>()
                 .join(&format!(",\n{pad}"))
         })
@@ -578,5 +555,14 @@ mod tests {
             digits: 4,
         };
         assert_eq!(expr(&Expr::symbol(th.dot()), latex), "\\dot\\theta");
+        // a name of several letters: the rate as typed, the LaTeX dot over
+        // the whole name
+        let th = Symbol::timed("th1");
+        assert_eq!(expr(&Expr::symbol(th.dot()), Style::default()), "th1'");
+        assert_eq!(
+            expr(&Expr::symbol(th.dot().dot()), Style::default()),
+            "th1''"
+        );
+        assert_eq!(expr(&Expr::symbol(th.dot()), latex), "\\dot{th}_1");
     }
 }

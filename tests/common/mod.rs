@@ -261,6 +261,40 @@ pub fn same(setup: &str, a: &str, b: &str) {
     }
 }
 
+// ------------------------------------------------------------ examples
+
+/// The numbers of an example as they are written (their byte ranges),
+/// not those inside names (`Rotz`, `t2`, `1e-7` is one number).
+pub fn literals(src: &str) -> Vec<(usize, usize)> {
+    let b = src.as_bytes();
+    let mut out = Vec::new();
+    let mut i = 0;
+    let mut in_string = false;
+    while i < b.len() {
+        let c = b[i];
+        if c == b'"' {
+            in_string = !in_string;
+        }
+        let word_before = i > 0 && (b[i - 1].is_ascii_alphanumeric() || b[i - 1] == b'_');
+        if !in_string && c.is_ascii_digit() && !word_before {
+            let start = i;
+            while i < b.len() && (b[i].is_ascii_digit() || b[i] == b'.') {
+                i += 1;
+            }
+            if i + 1 < b.len() && b[i] == b'e' && (b[i + 1] == b'-' || b[i + 1].is_ascii_digit()) {
+                i += 2;
+                while i < b.len() && b[i].is_ascii_digit() {
+                    i += 1;
+                }
+            }
+            out.push((start, i));
+            continue;
+        }
+        i += 1;
+    }
+    out
+}
+
 // ------------------------------------------------------------ random points
 
 /// A small deterministic generator (xorshift) of the points at which a
