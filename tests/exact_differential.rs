@@ -16,7 +16,9 @@
 //! - (d) floats differing by rounding only: the note points to `≈`;
 //! - (e) `x ≈ y` agrees with the values;
 //! - (f) `--exact` prints exactly the value (read back by the oracle),
-//!   typed first and bound later.
+//!   typed first and bound later;
+//! - and `x < y`, `x >= y` of scalars are in the values' order (exact
+//!   sides exactly).
 //!
 //! Cases are seeded and reproducible (`sym_differential/cases.rs`):
 //! `CHASLES_DIFF_CASES` sets how many, `CHASLES_DIFF_SEED` where to start.
@@ -286,7 +288,8 @@ fn check_pair(xs: &str, ys: &str, x: &[V], y: &[V]) -> Result<(), String> {
         return Ok(());
     }
     let src = format!(
-        "x = {xs}\ny = {ys}\nx == y\nx ~= y\ngiven t\n({xs})*t == ({ys})*t\nu = ({xs})*t\nt = 1\nu == x\nu\n"
+        "x = {xs}\ny = {ys}\nx == y\nx ~= y\ngiven t\n({xs})*t == ({ys})*t\nu = ({xs})*t\nt = 1\nu == x\nu\n{}",
+        if x.len() == 1 { "x < y\nx >= y\n" } else { "" }
     );
     TALLY.with(|t| t.borrow_mut().checked += 1);
     let ctx = |e: String| format!("{e}\n--- script:\n{src}");
@@ -357,6 +360,35 @@ fn check_pair(xs: &str, ys: &str, x: &[V], y: &[V]) -> Result<(), String> {
     }
     check_value("u", &lines[10], x).map_err(ctx)?;
     check_exact_text("u", &lines[10], x).map_err(ctx)?;
+    if let ([x], [y]) = (x, y) {
+        check_order(&lines, x, y).map_err(ctx)?;
+    }
+    Ok(())
+}
+
+/// `x < y` (line 11) and `x >= y` (line 12) of scalars: exact sides in
+/// their exact order (or honestly undecided); float sides in the order of
+/// their values where the floats are farther apart than rounding.
+fn check_order(lines: &[Line], x: &V, y: &V) -> Result<(), String> {
+    let d = x.h.sub(&y.h);
+    let sign = if hp::same(&x.h, &y.h) { 0 } else { d.signum() };
+    let exact = x.exact && y.exact;
+    let apart = d.to_f64().abs() > 8.0 * (x.err + y.err);
+    for (k, what, want) in [(11, "x < y", sign < 0), (12, "x >= y", sign >= 0)] {
+        let got = bool_of(what, &lines[k])?;
+        match got {
+            None if exact => TALLY.with(|t| t.borrow_mut().undecided += 1),
+            None => return Err(format!("{what}: undecided on floats")),
+            Some(b) if b != want && (exact || apart) => {
+                return Err(format!(
+                    "{what} is {b}, but x − y is {:e}{}",
+                    d.to_f64(),
+                    if exact { " (exact sides)" } else { "" }
+                ));
+            }
+            Some(_) => {}
+        }
+    }
     Ok(())
 }
 

@@ -303,3 +303,45 @@ fn eye_and_zeros_are_exact() {
     );
     assert_eq!(out.lines().filter(|l| *l == "true").count(), 5, "{out}");
 }
+
+/// Exact numbers with π are ordered exactly: `pi > 3.141592653589793`
+/// was false (the float of the difference is 0; it is 1.2e-16), and so
+/// was `pi < 3.14159265358979324`; a decimal of π's float typed with more
+/// digits is that decimal. Sides closer than 50 places are undecided,
+/// said so, never guessed.
+#[test]
+fn pi_is_ordered_exactly() {
+    let out = common::printed(
+        "pi > 3.141592653589793\npi < 3.14159265358979324\npi > 3.1415926535897932\n\
+         2*pi - 6.283185307179586 > 0\n1/pi < 0.3183098861837907\n\
+         3.1415926535897932 == pi\npi >= pi",
+    );
+    assert_eq!(out, "true\ntrue\ntrue\ntrue\ntrue\nfalse\ntrue\n");
+    let e = common::error("pi > 3.14159265358979323846264338327950288419716939937510582");
+    assert!(e.contains("cannot decide"), "{e}");
+}
+
+/// An order of exact numbers is decided by their exact forms even where
+/// their floats are far apart: `tan(2*pi) < 0` and `sin(2*pi) < 0` were
+/// true (floats −2.4e-16), `(0.1 - 10^13) + 10^13 < 0.1` was true while
+/// `==` said equal (the float is 0.0996). Found by
+/// `tests/exact_differential.rs`.
+#[test]
+fn exact_numbers_are_ordered_by_their_exact_forms() {
+    let out = common::printed(
+        "tan(2*pi) < 0
+sin(2*pi) < 0
+tan(360 deg) >= 0
+         (0.1 - 10^13) + 10^13 < 0.1
+(0.1 - 10^13) + 10^13 >= 0.1",
+    );
+    assert_eq!(
+        out,
+        "false
+false
+true
+false
+true
+"
+    );
+}

@@ -59,6 +59,11 @@ pub fn compare_rule(l: &Ty, r: &Ty) -> Result<Ty, RuleError> {
     Ok(Ty::plain(Kind::Bool))
 }
 
+/// True when both sides are numbers (no symbol to wait for).
+fn numbers(a: &Value, b: &Value) -> bool {
+    matches!(a, Value::Num { .. }) && matches!(b, Value::Num { .. })
+}
+
 fn agree(a: Option<usize>, b: Option<usize>) -> bool {
     a.is_none() || b.is_none() || a == b
 }
@@ -89,6 +94,9 @@ impl Interp<'_> {
             // Undecided while its symbols are free: a bool that waits for
             // their numbers and is then decided as typed first (§7).
             (None, Some(a), Some(b)) if sides.undecided => {
+                if numbers(a, b) {
+                    return Err(self.too_close(op, lhs, rhs, op_span));
+                }
                 match crate::values::waiting::make(op, a, b) {
                     Some(w) => Some(w),
                     None => return Err(self.undecided(op, lhs, rhs, op_span, false)),
@@ -97,6 +105,22 @@ impl Interp<'_> {
             (v, ..) => v.map(Value::Bool),
         };
         Ok(Typed::new(Ty::plain(Kind::Bool), val))
+    }
+
+    /// "cannot decide `a < b`" of two exact numbers closer than their
+    /// bounds can tell apart (π against 50 digits of it).
+    fn too_close(&self, op: CmpOp, lhs: &Expr, rhs: &Expr, op_span: Span) -> Diagnostic {
+        Diagnostic::error(
+            ErrorKind::Domain,
+            op_span,
+            format!(
+                "cannot decide `{} {} {}`: the two sides agree to 50 decimal places",
+                self.text(lhs.span).trim(),
+                op_text(op),
+                self.text(rhs.span).trim()
+            ),
+        )
+        .with_help("compare within rounding with ≈ (typed ~=)")
     }
 
     /// "cannot decide `a < b` without numbers"; in an `assert`, which
@@ -183,6 +207,11 @@ impl Interp<'_> {
             let s = self.sides(*op, lhs, rhs, *op_span)?;
             // (an assert over free symbols can neither pass nor fail)
             if s.undecided {
+                if let (Some(a), Some(b)) = (s.l.value(), s.r.value())
+                    && numbers(a, b)
+                {
+                    return Err(self.too_close(*op, lhs, rhs, *op_span));
+                }
                 return Err(self.undecided(*op, lhs, rhs, *op_span, true));
             }
             if s.verdict != Some(false) {

@@ -221,7 +221,8 @@ impl Interp<'_> {
         if matches!(self.text(span).trim(), "pi" | "π") {
             Exact::known(crate::sym::Mat::scalar(crate::sym::Expr::pi()))
         } else {
-            Exact::Typed
+            // (`3.1415926535897932` is that decimal, not π's float)
+            self.long_literal(std::f64::consts::PI, span)
         }
     }
 

@@ -52,10 +52,15 @@ pub fn holds(a: &Value, b: &Value, op: CmpOp) -> Result<Option<bool>, String> {
     };
     // Exact numbers compare exactly (§3, §7): `sqrt(2)*sqrt(3) <= sqrt(6)`
     // is true though the floats may differ in the last bit.
-    // (floats farther apart than rounding are in their exact numbers'
-    // order: the exact forms are worked out only for close ones)
-    let close = (x - y).abs() <= 1e-9 * x.abs().max(y.abs());
-    let order = if close { exact_order(a, b) } else { None }.or_else(|| x.partial_cmp(&y));
+    // (always by the exact forms when both sides have one: floats of
+    // exact numbers can be far from them, tan(2π) is −2.4e-16 and
+    // (0.1 − 10¹³) + 10¹³ is 0.0996)
+    let order = match exact_order(a, b) {
+        Some(Some(o)) => Some(o),
+        // (exact sides closer than the bounds of π can tell: honest)
+        Some(None) => return Ok(None),
+        None => x.partial_cmp(&y),
+    };
     use std::cmp::Ordering::{Equal, Greater, Less};
     Ok(Some(match (op, order) {
         // (NaN is in no order: every comparison with it is false)
@@ -140,9 +145,11 @@ fn sign(e: &crate::sym::Expr) -> Option<bool> {
 /// The order of two scalars that both have exact forms (a number typed
 /// or made exactly, or a formula with no symbols left): by the sign of
 /// their exact difference, exactly when it is a number of ℚ(√2, √3),
-/// else by the float of the difference, which keeps the digits two close
-/// floats lose. None when a side has no exact form.
-fn exact_order(a: &Value, b: &Value) -> Option<std::cmp::Ordering> {
+/// else (π in it) between bounds of 50 decimal places
+/// ([`crate::sym::sign::sign_with_pi`]: `pi > 3.141592653589793` was
+/// false, the float of the difference being 0). None when a side has no
+/// exact form; `Some(None)` when the bounds cannot tell.
+fn exact_order(a: &Value, b: &Value) -> Option<Option<std::cmp::Ordering>> {
     let form = |v: &Value| -> Option<crate::sym::Expr> {
         let m = match v {
             Value::Formula { m, .. } => m.clone(),
@@ -156,14 +163,17 @@ fn exact_order(a: &Value, b: &Value) -> Option<std::cmp::Ordering> {
     };
     let (x, y) = (form(a)?, form(b)?);
     if x == y {
-        return Some(std::cmp::Ordering::Equal);
+        return Some(Some(std::cmp::Ordering::Equal));
     }
     let d = x.sub(&y);
     let sign = match d.as_const() {
         Some(crate::sym::coef::Coef::Exact { re, im }) if im.is_zero() => re.signum(),
-        _ => d.as_f64()?,
+        _ => match crate::sym::sign::sign_with_pi(&d) {
+            Some(s) => f64::from(s),
+            None => return Some(None),
+        },
     };
-    sign.partial_cmp(&0.0)
+    Some(sign.partial_cmp(&0.0))
 }
 
 #[cfg(test)]

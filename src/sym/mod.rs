@@ -20,6 +20,7 @@ pub mod phase;
 pub mod print;
 pub mod rat;
 pub mod rational;
+pub mod sign;
 pub mod size;
 pub mod trig;
 
