@@ -224,6 +224,18 @@ impl Ord for Coef {
     }
 }
 
+/// The hash of the order's equality: an approximate part by its bits (as
+/// `total_cmp` compares it), so shared calls ([`super::intern`]) find
+/// their equals.
+impl std::hash::Hash for Coef {
+    fn hash<H: std::hash::Hasher>(&self, h: &mut H) {
+        match self {
+            Coef::Exact { re, im } => (0u8, re, im).hash(h),
+            Coef::Approx { re, im } => (1u8, re.to_bits(), im.to_bits()).hash(h),
+        }
+    }
+}
+
 impl PartialOrd for Coef {
     fn partial_cmp(&self, other: &Coef) -> Option<Ordering> {
         Some(self.cmp(other))

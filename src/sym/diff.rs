@@ -26,9 +26,22 @@ impl Expr {
     /// The derivative (chain rule through every variable).
     pub fn diff(&self, wrt: &Wrt) -> Expr {
         let mut out = Expr::zero();
+        // each variable's derivative, worked out once (a call may sit in
+        // thousands of terms; a shared call is known by its pointer)
+        let mut known: Vec<(Var, Expr)> = Vec::new();
         for (m, c) in &self.terms {
             for (i, (v, e)) in m.iter().enumerate() {
-                let dv = var_diff(v, wrt);
+                let same = |(k, _): &&(Var, Expr)| match (k, v) {
+                    (Var::Call(a), Var::Call(b)) => Arc::ptr_eq(a, b),
+                    _ => k == v,
+                };
+                let dv = match known.iter().find(same) {
+                    Some((_, d)) => d,
+                    None => {
+                        known.push((v.clone(), var_diff(v, wrt)));
+                        &known[known.len() - 1].1
+                    }
+                };
                 if dv.is_zero() {
                     continue;
                 }
@@ -40,7 +53,11 @@ impl Expr {
                 }
                 let mut t = Expr::zero();
                 t.push(rest, c.mul(&Coef::int(i64::from(*e))));
-                out = out.add(&t.mul(&dv));
+                // (summed in place: adding to a copy of the sum each time
+                // was quadratic in its length)
+                for (m, c) in t.mul(dv).terms {
+                    out.push(m, c);
+                }
             }
         }
         out
@@ -75,10 +92,10 @@ fn var_diff(v: &Var, wrt: &Wrt) -> Expr {
     }
 }
 
-fn call_diff(c: &Call, wrt: &Wrt) -> Expr {
+fn call_diff(c: &Arc<Call>, wrt: &Wrt) -> Expr {
     let x = &c.args[0];
     let dx = x.diff(wrt);
-    let me = Expr::var(Var::Call(Arc::new(c.clone())));
+    let me = Expr::var(Var::Call(c.clone()));
     // 1/e, as a plain call where the exact reciprocal does not fit (never
     // 0: a derivative that cannot be formed exactly is still right).
     let recip = |e: &Expr| {

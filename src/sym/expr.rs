@@ -101,15 +101,19 @@ impl Func {
     }
 }
 
-/// A call with canonical arguments.
-#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord)]
+/// A call with canonical arguments. Calls are shared ([`super::intern`]):
+/// equal calls made on one thread are one allocation, so comparing them
+/// (as monomials are compared in every sum and product) is one pointer
+/// comparison, not a walk of their arguments.
+#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub struct Call {
     pub f: Func,
     pub args: Vec<Expr>,
 }
 
-/// A variable of a monomial.
-#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord)]
+/// A variable of a monomial, in the order of its variants (a shared call
+/// compares equal to itself at once: [`super::intern`]).
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub enum Var {
     /// π, transcendental, so an independent variable.
     Pi,
@@ -124,7 +128,7 @@ pub enum Var {
 pub type Mono = Vec<(Var, i32)>;
 
 /// A canonical expression: monomials to nonzero coefficients.
-#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord, Default)]
+#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord, Default, Hash)]
 pub struct Expr {
     pub terms: BTreeMap<Mono, Coef>,
 }
@@ -252,7 +256,7 @@ impl Expr {
         Expr::var(Var::Pi)
     }
     pub(super) fn call(f: Func, args: Vec<Expr>) -> Expr {
-        Expr::var(Var::Call(Arc::new(Call { f, args })))
+        Expr::var(Var::Call(super::intern::call(Call { f, args })))
     }
     /// The constant, when there are no variables.
     pub fn as_const(&self) -> Option<Coef> {

@@ -174,11 +174,16 @@ impl Exact {
             Exact::Later(l) => l
                 .form
                 .get_or_init(|| {
-                    let m = match l.make.take()? {
-                        Make::Op(p) => (p.run)(&p.op, &p.args.refs(), &p.kind)?,
-                        Make::Fn(f) => f()?,
-                    };
-                    is_exact(&m).then_some(m)
+                    // (a form asks for its operands' forms: a chain of
+                    // closures, `Exact::later`, has no depth bound, so the
+                    // stack grows on the heap where it runs low)
+                    stacker::maybe_grow(64 * 1024, 1024 * 1024, || {
+                        let m = match l.make.take()? {
+                            Make::Op(p) => (p.run)(&p.op, &p.args.refs(), &p.kind)?,
+                            Make::Fn(f) => f()?,
+                        };
+                        is_exact(&m).then_some(m)
+                    })
                 })
                 .clone(),
         }

@@ -458,10 +458,15 @@ pub fn brackets(rows: &[Vec<Value>]) -> Result<Value, String> {
 /// when skew-symmetric; SO(2) and SE(2) alike for 2×2 and planar 3×3
 /// matrices; else by shape.
 pub fn classify(m: &Mat) -> Kind {
-    let rotation =
-        |r: &Mat| r.mul(&r.transpose()) == Some(Mat::identity(3)) && r.det() == Some(Expr::one());
-    let planar =
-        |r: &Mat| r.mul(&r.transpose()) == Some(Mat::identity(2)) && r.det() == Some(Expr::one());
+    // (a look at one point first: the exact product of large entries
+    // costs seconds, and most matrices are no rotation)
+    let orthonormal = |r: &Mat, n: usize| {
+        !r.surely_not_orthogonal()
+            && r.mul(&r.transpose()) == Some(Mat::identity(n))
+            && r.det() == Some(Expr::one())
+    };
+    let rotation = |r: &Mat| orthonormal(r, 3);
+    let planar = |r: &Mat| orthonormal(r, 2);
     let last_row = |n: usize| {
         let mut row = Mat::zeros(1, n);
         row.set(0, n - 1, Expr::one());

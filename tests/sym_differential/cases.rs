@@ -4,7 +4,8 @@
 //! reported with that seed, its script, and the smallest failing case
 //! shrinking finds. `CHASLES_DIFF_CASES` sets how many cases run (more on
 //! demand); `CHASLES_DIFF_SEED=random` starts at a random seed (printed),
-//! and `CHASLES_DIFF_SEED=S CHASLES_DIFF_CASES=1` reruns case S alone.
+//! and `CHASLES_DIFF_SEED=S CHASLES_DIFF_CASES=1` reruns case S alone;
+//! `CHASLES_DIFF_TIMES` prints each case's time.
 
 use proptest::strategy::{Strategy, ValueTree};
 use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
@@ -81,6 +82,9 @@ pub fn run<S: Strategy>(
         let clock = std::time::Instant::now();
         let result = try_one(&check, &tree.current());
         let took = clock.elapsed().as_secs_f64();
+        if std::env::var_os("CHASLES_DIFF_TIMES").is_some() {
+            eprintln!("{name}: seed {seed} took {took:.3} s");
+        }
         total += took;
         if took > slowest.1 {
             slowest = (seed, took);

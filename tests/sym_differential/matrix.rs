@@ -669,6 +669,9 @@ pub fn check((o, w, p): &(Out, Wrap, Point)) -> Result<(), String> {
         }
         Ok(())
     };
+    if std::env::var_os("CHASLES_DIFF_SHOW").is_some() {
+        eprintln!("{later}");
+    }
     let (s, n, msg) = session(&later);
     if n > 0 {
         // a refusal is an answer (not a wrong one)
