@@ -350,3 +350,16 @@ true
 "
     );
 }
+
+/// A function's float where it has no exact value is a float, even when
+/// it happens to be an integer: `sqrt(1 + 10^18)` was the exact 10⁹, so
+/// `sqrt(1 + 10^18)^2 == 10^18` was true on "exact" sides and `--exact`
+/// printed `1e18` and `500000000000000000√3` for (√(10¹⁸ + 1))² Rotx(π/3).
+/// Found by `tests/exact_differential.rs` in release (seed 120614).
+#[test]
+fn an_integer_float_of_a_root_is_no_exact_form() {
+    let out = exact_printed("x = sqrt(1 + 10^18)^2 * Rotx(pi/3)\nx[2, 3]");
+    assert!(!out.contains('√'), "{out}");
+    let out = common::printed("given t\nsqrt(1 + 10^18)^2*t == (10^18 + 1)*t");
+    assert_eq!(out, "true\n");
+}

@@ -230,6 +230,16 @@ impl Expr {
     pub fn num(x: f64) -> Expr {
         Expr::constant(Coef::from_f64(x))
     }
+    /// A float computed by a function with no exact value there (sin 1,
+    /// √(10¹⁸ + 1)): a float coefficient even when it happens to be an
+    /// integer or a simple fraction (cos(1e-9) is 1 in floats, not 1;
+    /// `cos(1e-9) == 1` was true).
+    pub fn float(x: f64) -> Expr {
+        if x == 0.0 {
+            return Expr::default();
+        }
+        Expr::constant(Coef::Approx { re: x, im: 0.0 })
+    }
     /// A number as typed, exactly: the shortest decimal that reads back as
     /// `x` (`0.3` is 3/10; LANGUAGE.md §7), a float only for inf or NaN.
     pub fn typed(x: f64) -> Expr {
@@ -535,7 +545,7 @@ impl Expr {
     /// else kept as a call.
     pub fn apply(f: Func, x: &Expr, num: fn(f64) -> f64) -> Expr {
         match x.as_f64() {
-            Some(v) if num(v).is_finite() => Expr::num(num(v)),
+            Some(v) if num(v).is_finite() => Expr::float(num(v)),
             _ => Expr::call(f, vec![x.clone()]),
         }
     }
@@ -547,7 +557,7 @@ impl Expr {
         {
             return match super::coef::Surd::sqrt_of(&r) {
                 Some(s) => Expr::constant(Coef::real(s)),
-                None => Expr::num(r.to_f64().sqrt()),
+                None => Expr::float(r.to_f64().sqrt()),
             };
         }
         if x.as_const().is_none()
@@ -560,7 +570,7 @@ impl Expr {
     /// atan2(y, x), a number when both are.
     pub fn atan2(y: &Expr, x: &Expr) -> Expr {
         match (y.as_f64(), x.as_f64()) {
-            (Some(a), Some(b)) => Expr::num(a.atan2(b)),
+            (Some(a), Some(b)) => Expr::float(a.atan2(b)),
             _ => Expr::call(Func::Atan2, vec![y.clone(), x.clone()]),
         }
     }

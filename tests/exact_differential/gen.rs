@@ -161,7 +161,10 @@ impl E {
         // 1e120, where a quotient would lose them, a case is left out)
         let v = self.value()?;
         let size = v.size();
-        (v.h.is_zero() || (1e-120..1e120).contains(&size)).then_some(v)
+        // (a zero is one when it is known exactly: 1e-216 is 0 to the
+        // oracle's places)
+        let zero = v.h.is_zero() && v.rat.as_ref().is_some_and(Zero::is_zero);
+        (zero || (1e-120..1e120).contains(&size)).then_some(v)
     }
 
     fn value(&self) -> Option<V> {
