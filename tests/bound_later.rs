@@ -569,6 +569,9 @@ fn ranges_wait_for_numbers() {
         e.contains("a range with step 0 never reaches its end"),
         "{e}"
     );
+    // the length of a list of symbolic items needs no numbers
+    let out = common::printed("given a\nlen([k a for k in 1:3])");
+    assert_eq!(out.lines().last(), Some("3"), "{out}");
     // an item of it is refused until then
     let e = common::error("given a\nr = 0:a:1\nx = r[2]");
     assert!(

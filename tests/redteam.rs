@@ -287,6 +287,9 @@ fn long_literals_are_the_decimals_written() {
         exact_printed("1.00000000000000001"),
         "1.00000000000000001\n"
     );
+    // beyond a float's range: `1e-400` is not 0
+    let out = common::printed("1e-400 == 0\n1e-400 > 0\n1e400 == 10^400");
+    assert_eq!(out, "false\ntrue\ntrue\n");
 }
 
 /// `eye(n)` and `zeros(n)` are 0s and 1s as typed: a product of exact

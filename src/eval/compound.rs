@@ -255,7 +255,13 @@ impl Interp<'_> {
     }
 
     /// A count of a mechanism written as an expression (`links N`): a
-    /// whole number (0 while checking, where it has no value).
+    /// whole number (0 while checking, where it has no value). A count
+    /// made from free symbols is refused, not kept to wait for numbers as
+    /// a comparison or a range waits (`crate::values::waiting`): a
+    /// mechanism is no number, vector or list that a recipe can replay,
+    /// but a whole report (Grübler's formula with its numbers, a lower
+    /// bound, a C-space topology) made once its joints are counted; so
+    /// the user is told to bind the count first.
     fn mech_count(&mut self, e: &Expr) -> Result<i64, Diagnostic> {
         let t = self.expr(e)?;
         if !t.ty.kind.maybe_scalar() {

@@ -188,7 +188,11 @@ impl Interp<'_> {
     fn literal(&self, x: f64, span: Span) -> Value {
         let exact = if x == std::f64::consts::PI {
             self.pi_literal(span)
-        } else if span.end - span.start > 15 {
+        } else if span.end - span.start > 15
+            || (span.end - span.start > 3 && !(x.abs() >= f64::MIN_POSITIVE && x.is_finite()))
+        {
+            // (more digits than a float holds, or beyond its range:
+            // `1e-400` is not 0)
             self.long_literal(x, span)
         } else {
             Exact::Typed
@@ -200,10 +204,11 @@ impl Interp<'_> {
         }
     }
 
-    /// The exact form of a literal of more than 15 characters: the
-    /// decimal written, when its float does not read back as it (more
-    /// than 15 significant digits: `1.00000000000000001` is not 1, nor
-    /// `10000000000000000001` 10¹⁹).
+    /// The exact form of a literal of more than 15 characters, or one
+    /// whose float is 0, subnormal or infinite: the decimal written, when
+    /// its float does not read back as it (more than 15 significant
+    /// digits: `1.00000000000000001` is not 1, nor `10000000000000000001`
+    /// 10¹⁹; `1e-400` is not 0).
     #[cold]
     fn long_literal(&self, x: f64, span: Span) -> Exact {
         match crate::values::exact::written(self.text(span).trim()) {

@@ -135,11 +135,20 @@ pub fn elementwise_help(k: &Kind) -> Option<String> {
 
 /// The picture and list builtins take numbers only: a symbol is a domain
 /// error (there is nothing to draw until the `given` names have numbers).
+/// A picture does not wait for numbers as a range does
+/// (`crate::values::waiting`): printed, it is written to a file (§12), an
+/// effect (`crate::effects`) that must happen where the statement is,
+/// not at some later read. `len`, `sum`, `min`, `max` of a range that
+/// waits wait too (`waiting::of_range`); `len` of a list of symbolic
+/// items is its count, which needs no numbers.
 pub(super) fn numbers_only(
     b: &crate::builtins::Builtin,
     vals: &[Value],
     span: Span,
 ) -> Result<(), Diagnostic> {
+    if b.name == "len" && matches!(vals, [Value::List(_)]) {
+        return Ok(());
+    }
     if b.area == crate::builtins::Area::Pictures
         && vals.iter().any(crate::values::recipe::holds_symbols)
     {

@@ -243,7 +243,7 @@ pub fn written(text: &str) -> Option<Rat> {
     let digits: num_bigint::BigInt = format!("{int}{frac}").parse().ok()?;
     let exp = exp.checked_sub(i32::try_from(frac.len()).ok()?)?;
     // (a literal far beyond a float's range is a float anyway)
-    (exp.unsigned_abs() < 400).then(|| Rat::decimal(&digits, exp))
+    (exp.unsigned_abs() < 2000).then(|| Rat::decimal(&digits, exp))
 }
 
 /// The decimal a float was typed as ([`Rat::typed`]).

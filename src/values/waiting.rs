@@ -43,6 +43,20 @@ pub fn make(op: CmpOp, a: &Value, b: &Value) -> Option<Value> {
     if (x.rows, x.cols) != (y.rows, y.cols) {
         return None;
     }
+    // (only symbols can be waited for: numbers that cannot be ordered
+    // stay undecided)
+    let mut syms = Vec::new();
+    for v in [a, b] {
+        if let Value::Formula { m, how, .. } = v {
+            m.data.iter().for_each(|e| e.symbols(&mut syms));
+            if let Some(r) = how {
+                super::recipe::symbols(r, &mut syms);
+            }
+        }
+    }
+    if syms.is_empty() {
+        return None;
+    }
     let how = Recipe::node(
         Step::Compare(op),
         vec![Recipe::of(a), Recipe::of(b)],
