@@ -95,9 +95,12 @@ impl Expr {
             if cmp_lex(&m, &low) == Ordering::Less {
                 return None;
             }
-            let t = single(m, rc.mul(&dinv));
-            r = r.sub(&t.mul(d));
-            q = q.add(&t);
+            let c = rc.mul(&dinv);
+            // (in place: a copy of r and q each step was quadratic)
+            for (m, c) in single(m.clone(), c.clone()).mul(d).neg().terms {
+                r.push(m, c);
+            }
+            q.push(m, c);
             if r.terms.len() > 8 * (self.terms.len() + d.terms.len()) + 64 {
                 return None;
             }
