@@ -175,41 +175,6 @@ pub(super) fn mono_mul(a: &Mono, b: &Mono) -> Mono {
     out
 }
 
-/// Expressions form a commutative ring: `num_traits`' `Zero` and `One`
-/// (with `+` and `*`) let ring algorithms, such as the symbolic matrix
-/// product and determinant, start from 0 and 1 as for numbers.
-impl Zero for Expr {
-    /// 0 (no terms).
-    fn zero() -> Expr {
-        Expr::default()
-    }
-    /// True for 0 (no terms).
-    fn is_zero(&self) -> bool {
-        self.terms.is_empty()
-    }
-}
-
-impl One for Expr {
-    /// 1.
-    fn one() -> Expr {
-        Expr::constant(Coef::one())
-    }
-}
-
-impl std::ops::Add for Expr {
-    type Output = Expr;
-    fn add(self, o: Expr) -> Expr {
-        Expr::add(&self, &o)
-    }
-}
-
-impl std::ops::Mul for Expr {
-    type Output = Expr;
-    fn mul(self, o: Expr) -> Expr {
-        Expr::mul(&self, &o)
-    }
-}
-
 impl Expr {
     /// A constant.
     pub fn constant(c: Coef) -> Expr {
@@ -602,5 +567,6 @@ pub fn as_symbol(e: &Expr) -> Option<Symbol> {
     }
 }
 
+mod ring;
 #[cfg(test)]
 mod tests;
