@@ -432,7 +432,9 @@ fn diff(v: &Value, x: &Mat, by: &Mat, kind: &Kind) -> Result<Value, String> {
         Kind::Unknown => v.kind(),
         k => *k,
     };
-    Ok(make(&kind, x.map(|e| e.diff(&wrt))))
+    // canonical as a quotient is (common factors cancelled): d tan t is
+    // 1 + tan² t, not tan² t + cos t/cos t
+    Ok(make(&kind, x.map(|e| e.diff(&wrt).cancel())))
 }
 
 /// `diff`: the kind of a derivative (a rotation's is a plain matrix).

@@ -343,11 +343,11 @@ impl Expr {
         out.folded(self.has_phase() || o.has_phase())
     }
 
-    /// A raw product made canonical: roots, unit axes and (when a factor
-    /// had one) phases folded. Each fold maps term by term, so a sum of
+    /// A raw product made canonical: roots, unit axes, half angles
+    /// ([`super::half`]) and (when a factor had one) phases folded. Each fold maps term by term, so a sum of
     /// raw products folds to the sum of the folded products.
     pub(super) fn folded(self, phases: bool) -> Expr {
-        let out = self.fold_roots().fold_units();
+        let out = self.fold_roots().fold_units().fold_halves();
         if phases {
             return out.fold_phases();
         }

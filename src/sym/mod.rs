@@ -14,6 +14,7 @@ pub mod eval;
 pub mod expr;
 pub mod factor;
 pub mod fraction;
+pub mod half;
 pub mod intern;
 pub mod layout;
 pub mod matrix;
@@ -24,6 +25,7 @@ pub mod rat;
 pub mod rational;
 pub mod sign;
 pub mod size;
+pub mod together;
 pub mod trig;
 
 pub use expr::{Expr, Symbol, Wrt};

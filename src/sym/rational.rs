@@ -118,7 +118,9 @@ impl Expr {
 
     /// Kept reciprocals cancelled where their sum divides the numerator
     /// that they multiply: `(a + b) · 1/(a + b)` = 1, `2 sin t · 1/(2 cos t)`
-    /// stays (a tangent), `sin 2t · 1/(cos t)` = 2 sin t.
+    /// stays (a tangent), `sin 2t · 1/(cos t)` = 2 sin t; terms over
+    /// reciprocals of sums are put over one denominator first
+    /// ([`super::together::together`]).
     pub fn cancel(&self) -> Expr {
         if !self.has_recip() {
             return self.clone();
@@ -130,6 +132,8 @@ impl Expr {
                 m.iter().cloned().partition(|(v, e)| is_recip(v) && *e > 0);
             groups.entry(den).or_default().push(rest, c.clone());
         }
+        // terms over reciprocals of sums: over one denominator
+        let groups = super::together::together(groups);
         let mut out = Expr::zero();
         for (den, mut num) in groups {
             let mut left: Mono = Vec::new();

@@ -25,25 +25,57 @@ pub fn equal(a: &Value, b: &Value, approx: bool) -> Result<Option<bool>, String>
     let (x, y) = sides(a, b)?;
     let mut decided = Some(true);
     for (p, q) in x.data.iter().zip(&y.data) {
-        let differing = if approx {
-            approx_difference(p, q)
-        } else {
-            exact_difference(p, q)
-        };
-        if differing.is_empty() {
-            continue;
+        match verdict(p, q, approx, false) {
+            Some(true) => continue,
+            Some(false) => return Ok(Some(false)),
+            None => {}
         }
-        if differing
-            .iter()
-            .any(|m| m.iter().any(|(v, _)| matches!(v, Var::Call(_))))
-            || (differing.iter().any(|m| has_phase(m)) && !witnessed(p, q))
-        {
-            decided = None;
-        } else {
-            return Ok(Some(false));
+        // a kept call differs: half angles made whole and quotients
+        // cleared (`sym::together`), then the same test on the numerators
+        let (p2, q2) = crate::sym::together::unhalved(p, q).unwrap_or((p.clone(), q.clone()));
+        let (p3, q3) = match crate::sym::together::cleared(&p2, &q2) {
+            Some(c) => c,
+            None => (p2, q2),
+        };
+        match verdict(&p3, &q3, approx, true) {
+            Some(true) => continue,
+            Some(false) if witnessed(p, q) || exactly(&p3, &q3) => return Ok(Some(false)),
+            _ => decided = None,
         }
     }
     Ok(decided)
+}
+
+/// True when every coefficient of both is exact (a float multiplied out
+/// may differ by rounding alone).
+fn exactly(p: &Expr, q: &Expr) -> bool {
+    [p, q].iter().all(|e| e.terms.values().all(Coef::is_exact))
+}
+
+/// p = q decided by canonical forms: `Some(true)` when they are equal,
+/// `Some(false)` when they differ by a trigonometric polynomial (no kept
+/// call; a phase only with a witness point), None when a kept call
+/// differs. `rewritten`: p and q are numerators of the sides, so the
+/// witness is asked of the caller.
+fn verdict(p: &Expr, q: &Expr, approx: bool, rewritten: bool) -> Option<bool> {
+    let differing = if approx {
+        approx_difference(p, q)
+    } else {
+        exact_difference(p, q)
+    };
+    if differing.is_empty() {
+        return Some(true);
+    }
+    if differing
+        .iter()
+        .any(|m| m.iter().any(|(v, _)| matches!(v, Var::Call(_))))
+    {
+        return None;
+    }
+    if differing.iter().any(|m| has_phase(m)) && (rewritten || !witnessed(p, q)) {
+        return None;
+    }
+    Some(false)
 }
 
 /// True when a monomial holds a phase variable (`sym::phase`). A π-phase
