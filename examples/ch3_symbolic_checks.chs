@@ -200,3 +200,20 @@ ev                                            # the numbers' angles, as typed fi
 assert ev == euler_zyx(Rotz(0.5) Roty(2))
 given th(tau) : scalar
 diff(th^2, tau)                               # 2 th th': no dot over one letter of two
+
+# --- derivatives of quotients; half angles ------------------------------------
+# A derivative is cancelled as a quotient is: d tan t = 1 + tan² t, and ==
+# decides rational identities over a common denominator.
+given u, k1, k2 : scalar
+diff(tan(u), u)                               # 1 + tan(u)^2
+assert diff(tan(u), u) == 1/cos(u)^2
+assert diff(tan(u), u) == sec(u)^2
+assert diff(cot(u), u) == -csc(u)^2
+assert diff(sec(u), u) == sec(u) tan(u)
+diff((k1 + sin(u))/(k2 + cos(u)), u)          # one quotient
+# products of half angles fold into the whole angle
+sin(u/2) cos(u/2)                             # (1/2) sin(u)
+assert sin(u/2) cos(u/2) == sin(u)/2
+assert 2 cos(u/2)^2 - 1 == cos(u)
+assert cos(u/2)^2 - sin(u/2)^2 == cos(u)
+quat(Rotz(u))                                 # the book's half angles

@@ -313,3 +313,63 @@ fn branch_notes_take_the_sign_out_of_an_angle() {
     assert_eq!(out.trim(), "(-a, 0, 0)  : 3-vector");
     assert!(err.contains("on the branch a in [−π, π)"), "{err}");
 }
+
+/// Issue 21: a derivative is canonical as a quotient is (common factors
+/// cancelled), so d tan t is 1 + tan² t, and `==` decides rational
+/// identities by clearing their denominators.
+#[test]
+fn derivatives_of_quotients_are_cancelled_and_compare_exactly() {
+    let out = lines(
+        "given t, a, b : scalar\ndiff(tan(t), t)\ndiff(cot(t), t)\ndiff(sec(t), t)\n\
+         diff(1/(a + b sin(t)), t)\ndiff((a + sin(t))/(b + cos(t)), t)",
+    );
+    assert_eq!(
+        out,
+        [
+            "1 + tan(t)^2",
+            "-1 - cot(t)^2",
+            "tan(t)/cos(t)",
+            "-b cos(t)/(a + b sin(t))^2",
+            "(1 + a sin(t) + b cos(t))/(cos(t) + b)^2"
+        ]
+    );
+    for (x, y, want) in [
+        ("diff(tan(t), t)", "1 + tan(t)^2", "true"),
+        ("diff(tan(t), t)", "1/cos(t)^2", "true"),
+        ("diff(tan(t), t)", "sec(t)^2", "true"),
+        ("1 + tan(t)^2", "1/cos(t)^2", "true"),
+        ("diff(cot(t), t)", "-csc(t)^2", "true"),
+        ("diff(sec(t), t)", "sec(t) tan(t)", "true"),
+        ("diff(csc(t), t)", "-csc(t) cot(t)", "true"),
+        ("1 + tan(t)^2", "1/cos(t)^3", "false"),
+        ("1/(a + b) + 1/(a - b)", "2 a/(a^2 - b^2)", "true"),
+    ] {
+        let src = format!("given t, a, b : scalar\n{x} == {y}");
+        assert_eq!(lines(&src).last().map(String::as_str), Some(want), "{src}");
+    }
+}
+
+/// Issue 21: products of half angles fold into the whole angle, as double
+/// angles print; `==` sees through half angles; quaternions and Cayley
+/// parameters keep the book's half angles.
+#[test]
+fn half_angles_fold_and_compare() {
+    let out = lines(
+        "given t : scalar\nsin(t/2) cos(t/2)\ncos(t/2)^2 - sin(t/2)^2\n2 cos(t/2)^2 - 1\n\
+         sin(t/2) cos(t/2) == sin(t)/2\nsin(3 t/2) == sin(t/2) (1 + 2 cos(t))\n\
+         sin(t/2) == cos(t/2)\nquat(Rotz(t))\ncayley(Rotz(t))",
+    );
+    assert_eq!(
+        out,
+        [
+            "(1/2) sin(t)",
+            "cos(t)",
+            "cos(t)",
+            "true",
+            "true",
+            "false",
+            "(cos(t/2), 0, 0, sin(t/2))  : 4-vector",
+            "(0, 0, tan(t/2))  : 3-vector"
+        ]
+    );
+}

@@ -20,7 +20,9 @@ use num_traits::{One, Zero};
 /// for the sine), when 2x is linear.
 fn half(v: &Var) -> Option<(&Expr, bool)> {
     match v {
-        Var::Call(c) if matches!(c.f, Func::Sin | Func::Cos) => Some((&c.args[0], c.f == Func::Sin)),
+        Var::Call(c) if matches!(c.f, Func::Sin | Func::Cos) => {
+            Some((&c.args[0], c.f == Func::Sin))
+        }
         _ => None,
     }
 }
@@ -164,10 +166,7 @@ mod tests {
         );
         // odd powers keep one factor: sin³(t/2) = sin(t/2)(1 − cos t)/2
         let cube = sh.mul(&sh).mul(&sh);
-        assert_eq!(
-            cube,
-            sh.mul(&Expr::one().sub(&Expr::cos(&t))).scale(&half)
-        );
+        assert_eq!(cube, sh.mul(&Expr::one().sub(&Expr::cos(&t))).scale(&half));
         // a third of an angle is no half: kept
         let third = Expr::sin(&t.scale(&Coef::rat(Rat::new(1, 3).unwrap())));
         assert_eq!(third.mul(&third).terms.len(), 1);

@@ -78,9 +78,7 @@ pub fn together(groups: BTreeMap<Mono, Expr>) -> BTreeMap<Mono, Expr> {
     };
     for (rest, parts) in by_rest {
         let with_sums: Vec<&(Mono, Expr)> = parts.iter().filter(|(s, _)| !s.is_empty()).collect();
-        let merged = (with_sums.len() > 1)
-            .then(|| merge(&with_sums))
-            .flatten();
+        let merged = (with_sums.len() > 1).then(|| merge(&with_sums)).flatten();
         for (sums, num) in &parts {
             if merged.is_some() && !sums.is_empty() {
                 continue;
