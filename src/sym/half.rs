@@ -28,18 +28,19 @@ fn half(v: &Var) -> Option<(&Expr, bool)> {
 }
 
 /// True when the monomial holds a square of a sine or cosine call, or a
-/// sine and a cosine of one argument: a product the double-angle formulas
-/// may fold (checked further in [`fold`]).
+/// sine and a cosine of one argument x, where 2x is linear: a product the
+/// double-angle formulas fold.
 fn may_fold(m: &Mono) -> bool {
     m.iter().enumerate().any(|(i, (v, e))| {
         let Some((x, sin)) = half(v) else {
             return false;
         };
-        *e >= 2
+        (*e >= 2
             || (*e >= 1
                 && m[i + 1..]
                     .iter()
-                    .any(|(w, f)| *f >= 1 && half(w).is_some_and(|(y, s)| s != sin && y == x)))
+                    .any(|(w, f)| *f >= 1 && half(w).is_some_and(|(y, s)| s != sin && y == x))))
+            && Expr::expi(&twice(x)).is_some()
     })
 }
 
