@@ -363,3 +363,31 @@ fn an_integer_float_of_a_root_is_no_exact_form() {
     let out = common::printed("given t\nsqrt(1 + 10^18)^2*t == (10^18 + 1)*t");
     assert_eq!(out, "true\n");
 }
+
+/// A literal in parentheses is the literal: `(x)` spans its parentheses,
+/// and the exact form of `pi`, of a decimal of more digits than a float
+/// holds and of one below a float's range was read from that text, so
+/// `(pi)` was π's float 3141592653589793/10¹⁵ (`(pi) == pi` false, and
+/// `u = (pi)*t; t = 1; u == pi` false), `(1e-400) == 0` true and
+/// `(10000000000000000001) == 10000000000000000000` true. Found by
+/// `tests/exact_differential.rs` in release (seed 309452).
+#[test]
+fn a_literal_in_parentheses_is_the_literal() {
+    let out = common::printed(
+        "(pi) == pi
+((π)) == pi
+( pi ) == pi
+2^{pi} == 2^pi
+(1e-400) == 0
+(10000000000000000001) == 10000000000000000000
+(1.00000000000000001) == 1
+(
+  pi # a comment
+) == pi",
+    );
+    assert_eq!(out, "true\ntrue\ntrue\ntrue\nfalse\nfalse\nfalse\ntrue\n");
+    let out = common::printed("x = pi\ngiven t\nu = (pi)*t\nt = 1\nu == x");
+    assert_eq!(out.lines().last(), Some("true"), "{out}");
+    let out = exact_printed("given t\n(pi)*t\n(2.5)*t");
+    assert_eq!(out, "π t\n(5/2) t\n");
+}

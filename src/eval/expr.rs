@@ -211,7 +211,7 @@ impl Interp<'_> {
     /// 10¹⁹; `1e-400` is not 0).
     #[cold]
     fn long_literal(&self, x: f64, span: Span) -> Exact {
-        match crate::values::exact::written(self.text(span).trim()) {
+        match crate::values::exact::written(crate::values::exact::literal_token(self.text(span))) {
             Some(r) if Some(&r) != crate::values::exact::decimal(x).as_ref() => Exact::known(
                 crate::sym::Mat::scalar(crate::sym::Expr::constant(crate::sym::coef::Coef::rat(r))),
             ),
@@ -223,7 +223,10 @@ impl Interp<'_> {
     /// `π` was written, else the decimals typed.
     #[cold]
     fn pi_literal(&self, span: Span) -> Exact {
-        if matches!(self.text(span).trim(), "pi" | "π") {
+        if matches!(
+            crate::values::exact::literal_token(self.text(span)),
+            "pi" | "π"
+        ) {
             Exact::known(crate::sym::Mat::scalar(crate::sym::Expr::pi()))
         } else {
             // (`3.1415926535897932` is that decimal, not π's float)

@@ -246,6 +246,29 @@ pub fn written(text: &str) -> Option<Rat> {
     (exp.unsigned_abs() < 2000).then(|| Rat::decimal(&digits, exp))
 }
 
+/// The token of a number literal in the text its node spans: `(x)` and
+/// `{x}` are x spanning their brackets (the parser), so `(pi)`,
+/// `( 1e-400 )` and `((pi),)` are read as `pi` and `1e-400`, not as the
+/// float's decimals.
+pub fn literal_token(text: &str) -> &str {
+    let mut t = text;
+    loop {
+        let s = t.trim_start_matches(|c: char| c.is_whitespace() || c == '(' || c == '{');
+        match s.strip_prefix('#') {
+            // (a comment inside the brackets, to the end of its line)
+            Some(c) => t = c.split_once('\n').map_or("", |(_, rest)| rest),
+            None => {
+                t = s;
+                break;
+            }
+        }
+    }
+    let end = t
+        .find(|c: char| c.is_whitespace() || matches!(c, ')' | '}' | ',' | '#'))
+        .unwrap_or(t.len());
+    &t[..end]
+}
+
 /// The decimal a float was typed as ([`Rat::typed`]).
 pub fn decimal(x: f64) -> Option<Rat> {
     Rat::typed(x)
