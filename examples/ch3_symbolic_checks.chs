@@ -169,10 +169,23 @@ assert sqrt(2)*sqrt(3)*t5 == sqrt(6)*t5
 assert 0.1 + 0.2 == 0.3
 0.866 == sqrt(3)/2                            # false: 0.866 is a decimal
 assert 20 deg == pi/9
-# √5 has no exact form here: a float, so == on rounding only says so.
-sqrt(5)^2 == 5                                # false, with a note: use ≈
-assert sqrt(5)^2 ≈ 5
-assert sqrt(5)^2*t5 ≈ 5*t5
+# A square root of any exact number is exact, with a symbol or without.
+sqrt(5)^2 == 5                                # true
+assert sqrt(5)^2*t5 == 5*t5
+assert sqrt(8) == 2 sqrt(2)
+assert sqrt(9/4) == 3/2
+assert (9/4)^0.5 == 3/2
+assert 5^1.5 == 5 sqrt(5)
+assert sqrt(1/3)*t5 == sqrt(3)/3*t5
+assert sqrt(10)/sqrt(2) == sqrt(5)
+assert 1/(sqrt(2) + sqrt(5)) == (sqrt(5) - sqrt(2))/3
+assert sqrt(12345678910111213)^2 == 12345678910111213
+sqrt(2) + sqrt(3) == sqrt(5)                  # false: the difference is not 0
+# A root of a root has no exact form here: a float, so == on rounding only
+# says so.
+sqrt(1 + sqrt(2))^2 == 1 + sqrt(2)            # false, with a note: use ≈
+assert sqrt(1 + sqrt(2))^2 ≈ 1 + sqrt(2)
+assert sqrt(1 + sqrt(2))^2*t5 ≈ (1 + sqrt(2))*t5
 
 # --- constant offsets fold like angles (π/5, 0.3); cot/sec/csc bare ----------
 given s1, s2 : scalar

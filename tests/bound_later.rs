@@ -359,9 +359,16 @@ fn comparisons_bound_later_are_decided_as_typed_first() {
         last("given a\ny = cos(a) == 1/2\na = 60 deg\ny").as_deref(),
         Some("true")
     );
-    // the rounding note of typed first, where the value becomes a bool
-    let (_, err) = common::outputs("given a\ny = sqrt(a)^2 == 5\na = 5\ny");
-    let (_, first) = common::outputs("a = 5\nsqrt(a)^2 == 5");
+    // √5 is exact (LANGUAGE.md §7): its square is 5, bound later or first
+    assert_eq!(
+        last("given a\ny = sqrt(a)^2 == 5\na = 5\ny").as_deref(),
+        Some("true")
+    );
+    assert_eq!(last("a = 5\nsqrt(a)^2 == 5").as_deref(), Some("true"));
+    // the rounding note of typed first, where the value becomes a bool (a
+    // nested root has no exact form: it compares as floats)
+    let (_, err) = common::outputs("given a\ny = sqrt(1 + sqrt(a))^2 == 1 + sqrt(2)\na = 2\ny");
+    let (_, first) = common::outputs("a = 2\nsqrt(1 + sqrt(a))^2 == 1 + sqrt(2)");
     assert!(first.contains("rounding only"), "{first}");
     assert!(err.contains("rounding only"), "{err}");
     // assert on the bool bound later; a bool of free symbols that is false

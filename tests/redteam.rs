@@ -356,9 +356,16 @@ true
 /// `sqrt(1 + 10^18)^2 == 10^18` was true on "exact" sides and `--exact`
 /// printed `1e18` and `500000000000000000√3` for (√(10¹⁸ + 1))² Rotx(π/3).
 /// Found by `tests/exact_differential.rs` in release (seed 120614).
+/// Since every square root of an exact rational is exact, √(10¹⁸ + 1) is
+/// itself exact and its square is 10¹⁸ + 1, every digit kept.
 #[test]
 fn an_integer_float_of_a_root_is_no_exact_form() {
     let out = exact_printed("x = sqrt(1 + 10^18)^2 * Rotx(pi/3)\nx[2, 3]");
+    assert!(out.ends_with("-1000000000000000001√3/2\n"), "{out}");
+    assert!(!out.contains("1e18"), "{out}");
+    // a root with no exact form (a root of a root) is still a float, even
+    // where its float is an integer
+    let out = exact_printed("x = sqrt(sqrt(1 + 10^32))^4 * Rotx(pi/3)\nx[2, 3]");
     assert!(!out.contains('√'), "{out}");
     let out = common::printed("given t\nsqrt(1 + 10^18)^2*t == (10^18 + 1)*t");
     assert_eq!(out, "true\n");

@@ -144,7 +144,7 @@ fn sign(e: &crate::sym::Expr) -> Option<bool> {
 
 /// The order of two scalars that both have exact forms (a number typed
 /// or made exactly, or a formula with no symbols left): by the sign of
-/// their exact difference, exactly when it is a number of ℚ(√2, √3),
+/// their exact difference, exactly when it is a sum of square roots,
 /// else (π in it) between bounds of 50 decimal places
 /// ([`crate::sym::sign::sign_with_pi`]: `pi > 3.141592653589793` was
 /// false, the float of the difference being 0). None when a side has no

@@ -1,206 +1,22 @@
 //! Exact coefficients of symbolic expressions: complex numbers whose real
-//! and imaginary parts lie in ℚ(√2, √3) (basis 1, √2, √3, √6), so that the
-//! book's constants (½, 1/√2, √3/2, the lengths typed as decimals) stay
-//! exact and e^{iθ} = cos θ + i sin θ needs no special case. Fractions are
-//! exact however large ([`Rat`]); a coefficient that comes from a number
-//! with no exact form (sin 1, √5) is kept as a complex `f64` pair
-//! ([`Coef::Approx`]), and a sum of such pairs that cancels to within
-//! rounding is 0, never a term of noise.
+//! and imaginary parts are rationals plus rational multiples of square
+//! roots ([`Surd`]: ½, 1/√2, √3/2, √5, the lengths typed as decimals), so
+//! that the book's constants stay exact and e^{iθ} = cos θ + i sin θ needs
+//! no special case. Fractions are exact however large ([`Rat`]); a
+//! coefficient that comes from a number with no exact form (sin 1,
+//! √(1 + √2)) is kept as a complex `f64` pair ([`Coef::Approx`]), and a
+//! sum of such pairs that cancels to within rounding is 0, never a term of
+//! noise.
 
 #![allow(clippy::should_implement_trait, clippy::needless_range_loop)]
 
 use std::cmp::Ordering;
 
 pub use super::rat::Rat;
+pub use super::surd::Surd;
 
-/// An element a + b√2 + c√3 + d√6 of the real field ℚ(√2, √3).
-#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub struct Surd(pub [Rat; 4]);
-
-/// The basis roots 1, √2, √3, √6.
-pub const ROOTS: [i64; 4] = [1, 2, 3, 6];
-
-impl Surd {
-    /// 0.
-    pub const ZERO: Surd = Surd([Rat::ZERO, Rat::ZERO, Rat::ZERO, Rat::ZERO]);
-    /// A rational as a field element.
-    pub fn rat(r: Rat) -> Surd {
-        Surd([r, Rat::ZERO, Rat::ZERO, Rat::ZERO])
-    }
-    /// True for 0.
-    pub fn is_zero(&self) -> bool {
-        self.0.iter().all(|r| r.is_zero())
-    }
-    /// The sum.
-    pub fn add(&self, o: &Surd) -> Surd {
-        Surd(std::array::from_fn(|i| self.0[i].add(&o.0[i])))
-    }
-    /// −x.
-    pub fn neg(&self) -> Surd {
-        Surd(std::array::from_fn(|i| self.0[i].neg()))
-    }
-    /// The product.
-    pub fn mul(&self, o: &Surd) -> Surd {
-        // √a √b = k √c over the basis 1, √2, √3, √6.
-        const TABLE: [[(i64, usize); 4]; 4] = [
-            [(1, 0), (1, 1), (1, 2), (1, 3)],
-            [(1, 1), (2, 0), (1, 3), (2, 2)],
-            [(1, 2), (1, 3), (3, 0), (3, 1)],
-            [(1, 3), (2, 2), (3, 1), (6, 0)],
-        ];
-        let mut out = Surd::ZERO;
-        for i in 0..4 {
-            if self.0[i].is_zero() {
-                continue;
-            }
-            for j in 0..4 {
-                if o.0[j].is_zero() {
-                    continue;
-                }
-                let (k, c) = TABLE[i][j];
-                let mut t = self.0[i].mul(&o.0[j]);
-                if k != 1 {
-                    t = t.mul(&Rat::int(k));
-                }
-                out.0[c] = out.0[c].add(&t);
-            }
-        }
-        out
-    }
-    /// The conjugate under √2 → −√2 (`s2`) and/or √3 → −√3 (`s3`).
-    fn conj(&self, s2: bool, s3: bool) -> Surd {
-        let [a, b, c, d] = &self.0;
-        let b = if s2 { b.neg() } else { b.clone() };
-        let c = if s3 { c.neg() } else { c.clone() };
-        let d = if s2 != s3 { d.neg() } else { d.clone() };
-        Surd([a.clone(), b, c, d])
-    }
-    /// 1/x: multiplying by the three conjugates leaves a rational norm.
-    pub fn inv(&self) -> Option<Surd> {
-        if self.is_zero() {
-            return None;
-        }
-        if let Some(r) = self.as_rat() {
-            return Some(Surd::rat(r.inv()?));
-        }
-        let num = self
-            .conj(true, false)
-            .mul(&self.conj(false, true))
-            .mul(&self.conj(true, true));
-        let norm = self.mul(&num);
-        let n = norm.0[0].inv()?;
-        Some(num.mul(&Surd::rat(n)))
-    }
-    /// The nearest float.
-    pub fn to_f64(&self) -> f64 {
-        self.0
-            .iter()
-            .zip(ROOTS)
-            .map(|(r, k)| r.to_f64() * (k as f64).sqrt())
-            .sum()
-    }
-    /// The sign of the value (exactly 0 only for zero): a sign read off a
-    /// float only when the parts disagree in sign and nearly cancel is
-    /// settled exactly, by squares.
-    pub fn signum(&self) -> f64 {
-        if self.is_zero() {
-            return 0.0;
-        }
-        let x = self.to_f64();
-        let scale: f64 = self
-            .0
-            .iter()
-            .zip(ROOTS)
-            .map(|(r, k)| r.to_f64().abs() * (k as f64).sqrt())
-            .sum();
-        if x.abs() > 1e-9 * scale {
-            return x.signum();
-        }
-        // a + b√2 + (c + d√2)√3 = p + q√3 with p, q in ℚ(√2):
-        // sign(p + q√3) from the signs of p, q and p² − 3q².
-        let [a, b, c, d] = &self.0;
-        let sign2 = |x: &Rat, y: &Rat| -> i32 {
-            // sign of x + y√2, exactly
-            let (sx, sy) = (rsign(x), rsign(y));
-            if sx == 0 || sy == 0 || sx == sy {
-                return if sx != 0 { sx } else { sy };
-            }
-            // x² − 2y² has the sign of |x| − |y|√2
-            let t = x.mul(x).add(&y.mul(y).mul(&Rat::int(-2)));
-            sx * rsign(&t)
-        };
-        let (sp, sq) = (sign2(a, b), sign2(c, d));
-        if sp == 0 || sq == 0 || sp == sq {
-            return f64::from(if sp != 0 { sp } else { sq });
-        }
-        // p² − 3q² = (a² + 2b² − 3c² − 6d²) + (2ab − 6cd)√2
-        let m = |x: &Rat, y: &Rat, k: i64| x.mul(y).mul(&Rat::int(k));
-        let r0 = m(a, a, 1)
-            .add(&m(b, b, 2))
-            .add(&m(c, c, -3))
-            .add(&m(d, d, -6));
-        let r1 = m(a, b, 2).add(&m(c, d, -6));
-        f64::from(sp * sign2(&r0, &r1))
-    }
-    /// √r exactly, when it lies in ℚ(√2, √3): r = (p/q) is s²·k/q² with k
-    /// among 1, 2, 3, 6 once squares are taken out of p·q (√8 = 2√2,
-    /// √(3/4) = √3/2); None otherwise (√5) or when p·q is too large.
-    pub fn sqrt_of(r: &Rat) -> Option<Surd> {
-        if r.is_negative() {
-            return None;
-        }
-        if r.is_zero() {
-            return Some(Surd::ZERO);
-        }
-        let (p, q) = r.small()?;
-        let n = u128::try_from(i128::from(p).checked_mul(i128::from(q))?).ok()?;
-        // n = s²·k: take out square factors of primes below 1000, then the
-        // rest must be a square times a root of the basis.
-        let (mut s, mut k) = (1u128, n);
-        let mut f = 2u128;
-        while f < 1000 && f * f <= k {
-            while k % (f * f) == 0 {
-                k /= f * f;
-                s *= f;
-            }
-            f += 1;
-        }
-        let (i, t) = ROOTS.iter().enumerate().find_map(|(i, &b)| {
-            let b = b as u128;
-            if k % b != 0 {
-                return None;
-            }
-            let m = k / b;
-            let t = m.isqrt();
-            (t * t == m).then_some((i, t))
-        })?;
-        // √(p/q) = √(p q)/q = s t √b / q
-        let coef = Rat::new(i128::try_from(s.checked_mul(t)?).ok()?, i128::from(q))?;
-        let mut out = Surd::ZERO;
-        out.0[i] = coef;
-        Some(out)
-    }
-    /// The rational, when only the rational part is present.
-    pub fn as_rat(&self) -> Option<Rat> {
-        self.0[1..]
-            .iter()
-            .all(|r| r.is_zero())
-            .then(|| self.0[0].clone())
-    }
-}
-
-/// −1, 0 or 1.
-fn rsign(r: &Rat) -> i32 {
-    if r.is_zero() {
-        0
-    } else if r.is_negative() {
-        -1
-    } else {
-        1
-    }
-}
-
-/// A coefficient: an exact complex number over ℚ(√2, √3), or a complex
+/// A coefficient: an exact complex number with rational parts and square
+/// roots ([`Surd`]), or a complex
 /// `f64` pair when no exact form is known.
 #[derive(Debug, Clone, PartialEq)]
 #[allow(clippy::large_enum_variant)]
@@ -319,7 +135,7 @@ impl Coef {
     /// expression limit.
     pub fn words(&self) -> usize {
         match self {
-            Coef::Exact { re, im } => re.0.iter().chain(&im.0).map(Rat::words).sum(),
+            Coef::Exact { re, im } => re.words() + im.words(),
             Coef::Approx { .. } => 0,
         }
     }
@@ -366,16 +182,22 @@ impl Coef {
             Coef::Approx { re, im } => Coef::Approx { re: -re, im: -im },
         }
     }
-    /// The product (a float pair when either is one).
+    /// The product (a float pair when either is one, or when a root of
+    /// the exact product passes 2¹²⁸).
     pub fn mul(&self, o: &Coef) -> Coef {
         if let (Coef::Exact { re: a, im: b }, Coef::Exact { re: c, im: d }) = (self, o) {
-            if b.is_zero() && d.is_zero() {
-                return Coef::real(a.mul(c));
-            }
-            return Coef::Exact {
-                re: a.mul(c).add(&b.mul(d).neg()),
-                im: a.mul(d).add(&b.mul(c)),
+            let exact = || {
+                if b.is_zero() && d.is_zero() {
+                    return Some(Coef::real(a.mul(c)?));
+                }
+                Some(Coef::Exact {
+                    re: a.mul(c)?.add(&b.mul(d)?.neg()),
+                    im: a.mul(d)?.add(&b.mul(c)?),
+                })
             };
+            if let Some(p) = exact() {
+                return p;
+            }
         }
         let ((a, b), (c, d)) = (self.to_c64(), o.to_c64());
         Coef::settle(float_sum(a * c, -(b * d)), float_sum(a * d, b * c))
@@ -390,27 +212,30 @@ impl Coef {
             Coef::Approx { re, im } => Coef::Approx { re: *re, im: -im },
         }
     }
-    /// 1/c; None for zero.
+    /// 1/c; None for zero. Exact for an exact c, unless its reciprocal
+    /// passes the size of a [`Surd`] (a float pair then).
     pub fn inv(&self) -> Option<Coef> {
         if self.is_zero() {
             return None;
         }
-        match self {
-            Coef::Exact { re, im } => {
+        if let Coef::Exact { re, im } = self {
+            let exact = || {
                 if im.is_zero() {
                     return Some(Coef::real(re.inv()?));
                 }
-                let n = re.mul(re).add(&im.mul(im)).inv()?;
+                let n = re.mul(re)?.add(&im.mul(im)?).inv()?;
                 Some(Coef::Exact {
-                    re: re.mul(&n),
-                    im: im.neg().mul(&n),
+                    re: re.mul(&n)?,
+                    im: im.neg().mul(&n)?,
                 })
-            }
-            Coef::Approx { re: a, im: b } => {
-                let n = a * a + b * b;
-                Some(Coef::settle(a / n, -b / n))
+            };
+            if let Some(c) = exact() {
+                return Some(c);
             }
         }
+        let (a, b) = self.to_c64();
+        let n = a * a + b * b;
+        Some(Coef::settle(a / n, -b / n))
     }
     /// The real k with Re(k·c) = `to` (Im(k·c) = `to` when the real part is
     /// 0): the scale that makes a real expression's first coefficient
@@ -419,7 +244,11 @@ impl Coef {
         match self {
             Coef::Exact { re, im } => {
                 let part = if re.is_zero() { im } else { re };
-                Some(Coef::real(part.inv()?.mul(&Surd::rat(to))))
+                match part.inv() {
+                    Some(p) => Some(Coef::real(p.scale(&to))),
+                    None if part.is_zero() => None,
+                    None => Some(Coef::settle(to.to_f64() / part.to_f64(), 0.0)),
+                }
             }
             Coef::Approx { re, im } => {
                 let part = if *re == 0.0 { *im } else { *re };
@@ -460,7 +289,9 @@ impl Coef {
             let k = k.rem_euclid(24);
             let k = if k > 12 { 24 - k } else { k };
             let (k, sign) = if k > 6 { (12 - k, -1) } else { (k, 1) };
-            Surd(COS[k as usize].map(|n| Rat::new(i128::from(sign * n), 4).unwrap_or(Rat::ZERO)))
+            Surd::of_basis(
+                COS[k as usize].map(|n| Rat::new(i128::from(sign * n), 4).unwrap_or(Rat::ZERO)),
+            )
         };
         Some(Coef::Exact {
             re: cos_of(twelfths),
@@ -475,25 +306,29 @@ mod tests {
 
     #[test]
     fn surd_arithmetic_is_exact() {
-        let r2 = Surd([Rat::ZERO, Rat::ONE, Rat::ZERO, Rat::ZERO]);
-        let two = r2.mul(&r2);
+        let r2 = Surd::of_basis([Rat::ZERO, Rat::ONE, Rat::ZERO, Rat::ZERO]);
+        let two = r2.mul(&r2).unwrap();
         assert_eq!(two, Surd::rat(Rat::int(2)));
-        let x = Surd([Rat::ONE, Rat::ONE, Rat::ONE, Rat::ZERO]);
-        let one = x.mul(&x.inv().unwrap());
+        let x = Surd::of_basis([Rat::ONE, Rat::ONE, Rat::ONE, Rat::ZERO]);
+        let one = x.mul(&x.inv().unwrap()).unwrap();
         assert_eq!(one, Surd::rat(Rat::ONE));
     }
 
     #[test]
     fn square_roots_in_the_field_are_exact() {
         let r = |p, q| Rat::new(p, q).unwrap();
-        let s = Surd::sqrt_of(&r(8, 1)).unwrap();
-        assert_eq!(s.0[1], Rat::int(2));
-        let s = Surd::sqrt_of(&r(3, 4)).unwrap();
-        assert_eq!(s.0[2], r(1, 2));
-        let s = Surd::sqrt_of(&r(1, 2)).unwrap();
-        assert_eq!(s.0[1], r(1, 2));
+        let basis = |i: usize, c: Rat| {
+            let mut b = [Rat::ZERO, Rat::ZERO, Rat::ZERO, Rat::ZERO];
+            b[i] = c;
+            Surd::of_basis(b)
+        };
+        assert_eq!(Surd::sqrt_of(&r(8, 1)), Some(basis(1, Rat::int(2))));
+        assert_eq!(Surd::sqrt_of(&r(3, 4)), Some(basis(2, r(1, 2))));
+        assert_eq!(Surd::sqrt_of(&r(1, 2)), Some(basis(1, r(1, 2))));
         assert_eq!(Surd::sqrt_of(&r(9, 4)), Some(Surd::rat(r(3, 2))));
-        assert_eq!(Surd::sqrt_of(&Rat::int(5)), None);
+        // any square-free part now: √5 is exact, its square is 5
+        let five = Surd::sqrt_of(&Rat::int(5)).unwrap();
+        assert_eq!(five.mul(&five), Some(Surd::rat(Rat::int(5))));
         assert_eq!(Surd::sqrt_of(&Rat::int(-4)), None);
     }
 

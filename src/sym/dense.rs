@@ -41,10 +41,7 @@ pub fn packable(e: &Expr) -> bool {
 /// The numerator and denominator of a coefficient's real or imaginary part
 /// when it is a small rational.
 fn small(s: &Surd) -> Option<(i128, i128)> {
-    if s.0[1..].iter().any(|r| !r.is_zero()) {
-        return None;
-    }
-    let (n, d) = s.0[0].small()?;
+    let (n, d) = s.rational()?.small()?;
     Some((i128::from(n), i128::from(d)))
 }
 

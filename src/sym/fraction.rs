@@ -208,7 +208,7 @@ pub(super) fn term(c: &Coef, poly: &Mono, trig: &[Trig], st: Style) -> (bool, St
         // (1/2)/(1 + cos(t)), 3/L2
         let d = den.join(sep);
         let d = if den.len() > 1 { format!("({d})") } else { d };
-        let c = if coef.contains(['/', ' ']) {
+        let c = if needs_parens(&coef) {
             format!("({coef})")
         } else {
             coef
@@ -230,7 +230,7 @@ pub(super) fn term(c: &Coef, poly: &Mono, trig: &[Trig], st: Style) -> (bool, St
     let text = match (coef.as_str(), has_factors) {
         ("1", true) => body,
         (_, true) => {
-            let wrap = !latex && coef.contains(['/', ' ']);
+            let wrap = !latex && needs_parens(&coef);
             if wrap {
                 format!("({coef}) {body}")
             } else {
@@ -240,6 +240,12 @@ pub(super) fn term(c: &Coef, poly: &Mono, trig: &[Trig], st: Style) -> (bool, St
         _ => coef,
     };
     (neg, text)
+}
+
+/// True when a coefficient's text needs parentheses before a factor
+/// (`(1/2) t`): a fraction or a sum not already in them (`(1 + √2) t`).
+fn needs_parens(coef: &str) -> bool {
+    coef.contains(['/', ' ']) && !(coef.starts_with('(') && coef.ends_with(')'))
 }
 
 #[cfg(test)]

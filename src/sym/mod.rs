@@ -25,6 +25,8 @@ pub mod rat;
 pub mod rational;
 pub mod sign;
 pub mod size;
+pub mod squarefree;
+pub mod surd;
 pub mod together;
 pub mod trig;
 

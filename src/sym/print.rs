@@ -4,7 +4,7 @@
 //! `L1 cos(t1) + L2 cos(t1 + t2)`, the book's shorthand `L1 c₁ + L2 c₁₂`,
 //! or LaTeX `L_1 \cos t_1 + …`.
 
-use super::coef::{Coef, ROOTS, Rat};
+use super::coef::{Coef, Rat};
 use super::expr::{Expr, Func, Symbol, Var};
 use num_traits::One;
 
@@ -309,20 +309,13 @@ pub(super) fn coefficient(c: &Coef, st: Style) -> (bool, String) {
         Coef::Exact { re, .. } => {
             let neg = re.signum() < 0.0;
             let s = if neg { re.neg() } else { re.clone() };
-            let parts: Vec<(usize, Rat)> =
-                s.0.iter()
-                    .enumerate()
-                    .filter(|(_, r)| !r.is_zero())
-                    .map(|(i, r)| (i, r.clone()))
-                    .collect();
+            let parts: Vec<(u128, &Rat)> = s.terms().collect();
             match parts.as_slice() {
                 [] => (false, "0".into()),
-                [(i, r)] => (neg, surd_term(r, ROOTS[*i], latex)),
+                [(k, r)] => (neg, surd_term(r, *k, latex)),
                 _ => {
-                    let inner: Vec<String> = parts
-                        .iter()
-                        .map(|(i, r)| surd_term(r, ROOTS[*i], latex))
-                        .collect();
+                    let inner: Vec<String> =
+                        parts.iter().map(|(k, r)| surd_term(r, *k, latex)).collect();
                     let sum = inner.join(" + ").replace("+ -", "- ");
                     let wrapped = if latex {
                         format!("\\left({sum}\\right)")
@@ -337,7 +330,7 @@ pub(super) fn coefficient(c: &Coef, st: Style) -> (bool, String) {
 }
 
 /// (p/q)√k as text or LaTeX: `3`, `17/40` (or `0.425`), `√2`, `1/√2`, `√3/2`.
-fn surd_term(r: &Rat, k: i64, latex: bool) -> String {
+fn surd_term(r: &Rat, k: u128, latex: bool) -> String {
     let (p, q) = r.parts();
     let sign = if r.is_negative() { "-" } else { "" };
     let p = p.magnitude();
@@ -381,7 +374,7 @@ fn surd_term(r: &Rat, k: i64, latex: bool) -> String {
     };
     match (q_small, latex) {
         (Some(1), _) => format!("{sign}{top}"),
-        _ if p_one && Some(i128::from(k)) == q_small => {
+        _ if p_one && i128::try_from(k).ok() == q_small => {
             if latex {
                 format!("{sign}\\frac{{1}}{{{root}}}")
             } else {
@@ -547,7 +540,7 @@ mod tests {
     fn dots_and_exact_constants() {
         let th = Symbol::timed("theta");
         let half = crate::sym::coef::Rat::new(1, 2).unwrap();
-        let r2 = crate::sym::coef::Surd([Rat::ZERO, half, Rat::ZERO, Rat::ZERO]);
+        let r2 = crate::sym::coef::Surd::of_basis([Rat::ZERO, half, Rat::ZERO, Rat::ZERO]);
         let x = Expr::symbol(th.dot()).scale(&Coef::real(r2));
         assert_eq!(expr(&x, Style::default()), "(1/√2) θ̇");
         let latex = Style {

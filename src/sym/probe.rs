@@ -11,7 +11,7 @@ use std::collections::HashMap;
 use std::hash::{Hash, Hasher};
 use std::sync::Arc;
 
-use super::coef::{Coef, ROOTS};
+use super::coef::Coef;
 use super::expr::{Call, Expr, Func, Symbol, Var};
 use super::matrix::Mat;
 use super::phase::{PI_DEN, Unit};
@@ -37,8 +37,8 @@ fn coef(c: &Coef) -> ((f64, f64), f64) {
     let size = match c {
         Coef::Exact { re, im } => [re, im]
             .iter()
-            .flat_map(|s| s.0.iter().zip(ROOTS))
-            .map(|(r, k)| r.to_f64().abs() * (k as f64).sqrt())
+            .flat_map(|s| s.terms())
+            .map(|(k, r)| r.to_f64().abs() * (k as f64).sqrt())
             .sum(),
         Coef::Approx { re, im } => re.abs() + im.abs(),
     };

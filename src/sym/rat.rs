@@ -74,8 +74,8 @@ impl Rat {
         let n = if neg { -n } else { n };
         Rat::Big(Box::new(BigRational::new_raw(n, BigInt::from(d))))
     }
-    /// A big rational, inline when it fits.
-    fn from_big(r: BigRational) -> Rat {
+    /// A reduced big rational, inline when it fits.
+    pub fn from_big(r: BigRational) -> Rat {
         if let (Some(num), Some(den)) = (r.numer().to_i64(), r.denom().to_i64()) {
             return Rat::Small { num, den };
         }

@@ -12,7 +12,7 @@
 
 use std::cmp::Ordering;
 
-use super::coef::{Coef, Rat, Surd};
+use super::coef::{Coef, Surd};
 use super::expr::{Expr, Func, Mono, Var, mono_mul};
 use num_traits::Zero;
 
@@ -228,30 +228,24 @@ fn is_recip(v: &Var) -> bool {
     matches!(v, Var::Call(c) if c.f == Func::Recip)
 }
 
-/// √c for a rational c that is a square in ℚ(√2, √3) (times i when c is
-/// negative: the root of sin²t has coefficients ±i/2); None otherwise.
+/// √c for a rational c (times i when c is negative: the root of sin²t
+/// has coefficients ±i/2), exact ([`Surd::sqrt_of`]); None for 0 or a
+/// root with no exact form.
 fn coef_sqrt(c: &Coef) -> Option<Coef> {
-    let (num, den) = c.as_rat()?.small()?;
-    if num == 0 {
+    let r = c.as_rat()?;
+    if r.is_zero() {
         return None;
     }
-    let isqrt = |n: i128| -> Option<i128> {
-        let s = (n as f64).sqrt().round() as i128;
-        (s * s == n).then_some(s)
-    };
-    let (n, d) = (i128::from(num).abs(), i128::from(den));
-    let root = if let (Some(a), Some(b)) = (isqrt(n), isqrt(d)) {
-        Coef::rat(Rat::new(a, b)?)
+    let root = Coef::real(Surd::sqrt_of(&if r.is_negative() {
+        r.neg()
     } else {
-        // n/d = (a/b)² k with k ∈ {2, 3, 6}: n k = (a k)², d = b²
-        let (i, k) = [(1usize, 2i128), (2, 3), (3, 6)]
-            .into_iter()
-            .find(|(_, k)| isqrt(n * k).is_some() && isqrt(d).is_some())?;
-        let mut s = Surd::ZERO;
-        s.0[i] = Rat::new(isqrt(n * k)?, isqrt(d)? * k)?;
-        Coef::real(s)
-    };
-    Some(if num < 0 { root.mul(&Coef::i()) } else { root })
+        r.clone()
+    })?);
+    Some(if r.is_negative() {
+        root.mul(&Coef::i())
+    } else {
+        root
+    })
 }
 
 #[cfg(test)]

@@ -1,6 +1,6 @@
 //! The sign of an exact number with π in it (LANGUAGE.md §3: exact
-//! numbers are ordered exactly): Σ cₖ πᵏ with cₖ in ℚ(√2, √3), bounded
-//! between two fractions with π, √2, √3 and √6 each known to 50 decimal
+//! numbers are ordered exactly): Σ cₖ πᵏ with cₖ sums of square roots, bounded
+//! between two fractions with π and each root known to 50 decimal
 //! places. The float of such a difference loses what matters (π −
 //! 3.141592653589793 is 0 in floats, 1.2e-16 in fact); the bounds keep it,
 //! and say nothing (None) only when the number is within about 1e-45 of 0
@@ -10,7 +10,7 @@ use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
 
-use super::coef::{Coef, ROOTS};
+use super::coef::Coef;
 use super::expr::{Expr, Var};
 
 /// π to 60 decimal places (below by less than 1e-60).
@@ -74,8 +74,8 @@ fn pi() -> Iv {
     }
 }
 
-/// √k between two fractions (k a small positive integer).
-fn root(k: i64) -> Iv {
+/// √k between two fractions (k a positive integer).
+fn root(k: u128) -> Iv {
     let scale = num_traits::pow(BigInt::from(10), PLACES);
     let s = (BigInt::from(k) * &scale * &scale).sqrt();
     let lo = BigRational::new(s, scale);
@@ -93,7 +93,6 @@ pub fn sign_with_pi(e: &Expr) -> Option<i32> {
         return Some(0);
     }
     let pi = pi();
-    let roots: Vec<Iv> = ROOTS.iter().map(|&k| root(k)).collect();
     let mut sum = Iv::point(BigRational::zero());
     for (mono, c) in &e.terms {
         let Coef::Exact { re, im } = c else {
@@ -102,12 +101,11 @@ pub fn sign_with_pi(e: &Expr) -> Option<i32> {
         if !im.is_zero() {
             return None;
         }
-        // the coefficient a + b√2 + c√3 + d√6
+        // the coefficient a + Σ cₖ√k
         let mut coef = Iv::point(BigRational::zero());
-        for (r, root) in re.0.iter().zip(&roots) {
-            if !r.is_zero() {
-                coef = coef.add(&Iv::point(r.to_big()).mul(root));
-            }
+        for (k, r) in re.terms() {
+            let term = Iv::point(r.to_big());
+            coef = coef.add(&if k == 1 { term } else { term.mul(&root(k)) });
         }
         // times π^k
         let mut term = coef;

@@ -18,7 +18,7 @@ use crate::sym::{Expr, Mat};
 /// algebraically independent; a difference with a kept call is undecided
 /// (`Ok(None)`). `==` is exact: numbers enter with their exact forms
 /// ([`mat_of`]), and a coefficient that is a float (no exact form: sin 1,
-/// √5) compares as a float, equal only when the floats are
+/// √(1 + √2)) compares as a float, equal only when the floats are
 /// ([`rounding_only`] tells when they differ by rounding only). `≈` lets
 /// each coefficient of the difference be within 1e-9 of the largest.
 pub fn equal(a: &Value, b: &Value, approx: bool) -> Result<Option<bool>, String> {

@@ -224,7 +224,9 @@ pub fn mul(x: &Mat, y: &Mat) -> Result<Mat, String> {
 
 /// `a op b` over formulas ([`binary`]); None for a power of a scalar whose
 /// exponent is no integer (`2^a`, `a^0.5`): it has no exact form here and
-/// stays a tree, computed as typed first once its symbols have numbers.
+/// stays a tree, computed as typed first once its symbols have numbers —
+/// except a half-integer power of an exact rational, a power of its
+/// square root (`(9/4)^0.5 = 3/2`, `5^1.5 = 5√5`, LANGUAGE.md §7).
 pub fn binary_or_tree(
     op: BinOp,
     a: &Value,
@@ -238,11 +240,26 @@ pub fn binary_or_tree(
         }
         _ => false,
     };
-    let scalar = matches!(a.kind(), Kind::Scalar);
-    if op == BinOp::Pow && scalar && !integer(b) {
-        return None;
+    let is_scalar = matches!(a.kind(), Kind::Scalar);
+    if op == BinOp::Pow && is_scalar && !integer(b) {
+        return half_power(a, b).map(|e| Ok(scalar(e)));
     }
     Some(binary(op, a, b, kind))
+}
+
+/// a^(n/2) for an exact rational a ≥ 0 (> 0 when n < 0) and an odd n:
+/// (√a)ⁿ, exact when √a is; None for any other power.
+fn half_power(a: &Value, b: &Value) -> Option<Expr> {
+    let x = scalar_of(a)?.as_const()?.as_rat()?;
+    let n = scalar_of(b)?
+        .as_const()?
+        .as_rat()?
+        .mul(&crate::sym::coef::Rat::int(2))
+        .as_int()?;
+    if x.is_negative() || (x.is_zero() && n < 0) || n.unsigned_abs() > 1 << 20 {
+        return None;
+    }
+    Expr::sqrt(&Expr::constant(crate::sym::coef::Coef::rat(x))).powi(n)
 }
 
 fn pow(x: &Mat, y: &Mat, base: Kind, kind: &Kind) -> Result<Value, String> {

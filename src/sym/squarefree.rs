@@ -1,0 +1,242 @@
+//! The square-free part of an integer (LANGUAGE.md §7: a square root of an
+//! exact number stays exact): n = s²·k with k square-free, so that √n =
+//! s√k and two roots √k, √k' of distinct square-free k, k' are never
+//! rational multiples of each other — the condition under which a sum of
+//! roots is 0 only when every coefficient is ([`super::surd::Surd`]).
+//!
+//! The primes of n are found by trial division, a deterministic
+//! Miller–Rabin test and Pollard's rho within a fixed budget. Where they
+//! cannot be found for sure (a cofactor above 3·10²⁴ that is not shown
+//! composite and split, or n beyond 2¹²⁸), the answer is None: the root
+//! then has no exact form and is a float, compared as one — never a
+//! wrongly split root.
+
+use num_bigint::BigUint;
+use num_traits::ToPrimitive;
+
+/// Trial division runs below this bound: a cofactor left is a product of
+/// primes at least this large.
+const TRIAL: u128 = 1 << 12;
+
+/// Below this the Miller–Rabin test with the first 13 primes as bases is
+/// exact (ψ₁₃ > 3.3·10²⁴).
+const MR_EXACT: u128 = 3_317_044_064_679_887_385_961_981;
+
+/// Steps of Pollard's rho tried on one cofactor before giving up.
+const RHO_STEPS: u32 = 1 << 16;
+
+/// n = s²·k with k square-free, as (s, k); None when the primes of n
+/// cannot be found for sure (see the module's comment). n = 0 gives (0, 1).
+pub fn split(n: &BigUint) -> Option<(BigUint, u128)> {
+    if let Some(n) = n.to_u128() {
+        let (s, k) = split_u128(n)?;
+        return Some((BigUint::from(s), k));
+    }
+    // beyond 2¹²⁸: a perfect square, or small square factors taken out
+    // until the rest fits
+    let r = n.sqrt();
+    if &r * &r == *n {
+        return Some((r, 1));
+    }
+    let (mut s, mut m) = (BigUint::from(1u8), n.clone());
+    let mut f = 2u32;
+    while u128::from(f) < TRIAL {
+        let ff = BigUint::from(f) * f;
+        while (&m % &ff).to_u32() == Some(0) {
+            m /= &ff;
+            s *= f;
+        }
+        f += 1;
+    }
+    let (s2, k) = split_u128(m.to_u128()?)?;
+    Some((s * s2, k))
+}
+
+/// [`split`] of a 128-bit integer.
+pub fn split_u128(n: u128) -> Option<(u128, u128)> {
+    if n == 0 {
+        return Some((0, 1));
+    }
+    let mut primes = Vec::new();
+    let mut m = n;
+    let mut f = 2u128;
+    while f < TRIAL && f * f <= m {
+        while m.is_multiple_of(f) {
+            m /= f;
+            primes.push(f);
+        }
+        f += if f == 2 { 1 } else { 2 };
+    }
+    if m > 1 {
+        large_primes(m, &mut primes)?;
+    }
+    primes.sort_unstable();
+    let (mut s, mut k) = (1u128, 1u128);
+    let mut i = 0;
+    while i < primes.len() {
+        let p = primes[i];
+        let j = primes[i..].iter().take_while(|&&q| q == p).count();
+        for _ in 0..j / 2 {
+            s *= p;
+        }
+        if j % 2 == 1 {
+            k *= p;
+        }
+        i += j;
+    }
+    Some((s, k))
+}
+
+/// The primes of m (every prime of m at least [`TRIAL`], or m below
+/// TRIAL²), with multiplicity; None when they cannot be found for sure.
+fn large_primes(m: u128, out: &mut Vec<u128>) -> Option<()> {
+    if m == 1 {
+        return Some(());
+    }
+    if m < TRIAL * TRIAL || is_prime(m)? {
+        out.push(m);
+        return Some(());
+    }
+    let r = m.isqrt();
+    if r * r == m {
+        large_primes(r, out)?;
+        return large_primes(r, out);
+    }
+    let d = rho(m)?;
+    large_primes(d, out)?;
+    large_primes(m / d, out)
+}
+
+/// a + b mod m (a, b < m), without overflow.
+fn add_mod(a: u128, b: u128, m: u128) -> u128 {
+    if a >= m - b { a - (m - b) } else { a + b }
+}
+
+/// a·b mod m (a, b < m).
+fn mul_mod(a: u128, b: u128, m: u128) -> u128 {
+    if let Some(p) = a.checked_mul(b) {
+        return p % m;
+    }
+    // double and add, every step reduced
+    let (mut acc, mut a, mut b) = (0u128, a, b);
+    while b > 0 {
+        if b & 1 == 1 {
+            acc = add_mod(acc, a, m);
+        }
+        a = add_mod(a, a, m);
+        b >>= 1;
+    }
+    acc
+}
+
+/// a^e mod m.
+fn pow_mod(mut a: u128, mut e: u128, m: u128) -> u128 {
+    let mut acc = 1 % m;
+    a %= m;
+    while e > 0 {
+        if e & 1 == 1 {
+            acc = mul_mod(acc, a, m);
+        }
+        a = mul_mod(a, a, m);
+        e >>= 1;
+    }
+    acc
+}
+
+/// Whether m (odd, without prime factors below [`TRIAL`]) is prime, by the
+/// Miller–Rabin test, exact below [`MR_EXACT`]; None above it for a
+/// number the test does not show composite.
+fn is_prime(m: u128) -> Option<bool> {
+    let (mut d, mut r) = (m - 1, 0u32);
+    while d % 2 == 0 {
+        d /= 2;
+        r += 1;
+    }
+    for a in [2u128, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41] {
+        let mut x = pow_mod(a, d, m);
+        if x == 1 || x == m - 1 {
+            continue;
+        }
+        let mut composite = true;
+        for _ in 1..r {
+            x = mul_mod(x, x, m);
+            if x == m - 1 {
+                composite = false;
+                break;
+            }
+        }
+        if composite {
+            return Some(false);
+        }
+    }
+    (m < MR_EXACT).then_some(true)
+}
+
+/// A proper factor of the composite m (Pollard's rho, Brent's cycle
+/// search), None past [`RHO_STEPS`] steps for each of a few constants.
+fn rho(m: u128) -> Option<u128> {
+    let gcd = |mut a: u128, mut b: u128| {
+        while b != 0 {
+            (a, b) = (b, a % b);
+        }
+        a
+    };
+    for c in 1..=4u128 {
+        let f = |x: u128| add_mod(mul_mod(x, x, m), c, m);
+        let (mut x, mut y, mut steps) = (2u128, 2u128, 0u32);
+        let mut power = 1u32;
+        let mut lam = 0u32;
+        loop {
+            if power == lam {
+                x = y;
+                power *= 2;
+                lam = 0;
+            }
+            y = f(y);
+            lam += 1;
+            steps += 1;
+            let g = gcd(x.abs_diff(y), m);
+            if g == m || steps > RHO_STEPS {
+                break;
+            }
+            if g > 1 {
+                return Some(g);
+            }
+        }
+    }
+    None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn square_free_parts() {
+        assert_eq!(split_u128(8), Some((2, 2)));
+        assert_eq!(split_u128(12), Some((2, 3)));
+        assert_eq!(split_u128(1), Some((1, 1)));
+        assert_eq!(split_u128(5), Some((1, 5)));
+        assert_eq!(split_u128(360), Some((6, 10)));
+        // primes above the trial bound, squared and not
+        let p = 1_000_000_007u128;
+        let q = 998_244_353u128;
+        assert_eq!(split_u128(p * p), Some((p, 1)));
+        assert_eq!(split_u128(p * p * q), Some((p, q)));
+        assert_eq!(split_u128(p * q), Some((1, p * q)));
+        assert_eq!(split_u128(p * p * 12), Some((2 * p, 3)));
+        // a Mersenne prime, and its square times 2
+        let m61 = (1u128 << 61) - 1;
+        assert_eq!(split_u128(m61), Some((1, m61)));
+        assert_eq!(split_u128(2 * m61 * m61), Some((m61, 2)));
+        // beyond 2¹²⁸: a square
+        let big = BigUint::from(10u8).pow(40);
+        assert_eq!(split(&big), Some((BigUint::from(10u8).pow(20), 1)));
+    }
+
+    #[test]
+    fn primes_by_miller_rabin() {
+        assert_eq!(is_prime((1u128 << 61) - 1), Some(true));
+        assert_eq!(is_prime(1_000_000_007 * 998_244_353), Some(false));
+    }
+}
