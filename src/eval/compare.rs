@@ -11,7 +11,7 @@
 use super::interp::{Interp, Typed};
 use super::value::Value;
 
-pub use super::decide::{APPROX_TOL, equal, largest_difference, rounding_note, rounding_only};
+pub use super::decide::{APPROX_TOL, equal, largest_difference};
 use crate::check::rules::{self, RuleError};
 use crate::check::ty::{Frames, Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
@@ -95,7 +95,7 @@ impl Interp<'_> {
             // their numbers and is then decided as typed first (§7).
             (None, Some(a), Some(b)) if sides.undecided => {
                 if numbers(a, b) {
-                    return Err(self.too_close(op, lhs, rhs, op_span));
+                    return Err(self.too_close(op, lhs, rhs, op_span, (a, b)));
                 }
                 match crate::values::waiting::make(op, a, b) {
                     Some(w) => Some(w),
@@ -108,17 +108,41 @@ impl Interp<'_> {
     }
 
     /// "cannot decide `a < b`" of two exact numbers closer than their
-    /// bounds can tell apart (π against 50 digits of it).
-    fn too_close(&self, op: CmpOp, lhs: &Expr, rhs: &Expr, op_span: Span) -> Diagnostic {
+    /// bounds can tell apart (π against 50 digits of it); "cannot decide
+    /// `a == b`" of numbers made from exact ones whose certified values
+    /// agree far past rounding, though no proof says they are equal
+    /// (`cos(pi/7) + cos(3*pi/7) + cos(5*pi/7) == 1/2`, `super::certify`).
+    fn too_close(
+        &self,
+        op: CmpOp,
+        lhs: &Expr,
+        rhs: &Expr,
+        op_span: Span,
+        (a, b): (&Value, &Value),
+    ) -> Diagnostic {
+        let shown = format!(
+            "{} {} {}",
+            self.text(lhs.span).trim(),
+            op_text(op),
+            self.text(rhs.span).trim()
+        );
+        if let Some(n) = super::decide::agreement(a, b) {
+            let proof = if op == CmpOp::Eq {
+                ", but chasles cannot prove this identity"
+            } else {
+                ", closer than chasles can tell apart"
+            };
+            return Diagnostic::error(
+                ErrorKind::Domain,
+                op_span,
+                format!("cannot decide `{shown}`: the two sides agree to {n} digits{proof}"),
+            )
+            .with_help("compare within rounding with ≈ (typed ~=)");
+        }
         Diagnostic::error(
             ErrorKind::Domain,
             op_span,
-            format!(
-                "cannot decide `{} {} {}`: the two sides agree to 50 decimal places",
-                self.text(lhs.span).trim(),
-                op_text(op),
-                self.text(rhs.span).trim()
-            ),
+            format!("cannot decide `{shown}`: the two sides agree to 50 decimal places"),
         )
         .with_help("compare within rounding with ≈ (typed ~=)")
     }
@@ -173,8 +197,10 @@ impl Interp<'_> {
                 .lowered_equal(a, b, op, op_span)
                 .unwrap_or_else(|| equal(a, b, op))
             {
-                Ok(Some(false)) if op == CmpOp::Eq && rounding_only(a, b) => {
-                    self.warnings.push(rounding_note(op_span));
+                Ok(Some(false)) if op == CmpOp::Eq => {
+                    if let Some(note) = super::decide::false_note(a, b, op_span) {
+                        self.warnings.push(note);
+                    }
                     Some(false)
                 }
                 Ok(Some(v)) => Some(v),
@@ -210,7 +236,7 @@ impl Interp<'_> {
                 if let (Some(a), Some(b)) = (s.l.value(), s.r.value())
                     && numbers(a, b)
                 {
-                    return Err(self.too_close(*op, lhs, rhs, *op_span));
+                    return Err(self.too_close(*op, lhs, rhs, *op_span, (a, b)));
                 }
                 return Err(self.undecided(*op, lhs, rhs, *op_span, true));
             }

@@ -8,6 +8,7 @@
 //! ([`symbolic_equal`]).
 
 use super::apply::to_sym;
+use super::certify::Verdict;
 use super::value::{Sym, Value};
 use crate::check::ty::Kind;
 use crate::diagnostics::{Diagnostic, ErrorKind};
@@ -55,10 +56,10 @@ pub fn equal(a: &Value, b: &Value, op: CmpOp) -> Result<Option<bool>, String> {
                     b.kind().a()
                 ));
             }
-            Ok(Some(match op {
-                CmpOp::Approx => approx(x, y),
+            Ok(match op {
+                CmpOp::Approx => Some(approx(x, y)),
                 _ => exactly_equal(a, b),
-            }))
+            })
         }
         (Value::Bool(x), Value::Bool(y)) => Ok(Some(x == y)),
         (Value::Tuple(xs), Value::Tuple(ys)) if xs.len() == ys.len() => {
@@ -112,19 +113,63 @@ pub fn symbolic_equal(a: &Sym, b: &Sym, _op: CmpOp) -> Option<bool> {
     (a == b).then_some(true)
 }
 
-/// `a == b` on numbers (LANGUAGE.md §3): by their exact forms when both
-/// have one (`0.1 + 0.2 == 0.3`, `sqrt(2)*sqrt(3) == sqrt(6)`), else as
-/// floats, equal only when every entry is the same float.
-fn exactly_equal(a: &Value, b: &Value) -> bool {
+/// `a == b` on numbers (LANGUAGE.md §3, §7): by their exact forms when
+/// both have one (`0.1 + 0.2 == 0.3`, `sqrt(2)*sqrt(3) == sqrt(6)`); else,
+/// when both were made from exact numbers, by certified arithmetic on how
+/// they were made ([`super::certify`]: `cos(1e-9) == 1` is false, and
+/// sides that agree far past rounding but are not proven equal are
+/// undecided, None); else as floats, equal only when every entry is the
+/// same float.
+fn exactly_equal(a: &Value, b: &Value) -> Option<bool> {
     if a.may_be_exact()
         && b.may_be_exact()
         && let (Some(x), Some(y)) = (a.exact_form(), b.exact_form())
     {
-        return x == y;
+        return Some(x == y);
     }
-    match (a, b) {
+    match super::certify::equal(a, b) {
+        Some(Verdict::Equal) => return Some(true),
+        Some(Verdict::Differ(_)) => return Some(false),
+        Some(Verdict::Agree(_)) => return None,
+        None => {}
+    }
+    Some(match (a, b) {
         (Value::Num { m: x, .. }, Value::Num { m: y, .. }) => x == y,
         _ => false,
+    })
+}
+
+/// The note on `a == b` found false, if any: "differ by 5e-19, below
+/// double precision" when certified arithmetic found a difference the
+/// floats cannot show; the rounding note ([`rounding_note`]) when the
+/// sides are floats with no recipe that differ by rounding only.
+pub fn false_note(a: &Value, b: &Value, span: Span) -> Option<Diagnostic> {
+    match super::certify::equal(a, b) {
+        Some(Verdict::Differ(d)) => {
+            let same_floats =
+                matches!((a, b), (Value::Num { m: x, .. }, Value::Num { m: y, .. }) if x == y);
+            same_floats.then(|| {
+                Diagnostic::note(
+                    ErrorKind::Domain,
+                    span,
+                    format!(
+                        "the two sides differ by {}, below double precision: their floats are equal, their exact values are not",
+                        format!("{:.1e}", d.abs()).replace(".0e", "e")
+                    ),
+                )
+            })
+        }
+        Some(_) => None,
+        None => rounding_only(a, b).then(|| rounding_note(span)),
+    }
+}
+
+/// How many digits the two sides of an undecided `a == b` on numbers
+/// agree to ([`super::certify`]), if that is why it is undecided.
+pub fn agreement(a: &Value, b: &Value) -> Option<u32> {
+    match super::certify::equal(a, b) {
+        Some(Verdict::Agree(n)) => Some(n),
+        _ => None,
     }
 }
 
@@ -146,7 +191,7 @@ pub fn rounding_only(a: &Value, b: &Value) -> bool {
         (Value::Tuple(xs), Value::Tuple(ys)) if xs.len() == ys.len() => {
             xs.iter()
                 .zip(ys)
-                .all(|(x, y)| exactly_equal(x, y) || rounding_only(x, y))
+                .all(|(x, y)| exactly_equal(x, y) == Some(true) || rounding_only(x, y))
                 && xs.iter().zip(ys).any(|(x, y)| rounding_only(x, y))
         }
         _ => false,

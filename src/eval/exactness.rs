@@ -155,6 +155,14 @@ fn run(op: &Operation, vals: &[&Value], kind: &Kind) -> Option<Mat> {
             })
         })
         .collect::<Option<Vec<Value>>>()?;
+    let m = formula_of(op, forms, kind)?;
+    crate::values::exact::is_exact(&m).then_some(m)
+}
+
+/// Operation `op` by its exact path ([`Op::formula`]) over operands given
+/// as formulas `forms`: the canonical form of the result, exact or not
+/// (`super::lift` gives it forms with a symbol in them).
+pub(super) fn formula_of(op: &Operation, forms: Vec<Value>, kind: &Kind) -> Option<Mat> {
     let refs: Vec<&Value> = forms.iter().collect();
     let out = match op {
         Operation::Block(widths) => {
@@ -168,7 +176,7 @@ fn run(op: &Operation, vals: &[&Value], kind: &Kind) -> Option<Mat> {
         op => Op::of(op)?.formula(&refs, kind),
     };
     match out?.ok()? {
-        Value::Formula { m, .. } => crate::values::exact::is_exact(&m).then_some(m),
+        Value::Formula { m, .. } => Some(m),
         v => v.exact_form(),
     }
 }

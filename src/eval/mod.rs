@@ -3,6 +3,8 @@
 //! [`crate::check`]'s rules and computing values through [`crate::lie`].
 
 pub mod apply;
+mod ball;
+mod certify;
 mod chain;
 mod compare;
 mod compound;
@@ -13,6 +15,7 @@ mod exactness;
 mod expr;
 pub mod graph;
 pub mod interp;
+mod lift;
 pub mod list;
 mod lower;
 mod naming;

@@ -247,9 +247,8 @@ fn step(r: &Recipe, at: Lookup, memo: &mut Memo) -> Option<Value> {
                 Ok(Some(v)) => {
                     if !v
                         && *op == crate::syntax::ast::CmpOp::Eq
-                        && super::decide::rounding_only(a, b)
+                        && let Some(note) = super::decide::false_note(a, b, Default::default())
                     {
-                        let note = super::decide::rounding_note(Default::default());
                         memo.warnings.push(note);
                     }
                     Some(Value::Bool(v))

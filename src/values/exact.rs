@@ -161,6 +161,32 @@ impl Exact {
             depth: 0,
         }))
     }
+    /// `f` of the recipe this value was made by, when it has no exact
+    /// form but was made by an operation over operands that may have one
+    /// (`cos(1e-9)`, `sin(1)^2`): what `==` bounds in high precision
+    /// (`eval::certify`). None when it has an exact form (ask
+    /// [`Exact::form`] first), is a float, or was made otherwise.
+    pub fn with_recipe<R>(&self, f: impl FnOnce(&Pending) -> R) -> Option<R> {
+        let Exact::Later(l) = self else { return None };
+        if !matches!(l.form.get(), Some(None)) {
+            return None;
+        }
+        let make = l.make.take();
+        let out = match &make {
+            Some(Make::Op(p)) => Some(f(p)),
+            _ => None,
+        };
+        l.make.set(make);
+        out
+    }
+    /// The address of the form this value shares with its copies (the
+    /// same number read twice, `a == a`); None for a float or as typed.
+    pub fn identity(&self) -> Option<*const ()> {
+        match self {
+            Exact::Later(l) => Some(Rc::as_ptr(l).cast()),
+            _ => None,
+        }
+    }
     /// True when no exact form is known (nothing to ask).
     #[inline]
     pub fn is_float(&self) -> bool {
@@ -179,7 +205,15 @@ impl Exact {
                     // stack grows on the heap where it runs low)
                     stacker::maybe_grow(64 * 1024, 1024 * 1024, || {
                         let m = match l.make.take()? {
-                            Make::Op(p) => (p.run)(&p.op, &p.args.refs(), &p.kind)?,
+                            Make::Op(p) => {
+                                let m = (p.run)(&p.op, &p.args.refs(), &p.kind).filter(is_exact);
+                                // (no exact form: the recipe is kept, for
+                                // `==` to bound the value, `eval::certify`)
+                                if m.is_none() {
+                                    l.make.set(Some(Make::Op(p)));
+                                }
+                                m?
+                            }
                             Make::Fn(f) => f()?,
                         };
                         is_exact(&m).then_some(m)
@@ -194,10 +228,12 @@ impl Exact {
 /// is known or there is none).
 fn pending_depth(v: &Value) -> u32 {
     match v {
+        // (a form found missing keeps its recipe, [`Exact::with_recipe`]:
+        // it still counts, so that kept recipes stay as short as waiting ones)
         Value::Num {
             exact: Exact::Later(l),
             ..
-        } if l.form.get().is_none() => l.depth,
+        } if !matches!(l.form.get(), Some(Some(_))) => l.depth,
         _ => 0,
     }
 }
