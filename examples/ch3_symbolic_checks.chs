@@ -181,9 +181,8 @@ assert sqrt(10)/sqrt(2) == sqrt(5)
 assert 1/(sqrt(2) + sqrt(5)) == (sqrt(5) - sqrt(2))/3
 assert sqrt(12345678910111213)^2 == 12345678910111213
 sqrt(2) + sqrt(3) == sqrt(5)                  # false: the difference is not 0
-# A root of a root has no exact form here: a float, so == on rounding only
-# says so.
-sqrt(1 + sqrt(2))^2 == 1 + sqrt(2)            # false, with a note: use ≈
+# A root of a root has no exact form here: == bounds both sides in high
+# precision (see the end of this file); ≈ is the question to ask.
 assert sqrt(1 + sqrt(2))^2 ≈ 1 + sqrt(2)
 assert sqrt(1 + sqrt(2))^2*t5 ≈ (1 + sqrt(2))*t5
 
@@ -230,3 +229,21 @@ assert sin(u/2) cos(u/2) == sin(u)/2
 assert 2 cos(u/2)^2 - 1 == cos(u)
 assert cos(u/2)^2 - sin(u/2)^2 == cos(u)
 quat(Rotz(u))                                 # the book's half angles
+
+# --- numbers with no exact form, made from exact ones -------------------------
+# cos(1e-9) and 1 are the same float but not the same number; the sum of
+# cos(kπ/7) is 1/2 though its float is not. == bounds both sides in certified
+# high precision from how they were made: certainly different is false,
+# identities are proven (angles read as multiples of a symbol, π/L by its
+# minimal polynomial), and agreement without proof is "cannot decide".
+assert (cos(1e-9) == 1) == false              # differ by 5e-19, below double precision
+cos(1e-9) == 1                                # false, with the note
+assert cos(1e-9) < 1
+assert sin(1)^2 + cos(1)^2 == 1               # proven: an identity in the angle
+assert cos(2) == cos(1)^2 - sin(1)^2
+assert Rotz(1) Rotz(2) == Rotz(3)
+assert (1e16 + sin(1)) - 1e16 == sin(1)       # floats say 2
+assert cos(pi/7) + cos(3 pi/7) + cos(5 pi/7) == 1/2   # reduced by Φ₁₄(e^{iπ/7})
+assert cos(pi/9) cos(2 pi/9) cos(4 pi/9) == 1/8
+assert Rotx(-pi) Rotx(1 deg) == Rotx(-pi + 1 deg)
+assert sqrt(2 + sqrt(5)) ~= sqrt(2 + sqrt(5) + 1e-40)  # == cannot decide: no proof

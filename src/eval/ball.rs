@@ -225,7 +225,7 @@ fn checked(b: Ball) -> Option<Ball> {
 mod tests {
     use super::*;
 
-    fn r(p: i64, q: i64) -> Ball {
+    fn r(p: i128, q: i128) -> Ball {
         rat(&Rat::new(p, q).unwrap(), 200).unwrap()
     }
 

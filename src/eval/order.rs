@@ -60,12 +60,13 @@ pub fn holds(a: &Value, b: &Value, op: CmpOp) -> Result<Option<bool>, String> {
         // (exact sides closer than the bounds of π can tell: honest)
         Some(None) => return Ok(None),
         // (made from exact numbers: by the certified sign of the
-        // difference, `cos(1e-9) < 1` though the floats are equal)
+        // difference, `cos(1e-9) < 1` though the floats are equal; sides
+        // that agree far past rounding compare as floats, as the same
+        // sides over symbols bound later do: `sqrt(a) sqrt(a) <= a`)
         None => match super::certify::equal(a, b) {
             Some(super::certify::Verdict::Equal) => Some(std::cmp::Ordering::Equal),
             Some(super::certify::Verdict::Differ(d)) => d.partial_cmp(&0.0),
-            Some(super::certify::Verdict::Agree(_)) => return Ok(None),
-            None => x.partial_cmp(&y),
+            _ => x.partial_cmp(&y),
         },
     };
     use std::cmp::Ordering::{Equal, Greater, Less};

@@ -1,0 +1,127 @@
+//! `==` and orders on numbers made from exact ones but with no exact
+//! form themselves (LANGUAGE.md §7, issue 21: never a wrong answer).
+//! Floats alone are wrong both ways: `cos(1e-9)` and 1 are the same
+//! float, and `cos(π/7) + cos(3π/7) + cos(5π/7)` and 1/2 are not. The
+//! sides are bounded in certified high-precision arithmetic from how they
+//! were made: certainly different is `false` (with a note when the floats
+//! could not show it), proven identities are `true`, and sides that agree
+//! far past rounding with no proof are an honest "cannot decide".
+
+mod common;
+use common::{json, try_json};
+
+/// The value of the last statement of `src`.
+fn last(src: &str) -> serde_json::Value {
+    json(src).pop().expect("a statement")["value"].clone()
+}
+
+/// The message of the error `src` stops with.
+fn refusal(src: &str) -> String {
+    match try_json(src) {
+        Ok(lines) => panic!("{src}: no error, {lines:?}"),
+        Err(e) => e,
+    }
+}
+
+#[test]
+fn certainly_different_is_false() {
+    for src in [
+        "cos(1e-9) == 1",
+        "1 == cos(1e-9)",
+        "sin(1) == 0.8414709848078965",
+        "Rotz(1e-9) == Rotz(0)",
+        "cos(1e-9)^2 == 1",
+        "sin(1)^2 + cos(1)^2 - 1 == 1e-300",
+        "sin(1) == 0.5",
+    ] {
+        assert_eq!(last(src), serde_json::json!(false), "{src}");
+    }
+}
+
+#[test]
+fn orders_use_the_certified_sign() {
+    for (src, want) in [
+        ("cos(1e-9) < 1", true),
+        ("cos(1e-9) >= 1", false),
+        ("1 - cos(1e-9) > 0", true),
+        ("sin(1)^2 + cos(1)^2 <= 1", true),
+    ] {
+        assert_eq!(last(src), serde_json::json!(want), "{src}");
+    }
+}
+
+#[test]
+fn identities_made_from_exact_numbers_are_true() {
+    for src in [
+        "sin(1)^2 + cos(1)^2 == 1",
+        "cos(2) == cos(1)^2 - sin(1)^2",
+        "sin(0.5)*2*cos(0.5) == sin(1)",
+        "tan(1) == sin(1)/cos(1)",
+        "Rotz(1)*Rotz(2) == Rotz(3)",
+        "cos(pi/7)*2 == 2*cos(pi/7)",
+        "sin(1) == sin(1)",
+        "a = sin(1)\na == a",
+        // floats give 2 on the left; the exact value is sin 1
+        "(1e16 + sin(1)) - 1e16 == sin(1)",
+    ] {
+        assert_eq!(last(src), serde_json::json!(true), "{src}");
+    }
+}
+
+#[test]
+fn agreement_without_proof_cannot_be_decided() {
+    for src in [
+        "cos(pi/7) + cos(3*pi/7) + cos(5*pi/7) == 1/2",
+        "8*cos(pi/9)^3 - 6*cos(pi/9) == 1",
+        "assert cos(pi/7) + cos(3*pi/7) + cos(5*pi/7) == 1/2",
+    ] {
+        let e = refusal(src);
+        assert!(
+            e.contains("cannot decide") && e.contains("agree to") && e.contains("cannot prove"),
+            "{src}: {e}"
+        );
+        assert!(!e.contains("assertion failed"), "{src}: {e}");
+    }
+}
+
+#[test]
+fn exact_numbers_are_unchanged() {
+    for (src, want) in [
+        ("sqrt(2)*sqrt(3) == sqrt(6)", true),
+        ("0.1 + 0.2 == 0.3", true),
+        ("1e-9 == 0.000000001", true),
+        ("pi == 3.141592653589793", false),
+        ("cos(pi/3) == 1/2", true),
+        ("cos(pi/5) == (1 + sqrt(5))/4", true),
+    ] {
+        assert_eq!(last(src), serde_json::json!(want), "{src}");
+    }
+}
+
+/// A numeric matrix exponential keeps no recipe: its sides compare as
+/// floats (§7), a bool, never a refusal.
+#[test]
+fn floats_with_no_recipe_compare_as_floats() {
+    let v = last("exp(VecToso3((0, 0, 1)) * 0.3) == exp(VecToso3((0, 0, 1)) * 0.3)");
+    assert_eq!(v, serde_json::json!(true));
+    let v = last("exp(VecToso3((0, 0, 1)) * 0.3) == Rotz(0.31)");
+    assert_eq!(v, serde_json::json!(false));
+}
+
+/// The JSON form: a certified `false` is a value, "cannot decide" an
+/// error object of kind domain with its help.
+#[test]
+fn json_says_which() {
+    let (code, out, _) = common::run(&[
+        "--json",
+        "-e",
+        "cos(1e-9) == 1\ncos(pi/7) + cos(3*pi/7) + cos(5*pi/7) == 1/2",
+    ]);
+    assert_ne!(code, 0);
+    let lines = common::json_lines(&out);
+    assert_eq!(lines[0]["value"], serde_json::json!(false));
+    let e = &lines[1]["error"];
+    assert_eq!(e["kind"], "domain");
+    assert!(e["message"].as_str().unwrap().contains("agree to"), "{e}");
+    assert!(e["help"].as_str().unwrap().contains("≈"), "{e}");
+}
