@@ -246,4 +246,4 @@ assert (1e16 + sin(1)) - 1e16 == sin(1)       # floats say 2
 assert cos(pi/7) + cos(3 pi/7) + cos(5 pi/7) == 1/2   # reduced by Φ₁₄(e^{iπ/7})
 assert cos(pi/9) cos(2 pi/9) cos(4 pi/9) == 1/8
 assert Rotx(-pi) Rotx(1 deg) == Rotx(-pi + 1 deg)
-assert sqrt(2 + sqrt(5)) ~= sqrt(2 + sqrt(5) + 1e-40)  # == cannot decide: no proof
+assert sqrt(2 + sqrt(3)) ~= (sqrt(6) + sqrt(2))/2  # == cannot decide: no proof here

@@ -15,7 +15,7 @@ use std::collections::HashMap;
 
 use super::value::Value;
 use crate::sym::Mat;
-use crate::sym::coef::Coef;
+use crate::sym::coef::{Coef, Rat};
 use crate::sym::expr::{Expr, Symbol, Var};
 use crate::values::exact::Operation;
 
@@ -24,8 +24,220 @@ use crate::values::exact::Operation;
 /// `Err(d)` different, `d` an entry of `a − b` that is a nonzero exact
 /// number (no ν left: the same at ν = 1); None nothing.
 pub fn verdict(a: &Value, b: &Value) -> Option<Result<(), Expr>> {
-    let mut memo = HashMap::new();
-    let (x, y) = (lifted(a, &mut memo, 0)?, lifted(b, &mut memo, 0)?);
+    let mut lift = Lift::default();
+    let first = proof(a, b, &mut lift);
+    if matches!(first, Some(Ok(()))) {
+        return first;
+    }
+    // (again with every angle a + bπ read as a whole multiple of μ = 1/M
+    // plus one of ρ = π/L: angles then add as the powers of e^{iμ} and
+    // e^{iρ} multiply, Rotx(-π) Rotx(1 deg) == Rotx(-π + 1 deg))
+    let split = lift.split()?;
+    let mut lift = Lift {
+        split: Some(split),
+        ..Lift::default()
+    };
+    proof(a, b, &mut lift).or(first)
+}
+
+/// How angles are read, and what was met of them.
+#[derive(Default)]
+struct Lift {
+    /// Each side's lifted form, by the side's shared form.
+    memo: HashMap<*const (), Option<Mat>>,
+    /// None: an angle x is x·ν. Some((M, L)): an angle a + bπ is
+    /// (a M) μ + (b L) ρ, μ = 1/M, ρ = π/L.
+    split: Option<(i64, i64)>,
+    /// The angles met, as (a, b) of a + bπ; None once one is not of
+    /// that form.
+    angles: Option<Vec<(Rat, Rat)>>,
+    /// False once an angle not of the form a + bπ is met.
+    mixed: bool,
+}
+
+impl Lift {
+    /// (M, L): the least common denominators of the angles' rational
+    /// parts and of their multiples of π, when every angle is a + bπ and
+    /// both are small enough for whole powers.
+    fn split(&self) -> Option<(i64, i64)> {
+        if self.mixed {
+            return None;
+        }
+        let mut m = num_bigint::BigInt::from(1);
+        let mut l = num_bigint::BigInt::from(1);
+        for (a, b) in self.angles.as_ref()? {
+            m = num_integer::Integer::lcm(&m, &a.parts().1);
+            l = num_integer::Integer::lcm(&l, &b.parts().1);
+        }
+        let small =
+            |n: &num_bigint::BigInt| i64::try_from(n.clone()).ok().filter(|n| *n <= 100_000);
+        Some((small(&m)?, small(&l)?))
+    }
+
+    /// An angle `x` as this lift reads it.
+    fn angle(&mut self, x: &Expr) -> Option<Expr> {
+        let parts = rational_and_pi(x);
+        match (parts, self.split) {
+            (Some((a, b)), Some((m, l))) => {
+                let scaled = |r: &Rat, k: i64| Coef::rat(r.mul(&Rat::int(k)));
+                Some(
+                    symbol("μ")
+                        .scale(&scaled(&a, m))
+                        .add(&symbol("ρ").scale(&scaled(&b, l))),
+                )
+            }
+            (_, Some(_)) => None,
+            (parts, None) => {
+                match parts {
+                    Some(ab) => self.angles.get_or_insert_with(Vec::new).push(ab),
+                    None => self.mixed = true,
+                }
+                Some(x.mul(&symbol("ν")))
+            }
+        }
+    }
+}
+
+/// (a, b) of an exact angle a + bπ with a, b rational.
+fn rational_and_pi(x: &Expr) -> Option<(Rat, Rat)> {
+    let (mut a, mut b) = (Rat::ZERO, Rat::ZERO);
+    for (mono, c) in &x.terms {
+        let r = c.as_rat()?;
+        match mono.as_slice() {
+            [] => a = r,
+            [(Var::Pi, 1)] => b = r,
+            _ => return None,
+        }
+    }
+    Some((a, b))
+}
+
+/// `e` with each power of z = e^{iρ}, ρ = π/L, brought into [0, L) by
+/// z^L = −1 (so `cos(−179ρ)` is `−cos ρ` at L = 180); powers inside kept
+/// calls are left as they are.
+fn wrapped(e: &Expr, l: i64) -> Expr {
+    let mut out = Expr::default();
+    for (mono, c) in &e.terms {
+        let mut sign = false;
+        let mono: crate::sym::expr::Mono = mono
+            .iter()
+            .filter_map(|(v, k)| match v {
+                Var::Z(s) if &*s.name == "ρ" => {
+                    let k = i64::from(*k);
+                    let r = k.rem_euclid(l);
+                    sign ^= ((k - r) / l) % 2 != 0;
+                    (r != 0).then(|| (v.clone(), i32::try_from(r).unwrap_or(i32::MAX)))
+                }
+                _ => Some((v.clone(), *k)),
+            })
+            .collect();
+        let c = if sign { c.neg() } else { c.clone() };
+        let term = Expr {
+            terms: std::iter::once((mono, c)).collect(),
+        };
+        out = out.add(&term);
+    }
+    out
+}
+
+/// The cyclotomic polynomial Φ_n (integer coefficients, lowest power
+/// first): the minimal polynomial over ℚ of a primitive n-th root of
+/// unity, by Φ_n = (zⁿ − 1) / Π Φ_d over the divisors d < n.
+fn cyclotomic(n: usize) -> Vec<i64> {
+    let mut p = vec![0i64; n + 1];
+    p[0] = -1;
+    p[n] = 1;
+    for d in (1..n).filter(|d| n % d == 0) {
+        let q = cyclotomic(d);
+        // (exact division by the monic q, highest power first)
+        let mut out = vec![0i64; p.len() - q.len() + 1];
+        for i in (0..out.len()).rev() {
+            let c = p[i + q.len() - 1];
+            out[i] = c;
+            for (j, qj) in q.iter().enumerate() {
+                p[i + j] -= c * qj;
+            }
+        }
+        p = out;
+    }
+    p
+}
+
+/// `e` with the polynomial in z = e^{iρ} (ρ = π/L) of each monomial's
+/// other factors reduced modulo Φ_2L, the minimal polynomial of z over ℚ:
+/// `cos ρ + cos 3ρ + cos 5ρ` is then 1/2 at L = 7. Powers are first
+/// brought into [0, L) by z^L = −1 ([`wrapped`]). Equal results are equal
+/// numbers (a reduction over a larger field might find more equal).
+fn reduced(e: &Expr, l: i64) -> Expr {
+    let e = wrapped(e, l);
+    let n = 2 * usize::try_from(l).unwrap_or(usize::MAX);
+    if n > 720 {
+        return e;
+    }
+    let phi = cyclotomic(n);
+    let deg = phi.len() - 1;
+    // (the other factors of each monomial, to their polynomial in z)
+    let mut polys: std::collections::BTreeMap<crate::sym::expr::Mono, Vec<Coef>> =
+        std::collections::BTreeMap::new();
+    let mut z = None;
+    for (mono, c) in &e.terms {
+        let mut k = 0usize;
+        let rest: crate::sym::expr::Mono = mono
+            .iter()
+            .filter(|(v, p)| match v {
+                Var::Z(s) if &*s.name == "ρ" => {
+                    z = Some(v.clone());
+                    k = usize::try_from(*p).unwrap_or(0);
+                    false
+                }
+                _ => true,
+            })
+            .cloned()
+            .collect();
+        let poly = polys.entry(rest).or_default();
+        if poly.len() <= k {
+            poly.resize(k + 1, Coef::int(0));
+        }
+        poly[k] = poly[k].add(c);
+    }
+    let Some(z) = z else { return e };
+    let mut out = Expr::default();
+    for (rest, mut poly) in polys {
+        for i in (deg..poly.len()).rev() {
+            let c = poly[i].clone();
+            if c.is_zero() {
+                continue;
+            }
+            for (j, pj) in phi.iter().enumerate() {
+                let at = i - deg + j;
+                poly[at] = poly[at].add(&c.mul(&Coef::int(-pj)));
+            }
+        }
+        for (k, c) in poly.into_iter().enumerate().take(deg) {
+            if c.is_zero() {
+                continue;
+            }
+            let mut mono = rest.clone();
+            if k > 0 {
+                mono.push((z.clone(), i32::try_from(k).unwrap_or(i32::MAX)));
+                mono.sort_by(|a, b| a.0.cmp(&b.0));
+            }
+            out = out.add(&Expr {
+                terms: std::iter::once((mono, c)).collect(),
+            });
+        }
+    }
+    out
+}
+
+/// The proof `verdict` asks for, with angles read by `lift`.
+fn proof(a: &Value, b: &Value, lift: &mut Lift) -> Option<Result<(), Expr>> {
+    let (mut x, mut y) = (lifted(a, lift, 0)?, lifted(b, lift, 0)?);
+    if let Some((_, l)) = lift.split {
+        for e in x.data.iter_mut().chain(y.data.iter_mut()) {
+            *e = reduced(e, l);
+        }
+    }
     if (x.rows, x.cols) != (y.rows, y.cols)
         || !x.data.iter().all(exact)
         || !y.data.iter().all(exact)
@@ -48,9 +260,9 @@ pub fn verdict(a: &Value, b: &Value) -> Option<Result<(), Expr>> {
         .map(Err)
 }
 
-/// ν, the symbol that stands for 1 in the angles.
-fn nu() -> Expr {
-    Expr::symbol(Symbol::new("ν"))
+/// The symbol `name` (ν, μ, ρ: they stand for numbers in the angles).
+fn symbol(name: &str) -> Expr {
+    Expr::symbol(Symbol::new(name))
 }
 
 /// True when no coefficient anywhere in `e` is a float (calls' arguments
@@ -79,7 +291,7 @@ fn angle_of(op: &Operation) -> Option<usize> {
 
 /// The canonical form of `v` with its angles scaled by ν: its exact form
 /// when it has one, else its recipe made again symbolically.
-fn lifted(v: &Value, memo: &mut HashMap<*const (), Option<Mat>>, depth: u32) -> Option<Mat> {
+fn lifted(v: &Value, lift: &mut Lift, depth: u32) -> Option<Mat> {
     let Value::Num { exact, .. } = v else {
         return None;
     };
@@ -90,7 +302,7 @@ fn lifted(v: &Value, memo: &mut HashMap<*const (), Option<Mat>>, depth: u32) -> 
         return None;
     }
     let key = exact.identity()?;
-    if let Some(found) = memo.get(&key) {
+    if let Some(found) = lift.memo.get(&key) {
         return found.clone();
     }
     let out = exact
@@ -102,12 +314,12 @@ fn lifted(v: &Value, memo: &mut HashMap<*const (), Option<Mat>>, depth: u32) -> 
                 .into_iter()
                 .enumerate()
                 .map(|(i, a)| {
-                    let mut m = lifted(a, memo, depth + 1)?;
+                    let mut m = lifted(a, lift, depth + 1)?;
                     if Some(i) == angle {
                         if m.data.len() != 1 {
                             return None;
                         }
-                        m.data[0] = m.data[0].mul(&nu());
+                        m.data[0] = lift.angle(&m.data[0])?;
                     }
                     Some(Value::Formula {
                         kind: a.kind(),
@@ -119,6 +331,6 @@ fn lifted(v: &Value, memo: &mut HashMap<*const (), Option<Mat>>, depth: u32) -> 
             super::exactness::formula_of(&p.op, forms, &p.kind)
         })
         .flatten();
-    memo.insert(key, out.clone());
+    lift.memo.insert(key, out.clone());
     out
 }
