@@ -245,7 +245,8 @@ fn balls(v: &Value, prec: usize, memo: &mut Memo) -> Option<Balls> {
         for (k, b) in out.data.iter().enumerate() {
             let (mid, rad) = ball::floats(b);
             let x = m[(k / c, k % c)];
-            if !((mid - x).abs() <= rad + 1e-6 * x.abs().max(scale)) {
+            let within = (mid - x).abs() <= rad + 1e-6 * x.abs().max(scale);
+            if !within {
                 return None;
             }
         }

@@ -147,7 +147,7 @@ fn cyclotomic(n: usize) -> Vec<i64> {
     let mut p = vec![0i64; n + 1];
     p[0] = -1;
     p[n] = 1;
-    for d in (1..n).filter(|d| n % d == 0) {
+    for d in (1..n).filter(|d| n.is_multiple_of(*d)) {
         let q = cyclotomic(d);
         // (exact division by the monic q, highest power first)
         let mut out = vec![0i64; p.len() - q.len() + 1];
