@@ -12,7 +12,7 @@ use dashu_float::round::mode::HalfEven;
 use dashu_float::{Context, FBig, Mag, Repr, ulp_mag};
 use dashu_int::IBig;
 
-use crate::sym::coef::{Coef, ROOTS, Rat};
+use crate::sym::coef::{Coef, Rat};
 use crate::sym::expr::{Expr, Var};
 
 /// A real number known to lie within `rad` of `mid` (binary).
@@ -36,7 +36,7 @@ pub fn pi(prec: usize) -> Ball {
 }
 
 /// A ball of an exact number: a sum of exact real coefficients (rationals
-/// and square roots, `sym::coef`) times powers of π. None for anything
+/// and square roots of square-free integers, `sym::surd`) times powers of π. None for anything
 /// else (a symbol, a kept call, a float or complex coefficient).
 pub fn exact(e: &Expr, prec: usize) -> Option<Ball> {
     let mut sum = Ball::exact(Repr::zero());
@@ -48,10 +48,7 @@ pub fn exact(e: &Expr, prec: usize) -> Option<Ball> {
             return None;
         }
         let mut term = Ball::exact(Repr::zero());
-        for (r, root) in re.0.iter().zip(ROOTS) {
-            if r.is_zero() {
-                continue;
-            }
+        for (root, r) in re.terms() {
             let mut x = rat(r, prec)?;
             if root != 1 {
                 let s = sqrt(&int(&root.into()), prec)?;
