@@ -12,6 +12,7 @@ use crate::lie::{LieGroup, Mat2, Mat3, Mat4, SE2, SE3, SO2, SO3, Vec3, Vec4, Vec
 use crate::mech::Mechanism;
 use crate::syntax::ast::Span;
 use crate::values::convert::{Group, Membership, membership};
+use crate::values::domain::Decided;
 use crate::values::value::Value;
 
 /// A static argument error: which argument (None: the whole call), the
@@ -97,9 +98,17 @@ impl Args<'_> {
             .ok_or_else(|| self.wrong(i, "scalar"))
     }
 
-    /// Argument `i` as a whole number in `lo..=hi`.
+    /// Argument `i` as a number to decide on: by its exact form when it
+    /// has one ([`Decided`]: `sqrt`, `acos`, the poles of `tan`, `atan2`,
+    /// `log` and sizes decide by it, never by a float far from it).
+    pub fn decided(&self, i: usize) -> Result<Decided, Diagnostic> {
+        Decided::of(&self.vals[i]).ok_or_else(|| self.wrong(i, "scalar"))
+    }
+
+    /// Argument `i` as a whole number in `lo..=hi` (decided by its exact
+    /// form when it has one: `zeros(sqrt(2)^2, 1)` is 2 by 1).
     pub fn int(&self, i: usize, lo: i64, hi: i64) -> Result<i64, Diagnostic> {
-        let x = self.scalar(i)?;
+        let x = self.decided(i)?.value();
         if x.fract() != 0.0 || !x.is_finite() || x < lo as f64 || x > hi as f64 {
             return Err(self.error(
                 i,

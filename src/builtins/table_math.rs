@@ -163,8 +163,11 @@ fn log_rule(args: &[Ty]) -> Result<Ty, ArgError> {
 }
 
 fn eval_log(a: &mut Args) -> Result<Value, Diagnostic> {
-    if let Some(x) = a.value(0).as_scalar() {
-        if x <= 0.0 {
+    if a.value(0).as_scalar().is_some() {
+        // (0 and the negatives decided by the exact form when there is one)
+        let d = a.decided(0)?;
+        let x = d.value();
+        if d.order(0.0).map_or(x <= 0.0, std::cmp::Ordering::is_le) {
             return Err(a.error(
                 0,
                 ErrorKind::Domain,
@@ -272,7 +275,7 @@ fn matrix_ctor_rule(args: &[Ty]) -> Result<Ty, ArgError> {
 
 fn sized(a: &Args) -> Result<(usize, usize), Diagnostic> {
     let side = |i: usize| -> Result<usize, Diagnostic> {
-        let x = a.scalar(i)?;
+        let x = a.decided(i)?.value();
         if x.fract() != 0.0 || x < 0.0 || !x.is_finite() {
             return Err(a.error(
                 i,
@@ -521,7 +524,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: || Kind::Bool,
                 frames: FrameRule::None,
             },
-            eval: |a| Ok(Value::Bool(lie::near_zero(a.scalar(0)?))),
+            eval: |a| Ok(Value::Bool(lie::near_zero(a.decided(0)?.value()))),
         },
         Builtin {
             name: "Normalize",

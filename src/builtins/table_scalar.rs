@@ -2,11 +2,16 @@
 //! their domains (arcsine and arccosine on [−1, 1], §3.2.3.3's angles),
 //! `atan2`, `sqrt` and `abs`; `tan`, `cot`, `sec` and `csc` refuse their
 //! poles (angle units are in `table_units`). Each checks
-//! its domain and names the cause of a refusal (`sqrt(-1)`, `acos(2)`).
+//! its domain — by the argument's exact form when it has one
+//! ([`crate::values::domain`]) — and names the cause of a refusal
+//! (`sqrt(-1)`, `acos(2)`).
+
+use std::cmp::Ordering;
 
 use super::{Area, Args, Builtin, FrameRule, Param, Typing};
 use crate::check::ty::Kind;
 use crate::diagnostics::{Diagnostic, ErrorKind};
+use crate::values::domain::Zero;
 use crate::values::value::Value;
 
 /// The return kind of every scalar function.
@@ -14,31 +19,56 @@ pub(super) fn scalar() -> Kind {
     Kind::Scalar
 }
 
-/// A scalar function with a domain check.
-fn unary(a: &Args, f: fn(f64) -> f64, ok: fn(f64) -> bool, why: &str) -> Result<Value, Diagnostic> {
-    let x = a.scalar(0)?;
-    if !ok(x) {
-        return Err(a.error(0, ErrorKind::Domain, format!("{}({x}): {why}", a.name)));
+/// A scalar function, infinite where `pole` says (tan, sec where cos x
+/// = 0; cot, csc where sin x = 0). The pole is decided by the exact form
+/// of x when it has one ([`Decided::is_pole`]: `tan(π/2 + 10¹⁶π)` is at
+/// a pole whatever its float); a float within rounding of a pole is
+/// refused too, its value there being rounding noise.
+fn unary(a: &Args, f: fn(f64) -> f64, pole: Option<Zero>, why: &str) -> Result<Value, Diagnostic> {
+    let d = a.decided(0)?;
+    let x = d.value();
+    let Some(zero) = pole else {
+        return Ok(Value::scalar(f(x)));
+    };
+    let near = match zero {
+        Zero::Cos => x.cos(),
+        Zero::Sin => x.sin(),
+    };
+    match d.is_pole(zero) {
+        Some(true) => {}
+        None if near.abs() <= POLE => {}
+        Some(false) if near.abs() <= POLE => {
+            let which = if zero == Zero::Cos { "cos" } else { "sin" };
+            return Err(a.error(
+                0,
+                ErrorKind::Domain,
+                format!(
+                    "{}({x}): x is within rounding of a pole ({which} x is {near:.1e} in floats), \
+                     so a float of the value would be rounding noise",
+                    a.name
+                ),
+            ));
+        }
+        _ => return Ok(Value::scalar(f(x))),
     }
-    Ok(Value::scalar(f(x)))
+    Err(a.error(0, ErrorKind::Domain, format!("{}({x}): {why}", a.name)))
 }
 
 /// Below this, cos x (or sin x) is a computed zero: x is a pole (π/2 in
 /// floats has cos = 6.1e-17), and a value of 1e16 would be rounding noise.
 const POLE: f64 = 1e-15;
 
-fn any(_: f64) -> bool {
-    true
-}
-
 /// How far outside its domain an argument may be and still count as
 /// rounding (`acos(1 + 2e-16)`, `sqrt(-2e-16)`): clamped to the domain,
 /// with a note.
 pub const ROUNDING: f64 = 1e-12;
 
-/// A scalar function on `[lo, hi]`: an argument within [`ROUNDING`] of
-/// the interval is clamped into it with a note; farther is a domain error
-/// giving the value.
+/// A scalar function on `[lo, hi]`. An exact argument (typed, or with an
+/// exact form) is in or out by its value, exactly (`sqrt(√5 +
+/// cos(3π/2)/1e-17)` is √√5: the float of the argument, −16.1, is not the
+/// number; `sqrt(-2e-16)` is not real); a float with no exact form within
+/// [`ROUNDING`] of the interval is clamped into it with a note (rounding
+/// may have put it outside); farther is a domain error giving the value.
 fn near_domain(
     a: &mut Args,
     f: fn(f64) -> f64,
@@ -46,9 +76,27 @@ fn near_domain(
     hi: f64,
     why: &str,
 ) -> Result<Value, Diagnostic> {
-    let x = a.scalar(0)?;
-    if (lo..=hi).contains(&x) {
-        return Ok(Value::scalar(f(x)));
+    let d = a.decided(0)?;
+    let x = d.value();
+    let below = |c: f64| {
+        if c.is_finite() {
+            d.order(c)
+        } else {
+            Some(Ordering::Less)
+        }
+    };
+    let inside = match (d.order(lo), below(hi)) {
+        (Some(l), Some(h)) if d.is_exact() => Some(l.is_ge() && h.is_le()),
+        _ => None,
+    };
+    match inside {
+        // (the float of an exact number inside may be a rounding outside)
+        Some(true) => return Ok(Value::scalar(f(x.clamp(lo, hi)))),
+        Some(false) => {
+            return Err(a.error(0, ErrorKind::Domain, format!("{}({x}): {why}", a.name)));
+        }
+        None if (lo..=hi).contains(&x) => return Ok(Value::scalar(f(x))),
+        None => {}
     }
     if !(x >= lo - ROUNDING && x <= hi + ROUNDING) {
         return Err(a.error(0, ErrorKind::Domain, format!("{}({x}): {why}", a.name)));
@@ -74,7 +122,7 @@ fn near_domain(
 }
 
 macro_rules! scalar_fn {
-    ($name:literal, $doc:literal, $f:expr, $ok:expr, $why:literal) => {
+    ($name:literal, $doc:literal, $f:expr, $pole:expr, $why:literal) => {
         Builtin {
             name: $name,
             aliases: &[],
@@ -88,7 +136,7 @@ macro_rules! scalar_fn {
                 ret: scalar,
                 frames: FrameRule::None,
             },
-            eval: |a| unary(a, $f, $ok, $why),
+            eval: |a| unary(a, $f, $pole, $why),
         }
     };
 }
@@ -98,7 +146,7 @@ macro_rules! clamped_fn {
     ($name:literal, $doc:literal, $f:expr, ($lo:expr, $hi:expr), $why:literal) => {
         Builtin {
             eval: |a| near_domain(a, $f, $lo, $hi, $why),
-            ..scalar_fn!($name, $doc, $f, any, $why)
+            ..scalar_fn!($name, $doc, $f, None, $why)
         }
     };
 }
@@ -121,36 +169,42 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: scalar,
                 frames: FrameRule::None,
             },
-            eval: |a| Ok(Value::scalar(a.scalar(0)?.atan2(a.scalar(1)?))),
+            // (the sides of the cut at y = 0, x < 0 by the exact forms:
+            // atan2(sin(2π), −1) is π, not −π)
+            eval: |a| {
+                Ok(Value::scalar(
+                    a.decided(0)?.value().atan2(a.decided(1)?.value()),
+                ))
+            },
         },
-        scalar_fn!("sin", "sine (radians)", f64::sin, any, ""),
-        scalar_fn!("cos", "cosine (radians)", f64::cos, any, ""),
+        scalar_fn!("sin", "sine (radians)", f64::sin, None, ""),
+        scalar_fn!("cos", "cosine (radians)", f64::cos, None, ""),
         scalar_fn!(
             "tan",
             "tangent (radians), sin x / cos x",
             f64::tan,
-            |x| x.cos().abs() > POLE,
+            Some(Zero::Cos),
             "cos x is 0 there, so the tangent is infinite"
         ),
         scalar_fn!(
             "cot",
             "cotangent (radians), cos x / sin x",
             |x| x.cos() / x.sin(),
-            |x| x.sin().abs() > POLE,
+            Some(Zero::Sin),
             "sin x is 0 there, so the cotangent is infinite"
         ),
         scalar_fn!(
             "sec",
             "secant (radians), 1 / cos x",
             |x| 1.0 / x.cos(),
-            |x| x.cos().abs() > POLE,
+            Some(Zero::Cos),
             "cos x is 0 there, so the secant is infinite"
         ),
         scalar_fn!(
             "csc",
             "cosecant (radians), 1 / sin x",
             |x| 1.0 / x.sin(),
-            |x| x.sin().abs() > POLE,
+            Some(Zero::Sin),
             "sin x is 0 there, so the cosecant is infinite"
         ),
         clamped_fn!(
@@ -167,7 +221,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
             (-1.0, 1.0),
             "the argument must be in [−1, 1]"
         ),
-        scalar_fn!("atan", "arctangent", f64::atan, any, ""),
+        scalar_fn!("atan", "arctangent", f64::atan, None, ""),
         clamped_fn!(
             "sqrt",
             "square root (also written √2, √(x + 1))",
@@ -175,6 +229,6 @@ pub(super) fn builtins() -> Vec<Builtin> {
             (0.0, f64::INFINITY),
             "the square root of a negative number is not real"
         ),
-        scalar_fn!("abs", "absolute value", f64::abs, any, ""),
+        scalar_fn!("abs", "absolute value", f64::abs, None, ""),
     ]
 }

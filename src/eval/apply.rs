@@ -172,7 +172,10 @@ impl<'a> Op<'a> {
                         None => ops::div(a, b, &own()),
                     },
                     BinOp::Pow => {
-                        let e = b.as_scalar().ok_or(OpError::ExponentNotANumber)?;
+                        // (by its exact form when it has one: √2² is 2)
+                        let e = crate::values::domain::Decided::of(b)
+                            .map(|d| d.value())
+                            .ok_or(OpError::ExponentNotANumber)?;
                         match kind {
                             Some(k) => ops::pow(a, e, k),
                             None => ops::pow(a, e, &own()),

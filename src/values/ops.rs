@@ -7,6 +7,7 @@
 use nalgebra::DMatrix;
 
 use super::convert;
+use super::domain::Decided;
 pub use super::error::{MAX_DIM, MAX_ELEMENTS, MAX_WORK, OpError};
 use super::num::Num;
 use super::value::Value;
@@ -194,13 +195,16 @@ pub fn neg(v: &Value, kind: &Kind) -> Result<Value, OpError> {
     })
 }
 
-/// `l / r` with a scalar divisor.
+/// `l / r` with a scalar divisor: by zero when its exact form is 0
+/// (`1/cos(π/2)` is refused, not 1.6e16), else by its float
+/// ([`Decided`]).
 pub fn div(l: &Value, r: &Value, kind: &Kind) -> Result<Value, OpError> {
     let (_, lm) = num(l)?;
-    let d = r.as_scalar().ok_or(OpError::DivisorNotANumber)?;
-    if d == 0.0 {
+    let d = Decided::of(r).ok_or(OpError::DivisorNotANumber)?;
+    if d.is_zero() {
         return Err(OpError::DivisionByZero);
     }
+    let d = d.value();
     Ok(Value::Num {
         kind: *kind,
         m: lm.map(|x| x / d),
@@ -209,13 +213,18 @@ pub fn div(l: &Value, r: &Value, kind: &Kind) -> Result<Value, OpError> {
 }
 
 /// `b ^ e`: real powers of numbers, integer powers of square matrices
-/// (by repeated squaring; `X^-1` is the inverse).
+/// (by repeated squaring; `X^-1` is the inverse). A scalar base and the exponent are read by their exact forms when they
+/// have them ([`Decided`]): `sin(2π)^0.5` is 0, `(-8)^(√2²)` is 64.
 pub fn pow(b: &Value, e: f64, kind: &Kind) -> Result<Value, OpError> {
     let (bk, bm) = num(b)?;
     if *bk == Kind::Scalar {
-        let x = bm[0].powf(e);
-        if x.is_nan() && !bm[0].is_nan() && !e.is_nan() {
-            let base = format!("({})^{}", fmt_exp(bm[0]), fmt_exp(e));
+        let x0 = Decided::of(b).map_or(bm[0], |d| d.value());
+        if x0 == 0.0 && e < 0.0 {
+            return Err(OpError::DivisionByZero);
+        }
+        let x = x0.powf(e);
+        if x.is_nan() && !x0.is_nan() && !e.is_nan() {
+            let base = format!("({})^{}", fmt_exp(x0), fmt_exp(e));
             // p/q with q odd has a real root: −(|b|^e) when p is odd.
             let odd_root = [3.0, 5.0, 7.0, 9.0].into_iter().any(|q: f64| {
                 let p = (e * q).round();
@@ -223,7 +232,7 @@ pub fn pow(b: &Value, e: f64, kind: &Kind) -> Result<Value, OpError> {
             });
             return Err(OpError::NotReal {
                 base,
-                real_root: odd_root.then(|| format!("{}^{}", fmt_exp(-bm[0]), fmt_exp(e))),
+                real_root: odd_root.then(|| format!("{}^{}", fmt_exp(-x0), fmt_exp(e))),
             });
         }
         return Ok(Value::scalar(x));
@@ -284,10 +293,12 @@ pub fn inverse(v: &Value) -> Result<Value, OpError> {
 pub fn inverse_conditioned(v: &Value) -> Result<(Value, Option<f64>), OpError> {
     let (k, m) = num(v)?;
     if *k == Kind::Scalar {
-        if m[0] == 0.0 {
+        // (0 by its exact form when it has one, [`Decided`])
+        let d = Decided::of(v).map_or(m[0], |d| if d.is_zero() { 0.0 } else { d.value() });
+        if d == 0.0 {
             return Err(OpError::InverseOfZero);
         }
-        return Ok((Value::scalar(1.0 / m[0]), None));
+        return Ok((Value::scalar(1.0 / d), None));
     }
     let (inv, rcond) = num_inverse(k, m)?;
     Ok((out(k, inv), rcond))
