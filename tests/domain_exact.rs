@@ -31,6 +31,11 @@ fn roots_and_inverse_sines_decide_by_the_exact_form() {
     assert!(close(value(src), 3f64.powf(0.25)), "{}", value(src));
     let (_, err) = outputs(src);
     assert!(err.is_empty(), "{err}");
+    // the case found: 5^(1/4), the float of the argument being −16.1
+    let src = "sqrt(sqrt(5) + cos(3*pi/2)/1e-17)";
+    assert!(close(value(src), 5f64.powf(0.25)), "{}", value(src));
+    let e = error("sqrt(-sqrt(5) + cos(pi/2)/1e-17)");
+    assert!(e.contains("sqrt(-2.23606797749979)"), "{e}");
     // the float of the argument is +3.9: not real all the same
     let e = error("sqrt(-sqrt(3) + cos(pi/2)/1e-17)");
     assert!(e.contains("not real"), "{e}");

@@ -143,8 +143,8 @@ fn one(m: Mat) -> Option<Expr> {
     (m.rows == 1 && m.cols == 1).then(|| m.data.into_iter().next())?
 }
 
-/// The float of an exact number (coefficients in ℚ(√2, √3) times powers
-/// of π) and the sum of its terms' sizes; None when it has a symbol, a
+/// The float of an exact number (sums of square roots times powers of
+/// π) and the sum of its terms' sizes; None when it has a symbol, a
 /// float coefficient or is not real. The float is within a few units in
 /// the last place of the sum of sizes.
 fn float_and_scale(e: &Expr) -> Option<(f64, f64)> {
@@ -168,11 +168,10 @@ fn float_and_scale(e: &Expr) -> Option<(f64, f64)> {
     Some((e.as_f64()?, scale))
 }
 
-/// The sum of the sizes of the terms of a coefficient a + b√2 + c√3 + d√6.
+/// The sum of the sizes of the terms of a coefficient a + Σ cₖ√k.
 fn surd_size(s: &crate::sym::coef::Surd) -> f64 {
-    s.0.iter()
-        .zip(crate::sym::coef::ROOTS)
-        .map(|(r, k)| r.to_f64().abs() * (k as f64).sqrt())
+    s.terms()
+        .map(|(k, r)| r.to_f64().abs() * (k as f64).sqrt())
         .sum()
 }
 
