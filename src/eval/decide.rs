@@ -174,7 +174,10 @@ pub fn agreement(a: &Value, b: &Value) -> Option<u32> {
 }
 
 /// True when `a == b` is false by rounding only: the sides are floats (one
-/// at least has no exact form) within 1e-12 relative, so `≈` is meant.
+/// at least has no exact form) within 1e-12 of the larger side (of its
+/// largest entry for a matrix), so `≈` is meant. Relative to the sides
+/// themselves, not to 1: `exp(-40) == exp(-41)` differ by far more than
+/// rounding, though by less than 1e-12.
 pub fn rounding_only(a: &Value, b: &Value) -> bool {
     match (a, b) {
         (Value::Num { m: x, .. }, Value::Num { m: y, .. }) => {
@@ -183,7 +186,7 @@ pub fn rounding_only(a: &Value, b: &Value) -> bool {
                     && b.may_be_exact()
                     && a.exact_form().is_some()
                     && b.exact_form().is_some())
-                && within(x, y, 1e-12)
+                && within_sides(x, y, ROUNDING_TOL)
         }
         (Value::Formula { .. }, _) | (_, Value::Formula { .. }) => {
             super::formula::rounding_only(a, b)
@@ -198,20 +201,31 @@ pub fn rounding_only(a: &Value, b: &Value) -> bool {
     }
 }
 
+/// How far apart floats may be, relative to the larger side, for a
+/// false `==` to say they differ by rounding only.
+const ROUNDING_TOL: f64 = 1e-12;
+
 /// Entrywise within [`APPROX_TOL`] relative to the larger side (absolute
 /// near zero); infinite entries must agree exactly, NaN never does.
 fn approx(x: &Num, y: &Num) -> bool {
-    within(x, y, APPROX_TOL)
+    within(x, y, APPROX_TOL, 1.0)
 }
 
-/// Entrywise within `tol` relative to the larger side (absolute near
-/// zero); infinite entries must agree exactly, NaN never does.
-fn within(x: &Num, y: &Num, tol: f64) -> bool {
+/// Entrywise within `tol` of the larger side's largest entry, however
+/// small it is (no absolute floor).
+fn within_sides(x: &Num, y: &Num, tol: f64) -> bool {
+    within(x, y, tol, 0.0)
+}
+
+/// Entrywise within `tol` times the largest entry of either side (at
+/// least `floor`: with 1, absolute near zero); infinite entries must
+/// agree exactly, NaN never does.
+fn within(x: &Num, y: &Num, tol: f64, floor: f64) -> bool {
     let scale = x
         .iter()
         .chain(y.iter())
         .filter(|v| v.is_finite())
-        .fold(1.0f64, |s, v| s.max(v.abs()));
+        .fold(floor, |s, v| s.max(v.abs()));
     x.iter().zip(y.iter()).all(|(a, b)| {
         if a.is_finite() && b.is_finite() {
             (a - b).abs() <= tol * scale

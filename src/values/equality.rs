@@ -156,8 +156,14 @@ fn exact_difference<'a>(p: &'a Expr, q: &'a Expr) -> Vec<&'a Mono> {
 }
 
 /// The largest coefficient of either side (at least 1): the scale of
-/// rounding and of `≈`.
+/// `≈`.
 fn scale(p: &Expr, q: &Expr) -> f64 {
+    largest(p, q).max(1.0)
+}
+
+/// The largest coefficient of either side, however small: the scale of
+/// rounding (`exp(-40) t == exp(-41) t` differ by more than rounding).
+fn largest(p: &Expr, q: &Expr) -> f64 {
     [p, q]
         .iter()
         .flat_map(|e| e.terms.values())
@@ -165,7 +171,7 @@ fn scale(p: &Expr, q: &Expr) -> f64 {
             let (re, im) = c.to_c64();
             re.abs().max(im.abs())
         })
-        .fold(1.0f64, f64::max)
+        .fold(0.0f64, f64::max)
 }
 
 /// The monomials where `p` and `q` differ by more than 1e-9 of the
@@ -184,7 +190,8 @@ fn approx_difference<'a>(p: &'a Expr, q: &'a Expr) -> Vec<&'a Mono> {
 
 /// True when `a == b` is false only by rounding: every coefficient that
 /// differs is a float on one side at least, within 1e-12 of itself (or
-/// below 1e-15 of the largest coefficient: noise), and no kept call
+/// below 1e-15 of the largest coefficient: noise; of the largest however
+/// small, not of 1), and no kept call
 /// differs (the answer then points to `≈`).
 pub fn rounding_only(a: &Value, b: &Value) -> bool {
     let Ok((x, y)) = sides(a, b) else {
@@ -192,7 +199,7 @@ pub fn rounding_only(a: &Value, b: &Value) -> bool {
     };
     let mut any = false;
     for (p, q) in x.data.iter().zip(&y.data) {
-        let tol = 1e-12 * scale(p, q);
+        let tol = 1e-12 * largest(p, q);
         for (m, c, d) in pairs(p, q) {
             let differs = if c.is_exact() && d.is_exact() {
                 c != d
