@@ -131,3 +131,25 @@ fn json_says_which() {
     assert!(e["message"].as_str().unwrap().contains("agree to"), "{e}");
     assert!(e["help"].as_str().unwrap().contains("≈"), "{e}");
 }
+
+/// Over symbols: a side made from a number with no exact form may print
+/// as the other (cos(1e-9) cos(t) prints cos(t)); with numbers for the
+/// symbols the difference is certain, so `==` is false, with a note.
+#[test]
+fn symbolic_sides_rounding_alike_are_checked_at_a_point() {
+    for src in [
+        "given t : scalar\ncos(1e-9)*cos(t) == cos(t)",
+        "given t : scalar\nRotz(1e-9)*Rotz(t) == Rotz(t)",
+    ] {
+        assert_eq!(last(src), serde_json::json!(false), "{src}");
+    }
+    let (_, err) = common::outputs("given t : scalar\ncos(1e-9)*cos(t) == cos(t)");
+    assert!(err.contains("different functions"), "{err}");
+    // identities stay true
+    for src in [
+        "given t : scalar\ncos(t)^2 + sin(t)^2 == 1",
+        "given t : scalar\nRotz(1)*Rotz(t) == Rotz(1)*Rotz(t)",
+    ] {
+        assert_eq!(last(src), serde_json::json!(true), "{src}");
+    }
+}

@@ -203,6 +203,24 @@ impl Interp<'_> {
                     }
                     Some(false)
                 }
+                // (a `true` over symbols that a number with no exact form
+                // may owe to rounding is checked at a point: `super::witness`)
+                Ok(Some(true)) if op == CmpOp::Eq => {
+                    match super::witness::witnessed_different(a, b) {
+                        Some(d) => {
+                            self.warnings.push(Diagnostic::note(
+                            ErrorKind::Domain,
+                            op_span,
+                            format!(
+                                "the two sides print alike but are different functions: with numbers for their symbols they differ by {}",
+                                format!("{:.1e}", d.abs()).replace(".0e", "e")
+                            ),
+                        ));
+                            Some(false)
+                        }
+                        None => Some(true),
+                    }
+                }
                 Ok(Some(v)) => Some(v),
                 Ok(None) => {
                     undecided = true;

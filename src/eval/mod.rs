@@ -31,5 +31,6 @@ mod substitute;
 mod symbols;
 mod user_fn;
 mod warned;
+mod witness;
 
 pub use crate::values::{convert, formula, ops, symbolic, value};
