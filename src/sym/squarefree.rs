@@ -22,8 +22,12 @@ const TRIAL: u128 = 1 << 12;
 /// exact (ψ₁₃ > 3.3·10²⁴).
 const MR_EXACT: u128 = 3_317_044_064_679_887_385_961_981;
 
-/// Steps of Pollard's rho tried on one cofactor before giving up.
-const RHO_STEPS: u32 = 1 << 16;
+/// Steps of Pollard's rho tried on one cofactor before giving up: enough
+/// for any cofactor below 2⁶⁴ (its least prime is below 2³², found in
+/// about 2¹⁶ steps), fewer above, where a step is dearer.
+fn rho_steps(m: u128) -> u32 {
+    if m < 1 << 64 { 1 << 20 } else { 1 << 16 }
+}
 
 /// n = s²·k with k square-free, as (s, k); None when the primes of n
 /// cannot be found for sure (see the module's comment). n = 0 gives (0, 1).
@@ -173,7 +177,7 @@ fn is_prime(m: u128) -> Option<bool> {
 }
 
 /// A proper factor of the composite m (Pollard's rho, Brent's cycle
-/// search), None past [`RHO_STEPS`] steps for each of a few constants.
+/// search), None past [`rho_steps`] steps for each of a few constants.
 fn rho(m: u128) -> Option<u128> {
     let gcd = |mut a: u128, mut b: u128| {
         while b != 0 {
@@ -196,7 +200,7 @@ fn rho(m: u128) -> Option<u128> {
             lam += 1;
             steps += 1;
             let g = gcd(x.abs_diff(y), m);
-            if g == m || steps > RHO_STEPS {
+            if g == m || steps > rho_steps(m) {
                 break;
             }
             if g > 1 {

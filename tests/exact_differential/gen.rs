@@ -2,13 +2,13 @@
 //! each: integers, decimals as typed, fractions, π, degrees, square roots
 //! (nested, in products), large integers and tiny decimals, powers,
 //! sin/cos/tan of rational multiples of π, and floats with no exact form
-//! (sin 1, √5) — and pairs of them equal by an identity, differing by a
+//! (sin 1, √(1 + √2)) — and pairs of them equal by an identity, differing by a
 //! tiny exact amount, or unrelated.
 
 use super::hp::H;
 use num_bigint::BigInt;
 use num_rational::BigRational;
-use num_traits::{One, Signed, ToPrimitive, Zero};
+use num_traits::{One, Signed, Zero};
 use proptest::prelude::*;
 
 /// The π content of an exact value, as far as the model follows it: none,
@@ -28,7 +28,7 @@ pub struct V {
     /// A bound on the rounding error of the engine's float of it.
     pub err: f64,
     /// True when the language keeps it exact (§7): integers, decimals,
-    /// fractions, π, roots in ℚ(√2, √3), the 15° family of sin/cos/tan,
+    /// fractions, π, square roots of rationals, the 15° family of sin/cos/tan,
     /// and arithmetic on them (a quotient only by a number free of π or a
     /// power of π).
     pub exact: bool,
@@ -89,7 +89,7 @@ pub enum E {
     Deg(i64),
     /// sin (0), cos (1), tan (2) of p/q π, or of p·15 deg (`deg` true).
     Trig(u8, i64, i64, bool),
-    /// sin(1), cos(2), sqrt(5), sqrt(7): no exact form.
+    /// sin(1), cos(2), sqrt(1 + sqrt(2)), sqrt(sqrt(7)): no exact form.
     Float(u8),
     /// sqrt(n/d).
     Root(i64, i64),
@@ -139,7 +139,13 @@ impl E {
                     format!("{name}({p}*pi/{q})")
                 }
             }
-            E::Float(i) => ["sin(1)", "cos(2)", "sqrt(5)", "sqrt(7)"][*i as usize % 4].into(),
+            E::Float(i) => [
+                "sin(1)",
+                "cos(2)",
+                "sqrt(1 + sqrt(2))",
+                "sqrt(sqrt(7))",
+            ][*i as usize % 4]
+                .into(),
             E::Root(n, d) => format!("sqrt({n}/{d})"),
             E::Neg(a) => format!("(-{})", a.src()),
             E::Add(a, b) => format!("({} + {})", a.src(), b.src()),
@@ -227,8 +233,8 @@ impl E {
                 let h = match i % 4 {
                     0 => H::int(1).sin_cos().0,
                     1 => H::int(2).sin_cos().1,
-                    2 => H::int(5).sqrt()?,
-                    _ => H::int(7).sqrt()?,
+                    2 => H::int(1).add(&H::int(2).sqrt()?).sqrt()?,
+                    _ => H::int(7).sqrt()?.sqrt()?,
                 };
                 V::float(h)
             }
@@ -402,7 +408,9 @@ fn div(a: &V, b: &V) -> Option<V> {
     })
 }
 
-/// √a; exact when a is a rational s²·k/q² with k in 1, 2, 3, 6.
+/// √a; exact when a is a rational (LANGUAGE.md §7: the square root of
+/// any exact rational is exact; the engine finds the square-free part of
+/// numerators and denominators below 2⁶⁰ always).
 fn sqrt(a: &V) -> Option<V> {
     if a.h.signum() < 0 {
         return None;
@@ -415,22 +423,10 @@ fn sqrt(a: &V) -> Option<V> {
         a.err.sqrt()
     };
     let in_field = a.exact
-        && a.rat.as_ref().is_some_and(|r| {
-            // p·q = s²·k with k in 1, 2, 3, 6, small enough for the engine
-            let n = r.numer() * r.denom();
-            n.bits() < 60
-                && n.to_u64().is_some_and(|n| {
-                    let mut k = n;
-                    let mut f = 2u64;
-                    while f * f <= k {
-                        while k % (f * f) == 0 {
-                            k /= f * f;
-                        }
-                        f += 1;
-                    }
-                    matches!(k, 0 | 1 | 2 | 3 | 6)
-                })
-        });
+        && a
+            .rat
+            .as_ref()
+            .is_some_and(|r| r.numer().bits() < 60 && r.denom().bits() < 60);
     let rat = a.rat.as_ref().and_then(|r| {
         let (p, q) = (r.numer().sqrt(), r.denom().sqrt());
         (&p * &p == *r.numer() && &q * &q == *r.denom() && !r.is_negative())
