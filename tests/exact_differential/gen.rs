@@ -139,13 +139,9 @@ impl E {
                     format!("{name}({p}*pi/{q})")
                 }
             }
-            E::Float(i) => [
-                "sin(1)",
-                "cos(2)",
-                "sqrt(1 + sqrt(2))",
-                "sqrt(sqrt(7))",
-            ][*i as usize % 4]
-                .into(),
+            E::Float(i) => {
+                ["sin(1)", "cos(2)", "sqrt(1 + sqrt(2))", "sqrt(sqrt(7))"][*i as usize % 4].into()
+            }
             E::Root(n, d) => format!("sqrt({n}/{d})"),
             E::Neg(a) => format!("(-{})", a.src()),
             E::Add(a, b) => format!("({} + {})", a.src(), b.src()),
@@ -423,8 +419,7 @@ fn sqrt(a: &V) -> Option<V> {
         a.err.sqrt()
     };
     let in_field = a.exact
-        && a
-            .rat
+        && a.rat
             .as_ref()
             .is_some_and(|r| r.numer().bits() < 60 && r.denom().bits() < 60);
     let rat = a.rat.as_ref().and_then(|r| {
