@@ -140,6 +140,8 @@ fn symbolic_sides_rounding_alike_are_checked_at_a_point() {
     for src in [
         "given t : scalar\ncos(1e-9)*cos(t) == cos(t)",
         "given t : scalar\nRotz(1e-9)*Rotz(t) == Rotz(t)",
+        "given t : scalar\ncos(1e-9)*t == t",
+        "given t : scalar\nt == cos(1e-9)*t",
     ] {
         assert_eq!(last(src), serde_json::json!(false), "{src}");
     }
@@ -149,6 +151,8 @@ fn symbolic_sides_rounding_alike_are_checked_at_a_point() {
     for src in [
         "given t : scalar\ncos(t)^2 + sin(t)^2 == 1",
         "given t : scalar\nRotz(1)*Rotz(t) == Rotz(1)*Rotz(t)",
+        "given t : scalar\n(sin(1)^2 + cos(1)^2)*t == t",
+        "given t : scalar\nsin(1)*t == sin(1)*t",
     ] {
         assert_eq!(last(src), serde_json::json!(true), "{src}");
     }

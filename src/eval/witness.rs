@@ -31,7 +31,9 @@ pub(super) fn witnessed_different(a: &Value, b: &Value) -> Option<f64> {
     for v in [a, b] {
         match v {
             Value::Formula { how: Some(r), .. } => crate::values::recipe::symbols(r, &mut names),
-            Value::Formula { how: None, .. } => return None,
+            Value::Formula { how: None, m, .. } => {
+                m.data.iter().for_each(|e| e.symbols(&mut names))
+            }
             _ => {}
         }
     }
@@ -48,6 +50,9 @@ pub(super) fn witnessed_different(a: &Value, b: &Value) -> Option<f64> {
         Value::Formula { how: Some(r), .. } => super::replay::numbers(r, &at, &mut Vec::new())
             .ok()
             .flatten(),
+        // (a formula made by no replayable step, a `given` name: its
+        // canonical form at the numbers, exact as typed first)
+        Value::Formula { how: None, kind, m } => super::replay::canonical(kind, m, &at),
         v => Some(v.clone()),
     };
     let (x, y) = (numbers(a)?, numbers(b)?);
