@@ -133,3 +133,16 @@ fn atan2_reads_the_sign_of_an_exact_zero() {
     assert_eq!(value("atan2(sin(-pi), -sqrt(2))"), pi);
     assert!(close(value("atan2(-1, -1)"), -3.0 * pi / 4.0));
 }
+
+/// The float computed from an exact form is the float nearest it, also
+/// where its terms cancel: 1/(a²) of a = √(4056/5) + √(5046/6) is
+/// (p − q√k)/r with large p, q, and (π − 3.6)⁴ expanded cancels nine
+/// digits; the floats of those forms were 2e-13 and 2e-12 off (found by
+/// `tests/exact_differential.rs` in release, seeds 5067705 and 5098294).
+#[test]
+fn values_from_exact_forms_are_the_nearest_floats() {
+    let x = value("(-1) / ((sqrt(4056/5) + sqrt(5046/6))^(-2))");
+    assert!((x + 3_304.131_233_435_581).abs() <= 4e-12, "{x}");
+    let y = value("(1e-18 + (pi - 18/5)^4)^2");
+    assert!((y - 0.001_949_900_954_856_011_1).abs() <= 1e-18, "{y}");
+}
