@@ -586,3 +586,17 @@ fn ranges_wait_for_numbers() {
         "{e}"
     );
 }
+
+/// `len` of a vector over symbols is its count, known with no numbers
+/// (as typed first): `given v : vec3; len(v)` was "len needs numbers".
+#[test]
+fn len_of_a_symbolic_vector_is_its_count() {
+    for (src, n) in [
+        ("given v : vec3\nlen(v)", 3.0),
+        ("given a : scalar\nlen((1, 2, a))", 3.0),
+        ("given V : twist\nlen(V)", 6.0),
+        ("given a : scalar\nlen(Rotz(a) * (1, 0, 0))", 3.0),
+    ] {
+        assert_eq!(ans(src).as_scalar(), Some(n), "{src}");
+    }
+}

@@ -397,4 +397,78 @@ fn a_literal_in_parentheses_is_the_literal() {
     assert_eq!(out.lines().last(), Some("true"), "{out}");
     let out = exact_printed("given t\n(pi)*t\n(2.5)*t");
     assert_eq!(out, "π t\n(5/2) t\n");
+/// `rot_quat` of a symbolic quaternion is the rotation of q/‖q‖, as the
+/// numeric `rot_quat` normalizes: `rot_quat((a, 1, -2, -1))` printed
+/// `[1 - 2(4 + 1), …]` = `[-9, …]` (q taken as a unit quaternion), a
+/// matrix labelled SO(3) that is none, and `subs(R, a, 1)` gave it. Found
+/// by the matrix differential test (seeds 20, 225, 452 in release). At
+/// a = 1, q = (1, 1, −2, −1)/√7 and R₁₁ = 1 − 2·5/7 = −3/7.
+#[test]
+fn rot_quat_of_a_symbolic_quaternion_is_normalized() {
+    let q = [1.0f64, 1.0, -2.0, -1.0];
+    let n2: f64 = q.iter().map(|x| x * x).sum();
+    let (w, v) = (q[0], [q[1], q[2], q[3]]);
+    // R = I + 2(w[v] + [v]²)/‖q‖²
+    let hat = [[0.0, -v[2], v[1]], [v[2], 0.0, -v[0]], [-v[1], v[0], 0.0]];
+    let mut want = Vec::new();
+    for i in 0..3 {
+        for j in 0..3 {
+            let sq: f64 = (0..3).map(|k| hat[i][k] * hat[k][j]).sum();
+            let id = if i == j { 1.0 } else { 0.0 };
+            want.push(id + 2.0 * (w * hat[i][j] + sq) / n2);
+        }
+    }
+    close(
+        "given a\nR = rot_quat((a, 1, -2, -1))\nsubs(R, a, 1)",
+        &want,
+        1e-15,
+    );
+    close(
+        "given a\nR = rot_quat((a, 1, -2, -1))\na = 1\nR",
+        &want,
+        1e-15,
+    );
+    let out = common::printed("given a\nrot_quat((a, 1, -2, -1))");
+    assert!(!out.contains("-9"), "{out}");
+}
+
+/// `expand` or `simplify` of a bool kept over symbols
+/// (`TestIfSO3(Rotx(a))` is a kept call) is that bool once the symbols
+/// have numbers, as typed first: it stayed the call `expand(true)`.
+/// Found by the matrix differential test (seeds 83, 315).
+#[test]
+fn a_kept_call_of_a_bool_is_computed_with_its_numbers() {
+    let out = common::printed("given a\nx = expand(TestIfSO3(Rotx(a)))\na = 0.3\nx");
+    assert_eq!(out.lines().last(), Some("true"), "{out}");
+    let out = common::printed("given a\nx = simplify(TestIfSO3(Rotx(a)))\na = 0.3\nx");
+    assert_eq!(out.lines().last(), Some("true"), "{out}");
+}
+
+/// `subs`, `simplify` and `expand` of a tuple over symbols (`TransToRp(T)`)
+/// act on each part: `subs(TransToRp(RpToTrans(Rotx(b), p)), b, 0.5)` was
+/// kept as a call, never numbers, even with every symbol bound. Found by
+/// the matrix differential test (seed 47).
+#[test]
+fn subs_of_a_tuple_acts_on_each_part() {
+    let c = 0.5f64.cos();
+    let s = 0.5f64.sin();
+    let want = [1.0, 0.0, 0.0, 0.0, c, -s, 0.0, s, c];
+    let src = "given b\nz = subs(TransToRp(RpToTrans(Rotx(b), (1, 2, 3))), b, 0.5)\nz";
+    let out = common::printed(src);
+    assert!(!out.contains("subs"), "{out}");
+    let (r, p) = (
+        last_numbers(&format!("{src}\n(R, p) = z\nR")),
+        last_numbers(&format!("{src}\n(R, p) = z\np")),
+    );
+    for (g, w) in r.iter().zip(&want) {
+        assert!((g - w).abs() < 1e-15, "{r:?}");
+    }
+    assert_eq!(p, vec![1.0, 2.0, 3.0]);
+    // bound later, with another symbol left for subs to leave alone
+    let src = "given a, b\nz = subs(TransToRp(RpToTrans(Rotz(a) * Rotx(b), (1, 2, 3))), b, 0.5)\n\
+               a = 0\n(R, p) = z\nR";
+    let r = last_numbers(src);
+    for (g, w) in r.iter().zip(&want) {
+        assert!((g - w).abs() < 1e-15, "{r:?}");
+    }
 }

@@ -912,17 +912,26 @@ fn equality_is_never_wrongly_true_and_sees_identities() {
     );
 }
 
-/// The differential test over vectors and matrices ([`matrix`]):
-/// `CHASLES_DIFF_CASES` × 0.15 cases (300 by default, about 30 s of CPU
-/// in a debug build), reproducible by seed ([`cases`]).
+/// The differential test over vectors, matrices and the Lie builtins
+/// ([`matrix`]), for release runs: `CHASLES_DIFF_CASES` × 0.15 cases
+/// (3,000 by default), reproducible by seed ([`cases`]):
+/// `cargo test --release --test sym_differential -- --ignored random_matrices`.
 #[test]
+#[ignore = "thousands of cases: run in release"]
 fn random_matrices_agree_with_numbers() {
     cases::run(
         "matrices",
-        cases::count(300, 0.15),
+        cases::count(3000, 0.15),
         matrix::case(),
         matrix::check,
     );
+}
+
+/// The same generator in CI (debug): 100 cases from the seeds 0..100 (or
+/// `CHASLES_DIFF_SEED` on), about 15 s of CPU.
+#[test]
+fn random_matrices_agree_with_numbers_in_ci() {
+    cases::run("matrices (CI)", 100, matrix::case(), matrix::check);
 }
 
 /// The differential test: `CHASLES_DIFF_CASES` cases (2,000 by default),

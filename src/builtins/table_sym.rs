@@ -58,9 +58,23 @@ fn rot_chain(axes: [usize; 3], angles: [&Expr; 3]) -> Option<Mat> {
     r.mul(&sm::rot_axis(axes[2], angles[2]))
 }
 
-/// The rotation of a unit quaternion (w, x, y, z) (Appendix B).
-fn rot_quat(q: &[Expr]) -> Mat {
-    let two = Expr::int(2);
+/// The most terms of ‖q‖² that `rot_quat` of a symbolic q divides by.
+const MAX_QUAT_NORM: usize = 24;
+
+/// The rotation of a quaternion (w, x, y, z), normalized first as the
+/// numeric `rot_quat` does (Appendix B): R = I + 2(w[v] + [v]²)/‖q‖².
+/// None when ‖q‖² has no reciprocal (zero).
+fn rot_quat(q: &[Expr]) -> Option<Mat> {
+    let norm2 = q.iter().fold(Expr::zero(), |acc, x| acc.add(&x.mul(x)));
+    // (a unit quaternion as typed needs no quotient; a quotient by a long
+    // sum is kept as the call, computed once its symbols have numbers)
+    let two = if norm2 == Expr::one() {
+        Expr::int(2)
+    } else if norm2.size() > MAX_QUAT_NORM {
+        return None;
+    } else {
+        norm2.recip()?.mul(&Expr::int(2))
+    };
     let p = |i: usize, j: usize| q[i].mul(&q[j]).mul(&two);
     let one = Expr::one();
     let rows = vec![
@@ -80,7 +94,7 @@ fn rot_quat(q: &[Expr]) -> Mat {
             one.sub(&p(1, 1)).sub(&p(2, 2)),
         ],
     ];
-    Mat::from_rows(rows).unwrap_or_else(|| Mat::zeros(3, 3))
+    Mat::from_rows(rows)
 }
 
 /// The unit quaternion (w, x, y, z) of R, w = √(1 + tr R)/2 ≥ 0 (Appendix B).
@@ -203,7 +217,7 @@ pub fn eval_symbolic(name: &str, vals: &[Value], kind: &Kind) -> Out {
             &Kind::SO3,
             rot_chain([2, 1, 0], [&s(2)?, &s(1)?, &s(0)?])?,
         )),
-        ("rot_quat", 1) if shape(0) == (4, 1) => ok(make(&Kind::SO3, rot_quat(&ms[0].data))),
+        ("rot_quat", 1) if shape(0) == (4, 1) => ok(make(&Kind::SO3, rot_quat(&ms[0].data)?)),
         ("quat_mul", 2) if shape(0) == (4, 1) && shape(1) == (4, 1) => {
             let (a, b) = (&ms[0].data, &ms[1].data);
             let w = a[0].mul(&b[0]).sub(&dot(&a[1..], &b[1..]));

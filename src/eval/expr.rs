@@ -515,6 +515,13 @@ impl Interp<'_> {
         {
             return Ok(Typed::new(ty, Some(v)));
         }
+        if let Some(v) = super::list::symbolic_len(b, &self.env.arg_tys[base..], &vals) {
+            return Ok(Typed::new(ty, Some(v)));
+        }
+        if let Some(v) = super::tuple_call::each_part(op, b.name, &vals, &mut self.warnings) {
+            let val = Some(v.map_err(|m| op.failure(m, span))?);
+            return Ok(Typed::new(ty, val));
+        }
         super::list::numbers_only(b, &vals, span)?;
         if vals
             .iter()

@@ -133,6 +133,28 @@ pub fn elementwise_help(k: &Kind) -> Option<String> {
     }
 }
 
+/// `len(v)` of a vector over symbols (`given v : vec3`, `(1, 2, a)`): its
+/// count, which needs no numbers — the kind checked gives it, as the
+/// numbers typed first would. None for anything else.
+pub(super) fn symbolic_len(
+    b: &crate::builtins::Builtin,
+    tys: &[crate::check::ty::Ty],
+    vals: &[Value],
+) -> Option<Value> {
+    let ([ty], [v]) = (tys, vals) else {
+        return None;
+    };
+    if b.name != "len" || !crate::values::recipe::holds_symbols(v) {
+        return None;
+    }
+    let n = match ty.kind {
+        Kind::Vector(Some(n)) => n,
+        Kind::Twist | Kind::Screw | Kind::Wrench => 6,
+        _ => return None,
+    };
+    Some(Value::scalar(n as f64))
+}
+
 /// The picture and list builtins take numbers only: a symbol is a domain
 /// error (there is nothing to draw until the `given` names have numbers).
 /// A picture does not wait for numbers as a range does

@@ -29,6 +29,7 @@ mod shapes;
 mod slice;
 mod substitute;
 mod symbols;
+mod tuple_call;
 mod user_fn;
 mod warned;
 mod witness;

@@ -241,10 +241,11 @@ impl Resolving<'_, '_> {
 }
 
 /// The numbers of a constant operand (a tuple of numbers too: a
-/// builtin's result, whose parts are read by index).
+/// builtin's result, whose parts are read by index; a bool, what
+/// `TestIfSO3` gives).
 fn num(s: &Sym) -> Option<&Value> {
     let numbers = |v: &Value| match v {
-        Value::Num { .. } => true,
+        Value::Num { .. } | Value::Bool(_) => true,
         Value::Tuple(vs) => vs.iter().all(|x| matches!(x, Value::Num { .. })),
         _ => false,
     };

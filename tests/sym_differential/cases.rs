@@ -5,7 +5,9 @@
 //! shrinking finds. `CHASLES_DIFF_CASES` sets how many cases run (more on
 //! demand); `CHASLES_DIFF_SEED=random` starts at a random seed (printed),
 //! and `CHASLES_DIFF_SEED=S CHASLES_DIFF_CASES=1` reruns case S alone;
-//! `CHASLES_DIFF_TIMES` prints each case's time.
+//! `CHASLES_DIFF_TIMES` prints each case's time; `CHASLES_DIFF_ALL` runs
+//! on past a failure (printed with its seed, not shrunk) and fails at the
+//! end with the count.
 
 use proptest::strategy::{Strategy, ValueTree};
 use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
@@ -74,6 +76,8 @@ pub fn run<S: Strategy>(
         eprintln!("{name}: seeds {first}..{}", first + cases);
     }
     let (mut slowest, mut total) = ((0, 0.0f64), 0.0);
+    let all = std::env::var_os("CHASLES_DIFF_ALL").is_some();
+    let mut failed = Vec::new();
     for seed in first..first + cases {
         let mut r = runner(seed);
         let Ok(mut tree) = strategy.new_tree(&mut r) else {
@@ -92,6 +96,11 @@ pub fn run<S: Strategy>(
         let Err(found) = result else {
             continue;
         };
+        if all {
+            eprintln!("{name}: case with seed {seed} failed\n{found}\n");
+            failed.push(seed);
+            continue;
+        }
         // shrink: the simplest value that still fails
         let mut smallest = found.clone();
         let mut steps = 0;
@@ -122,5 +131,10 @@ pub fn run<S: Strategy>(
     eprintln!(
         "{name}: {cases} cases in {total:.1} s; the slowest, seed {}, {:.2} s",
         slowest.0, slowest.1
+    );
+    assert!(
+        failed.is_empty(),
+        "{name}: {} cases failed, seeds {failed:?}",
+        failed.len()
     );
 }

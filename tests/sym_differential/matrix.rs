@@ -10,7 +10,10 @@
 //! their rounding bounds, as [`super::T::dual`] gives for scalars).
 
 use super::{At, By, Point, QS, SYMS, T, b, bindings, dec, dec_src, session};
+#[path = "lie.rs"]
+mod lie;
 use chasles::eval::value::Value;
+use lie::{G, L};
 use proptest::prelude::*;
 
 /// A scalar of the reference: value, derivative, and rounding bounds of
@@ -222,6 +225,8 @@ pub enum M {
     Scale(T, Box<M>),
     /// `Ad(T)`: 6×6.
     Ad(Box<M>),
+    /// The other builtins' matrices ([`lie`]).
+    G(Box<G>),
 }
 
 /// What the test computes: a matrix, a vector, or a scalar of them.
@@ -235,6 +240,8 @@ pub enum Out {
     /// The (i, j) entry (1-based, within 3×3).
     Entry(M, u8, u8),
     Trace(M),
+    /// Maps out of the groups, tuples, scalars and bools ([`lie`]).
+    Lie(L),
 }
 
 /// What is done to it.
@@ -263,6 +270,7 @@ impl M {
             M::ExpS(..) | M::Rp(..) => 4,
             M::Mul(x, _) | M::Tr(x, _) | M::Inv(x) | M::Scale(_, x) => x.size(),
             M::Ad(_) => 6,
+            M::G(g) => g.size(),
         }
     }
 
@@ -291,6 +299,7 @@ impl M {
             M::Inv(x) => format!("inv({})", x.source()),
             M::Scale(s, x) => format!("({} * {})", s.source(), x.source()),
             M::Ad(x) => format!("Ad({})", x.source()),
+            M::G(g) => g.source(),
         }
     }
 
@@ -330,35 +339,10 @@ impl M {
             M::Rp(r, p) => Mx::rp(&r.eval(at, by), &vec_mx(*p)),
             M::Mul(x, y) => x.eval(at, by).mul(&y.eval(at, by)),
             M::Tr(x, _) => x.eval(at, by).t(),
-            M::Inv(x) => {
-                let m = x.eval(at, by);
-                if m.r == 3 {
-                    m.t()
-                } else {
-                    let rt = m.block(0, 0, 3, 3).t();
-                    let p = rt.mul(&m.block(0, 3, 3, 1)).scale(S::num(-1.0));
-                    Mx::rp(&rt, &p)
-                }
-            }
+            M::Inv(x) => lie::inv_group(&x.eval(at, by)),
+            M::G(g) => g.eval(at, by),
             M::Scale(t, x) => x.eval(at, by).scale(s(t)),
-            M::Ad(x) => {
-                let m = x.eval(at, by);
-                let rot = m.block(0, 0, 3, 3);
-                let pr = hat(&m.block(0, 3, 3, 1)).mul(&rot);
-                let z = S::num(0.0);
-                let mut out = Vec::new();
-                for i in 0..6 {
-                    for j in 0..6 {
-                        out.push(match (i < 3, j < 3) {
-                            (true, true) => rot.at(i, j),
-                            (true, false) => z,
-                            (false, true) => pr.at(i - 3, j),
-                            (false, false) => rot.at(i - 3, j - 3),
-                        });
-                    }
-                }
-                Mx { r: 6, c: 6, x: out }
-            }
+            M::Ad(x) => lie::adjoint(&x.eval(at, by)),
         }
     }
 
@@ -368,6 +352,7 @@ impl M {
             M::Rp(x, _) | M::Tr(x, _) | M::Inv(x) | M::Ad(x) => x.scalars(),
             M::Mul(x, y) => [x.scalars(), y.scalars()].concat(),
             M::Scale(t, x) => [vec![t], x.scalars()].concat(),
+            M::G(g) => g.scalars(),
         }
     }
 }
@@ -433,11 +418,14 @@ impl Out {
             ),
             Out::Entry(m, i, j) => format!("({})[{i}, {j}]", m.source()),
             Out::Trace(m) => format!("trace({})", m.source()),
+            Out::Lie(l) => l.source(),
         }
     }
 
-    fn eval(&self, at: &At, by: By) -> Mx {
-        match self {
+    /// The reference; None where it is not trustworthy.
+    fn eval(&self, at: &At, by: By) -> Option<Mx> {
+        Some(match self {
+            Out::Lie(l) => l.eval(at, by)?,
             Out::M(m) => m.eval(at, by),
             Out::Apply(m, v) => m.eval(at, by).mul(&padded(m.size(), *v).0),
             Out::Cross(x, y, v) => {
@@ -455,7 +443,12 @@ impl Out {
                 u.t().mul(&w)
             }
             Out::Entry(m, i, j) => {
-                let x = m.eval(at, by).at(*i as usize - 1, *j as usize - 1);
+                let x = m.eval(at, by);
+                if *i as usize > x.r || *j as usize > x.c {
+                    // (refused: the index is out of range)
+                    return None;
+                }
+                let x = x.at(*i as usize - 1, *j as usize - 1);
                 Mx {
                     r: 1,
                     c: 1,
@@ -474,13 +467,14 @@ impl Out {
                     x: vec![s],
                 }
             }
-        }
+        })
     }
 
     fn matrices(&self) -> Vec<&M> {
         match self {
             Out::M(m) | Out::Apply(m, _) | Out::Entry(m, ..) | Out::Trace(m) => vec![m],
             Out::Cross(x, y, _) | Out::Dot(x, y, _) => vec![x, y],
+            Out::Lie(l) => l.matrices(),
         }
     }
 }
@@ -520,15 +514,18 @@ fn scalar() -> impl Strategy<Value = T> {
 fn rotation() -> impl Strategy<Value = M> {
     let axis = prop::array::uniform3(-2..3i8).prop_filter("a nonzero axis", |w| *w != [0, 0, 0]);
     let leaf = prop_oneof![
-        3 => (0..3u8, scalar()).prop_map(|(k, s)| M::Rot(k, s)),
-        1 => (axis, scalar()).prop_map(|(w, s)| M::RotW(w, s)),
-        1 => (0..6usize, scalar()).prop_map(|(k, s)| M::ExpW(k, s)),
+        6 => (0..3u8, scalar()).prop_map(|(k, s)| M::Rot(k, s)),
+        2 => (axis, scalar()).prop_map(|(w, s)| M::RotW(w, s)),
+        2 => (0..6usize, scalar()).prop_map(|(k, s)| M::ExpW(k, s)),
+        3 => lie::more_rotations(scalar().boxed()),
     ];
     leaf.prop_recursive(2, 4, 2, |inner| {
         prop_oneof![
-            3 => (inner.clone(), inner.clone()).prop_map(|(x, y)| M::Mul(b(x), b(y))),
-            1 => (inner.clone(), any::<bool>()).prop_map(|(x, d)| M::Tr(b(x), d)),
-            1 => inner.prop_map(|x| M::Inv(b(x))),
+            6 => (inner.clone(), inner.clone()).prop_map(|(x, y)| M::Mul(b(x), b(y))),
+            2 => (inner.clone(), any::<bool>()).prop_map(|(x, d)| M::Tr(b(x), d)),
+            2 => inner.clone().prop_map(|x| M::Inv(b(x))),
+            1 => inner.clone().prop_map(|x| M::G(b(G::InvB(b(x))))),
+            1 => inner.prop_map(|x| M::G(b(G::Tag(b(x))))),
         ]
     })
 }
@@ -536,28 +533,43 @@ fn rotation() -> impl Strategy<Value = M> {
 fn transform() -> impl Strategy<Value = M> {
     let v = prop::array::uniform3(-2..3i8);
     let leaf = prop_oneof![
-        2 => (0..6usize, v.clone(), scalar()).prop_map(|(k, v, s)| M::ExpS(k, v, s)),
-        1 => (rotation(), v).prop_map(|(r, p)| M::Rp(b(r), p)),
+        4 => (0..6usize, v.clone(), scalar()).prop_map(|(k, v, s)| M::ExpS(k, v, s)),
+        2 => (rotation(), v).prop_map(|(r, p)| M::Rp(b(r), p)),
+        2 => lie::more_transforms(scalar().boxed()),
     ];
     leaf.prop_recursive(1, 3, 2, |inner| {
         prop_oneof![
-            2 => (inner.clone(), inner.clone()).prop_map(|(x, y)| M::Mul(b(x), b(y))),
-            1 => inner.prop_map(|x| M::Inv(b(x))),
+            4 => (inner.clone(), inner.clone()).prop_map(|(x, y)| M::Mul(b(x), b(y))),
+            2 => inner.clone().prop_map(|x| M::Inv(b(x))),
+            1 => inner.clone().prop_map(|x| M::G(b(G::InvB(b(x))))),
+            1 => (inner.clone(), inner).prop_map(|(x, y)| M::G(b(G::Disp(b(x), b(y))))),
         ]
     })
 }
 
 fn matrix() -> impl Strategy<Value = M> {
+    let c = (101..400i64, 2..3u32);
     prop_oneof![
-        4 => rotation(),
-        3 => transform(),
-        1 => transform().prop_map(|t| M::Ad(b(t))),
-        1 => (scalar(), prop_oneof![rotation(), transform()]).prop_map(|(s, m)| M::Scale(s, b(m))),
+        8 => rotation(),
+        6 => transform(),
+        2 => transform().prop_map(|t| M::Ad(b(t))),
+        2 => (scalar(), prop_oneof![rotation(), transform()]).prop_map(|(s, m)| M::Scale(s, b(m))),
+        2 => lie::general(scalar().boxed()),
+        1 => lie::planar(scalar().boxed()),
+        1 => (prop_oneof![rotation(), transform()], c).prop_map(|(m, c)| M::G(b(G::Proj(b(m), c)))),
+        1 => prop_oneof![rotation(), transform()].prop_map(|m| M::G(b(G::Deg(b(m))))),
     ]
 }
 
 fn out() -> impl Strategy<Value = Out> {
     let v = prop::array::uniform3(-2..3i8);
+    let lie = lie::outputs(
+        scalar().boxed(),
+        rotation().boxed(),
+        transform().boxed(),
+        lie::general(scalar().boxed()),
+        lie::planar(scalar().boxed()),
+    );
     prop_oneof![
         3 => matrix().prop_map(Out::M),
         2 => (matrix(), v.clone()).prop_map(|(m, v)| Out::Apply(m, v)),
@@ -565,6 +577,7 @@ fn out() -> impl Strategy<Value = Out> {
         1 => (rotation(), rotation(), v).prop_map(|(x, y, v)| Out::Dot(x, y, v)),
         1 => (matrix(), 1..4u8, 1..4u8).prop_map(|(m, i, j)| Out::Entry(m, i, j)),
         1 => matrix().prop_map(Out::Trace),
+        8 => lie.prop_map(Out::Lie),
     ]
 }
 
@@ -588,12 +601,21 @@ pub fn case() -> impl Strategy<Value = (Out, Wrap, Point)> {
     (out(), wrap(), super::point())
 }
 
-/// The numbers of a value, row by row.
+/// The numbers of a value, row by row; a tuple's parts one after the
+/// other as a column, a bool as 1 or 0.
 fn entries(v: &Value) -> Option<(usize, usize, Vec<f64>)> {
     match v {
         Value::Num { m, .. } => {
             let (r, c) = m.shape();
             Some((r, c, (0..r).flat_map(|i| m.row(i)).collect()))
+        }
+        Value::Bool(x) => Some((1, 1, vec![if *x { 1.0 } else { 0.0 }])),
+        Value::Tuple(parts) => {
+            let mut xs = Vec::new();
+            for p in parts {
+                xs.extend(entries(p)?.2);
+            }
+            Some((xs.len(), 1, xs))
         }
         _ => None,
     }
@@ -603,6 +625,12 @@ fn entries(v: &Value) -> Option<(usize, usize, Vec<f64>)> {
 /// written) against the reference, entry by entry within 64 ε times the
 /// largest entry's rounding bound (a derivative's by forward mode).
 pub fn check((o, w, p): &(Out, Wrap, Point)) -> Result<(), String> {
+    // (a derivative inside has no derivative in the reference)
+    let none = Wrap::None;
+    let w = match (o, w) {
+        (Out::Lie(l), Wrap::Diff(_)) if l.inner_diff() || l.is_bool() => &none,
+        _ => w,
+    };
     let mut at = p.at(p.t);
     let by = match w {
         Wrap::Diff(by) => *by,
@@ -611,7 +639,20 @@ pub fn check((o, w, p): &(Out, Wrap, Point)) -> Result<(), String> {
     if let Wrap::Subs(i, v) = w {
         at.syms[*i] = dec(*v, 2);
     }
-    let want = o.eval(&at, by);
+    let Some(mut want) = o.eval(&at, by) else {
+        return Ok(());
+    };
+    if let Out::Lie(l) = o
+        && want.c > 1
+        && !matches!(l, L::Log3(..) | L::Log6(..) | L::Log2(..) | L::AdOf(..))
+    {
+        // (a tuple's parts are compared as one column)
+        want = Mx {
+            r: want.r * want.c,
+            c: 1,
+            x: want.x,
+        };
+    }
     let diffed = matches!(w, Wrap::Diff(_));
     let reference: Vec<(f64, f64)> = want
         .x
@@ -691,7 +732,9 @@ pub fn check((o, w, p): &(Out, Wrap, Point)) -> Result<(), String> {
         .and_then(|b| b.val.clone())
         .ok_or_else(|| format!("no value\n{later}"))?;
     compare(&y, "bound later", &later)?;
-    if matches!(w, Wrap::None | Wrap::Simplify | Wrap::Expand) {
+    // (typed first, `diff(X, t)` inside is of numbers: no derivative)
+    let inner_diff = matches!(o, Out::Lie(l) if l.inner_diff());
+    if matches!(w, Wrap::None | Wrap::Simplify | Wrap::Expand) && !inner_diff {
         let first = format!("{}x = {src}\n", bindings(&p.at(p.t)));
         let (s, n, _) = session(&first);
         if n == 0
