@@ -397,6 +397,8 @@ fn a_literal_in_parentheses_is_the_literal() {
     assert_eq!(out.lines().last(), Some("true"), "{out}");
     let out = exact_printed("given t\n(pi)*t\n(2.5)*t");
     assert_eq!(out, "π t\n(5/2) t\n");
+}
+
 /// `rot_quat` of a symbolic quaternion is the rotation of q/‖q‖, as the
 /// numeric `rot_quat` normalizes: `rot_quat((a, 1, -2, -1))` printed
 /// `[1 - 2(4 + 1), …]` = `[-9, …]` (q taken as a unit quaternion), a
