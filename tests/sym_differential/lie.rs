@@ -366,7 +366,7 @@ pub enum G {
     /// A general n×n matrix literal of scalars.
     Gen(usize, Vec<T>),
     /// `inv` of a general matrix.
-    GInv(Box<M>),
+    Inverse(Box<M>),
     /// `exp(A * s)` for an integer n×n A.
     ExpA(usize, Vec<i8>, T),
     /// `SE2(s, x, y)`.
@@ -382,7 +382,7 @@ impl G {
         match self {
             G::ExpV(..) | G::Screw(..) | G::Disp(..) => 4,
             G::ExpW3(..) | G::RotE(..) | G::RotQ(..) | G::RotC(..) | G::Se2(..) => 3,
-            G::InvB(x) | G::Tag(x) | G::GInv(x) | G::Proj(x, _) | G::Deg(x) => x.size(),
+            G::InvB(x) | G::Tag(x) | G::Inverse(x) | G::Proj(x, _) | G::Deg(x) => x.size(),
             G::Gen(k, _) | G::ExpA(k, ..) => *k,
         }
     }
@@ -435,7 +435,7 @@ impl G {
                     .collect();
                 format!("[{}]", rows.join("; "))
             }
-            G::GInv(x) => format!("inv({})", x.source()),
+            G::Inverse(x) => format!("inv({})", x.source()),
             G::ExpA(k, a, s) => {
                 let rows: Vec<String> = a
                     .chunks(*k)
@@ -527,7 +527,7 @@ impl G {
                 }
             }
             G::Gen(k, es) => Mx::rows(*k, *k, es.iter().map(s).collect()),
-            G::GInv(x) => x.eval(at, by).inverse(),
+            G::Inverse(x) => x.eval(at, by).inverse(),
             G::ExpA(k, a, t) => expm(
                 &Mx::of(*k, *k, &a.iter().map(|x| f64::from(*x)).collect::<Vec<_>>()).scale(s(t)),
             ),
@@ -552,7 +552,7 @@ impl G {
             | G::Se2(t, _) => vec![t],
             G::RotE(_, x, y, z) => vec![x, y, z],
             G::Disp(x, y) => [x.scalars(), y.scalars()].concat(),
-            G::InvB(x) | G::Tag(x) | G::GInv(x) | G::Proj(x, _) | G::Deg(x) => x.scalars(),
+            G::InvB(x) | G::Tag(x) | G::Inverse(x) | G::Proj(x, _) | G::Deg(x) => x.scalars(),
             G::Gen(_, es) => es.iter().collect(),
         }
     }
@@ -998,7 +998,7 @@ pub fn general(scalar: BoxedStrategy<T>) -> BoxedStrategy<M> {
     });
     prop_oneof![
         3 => gm.clone(),
-        2 => gm.clone().prop_map(|g| M::G(b(G::GInv(b(g))))),
+        2 => gm.clone().prop_map(|g| M::G(b(G::Inverse(b(g))))),
         1 => expa,
         1 => (gm.clone(), gm).prop_filter("one size", |(x, y)| x.size() == y.size())
             .prop_map(|(x, y)| M::Mul(b(x), b(y))),
@@ -1012,7 +1012,7 @@ pub fn planar(scalar: BoxedStrategy<T>) -> BoxedStrategy<M> {
     leaf.prop_recursive(1, 3, 2, |inner| {
         prop_oneof![
             (inner.clone(), inner.clone()).prop_map(|(x, y)| M::Mul(b(x), b(y))),
-            inner.prop_map(|x| M::G(b(G::GInv(b(x))))),
+            inner.prop_map(|x| M::G(b(G::Inverse(b(x))))),
         ]
     })
     .boxed()
