@@ -600,3 +600,63 @@ fn len_of_a_symbolic_vector_is_its_count() {
         assert_eq!(ans(src).as_scalar(), Some(n), "{src}");
     }
 }
+
+/// A comparison of `given` matrices cannot be decided without numbers; it
+/// waits, and once they have numbers it is what typed first gives (it was
+/// "cannot decide `R1 == R2` without numbers", and `c` was never bound).
+#[test]
+fn a_comparison_of_given_matrices_waits_for_numbers() {
+    let last = |src: &str| printed(src, 4).last().cloned().unwrap_or_default();
+    let pre = "given R1, R2 : SO3\nc = R1 == R2\n";
+    assert_eq!(
+        last(&format!("{pre}R1 = Rotz(0.3)\nR2 = Rotz(0.3)\nc")),
+        "true"
+    );
+    assert_eq!(
+        last(&format!("{pre}R1 = Rotz(0.3)\nR2 = Rotz(0.4)\nc")),
+        "false"
+    );
+    // partly bound, it still waits; then decided
+    let src = format!("{pre}R1 = Rotz(0.3)\nd = c\nR2 = Rotx(0)\nd");
+    assert_eq!(last(&src), "false");
+    // ≈ and a transform against numbers, as typed first
+    let src = "given R1, R2 : SO3\nc = R1 ~= R2\nR1 = Rotz(0.3)\nR2 = Rotz(0.3 + 1e-12)\nc";
+    assert_eq!(last(src), "true");
+    let src = "given T : SE3\nc = T == RpToTrans(Rotz(0.5), (1, 2, 3))\n\
+               T = RpToTrans(Rotz(0.5), (1, 2, 3))\nc";
+    assert_eq!(last(src), "true");
+    // its value is the bool
+    assert_eq!(
+        ans(&format!("{pre}R1 = Rotz(0.3)\nR2 = Rotz(0.3)\nc")),
+        Value::Bool(true)
+    );
+}
+
+/// A slice of a vector or matrix over symbols is the entries it picks
+/// (`(1, 2, a)[2:3]` was "cannot index a 3-vector with a range"), and
+/// bound later the numbers typed first give.
+#[test]
+fn a_slice_of_a_symbolic_value_is_its_entries() {
+    let last = |src: &str| printed(src, 4).last().cloned().unwrap_or_default();
+    assert_eq!(
+        last("given a : scalar\nv = (1, 2, a)\nv[2:3]"),
+        "(2, a)  : 2-vector"
+    );
+    assert_eq!(
+        last("given a : scalar\nR = Rotz(a)\nR[1:2, 1]"),
+        "(cos(a), sin(a))  : 2-vector"
+    );
+    assert_eq!(last("given a : scalar\nv = (1, 2, a)\nv[end]"), "a");
+    agree(
+        "given a : scalar\nw = Rotz(a)[1:2, 1:2]\na = 0.3\nw",
+        "a = 0.3\nw = Rotz(a)[1:2, 1:2]\nw",
+    );
+    agree(
+        "given a : scalar\nw = (1, 2, a)[2:3]\na = 0.7\nw",
+        "a = 0.7\nw = (1, 2, a)[2:3]\nw",
+    );
+    agree(
+        "given a : scalar\nw = RpToTrans(Rotx(a), (1, 2, 3))[1:3, 4]\na = 0.7\nw",
+        "a = 0.7\nw = RpToTrans(Rotx(a), (1, 2, 3))[1:3, 4]\nw",
+    );
+}

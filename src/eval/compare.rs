@@ -99,6 +99,14 @@ impl Interp<'_> {
                 }
                 match crate::values::waiting::make(op, a, b) {
                     Some(w) => Some(w),
+                    // (a side a tree of `given` matrices: the tree waits)
+                    None if matches!(a, Value::Sym(_)) || matches!(b, Value::Sym(_)) => {
+                        Some(Value::Sym(super::value::Sym::Compare(
+                            op,
+                            Box::new(super::apply::to_sym(a)),
+                            Box::new(super::apply::to_sym(b)),
+                        )))
+                    }
                     None => return Err(self.undecided(op, lhs, rhs, op_span, false)),
                 }
             }

@@ -57,7 +57,7 @@ fn worth_lowering(s: &Sym, leaf: &dyn Fn(&str) -> Option<Leaf>, asks: &mut bool)
             }
             _ => false,
         },
-        Sym::Identity => false,
+        Sym::Identity | Sym::Compare(..) => false,
         Sym::Call(_, xs) => {
             *asks = true;
             xs.iter().all(|x| worth_lowering(x, leaf, asks))
@@ -157,7 +157,7 @@ fn lower(s: &Sym, leaf: &dyn Fn(&str) -> Option<Leaf>, assumed: &Assumed) -> Opt
             )),
         },
         Sym::Const(v, _) => Some((**v).clone()),
-        Sym::Identity => None,
+        Sym::Identity | Sym::Compare(..) => None,
         Sym::Product(fs) => {
             let mut acc = go(fs.first()?)?;
             for f in &fs[1..] {

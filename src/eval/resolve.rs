@@ -109,6 +109,7 @@ impl Resolving<'_, '_> {
                 let sel: Vec<Sel> = sels.iter().map(|s| s.map_or(Sel::All, Sel::At)).collect();
                 self.unary(Op::Index(&sel), x)
             }
+            Sym::Compare(op, a, b) => self.compared(*op, a, b),
             Sym::Add(a, b) => self.binary(BinOp::Add, a, b),
             Sym::Sub(a, b) => self.binary(BinOp::Sub, a, b),
             Sym::Div(a, b) => self.binary(BinOp::Div, a, b),
@@ -218,6 +219,22 @@ impl Resolving<'_, '_> {
             Some(v) => constant(v),
             None => op.symbolic(vec![x]),
         }
+    }
+
+    /// A comparison that waited for numbers: decided as typed first once
+    /// both sides are numbers (LANGUAGE.md §7), else still waiting.
+    fn compared(&mut self, op: crate::syntax::ast::CmpOp, a: &Sym, b: &Sym) -> Sym {
+        let (a, b) = (self.go(a), self.go(b));
+        if let (Some(l), Some(r)) = (num(&a), num(&b)) {
+            match super::decide::equal(l, r, op) {
+                Ok(Some(v)) => return constant(Value::Bool(v)),
+                Ok(None) => {}
+                Err(m) => {
+                    self.failed.get_or_insert(m);
+                }
+            }
+        }
+        Sym::Compare(op, Box::new(a), Box::new(b))
     }
 
     /// An arithmetic operation on resolved operands, computed when both

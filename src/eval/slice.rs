@@ -95,6 +95,10 @@ impl Interp<'_> {
         let t = self.expr(base)?;
         let (rows, cols) = match (t.value(), t.ty.kind) {
             (Some(Value::List(xs)), _) => (Some(xs.len()), Some(1)),
+            (Some(v @ Value::Formula { .. }), _) => match crate::values::formula::mat_of(v) {
+                Some(m) if v.kind() != Kind::Bool => (Some(m.rows), Some(m.cols)),
+                _ => (None, None),
+            },
             (Some(v), _) => match v.as_matrix() {
                 Some(m) => (Some(m.nrows()), Some(m.ncols())),
                 None => (None, None),
@@ -156,6 +160,23 @@ impl Interp<'_> {
             }
             let items: Vec<Value> = at.iter().map(|&k| xs[k].clone()).collect();
             return Ok(Typed::new(t.ty, Some(Value::List(Rc::new(items)))));
+        }
+        if let Value::Formula { .. } = value
+            && let (Some(r), Some(c)) = (rows, cols)
+        {
+            let (rs, cs) = if one {
+                let at = check(&picks[0], r * c, "the entries")?;
+                (
+                    at.iter().map(|k| k % r).collect(),
+                    at.iter().map(|k| k / r).collect(),
+                )
+            } else {
+                (
+                    check(&picks[0], r, "the rows")?,
+                    check(&picks[1], c, "the columns")?,
+                )
+            };
+            return symbolic(value, (&rs, &cs), (one, c), &picks, span);
         }
         let Some(m) = value.as_matrix() else {
             return Err(Diagnostic::error(
@@ -234,6 +255,91 @@ impl Interp<'_> {
             }),
         }
     }
+}
+
+/// `x[ranges]` of a vector or matrix over symbols (LANGUAGE.md §7): each
+/// entry picked by an index operation, put together as a vector or matrix
+/// (so that, bound later, it is replayed as typed first). With one index
+/// `rs` and `cs` are the entries' rows and columns in order; with two,
+/// the rows and the columns picked.
+fn symbolic(
+    value: &Value,
+    (rs, cs): (&[usize], &[usize]),
+    (one, cols): (bool, usize),
+    picks: &[Picked],
+    span: Span,
+) -> Result<Typed, Diagnostic> {
+    use super::apply::Op;
+    use super::ops::Sel;
+    let vector = cols == 1;
+    let entry = |i: usize, j: usize| -> Result<Value, Diagnostic> {
+        let sel = if vector {
+            vec![Sel::At((i + 1) as f64)]
+        } else {
+            vec![Sel::At((i + 1) as f64), Sel::At((j + 1) as f64)]
+        };
+        let op = Op::Index(&sel);
+        op.apply(&[value], &Kind::Scalar)
+            .map_err(|e| op.failure(e, span))
+    };
+    let column = |xs: Vec<Value>| -> Result<Typed, Diagnostic> {
+        let kind = Kind::Vector(Some(xs.len()));
+        let refs: Vec<&Value> = xs.iter().collect();
+        let v = Op::Vector
+            .apply(&refs, &kind)
+            .map_err(|e| Op::Vector.failure(e, span))?;
+        Ok(Typed::new(Ty::plain(kind), Some(v)))
+    };
+    if one || picks[1].single {
+        let xs: Vec<Value> = if one {
+            rs.iter()
+                .zip(cs)
+                .map(|(&i, &j)| entry(i, j))
+                .collect::<Result<_, _>>()?
+        } else {
+            rs.iter()
+                .map(|&i| entry(i, cs[0]))
+                .collect::<Result<_, _>>()?
+        };
+        if picks[0].single {
+            let x = xs
+                .into_iter()
+                .next()
+                .unwrap_or_else(|| Value::scalar(f64::NAN));
+            return Ok(Typed::new(Ty::scalar(), Some(x)));
+        }
+        return column(xs);
+    }
+    let rows: Vec<Vec<Value>> = rs
+        .iter()
+        .map(|&i| cs.iter().map(|&j| entry(i, j)).collect::<Result<_, _>>())
+        .collect::<Result<_, _>>()?;
+    let v = match super::apply::block(&rows) {
+        Some(v) => v,
+        None => super::apply::block_numeric(&rows),
+    }
+    .map_err(|e| Diagnostic::error(ErrorKind::Domain, span, e.to_string()))?;
+    // (a matrix, as the numbers typed first give it: a 2×2 block of a
+    // rotation is no SO(2) for being one at these numbers)
+    let kind = Kind::Matrix(Some(rs.len()), Some(cs.len()));
+    let v = match v {
+        Value::Formula {
+            m, how: Some(r), ..
+        } => Value::Formula {
+            kind,
+            m,
+            how: Some(
+                crate::values::recipe::Recipe::node(
+                    crate::values::recipe::Step::Retag,
+                    vec![r.clone()],
+                    kind,
+                )
+                .unwrap_or(r),
+            ),
+        },
+        v => v,
+    };
+    Ok(Typed::new(Ty::plain(kind), Some(v)))
 }
 
 /// The kind of a list's elements.

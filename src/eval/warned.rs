@@ -160,7 +160,11 @@ fn tree(s: &Sym, out: &mut Vec<Symbol>) {
         | Sym::Transpose(x)
         | Sym::Member(x, _)
         | Sym::Index(x, _) => tree(x, out),
-        Sym::Add(a, b) | Sym::Sub(a, b) | Sym::Div(a, b) | Sym::Pow(a, b) => {
+        Sym::Add(a, b)
+        | Sym::Sub(a, b)
+        | Sym::Div(a, b)
+        | Sym::Pow(a, b)
+        | Sym::Compare(_, a, b) => {
             tree(a, out);
             tree(b, out);
         }

@@ -97,6 +97,10 @@ pub enum Tree<C> {
     Vector(Vec<Tree<C>>),
     /// `x[i]`, `M[i, j]`, `M[:, j]` (1-based; `None` is `:`).
     Index(Box<Tree<C>>, Vec<Option<f64>>),
+    /// `a == b`, `a ≈ b`, … of sides that cannot be compared without
+    /// numbers (`given R1, R2 : SO3; R1 == R2`): a bool that waits, decided
+    /// as typed first once the sides are numbers (LANGUAGE.md §7).
+    Compare(crate::syntax::ast::CmpOp, Box<Tree<C>>, Box<Tree<C>>),
 }
 
 impl<C: PartialEq> PartialEq for Tree<C> {
@@ -121,6 +125,7 @@ impl<C: PartialEq> PartialEq for Tree<C> {
             (Member(a, m), Member(b, n)) => a == b && m == n,
             (Call(f, a), Call(g, b)) => f == g && a == b,
             (Block(a), Block(b)) => a == b,
+            (Compare(o, a, b), Compare(p, c, d)) => o == p && a == c && b == d,
             _ => false,
         }
     }
@@ -157,7 +162,11 @@ impl<C: Clone + PartialEq> Tree<C> {
                 | Tree::Bracket(a)
                 | Tree::Transpose(a)
                 | Tree::Member(a, _) => todo.push((a, depth + 1)),
-                Tree::Add(a, b) | Tree::Sub(a, b) | Tree::Div(a, b) | Tree::Pow(a, b) => {
+                Tree::Add(a, b)
+                | Tree::Sub(a, b)
+                | Tree::Div(a, b)
+                | Tree::Pow(a, b)
+                | Tree::Compare(_, a, b) => {
                     todo.push((a, depth + 1));
                     todo.push((b, depth + 1));
                 }
@@ -350,6 +359,7 @@ impl<C: Clone + PartialEq> fmt::Display for Tree<C> {
                     _ => write!(f, "({x})[{}]", sels.join(", ")),
                 }
             }
+            Tree::Compare(op, a, b) => write!(f, "{a} {} {b}", op.text()),
             Tree::Call(fun, args) => {
                 write!(f, "{}(", fun.name)?;
                 for (i, a) in args.iter().enumerate() {
