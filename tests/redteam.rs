@@ -474,3 +474,20 @@ fn subs_of_a_tuple_acts_on_each_part() {
         assert!((g - w).abs() < 1e-15, "{r:?}");
     }
 }
+
+/// `subs` of a comparison over symbols is the comparison of its sides
+/// with the value put in, decided as typed first: of a waiting bool it
+/// gave its two sides stacked (a 2-vector), of a decided one the number 1.
+/// Found by the matrix differential test (seed 100179, release).
+#[test]
+fn subs_of_a_comparison_is_a_comparison() {
+    let out = common::printed("given a, b\nc = a < b\nx = subs(c, a, 1)\nb = 2\nx");
+    assert_eq!(out.lines().last(), Some("true"), "{out}");
+    let out = common::printed("given a, b\nc = a < b\nx = subs(c, a, 3)\nb = 2\nx");
+    assert_eq!(out.lines().last(), Some("false"), "{out}");
+    let out = common::printed(
+        "given q\ne = (dot(transpose(Ad(inv(exp([(0,0,1,1,0,0)] * q)))) * (1,2,3,4,5,6), \
+         Ad(exp([(0,0,1,1,0,0)] * q)) * (1,0,0,1,2,3)) ~= 33)\nsubs(e, q, 0.3)",
+    );
+    assert_eq!(out.lines().last(), Some("true"), "{out}");
+}

@@ -101,6 +101,11 @@ impl Interp<'_> {
                     Some(w) => Some(w),
                     // (a side a tree of `given` matrices: the tree waits)
                     None if matches!(a, Value::Sym(_)) || matches!(b, Value::Sym(_)) => {
+                        let mut note = self.undecided(op, lhs, rhs, op_span, false);
+                        note.severity = crate::diagnostics::Severity::Note;
+                        note.message += ": it is decided once its symbols have numbers";
+                        note.help = None;
+                        self.warnings.push(note);
                         Some(Value::Sym(super::value::Sym::Compare(
                             op,
                             Box::new(super::apply::to_sym(a)),

@@ -2,7 +2,9 @@
 //! (`TransToRp(T)`'s R and p, `AxisAng3(v)`'s ω̂ and θ; LANGUAGE.md §7):
 //! each part as if it had been given alone, so that the tuple's parts are
 //! numbers once their symbols have them, as typed first. A part that is
-//! already numbers is itself.
+//! already numbers is itself. Of a comparison waiting for numbers
+//! (`subs(a < b, a, 1)`): the comparison of its sides so changed; of one
+//! decided over free symbols, its bool.
 
 use super::apply::Op;
 use super::value::Value;
@@ -17,6 +19,34 @@ pub(super) fn each_part(
     vals: &[Value],
     warnings: &mut Vec<Diagnostic>,
 ) -> Option<Result<Value, OpError>> {
+    // (a comparison decided over free symbols is its bool)
+    if let [v @ Value::Formula { .. }, ..] = vals
+        && matches!(name, "subs" | "simplify" | "expand")
+        && let Some(b @ Value::Bool(_)) = super::formula::constant_shown(v)
+    {
+        return Some(Ok(b));
+    }
+    if let [v @ Value::Formula { .. }, rest @ ..] = vals
+        && matches!(name, "subs" | "simplify" | "expand")
+        && let Some((cmp, l, r)) = waiting_sides(v)
+    {
+        let parts = vec![l, r];
+        let mut args = vec![Value::Tuple(parts)];
+        args.extend(rest.iter().cloned());
+        let Some(Ok(Value::Tuple(sides))) = each_part(op, name, &args, warnings) else {
+            return None;
+        };
+        let [a, b] = sides.as_slice() else {
+            return None;
+        };
+        return Some(match super::decide::equal(a, b, cmp) {
+            Ok(Some(t)) => Ok(crate::values::recipe::compared(t, cmp, a, b)),
+            Ok(None) => crate::values::waiting::make(cmp, a, b).ok_or_else(|| {
+                OpError::Message(format!("cannot decide `{}` without numbers", cmp.text()))
+            }),
+            Err(m) => Err(OpError::Message(m)),
+        });
+    }
     let [Value::Tuple(parts), rest @ ..] = vals else {
         return None;
     };
@@ -48,4 +78,22 @@ pub(super) fn each_part(
         });
     }
     Some(Ok(Value::Tuple(out)))
+}
+
+/// The comparison and the two sides of a waiting bool as values (each
+/// with how it was made).
+fn waiting_sides(v: &Value) -> Option<(crate::syntax::ast::CmpOp, Value, Value)> {
+    let (op, l, r) = crate::values::waiting::sides(v)?;
+    let Value::Formula { how: Some(how), .. } = v else {
+        return None;
+    };
+    let side = |m: crate::sym::Mat, i: usize| {
+        let a = how.args.get(i)?;
+        Some(Value::Formula {
+            kind: a.kind,
+            m,
+            how: Some(a.clone()),
+        })
+    };
+    Some((op, side(l, 0)?, side(r, 1)?))
 }
