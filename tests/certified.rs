@@ -76,6 +76,39 @@ fn identities_made_from_exact_numbers_are_true() {
     }
 }
 
+/// Square roots written in the cyclotomic field of the angles (Gauss
+/// sums: √5 = ζ − ζ² − ζ³ + ζ⁴, ζ = e^{2πi/5}), so a side with surds and a side
+/// with roots of unity have one canonical form when equal.
+#[test]
+fn square_roots_meet_roots_of_unity_in_one_field() {
+    for (src, want) in [
+        ("cos(pi/5) == (1+sqrt(5))/4", true),
+        ("(1+sqrt(5))/4 == cos(pi/5)", true),
+        ("sin(pi/5)^2 == (5 - sqrt(5))/8", true),
+        ("cos(pi/12) == (sqrt(6)+sqrt(2))/4", true),
+        ("cos(2*pi/5) == (sqrt(5)-1)/4", true),
+        ("cos(pi/8)^2 == (2+sqrt(2))/4", true),
+        ("cos(pi/5)*sqrt(2) == (sqrt(2)+sqrt(10))/4", true),
+        // √7 needs e^{iπ/14} (conductor 28): L = 7 is widened to 14
+        ("sin(pi/7)*sin(2*pi/7)*sin(3*pi/7) == sqrt(7)/8", true),
+        // √3 with √5: L = 5 widened to 30
+        ("cos(pi/5)*sqrt(3) == (sqrt(3)+sqrt(15))/4", true),
+        ("cos(pi/5) == (1+sqrt(5))/4 + 1e-20", false),
+        (
+            "sin(pi/7)*sin(2*pi/7)*sin(3*pi/7) == sqrt(7)/8 + 1e-30",
+            false,
+        ),
+        ("cos(pi/5) == (1+sqrt(7))/4", false),
+        ("given t : scalar\ncos(pi/5)*t == (1+sqrt(5))/4*t", true),
+        (
+            "given t : scalar\ncos(pi/5)*t == ((1+sqrt(5))/4 + 1e-20)*t",
+            false,
+        ),
+    ] {
+        assert_eq!(last(src), serde_json::json!(want), "{src}");
+    }
+}
+
 #[test]
 fn agreement_without_proof_cannot_be_decided() {
     for src in [

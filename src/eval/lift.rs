@@ -13,6 +13,7 @@
 
 use std::collections::HashMap;
 
+use super::cyclotomic::{coef_poly, conductor_of, cyclotomic};
 use super::value::Value;
 use crate::sym::Mat;
 use crate::sym::coef::{Coef, Rat};
@@ -37,7 +38,18 @@ pub fn verdict(a: &Value, b: &Value) -> Option<Result<(), Expr>> {
         split: Some(split),
         ..Lift::default()
     };
-    proof(a, b, &mut lift).or(first)
+    let mut tried = proof(a, b, &mut lift);
+    if !matches!(tried, Some(Ok(())))
+        && let Some(l) = lift.wider
+    {
+        // (again in the field that holds the square roots met too)
+        let mut wider = Lift {
+            split: Some((split.0, l)),
+            ..Lift::default()
+        };
+        tried = proof(a, b, &mut wider).or(tried);
+    }
+    tried.or(first)
 }
 
 /// How angles are read, and what was met of them.
@@ -53,6 +65,10 @@ struct Lift {
     angles: Option<Vec<(Rat, Rat)>>,
     /// False once an angle not of the form a + bπ is met.
     mixed: bool,
+    /// A larger L whose field ℚ(e^{iπ/L}) holds the square roots met in
+    /// the coefficients (their conductors divide 2L), when the split's L
+    /// does not and the larger one is at most 360.
+    wider: Option<i64>,
 }
 
 impl Lift {
@@ -140,35 +156,15 @@ fn wrapped(e: &Expr, l: i64) -> Expr {
     out
 }
 
-/// The cyclotomic polynomial Φ_n (integer coefficients, lowest power
-/// first): the minimal polynomial over ℚ of a primitive n-th root of
-/// unity, by Φ_n = (zⁿ − 1) / Π Φ_d over the divisors d < n.
-fn cyclotomic(n: usize) -> Vec<i64> {
-    let mut p = vec![0i64; n + 1];
-    p[0] = -1;
-    p[n] = 1;
-    for d in (1..n).filter(|d| n.is_multiple_of(*d)) {
-        let q = cyclotomic(d);
-        // (exact division by the monic q, highest power first)
-        let mut out = vec![0i64; p.len() - q.len() + 1];
-        for i in (0..out.len()).rev() {
-            let c = p[i + q.len() - 1];
-            out[i] = c;
-            for (j, qj) in q.iter().enumerate() {
-                p[i + j] -= c * qj;
-            }
-        }
-        p = out;
-    }
-    p
-}
-
 /// `e` with the polynomial in z = e^{iρ} (ρ = π/L) of each monomial's
 /// other factors reduced modulo Φ_2L, the minimal polynomial of z over ℚ:
 /// `cos ρ + cos 3ρ + cos 5ρ` is then 1/2 at L = 7. Powers are first
-/// brought into [0, L) by z^L = −1 ([`wrapped`]). Equal results are equal
-/// numbers (a reduction over a larger field might find more equal).
-fn reduced(e: &Expr, l: i64) -> Expr {
+/// brought into [0, L) by z^L = −1 ([`wrapped`]), and each coefficient
+/// with a square root (or i, when i is in ℚ(z)) is first written as its
+/// polynomial in z ([`coef_poly`]), so that (1 + √5)/4 and cos(π/5) meet
+/// in one field at L = 5. Equal results are equal numbers; with every
+/// root so written, equal numbers give equal results.
+fn reduced(e: &Expr, l: i64, z: &Var) -> Expr {
     let e = wrapped(e, l);
     let n = 2 * usize::try_from(l).unwrap_or(usize::MAX);
     if n > 720 {
@@ -179,14 +175,12 @@ fn reduced(e: &Expr, l: i64) -> Expr {
     // (the other factors of each monomial, to their polynomial in z)
     let mut polys: std::collections::BTreeMap<crate::sym::expr::Mono, Vec<Coef>> =
         std::collections::BTreeMap::new();
-    let mut z = None;
     for (mono, c) in &e.terms {
         let mut k = 0usize;
         let rest: crate::sym::expr::Mono = mono
             .iter()
             .filter(|(v, p)| match v {
                 Var::Z(s) if &*s.name == "ρ" => {
-                    z = Some(v.clone());
                     k = usize::try_from(*p).unwrap_or(0);
                     false
                 }
@@ -195,12 +189,24 @@ fn reduced(e: &Expr, l: i64) -> Expr {
             .cloned()
             .collect();
         let poly = polys.entry(rest).or_default();
-        if poly.len() <= k {
-            poly.resize(k + 1, Coef::int(0));
+        let written = match c {
+            Coef::Exact { re, im }
+                if re.rational().is_none()
+                    || im.rational().is_none()
+                    || (n.is_multiple_of(4) && !im.is_zero()) =>
+            {
+                coef_poly(c, n)
+            }
+            _ => None,
+        };
+        let written = written.unwrap_or_else(|| vec![c.clone()]);
+        if poly.len() < k + written.len() {
+            poly.resize(k + written.len(), Coef::int(0));
         }
-        poly[k] = poly[k].add(c);
+        for (j, w) in written.iter().enumerate().filter(|(_, w)| !w.is_zero()) {
+            poly[k + j] = poly[k + j].add(w);
+        }
     }
-    let Some(z) = z else { return e };
     let mut out = Expr::default();
     for (rest, mut poly) in polys {
         for i in (deg..poly.len()).rev() {
@@ -230,12 +236,39 @@ fn reduced(e: &Expr, l: i64) -> Expr {
     out
 }
 
+/// The z = e^{iρ} of the forms (`Var::Z` of ρ), as found in them.
+fn z_of<'a>(forms: impl Iterator<Item = &'a Expr>) -> Var {
+    forms
+        .flat_map(|e| e.terms.keys().flatten())
+        .find_map(|(v, _)| match v {
+            Var::Z(s) if &*s.name == "ρ" => Some(v.clone()),
+            _ => None,
+        })
+        .unwrap_or_else(|| Var::Z(Symbol::new("ρ")))
+}
+
+/// The least L' ≥ L, a multiple of L, whose 2L' is a multiple of the
+/// conductor of every square root among the forms' coefficients; None
+/// when L already is, or L' would pass 360 (or a root is too large).
+fn widened<'a>(forms: impl Iterator<Item = &'a Expr>, l: i64) -> Option<i64> {
+    let mut n = 2 * usize::try_from(l).ok()?;
+    for e in forms {
+        for c in e.terms.values() {
+            n = num_integer::Integer::lcm(&n, &conductor_of(c)?);
+        }
+    }
+    let wide = i64::try_from(n / 2).ok()?;
+    (wide != l && wide <= 360).then_some(wide)
+}
+
 /// The proof `verdict` asks for, with angles read by `lift`.
 fn proof(a: &Value, b: &Value, lift: &mut Lift) -> Option<Result<(), Expr>> {
     let (mut x, mut y) = (lifted(a, lift, 0)?, lifted(b, lift, 0)?);
     if let Some((_, l)) = lift.split {
+        lift.wider = widened(x.data.iter().chain(&y.data), l);
+        let z = z_of(x.data.iter().chain(&y.data));
         for e in x.data.iter_mut().chain(y.data.iter_mut()) {
-            *e = reduced(e, l);
+            *e = reduced(e, l, &z);
         }
     }
     if (x.rows, x.cols) != (y.rows, y.cols)

@@ -8,6 +8,7 @@ mod certify;
 mod chain;
 mod compare;
 mod compound;
+mod cyclotomic;
 mod decide;
 mod derive;
 pub mod env;
