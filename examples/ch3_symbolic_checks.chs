@@ -246,7 +246,8 @@ assert (1e16 + sin(1)) - 1e16 == sin(1)       # floats say 2
 assert cos(pi/7) + cos(3 pi/7) + cos(5 pi/7) == 1/2   # reduced by Φ₁₄(e^{iπ/7})
 assert cos(pi/9) cos(2 pi/9) cos(4 pi/9) == 1/8
 assert Rotx(-pi) Rotx(1 deg) == Rotx(-pi + 1 deg)
-assert sqrt(2 + sqrt(3)) ~= (sqrt(6) + sqrt(2))/2  # == cannot decide: no proof here
+assert sqrt(2 + sqrt(3)) == (sqrt(6) + sqrt(2))/2  # denested: 2² − 3 = 1²
+assert cos(pi/5) == (1 + sqrt(5))/4            # √5 in ℚ(e^{iπ/5}) by a Gauss sum
 given t9 : scalar
 cos(1e-9) cos(t9)                             # prints cos(t9): the float of cos(1e-9) is 1
 assert (cos(1e-9) cos(t9) == cos(t9)) == false   # yet they differ at every t9 with cos ≠ 0

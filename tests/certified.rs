@@ -109,11 +109,29 @@ fn square_roots_meet_roots_of_unity_in_one_field() {
     }
 }
 
+/// √(a + b√c) is exact when a² − b²c is a rational square (denested:
+/// √((a + √d)/2) ± √((a − √d)/2)), so `==` on it is exact.
+#[test]
+fn nested_roots_that_denest_are_exact() {
+    for (src, want) in [
+        ("sqrt(2 + sqrt(3)) == (sqrt(6) + sqrt(2))/2", true),
+        ("sqrt(2 - sqrt(3)) == (sqrt(6) - sqrt(2))/2", true),
+        ("sqrt(3 + 2*sqrt(2)) == 1 + sqrt(2)", true),
+        ("sqrt(5 + 2*sqrt(6)) == sqrt(2) + sqrt(3)", true),
+        ("sqrt(7 - 4*sqrt(3)) == 2 - sqrt(3)", true),
+        ("sqrt(2 + sqrt(3)) == (sqrt(6) + sqrt(2))/2 + 1e-20", false),
+        ("cos(pi/12) == sqrt(2 + sqrt(3))/2", true),
+    ] {
+        assert_eq!(last(src), serde_json::json!(want), "{src}");
+    }
+}
+
 #[test]
 fn agreement_without_proof_cannot_be_decided() {
     for src in [
-        "sqrt(2 + sqrt(3)) == (sqrt(6) + sqrt(2))/2",
-        "assert sqrt(2 + sqrt(3)) == (sqrt(6) + sqrt(2))/2",
+        "sin(2*pi/5) == sqrt(10 + 2*sqrt(5))/4",
+        "assert sin(2*pi/5) == sqrt(10 + 2*sqrt(5))/4",
+        "sqrt(1 + sqrt(2))^2 == 1 + sqrt(2)",
     ] {
         let e = refusal(src);
         assert!(
@@ -154,7 +172,7 @@ fn json_says_which() {
     let (code, out, _) = common::run(&[
         "--json",
         "-e",
-        "cos(1e-9) == 1\nsqrt(2 + sqrt(3)) == (sqrt(6) + sqrt(2))/2",
+        "cos(1e-9) == 1\nsin(2*pi/5) == sqrt(10 + 2*sqrt(5))/4",
     ]);
     assert_ne!(code, 0);
     let lines = common::json_lines(&out);

@@ -525,6 +525,12 @@ impl Expr {
                 None => Expr::float(r.to_f64().sqrt()),
             };
         }
+        // (a root of a surd that denests, √(2 + √3) = (√6 + √2)/2)
+        if let Some(s) = x.as_const().and_then(|c| c.as_real())
+            && let Some(r) = s.sqrt()
+        {
+            return Expr::constant(Coef::real(r));
+        }
         if x.as_const().is_none()
             && let Some(r) = x.sqrt_of_square()
         {

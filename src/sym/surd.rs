@@ -266,6 +266,40 @@ impl Surd {
         }
         (lo, hi)
     }
+    /// √self as a surd: a rational's root ([`Surd::sqrt_of`]), or
+    /// √(a + b√c) denested when d = a² − b²c is a rational square:
+    /// √((a + √d)/2) ± √((a − √d)/2), the sign of b (√(2 + √3) =
+    /// (√6 + √2)/2). None for a negative number or a root that does not
+    /// denest (√(1 + √2)).
+    pub fn sqrt(&self) -> Option<Surd> {
+        if let Some(r) = self.rational() {
+            return if r.is_negative() {
+                None
+            } else {
+                Surd::sqrt_of(r)
+            };
+        }
+        let [(c, b)] = self.roots.as_slice() else {
+            return None;
+        };
+        let a = &self.rat;
+        if self.signum() <= 0.0 || a.is_negative() {
+            return None;
+        }
+        let d = a.mul(a).add(&b.mul(b).mul(&int(*c)?).neg());
+        if d.is_negative() {
+            return None;
+        }
+        let s = Surd::sqrt_of(&d)?.as_rat()?;
+        let half = Rat::new(1, 2)?;
+        let x = Surd::sqrt_of(&a.add(&s).mul(&half))?;
+        let y = Surd::sqrt_of(&a.add(&s.neg()).mul(&half))?;
+        Some(if b.is_negative() {
+            x.add(&y.neg())
+        } else {
+            x.add(&y)
+        })
+    }
     /// √r exactly: r = s²·k/q² with k square-free (√8 = 2√2, √(3/4) =
     /// √3/2, √5); None for r < 0, or when the primes of r's numerator or
     /// denominator cannot be found for sure ([`squarefree`]).
