@@ -185,7 +185,7 @@ impl Surd {
     }
     /// 1/x: 1/(a + c√b) = (a − c√b)/(a² − b c²), the denominator free of
     /// b's primes, until it is rational. None for 0, or when the terms
-    /// pass [`MAX_TERMS`] (or a root 2¹²⁸).
+    /// pass `MAX_TERMS` (or a root 2¹²⁸).
     pub fn inv(&self) -> Option<Surd> {
         if self.roots.is_empty() {
             return Some(Surd::rat(self.rat.inv()?));
