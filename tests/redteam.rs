@@ -129,6 +129,41 @@ fn diff_of_a_vector_bound_later_replays_the_chain_rule() {
     );
 }
 
+/// The derivative of a matrix literal over formulas, bound later, replays
+/// the chain rule too: the literal's recorded kind left its shape open, so
+/// the derivative was read from the expanded form of `(cos u + sin v)^26`,
+/// whose coefficients cancel: entry (1, 2) of `diff([E, 1; 1, E] [1, E;
+/// E, 1], t)` printed −3.04e-9 for −7.24e-10, four times too large
+/// (matrix differential seed 329 found the 12th-digit form of it).
+#[test]
+fn diff_of_a_matrix_literal_bound_later_replays_the_chain_rule() {
+    let (u, v, du, dv) = (0.7f64, -0.4f64, 0.3f64, -1.1f64);
+    let e = (u.cos() + v.sin()).powi(13);
+    let de = 13.0 * (u.cos() + v.sin()).powi(12) * (-u.sin() * du + v.cos() * dv);
+    let head = "given u(t), v(t) : scalar\nE = (cos(u) + sin(v))^13\n";
+    let tail = "u = 0.7\nv = -0.4\nu' = 0.3\nv' = -1.1\nd";
+    for (form, want) in [
+        ("[1, E]", vec![0.0, de]),
+        ("[E]", vec![de]),
+        ("[E] * 2", vec![2.0 * de]),
+        ("[1; E] * 3", vec![0.0, 3.0 * de]),
+        (
+            "[E, 1; 1, E] * [1, E; E, 1]",
+            vec![2.0 * de, 2.0 * e * de, 2.0 * e * de, 2.0 * de],
+        ),
+    ] {
+        let src = format!("{head}d = diff({form}, t)\n{tail}");
+        let got = last_numbers(&src);
+        assert_eq!(got.len(), want.len(), "{form}: {got:?}");
+        for (g, w) in got.iter().zip(&want) {
+            assert!(
+                (g - w).abs() <= 1e-14 * w.abs().max(1e-300) + 1e-25,
+                "{form}: {got:?} against {want:?}"
+            );
+        }
+    }
+}
+
 /// `subs(x, a, value)` keeping other symbols replays how `x` was made
 /// once they are bound: from the substituted canonical form,
 /// `subs(a Rot((0, 0, -1), -a cos(π/2 - 0.3 - q1)), a, 0.01)` at q1 = 0

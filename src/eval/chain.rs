@@ -32,11 +32,16 @@ pub(super) fn derivative(x: &Value, by: &Value) -> Option<Rc<Recipe>> {
         Value::Formula { how: Some(r), .. } => r,
         _ => return None,
     };
-    let kind = shape_of(&r.kind)?;
+    // A matrix literal over formulas (`[1, E]`) is recorded with the kind
+    // the check gave it, which can leave its shape open; the value itself
+    // knows it (matrix differential seed 329: without it the derivative
+    // was read from the expanded form, whose coefficients cancel).
+    let kind = shape(r).or_else(|| shape_of(&x.kind()))?;
     let mut memo = HashMap::new();
     let d = Chain {
         by,
         memo: &mut memo,
+        top: (Rc::as_ptr(r), kind),
     }
     .of(r)?;
     Some(d.unwrap_or_else(|| zero(&kind)))
@@ -52,6 +57,32 @@ fn shape_of(k: &Kind) -> Option<Kind> {
             (Some(r), Some(c)) => Kind::Matrix(Some(r), Some(c)),
             _ => return None,
         },
+    })
+}
+
+/// The shape of the value `r` makes: its kind's, or a literal's.
+fn shape(r: &Recipe) -> Option<Kind> {
+    shape_of(&r.kind).or_else(|| literal_shape(r))
+}
+
+/// The shape of a matrix literal of scalars whose recorded kind leaves it
+/// open, as the literal's numbers give it: `[x]` a scalar, one row or one
+/// column a vector (`[1, 2]` is the 2-vector (1, 2)), else rows × columns.
+fn literal_shape(r: &Recipe) -> Option<Kind> {
+    let Step::Op(Operation::Block(widths)) = &r.step else {
+        return None;
+    };
+    if r.args.iter().any(|a| a.kind != Kind::Scalar) {
+        return None;
+    }
+    let (rows, cols) = (widths.len(), *widths.first()?);
+    if widths.iter().any(|w| *w != cols) {
+        return None;
+    }
+    Some(match (rows, cols) {
+        (1, 1) => Kind::Scalar,
+        (1, n) | (n, 1) => Kind::Vector(Some(n)),
+        (r, c) => Kind::Matrix(Some(r), Some(c)),
     })
 }
 
@@ -115,6 +146,9 @@ pub(super) fn substituted(x: &Value, name: &Value, by: &Value) -> Option<Rc<Reci
 struct Chain<'a> {
     by: &'a Value,
     memo: &'a mut HashMap<*const Recipe, Option<D>>,
+    /// The recipe differentiated, with its shape (from the value where
+    /// the recipe's kind leaves it open).
+    top: (*const Recipe, Kind),
 }
 
 fn number(x: f64) -> Rc<Recipe> {
@@ -133,7 +167,7 @@ fn node_k(step: Step, args: Vec<Rc<Recipe>>, k: Kind) -> Option<Rc<Recipe>> {
 /// `a op b` whose result has the shape of the bigger operand (a scalar
 /// times a matrix is a matrix).
 fn arith(op: BinOp, a: Rc<Recipe>, b: Rc<Recipe>) -> Option<Rc<Recipe>> {
-    let k = match (op, a.kind, b.kind) {
+    let k = match (op, shape(&a)?, shape(&b)?) {
         (BinOp::Mul, ka, kb) => product(&ka, &kb)?,
         (_, Kind::Scalar, kb) if op != BinOp::Pow => shape_of(&kb)?,
         (_, ka, _) => shape_of(&ka)?,
@@ -220,7 +254,11 @@ impl Chain<'_> {
     }
 
     fn step(&mut self, r: &Rc<Recipe>) -> Option<D> {
-        let k = shape_of(&r.kind)?;
+        let k = match shape(r) {
+            Some(k) => k,
+            None if Rc::as_ptr(r) == self.top.0 => self.top.1,
+            None => return None,
+        };
         if k != Kind::Scalar {
             return self.matrix_step(r, k);
         }
@@ -271,6 +309,10 @@ impl Chain<'_> {
                 linear(&r.step, self.of(&x(0)?)?, k)
             }
             Step::Op(Operation::Call(name)) => self.call(name, &r.args),
+            // `[x]` of a scalar is the scalar, 1 × 1
+            Step::Op(Operation::Block(_)) if r.args.len() == 1 && x(0)?.kind == Kind::Scalar => {
+                self.of(&x(0)?)
+            }
             _ => None,
         }
     }
@@ -325,7 +367,7 @@ impl Chain<'_> {
                 for a in &r.args {
                     let d = self.of(a)?;
                     any |= d.is_some();
-                    ds.push(d.unwrap_or_else(|| zero(&shape_of(&a.kind).unwrap_or(Kind::Scalar))));
+                    ds.push(d.unwrap_or_else(|| zero(&shape(a).unwrap_or(Kind::Scalar))));
                 }
                 if !any {
                     return Some(None);
