@@ -526,3 +526,17 @@ fn subs_of_a_comparison_is_a_comparison() {
     );
     assert_eq!(out.lines().last(), Some("true"), "{out}");
 }
+
+/// An index over symbols is refused, naming the symbol (it printed
+/// "index NaN is out of range"); bound first it picks the entry.
+#[test]
+fn an_index_with_no_number_is_refused_by_name() {
+    let e = common::error("given n : scalar\nv = (1, 2, 3)\nv[n]");
+    assert!(
+        e.contains("an index must be a number: `n` has no number yet"),
+        "{e}"
+    );
+    assert!(!e.contains("NaN"), "{e}");
+    let out = common::printed("v = (1, 2, 3)\nn = 2\nv[n]");
+    assert_eq!(out.lines().last(), Some("2"));
+}

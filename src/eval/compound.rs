@@ -41,9 +41,24 @@ impl Interp<'_> {
                             "an index must be a number",
                         ));
                     }
-                    sels.push(Sel::At(
-                        it.value().and_then(Value::as_scalar).unwrap_or(f64::NAN),
-                    ));
+                    // (an index over symbols would pick an entry that is
+                    // not known yet: refused, never read as NaN)
+                    let at = match it.value() {
+                        Some(v) => v.as_scalar().ok_or_else(|| {
+                            Diagnostic::error(
+                                ErrorKind::Domain,
+                                e.span,
+                                format!(
+                                    "an index must be a number: `{}` has no number yet",
+                                    self.text(e.span).trim()
+                                ),
+                            )
+                            .with_help("bind numbers to the given names before indexing with them")
+                        })?,
+                        // (checking without numbers: only the kinds matter)
+                        None => f64::NAN,
+                    };
+                    sels.push(Sel::At(at));
                 }
             }
         }
