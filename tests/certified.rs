@@ -208,3 +208,88 @@ fn symbolic_sides_rounding_alike_are_checked_at_a_point() {
         assert_eq!(last(src), serde_json::json!(true), "{src}");
     }
 }
+
+/// Over symbols, a side whose coefficient is a float made from exact
+/// numbers is decided at points, not by its float (session 13): the
+/// cyclotomic sum is exactly 1/2, so the float 0.5000000000000001 in
+/// front of t must not make `==` false (it printed false, "differ by
+/// rounding only": a wrong answer).
+#[test]
+fn symbolic_sides_resting_on_floats_are_decided_at_points() {
+    for (src, want) in [
+        (
+            "given t : scalar\n(cos(pi/7)+cos(3pi/7)+cos(5pi/7))*t == t/2",
+            true,
+        ),
+        ("given t : scalar\ncos(pi/5)*t == (1+sqrt(5))/4*t", true),
+        (
+            "given t : scalar\n(cos(pi/7)+cos(3pi/7)+cos(5pi/7))*t^2 + sin(1)*t == t^2/2 + sin(1)*t",
+            true,
+        ),
+        ("given t : scalar\nexp(1)^2*t == exp(2)*t", true),
+        (
+            "given t : scalar\ncos(pi/7)*t == 0.9009688679024191*t",
+            false,
+        ),
+        (
+            "given a, b : scalar\ntan(cos(-2))*a == (sin(2b) - 2 sin(b) cos(b) + tan(cos(-2)))*a",
+            true,
+        ),
+    ] {
+        assert_eq!(last(src), serde_json::json!(want), "{src}");
+    }
+    let (_, err) = common::outputs("given t : scalar\n(cos(pi/7)+cos(3pi/7)+cos(5pi/7))*t == t/2");
+    assert!(!err.contains("rounding only"), "{err}");
+    // agreement with no proof waits for numbers and says so
+    let (out, err) = common::outputs("given t : scalar\nacos(0.3)*t == (pi/2 - asin(0.3))*t");
+    assert!(
+        !out.trim().ends_with("true") && !out.trim().ends_with("false"),
+        "{out}"
+    );
+    assert!(err.contains("cannot prove"), "{err}");
+}
+
+/// exp, log and the inverse trigonometric functions of numbers keep how
+/// they were made (session 13; they were floats compared digit by digit):
+/// identities of their normal forms (s·e^q; a + Σ c ln p; atan α) are
+/// true, proven, and the book's angles are exact.
+#[test]
+fn exp_log_and_inverse_trig_identities_are_proven() {
+    for src in [
+        "exp(1)^2 == exp(2)",
+        "exp(1)*exp(1) == exp(2)",
+        "sqrt(exp(3)) == exp(3/2)",
+        "exp(log(2)/2) == sqrt(2)",
+        "log(2) + log(3) == log(6)",
+        "log(8) == 3*log(2)",
+        "exp(log(5)) == 5",
+        "log(exp(2)) == 2",
+        "atan(1) == pi/4",
+        "asin(1/2) == pi/6",
+        "acos(-1/2) == 2pi/3",
+        "atan2(1, -1) == 3pi/4",
+        "atan2(0, -2) == pi",
+        "atan(2 - sqrt(3)) == pi/12",
+        "atan2(1, 2) == atan(1/2)",
+        "asin(0.6) == atan(3/4)",
+        "tan(pi^2)*cos(1)^2 + tan(pi^2)*sin(1)^2 == tan(pi^2)",
+    ] {
+        assert_eq!(last(src), serde_json::json!(true), "{src}");
+    }
+    for src in [
+        "exp(1e-20) == 1",
+        "exp(1) == 2.718281828459045",
+        "log(2) + log(3) == log(6.000000000000001)",
+        "atan(0.9999999999999999) == pi/4",
+    ] {
+        assert_eq!(last(src), serde_json::json!(false), "{src}");
+    }
+    let e = refusal("acos(0.3) == pi/2 - asin(0.3)");
+    assert!(
+        e.contains("cannot decide") && e.contains("cannot prove"),
+        "{e}"
+    );
+    // the exact angles print as the book writes them
+    let out = common::printed("atan2(1, -1)\nasin(1/2)");
+    assert!(out.contains("2.3562") && out.contains("0.5236"), "{out}");
+}

@@ -175,7 +175,6 @@ pub fn exp(a: &Ball, prec: usize) -> Option<Ball> {
     lipschitz(|c, x| c.exp(x, None), a, slope, prec)
 }
 /// ln a, for a ball clear of 0 on the positive side: slope 1/(mid − r).
-#[allow(dead_code)]
 pub fn ln(a: &Ball, prec: usize) -> Option<Ball> {
     if a.mid.significand().sign() == dashu_int::Sign::Negative || !nonzero(a) {
         return None;
@@ -185,6 +184,49 @@ pub fn ln(a: &Ball, prec: usize) -> Option<Ball> {
         return None;
     }
     lipschitz(|c, x| c.ln(x, None), a, Mag::ONE.div(&low), prec)
+}
+
+/// asin a = atan(a / √(1 − a²)), for a ball inside (−1, 1) (None when
+/// it may reach ±1, where the slope is infinite).
+pub fn asin(a: &Ball, prec: usize) -> Option<Ball> {
+    let one = Ball::exact(Repr::one());
+    let c = sub(&one, &mul(a, a, prec)?, prec)?;
+    if !positive(&c) {
+        return None;
+    }
+    atan(&div(a, &sqrt(&c, prec)?, prec)?, prec)
+}
+
+/// acos a = π/2 − asin a, for a ball inside (−1, 1).
+pub fn acos(a: &Ball, prec: usize) -> Option<Ball> {
+    let half_pi = div(&pi(prec), &int(&2.into()), prec)?;
+    sub(&half_pi, &asin(a, prec)?, prec)
+}
+
+/// atan2(y, x), the angle of (x, y) in (−π, π] (§3.2.3.3's θ): atan(y/x)
+/// for x > 0, ±π/2 − atan(x/y) for y ≠ 0 of sign ±, π for y = 0 exactly
+/// and x < 0; None on the branch cut (x < 0, y's ball holding 0 but not
+/// only 0) and at the origin.
+pub fn atan2(y: &Ball, x: &Ball, prec: usize) -> Option<Ball> {
+    if positive(x) {
+        return atan(&div(y, x, prec)?, prec);
+    }
+    if nonzero(y) {
+        let half_pi = div(&pi(prec), &int(&2.into()), prec)?;
+        let r = atan(&div(x, y, prec)?, prec)?;
+        return if positive(y) {
+            sub(&half_pi, &r, prec)
+        } else {
+            sub(&neg(&half_pi), &r, prec)
+        };
+    }
+    let exact_zero = y.rad.is_zero() && y.mid.significand().is_zero();
+    (exact_zero && nonzero(x)).then(|| pi(prec))
+}
+
+/// True when the ball certainly holds only positive numbers.
+fn positive(a: &Ball) -> bool {
+    nonzero(a) && a.mid.significand().sign() == dashu_int::Sign::Positive
 }
 
 /// True when the ball certainly excludes 0.

@@ -57,6 +57,10 @@ pub fn equal(a: &Value, b: &Value) -> Option<Verdict> {
         // (the cheapest precision first: most differences show there; an
         // identity is then looked for before working harder)
         if k == 1 {
+            // (sides made by exp and log: their normal forms)
+            if super::transcendental::proven_equal(a, b) {
+                return Some(Verdict::Equal);
+            }
             match super::lift::verdict(a, b) {
                 Some(Ok(())) => return Some(Verdict::Equal),
                 Some(Err(d)) => {
@@ -464,7 +468,11 @@ fn call(name: &str, args: &[Balls], prec: usize) -> Option<Balls> {
         "sec" => recip(ball::cos),
         "csc" => recip(ball::sin),
         "exp" if args.first()?.data.len() == 1 => scalar(ball::exp),
+        "log" if args.first()?.data.len() == 1 => scalar(ball::ln),
         "atan" => scalar(ball::atan),
+        "asin" => scalar(ball::asin),
+        "acos" => scalar(ball::acos),
+        "atan2" if args.len() == 2 => Some(Balls::scalar(ball::atan2(one(0)?, one(1)?, prec)?)),
         "Rotx" | "Roty" | "Rotz" => {
             let t = one(0)?;
             let (c, s) = (ball::cos(t, prec)?, ball::sin(t, prec)?);

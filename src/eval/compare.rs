@@ -10,6 +10,7 @@
 
 use super::interp::{Interp, Typed};
 use super::value::Value;
+use super::witness::AtPoints;
 
 pub use super::decide::{APPROX_TOL, equal, largest_difference};
 use crate::check::rules::{self, RuleError};
@@ -210,30 +211,41 @@ impl Interp<'_> {
                 .lowered_equal(a, b, op, op_span)
                 .unwrap_or_else(|| equal(a, b, op))
             {
-                Ok(Some(false)) if op == CmpOp::Eq => {
-                    if let Some(note) = super::decide::false_note(a, b, op_span) {
-                        self.warnings.push(note);
-                    }
-                    Some(false)
-                }
-                // (a `true` over symbols that a number with no exact form
-                // may owe to rounding is checked at a point: `super::witness`)
-                Ok(Some(true)) if op == CmpOp::Eq => {
-                    match super::witness::witnessed_different(a, b) {
-                        Some(d) => {
+                // (a verdict over symbols that rests on a number with no
+                // exact form is found at points: `super::witness`)
+                Ok(Some(v)) if op == CmpOp::Eq => match super::witness::at_points(a, b) {
+                    Some(AtPoints::Differ(d)) => {
+                        if v {
                             self.warnings.push(Diagnostic::note(
+                                ErrorKind::Domain,
+                                op_span,
+                                format!(
+                                    "the two sides print alike but are different functions: with numbers for their symbols they differ by {}",
+                                    format!("{:.1e}", d.abs()).replace(".0e", "e")
+                                ),
+                            ));
+                        }
+                        Some(false)
+                    }
+                    Some(AtPoints::Identity) => Some(true),
+                    Some(AtPoints::Agree(n)) => {
+                        self.warnings.push(Diagnostic::note(
                             ErrorKind::Domain,
                             op_span,
                             format!(
-                                "the two sides print alike but are different functions: with numbers for their symbols they differ by {}",
-                                format!("{:.1e}", d.abs()).replace(".0e", "e")
+                                "with numbers for their symbols the two sides agree to {n} digits, but chasles cannot prove they are the same function"
                             ),
-                        ));
-                            Some(false)
-                        }
-                        None => Some(true),
+                        ).with_help("compare within rounding with ≈ (typed ~=)"));
+                        undecided = true;
+                        None
                     }
-                }
+                    None => {
+                        if !v && let Some(note) = super::decide::false_note(a, b, op_span) {
+                            self.warnings.push(note);
+                        }
+                        Some(v)
+                    }
+                },
                 Ok(Some(v)) => Some(v),
                 Ok(None) => {
                     undecided = true;

@@ -109,6 +109,15 @@ impl Op<'_> {
         if args.is_empty() || !self.may_be_exact() {
             return Some(Exact::Float);
         }
+        // (exp, log and the inverse trigonometric functions keep a recipe
+        // of a number only: certified arithmetic and the normal forms of
+        // `super::transcendental` read it; of a matrix they are floats)
+        if let Op::Call(b, _) = self
+            && scalar_only(b.name)
+            && args.iter().any(|a| a.borrow().as_scalar().is_none())
+        {
+            return Some(Exact::Float);
+        }
         let moves = matches!(
             self,
             Op::Neg | Op::Transpose | Op::Member(_) | Op::Index(_) | Op::Vector | Op::Block(_)
@@ -199,38 +208,48 @@ fn exact_call(b: &crate::builtins::Builtin) -> bool {
 
 /// The builtins whose results are exact at exact arguments often enough
 /// to be worth a recipe (square roots, trigonometry at multiples of π/12,
-/// rotations by them, products); exp, log and the adjoint of numbers are
-/// floats (issue 14's benchmark makes them by the thousand).
+/// rotations by them, products), and exp, log and the inverse
+/// trigonometric functions of a number ([`scalar_only`]: `exp(1)^2 ==
+/// exp(2)` is decided from how its sides were made); the adjoint and the
+/// exp and log of matrices are floats (issue 14's benchmark makes them by
+/// the thousand).
 fn exact_name(name: &str) -> bool {
-    matches!(
-        name,
-        "sqrt"
-            | "abs"
-            | "sin"
-            | "cos"
-            | "tan"
-            | "cot"
-            | "sec"
-            | "csc"
-            | "Rotx"
-            | "Roty"
-            | "Rotz"
-            | "Rot"
-            | "cross"
-            | "dot"
-            | "det"
-            | "trace"
-            | "inv"
-            | "RotInv"
-            | "TransInv"
-            | "VecToso3"
-            | "VecTose3"
-            | "so3ToVec"
-            | "se3ToVec"
-            | "RpToTrans"
-            | "norm"
-            | "transpose"
-    )
+    scalar_only(name)
+        || matches!(
+            name,
+            "sqrt"
+                | "abs"
+                | "sin"
+                | "cos"
+                | "tan"
+                | "cot"
+                | "sec"
+                | "csc"
+                | "Rotx"
+                | "Roty"
+                | "Rotz"
+                | "Rot"
+                | "cross"
+                | "dot"
+                | "det"
+                | "trace"
+                | "inv"
+                | "RotInv"
+                | "TransInv"
+                | "VecToso3"
+                | "VecTose3"
+                | "so3ToVec"
+                | "se3ToVec"
+                | "RpToTrans"
+                | "norm"
+                | "transpose"
+        )
+}
+
+/// The builtins that keep a recipe of a number, not of a matrix (the
+/// matrix exponential and logarithm stay floats).
+fn scalar_only(name: &str) -> bool {
+    matches!(name, "exp" | "log" | "atan" | "asin" | "acos" | "atan2")
 }
 
 #[cfg(test)]
@@ -245,7 +264,7 @@ mod tests {
         }
         let row = |n| lookup(n).expect("a builtin");
         assert!(exact_call(row("sqrt")) && exact_call(row("Rotz")));
-        assert!(!exact_call(row("exp")) && !exact_call(row("Ad")));
+        assert!(exact_call(row("exp")) && !exact_call(row("Ad")));
     }
 
     /// A product of numbers as typed keeps its operands, not copies, and

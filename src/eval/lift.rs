@@ -60,11 +60,12 @@ struct Lift {
     /// None: an angle x is x·ν. Some((M, L)): an angle a + bπ is
     /// (a M) μ + (b L) ρ, μ = 1/M, ρ = π/L.
     split: Option<(i64, i64)>,
-    /// The angles met, as (a, b) of a + bπ; None once one is not of
-    /// that form.
+    /// The angles met, as (a, b) of a + bπ (the others are atoms).
     angles: Option<Vec<(Rat, Rat)>>,
-    /// False once an angle not of the form a + bπ is met.
-    mixed: bool,
+    /// The numbers read as independent symbols (an angle that is not
+    /// a + bπ, such as the cos 2 of tan(cos 2)), by their fingerprints
+    /// ([`fingerprint`]): the same recipe on both sides is one symbol.
+    atoms: Vec<String>,
     /// A larger L whose field ℚ(e^{iπ/L}) holds the square roots met in
     /// the coefficients (their conductors divide 2L), when the split's L
     /// does not and the larger one is at most 360.
@@ -73,21 +74,21 @@ struct Lift {
 
 impl Lift {
     /// (M, L): the least common denominators of the angles' rational
-    /// parts and of their multiples of π, when every angle is a + bπ and
-    /// both are small enough for whole powers.
+    /// parts and of their multiples of π, when both are small enough for
+    /// whole powers.
     fn split(&self) -> Option<(i64, i64)> {
-        if self.mixed {
-            return None;
-        }
         let mut m = num_bigint::BigInt::from(1);
         let mut l = num_bigint::BigInt::from(1);
         for (a, b) in self.angles.as_ref()? {
             m = num_integer::Integer::lcm(&m, &a.parts().1);
             l = num_integer::Integer::lcm(&l, &b.parts().1);
         }
-        let small =
-            |n: &num_bigint::BigInt| i64::try_from(n.clone()).ok().filter(|n| *n <= 100_000);
-        Some((small(&m)?, small(&l)?))
+        // (μ's powers are only multiplied: large ones cost nothing, to
+        // the exponents' range; ρ's are reduced by Φ_2L, of degree < 2L)
+        let small = |n: &num_bigint::BigInt, most: i64| {
+            i64::try_from(n.clone()).ok().filter(|n| *n <= most)
+        };
+        Some((small(&m, 1_000_000_000)?, small(&l, 100_000)?))
     }
 
     /// An angle `x` as this lift reads it.
@@ -102,15 +103,25 @@ impl Lift {
                         .add(&symbol("ρ").scale(&scaled(&b, l))),
                 )
             }
-            (_, Some(_)) => None,
-            (parts, None) => {
-                match parts {
-                    Some(ab) => self.angles.get_or_insert_with(Vec::new).push(ab),
-                    None => self.mixed = true,
-                }
+            // (an exact angle not a + bπ, √2 or π², is a symbol of its own)
+            (None, _) => Some(self.named(format!("{x:?}"))),
+            (Some(ab), None) => {
+                self.angles.get_or_insert_with(Vec::new).push(ab);
                 Some(x.mul(&symbol("ν")))
             }
         }
+    }
+
+    /// The symbol that stands for the number printed `print` (an atom).
+    fn named(&mut self, print: String) -> Expr {
+        let n = match self.atoms.iter().position(|p| *p == print) {
+            Some(n) => n,
+            None => {
+                self.atoms.push(print);
+                self.atoms.len() - 1
+            }
+        };
+        symbol(&format!("α{n}"))
     }
 }
 
@@ -341,29 +352,79 @@ fn lifted(v: &Value, lift: &mut Lift, depth: u32) -> Option<Mat> {
     let out = exact
         .with_recipe(|p| {
             let angle = angle_of(&p.op);
-            let forms = p
-                .args
-                .refs()
-                .into_iter()
-                .enumerate()
-                .map(|(i, a)| {
-                    let mut m = lifted(a, lift, depth + 1)?;
-                    if Some(i) == angle {
-                        if m.data.len() != 1 {
-                            return None;
-                        }
-                        m.data[0] = lift.angle(&m.data[0])?;
+            let mut forms = Vec::new();
+            for (i, a) in p.args.refs().into_iter().enumerate() {
+                let mut m = lifted(a, lift, depth + 1)?;
+                if Some(i) == angle {
+                    if m.data.len() != 1 {
+                        return None;
                     }
-                    Some(Value::Formula {
-                        kind: a.kind(),
-                        m,
-                        how: None,
-                    })
-                })
-                .collect::<Option<Vec<Value>>>()?;
+                    // (an angle made by a recipe that is not a + bπ, the
+                    // cos 2 of tan(cos 2), is read as a symbol of its own:
+                    // an identity in it holds whatever its value)
+                    m.data[0] = if a.exact_form().is_none() && rational_and_pi(&m.data[0]).is_none()
+                    {
+                        atom(a, lift)?
+                    } else {
+                        lift.angle(&m.data[0])?
+                    };
+                }
+                forms.push(Value::Formula {
+                    kind: a.kind(),
+                    m,
+                    how: None,
+                });
+            }
             super::exactness::formula_of(&p.op, forms, &p.kind)
         })
         .flatten();
+    // (a number the symbolic engine cannot make exactly, atan 2 or
+    // tan(cos 2), is read as a symbol of its own, as its angle would be)
+    let out = match out {
+        Some(m) if m.data.iter().all(self::exact) => Some(m),
+        _ if v.as_scalar().is_some() => atom(v, lift).map(Mat::scalar),
+        out => out,
+    };
     lift.memo.insert(key, out.clone());
     out
+}
+
+/// The symbol that stands for number `v` in the lifted forms (the
+/// [`Lift::atoms`]): one per fingerprint, so the same recipe typed on
+/// both sides is the same symbol.
+fn atom(v: &Value, lift: &mut Lift) -> Option<Expr> {
+    Some(lift.named(fingerprint(v, 0)?))
+}
+
+/// The longest fingerprint made (a recipe that shares operands may
+/// otherwise print exponentially long).
+const MAX_PRINT: usize = 4096;
+
+/// How `v` was made, as text: its exact form, else its operation over
+/// its operands' fingerprints; equal texts are equal numbers.
+fn fingerprint(v: &Value, depth: u32) -> Option<String> {
+    let Value::Num { exact, kind, .. } = v else {
+        return None;
+    };
+    if let Some(form) = v.exact_form() {
+        return Some(format!("{form:?}"));
+    }
+    if depth > 64 {
+        return None;
+    }
+    let out = exact
+        .with_recipe(|p| {
+            let mut s = format!("{:?}:{kind:?}(", p.op);
+            for a in p.args.refs() {
+                s += &fingerprint(a, depth + 1)?;
+                s.push(',');
+                if s.len() > MAX_PRINT {
+                    return None;
+                }
+            }
+            s.push(')');
+            Some(s)
+        })
+        .flatten()?;
+    (out.len() <= MAX_PRINT).then_some(out)
 }

@@ -30,6 +30,7 @@ mod shapes;
 mod slice;
 mod substitute;
 mod symbols;
+mod transcendental;
 mod tuple_call;
 mod user_fn;
 mod warned;

@@ -1,30 +1,62 @@
-//! `a == b` over symbols that the canonical forms call true, checked at a
-//! point (LANGUAGE.md §7, issue 21): a side made from a number with no
-//! exact form (`cos(1e-9) cos(t)`) may owe its canonical form to a float
-//! that rounds like its exact value's neighbour (cos(1e-9) is the float
-//! 1). With numbers for the symbols, both sides are replayed as typed
-//! first (`super::replay`) and compared by certified arithmetic
-//! (`super::certify`): a point where they certainly differ proves they are
-//! not the same function.
+//! `a == b` over symbols when a side rests on a number with no exact form
+//! (LANGUAGE.md §7, issue 21: never a wrong answer). The canonical forms
+//! ([`crate::values::equality`]) hold such a number as a float
+//! coefficient, and a float can round either way: `cos(1e-9) t` prints as
+//! `t` though it is not t, and `(cos(π/7) + cos(3π/7) + cos(5π/7)) t` is
+//! not the float `0.5 t` though it is t/2. So a verdict that rests on a
+//! float is not read off the floats: both sides are replayed as typed
+//! first, with numbers for the symbols (`super::replay`), at as many
+//! points as the difference can have terms, and compared there by
+//! certified arithmetic (`super::certify`):
+//!
+//! - a point where the sides certainly differ proves they are different
+//!   functions (`false`);
+//! - the difference of the two canonical forms is a sum c₁m₁(x) + … +
+//!   cₖmₖ(x) over the monomials mᵢ of the sides (products of symbols, of
+//!   e^{iθ} and of kept calls; what is constant, π and phases, goes with
+//!   the coefficient), whose cᵢ the floats only estimate. Proven zero at k
+//!   points where the k monomials' values form a nonsingular matrix, every
+//!   cᵢ is 0: the sides are the same function (`true`);
+//! - sides that agree at every point far past rounding, with no proof,
+//!   are undecided, and the answer says so.
+//!
+//! The premise is that a float sum which cancelled to within rounding left
+//! no monomial out of both sides (`sym::coef` drops such noise); a
+//! difference hiding there is still caught when a point shows it.
+
+use std::collections::BTreeSet;
 
 use super::certify::{Verdict, equal};
 use super::value::Value;
+use crate::sym::expr::{Mono, Var};
+use crate::sym::{Expr, Symbol};
 use crate::values::exact::Exact;
+use crate::values::formula::mat_of;
 
-/// The difference at a point of the two sides of `a == b` over symbols,
-/// which the canonical forms call true, when it is certainly not 0 (the
-/// sides are then different functions): a side is made from a number with no exact form
-/// (`cos(1e-9) t`, whose canonical form is t), and with numbers for the symbols, replayed as
-/// typed first, certified arithmetic finds the sides different. A point
-/// where they differ is a proof that they are not the same function.
-/// Not for axes assumed to be unit vectors (a point off the sphere proves
-/// nothing).
-pub(super) fn witnessed_different(a: &Value, b: &Value) -> Option<f64> {
-    let floats = |v: &Value| match v {
-        Value::Formula { how: Some(r), .. } => inexact_leaf(r),
-        _ => false,
-    };
-    if !floats(a) && !floats(b) {
+/// What the sides of `a == b` are, found at points by certified
+/// arithmetic.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) enum AtPoints {
+    /// Certainly different at a point, by this much: not the same function.
+    Differ(f64),
+    /// Proven equal at enough points: the same function.
+    Identity,
+    /// Within each other's balls at some point to this many digits, with
+    /// no proof either way.
+    Agree(u32),
+}
+
+/// The most points tried: sides whose difference may have more terms are
+/// left to the canonical forms (a point may still show a difference).
+const MAX_POINTS: usize = 16;
+
+/// The verdict of `a == b` over symbols by certified arithmetic at points,
+/// when a side rests on a number with no exact form made from exact ones
+/// (`cos(1e-9) t`, `cos(pi/7) t`); None when neither does, when a side
+/// cannot be replayed with numbers, or for axes assumed to be unit
+/// vectors (a point off the sphere proves nothing).
+pub(super) fn at_points(a: &Value, b: &Value) -> Option<AtPoints> {
+    if !rests_on_float(a) && !rests_on_float(b) {
         return None;
     }
     let mut names = Vec::new();
@@ -37,28 +69,146 @@ pub(super) fn witnessed_different(a: &Value, b: &Value) -> Option<f64> {
             _ => {}
         }
     }
-    if names.iter().any(|s| s.unit || s.is_phase()) {
+    names.retain(|s| !s.is_phase());
+    let mut seen = std::collections::HashSet::new();
+    names.retain(|s| seen.insert(s.clone()));
+    if names.is_empty() || names.iter().any(|s| s.unit) {
         return None;
     }
-    let at = |s: &crate::sym::Symbol| {
+    // The monomials (as functions of the symbols) each entry's difference
+    // may hold: how many points prove it zero.
+    let (x, y) = (mat_of(a)?, mat_of(b)?);
+    if (x.rows, x.cols) != (y.rows, y.cols) {
+        return None;
+    }
+    let supports: Vec<Vec<Mono>> = x
+        .data
+        .iter()
+        .zip(&y.data)
+        .map(|(p, q)| support(p, q))
+        .collect();
+    let wanted = supports.iter().map(Vec::len).max().unwrap_or(0).max(1);
+    let points = wanted.min(MAX_POINTS);
+    let mut agree: Option<u32> = None;
+    for k in 0..points {
+        let at = |s: &Symbol| {
+            let i = names.iter().position(|n| n == s)?;
+            let mut v = Value::scalar(point(i, k));
+            v.set_exact(Exact::Typed);
+            Some(v)
+        };
+        let (p, q) = (numbers(a, &at)?, numbers(b, &at)?);
+        match equal(&p, &q)? {
+            Verdict::Differ(d) => return Some(AtPoints::Differ(d)),
+            Verdict::Agree(n) => agree = Some(agree.map_or(n, |m| m.min(n))),
+            Verdict::Equal => {}
+        }
+    }
+    if let Some(n) = agree {
+        return Some(AtPoints::Agree(n));
+    }
+    if wanted > MAX_POINTS {
+        return None;
+    }
+    let at = |s: &Symbol| {
         let i = names.iter().position(|n| n == s)?;
-        let mut v = Value::scalar(0.3719 + 0.1618 * i as f64);
-        v.set_exact(Exact::Typed);
-        Some(v)
+        Some(i)
     };
-    let numbers = |v: &Value| match v {
-        Value::Formula { how: Some(r), .. } => super::replay::numbers(r, &at, &mut Vec::new())
+    supports
+        .iter()
+        .all(|m| independent(m, points, &at))
+        .then_some(AtPoints::Identity)
+}
+
+/// The number of symbol `i` at point `k`: a decimal of four digits in
+/// (0.1, 2.6), exact as typed, spread so that no two symbols or points
+/// share one (positive: lengths and square roots stay in their domains).
+fn point(i: usize, k: usize) -> f64 {
+    let n = (3719 + 1618 * i + 2357 * k + 977 * i * k) % 25000;
+    (1000 + n) as f64 / 10000.0
+}
+
+/// The value of a side with numbers for its symbols, replayed as typed
+/// first (a number is itself).
+fn numbers(v: &Value, at: super::replay::Lookup) -> Option<Value> {
+    match v {
+        Value::Formula { how: Some(r), .. } => super::replay::numbers(r, at, &mut Vec::new())
             .ok()
             .flatten(),
         // (a formula made by no replayable step, a `given` name: its
         // canonical form at the numbers, exact as typed first)
-        Value::Formula { how: None, kind, m } => super::replay::canonical(kind, m, &at),
+        Value::Formula { how: None, kind, m } => super::replay::canonical(kind, m, at),
         v => Some(v.clone()),
-    };
-    let (x, y) = (numbers(a)?, numbers(b)?);
-    match equal(&x, &y) {
-        Some(Verdict::Differ(d)) => Some(d),
-        _ => None,
+    }
+}
+
+/// The monomials of p and q as functions of the symbols: each with its
+/// constant factors (π, phases, calls of no symbol) left out, distinct.
+fn support(p: &Expr, q: &Expr) -> Vec<Mono> {
+    let mut out = BTreeSet::new();
+    for m in p.terms.keys().chain(q.terms.keys()) {
+        let f: Mono = m
+            .iter()
+            .filter(|(v, _)| match v {
+                Var::Pi => false,
+                Var::Sym(s) | Var::Z(s) => !s.is_phase(),
+                Var::Call(c) => {
+                    let mut names = Vec::new();
+                    c.args.iter().for_each(|e| e.symbols(&mut names));
+                    names.iter().any(|s| !s.is_phase())
+                }
+            })
+            .cloned()
+            .collect();
+        out.insert(f);
+    }
+    out.into_iter().collect()
+}
+
+/// True when the monomials' values at the first `points` points form a
+/// matrix of full column rank (each monomial a column), well above
+/// rounding: a sum of them that is zero at every point has every
+/// coefficient 0.
+fn independent(monos: &[Mono], points: usize, index: &dyn Fn(&Symbol) -> Option<usize>) -> bool {
+    if monos.is_empty() {
+        // (both entries 0: nothing to prove)
+        return true;
+    }
+    if monos.len() > points {
+        return false;
+    }
+    let mut m = nalgebra::DMatrix::<nalgebra::Complex<f64>>::zeros(points, monos.len());
+    for (j, mono) in monos.iter().enumerate() {
+        let e = Expr {
+            terms: [(mono.clone(), crate::sym::coef::Coef::one())]
+                .into_iter()
+                .collect(),
+        };
+        for k in 0..points {
+            let at = |s: &Symbol| index(s).map(|i| point(i, k));
+            let Some((re, im)) = e.eval_c(&at) else {
+                return false;
+            };
+            if !(re.is_finite() && im.is_finite()) {
+                return false;
+            }
+            m[(k, j)] = nalgebra::Complex::new(re, im);
+        }
+    }
+    let sv = m.svd(false, false).singular_values;
+    let (lo, hi) = sv.iter().fold((f64::INFINITY, 0f64), |(lo, hi), s| {
+        (lo.min(*s), hi.max(*s))
+    });
+    hi > 0.0 && lo > 1e-8 * hi
+}
+
+/// True when a side rests on a number with no exact form made from exact
+/// ones: a leaf of its recipe is one, or it is one.
+fn rests_on_float(v: &Value) -> bool {
+    match v {
+        Value::Formula { how: Some(r), .. } => inexact_leaf(r),
+        v @ Value::Num { .. } => v.may_be_exact() && v.exact_form().is_none(),
+        _ => false,
     }
 }
 

@@ -13,7 +13,10 @@ impl Expr {
         self.eval_c(at).map(|(re, _)| re)
     }
 
-    fn eval_c(&self, at: &dyn Fn(&Symbol) -> Option<f64>) -> Option<(f64, f64)> {
+    /// The complex value with numbers for the symbols ((re, im): a
+    /// monomial in z = e^{iθ} alone is complex); None when a symbol has no
+    /// number.
+    pub fn eval_c(&self, at: &dyn Fn(&Symbol) -> Option<f64>) -> Option<(f64, f64)> {
         let (mut sre, mut sim) = (0.0, 0.0);
         for (m, c) in &self.terms {
             let (mut re, mut im) = c.to_c64();

@@ -509,6 +509,12 @@ impl Expr {
     /// A one-argument function: evaluated when the argument is a number,
     /// else kept as a call.
     pub fn apply(f: Func, x: &Expr, num: fn(f64) -> f64) -> Expr {
+        // (asin, acos, atan at the book's angles: exactly rπ, `super::arc`)
+        if matches!(f, Func::Asin | Func::Acos | Func::Atan)
+            && let Some(e) = super::arc::inverse(f, x)
+        {
+            return e;
+        }
         match x.as_f64() {
             Some(v) if num(v).is_finite() => Expr::float(num(v)),
             _ => Expr::call(f, vec![x.clone()]),
@@ -540,6 +546,9 @@ impl Expr {
     }
     /// atan2(y, x), a number when both are.
     pub fn atan2(y: &Expr, x: &Expr) -> Expr {
+        if let Some(e) = super::arc::atan2(y, x) {
+            return e;
+        }
         match (y.as_f64(), x.as_f64()) {
             (Some(a), Some(b)) => Expr::float(a.atan2(b)),
             _ => Expr::call(Func::Atan2, vec![y.clone(), x.clone()]),

@@ -5,6 +5,7 @@
 //! the book's closed forms over it (Rodrigues, Proposition 3.16, the
 //! adjoint), and `print` the book's notation, its shorthand and LaTeX.
 
+pub mod arc;
 pub mod axis;
 pub mod branch;
 pub mod coef;
