@@ -185,6 +185,14 @@ sqrt(2) + sqrt(3) == sqrt(5)                  # false: the difference is not 0
 # precision (see the end of this file); ≈ is the question to ask.
 assert sqrt(1 + sqrt(2))^2 ≈ 1 + sqrt(2)
 assert sqrt(1 + sqrt(2))^2*t5 ≈ (1 + sqrt(2))*t5
+# Numbers made from exact ones are decided by how they were made, never by
+# their floats: the cyclotomic sum is exactly 1/2 (its float is not), e², ln 6
+# and π/4 have normal forms; over a symbol, at points, certified.
+assert (cos(pi/7) + cos(3pi/7) + cos(5pi/7))*t5 == t5/2
+assert exp(1)^2 == exp(2)
+assert log(2) + log(3) == log(6)
+assert atan(1) == pi/4
+cos(1e-9)*t5 == t5                            # false: cos(1e-9) is not 1
 
 # --- constant offsets fold like angles (π/5, 0.3); cot/sec/csc bare ----------
 given s1, s2 : scalar
