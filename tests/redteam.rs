@@ -540,3 +540,26 @@ fn an_index_with_no_number_is_refused_by_name() {
     let out = common::printed("v = (1, 2, 3)\nn = 2\nv[n]");
     assert_eq!(out.lines().last(), Some("2"));
 }
+
+/// A small expression keeps its terms: float coefficients were dropped
+/// below 1e-13 absolutely, so `exp(-40) cos(t)` printed 0 (and bound
+/// later gave 0). Noise is now dropped only when it is also below 1e-13 of
+/// the largest coefficient.
+#[test]
+fn a_small_coefficient_is_a_term_not_noise() {
+    let lines = common::json("given t : scalar\nx = exp(-40)*cos(t + 0.3)\nx\nt = 0\nx");
+    let shown = lines[1]["value"].as_str().unwrap_or_default().to_string();
+    assert!(
+        shown.contains("e-18") && shown.contains("cos(t + 0.3)"),
+        "{shown}"
+    );
+    let bound = lines[3]["value"].as_f64().expect("a number");
+    let want = (-40f64).exp() * 0.3f64.cos();
+    assert!((bound - want).abs() <= 1e-15 * want, "{bound} vs {want}");
+    let lines = common::json("given t : scalar\nsin(1)*1e-14*cos(t) + 1e-14*sin(t)");
+    let shown = lines[0]["value"].as_str().unwrap_or_default().to_string();
+    assert!(
+        shown.contains("cos(t)") && shown.contains("sin(t)"),
+        "{shown}"
+    );
+}

@@ -118,7 +118,8 @@ pub fn realize(e: &Expr, groups: &[Vec<Symbol>], powers: &[Power]) -> Real {
     for c in out.values_mut() {
         *c = real_part(c);
     }
-    out.retain(|_, c| !negligible(c));
+    let scale = largest(out.values());
+    out.retain(|_, c| !negligible(c, scale));
     out
 }
 
@@ -177,11 +178,21 @@ fn power_form(k: i32, sin_basis: bool) -> Vec<((u32, u32), Coef)> {
     out.into_iter().filter(|(_, c)| !c.is_zero()).collect()
 }
 
-fn negligible(c: &Coef) -> bool {
+/// True for a coefficient that is rounding noise among `all`: exactly 0,
+/// or a float below 1e-13 both absolutely and relative to the largest
+/// coefficient. (Absolute alone dropped genuine terms of a small
+/// expression: `exp(-40) cos(t)` printed 0, and bound later was 0.)
+fn negligible(c: &Coef, scale: f64) -> bool {
     match c {
         Coef::Exact { re, .. } => re.is_zero(),
-        Coef::Approx { re, .. } => re.abs() < 1e-13,
+        Coef::Approx { re, .. } => re.abs() < 1e-13 && re.abs() <= 1e-13 * scale,
     }
+}
+
+/// The largest real part among the coefficients (the scale of
+/// [`negligible`]).
+fn largest<'a>(all: impl Iterator<Item = &'a Coef>) -> f64 {
+    all.map(|c| c.to_c64().0.abs()).fold(0.0f64, f64::max)
 }
 
 /// Real terms being counted: (monomial, canonical exponents) → the
@@ -433,7 +444,8 @@ fn fold_offsets(real: Real) -> Real {
             }
         }
     }
-    out.retain(|_, c| !negligible(c));
+    let scale = largest(out.values());
+    out.retain(|_, c| !negligible(c, scale));
     out
 }
 
