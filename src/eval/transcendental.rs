@@ -19,91 +19,125 @@
 use std::collections::{BTreeMap, HashMap};
 
 use super::value::Value;
+use crate::sym::Expr;
 use crate::sym::coef::{Coef, Rat, Surd};
+use crate::sym::expr::Var;
 use crate::syntax::ast::BinOp;
 use crate::values::exact::Operation;
+use num_traits::Zero;
 
-/// A number in one of the two normal forms (the module's doc).
+/// A number in one of the two normal forms (the module's doc). The
+/// exponent q and the constant a are exact real constants of the canonical
+/// form: square roots and powers of π (so e^π and ln 2 + π have forms too;
+/// equal forms are then still equal numbers, though a difference proves
+/// nothing there).
 #[derive(Debug, Clone, PartialEq)]
 enum Form {
-    /// s·e^q, s ≠ 0.
-    Exp { s: Surd, q: Surd },
+    /// s·e^q, s ≠ 0 algebraic.
+    Exp { s: Surd, q: Expr },
     /// a + Σ c_p ln p, every c_p ≠ 0.
-    Log { a: Surd, c: BTreeMap<u64, Rat> },
+    Log { a: Expr, c: BTreeMap<u64, Rat> },
     /// atan α of an exact real α: atan2(y, x) with x > 0 is atan(y/x),
     /// asin α is atan(α/√(1 − α²)), acos α for α > 0 is atan(√(1 − α²)/α)
     /// (atan is one to one: equal α, equal angles).
     Atan(Surd),
 }
 
-/// The largest integer factored into primes by trial division (its
-/// square root is the last divisor tried).
-const MAX_FACTORED: u64 = 1_000_000_000_000;
+/// The last divisor tried when factoring into primes: what is left above
+/// it, if below its square, is prime.
+const MAX_DIVISOR: u64 = 1_000_000;
 
 /// The largest integer power taken of a form.
-const MAX_POWER: i64 = 64;
+const MAX_POWER: i64 = 1024;
+
+/// An exact real number as a constant expression.
+fn constant(s: Surd) -> Expr {
+    if s.is_zero() {
+        Expr::zero()
+    } else {
+        Expr::constant(Coef::real(s))
+    }
+}
+
+/// The algebraic number a constant expression is (None with π in it).
+fn algebraic(e: &Expr) -> Option<Surd> {
+    if e.terms.is_empty() {
+        return Some(Surd::ZERO);
+    }
+    match e.as_const()? {
+        Coef::Exact { re, im } if im.is_zero() => Some(re),
+        _ => None,
+    }
+}
 
 impl Form {
-    /// An exact real number.
+    /// An exact real algebraic number.
     fn exact(x: Surd) -> Form {
         if x.is_zero() {
             Form::Log {
-                a: x,
+                a: Expr::zero(),
                 c: BTreeMap::new(),
             }
         } else {
             Form::Exp {
                 s: x,
-                q: Surd::ZERO,
+                q: Expr::zero(),
             }
         }
     }
 
-    /// The form as s·e^q, when it is one (an exact number is, with q = 0).
-    fn as_exp(&self) -> Option<(Surd, Surd)> {
+    /// An exact real constant (with π: a + Σ c_p ln p with no logarithm).
+    fn leaf(e: Expr) -> Form {
+        match algebraic(&e) {
+            Some(s) => Form::exact(s),
+            None => Form::Log {
+                a: e,
+                c: BTreeMap::new(),
+            },
+        }
+    }
+
+    /// The form as s·e^q, when it is one (an algebraic number is, with
+    /// q = 0).
+    fn as_exp(&self) -> Option<(Surd, Expr)> {
         match self {
             Form::Exp { s, q } => Some((s.clone(), q.clone())),
-            Form::Log { a, c } if c.is_empty() && !a.is_zero() => Some((a.clone(), Surd::ZERO)),
+            Form::Log { a, c } if c.is_empty() => {
+                let s = algebraic(a)?;
+                (!s.is_zero()).then(|| (s, Expr::zero()))
+            }
             _ => None,
         }
     }
 
-    /// The form as a + Σ c_p ln p, when it is one (an exact number is).
-    fn as_log(&self) -> Option<(Surd, BTreeMap<u64, Rat>)> {
+    /// The form as a + Σ c_p ln p, when it is one (an algebraic number is).
+    fn as_log(&self) -> Option<(Expr, BTreeMap<u64, Rat>)> {
         match self {
             Form::Log { a, c } => Some((a.clone(), c.clone())),
-            Form::Exp { s, q } if q.is_zero() => Some((s.clone(), BTreeMap::new())),
+            Form::Exp { s, q } if q.is_zero() => Some((constant(s.clone()), BTreeMap::new())),
             _ => None,
         }
     }
 
-    /// The exact real number the form is, if it is one.
+    /// The exact real algebraic number the form is, if it is one.
     fn as_surd(&self) -> Option<Surd> {
-        match self.as_exp() {
-            Some((s, q)) if q.is_zero() => Some(s),
-            None if matches!(self, Form::Log { a, c } if a.is_zero() && c.is_empty()) => {
-                Some(Surd::ZERO)
-            }
+        match self {
+            Form::Exp { s, q } if q.is_zero() => Some(s.clone()),
+            Form::Log { a, c } if c.is_empty() => algebraic(a),
             _ => None,
         }
     }
 
     /// The exact rational the form is, if it is one.
     fn as_rat(&self) -> Option<Rat> {
-        match self.as_exp() {
-            Some((s, q)) if q.is_zero() => s.as_rat(),
-            None if matches!(self, Form::Log { a, c } if a.is_zero() && c.is_empty()) => {
-                Some(Rat::ZERO)
-            }
-            _ => None,
-        }
+        self.as_surd()?.as_rat()
     }
 
-    /// The form of a sum a + Σ c_p ln p, s·e^q when no logarithm is left.
-    fn log(a: Surd, mut c: BTreeMap<u64, Rat>) -> Form {
+    /// The form of a sum a + Σ c_p ln p.
+    fn log(a: Expr, mut c: BTreeMap<u64, Rat>) -> Form {
         c.retain(|_, r| !r.is_zero());
         if c.is_empty() {
-            return Form::exact(a);
+            return Form::leaf(a);
         }
         Form::Log { a, c }
     }
@@ -147,16 +181,34 @@ impl Form {
                 q: q.add(&r),
             });
         }
-        // (a logarithm times a rational)
-        let (k, (a, c)) = match (self.as_rat(), o.as_rat()) {
-            (Some(k), _) => (k, o.as_log()?),
-            (_, Some(k)) => (k, self.as_log()?),
-            _ => return None,
+        // (a logarithm times a rational; a constant times an algebraic)
+        let by = |k: &Form, x: &Form| -> Option<Form> {
+            let (a, c) = x.as_log()?;
+            if let Some(k) = k.as_rat() {
+                return Some(Form::log(
+                    a.scale(&Coef::rat(k.clone())),
+                    c.into_iter().map(|(p, r)| (p, r.mul(&k))).collect(),
+                ));
+            }
+            let k = k.as_surd()?;
+            c.is_empty().then(|| Form::leaf(a.scale(&Coef::real(k))))
         };
-        Some(Form::log(
-            a.scale(&k),
-            c.into_iter().map(|(p, r)| (p, r.mul(&k))).collect(),
-        ))
+        by(self, o).or_else(|| by(o, self))
+    }
+
+    /// x / y: x·(1/y), or the rational k when x and y are logarithms with
+    /// x = k·y (`log(4)/log(2)` is 2).
+    fn div(&self, o: &Form) -> Option<Form> {
+        if let (Some((a, c)), Some((b, d))) = (self.as_log(), o.as_log())
+            && let Some((p, r)) = d.iter().next()
+        {
+            let k = c.get(p)?.mul(&r.inv()?);
+            let scaled: BTreeMap<u64, Rat> = d.iter().map(|(p, r)| (*p, r.mul(&k))).collect();
+            if c == scaled && a == b.scale(&Coef::rat(k.clone())) {
+                return Some(Form::exact(Surd::rat(k)));
+            }
+        }
+        self.mul(&o.recip()?)
     }
 
     fn recip(&self) -> Option<Form> {
@@ -178,7 +230,7 @@ impl Form {
         }
         let form = Form::Exp {
             s: out,
-            q: q.scale(&Rat::int(k.abs())),
+            q: q.scale(&Coef::int(k.abs())),
         };
         if k < 0 { form.recip() } else { Some(form) }
     }
@@ -191,7 +243,7 @@ impl Form {
         }
         Some(Form::Exp {
             s: s.sqrt()?,
-            q: q.scale(&Rat::new(1, 2)?),
+            q: q.scale(&Coef::rat(Rat::new(1, 2)?)),
         })
     }
 
@@ -202,13 +254,9 @@ impl Form {
         for (p, r) in c {
             let twice = r.mul(&Rat::int(2)).as_int()?;
             let p = Rat::int(i64::try_from(p).ok()?);
-            let whole = Form::Exp {
-                s: Surd::rat(p.clone()),
-                q: Surd::ZERO,
-            }
-            .powi(twice.div_euclid(2))?
-            .as_exp()?
-            .0;
+            let whole = Form::exact(Surd::rat(p.clone()))
+                .powi(twice.div_euclid(2))?
+                .as_surd()?;
             s = s.mul(&whole)?;
             if twice.rem_euclid(2) == 1 {
                 s = s.mul(&Surd::sqrt_of(&p)?)?;
@@ -225,10 +273,10 @@ impl Form {
         if r.is_negative() || r.is_zero() {
             return None;
         }
-        let (num, den) = r.small()?;
+        let (num, den) = r.parts();
         let mut c = BTreeMap::new();
         for (n, sign) in [(num, 1), (den, -1)] {
-            for (p, k) in factor(u64::try_from(n).ok()?)? {
+            for (p, k) in factor(&n)? {
                 let e = c.entry(p).or_insert(Rat::ZERO);
                 *e = e.add(&Rat::int(sign * i64::from(k)));
             }
@@ -237,18 +285,25 @@ impl Form {
     }
 }
 
-/// The prime factors of n with their multiplicities, by trial division;
-/// None above [`MAX_FACTORED`].
-fn factor(mut n: u64) -> Option<Vec<(u64, u32)>> {
-    if n > MAX_FACTORED || n == 0 {
+/// The prime factors of n > 0 with their multiplicities, by trial
+/// division up to [`MAX_DIVISOR`]; None when what is left may not be prime
+/// (or n has more than 4096 bits).
+fn factor(n: &num_bigint::BigInt) -> Option<Vec<(u64, u32)>> {
+    use num_traits::{One, ToPrimitive};
+    if n.sign() != num_bigint::Sign::Plus || n.bits() > 4096 {
         return None;
     }
+    let mut n = n.clone();
     let mut out = Vec::new();
     let mut p = 2u64;
-    while p * p <= n {
+    while p <= MAX_DIVISOR && num_bigint::BigInt::from(p) * p <= n {
         let mut k = 0;
-        while n.is_multiple_of(p) {
-            n /= p;
+        loop {
+            let (q, r) = num_integer::Integer::div_rem(&n, &num_bigint::BigInt::from(p));
+            if !r.is_zero() {
+                break;
+            }
+            n = q;
             k += 1;
         }
         if k > 0 {
@@ -256,8 +311,12 @@ fn factor(mut n: u64) -> Option<Vec<(u64, u32)>> {
         }
         p += if p == 2 { 1 } else { 2 };
     }
-    if n > 1 {
-        out.push((n, 1));
+    if !n.is_one() {
+        // (no divisor up to p left it: prime when below p²)
+        if num_bigint::BigInt::from(p) * p <= n {
+            return None;
+        }
+        out.push((n.to_u64()?, 1));
     }
     Some(out)
 }
@@ -275,6 +334,15 @@ pub fn proven_equal(a: &Value, b: &Value) -> bool {
         },
         _ => false,
     }
+}
+
+/// True for an exact real constant: exact real coefficients times powers
+/// of π.
+fn exact_constant(e: &Expr) -> bool {
+    e.terms.iter().all(|(m, c)| {
+        matches!(c, Coef::Exact { im, .. } if im.is_zero())
+            && m.iter().all(|(v, _)| matches!(v, Var::Pi))
+    })
 }
 
 /// The deepest recipe read.
@@ -296,10 +364,7 @@ fn form(v: &Value, memo: &mut HashMap<*const (), Option<Form>>, depth: u32) -> O
         return found.clone();
     }
     let out = match v.exact_form() {
-        Some(e) => match e.data[0].as_const() {
-            Some(Coef::Exact { re, im }) if im.is_zero() => Some(Form::exact(re)),
-            _ => None,
-        },
+        Some(e) => exact_constant(&e.data[0]).then(|| Form::leaf(e.data[0].clone())),
         None => exact.with_recipe(|p| of_recipe(p, memo, depth)).flatten(),
     };
     if let Some(k) = key {
@@ -326,7 +391,7 @@ fn of_recipe(
                 BinOp::Add => x.add(&y),
                 BinOp::Sub => x.add(&y.neg()),
                 BinOp::Mul => x.mul(&y),
-                BinOp::Div => x.mul(&y.recip()?),
+                BinOp::Div => x.div(&y),
                 BinOp::Pow => x.powi(y.as_rat()?.as_int()?),
             }
         }
@@ -374,10 +439,13 @@ mod tests {
 
     #[test]
     fn integers_factor_into_primes() {
-        assert_eq!(factor(360), Some(vec![(2, 3), (3, 2), (5, 1)]));
-        assert_eq!(factor(999_983), Some(vec![(999_983, 1)]));
-        assert_eq!(factor(1), Some(vec![]));
-        assert_eq!(factor(MAX_FACTORED + 1), None);
+        let f = |n: u64| factor(&n.into());
+        assert_eq!(f(360), Some(vec![(2, 3), (3, 2), (5, 1)]));
+        assert_eq!(f(999_983), Some(vec![(999_983, 1)]));
+        assert_eq!(f(1), Some(vec![]));
+        // (a prime above 10¹² may be a product of two above 10⁶)
+        assert_eq!(f(1_000_003 * 1_000_033), None);
+        assert_eq!(f(1 << 60), Some(vec![(2, 60)]));
     }
 
     #[test]
@@ -399,14 +467,17 @@ mod tests {
             .mul(&Form::exact(r(1, 2)))
             .unwrap();
         let root2 = Surd::sqrt_of(&Rat::int(2)).unwrap();
-        assert_eq!(half_ln2.exp().unwrap().as_exp(), Some((root2, Surd::ZERO)));
+        assert_eq!(
+            half_ln2.exp().unwrap().as_exp(),
+            Some((root2, Expr::zero()))
+        );
         // e¹·e¹ = e², and e² ≠ e³
         let e = Form::Exp {
             s: r(1, 1),
-            q: r(1, 1),
+            q: constant(r(1, 1)),
         };
         let e2 = e.mul(&e).unwrap();
-        assert_eq!(e2.as_exp(), Some((r(1, 1), r(2, 1))));
+        assert_eq!(e2.as_exp(), Some((r(1, 1), constant(r(2, 1)))));
         assert_ne!(e2.as_exp(), e.powi(3).unwrap().as_exp());
     }
 }
