@@ -305,3 +305,23 @@ fn exp_log_and_inverse_trig_identities_are_proven() {
     let out = common::printed("atan2(1, -1)\nasin(1/2)");
     assert!(out.contains("2.3562") && out.contains("0.5236"), "{out}");
 }
+
+/// x⁴ == x³·x for x = sin(1) a + cos(2) b + sin(3) c: the floats of the
+/// two expanded forms differ by rounding, and `==` printed false (a wrong
+/// answer) when its points lay on a line (a singular matrix) or the
+/// difference had more terms than points. Points are now scattered; with
+/// more terms than points it cannot decide, and says so.
+#[test]
+fn rounding_apart_over_symbols_is_never_false() {
+    let x = "(sin(1)*a + cos(2)*b + c*sin(3))";
+    let src = format!("given a, b, c : scalar\n{x}^4 == {x}^3*{x}");
+    assert_eq!(last(&src), serde_json::json!(true), "{src}");
+    let y = "(sin(1)*a + cos(2)*b + c*sin(3) + 1)";
+    let src = format!("given a, b, c : scalar\n{y}^4 == {y}^3*{y}");
+    let (out, err) = common::outputs(&src);
+    assert!(!out.trim().ends_with("false"), "{out}");
+    assert!(
+        err.contains("cannot prove them equal or different"),
+        "{err}"
+    );
+}

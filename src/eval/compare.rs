@@ -239,6 +239,21 @@ impl Interp<'_> {
                         undecided = true;
                         None
                     }
+                    // (false by rounding only, of sides made from exact
+                    // numbers that no point decided: not known to differ)
+                    None if !v
+                        && !numbers(a, b)
+                        && super::witness::on_float(a, b)
+                        && super::decide::rounding_only(a, b) =>
+                    {
+                        self.warnings.push(Diagnostic::note(
+                            ErrorKind::Domain,
+                            op_span,
+                            "the two sides differ only by the rounding of numbers made from exact ones, and chasles cannot prove them equal or different",
+                        ).with_help("compare within rounding with ≈ (typed ~=)"));
+                        undecided = true;
+                        None
+                    }
                     None => {
                         if !v && let Some(note) = super::decide::false_note(a, b, op_span) {
                             self.warnings.push(note);

@@ -48,7 +48,7 @@ pub(super) enum AtPoints {
 
 /// The most points tried: sides whose difference may have more terms are
 /// left to the canonical forms (a point may still show a difference).
-const MAX_POINTS: usize = 16;
+const MAX_POINTS: usize = 32;
 
 /// The verdict of `a == b` over symbols by certified arithmetic at points,
 /// when a side rests on a number with no exact form made from exact ones
@@ -121,11 +121,17 @@ pub(super) fn at_points(a: &Value, b: &Value) -> Option<AtPoints> {
 }
 
 /// The number of symbol `i` at point `k`: a decimal of four digits in
-/// (0.1, 2.6), exact as typed, spread so that no two symbols or points
-/// share one (positive: lengths and square roots stay in their domains).
+/// [0.1, 2.6), exact as typed, drawn by a fixed hash of (i, k) so that the
+/// points lie on no line or low curve (points on a line would make the
+/// monomials' matrix singular), and positive (lengths and square roots
+/// stay in their domains).
 fn point(i: usize, k: usize) -> f64 {
-    let n = (3719 + 1618 * i + 2357 * k + 977 * i * k) % 25000;
-    (1000 + n) as f64 / 10000.0
+    let mut h = (i as u64) << 32 ^ (k as u64) ^ 0x9e37_79b9_7f4a_7c15;
+    // (splitmix64's finaliser)
+    h = (h ^ (h >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    h = (h ^ (h >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    h ^= h >> 31;
+    (1000 + h % 25000) as f64 / 10000.0
 }
 
 /// The value of a side with numbers for its symbols, replayed as typed
@@ -200,6 +206,13 @@ fn independent(monos: &[Mono], points: usize, index: &dyn Fn(&Symbol) -> Option<
         (lo.min(*s), hi.max(*s))
     });
     hi > 0.0 && lo > 1e-8 * hi
+}
+
+/// True when a side of `a == b` rests on a number with no exact form
+/// made from exact ones: a `false` read off its float may be rounding (the
+/// caller then cannot decide where [`at_points`] did not).
+pub(super) fn on_float(a: &Value, b: &Value) -> bool {
+    rests_on_float(a) || rests_on_float(b)
 }
 
 /// True when a side rests on a number with no exact form made from exact
