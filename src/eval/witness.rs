@@ -212,7 +212,18 @@ fn independent(monos: &[Mono], points: usize, index: &dyn Fn(&Symbol) -> Option<
 /// made from exact ones: a `false` read off its float may be rounding (the
 /// caller then cannot decide where [`at_points`] did not).
 pub(super) fn on_float(a: &Value, b: &Value) -> bool {
-    rests_on_float(a) || rests_on_float(b)
+    // (a float with no recipe on a side compares as a float, §7)
+    (rests_on_float(a) || rests_on_float(b)) && !plain_float(a) && !plain_float(b)
+}
+
+/// True when a side is, or was made from, a float with no recipe (a
+/// matrix exponential of numbers).
+fn plain_float(v: &Value) -> bool {
+    match v {
+        Value::Formula { how: Some(r), .. } => leaf_where(r, &|v| !v.may_be_exact()),
+        v @ Value::Num { .. } => !v.may_be_exact(),
+        _ => false,
+    }
 }
 
 /// True when a side rests on a number with no exact form made from exact
@@ -228,6 +239,14 @@ fn rests_on_float(v: &Value) -> bool {
 /// True when a leaf of recipe `r` is a number with no exact form that was
 /// made from exact ones (a float whose rounding a canonical form may hide).
 fn inexact_leaf(r: &std::rc::Rc<crate::values::recipe::Recipe>) -> bool {
+    leaf_where(r, &|v| v.may_be_exact() && v.exact_form().is_none())
+}
+
+/// True when a numeric leaf of recipe `r` is `what`.
+fn leaf_where(
+    r: &std::rc::Rc<crate::values::recipe::Recipe>,
+    what: &dyn Fn(&Value) -> bool,
+) -> bool {
     use crate::values::recipe::Step;
     let mut seen = std::collections::HashSet::new();
     let mut todo = vec![r];
@@ -237,7 +256,7 @@ fn inexact_leaf(r: &std::rc::Rc<crate::values::recipe::Recipe>) -> bool {
         }
         match &r.step {
             Step::Leaf(v @ Value::Num { .. }) => {
-                if v.may_be_exact() && v.exact_form().is_none() {
+                if what(v) {
                     return true;
                 }
             }
