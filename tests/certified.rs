@@ -325,3 +325,29 @@ fn rounding_apart_over_symbols_is_never_false() {
         "{err}"
     );
 }
+
+/// The transforms of §3.3 are bounded too (session 13: RpToTrans,
+/// TransInv, VecTose3 and se3ToVec of numbers made from exact ones
+/// compared as floats): T T⁻¹ == I, (3.64) and a round trip are proven; a
+/// difference of 1e-6 in p is certain.
+#[test]
+fn transforms_made_from_exact_numbers_are_certified() {
+    let t = "RpToTrans(Rotz(1), (1, 2, 3))";
+    for (src, want) in [
+        (format!("{t} * TransInv({t}) == I"), true),
+        (
+            format!("TransInv({t}) == RpToTrans(Rotz(-1), -Rotz(-1)*(1, 2, 3))"),
+            true,
+        ),
+        (
+            format!("TransInv({t}) == RpToTrans(Rotz(-1), -Rotz(-1)*(1, 2, 3.000001))"),
+            false,
+        ),
+        (
+            "se3ToVec(VecTose3((sin(1), 2, 3, 4, 5, 6))) == (sin(1), 2, 3, 4, 5, 6)".into(),
+            true,
+        ),
+    ] {
+        assert_eq!(last(&src), serde_json::json!(want), "{src}");
+    }
+}

@@ -16,6 +16,7 @@
 use std::collections::HashMap;
 
 use super::ball::{self, Ball};
+use super::balls::{Balls, call, hat, product};
 use super::value::Value;
 use crate::check::ty::Kind;
 use crate::syntax::ast::BinOp;
@@ -150,55 +151,6 @@ fn same(a: &Value, b: &Value, depth: u32) -> bool {
         .unwrap_or(false)
     })
     .unwrap_or(false)
-}
-
-/// A matrix of balls, row by row.
-#[derive(Clone)]
-struct Balls {
-    rows: usize,
-    cols: usize,
-    data: Vec<Ball>,
-}
-
-impl Balls {
-    fn scalar(b: Ball) -> Balls {
-        Balls {
-            rows: 1,
-            cols: 1,
-            data: vec![b],
-        }
-    }
-    fn at(&self, i: usize, j: usize) -> &Ball {
-        &self.data[i * self.cols + j]
-    }
-    fn one(&self) -> Option<&Ball> {
-        (self.data.len() == 1).then(|| &self.data[0])
-    }
-    fn map(&self, f: impl Fn(&Ball) -> Option<Ball>) -> Option<Balls> {
-        Some(Balls {
-            rows: self.rows,
-            cols: self.cols,
-            data: self.data.iter().map(f).collect::<Option<_>>()?,
-        })
-    }
-    fn transpose(&self) -> Balls {
-        let data = (0..self.cols)
-            .flat_map(|j| (0..self.rows).map(move |i| (i, j)))
-            .map(|(i, j)| self.at(i, j).clone())
-            .collect();
-        Balls {
-            rows: self.cols,
-            cols: self.rows,
-            data,
-        }
-    }
-    fn column(data: Vec<Ball>) -> Balls {
-        Balls {
-            rows: data.len(),
-            cols: 1,
-            data,
-        }
-    }
 }
 
 /// The balls of the values met in one evaluation, by their shared form.
@@ -342,28 +294,6 @@ fn arith(op: BinOp, a: &Balls, b: &Balls, prec: usize) -> Option<Balls> {
     }
 }
 
-/// The matrix product `a b`.
-fn product(a: &Balls, b: &Balls, prec: usize) -> Option<Balls> {
-    if a.cols != b.rows {
-        return None;
-    }
-    let mut data = Vec::with_capacity(a.rows * b.cols);
-    for i in 0..a.rows {
-        for j in 0..b.cols {
-            let mut s = ball::mul(a.at(i, 0), b.at(0, j), prec)?;
-            for k in 1..a.cols {
-                s = ball::add(&s, &ball::mul(a.at(i, k), b.at(k, j), prec)?, prec)?;
-            }
-            data.push(s);
-        }
-    }
-    Some(Balls {
-        rows: a.rows,
-        cols: b.cols,
-        data,
-    })
-}
-
 /// `[ ... ]`: the bracket of a 3-vector (3.30), one row of numbers as a
 /// column (as numbers do), or blocks side by side and row under row.
 fn block(widths: &[usize], args: &[Balls]) -> Option<Balls> {
@@ -410,27 +340,6 @@ fn block(widths: &[usize], args: &[Balls]) -> Option<Balls> {
     })
 }
 
-/// [ω] of ω = (x, y, z) (3.30).
-fn hat(w: &[Ball]) -> Balls {
-    let z = Ball::exact(dashu_float::Repr::zero());
-    let n = ball::neg;
-    Balls {
-        rows: 3,
-        cols: 3,
-        data: vec![
-            z.clone(),
-            n(&w[2]),
-            w[1].clone(),
-            w[2].clone(),
-            z.clone(),
-            n(&w[0]),
-            n(&w[1]),
-            w[0].clone(),
-            z,
-        ],
-    }
-}
-
 /// `x[i]`, `M[i, j]` (1-based), as numbers are indexed.
 fn index(x: &Balls, sels: &[crate::values::ops::Sel]) -> Option<Balls> {
     use crate::values::ops::Sel;
@@ -441,154 +350,6 @@ fn index(x: &Balls, sels: &[crate::values::ops::Sel]) -> Option<Balls> {
         [Sel::At(i)] if x.cols == 1 => pick(at(*i, x.rows)?, 0),
         [Sel::At(i)] if x.rows == 1 => pick(0, at(*i, x.cols)?),
         [Sel::At(i), Sel::At(j)] => pick(at(*i, x.rows)?, at(*j, x.cols)?),
-        _ => None,
-    }
-}
-
-/// A builtin on balls: the scalar functions, the rotations about the
-/// axes, and the vector and matrix operations of the exact path.
-fn call(name: &str, args: &[Balls], prec: usize) -> Option<Balls> {
-    let row = crate::builtins::lookup(name)?;
-    let one = |i: usize| args.get(i).and_then(Balls::one);
-    let scalar = |f: fn(&Ball, usize) -> Option<Ball>| {
-        (args.len() == 1).then(|| args[0].map(|x| f(x, prec)))?
-    };
-    let recip = |f: fn(&Ball, usize) -> Option<Ball>| {
-        scalar(f)?.map(|y| ball::div(&ball::int(&1.into()), y, prec))
-    };
-    let zero = || Ball::exact(dashu_float::Repr::zero());
-    let unit = || Ball::exact(dashu_float::Repr::one());
-    match row.name {
-        "sqrt" => scalar(ball::sqrt),
-        "abs" => scalar(|x, _| Some(ball::abs(x))),
-        "sin" => scalar(ball::sin),
-        "cos" => scalar(ball::cos),
-        "tan" => scalar(ball::tan),
-        "cot" => recip(ball::tan),
-        "sec" => recip(ball::cos),
-        "csc" => recip(ball::sin),
-        "exp" if args.first()?.data.len() == 1 => scalar(ball::exp),
-        "log" if args.first()?.data.len() == 1 => scalar(ball::ln),
-        "atan" => scalar(ball::atan),
-        "asin" => scalar(ball::asin),
-        "acos" => scalar(ball::acos),
-        "atan2" if args.len() == 2 => Some(Balls::scalar(ball::atan2(one(0)?, one(1)?, prec)?)),
-        "Rotx" | "Roty" | "Rotz" => {
-            let t = one(0)?;
-            let (c, s) = (ball::cos(t, prec)?, ball::sin(t, prec)?);
-            let ms = ball::neg(&s);
-            let (o, z) = (unit(), zero());
-            let data = match row.name {
-                "Rotx" => vec![o, z.clone(), z.clone(), z.clone(), c.clone(), ms, z, s, c],
-                "Roty" => vec![c.clone(), z.clone(), s, z.clone(), o, z.clone(), ms, z, c],
-                _ => vec![c.clone(), ms, z.clone(), s, c, z.clone(), z.clone(), z, o],
-            };
-            Some(Balls {
-                rows: 3,
-                cols: 3,
-                data,
-            })
-        }
-        "Rot" => {
-            // (Rodrigues, 3.51, about the axis normalized)
-            let (w, t) = (args.first()?, one(1)?);
-            if (w.rows, w.cols) != (3, 1) {
-                return None;
-            }
-            let n = call("norm", &args[..1], prec)?;
-            let w = w.map(|x| ball::div(x, n.one()?, prec))?;
-            let k = hat(&w.data);
-            let k2 = product(&k, &k, prec)?;
-            let (s, c) = (ball::sin(t, prec)?, ball::cos(t, prec)?);
-            let vc = ball::sub(&unit(), &c, prec)?;
-            let mut data = Vec::with_capacity(9);
-            for i in 0..3 {
-                for j in 0..3 {
-                    let d = if i == j { unit() } else { zero() };
-                    let x = ball::add(&d, &ball::mul(&s, k.at(i, j), prec)?, prec)?;
-                    data.push(ball::add(&x, &ball::mul(&vc, k2.at(i, j), prec)?, prec)?);
-                }
-            }
-            Some(Balls {
-                rows: 3,
-                cols: 3,
-                data,
-            })
-        }
-        "transpose" | "RotInv" => Some(args.first()?.transpose()),
-        "VecToso3" => {
-            let w = args.first()?;
-            ((w.rows, w.cols) == (3, 1)).then(|| hat(&w.data))
-        }
-        "so3ToVec" => {
-            let m = args.first()?;
-            ((m.rows, m.cols) == (3, 3)).then(|| {
-                Balls::column(vec![
-                    m.at(2, 1).clone(),
-                    m.at(0, 2).clone(),
-                    m.at(1, 0).clone(),
-                ])
-            })
-        }
-        "dot" => {
-            let (a, b) = (args.first()?, args.get(1)?);
-            if a.data.len() != b.data.len() || a.cols != 1 || b.cols != 1 {
-                return None;
-            }
-            let mut s = zero();
-            for (x, y) in a.data.iter().zip(&b.data) {
-                s = ball::add(&s, &ball::mul(x, y, prec)?, prec)?;
-            }
-            Some(Balls::scalar(s))
-        }
-        "cross" => {
-            let (a, b) = (args.first()?, args.get(1)?);
-            if (a.rows, a.cols, b.rows, b.cols) != (3, 1, 3, 1) {
-                return None;
-            }
-            product(&hat(&a.data), b, prec)
-        }
-        "norm" => {
-            let a = args.first()?;
-            if a.cols != 1 && a.rows != 1 {
-                return None;
-            }
-            let mut s = zero();
-            for x in &a.data {
-                s = ball::add(&s, &ball::mul(x, x, prec)?, prec)?;
-            }
-            Some(Balls::scalar(ball::sqrt(&s, prec)?))
-        }
-        "trace" => {
-            let a = args.first()?;
-            if a.rows != a.cols {
-                return None;
-            }
-            let mut s = zero();
-            for i in 0..a.rows {
-                s = ball::add(&s, a.at(i, i), prec)?;
-            }
-            Some(Balls::scalar(s))
-        }
-        "det" => {
-            let a = args.first()?;
-            let m = |i, j| a.at(i, j);
-            let d2 = |a: &Ball, b: &Ball, c: &Ball, d: &Ball| {
-                ball::sub(&ball::mul(a, d, prec)?, &ball::mul(b, c, prec)?, prec)
-            };
-            match (a.rows, a.cols) {
-                (1, 1) => Some(a.clone()),
-                (2, 2) => Some(Balls::scalar(d2(m(0, 0), m(0, 1), m(1, 0), m(1, 1))?)),
-                (3, 3) => {
-                    let t0 = ball::mul(m(0, 0), &d2(m(1, 1), m(1, 2), m(2, 1), m(2, 2))?, prec)?;
-                    let t1 = ball::mul(m(0, 1), &d2(m(1, 0), m(1, 2), m(2, 0), m(2, 2))?, prec)?;
-                    let t2 = ball::mul(m(0, 2), &d2(m(1, 0), m(1, 1), m(2, 0), m(2, 1))?, prec)?;
-                    let s = ball::add(&ball::sub(&t0, &t1, prec)?, &t2, prec)?;
-                    Some(Balls::scalar(s))
-                }
-                _ => None,
-            }
-        }
         _ => None,
     }
 }

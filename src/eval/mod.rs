@@ -4,6 +4,7 @@
 
 pub mod apply;
 mod ball;
+mod balls;
 mod certify;
 mod chain;
 mod compare;
