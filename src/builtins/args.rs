@@ -11,8 +11,10 @@ use crate::diagnostics::{Diagnostic, ErrorKind};
 use crate::lie::{LieGroup, Mat2, Mat3, Mat4, SE2, SE3, SO2, SO3, Vec3, Vec4, Vec6, so3};
 use crate::mech::Mechanism;
 use crate::syntax::ast::Span;
-use crate::values::convert::{Group, Membership, membership};
+use crate::values::convert::{Group, Membership};
 use crate::values::domain::Decided;
+use crate::values::exact::Exact;
+use crate::values::exact_mat::membership;
 use crate::values::value::Value;
 
 /// A static argument error: which argument (None: the whole call), the
@@ -198,7 +200,39 @@ impl Args<'_> {
         }
         let span = self.span(i);
         let m = m.clone();
-        read_group(&m, group, span, self.warnings)
+        let exact = match &self.vals[i] {
+            Value::Num { exact, .. } => exact.clone(),
+            _ => Default::default(),
+        };
+        read_group(&m, &exact, group, span, self.warnings)
+    }
+
+    /// `MatrixLog3` of argument `i` read as a rotation (§3.2.3.3): at θ
+    /// within rounding of π, the branch is decided by R's exact form when
+    /// it has one (θ = π exactly when tr R = −1; else the skew part's sign).
+    pub fn so3_log(&mut self, i: usize) -> Result<Vec3, Diagnostic> {
+        let r = self.so3(i)?;
+        Ok(match self.half_turn(i) {
+            Some(d) => so3::log_decided(r.matrix(), &d),
+            None => r.log(),
+        })
+    }
+
+    /// `MatrixLog6` of argument `i` read as a transform (§3.3.3.2), the
+    /// rotation's branch decided as in [`Args::so3_log`].
+    pub fn se3_log(&mut self, i: usize) -> Result<Vec6, Diagnostic> {
+        let t = self.se3(i)?;
+        Ok(match self.half_turn(i) {
+            Some(d) => crate::lie::se3::log_decided(t.matrix(), &d),
+            None => t.log(),
+        })
+    }
+
+    /// The θ = π decision of argument `i`'s logarithm by its exact form
+    /// ([`crate::values::exact_mat::half_turn`]), when it was read as it
+    /// is (not projected: the exact form is of the matrix as given).
+    pub fn half_turn(&self, i: usize) -> Option<so3::HalfTurn> {
+        crate::values::exact_mat::half_turn(self.vals.get(i)?)
     }
 
     /// Argument `i` as a rotation R ∈ SO(3) (§3.2.1), read per `read_group` (LANGUAGE.md §5).
@@ -278,14 +312,17 @@ impl Args<'_> {
     }
 }
 
-/// Reads `m` (of the right shape) as an element of `group` per LANGUAGE.md §5.
+/// Reads `m` (of the right shape, carrying `exact`) as an element of
+/// `group` per LANGUAGE.md §5, decided by its exact form where its floats
+/// are within rounding of the group ([`membership`]).
 pub fn read_group(
     m: &Num,
+    exact: &Exact,
     group: Group,
     span: Span,
     warnings: &mut Vec<Diagnostic>,
 ) -> Result<Num, Diagnostic> {
-    match membership(m, group) {
+    match membership(m, exact, group) {
         Membership::Exact(x) => Ok(x),
         Membership::Projected(p, d) => {
             warnings.push(

@@ -80,9 +80,23 @@ fn distance_value(a: &Args, g: Group) -> Result<Value, Diagnostic> {
             format!("expected a {0}×{0} matrix", g.size()),
         ));
     }
-    Ok(Value::scalar(
-        convert::distance(m, g).unwrap_or(f64::INFINITY),
-    ))
+    let d = convert::distance(m, g).unwrap_or(f64::INFINITY);
+    // (within rounding of 0: the exact matrix's own distance when it has
+    // one — 1.41e-20 for [1, 1e-20, 0; 0, 1, 0; 0, 0, 1], 0 for an exact
+    // rotation — where the floats' is rounding noise)
+    let exact = (d <= convert::ACCEPT_TOL)
+        .then(|| crate::values::exact_mat::form(a.value(0)))
+        .flatten()
+        .and_then(|e| crate::values::exact_mat::group_gap(&e, g));
+    Ok(Value::scalar(exact.map_or(d, |gap| gap.distance)))
+}
+
+/// `TestIfSO3`/`TestIfSE3` (§3.6): the book's distance `d` (a float) below
+/// 1e-3, decided by the exact form of `v` when `d` is within rounding of
+/// 1e-3 (a distance of exactly 1e-3 is not below it).
+fn test_below(v: &Value, g: Group, d: f64) -> bool {
+    crate::values::exact_mat::distance_below(v, g, d, project::TEST_TOL)
+        .unwrap_or(d.abs() < project::TEST_TOL)
 }
 
 fn projection(a: &Args, g: Group) -> Result<Value, Diagnostic> {
@@ -372,7 +386,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
             aliases: &["distance_to_so3"],
             signature: "DistanceToSO3(mat: 3×3) -> scalar",
             section: "§3.6",
-            doc: "‖MᵀM − I‖_F if det M > 0, else 1e9: how far M is from SO(3)",
+            doc: "‖MᵀM − I‖_F if det M > 0, else 1e9: how far M is from SO(3) (of the exact M when it has one)",
             example: "DistanceToSO3([1, 0, 0; 0, 0.1, -0.95; 0, 1, 0.1])",
             area: Tests,
             typing: Typing::Fixed {
@@ -412,11 +426,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             },
             eval: |a| {
                 let m = a.mat(0)?;
-                Ok(Value::Bool(
-                    m.shape() == (3, 3)
-                        && SO3::distance(&Mat3::from_iterator(m.iter().copied()))
-                            < project::TEST_TOL,
-                ))
+                if m.shape() != (3, 3) {
+                    return Ok(Value::Bool(false));
+                }
+                let d = SO3::distance(&Mat3::from_iterator(m.iter().copied()));
+                Ok(Value::Bool(test_below(a.value(0), Group::SO3, d)))
             },
         },
         Builtin {
@@ -434,11 +448,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             },
             eval: |a| {
                 let m = a.mat(0)?;
-                Ok(Value::Bool(
-                    m.shape() == (4, 4)
-                        && SE3::distance(&Mat4::from_iterator(m.iter().copied()))
-                            < project::TEST_TOL,
-                ))
+                if m.shape() != (4, 4) {
+                    return Ok(Value::Bool(false));
+                }
+                let d = SE3::distance(&Mat4::from_iterator(m.iter().copied()));
+                Ok(Value::Bool(test_below(a.value(0), Group::SE3, d)))
             },
         },
         // ---- mechanisms ----

@@ -162,7 +162,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: v3,
                 frames: FrameRule::Outer(0),
             },
-            eval: |a| Ok(v3val(&a.so3(0)?.log())),
+            eval: |a| Ok(v3val(&a.so3_log(0)?)),
         },
         Builtin {
             name: "Rot",

@@ -1,0 +1,116 @@
+//! Decisions on matrices and vectors by their exact forms (LANGUAGE.md §3,
+//! §5, §7; issue 21: never a wrong answer). A branch chosen by comparing
+//! floats with a threshold — the θ = π case of the matrix logarithm
+//! (§3.2.3.3), the zero vector of `Normalize`, membership of SO(3) and
+//! SE(3), the book's `NearZero` and `TestIfSO3` tolerances — is chosen by
+//! the exact form when the operands have one: the floats of an exact
+//! matrix may be on the other side of the threshold (a skew part of
+//! exactly −1e-20 is 0 as floats, so a rotation by π − 1e-20 about −ẑ read
+//! as a half turn gave +ẑπ, 2π away in the coordinates).
+
+mod common;
+
+use common::{error, outputs, printed};
+
+/// The numbers `src`'s last statement prints.
+fn numbers(src: &str) -> Vec<f64> {
+    common::last_numbers(src)
+}
+
+fn close(x: &[f64], want: &[f64]) -> bool {
+    x.len() == want.len()
+        && x.iter()
+            .zip(want)
+            .all(|(a, b)| (a - b).abs() <= 1e-15 * b.abs().max(1.0))
+}
+
+/// A rotation by π − 1e-20 about −ẑ, typed exactly (rational: cosθ =
+/// (1 − u²)/(1 + u²), sinθ = 2u/(1 + u²) with u = tan(θ/2) = −2·10²⁰): its
+/// skew part is (0, 0, −1e-20) exactly, far below the rounding of its
+/// floats, and tr R = −1 + 1e-40.
+const NEAR_HALF_TURN: &str =
+    "u = -2e20\nc = (1 - u^2)/(1 + u^2)\ns = 2*u/(1 + u^2)\nR = [c, -s, 0; s, c, 0; 0, 0, 1]\n";
+
+/// Just off θ = π, exactly: not a half turn. The log is −ẑ(π − 1e-20)
+/// (the skew part fixes the sign), with no note that −ω̂ is as valid.
+#[test]
+fn log_just_off_pi_is_not_a_half_turn() {
+    let pi = std::f64::consts::PI;
+    let src = format!("{NEAR_HALF_TURN}MatrixLog3(R)");
+    assert!(
+        close(&numbers(&src), &[0.0, 0.0, -pi]),
+        "{:?}",
+        numbers(&src)
+    );
+    let (_, err) = outputs(&src);
+    assert!(!err.contains("θ = π"), "{err}");
+    // the same rotation block in a transform: ω = −ẑπ, v = G⁻¹(θ)p
+    let src = format!("{NEAR_HALF_TURN}MatrixLog6([R, (1, 2, 3); 0, 0, 0, 1])");
+    let s = numbers(&src);
+    assert!(close(&s[..3], &[0.0, 0.0, -pi]), "{s:?}");
+    // v = p − ½[φ]p + k(π)[φ]²p with k(π) = 1/π²: (π/2·2·… ) — check by
+    // exp: the round trip gives the transform back
+    let back = format!(
+        "{NEAR_HALF_TURN}T = [R, (1, 2, 3); 0, 0, 0, 1]\nMatrixExp6(VecTose3(MatrixLog6(T))) - T"
+    );
+    let d = numbers(&back);
+    assert!(d.iter().all(|x| x.abs() <= 1e-14), "{d:?}");
+}
+
+/// Exactly at θ = π: the half-turn branch, whatever the rounding of the
+/// skew part, with the book's sign (3.58) and the note.
+#[test]
+fn log_at_pi_is_a_half_turn_exactly() {
+    let pi = std::f64::consts::PI;
+    for (src, axis) in [
+        ("Rot((1,2,2)/3, pi)", [1.0, 2.0, 2.0]),
+        ("Rot((-1,2,-2)/3, pi)", [1.0, -2.0, 2.0]),
+        ("[-1, 0, 0; 0, -1, 0; 0, 0, 1]", [0.0, 0.0, 3.0]),
+        // 2ŵŵᵀ − I for ŵ = (1, 2, 2)/3, with exact entries
+        (
+            "[2/9 - 1, 4/9, 4/9; 4/9, 8/9 - 1, 8/9; 4/9, 8/9, 8/9 - 1]",
+            [1.0, 2.0, 2.0],
+        ),
+    ] {
+        let want: Vec<f64> = axis.iter().map(|a| a / 3.0 * pi).collect();
+        let src = format!("MatrixLog3({src})");
+        assert!(close(&numbers(&src), &want), "{src}: {:?}", numbers(&src));
+        let (_, err) = outputs(&src);
+        assert!(err.contains("θ = π"), "{src}: {err}");
+    }
+}
+
+/// Membership of SO(3) by the exact form (LANGUAGE.md §5): an exact
+/// rotation is one however far its floats have strayed (the identity
+/// below, whose floats are 18.4 off), and is computed with at the floats
+/// nearest its entries; the contract's tolerances (1e-9 taken as it is,
+/// 1e-2 projected) are measured on the exact matrix.
+#[test]
+fn membership_is_decided_exactly() {
+    let out = printed(&format!("{NEAR_HALF_TURN}R"));
+    assert!(out.ends_with(": SO(3)\n"), "{out}");
+    let out = printed("[0.6, -0.8, 0; 0.8, 0.6, 0; 0, 0, 1]");
+    assert!(out.ends_with(": SO(3)\n"), "{out}");
+    // cos(3π/2)/1e-17 is 0 exactly and −18.37 in floats
+    let z = "Z = [1, cos(3*pi/2)/1e-17, 0; 0, 1, 0; 0, 0, 1]\n";
+    let (out, err) = outputs(&format!("{z}MatrixLog3(Z)"));
+    assert!(out.ends_with("(0, 0, 0)  : 3-vector\n"), "{out}");
+    assert!(err.is_empty(), "{err}");
+    let (out, err) = outputs(&format!("{z}R_ab = Z\nR_ab"));
+    assert!(out.ends_with("0, 0, 1]  : SO(3) {a}←{b}\n"), "{out}");
+    assert!(err.is_empty(), "{err}");
+    // exactly 1e-2 + √2·1e-20 off once the floats are put right: the
+    // distance is the exact one
+    let (_, err) = outputs("MatrixLog3([1, 1e-20 + cos(3*pi/2)/1e-17, 0; 0, 1, 0; 0, 0, 1])");
+    assert!(err.is_empty(), "{err}");
+    let e = error("MatrixLog3([2, cos(3*pi/2)/1e-17, 0; 0, 1, 0; 0, 0, 1])");
+    assert!(e.contains("distance from SO(3) is 3"), "{e}");
+    // a typed matrix within 1e-9 is a rotation (printed values read back,
+    // §10), and its distance is its own
+    let out = printed("A = [1, 1e-20, 0; 0, 1, 0; 0, 0, 1]");
+    assert!(out.ends_with(": SO(3)\n"), "{out}");
+    let d = numbers("DistanceToSO3([1, 1e-20, 0; 0, 1, 0; 0, 0, 1])");
+    assert!((d[0] / (2f64.sqrt() * 1e-20) - 1.0).abs() < 1e-12, "{d:?}");
+    // an exact rotation is at distance 0 (its floats' is rounding)
+    assert_eq!(numbers("DistanceToSO3(Rot((1, 2, 2)/3, pi/3))"), [0.0]);
+}
