@@ -80,6 +80,37 @@ fn log_at_pi_is_a_half_turn_exactly() {
     }
 }
 
+/// `Normalize` refuses a vector that is exactly zero, whatever its floats,
+/// and normalizes one that is tiny or huge but not zero.
+#[test]
+fn normalize_decides_zero_exactly() {
+    for src in [
+        "Normalize((1, 2, 3) - (1, 2, 3))",
+        // 0.1 + 0.2 − 0.3 is 5.6e-17 as floats, 0 as decimals
+        "Normalize((0.1 + 0.2, 0, 0) - (0.3, 0, 0))",
+        "normalize((sin(pi), 0))",
+    ] {
+        let e = error(src);
+        assert!(e.contains("zero vector"), "{src}: {e}");
+    }
+    assert_eq!(
+        printed("Normalize((1e-200, 0, 0))"),
+        "(1, 0, 0)  : 3-vector\n"
+    );
+    let h = std::f64::consts::FRAC_1_SQRT_2;
+    assert!(close(
+        &numbers("Normalize((1e-200, 1e-200, 0))"),
+        &[h, h, 0.0]
+    ));
+    assert!(close(&numbers("Normalize((3e200, 4e200))"), &[0.6, 0.8]));
+    // nonzero exactly, its floats cancelling to 0: the direction of
+    // (√2 − 1.4142135623730951) x̂, which is −x̂
+    assert!(close(
+        &numbers("Normalize((sqrt(2) - 1.4142135623730951, 0))"),
+        &[-1.0, 0.0]
+    ));
+}
+
 /// Membership of SO(3) by the exact form (LANGUAGE.md §5): an exact
 /// rotation is one however far its floats have strayed (the identity
 /// below, whose floats are 18.4 off), and is computed with at the floats
@@ -113,4 +144,21 @@ fn membership_is_decided_exactly() {
     assert!((d[0] / (2f64.sqrt() * 1e-20) - 1.0).abs() < 1e-12, "{d:?}");
     // an exact rotation is at distance 0 (its floats' is rounding)
     assert_eq!(numbers("DistanceToSO3(Rot((1, 2, 2)/3, pi/3))"), [0.0]);
+}
+
+/// The book's tolerances (`NearZero`: |z| < 1e-6; `TestIfSO3`: distance
+/// < 1e-3) decided by the exact value at the boundary.
+#[test]
+fn book_tolerances_are_decided_exactly() {
+    assert_eq!(printed("NearZero(1e-6 - 1e-30)"), "true\n");
+    assert_eq!(printed("NearZero(-1e-6 + 1e-30)"), "true\n");
+    assert_eq!(printed("NearZero(1e-6 * (sqrt(3)^2/3))"), "false\n");
+    assert_eq!(printed("NearZero(sin(pi) * 1e10)"), "true\n");
+    // distance exactly 1e-3 (its float is 0.000999…): not below 1e-3
+    let m = "[1, 0, 0; 0, 1, 0; 0, 0, sqrt(1 + 1e-3)]";
+    assert_eq!(printed(&format!("TestIfSO3({m})")), "false\n");
+    assert_eq!(printed(&format!("TestIfSO3({m} * (1 - 1e-30))")), "true\n");
+    let t = "[1, 0, 0, 5; 0, 1, 0, 6; 0, 0, sqrt(1 + 1e-3), 7; 0, 0, 0, 1]";
+    assert_eq!(printed(&format!("TestIfSE3({t})")), "false\n");
+    assert_eq!(printed("TestIfSO3(Rotz(1))"), "true\n");
 }
