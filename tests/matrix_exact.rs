@@ -162,3 +162,20 @@ fn book_tolerances_are_decided_exactly() {
     assert_eq!(printed(&format!("TestIfSE3({t})")), "false\n");
     assert_eq!(printed("TestIfSO3(Rotz(1))"), "true\n");
 }
+
+/// Vectors are decided entry by entry: first entries exact and different
+/// is no rounding, whatever the second entries are.
+#[test]
+fn vectors_are_compared_entry_by_entry() {
+    let (out, err) = outputs("(1, exp(0)) == (1 + 1e-13, 1)");
+    assert_eq!((out.as_str(), err.as_str()), ("false\n", ""));
+    let (out, err) = outputs("(1 + 1e-13, 1) == (1, exp(0))");
+    assert_eq!((out.as_str(), err.as_str()), ("false\n", ""));
+    // the floats are equal, the first entries exactly are not
+    assert_eq!(printed("(1, exp(0)) == (1 + 1e-20, 1)"), "false\n");
+    assert_eq!(printed("(1, exp(0)) == (1, 1)"), "true\n");
+    // floats with no exact form still get the note
+    let (out, err) = outputs("(exp(1), 2) == (exp(1) + 1e-14, 2)");
+    assert_eq!(out, "false\n");
+    assert!(err.contains("rounding only"), "{err}");
+}
