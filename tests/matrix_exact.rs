@@ -111,6 +111,29 @@ fn normalize_decides_zero_exactly() {
     ));
 }
 
+/// An axis or exponential coordinates exactly zero are zero, whatever
+/// their floats: no direction is read from rounding (`AxisAng3` gave the
+/// axis x̂ of (5.6e-17, 0, 0), `Rot` rotated about it).
+#[test]
+fn zero_axes_are_decided_exactly() {
+    let zero = "(0.1 + 0.2, 0, 0) - (0.3, 0, 0)";
+    let (out, _) = outputs(&format!("(w, theta) = AxisAng3({zero})"));
+    assert_eq!(out, "w = (0, 0, 0)  : 3-vector\ntheta = 0\n");
+    let e = error(&format!("Rot({zero}, pi/2)"));
+    assert!(e.contains("the rotation axis is the zero vector"), "{e}");
+    let (out, _) = outputs("(S, theta) = AxisAng6((0, 0, 0, 0.1 + 0.2 - 0.3, 0, 0))");
+    assert!(out.starts_with("S = (0, 0, 0, 0, 0, 0)"), "{out}");
+    let t = numbers("(S, theta) = AxisAng6((0, 0, 0, 0.1 + 0.2 - 0.3, 0, 0))\ntheta");
+    assert_eq!(t, [0.0]);
+    // tiny but not zero: a direction
+    let r = numbers("Rot((1e-200, 0, 0), pi/2)");
+    let want = [1.0, 0.0, 0.0, 0.0, 0.0, -1.0, 0.0, 1.0, 0.0];
+    assert!(
+        r.iter().zip(want).all(|(x, w)| (x - w).abs() < 1e-15),
+        "{r:?}"
+    );
+}
+
 /// Membership of SO(3) by the exact form (LANGUAGE.md §5): an exact
 /// rotation is one however far its floats have strayed (the identity
 /// below, whose floats are 18.4 off), and is computed with at the floats

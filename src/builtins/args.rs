@@ -146,13 +146,27 @@ impl Args<'_> {
         Ok(m)
     }
 
-    /// Argument `i` as a column vector of any length.
+    /// Argument `i` as a column vector of any length; one whose floats
+    /// are all within rounding of 0 is read at the floats nearest its
+    /// exact entries when it has an exact form (the zero vector exactly:
+    /// `(0.1 + 0.2, 0, 0) − (0.3, 0, 0)` is (5.6e-17, 0, 0) in floats, and
+    /// a zero axis, angle or direction is decided by 0, not by 5.6e-17).
     pub fn vec(&self, i: usize) -> Result<DVector<f64>, Diagnostic> {
         let m = self.mat(i)?;
         if m.ncols() != 1 {
             return Err(self.wrong(i, "vector"));
         }
-        Ok(DVector::from_column_slice(m.as_slice()))
+        Ok(match self.small(i) {
+            Some(x) => DVector::from_vec(x),
+            None => DVector::from_column_slice(m.as_slice()),
+        })
+    }
+
+    /// The floats nearest the exact entries of argument `i` when its
+    /// floats are all within rounding of 0 and it has an exact form
+    /// ([`crate::values::exact_mat::small_entries`]).
+    fn small(&self, i: usize) -> Option<Vec<f64>> {
+        crate::values::exact_mat::small_entries(self.vals.get(i)?)
     }
 
     fn vec_n(&self, i: usize, n: usize) -> Result<DVector<f64>, Diagnostic> {
@@ -165,10 +179,10 @@ impl Args<'_> {
         Ok(v)
     }
 
-    /// Argument `i` as a 3-vector (ω, v, p, ω̂θ).
+    /// Argument `i` as a 3-vector (ω, v, p, ω̂θ), read as [`Args::vec`] does.
     pub fn vec3(&self, i: usize) -> Result<Vec3, Diagnostic> {
         match self.vals[i].as_matrix() {
-            Some(Num::V3(v)) => Ok(*v),
+            Some(Num::V3(v)) => Ok(self.small(i).map_or(*v, |x| Vec3::from_column_slice(&x))),
             _ => Ok(Vec3::from_iterator(self.vec_n(i, 3)?.iter().copied())),
         }
     }
@@ -179,10 +193,11 @@ impl Args<'_> {
             _ => Ok(Vec4::from_iterator(self.vec_n(i, 4)?.iter().copied())),
         }
     }
-    /// Argument `i` as a 6-vector (a twist, screw axis or wrench).
+    /// Argument `i` as a 6-vector (a twist, screw axis or wrench), read as
+    /// [`Args::vec`] does.
     pub fn vec6(&self, i: usize) -> Result<Vec6, Diagnostic> {
         match self.vals[i].as_matrix() {
-            Some(Num::V6(v)) => Ok(*v),
+            Some(Num::V6(v)) => Ok(self.small(i).map_or(*v, |x| Vec6::from_column_slice(&x))),
             _ => Ok(Vec6::from_iterator(self.vec_n(i, 6)?.iter().copied())),
         }
     }

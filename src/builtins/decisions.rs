@@ -41,10 +41,7 @@ pub fn eval_normalize(a: &mut Args) -> Result<Value, Diagnostic> {
             "cannot normalize a vector with entries that are not finite (inf or NaN)",
         ));
     }
-    let v = match crate::values::exact_mat::small_entries(a.value(0)) {
-        Some(x) => nalgebra::DVector::from_vec(x),
-        None => v,
-    };
+    // (zero or not by the exact form: `Args::vec`)
     match lie::normalize(&v) {
         Some(u) => Ok(Value::Num {
             kind: a.value(0).kind(),
