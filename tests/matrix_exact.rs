@@ -197,6 +197,12 @@ fn vectors_are_compared_entry_by_entry() {
     // the floats are equal, the first entries exactly are not
     assert_eq!(printed("(1, exp(0)) == (1 + 1e-20, 1)"), "false\n");
     assert_eq!(printed("(1, exp(0)) == (1, 1)"), "true\n");
+    // matrices written entry by entry too
+    assert_eq!(
+        printed("[1, exp(0); 0, 1] == [1 + 1e-20, 1; 0, 1]"),
+        "false\n"
+    );
+    assert_eq!(printed("[1, exp(0); 0, 1] == [1, 1; 0, 1]"), "true\n");
     // floats with no exact form still get the note
     let (out, err) = outputs("(exp(1), 2) == (exp(1) + 1e-14, 2)");
     assert_eq!(out, "false\n");

@@ -88,11 +88,17 @@ impl Op<'_> {
         match rows {
             [row] if row.len() == 1 => Op::Block(&[1]).exact_of(row, &Kind::Unknown),
             _ => {
-                if !rows.iter().flatten().all(Value::may_be_exact) {
-                    return Exact::Float;
-                }
                 let widths: Vec<usize> = rows.iter().map(Vec::len).collect();
                 let entries: Vec<&Value> = rows.iter().flatten().collect();
+                if !entries.iter().all(|v| v.may_be_exact()) {
+                    // (numbers of which some are exact keep their entries,
+                    // for `==` to decide them one by one, as vectors do)
+                    let scalars = entries.iter().all(|v| v.as_scalar().is_some());
+                    return match scalars && entries.iter().any(|v| v.may_be_exact()) {
+                        true => Op::Block(&widths).pending(Operands::of(&entries), &Kind::Unknown),
+                        false => Exact::Float,
+                    };
+                }
                 Op::Block(&widths).exact_of(&entries, &Kind::Unknown)
             }
         }

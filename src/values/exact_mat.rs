@@ -230,10 +230,11 @@ pub fn half_turn(v: &Value) -> Option<HalfTurn> {
     })
 }
 
-/// The exact forms of a vector's entries one by one: all of them when it
-/// has an exact form; else, for a vector written entry by entry of exact
-/// and float entries (`(1, exp(0))`), each entry's own (None for an entry
-/// with none). None for a float, or a value made otherwise.
+/// The exact forms of a vector's or matrix's entries one by one, row by
+/// row: all of them when it has an exact form; else, for one written
+/// entry by entry of exact and float numbers (`(1, exp(0))`, `[1, exp(0);
+/// 0, 1]`), each entry's own (None for an entry with none). None for a
+/// float, or a value made otherwise.
 pub fn entry_forms(v: &Value) -> Option<Vec<Option<Expr>>> {
     let Value::Num { m, exact, .. } = v else {
         return None;
@@ -246,7 +247,8 @@ pub fn entry_forms(v: &Value) -> Option<Vec<Option<Expr>>> {
     }
     exact
         .with_recipe(|p| {
-            matches!(p.op, Operation::Vector).then(|| {
+            let entries = p.args.refs().iter().all(|a| a.as_scalar().is_some());
+            (entries && matches!(p.op, Operation::Vector | Operation::Block(_))).then(|| {
                 p.args
                     .refs()
                     .into_iter()
