@@ -57,6 +57,37 @@ fn log_just_off_pi_is_not_a_half_turn() {
     assert!(d.iter().all(|x| x.abs() <= 1e-14), "{d:?}");
 }
 
+/// Just off θ = π with no exact form (cos(π − 1e-20) has none), made
+/// from exact numbers: certified arithmetic on how the rotation was made
+/// finds its skew part nonzero, and its sign. `Rotz(−π + 1e-20)` has a
+/// skew part of −1.2e-16 in floats (rounding), so it was read as a half
+/// turn: +ẑπ with the note (answer −ẑ(π − 1e-20)).
+#[test]
+fn log_just_off_pi_without_an_exact_form() {
+    let pi = std::f64::consts::PI;
+    for (src, want) in [
+        ("MatrixLog3(Rotz(-pi + 1e-20))", vec![0.0, 0.0, -pi]),
+        (
+            "MatrixLog3(Rotz(pi/3) Rotz(2*pi/3 - 1e-20))",
+            vec![0.0, 0.0, pi],
+        ),
+        (
+            "MatrixLog3(Rot((0.8, 0, -0.6), pi - 1e-20))",
+            vec![0.8 * pi, 0.0, -0.6 * pi],
+        ),
+    ] {
+        assert!(close(&numbers(src), &want), "{src}: {:?}", numbers(src));
+        let (_, err) = outputs(src);
+        assert!(!err.contains("θ = π"), "{src}: {err}");
+    }
+    let s = numbers("MatrixLog6([Rotz(-pi + 1e-20), (1, 2, 3); 0, 0, 0, 1])");
+    assert!(close(&s[..3], &[0.0, 0.0, -pi]), "{s:?}");
+    // exactly π: the book's axis (3.58), ω̂₃ > 0, and the note
+    let (out, err) = outputs("MatrixLog3(Rotz(-pi))");
+    assert!(out.starts_with("(0, 0, 3.1416)"), "{out}");
+    assert!(err.contains("θ = π"), "{err}");
+}
+
 /// Exactly at θ = π: the half-turn branch, whatever the rounding of the
 /// skew part, with the book's sign (3.58) and the note.
 #[test]

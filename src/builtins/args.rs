@@ -48,6 +48,10 @@ pub struct Args<'a> {
     /// Each argument's static kind and frames, and its source text (what
     /// `draw` labels and frames a picture with); empty where unknown.
     pub typed: Vec<(crate::check::ty::Ty, String)>,
+    /// The θ = π decision of a logarithm by certified arithmetic on a
+    /// rotation's recipe, where it has no exact form (the evaluator's,
+    /// `eval::turn`, which `builtins` cannot name); None: by its floats.
+    pub certified_turn: Option<fn(&Value) -> Option<so3::HalfTurn>>,
 }
 
 impl Args<'_> {
@@ -245,9 +249,11 @@ impl Args<'_> {
 
     /// The θ = π decision of argument `i`'s logarithm by its exact form
     /// ([`crate::values::exact_mat::half_turn`]), when it was read as it
-    /// is (not projected: the exact form is of the matrix as given).
+    /// is (not projected: the exact form is of the matrix as given); else
+    /// by certified arithmetic on its recipe ([`Args::certified_turn`]).
     pub fn half_turn(&self, i: usize) -> Option<so3::HalfTurn> {
-        crate::values::exact_mat::half_turn(self.vals.get(i)?)
+        let v = self.vals.get(i)?;
+        crate::values::exact_mat::half_turn(v).or_else(|| self.certified_turn?(v))
     }
 
     /// Argument `i` as a rotation R ∈ SO(3) (§3.2.1), read per `read_group` (LANGUAGE.md §5).

@@ -36,7 +36,7 @@ pub enum Verdict {
 }
 
 /// The precisions tried, in bits: the first that excludes 0 decides.
-const PRECISIONS: [usize; 3] = [128, 256, 512];
+pub(super) const PRECISIONS: [usize; 3] = [128, 256, 512];
 
 /// The verdict of certified arithmetic on `a == b` (numbers of one shape,
 /// one side at least with no exact form); None when a side has no recipe
@@ -150,10 +150,10 @@ fn same(a: &Value, b: &Value, depth: u32) -> bool {
 
 /// A matrix of balls, row by row.
 #[derive(Clone)]
-struct Balls {
-    rows: usize,
-    cols: usize,
-    data: Vec<Ball>,
+pub(super) struct Balls {
+    pub(super) rows: usize,
+    pub(super) cols: usize,
+    pub(super) data: Vec<Ball>,
 }
 
 impl Balls {
@@ -199,12 +199,12 @@ impl Balls {
 
 /// The balls of the values met in one evaluation, by their shared form.
 #[derive(Default)]
-struct Memo(HashMap<*const (), Option<Balls>>);
+pub(super) struct Memo(HashMap<*const (), Option<Balls>>);
 
 /// The balls of a number at `prec` bits: its exact form's, else its
 /// recipe's; None for a float, and for a ball that strays from the number's
 /// own floats (a recipe read otherwise than it was computed: never trusted).
-fn balls(v: &Value, prec: usize, memo: &mut Memo) -> Option<Balls> {
+pub(super) fn balls(v: &Value, prec: usize, memo: &mut Memo) -> Option<Balls> {
     let Value::Num { m, exact, .. } = v else {
         return None;
     };

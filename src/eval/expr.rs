@@ -558,6 +558,7 @@ impl Interp<'_> {
             call_span: span,
             typed,
             warnings: &mut self.warnings,
+            certified_turn: Some(super::turn::half_turn),
         };
         let exact = op.exact_of(&vals, &ty.kind);
         let mut v = apply::call(b, vals, site)?;

@@ -31,6 +31,7 @@ mod slice;
 mod substitute;
 mod symbols;
 mod tuple_call;
+mod turn;
 mod user_fn;
 mod warned;
 mod witness;

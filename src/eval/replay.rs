@@ -108,6 +108,7 @@ pub(super) fn typed_first(
                 call_span: Default::default(),
                 typed: Vec::new(),
                 warnings,
+                certified_turn: Some(super::turn::half_turn),
             };
             let vals = args.iter().map(|v| (*v).clone()).collect();
             let mut v = apply::call(b, vals, site).map_err(|d| OpError::Message(d.message))?;
