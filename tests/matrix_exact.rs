@@ -239,3 +239,44 @@ fn vectors_are_compared_entry_by_entry() {
     assert_eq!(out, "false\n");
     assert!(err.contains("rounding only"), "{err}");
 }
+
+/// Euler angles near gimbal lock (cos b = 0 for ZYX and roll–pitch–yaw,
+/// sin b = 0 for ZXZ): b = π/2 − 1e-20 is no lock, though cos b = 1e-20 is
+/// below rounding in floats, which gave (0.1, π/2, 0) and a gimbal-lock
+/// warning for Rotz(0.3) Roty(π/2 − 1e-20) Rotx(0.2); the lock is decided
+/// by the certified entries of how the rotation was made, or its exact
+/// form, and the angles read from them.
+#[test]
+fn gimbal_lock_is_decided_exactly() {
+    let h = std::f64::consts::FRAC_PI_2;
+    for (src, want) in [
+        (
+            "euler_zyx(Rotz(0.3) Roty(pi/2 - 1e-20) Rotx(0.2))",
+            [0.3, h, 0.2],
+        ),
+        (
+            "rpy(Rotz(0.3) Roty(-pi/2 + 1e-20) Rotx(0.2))",
+            [0.2, -h, 0.3],
+        ),
+        (
+            "euler_zxz(Rotz(0.3) Rotx(1e-20) Rotz(0.2))",
+            [0.3, 0.0, 0.2],
+        ),
+    ] {
+        let x = numbers(src);
+        assert!(
+            x.iter().zip(want).all(|(a, b)| (a - b).abs() <= 1e-15),
+            "{src}: {x:?}"
+        );
+        let (_, err) = outputs(src);
+        assert!(!err.contains("gimbal"), "{src}: {err}");
+    }
+    // at the lock exactly: c set to 0, with the warning
+    let src = "euler_zyx(Rotz(0.3) Roty(pi/2) Rotx(0.2))";
+    let x = numbers(src);
+    assert!((x[0] - 0.1).abs() <= 1e-15 && x[2] == 0.0, "{x:?}");
+    let (_, err) = outputs(src);
+    assert!(err.contains("gimbal lock (b = π/2)"), "{err}");
+    let (_, err) = outputs("euler_zxz([1, 0, 0; 0, 1, 0; 0, 0, 1])");
+    assert!(err.contains("gimbal lock (b = 0)"), "{err}");
+}

@@ -14,7 +14,7 @@ use crate::syntax::ast::Span;
 use crate::values::convert::{Group, Membership};
 use crate::values::domain::Decided;
 use crate::values::exact::Exact;
-use crate::values::exact_mat::membership;
+use crate::values::exact_mat::{Entries, membership};
 use crate::values::value::Value;
 
 /// A static argument error: which argument (None: the whole call), the
@@ -52,6 +52,9 @@ pub struct Args<'a> {
     /// rotation's recipe, where it has no exact form (the evaluator's,
     /// `eval::turn`, which `builtins` cannot name); None: by its floats.
     pub certified_turn: Option<fn(&Value) -> Option<so3::HalfTurn>>,
+    /// A matrix's entries by certified arithmetic on its recipe, where it
+    /// has no exact form (`eval::turn::entries`); None: by its floats.
+    pub certified_entries: Option<fn(&Value) -> Option<Entries>>,
 }
 
 impl Args<'_> {
@@ -245,6 +248,14 @@ impl Args<'_> {
             Some(d) => crate::lie::se3::log_decided(t.matrix(), &d),
             None => t.log(),
         })
+    }
+
+    /// The entries of argument `i` as decisions read them: by its exact
+    /// form, else by certified arithmetic on its recipe
+    /// ([`Args::certified_entries`]); None for a float.
+    pub fn entries(&self, i: usize) -> Option<Entries> {
+        let v = self.vals.get(i)?;
+        crate::values::exact_mat::exact_entries(v).or_else(|| self.certified_entries?(v))
     }
 
     /// The θ = π decision of argument `i`'s logarithm by its exact form

@@ -25,10 +25,36 @@ fn scalar() -> Kind {
     Kind::Scalar
 }
 
-/// Angles from a rotation; a gimbal-lock note becomes a warning.
-fn angles(a: &mut Args, f: fn(&Mat3) -> repr::Angles) -> Result<Value, Diagnostic> {
+/// How Euler-type angles are extracted: from the floats, or with gimbal
+/// lock decided by the caller; and the two entries that are 0 exactly at
+/// gimbal lock (r₁₁, r₂₁ for ZYX and roll–pitch–yaw; r₁₃, r₂₃ for ZXZ).
+type Extract = (
+    fn(&Mat3) -> repr::Angles,
+    fn(&Mat3, bool) -> repr::Angles,
+    [(usize, usize); 2],
+);
+
+/// Angles from a rotation; a gimbal-lock note becomes a warning. Near
+/// gimbal lock (the two entries below 1e-12 in floats) the lock is decided
+/// by the rotation's exact form or certified entries when it has them
+/// (`Args::entries`), and the angles read from those entries.
+fn angles(a: &mut Args, (f, decided, pair): Extract) -> Result<Value, Diagnostic> {
     let r = a.so3(0)?;
-    let out = f(r.matrix());
+    let m = r.matrix();
+    let [p, q] = pair;
+    let near = m[p].hypot(m[q]) < 1e-12;
+    let refined = near.then(|| a.entries(0)).flatten().and_then(|e| {
+        let x = Mat3::from_row_slice(&e.floats);
+        let at = |(i, j): (usize, usize)| e.zero[i * 3 + j];
+        // (the entries of the matrix as read, not of one projected)
+        let lock = match (at(p), at(q)) {
+            (Some(true), Some(true)) => true,
+            (Some(false), _) | (_, Some(false)) => false,
+            _ => return None,
+        };
+        ((x - m).amax() <= 1e-12).then(|| decided(&x, lock))
+    });
+    let out = refined.unwrap_or_else(|| f(m));
     if let Some(note) = out.note {
         a.warnings
             .push(Diagnostic::warning(ErrorKind::Domain, a.call_span, note));
@@ -152,7 +178,12 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: v3,
                 frames: FrameRule::None,
             },
-            eval: |a| angles(a, repr::euler_zyx),
+            eval: |a| {
+                angles(
+                    a,
+                    (repr::euler_zyx, repr::euler_zyx_decided, [(0, 0), (1, 0)]),
+                )
+            },
         },
         Builtin {
             name: "rot_zxz",
@@ -187,7 +218,12 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: v3,
                 frames: FrameRule::None,
             },
-            eval: |a| angles(a, repr::euler_zxz),
+            eval: |a| {
+                angles(
+                    a,
+                    (repr::euler_zxz, repr::euler_zxz_decided, [(0, 2), (1, 2)]),
+                )
+            },
         },
         Builtin {
             name: "rot_rpy",
@@ -222,7 +258,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: v3,
                 frames: FrameRule::None,
             },
-            eval: |a| angles(a, repr::rpy),
+            eval: |a| angles(a, (repr::rpy, repr::rpy_decided, [(0, 0), (1, 0)])),
         },
         Builtin {
             name: "quat",

@@ -109,6 +109,7 @@ pub(super) fn typed_first(
                 typed: Vec::new(),
                 warnings,
                 certified_turn: Some(super::turn::half_turn),
+                certified_entries: Some(super::turn::entries),
             };
             let vals = args.iter().map(|v| (*v).clone()).collect();
             let mut v = apply::call(b, vals, site).map_err(|d| OpError::Message(d.message))?;

@@ -11,6 +11,7 @@ use super::ball;
 use super::certify::{Memo, PRECISIONS, balls};
 use super::value::Value;
 use crate::lie::{Vec3, so3::HalfTurn};
+use crate::values::exact_mat::Entries;
 
 /// The branch of the logarithm of the rotation block of `v` (3×3 or 4×4)
 /// decided by certified arithmetic on its recipe, where its floats put θ
@@ -53,4 +54,39 @@ pub fn half_turn(v: &Value) -> Option<HalfTurn> {
         }
     }
     None
+}
+
+/// The entries of a matrix with no exact form but made from exact numbers,
+/// by certified arithmetic on its recipe: the midpoints of their balls,
+/// and which are certainly not 0 (at the first precision that shows every
+/// entry nonzero, else at 512 bits); None for a float, a value with an
+/// exact form (`values::exact_mat::exact_entries`), or a recipe not
+/// bounded. What Euler angles near gimbal lock read (cos b = 1e-20 is 0 in
+/// the floats of `Roty(π/2 − 1e-20)`, whose ZYX angles are then not
+/// (0.1, π/2, 0) with a gimbal-lock warning but (0.3, π/2, 0.2)).
+pub fn entries(v: &Value) -> Option<Entries> {
+    let Value::Num { exact, .. } = v else {
+        return None;
+    };
+    if exact.is_float() || v.exact_form().is_some() {
+        return None;
+    }
+    let mut out = None;
+    for prec in PRECISIONS {
+        let b = balls(v, prec, &mut Memo::default())?;
+        let zero: Vec<Option<bool>> = b
+            .data
+            .iter()
+            .map(|x| ball::nonzero(x).then_some(false))
+            .collect();
+        let done = zero.iter().all(Option::is_some);
+        out = Some(Entries {
+            floats: b.data.iter().map(|x| ball::floats(x).0).collect(),
+            zero,
+        });
+        if done {
+            break;
+        }
+    }
+    out
 }

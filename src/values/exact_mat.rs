@@ -274,3 +274,24 @@ pub fn entries_differ(a: &Value, b: &Value) -> bool {
         _ => false,
     }
 }
+
+/// The entries of a matrix as decisions read them, row by row: floats
+/// nearer their values than the matrix's own (the floats nearest an exact
+/// form, or the midpoints of certified balls) and, for each, whether it is
+/// exactly 0 (Some(true)), certainly not (Some(false)), or undecided.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Entries {
+    /// The floats, row by row.
+    pub floats: Vec<f64>,
+    /// Whether each entry is 0.
+    pub zero: Vec<Option<bool>>,
+}
+
+/// The [`Entries`] of a numeric value with an exact form.
+pub fn exact_entries(v: &Value) -> Option<Entries> {
+    let e = form(v)?;
+    Some(Entries {
+        floats: nearest_floats(&e)?,
+        zero: e.data.iter().map(|x| Some(x.terms.is_empty())).collect(),
+    })
+}
