@@ -80,8 +80,20 @@ fn log_just_off_pi_without_an_exact_form() {
         let (_, err) = outputs(src);
         assert!(!err.contains("θ = π"), "{src}: {err}");
     }
-    let s = numbers("MatrixLog6([Rotz(-pi + 1e-20), (1, 2, 3); 0, 0, 0, 1])");
-    assert!(close(&s[..3], &[0.0, 0.0, -pi]), "{s:?}");
+    for src in [
+        "MatrixLog6([Rotz(-pi + 1e-20), (1, 2, 3); 0, 0, 0, 1])",
+        "MatrixLog6(RpToTrans(Rotz(-pi + 1e-20), (1, 2, 3)))",
+    ] {
+        let s = numbers(src);
+        assert!(close(&s[..3], &[0.0, 0.0, -pi]), "{src}: {s:?}");
+        let (_, err) = outputs(src);
+        assert!(!err.contains("θ = π"), "{src}: {err}");
+    }
+    // (RpToTrans bounded in certified arithmetic: == sees 8.4e-21 too)
+    let (out, err) =
+        outputs("RpToTrans(Rotz(1), (1, 2, 3)) == RpToTrans(Rotz(1 + 1e-20), (1, 2, 3))");
+    assert_eq!(out, "false\n");
+    assert!(err.contains("below double precision"), "{err}");
     // exactly π: the book's axis (3.58), ω̂₃ > 0, and the note
     let (out, err) = outputs("MatrixLog3(Rotz(-pi))");
     assert!(out.starts_with("(0, 0, 3.1416)"), "{out}");

@@ -218,6 +218,55 @@ fn checked(b: Ball) -> Option<Ball> {
     (!b.rad.is_infinite() && !b.mid.is_infinite()).then_some(b)
 }
 
+/// A matrix of balls, row by row.
+#[derive(Clone)]
+pub(super) struct Balls {
+    pub(super) rows: usize,
+    pub(super) cols: usize,
+    pub(super) data: Vec<Ball>,
+}
+
+impl Balls {
+    pub(super) fn scalar(b: Ball) -> Balls {
+        Balls {
+            rows: 1,
+            cols: 1,
+            data: vec![b],
+        }
+    }
+    pub(super) fn at(&self, i: usize, j: usize) -> &Ball {
+        &self.data[i * self.cols + j]
+    }
+    pub(super) fn one(&self) -> Option<&Ball> {
+        (self.data.len() == 1).then(|| &self.data[0])
+    }
+    pub(super) fn map(&self, f: impl Fn(&Ball) -> Option<Ball>) -> Option<Balls> {
+        Some(Balls {
+            rows: self.rows,
+            cols: self.cols,
+            data: self.data.iter().map(f).collect::<Option<_>>()?,
+        })
+    }
+    pub(super) fn transpose(&self) -> Balls {
+        let data = (0..self.cols)
+            .flat_map(|j| (0..self.rows).map(move |i| (i, j)))
+            .map(|(i, j)| self.at(i, j).clone())
+            .collect();
+        Balls {
+            rows: self.cols,
+            cols: self.rows,
+            data,
+        }
+    }
+    pub(super) fn column(data: Vec<Ball>) -> Balls {
+        Balls {
+            rows: data.len(),
+            cols: 1,
+            data,
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

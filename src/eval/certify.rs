@@ -15,7 +15,7 @@
 
 use std::collections::HashMap;
 
-use super::ball::{self, Ball};
+use super::ball::{self, Ball, Balls};
 use super::value::Value;
 use crate::check::ty::Kind;
 use crate::syntax::ast::BinOp;
@@ -146,55 +146,6 @@ fn same(a: &Value, b: &Value, depth: u32) -> bool {
         .unwrap_or(false)
     })
     .unwrap_or(false)
-}
-
-/// A matrix of balls, row by row.
-#[derive(Clone)]
-pub(super) struct Balls {
-    pub(super) rows: usize,
-    pub(super) cols: usize,
-    pub(super) data: Vec<Ball>,
-}
-
-impl Balls {
-    fn scalar(b: Ball) -> Balls {
-        Balls {
-            rows: 1,
-            cols: 1,
-            data: vec![b],
-        }
-    }
-    fn at(&self, i: usize, j: usize) -> &Ball {
-        &self.data[i * self.cols + j]
-    }
-    fn one(&self) -> Option<&Ball> {
-        (self.data.len() == 1).then(|| &self.data[0])
-    }
-    fn map(&self, f: impl Fn(&Ball) -> Option<Ball>) -> Option<Balls> {
-        Some(Balls {
-            rows: self.rows,
-            cols: self.cols,
-            data: self.data.iter().map(f).collect::<Option<_>>()?,
-        })
-    }
-    fn transpose(&self) -> Balls {
-        let data = (0..self.cols)
-            .flat_map(|j| (0..self.rows).map(move |i| (i, j)))
-            .map(|(i, j)| self.at(i, j).clone())
-            .collect();
-        Balls {
-            rows: self.cols,
-            cols: self.rows,
-            data,
-        }
-    }
-    fn column(data: Vec<Ball>) -> Balls {
-        Balls {
-            rows: data.len(),
-            cols: 1,
-            data,
-        }
-    }
 }
 
 /// The balls of the values met in one evaluation, by their shared form.
@@ -478,6 +429,25 @@ fn call(name: &str, args: &[Balls], prec: usize) -> Option<Balls> {
             Some(Balls {
                 rows: 3,
                 cols: 3,
+                data,
+            })
+        }
+        "RpToTrans" => {
+            let (r, p) = (args.first()?, args.get(1)?);
+            ((r.rows, r.cols, p.rows, p.cols) == (3, 3, 3, 1)).then_some(())?;
+            let mut data: Vec<Ball> = (0..12)
+                .map(|k| {
+                    if k % 4 == 3 {
+                        p.data[k / 4].clone()
+                    } else {
+                        r.at(k / 4, k % 4).clone()
+                    }
+                })
+                .collect();
+            data.extend([zero(), zero(), zero(), unit()]);
+            Some(Balls {
+                rows: 4,
+                cols: 4,
                 data,
             })
         }
