@@ -11,8 +11,10 @@ use crate::diagnostics::{Diagnostic, ErrorKind};
 use crate::lie::{LieGroup, Mat2, Mat3, Mat4, SE2, SE3, SO2, SO3, Vec3, Vec4, Vec6, so3};
 use crate::mech::Mechanism;
 use crate::syntax::ast::Span;
-use crate::values::convert::{Group, Membership, membership};
+use crate::values::convert::{Group, Membership};
 use crate::values::domain::Decided;
+use crate::values::exact::Exact;
+use crate::values::exact_mat::{Entries, membership};
 use crate::values::value::Value;
 
 /// A static argument error: which argument (None: the whole call), the
@@ -46,6 +48,13 @@ pub struct Args<'a> {
     /// Each argument's static kind and frames, and its source text (what
     /// `draw` labels and frames a picture with); empty where unknown.
     pub typed: Vec<(crate::check::ty::Ty, String)>,
+    /// The θ = π decision of a logarithm by certified arithmetic on a
+    /// rotation's recipe, where it has no exact form (the evaluator's,
+    /// `eval::turn`, which `builtins` cannot name); None: by its floats.
+    pub certified_turn: Option<fn(&Value) -> Option<so3::HalfTurn>>,
+    /// A matrix's entries by certified arithmetic on its recipe, where it
+    /// has no exact form (`eval::turn::entries`); None: by its floats.
+    pub certified_entries: Option<fn(&Value) -> Option<Entries>>,
 }
 
 impl Args<'_> {
@@ -144,13 +153,27 @@ impl Args<'_> {
         Ok(m)
     }
 
-    /// Argument `i` as a column vector of any length.
+    /// Argument `i` as a column vector of any length; one whose floats
+    /// are all within rounding of 0 is read at the floats nearest its
+    /// exact entries when it has an exact form (the zero vector exactly:
+    /// `(0.1 + 0.2, 0, 0) − (0.3, 0, 0)` is (5.6e-17, 0, 0) in floats, and
+    /// a zero axis, angle or direction is decided by 0, not by 5.6e-17).
     pub fn vec(&self, i: usize) -> Result<DVector<f64>, Diagnostic> {
         let m = self.mat(i)?;
         if m.ncols() != 1 {
             return Err(self.wrong(i, "vector"));
         }
-        Ok(DVector::from_column_slice(m.as_slice()))
+        Ok(match self.small(i) {
+            Some(x) => DVector::from_vec(x),
+            None => DVector::from_column_slice(m.as_slice()),
+        })
+    }
+
+    /// The floats nearest the exact entries of argument `i` when its
+    /// floats are all within rounding of 0 and it has an exact form
+    /// ([`crate::values::exact_mat::small_entries`]).
+    fn small(&self, i: usize) -> Option<Vec<f64>> {
+        crate::values::exact_mat::small_entries(self.vals.get(i)?)
     }
 
     fn vec_n(&self, i: usize, n: usize) -> Result<DVector<f64>, Diagnostic> {
@@ -163,10 +186,10 @@ impl Args<'_> {
         Ok(v)
     }
 
-    /// Argument `i` as a 3-vector (ω, v, p, ω̂θ).
+    /// Argument `i` as a 3-vector (ω, v, p, ω̂θ), read as [`Args::vec`] does.
     pub fn vec3(&self, i: usize) -> Result<Vec3, Diagnostic> {
         match self.vals[i].as_matrix() {
-            Some(Num::V3(v)) => Ok(*v),
+            Some(Num::V3(v)) => Ok(self.small(i).map_or(*v, |x| Vec3::from_column_slice(&x))),
             _ => Ok(Vec3::from_iterator(self.vec_n(i, 3)?.iter().copied())),
         }
     }
@@ -177,10 +200,11 @@ impl Args<'_> {
             _ => Ok(Vec4::from_iterator(self.vec_n(i, 4)?.iter().copied())),
         }
     }
-    /// Argument `i` as a 6-vector (a twist, screw axis or wrench).
+    /// Argument `i` as a 6-vector (a twist, screw axis or wrench), read as
+    /// [`Args::vec`] does.
     pub fn vec6(&self, i: usize) -> Result<Vec6, Diagnostic> {
         match self.vals[i].as_matrix() {
-            Some(Num::V6(v)) => Ok(*v),
+            Some(Num::V6(v)) => Ok(self.small(i).map_or(*v, |x| Vec6::from_column_slice(&x))),
             _ => Ok(Vec6::from_iterator(self.vec_n(i, 6)?.iter().copied())),
         }
     }
@@ -198,7 +222,49 @@ impl Args<'_> {
         }
         let span = self.span(i);
         let m = m.clone();
-        read_group(&m, group, span, self.warnings)
+        let exact = match &self.vals[i] {
+            Value::Num { exact, .. } => exact.clone(),
+            _ => Default::default(),
+        };
+        read_group(&m, &exact, group, span, self.warnings)
+    }
+
+    /// `MatrixLog3` of argument `i` read as a rotation (§3.2.3.3): at θ
+    /// within rounding of π, the branch is decided by R's exact form when
+    /// it has one (θ = π exactly when tr R = −1; else the skew part's sign).
+    pub fn so3_log(&mut self, i: usize) -> Result<Vec3, Diagnostic> {
+        let r = self.so3(i)?;
+        Ok(match self.half_turn(i) {
+            Some(d) => so3::log_decided(r.matrix(), &d),
+            None => r.log(),
+        })
+    }
+
+    /// `MatrixLog6` of argument `i` read as a transform (§3.3.3.2), the
+    /// rotation's branch decided as in [`Args::so3_log`].
+    pub fn se3_log(&mut self, i: usize) -> Result<Vec6, Diagnostic> {
+        let t = self.se3(i)?;
+        Ok(match self.half_turn(i) {
+            Some(d) => crate::lie::se3::log_decided(t.matrix(), &d),
+            None => t.log(),
+        })
+    }
+
+    /// The entries of argument `i` as decisions read them: by its exact
+    /// form, else by certified arithmetic on its recipe
+    /// ([`Args::certified_entries`]); None for a float.
+    pub fn entries(&self, i: usize) -> Option<Entries> {
+        let v = self.vals.get(i)?;
+        crate::values::exact_mat::exact_entries(v).or_else(|| self.certified_entries?(v))
+    }
+
+    /// The θ = π decision of argument `i`'s logarithm by its exact form
+    /// ([`crate::values::exact_mat::half_turn`]), when it was read as it
+    /// is (not projected: the exact form is of the matrix as given); else
+    /// by certified arithmetic on its recipe ([`Args::certified_turn`]).
+    pub fn half_turn(&self, i: usize) -> Option<so3::HalfTurn> {
+        let v = self.vals.get(i)?;
+        crate::values::exact_mat::half_turn(v).or_else(|| self.certified_turn?(v))
     }
 
     /// Argument `i` as a rotation R ∈ SO(3) (§3.2.1), read per `read_group` (LANGUAGE.md §5).
@@ -278,14 +344,17 @@ impl Args<'_> {
     }
 }
 
-/// Reads `m` (of the right shape) as an element of `group` per LANGUAGE.md §5.
+/// Reads `m` (of the right shape, carrying `exact`) as an element of
+/// `group` per LANGUAGE.md §5, decided by its exact form where its floats
+/// are within rounding of the group ([`membership`]).
 pub fn read_group(
     m: &Num,
+    exact: &Exact,
     group: Group,
     span: Span,
     warnings: &mut Vec<Diagnostic>,
 ) -> Result<Num, Diagnostic> {
-    match membership(m, group) {
+    match membership(m, exact, group) {
         Membership::Exact(x) => Ok(x),
         Membership::Projected(p, d) => {
             warnings.push(

@@ -7,6 +7,7 @@
 
 mod args;
 mod conditioning;
+mod decisions;
 pub mod notes;
 pub mod parts;
 mod table_draw;

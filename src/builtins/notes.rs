@@ -30,7 +30,12 @@ fn half_turn(a: &Args, v: &Value) -> Option<Diagnostic> {
         return None;
     }
     let r = Mat3::from_fn(|i, j| m[(i, j)]);
-    if !SO3::assume(r).is_half_turn() {
+    // (by the exact form where it decides: `Args::so3_log`)
+    let half_turn = match a.half_turn(0) {
+        Some(d) => d.half_turn,
+        None => SO3::assume(r).is_half_turn(),
+    };
+    if !half_turn {
         return None;
     }
     let eq = if 1.0 + r[(2, 2)] >= 1e-6 {

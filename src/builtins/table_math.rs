@@ -8,9 +8,7 @@ use super::table_scalar::scalar;
 use super::{Area, ArgError, Args, Builtin, FrameRule, Param, Typing};
 use crate::check::ty::{Frames, Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
-use crate::lie::{
-    self, LieGroup, Mat3, Mat4, SE2, SE3, SO2, SO3, Vec3, matexp, se2, se3, so2, so3,
-};
+use crate::lie::{LieGroup, Mat3, Mat4, SE2, SE3, SO2, SO3, Vec3, matexp, se2, se3, so2, so3};
 use crate::values::convert::{self, Group};
 use crate::values::num::Num;
 use crate::values::ops;
@@ -188,10 +186,10 @@ fn eval_log(a: &mut Args) -> Result<Value, Diagnostic> {
             if d2 < d3 && d2 <= convert::PROJECT_TOL {
                 Ok(Value::of(Kind::Se2, se2::hat(&a.se2(0)?.log())))
             } else {
-                Ok(Value::of(Kind::So3, so3::hat(&a.so3(0)?.log())))
+                Ok(Value::of(Kind::So3, so3::hat(&a.so3_log(0)?)))
             }
         }
-        (_, (4, 4)) => Ok(Value::of(Kind::Se3, se3::hat(&a.se3(0)?.log()))),
+        (_, (4, 4)) => Ok(Value::of(Kind::Se3, se3::hat(&a.se3_log(0)?))),
         (_, (2, 2)) => Ok(Value::num(Kind::So2, &so2::hat(a.so2(0)?.log()))),
         _ => Err(a.error(0, ErrorKind::Type, "log takes SO(3), SE(3), SO(2) or SE(2)")),
     }
@@ -524,7 +522,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: || Kind::Bool,
                 frames: FrameRule::None,
             },
-            eval: |a| Ok(Value::Bool(lie::near_zero(a.decided(0)?.value()))),
+            eval: super::decisions::eval_near_zero,
         },
         Builtin {
             name: "Normalize",
@@ -539,28 +537,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: || Kind::Vector(None),
                 frames: FrameRule::Same(0),
             },
-            eval: |a| {
-                let v = a.vec(0)?;
-                if v.iter().any(|x| !x.is_finite()) {
-                    return Err(a.error(
-                        0,
-                        ErrorKind::Domain,
-                        "cannot normalize a vector with entries that are not finite (inf or NaN)",
-                    ));
-                }
-                match lie::normalize(&v) {
-                    Some(u) => Ok(Value::Num {
-                        kind: a.value(0).kind(),
-                        m: Num::vector(u.as_slice()),
-                        exact: Default::default(),
-                    }),
-                    None => Err(a.error(
-                        0,
-                        ErrorKind::Domain,
-                        "cannot normalize the zero vector (its norm is 0)",
-                    )),
-                }
-            },
+            eval: super::decisions::eval_normalize,
         },
         Builtin {
             name: "untag",

@@ -25,10 +25,36 @@ fn scalar() -> Kind {
     Kind::Scalar
 }
 
-/// Angles from a rotation; a gimbal-lock note becomes a warning.
-fn angles(a: &mut Args, f: fn(&Mat3) -> repr::Angles) -> Result<Value, Diagnostic> {
+/// How Euler-type angles are extracted: from the floats, or with gimbal
+/// lock decided by the caller; and the two entries that are 0 exactly at
+/// gimbal lock (r₁₁, r₂₁ for ZYX and roll–pitch–yaw; r₁₃, r₂₃ for ZXZ).
+type Extract = (
+    fn(&Mat3) -> repr::Angles,
+    fn(&Mat3, bool) -> repr::Angles,
+    [(usize, usize); 2],
+);
+
+/// Angles from a rotation; a gimbal-lock note becomes a warning. Near
+/// gimbal lock (the two entries below 1e-12 in floats) the lock is decided
+/// by the rotation's exact form or certified entries when it has them
+/// (`Args::entries`), and the angles read from those entries.
+fn angles(a: &mut Args, (f, decided, pair): Extract) -> Result<Value, Diagnostic> {
     let r = a.so3(0)?;
-    let out = f(r.matrix());
+    let m = r.matrix();
+    let [p, q] = pair;
+    let near = m[p].hypot(m[q]) < 1e-12;
+    let refined = near.then(|| a.entries(0)).flatten().and_then(|e| {
+        let x = Mat3::from_row_slice(&e.floats);
+        let at = |(i, j): (usize, usize)| e.zero[i * 3 + j];
+        // (the entries of the matrix as read, not of one projected)
+        let lock = match (at(p), at(q)) {
+            (Some(true), Some(true)) => true,
+            (Some(false), _) | (_, Some(false)) => false,
+            _ => return None,
+        };
+        ((x - m).amax() <= 1e-12).then(|| decided(&x, lock))
+    });
+    let out = refined.unwrap_or_else(|| f(m));
     if let Some(note) = out.note {
         a.warnings
             .push(Diagnostic::warning(ErrorKind::Domain, a.call_span, note));
@@ -80,9 +106,23 @@ fn distance_value(a: &Args, g: Group) -> Result<Value, Diagnostic> {
             format!("expected a {0}×{0} matrix", g.size()),
         ));
     }
-    Ok(Value::scalar(
-        convert::distance(m, g).unwrap_or(f64::INFINITY),
-    ))
+    let d = convert::distance(m, g).unwrap_or(f64::INFINITY);
+    // (within rounding of 0: the exact matrix's own distance when it has
+    // one — 1.41e-20 for [1, 1e-20, 0; 0, 1, 0; 0, 0, 1], 0 for an exact
+    // rotation — where the floats' is rounding noise)
+    let exact = (d <= convert::ACCEPT_TOL)
+        .then(|| crate::values::exact_mat::form(a.value(0)))
+        .flatten()
+        .and_then(|e| crate::values::exact_mat::group_gap(&e, g));
+    Ok(Value::scalar(exact.map_or(d, |gap| gap.distance)))
+}
+
+/// `TestIfSO3`/`TestIfSE3` (§3.6): the book's distance `d` (a float) below
+/// 1e-3, decided by the exact form of `v` when `d` is within rounding of
+/// 1e-3 (a distance of exactly 1e-3 is not below it).
+fn test_below(v: &Value, g: Group, d: f64) -> bool {
+    crate::values::exact_mat::distance_below(v, g, d, project::TEST_TOL)
+        .unwrap_or(d.abs() < project::TEST_TOL)
 }
 
 fn projection(a: &Args, g: Group) -> Result<Value, Diagnostic> {
@@ -138,7 +178,12 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: v3,
                 frames: FrameRule::None,
             },
-            eval: |a| angles(a, repr::euler_zyx),
+            eval: |a| {
+                angles(
+                    a,
+                    (repr::euler_zyx, repr::euler_zyx_decided, [(0, 0), (1, 0)]),
+                )
+            },
         },
         Builtin {
             name: "rot_zxz",
@@ -173,7 +218,12 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: v3,
                 frames: FrameRule::None,
             },
-            eval: |a| angles(a, repr::euler_zxz),
+            eval: |a| {
+                angles(
+                    a,
+                    (repr::euler_zxz, repr::euler_zxz_decided, [(0, 2), (1, 2)]),
+                )
+            },
         },
         Builtin {
             name: "rot_rpy",
@@ -208,7 +258,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: v3,
                 frames: FrameRule::None,
             },
-            eval: |a| angles(a, repr::rpy),
+            eval: |a| angles(a, (repr::rpy, repr::rpy_decided, [(0, 0), (1, 0)])),
         },
         Builtin {
             name: "quat",
@@ -372,7 +422,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
             aliases: &["distance_to_so3"],
             signature: "DistanceToSO3(mat: 3×3) -> scalar",
             section: "§3.6",
-            doc: "‖MᵀM − I‖_F if det M > 0, else 1e9: how far M is from SO(3)",
+            doc: "‖MᵀM − I‖_F if det M > 0, else 1e9: how far M is from SO(3) (of the exact M when it has one)",
             example: "DistanceToSO3([1, 0, 0; 0, 0.1, -0.95; 0, 1, 0.1])",
             area: Tests,
             typing: Typing::Fixed {
@@ -412,11 +462,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             },
             eval: |a| {
                 let m = a.mat(0)?;
-                Ok(Value::Bool(
-                    m.shape() == (3, 3)
-                        && SO3::distance(&Mat3::from_iterator(m.iter().copied()))
-                            < project::TEST_TOL,
-                ))
+                if m.shape() != (3, 3) {
+                    return Ok(Value::Bool(false));
+                }
+                let d = SO3::distance(&Mat3::from_iterator(m.iter().copied()));
+                Ok(Value::Bool(test_below(a.value(0), Group::SO3, d)))
             },
         },
         Builtin {
@@ -434,11 +484,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
             },
             eval: |a| {
                 let m = a.mat(0)?;
-                Ok(Value::Bool(
-                    m.shape() == (4, 4)
-                        && SE3::distance(&Mat4::from_iterator(m.iter().copied()))
-                            < project::TEST_TOL,
-                ))
+                if m.shape() != (4, 4) {
+                    return Ok(Value::Bool(false));
+                }
+                let d = SE3::distance(&Mat4::from_iterator(m.iter().copied()));
+                Ok(Value::Bool(test_below(a.value(0), Group::SE3, d)))
             },
         },
         // ---- mechanisms ----

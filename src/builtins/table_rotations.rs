@@ -37,11 +37,14 @@ fn rot_of_axis_tuple() -> Kind {
 /// `Rot(axis, θ)`: the axis is a 3-vector (or `x`, `y`, `z`, resolved by
 /// the interpreter before the call).
 fn eval_rot(a: &mut Args) -> Result<Value, Diagnostic> {
+    // (zero by the exact form when it has one, `Args::vec3`; scaled by its
+    // largest entry, so that (1e-200, 0, 0) is x̂ and not a zero norm)
     let axis = a.vec3(0)?;
-    if axis.norm() == 0.0 || !axis.norm().is_finite() {
+    let big = axis.amax();
+    if big == 0.0 || !axis.iter().all(|x| x.is_finite()) {
         return Err(a.error(0, ErrorKind::Domain, "the rotation axis is the zero vector"));
     }
-    Ok(SO3::about(&axis, a.scalar(1)?).into())
+    Ok(SO3::about(&(axis / big), a.scalar(1)?).into())
 }
 
 /// Twist/velocity from a configuration and its derivative, frames of T_sb:
@@ -162,7 +165,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: v3,
                 frames: FrameRule::Outer(0),
             },
-            eval: |a| Ok(v3val(&a.so3(0)?.log())),
+            eval: |a| Ok(v3val(&a.so3_log(0)?)),
         },
         Builtin {
             name: "Rot",

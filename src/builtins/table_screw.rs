@@ -392,7 +392,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: v6,
                 frames: FrameRule::Outer(0),
             },
-            eval: |a| Ok(Value::of(v6(), a.se3(0)?.log())),
+            eval: |a| Ok(Value::of(v6(), a.se3_log(0)?)),
         },
         Builtin {
             name: "twist",

@@ -449,6 +449,11 @@ pub struct Site<'w> {
     pub call_span: Span,
     pub typed: Vec<(Ty, String)>,
     pub warnings: &'w mut Vec<Diagnostic>,
+    /// The θ = π decision of a logarithm by certified arithmetic
+    /// (`super::turn`, given by the caller; None: by the floats).
+    pub certified_turn: Option<fn(&Value) -> Option<crate::lie::so3::HalfTurn>>,
+    /// Entries by certified arithmetic (`super::turn::entries`).
+    pub certified_entries: Option<fn(&Value) -> Option<crate::values::exact_mat::Entries>>,
 }
 
 /// A builtin applied to numbers by its table row's function, with its
@@ -463,6 +468,8 @@ pub fn call(b: &Builtin, vals: Vec<Value>, site: Site) -> Result<Value, Diagnost
         call_span: site.call_span,
         warnings: site.warnings,
         typed: site.typed,
+        certified_turn: site.certified_turn,
+        certified_entries: site.certified_entries,
     };
     let v = (b.eval)(&mut args)?;
     crate::builtins::notes::after_call(&mut args, &v);
@@ -478,6 +485,8 @@ pub fn call_nowhere(b: &Builtin, vals: Vec<Value>) -> Result<Value, OpError> {
         call_span: Span::default(),
         typed: Vec::new(),
         warnings: &mut warnings,
+        certified_turn: None,
+        certified_entries: None,
     };
     call(b, vals, site).map_err(|d| OpError::Message(d.message))
 }

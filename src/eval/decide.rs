@@ -127,6 +127,10 @@ fn exactly_equal(a: &Value, b: &Value) -> Option<bool> {
     {
         return Some(x == y);
     }
+    // (entry by entry where only some entries are exact)
+    if crate::values::exact_mat::entries_differ(a, b) {
+        return Some(false);
+    }
     match super::certify::equal(a, b) {
         Some(Verdict::Equal) => return Some(true),
         Some(Verdict::Differ(_)) => return Some(false),
@@ -187,6 +191,7 @@ pub fn rounding_only(a: &Value, b: &Value) -> bool {
                     && a.exact_form().is_some()
                     && b.exact_form().is_some())
                 && within_sides(x, y, ROUNDING_TOL)
+                && !crate::values::exact_mat::entries_differ(a, b)
         }
         (Value::Formula { .. }, _) | (_, Value::Formula { .. }) => {
             super::formula::rounding_only(a, b)

@@ -46,10 +46,16 @@ impl Op<'_> {
     /// exact form ([`Op::exact_of`]) when it is a number.
     #[inline]
     pub fn set_exact(self, v: &mut Value, args: &[&Value], kind: &Kind) {
-        if let Value::Num { exact, .. } = v
-            && args.iter().all(|a| a.may_be_exact())
-        {
-            *exact = self.exact_of(args, kind);
+        if let Value::Num { exact, .. } = v {
+            if args.iter().all(|a| a.may_be_exact()) {
+                *exact = self.exact_of(args, kind);
+            } else if matches!(self, Op::Vector) && args.iter().any(|a| a.may_be_exact()) {
+                // (a vector of exact and float entries has no exact form,
+                // but keeps its entries, for `==` to decide them one by
+                // one: `(1, exp(0)) == (1 + 1e-20, 1)` is false by its
+                // first entries; `values::exact_mat::entry_forms`)
+                *exact = self.pending(Operands::of(args), kind);
+            }
         }
     }
 
@@ -82,11 +88,17 @@ impl Op<'_> {
         match rows {
             [row] if row.len() == 1 => Op::Block(&[1]).exact_of(row, &Kind::Unknown),
             _ => {
-                if !rows.iter().flatten().all(Value::may_be_exact) {
-                    return Exact::Float;
-                }
                 let widths: Vec<usize> = rows.iter().map(Vec::len).collect();
                 let entries: Vec<&Value> = rows.iter().flatten().collect();
+                if !entries.iter().all(|v| v.may_be_exact()) {
+                    // (numbers of which some are exact keep their entries,
+                    // for `==` to decide them one by one, as vectors do)
+                    let scalars = entries.iter().all(|v| v.as_scalar().is_some());
+                    return match scalars && entries.iter().any(|v| v.may_be_exact()) {
+                        true => Op::Block(&widths).pending(Operands::of(&entries), &Kind::Unknown),
+                        false => Exact::Float,
+                    };
+                }
                 Op::Block(&widths).exact_of(&entries, &Kind::Unknown)
             }
         }

@@ -558,6 +558,8 @@ impl Interp<'_> {
             call_span: span,
             typed,
             warnings: &mut self.warnings,
+            certified_turn: Some(super::turn::half_turn),
+            certified_entries: Some(super::turn::entries),
         };
         let exact = op.exact_of(&vals, &ty.kind);
         let mut v = apply::call(b, vals, site)?;

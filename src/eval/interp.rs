@@ -362,7 +362,7 @@ impl<'a> Interp<'a> {
             if ty.is_group() && *kind != ty {
                 let owned = std::mem::replace(m, crate::values::num::Num::Scalar(0.0));
                 let before = owned.clone();
-                *m = self.group_at_binding(&name, &ty, owned, value_span)?;
+                *m = self.group_at_binding(&name, &ty, owned, exact, value_span)?;
                 // Numbers moved onto the group are no longer what was typed.
                 if *m != before {
                     *exact = Default::default();
@@ -412,7 +412,8 @@ impl<'a> Interp<'a> {
     }
 
     /// `R_sb = M`, `T_ab = M`: the name asserts the group (LANGUAGE.md §5).
-    /// Within 1e-9 the matrix is taken as it is; within 1e-2 it is projected
+    /// Within 1e-9 the matrix is taken as it is (exactly in the group, when
+    /// it has an exact form); within 1e-2 it is projected
     /// (ProjectToSO3/SE3, §3.6) with a warning giving the distance; farther
     /// is a domain error giving the distance (DistanceToSO3/SE3).
     fn group_at_binding(
@@ -420,9 +421,11 @@ impl<'a> Interp<'a> {
         name: &str,
         kind: &Kind,
         m: crate::values::num::Num,
+        exact: &crate::values::exact::Exact,
         span: Span,
     ) -> Result<crate::values::num::Num, Diagnostic> {
-        use super::convert::{Group, Membership, membership};
+        use super::convert::{Group, Membership};
+        use crate::values::exact_mat::membership;
         let group = match kind {
             Kind::SO3 => Group::SO3,
             Kind::SE3 => Group::SE3,
@@ -435,7 +438,7 @@ impl<'a> Interp<'a> {
         }
         let measure = format!("DistanceTo{}", group.name().replace(['(', ')'], ""));
         let fmt = |d: f64| crate::values::number::fmt_num(d, 4);
-        match membership(&m, group) {
+        match membership(&m, exact, group) {
             Membership::Exact(x) => Ok(x),
             Membership::Projected(p, d) => {
                 self.warnings.push(

@@ -33,6 +33,7 @@ mod substitute;
 mod symbols;
 mod transcendental;
 mod tuple_call;
+mod turn;
 mod user_fn;
 mod warned;
 mod witness;

@@ -108,6 +108,8 @@ pub(super) fn typed_first(
                 call_span: Default::default(),
                 typed: Vec::new(),
                 warnings,
+                certified_turn: Some(super::turn::half_turn),
+                certified_entries: Some(super::turn::entries),
             };
             let vals = args.iter().map(|v| (*v).clone()).collect();
             let mut v = apply::call(b, vals, site).map_err(|d| OpError::Message(d.message))?;

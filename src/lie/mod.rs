@@ -57,15 +57,25 @@ pub fn near_zero(x: f64) -> bool {
 }
 
 /// `Normalize(V)` of the book's software (§3.6): the unit vector `V/‖V‖` in
-/// the direction of `V`. `None` when the norm is zero or not finite (the
-/// direction is then undefined).
+/// the direction of `V`. `None` when V is zero or has an entry that is not
+/// finite (the direction is then undefined); a tiny or huge V is
+/// normalized (its norm is found without underflow or overflow).
 pub fn normalize(v: &nalgebra::DVector<f64>) -> Option<nalgebra::DVector<f64>> {
-    let n = v.norm();
-    if n > 0.0 && n.is_finite() {
-        Some(v / n)
-    } else {
-        None
+    if v.iter().any(|x| !x.is_finite()) {
+        return None;
     }
+    let n = v.norm();
+    if (1e-150..=1e150).contains(&n) {
+        return Some(v / n);
+    }
+    // (scaled by the largest entry first: ‖(1e-200, 0)‖² underflows to 0
+    // and ‖(3e200, 4e200)‖² overflows)
+    let big = v.amax();
+    if big == 0.0 {
+        return None;
+    }
+    let w = v / big;
+    Some(&w / w.norm())
 }
 
 #[cfg(test)]

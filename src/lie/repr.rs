@@ -49,8 +49,13 @@ pub fn rot_zyx(a: f64, b: f64, c: f64) -> Mat3 {
 /// a ∓ c is defined: c is set to 0 and a carries the whole rotation about z,
 /// as the note says.
 pub fn euler_zyx(r: &Mat3) -> Angles {
-    let cb = r[(0, 0)].hypot(r[(1, 0)]);
-    let gimbal = cb < GIMBAL_TOL;
+    euler_zyx_decided(r, r[(0, 0)].hypot(r[(1, 0)]) < GIMBAL_TOL)
+}
+
+/// [`euler_zyx`] with gimbal lock (cos b = 0: r₁₁ = r₂₁ = 0) decided by
+/// the caller, from R's exact form or certified entries: cos b = 1e-20 is
+/// below the floats' tolerance, and yet no gimbal lock.
+pub fn euler_zyx_decided(r: &Mat3, gimbal: bool) -> Angles {
     let a = if gimbal {
         (-r[(0, 1)]).atan2(r[(1, 1)])
     } else {
@@ -88,8 +93,12 @@ pub fn rot_zxz(a: f64, b: f64, c: f64) -> Mat3 {
 /// gives b and c. At gimbal lock (sin b ≈ 0: b = 0 or π) only a ± c is
 /// defined: c is set to 0 and a carries the rotation, as the note says.
 pub fn euler_zxz(r: &Mat3) -> Angles {
-    let sb = r[(0, 2)].hypot(r[(1, 2)]);
-    let gimbal = sb < GIMBAL_TOL;
+    euler_zxz_decided(r, r[(0, 2)].hypot(r[(1, 2)]) < GIMBAL_TOL)
+}
+
+/// [`euler_zxz`] with gimbal lock (sin b = 0: r₁₃ = r₂₃ = 0) decided by
+/// the caller (see [`euler_zyx_decided`]).
+pub fn euler_zxz_decided(r: &Mat3, gimbal: bool) -> Angles {
     let a = if gimbal {
         r[(1, 0)].atan2(r[(0, 0)])
     } else {
@@ -125,7 +134,17 @@ pub fn rot_rpy(roll: f64, pitch: f64, yaw: f64) -> Mat3 {
 /// pitch ∈ [−π/2, π/2] and roll, yaw ∈ (−π, π]; see [`euler_zyx`]. At
 /// gimbal lock (pitch = ±π/2) roll is set to 0 and yaw carries the rotation.
 pub fn rpy(r: &Mat3) -> Angles {
-    let e = euler_zyx(r);
+    rpy_of(euler_zyx(r))
+}
+
+/// [`rpy`] with gimbal lock (pitch = ±π/2) decided by the caller (see
+/// [`euler_zyx_decided`]).
+pub fn rpy_decided(r: &Mat3, gimbal: bool) -> Angles {
+    rpy_of(euler_zyx_decided(r, gimbal))
+}
+
+/// Roll–pitch–yaw from the ZYX angles.
+fn rpy_of(e: Angles) -> Angles {
     let note = e.note.map(|_| {
         format!(
             "gimbal lock (pitch = {}π/2): roll and yaw axes coincide; \

@@ -144,13 +144,26 @@ fn ginv_coeff(theta: f64, sin: f64, cos: f64) -> f64 {
 /// φ = 0 this is exactly case (i), so a nearly-identity rotation loses
 /// nothing (the book's software rounds such rotations to zero).
 pub fn log(t: &Mat4) -> Vec6 {
+    log_from(t, so3::log_parts(&t.fixed_view::<3, 3>(0, 0)))
+}
+
+/// `MatrixLog6(T)` ([`log`]) with the branch of its rotation's logarithm
+/// decided by the caller (θ = π or not, from T's exact form:
+/// [`so3::log_decided`]).
+pub fn log_decided(t: &Mat4, d: &so3::HalfTurn) -> Vec6 {
+    log_from(t, so3::log_parts_with(&t.fixed_view::<3, 3>(0, 0), d))
+}
+
+/// [`log`] from the rotation block's logarithm.
+#[inline]
+fn log_from(t: &Mat4, parts: so3::LogParts) -> Vec6 {
     let p = Vec3::new(t[(0, 3)], t[(1, 3)], t[(2, 3)]);
     let so3::LogParts {
         phi,
         theta,
         sin,
         cos,
-    } = so3::log_parts(&t.fixed_view::<3, 3>(0, 0));
+    } = parts;
     let wp = phi.cross(&p);
     let wwp = phi.cross(&wp);
     let v = p - 0.5 * wp + ginv_coeff(theta, sin, cos) * wwp;

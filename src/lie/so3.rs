@@ -176,8 +176,44 @@ pub(crate) struct LogParts {
 #[inline]
 pub(crate) fn log_parts<S: Storage<f64, U3, U3>>(r: &Block3<S>) -> LogParts {
     let s_vec = skew_part(r); // = sinθ · ω̂
-    let s = s_vec.norm();
     let c = 0.5 * (r.trace() - 1.0); // = cosθ (3.54)
+    let half_turn = s_vec.norm() <= HALF_TURN_SKEW;
+    log_parts_with(
+        r,
+        &HalfTurn {
+            skew: s_vec,
+            cos: c,
+            half_turn,
+        },
+    )
+}
+
+/// What decides the branch of the logarithm of a rotation R (§3.2.3.3):
+/// sinθ ω̂ = vee(R − Rᵀ)/2, cosθ = (tr R − 1)/2 (3.54), and whether θ = π
+/// (case (ii): tr R = −1). [`log`] reads them from R's floats; a caller
+/// that knows R exactly decides them exactly ([`log_decided`]): a skew
+/// part of exactly −1e-20 is 0 in floats, yet fixes ω̂'s sign.
+#[derive(Clone, Copy, Debug)]
+pub struct HalfTurn {
+    /// sinθ ω̂ = vee(R − Rᵀ)/2 (0 at a half turn).
+    pub skew: Vec3,
+    /// cosθ = (tr R − 1)/2 (3.54).
+    pub cos: f64,
+    /// θ = π: tr R = −1, ω̂ from (3.58)–(3.60) with the book's sign.
+    pub half_turn: bool,
+}
+
+/// `MatrixLog3(R)` ([`log`]) with its branch decided by the caller: the
+/// skew part, cosθ and whether θ = π given in `d` (from R's exact form).
+pub fn log_decided(r: &Mat3, d: &HalfTurn) -> Vec3 {
+    log_parts_with(r, d).phi
+}
+
+/// The body of [`log_parts`] with the branch given.
+#[inline]
+pub(crate) fn log_parts_with<S: Storage<f64, U3, U3>>(r: &Block3<S>, d: &HalfTurn) -> LogParts {
+    let (s_vec, c) = (d.skew, d.cos);
+    let s = s_vec.norm();
     let theta = s.atan2(c);
     let phi = if c > 0.0 {
         // θ ∈ [0, π/2): skew part, (3.61).
@@ -190,7 +226,7 @@ pub(crate) fn log_parts<S: Storage<f64, U3, U3>>(r: &Block3<S>) -> LogParts {
         s_vec * k
     } else {
         // θ ∈ [π/2, π]: symmetric part, generalising (3.58)–(3.60).
-        near_pi_axis(r, c, &s_vec) * theta
+        near_pi_axis(r, c, &s_vec, d.half_turn) * theta
     };
     LogParts {
         phi,
@@ -231,9 +267,15 @@ fn book_sign<S: Storage<f64, U3, U3>>(r: &Block3<S>, w: Vec3) -> Vec3 {
 
 /// The unit axis ω̂ of a rotation with cosθ = `c` ≤ 0, from the symmetric
 /// part (R + Rᵀ)/2 − cosθ·I = (1 − cosθ) ω̂ω̂ᵀ (3.52): its column with the
-/// largest diagonal entry, signed to agree with `s_vec` = sinθ ω̂. Zero for
-/// input that is not a rotation (e.g. NaN entries).
-fn near_pi_axis<S: Storage<f64, U3, U3>>(r: &Block3<S>, c: f64, s_vec: &Vec3) -> Vec3 {
+/// largest diagonal entry, signed to agree with `s_vec` = sinθ ω̂, or the
+/// book's sign at a half turn. Zero for input that is not a rotation (e.g.
+/// NaN entries).
+fn near_pi_axis<S: Storage<f64, U3, U3>>(
+    r: &Block3<S>,
+    c: f64,
+    s_vec: &Vec3,
+    half_turn: bool,
+) -> Vec3 {
     let d = [r[(0, 0)] - c, r[(1, 1)] - c, r[(2, 2)] - c];
     // The largest diagonal entry; on a tie the later one.
     let k = if d[2] >= d[1] && d[2] >= d[0] {
@@ -256,7 +298,7 @@ fn near_pi_axis<S: Storage<f64, U3, U3>>(r: &Block3<S>, c: f64, s_vec: &Vec3) ->
         return Vec3::zeros();
     }
     let w = col / n;
-    if s_vec.norm() <= HALF_TURN_SKEW {
+    if half_turn {
         return book_sign(r, w);
     }
     if w.dot(s_vec) < 0.0 { -w } else { w }

@@ -203,7 +203,7 @@ pub fn sign(e: &Expr) -> Option<i32> {
 /// bisection between exact signs (`√2 − 1.4142135623730951` is
 /// −5.1e-17, its float 0; (π − 3.6)⁴ expanded cancels 9 digits). None
 /// when it has no such form.
-fn nearest(e: &Expr) -> Option<f64> {
+pub fn nearest(e: &Expr) -> Option<f64> {
     if e.terms.is_empty() {
         return Some(0.0);
     }

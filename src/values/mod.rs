@@ -19,6 +19,7 @@ pub mod domain;
 pub mod equality;
 pub mod error;
 pub mod exact;
+pub mod exact_mat;
 pub mod format;
 pub mod formula;
 pub mod linalg;
