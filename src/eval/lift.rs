@@ -19,6 +19,8 @@ use crate::sym::Mat;
 use crate::sym::coef::{Coef, Rat};
 use crate::sym::expr::{Expr, Symbol, Var};
 use crate::values::exact::Operation;
+use crate::values::recipe::{Recipe, Step};
+use std::rc::Rc;
 
 /// What the canonical forms of both sides' recipes, with their angles
 /// scaled by ν (the module's doc), prove of `a == b`: `Ok(())` equal;
@@ -57,6 +59,8 @@ pub fn verdict(a: &Value, b: &Value) -> Option<Result<(), Expr>> {
 struct Lift {
     /// Each side's lifted form, by the side's shared form.
     memo: HashMap<*const (), Option<Mat>>,
+    /// The lifted forms of formulas' recipes, by recipe.
+    recipes: HashMap<*const Recipe, Option<Mat>>,
     /// None: an angle x is x·ν. Some((M, L)): an angle a + bπ is
     /// (a M) μ + (b L) ρ, μ = 1/M, ρ = π/L.
     split: Option<(i64, i64)>,
@@ -98,16 +102,16 @@ impl Lift {
             (Some((a, b)), Some((m, l))) => {
                 let scaled = |r: &Rat, k: i64| Coef::rat(r.mul(&Rat::int(k)));
                 Some(
-                    symbol("μ")
+                    symbol(MU)
                         .scale(&scaled(&a, m))
-                        .add(&symbol("ρ").scale(&scaled(&b, l))),
+                        .add(&symbol(RHO).scale(&scaled(&b, l))),
                 )
             }
             // (an exact angle not a + bπ, √2 or π², is a symbol of its own)
             (None, _) => Some(self.named(format!("{x:?}"))),
             (Some(ab), None) => {
                 self.angles.get_or_insert_with(Vec::new).push(ab);
-                Some(x.mul(&symbol("ν")))
+                Some(x.mul(&symbol(NU)))
             }
         }
     }
@@ -121,7 +125,7 @@ impl Lift {
                 self.atoms.len() - 1
             }
         };
-        symbol(&format!("α{n}"))
+        symbol(&format!("{ATOM}{n}⟩"))
     }
 }
 
@@ -149,7 +153,7 @@ fn wrapped(e: &Expr, l: i64) -> Expr {
         let mono: crate::sym::expr::Mono = mono
             .iter()
             .filter_map(|(v, k)| match v {
-                Var::Z(s) if &*s.name == "ρ" => {
+                Var::Z(s) if &*s.name == RHO => {
                     let k = i64::from(*k);
                     let r = k.rem_euclid(l);
                     sign ^= ((k - r) / l) % 2 != 0;
@@ -191,7 +195,7 @@ fn reduced(e: &Expr, l: i64, z: &Var) -> Expr {
         let rest: crate::sym::expr::Mono = mono
             .iter()
             .filter(|(v, p)| match v {
-                Var::Z(s) if &*s.name == "ρ" => {
+                Var::Z(s) if &*s.name == RHO => {
                     k = usize::try_from(*p).unwrap_or(0);
                     false
                 }
@@ -252,10 +256,10 @@ fn z_of<'a>(forms: impl Iterator<Item = &'a Expr>) -> Var {
     forms
         .flat_map(|e| e.terms.keys().flatten())
         .find_map(|(v, _)| match v {
-            Var::Z(s) if &*s.name == "ρ" => Some(v.clone()),
+            Var::Z(s) if &*s.name == RHO => Some(v.clone()),
             _ => None,
         })
-        .unwrap_or_else(|| Var::Z(Symbol::new("ρ")))
+        .unwrap_or_else(|| Var::Z(Symbol::new(RHO)))
 }
 
 /// The least L' ≥ L, a multiple of L, whose 2L' is a multiple of the
@@ -274,7 +278,7 @@ fn widened<'a>(forms: impl Iterator<Item = &'a Expr>, l: i64) -> Option<i64> {
 
 /// The proof `verdict` asks for, with angles read by `lift`.
 fn proof(a: &Value, b: &Value, lift: &mut Lift) -> Option<Result<(), Expr>> {
-    let (mut x, mut y) = (lifted(a, lift, 0)?, lifted(b, lift, 0)?);
+    let (mut x, mut y) = (side(a, lift)?, side(b, lift)?);
     if let Some((_, l)) = lift.split {
         lift.wider = widened(x.data.iter().chain(&y.data), l);
         let z = z_of(x.data.iter().chain(&y.data));
@@ -303,6 +307,14 @@ fn proof(a: &Value, b: &Value, lift: &mut Lift) -> Option<Result<(), Expr>> {
         })
         .map(Err)
 }
+
+/// The names of the lift's own symbols, which no typed name can be
+/// (identifiers hold no ⟨): ν scales every angle, μ = 1/M and ρ = π/L
+/// split them, and ⟨αn⟩ is a number read as a symbol of its own.
+const NU: &str = "⟨ν⟩";
+const MU: &str = "⟨μ⟩";
+const RHO: &str = "⟨ρ⟩";
+const ATOM: &str = "⟨α";
 
 /// The symbol `name` (ν, μ, ρ: they stand for numbers in the angles).
 fn symbol(name: &str) -> Expr {
@@ -427,4 +439,109 @@ fn fingerprint(v: &Value, depth: u32) -> Option<String> {
         })
         .flatten()?;
     (out.len() <= MAX_PRINT).then_some(out)
+}
+
+/// The lifted form of a side: a number's ([`lifted`]), or a formula's,
+/// made again from its recipe with its numbers lifted and its symbols as
+/// themselves ([`lifted_recipe`]): an identity in ν, μ, ρ, the atoms and
+/// the symbols holds at the numbers, for every value of the symbols
+/// (`(cos(pi/7) + cos(3pi/7) + cos(5pi/7)) t == t/2`).
+fn side(v: &Value, lift: &mut Lift) -> Option<Mat> {
+    match v {
+        Value::Num { .. } => lifted(v, lift, 0),
+        Value::Formula { how: Some(r), .. } => lifted_recipe(r, lift),
+        Value::Formula { how: None, m, .. } => m.data.iter().all(exact).then(|| m.clone()),
+        _ => None,
+    }
+}
+
+/// The deepest recipe of a formula lifted.
+const MAX_RECIPE_DEPTH: u32 = 400;
+
+/// The lifted form of a formula's recipe: its leaves' (numbers lifted, a
+/// `given` symbol's canonical form as is), then each operation through
+/// the exact path, the angles of sines, cosines and rotations read as
+/// [`Lift::angle_with_symbols`] does.
+fn lifted_recipe(r: &Rc<Recipe>, lift: &mut Lift) -> Option<Mat> {
+    if r.depth > MAX_RECIPE_DEPTH {
+        return None;
+    }
+    let key = Rc::as_ptr(r);
+    if let Some(found) = lift.recipes.get(&key) {
+        return found.clone();
+    }
+    let out = stacker::maybe_grow(64 * 1024, 1024 * 1024, || match &r.step {
+        Step::Leaf(v @ Value::Num { .. }) => lifted(v, lift, 0),
+        Step::Leaf(Value::Formula { m, .. }) => m.data.iter().all(exact).then(|| m.clone()),
+        Step::Retag => lifted_recipe(r.args.first()?, lift),
+        Step::Op(op) => {
+            let angle = angle_of(op);
+            let mut forms = Vec::with_capacity(r.args.len());
+            for (i, a) in r.args.iter().enumerate() {
+                let mut m = lifted_recipe(a, lift)?;
+                if Some(i) == angle {
+                    if m.data.len() != 1 {
+                        return None;
+                    }
+                    m.data[0] = lift.angle_with_symbols(&m.data[0])?;
+                }
+                forms.push(Value::Formula {
+                    kind: a.kind,
+                    m,
+                    how: None,
+                });
+            }
+            super::exactness::formula_of(op, forms, &r.kind)
+        }
+        _ => None,
+    });
+    lift.recipes.insert(key, out.clone());
+    out
+}
+
+/// True for a variable of the lift's own (ν, μ, ρ, an atom).
+fn own(v: &Var) -> bool {
+    let named = |s: &Symbol| s.name.starts_with('⟨');
+    match v {
+        Var::Sym(s) | Var::Z(s) => named(s),
+        Var::Pi => false,
+        Var::Call(c) => {
+            let mut names = Vec::new();
+            c.args.iter().for_each(|e| e.symbols(&mut names));
+            names.iter().all(named)
+        }
+    }
+}
+
+impl Lift {
+    /// An angle that may hold symbols, S + C: the part S in the symbols
+    /// stays as it is, the constant part C is read as [`Lift::angle`]
+    /// reads a number's (a symbol of its own when it is not a + bπ).
+    fn angle_with_symbols(&mut self, x: &Expr) -> Option<Expr> {
+        let mut symbols = Expr::default();
+        let mut constant = Expr::default();
+        for (mono, c) in &x.terms {
+            let term = Expr {
+                terms: std::iter::once((mono.clone(), c.clone())).collect(),
+            };
+            let user = mono.iter().any(|(v, _)| !matches!(v, Var::Pi) && !own(v));
+            if user {
+                symbols = symbols.add(&term);
+            } else {
+                constant = constant.add(&term);
+            }
+        }
+        if symbols.terms.is_empty() {
+            return match rational_and_pi(&constant) {
+                Some(_) => self.angle(&constant),
+                None => Some(self.named(format!("{constant:?}"))),
+            };
+        }
+        let c = match rational_and_pi(&constant) {
+            _ if constant.terms.is_empty() => constant,
+            Some(_) => self.angle(&constant)?,
+            None => self.named(format!("{constant:?}")),
+        };
+        Some(symbols.add(&c))
+    }
 }

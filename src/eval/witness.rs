@@ -20,6 +20,11 @@
 //! - sides that agree at every point far past rounding, with no proof,
 //!   are undecided, and the answer says so.
 //!
+//! Before the points, the sides' recipes are lifted (`super::lift`): the
+//! numbers in them made functions of new symbols that stand for them, the
+//! given symbols kept; equal lifted forms are an identity, so the sides
+//! are equal for every value of the symbols, proven with no point.
+//!
 //! The premise is that a float sum which cancelled to within rounding left
 //! no monomial out of both sides (`sym::coef` drops such noise); a
 //! difference hiding there is still caught when a point shows it.
@@ -74,6 +79,16 @@ pub(super) fn at_points(a: &Value, b: &Value) -> Option<AtPoints> {
     names.retain(|s| seen.insert(s.clone()));
     if names.is_empty() || names.iter().any(|s| s.unit) {
         return None;
+    }
+    // (first the lifted forms, `super::lift`: an identity in the symbols
+    // and in what stands for the numbers holds at every point)
+    match super::lift::verdict(a, b) {
+        Some(Ok(())) => return Some(AtPoints::Identity),
+        Some(Err(d)) => {
+            let d = super::ball::exact(&d, 128).map_or(0.0, |d| super::ball::floats(&d).0);
+            return Some(AtPoints::Differ(d));
+        }
+        None => {}
     }
     // The monomials (as functions of the symbols) each entry's difference
     // may hold: how many points prove it zero.
