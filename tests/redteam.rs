@@ -526,3 +526,53 @@ fn subs_of_a_comparison_is_a_comparison() {
     );
     assert_eq!(out.lines().last(), Some("true"), "{out}");
 }
+
+// ------------------------------------------------ refused in time (session 13)
+
+/// `diff` of the inverse of a screw's exponential whose angle is a 15th
+/// power of a sum of cosines (matrix differential seed 100072: 29.5 s,
+/// then "too large") is refused before the derivative is formed, with the
+/// limit named; the same with a square is answered, and its entries bound
+/// later are those of the numbers typed first.
+#[test]
+fn a_derivative_too_large_is_refused_before_it_is_formed() {
+    let angle = |n: u32| {
+        format!(
+            "(cos(-2 a + b - t + q1 - 11 pi/11 + 2.50) + cos(-a + 2 b - q1 - 11 pi/7 + 9.3))^{n}"
+        )
+    };
+    let x = |n: u32| format!("inv(exp([(2/7, -6/7, 3/7, 1, 2, -1)] * {}))", angle(n));
+    let src = format!(
+        "given a, b : scalar\ngiven q1(t) : scalar\nx = diff({}, t)",
+        x(15)
+    );
+    let e = error(&src);
+    assert!(
+        e.contains("symbolic expression too large: the derivative would take")
+            && e.contains("(more than 64000000)"),
+        "{e}"
+    );
+    // a square: answered, and bound later as typed first
+    let at = "a = 0.3\nb = -0.7\nt = 0.2\nq1 = 0.4\nq1' = 1.5\n";
+    let later = last_numbers(&format!(
+        "given a, b : scalar\ngiven q1(t) : scalar\nx = diff({}, t)\n{at}x",
+        x(2)
+    ));
+    assert_eq!(later.len(), 16);
+    // d/dt by a central difference of the numbers typed first
+    let h = 1e-6;
+    let at_t = |t: f64| {
+        last_numbers(&format!(
+            "a = 0.3\nb = -0.7\nt = {t}\nq1 = 0.4 + 1.5 * ({t} - 0.2)\n{}",
+            x(2)
+        ))
+    };
+    let (up, down) = (at_t(0.2 + h), at_t(0.2 - h));
+    for k in 0..16 {
+        let fd = (up[k] - down[k]) / (2.0 * h);
+        assert!(
+            (later[k] - fd).abs() < 1e-6 * (1.0 + fd.abs()),
+            "{k}: {later:?} {fd}"
+        );
+    }
+}
