@@ -272,7 +272,7 @@ fn machin(p: u32) -> BigInt {
         let mut k = 0u32;
         while !power.is_zero() {
             let term = &power / BigInt::from(2 * k + 1);
-            if k % 2 == 0 {
+            if k.is_multiple_of(2) {
                 sum += term;
             } else {
                 sum -= term;
@@ -298,12 +298,12 @@ fn series(x: &H) -> (H, H) {
     let mut term = BigInt::one() << p; // x^k / k!, within k units
     let mut k = 0u32;
     while !term.is_zero() {
-        let signed = if (k / 2) % 2 == 0 {
+        let signed = if (k / 2).is_multiple_of(2) {
             term.clone()
         } else {
             -&term
         };
-        if k % 2 == 0 {
+        if k.is_multiple_of(2) {
             c += signed;
         } else {
             s += signed;
