@@ -169,7 +169,7 @@ pub fn fits_sums(sums: &[Vec<(&Expr, &Expr)>], what: &str) -> Result<(), String>
     let limit = super::symbolic::MAX_SYM_NODES;
     let work = sums
         .iter()
-        .map(|p| crate::sym::size::work(p))
+        .map(|p| crate::sym::size::flat_work(p))
         .fold(0, usize::saturating_add);
     if work > MAX_WORK {
         return Err(format!(
