@@ -200,6 +200,10 @@ struct Tally {
     cancelled: u64,
     /// Pairs checked (the others were out of the oracle's range).
     checked: u64,
+    /// Pairs the oracle told only above its first precision.
+    more_places: u64,
+    /// Pairs the oracle could not tell at its highest precision (left out).
+    oracle_unsure: u64,
 }
 
 thread_local!(static TALLY: std::cell::RefCell<Tally> = std::cell::RefCell::new(Tally::default()));
@@ -213,7 +217,7 @@ fn judge(
     (x, y): (&[V], &[V]),
     (floats_equal, within_rounding): (bool, bool),
 ) -> Result<(), String> {
-    let equal = x.iter().zip(y).all(|(p, q)| hp::same(&p.h, &q.h));
+    let equal = x.iter().zip(y).all(|(p, q)| p.same(q));
     let exact = x.iter().chain(y).all(|v| v.exact);
     let note = rounding_note(line);
     match (got, equal) {
@@ -268,21 +272,63 @@ fn judge(
 
 /// One pair of scalars: every check (a)–(f).
 fn check_scalars((ex, ey): &(E, E)) -> Result<(), String> {
-    let (Some(x), Some(y)) = (ex.eval(), ey.eval()) else {
-        return Ok(());
-    };
-    check_pair(&ex.src(), &ey.src(), &[x], &[y])
+    at_precisions(
+        || Some((vec![ex.eval()?], vec![ey.eval()?])),
+        |x, y| check_pair(&ex.src(), &ey.src(), x, y),
+    )
 }
 
 /// One pair of matrices: every check (a)–(f).
 fn check_matrices((mx, my): &(M, M)) -> Result<(), String> {
-    let (Some(x), Some(y)) = (mx.eval(), my.eval()) else {
-        return Ok(());
-    };
-    if x.n != y.n {
-        return Ok(());
+    at_precisions(
+        || {
+            let (x, y) = (mx.eval()?, my.eval()?);
+            (x.n == y.n).then_some((x.e, y.e))
+        },
+        |x, y| check_pair(&mx.src(), &my.src(), x, y),
+    )
+}
+
+/// Evaluates a case's values with the oracle (None: out of its range)
+/// and checks them, at the oracle's precisions in turn: at the first
+/// where every value is resolved and every comparison tells
+/// ([`hp::take_unsure`]). A case it cannot tell at the highest is left
+/// out, and counted.
+fn at_precisions(
+    values: impl Fn() -> Option<(Vec<V>, Vec<V>)>,
+    check: impl Fn(&[V], &[V]) -> Result<(), String>,
+) -> Result<(), String> {
+    for (i, &p) in hp::PRECISIONS.iter().enumerate() {
+        let verdict = hp::with_prec(p, || {
+            hp::take_unsure();
+            let vs = values();
+            let wide = vs
+                .as_ref()
+                .is_some_and(|(x, y)| x.iter().chain(y).any(|v| !v.h.resolved()));
+            if hp::take_unsure() || wide {
+                return None;
+            }
+            let Some((x, y)) = vs else {
+                return Some(Ok(()));
+            };
+            let before = TALLY.with(|t| t.borrow().checked);
+            let r = check(&x, &y);
+            if hp::take_unsure() {
+                // (asked again at more places: counted then)
+                TALLY.with(|t| t.borrow_mut().checked = before);
+                return None;
+            }
+            Some(r)
+        });
+        if let Some(r) = verdict {
+            if i > 0 {
+                TALLY.with(|t| t.borrow_mut().more_places += 1);
+            }
+            return r;
+        }
     }
-    check_pair(&mx.src(), &my.src(), &x.e, &y.e)
+    TALLY.with(|t| t.borrow_mut().oracle_unsure += 1);
+    Ok(())
 }
 
 /// Checks (a)–(f) on values `x` and `y` typed as `xs` and `ys`.
@@ -327,7 +373,7 @@ fn check_pair(xs: &str, ys: &str, x: &[V], y: &[V]) -> Result<(), String> {
     // (undecided only where the sides are equal: numbers made from exact
     // ones that agree far past rounding with no proof at hand are "cannot
     // decide", issue 21 and `eval::certify`; never where they differ)
-    if eq.is_none() && !x.iter().zip(y).all(|(p, q)| hp::same(&p.h, &q.h)) {
+    if eq.is_none() && !x.iter().zip(y).all(|(p, q)| p.same(q)) {
         return Err(ctx("x == y on numbers undecided, yet they differ".into()));
     }
     judge("x == y", eq, &lines[3], (x, y), floats).map_err(ctx)?;
@@ -381,7 +427,7 @@ fn check_pair(xs: &str, ys: &str, x: &[V], y: &[V]) -> Result<(), String> {
 /// their values where the floats are farther apart than rounding.
 fn check_order(lines: &[Line], x: &V, y: &V) -> Result<(), String> {
     let d = x.h.sub(&y.h);
-    let sign = if hp::same(&x.h, &y.h) { 0 } else { d.signum() };
+    let sign = if x.same(y) { 0 } else { d.signum() };
     let exact = x.exact && y.exact;
     let apart = d.to_f64().abs() > 8.0 * (x.err + y.err);
     for (k, what, want) in [(11, "x < y", sign < 0), (12, "x >= y", sign >= 0)] {
@@ -422,8 +468,16 @@ fn tally() {
         eprintln!(
             "{} pairs checked; honest but not ideal: float == true {}, float == false with the note {}, \
              the note on a real difference {}, undecided over a symbol {}, \
-             cancelled floats == false with no note {}",
-            t.checked, t.float_true, t.float_false, t.note_on_real_difference, t.undecided, t.cancelled
+             cancelled floats == false with no note {}; the oracle told {} only at more places \
+             and could not tell {} (left out)",
+            t.checked,
+            t.float_true,
+            t.float_false,
+            t.note_on_real_difference,
+            t.undecided,
+            t.cancelled,
+            t.more_places,
+            t.oracle_unsure
         );
     });
 }

@@ -563,3 +563,92 @@ fn a_small_coefficient_is_a_term_not_noise() {
         "{shown}"
     );
 }
+
+// ------------------------------------------------ refused in time (session 13)
+
+/// `diff` of the inverse of a screw's exponential whose angle is a 15th
+/// power of a sum of cosines (matrix differential seed 100072: 29.5 s,
+/// then "too large") is refused with the limit named (its 13,392 term
+/// products are cheap: formed, then measured); the same with a square is
+/// answered, and its entries bound later are those of the numbers typed
+/// first.
+#[test]
+fn a_derivative_too_large_is_refused_with_the_limit_named() {
+    let angle = |n: u32| {
+        format!(
+            "(cos(-2 a + b - t + q1 - 11 pi/11 + 2.50) + cos(-a + 2 b - q1 - 11 pi/7 + 9.3))^{n}"
+        )
+    };
+    let x = |n: u32| format!("inv(exp([(2/7, -6/7, 3/7, 1, 2, -1)] * {}))", angle(n));
+    let src = format!(
+        "given a, b : scalar\ngiven q1(t) : scalar\nx = diff({}, t)",
+        x(15)
+    );
+    let e = error(&src);
+    assert!(
+        e.contains("symbolic expression too large (more than 10000 terms"),
+        "{e}"
+    );
+    // a square: answered, and bound later as typed first
+    let at = "a = 0.3\nb = -0.7\nt = 0.2\nq1 = 0.4\nq1' = 1.5\n";
+    let later = last_numbers(&format!(
+        "given a, b : scalar\ngiven q1(t) : scalar\nx = diff({}, t)\n{at}x",
+        x(2)
+    ));
+    assert_eq!(later.len(), 16);
+    // d/dt by a central difference of the numbers typed first
+    let h = 1e-6;
+    let at_t = |t: f64| {
+        last_numbers(&format!(
+            "a = 0.3\nb = -0.7\nt = {t}\nq1 = 0.4 + 1.5 * ({t} - 0.2)\n{}",
+            x(2)
+        ))
+    };
+    let (up, down) = (at_t(0.2 + h), at_t(0.2 - h));
+    for k in 0..16 {
+        let fd = (up[k] - down[k]) / (2.0 * h);
+        assert!(
+            (later[k] - fd).abs() < 1e-6 * (1.0 + fd.abs()),
+            "{k}: {later:?} {fd}"
+        );
+    }
+}
+
+/// A 25th power of a sum over `cos u + 0.905`: the exact division that
+/// would cancel the denominator does not exist, and trying it grew the
+/// remainder's coefficients by 1.81 a step to thousands of digits (10 s
+/// in release, sym differential seed 900623); it is given up, the
+/// reciprocal kept, and bound later the value is the quotient's.
+#[test]
+fn a_quotient_that_does_not_divide_keeps_its_reciprocal() {
+    let x = "(c + sin(a + b - t - 12*pi/9 + 0.110))^25 * (cos(a - b + 2 t - 10*pi/7 + 0.257) + 0.905)^(-1)";
+    let at = "a = -1.152343161971226\nb = -1.4402539518123978\nc = 1.5738413367155324\nt = -0.3\n";
+    let later = last_numbers(&format!("given a, b, c, t\nx = {x}\n{at}x"));
+    let first = last_numbers(&format!("{at}{x}"));
+    let (a, b, c, t) = (
+        -1.152343161971226f64,
+        -1.4402539518123978f64,
+        1.5738413367155324f64,
+        -0.3f64,
+    );
+    let pi = std::f64::consts::PI;
+    let want = (c + (a + b - t - 12.0 * pi / 9.0 + 0.110).sin()).powi(25)
+        / ((a - b + 2.0 * t - 10.0 * pi / 7.0 + 0.257).cos() + 0.905);
+    for v in [later[0], first[0]] {
+        assert!((v - want).abs() < 1e-10 * want.abs(), "{v} vs {want}");
+    }
+}
+
+/// NOT FIXED (session 13, matrix differential seed 800273): `euler_zxz` of
+/// a symbolic rotation is a closed form on a branch (the note says
+/// sin(u) > 0); its value bound later is replayed from the numbers, but
+/// its derivative is the branch's formula evaluated off the branch: at
+/// u = −1 the angles are (π, 1, π), so d/du is (0, −1, 0); chasles prints
+/// (0, 1, 0). Right would be the derivative on the numbers' branch, or a
+/// refusal that names the branch.
+#[test]
+#[ignore = "a wrong answer not fixed yet: the derivative of a closed form on a branch, bound off it"]
+fn diff_of_a_closed_form_on_a_branch_bound_off_it() {
+    let v = last_numbers("given u\ne = euler_zxz(Rotx(u))\nx = diff(e, u)\nu = -1\nx");
+    assert_eq!(v, vec![0.0, -1.0, 0.0]);
+}

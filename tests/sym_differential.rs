@@ -319,8 +319,11 @@ impl T {
             (y, y.abs() + e * df(v).abs())
         };
         match self {
-            T::Sym(_) | T::Time | T::Q(..) | T::Int(_) => (self.eval(at).0, 0.0),
-            T::Dec(..) | T::Pi => {
+            T::Int(_) => (self.eval(at).0, 0.0),
+            // (a bound number is read as the decimal it prints as, exactly:
+            // within half an ulp of the float, seed 906975: a + b at
+            // a ≈ −b cancels to that half ulp, 7.5e-18 in 3.4e-4)
+            T::Sym(_) | T::Time | T::Q(..) | T::Dec(..) | T::Pi => {
                 let v = self.eval(at).0;
                 (v, v.abs())
             }
@@ -413,7 +416,14 @@ impl T {
         match self {
             T::Sym(_) | T::Time | T::Q(..) | T::Int(_) | T::Dec(..) | T::Pi => {
                 let (v, e) = self.direct(at);
-                (v, e, rate(self), 0.0)
+                // (a rate of q is a bound number too)
+                let d = rate(self);
+                let ed = if matches!(self, T::Q(..)) {
+                    d.abs()
+                } else {
+                    0.0
+                };
+                (v, e, d, ed)
             }
             T::Neg(x) => {
                 let (v, e, d, ed) = x.dual(at, by);
@@ -783,6 +793,9 @@ fn check(e: &T, p: &Point, tally: &mut Tally) -> Result<(), String> {
     let src = e.source();
     let decl = "given a, b, c : scalar\ngiven q1(t), q2(t) : scalar\n";
     let later = format!("{decl}x = {src}\n{}y = x\n", bindings(&at));
+    if std::env::var_os("CHASLES_DIFF_SHOW").is_some() {
+        eprintln!("{later}");
+    }
     let (s, n, msg) = session(&later);
     if n > 0 {
         // a refusal is an answer; a wrong value is not

@@ -446,9 +446,32 @@ fn diff(v: &Value, x: &Mat, by: &Mat, kind: &Kind) -> Result<Value, String> {
         Kind::Unknown => v.kind(),
         k => *k,
     };
+    // Σ_v R_v·dv in each entry, refused before it is formed when too large
+    let mut known = crate::sym::diff::Known::default();
+    let parts: Vec<Vec<(Expr, Expr)>> = x
+        .data
+        .iter()
+        .map(|e| e.diff_parts(&wrt, &mut known))
+        .collect();
+    let pairs: Vec<Vec<(&Expr, &Expr)>> = parts
+        .iter()
+        .map(|p| p.iter().map(|(r, d)| (r, d)).collect())
+        .collect();
+    formula::fits_sums(&pairs, "derivative")?;
     // canonical as a quotient is (common factors cancelled): d tan t is
     // 1 + tan² t, not tan² t + cos t/cos t
-    Ok(make(&kind, x.map(|e| e.diff(&wrt).cancel())))
+    let data = pairs
+        .iter()
+        .map(|p| crate::sym::dense::sum_of_products(p).cancel())
+        .collect();
+    Ok(make(
+        &kind,
+        Mat {
+            rows: x.rows,
+            cols: x.cols,
+            data,
+        },
+    ))
 }
 
 /// `diff`: the kind of a derivative (a rotation's is a plain matrix).

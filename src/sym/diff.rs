@@ -22,27 +22,51 @@ impl Wrt {
     }
 }
 
+/// The derivatives of variables worked out so far (a call may sit in
+/// thousands of terms, and in every entry of a matrix; a shared call is
+/// known by its pointer).
+#[derive(Default)]
+pub struct Known(Vec<(Var, Expr)>);
+
+impl Known {
+    /// The index of dv, worked out on first sight.
+    fn of(&mut self, v: &Var, wrt: &Wrt) -> usize {
+        let same = |(k, _): &(Var, Expr)| match (k, v) {
+            (Var::Call(a), Var::Call(b)) => Arc::ptr_eq(a, b),
+            _ => k == v,
+        };
+        match self.0.iter().position(same) {
+            Some(k) => k,
+            None => {
+                self.0.push((v.clone(), var_diff(v, wrt)));
+                self.0.len() - 1
+            }
+        }
+    }
+}
+
 impl Expr {
-    /// The derivative (chain rule through every variable).
+    /// The derivative (chain rule through every variable): Σ_v R_v·dv over
+    /// [`Expr::diff_parts`], the products packed where that pays.
     pub fn diff(&self, wrt: &Wrt) -> Expr {
-        let mut out = Expr::zero();
-        // each variable's derivative, worked out once (a call may sit in
-        // thousands of terms; a shared call is known by its pointer)
-        let mut known: Vec<(Var, Expr)> = Vec::new();
+        let parts = self.diff_parts(wrt, &mut Known::default());
+        let pairs: Vec<(&Expr, &Expr)> = parts.iter().map(|(r, d)| (r, d)).collect();
+        super::dense::sum_of_products(&pairs)
+    }
+
+    /// The derivative as parts (R_v, dv), one for each variable v whose
+    /// derivative dv is not 0: R_v = ∂self/∂v, the terms that hold v with
+    /// its power brought down, so that the derivative is Σ_v R_v·dv — a
+    /// sum of products whose size and work can be told before any of it
+    /// is formed ([`super::size::sum_of_products`], [`super::size::work`]).
+    /// `known` carries the variables' derivatives from entry to entry.
+    pub fn diff_parts(&self, wrt: &Wrt, known: &mut Known) -> Vec<(Expr, Expr)> {
+        // (the index of dv in `known`, R_v)
+        let mut parts: Vec<(usize, Expr)> = Vec::new();
         for (m, c) in &self.terms {
             for (i, (v, e)) in m.iter().enumerate() {
-                let same = |(k, _): &&(Var, Expr)| match (k, v) {
-                    (Var::Call(a), Var::Call(b)) => Arc::ptr_eq(a, b),
-                    _ => k == v,
-                };
-                let dv = match known.iter().find(same) {
-                    Some((_, d)) => d,
-                    None => {
-                        known.push((v.clone(), var_diff(v, wrt)));
-                        &known[known.len() - 1].1
-                    }
-                };
-                if dv.is_zero() {
+                let k = known.of(v, wrt);
+                if known.0[k].1.is_zero() {
                     continue;
                 }
                 let mut rest: Mono = m.clone();
@@ -51,16 +75,23 @@ impl Expr {
                 } else {
                     rest[i].1 = e.saturating_sub(1);
                 }
-                let mut t = Expr::zero();
-                t.push(rest, c.mul(&Coef::int(i64::from(*e))));
-                // (summed in place: adding to a copy of the sum each time
-                // was quadratic in its length)
-                for (m, c) in t.mul(dv).terms {
-                    out.push(m, c);
+                let c = c.mul(&Coef::int(i64::from(*e)));
+                // (R_v summed in place)
+                match parts.iter_mut().find(|(j, _)| *j == k) {
+                    Some((_, r)) => r.push(rest, c),
+                    None => {
+                        let mut r = Expr::zero();
+                        r.push(rest, c);
+                        parts.push((k, r));
+                    }
                 }
             }
         }
-        out
+        parts
+            .into_iter()
+            .filter(|(_, r)| !r.is_zero())
+            .map(|(k, r)| (r, known.0[k].1.clone()))
+            .collect()
     }
 }
 

@@ -262,18 +262,30 @@ impl Expr {
     /// words counting one more per word: the size that the expression
     /// limit bounds (so the work of exact big coefficients is bounded too).
     pub fn size(&self) -> usize {
-        self.terms
-            .iter()
-            .map(|(m, c)| {
-                1 + c.words()
-                    + m.iter()
-                        .map(|(v, _)| match v {
-                            Var::Call(c) => c.args.iter().map(Expr::size).sum(),
-                            _ => 0,
-                        })
-                        .sum::<usize>()
-            })
-            .sum()
+        self.size_with(&mut std::collections::HashMap::new())
+    }
+    /// [`Expr::size`], each shared call's arguments measured once (a call
+    /// may sit in hundreds of terms).
+    fn size_with(&self, seen: &mut std::collections::HashMap<*const Call, usize>) -> usize {
+        let mut n = 0;
+        for (m, c) in &self.terms {
+            n += 1 + c.words();
+            for (v, _) in m {
+                if let Var::Call(call) = v {
+                    let key = Arc::as_ptr(call);
+                    let k = match seen.get(&key) {
+                        Some(k) => *k,
+                        None => {
+                            let k = call.args.iter().map(|a| a.size_with(seen)).sum();
+                            seen.insert(key, k);
+                            k
+                        }
+                    };
+                    n += k;
+                }
+            }
+        }
+        n
     }
 
     /// How deeply calls nest (`sin(sin(t))` is 2): printing and evaluation

@@ -160,6 +160,37 @@ pub fn fits(a: &Mat, b: &Mat, what: &str) -> Result<(), String> {
     }
 }
 
+/// Refuses, as [`fits`] does, what is formed as one sum of products
+/// Σ_k a_k·b_k in each entry (`sums`, one per entry; `what` names it):
+/// before any of it is formed when its work passes [`MAX_WORK`], or passes
+/// [`CHEAP_WORK`] while its terms counted before cancellation pass the
+/// expression limit (a derivative as [`Expr::diff_parts`] gives it).
+pub fn fits_sums(sums: &[Vec<(&Expr, &Expr)>], what: &str) -> Result<(), String> {
+    let limit = super::symbolic::MAX_SYM_NODES;
+    let work = sums
+        .iter()
+        .map(|p| crate::sym::size::flat_work(p))
+        .fold(0, usize::saturating_add);
+    if work > MAX_WORK {
+        return Err(format!(
+            "symbolic expression too large: the {what} would take {work} term products (more than {MAX_WORK})"
+        ));
+    }
+    if work <= CHEAP_WORK {
+        return Ok(());
+    }
+    let n: Option<usize> = sums
+        .iter()
+        .map(|p| crate::sym::size::sum_of_products(p))
+        .sum();
+    match n {
+        Some(n) if n > limit => Err(format!(
+            "symbolic expression too large: the {what} would have up to {n} terms (more than {limit})"
+        )),
+        _ => Ok(()),
+    }
+}
+
 fn too_large() -> String {
     format!(
         "symbolic expression too large (more than {} terms)",

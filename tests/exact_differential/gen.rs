@@ -41,6 +41,20 @@ pub struct V {
 
 const EPS: f64 = f64::EPSILON;
 
+/// The oracle's ball of a value known exactly as a rational `rat` or as
+/// `pim`·π: made from that (within a unit of the last place) rather than
+/// by the arithmetic that led there, whose radius may be wide.
+fn exactly(h: H, rat: &Option<BigRational>, pim: &Option<BigRational>) -> H {
+    match (rat, pim) {
+        (Some(r), _) => H::frac(r.numer(), r.denom()),
+        (None, Some(m)) => H::pi()
+            .mul(&H::big(m.numer()))
+            .div(&H::big(m.denom()))
+            .unwrap_or(h),
+        _ => h,
+    }
+}
+
 impl V {
     fn of_rat(r: BigRational) -> V {
         let h = H::frac(r.numer(), r.denom());
@@ -68,6 +82,14 @@ impl V {
     /// |value| as a float.
     pub fn size(&self) -> f64 {
         self.h.to_f64().abs()
+    }
+    /// True when `self` and `o` are the same real: exactly when both are
+    /// rational, else as the oracle's balls tell ([`super::hp::same`]).
+    pub fn same(&self, o: &V) -> bool {
+        match (&self.rat, &o.rat) {
+            (Some(a), Some(b)) => a == b,
+            _ => super::hp::same(&self.h, &o.h),
+        }
     }
 }
 
@@ -166,7 +188,12 @@ impl E {
         // (a zero is one when it is known exactly: 1e-216 is 0 to the
         // oracle's places)
         let zero = v.h.is_zero() && v.rat.as_ref().is_some_and(Zero::is_zero);
-        (zero || (1e-120..1e120).contains(&size)).then_some(v)
+        let within = zero || (1e-120..1e120).contains(&size);
+        if !within && !v.h.resolved() {
+            // (out of range by a centre the oracle is unsure of)
+            super::hp::unsure();
+        }
+        within.then_some(v)
     }
 
     fn value(&self) -> Option<V> {
@@ -335,7 +362,7 @@ pub fn add(a: &V, b: &V, minus: bool) -> V {
         _ => None,
     };
     V {
-        h,
+        h: exactly(h, &rat, &pim),
         err: a.err + b.err + EPS * size,
         exact: a.exact && b.exact,
         pi,
@@ -363,9 +390,9 @@ pub fn mul(a: &V, b: &V) -> V {
         _ => None,
     };
     V {
+        h: exactly(h, &rat, &pim),
         pim,
         err: a.err * y + b.err * x + a.err * b.err + EPS * x * y,
-        h,
         exact: a.exact && b.exact,
         pi,
         rat,
@@ -378,7 +405,11 @@ fn div(a: &V, b: &V) -> Option<V> {
     if b.h.is_zero() || y <= 8.0 * b.err || y < 1e-200 {
         return None;
     }
-    let h = a.h.div(&b.h)?;
+    let Some(h) = a.h.div(&b.h) else {
+        // (a divisor away from 0 whose ball still holds 0)
+        super::hp::unsure();
+        return None;
+    };
     let rat = match (&a.rat, &b.rat) {
         (Some(x), Some(y)) => Some(x / y),
         _ => None,
@@ -395,9 +426,9 @@ fn div(a: &V, b: &V) -> Option<V> {
         _ => None,
     };
     Some(V {
+        h: exactly(h, &rat, &pim),
         pim,
         err: (a.err + q * b.err) / (y - b.err) + EPS * q,
-        h,
         exact: a.exact && b.exact && b.pi != Pi::Poly,
         pi,
         rat,
@@ -408,7 +439,12 @@ fn div(a: &V, b: &V) -> Option<V> {
 /// any exact rational is exact; the engine finds the square-free part of
 /// numerators and denominators below 2⁶⁰ always).
 fn sqrt(a: &V) -> Option<V> {
-    if a.h.signum() < 0 {
+    if a.h.holds_zero() && !a.h.is_zero() {
+        // (0 or near it, not known to be 0: out of the oracle's range
+        // when it is 0 to its places, else ask at more places)
+        if super::hp::cmp(&a.h, &H::int(0)) == super::hp::Cmp::Unknown {
+            super::hp::unsure();
+        }
         return None;
     }
     let h = a.h.sqrt()?;
@@ -427,9 +463,10 @@ fn sqrt(a: &V) -> Option<V> {
         (&p * &p == *r.numer() && &q * &q == *r.denom() && !r.is_negative())
             .then(|| BigRational::new(p, q))
     });
+    let pim = rat.as_ref().filter(|r| r.is_zero()).cloned();
     Some(V {
-        pim: rat.as_ref().filter(|r| r.is_zero()).cloned(),
-        h,
+        h: exactly(h, &rat, &pim),
+        pim,
         err,
         exact: in_field,
         pi: Pi::Free,

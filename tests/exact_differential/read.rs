@@ -226,6 +226,8 @@ impl Parser {
         let (int, frac) = mant.split_once('.').unwrap_or((&mant, ""));
         let digits: BigInt = format!("{int}{frac}").parse().map_err(|_| "digits")?;
         let scale = exp - frac.len() as i32;
-        Ok(H::big(&digits).mul(&H::pow10(scale)))
+        // (exactly digits·10^scale, within a unit of the last place)
+        let ten = |k: i32| BigInt::from(10).pow(k.max(0).unsigned_abs());
+        Ok(H::frac(&(digits * ten(scale)), &ten(-scale)))
     }
 }
