@@ -639,16 +639,68 @@ fn a_quotient_that_does_not_divide_keeps_its_reciprocal() {
     }
 }
 
-/// NOT FIXED (session 13, matrix differential seed 800273): `euler_zxz` of
-/// a symbolic rotation is a closed form on a branch (the note says
-/// sin(u) > 0); its value bound later is replayed from the numbers, but
-/// its derivative is the branch's formula evaluated off the branch: at
-/// u = −1 the angles are (π, 1, π), so d/du is (0, −1, 0); chasles prints
-/// (0, 1, 0). Right would be the derivative on the numbers' branch, or a
-/// refusal that names the branch.
+/// Matrix differential seed 800273: `euler_zxz` of a symbolic rotation is
+/// a closed form on a branch (the note says sin(u) > 0); its value bound
+/// later was replayed from the numbers, but its derivative was the
+/// branch's formula, a constant (0, 1, 0) that kept no recipe, read off
+/// the branch: at u = −1 the angles are (π, 1, π), so d/du is (0, −1, 0).
+/// The inverse maps' derivatives are now their rates on the numbers'
+/// branch (eval/chain/rates.rs), and a constant derivative keeps its
+/// recipe.
 #[test]
-#[ignore = "a wrong answer not fixed yet: the derivative of a closed form on a branch, bound off it"]
 fn diff_of_a_closed_form_on_a_branch_bound_off_it() {
     let v = last_numbers("given u\ne = euler_zxz(Rotx(u))\nx = diff(e, u)\nu = -1\nx");
-    assert_eq!(v, vec![0.0, -1.0, 0.0]);
+    let want = [0.0, -1.0, 0.0];
+    assert!(
+        v.len() == 3 && v.iter().zip(want).all(|(x, w)| (x - w).abs() < 1e-15),
+        "{v:?}"
+    );
+    // a part of the angles' tuple, and an index of the vector
+    let v = last_numbers("given u\n(a, b, c) = euler_zxz(Rotx(u))\nx = diff(b, u)\nu = -1\nx");
+    assert_eq!(v, vec![-1.0]);
+    let v = last_numbers("given u\nx = diff(euler_zxz(Rotx(u))[2], u)\nu = -1\nx");
+    assert_eq!(v, vec![-1.0]);
+}
+
+/// The rates of euler_zyx, rpy and quat of a symbolic rotation, bound
+/// later on and off the closed forms' branch (cos v > 0), against central
+/// differences of the maps typed first with numbers (an independent
+/// oracle: the numeric maps, no symbols).
+#[test]
+fn rates_of_the_inverse_maps_agree_with_differences_of_numbers() {
+    let rot = |u: &str, v: &str| format!("Rotz({u}) * Roty({v}) * Rotx(2*({u}))");
+    for (map, by, u, v) in [
+        ("euler_zyx", "u", "2.5", "2"),
+        ("euler_zyx", "v", "0.3", "0.4"),
+        ("euler_zxz", "u", "-1.2", "0.7"),
+        ("euler_zxz", "v", "2.9", "-2.2"),
+        ("rpy", "v", "2.5", "2"),
+        ("rpy", "u", "-0.4", "-2.6"),
+        ("quat", "u", "2.5", "2"),
+        ("quat", "v", "0.1", "-0.3"),
+    ] {
+        let script = format!(
+            "given u, v\nx = diff({map}({}), {by})\nu = {u}\nv = {v}\nx",
+            rot("u", "v")
+        );
+        let got = last_numbers(&script);
+        let (h, at) = (1e-6, |d: f64| {
+            let (uu, vv) = if by == "u" {
+                (format!("({u} + {d:e})"), v.to_string())
+            } else {
+                (u.to_string(), format!("({v} + {d:e})"))
+            };
+            last_numbers(&format!("{map}({})", rot(&uu, &vv)))
+        });
+        let (plus, minus) = (at(h), at(-h));
+        assert_eq!(got.len(), plus.len(), "{script}");
+        for i in 0..got.len() {
+            let want = (plus[i] - minus[i]) / (2.0 * h);
+            assert!(
+                (got[i] - want).abs() < 1e-7,
+                "{script}: entry {i} is {} but the difference gives {want}",
+                got[i]
+            );
+        }
+    }
 }

@@ -237,6 +237,23 @@ fn constant(m: &super::num::Num, exact: &super::exact::Exact) -> crate::sym::Mat
 pub fn attach(v: Value, how: Option<Rc<Recipe>>) -> Value {
     let Some(r) = how else { return v };
     match v {
+        // a number made from symbols (`diff(euler_zxz(Rotx(u)), u)` is
+        // (0, 1, 0) on the closed form's branch) depends on them: it stays
+        // a formula of constant entries, replayed once they have numbers
+        // (at u = −1 the rate is (0, −1, 0))
+        Value::Num { kind, m, exact }
+            if {
+                let mut syms = Vec::new();
+                symbols(&r, &mut syms);
+                !syms.is_empty()
+            } =>
+        {
+            Value::Formula {
+                kind,
+                m: constant(&m, &exact),
+                how: Some(r),
+            }
+        }
         Value::Formula { kind, m, .. } => Value::Formula {
             kind,
             m,

@@ -14,6 +14,8 @@
 //! d Ad_T = Ad_T [ad_V] with [V] = T⁻¹ dT (3.83, 8.3); where a step is
 //! not one this module knows, the derivative is a leaf, as before.
 
+mod rates;
+
 use std::collections::HashMap;
 use std::rc::Rc;
 
@@ -450,6 +452,17 @@ impl Chain<'_> {
                 let ds = self.of(&s)?;
                 let f = arith(BinOp::Mul, a, r.clone())?;
                 times_after(ds, f)
+            }
+            // the inverse maps of a rotation, by their rates on the
+            // numbers' branch (rates.rs)
+            "euler_zyx" | "euler_zxz" | "rpy" | "quat" | "cayley"
+                if args.len() == 1
+                    && shape(&u).and_then(|k| k.shape()) == Some((Some(3), Some(3))) =>
+            {
+                let Some(du) = du else {
+                    return Some(None);
+                };
+                Some(Some(rates::of(b.name, r, &u, du)?))
             }
             // d(M⁻¹) = −M⁻¹ dM M⁻¹
             "inv" | "RotInv" | "TransInv" if args.len() == 1 => {
