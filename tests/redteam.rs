@@ -704,3 +704,47 @@ fn rates_of_the_inverse_maps_agree_with_differences_of_numbers() {
         }
     }
 }
+
+/// `MatrixLog6` of a symbolic transform is a closed form on a branch
+/// (1 − cos u > 0 and u in (−π, π)); its derivative bound later at u = 4
+/// printed the branch's formula there (entry 4: −1.4383, where the log is
+/// the angle 4 − 2π and its derivative 0.4615). The derivative of a
+/// closed form is now replayed on its branch (checked against a central
+/// difference of the numeric log, first and second derivatives) and
+/// refused off it, naming the branch; `subs` carries the branch along.
+#[test]
+fn diff_of_a_log_bound_off_its_branch_is_refused() {
+    let setup = "given u, w\nT = RpToTrans(Rotz(u), (1, 0, 0))\nx = diff(MatrixLog6(T), u)";
+    let e = common::error(&format!("{setup}\nu = 4\nx"));
+    assert!(
+        e.contains("the closed form on the branch 1 - cos(u) > 0 and u in (−π, π), and the numbers are off it"),
+        "{e}"
+    );
+    let e = common::error(&format!(
+        "{setup}\ns = subs(MatrixLog6(T), u, 2*w)\nd = diff(s, w)\nw = 3\nd"
+    ));
+    assert!(e.contains("are off it"), "{e}");
+    let f = |s: f64| last_numbers(&format!("MatrixLog6(RpToTrans(Rotz({s:e}), (1, 0, 0)))"));
+    for (at, second) in [(1.0, false), (-2.5, false), (1.0, true)] {
+        let script = if second {
+            format!("{setup}\ny = diff(x, u)\nu = {at:e}\ny")
+        } else {
+            format!("{setup}\nu = {at:e}\nx")
+        };
+        let got = last_numbers(&script);
+        let h: f64 = if second { 1e-4 } else { 1e-6 };
+        let (p, z, m) = (f(at + h), f(at), f(at - h));
+        for i in 0..6 {
+            let want = if second {
+                (p[i] - 2.0 * z[i] + m[i]) / (h * h)
+            } else {
+                (p[i] - m[i]) / (2.0 * h)
+            };
+            assert!(
+                (got[i] - want).abs() < 1e-5,
+                "{script}: entry {i} {} vs {want}",
+                got[i]
+            );
+        }
+    }
+}

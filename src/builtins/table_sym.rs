@@ -323,6 +323,13 @@ fn inverse_map(name: &str, r: &Mat) -> Out {
 /// say which branch was assumed): `assumed cos(b) > 0 and a, b, c in
 /// (−π, π]`. None when the call has no such form.
 pub fn branch_note(name: &str, vals: &[Value], span: Span) -> Option<Diagnostic> {
+    let (_, text) = branch_of(name, vals)?;
+    Some(Diagnostic::note(ErrorKind::Domain, span, text))
+}
+
+/// The branch the closed form of `name` over `vals` holds on
+/// ([`branch`]), with the note's text; None when the call has no such form.
+pub fn branch_of(name: &str, vals: &[Value]) -> Option<(Branch, String)> {
     let (b, what) = match vals {
         [y, x] if name == "atan2" => {
             let (y, x) = (scalar_of(y)?, scalar_of(x)?);
@@ -381,7 +388,7 @@ pub fn branch_note(name: &str, vals: &[Value], span: Span) -> Option<Diagnostic>
         "{name} of {what}: the closed form on the branch {}",
         parts.join(" and ")
     );
-    Some(Diagnostic::note(ErrorKind::Domain, span, text))
+    Some((b, text))
 }
 
 /// tan, cot, sec and csc as quotients of sin and cos (a kept reciprocal

@@ -345,14 +345,15 @@ impl<'a> Op<'a> {
         {
             // how it was made, to be replayed with numbers (§7)
             return Some(
-                v.map(|v| match (self, args) {
-                    (Op::Call(b, _), [x, by]) if b.name == "diff" => {
-                        recipe::attach(v, super::chain::derivative(x, by))
-                    }
-                    (Op::Call(b, _), [x, name, by]) if b.name == "subs" => {
-                        recipe::attach(v, super::chain::substituted(x, name, by))
-                    }
-                    _ => recipe::record(v, self.made(), args, kind),
+                v.map(|v| {
+                    let call = if let Op::Call(b, _) = self {
+                        b.name
+                    } else {
+                        ""
+                    };
+                    super::chain::made(call, v, args, |v| {
+                        recipe::record(v, self.made(), args, kind)
+                    })
                 })
                 .map_err(OpError::Message),
             );

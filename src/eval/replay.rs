@@ -262,6 +262,28 @@ fn step(r: &Recipe, at: Lookup, memo: &mut Memo) -> Option<Value> {
                 }
             };
         }
+        // the call the closed form was made by, right on every branch
+        Step::Closed(_) => return args.into_iter().next(),
+        // a derivative of a closed form, on its branch only
+        Step::Guard(on) => {
+            let f = |s: &Symbol| float(at, s);
+            return match on.holds(&f) {
+                Some(true) => args.into_iter().next(),
+                held => {
+                    memo.failed.get_or_insert(format!(
+                        "{}, and the numbers {}: the derivative of the closed form holds on \
+                         the branch only",
+                        on.text,
+                        if held.is_some() {
+                            "are off it"
+                        } else {
+                            "are too near its bounds to tell"
+                        },
+                    ));
+                    None
+                }
+            };
+        }
         Step::Op(o) => Op::of(o)?,
     };
     // (the kind as the checker gives it for these numbers typed first)

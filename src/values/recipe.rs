@@ -52,6 +52,87 @@ pub enum Step {
     /// `a == b`, `a ≈ b`, `a < b`, …: a bool, decided with the numbers as
     /// typed first (over free symbols `==` asks for an identity).
     Compare(crate::syntax::ast::CmpOp),
+    /// Its one operand, a call whose value over symbols is a closed form
+    /// on a branch ([`OnBranch`]; `MatrixLog6` of a symbolic transform):
+    /// replayed as the call (right on every branch), and marking for the
+    /// chain rule the closed form whose derivative holds on the branch.
+    Closed(Rc<OnBranch>),
+    /// Its one operand where the numbers are on the branch of
+    /// [`OnBranch`], refused off it: the derivative of a closed form
+    /// holds on the closed form's branch only.
+    Guard(Rc<OnBranch>),
+}
+
+/// A closed form over symbols that holds on a branch (LANGUAGE.md §7: the
+/// note says which; `crate::sym::branch`): `MatrixLog6` of
+/// `RpToTrans(Rotz(u), p)` is its form for 1 − cos u > 0 and u in (−π, π).
+#[derive(Debug)]
+pub struct OnBranch {
+    /// The closed form, a formula.
+    pub form: Value,
+    /// What is positive on the branch.
+    pub positive: Vec<crate::sym::Expr>,
+    /// The angles in (−π, π] on the branch (or (−π, π): the floats
+    /// cannot tell π from either side of it, so the two are decided alike).
+    pub angles: Vec<crate::sym::Expr>,
+    /// The branch as the note says it.
+    pub text: String,
+}
+
+impl OnBranch {
+    /// The same branch with each formula `leaf` gives a new value for
+    /// replaced (the form and each condition: `subs` of a closed form).
+    fn rebase(&self, leaf: &dyn Fn(&Value) -> Option<Value>) -> OnBranch {
+        let each = |es: &[crate::sym::Expr]| -> Vec<crate::sym::Expr> {
+            es.iter()
+                .map(|e| {
+                    let v = Value::Formula {
+                        kind: Kind::Scalar,
+                        m: crate::sym::Mat::scalar(e.clone()),
+                        how: None,
+                    };
+                    match leaf(&v) {
+                        Some(Value::Formula { m, .. }) if m.data.len() == 1 => m.data[0].clone(),
+                        Some(v) => v
+                            .as_scalar()
+                            .map_or_else(|| e.clone(), crate::sym::Expr::num),
+                        None => e.clone(),
+                    }
+                })
+                .collect()
+        };
+        OnBranch {
+            form: leaf(&self.form).unwrap_or_else(|| self.form.clone()),
+            positive: each(&self.positive),
+            angles: each(&self.angles),
+            text: self.text.clone(),
+        }
+    }
+
+    /// Whether numbers (`at`, each symbol's float) are on the branch:
+    /// Some(false) when a condition fails by more than rounding, None when
+    /// one is within 1e-12 of its bound or has no number (the floats
+    /// cannot tell).
+    pub fn holds(&self, at: &dyn Fn(&crate::sym::Symbol) -> Option<f64>) -> Option<bool> {
+        const TOL: f64 = 1e-12;
+        let pi = std::f64::consts::PI;
+        let mut sure = true;
+        for p in &self.positive {
+            let x = p.eval(at)?;
+            if x < -TOL {
+                return Some(false);
+            }
+            sure &= x > TOL;
+        }
+        for a in &self.angles {
+            let x = a.eval(at)?;
+            if x.abs() > pi + TOL {
+                return Some(false);
+            }
+            sure &= x.abs() < pi - TOL;
+        }
+        sure.then_some(true)
+    }
 }
 
 /// A recipe: a step over the recipes of its operands, with the kind the
@@ -362,8 +443,13 @@ pub fn rebase(
             if args.iter().zip(&r.args).all(|(a, b)| Rc::ptr_eq(a, b)) {
                 return r.clone();
             }
+            let step = match step {
+                Step::Closed(on) => Step::Closed(Rc::new(on.rebase(leaf))),
+                Step::Guard(on) => Step::Guard(Rc::new(on.rebase(leaf))),
+                step => step.clone(),
+            };
             Rc::new(Recipe {
-                step: step.clone(),
+                step,
                 args,
                 kind: r.kind,
                 depth: r.depth,

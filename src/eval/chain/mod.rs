@@ -14,7 +14,12 @@
 //! d Ad_T = Ad_T [ad_V] with [V] = T⁻¹ dT (3.83, 8.3); where a step is
 //! not one this module knows, the derivative is a leaf, as before.
 
+mod guard;
 mod rates;
+mod subs;
+
+use guard::closed_form;
+use subs::substituted;
 
 use std::collections::HashMap;
 use std::rc::Rc;
@@ -106,43 +111,21 @@ fn matrix(r: usize, c: usize, xs: &[f64], k: Kind) -> Rc<Recipe> {
     })
 }
 
-/// How `subs(x, name, by)` is made: the recipe of `x` with `by` put for
-/// `name` in its leaves (each leaf substituted by the canonical engine), so
-/// that the numbers bound later replay the steps of `x` (§7), as
-/// `replay::subs_numbers` does when `by` leaves no symbol. None when `x` keeps
-/// no recipe or a leaf cannot be substituted (the result is then a leaf).
-pub(super) fn substituted(x: &Value, name: &Value, by: &Value) -> Option<Rc<Recipe>> {
-    let Value::Formula { how: Some(r), .. } = x else {
-        return None;
-    };
-    let sym = match name {
-        Value::Formula { m, .. } => match m.data.as_slice() {
-            [e] => crate::sym::expr::as_symbol(e)?,
-            _ => return None,
-        },
-        _ => return None,
-    };
-    let failed = std::cell::Cell::new(false);
-    let leaf = |v: &Value| -> Option<Value> {
-        let Value::Formula { kind, m, .. } = v else {
-            return None;
-        };
-        let mut syms = Vec::new();
-        m.data.iter().for_each(|e| e.symbols(&mut syms));
-        if !syms.contains(&sym) {
-            return None;
-        }
-        let args = [v.clone(), name.clone(), by.clone()];
-        match crate::builtins::eval_symbolic("subs", &args, kind) {
-            Some(Ok(v)) => Some(v),
-            _ => {
-                failed.set(true);
-                None
-            }
-        }
-    };
-    let out = crate::values::recipe::rebase(r, &leaf, &mut HashMap::new());
-    (!failed.get()).then_some(out)
+/// `v`, the value of builtin `call` ("" for an operator) over `args`,
+/// with how it was made: `diff`'s by the chain rule, `subs`'s by
+/// substitution in its operand's recipe, a closed form on a branch
+/// marked so ([`closed_form`]), anything else by `record`.
+pub(super) fn made(
+    call: &str,
+    v: Value,
+    args: &[&Value],
+    record: impl FnOnce(Value) -> Value,
+) -> Value {
+    match (call, args) {
+        ("diff", [x, by]) => crate::values::recipe::attach(v, derivative(x, by)),
+        ("subs", [x, name, by]) => crate::values::recipe::attach(v, substituted(x, name, by)),
+        _ => closed_form(call, record(v), args),
+    }
 }
 
 struct Chain<'a> {
@@ -267,6 +250,8 @@ impl Chain<'_> {
         let x = |i: usize| r.args.get(i).cloned();
         match &r.step {
             Step::Leaf(v) => self.leaf(v, &k),
+            Step::Closed(on) => self.closed(on, &x(0)?, k),
+            Step::Guard(on) => self.guard(on, &x(0)?, k),
             Step::Op(Operation::Neg) => neg(self.of(&x(0)?)?),
             // x deg = x π/180
             Step::Op(Operation::Degrees) => match self.of(&x(0)?)? {
@@ -324,6 +309,8 @@ impl Chain<'_> {
         let x = |i: usize| r.args.get(i).cloned();
         match &r.step {
             Step::Leaf(v) => self.leaf(v, &k),
+            Step::Closed(on) => self.closed(on, &x(0)?, k),
+            Step::Guard(on) => self.guard(on, &x(0)?, k),
             Step::Op(Operation::Neg) => neg(self.of(&x(0)?)?),
             Step::Op(Operation::Transpose | Operation::Index(_) | Operation::Member(_))
             | Step::Retag => linear(&r.step, self.of(&x(0)?)?, k),

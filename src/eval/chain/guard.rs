@@ -1,0 +1,79 @@
+//! The derivative of a closed form on a branch (`recipe::Step::Closed`:
+//! `MatrixLog6` of a symbolic transform is its form for 1 − cos u > 0 and
+//! u in (−π, π)). Where the chain rule reaches the call itself (the rates
+//! of the Euler angles, rates.rs) its derivative is right on every
+//! branch; elsewhere it is the closed form's derivative, which holds on
+//! the branch only, so it is guarded (`Step::Guard`): replayed where the
+//! numbers are on the branch and refused off it. `diff(MatrixLog6(T), u)`
+//! at u = 4 printed the branch's formula there (entry 4: −1.4383; the log
+//! at u = 4 is the angle 4 − 2π, and its derivative 0.4615).
+
+use std::rc::Rc;
+
+use super::{Chain, D, node_k, zero};
+use crate::check::ty::Kind;
+use crate::eval::value::Value;
+use crate::values::recipe::{OnBranch, Recipe, Step};
+
+/// `v`, the value of builtin `name` over `args` made with its recipe,
+/// marked as a closed form on a branch where it is one (the logs of a
+/// symbolic rotation or transform; the maps with rates need no mark).
+pub(in crate::eval) fn closed_form(name: &str, v: Value, args: &[&Value]) -> Value {
+    if !matches!(name, "log" | "MatrixLog3" | "MatrixLog6") {
+        return v;
+    }
+    let vals: Vec<Value> = args.iter().map(|a| (*a).clone()).collect();
+    let (
+        Some((b, text)),
+        Value::Formula {
+            kind,
+            m,
+            how: Some(r),
+        },
+    ) = (crate::builtins::branch_of(name, &vals), &v)
+    else {
+        return v;
+    };
+    let on = OnBranch {
+        form: Value::Formula {
+            kind: *kind,
+            m: m.clone(),
+            how: None,
+        },
+        positive: b.positive,
+        angles: b.angles,
+        text,
+    };
+    match Recipe::node(Step::Closed(Rc::new(on)), vec![r.clone()], r.kind) {
+        Some(how) => Value::Formula {
+            kind: *kind,
+            m: m.clone(),
+            how: Some(how),
+        },
+        None => v,
+    }
+}
+
+impl Chain<'_> {
+    /// The derivative of `call`, marked as the closed form `on` (a step of
+    /// shape `k`).
+    pub(super) fn closed(&mut self, on: &Rc<OnBranch>, call: &Rc<Recipe>, k: Kind) -> Option<D> {
+        if let Some(d) = self.of(call) {
+            return Some(d);
+        }
+        let d = self.leaf(&on.form, &k)?.unwrap_or_else(|| zero(&k));
+        guarded(on, d, k)
+    }
+
+    /// The derivative of a guarded derivative: guarded alike.
+    pub(super) fn guard(&mut self, on: &Rc<OnBranch>, x: &Rc<Recipe>, k: Kind) -> Option<D> {
+        let d = self.of(x)?.unwrap_or_else(|| zero(&k));
+        guarded(on, d, k)
+    }
+}
+
+/// `d` where the numbers are on `on`'s branch (a zero too: off it the
+/// derivative need not be 0).
+fn guarded(on: &Rc<OnBranch>, d: Rc<Recipe>, k: Kind) -> Option<D> {
+    Some(Some(node_k(Step::Guard(on.clone()), vec![d], k)?))
+}
