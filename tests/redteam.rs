@@ -79,18 +79,24 @@ fn cyclotomic_identities_are_never_false() {
     // cos A + cos B = 2 cos((A+B)/2) cos((A−B)/2): here 2 cos(π/5) ≠ 1, so false
     let v = last_numbers("given t\ncos(t + pi/5) + cos(t + 3 pi/5) == cos(t + 2 pi/5)");
     assert_eq!(v, vec![0.0], "{v:?}");
-    // true, but cos(π/5) typed as a number is a float: not decided, not false
-    undecided("given t\ncos(t + pi/5) + cos(t + 3 pi/5) == 2 cos(pi/5) cos(t + 2 pi/5)");
+    // true, with cos(π/5) typed as a number (a float with a recipe): it
+    // was 'cannot decide'; since session 14 the lifted forms prove it
+    // where the canonical forms cannot tell
+    let out =
+        common::printed("given t\ncos(t + pi/5) + cos(t + 3 pi/5) == 2 cos(pi/5) cos(t + 2 pi/5)");
+    assert_eq!(out.lines().last(), Some("true"), "{out}");
 }
 
 /// A decimal phase on one side and its float cosine on the other
-/// (t1 bound to 0.3 first): the sides are equal but for rounding, so `==`
-/// is `cannot decide`, never `false`; a real difference is still `false`.
+/// (t1 bound to 0.3 first): the sides are equal, never `false` (it was
+/// `cannot decide`; the lifted forms now prove the angle sum, t1 + 0.3 =
+/// 3/5 exactly); a real difference is still `false`.
 #[test]
 fn a_phase_against_its_float_is_never_false() {
-    undecided(
+    let out = common::printed(
         "given t2\nt1 = 0.3\ncos(t1 + 0.3) cos(t2) - sin(t1 + 0.3) sin(t2) == cos(t1 + t2 + 0.3)",
     );
+    assert_eq!(out.lines().last(), Some("true"), "{out}");
     let v = last_numbers("given t2\ncos(t2 + 0.6) == cos(t2 + 0.5)");
     assert_eq!(v, vec![0.0], "{v:?}");
 }

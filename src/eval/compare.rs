@@ -262,6 +262,17 @@ impl Interp<'_> {
                     }
                 },
                 Ok(Some(v)) => Some(v),
+                // (the canonical forms cannot tell, where a phase stands
+                // for a number with no exact form: proven by the lifted
+                // forms, or a certified difference at a point)
+                Ok(None) if op == CmpOp::Eq => match super::witness::at_points(a, b) {
+                    Some(AtPoints::Identity) => Some(true),
+                    Some(AtPoints::Differ(_)) => Some(false),
+                    _ => {
+                        undecided = true;
+                        None
+                    }
+                },
                 Ok(None) => {
                     undecided = true;
                     None
