@@ -717,7 +717,8 @@ fn rates_of_the_inverse_maps_agree_with_differences_of_numbers() {
 /// the angle 4 − 2π and its derivative 0.4615). The derivative of a
 /// closed form is now replayed on its branch (checked against a central
 /// difference of the numeric log, first and second derivatives) and
-/// refused off it, naming the branch; `subs` carries the branch along.
+/// refused off it, naming the branch; `subs` carries the branch along. A
+/// constant derivative waits for the branch's symbols too.
 #[test]
 fn diff_of_a_log_bound_off_its_branch_is_refused() {
     let setup = "given u, w\nT = RpToTrans(Rotz(u), (1, 0, 0))\nx = diff(MatrixLog6(T), u)";
@@ -730,6 +731,11 @@ fn diff_of_a_log_bound_off_its_branch_is_refused() {
         "{setup}\ns = subs(MatrixLog6(T), u, 2*w)\nd = diff(s, w)\nw = 3\nd"
     ));
     assert!(e.contains("are off it"), "{e}");
+    // the log of a rotation about a fixed axis is ω̂(θ − 2πk) off the
+    // branch: the same derivative, answered (as a central difference of
+    // the numeric log gives it)
+    let v = last_numbers("given w\nd = diff(MatrixLog3(Rotz(w)), w)\nw = 4\nd");
+    assert_eq!(v, vec![0.0, 0.0, 1.0]);
     let f = |s: f64| last_numbers(&format!("MatrixLog6(RpToTrans(Rotz({s:e}), (1, 0, 0)))"));
     for (at, second) in [(1.0, false), (-2.5, false), (1.0, true)] {
         let script = if second {

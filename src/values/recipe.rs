@@ -405,6 +405,16 @@ pub fn symbols(r: &Rc<Recipe>, out: &mut Vec<crate::sym::Symbol>) {
                 Step::Leaf(Value::Formula { m, .. }) => {
                     m.data.iter().for_each(|e| e.symbols(&mut found))
                 }
+                // (a branch's conditions are read with the numbers too:
+                // the derivative (0, 0, 1) of MatrixLog3(Rotz(w)) waits
+                // for w, to be refused at w = π)
+                Step::Closed(on) | Step::Guard(on) => {
+                    on.positive
+                        .iter()
+                        .chain(&on.angles)
+                        .for_each(|e| e.symbols(&mut found));
+                    todo.extend(r.args.iter())
+                }
                 _ => todo.extend(r.args.iter()),
             }
         }

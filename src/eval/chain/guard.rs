@@ -16,10 +16,13 @@ use crate::eval::value::Value;
 use crate::values::recipe::{OnBranch, Recipe, Step};
 
 /// `v`, the value of builtin `name` over `args` made with its recipe,
-/// marked as a closed form on a branch where it is one (the logs of a
-/// symbolic rotation or transform; the maps with rates need no mark).
+/// marked as a closed form on a branch where it is one: the log of a
+/// symbolic transform. (The maps with rates need no mark; nor does the
+/// log of a rotation, whose closed forms are ω̂θ about a fixed axis: off
+/// the branch the log is ω̂(θ − 2πk), of the same derivative ω̂ dθ.)
 pub(in crate::eval) fn closed_form(name: &str, v: Value, args: &[&Value]) -> Value {
-    if !matches!(name, "log" | "MatrixLog3" | "MatrixLog6") {
+    let transform = |a: &Value| matches!(a.kind().shape(), Some((Some(4), Some(4))));
+    if !(matches!(name, "log" | "MatrixLog6") && args.first().is_some_and(|a| transform(a))) {
         return v;
     }
     let vals: Vec<Value> = args.iter().map(|a| (*a).clone()).collect();
