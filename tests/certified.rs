@@ -318,6 +318,12 @@ fn exp_log_and_inverse_trig_identities_are_proven() {
 fn sides_a_phase_leaves_open_differ_at_a_point() {
     let src = "given a, b, c : scalar\nx = (sin(1)*a + cos(2 + a)*b + c*sin(3 - pi/7) + 1)\nx^4 == x^3*(x + sin(1)*1e-20)";
     assert_eq!(last(src), serde_json::json!(false), "{src}");
+    // decimal phases the canonical forms keep apart: a false product-to-sum
+    // identity differs at a point, a true one is proven
+    let src = "given t, s : scalar\ncos(t + 0.3)*cos(s + 0.2) == (cos(t + s + 0.5) + cos(t - s + 0.1000001))/2";
+    assert_eq!(last(src), serde_json::json!(false), "{src}");
+    let src = "given t : scalar\ncos(t + 0.1)*cos(0.2) - sin(t + 0.1)*sin(0.2) == cos(t + 0.3)";
+    assert_eq!(last(src), serde_json::json!(true), "{src}");
 }
 
 #[test]

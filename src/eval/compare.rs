@@ -213,7 +213,7 @@ impl Interp<'_> {
             {
                 // (a verdict over symbols that rests on a number with no
                 // exact form is found at points: `super::witness`)
-                Ok(Some(v)) if op == CmpOp::Eq => match super::witness::at_points(a, b) {
+                Ok(Some(v)) if op == CmpOp::Eq => match super::witness::at_points(a, b, false) {
                     Some(AtPoints::Differ(d)) => {
                         if v {
                             self.warnings.push(Diagnostic::note(
@@ -265,7 +265,7 @@ impl Interp<'_> {
                 // (the canonical forms cannot tell, where a phase stands
                 // for a number with no exact form: proven by the lifted
                 // forms, or a certified difference at a point)
-                Ok(None) if op == CmpOp::Eq => match super::witness::at_points(a, b) {
+                Ok(None) if op == CmpOp::Eq => match super::witness::at_points(a, b, true) {
                     Some(AtPoints::Identity) => Some(true),
                     Some(AtPoints::Differ(_)) => Some(false),
                     _ => {

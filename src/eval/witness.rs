@@ -59,9 +59,12 @@ const MAX_POINTS: usize = 32;
 /// when a side rests on a number with no exact form made from exact ones
 /// (`cos(1e-9) t`, `cos(pi/7) t`); None when neither does, when a side
 /// cannot be replayed with numbers, or for axes assumed to be unit
-/// vectors (a point off the sphere proves nothing).
-pub(super) fn at_points(a: &Value, b: &Value) -> Option<AtPoints> {
-    if !rests_on_float(a) && !rests_on_float(b) {
+/// vectors (a point off the sphere proves nothing). `open`: the canonical
+/// forms could not tell (a phase stands for a number with no exact form,
+/// `cos(t + 0.1)` against `cos(t + 0.1000001)`), so the points are asked
+/// whether or not a side rests on such a float.
+pub(super) fn at_points(a: &Value, b: &Value, open: bool) -> Option<AtPoints> {
+    if !open && !rests_on_float(a) && !rests_on_float(b) {
         return None;
     }
     let mut names = Vec::new();
