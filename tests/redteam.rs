@@ -770,3 +770,41 @@ fn diff_of_a_log_bound_off_its_branch_is_refused() {
         }
     }
 }
+
+/// Matrix differential seed 821064: the inverse of a 3×3 of 11th to 15th
+/// powers of sums of sines and cosines ran for minutes (the result's kind
+/// was tested by forming A⁻¹A⁻ᵀ exactly) and then was refused by its size;
+/// its determinant's terms are now counted before it is formed (up to
+/// 168,881 before cancellation) and the inverse refused, naming the limit.
+/// A small inverse is still formed, and is right.
+#[test]
+fn an_inverse_too_large_is_refused_before_it_is_formed() {
+    let big = "given a, b, t\nE = (cos(2 a + t + 12 pi/11) + sin(a + 2 b - t - 0.141))^11\n\
+               F = (sin(t - b) + cos(2 b - a - 2 t + pi/3))^15\n\
+               G = (sin(2 a + 2 b + 2 t - 0.042) + cos(2 a + 2 t + 0.84))^14\n\
+               inv([2, E, F; G, 3, E; 1, a^2 + b, sin(t)])";
+    let e = common::error(big);
+    assert!(
+        e.contains("the inverse's determinant would have up to") && e.contains("(more than 80000)"),
+        "{e}"
+    );
+    let v = last_numbers("given a\nM = inv([1, a; a, 2])\na = 3\nM");
+    let want = [2.0 / -7.0, -3.0 / -7.0, -3.0 / -7.0, 1.0 / -7.0];
+    assert!(
+        v.len() == 4 && v.iter().zip(want).all(|(x, w)| (x - w).abs() < 1e-15),
+        "{v:?}"
+    );
+}
+
+/// `==` seed 942945: a tenth power of a sum of sines against cos(−1) spent
+/// 11 s in the lift (its reduction modulo the cyclotomic polynomial added
+/// one term at a time to a sum it cloned each time); the verdicts are
+/// unchanged: false against cos(−1), true against 2x − x.
+#[test]
+fn a_large_side_against_a_float_is_decided() {
+    let x = "given a, b, t\nx = (cos(a - b + 2 t - 3 pi/7 + 0.268) + sin(2 t - a + 8 pi/3))^10 * (0.778 + sin(b + t - 6 pi/11))";
+    let out = common::printed(&format!("{x}\nx == cos(-1)"));
+    assert_eq!(out.lines().last(), Some("false"), "{out}");
+    let out = common::printed(&format!("{x}\nx == 2*x - x"));
+    assert_eq!(out.lines().last(), Some("true"), "{out}");
+}

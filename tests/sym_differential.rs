@@ -872,6 +872,9 @@ fn check_equal(x: &T, y: &T, which: usize, p: &Point, seen: &mut Answers) -> Res
     }
     let decl = "given a, b, c : scalar\ngiven q1(t), q2(t) : scalar\n";
     let src = format!("{decl}e = {} == {}\n", x.source(), y.source());
+    if std::env::var_os("CHASLES_DIFF_SHOW").is_some() {
+        eprintln!("{src}e = {} == {}", x.source(), identity(x, which));
+    }
     let (s, n, _) = session(&src);
     let differ = (u - v).abs() > 1e-6 * eu.max(ev).max(1.0);
     let answer = if n == 0 { value(&s, "e") } else { None };

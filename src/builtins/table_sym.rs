@@ -130,7 +130,10 @@ pub fn eval_symbolic(name: &str, vals: &[Value], kind: &Kind) -> Out {
             ok(make(&Kind::SO3, sm::rodrigues(&axis, &s(1)?)))
         }
         ("exp" | "MatrixExp3" | "MatrixExp6", 1) => exp(&ms[0], kind),
-        ("inv", 1) => ok(make(kind, formula::inverse(&vals[0].kind(), &ms[0])?)),
+        ("inv", 1) => match formula::fits_inverse(&vals[0].kind(), &ms[0]) {
+            Err(e) => Some(Err(e)),
+            Ok(()) => ok(make(kind, formula::inverse(&vals[0].kind(), &ms[0])?)),
+        },
         ("RotInv", 1) if shape(0) == (3, 3) => ok(make(&Kind::SO3, ms[0].transpose())),
         ("TransInv", 1) if shape(0) == (4, 4) => ok(make(&Kind::SE3, sm::trans_inv(&ms[0])?)),
         ("Adjoint", 1) if shape(0) == (4, 4) => {

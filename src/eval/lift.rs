@@ -163,10 +163,20 @@ fn wrapped(e: &Expr, l: i64) -> Expr {
             })
             .collect();
         let c = if sign { c.neg() } else { c.clone() };
-        let term = Expr {
-            terms: std::iter::once((mono, c)).collect(),
-        };
-        out = out.add(&term);
+        // (merged in place: adding a one-term sum cloned the sum so far)
+        match out.terms.entry(mono) {
+            std::collections::btree_map::Entry::Vacant(v) => {
+                v.insert(c);
+            }
+            std::collections::btree_map::Entry::Occupied(mut o) => {
+                let sum = o.get().add(&c);
+                if sum.is_zero() {
+                    o.remove();
+                } else {
+                    *o.get_mut() = sum;
+                }
+            }
+        }
     }
     out
 }
@@ -243,9 +253,9 @@ fn reduced(e: &Expr, l: i64, z: &Var) -> Expr {
                 mono.push((z.clone(), i32::try_from(k).unwrap_or(i32::MAX)));
                 mono.sort_by(|a, b| a.0.cmp(&b.0));
             }
-            out = out.add(&Expr {
-                terms: std::iter::once((mono, c)).collect(),
-            });
+            // (each (rest, k) is its own monomial: inserted, not added,
+            // which cloned the sum so far at every term)
+            out.terms.insert(mono, c);
         }
     }
     out

@@ -312,6 +312,7 @@ fn pow(x: &Mat, y: &Mat, base: Kind, kind: &Kind) -> Result<Value, String> {
         return Err("only a square matrix has powers".into());
     }
     let b = if n < 0 {
+        fits_inverse(&base, x)?;
         inverse(&base, x)
             .ok_or("the matrix is singular (its determinant is identically 0) or larger than 4×4")?
     } else {
@@ -354,6 +355,49 @@ fn checked_power(x: &Mat, mut n: u64, acc: &mut Mat) -> Result<Mat, String> {
         }
     }
     Ok(acc.clone())
+}
+
+/// How many times the expression limit the determinant of an inverse may
+/// have terms before cancellation ([`fits_inverse`]).
+const DET_SLACK: usize = 8;
+
+/// Refuses, as [`fits`] does for a product, the inverse adj(A)/det(A) of a
+/// general square matrix whose determinant is too large to form: its
+/// cofactor expansion has as many terms before cancellation as the
+/// permanent of the entries' term counts, and every entry of the inverse
+/// holds det(A) (as a reciprocal, unless it cancels). Refused before any
+/// of it is formed when that passes [`DET_SLACK`] times the expression
+/// limit: the inverse of a 3×3 of 11th to 15th powers of sums of sines
+/// and cosines (a determinant of up to 168,881 terms) took 5 s to be
+/// refused by the size of its result, and minutes to be classified.
+pub fn fits_inverse(kind: &Kind, x: &Mat) -> Result<(), String> {
+    if matches!(kind, Kind::SO3 | Kind::SO2 | Kind::SE3) || x.rows != x.cols || x.rows > 4 {
+        return Ok(());
+    }
+    let n = x.rows;
+    let sizes: Vec<usize> = x.data.iter().map(|e| e.terms.len().max(1)).collect();
+    // the permanent, row by row over the columns not yet taken
+    fn permanent(sizes: &[usize], n: usize, row: usize, taken: u32) -> usize {
+        if row == n {
+            return 1;
+        }
+        (0..n)
+            .filter(|c| taken & (1 << c) == 0)
+            .map(|c| {
+                sizes[row * n + c].saturating_mul(permanent(sizes, n, row + 1, taken | 1 << c))
+            })
+            .fold(0, usize::saturating_add)
+    }
+    let terms = permanent(&sizes, n, 0, 0);
+    let limit = super::symbolic::MAX_SYM_NODES;
+    if terms > DET_SLACK * limit {
+        return Err(format!(
+            "symbolic expression too large: the inverse's determinant would have up to {terms} \
+             terms before cancellation (more than {})",
+            DET_SLACK * limit
+        ));
+    }
+    Ok(())
 }
 
 /// The inverse by the book's formulas: Rᵀ (3.23's Rᵀ = R⁻¹), the SE(3)
@@ -507,9 +551,13 @@ pub fn brackets(rows: &[Vec<Value>]) -> Result<Value, String> {
 /// matrices; else by shape.
 pub fn classify(m: &Mat) -> Kind {
     // (a look at one point first: the exact product of large entries
-    // costs seconds, and most matrices are no rotation)
+    // costs seconds, and most matrices are no rotation; a product too
+    // large to form, as `fits` counts it, is not formed: such a matrix is
+    // named by its shape, as one that cannot be told is — the inverse of
+    // a 3×3 of 15th powers of sums of cosines took minutes here)
     let orthonormal = |r: &Mat, n: usize| {
         !r.surely_not_orthogonal()
+            && fits(r, &r.transpose(), "").is_ok()
             && r.mul(&r.transpose()) == Some(Mat::identity(n))
             && r.det() == Some(Expr::one())
     };
