@@ -22,6 +22,7 @@ pub mod exact;
 pub mod exact_mat;
 pub mod format;
 pub mod formula;
+pub mod limits;
 pub mod linalg;
 pub mod num;
 pub mod number;
