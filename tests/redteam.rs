@@ -808,3 +808,18 @@ fn a_large_side_against_a_float_is_decided() {
     let out = common::printed(&format!("{x}\nx == 2*x - x"));
     assert_eq!(out.lines().last(), Some("true"), "{out}");
 }
+
+/// Matrix differential seed 821232: the norm of a rotated vector over
+/// symbols, with the decimal 89.7 in an angle, spent minutes looking for
+/// an exact square root of the sum of squares (its candidate's rational
+/// coefficients grew without bound); the search now gives up within its
+/// budget and keeps √(…), which bound later is the norm, √5.
+#[test]
+fn the_norm_of_a_large_rotated_vector_keeps_its_root() {
+    let src = "given a, b, c, t\n\
+               x = expand(norm((rot_zyx(sin(sin(a + 2 pi/7) + b), b*(cos(2 t + 4 pi/6 - 0.237) + b), (t + a)*a) \
+               * inv(rot_rpy(b, 89.7*c, t + 0.843 + sin(a)))) * (1, -2, 0)))\n\
+               a = 0.3\nb = -1.1\nc = 0.7\nt = 0.2\nx";
+    let v = last_numbers(src);
+    assert!(v.len() == 1 && (v[0] - 5f64.sqrt()).abs() < 1e-12, "{v:?}");
+}

@@ -212,12 +212,31 @@ impl Expr {
             }
             tm.iter().map(|(v, e)| (v.clone(), e / 2)).collect::<Mono>()
         };
+        // (given up, as div_exact is, once a coefficient of the root grows
+        // past 4 times the longest of x's plus 16 words, or the squares
+        // formed pass MAX_SQUARING term products: no exact root is found
+        // then, and √x is kept — the norm of a vector of large entries
+        // with decimal coefficients spent minutes here, matrix seed 821232)
+        let words = |e: &Expr| e.terms.values().map(Coef::words).max().unwrap_or(0);
+        let cap = 4 * words(self) + 16;
+        let mut work = 0usize;
         for _ in 0..(2 * self.terms.len() + 8) {
+            // (a term product of coefficients w words long costs about w²)
+            let w = 1 + words(&p);
+            work = work.saturating_add(
+                p.terms
+                    .len()
+                    .saturating_mul(p.terms.len())
+                    .saturating_mul(w * w),
+            );
+            if work > MAX_SQUARING {
+                return None;
+            }
             let r = self.sub(&p.mul(&p));
             let Some((rm, rc)) = r.leading() else {
                 return Some(p);
             };
-            if exact_zero(rc) {
+            if exact_zero(rc) || rc.words() > cap {
                 return None;
             }
             let m = mono_div(rm, &pm);
@@ -229,6 +248,11 @@ impl Expr {
         self.sub(&p.mul(&p)).is_zero().then_some(p)
     }
 }
+
+/// The most term products [`Expr::sqrt_of_square`] forms squaring its
+/// candidate roots before it gives up, each weighted by the square of its
+/// coefficients' length in words (a few milliseconds).
+const MAX_SQUARING: usize = 1_000_000;
 
 /// A float coefficient that should have cancelled: division is not exact.
 fn exact_zero(c: &Coef) -> bool {
