@@ -748,3 +748,59 @@ fn diff_of_a_log_bound_off_its_branch_is_refused() {
         }
     }
 }
+
+/// Runs `x` (over a, b, c, t and q1(t), q2(t)) bound later at the numbers
+/// `at` and typed first with them written in; both values.
+fn later_and_first(x: &str, at: &[(&str, f64)]) -> (Vec<f64>, Vec<f64>) {
+    let decl = "given a, b, c : scalar\ngiven q1(t), q2(t) : scalar\n";
+    let bind: String = at.iter().map(|(n, v)| format!("{n} = {v:e}\n")).collect();
+    let later = last_numbers(&format!("{decl}y = {x}\n{bind}y"));
+    let first = last_numbers(&format!("{bind}{x}"));
+    (later, first)
+}
+
+/// ‖R v‖² of a product of symbolic rotations is a sum of squares that is
+/// not a square; looking for its root term by term ran to the step limit,
+/// forming p² each step, its coefficients hundreds of digits long (matrix
+/// differential seed 701867: over 5 minutes in release, not finished).
+/// A root term outside the box of the exponents now ends the search: the
+/// norm is √ of the sum, and its value the length of v, 2√2.
+#[test]
+fn the_norm_of_a_rotated_vector_is_its_length() {
+    let x = "norm(rot_zyx(q1' + b + t, sin(sin(q1')), cos(a - 2 b - t - 2 q1 - 7 pi/8) q1^3) \
+             * rot_rpy(-c, (q2 * (-5.53))^3, -sin(b)) * (2, -2, 0))";
+    let at = [
+        ("a", -1.5048933890613347),
+        ("b", 0.3141215952992174),
+        ("c", 1.7812477938187705),
+        ("t", 0.2322211907358252),
+        ("q1", -0.6207299436629424),
+        ("q1'", -0.09463906602526802),
+        ("q2", 0.7823924060848043),
+    ];
+    let (later, first) = later_and_first(x, &at);
+    for v in [later[0], first[0]] {
+        assert!((v - 8f64.sqrt()).abs() < 1e-12, "{v}");
+    }
+}
+
+/// rpy's cos(pitch) = √(r11² + r21²) of a product of symbolic rotations:
+/// the same root search ran on (matrix differential seed 700030, 258 s in
+/// release); now given up at once, and the angles bound later are those
+/// typed first.
+#[test]
+fn rpy_of_a_product_of_symbolic_rotations_is_quick_and_right() {
+    let x = "rpy(rot_quat((cos(-2 t - 2 q1 + pi/2) * (-9.9), -1, 0, 1)) * Rotx(q2 q1) \
+             * MatrixExp3(VecToso3((-1, -2, -1)) * sin(sin(2 b - 2 t - 2 q1 - 9 pi/5))))";
+    let at = [
+        ("b", 0.1478724432709438),
+        ("t", 0.2669410672975491),
+        ("q1", 1.09742553412905),
+        ("q2", -1.1686263483642965),
+    ];
+    let (later, first) = later_and_first(x, &at);
+    assert_eq!(later.len(), 3);
+    for (u, v) in later.iter().zip(&first) {
+        assert!((u - v).abs() < 1e-12, "{later:?} vs {first:?}");
+    }
+}
