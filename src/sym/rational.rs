@@ -382,9 +382,16 @@ mod tests {
         assert_eq!(x.sqrt_of_square(), None);
         // a square of many terms is still found
         let p = (0..12).fold(Expr::one(), |p, k| {
-            p.add(&Expr::sin(&a).mul(&b.powi(k).unwrap()).scale(&Coef::int(k + 1)))
+            p.add(
+                &Expr::sin(&a)
+                    .mul(&b.powi(k).unwrap())
+                    .scale(&Coef::int(k + 1)),
+            )
         });
         let r = p.mul(&p).sqrt_of_square().expect("a root");
-        assert!(r == Expr::call(Func::Abs, vec![p.clone()]) || r == Expr::call(Func::Abs, vec![p.neg()]));
+        assert!(
+            r == Expr::call(Func::Abs, vec![p.clone()])
+                || r == Expr::call(Func::Abs, vec![p.neg()])
+        );
     }
 }
