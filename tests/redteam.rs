@@ -804,3 +804,19 @@ fn rpy_of_a_product_of_symbolic_rotations_is_quick_and_right() {
         assert!((u - v).abs() < 1e-12, "{later:?} vs {first:?}");
     }
 }
+
+/// The derivative of euler_zyx of a product of symbolic rotations with a
+/// ninth power inside: cancelling its quotients tried exact divisions
+/// whose quotient terms left the box of the exponents (N(q d) = N(q) +
+/// N(d)), each run to its step limit (matrix differential seed 703141:
+/// over 30 s in release). The division now gives up at the first such
+/// term, and the derivative is refused by the size limit.
+#[test]
+fn a_derivative_whose_quotients_do_not_divide_is_refused_by_size() {
+    let e = error(
+        "given a, b, c : scalar\ngiven q1(t), q2(t) : scalar\n\
+         x = diff(euler_zyx((Rot((0, 2, -2), ((sin((2) * a + (-2) * b + (2) * t + (-2) * q1 + (-5) * pi / 4 + (-0.100)) \
+         + cos((1) * a + (2) * b + (2) * t + (2) * q1 + (-6) * pi / 8 + (0.03)))^(9))) * Rot((-2, -1, 0), (q1^(2))))), t)",
+    );
+    assert!(e.contains("symbolic expression too large"), "{e}");
+}

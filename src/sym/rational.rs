@@ -91,6 +91,18 @@ impl Expr {
         // reciprocal, a right value
         let words = |e: &Expr| e.terms.values().map(Coef::words).max().unwrap_or(0);
         let cap = 4 * words(self).max(words(d)) + 16;
+        // every monomial of the quotient lies in the box of self's
+        // exponents less d's (N(q d) = N(q) + N(d))
+        let (sb, db) = (exact_bounds(self), exact_bounds(d));
+        let in_box = |m: &Mono| {
+            let e = |v: &Var| m.iter().find(|(w, _)| w == v).map_or(0, |(_, e)| *e);
+            let b = |x: &BTreeMap<Var, (i32, i32)>, v: &Var| x.get(v).copied().unwrap_or((0, 0));
+            let vars = sb.keys().chain(db.keys()).chain(m.iter().map(|(v, _)| v));
+            vars.into_iter().all(|v| {
+                let ((lo, hi), (dl, dh)) = (b(&sb, v), b(&db, v));
+                (lo - dl..=hi - dh).contains(&e(v))
+            })
+        };
         let mut r = self.clone();
         let mut q = Expr::zero();
         for _ in 0..limit {
@@ -101,7 +113,7 @@ impl Expr {
                 return None;
             }
             let m = mono_div(rm, dm);
-            if cmp_lex(&m, &low) == Ordering::Less {
+            if cmp_lex(&m, &low) == Ordering::Less || !in_box(&m) {
                 return None;
             }
             let c = rc.mul(&dinv);
@@ -272,6 +284,26 @@ fn exponent_bounds(x: &Expr) -> BTreeMap<Var, (i32, i32)> {
     for (v, e) in x.terms.keys().flatten() {
         let b = out.entry(v.clone()).or_insert((0, 0));
         *b = (b.0.min(*e), b.1.max(*e));
+    }
+    out
+}
+
+/// Each variable's least and greatest exponent over the terms of `x`,
+/// a term lacking it counting 0 (exactly: a quotient's box is found by
+/// subtracting these).
+fn exact_bounds(x: &Expr) -> BTreeMap<Var, (i32, i32)> {
+    let mut out = exponent_bounds(x);
+    for (v, b) in out.iter_mut() {
+        let every = x.terms.keys().all(|m| m.iter().any(|(w, _)| w == v));
+        if every {
+            let es = x
+                .terms
+                .keys()
+                .filter_map(|m| m.iter().find(|(w, _)| w == v));
+            *b = es.fold((i32::MAX, i32::MIN), |(lo, hi), (_, e)| {
+                (lo.min(*e), hi.max(*e))
+            });
+        }
     }
     out
 }
