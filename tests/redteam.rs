@@ -823,3 +823,102 @@ fn the_norm_of_a_large_rotated_vector_keeps_its_root() {
     let v = last_numbers(src);
     assert!(v.len() == 1 && (v[0] - 5f64.sqrt()).abs() < 1e-12, "{v:?}");
 }
+
+/// Runs `x` (over a, b, c, t and q1(t), q2(t)) bound later at the numbers
+/// `at` and typed first with them written in; both values.
+fn later_and_first(x: &str, at: &[(&str, f64)]) -> (Vec<f64>, Vec<f64>) {
+    let decl = "given a, b, c : scalar\ngiven q1(t), q2(t) : scalar\n";
+    let bind: String = at.iter().map(|(n, v)| format!("{n} = {v:e}\n")).collect();
+    let later = last_numbers(&format!("{decl}y = {x}\n{bind}y"));
+    let first = last_numbers(&format!("{bind}{x}"));
+    (later, first)
+}
+
+/// ‖R v‖² of a product of symbolic rotations is a sum of squares that is
+/// not a square; looking for its root term by term ran to the step limit,
+/// forming p² each step, its coefficients hundreds of digits long (matrix
+/// differential seed 701867: over 5 minutes in release, not finished).
+/// A root term outside the box of the exponents now ends the search: the
+/// norm is √ of the sum, and its value the length of v, 2√2.
+#[test]
+fn the_norm_of_a_rotated_vector_is_its_length() {
+    let x = "norm(rot_zyx(q1' + b + t, sin(sin(q1')), cos(a - 2 b - t - 2 q1 - 7 pi/8) q1^3) \
+             * rot_rpy(-c, (q2 * (-5.53))^3, -sin(b)) * (2, -2, 0))";
+    let at = [
+        ("a", -1.5048933890613347),
+        ("b", 0.3141215952992174),
+        ("c", 1.7812477938187705),
+        ("t", 0.2322211907358252),
+        ("q1", -0.6207299436629424),
+        ("q1'", -0.09463906602526802),
+        ("q2", 0.7823924060848043),
+    ];
+    let (later, first) = later_and_first(x, &at);
+    for v in [later[0], first[0]] {
+        assert!((v - 8f64.sqrt()).abs() < 1e-12, "{v}");
+    }
+}
+
+/// rpy's cos(pitch) = √(r11² + r21²) of a product of symbolic rotations:
+/// the same root search ran on (matrix differential seed 700030, 258 s in
+/// release); now given up at once, and the angles bound later are those
+/// typed first.
+#[test]
+fn rpy_of_a_product_of_symbolic_rotations_is_quick_and_right() {
+    let x = "rpy(rot_quat((cos(-2 t - 2 q1 + pi/2) * (-9.9), -1, 0, 1)) * Rotx(q2 q1) \
+             * MatrixExp3(VecToso3((-1, -2, -1)) * sin(sin(2 b - 2 t - 2 q1 - 9 pi/5))))";
+    let at = [
+        ("b", 0.1478724432709438),
+        ("t", 0.2669410672975491),
+        ("q1", 1.09742553412905),
+        ("q2", -1.1686263483642965),
+    ];
+    let (later, first) = later_and_first(x, &at);
+    assert_eq!(later.len(), 3);
+    for (u, v) in later.iter().zip(&first) {
+        assert!((u - v).abs() < 1e-12, "{later:?} vs {first:?}");
+    }
+}
+
+/// The derivative of euler_zyx of a product of symbolic rotations with a
+/// ninth power inside: cancelling its quotients tried exact divisions
+/// whose quotient terms left the box of the exponents (N(q d) = N(q) +
+/// N(d)), each run to its step limit (matrix differential seed 703141:
+/// over 30 s in release). The division now gives up at the first such
+/// term, and the derivative is refused by the size limit.
+#[test]
+fn a_derivative_whose_quotients_do_not_divide_is_refused_by_size() {
+    let e = error(
+        "given a, b, c : scalar\ngiven q1(t), q2(t) : scalar\n\
+         x = diff(euler_zyx((Rot((0, 2, -2), ((sin((2) * a + (-2) * b + (2) * t + (-2) * q1 + (-5) * pi / 4 + (-0.100)) \
+         + cos((1) * a + (2) * b + (2) * t + (2) * q1 + (-6) * pi / 8 + (0.03)))^(9))) * Rot((-2, -1, 0), (q1^(2))))), t)",
+    );
+    assert!(e.contains("symbolic expression too large"), "{e}");
+}
+
+/// Matrix differential seed 821460: the derivative of a determinant with
+/// a 15th power in it, bound later, was read from its expanded form and
+/// right to 9 digits only (−1.661462949786 for −1.661462949044); it is
+/// now Jacobi's formula replayed with numbers. The reference is the
+/// derivative written by hand and typed first.
+#[test]
+fn diff_of_a_determinant_bound_later_is_right_to_machine_precision() {
+    let nums = "a = -1.0812796761479668\nb = -1.4833603622559097\nc = -1.516077891787613\n\
+                t = 0.5196765715317789\nq = 0.44917909054309146";
+    let defs =
+        "A = a + b + t - pi/3 + 1.73\nB = -2*b + t + q - 5*pi - 6.9\nC = -b - 2*q - 4*pi/7 + 21.2";
+    let later = format!(
+        "given a, b, c, t, q\n{defs}\nE = (sin(A) + cos(B))^15\n\
+         x = diff(det([-2, -3, E; -3, sin(cos(C)), -3; -94.6*c, -c, 1]), b)\n{nums}\nx"
+    );
+    let by_hand = format!(
+        "{nums}\n{defs}\nE = (sin(A) + cos(B))^15\ndE = 15*(sin(A) + cos(B))^14*(cos(A) + 2*sin(B))\n\
+         dS = cos(cos(C))*sin(C)\n\
+         det([-2, -3, dE; -3, sin(cos(C)), 0; -94.6*c, -c, 0]) + det([-2, 0, E; -3, dS, -3; -94.6*c, 0, 1])"
+    );
+    let (got, want) = (last_numbers(&later), last_numbers(&by_hand));
+    assert!(
+        got.len() == 1 && (got[0] - want[0]).abs() <= 1e-13 * want[0].abs(),
+        "{got:?} vs {want:?}"
+    );
+}

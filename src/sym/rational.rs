@@ -11,6 +11,7 @@
 //! leading terms, so an exact quotient is found term by term.
 
 use std::cmp::Ordering;
+use std::collections::BTreeMap;
 
 use super::coef::{Coef, Surd};
 use super::expr::{Expr, Func, Mono, Var, mono_mul};
@@ -90,6 +91,18 @@ impl Expr {
         // reciprocal, a right value
         let words = |e: &Expr| e.terms.values().map(Coef::words).max().unwrap_or(0);
         let cap = 4 * words(self).max(words(d)) + 16;
+        // every monomial of the quotient lies in the box of self's
+        // exponents less d's (N(q d) = N(q) + N(d))
+        let (sb, db) = (exact_bounds(self), exact_bounds(d));
+        let in_box = |m: &Mono| {
+            let e = |v: &Var| m.iter().find(|(w, _)| w == v).map_or(0, |(_, e)| *e);
+            let b = |x: &BTreeMap<Var, (i32, i32)>, v: &Var| x.get(v).copied().unwrap_or((0, 0));
+            let vars = sb.keys().chain(db.keys()).chain(m.iter().map(|(v, _)| v));
+            vars.into_iter().all(|v| {
+                let ((lo, hi), (dl, dh)) = (b(&sb, v), b(&db, v));
+                (lo - dl..=hi - dh).contains(&e(v))
+            })
+        };
         let mut r = self.clone();
         let mut q = Expr::zero();
         for _ in 0..limit {
@@ -100,7 +113,7 @@ impl Expr {
                 return None;
             }
             let m = mono_div(rm, dm);
-            if cmp_lex(&m, &low) == Ordering::Less {
+            if cmp_lex(&m, &low) == Ordering::Less || !in_box(&m) {
                 return None;
             }
             let c = rc.mul(&dinv);
@@ -195,6 +208,19 @@ impl Expr {
     }
 
     /// A p with p² = self, found term by term from the leading term.
+    ///
+    /// A term whose square leaves the box of self's exponents (the Newton
+    /// polytope of p² is twice p's) ends the search at once: a sum of
+    /// squares that is not a square (‖R v‖² of a product of symbolic
+    /// rotations, rpy's cos(pitch) = √(r11² + r21²)) otherwise ran on to
+    /// the step limit, 2n + 8 steps, forming p² each step (cubic in all):
+    /// matrix differential seed 700030 (197 terms, 403 steps, 1.4 s a
+    /// try) took 258 s, seed 701867 over 5 minutes. The remainder self −
+    /// p² is kept in place (adding t to p takes (2p + t)·t from it, |p|
+    /// term products a step), and the search is given up (None, √ kept, a
+    /// right value) when a coefficient grows far longer than self's, as
+    /// in [`Expr::div_exact`], when the remainder grows far past self, or
+    /// past [`MAX_ROOT_WORK`].
     fn square_root_poly(&self) -> Option<Expr> {
         let (lm, lc) = self.leading()?;
         if lm.iter().any(|(_, e)| e % 2 != 0) {
@@ -212,47 +238,93 @@ impl Expr {
             }
             tm.iter().map(|(v, e)| (v.clone(), e / 2)).collect::<Mono>()
         };
-        // (given up, as div_exact is, once a coefficient of the root grows
-        // past 4 times the longest of x's plus 16 words, or the squares
-        // formed pass MAX_SQUARING term products: no exact root is found
-        // then, and √x is kept — the norm of a vector of large entries
-        // with decimal coefficients spent minutes here, matrix seed 821232)
-        let words = |e: &Expr| e.terms.values().map(Coef::words).max().unwrap_or(0);
-        let cap = 4 * words(self) + 16;
+        let words = self.terms.values().map(Coef::words).max().unwrap_or(0);
+        let cap = 4 * words + 16;
+        let bounds = exponent_bounds(self);
+        let most = 8 * self.terms.len() + 64;
         let mut work = 0usize;
+        let mut r = self.sub(&p.mul(&p));
         for _ in 0..(2 * self.terms.len() + 8) {
-            // (a term product of coefficients w words long costs about w²)
-            let w = 1 + words(&p);
-            work = work.saturating_add(
-                p.terms
-                    .len()
-                    .saturating_mul(p.terms.len())
-                    .saturating_mul(w * w),
-            );
-            if work > MAX_SQUARING {
-                return None;
-            }
-            let r = self.sub(&p.mul(&p));
             let Some((rm, rc)) = r.leading() else {
-                return Some(p);
+                // (the remainder kept in place is exact; checked once
+                // against self all the same)
+                return self.sub(&p.mul(&p)).is_zero().then_some(p);
             };
-            if exact_zero(rc) || rc.words() > cap {
+            if exact_zero(rc) {
                 return None;
             }
             let m = mono_div(rm, &pm);
-            if cmp_lex(&m, &low) == Ordering::Less {
+            if cmp_lex(&m, &low) == Ordering::Less || !within(&bounds, &m) {
                 return None;
             }
-            p = p.add(&single(m, rc.mul(&two_inv)));
+            let c = rc.mul(&two_inv);
+            work = work.saturating_add(p.terms.len() + r.terms.len());
+            if c.words() > cap || work > MAX_ROOT_WORK {
+                return None;
+            }
+            // (p + t)² − p² = (2p + t)·t
+            let t = single(m.clone(), c.clone());
+            let twice = single(m.clone(), c.mul(&Coef::int(2)));
+            for (m, c) in p.mul(&twice).add(&t.mul(&t)).neg().terms {
+                r.push(m, c);
+            }
+            p.push(m, c);
+            if r.terms.len() > most {
+                return None;
+            }
         }
         self.sub(&p.mul(&p)).is_zero().then_some(p)
     }
 }
 
-/// The most term products [`Expr::sqrt_of_square`] forms squaring its
-/// candidate roots before it gives up, each weighted by the square of its
-/// coefficients' length in words (a few milliseconds).
-const MAX_SQUARING: usize = 1_000_000;
+/// Each variable's least and greatest exponent over the terms of `x`
+/// (0 where a term lacks it): the box holding x's Newton polytope.
+fn exponent_bounds(x: &Expr) -> BTreeMap<Var, (i32, i32)> {
+    let mut out: BTreeMap<Var, (i32, i32)> = BTreeMap::new();
+    for (v, e) in x.terms.keys().flatten() {
+        let b = out.entry(v.clone()).or_insert((0, 0));
+        *b = (b.0.min(*e), b.1.max(*e));
+    }
+    out
+}
+
+/// Each variable's least and greatest exponent over the terms of `x`,
+/// a term lacking it counting 0 (exactly: a quotient's box is found by
+/// subtracting these).
+fn exact_bounds(x: &Expr) -> BTreeMap<Var, (i32, i32)> {
+    let mut out = exponent_bounds(x);
+    for (v, b) in out.iter_mut() {
+        let every = x.terms.keys().all(|m| m.iter().any(|(w, _)| w == v));
+        if every {
+            let es = x
+                .terms
+                .keys()
+                .filter_map(|m| m.iter().find(|(w, _)| w == v));
+            *b = es.fold((i32::MAX, i32::MIN), |(lo, hi), (_, e)| {
+                (lo.min(*e), hi.max(*e))
+            });
+        }
+    }
+    out
+}
+
+/// True when the square of monomial `m` lies in the box `bounds` (every
+/// monomial of a root p of x does: the Newton polytope of p² is twice
+/// that of p, its vertices' terms never cancelling).
+fn within(bounds: &BTreeMap<Var, (i32, i32)>, m: &Mono) -> bool {
+    m.iter().all(|(v, e)| {
+        bounds
+            .get(v)
+            .is_some_and(|&(lo, hi)| (lo..=hi).contains(&e.saturating_mul(2)))
+    })
+}
+
+/// The most work [`Expr::sqrt_of_square`] spends looking for a root term
+/// by term: the term products of the steps and the remainder's terms
+/// each step reads for its leading one (a root of some 900 terms over
+/// two symbols, 0.4 s in release, is found; a dense one's square passes
+/// the size limit, `MAX_SYM_NODES`, long before).
+const MAX_ROOT_WORK: usize = 1_000_000;
 
 /// A float coefficient that should have cancelled: division is not exact.
 fn exact_zero(c: &Coef) -> bool {
@@ -329,5 +401,29 @@ mod tests {
         );
         assert_eq!(x.sqrt_of_square(), None);
         assert_eq!(x.mul(&x).add(&Expr::one()).sqrt_of_square(), None);
+    }
+
+    #[test]
+    fn sums_of_squares_that_are_not_squares_keep_their_root() {
+        // (sin a cos b + c)² + (cos a + b sin c)²: its root's second
+        // term leaves the box of the exponents at once
+        let (a, b, c) = (s("a"), s("b"), s("c"));
+        let u = Expr::sin(&a).mul(&Expr::cos(&b)).add(&c);
+        let v = Expr::cos(&a).add(&b.mul(&Expr::sin(&c)));
+        let x = u.mul(&u).add(&v.mul(&v));
+        assert_eq!(x.sqrt_of_square(), None);
+        // a square of many terms is still found
+        let p = (0..12).fold(Expr::one(), |p, k| {
+            p.add(
+                &Expr::sin(&a)
+                    .mul(&b.powi(k).unwrap())
+                    .scale(&Coef::int(k + 1)),
+            )
+        });
+        let r = p.mul(&p).sqrt_of_square().expect("a root");
+        assert!(
+            r == Expr::call(Func::Abs, vec![p.clone()])
+                || r == Expr::call(Func::Abs, vec![p.neg()])
+        );
     }
 }
