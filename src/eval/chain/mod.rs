@@ -523,6 +523,15 @@ impl Chain<'_> {
                 return plus(a, b);
             }
             "trace" => return linear(&Step::Op(Operation::Call("trace")), du, Kind::Scalar),
+            // Jacobi's formula, column by column (rates.rs)
+            "det" if args.len() == 1 => {
+                let Some(du) = du else { return Some(None) };
+                let n = match shape(&u)?.shape()? {
+                    (Some(r), Some(c)) if r == c => r,
+                    _ => return None,
+                };
+                return Some(Some(rates::det(&u, &du, n)?));
+            }
             _ if u.kind != Kind::Scalar => return None,
             "atan2" => {
                 // d atan2(u, w) = (w du − u dw) / (u² + w²)
