@@ -21,7 +21,8 @@
 //!   sides exactly).
 //!
 //! Cases are seeded and reproducible (`sym_differential/cases.rs`):
-//! `CHASLES_DIFF_CASES` sets how many, `CHASLES_DIFF_SEED` where to start.
+//! `CHASLES_DIFF_CASES` sets how many, `CHASLES_DIFF_SEED` where to start,
+//! `CHASLES_DIFF_SHOW` prints each pair's script.
 
 use chasles::diagnostics::Severity;
 use chasles::eval::env::Mode;
@@ -345,6 +346,9 @@ fn check_pair(xs: &str, ys: &str, x: &[V], y: &[V]) -> Result<(), String> {
         if x.len() == 1 { "x < y\nx >= y\n" } else { "" }
     );
     TALLY.with(|t| t.borrow_mut().checked += 1);
+    if std::env::var_os("CHASLES_DIFF_SHOW").is_some() {
+        eprintln!("{src}");
+    }
     let ctx = |e: String| format!("{e}\n--- script:\n{src}");
     let lines = std::panic::catch_unwind(|| run(&src))
         .map_err(|p| ctx(format!("panicked: {:?}", p.downcast_ref::<String>())))?;
