@@ -259,3 +259,17 @@ assert cos(pi/5) == (1 + sqrt(5))/4            # √5 in ℚ(e^{iπ/5}) by a Gau
 given t9 : scalar
 cos(1e-9) cos(t9)                             # prints cos(t9): the float of cos(1e-9) is 1
 assert (cos(1e-9) cos(t9) == cos(t9)) == false   # yet they differ at every t9 with cos ≠ 0
+# angle offsets with no exact cosine (a decimal, π/5): decided at points
+assert cos(t9 + 0.1) cos(0.2) - sin(t9 + 0.1) sin(0.2) == cos(t9 + 0.3)
+assert cos(t9) + cos(t9 + 2 pi/5) + cos(t9 + 4 pi/5) + cos(t9 + 6 pi/5) + cos(t9 + 8 pi/5) == 0
+
+# --- derivatives of the inverse maps, numbers bound later ---------------------
+# euler_zxz(Rotx(s)) is (0, s, 0) on its branch sin(s) > 0; its derivative
+# with s bound later is the rate of the angles the number gives, right on
+# every branch: at s = −1 the angles are (π, 1, π), so d/ds is (0, −1, 0).
+given s9 : scalar
+e9 = euler_zxz(Rotx(s9))
+de9 = diff(e9, s9)
+s9 = -1
+e9
+de9

@@ -163,20 +163,8 @@ fn wrapped(e: &Expr, l: i64) -> Expr {
             })
             .collect();
         let c = if sign { c.neg() } else { c.clone() };
-        // (merged in place: adding a one-term sum cloned the sum so far)
-        match out.terms.entry(mono) {
-            std::collections::btree_map::Entry::Vacant(v) => {
-                v.insert(c);
-            }
-            std::collections::btree_map::Entry::Occupied(mut o) => {
-                let sum = o.get().add(&c);
-                if sum.is_zero() {
-                    o.remove();
-                } else {
-                    *o.get_mut() = sum;
-                }
-            }
-        }
+        // (in place: adding a one-term sum cloned the sum so far)
+        out.push(mono, c);
     }
     out
 }
@@ -253,9 +241,8 @@ fn reduced(e: &Expr, l: i64, z: &Var) -> Expr {
                 mono.push((z.clone(), i32::try_from(k).unwrap_or(i32::MAX)));
                 mono.sort_by(|a, b| a.0.cmp(&b.0));
             }
-            // (each (rest, k) is its own monomial: inserted, not added,
-            // which cloned the sum so far at every term)
-            out.terms.insert(mono, c);
+            // (in place: adding a one-term sum cloned the sum so far)
+            out.push(mono, c);
         }
     }
     out

@@ -22,16 +22,7 @@ use crate::values::exact_mat::Entries;
 /// away from π, a recipe not bounded, or a skew part within its balls of
 /// 0 at 512 bits).
 pub fn half_turn(v: &Value) -> Option<HalfTurn> {
-    let Value::Num { m, exact, .. } = v else {
-        return None;
-    };
-    if exact.is_float() || !matches!(m.shape(), (3, 3) | (4, 4)) {
-        return None;
-    }
-    let f = |i: usize, j: usize| m[(i, j)];
-    let skew = Vec3::new(f(2, 1) - f(1, 2), f(0, 2) - f(2, 0), f(1, 0) - f(0, 1)) * 0.5;
-    let cos = 0.5 * (f(0, 0) + f(1, 1) + f(2, 2) - 1.0);
-    if cos >= 0.0 || skew.norm() > 1e-12 || v.exact_form().is_some() {
+    if !crate::values::exact_mat::near_half_turn(v) || v.exact_form().is_some() {
         return None;
     }
     for prec in PRECISIONS {

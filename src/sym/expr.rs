@@ -302,7 +302,8 @@ impl Expr {
             .unwrap_or(0)
     }
 
-    pub(super) fn push(&mut self, m: Mono, c: Coef) {
+    /// Adds the term c·m in place: [`Expr::add`] without copying the sum.
+    pub fn push(&mut self, m: Mono, c: Coef) {
         if c.is_zero() {
             return;
         }

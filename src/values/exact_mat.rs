@@ -188,6 +188,23 @@ pub fn membership(m: &Num, exact: &Exact, group: Group) -> Membership {
     }
 }
 
+/// Whether the floats of `v`, a 3×3 or 4×4 made from exact numbers, put
+/// the angle θ of its rotation block within rounding of π (cosθ < 0 and
+/// ‖sinθ ω̂‖ ≤ 1e-12): where the floats cannot tell the log's branch, and
+/// its exact form ([`half_turn`]) or certified balls (`eval::turn`) must.
+pub fn near_half_turn(v: &Value) -> bool {
+    let Value::Num { m, exact, .. } = v else {
+        return false;
+    };
+    if exact.is_float() || !matches!(m.shape(), (3, 3) | (4, 4)) {
+        return false;
+    }
+    let f = |i: usize, j: usize| m[(i, j)];
+    let skew = Vec3::new(f(2, 1) - f(1, 2), f(0, 2) - f(2, 0), f(1, 0) - f(0, 1)) * 0.5;
+    let cos = 0.5 * (f(0, 0) + f(1, 1) + f(2, 2) - 1.0);
+    cos < 0.0 && skew.norm() <= 1e-12
+}
+
 /// The branch of the logarithm of the rotation block R of a numeric value
 /// `v` (3×3 or 4×4), decided by its exact form where its floats put θ
 /// within rounding of π (cosθ < 0, ‖sinθ ω̂‖ ≤ 1e-12): θ = π when tr R = −1
@@ -198,13 +215,7 @@ pub fn half_turn(v: &Value) -> Option<HalfTurn> {
     let Value::Num { m, exact, .. } = v else {
         return None;
     };
-    if exact.is_float() || !matches!(m.shape(), (3, 3) | (4, 4)) {
-        return None;
-    }
-    let f = |i: usize, j: usize| m[(i, j)];
-    let skew = Vec3::new(f(2, 1) - f(1, 2), f(0, 2) - f(2, 0), f(1, 0) - f(0, 1)) * 0.5;
-    let cos = 0.5 * (f(0, 0) + f(1, 1) + f(2, 2) - 1.0);
-    if cos >= 0.0 || skew.norm() > 1e-12 {
+    if !near_half_turn(v) {
         return None;
     }
     let e = form_of(m, exact)?;

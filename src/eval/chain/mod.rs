@@ -244,15 +244,19 @@ impl Chain<'_> {
             None if Rc::as_ptr(r) == self.top.0 => self.top.1,
             None => return None,
         };
+        let x = |i: usize| r.args.get(i).cloned();
+        // (the steps alike for every shape)
+        match &r.step {
+            Step::Leaf(v) => return self.leaf(v, &k),
+            Step::Closed(on) => return self.closed(on, &x(0)?, k),
+            Step::Guard(on) => return self.guard(on, &x(0)?, k),
+            Step::Op(Operation::Neg) => return neg(self.of(&x(0)?)?),
+            _ => {}
+        }
         if k != Kind::Scalar {
             return self.matrix_step(r, k);
         }
-        let x = |i: usize| r.args.get(i).cloned();
         match &r.step {
-            Step::Leaf(v) => self.leaf(v, &k),
-            Step::Closed(on) => self.closed(on, &x(0)?, k),
-            Step::Guard(on) => self.guard(on, &x(0)?, k),
-            Step::Op(Operation::Neg) => neg(self.of(&x(0)?)?),
             // x deg = x π/180
             Step::Op(Operation::Degrees) => match self.of(&x(0)?)? {
                 None => Some(None),
@@ -308,10 +312,6 @@ impl Chain<'_> {
     fn matrix_step(&mut self, r: &Rc<Recipe>, k: Kind) -> Option<D> {
         let x = |i: usize| r.args.get(i).cloned();
         match &r.step {
-            Step::Leaf(v) => self.leaf(v, &k),
-            Step::Closed(on) => self.closed(on, &x(0)?, k),
-            Step::Guard(on) => self.guard(on, &x(0)?, k),
-            Step::Op(Operation::Neg) => neg(self.of(&x(0)?)?),
             Step::Op(Operation::Transpose | Operation::Index(_) | Operation::Member(_))
             | Step::Retag => linear(&r.step, self.of(&x(0)?)?, k),
             Step::Op(Operation::Arith(op)) => {
