@@ -19,6 +19,7 @@ pub mod half;
 pub mod intern;
 pub mod layout;
 pub mod matrix;
+pub mod modular;
 pub mod phase;
 pub mod print;
 pub mod probe;

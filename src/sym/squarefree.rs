@@ -14,6 +14,8 @@
 use num_bigint::BigUint;
 use num_traits::ToPrimitive;
 
+use super::modular::Ring;
+
 /// Trial division runs below this bound: a cofactor left is a product of
 /// primes at least this large.
 const TRIAL: u128 = 1 << 12;
@@ -111,60 +113,26 @@ fn large_primes(m: u128, out: &mut Vec<u128>) -> Option<()> {
     large_primes(m / d, out)
 }
 
-/// a + b mod m (a, b < m), without overflow.
-fn add_mod(a: u128, b: u128, m: u128) -> u128 {
-    if a >= m - b { a - (m - b) } else { a + b }
-}
-
-/// a·b mod m (a, b < m).
-fn mul_mod(a: u128, b: u128, m: u128) -> u128 {
-    if let Some(p) = a.checked_mul(b) {
-        return p % m;
-    }
-    // double and add, every step reduced
-    let (mut acc, mut a, mut b) = (0u128, a, b);
-    while b > 0 {
-        if b & 1 == 1 {
-            acc = add_mod(acc, a, m);
-        }
-        a = add_mod(a, a, m);
-        b >>= 1;
-    }
-    acc
-}
-
-/// a^e mod m.
-fn pow_mod(mut a: u128, mut e: u128, m: u128) -> u128 {
-    let mut acc = 1 % m;
-    a %= m;
-    while e > 0 {
-        if e & 1 == 1 {
-            acc = mul_mod(acc, a, m);
-        }
-        a = mul_mod(a, a, m);
-        e >>= 1;
-    }
-    acc
-}
-
 /// Whether m (odd, without prime factors below [`TRIAL`]) is prime, by the
 /// Miller–Rabin test, exact below [`MR_EXACT`]; None above it for a
 /// number the test does not show composite.
 fn is_prime(m: u128) -> Option<bool> {
+    let ring = Ring::new(m);
+    let (one, minus_one) = (ring.enter(1), ring.enter(m - 1));
     let (mut d, mut r) = (m - 1, 0u32);
     while d % 2 == 0 {
         d /= 2;
         r += 1;
     }
     for a in [2u128, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41] {
-        let mut x = pow_mod(a, d, m);
-        if x == 1 || x == m - 1 {
+        let mut x = ring.pow(ring.enter(a), d);
+        if x == one || x == minus_one {
             continue;
         }
         let mut composite = true;
         for _ in 1..r {
-            x = mul_mod(x, x, m);
-            if x == m - 1 {
+            x = ring.mul(x, x);
+            if x == minus_one {
                 composite = false;
                 break;
             }
@@ -176,8 +144,14 @@ fn is_prime(m: u128) -> Option<bool> {
     (m < MR_EXACT).then_some(true)
 }
 
-/// A proper factor of the composite m (Pollard's rho, Brent's cycle
-/// search), None past [`rho_steps`] steps for each of a few constants.
+/// Steps of Pollard's rho whose differences are multiplied together
+/// before one gcd is taken.
+const BATCH: u32 = 64;
+
+/// A proper factor of the composite m (Pollard's rho with Brent's cycle
+/// search, the differences of a batch multiplied before one gcd), None
+/// past [`rho_steps`] steps for each of a few constants. A batch whose
+/// product shares all of m is walked again a step at a time.
 fn rho(m: u128) -> Option<u128> {
     let gcd = |mut a: u128, mut b: u128| {
         while b != 0 {
@@ -185,11 +159,15 @@ fn rho(m: u128) -> Option<u128> {
         }
         a
     };
+    let ring = Ring::new(m);
     for c in 1..=4u128 {
-        let f = |x: u128| add_mod(mul_mod(x, x, m), c, m);
-        let (mut x, mut y, mut steps) = (2u128, 2u128, 0u32);
-        let mut power = 1u32;
-        let mut lam = 0u32;
+        let c = ring.enter(c);
+        let f = |x: u128| ring.add(ring.mul(x, x), c);
+        let (mut x, mut y, mut steps) = (ring.enter(2), ring.enter(2), 0u32);
+        let (mut power, mut lam) = (1u32, 0u32);
+        let mut q = ring.enter(1);
+        let mut saved = (x, y, power, lam);
+        let mut in_batch = 0u32;
         loop {
             if power == lam {
                 x = y;
@@ -199,12 +177,39 @@ fn rho(m: u128) -> Option<u128> {
             y = f(y);
             lam += 1;
             steps += 1;
-            let g = gcd(x.abs_diff(y), m);
-            if g == m || steps > rho_steps(m) {
-                break;
-            }
-            if g > 1 {
-                return Some(g);
+            in_batch += 1;
+            q = ring.mul(q, x.abs_diff(y));
+            if in_batch == BATCH || steps > rho_steps(m) {
+                let g = gcd(q, m);
+                if g == m {
+                    // walk the batch again, one gcd a step
+                    (x, y, power, lam) = saved;
+                    for _ in 0..in_batch {
+                        if power == lam {
+                            x = y;
+                            power *= 2;
+                            lam = 0;
+                        }
+                        y = f(y);
+                        lam += 1;
+                        let g = gcd(x.abs_diff(y), m);
+                        if g > 1 && g < m {
+                            return Some(g);
+                        }
+                        if g == m {
+                            break;
+                        }
+                    }
+                    break;
+                }
+                if g > 1 {
+                    return Some(g);
+                }
+                if steps > rho_steps(m) {
+                    break;
+                }
+                saved = (x, y, power, lam);
+                in_batch = 0;
             }
         }
     }

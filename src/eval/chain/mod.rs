@@ -451,6 +451,14 @@ impl Chain<'_> {
                 };
                 Some(Some(rates::of(b.name, r, &u, du)?))
             }
+            // d(R⁻¹) = dRᵀ for a rotation (R⁻¹ = Rᵀ): no products that
+            // cancel, so an entry exactly 0 stays 0 (matrix differential
+            // seed 831222 gave −5.3e-19 by the general rule below)
+            "inv" | "RotInv" if args.len() == 1 && u.kind == Kind::SO3 => linear(
+                &Step::Op(Operation::Transpose),
+                du,
+                Kind::Matrix(Some(3), Some(3)),
+            ),
             // d(M⁻¹) = −M⁻¹ dM M⁻¹
             "inv" | "RotInv" | "TransInv" if args.len() == 1 => {
                 let Some(du) = du else {
