@@ -273,3 +273,12 @@ de9 = diff(e9, s9)
 s9 = -1
 e9
 de9
+
+# --- diff and subs by a symbol that already has a number ------------------------
+# They read the symbol (as if the derivative were taken before the numbers
+# were bound): the partial derivative at the numbers, not that of a constant.
+given th8 : scalar
+th8 = 0.3
+diff(Rotz(th8), th8)                          # [-sin 0.3, -cos 0.3, 0; cos 0.3, -sin 0.3, 0; 0, 0, 0]
+assert diff(sin(th8)^2, th8) == sin(0.6)
+assert subs(sin(th8) + th8, th8, pi/2) == 1 + pi/2

@@ -667,3 +667,132 @@ fn a_slice_of_a_symbolic_value_is_its_entries() {
         "a = 0.7\nw = RpToTrans(Rotx(a), (1, 2, 3))[1:3, 4]\nw",
     );
 }
+
+/// The numbers of `ans` of `src`, entry by entry (row by row).
+fn numbers_of(src: &str) -> Vec<f64> {
+    match ans(src) {
+        Value::Num { m, .. } => {
+            let m = m.to_dmatrix();
+            (0..m.nrows())
+                .flat_map(|i| (0..m.ncols()).map(move |j| (i, j)))
+                .map(|(i, j)| m[(i, j)])
+                .collect()
+        }
+        v => panic!("not numbers: {v:?}\n{src}"),
+    }
+}
+
+/// The first error `src` gives.
+fn refusal(src: &str) -> String {
+    let mut s = Session::new(Settings::default());
+    let (_, err, n) = s.run_to_strings("t.chs", src, Mode::Run, false);
+    assert!(n > 0, "no error: {src}");
+    err
+}
+
+/// `diff` and `subs` by a symbol that already has a number read the
+/// symbol (src/eval/hold.rs): `s = 1; diff(sin(s), s)` was 0 (the
+/// derivative of the number sin 1) where `x = diff(sin(s), s); s = 1; x`
+/// is cos 1. Each case agrees with the same call made before the numbers
+/// were bound, and with the derivative written by hand.
+#[test]
+fn diff_and_subs_by_a_symbol_bound_first_read_the_symbol() {
+    // (setup, call, numbers, the value by hand)
+    let cases: [(&str, &str, &str, f64); 7] = [
+        ("given s", "diff(sin(s), s)", "s = 1.3", 1.3f64.cos()),
+        (
+            "given s",
+            "diff(s^3 + 2 s, s)",
+            "s = -0.7",
+            3.0 * 0.49 + 2.0,
+        ),
+        (
+            "given s\nx = sin(s)^2",
+            "diff(x, s)",
+            "s = 0.4",
+            (2.0 * 0.4f64).sin(),
+        ),
+        (
+            "given s",
+            "subs(sin(s) + s, s, 2)",
+            "s = 1",
+            2f64.sin() + 2.0,
+        ),
+        (
+            "given q(t) : scalar",
+            "diff(sin(q), t)",
+            "q = 0.5\nq' = 3",
+            0.5f64.cos() * 3.0,
+        ),
+        (
+            "given q(t) : scalar",
+            "diff(q'^2 cos(q), q')",
+            "q = 0.5\nq' = 3",
+            2.0 * 3.0 * 0.5f64.cos(),
+        ),
+        // a: absorbed by y is b's number only, a constant to ∂/∂a
+        (
+            "given a, b\nx = sin(a) b\nb = 2\ny = x + 1",
+            "diff(y, a)",
+            "a = 0.5",
+            2.0 * 0.5f64.cos(),
+        ),
+    ];
+    for (setup, call, bind, want) in cases {
+        let first = format!("{setup}\n{bind}\n{call}");
+        let later = format!("{setup}\nz = {call}\n{bind}\nz");
+        let (f, l) = (numbers_of(&first), numbers_of(&later));
+        assert_eq!(f, l, "typed first ≠ bound later\n{first}\n---\n{later}");
+        assert!((f[0] - want).abs() < 1e-14, "{first}: {} for {want}", f[0]);
+    }
+    // a Jacobian column with the joint angles bound: ∂T/∂θ₁ against a
+    // central difference of the numbers
+    let setup = "given th1, th2\nS1 = (0, 0, 1, 0, 0, 0)\nS2 = (0, 1, 0, -1, 0, 0)\n\
+                 M = RpToTrans(eye(3), (1, 0, 2))";
+    let t = |a: f64| format!("exp([S1] ({a})) exp([S2] 0.5) M");
+    let d = numbers_of(&format!(
+        "{setup}\nth1 = 0.3\nth2 = 0.5\ndiff(exp([S1] th1) exp([S2] th2) M, th1)"
+    ));
+    let h = 1e-5;
+    let (p, m) = (
+        numbers_of(&format!("{setup}\n{}", t(0.3 + h))),
+        numbers_of(&format!("{setup}\n{}", t(0.3 - h))),
+    );
+    assert_eq!(d.len(), 16);
+    for k in 0..16 {
+        let fd = (p[k] - m[k]) / (2.0 * h);
+        assert!((d[k] - fd).abs() < 1e-9, "entry {k}: {} vs {fd}", d[k]);
+    }
+    assert!(d.iter().any(|x| x.abs() > 0.1), "{d:?}");
+}
+
+/// A value computed after a symbol had its number holds the number, not
+/// the symbol: `diff` or `subs` by that symbol through it is refused (it
+/// was a plausible 0), naming the value and the way out; by a symbol whose
+/// number it did not take, it is computed. A name bound to a number that
+/// was never a symbol is no symbol to differentiate by.
+#[test]
+fn diff_through_a_value_that_took_the_number_is_refused() {
+    let e = refusal("given s\ns = 1\ny = sin(s)\ndiff(y, s)");
+    assert!(e.contains("cannot see s in `y`"), "{e}");
+    assert!(e.contains("compute `y` before binding s"), "{e}");
+    let e = refusal("given s\ns = 1\ny = sin(s)\nsubs(y, s, 2)");
+    assert!(e.contains("cannot see s in `y`"), "{e}");
+    // a function of time's number moves with t, not with q̇
+    let e = refusal("given q(t) : scalar\nq = 1\ng = sin(q)\ndiff(g, t)");
+    assert!(e.contains("cannot see q in `g`"), "{e}");
+    assert_eq!(
+        numbers_of("given q(t) : scalar\nq = 1\ng = sin(q)\ndiff(g, q')"),
+        vec![0.0]
+    );
+    // through a user function's parameter
+    let e = refusal("given s\nf(x) = x^2\ns = 2\ny = s\ndiff(f(y), s)");
+    assert!(e.contains("cannot see s in `y`"), "{e}");
+    assert_eq!(
+        numbers_of("given s\nf(x) = x^2\ns = 2\ndiff(f(s), s)"),
+        vec![4.0]
+    );
+    let e = refusal("u = 2\ndiff(u^2, u)");
+    assert!(e.contains("u is a number (2), not a symbol"), "{e}");
+    assert!(e.contains("given u"), "{e}");
+}

@@ -3,7 +3,7 @@
 //! (LANGUAGE.md §4), and `mech < ... >` literals (chapter 2).
 
 use super::apply::{self, Hints, Op};
-use super::expr::refine;
+use super::interp::refine;
 use super::interp::{Interp, Typed};
 use super::ops::Sel;
 use super::value::Value;

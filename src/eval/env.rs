@@ -147,6 +147,11 @@ pub struct Binding {
     /// binding a new stamp (a value bound later warns once per binding of
     /// the numbers it reads, `super::warned`).
     pub stamp: u64,
+    /// The `given` names (and rates `q'`) whose numbers the value was
+    /// computed from: it holds those numbers, not the symbols, so `diff`
+    /// and `subs` by them, which read the symbols ([`Env::hold`]), refuse
+    /// it (§7, `super::hold`).
+    pub absorbed: Vec<Name>,
 }
 
 impl Binding {
@@ -158,6 +163,7 @@ impl Binding {
             symbolic: true,
             derived: false,
             stamp: 0,
+            absorbed: Vec::new(),
         }
     }
 }
@@ -206,6 +212,12 @@ pub struct Env {
     /// The warnings given by reads of values bound later (once per
     /// binding of their numbers).
     pub(super) warned: super::warned::Warned,
+    /// The binding each `given` name was declared with (its symbol), kept
+    /// after numbers are bound to it: [`Env::hold`] reads it again.
+    givens: NameMap<Binding>,
+    /// The names read as their `given` symbols, not their numbers, while
+    /// `diff` or `subs` evaluates its operands ([`Env::hold`]).
+    holding: Vec<Key>,
 }
 
 /// The numbers a value holds, as the memory budget counts them
@@ -236,15 +248,32 @@ fn binding_numbers(b: &Binding) -> u64 {
 impl Env {
     #[inline]
     pub fn get(&self, name: impl AsKey) -> Option<&Binding> {
+        let key = name.key();
+        if !self.holding.is_empty() && self.holding.contains(&key) {
+            // (a rate `q'` has no binding of its own: it is read as q's)
+            return self.givens.get(&key);
+        }
+        self.vars.get(&key)
+    }
+    /// The binding of `name` as it is, held or not ([`Env::hold`]): what a
+    /// call saves to restore.
+    #[inline]
+    pub fn get_unheld(&self, name: impl AsKey) -> Option<&Binding> {
         self.vars.get(&name.key())
     }
     #[inline]
     pub fn set(&mut self, name: impl AsKey, mut b: Binding) {
+        let key = name.key();
         b.derived = derived(b.val.as_ref());
         self.stamp += 1;
         b.stamp = self.stamp;
         self.held += binding_numbers(&b);
-        if let Some(old) = self.vars.insert(name.key(), b) {
+        if b.symbolic {
+            self.givens.insert(key, b.clone());
+        }
+        // (a name bound anew, a function's parameter, is no longer held)
+        self.holding.retain(|k| *k != key);
+        if let Some(old) = self.vars.insert(key, b) {
             self.held = self.held.saturating_sub(binding_numbers(&old));
         }
     }
@@ -279,6 +308,12 @@ impl Env {
     /// reusing the old binding's storage when the name is bound already.
     #[inline]
     pub fn set_value(&mut self, name: impl AsKey, ty: &Ty, val: Option<&Value>) {
+        self.set_made(name, ty, val, &[]);
+    }
+    /// [`Env::set_value`] of a value computed from the numbers of the
+    /// `given` names `absorbed` ([`Binding::absorbed`]).
+    #[inline]
+    pub fn set_made(&mut self, name: impl AsKey, ty: &Ty, val: Option<&Value>, absorbed: &[Name]) {
         let key = name.key();
         self.stamp += 1;
         match self.vars.get_mut(&key) {
@@ -294,6 +329,8 @@ impl Env {
                 old.symbolic = false;
                 old.derived = derived(val);
                 old.stamp = self.stamp;
+                old.absorbed.clear();
+                old.absorbed.extend_from_slice(absorbed);
             }
             None => {
                 self.held += val.map_or(0, numbers);
@@ -303,6 +340,7 @@ impl Env {
                     symbolic: false,
                     derived: derived(val),
                     stamp: self.stamp,
+                    absorbed: absorbed.to_vec(),
                 };
                 self.vars.insert(key, b);
             }
@@ -334,6 +372,58 @@ impl Env {
         if let Some(old) = self.vars.remove(&name.key()) {
             self.held = self.held.saturating_sub(binding_numbers(&old));
         }
+    }
+    /// Whether `name` was declared by `given`, or is a rate `q'`, `q''`
+    /// of a given function of time.
+    pub fn is_given(&self, name: Name) -> bool {
+        if self.givens.is_empty() {
+            return false;
+        }
+        let text = name.as_str();
+        let base = text.trim_end_matches('\'');
+        if base.len() == text.len() {
+            return self.givens.contains_key(&Key(name));
+        }
+        self.givens.keys().any(|k| k.0.as_str() == base)
+    }
+    /// From now until [`Env::release`], every `given` name bound to a
+    /// value, and every rate `q'` so bound, is read as its symbol
+    /// ([`Env::get`]): `diff` and `subs` see the expression as written
+    /// before the numbers were bound (§7: bound first or later, the same
+    /// answer). False when no given name has a value (nothing to hold).
+    pub fn hold(&mut self) -> bool {
+        if self.givens.is_empty() {
+            return false;
+        }
+        let held: Vec<Key> = self
+            .vars
+            .iter()
+            .filter(|(k, b)| !b.symbolic && self.is_given(k.0))
+            .map(|(k, _)| *k)
+            .collect();
+        self.holding = held;
+        !self.holding.is_empty()
+    }
+    /// The binding `name` was declared with by `given` (its symbol).
+    pub fn given(&self, name: Name) -> Option<&Binding> {
+        self.givens.get(&Key(name))
+    }
+    /// Whether any name was declared by `given`.
+    #[inline]
+    pub fn has_givens(&self) -> bool {
+        !self.givens.is_empty()
+    }
+    /// The names [`Env::hold`] holds now.
+    pub fn held_names(&self) -> Vec<Name> {
+        self.holding.iter().map(|k| k.0).collect()
+    }
+    /// Whether [`Env::hold`] is in force.
+    pub fn holding(&self) -> bool {
+        !self.holding.is_empty()
+    }
+    /// The end of [`Env::hold`]: names read as their values again.
+    pub fn release(&mut self) {
+        self.holding.clear();
     }
     /// The user function `name`, if there is one.
     #[inline]

@@ -4,7 +4,7 @@
 
 use super::apply::{self, Hints, Op};
 use super::env::Mode;
-use super::interp::{Interp, Typed};
+use super::interp::{Interp, Typed, refine};
 use super::value::Value;
 use crate::builtins;
 use crate::check::error::Operand;
@@ -16,25 +16,6 @@ use crate::values::exact::Exact;
 
 fn strip(t: &Ty) -> Ty {
     Ty::plain(t.kind)
-}
-
-/// The runtime kind refines the static one (a literal that is a rotation
-/// is SO(3)); frames stay as the checker found them.
-#[inline]
-pub(super) fn refine(ty: Ty, val: &Option<Value>) -> Ty {
-    match val {
-        Some(v @ (Value::Num { .. } | Value::Tuple(_) | Value::Formula { .. })) => {
-            let kind = v.kind();
-            // Nothing to refine (and no frames to copy) when the numbers
-            // say what the checker said and it knew nothing more.
-            if kind == ty.kind && ty.algebra.is_none() && ty.moves.is_none() {
-                ty
-            } else {
-                crate::check::algebra::with_kind(&ty, kind)
-            }
-        }
-        _ => ty,
-    }
 }
 
 impl Interp<'_> {
@@ -236,6 +217,9 @@ impl Interp<'_> {
 
     fn var(&mut self, name: Name, span: Span) -> Result<Typed, Diagnostic> {
         if let Some(b) = self.env.get(name) {
+            if self.env.has_givens() && !b.symbolic {
+                super::hold::absorbed(self.env, name, b, &mut self.numbers_read);
+            }
             let mut warnings = Vec::new();
             let v = if self.running() {
                 super::substitute::current(b, self.env, &mut warnings).map_err(|e| {
@@ -433,14 +417,18 @@ impl Interp<'_> {
         // The arguments' types go on the interpreter's stack of them (no
         // vector per call); whatever happens, the stack is as it was after.
         let base = self.env.arg_tys.len();
-        let out = self.builtin_call(b, name, args, span, base);
+        let out = if super::hold::reads_symbols(b.name, args) && self.running() {
+            self.symbol_call(b, name, args, span, base)
+        } else {
+            self.builtin_call(b, name, args, span, base)
+        };
         self.env.arg_tys.truncate(base);
         out
     }
 
     /// A call of builtin `b`, its arguments' types pushed on
     /// [`Interp::arg_tys`] above `base`.
-    fn builtin_call(
+    pub(super) fn builtin_call(
         &mut self,
         b: &'static builtins::Builtin,
         name: &str,

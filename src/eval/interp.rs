@@ -11,6 +11,8 @@ use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
 use crate::syntax::ast::{Name, Span, Stmt, StmtKind};
 
+pub use super::outcome::{Names, Outcome};
+
 /// A checked (and, when running, evaluated) expression.
 ///
 /// The value is boxed: the interpreter returns a `Typed` from every node,
@@ -37,56 +39,6 @@ impl Typed {
     }
 }
 
-/// What a successful statement produced, for printing.
-#[derive(Debug, Clone)]
-pub struct Outcome {
-    pub span: Span,
-    /// The bound names (one for `x = ..`, several for `(a, b) = ..`,
-    /// none for a bare expression).
-    pub names: Names,
-    pub ty: Ty,
-    /// The value, boxed as [`Typed`]'s is (none when checking).
-    pub val: Option<Box<Value>>,
-    /// Extra text printed before the value (`derive` prints its chain).
-    pub note: Option<String>,
-    /// False for statements that print nothing (`given`, function definitions).
-    pub prints: bool,
-    /// For `(a, b) = ..`, the type of each bound part, with the frames it
-    /// took from the value or from its name; empty otherwise.
-    pub parts: Vec<Ty>,
-    /// For a bare call of a builtin whose tuple parts have names
-    /// ([`crate::builtins::parts`]), those names, to print `q = …`.
-    pub labels: &'static [&'static str],
-}
-
-/// The names a statement bound, in order: read as a slice of names. One
-/// name (the common `x = ..`) is held without a second allocation, and
-/// names are the syntax tree's interned handles (no copy of the text).
-#[derive(Debug, Clone)]
-pub enum Names {
-    /// `x = ..`, `derive T_ab`.
-    One([Name; 1]),
-    /// None (a bare expression) or several (`(a, b) = ..`).
-    Many(Vec<Name>),
-}
-
-impl Names {
-    /// The names as a slice.
-    pub fn as_slice(&self) -> &[Name] {
-        match self {
-            Names::One(n) => n,
-            Names::Many(v) => v,
-        }
-    }
-}
-
-impl std::ops::Deref for Names {
-    type Target = [Name];
-    fn deref(&self) -> &[Name] {
-        self.as_slice()
-    }
-}
-
 /// Runs statements against an environment.
 pub struct Interp<'a> {
     pub env: &'a mut Env,
@@ -101,6 +53,29 @@ pub struct Interp<'a> {
     pub(super) nest: u32,
     /// The size an unbound `I` takes here (from the operand beside it).
     pub(super) eye: Option<usize>,
+    /// The `given` names whose numbers the current statement has read, each
+    /// with the name it read it through ([`super::hold`]); what it binds
+    /// has them as [`super::env::Binding::absorbed`].
+    pub(super) numbers_read: Vec<(Name, Name)>,
+}
+
+/// The runtime kind refines the static one (a literal that is a rotation
+/// is SO(3)); frames stay as the checker found them.
+#[inline]
+pub(super) fn refine(ty: Ty, val: &Option<Value>) -> Ty {
+    match val {
+        Some(v @ (Value::Num { .. } | Value::Tuple(_) | Value::Formula { .. })) => {
+            let kind = v.kind();
+            // Nothing to refine (and no frames to copy) when the numbers
+            // say what the checker said and it knew nothing more.
+            if kind == ty.kind && ty.algebra.is_none() && ty.moves.is_none() {
+                ty
+            } else {
+                crate::check::algebra::with_kind(&ty, kind)
+            }
+        }
+        _ => ty,
+    }
 }
 
 /// The error of a statement stopped by the evaluation budget
@@ -124,6 +99,7 @@ impl<'a> Interp<'a> {
             depth: 0,
             nest: 0,
             eye: None,
+            numbers_read: Vec::new(),
         }
     }
 
@@ -173,12 +149,16 @@ impl<'a> Interp<'a> {
     /// Binds a checked value to `name` (statements call this only after
     /// they have succeeded).
     fn bind_value(&mut self, name: Name, t: &Typed) {
-        self.env.set_value(name, &t.ty, t.val.as_deref());
+        let mut absorbed: Vec<Name> = self.numbers_read.iter().map(|(s, _)| *s).collect();
+        absorbed.sort_unstable_by_key(|n| n.as_str());
+        absorbed.dedup();
+        self.env.set_made(name, &t.ty, t.val.as_deref(), &absorbed);
     }
 
     /// Runs one statement. On error nothing is bound.
     pub fn stmt(&mut self, s: &Stmt) -> Result<Outcome, Diagnostic> {
         self.warnings.clear();
+        self.numbers_read.clear();
         let out = |names: Names, t: Typed| Outcome {
             span: s.span,
             names,

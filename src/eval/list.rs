@@ -468,6 +468,7 @@ impl Interp<'_> {
                     symbolic: false,
                     derived: false,
                     stamp: 0,
+                    absorbed: Vec::new(),
                 },
             );
         }
@@ -533,6 +534,7 @@ impl Interp<'_> {
                             symbolic: false,
                             derived: false,
                             stamp: 0,
+                            absorbed: Vec::new(),
                         },
                     );
                 }

@@ -101,6 +101,7 @@ impl Interp<'_> {
                     symbolic: true,
                     derived: false,
                     stamp: 0,
+                    absorbed: Vec::new(),
                 },
             );
         }

@@ -171,9 +171,9 @@ impl Resolving<'_, '_> {
                 if x != args[0] {
                     if self.failed.is_none() {
                         self.failed = Some(format!(
-                            "{}(…) of an expression with no closed form cannot be computed once \
-                             its symbols have numbers (the {} of a kept call is not known); \
-                             bind the numbers first and compute it numerically, or give it a closed form",
+                            "{}(…) of an expression with no closed form cannot be computed with \
+                             numbers (the {} of a kept call is not known); write it in a form the \
+                             engine has (sqrt(u) for u^(1/2), whole powers, the book's maps)",
                             fun.name,
                             if fun.name == "diff" {
                                 "derivative"

@@ -8,7 +8,7 @@ use std::rc::Rc;
 
 use nalgebra::DMatrix;
 
-use super::expr::refine;
+use super::interp::refine;
 use super::interp::{Interp, Typed};
 use super::value::Value;
 use crate::check::ty::{Frames, Kind, Ty};

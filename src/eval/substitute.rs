@@ -54,7 +54,11 @@ pub fn current(
 /// to a name of its own). A tuple whose items are the parts of one
 /// operation's result (`rpy(R)`'s angles) is that operation's value once
 /// its symbols have numbers: a vector, as typed first.
-fn now(v: &Value, env: &Env, warnings: &mut Vec<Diagnostic>) -> Result<Value, replay::Failed> {
+pub(super) fn now(
+    v: &Value,
+    env: &Env,
+    warnings: &mut Vec<Diagnostic>,
+) -> Result<Value, replay::Failed> {
     Ok(match v {
         Value::Sym(s) => match resolve(s, env, warnings)? {
             Sym::Const(v, _) => *v,

@@ -6,7 +6,7 @@
 
 use super::interp::{Interp, MAX_CALL_DEPTH, Typed};
 use crate::diagnostics::{Diagnostic, ErrorKind};
-use crate::syntax::ast::{Expr, Span};
+use crate::syntax::ast::{Expr, Name, Span};
 
 impl Interp<'_> {
     pub(super) fn user_call(
@@ -65,8 +65,11 @@ impl Interp<'_> {
         let saved: Vec<(String, Option<super::env::Binding>)> = f
             .params
             .iter()
-            .map(|p| (p.clone(), self.env.get(p).cloned()))
+            .map(|p| (p.clone(), self.env.get_unheld(p).cloned()))
             .collect();
+        // (an argument read from numbers of given symbols makes the
+        // parameter hold them, super::hold)
+        let absorbed: Vec<Name> = self.numbers_read.iter().map(|(s, _)| *s).collect();
         for (p, t) in bound {
             self.env.set(
                 &p,
@@ -76,6 +79,7 @@ impl Interp<'_> {
                     symbolic: false,
                     derived: false,
                     stamp: 0,
+                    absorbed: absorbed.clone(),
                 },
             );
         }

@@ -20,10 +20,11 @@ pub const FAR: f64 = 1e9;
 /// (the nearest rotation; for such M it may be far from M).
 ///
 /// For det M > 0 and M well conditioned, `U Vᵀ` is M's orthogonal polar
-/// factor, found by [`polar_newton`] instead of the SVD: the same matrix to
-/// rounding, and an entry that is 0 in every iterate (the zeros of a
-/// rotation about a coordinate axis, of a block-diagonal M) stays exactly 0
-/// where the SVD leaves a residue of 1e-17.
+/// factor, found by Newton's iteration (`polar_newton`) instead of the
+/// SVD: the same matrix to rounding, and an entry that is 0 in every
+/// iterate (the zeros of a rotation about a coordinate axis, of a
+/// block-diagonal M) stays exactly 0 where the SVD leaves a residue of
+/// 1e-17.
 pub fn project_to_so3(m: &Mat3) -> Mat3 {
     if let Some(r) = polar_newton(m) {
         return r;
@@ -55,7 +56,8 @@ const POLAR_CONDITION: f64 = 1e6;
 /// determinant, so an entry 0 in X with the zero pattern of its cofactor is
 /// 0 in every iterate.
 fn polar_newton(m: &Mat3) -> Option<Mat3> {
-    if !(m.determinant() > 0.0) {
+    let det = m.determinant();
+    if det.is_nan() || det <= 0.0 {
         return None;
     }
     let mut x = *m;
@@ -64,7 +66,8 @@ fn polar_newton(m: &Mat3) -> Option<Mat3> {
     for _ in 0..60 {
         let inv = x.try_inverse()?;
         let (nx, ni) = (x.norm(), inv.norm());
-        if !(nx * ni <= POLAR_CONDITION) {
+        let condition = nx * ni;
+        if condition.is_nan() || condition > POLAR_CONDITION {
             return None;
         }
         let gamma = if scaled { (ni / nx).sqrt() } else { 1.0 };

@@ -732,9 +732,9 @@ pub fn check((o, w, p): &(Out, Wrap, Point)) -> Result<(), String> {
         .and_then(|b| b.val.clone())
         .ok_or_else(|| format!("no value\n{later}"))?;
     compare(&y, "bound later", &later)?;
-    // (typed first, `diff(X, t)` inside is of numbers: no derivative)
-    let inner_diff = matches!(o, Out::Lie(l) if l.inner_diff());
-    if matches!(w, Wrap::None | Wrap::Simplify | Wrap::Expand) && !inner_diff {
+    // (typed first, a diff or subs by a symbol that has a number reads the
+    // symbol: src/eval/hold.rs)
+    {
         let first = format!("{}x = {src}\n", bindings(&p.at(p.t)));
         let (s, n, _) = session(&first);
         if n == 0

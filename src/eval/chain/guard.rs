@@ -10,7 +10,8 @@
 
 use std::rc::Rc;
 
-use super::{Chain, D, node_k, zero};
+use super::build::{node_k, zero};
+use super::{Chain, D};
 use crate::check::ty::Kind;
 use crate::eval::value::Value;
 use crate::values::recipe::{OnBranch, Recipe, Step};

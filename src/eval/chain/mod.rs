@@ -14,9 +14,12 @@
 //! d Ad_T = Ad_T [ad_V] with [V] = T⁻¹ dT (3.83, 8.3); where a step is
 //! not one this module knows, the derivative is a leaf, as before.
 
+mod build;
 mod guard;
 mod rates;
 mod subs;
+
+use build::*;
 
 use guard::closed_form;
 use subs::substituted;
@@ -27,6 +30,7 @@ use std::rc::Rc;
 use super::value::Value;
 use crate::check::ty::Kind;
 use crate::syntax::ast::BinOp;
+use crate::values::exact::Exact;
 use crate::values::recipe::{Operation, Recipe, Step};
 
 /// A derivative: None for 0 (so that products with it vanish).
@@ -54,63 +58,6 @@ pub(super) fn derivative(x: &Value, by: &Value) -> Option<Rc<Recipe>> {
     Some(d.unwrap_or_else(|| zero(&kind)))
 }
 
-/// The kind of a derivative of a value of kind `k`: its shape only (the
-/// derivative of a rotation is no rotation); None for what has no shape.
-fn shape_of(k: &Kind) -> Option<Kind> {
-    Some(match k {
-        Kind::Scalar => Kind::Scalar,
-        k if k.is_vector() => Kind::Vector(Some(k.vec_len()?)),
-        k => match k.shape()? {
-            (Some(r), Some(c)) => Kind::Matrix(Some(r), Some(c)),
-            _ => return None,
-        },
-    })
-}
-
-/// The shape of the value `r` makes: its kind's, or a literal's.
-fn shape(r: &Recipe) -> Option<Kind> {
-    shape_of(&r.kind).or_else(|| literal_shape(r))
-}
-
-/// The shape of a matrix literal of scalars whose recorded kind leaves it
-/// open, as the literal's numbers give it: `[x]` a scalar, one row or one
-/// column a vector (`[1, 2]` is the 2-vector (1, 2)), else rows × columns.
-fn literal_shape(r: &Recipe) -> Option<Kind> {
-    let Step::Op(Operation::Block(widths)) = &r.step else {
-        return None;
-    };
-    if r.args.iter().any(|a| a.kind != Kind::Scalar) {
-        return None;
-    }
-    let (rows, cols) = (widths.len(), *widths.first()?);
-    if widths.iter().any(|w| *w != cols) {
-        return None;
-    }
-    Some(match (rows, cols) {
-        (1, 1) => Kind::Scalar,
-        (1, n) | (n, 1) => Kind::Vector(Some(n)),
-        (r, c) => Kind::Matrix(Some(r), Some(c)),
-    })
-}
-
-/// A zero of kind `k` (a shape).
-fn zero(k: &Kind) -> Rc<Recipe> {
-    match k.shape() {
-        Some((Some(r), Some(c))) if *k != Kind::Scalar => matrix(r, c, &vec![0.0; r * c], *k),
-        _ => number(0.0),
-    }
-}
-
-/// The constant r×c matrix with entries `xs` (row by row), of kind `k`.
-fn matrix(r: usize, c: usize, xs: &[f64], k: Kind) -> Rc<Recipe> {
-    let m = nalgebra::DMatrix::from_row_slice(r, c, xs).into();
-    Recipe::leaf(Value::Num {
-        kind: k,
-        m,
-        exact: Default::default(),
-    })
-}
-
 /// `v`, the value of builtin `call` ("" for an operator) over `args`,
 /// with how it was made: `diff`'s by the chain rule, `subs`'s by
 /// substitution in its operand's recipe, a closed form on a branch
@@ -135,96 +82,6 @@ struct Chain<'a> {
     /// the recipe's kind leaves it open).
     top: (*const Recipe, Kind),
 }
-
-fn number(x: f64) -> Rc<Recipe> {
-    Recipe::leaf(Value::scalar(x))
-}
-
-fn node(step: Step, args: Vec<Rc<Recipe>>) -> Option<Rc<Recipe>> {
-    Recipe::node(step, args, Kind::Scalar)
-}
-
-/// `step` over `args`, of kind `k` (a shape).
-fn node_k(step: Step, args: Vec<Rc<Recipe>>, k: Kind) -> Option<Rc<Recipe>> {
-    Recipe::node(step, args, k)
-}
-
-/// `a op b` whose result has the shape of the bigger operand (a scalar
-/// times a matrix is a matrix).
-fn arith(op: BinOp, a: Rc<Recipe>, b: Rc<Recipe>) -> Option<Rc<Recipe>> {
-    let k = match (op, shape(&a)?, shape(&b)?) {
-        (BinOp::Mul, ka, kb) => product(&ka, &kb)?,
-        (_, Kind::Scalar, kb) if op != BinOp::Pow => shape_of(&kb)?,
-        (_, ka, _) => shape_of(&ka)?,
-    };
-    node_k(Step::Op(Operation::Arith(op)), vec![a, b], k)
-}
-
-/// The shape of a product of values of kinds `a` and `b`.
-fn product(a: &Kind, b: &Kind) -> Option<Kind> {
-    let (a, b) = (shape_of(a)?, shape_of(b)?);
-    Some(match (a, b) {
-        (Kind::Scalar, k) | (k, Kind::Scalar) => k,
-        (a, b) => match (a.shape()?, b.shape()?) {
-            ((r, _), (_, Some(1))) => Kind::Vector(r),
-            ((r, _), (_, c)) => Kind::Matrix(r, c),
-        },
-    })
-}
-
-fn call(name: &'static str, args: Vec<Rc<Recipe>>) -> Option<Rc<Recipe>> {
-    node(Step::Op(Operation::Call(name)), args)
-}
-
-/// `a + b` of derivatives (0 + b = b).
-fn plus(a: D, b: D) -> Option<D> {
-    Some(match (a, b) {
-        (Some(a), Some(b)) => Some(arith(BinOp::Add, a, b)?),
-        (a, b) => a.or(b),
-    })
-}
-
-/// `f du` (0 when du is).
-fn times(f: Option<Rc<Recipe>>, du: D) -> Option<D> {
-    match du {
-        None => Some(None),
-        Some(du) => Some(Some(arith(BinOp::Mul, f?, du)?)),
-    }
-}
-
-/// `du f` (0 when du is): the order of a matrix product kept.
-fn times_after(du: D, f: Rc<Recipe>) -> Option<D> {
-    match du {
-        None => Some(None),
-        Some(du) => Some(Some(arith(BinOp::Mul, du, f)?)),
-    }
-}
-
-/// The same linear step (`transpose`, `x[i]`, `T.R`, …) over a
-/// derivative, of kind `k`.
-fn linear(step: &Step, du: D, k: Kind) -> Option<D> {
-    match du {
-        None => Some(None),
-        Some(du) => Some(Some(node_k(step.clone(), vec![du], k)?)),
-    }
-}
-
-/// `-x`.
-fn neg(x: D) -> Option<D> {
-    match x {
-        None => Some(None),
-        Some(x) => {
-            let k = x.kind;
-            Some(Some(node_k(Step::Op(Operation::Neg), vec![x], k)?))
-        }
-    }
-}
-
-/// `x^n`.
-fn pow(x: &Rc<Recipe>, n: f64) -> Option<Rc<Recipe>> {
-    arith(BinOp::Pow, x.clone(), number(n))
-}
-
 impl Chain<'_> {
     /// The derivative of `r`; None where the rule does not reach.
     fn of(&mut self, r: &Rc<Recipe>) -> Option<D> {
@@ -282,14 +139,28 @@ impl Chain<'_> {
                         if dv.is_some() || u.kind != Kind::Scalar {
                             return None;
                         }
-                        let n = match &v.step {
-                            Step::Leaf(n) => n.as_scalar()?,
+                        let (n, typed) = match &v.step {
+                            Step::Leaf(x @ Value::Num { exact, .. }) => {
+                                (x.as_scalar()?, matches!(exact, Exact::Typed))
+                            }
                             _ => return None,
                         };
                         if n == 0.0 {
                             return Some(None);
                         }
-                        let f = arith(BinOp::Mul, number(n), pow(&u, n - 1.0)?);
+                        // (n as it came, exact or not; n − 1 exact only
+                        // when n is a whole number or half as typed)
+                        let n_minus_1 = Recipe::leaf(Value::Num {
+                            kind: Kind::Scalar,
+                            m: crate::values::num::Num::Scalar(n - 1.0),
+                            exact: if typed {
+                                exact_constant(&[n])
+                            } else {
+                                Exact::Float
+                            },
+                        });
+                        let power = arith(BinOp::Pow, u.clone(), n_minus_1)?;
+                        let f = arith(BinOp::Mul, v.clone(), power);
                         times(f, du)
                     }
                 }
@@ -581,21 +452,4 @@ impl Chain<'_> {
         };
         times(f, du)
     }
-}
-
-/// The quotient rule, d(u/v) = du/v − u dv/v² (v a scalar; u a scalar,
-/// vector or matrix).
-fn quotient(u: Rc<Recipe>, v: &Rc<Recipe>, du: D, dv: D) -> Option<D> {
-    let a = match du {
-        None => None,
-        Some(du) => Some(arith(BinOp::Div, du, v.clone())?),
-    };
-    let b = match dv {
-        None => None,
-        Some(dv) => {
-            let udv = arith(BinOp::Mul, u, dv)?;
-            Some(arith(BinOp::Div, udv, pow(v, 2.0)?)?)
-        }
-    };
-    plus(a, neg(b)?)
 }

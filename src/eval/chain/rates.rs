@@ -20,7 +20,7 @@
 
 use std::rc::Rc;
 
-use super::{arith, matrix, node_k, number};
+use super::build::{arith, matrix, node_k, number};
 use crate::check::ty::Kind;
 use crate::syntax::ast::BinOp;
 use crate::values::ops::Sel;

@@ -1,0 +1,56 @@
+//! What a successful statement produced, for the front ends to print
+//! ([`crate::output`]): its value, type and the names it bound.
+
+use super::value::Value;
+use crate::check::ty::Ty;
+use crate::syntax::ast::{Name, Span};
+
+/// What a successful statement produced, for printing.
+#[derive(Debug, Clone)]
+pub struct Outcome {
+    pub span: Span,
+    /// The bound names (one for `x = ..`, several for `(a, b) = ..`,
+    /// none for a bare expression).
+    pub names: Names,
+    pub ty: Ty,
+    /// The value, boxed as [`super::interp::Typed`]'s is (none when checking).
+    pub val: Option<Box<Value>>,
+    /// Extra text printed before the value (`derive` prints its chain).
+    pub note: Option<String>,
+    /// False for statements that print nothing (`given`, function definitions).
+    pub prints: bool,
+    /// For `(a, b) = ..`, the type of each bound part, with the frames it
+    /// took from the value or from its name; empty otherwise.
+    pub parts: Vec<Ty>,
+    /// For a bare call of a builtin whose tuple parts have names
+    /// ([`crate::builtins::parts`]), those names, to print `q = …`.
+    pub labels: &'static [&'static str],
+}
+
+/// The names a statement bound, in order: read as a slice of names. One
+/// name (the common `x = ..`) is held without a second allocation, and
+/// names are the syntax tree's interned handles (no copy of the text).
+#[derive(Debug, Clone)]
+pub enum Names {
+    /// `x = ..`, `derive T_ab`.
+    One([Name; 1]),
+    /// None (a bare expression) or several (`(a, b) = ..`).
+    Many(Vec<Name>),
+}
+
+impl Names {
+    /// The names as a slice.
+    pub fn as_slice(&self) -> &[Name] {
+        match self {
+            Names::One(n) => n,
+            Names::Many(v) => v,
+        }
+    }
+}
+
+impl std::ops::Deref for Names {
+    type Target = [Name];
+    fn deref(&self) -> &[Name] {
+        self.as_slice()
+    }
+}
