@@ -240,8 +240,9 @@ fn symbolic_sides_resting_on_floats_are_decided_at_points() {
     }
     let (_, err) = common::outputs("given t : scalar\n(cos(pi/7)+cos(3pi/7)+cos(5pi/7))*t == t/2");
     assert!(!err.contains("rounding only"), "{err}");
-    // agreement with no proof waits for numbers and says so
-    let (out, err) = common::outputs("given t : scalar\nacos(0.3)*t == (pi/2 - asin(0.3))*t");
+    // agreement with no proof waits for numbers and says so (tan(π/8) =
+    // √2 − 1 is no angle the arcs know)
+    let (out, err) = common::outputs("given t : scalar\natan(sqrt(2) - 1)*t == (pi/8)*t");
     assert!(
         !out.trim().ends_with("true") && !out.trim().ends_with("false"),
         "{out}"
@@ -272,6 +273,15 @@ fn exp_log_and_inverse_trig_identities_are_proven() {
         "atan(2 - sqrt(3)) == pi/12",
         "atan2(1, 2) == atan(1/2)",
         "asin(0.6) == atan(3/4)",
+        // sums of arcs, by the addition formula (src/eval/transcendental.rs)
+        "acos(0.3) == pi/2 - asin(0.3)",
+        "acos(-0.6) == pi - acos(0.6)",
+        "atan(2) + atan(1/2) == pi/2",
+        "atan(1/2) + atan(1/3) == pi/4",
+        "4*atan(1/5) - atan(1/239) == pi/4",
+        "atan(1/2)/2 + atan(1/3)/2 == pi/8",
+        "atan(0.5) + atan(0.5) == atan(4/3)",
+        "asin(1) == pi/2",
         "tan(pi^2)*cos(1)^2 + tan(pi^2)*sin(1)^2 == tan(pi^2)",
         "log(2^100) == 100*log(2)",
         "log(1e-320) == -320*log(10)",
@@ -290,13 +300,15 @@ fn exp_log_and_inverse_trig_identities_are_proven() {
         "atan(0.9999999999999999) == pi/4",
         "log(6)/log(2) == 2",
         "exp(pi) == exp(3.14159)",
+        "4*atan(1/5) - atan(1/239) == pi/4 + 1e-40",
+        "acos(0.3) == pi/2 - asin(0.3) + 1e-30",
     ] {
         assert_eq!(last(src), serde_json::json!(false), "{src}");
     }
     // (a factor above 10⁶ whose cofactor may not be prime: not factored)
     let e = refusal("log(1000003*1000033) == log(1000003) + log(1000033)");
     assert!(e.contains("cannot decide"), "{e}");
-    let e = refusal("acos(0.3) == pi/2 - asin(0.3)");
+    let e = refusal("atan(sqrt(2) - 1) == pi/8");
     assert!(
         e.contains("cannot decide") && e.contains("cannot prove"),
         "{e}"
@@ -349,4 +361,57 @@ fn rounding_apart_over_symbols_is_never_false() {
         err.contains("cannot prove") || err.contains("cannot decide"),
         "{err}"
     );
+}
+
+/// Sums of arcs (atan, asin, acos of exact rationals) over random
+/// arguments: the addition formula atan x + atan y = atan((x + y)/(1 − xy))
+/// and acos x = π/2 − asin x are proven true; the same with the right side
+/// moved by 1e-25 is false; and `==` between unrelated sums is never true
+/// where the numbers differ (a float check of each true verdict).
+#[test]
+fn sums_of_arcs_are_decided_and_never_wrongly_true() {
+    let mut seed = 0x2545_f491_4f6c_dd1d_u64;
+    let mut next = |n: i64| {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed % (2 * n as u64 + 1)) as i64 - n
+    };
+    let mut statements = Vec::new();
+    let mut wants = Vec::new();
+    for _ in 0..40 {
+        // x, y in (−1, 1), nonzero denominators
+        let (a, b) = (next(9), 10 + next(9).abs());
+        let (c, d) = (next(9), 10 + next(9).abs());
+        let (x, y) = (a as f64 / b as f64, c as f64 / d as f64);
+        // (x + y)/(1 − xy) = (a d + c b)/(b d − a c)
+        let (num, den) = (a * d + c * b, b * d - a * c);
+        statements.push(format!(
+            "atan({a}/{b}) + atan({c}/{d}) == atan({num}/{den})"
+        ));
+        wants.push(Some(true));
+        statements.push(format!(
+            "atan({a}/{b}) + atan({c}/{d}) == atan({num}/{den}) + 1e-25"
+        ));
+        wants.push(Some(false));
+        statements.push(format!("acos({a}/{b}) == pi/2 - asin({a}/{b})"));
+        wants.push(Some(true));
+        // unrelated: true only where the floats agree
+        let (k, m) = (next(3), next(3));
+        statements.push(format!(
+            "{k}*atan({a}/{b}) + asin({c}/{d}) == {m}*acos({c}/{d}) - atan({a}/{b})"
+        ));
+        let l = k as f64 * x.atan() + y.asin();
+        let r = m as f64 * y.acos() - x.atan();
+        wants.push(((l - r).abs() > 1e-9).then_some(false));
+    }
+    for (src, want) in statements.iter().zip(&wants) {
+        let got = json(src);
+        let v = got.last().map(|j| j["value"].clone());
+        match want {
+            Some(w) => assert_eq!(v, Some(serde_json::json!(w)), "{src}"),
+            // (equal floats: true, or cannot decide; never false)
+            None => assert_ne!(v, Some(serde_json::json!(false)), "{src}"),
+        }
+    }
 }

@@ -84,7 +84,10 @@ fn cyclotomic_identities_are_never_false() {
     }
     // identities the engine cannot prove (an arc identity, a nested root
     // that does not denest) stay 'cannot decide', never false
-    undecided("given t\nacos(0.3)*t == (pi/2 - asin(0.3))*t");
+    undecided("given t\natan(sqrt(2) - 1)*t == (pi/8)*t");
+    // (acos α = π/2 − asin α: proven since session 15)
+    let out = common::printed("given t\nacos(0.3)*t == (pi/2 - asin(0.3))*t");
+    assert_eq!(out.lines().last(), Some("true"), "{out}");
     undecided("given a\nsqrt(1+sqrt(2))^2*a == (1+sqrt(2))*a");
     // cos A + cos B = 2 cos((A+B)/2) cos((A−B)/2): here 2 cos(π/5) ≠ 1, so false
     let v = last_numbers("given t\ncos(t + pi/5) + cos(t + 3 pi/5) == cos(t + 2 pi/5)");

@@ -37,11 +37,17 @@ enum Form {
     Exp { s: Surd, q: Expr },
     /// a + Σ c_p ln p, every c_p ≠ 0.
     Log { a: Expr, c: BTreeMap<u64, Rat> },
-    /// atan α of an exact real α: atan2(y, x) with x > 0 is atan(y/x),
-    /// asin α is atan(α/√(1 − α²)), acos α for α > 0 is atan(√(1 − α²)/α)
-    /// (atan is one to one: equal α, equal angles).
-    Atan(Surd),
+    /// a + Σ cᵢ atan αᵢ: a an exact real constant (π and algebraic
+    /// numbers), cᵢ ≠ 0 rational, the αᵢ distinct exact reals in (0, 1) —
+    /// [`Form::atan`] puts any atan α so (atan(−α) = −atan α, atan α =
+    /// π/2 − atan(1/α) for α > 1, atan 1 = π/4); atan2(y, x) with x > 0 is
+    /// atan(y/x), asin α is atan(α/√(1 − α²)), acos α = π/2 − asin α. Equal
+    /// forms are the same sum of the same terms, so equal numbers; unequal
+    /// forms prove nothing (atan ½ + atan ⅓ = π/4).
+    Arc { a: Expr, c: Vec<(Surd, Rat)> },
 }
+
+mod arcs;
 
 /// The last divisor tried when factoring into primes: what is left above
 /// it, if below its square, is prime.
@@ -144,7 +150,10 @@ impl Form {
 
     fn neg(&self) -> Form {
         match self {
-            Form::Atan(a) => Form::Atan(a.neg()),
+            Form::Arc { a, c } => Form::arc(
+                a.neg(),
+                c.iter().map(|(x, r)| (x.clone(), r.neg())).collect(),
+            ),
             Form::Exp { s, q } => Form::Exp {
                 s: s.neg(),
                 q: q.clone(),
@@ -156,6 +165,11 @@ impl Form {
     }
 
     fn add(&self, o: &Form) -> Option<Form> {
+        if matches!(self, Form::Arc { .. }) || matches!(o, Form::Arc { .. }) {
+            let ((a, mut c), (b, d)) = (self.as_arc()?, o.as_arc()?);
+            c.extend(d);
+            return Some(Form::arc(a.add(&b), c));
+        }
         if let (Some((s, q)), Some((t, r))) = (self.as_exp(), o.as_exp())
             && q == r
         {
@@ -175,6 +189,13 @@ impl Form {
     }
 
     fn mul(&self, o: &Form) -> Option<Form> {
+        // (a sum of arcs times a rational)
+        for (x, k) in [(self, o), (o, self)] {
+            if let (Form::Arc { a, c }, Some(k)) = (x, k.as_rat()) {
+                let terms = c.iter().map(|(x, r)| (x.clone(), r.mul(&k))).collect();
+                return Some(Form::arc(a.scale(&Coef::rat(k)), terms));
+            }
+        }
         if let (Some((s, q)), Some((t, r))) = (self.as_exp(), o.as_exp()) {
             return Some(Form::Exp {
                 s: s.mul(&t)?,
@@ -327,7 +348,9 @@ fn factor(n: &num_bigint::BigInt) -> Option<Vec<(u64, u32)>> {
 pub fn proven_equal(a: &Value, b: &Value) -> bool {
     let mut memo = HashMap::new();
     match (form(a, &mut memo, 0), form(b, &mut memo, 0)) {
-        (Some(Form::Atan(x)), Some(Form::Atan(y))) => x == y,
+        (Some(x @ Form::Arc { .. }), Some(y)) | (Some(y), Some(x @ Form::Arc { .. })) => {
+            x.as_arc() == y.as_arc()
+        }
         (Some(x), Some(y)) => match (x.as_exp(), y.as_exp()) {
             (Some(p), Some(q)) => p == q,
             _ => x.as_log().is_some() && x.as_log() == y.as_log(),
@@ -403,27 +426,32 @@ fn of_recipe(
                 if x.signum() <= 0.0 {
                     return None;
                 }
-                return Some(Form::Atan(y.mul(&x.inv()?)?));
+                return Form::atan(y.mul(&x.inv()?)?);
             }
             let x = (args.len() == 1).then(|| arg(0, memo))??;
             match row.name {
                 "exp" => x.exp(),
                 "log" => x.ln(),
                 "sqrt" => x.sqrt(),
-                "atan" => Some(Form::Atan(x.as_surd()?)),
+                "atan" => Form::atan(x.as_surd()?),
                 "asin" | "acos" => {
+                    // asin α = atan(α/√(1 − α²)), ±π/2 at α = ±1
                     let a = x.as_surd()?;
                     let c = Surd::rat(Rat::ONE).add(&a.mul(&a)?.neg());
-                    if c.signum() <= 0.0 {
-                        return None;
-                    }
-                    let c = c.sqrt()?;
+                    let asin = match c.signum() {
+                        0.0 => Form::leaf(Expr::pi().scale(&Coef::rat(Rat::new(
+                            if a.signum() > 0.0 { 1 } else { -1 },
+                            2,
+                        )?))),
+                        s if s > 0.0 => Form::atan(a.mul(&c.sqrt()?.inv()?)?)?,
+                        _ => return None,
+                    };
                     if row.name == "asin" {
-                        Some(Form::Atan(a.mul(&c.inv()?)?))
-                    } else if a.signum() > 0.0 {
-                        Some(Form::Atan(c.mul(&a.inv()?)?))
+                        Some(asin)
                     } else {
-                        None
+                        // acos α = π/2 − asin α
+                        let half_pi = Form::leaf(Expr::pi().scale(&Coef::rat(Rat::new(1, 2)?)));
+                        half_pi.add(&asin.neg())
                     }
                 }
                 _ => None,
