@@ -457,12 +457,19 @@ fn diff(v: &Value, x: &Mat, by: &Mat, kind: &Kind) -> Result<Value, String> {
         k => *k,
     };
     // Σ_v R_v·dv in each entry, refused before it is formed when too large
-    let mut known = crate::sym::diff::Known::default();
+    let mut known = crate::sym::diff::Known::limited(crate::values::limits::MAX_WORK);
     let parts: Vec<Vec<(Expr, Expr)>> = x
         .data
         .iter()
         .map(|e| e.diff_parts(&wrt, &mut known))
         .collect();
+    if let Some(work) = known.over() {
+        return Err(format!(
+            "symbolic expression too large: the derivative's chain rule would take at least {work} \
+             term products (more than {})",
+            crate::values::limits::MAX_WORK
+        ));
+    }
     let pairs: Vec<Vec<(&Expr, &Expr)>> = parts
         .iter()
         .map(|p| p.iter().map(|(r, d)| (r, d)).collect())

@@ -24,24 +24,78 @@ impl Wrt {
 
 /// The derivatives of variables worked out so far (a call may sit in
 /// thousands of terms, and in every entry of a matrix; a shared call is
-/// known by its pointer).
+/// known by its pointer), and the work a derivative may spend on the
+/// products its calls' chain rule forms ([`Known::limited`]).
 #[derive(Default)]
-pub struct Known(Vec<(Var, Expr)>);
+pub struct Known {
+    vars: Vec<(Var, Expr)>,
+    /// The most work ([`super::size::work`]) the calls' products may take;
+    /// None for no limit.
+    budget: Option<usize>,
+    /// The work spent so far.
+    spent: usize,
+    /// Set when a product would pass the budget: the derivative is then
+    /// incomplete and must be refused ([`Known::over`]).
+    over: bool,
+}
 
 impl Known {
+    /// Derivatives whose calls' products may take at most `work` term
+    /// products (issue 21: refuse in time, never after seconds of work —
+    /// the derivative of atan2 of two large entries formed x·dy − y·dx and
+    /// x² + y² before the result was refused by its size).
+    pub fn limited(work: usize) -> Known {
+        Known {
+            budget: Some(work),
+            ..Known::default()
+        }
+    }
+
+    /// The work spent when a product passed the budget (the derivatives
+    /// are then incomplete: refuse them); None while within it.
+    pub fn over(&self) -> Option<usize> {
+        self.over.then_some(self.spent)
+    }
+
     /// The index of dv, worked out on first sight.
     fn of(&mut self, v: &Var, wrt: &Wrt) -> usize {
         let same = |(k, _): &(Var, Expr)| match (k, v) {
             (Var::Call(a), Var::Call(b)) => Arc::ptr_eq(a, b),
             _ => k == v,
         };
-        match self.0.iter().position(same) {
+        match self.vars.iter().position(same) {
             Some(k) => k,
             None => {
-                self.0.push((v.clone(), var_diff(v, wrt)));
-                self.0.len() - 1
+                let d = var_diff(v, wrt, self);
+                self.vars.push((v.clone(), d));
+                self.vars.len() - 1
             }
         }
+    }
+
+    /// Charges `work` to the budget: false (and [`Known::over`] set) past
+    /// it, or once it has been passed.
+    fn charge(&mut self, work: usize) -> bool {
+        if self.over {
+            return false;
+        }
+        if let Some(budget) = self.budget {
+            self.spent = self.spent.saturating_add(work);
+            if self.spent > budget {
+                self.over = true;
+                return false;
+            }
+        }
+        true
+    }
+
+    /// a·b, its work charged to the budget; 0 (and [`Known::over`] set)
+    /// past it.
+    fn mul(&mut self, a: &Expr, b: &Expr) -> Expr {
+        if self.budget.is_some() && !self.charge(super::size::work(&[(a, b)])) {
+            return Expr::zero();
+        }
+        a.mul(b)
     }
 }
 
@@ -49,8 +103,17 @@ impl Expr {
     /// The derivative (chain rule through every variable): Σ_v R_v·dv over
     /// [`Expr::diff_parts`], the products packed where that pays.
     pub fn diff(&self, wrt: &Wrt) -> Expr {
-        let parts = self.diff_parts(wrt, &mut Known::default());
+        self.diff_with(wrt, &mut Known::default())
+    }
+
+    /// The derivative, the variables' derivatives shared with (and their
+    /// products charged to) `known`.
+    fn diff_with(&self, wrt: &Wrt, known: &mut Known) -> Expr {
+        let parts = self.diff_parts(wrt, known);
         let pairs: Vec<(&Expr, &Expr)> = parts.iter().map(|(r, d)| (r, d)).collect();
+        if !known.charge(super::size::flat_work(&pairs)) {
+            return Expr::zero();
+        }
         super::dense::sum_of_products(&pairs)
     }
 
@@ -66,7 +129,7 @@ impl Expr {
         for (m, c) in &self.terms {
             for (i, (v, e)) in m.iter().enumerate() {
                 let k = known.of(v, wrt);
-                if known.0[k].1.is_zero() {
+                if known.vars[k].1.is_zero() {
                     continue;
                 }
                 let mut rest: Mono = m.clone();
@@ -90,7 +153,7 @@ impl Expr {
         parts
             .into_iter()
             .filter(|(_, r)| !r.is_zero())
-            .map(|(k, r)| (r, known.0[k].1.clone()))
+            .map(|(k, r)| (r, known.vars[k].1.clone()))
             .collect()
     }
 }
@@ -111,7 +174,7 @@ fn symbol_diff(s: &Symbol, wrt: &Wrt) -> Expr {
     }
 }
 
-fn var_diff(v: &Var, wrt: &Wrt) -> Expr {
+fn var_diff(v: &Var, wrt: &Wrt, known: &mut Known) -> Expr {
     match v {
         Var::Pi => Expr::zero(),
         Var::Sym(s) => symbol_diff(s, wrt),
@@ -119,13 +182,14 @@ fn var_diff(v: &Var, wrt: &Wrt) -> Expr {
         Var::Z(s) => symbol_diff(s, wrt)
             .mul(&Expr::var(v.clone()))
             .scale(&Coef::i()),
-        Var::Call(c) => call_diff(c, wrt),
+        Var::Call(c) => call_diff(c, wrt, known),
     }
 }
 
-fn call_diff(c: &Arc<Call>, wrt: &Wrt) -> Expr {
+/// The derivative of a call by the chain rule, its products charged to
+/// `known`'s budget (its argument's derivative shares `known`).
+fn call_diff(c: &Arc<Call>, wrt: &Wrt, known: &mut Known) -> Expr {
     let x = &c.args[0];
-    let dx = x.diff(wrt);
     let me = Expr::var(Var::Call(c.clone()));
     // 1/e, as a plain call where the exact reciprocal does not fit (never
     // 0: a derivative that cannot be formed exactly is still right).
@@ -137,20 +201,23 @@ fn call_diff(c: &Arc<Call>, wrt: &Wrt) -> Expr {
     let outer = match c.f {
         Func::Sin => Expr::cos(x),
         Func::Cos => Expr::sin(x).neg(),
-        Func::Tan => one.add(&me.mul(&me)),
+        Func::Tan => one.add(&known.mul(&me, &me)),
         Func::Exp => me.clone(),
         Func::Sqrt => recip(&me.scale(&Coef::int(2))),
-        Func::Asin => recip(&Expr::sqrt(&one.sub(&x.mul(x)))),
-        Func::Acos => recip(&Expr::sqrt(&one.sub(&x.mul(x)))).neg(),
-        Func::Atan => recip(&one.add(&x.mul(x))),
-        Func::Abs => x.mul(&recip(&me)),
-        Func::Recip => me.mul(&me).neg(),
+        Func::Asin => recip(&Expr::sqrt(&one.sub(&known.mul(x, x)))),
+        Func::Acos => recip(&Expr::sqrt(&one.sub(&known.mul(x, x)))).neg(),
+        Func::Atan => recip(&one.add(&known.mul(x, x))),
+        Func::Abs => known.mul(x, &recip(&me)),
+        Func::Recip => known.mul(&me, &me).neg(),
         Func::Atan2 => {
             // d atan2(y, x) = (x dy − y dx)/(x² + y²)
             let (y, xx) = (&c.args[0], &c.args[1]);
-            let num = xx.mul(&y.diff(wrt)).sub(&y.mul(&xx.diff(wrt)));
-            return num.mul(&recip(&xx.mul(xx).add(&y.mul(y))));
+            let (dy, dxx) = (y.diff_with(wrt, known), xx.diff_with(wrt, known));
+            let num = known.mul(xx, &dy).sub(&known.mul(y, &dxx));
+            let den = known.mul(xx, xx).add(&known.mul(y, y));
+            return known.mul(&num, &recip(&den));
         }
     };
-    outer.mul(&dx)
+    let dx = x.diff_with(wrt, known);
+    known.mul(&outer, &dx)
 }
