@@ -391,8 +391,14 @@ fn not_finite_warning(o: &crate::eval::interp::Outcome) -> Option<Diagnostic> {
     fn scan(v: &Value, top: bool, nan: &mut bool, inf: &mut bool) {
         match v {
             Value::Num { m, .. } => {
-                *nan |= m.iter().any(|x| x.is_nan());
-                *inf |= top && m.iter().any(|x| x.is_infinite());
+                // (the common all-finite case in one pass that vectorizes:
+                // 0·x is ±0 for a finite x and NaN for ±inf or NaN)
+                let xs = m.as_slice();
+                if xs.iter().fold(0.0, |acc, x| acc + x * 0.0) == 0.0 {
+                    return;
+                }
+                *nan |= xs.iter().any(|x| x.is_nan());
+                *inf |= top && xs.iter().any(|x| x.is_infinite());
             }
             Value::Tuple(vs) => vs.iter().for_each(|v| scan(v, false, nan, inf)),
             _ => {}

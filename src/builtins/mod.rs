@@ -10,6 +10,7 @@ mod conditioning;
 mod decisions;
 pub mod notes;
 pub mod parts;
+mod table_calculus;
 mod table_draw;
 mod table_habits;
 mod table_list;
@@ -344,7 +345,7 @@ pub fn table() -> &'static [Builtin] {
         t.extend(table_math::builtins());
         t.extend(table_habits::builtins());
         t.extend(table_scalar::builtins());
-        t.extend(table_sym::builtins());
+        t.extend(table_calculus::builtins());
         t.extend(table_units::builtins());
         t.extend(table_list::builtins());
         t.extend(table_draw::builtins());

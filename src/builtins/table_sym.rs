@@ -2,18 +2,16 @@
 //! builtin that §7 lists when an argument has symbolic entries — Rot and
 //! Rotx/y/z and exp of so(3) by Rodrigues (3.51), exp of se(3) by
 //! Proposition 3.16, inverses by transpose, the adjoint (Definition 3.20),
-//! [x], cross, dot, det, trace, the Euler/RPY/quaternion maps — and the
-//! builtins of symbols themselves: `diff(x, t)` (chain rule, §3.2.2's
-//! Ṙ Rᵀ = [ω_s]), `simplify(x)`, `expand(x)` and `subs(x, name, value)`;
-//! tan, cot, sec and csc of a symbol as quotients of sin and cos.
+//! [x], cross, dot, det, trace, the Euler/RPY/quaternion maps — and of
+//! the builtins of symbols themselves ([`super::table_calculus`]); tan,
+//! cot, sec and csc of a symbol as quotients of sin and cos.
 
-use super::{Area, ArgError, Args, Builtin, Typing};
-use crate::check::ty::{Kind, Ty};
+use crate::check::ty::Kind;
 use crate::diagnostics::{Diagnostic, ErrorKind};
 use crate::span::Span;
 use crate::sym::Expr;
 use crate::sym::branch::{self, Branch};
-use crate::sym::expr::{Func, Wrt, as_symbol};
+use crate::sym::expr::Func;
 use crate::sym::matrix::{self as sm, Mat};
 use crate::values::formula::{self, make, mat_of, scalar, scalar_of};
 use crate::values::value::Value;
@@ -256,9 +254,11 @@ pub fn eval_symbolic(name: &str, vals: &[Value], kind: &Kind) -> Out {
             };
             ok(scalar(Expr::apply(f, &s(0)?, g)))
         }
-        ("diff", 2) => Some(diff(&vals[0], &ms[0], &ms[1], kind)),
+        ("diff", 2) => Some(super::table_calculus::diff(&vals[0], &ms[0], &ms[1], kind)),
         ("simplify" | "expand", 1) => ok(make(&vals[0].kind(), ms[0].map(Expr::cancel))),
-        ("subs", 3) => Some(subs(&vals[0], &ms[0], &ms[1], &ms[2])),
+        ("subs", 3) => Some(super::table_calculus::subs(
+            &vals[0], &ms[0], &ms[1], &ms[2],
+        )),
         _ => None,
     }
 }
@@ -407,22 +407,6 @@ fn ratio(name: &str, x: &Expr) -> Option<Expr> {
     Some(num.mul(&den.recip()?).cancel())
 }
 
-/// `subs(x, name, value)`: x with the symbol `name` replaced by `value` (a
-/// number or an expression), re-canonicalized.
-fn subs(v: &Value, x: &Mat, name: &Mat, by: &Mat) -> Result<Value, String> {
-    let sym = match name.data.as_slice() {
-        [e] => as_symbol(e),
-        _ => None,
-    }
-    .ok_or("subs(x, name, value) replaces a symbol: subs(x, t, 0.5), subs(x, t1, t2 - t3)")?;
-    let value = match by.data.as_slice() {
-        [e] => e.clone(),
-        _ => return Err("subs(x, name, value) puts a scalar in place of the symbol".into()),
-    };
-    let by = |s: &crate::sym::Symbol| (*s == sym).then(|| value.clone());
-    Ok(make(&v.kind(), x.map(|e| e.subst(&by).cancel())))
-}
-
 /// exp of a symbolic so(3) or se(3) matrix (or of a 3- or 6-vector of
 /// exponential coordinates, as MatrixExp3/6 take), or of a scalar.
 fn exp(m: &Mat, kind: &Kind) -> Out {
@@ -439,166 +423,4 @@ fn exp(m: &Mat, kind: &Kind) -> Out {
         }
         _ => None,
     }
-}
-
-/// `diff(x, t)`: entrywise by the chain rule. By a plain symbol (the time
-/// variable, or a name not bound) the total derivative, every θ(t) giving
-/// θ̇; by a function of time q or its rate q̇, the partial derivative
-/// ([`Wrt::by`]).
-fn diff(v: &Value, x: &Mat, by: &Mat, kind: &Kind) -> Result<Value, String> {
-    let sym = match by.data.as_slice() {
-        [e] => as_symbol(e),
-        _ => None,
-    }
-    .ok_or("diff(x, t) differentiates by a symbol: diff(R, t), diff(x, theta)")?;
-    let wrt = Wrt::by(sym);
-    let kind = match kind {
-        Kind::Unknown => v.kind(),
-        k => *k,
-    };
-    // Σ_v R_v·dv in each entry, refused before it is formed when too large
-    let mut known = crate::sym::diff::Known::limited(crate::values::limits::MAX_WORK);
-    let parts: Vec<Vec<(Expr, Expr)>> = x
-        .data
-        .iter()
-        .map(|e| e.diff_parts(&wrt, &mut known))
-        .collect();
-    if let Some(work) = known.over() {
-        return Err(format!(
-            "symbolic expression too large: the derivative's chain rule would take at least {work} \
-             term products (more than {})",
-            crate::values::limits::MAX_WORK
-        ));
-    }
-    let pairs: Vec<Vec<(&Expr, &Expr)>> = parts
-        .iter()
-        .map(|p| p.iter().map(|(r, d)| (r, d)).collect())
-        .collect();
-    formula::fits_sums(&pairs, "derivative")?;
-    // canonical as a quotient is (common factors cancelled): d tan t is
-    // 1 + tan² t, not tan² t + cos t/cos t
-    let data = pairs
-        .iter()
-        .map(|p| crate::sym::dense::sum_of_products(p).cancel())
-        .collect();
-    Ok(make(
-        &kind,
-        Mat {
-            rows: x.rows,
-            cols: x.cols,
-            data,
-        },
-    ))
-}
-
-/// `diff`: the kind of a derivative (a rotation's is a plain matrix).
-fn diff_rule(args: &[Ty]) -> Result<Ty, ArgError> {
-    if args[1].kind != Kind::Scalar && args[1].kind != Kind::Unknown {
-        return Err(ArgError::type_of(
-            1,
-            "diff(x, t) differentiates by a scalar symbol",
-        ));
-    }
-    let t = &args[0];
-    Ok(match &t.kind {
-        Kind::Scalar => Ty::scalar(),
-        k if k.is_vector() => Ty::new(*k, t.frames),
-        k => match k.shape() {
-            Some((r, c)) => Ty::new(Kind::Matrix(r, c), t.frames),
-            None => {
-                return Err(ArgError::type_of(
-                    0,
-                    format!("cannot differentiate {}", k.a()),
-                ));
-            }
-        },
-    })
-}
-
-fn same_rule(args: &[Ty]) -> Result<Ty, ArgError> {
-    Ok(args[0])
-}
-
-/// `subs`: a scalar symbol replaced by a scalar; the result has x's type.
-fn subs_rule(args: &[Ty]) -> Result<Ty, ArgError> {
-    for (i, what) in [(1, "the name of a scalar symbol"), (2, "a scalar value")] {
-        if args[i].kind != Kind::Scalar && args[i].kind != Kind::Unknown {
-            return Err(ArgError::type_of(
-                i,
-                format!("subs(x, name, value) takes {what} here"),
-            ));
-        }
-    }
-    Ok(args[0])
-}
-
-/// The numeric meaning of `diff`: a number is constant, its derivative 0.
-fn eval_diff(a: &mut Args) -> Result<Value, Diagnostic> {
-    let m = a.mat(0)?;
-    Ok(Value::Num {
-        kind: a.value(0).kind(),
-        m: crate::values::num::Num::zeros(m.nrows(), m.ncols()),
-        exact: Default::default(),
-    })
-}
-
-pub(super) fn builtins() -> Vec<Builtin> {
-    vec![
-        Builtin {
-            name: "diff",
-            aliases: &[],
-            signature: "diff(x: scalar | vector | matrix, t: symbol) -> the same shape",
-            section: "§3.2.2",
-            doc: "the derivative by the chain rule, entrywise; diff(R, t) * R^T is [ω_s]",
-            example: "given theta(t) : scalar; diff(Rotz(theta), t) Rotz(theta)^T",
-            area: Area::Scalars,
-            typing: Typing::Custom {
-                arity: (2, 2),
-                rule: diff_rule,
-            },
-            eval: eval_diff,
-        },
-        Builtin {
-            name: "simplify",
-            aliases: &[],
-            signature: "simplify(x) -> x in canonical form",
-            section: "§7 (LANGUAGE.md)",
-            doc: "the canonical form: like terms collected, sin² + cos² = 1, angle sums folded",
-            example: "given a, b : scalar; simplify(cos(a) cos(b) - sin(a) sin(b))",
-            area: Area::Scalars,
-            typing: Typing::Custom {
-                arity: (1, 1),
-                rule: same_rule,
-            },
-            eval: |a| Ok(a.value(0).clone()),
-        },
-        Builtin {
-            name: "expand",
-            aliases: &[],
-            signature: "expand(x) -> x multiplied out",
-            section: "§7 (LANGUAGE.md)",
-            doc: "products and powers multiplied out (the canonical form always is; angle sums stay folded)",
-            example: "given a, b : scalar; expand((a + b)^2)",
-            area: Area::Scalars,
-            typing: Typing::Custom {
-                arity: (1, 1),
-                rule: same_rule,
-            },
-            eval: |a| Ok(a.value(0).clone()),
-        },
-        Builtin {
-            name: "subs",
-            aliases: &[],
-            signature: "subs(x, name: symbol, value: scalar) -> x with value for name",
-            section: "§7 (LANGUAGE.md)",
-            doc: "substitution: the symbol replaced by a number or an expression, simplified",
-            example: "given t1, t2 : scalar; subs(cos(t1 + t2), t2, -t1)",
-            area: Area::Scalars,
-            typing: Typing::Custom {
-                arity: (3, 3),
-                rule: subs_rule,
-            },
-            eval: |a| Ok(a.value(0).clone()),
-        },
-    ]
 }

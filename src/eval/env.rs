@@ -218,6 +218,11 @@ pub struct Env {
     /// The names read as their `given` symbols, not their numbers, while
     /// `diff` or `subs` evaluates its operands ([`Env::hold`]).
     holding: Vec<Key>,
+    /// The `given` names whose numbers the current statement has read, each
+    /// with the name it read it through (`super::hold`); what it binds has
+    /// them as [`Binding::absorbed`]. Kept here, as `arg_tys` is, so that
+    /// its storage outlives one statement's interpreter.
+    pub(super) numbers_read: Vec<(Name, Name)>,
 }
 
 /// The numbers a value holds, as the memory budget counts them
@@ -249,7 +254,15 @@ impl Env {
     #[inline]
     pub fn get(&self, name: impl AsKey) -> Option<&Binding> {
         let key = name.key();
-        if !self.holding.is_empty() && self.holding.contains(&key) {
+        if self.holding.is_empty() {
+            return self.vars.get(&key);
+        }
+        self.get_held(key)
+    }
+    /// [`Env::get`] while [`Env::hold`] is in force.
+    #[cold]
+    fn get_held(&self, key: Key) -> Option<&Binding> {
+        if self.holding.contains(&key) {
             // (a rate `q'` has no binding of its own: it is read as q's)
             return self.givens.get(&key);
         }
@@ -272,7 +285,9 @@ impl Env {
             self.givens.insert(key, b.clone());
         }
         // (a name bound anew, a function's parameter, is no longer held)
-        self.holding.retain(|k| *k != key);
+        if !self.holding.is_empty() {
+            self.holding.retain(|k| *k != key);
+        }
         if let Some(old) = self.vars.insert(key, b) {
             self.held = self.held.saturating_sub(binding_numbers(&old));
         }
@@ -312,7 +327,7 @@ impl Env {
     }
     /// [`Env::set_value`] of a value computed from the numbers of the
     /// `given` names `absorbed` ([`Binding::absorbed`]).
-    #[inline]
+    #[inline(always)]
     pub fn set_made(&mut self, name: impl AsKey, ty: &Ty, val: Option<&Value>, absorbed: &[Name]) {
         let key = name.key();
         self.stamp += 1;
@@ -329,8 +344,10 @@ impl Env {
                 old.symbolic = false;
                 old.derived = derived(val);
                 old.stamp = self.stamp;
-                old.absorbed.clear();
-                old.absorbed.extend_from_slice(absorbed);
+                if !(old.absorbed.is_empty() && absorbed.is_empty()) {
+                    old.absorbed.clear();
+                    old.absorbed.extend_from_slice(absorbed);
+                }
             }
             None => {
                 self.held += val.map_or(0, numbers);

@@ -217,9 +217,6 @@ impl Interp<'_> {
 
     fn var(&mut self, name: Name, span: Span) -> Result<Typed, Diagnostic> {
         if let Some(b) = self.env.get(name) {
-            if self.env.has_givens() && !b.symbolic {
-                super::hold::absorbed(self.env, name, b, &mut self.numbers_read);
-            }
             let mut warnings = Vec::new();
             let v = if self.running() {
                 super::substitute::current(b, self.env, &mut warnings).map_err(|e| {
@@ -249,6 +246,10 @@ impl Interp<'_> {
                         self.warnings.push(w);
                     }
                 }
+            }
+            if self.env.has_givens() {
+                // (the numbers of given symbols it holds, super::hold)
+                super::hold::note_read(self.env, name);
             }
             return Ok(Typed::new(ty, v));
         }
@@ -428,6 +429,7 @@ impl Interp<'_> {
 
     /// A call of builtin `b`, its arguments' types pushed on
     /// [`Interp::arg_tys`] above `base`.
+    #[inline(always)]
     pub(super) fn builtin_call(
         &mut self,
         b: &'static builtins::Builtin,

@@ -28,8 +28,22 @@ use crate::syntax::ast::{Expr, ExprKind, Name, Span};
 
 /// Whether a call of `name` with `args` reads its operands as symbols:
 /// `diff(x, s)` and `subs(x, s, v)` with s a name.
+#[inline]
 pub(super) fn reads_symbols(name: &str, args: &[Expr]) -> bool {
-    matches!(name, "diff" | "subs") && args.len() >= 2 && matches!(args[1].kind, ExprKind::Var(_))
+    args.len() >= 2 && matches!(args[1].kind, ExprKind::Var(_)) && matches!(name, "diff" | "subs")
+}
+
+/// Notes in [`Env`]'s numbers read by the statement those reading `name`
+/// gives ([`absorbed`]).
+#[cold]
+pub(super) fn note_read(env: &mut Env, name: Name) {
+    let mut found = Vec::new();
+    if let Some(b) = env.get(name)
+        && !b.symbolic
+    {
+        absorbed(env, name, b, &mut found);
+    }
+    env.numbers_read.extend(found);
 }
 
 /// Adds to `out` the `given` names whose numbers reading `name` (bound to
@@ -128,9 +142,11 @@ fn moves_with(env: &Env, absorbed: Name, by: Name) -> bool {
 
 impl Interp<'_> {
     /// A call of `diff(x, s)` or `subs(x, s, v)`, s a name: with the given
-    /// names held where some have numbers ([`Interp::held_call`]); refused
+    /// names held where some have numbers ([`Env::hold`]); refused
     /// when s is a name bound to a number that was never a symbol (`u = 2;
     /// diff(u^2, u)` would differentiate the number 4).
+    #[cold]
+    #[inline(never)]
     pub(super) fn symbol_call(
         &mut self,
         b: &'static Builtin,
@@ -158,27 +174,30 @@ impl Interp<'_> {
                  or use another name for the symbol"
             )));
         }
-        if held {
-            self.held_call(b, name, args, span, base)
-        } else {
-            self.builtin_call(b, name, args, span, base)
+        let outer = std::mem::take(&mut self.env.numbers_read);
+        // (the one call of builtin_call here: it is inlined where it is
+        // called, and the numeric path's call site is the other)
+        let out = self.builtin_call(b, name, args, span, base);
+        let inner = std::mem::replace(&mut self.env.numbers_read, outer);
+        if !held {
+            self.env.numbers_read.extend(inner);
+            return out;
         }
+        self.held(name, args, span, out, inner)
     }
 
-    /// A call of `diff` or `subs` with the given names held ([`Env::hold`],
-    /// already in force): its value over the symbols, then read with their
-    /// numbers; refused when an operand holds numbers in place of them.
-    pub(super) fn held_call(
+    /// The end of a call of `diff` or `subs` made with the given names held
+    /// ([`Env::hold`]): its value `out` over the symbols read with their
+    /// numbers; refused when an operand holds numbers in place of them
+    /// (`inner`, the numbers its operands read).
+    fn held(
         &mut self,
-        b: &'static Builtin,
         name: &str,
         args: &[Expr],
         span: Span,
-        base: usize,
+        out: Result<Typed, Diagnostic>,
+        inner: Vec<(Name, Name)>,
     ) -> Result<Typed, Diagnostic> {
-        let outer = std::mem::take(&mut self.numbers_read);
-        let out = self.builtin_call(b, name, args, span, base);
-        let inner = std::mem::replace(&mut self.numbers_read, outer);
         let ExprKind::Var(by) = args[1].kind else {
             unreachable!("reads_symbols: the second argument is a name")
         };
@@ -187,10 +206,10 @@ impl Interp<'_> {
         let held = self.env.held_names();
         self.env.release();
         for s in held {
-            self.numbers_read.push((s, by));
+            self.env.numbers_read.push((s, by));
         }
         let moving = inner.iter().find(|(s, _)| moves_with(self.env, *s, by));
-        self.numbers_read.extend(inner.iter().copied());
+        self.env.numbers_read.extend(inner.iter().copied());
         if let Some((s, read)) = moving {
             return Err(Diagnostic::error(
                 ErrorKind::Domain,

@@ -53,10 +53,6 @@ pub struct Interp<'a> {
     pub(super) nest: u32,
     /// The size an unbound `I` takes here (from the operand beside it).
     pub(super) eye: Option<usize>,
-    /// The `given` names whose numbers the current statement has read, each
-    /// with the name it read it through ([`super::hold`]); what it binds
-    /// has them as [`super::env::Binding::absorbed`].
-    pub(super) numbers_read: Vec<(Name, Name)>,
 }
 
 /// The runtime kind refines the static one (a literal that is a rotation
@@ -99,7 +95,6 @@ impl<'a> Interp<'a> {
             depth: 0,
             nest: 0,
             eye: None,
-            numbers_read: Vec::new(),
         }
     }
 
@@ -148,8 +143,13 @@ impl<'a> Interp<'a> {
 
     /// Binds a checked value to `name` (statements call this only after
     /// they have succeeded).
+    #[inline]
     fn bind_value(&mut self, name: Name, t: &Typed) {
-        let mut absorbed: Vec<Name> = self.numbers_read.iter().map(|(s, _)| *s).collect();
+        if self.env.numbers_read.is_empty() {
+            self.env.set_made(name, &t.ty, t.val.as_deref(), &[]);
+            return;
+        }
+        let mut absorbed: Vec<Name> = self.env.numbers_read.iter().map(|(s, _)| *s).collect();
         absorbed.sort_unstable_by_key(|n| n.as_str());
         absorbed.dedup();
         self.env.set_made(name, &t.ty, t.val.as_deref(), &absorbed);
@@ -158,7 +158,7 @@ impl<'a> Interp<'a> {
     /// Runs one statement. On error nothing is bound.
     pub fn stmt(&mut self, s: &Stmt) -> Result<Outcome, Diagnostic> {
         self.warnings.clear();
-        self.numbers_read.clear();
+        self.env.numbers_read.clear();
         let out = |names: Names, t: Typed| Outcome {
             span: s.span,
             names,

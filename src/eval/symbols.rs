@@ -35,6 +35,7 @@ impl Interp<'_> {
 
     /// `diff(x, t)` with `t` a name with no value (and no rate `q'` of a
     /// function of time): the time variable.
+    #[inline]
     pub(super) fn time_variable(&self, func: &str, i: usize, arg: &Ast) -> Option<Typed> {
         match (i, func, &arg.kind) {
             (1, "diff", ExprKind::Var(t))

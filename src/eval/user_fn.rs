@@ -69,7 +69,7 @@ impl Interp<'_> {
             .collect();
         // (an argument read from numbers of given symbols makes the
         // parameter hold them, super::hold)
-        let absorbed: Vec<Name> = self.numbers_read.iter().map(|(s, _)| *s).collect();
+        let absorbed: Vec<Name> = self.env.numbers_read.iter().map(|(s, _)| *s).collect();
         for (p, t) in bound {
             self.env.set(
                 &p,

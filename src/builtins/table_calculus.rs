@@ -1,0 +1,191 @@
+//! The builtins of symbols themselves (LANGUAGE.md §7): `diff(x, t)` by
+//! the chain rule (§3.2.2's Ṙ Rᵀ = [ω_s]; partial derivatives by q and q̇),
+//! `simplify(x)`, `expand(x)` and `subs(x, name, value)`. Their symbolic
+//! values are computed here; [`super::table_sym::eval_symbolic`] calls them.
+
+use super::{Area, ArgError, Args, Builtin, Typing};
+use crate::check::ty::{Kind, Ty};
+use crate::diagnostics::Diagnostic;
+use crate::sym::Expr;
+use crate::sym::expr::{Wrt, as_symbol};
+use crate::sym::matrix::Mat;
+use crate::values::formula::{self, make};
+use crate::values::value::Value;
+
+/// `subs(x, name, value)`: x with the symbol `name` replaced by `value` (a
+/// number or an expression), re-canonicalized.
+pub(super) fn subs(v: &Value, x: &Mat, name: &Mat, by: &Mat) -> Result<Value, String> {
+    let sym = match name.data.as_slice() {
+        [e] => as_symbol(e),
+        _ => None,
+    }
+    .ok_or("subs(x, name, value) replaces a symbol: subs(x, t, 0.5), subs(x, t1, t2 - t3)")?;
+    let value = match by.data.as_slice() {
+        [e] => e.clone(),
+        _ => return Err("subs(x, name, value) puts a scalar in place of the symbol".into()),
+    };
+    let by = |s: &crate::sym::Symbol| (*s == sym).then(|| value.clone());
+    Ok(make(&v.kind(), x.map(|e| e.subst(&by).cancel())))
+}
+
+/// `diff(x, t)`: entrywise by the chain rule. By a plain symbol (the time
+/// variable, or a name not bound) the total derivative, every θ(t) giving
+/// θ̇; by a function of time q or its rate q̇, the partial derivative
+/// ([`Wrt::by`]).
+pub(super) fn diff(v: &Value, x: &Mat, by: &Mat, kind: &Kind) -> Result<Value, String> {
+    let sym = match by.data.as_slice() {
+        [e] => as_symbol(e),
+        _ => None,
+    }
+    .ok_or("diff(x, t) differentiates by a symbol: diff(R, t), diff(x, theta)")?;
+    let wrt = Wrt::by(sym);
+    let kind = match kind {
+        Kind::Unknown => v.kind(),
+        k => *k,
+    };
+    // Σ_v R_v·dv in each entry, refused before it is formed when too large
+    let mut known = crate::sym::diff::Known::limited(crate::values::limits::MAX_WORK);
+    let parts: Vec<Vec<(Expr, Expr)>> = x
+        .data
+        .iter()
+        .map(|e| e.diff_parts(&wrt, &mut known))
+        .collect();
+    if let Some(work) = known.over() {
+        return Err(format!(
+            "symbolic expression too large: the derivative's chain rule would take at least {work} \
+             term products (more than {})",
+            crate::values::limits::MAX_WORK
+        ));
+    }
+    let pairs: Vec<Vec<(&Expr, &Expr)>> = parts
+        .iter()
+        .map(|p| p.iter().map(|(r, d)| (r, d)).collect())
+        .collect();
+    formula::fits_sums(&pairs, "derivative")?;
+    // canonical as a quotient is (common factors cancelled): d tan t is
+    // 1 + tan² t, not tan² t + cos t/cos t
+    let data = pairs
+        .iter()
+        .map(|p| crate::sym::dense::sum_of_products(p).cancel())
+        .collect();
+    Ok(make(
+        &kind,
+        Mat {
+            rows: x.rows,
+            cols: x.cols,
+            data,
+        },
+    ))
+}
+
+/// `diff`: the kind of a derivative (a rotation's is a plain matrix).
+fn diff_rule(args: &[Ty]) -> Result<Ty, ArgError> {
+    if args[1].kind != Kind::Scalar && args[1].kind != Kind::Unknown {
+        return Err(ArgError::type_of(
+            1,
+            "diff(x, t) differentiates by a scalar symbol",
+        ));
+    }
+    let t = &args[0];
+    Ok(match &t.kind {
+        Kind::Scalar => Ty::scalar(),
+        k if k.is_vector() => Ty::new(*k, t.frames),
+        k => match k.shape() {
+            Some((r, c)) => Ty::new(Kind::Matrix(r, c), t.frames),
+            None => {
+                return Err(ArgError::type_of(
+                    0,
+                    format!("cannot differentiate {}", k.a()),
+                ));
+            }
+        },
+    })
+}
+
+fn same_rule(args: &[Ty]) -> Result<Ty, ArgError> {
+    Ok(args[0])
+}
+
+/// `subs`: a scalar symbol replaced by a scalar; the result has x's type.
+fn subs_rule(args: &[Ty]) -> Result<Ty, ArgError> {
+    for (i, what) in [(1, "the name of a scalar symbol"), (2, "a scalar value")] {
+        if args[i].kind != Kind::Scalar && args[i].kind != Kind::Unknown {
+            return Err(ArgError::type_of(
+                i,
+                format!("subs(x, name, value) takes {what} here"),
+            ));
+        }
+    }
+    Ok(args[0])
+}
+
+/// The numeric meaning of `diff`: a number is constant, its derivative 0.
+fn eval_diff(a: &mut Args) -> Result<Value, Diagnostic> {
+    let m = a.mat(0)?;
+    Ok(Value::Num {
+        kind: a.value(0).kind(),
+        m: crate::values::num::Num::zeros(m.nrows(), m.ncols()),
+        exact: Default::default(),
+    })
+}
+
+pub(super) fn builtins() -> Vec<Builtin> {
+    vec![
+        Builtin {
+            name: "diff",
+            aliases: &[],
+            signature: "diff(x: scalar | vector | matrix, t: symbol) -> the same shape",
+            section: "§3.2.2",
+            doc: "the derivative by the chain rule, entrywise; diff(R, t) * R^T is [ω_s]",
+            example: "given theta(t) : scalar; diff(Rotz(theta), t) Rotz(theta)^T",
+            area: Area::Scalars,
+            typing: Typing::Custom {
+                arity: (2, 2),
+                rule: diff_rule,
+            },
+            eval: eval_diff,
+        },
+        Builtin {
+            name: "simplify",
+            aliases: &[],
+            signature: "simplify(x) -> x in canonical form",
+            section: "§7 (LANGUAGE.md)",
+            doc: "the canonical form: like terms collected, sin² + cos² = 1, angle sums folded",
+            example: "given a, b : scalar; simplify(cos(a) cos(b) - sin(a) sin(b))",
+            area: Area::Scalars,
+            typing: Typing::Custom {
+                arity: (1, 1),
+                rule: same_rule,
+            },
+            eval: |a| Ok(a.value(0).clone()),
+        },
+        Builtin {
+            name: "expand",
+            aliases: &[],
+            signature: "expand(x) -> x multiplied out",
+            section: "§7 (LANGUAGE.md)",
+            doc: "products and powers multiplied out (the canonical form always is; angle sums stay folded)",
+            example: "given a, b : scalar; expand((a + b)^2)",
+            area: Area::Scalars,
+            typing: Typing::Custom {
+                arity: (1, 1),
+                rule: same_rule,
+            },
+            eval: |a| Ok(a.value(0).clone()),
+        },
+        Builtin {
+            name: "subs",
+            aliases: &[],
+            signature: "subs(x, name: symbol, value: scalar) -> x with value for name",
+            section: "§7 (LANGUAGE.md)",
+            doc: "substitution: the symbol replaced by a number or an expression, simplified",
+            example: "given t1, t2 : scalar; subs(cos(t1 + t2), t2, -t1)",
+            area: Area::Scalars,
+            typing: Typing::Custom {
+                arity: (3, 3),
+                rule: subs_rule,
+            },
+            eval: |a| Ok(a.value(0).clone()),
+        },
+    ]
+}
