@@ -796,3 +796,19 @@ fn diff_through_a_value_that_took_the_number_is_refused() {
     assert!(e.contains("u is a number (2), not a symbol"), "{e}");
     assert!(e.contains("given u"), "{e}");
 }
+
+/// A given transform is no function of time (only a scalar can be, §7):
+/// its derivative, and that of a product of given transforms, is 0, bound
+/// first or later (it was the kept call `diff(T, t)`, refused once T had
+/// numbers).
+#[test]
+fn the_derivative_of_given_transforms_is_zero() {
+    for src in [
+        "given T : SE3\ndiff(T, t)",
+        "given T_ab, T_bc : SE3\nx = diff(T_ab T_bc, t)\nT_ab = eye(4)\nx",
+        "given T : SE3\nT = RpToTrans(Rotz(0.3), (1, 2, 3))\ndiff(T, t)",
+        "given T : SE3\nx = diff(T, t)\nT = RpToTrans(Rotz(0.3), (1, 2, 3))\nx",
+    ] {
+        assert_eq!(numbers_of(src), vec![0.0; 16], "{src}");
+    }
+}

@@ -358,6 +358,20 @@ impl<'a> Op<'a> {
                 .map_err(OpError::Message),
             );
         }
+        // d/dt of an expression over given matrices (no scalar symbol in
+        // it: only a scalar can be a function of time, §7) is 0
+        if let (Op::Call(b, _), [Value::Sym(t), _]) = (self, args)
+            && b.name == "diff"
+            && !t.any(&mut |n| matches!(n, Sym::Const(v, _) if recipe::holds_symbols(v)))
+            && let Some((Some(r), Some(c))) = kind.shape()
+        {
+            let zeros = crate::values::num::Num::zeros(r, c);
+            return Some(Ok(Value::Num {
+                kind: *kind,
+                m: zeros,
+                exact: crate::values::exact::Exact::Typed,
+            }));
+        }
         let formulas = self.formula_is_symbolic();
         args.iter()
             .any(|v| v.is_symbolic() || (formulas && matches!(v, Value::Formula { .. })))

@@ -82,41 +82,20 @@ fn bound_symbols(env: &Env, v: &Value, add: &mut impl FnMut(Name)) {
                 }
             }
         }
-        Value::Sym(t) => tree_names(t, &mut |n| {
-            let n = Name::new(n);
-            if env.is_given(n) && env.get(n).is_some_and(|b| !b.symbolic) {
-                add(n);
-            }
-        }),
+        Value::Sym(t) => {
+            t.any(&mut |node| {
+                if let Sym::Name(n) = node {
+                    let n = Name::new(n);
+                    if env.is_given(n) && env.get(n).is_some_and(|b| !b.symbolic) {
+                        add(n);
+                    }
+                }
+                false
+            });
+        }
         Value::Tuple(vs) => vs.iter().for_each(|x| bound_symbols(env, x, add)),
         Value::List(vs) => vs.iter().for_each(|x| bound_symbols(env, x, add)),
         _ => {}
-    }
-}
-
-/// Calls `f` with every name of a tree over given symbols.
-fn tree_names(t: &Sym, f: &mut impl FnMut(&str)) {
-    match t {
-        Sym::Name(n) => f(n),
-        Sym::Const(..) | Sym::Identity => {}
-        Sym::Product(xs) | Sym::Vector(xs) | Sym::Call(_, xs) => {
-            xs.iter().for_each(|x| tree_names(x, f))
-        }
-        Sym::Block(rows) => rows.iter().flatten().for_each(|x| tree_names(x, f)),
-        Sym::Inv(x)
-        | Sym::Neg(x)
-        | Sym::Bracket(x)
-        | Sym::Transpose(x)
-        | Sym::Member(x, _)
-        | Sym::Index(x, _) => tree_names(x, f),
-        Sym::Add(a, b)
-        | Sym::Sub(a, b)
-        | Sym::Div(a, b)
-        | Sym::Pow(a, b)
-        | Sym::Compare(_, a, b) => {
-            tree_names(a, f);
-            tree_names(b, f);
-        }
     }
 }
 

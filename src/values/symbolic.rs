@@ -175,6 +175,38 @@ impl<C: Clone + PartialEq> Tree<C> {
         false
     }
 
+    /// The operands of this node (none for a leaf).
+    pub fn children(&self) -> Vec<&Tree<C>> {
+        match self {
+            Tree::Name(_) | Tree::Const(..) | Tree::Identity => Vec::new(),
+            Tree::Product(v) | Tree::Call(_, v) | Tree::Vector(v) => v.iter().collect(),
+            Tree::Block(rows) => rows.iter().flatten().collect(),
+            Tree::Inv(a)
+            | Tree::Neg(a)
+            | Tree::Bracket(a)
+            | Tree::Transpose(a)
+            | Tree::Member(a, _)
+            | Tree::Index(a, _) => vec![a],
+            Tree::Add(a, b)
+            | Tree::Sub(a, b)
+            | Tree::Div(a, b)
+            | Tree::Pow(a, b)
+            | Tree::Compare(_, a, b) => vec![a, b],
+        }
+    }
+
+    /// Whether `f` holds for some node of the tree (this one or below).
+    pub fn any(&self, f: &mut impl FnMut(&Tree<C>) -> bool) -> bool {
+        let mut todo = vec![self];
+        while let Some(t) = todo.pop() {
+            if f(t) {
+                return true;
+            }
+            todo.extend(t.children());
+        }
+        false
+    }
+
     /// The inverse, pushed through products: inv(A B) = inv(B) inv(A).
     pub fn inverse(self) -> Tree<C> {
         match self {
