@@ -724,22 +724,51 @@ fn rates_of_the_inverse_maps_agree_with_differences_of_numbers() {
 /// (1 − cos u > 0 and u in (−π, π)); its derivative bound later at u = 4
 /// printed the branch's formula there (entry 4: −1.4383, where the log is
 /// the angle 4 − 2π and its derivative 0.4615). The derivative of a
-/// closed form is now replayed on its branch (checked against a central
-/// difference of the numeric log, first and second derivatives) and
-/// refused off it, naming the branch; `subs` carries the branch along. A
-/// constant derivative waits for the branch's symbols too.
+/// closed form is replayed on its branch (checked against a central
+/// difference of the numeric log, first and second derivatives); off it
+/// (session 15) the derivative is the rate of the exponential coordinates,
+/// V̇ = J(V)⁻¹ V_s (`lie::dlog`), right on every branch: at u = 4 it is
+/// 0.4615, as the differences of the numeric log give it; `subs` carries
+/// the branch along. A second derivative off the branch is refused, naming
+/// the branch (the rate's own derivative is not written).
 #[test]
-fn diff_of_a_log_bound_off_its_branch_is_refused() {
+fn diff_of_a_log_bound_off_its_branch_is_its_rate() {
     let setup = "given u, w\nT = RpToTrans(Rotz(u), (1, 0, 0))\nx = diff(MatrixLog6(T), u)";
-    let e = common::error(&format!("{setup}\nu = 4\nx"));
+    let f = |s: f64| last_numbers(&format!("MatrixLog6(RpToTrans(Rotz({s:e}), (1, 0, 0)))"));
+    let fd = |at: f64, scale: f64| -> Vec<f64> {
+        let h = 1e-6;
+        let (p, m) = (f(at + h), f(at - h));
+        (0..6).map(|i| scale * (p[i] - m[i]) / (2.0 * h)).collect()
+    };
+    for at in [4.0, -4.0, 3.5, 6.0, 2.0 * std::f64::consts::PI - 0.1] {
+        close(&format!("{setup}\nu = {at:e}\nx"), &fd(at, 1.0), 1e-7);
+    }
+    let v = last_numbers(&format!("{setup}\nu = 4\nx"));
+    assert!((v[3] - 0.4615).abs() < 1e-4, "{v:?}");
+    // log(T), the se(3) matrix: the same rate, bracketed
+    let m = last_numbers(&format!("{setup}\ny = diff(log(T), u)\nu = 4\ny"));
+    assert!(
+        (m[3] - v[3]).abs() < 1e-15 && (m[1] + v[2]).abs() < 1e-15,
+        "{m:?}"
+    );
+    // through subs: d/dw of the log at u = 2w, w = 3 (u = 6, off the branch)
+    close(
+        &format!("{setup}\ns = subs(MatrixLog6(T), u, 2*w)\nd = diff(s, w)\nw = 3\nd"),
+        &fd(6.0, 2.0),
+        1e-7,
+    );
+    // at a half turn the log jumps: no rate
+    let e = common::error(&format!("{setup}\nu = pi\nx"));
+    assert!(
+        e.contains("too near its bounds") || e.contains("half turn"),
+        "{e}"
+    );
+    // a second derivative off the branch is refused, naming it
+    let e = common::error(&format!("{setup}\ny = diff(x, u)\nu = 4\ny"));
     assert!(
         e.contains("the closed form on the branch 1 - cos(u) > 0 and u in (−π, π), and the numbers are off it"),
         "{e}"
     );
-    let e = common::error(&format!(
-        "{setup}\ns = subs(MatrixLog6(T), u, 2*w)\nd = diff(s, w)\nw = 3\nd"
-    ));
-    assert!(e.contains("are off it"), "{e}");
     // the log of a rotation about a fixed axis is ω̂(θ − 2πk) off the
     // branch: the same derivative, answered (as a central difference of
     // the numeric log gives it)

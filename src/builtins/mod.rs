@@ -25,6 +25,7 @@ mod table_units;
 use std::sync::OnceLock;
 
 pub use args::{ArgError, Args};
+pub use table_calculus::constant_derivative;
 pub use table_sym::{branch_note, branch_of, eval_symbolic};
 
 use crate::check::ty::{Frames, Kind, Ty};

@@ -28,6 +28,27 @@ pub(super) fn subs(v: &Value, x: &Mat, name: &Mat, by: &Mat) -> Result<Value, St
     Ok(make(&v.kind(), x.map(|e| e.subst(&by).cancel())))
 }
 
+/// `diff(x, t)` of an expression over given matrices (no scalar symbol in
+/// it, so no function of time: only a scalar can be one, §7): 0, of the
+/// result's shape `kind`. None for any other call.
+pub fn constant_derivative(name: &str, args: &[&Value], kind: &Kind) -> Option<Value> {
+    let [Value::Sym(t), _] = args else {
+        return None;
+    };
+    let symbols = |n: &crate::values::symbolic::Tree<Value>| matches!(n, crate::values::symbolic::Tree::Const(v, _) if crate::values::recipe::holds_symbols(v));
+    if name != "diff" || t.any(&mut { symbols }) {
+        return None;
+    }
+    let (Some(r), Some(c)) = kind.shape()? else {
+        return None;
+    };
+    Some(Value::Num {
+        kind: *kind,
+        m: crate::values::num::Num::zeros(r, c),
+        exact: crate::values::exact::Exact::Typed,
+    })
+}
+
 /// `diff(x, t)`: entrywise by the chain rule. By a plain symbol (the time
 /// variable, or a name not bound) the total derivative, every θ(t) giving
 /// θ̇; by a function of time q or its rate q̇, the partial derivative

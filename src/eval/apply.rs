@@ -12,11 +12,10 @@
 //! function and one symbolic form.
 //!
 //! The frame-mode policy (strict, warn, off: what a frame mismatch becomes)
-//! is here too, in [`frame_refusal`] and [`frame_warning`].
+//! is [`super::env::FrameMode::refusal`] and [`super::env::FrameMode::warning`].
 
 use std::f64::consts::PI;
 
-use super::env::FrameMode;
 use super::formula;
 use super::ops::{self, OpError, Sel};
 use super::shapes::{block_type, bracket_type, index_type};
@@ -25,7 +24,7 @@ use super::value::{Sym, Value};
 use crate::builtins::{Args, Builtin, Role};
 use crate::check::rules::{self, Operands, RuleError};
 use crate::check::ty::{Kind, Ty};
-use crate::diagnostics::{Diagnostic, ErrorKind, Severity};
+use crate::diagnostics::{Diagnostic, ErrorKind};
 use crate::syntax::ast::{BinOp, Span};
 use crate::values::recipe::{self, Made, Step};
 
@@ -358,19 +357,10 @@ impl<'a> Op<'a> {
                 .map_err(OpError::Message),
             );
         }
-        // d/dt of an expression over given matrices (no scalar symbol in
-        // it: only a scalar can be a function of time, §7) is 0
-        if let (Op::Call(b, _), [Value::Sym(t), _]) = (self, args)
-            && b.name == "diff"
-            && !t.any(&mut |n| matches!(n, Sym::Const(v, _) if recipe::holds_symbols(v)))
-            && let Some((Some(r), Some(c))) = kind.shape()
+        if let Op::Call(b, _) = self
+            && let Some(zero) = crate::builtins::constant_derivative(b.name, args, kind)
         {
-            let zeros = crate::values::num::Num::zeros(r, c);
-            return Some(Ok(Value::Num {
-                kind: *kind,
-                m: zeros,
-                exact: crate::values::exact::Exact::Typed,
-            }));
+            return Some(Ok(zero));
         }
         let formulas = self.formula_is_symbolic();
         args.iter()
@@ -525,39 +515,9 @@ fn constant(s: &Sym) -> Option<&Value> {
     }
 }
 
-/// The frame-mode policy (`--frames strict|warn|off`) for a refused
-/// operation: a frame mismatch is an error when strict, a warning when
-/// `warn`, nothing when `off`; any other refusal is an error. Ok when
-/// evaluation goes on (with the operands' frames dropped).
-pub fn frame_refusal(
-    mode: FrameMode,
-    frame: bool,
-    mut d: Diagnostic,
-    warnings: &mut Vec<Diagnostic>,
-) -> Result<(), Diagnostic> {
-    match (frame, mode) {
-        (false, _) | (true, FrameMode::Strict) => Err(d),
-        (true, FrameMode::Warn) => {
-            d.severity = Severity::Warning;
-            warnings.push(d);
-            Ok(())
-        }
-        (true, FrameMode::Off) => Ok(()),
-    }
-}
-
-/// The frame-mode policy for a warning about frames (a name that renames
-/// a moved frame): kept unless frames are `off`.
-pub fn frame_warning(mode: FrameMode, d: Diagnostic, warnings: &mut Vec<Diagnostic>) {
-    if mode != FrameMode::Off {
-        warnings.push(d);
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::diagnostics::ErrorKind;
 
     fn num(x: f64) -> Value {
         Value::scalar(x)
@@ -595,20 +555,5 @@ mod tests {
         assert_eq!(ad.role(), Role::Adjoint);
         let s = Op::Call(ad, "Ad").symbolic(vec![Sym::Name("T_ab".into())]);
         assert_eq!(s.to_string(), "Ad(T_ab)");
-    }
-
-    #[test]
-    fn the_frame_mode_decides_what_a_frame_mismatch_becomes() {
-        let d = || Diagnostic::error(ErrorKind::Frame, Default::default(), "frames");
-        let mut w = Vec::new();
-        assert!(frame_refusal(FrameMode::Strict, true, d(), &mut w).is_err());
-        assert!(frame_refusal(FrameMode::Warn, false, d(), &mut w).is_err());
-        assert!(frame_refusal(FrameMode::Off, true, d(), &mut w).is_ok());
-        assert!(w.is_empty());
-        assert!(frame_refusal(FrameMode::Warn, true, d(), &mut w).is_ok());
-        assert_eq!(w.len(), 1);
-        assert_eq!(w[0].severity, Severity::Warning);
-        frame_warning(FrameMode::Off, d(), &mut w);
-        assert_eq!(w.len(), 1);
     }
 }

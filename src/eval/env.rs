@@ -10,6 +10,7 @@ use super::value::{UserFn, Value};
 use crate::builtins::{self, Builtin};
 use crate::check::bind::Claim;
 use crate::check::ty::Ty;
+use crate::diagnostics::{Diagnostic, Severity};
 use crate::syntax::name::Name;
 
 /// A map keyed by names, each hashed and compared by where its interned
@@ -118,6 +119,33 @@ impl FrameMode {
             FrameMode::Strict => "strict",
             FrameMode::Warn => "warn",
             FrameMode::Off => "off",
+        }
+    }
+    /// The policy for a refused operation: a frame mismatch (`frame`) is
+    /// an error when strict, a warning when `warn`, nothing when `off`; any
+    /// other refusal is an error. Ok when evaluation goes on (with the
+    /// operands' frames dropped).
+    pub fn refusal(
+        self,
+        frame: bool,
+        mut d: Diagnostic,
+        warnings: &mut Vec<Diagnostic>,
+    ) -> Result<(), Diagnostic> {
+        match (frame, self) {
+            (false, _) | (true, FrameMode::Strict) => Err(d),
+            (true, FrameMode::Warn) => {
+                d.severity = Severity::Warning;
+                warnings.push(d);
+                Ok(())
+            }
+            (true, FrameMode::Off) => Ok(()),
+        }
+    }
+    /// The policy for a warning about frames (a name that renames a moved
+    /// frame): kept unless frames are `off`.
+    pub fn warning(self, d: Diagnostic, warnings: &mut Vec<Diagnostic>) {
+        if self != FrameMode::Off {
+            warnings.push(d);
         }
     }
 }
@@ -471,5 +499,26 @@ impl Env {
         let mut v: Vec<(Name, &Binding)> = self.vars.iter().map(|(k, b)| (k.0, b)).collect();
         v.sort_by_key(|(n, _)| *n);
         v
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::diagnostics::ErrorKind;
+
+    #[test]
+    fn the_frame_mode_decides_what_a_frame_mismatch_becomes() {
+        let d = || Diagnostic::error(ErrorKind::Frame, Default::default(), "frames");
+        let mut w = Vec::new();
+        assert!(FrameMode::Strict.refusal(true, d(), &mut w).is_err());
+        assert!(FrameMode::Warn.refusal(false, d(), &mut w).is_err());
+        assert!(FrameMode::Off.refusal(true, d(), &mut w).is_ok());
+        assert!(w.is_empty());
+        assert!(FrameMode::Warn.refusal(true, d(), &mut w).is_ok());
+        assert_eq!(w.len(), 1);
+        assert_eq!(w[0].severity, Severity::Warning);
+        FrameMode::Off.warning(d(), &mut w);
+        assert_eq!(w.len(), 1);
     }
 }

@@ -128,7 +128,7 @@ impl<'a> Interp<'a> {
             d = d.with_help(h);
         }
         let frame = kind == ErrorKind::Frame;
-        super::apply::frame_refusal(self.frames, frame, d, &mut self.warnings)
+        self.frames.refusal(frame, d, &mut self.warnings)
     }
 
     /// Whether a statement that has computed `val` may take effect: the
@@ -388,7 +388,7 @@ impl<'a> Interp<'a> {
         if let Some(h) = e.help {
             d = d.with_help(h);
         }
-        super::apply::frame_warning(self.frames, d, &mut self.warnings);
+        self.frames.warning(d, &mut self.warnings);
     }
 
     /// `R_sb = M`, `T_ab = M`: the name asserts the group (LANGUAGE.md §5).

@@ -264,12 +264,17 @@ fn step(r: &Recipe, at: Lookup, memo: &mut Memo) -> Option<Value> {
         }
         // the call the closed form was made by, right on every branch
         Step::Closed(_) => return args.into_iter().next(),
-        // a derivative of a closed form, on its branch only
+        // a derivative of a closed form, on its branch only; off it, the
+        // rate where there is one
         Step::Guard(on) => {
             let f = |s: &Symbol| float(at, s);
-            return match on.holds(&f) {
-                Some(true) => args.into_iter().next(),
-                held => {
+            let held = on.holds(&f);
+            let mut args = args.into_iter();
+            let (closed, rate) = (args.next(), args.next());
+            return match (held, rate) {
+                (Some(true), _) => closed,
+                (_, Some(rate)) => Some(rate),
+                (held, None) => {
                     memo.failed.get_or_insert(format!(
                         "{}, and the numbers {}: the derivative of the closed form holds on \
                          the branch only",
@@ -280,6 +285,26 @@ fn step(r: &Recipe, at: Lookup, memo: &mut Memo) -> Option<Value> {
                             "are too near its bounds to tell"
                         },
                     ));
+                    None
+                }
+            };
+        }
+        // the rate of a transform's exponential coordinates
+        Step::LogRate => {
+            let (Some(t), Some(dt)) = (
+                refs.first().and_then(|v| mat4(v)),
+                refs.get(1).and_then(|v| mat4(v)),
+            ) else {
+                return None;
+            };
+            return match crate::lie::dlog::se3_log_rate(&t, &dt) {
+                Some(v) => Some(Value::vector(r.kind, v.as_slice())),
+                None => {
+                    memo.failed.get_or_insert(
+                        "the rate of log(T) at a half turn (θ = π): the logarithm jumps there, \
+                         so it has no derivative"
+                            .to_string(),
+                    );
                     None
                 }
             };
@@ -296,6 +321,16 @@ fn step(r: &Recipe, at: Lookup, memo: &mut Memo) -> Option<Value> {
             }
             None
         }
+    }
+}
+
+/// The 4×4 of numbers `v` is, if it is one.
+fn mat4(v: &Value) -> Option<crate::lie::Mat4> {
+    match v {
+        Value::Num { m, .. } if m.shape() == (4, 4) => {
+            Some(crate::lie::Mat4::from_column_slice(m.as_slice()))
+        }
+        _ => None,
     }
 }
 

@@ -15,10 +15,12 @@
 //! - [`repr`]: Euler angles, roll-pitch-yaw, quaternions, Cayley parameters;
 //! - [`project`]: projection onto and distance to the groups (§3.6 software);
 //! - [`matexp`]: the exponential of a general square matrix (§3.2.3.1);
+//! - [`dlog`]: the rates of the exponential coordinates (log R, log T);
 //! - [`group`]: the groups as types ([`SO3`], [`SE3`], [`SO2`], [`SE2`])
 //!   with the [`LieGroup`] operations, over the functions above.
 #![deny(missing_docs)]
 
+pub mod dlog;
 pub mod group;
 pub mod matexp;
 pub mod project;

@@ -57,10 +57,17 @@ pub enum Step {
     /// replayed as the call (right on every branch), and marking for the
     /// chain rule the closed form whose derivative holds on the branch.
     Closed(Rc<OnBranch>),
-    /// Its one operand where the numbers are on the branch of
-    /// [`OnBranch`], refused off it: the derivative of a closed form
-    /// holds on the closed form's branch only.
+    /// Its first operand where the numbers are on the branch of
+    /// [`OnBranch`]: the derivative of a closed form holds on the closed
+    /// form's branch only. Off it (or too near its bounds to tell), the
+    /// second operand where there is one (the rate, [`Step::LogRate`],
+    /// right on every branch), else refused.
     Guard(Rc<OnBranch>),
+    /// The rate of the exponential coordinates (`MatrixLog6`) of its first
+    /// operand, a transform T, moving with its second, Ṫ:
+    /// [`crate::lie::dlog::se3_log_rate`], right on every branch of the
+    /// logarithm; refused at a half turn, where the logarithm jumps.
+    LogRate,
 }
 
 /// A closed form over symbols that holds on a branch (LANGUAGE.md §7: the

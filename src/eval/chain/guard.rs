@@ -14,7 +14,7 @@ use super::build::{node_k, zero};
 use super::{Chain, D};
 use crate::check::ty::Kind;
 use crate::eval::value::Value;
-use crate::values::recipe::{OnBranch, Recipe, Step};
+use crate::values::recipe::{OnBranch, Operation, Recipe, Step};
 
 /// `v`, the value of builtin `name` over `args` made with its recipe,
 /// marked as a closed form on a branch where it is one: the log of a
@@ -66,18 +66,39 @@ impl Chain<'_> {
             return Some(d);
         }
         let d = self.leaf(&on.form, &k)?.unwrap_or_else(|| zero(&k));
-        guarded(on, d, k)
+        let rate = self.log_rate(call, k);
+        guarded(on, d, rate, k)
     }
 
-    /// The derivative of a guarded derivative: guarded alike.
+    /// The derivative of a guarded derivative: guarded alike (with no rate
+    /// off the branch: the rate's own derivative is not written).
     pub(super) fn guard(&mut self, on: &Rc<OnBranch>, x: &Rc<Recipe>, k: Kind) -> Option<D> {
         let d = self.of(x)?.unwrap_or_else(|| zero(&k));
-        guarded(on, d, k)
+        guarded(on, d, None, k)
+    }
+
+    /// The rate of `call`, the log of a transform T (`MatrixLog6(T)`, a
+    /// 6-vector, or `log(T)`, its se(3) matrix), from T's derivative
+    /// ([`Step::LogRate`]); None where T's derivative is not reached.
+    fn log_rate(&mut self, call: &Rc<Recipe>, k: Kind) -> Option<Rc<Recipe>> {
+        let t = call.args.first()?.clone();
+        let dt = self
+            .of(&t)?
+            .unwrap_or_else(|| zero(&Kind::Matrix(Some(4), Some(4))));
+        let rate = node_k(Step::LogRate, vec![t, dt], Kind::Vector(Some(6)))?;
+        match k.shape() {
+            Some((Some(6), Some(1))) => Some(rate),
+            _ => node_k(Step::Op(Operation::Call("VecTose3")), vec![rate], k),
+        }
     }
 }
 
 /// `d` where the numbers are on `on`'s branch (a zero too: off it the
-/// derivative need not be 0).
-fn guarded(on: &Rc<OnBranch>, d: Rc<Recipe>, k: Kind) -> Option<D> {
-    Some(Some(node_k(Step::Guard(on.clone()), vec![d], k)?))
+/// derivative need not be 0), else `rate` where there is one.
+fn guarded(on: &Rc<OnBranch>, d: Rc<Recipe>, rate: Option<Rc<Recipe>>, k: Kind) -> Option<D> {
+    let args = match rate {
+        Some(rate) => vec![d, rate],
+        None => vec![d],
+    };
+    Some(Some(node_k(Step::Guard(on.clone()), args, k)?))
 }

@@ -322,6 +322,23 @@ impl Chain<'_> {
                 };
                 Some(Some(rates::of(b.name, r, &u, du)?))
             }
+            // d [R, p; 0, 1] = [dR, dp; 0, 0]
+            "RpToTrans" if args.len() == 2 => {
+                let p = args[1].clone();
+                let dp = self.of(&p)?;
+                if du.is_none() && dp.is_none() {
+                    return Some(None);
+                }
+                let dr = du.unwrap_or_else(|| zero(&Kind::Matrix(Some(3), Some(3))));
+                let dp = dp.unwrap_or_else(|| zero(&Kind::Vector(Some(3))));
+                let row = matrix(1, 3, &[0.0; 3], Kind::Matrix(Some(1), Some(3)));
+                let parts = vec![dr, dp, row, number(0.0)];
+                Some(Some(node_k(
+                    Step::Op(Operation::Block(vec![2, 2])),
+                    parts,
+                    k,
+                )?))
+            }
             // d(R⁻¹) = dRᵀ for a rotation (R⁻¹ = Rᵀ): no products that
             // cancel, so an entry exactly 0 stays 0 (matrix differential
             // seed 831222 gave −5.3e-19 by the general rule below)
