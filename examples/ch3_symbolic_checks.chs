@@ -282,3 +282,22 @@ th8 = 0.3
 diff(Rotz(th8), th8)                          # [-sin 0.3, -cos 0.3, 0; cos 0.3, -sin 0.3, 0; 0, 0, 0]
 assert diff(sin(th8)^2, th8) == sin(0.6)
 assert subs(sin(th8) + th8, th8, pi/2) == 1 + pi/2
+
+# --- arcs: one normal form a + Σ c atan α, sums folded by the addition formula
+assert acos(0.3) == pi/2 - asin(0.3)
+assert atan(1/2) + atan(1/3) == pi/4
+assert 4 atan(1/5) - atan(1/239) == pi/4      # Machin
+(atan(1/2) + atan(1/3) == pi/4 + 1e-25) == false
+
+# --- the rate of a transform's log off its closed form's branch ---------------
+# On the branch (u in (−π, π)) the closed form's derivative; off it the rate of
+# the exponential coordinates V' = J(V)^-1 V_s: at u = 4 the log's angle is
+# 4 − 2π, and its derivative (0, 0, 1, 0.4615, −0.5, 0).
+given u8 : scalar
+dl8 = diff(MatrixLog6(RpToTrans(Rotz(u8), (1, 0, 0))), u8)
+u8 = 4
+dl8
+
+# --- a given transform is no function of time --------------------------------
+given T8 : SE3
+diff(T8, t)                                   # 0 (only a scalar can be a function of time)

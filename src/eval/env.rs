@@ -462,10 +462,6 @@ impl Env {
     pub fn held_names(&self) -> Vec<Name> {
         self.holding.iter().map(|k| k.0).collect()
     }
-    /// Whether [`Env::hold`] is in force.
-    pub fn holding(&self) -> bool {
-        !self.holding.is_empty()
-    }
     /// The end of [`Env::hold`]: names read as their values again.
     pub fn release(&mut self) {
         self.holding.clear();

@@ -162,42 +162,35 @@ fn rho(m: u128) -> Option<u128> {
     let ring = Ring::new(m);
     for c in 1..=4u128 {
         let c = ring.enter(c);
-        let f = |x: u128| ring.add(ring.mul(x, x), c);
-        let (mut x, mut y, mut steps) = (ring.enter(2), ring.enter(2), 0u32);
-        let (mut power, mut lam) = (1u32, 0u32);
-        let mut q = ring.enter(1);
-        let mut saved = (x, y, power, lam);
+        // one step of Brent's search: y moves on, x is kept at powers of 2
+        let step = |(x, y, power, lam): (u128, u128, u32, u32)| {
+            let (x, power, lam) = if power == lam {
+                (y, power * 2, 0)
+            } else {
+                (x, power, lam)
+            };
+            (x, ring.add(ring.mul(y, y), c), power, lam + 1)
+        };
+        let mut walk = (ring.enter(2), ring.enter(2), 1u32, 0u32);
+        let (mut q, mut steps) = (ring.enter(1), 0u32);
+        let mut saved = walk;
         let mut in_batch = 0u32;
         loop {
-            if power == lam {
-                x = y;
-                power *= 2;
-                lam = 0;
-            }
-            y = f(y);
-            lam += 1;
+            walk = step(walk);
             steps += 1;
             in_batch += 1;
-            q = ring.mul(q, x.abs_diff(y));
+            q = ring.mul(q, walk.0.abs_diff(walk.1));
             if in_batch == BATCH || steps > rho_steps(m) {
                 let g = gcd(q, m);
                 if g == m {
                     // walk the batch again, one gcd a step
-                    (x, y, power, lam) = saved;
+                    walk = saved;
                     for _ in 0..in_batch {
-                        if power == lam {
-                            x = y;
-                            power *= 2;
-                            lam = 0;
-                        }
-                        y = f(y);
-                        lam += 1;
-                        let g = gcd(x.abs_diff(y), m);
-                        if g > 1 && g < m {
-                            return Some(g);
-                        }
-                        if g == m {
-                            break;
+                        walk = step(walk);
+                        match gcd(walk.0.abs_diff(walk.1), m) {
+                            g if g == m => break,
+                            g if g > 1 => return Some(g),
+                            _ => {}
                         }
                     }
                     break;
@@ -208,7 +201,7 @@ fn rho(m: u128) -> Option<u128> {
                 if steps > rho_steps(m) {
                     break;
                 }
-                saved = (x, y, power, lam);
+                saved = walk;
                 in_batch = 0;
             }
         }
