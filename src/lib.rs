@@ -5,8 +5,13 @@
 //! by `layers.py`; `lie` and `mech` import nothing from the language):
 //!
 //! ```text
-//! cli, repl,    front ends (the terminal, flags, `:` commands; the
-//! kernel        Jupyter kernel)
+//! cli           the binary's dispatcher (flags, subcommands): the one
+//!               module above the front ends, starting one of them
+//! repl, kernel  front ends (the terminal; the Jupyter kernel); none
+//!               imports another
+//! frontend      what the front ends share: `:` commands, help text, the
+//!               statement runner that records each statement's writes,
+//!               completion
 //! session       parse → check → evaluate over a source text; reading scripts
 //! effects       the one gate for files a statement asks to write (`save`,
 //!               printed pictures, `:save`): written, refused or confined
@@ -61,7 +66,9 @@
 //!   asks whether to go on;
 //! - [`session`]: the pipeline parse → check → evaluate over a source text;
 //! - [`effects`]: the gate every file write goes through;
-//! - [`cli`], [`repl`], [`kernel`]: the front ends.
+//! - [`frontend`]: the `:` commands, help and completion every front end
+//!   shares;
+//! - [`cli`], [`repl`], [`kernel`]: the dispatcher and the front ends.
 #![forbid(unsafe_code)]
 // Errors carry spans, labels and help text; they are rare, so their size is not worth boxing.
 #![allow(clippy::result_large_err)]
@@ -78,6 +85,7 @@ pub mod diagnostics;
 pub mod draw;
 pub mod effects;
 pub mod eval;
+pub mod frontend;
 pub mod kernel;
 pub mod lie;
 pub mod mech;

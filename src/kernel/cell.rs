@@ -1,7 +1,7 @@
 //! One notebook session (LANGUAGE.md §13): the REPL's session and
 //! commands driven cell by cell, with nothing of the wire protocol. A cell
 //! is statements and `:` commands (`:exact`, `:latex`, `:digits N`, …, one
-//! per line, run by the REPL's command code); each statement's value
+//! per line, run by the shared command code, `crate::frontend`); each statement's value
 //! becomes a MIME bundle ([`super::rich`]), each error an error output
 //! with the terminal's caret diagnostic. A failing statement binds
 //! nothing and ends the cell; every earlier binding stays.
@@ -13,7 +13,7 @@ use std::time::Duration;
 use crate::budget::{Budget, Interrupt};
 use crate::diagnostics::render;
 use crate::effects::Gate;
-use crate::repl::{commands, complete, help, save};
+use crate::frontend::{commands, complete, help, save};
 use crate::session::{Session, Settings};
 use crate::syntax::needs_more_input;
 

@@ -108,7 +108,7 @@ fn kernel_info() -> KernelInfoReply {
             codemirror_mode: Some(CodeMirrorMode::Simple("julia".into())),
             nbconvert_exporter: None,
         },
-        banner: crate::repl::banner(),
+        banner: crate::frontend::banner(),
         help_links: Vec::new(),
         debugger: false,
         error: None,

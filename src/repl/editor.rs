@@ -1,4 +1,4 @@
-//! The rustyline [`Helper`]: a thin layer over [`super::complete`] for Tab
+//! The rustyline [`Helper`]: a thin layer over [`crate::frontend::complete`] for Tab
 //! completion and hints, and colours (only when enabled). Input inside an
 //! open bracket continues under the continuation prompt (`super::run_terminal`).
 
@@ -10,7 +10,7 @@ use rustyline::hint::Hinter;
 use rustyline::validate::{ValidationContext, ValidationResult, Validator};
 use rustyline::{CompletionType, Context, Helper};
 
-use super::complete;
+use crate::frontend::complete;
 use crate::session::Session;
 
 /// Dim text for hints.

@@ -1,19 +1,16 @@
 //! The interactive session (LANGUAGE.md §11).
 //!
-//! Everything but the line editor lives in the library and is tested
-//! without a terminal: [`commands`] runs an input (statements or a `:`
-//! command), [`help`] answers `:help` from the builtin table, [`complete`]
+//! Everything but the line editor lives below the front ends, in
+//! [`crate::frontend`], shared with the kernel and the language server and
+//! tested without a terminal: `commands` runs an input (statements or a
+//! `:` command), `help` answers `:help` from the builtin table, `complete`
 //! computes Tab completions and hints. `editor` adapts those to rustyline;
 //! [`run_terminal`] is the loop, with persistent history.
 
-pub mod commands;
-pub mod complete;
 mod editor;
-pub mod help;
-pub mod keywords;
-mod open;
-pub mod reference;
-pub mod save;
+
+// The shared modules under their former paths (`chasles::repl::commands`, …).
+pub use crate::frontend::{banner, commands, complete, help, keywords, reference, save};
 
 use std::io::{IsTerminal, Write};
 use std::path::PathBuf;
@@ -45,15 +42,6 @@ pub fn history_path() -> Option<PathBuf> {
 /// Colours only on a terminal, and never with `NO_COLOR` set.
 pub fn colour_enabled() -> bool {
     std::io::stdout().is_terminal() && std::env::var_os("NO_COLOR").is_none()
-}
-
-/// The line shown when the REPL starts.
-pub fn banner() -> String {
-    format!(
-        "chasles {} — rigid-body motion as in Modern Robotics, ch. 2–3\n\
-         :help for help, Tab completes, Ctrl-D quits",
-        env!("CARGO_PKG_VERSION")
-    )
 }
 
 /// Runs the REPL on a terminal, writing files through `gate` (the live
