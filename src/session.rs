@@ -73,12 +73,20 @@ impl Report {
     pub fn stdout(&self, settings: &Settings, src: &str) -> String {
         match (&self.result, settings.json) {
             (Ok(o), false) => text::show_outcome(o, settings.text_style()),
-            (Ok(o), true) => json::outcome(o, self.line)
-                .map(|j| j.to_string())
-                .unwrap_or_default(),
+            (Ok(o), true) => match json::outcome(o, self.line) {
+                Some(mut j) => {
+                    json::add_warnings(&mut j, &self.warnings);
+                    j.to_string()
+                }
+                None => json::silent(self.line, &self.warnings)
+                    .map(|j| j.to_string())
+                    .unwrap_or_default(),
+            },
             (Err(d), true) => {
                 let (line, col) = render::line_col_from(src, d.span.start, self.anchor);
-                json::error(d, line, col).to_string()
+                let mut j = json::error(d, line, col);
+                json::add_warnings(&mut j, &self.warnings);
+                j.to_string()
             }
             (Err(_), false) => String::new(),
         }

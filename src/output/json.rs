@@ -4,7 +4,7 @@
 use serde_json::{Value as J, json};
 
 use crate::check::ty::Kind;
-use crate::diagnostics::Diagnostic;
+use crate::diagnostics::{Diagnostic, Severity};
 use crate::eval::interp::Outcome;
 use crate::values::value::Value;
 
@@ -103,6 +103,45 @@ pub fn outcome(o: &Outcome, line: usize) -> Option<J> {
 
 fn type_name(k: &Kind) -> &'static str {
     k.json_name()
+}
+
+/// A statement's notes and warnings as JSON (LANGUAGE.md §1): each
+/// `{"kind": "note"|"warning", "message", "help"?}`, in the order text
+/// output prints them.
+pub fn warnings(ws: &[Diagnostic]) -> J {
+    J::Array(
+        ws.iter()
+            .map(|w| {
+                let kind = match w.severity {
+                    Severity::Note => "note",
+                    // (an error among a statement's warnings is never
+                    // made; were it, it is still only reported)
+                    Severity::Warning | Severity::Error => "warning",
+                };
+                let mut o = json!({ "kind": kind, "message": w.message });
+                if let (Some(h), Some(obj)) = (&w.help, o.as_object_mut()) {
+                    obj.insert("help".into(), json!(h));
+                }
+                o
+            })
+            .collect(),
+    )
+}
+
+/// Adds `"warnings"` to a statement's JSON object when it has any (the
+/// key is absent otherwise, as in the contract's example lines).
+pub fn add_warnings(obj: &mut J, ws: &[Diagnostic]) {
+    if let (false, Some(o)) = (ws.is_empty(), obj.as_object_mut()) {
+        o.insert("warnings".into(), warnings(ws));
+    }
+}
+
+/// The JSON object for a statement that prints no value (`given`, a
+/// function definition, an `assert` that holds) but has notes or warnings:
+/// `{"line": N, "warnings": [...]}`, so that nothing text output prints is
+/// lost. None when it has none.
+pub fn silent(line: usize, ws: &[Diagnostic]) -> Option<J> {
+    (!ws.is_empty()).then(|| json!({ "line": line, "warnings": warnings(ws) }))
 }
 
 /// The JSON object for an error.

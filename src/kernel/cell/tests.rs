@@ -71,6 +71,23 @@ fn a_transform_shows_latex_json_and_text() {
 }
 
 #[test]
+fn the_json_output_carries_the_statements_notes() {
+    let mut nb = Notebook::new();
+    let (outs, r) = run(&mut nb, "given t : scalar\natan2(sin(t), cos(t))\n1 + 1");
+    assert!(r.is_ok());
+    let d = data(&outs);
+    let j = &d[0]["application/json"];
+    assert_eq!(j["value"], "t");
+    assert_eq!(
+        j["warnings"],
+        json!([{"kind": "note", "message": "atan2 of symbolic arguments: the closed form on the branch t in (−π, π]"}])
+    );
+    // a statement with no note has no key, as in `--json`
+    assert_eq!(d[1]["application/json"]["value"], json!(2));
+    assert!(d[1]["application/json"].get("warnings").is_none());
+}
+
+#[test]
 fn a_symbolic_value_shows_a_bmatrix() {
     let mut nb = Notebook::new();
     let (outs, _) = run(&mut nb, "given t : scalar\nRotz(t)");
