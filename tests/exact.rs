@@ -153,7 +153,7 @@ fn floats_that_differ_by_rounding_point_to_approx() {
     let (_, err) = text("given x : scalar\nx + 1e-13 == x", false);
     assert!(!err.contains("rounding"), "{err}");
     // sin(1)² + cos(1)² = 1 is no longer whatever the floats say: made
-    // from the exact 1, it is an identity in the angle, proven (`eval::lift`).
+    // from the exact 1, it is an identity in the angle, proven (`decide::lift`).
     let (out, err) = text("sin(1)^2 + cos(1)^2 == 1", false);
     assert_eq!(out.trim(), "true");
     assert!(!err.contains("rounding only"), "{err}");

@@ -9,12 +9,12 @@
 use std::sync::OnceLock;
 
 use super::apply::Op;
-use super::formula;
-use super::value::Value;
 use crate::check::ty::Kind;
 use crate::sym::Mat;
 use crate::values::error::OpError;
 use crate::values::exact::{Exact, Operands, Operation, Pending};
+use crate::values::formula;
+use crate::values::value::Value;
 
 impl Op<'_> {
     /// [`Op::apply`] on two operands the evaluator gives away: the recipe
@@ -123,7 +123,7 @@ impl Op<'_> {
         }
         // (exp, log and the inverse trigonometric functions keep a recipe
         // of a number only: certified arithmetic and the normal forms of
-        // `super::transcendental` read it; of a matrix they are floats)
+        // `crate::decide::transcendental` read it; of a matrix they are floats)
         if let Op::Call(b, _) = self
             && scalar_only(b.name)
             && args.iter().any(|a| a.borrow().as_scalar().is_none())
@@ -182,8 +182,8 @@ fn run(op: &Operation, vals: &[&Value], kind: &Kind) -> Option<Mat> {
 
 /// Operation `op` by its exact path ([`Op::formula`]) over operands given
 /// as formulas `forms`: the canonical form of the result, exact or not
-/// (`super::lift` gives it forms with a symbol in them).
-pub(super) fn formula_of(op: &Operation, forms: Vec<Value>, kind: &Kind) -> Option<Mat> {
+/// (`crate::decide::lift` gives it forms with a symbol in them).
+pub(crate) fn formula_of(op: &Operation, forms: Vec<Value>, kind: &Kind) -> Option<Mat> {
     let refs: Vec<&Value> = forms.iter().collect();
     let out = match op {
         Operation::Block(widths) => {
