@@ -242,16 +242,22 @@ impl Interp<'_> {
                         }
                         // (false by rounding only, of sides made from exact
                         // numbers that no point decided: not known to differ)
+                        // (and of symbolic sides whose float coefficients,
+                        // with no exact form, cancel to rounding: a float
+                        // coefficient never decides `==`, issue 35)
                         None if !v
                             && !numbers(a, b)
-                            && crate::decide::witness::on_float(a, b)
                             && crate::decide::equality::rounding_only(a, b) =>
                         {
-                            self.warnings.push(Diagnostic::note(
-                            ErrorKind::Domain,
-                            op_span,
-                            "the two sides differ only by the rounding of numbers made from exact ones, and chasles cannot prove them equal or different",
-                        ).with_help("compare within rounding with ≈ (typed ~=)"));
+                            let message = if crate::decide::witness::on_float(a, b) {
+                                "the two sides differ only by the rounding of numbers made from exact ones, and chasles cannot prove them equal or different"
+                            } else {
+                                "the two sides differ only by the rounding of float coefficients (numbers with no exact form), so chasles cannot decide whether they are equal"
+                            };
+                            self.warnings.push(
+                                Diagnostic::note(ErrorKind::Domain, op_span, message)
+                                    .with_help("compare within rounding with ≈ (typed ~=)"),
+                            );
                             undecided = true;
                             None
                         }

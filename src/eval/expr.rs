@@ -457,7 +457,13 @@ impl Interp<'_> {
                     if self.env.get(axis).is_none()
                         && let Some(v) = unit_axis(axis) =>
                 {
-                    let val = running.then(|| Value::vector(Kind::Vector(Some(3)), &v));
+                    // (the axis as typed, `(1, 0, 0)`: exact, so that
+                    // `Rot(x, pi)` is as exact as `Rotx(pi)`, issue 35)
+                    let val = running.then(|| Value::Num {
+                        kind: Kind::Vector(Some(3)),
+                        m: crate::values::num::Num::vector(&v),
+                        exact: crate::values::exact::Exact::Typed,
+                    });
                     Typed::new(Ty::plain(Kind::Vector(Some(3))), val)
                 }
                 // diff(x, t): the variable may be a name with no value (time).

@@ -127,6 +127,7 @@ impl Op<'_> {
         if let Op::Call(b, _) = self
             && scalar_only(b.name)
             && args.iter().any(|a| a.borrow().as_scalar().is_none())
+            && !(b.name == "exp" && args.iter().all(|a| rotation_or_motion(a.borrow())))
         {
             return Some(Exact::Float);
         }
@@ -241,6 +242,8 @@ fn exact_name(name: &str) -> bool {
                 | "Roty"
                 | "Rotz"
                 | "Rot"
+                | "MatrixExp3"
+                | "MatrixExp6"
                 | "cross"
                 | "dot"
                 | "det"
@@ -258,8 +261,22 @@ fn exact_name(name: &str) -> bool {
         )
 }
 
+/// An so(3) or se(3) matrix, or the 3- or 6-vector of one
+/// (`MatrixExp3((1, 0, 0) pi)`): `exp` of it, by Rodrigues (3.51) or
+/// Proposition 3.16, is exact at exact angles as `Rotx(pi)` is (issue 35:
+/// `exp([(1, 0, 0)] pi)` was a float matrix whose 1.2e-16 entries reached
+/// symbolic products and decided `==`). A general square matrix's
+/// exponential stays a float.
+fn rotation_or_motion(v: &Value) -> bool {
+    matches!(
+        v.kind(),
+        Kind::So3 | Kind::Se3 | Kind::Vector(Some(3)) | Kind::Twist | Kind::Screw
+    )
+}
+
 /// The builtins that keep a recipe of a number, not of a matrix (the
-/// matrix exponential and logarithm stay floats).
+/// matrix exponential and logarithm stay floats, but for `exp` of so(3)
+/// and se(3): [`rotation_or_motion`]).
 fn scalar_only(name: &str) -> bool {
     matches!(name, "exp" | "log" | "atan" | "asin" | "acos" | "atan2")
 }
