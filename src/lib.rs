@@ -18,9 +18,14 @@
 //!               by the front end; evaluation itself never writes
 //! output        outcomes as text blocks and JSON lines
 //! draw          pictures: marks, projection, SVG and PNG (§12)
-//! eval          the environment, the interpreter and its one operation
-//!               seam (`eval::apply::Op`: rule, numbers, exact and symbolic
-//!               forms of each operation); substitution, derive
+//! eval          the environment and the interpreter; substitution of
+//!               numbers bound later (it reads the environment), derive
+//! decide        the proofs of `==`, `≈` and `<` (exact forms, certified
+//!               balls, lifts, witnesses at points) and the replay of how
+//!               a value was made with numbers (§7)
+//! seam          the one operation seam (`seam::apply::Op`: rule, numbers,
+//!               exact and symbolic forms of each operation), recipes and
+//!               the chain rule on them, exactness, ranges
 //! builtins      the one table of builtin functions (help and completion
 //!               use it); rows compute through `lie::group`'s types
 //! values        runtime values (`values::num::Num`: fixed-size shapes),
@@ -53,6 +58,9 @@
 //!   numbers on one line (`eval::value`, `eval::ops`, `output::number` are
 //!   re-exports of its modules);
 //! - [`eval`]: the session environment and evaluation;
+//! - [`decide`]: deciding `==`, `≈` and `<`, and replaying recipes with
+//!   numbers;
+//! - [`seam`]: the operation seam every evaluation goes through;
 //! - [`builtins`]: the one table of builtin functions;
 //! - [`lie`]: SO(3), SE(3), SO(2), SE(2) and their algebras — plain nalgebra,
 //!   no knowledge of the language, usable as a library;
@@ -81,6 +89,7 @@ pub mod budget;
 pub mod builtins;
 pub mod check;
 pub mod cli;
+pub mod decide;
 pub mod diagnostics;
 pub mod draw;
 pub mod effects;
@@ -91,6 +100,7 @@ pub mod lie;
 pub mod mech;
 pub mod output;
 pub mod repl;
+pub mod seam;
 pub mod session;
 pub mod span;
 pub mod sym;

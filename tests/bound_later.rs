@@ -367,7 +367,7 @@ fn comparisons_bound_later_are_decided_as_typed_first() {
     assert_eq!(last("a = 5\nsqrt(a)^2 == 5").as_deref(), Some("true"));
     // exp and log of numbers keep their recipes (rule changed in session
     // 13: they were floats, and this was false by rounding only): e^(ln 5)
-    // is 5, proven by the normal forms of `eval::transcendental`, bound
+    // is 5, proven by the normal forms of `decide::transcendental`, bound
     // later as typed first; a float one ulp off is certainly different
     assert_eq!(
         last("given a\ny = exp(a) == 5\na = log(5)\ny").as_deref(),

@@ -273,7 +273,7 @@ fn exp_log_and_inverse_trig_identities_are_proven() {
         "atan(2 - sqrt(3)) == pi/12",
         "atan2(1, 2) == atan(1/2)",
         "asin(0.6) == atan(3/4)",
-        // sums of arcs, by the addition formula (src/eval/transcendental.rs)
+        // sums of arcs, by the addition formula (src/decide/transcendental.rs)
         "acos(0.3) == pi/2 - asin(0.3)",
         "acos(-0.6) == pi - acos(0.6)",
         "atan(2) + atan(1/2) == pi/2",
@@ -320,7 +320,7 @@ fn exp_log_and_inverse_trig_identities_are_proven() {
 
 /// x⁴ == x³·x for x = sin(1) a + cos(2) b + sin(3) c: the floats of the
 /// two expanded forms differ by rounding, and `==` printed false (a wrong
-/// answer). The lifted recipes (`eval::lift`) prove it, however many terms;
+/// answer). The lifted recipes (`decide::lift`) prove it, however many terms;
 /// points prove it too (scattered: on a line their matrix was singular).
 /// Where neither can, it cannot decide, and says so.
 /// Where a phase leaves the canonical forms unable to tell, a difference

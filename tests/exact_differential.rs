@@ -169,7 +169,7 @@ fn bool_of(what: &str, line: &Line) -> Result<Option<bool>, String> {
     match &line.json {
         Some(serde_json::Value::Bool(b)) => Ok(Some(*b)),
         // (over symbols, sides that agree at every point with no proof
-        // wait for numbers, and say so: undecided, `eval::witness`)
+        // wait for numbers, and say so: undecided, `decide::witness`)
         Some(serde_json::Value::String(_))
             if line.notes.iter().any(|n| n.contains("cannot prove")) =>
         {
@@ -376,7 +376,7 @@ fn check_pair(xs: &str, ys: &str, x: &[V], y: &[V]) -> Result<(), String> {
     let eq = bool_of("x == y", &lines[3]).map_err(ctx)?;
     // (undecided only where the sides are equal: numbers made from exact
     // ones that agree far past rounding with no proof at hand are "cannot
-    // decide", issue 21 and `eval::certify`; never where they differ)
+    // decide", issue 21 and `decide::certify`; never where they differ)
     if eq.is_none() && !x.iter().zip(y).all(|(p, q)| p.same(q)) {
         return Err(ctx("x == y on numbers undecided, yet they differ".into()));
     }

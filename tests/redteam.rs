@@ -664,7 +664,7 @@ fn a_quotient_that_does_not_divide_keeps_its_reciprocal() {
 /// branch's formula, a constant (0, 1, 0) that kept no recipe, read off
 /// the branch: at u = −1 the angles are (π, 1, π), so d/du is (0, −1, 0).
 /// The inverse maps' derivatives are now their rates on the numbers'
-/// branch (eval/chain/rates.rs), and a constant derivative keeps its
+/// branch (seam/chain/rates.rs), and a constant derivative keeps its
 /// recipe.
 #[test]
 fn diff_of_a_closed_form_on_a_branch_bound_off_it() {

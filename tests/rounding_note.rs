@@ -24,13 +24,26 @@ const UNIT: &str = "x = exp([(0.1, 0.2, 0.3)])\ny = x[1,1]^2 + x[2,1]^2 + x[3,1]
 fn the_note_comes_with_floats_within_rounding() {
     for src in [
         "y == 1",
-        "given t\ny*t == t",
         // small sides within rounding of each other
         "exp(-40)*y == exp(-40)",
-        "given t\nexp(-40)*y*t == exp(-40)*t",
     ] {
         let src = format!("{UNIT}{src}");
         assert_eq!(answer(&src), ("false".into(), true), "{src}");
+    }
+    // Over a symbol a float coefficient that cancels to rounding decides
+    // nothing (issue 35; rule changed: these were false with the note):
+    // cannot decide, saying why, and decided as numbers once t has one.
+    for src in ["given t\ny*t == t", "given t\nexp(-40)*y*t == exp(-40)*t"] {
+        let src = format!("{UNIT}{src}");
+        let (out, err) = outputs(&src);
+        let last = out.lines().last().unwrap_or_default();
+        assert!(last != "false" && last != "true", "{src}: {out}");
+        assert!(
+            err.contains("cannot prove them equal or different"),
+            "{src}: {err}"
+        );
+        let bound = src.replace("given t\n", "given t\nd = ") + "\nt = 2\nd";
+        assert_eq!(answer(&bound), ("false".into(), true), "{bound}");
     }
     // (exp and log of numbers keep recipes since session 13: what was the
     // example here is proven, with no note; rule changed)

@@ -6,7 +6,7 @@
 use chasles::builtins::lookup;
 use chasles::check::ty::{Frame, Frames, Kind, Ty};
 use chasles::diagnostics::ErrorKind;
-use chasles::eval::apply::{Hints, Op};
+use chasles::seam::apply::{Hints, Op};
 
 fn pair(a: &str, b: &str) -> Frames {
     Frames::Pair(Frame::named(a), Frame::named(b))

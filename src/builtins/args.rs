@@ -50,10 +50,10 @@ pub struct Args<'a> {
     pub typed: Vec<(crate::check::ty::Ty, String)>,
     /// The θ = π decision of a logarithm by certified arithmetic on a
     /// rotation's recipe, where it has no exact form (the evaluator's,
-    /// `eval::turn`, which `builtins` cannot name); None: by its floats.
+    /// `decide::turn`, which `builtins` cannot name); None: by its floats.
     pub certified_turn: Option<fn(&Value) -> Option<so3::HalfTurn>>,
     /// A matrix's entries by certified arithmetic on its recipe, where it
-    /// has no exact form (`eval::turn::entries`); None: by its floats.
+    /// has no exact form (`decide::turn::entries`); None: by its floats.
     pub certified_entries: Option<fn(&Value) -> Option<Entries>>,
 }
 

@@ -5,16 +5,16 @@
 //! checked: they must have the same shape and the same frames.
 //!
 //! [`equal`] is the one place that decides equality of two values; for
-//! symbolic sides it asks [`super::decide::symbolic_equal`] (trees over `given` matrices)
+//! symbolic sides it asks [`crate::decide::equality::symbolic_equal`] (trees over `given` matrices)
 //! or the canonical forms of [`super::formula::equal`] (symbolic scalars).
 
 use super::interp::{Interp, Typed};
 use super::value::Value;
-use super::witness::AtPoints;
+use crate::decide::witness::AtPoints;
 
-pub use super::decide::{APPROX_TOL, equal, largest_difference};
 use crate::check::rules::{self, RuleError};
 use crate::check::ty::{Frames, Kind, Ty};
+pub use crate::decide::equality::{APPROX_TOL, equal, largest_difference};
 use crate::diagnostics::{Diagnostic, ErrorKind};
 use crate::syntax::ast::{BinOp, CmpOp, Expr, ExprKind, Span};
 
@@ -109,8 +109,8 @@ impl Interp<'_> {
                         self.warnings.push(note);
                         Some(Value::Sym(super::value::Sym::Compare(
                             op,
-                            Box::new(super::apply::to_sym(a)),
-                            Box::new(super::apply::to_sym(b)),
+                            Box::new(crate::seam::apply::to_sym(a)),
+                            Box::new(crate::seam::apply::to_sym(b)),
                         )))
                     }
                     None => return Err(self.undecided(op, lhs, rhs, op_span, false)),
@@ -125,7 +125,7 @@ impl Interp<'_> {
     /// bounds can tell apart (π against 50 digits of it); "cannot decide
     /// `a == b`" of numbers made from exact ones whose certified values
     /// agree far past rounding, though no proof says they are equal
-    /// (`cos(pi/7) + cos(3*pi/7) + cos(5*pi/7) == 1/2`, `super::certify`).
+    /// (`cos(pi/7) + cos(3*pi/7) + cos(5*pi/7) == 1/2`, `crate::decide::certify`).
     fn too_close(
         &self,
         op: CmpOp,
@@ -140,7 +140,7 @@ impl Interp<'_> {
             op_text(op),
             self.text(rhs.span).trim()
         );
-        if let Some(n) = super::decide::agreement(a, b) {
+        if let Some(n) = crate::decide::equality::agreement(a, b) {
             let proof = if op == CmpOp::Eq {
                 ", but chasles cannot prove this identity"
             } else {
@@ -198,7 +198,7 @@ impl Interp<'_> {
         // `R Rᵀ == I`: an `I` takes its size from the other side, as in a sum.
         let (l, r) = self.operands(BinOp::Sub, lhs, rhs)?;
         let rule = if op.is_order() {
-            super::order::order_rule
+            crate::decide::order::order_rule
         } else {
             compare_rule
         };
@@ -212,11 +212,12 @@ impl Interp<'_> {
                 .unwrap_or_else(|| equal(a, b, op))
             {
                 // (a verdict over symbols that rests on a number with no
-                // exact form is found at points: `super::witness`)
-                Ok(Some(v)) if op == CmpOp::Eq => match super::witness::at_points(a, b, false) {
-                    Some(AtPoints::Differ(d)) => {
-                        if v {
-                            self.warnings.push(Diagnostic::note(
+                // exact form is found at points: `crate::decide::witness`)
+                Ok(Some(v)) if op == CmpOp::Eq => {
+                    match crate::decide::witness::at_points(a, b, false) {
+                        Some(AtPoints::Differ(d)) => {
+                            if v {
+                                self.warnings.push(Diagnostic::note(
                                 ErrorKind::Domain,
                                 op_span,
                                 format!(
@@ -224,55 +225,67 @@ impl Interp<'_> {
                                     format!("{:.1e}", d.abs()).replace(".0e", "e")
                                 ),
                             ));
+                            }
+                            Some(false)
                         }
-                        Some(false)
-                    }
-                    Some(AtPoints::Identity) => Some(true),
-                    Some(AtPoints::Agree(n)) => {
-                        self.warnings.push(Diagnostic::note(
+                        Some(AtPoints::Identity) => Some(true),
+                        Some(AtPoints::Agree(n)) => {
+                            self.warnings.push(Diagnostic::note(
                             ErrorKind::Domain,
                             op_span,
                             format!(
                                 "with numbers for their symbols the two sides agree to {n} digits, but chasles cannot prove they are the same function"
                             ),
                         ).with_help("compare within rounding with ≈ (typed ~=)"));
-                        undecided = true;
-                        None
-                    }
-                    // (false by rounding only, of sides made from exact
-                    // numbers that no point decided: not known to differ)
-                    None if !v
-                        && !numbers(a, b)
-                        && super::witness::on_float(a, b)
-                        && super::decide::rounding_only(a, b) =>
-                    {
-                        self.warnings.push(Diagnostic::note(
-                            ErrorKind::Domain,
-                            op_span,
-                            "the two sides differ only by the rounding of numbers made from exact ones, and chasles cannot prove them equal or different",
-                        ).with_help("compare within rounding with ≈ (typed ~=)"));
-                        undecided = true;
-                        None
-                    }
-                    None => {
-                        if !v && let Some(note) = super::decide::false_note(a, b, op_span) {
-                            self.warnings.push(note);
+                            undecided = true;
+                            None
                         }
-                        Some(v)
+                        // (false by rounding only, of sides made from exact
+                        // numbers that no point decided: not known to differ)
+                        // (and of symbolic sides whose float coefficients,
+                        // with no exact form, cancel to rounding: a float
+                        // coefficient never decides `==`, issue 35)
+                        None if !v
+                            && !numbers(a, b)
+                            && crate::decide::equality::rounding_only(a, b) =>
+                        {
+                            let message = if crate::decide::witness::on_float(a, b) {
+                                "the two sides differ only by the rounding of numbers made from exact ones, and chasles cannot prove them equal or different"
+                            } else {
+                                "the two sides differ only by the rounding of float coefficients (numbers with no exact form), so chasles cannot decide whether they are equal"
+                            };
+                            self.warnings.push(
+                                Diagnostic::note(ErrorKind::Domain, op_span, message)
+                                    .with_help("compare within rounding with ≈ (typed ~=)"),
+                            );
+                            undecided = true;
+                            None
+                        }
+                        None => {
+                            if !v
+                                && let Some(note) =
+                                    crate::decide::equality::false_note(a, b, op_span)
+                            {
+                                self.warnings.push(note);
+                            }
+                            Some(v)
+                        }
                     }
-                },
+                }
                 Ok(Some(v)) => Some(v),
                 // (the canonical forms cannot tell, where a phase stands
                 // for a number with no exact form: proven by the lifted
                 // forms, or a certified difference at a point)
-                Ok(None) if op == CmpOp::Eq => match super::witness::at_points(a, b, true) {
-                    Some(AtPoints::Identity) => Some(true),
-                    Some(AtPoints::Differ(_)) => Some(false),
-                    _ => {
-                        undecided = true;
-                        None
+                Ok(None) if op == CmpOp::Eq => {
+                    match crate::decide::witness::at_points(a, b, true) {
+                        Some(AtPoints::Identity) => Some(true),
+                        Some(AtPoints::Differ(_)) => Some(false),
+                        _ => {
+                            undecided = true;
+                            None
+                        }
                     }
-                },
+                }
                 Ok(None) => {
                     undecided = true;
                     None
@@ -410,9 +423,9 @@ impl Interp<'_> {
 
 #[cfg(test)]
 mod tests {
-    use super::super::decide::symbolic_equal;
     use super::super::value::Sym;
     use super::*;
+    use crate::decide::equality::symbolic_equal;
 
     fn v(xs: &[f64]) -> Value {
         Value::vector(Kind::Vector(Some(xs.len())), xs)

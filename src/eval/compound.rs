@@ -2,13 +2,13 @@
 //! tuples `(1, 2, 3)`, brackets `[w]` and block matrices `[R, p; 0, 0, 0, 1]`
 //! (LANGUAGE.md §4), and `mech < ... >` literals (chapter 2).
 
-use super::apply::{self, Hints, Op};
 use super::interp::refine;
 use super::interp::{Interp, Typed};
 use super::ops::Sel;
 use super::value::Value;
 use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
+use crate::seam::apply::{self, Hints, Op};
 use crate::syntax::ast::{Expr, IndexArg, Span};
 
 impl Interp<'_> {

@@ -4,13 +4,13 @@
 
 use std::collections::{HashMap, VecDeque};
 
-use super::apply::Op;
 use super::graph::FrameGraph;
 use super::interp::{Interp, Typed};
 use super::ops;
 use super::value::Value;
 use crate::check::ty::{Frame, Frames, Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
+use crate::seam::apply::Op;
 use crate::syntax::ast::{BinOp, Ident};
 use crate::syntax::ident::{NameFrames, base_name, name_frames};
 

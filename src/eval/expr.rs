@@ -2,7 +2,6 @@
 //! [`crate::check::rules`], and its value through [`super::ops`] and the
 //! builtin table. Symbolic operands give symbolic results.
 
-use super::apply::{self, Hints, Op};
 use super::env::Mode;
 use super::interp::{Interp, Typed, refine};
 use super::value::Value;
@@ -11,6 +10,7 @@ use crate::check::error::Operand;
 use crate::check::rules::{self, Operands};
 use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind, suggest};
+use crate::seam::apply::{self, Hints, Op};
 use crate::syntax::ast::{BinOp, Expr, ExprKind, Name, Span, UnOp};
 use crate::values::exact::Exact;
 
@@ -457,7 +457,13 @@ impl Interp<'_> {
                     if self.env.get(axis).is_none()
                         && let Some(v) = unit_axis(axis) =>
                 {
-                    let val = running.then(|| Value::vector(Kind::Vector(Some(3)), &v));
+                    // (the axis as typed, `(1, 0, 0)`: exact, so that
+                    // `Rot(x, pi)` is as exact as `Rotx(pi)`, issue 35)
+                    let val = running.then(|| Value::Num {
+                        kind: Kind::Vector(Some(3)),
+                        m: crate::values::num::Num::vector(&v),
+                        exact: crate::values::exact::Exact::Typed,
+                    });
                     Typed::new(Ty::plain(Kind::Vector(Some(3))), val)
                 }
                 // diff(x, t): the variable may be a name with no value (time).
@@ -520,7 +526,7 @@ impl Interp<'_> {
             let refs: Vec<&Value> = vals.iter().collect();
             // (subs with a number replays how its operand was made, §7)
             let subs = (b.name == "subs")
-                .then(|| super::replay::subs_numbers(&refs, &mut self.warnings))
+                .then(|| crate::decide::replay::subs_numbers(&refs, &mut self.warnings))
                 .flatten()
                 .map(|v| {
                     v.map(|v| super::substitute::retag(v, &ty.kind))
@@ -548,13 +554,13 @@ impl Interp<'_> {
             call_span: span,
             typed,
             warnings: &mut self.warnings,
-            certified_turn: Some(super::turn::half_turn),
-            certified_entries: Some(super::turn::entries),
+            certified_turn: Some(crate::decide::turn::half_turn),
+            certified_entries: Some(crate::decide::turn::entries),
         };
         let exact = op.exact_of(&vals, &ty.kind);
         let mut v = apply::call(b, vals, site)?;
         v.set_call_exact(exact);
-        super::replay::not_finite_group(&v, b.name, span)?;
+        crate::decide::replay::not_finite_group(&v, b.name, span)?;
         let val = Some(v);
         Ok(Typed::new(refine(ty, &val), val))
     }

@@ -493,7 +493,7 @@ impl<'a> Interp<'a> {
             Some(v @ Value::Formula { .. }) if t.ty.kind.is_vector() => (1..=n)
                 .map(|i| {
                     let sel = [super::ops::Sel::At(i as f64)];
-                    super::apply::Op::Index(&sel)
+                    crate::seam::apply::Op::Index(&sel)
                         .apply(&[v], &Kind::Scalar)
                         .ok()
                 })

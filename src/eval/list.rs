@@ -13,12 +13,8 @@ use super::interp::{Interp, Typed};
 use super::value::{Value, common_kind};
 use crate::check::ty::{Frames, Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
+use crate::seam::range::{MAX_LIST, RangeFail, items, range_count};
 use crate::syntax::ast::{Expr, ExprKind, Ident, Span};
-
-/// The longest list made: a range or comprehension with more items is a
-/// domain error that gives the count (a list of 10⁷ points is a mistake,
-/// not a workspace).
-pub const MAX_LIST: usize = 1_000_000;
 
 /// The most items that the comprehensions of one statement may evaluate
 /// (twice the longest list), nested ones and the ranges they make
@@ -56,69 +52,6 @@ fn spend(n: usize, span: Span) -> Result<(), Diagnostic> {
 fn too_long(span: Span, n: f64) -> Diagnostic {
     Diagnostic::error(ErrorKind::Domain, span, RangeFail::TooLong(n).to_string())
         .with_help("use a larger step, e.g. 0:0.01:1 has 101 items")
-}
-
-/// Why a range has no items: its numbers are not finite, its step is 0,
-/// or it would be too long.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(super) enum RangeFail {
-    NotFinite,
-    ZeroStep,
-    TooLong(f64),
-}
-
-impl std::fmt::Display for RangeFail {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            RangeFail::NotFinite => write!(f, "a range needs finite numbers (no inf or NaN)"),
-            RangeFail::ZeroStep => write!(f, "a range with step 0 never reaches its end"),
-            RangeFail::TooLong(n) => {
-                let count = if *n < 1e15 {
-                    format!("{}", *n as u64)
-                } else {
-                    format!("{n:.3e}")
-                };
-                write!(
-                    f,
-                    "the list would have {count} items; lists are limited to {MAX_LIST}"
-                )
-            }
-        }
-    }
-}
-
-/// The number of items of `a:h:b` (MATLAB's: the end is included when
-/// within rounding, so 0:pi/8:pi has 9 items).
-pub(super) fn range_count(a: f64, h: f64, b: f64) -> Result<usize, RangeFail> {
-    if !(a.is_finite() && h.is_finite() && b.is_finite()) {
-        return Err(RangeFail::NotFinite);
-    }
-    if h == 0.0 {
-        return Err(RangeFail::ZeroStep);
-    }
-    let steps = (b - a) / h;
-    let tol = 1e-10 * (1.0 + steps.abs());
-    let n = if steps < -tol {
-        0.0
-    } else {
-        (steps + tol).floor() + 1.0
-    };
-    if n > MAX_LIST as f64 {
-        return Err(RangeFail::TooLong(n));
-    }
-    Ok(n as usize)
-}
-
-/// The `n` items of the range from `a` by `h`.
-fn items(a: f64, h: f64, n: usize) -> Vec<Value> {
-    (0..n).map(|k| Value::scalar(a + k as f64 * h)).collect()
-}
-
-/// The list `a:h:b` as typed first, once a range that waited has its
-/// numbers (`super::replay`); Err why it has none.
-pub(super) fn range_items(a: f64, h: f64, b: f64) -> Result<Value, RangeFail> {
-    let n = range_count(a, h, b)?;
-    Ok(Value::List(Rc::new(items(a, h, n))))
 }
 
 /// The help for arithmetic on a list, a picture or a string.
@@ -267,7 +200,7 @@ impl Interp<'_> {
 
     /// `start:end`, `start:step:end`. With a bound made from symbols
     /// (`0:a:1` over a free `a`) the range waits for their numbers, and
-    /// is then the list typed first gives ([`range_items`]).
+    /// is then the list typed first gives ([`crate::seam::range::range_items`]).
     pub(super) fn range(
         &mut self,
         start: &Expr,

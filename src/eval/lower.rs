@@ -12,13 +12,13 @@
 //! numbers bound later are put into the operations as typed (a
 //! non-unit w then gives the numeric exp of \[w\] t, not the formula).
 
-use super::apply::{self, Op};
 use super::interp::Interp;
 use super::ops::Sel;
 use super::value::{Sym, Value};
 use crate::builtins;
 use crate::check::ty::Kind;
 use crate::diagnostics::{Diagnostic, ErrorKind};
+use crate::seam::apply::{self, Op};
 use crate::sym::axis;
 use crate::sym::matrix::Mat;
 use crate::syntax::ast::{BinOp, CmpOp, Span};

@@ -8,7 +8,6 @@
 //! (0, 0, 0, 1) — but whose rotation block is no rotation is named at
 //! binding (§5): the book's Exercise 3.25(a) prints such an A (r₃₃ = 1).
 
-use super::apply;
 use super::env::Binding;
 use super::interp::{Interp, Typed};
 use super::value::{Sym, Value};
@@ -16,6 +15,7 @@ use crate::check::role::Role;
 use crate::check::rules::same_frames;
 use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
+use crate::seam::apply;
 use crate::syntax::ast::{Expr, ExprKind, Ident, Name, Span};
 
 impl Interp<'_> {

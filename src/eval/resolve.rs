@@ -7,15 +7,15 @@
 //! warnings); one that fails with its numbers (`Rot(w, θ)` with w = 0)
 //! is the value's refusal, as typed first.
 
-use super::apply::to_sym;
-use super::apply::{self, Op};
 use super::env::Binding;
 use super::env::Env;
 use super::ops::Sel;
-use super::replay::{self, Failed};
 use super::value::{Sym, Value};
 use crate::check::ty::Kind;
+use crate::decide::replay::{self, Failed};
 use crate::diagnostics::Diagnostic;
+use crate::seam::apply::to_sym;
+use crate::seam::apply::{self, Op};
 use crate::sym::{Mat, Symbol};
 use crate::syntax::ast::BinOp;
 use crate::values::recipe;
@@ -226,7 +226,7 @@ impl Resolving<'_, '_> {
     fn compared(&mut self, op: crate::syntax::ast::CmpOp, a: &Sym, b: &Sym) -> Sym {
         let (a, b) = (self.go(a), self.go(b));
         if let (Some(l), Some(r)) = (num(&a), num(&b)) {
-            match super::decide::equal(l, r, op) {
+            match crate::decide::equality::equal(l, r, op) {
                 Ok(Some(v)) => return constant(Value::Bool(v)),
                 Ok(None) => {}
                 Err(m) => {

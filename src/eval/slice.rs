@@ -269,8 +269,8 @@ fn symbolic(
     picks: &[Picked],
     span: Span,
 ) -> Result<Typed, Diagnostic> {
-    use super::apply::Op;
     use super::ops::Sel;
+    use crate::seam::apply::Op;
     let vector = cols == 1;
     let entry = |i: usize, j: usize| -> Result<Value, Diagnostic> {
         let sel = if vector {
@@ -314,9 +314,9 @@ fn symbolic(
         .iter()
         .map(|&i| cs.iter().map(|&j| entry(i, j)).collect::<Result<_, _>>())
         .collect::<Result<_, _>>()?;
-    let v = match super::apply::block(&rows) {
+    let v = match crate::seam::apply::block(&rows) {
         Some(v) => v,
-        None => super::apply::block_numeric(&rows),
+        None => crate::seam::apply::block_numeric(&rows),
     }
     .map_err(|e| Diagnostic::error(ErrorKind::Domain, span, e.to_string()))?;
     // (a matrix, as the numbers typed first give it: a 2×2 block of a

@@ -4,22 +4,22 @@
 //! are bound to numbers, reading `X` substitutes them and evaluates what
 //! has become numeric, so `X` is then the product's value. A symbolic
 //! scalar, vector or matrix whose symbols all have numbers is computed by
-//! replaying how it was made ([`super::replay`]), as if the numbers had
+//! replaying how it was made ([`crate::decide::replay`]), as if the numbers had
 //! been typed first. Partly numeric expressions keep their symbols
 //! (`[1, 0, …] T_bc`). Types and frames are not recomputed: they were
 //! checked when the expression was built.
 use super::env::{Binding, Env};
-use super::replay;
 use super::resolve::resolve;
 use super::value::Sym;
 use super::value::Value;
 use crate::check::ty::Kind;
+use crate::decide::replay;
 use crate::diagnostics::Diagnostic;
 use crate::sym::Symbol;
 use crate::values::recipe;
 use std::rc::Rc;
 
-pub(crate) use super::apply::to_sym;
+pub(crate) use crate::seam::apply::to_sym;
 
 /// The value of a binding as of now: a value derived from symbols has the
 /// numbers bound since substituted ([`resolve`], [`formula`]; the items of

@@ -6,9 +6,9 @@
 //! (`subs(a < b, a, 1)`): the comparison of its sides so changed; of one
 //! decided over free symbols, its bool.
 
-use super::apply::Op;
 use super::value::Value;
 use crate::diagnostics::Diagnostic;
+use crate::seam::apply::Op;
 use crate::values::error::OpError;
 
 /// `name(x, rest…)` for a tuple `x` with a symbolic part, part by part;
@@ -39,7 +39,7 @@ pub(super) fn each_part(
         let [a, b] = sides.as_slice() else {
             return None;
         };
-        return Some(match super::decide::equal(a, b, cmp) {
+        return Some(match crate::decide::equality::equal(a, b, cmp) {
             Ok(Some(t)) => Ok(crate::values::recipe::compared(t, cmp, a, b)),
             Ok(None) => crate::values::waiting::make(cmp, a, b).ok_or_else(|| {
                 OpError::Message(format!("cannot decide `{}` without numbers", cmp.text()))
@@ -63,7 +63,7 @@ pub(super) fn each_part(
         refs.extend(rest);
         let kind = p.kind();
         let subs = (name == "subs")
-            .then(|| super::replay::subs_numbers(&refs, warnings))
+            .then(|| crate::decide::replay::subs_numbers(&refs, warnings))
             .flatten()
             .map(|v| {
                 v.map(|v| super::substitute::retag(v, &kind))

@@ -190,16 +190,25 @@ fn approx_difference<'a>(p: &'a Expr, q: &'a Expr) -> Vec<&'a Mono> {
 
 /// True when `a == b` is false only by rounding: every coefficient that
 /// differs is a float on one side at least, within 1e-12 of itself (or
-/// below 1e-15 of the largest coefficient: noise; of the largest however
-/// small, not of 1), and no kept call
+/// below 1e-15 of the largest coefficient of either matrix: noise; of the
+/// largest however small, not of 1), and no kept call
 /// differs (the answer then points to `≈`).
 pub fn rounding_only(a: &Value, b: &Value) -> bool {
     let Ok((x, y)) = sides(a, b) else {
         return false;
     };
     let mut any = false;
+    // (noise is measured against the largest coefficient of the whole
+    // matrix, as rounding is for numbers: an entry made only of noise,
+    // `1.2e-16 sin(a)` against 0, is rounding, issue 35)
+    let whole = x
+        .data
+        .iter()
+        .zip(&y.data)
+        .map(|(p, q)| largest(p, q))
+        .fold(0.0f64, f64::max);
     for (p, q) in x.data.iter().zip(&y.data) {
-        let tol = 1e-12 * largest(p, q);
+        let tol = 1e-12 * whole;
         for (m, c, d) in pairs(p, q) {
             let differs = if c.is_exact() && d.is_exact() {
                 c != d

@@ -1,6 +1,6 @@
 //! The errors of operations on values ([`super::ops`]): one enum whose
 //! text is the message a user sees; the interpreter adds the span and the
-//! kind of error (`Op::failure` in `eval::apply`). The bounds whose
+//! kind of error (`Op::failure` in `seam::apply`). The bounds whose
 //! breach is such an error are here too (re-exported by `ops`).
 
 use crate::check::ty::Kind;

@@ -71,7 +71,7 @@ pub const MAX_PENDING_DEPTH: u32 = 64;
 
 /// How a [`Later`] form is made: an operation's [`Pending`] recipe (the
 /// common case), or a closure (numbers bound later into a formula,
-/// `eval::replay`).
+/// `decide::replay`).
 enum Make {
     Op(Pending),
     Fn(Box<dyn FnOnce() -> Option<Mat>>),
@@ -79,7 +79,7 @@ enum Make {
 
 /// How an exact form is made: one operation of the evaluator's seam over
 /// its operands as they were (their numbers and their exact forms), run
-/// by `run`, the evaluator's exact path (`eval::exactness`, which `values`
+/// by `run`, the evaluator's exact path (`seam::exactness`, which `values`
 /// cannot name). Data, not a closure: recording it is one allocation with
 /// the operands inline.
 pub struct Pending {
@@ -164,7 +164,7 @@ impl Exact {
     /// `f` of the recipe this value was made by, when it has no exact
     /// form but was made by an operation over operands that may have one
     /// (`cos(1e-9)`, `sin(1)^2`): what `==` bounds in high precision
-    /// (`eval::certify`). None when it has an exact form (ask
+    /// (`decide::certify`). None when it has an exact form (ask
     /// [`Exact::form`] first), is a float, or was made otherwise.
     pub fn with_recipe<R>(&self, f: impl FnOnce(&Pending) -> R) -> Option<R> {
         let Exact::Later(l) = self else { return None };
@@ -208,7 +208,7 @@ impl Exact {
                             Make::Op(p) => {
                                 let m = (p.run)(&p.op, &p.args.refs(), &p.kind).filter(is_exact);
                                 // (no exact form: the recipe is kept, for
-                                // `==` to bound the value, `eval::certify`)
+                                // `==` to bound the value, `decide::certify`)
                                 if m.is_none() {
                                     l.make.set(Some(Make::Op(p)));
                                 }

@@ -191,7 +191,7 @@ pub fn membership(m: &Num, exact: &Exact, group: Group) -> Membership {
 /// Whether the floats of `v`, a 3×3 or 4×4 made from exact numbers, put
 /// the angle θ of its rotation block within rounding of π (cosθ < 0 and
 /// ‖sinθ ω̂‖ ≤ 1e-12): where the floats cannot tell the log's branch, and
-/// its exact form ([`half_turn`]) or certified balls (`eval::turn`) must.
+/// its exact form ([`half_turn`]) or certified balls (`decide::turn`) must.
 pub fn near_half_turn(v: &Value) -> bool {
     let Value::Num { m, exact, .. } = v else {
         return false;

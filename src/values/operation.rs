@@ -1,10 +1,10 @@
-//! The operations of the evaluator's seam (`eval::apply::Op`: every
+//! The operations of the evaluator's seam (`seam::apply::Op`: every
 //! operator and builtin call, "children, then apply") with their data
 //! owned, so that a value can keep how it was made: an exact number's
 //! form still to be worked out ([`super::exact::Pending`], LANGUAGE.md §3)
 //! and a symbolic value's recipe, replayed once its symbols have numbers
 //! ([`super::recipe::Step::Op`], §7). One list, so that the two records
-//! and the seam cannot drift apart; `eval::apply` turns an `Op` into an
+//! and the seam cannot drift apart; `seam::apply` turns an `Op` into an
 //! [`Operation`] and back.
 
 use super::ops::Sel;

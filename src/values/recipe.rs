@@ -3,10 +3,10 @@
 //! the numbers had been typed first). A symbolic scalar, vector or matrix
 //! ([`super::value::Value::Formula`]) keeps, beside its canonical form, the
 //! operations that made it: each step one operation of the evaluator's
-//! seam (`eval::apply::Op`) over the recipes of its operands, down to
+//! seam (`seam::apply::Op`) over the recipes of its operands, down to
 //! leaves that are numbers or formulas made by no replayable operation (a
 //! `given` symbol, a derivative). Once its symbols have numbers the value
-//! is computed by replaying these steps with numbers (`eval::replay`),
+//! is computed by replaying these steps with numbers (`decide::replay`),
 //! never from the expanded canonical form, whose large alternating
 //! coefficients can cancel in floating point: `(sin a + cos b)^30` at
 //! a = 0.3, b = −1.1 is 1.72376e-4 replayed and 1.72299e-4 expanded.

@@ -9,9 +9,9 @@
 
 use super::ball;
 use super::certify::{Memo, PRECISIONS, balls};
-use super::value::Value;
 use crate::lie::{Vec3, so3::HalfTurn};
 use crate::values::exact_mat::Entries;
+use crate::values::value::Value;
 
 /// The branch of the logarithm of the rotation block of `v` (3×3 or 4×4)
 /// decided by certified arithmetic on its recipe, where its floats put θ

@@ -8,10 +8,10 @@ use std::rc::Rc;
 
 use super::D;
 use crate::check::ty::Kind;
-use crate::eval::value::Value;
 use crate::syntax::ast::BinOp;
 use crate::values::exact::Exact;
 use crate::values::recipe::{Operation, Recipe, Step};
+use crate::values::value::Value;
 
 /// The kind of a derivative of a value of kind `k`: its shape only (the
 /// derivative of a rotation is no rotation); None for what has no shape.

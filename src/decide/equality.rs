@@ -4,16 +4,16 @@
 //! only), `a ≈ b` (within 1e-9 relative) and `a < b`, for numbers typed
 //! first and for numbers bound later alike (a comparison over symbols is
 //! decided again with their numbers, `super::replay`). Symbolic sides ask
-//! the canonical forms ([`super::formula::equal`]) or the trees
+//! the canonical forms ([`crate::values::formula::equal`]) or the trees
 //! ([`symbolic_equal`]).
 
-use super::apply::to_sym;
 use super::certify::Verdict;
-use super::value::{Sym, Value};
 use crate::check::ty::Kind;
 use crate::diagnostics::{Diagnostic, ErrorKind};
+use crate::seam::apply::to_sym;
 use crate::syntax::ast::{CmpOp, Span};
 use crate::values::num::Num;
+use crate::values::value::{Sym, Value};
 
 /// The tolerance of `a ≈ b`: every entry within 1e-9 · max(1, |a|∞, |b|∞).
 pub const APPROX_TOL: f64 = 1e-9;
@@ -26,7 +26,7 @@ pub fn equal(a: &Value, b: &Value, op: CmpOp) -> Result<Option<bool>, String> {
     let shown = |v: &Value| match v {
         Value::Formula {
             kind: Kind::Bool, ..
-        } => super::formula::constant_shown(v),
+        } => crate::values::formula::constant_shown(v),
         _ => None,
     };
     // (a comparison still waiting for numbers is neither true nor false)
@@ -46,7 +46,7 @@ pub fn equal(a: &Value, b: &Value, op: CmpOp) -> Result<Option<bool>, String> {
         (Value::Sym(_), _) | (_, Value::Sym(_)) => Ok(symbolic_equal(&to_sym(a), &to_sym(b), op)),
         // Symbolic scalars and matrices: by their canonical forms (§7).
         (Value::Formula { .. }, _) | (_, Value::Formula { .. }) => {
-            super::formula::equal(a, b, op == CmpOp::Approx)
+            crate::values::formula::equal(a, b, op == CmpOp::Approx)
         }
         (Value::Num { m: x, .. }, Value::Num { m: y, .. }) => {
             if x.shape() != y.shape() {
@@ -194,7 +194,7 @@ pub fn rounding_only(a: &Value, b: &Value) -> bool {
                 && !crate::values::exact_mat::entries_differ(a, b)
         }
         (Value::Formula { .. }, _) | (_, Value::Formula { .. }) => {
-            super::formula::rounding_only(a, b)
+            crate::values::formula::rounding_only(a, b)
         }
         (Value::Tuple(xs), Value::Tuple(ys)) if xs.len() == ys.len() => {
             xs.iter()

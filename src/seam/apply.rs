@@ -2,31 +2,31 @@
 //! one variant of [`Op`], and for each, in this one place, its
 //! type-and-frame rule ([`Op::rule`], the rules of LANGUAGE.md §6 in
 //! [`crate::check::rules`]), its numeric function ([`Op::numeric`], over
-//! [`super::ops`]), its exact form over symbolic scalars ([`Op::formula`],
+//! [`crate::values::ops`]), its exact form over symbolic scalars ([`Op::formula`],
 //! chapter 3 with symbols) and its form over `given` symbols
 //! ([`Op::symbolic`], LANGUAGE.md §7). [`Op::apply`] picks among the three
 //! value paths. The evaluator evaluates a node's children and applies its
 //! operation; the substitution of numbers into symbols
-//! (`super::substitute`) applies the same operations to the numbers it
+//! (`eval::substitute`) applies the same operations to the numbers it
 //! finds. Adding an operation is one variant, one rule, one numeric
 //! function and one symbolic form.
 //!
 //! The frame-mode policy (strict, warn, off: what a frame mismatch becomes)
-//! is [`super::env::FrameMode::refusal`] and [`super::env::FrameMode::warning`].
+//! is [`crate::eval::env::FrameMode::refusal`] and [`crate::eval::env::FrameMode::warning`].
 
 use std::f64::consts::PI;
 
-use super::formula;
-use super::ops::{self, OpError, Sel};
 use super::shapes::{block_type, bracket_type, index_type};
-use super::symbolic::{Fun, Part};
-use super::value::{Sym, Value};
 use crate::builtins::{Args, Builtin, Role};
 use crate::check::rules::{self, Operands, RuleError};
 use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
 use crate::syntax::ast::{BinOp, Span};
+use crate::values::formula;
+use crate::values::ops::{self, OpError, Sel};
 use crate::values::recipe::{self, Made, Step};
+use crate::values::symbolic::{Fun, Part};
+use crate::values::value::{Sym, Value};
 
 /// One operation of the language: what a node of an expression does with
 /// the values of its children.
@@ -455,9 +455,9 @@ pub struct Site<'w> {
     pub typed: Vec<(Ty, String)>,
     pub warnings: &'w mut Vec<Diagnostic>,
     /// The θ = π decision of a logarithm by certified arithmetic
-    /// (`super::turn`, given by the caller; None: by the floats).
+    /// (`crate::decide::turn`, given by the caller; None: by the floats).
     pub certified_turn: Option<fn(&Value) -> Option<crate::lie::so3::HalfTurn>>,
-    /// Entries by certified arithmetic (`super::turn::entries`).
+    /// Entries by certified arithmetic (`crate::decide::turn::entries`).
     pub certified_entries: Option<fn(&Value) -> Option<crate::values::exact_mat::Entries>>,
 }
 

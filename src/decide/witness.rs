@@ -32,16 +32,16 @@
 use std::collections::BTreeSet;
 
 use super::certify::{Verdict, equal};
-use super::value::Value;
 use crate::sym::expr::{Mono, Var};
 use crate::sym::{Expr, Symbol};
 use crate::values::exact::Exact;
 use crate::values::formula::mat_of;
+use crate::values::value::Value;
 
 /// What the sides of `a == b` are, found at points by certified
 /// arithmetic.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub(super) enum AtPoints {
+pub(crate) enum AtPoints {
     /// Certainly different at a point, by this much: not the same function.
     Differ(f64),
     /// Proven equal at enough points: the same function.
@@ -63,7 +63,7 @@ const MAX_POINTS: usize = 32;
 /// forms could not tell (a phase stands for a number with no exact form,
 /// `cos(t + 0.1)` against `cos(t + 0.1000001)`), so the points are asked
 /// whether or not a side rests on such a float.
-pub(super) fn at_points(a: &Value, b: &Value, open: bool) -> Option<AtPoints> {
+pub(crate) fn at_points(a: &Value, b: &Value, open: bool) -> Option<AtPoints> {
     if !open && !rests_on_float(a) && !rests_on_float(b) {
         return None;
     }
@@ -229,7 +229,7 @@ fn independent(monos: &[Mono], points: usize, index: &dyn Fn(&Symbol) -> Option<
 /// True when a side of `a == b` rests on a number with no exact form
 /// made from exact ones: a `false` read off its float may be rounding (the
 /// caller then cannot decide where [`at_points`] did not).
-pub(super) fn on_float(a: &Value, b: &Value) -> bool {
+pub(crate) fn on_float(a: &Value, b: &Value) -> bool {
     // (a float with no recipe on a side compares as a float, §7)
     (rests_on_float(a) || rests_on_float(b)) && !plain_float(a) && !plain_float(b)
 }

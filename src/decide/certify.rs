@@ -17,10 +17,10 @@ use std::collections::HashMap;
 
 use super::ball::{self, Ball};
 use super::balls::{Balls, call, hat, product};
-use super::value::Value;
 use crate::check::ty::Kind;
 use crate::syntax::ast::BinOp;
 use crate::values::exact::{Exact, Operation, Pending};
+use crate::values::value::Value;
 
 /// What certified arithmetic says of `a == b` on numbers.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -37,7 +37,7 @@ pub enum Verdict {
 }
 
 /// The precisions tried, in bits: the first that excludes 0 decides.
-pub(super) const PRECISIONS: [usize; 3] = [128, 256, 512];
+pub(crate) const PRECISIONS: [usize; 3] = [128, 256, 512];
 
 /// The verdict of certified arithmetic on `a == b` (numbers of one shape,
 /// one side at least with no exact form); None when a side has no recipe
@@ -155,12 +155,12 @@ fn same(a: &Value, b: &Value, depth: u32) -> bool {
 
 /// The balls of the values met in one evaluation, by their shared form.
 #[derive(Default)]
-pub(super) struct Memo(HashMap<*const (), Option<Balls>>);
+pub(crate) struct Memo(HashMap<*const (), Option<Balls>>);
 
 /// The balls of a number at `prec` bits: its exact form's, else its
 /// recipe's; None for a float, and for a ball that strays from the number's
 /// own floats (a recipe read otherwise than it was computed: never trusted).
-pub(super) fn balls(v: &Value, prec: usize, memo: &mut Memo) -> Option<Balls> {
+pub(crate) fn balls(v: &Value, prec: usize, memo: &mut Memo) -> Option<Balls> {
     let Value::Num { m, exact, .. } = v else {
         return None;
     };

@@ -13,17 +13,17 @@
 use std::collections::HashMap;
 use std::rc::Rc;
 
-use super::apply::{self, Op};
-use super::value::Value;
 use crate::check::ty::Kind;
 use crate::diagnostics::Diagnostic;
+use crate::seam::apply::{self, Op};
 use crate::sym::{Expr, Mat, Symbol};
 use crate::values::exact::Exact;
 use crate::values::recipe::{Recipe, Step, vague};
+use crate::values::value::Value;
 
 /// A symbol's number, if it has one now: the value bound to it, with its
 /// exact form (`a = 60 deg` is π/3, §3), as typed first.
-pub(super) type Lookup<'a> = &'a dyn Fn(&Symbol) -> Option<Value>;
+pub(crate) type Lookup<'a> = &'a dyn Fn(&Symbol) -> Option<Value>;
 
 /// A symbol's number as a float.
 fn float(at: Lookup, s: &Symbol) -> Option<f64> {
@@ -40,9 +40,9 @@ fn exact(at: Lookup, s: &Symbol) -> Option<Expr> {
 /// kind says only a shape), with its exact form when every symbol's
 /// number has one (`cos(a)` at a = π/3 is 1/2). A formula that is one
 /// symbol is the value bound to it. None when a symbol has no number.
-pub(super) fn canonical(kind: &Kind, m: &Mat, at: Lookup) -> Option<Value> {
+pub(crate) fn canonical(kind: &Kind, m: &Mat, at: Lookup) -> Option<Value> {
     if *kind == Kind::Bool {
-        return super::formula::constant_shown(&Value::Formula {
+        return crate::values::formula::constant_shown(&Value::Formula {
             kind: *kind,
             m: m.clone(),
             how: None,
@@ -83,7 +83,7 @@ pub(super) fn canonical(kind: &Kind, m: &Mat, at: Lookup) -> Option<Value> {
 
 /// `e` with the numbers bound so far put in: exact where the number has
 /// an exact form (`cos(b) x` at b = π/6 is `(√3/2) x`), else as a float.
-pub(super) fn put_numbers(e: &Expr, at: Lookup) -> Expr {
+pub(crate) fn put_numbers(e: &Expr, at: Lookup) -> Expr {
     let by = |s: &Symbol| exact(at, s);
     e.subst(&by).at_numbers(&|s: &Symbol| float(at, s))
 }
@@ -93,7 +93,7 @@ pub(super) fn put_numbers(e: &Expr, at: Lookup) -> Expr {
 /// ([`Op::with_exact`]); a builtin by its table row with its warnings
 /// (the gimbal lock of `euler_zyx`) put in `warnings`, and a group
 /// element with an inf or NaN entry refused.
-pub(super) fn typed_first(
+pub(crate) fn typed_first(
     op: Op,
     args: &[&Value],
     kind: &Kind,
@@ -127,14 +127,14 @@ pub(super) fn typed_first(
 }
 
 /// The kind of numbers by shape and, for a square matrix, by the group
-/// it is in ([`super::convert::classify`]).
-pub(super) fn classify(m: &crate::values::num::Num) -> Kind {
+/// it is in ([`crate::values::convert::classify`]).
+pub(crate) fn classify(m: &crate::values::num::Num) -> Kind {
     if m.shape() == (1, 1) {
         Kind::Scalar
     } else if m.ncols() == 1 {
         Kind::Vector(Some(m.nrows()))
     } else {
-        super::convert::classify(m)
+        crate::values::convert::classify(m)
     }
 }
 
@@ -147,7 +147,7 @@ pub(super) fn classify(m: &crate::values::num::Num) -> Kind {
 /// `cot u` at u = 0) is that step's error, as when the numbers are typed
 /// first: the canonical form, whose factors may have cancelled, must not
 /// answer in its place.
-pub(super) fn numbers(
+pub(crate) fn numbers(
     r: &Rc<Recipe>,
     at: Lookup,
     warnings: &mut Vec<Diagnostic>,
@@ -233,7 +233,11 @@ fn step(r: &Recipe, at: Lookup, memo: &mut Memo) -> Option<Value> {
             let [a, h, b] = refs.as_slice() else {
                 return None;
             };
-            return match super::list::range_items(a.as_scalar()?, h.as_scalar()?, b.as_scalar()?) {
+            return match crate::seam::range::range_items(
+                a.as_scalar()?,
+                h.as_scalar()?,
+                b.as_scalar()?,
+            ) {
                 Ok(v) => Some(v),
                 Err(e) => {
                     memo.failed.get_or_insert(e.to_string());
@@ -245,11 +249,11 @@ fn step(r: &Recipe, at: Lookup, memo: &mut Memo) -> Option<Value> {
             let [a, b] = refs.as_slice() else {
                 return None;
             };
-            return match super::decide::equal(a, b, *op) {
+            return match super::equality::equal(a, b, *op) {
                 Ok(Some(v)) => {
                     if !v
                         && *op == crate::syntax::ast::CmpOp::Eq
-                        && let Some(note) = super::decide::false_note(a, b, Default::default())
+                        && let Some(note) = super::equality::false_note(a, b, Default::default())
                     {
                         memo.warnings.push(note);
                     }
@@ -338,7 +342,7 @@ fn mat4(v: &Value) -> Option<crate::lie::Mat4> {
 /// its result's kind given by its rule on the operands' kinds, as the
 /// checker gives it when the numbers are typed first (`[1, 0; 0, 1]^-1`
 /// is SO(2)); an operation the rule refuses gets no kind from it.
-pub(super) fn as_typed(
+pub(crate) fn as_typed(
     op: Op,
     args: &[&Value],
     warnings: &mut Vec<Diagnostic>,
@@ -359,7 +363,7 @@ fn rule_kind(op: Op, args: &[&Value]) -> Option<Kind> {
         (Op::Arith(crate::syntax::ast::BinOp::Pow), [_, e]) => e.as_scalar(),
         _ => None,
     };
-    let hints = super::apply::Hints {
+    let hints = crate::seam::apply::Hints {
         exponent,
         ..Default::default()
     };
@@ -369,7 +373,7 @@ fn rule_kind(op: Op, args: &[&Value]) -> Option<Kind> {
 /// Whether a step's error says its numbers are outside its domain (the
 /// answer is a refusal) rather than that its operands are not what the
 /// numeric operation takes (then the canonical form answers).
-pub(super) fn refusal(e: &crate::values::error::OpError) -> bool {
+pub(crate) fn refusal(e: &crate::values::error::OpError) -> bool {
     use crate::values::error::OpError as E;
     !matches!(e, E::NotNumbers(_) | E::Operands)
 }
@@ -377,22 +381,22 @@ pub(super) fn refusal(e: &crate::values::error::OpError) -> bool {
 /// Recipe `r` with the numbers bound so far put into its leaves (a value
 /// read while some of its symbols are free keeps the numbers of the time
 /// it was read, as its canonical form does); unchanged parts are shared.
-pub(super) fn at_numbers(r: &Rc<Recipe>, at: Lookup) -> Rc<Recipe> {
+pub(crate) fn at_numbers(r: &Rc<Recipe>, at: Lookup) -> Rc<Recipe> {
     let mut memo = HashMap::new();
-    let leaf = |v: &Value| -> Option<Value> {
-        let Value::Formula { kind, m, .. } = v else {
-            return None;
+    let leaf =
+        |v: &Value| -> Option<Value> {
+            let Value::Formula { kind, m, .. } = v else {
+                return None;
+            };
+            let mut syms = Vec::new();
+            m.data.iter().for_each(|e| e.symbols(&mut syms));
+            if !syms.iter().any(|s| at(s).is_some()) {
+                return None;
+            }
+            Some(canonical(kind, m, at).unwrap_or_else(|| {
+                crate::values::formula::make(kind, m.map(|e| put_numbers(e, at)))
+            }))
         };
-        let mut syms = Vec::new();
-        m.data.iter().for_each(|e| e.symbols(&mut syms));
-        if !syms.iter().any(|s| at(s).is_some()) {
-            return None;
-        }
-        Some(
-            canonical(kind, m, at)
-                .unwrap_or_else(|| super::formula::make(kind, m.map(|e| put_numbers(e, at)))),
-        )
-    };
     crate::values::recipe::rebase(r, &leaf, &mut memo)
 }
 
@@ -403,7 +407,7 @@ pub(super) fn at_numbers(r: &Rc<Recipe>, at: Lookup) -> Rc<Recipe> {
 /// (`(a² − 1)/(a − 1)` is `1 + a`), would not be. None when `x` keeps
 /// other symbols or was made by no recorded steps (the canonical form is
 /// substituted).
-pub(super) fn subs_numbers(
+pub(crate) fn subs_numbers(
     args: &[&Value],
     warnings: &mut Vec<Diagnostic>,
 ) -> Option<Result<Value, String>> {
@@ -439,7 +443,7 @@ pub(super) fn subs_numbers(
 
 /// True when numbers `v` have the shape of formula `m` (a bool is what a
 /// comparison gives, a list what a range gives).
-pub(super) fn same_shape(v: &Value, m: &Mat) -> bool {
+pub(crate) fn same_shape(v: &Value, m: &Mat) -> bool {
     matches!(v, Value::Num { m: xs, .. } if xs.shape() == (m.rows, m.cols))
         || matches!(v, Value::Bool(_) | Value::List(_))
 }
@@ -447,7 +451,7 @@ pub(super) fn same_shape(v: &Value, m: &Mat) -> bool {
 /// A rotation, transform, Lie-algebra element or adjoint with an inf or NaN
 /// entry is not one: a domain error (`Rotz(inf)`), rather than a NaN matrix
 /// labelled SO(3).
-pub(super) fn not_finite_group(
+pub(crate) fn not_finite_group(
     v: &Value,
     name: &str,
     span: crate::span::Span,

@@ -3,11 +3,11 @@
 //! scalars are ordered: a vector or a matrix is a type error that says to
 //! compare a norm or an entry.
 
-use super::value::Value;
 use crate::check::rules::RuleError;
 use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::ErrorKind;
 use crate::syntax::ast::CmpOp;
+use crate::values::value::Value;
 
 /// The static rule of an order: both sides scalars (or not known yet);
 /// the result is a bool with no frames.

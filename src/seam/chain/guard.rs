@@ -13,15 +13,15 @@ use std::rc::Rc;
 use super::build::{node_k, zero};
 use super::{Chain, D};
 use crate::check::ty::Kind;
-use crate::eval::value::Value;
 use crate::values::recipe::{OnBranch, Operation, Recipe, Step};
+use crate::values::value::Value;
 
 /// `v`, the value of builtin `name` over `args` made with its recipe,
 /// marked as a closed form on a branch where it is one: the log of a
 /// symbolic transform. (The maps with rates need no mark; nor does the
 /// log of a rotation, whose closed forms are ω̂θ about a fixed axis: off
 /// the branch the log is ω̂(θ − 2πk), of the same derivative ω̂ dθ.)
-pub(in crate::eval) fn closed_form(name: &str, v: Value, args: &[&Value]) -> Value {
+pub(in crate::seam) fn closed_form(name: &str, v: Value, args: &[&Value]) -> Value {
     let transform = |a: &Value| matches!(a.kind().shape(), Some((Some(4), Some(4))));
     if !(matches!(name, "log" | "MatrixLog6") && args.first().is_some_and(|a| transform(a))) {
         return v;

@@ -4,15 +4,15 @@
 use std::collections::HashMap;
 use std::rc::Rc;
 
-use crate::eval::value::Value;
 use crate::values::recipe::Recipe;
+use crate::values::value::Value;
 
 /// How `subs(x, name, by)` is made: the recipe of `x` with `by` put for
 /// `name` in its leaves (each leaf substituted by the canonical engine), so
 /// that the numbers bound later replay the steps of `x` (§7), as
 /// `replay::subs_numbers` does when `by` leaves no symbol. None when `x` keeps
 /// no recipe or a leaf cannot be substituted (the result is then a leaf).
-pub(in crate::eval) fn substituted(x: &Value, name: &Value, by: &Value) -> Option<Rc<Recipe>> {
+pub(in crate::seam) fn substituted(x: &Value, name: &Value, by: &Value) -> Option<Rc<Recipe>> {
     let Value::Formula { how: Some(r), .. } = x else {
         return None;
     };

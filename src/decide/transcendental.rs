@@ -18,12 +18,12 @@
 
 use std::collections::{BTreeMap, HashMap};
 
-use super::value::Value;
 use crate::sym::Expr;
 use crate::sym::coef::{Coef, Rat, Surd};
 use crate::sym::expr::Var;
 use crate::syntax::ast::BinOp;
 use crate::values::exact::Operation;
+use crate::values::value::Value;
 use num_traits::Zero;
 
 /// A number in one of the two normal forms (the module's doc). The

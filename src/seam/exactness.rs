@@ -9,12 +9,12 @@
 use std::sync::OnceLock;
 
 use super::apply::Op;
-use super::formula;
-use super::value::Value;
 use crate::check::ty::Kind;
 use crate::sym::Mat;
 use crate::values::error::OpError;
 use crate::values::exact::{Exact, Operands, Operation, Pending};
+use crate::values::formula;
+use crate::values::value::Value;
 
 impl Op<'_> {
     /// [`Op::apply`] on two operands the evaluator gives away: the recipe
@@ -123,10 +123,11 @@ impl Op<'_> {
         }
         // (exp, log and the inverse trigonometric functions keep a recipe
         // of a number only: certified arithmetic and the normal forms of
-        // `super::transcendental` read it; of a matrix they are floats)
+        // `crate::decide::transcendental` read it; of a matrix they are floats)
         if let Op::Call(b, _) = self
             && scalar_only(b.name)
             && args.iter().any(|a| a.borrow().as_scalar().is_none())
+            && !(b.name == "exp" && args.iter().all(|a| rotation_or_motion(a.borrow())))
         {
             return Some(Exact::Float);
         }
@@ -182,8 +183,8 @@ fn run(op: &Operation, vals: &[&Value], kind: &Kind) -> Option<Mat> {
 
 /// Operation `op` by its exact path ([`Op::formula`]) over operands given
 /// as formulas `forms`: the canonical form of the result, exact or not
-/// (`super::lift` gives it forms with a symbol in them).
-pub(super) fn formula_of(op: &Operation, forms: Vec<Value>, kind: &Kind) -> Option<Mat> {
+/// (`crate::decide::lift` gives it forms with a symbol in them).
+pub(crate) fn formula_of(op: &Operation, forms: Vec<Value>, kind: &Kind) -> Option<Mat> {
     let refs: Vec<&Value> = forms.iter().collect();
     let out = match op {
         Operation::Block(widths) => {
@@ -241,6 +242,8 @@ fn exact_name(name: &str) -> bool {
                 | "Roty"
                 | "Rotz"
                 | "Rot"
+                | "MatrixExp3"
+                | "MatrixExp6"
                 | "cross"
                 | "dot"
                 | "det"
@@ -258,8 +261,22 @@ fn exact_name(name: &str) -> bool {
         )
 }
 
+/// An so(3) or se(3) matrix, or the 3- or 6-vector of one
+/// (`MatrixExp3((1, 0, 0) pi)`): `exp` of it, by Rodrigues (3.51) or
+/// Proposition 3.16, is exact at exact angles as `Rotx(pi)` is (issue 35:
+/// `exp([(1, 0, 0)] pi)` was a float matrix whose 1.2e-16 entries reached
+/// symbolic products and decided `==`). A general square matrix's
+/// exponential stays a float.
+fn rotation_or_motion(v: &Value) -> bool {
+    matches!(
+        v.kind(),
+        Kind::So3 | Kind::Se3 | Kind::Vector(Some(3)) | Kind::Twist | Kind::Screw
+    )
+}
+
 /// The builtins that keep a recipe of a number, not of a matrix (the
-/// matrix exponential and logarithm stay floats).
+/// matrix exponential and logarithm stay floats, but for `exp` of so(3)
+/// and se(3): [`rotation_or_motion`]).
 fn scalar_only(name: &str) -> bool {
     matches!(name, "exp" | "log" | "atan" | "asin" | "acos" | "atan2")
 }

@@ -14,12 +14,12 @@
 use std::collections::HashMap;
 
 use super::cyclotomic::{coef_poly, conductor_of, cyclotomic};
-use super::value::Value;
 use crate::sym::Mat;
 use crate::sym::coef::{Coef, Rat};
 use crate::sym::expr::{Expr, Symbol, Var};
 use crate::values::exact::Operation;
 use crate::values::recipe::{Recipe, Step};
+use crate::values::value::Value;
 use std::rc::Rc;
 
 /// What the canonical forms of both sides' recipes, with their angles
@@ -384,7 +384,7 @@ fn lifted(v: &Value, lift: &mut Lift, depth: u32) -> Option<Mat> {
                     how: None,
                 });
             }
-            super::exactness::formula_of(&p.op, forms, &p.kind)
+            crate::seam::exactness::formula_of(&p.op, forms, &p.kind)
         })
         .flatten();
     // (a number the symbolic engine cannot make exactly, atan 2 or
@@ -488,7 +488,7 @@ fn lifted_recipe(r: &Rc<Recipe>, lift: &mut Lift) -> Option<Mat> {
                     how: None,
                 });
             }
-            super::exactness::formula_of(op, forms, &r.kind)
+            crate::seam::exactness::formula_of(op, forms, &r.kind)
         }
         _ => None,
     });

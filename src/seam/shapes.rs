@@ -2,13 +2,13 @@
 //! or build them: indexing `x[i]`, the book's bracket `[x]` (3.30, 3.70)
 //! and block matrices `[a, b; c, d]`. [`super::apply::Op::rule`] uses them.
 
-use super::ops::Sel;
 use crate::check::rules::RuleError;
 use crate::check::ty::{Frames, Kind, Ty};
+use crate::values::ops::Sel;
 
 /// The rule of `x[i]`, `M[i, j]`, `M[:, j]`: a tuple's part, a column
 /// in the outer frame of the matrix, a row, or an entry.
-pub(super) fn index_type(t: &Ty, sels: &[Sel]) -> Result<Ty, RuleError> {
+pub(crate) fn index_type(t: &Ty, sels: &[Sel]) -> Result<Ty, RuleError> {
     let outer = match t.frames.outer() {
         Some(a) => Frames::One(*a),
         None => Frames::None,
@@ -37,7 +37,7 @@ pub(super) fn index_type(t: &Ty, sels: &[Sel]) -> Result<Ty, RuleError> {
 /// or 6-vector is in so(3) or se(3) (3.30, 3.70), in the vector's frame;
 /// anything else is itself.
 #[inline(always)]
-pub(super) fn bracket_type(t: &Ty) -> Ty {
+pub(crate) fn bracket_type(t: &Ty) -> Ty {
     match t.kind.vec_len() {
         Some(3) => Ty::new(Kind::So3, t.frames),
         Some(6) => Ty::new(Kind::Se3, t.frames),
@@ -49,7 +49,7 @@ pub(super) fn bracket_type(t: &Ty) -> Ty {
 /// `widths` entries in each: the book's bracket of one vector, a column
 /// vector of one row of numbers, else a block matrix whose frames are the
 /// one pair tag inside it (`[R_sb, p_sb; 0, 0, 0, 1]` is {s}←{b}).
-pub(super) fn block_type(widths: &[usize], args: &[&Ty]) -> Ty {
+pub(crate) fn block_type(widths: &[usize], args: &[&Ty]) -> Ty {
     if let [t] = args {
         return bracket_type(t);
     }

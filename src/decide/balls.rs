@@ -9,34 +9,34 @@ use super::ball::{self, Ball};
 
 /// A matrix of balls, row by row.
 #[derive(Clone)]
-pub(super) struct Balls {
-    pub(super) rows: usize,
-    pub(super) cols: usize,
-    pub(super) data: Vec<Ball>,
+pub(crate) struct Balls {
+    pub(crate) rows: usize,
+    pub(crate) cols: usize,
+    pub(crate) data: Vec<Ball>,
 }
 
 impl Balls {
-    pub(super) fn scalar(b: Ball) -> Balls {
+    pub(crate) fn scalar(b: Ball) -> Balls {
         Balls {
             rows: 1,
             cols: 1,
             data: vec![b],
         }
     }
-    pub(super) fn at(&self, i: usize, j: usize) -> &Ball {
+    pub(crate) fn at(&self, i: usize, j: usize) -> &Ball {
         &self.data[i * self.cols + j]
     }
-    pub(super) fn one(&self) -> Option<&Ball> {
+    pub(crate) fn one(&self) -> Option<&Ball> {
         (self.data.len() == 1).then(|| &self.data[0])
     }
-    pub(super) fn map(&self, f: impl Fn(&Ball) -> Option<Ball>) -> Option<Balls> {
+    pub(crate) fn map(&self, f: impl Fn(&Ball) -> Option<Ball>) -> Option<Balls> {
         Some(Balls {
             rows: self.rows,
             cols: self.cols,
             data: self.data.iter().map(f).collect::<Option<_>>()?,
         })
     }
-    pub(super) fn transpose(&self) -> Balls {
+    pub(crate) fn transpose(&self) -> Balls {
         let data = (0..self.cols)
             .flat_map(|j| (0..self.rows).map(move |i| (i, j)))
             .map(|(i, j)| self.at(i, j).clone())
@@ -47,7 +47,7 @@ impl Balls {
             data,
         }
     }
-    pub(super) fn column(data: Vec<Ball>) -> Balls {
+    pub(crate) fn column(data: Vec<Ball>) -> Balls {
         Balls {
             rows: data.len(),
             cols: 1,
@@ -57,7 +57,7 @@ impl Balls {
 }
 
 /// The matrix product `a b`.
-pub(super) fn product(a: &Balls, b: &Balls, prec: usize) -> Option<Balls> {
+pub(crate) fn product(a: &Balls, b: &Balls, prec: usize) -> Option<Balls> {
     if a.cols != b.rows {
         return None;
     }
@@ -79,7 +79,7 @@ pub(super) fn product(a: &Balls, b: &Balls, prec: usize) -> Option<Balls> {
 }
 
 /// [ω] of ω = (x, y, z) (3.30).
-pub(super) fn hat(w: &[Ball]) -> Balls {
+pub(crate) fn hat(w: &[Ball]) -> Balls {
     let z = Ball::exact(dashu_float::Repr::zero());
     let n = ball::neg;
     Balls {
@@ -122,7 +122,7 @@ fn transform(r: &Balls, p: &Balls) -> Balls {
 
 /// A builtin on balls: the scalar functions, the rotations about the
 /// axes, and the vector and matrix operations of the exact path.
-pub(super) fn call(name: &str, args: &[Balls], prec: usize) -> Option<Balls> {
+pub(crate) fn call(name: &str, args: &[Balls], prec: usize) -> Option<Balls> {
     let row = crate::builtins::lookup(name)?;
     let one = |i: usize| args.get(i).and_then(Balls::one);
     let scalar = |f: fn(&Ball, usize) -> Option<Ball>| {

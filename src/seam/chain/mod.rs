@@ -27,11 +27,11 @@ use subs::substituted;
 use std::collections::HashMap;
 use std::rc::Rc;
 
-use super::value::Value;
 use crate::check::ty::Kind;
 use crate::syntax::ast::BinOp;
 use crate::values::exact::Exact;
 use crate::values::recipe::{Operation, Recipe, Step};
+use crate::values::value::Value;
 
 /// A derivative: None for 0 (so that products with it vanish).
 type D = Option<Rc<Recipe>>;

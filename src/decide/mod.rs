@@ -1,0 +1,25 @@
+//! Deciding `a == b`, `a ≈ b` and `a < b` (LANGUAGE.md §3, §7; issue 21:
+//! never a wrong answer), below the interpreter: exact forms where both
+//! sides have them (`equality`); for numbers made from exact ones,
+//! certified ball arithmetic at 128 to 512 bits (`certify` over
+//! `ball` and `balls`) and proofs by lifting the recipe to the
+//! symbolic engine (`lift`, in cyclotomic fields `cyclotomic`; by exp
+//! and log, `transcendental`); over symbols, the sides compared at
+//! points (`witness`), which replays how each side was made with
+//! numbers (`replay`: the same replay makes a value bound later a
+//! number, and a comparison replayed is decided here again, so the two
+//! live in one room); the half-turn branch of a rotation's log
+//! (`turn`, §3.2.3.3) and the order of scalars (`order`). Imports
+//! the operation seam ([`crate::seam`]), nothing from the interpreter.
+
+pub(crate) mod ball;
+pub(crate) mod balls;
+pub(crate) mod certify;
+pub(crate) mod cyclotomic;
+pub(crate) mod equality;
+pub(crate) mod lift;
+pub(crate) mod order;
+pub(crate) mod replay;
+pub(crate) mod transcendental;
+pub(crate) mod turn;
+pub(crate) mod witness;

@@ -1,0 +1,80 @@
+//! Issue 35's wrong answers, each now right, refused or "cannot decide"
+//! (LANGUAGE.md §3, §7): every spelling of a rotation at an exact angle is
+//! exact (`Rot(x, pi)`, `exp([(1, 0, 0)] pi)`, `MatrixExp3`, as `Rotx(pi)`
+//! is), and a float coefficient that cancels to rounding never decides
+//! `==` over symbols.
+
+mod common;
+use common::outputs;
+
+/// The last line `src` prints.
+fn last(src: &str) -> String {
+    let (out, _) = outputs(src);
+    out.lines().last().unwrap_or_default().trim().to_string()
+}
+
+#[test]
+fn exercise_3_12b_holds_in_every_spelling_of_the_half_turn() {
+    // Rot(x, π) Rot(z, −a) Rot(x, π)⁻¹ = Rot(z, a): true, as with Rotx(π)
+    for half_turn in [
+        "Rotx(pi)",
+        "Rot(x, pi)",
+        "Rot((1, 0, 0), pi)",
+        "exp([(1, 0, 0)] pi)",
+        "MatrixExp3((1, 0, 0) pi)",
+        "Rot(x, 180 deg)",
+    ] {
+        let src = format!("given a\nA = Rot(z, a)\nB = Rot(z, -a)\nA {half_turn} == {half_turn} B");
+        assert_eq!(last(&src), "true", "{src}");
+        // and at a quarter turn it is not an identity
+        let quarter = half_turn.replace("pi", "pi/2").replace("180", "90");
+        let src = format!("given a\nA = Rot(z, a)\nB = Rot(z, -a)\nA {quarter} == {quarter} B");
+        assert_eq!(last(&src), "false", "{src}");
+    }
+}
+
+#[test]
+fn a_rotation_at_an_exact_angle_prints_no_rounding_noise() {
+    for quarter in [
+        "Rot(x, pi/2)",
+        "exp([(1, 0, 0)] pi/2)",
+        "MatrixExp3((1, 0, 0) pi/2)",
+    ] {
+        let (out, _) = outputs(&format!("given a\nRotz(a) {quarter}"));
+        assert!(!out.contains("e-1"), "{quarter}: {out}");
+        assert!(out.contains("[cos(a), 0, sin(a)"), "{quarter}: {out}");
+        // the same value as the axis rotation, decided exactly
+        let src = format!("given a\nRotz(a) {quarter} == Rotz(a) Rotx(pi/2)");
+        assert_eq!(last(&src), "true", "{src}");
+    }
+    // exact at exact angles about any axis: sin(π/3) is √3/2, not 0.866
+    let src = "exp([(0, 0, 1)] pi/3) == Rotz(pi/3)\nRot(z, pi/3) == Rotz(pi/3)";
+    assert_eq!(outputs(src).0, "true\ntrue\n");
+    // a non-special angle is still right (proven, or equal floats)
+    assert_eq!(
+        last("exp([(1, 2, 3)] 1) == Rot((1, 2, 3), sqrt(14))"),
+        "true"
+    );
+    assert_eq!(last("exp([(1, 0, 0)] 1) == Rotx(1.0001)"), "false");
+}
+
+#[test]
+fn a_float_coefficient_that_cancels_to_rounding_does_not_decide() {
+    // G is Rotx(π) in floats with no exact form (a numeric log, then exp):
+    // its 1.2e-16 entries make A G and G B differ by rounding only
+    let src = "given a\nG = exp([MatrixLog3(Rotx(pi))]);\nA = Rot(z, a);\nB = Rot(z, -a);\nd = A G == G B";
+    let (out, err) = outputs(src);
+    assert!(!out.contains("false") && !out.contains("true"), "{out}");
+    assert!(
+        err.contains("cannot decide whether they are equal"),
+        "{err}"
+    );
+    // once a has a number, floats compare as floats, with the rounding note
+    let (out, err) = outputs(&format!("{src}\na = 0.3\nd"));
+    assert_eq!(out.lines().last(), Some("false"), "{out}");
+    assert!(err.contains("differ by rounding only"), "{err}");
+    // a real difference is still false
+    let src =
+        "given a\nG = exp([MatrixLog3(Rotx(3))]);\nA = Rot(z, a);\nB = Rot(z, -a);\nA G == G B";
+    assert_eq!(last(src), "false");
+}
