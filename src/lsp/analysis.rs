@@ -147,11 +147,9 @@ impl Analysis {
     /// whose statement starts at or before it (a use reads the binding
     /// made before it), else the first (a name used before it is bound).
     pub fn def_at(&self, name: &str, offset: usize) -> Option<&Def> {
-        let defs = self.defs.iter().filter(|d| d.name == name);
+        let mut defs = self.defs.iter().filter(|d| d.name == name);
         let first = defs.clone().next();
-        defs.filter(|d| d.statement.start <= offset)
-            .last()
-            .or(first)
+        defs.rfind(|d| d.statement.start <= offset).or(first)
     }
 }
 
