@@ -385,3 +385,36 @@ fn exit_without_shutdown_is_an_error_and_a_bad_request_is_answered() {
     };
     assert_eq!(code, Some(1));
 }
+
+/// The TextMate grammar (editors/vscode/) colours every builtin as one: its
+/// `builtin` pattern lists exactly the names of the builtin table.
+#[test]
+fn the_editor_grammar_lists_every_builtin() {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/editors/vscode/syntaxes/chasles.tmLanguage.json"
+    );
+    let g: Value = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+    let pattern = g["repository"]["builtin"]["match"].as_str().unwrap();
+    let inner = pattern
+        .split("(?:")
+        .nth(1)
+        .unwrap()
+        .split(')')
+        .next()
+        .unwrap();
+    let mut listed: Vec<String> = inner.split('|').map(|n| n.replace('\\', "")).collect();
+    listed.sort();
+    let mut names: Vec<String> = chasles::builtins::all_names()
+        .into_iter()
+        .map(String::from)
+        .collect();
+    names.sort();
+    names.dedup();
+    let missing: Vec<&String> = names.iter().filter(|n| !listed.contains(n)).collect();
+    let extra: Vec<&String> = listed.iter().filter(|n| !names.contains(n)).collect();
+    assert!(
+        missing.is_empty() && extra.is_empty(),
+        "{path}: the builtin pattern lacks {missing:?} and has {extra:?} (longest names first)"
+    );
+}
