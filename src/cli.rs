@@ -195,6 +195,9 @@ enum Command {
         #[command(subcommand)]
         action: Option<KernelAction>,
     },
+    /// The language server (LANGUAGE.md §15): diagnostics, hover,
+    /// completion and definitions for `.chs` files, over stdio.
+    Lsp,
 }
 
 #[derive(Subcommand, Debug)]
@@ -396,7 +399,7 @@ where
     };
     match (&cli.command, &cli.eval) {
         (Some(_), Some(_)) => {
-            emit_err("chasles: -e cannot be combined with a command (run, check, kernel)\n");
+            emit_err("chasles: -e cannot be combined with a command (run, check, kernel, lsp)\n");
             2
         }
         (None, Some(src)) => match eval_text(src) {
@@ -421,6 +424,7 @@ where
             }),
             None,
         ) => kernel(connection_file.as_deref(), action.as_ref(), &cli.opts),
+        (Some(Command::Lsp), None) => crate::lsp::serve(cli.opts.settings()),
         (None, None) => {
             if std::io::stdin().is_terminal() {
                 let gate = match gate(&cli.opts) {

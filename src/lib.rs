@@ -7,8 +7,8 @@
 //! ```text
 //! cli           the binary's dispatcher (flags, subcommands): the one
 //!               module above the front ends, starting one of them
-//! repl, kernel  front ends (the terminal; the Jupyter kernel); none
-//!               imports another
+//! repl, kernel, front ends (the terminal; the Jupyter kernel; the
+//! lsp           language server); none imports another
 //! frontend      what the front ends share: `:` commands, help text, the
 //!               statement runner that records each statement's writes,
 //!               completion
@@ -76,7 +76,8 @@
 //! - [`effects`]: the gate every file write goes through;
 //! - [`frontend`]: the `:` commands, help and completion every front end
 //!   shares;
-//! - [`cli`], [`repl`], [`kernel`]: the dispatcher and the front ends.
+//! - [`cli`], [`repl`], [`kernel`], [`lsp`]: the dispatcher and the front
+//!   ends.
 #![forbid(unsafe_code)]
 // Errors carry spans, labels and help text; they are rare, so their size is not worth boxing.
 #![allow(clippy::result_large_err)]
@@ -97,6 +98,7 @@ pub mod eval;
 pub mod frontend;
 pub mod kernel;
 pub mod lie;
+pub mod lsp;
 pub mod mech;
 pub mod output;
 pub mod repl;

@@ -1,0 +1,219 @@
+//! One check of a document (LANGUAGE.md §15): the whole text run through a
+//! session in [`Mode::Check`] — kinds and frames inferred, no number
+//! computed, no file written (the gate denies every write and the run
+//! performs no effect), under an evaluation budget with a deadline — and
+//! what the editor needs from it: every diagnostic, and where each name
+//! was bound with its type and frames (§6).
+
+use std::time::Duration;
+
+use crate::budget::Budget;
+use crate::check::ty::{Kind, Ty};
+use crate::diagnostics::Diagnostic;
+use crate::effects::Gate;
+use crate::eval::env::Mode;
+use crate::session::{Session, Settings};
+use crate::span::Span;
+
+use super::text::is_name_char;
+
+/// The time one check may take before it stops with a domain error naming
+/// the budget (a check computes no numbers, so this is a guard, not a
+/// limit met in practice: a 2,000-line script checks in milliseconds).
+pub const CHECK_TIME: Duration = Duration::from_secs(2);
+
+/// What a definition binds.
+#[derive(Debug, Clone, PartialEq)]
+pub enum DefKind {
+    /// `name = expr`, `(a, b) = expr`, `derive T_ab`.
+    Binding,
+    /// `given T_ab : SE3`: a symbol with a type and frames, no numbers (§7).
+    Given,
+    /// `f(x, y) = expr`, with its parameters.
+    Function(Vec<String>),
+}
+
+/// A name bound by a statement that checked without error.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Def {
+    pub name: String,
+    /// The name where the statement writes it.
+    pub span: Span,
+    /// The whole statement.
+    pub statement: Span,
+    /// Its kind and frames (§6) as the check inferred them.
+    pub ty: Ty,
+    pub kind: DefKind,
+}
+
+/// The result of checking one document.
+#[derive(Debug, Clone, Default)]
+pub struct Analysis {
+    /// Errors (one per failing statement; the check goes on past them),
+    /// warnings and notes, in the order of the text.
+    pub diagnostics: Vec<Diagnostic>,
+    /// The definitions, in the order of the text.
+    pub defs: Vec<Def>,
+    /// The statements checked.
+    pub statements: usize,
+}
+
+/// A statement's outcome as far as the editor keeps it.
+struct Bound {
+    names: Vec<String>,
+    statement: Span,
+    ty: Ty,
+    parts: Vec<Ty>,
+    prints: bool,
+}
+
+impl Analysis {
+    /// Checks `text` with `settings` (frame checking as set, `strict` by
+    /// default).
+    pub fn of(text: &str, settings: Settings) -> Analysis {
+        let mut session = Session::new(settings);
+        session.gate = Gate::deny();
+        session.budget = Budget::new().with_timeout(CHECK_TIME);
+        let mut out = Analysis::default();
+        let mut bound = Vec::new();
+        session.evaluate(text, Mode::Check, true, |r| {
+            out.statements += 1;
+            out.diagnostics.extend(r.warnings.iter().cloned());
+            match &r.result {
+                Err(d) => out.diagnostics.push(d.clone()),
+                Ok(o) => bound.push(Bound {
+                    names: o.names.iter().map(|n| n.to_string()).collect(),
+                    statement: o.span,
+                    ty: o.ty,
+                    parts: o.parts.clone(),
+                    prints: o.prints,
+                }),
+            }
+        });
+        let env = &session.env;
+        for b in bound {
+            let stmt = &text[b.statement.start.min(text.len())..b.statement.end.min(text.len())];
+            if b.names.is_empty() && b.ty.kind == Kind::Function {
+                let name: String = stmt.chars().take_while(|c| is_name_char(*c)).collect();
+                let params = env
+                    .func(name.as_str())
+                    .map(|f| f.params.clone())
+                    .unwrap_or_default();
+                out.defs.push(Def {
+                    span: Span::new(b.statement.start, b.statement.start + name.len()),
+                    name,
+                    statement: b.statement,
+                    ty: b.ty,
+                    kind: DefKind::Function(params),
+                });
+                continue;
+            }
+            let given = !b.prints && stmt.trim_start().starts_with("given");
+            let names = if given && b.names.is_empty() {
+                given_names(stmt)
+            } else {
+                b.names
+            };
+            let many = names.len();
+            for (i, name) in names.into_iter().enumerate() {
+                let ty = if given {
+                    env.get(name.as_str()).map_or(b.ty, |x| x.ty)
+                } else if many == 1 {
+                    b.ty
+                } else if b.parts.len() == many {
+                    b.parts[i]
+                } else {
+                    env.get(name.as_str()).map_or(b.ty, |x| x.ty)
+                };
+                let at =
+                    find_word(stmt, &name).map_or(b.statement.start, |i| b.statement.start + i);
+                out.defs.push(Def {
+                    span: Span::new(at, at + name.len()),
+                    name,
+                    statement: b.statement,
+                    ty,
+                    kind: if given {
+                        DefKind::Given
+                    } else {
+                        DefKind::Binding
+                    },
+                });
+            }
+        }
+        out
+    }
+
+    /// The definition of `name` in force at byte `offset`: the last one
+    /// whose statement starts at or before it (a use reads the binding
+    /// made before it), else the first (a name used before it is bound).
+    pub fn def_at(&self, name: &str, offset: usize) -> Option<&Def> {
+        let mut defs = self.defs.iter().filter(|d| d.name == name);
+        let first = defs.clone().next();
+        defs.rfind(|d| d.statement.start <= offset).or(first)
+    }
+}
+
+/// The names `given a, b(t) : T` declares, as written.
+fn given_names(stmt: &str) -> Vec<String> {
+    let rest = stmt.trim_start().trim_start_matches("given");
+    let list = rest.split(':').next().unwrap_or("");
+    list.split(',')
+        .map(|part| {
+            part.trim()
+                .chars()
+                .take_while(|c| is_name_char(*c))
+                .collect::<String>()
+        })
+        .filter(|n| !n.is_empty())
+        .collect()
+}
+
+/// The byte offset of `word` in `text` standing alone (not part of a longer
+/// name).
+fn find_word(text: &str, word: &str) -> Option<usize> {
+    let mut from = 0;
+    while let Some(i) = text[from..].find(word).map(|i| i + from) {
+        let before = text[..i].chars().next_back();
+        let after = text[i + word.len()..].chars().next();
+        if !before.is_some_and(is_name_char) && !after.is_some_and(is_name_char) {
+            return Some(i);
+        }
+        from = i + word.len();
+    }
+    None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn bindings_givens_functions_and_errors() {
+        let src = "given T_ab, T_bc : SE3\nT_ac = T_ab * T_bc\nf(x) = 2 x\nT_ab * T_ac\n(w, th) = AxisAng3((0, 0, 2))\n";
+        let a = Analysis::of(src, Settings::default());
+        let names: Vec<&str> = a.defs.iter().map(|d| d.name.as_str()).collect();
+        assert_eq!(names, ["T_ab", "T_bc", "T_ac", "f", "w", "th"]);
+        assert_eq!(a.defs[1].kind, DefKind::Given);
+        assert_eq!(a.defs[1].ty.to_string(), "SE(3) {b}←{c}");
+        assert_eq!(&src[a.defs[1].span.start..a.defs[1].span.end], "T_bc");
+        assert_eq!(a.defs[2].ty.to_string(), "SE(3) {a}←{c}");
+        assert_eq!(a.defs[3].kind, DefKind::Function(vec!["x".into()]));
+        assert_eq!(a.statements, 5);
+        // The one error: T_ab * T_ac has {b} against {a}.
+        let frame: Vec<_> = a
+            .diagnostics
+            .iter()
+            .filter(|d| d.severity == crate::diagnostics::Severity::Error)
+            .collect();
+        assert_eq!(frame.len(), 1);
+        assert_eq!(frame[0].kind.as_str(), "frame");
+        let line4 = src.find("T_ab * T_ac").unwrap();
+        assert!(frame[0].span.start >= line4 && frame[0].span.end <= line4 + 11);
+        // Where a name is read: the binding before it.
+        let use_at = src.rfind("T_ac").unwrap();
+        assert_eq!(
+            a.def_at("T_ac", use_at).unwrap().statement.start,
+            src.find("T_ac").unwrap()
+        );
+    }
+}

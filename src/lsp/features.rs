@@ -1,0 +1,279 @@
+//! What the server answers about a checked document (LANGUAGE.md §15):
+//! diagnostics with their help, hover, completion, go to definition and
+//! document symbols, each computed from the text and its [`Analysis`],
+//! with no protocol I/O (the loop in [`super`] does that).
+
+use lsp_types::{
+    CompletionItem, CompletionItemKind, DiagnosticRelatedInformation, DiagnosticSeverity,
+    DocumentSymbol, Documentation, Hover, HoverContents, Location, MarkupContent, MarkupKind,
+    NumberOrString, SymbolKind, Uri,
+};
+
+use crate::builtins;
+use crate::check::ty::{Frame, Frames};
+use crate::diagnostics::{Diagnostic, Severity};
+use crate::frontend::{commands::COMMANDS, help, keywords};
+use crate::session::Settings;
+
+use super::analysis::{Analysis, Def, DefKind};
+use super::text::{Document, Encoding, is_name_char};
+
+/// The words of the language offered by completion (statements, units,
+/// constants).
+const KEYWORDS: &[&str] = &[
+    "given", "derive", "explain", "mech", "assert", "for", "in", "pi", "deg", "rad", "true",
+    "false",
+];
+
+/// A diagnostic as the protocol carries it: the primary span as the range,
+/// the kind (`frame`, `syntax`, …) as the code, each label and the help as
+/// related information pointing into the document.
+pub fn diagnostic(
+    d: &Diagnostic,
+    doc: &Document,
+    uri: &Uri,
+    enc: Encoding,
+) -> lsp_types::Diagnostic {
+    let at = |span| Location::new(uri.clone(), doc.range(span, enc));
+    let mut related = Vec::new();
+    if !d.primary_label.is_empty() {
+        related.push(DiagnosticRelatedInformation {
+            location: at(d.span),
+            message: d.primary_label.clone(),
+        });
+    }
+    for l in &d.labels {
+        related.push(DiagnosticRelatedInformation {
+            location: at(l.span),
+            message: l.message.clone(),
+        });
+    }
+    if let Some(h) = &d.help {
+        related.push(DiagnosticRelatedInformation {
+            location: at(d.span),
+            message: format!("help: {h}"),
+        });
+    }
+    lsp_types::Diagnostic {
+        range: doc.range(d.span, enc),
+        severity: Some(match d.severity {
+            Severity::Error => DiagnosticSeverity::ERROR,
+            Severity::Warning => DiagnosticSeverity::WARNING,
+            Severity::Note => DiagnosticSeverity::INFORMATION,
+        }),
+        code: Some(NumberOrString::String(d.kind.as_str().into())),
+        source: Some("chasles".into()),
+        message: d.message.clone(),
+        related_information: (!related.is_empty()).then_some(related),
+        ..Default::default()
+    }
+}
+
+/// What a binding's frames mean, in the book's words (§3.2, §3.3).
+fn frames_meaning(f: &Frames) -> Option<String> {
+    Some(match f {
+        Frames::None => return None,
+        Frames::One(a) => format!("expressed in {{{a}}}"),
+        Frames::Pair(a, b) => {
+            format!("maps coordinates in {{{b}}} to {{{a}}}: {{{b}}} as seen from {{{a}}}")
+        }
+        Frames::Disp(a) => format!("a displacement expressed in {{{a}}}"),
+        Frames::Transposed(a, b) => {
+            format!("the transpose of a map {{{a}}}←{{{b}}}: not a map between frames")
+        }
+    })
+}
+
+/// The hover of a definition: its type and frames, where it was bound.
+fn def_hover(def: &Def, doc: &Document, enc: Encoding) -> String {
+    let line = doc.position(def.statement.start, enc).line + 1;
+    let stmt = doc.text[def.statement.start..def.statement.end.min(doc.text.len())].trim();
+    let mut out = match &def.kind {
+        DefKind::Function(params) => format!("**{}**({}) : function", def.name, params.join(", ")),
+        DefKind::Given => format!(
+            "**{}** : `{}` (given: a symbol, no numbers)",
+            def.name, def.ty
+        ),
+        DefKind::Binding => format!("**{}** : `{}`", def.name, def.ty),
+    };
+    if let Some(m) = frames_meaning(&def.ty.frames) {
+        out.push_str(&format!("\n\n{m}"));
+    }
+    let shown: String = stmt.chars().take(120).collect();
+    out.push_str(&format!("\n\nbound on line {line}: `{shown}`"));
+    out
+}
+
+/// The hover at byte `offset`: a binding's type, frames and definition; a
+/// builtin's `:help` text (signature, book section, meaning, example); a
+/// keyword's help.
+pub fn hover(doc: &Document, analysis: &Analysis, offset: usize, enc: Encoding) -> Option<Hover> {
+    let span = doc.word_at(offset)?;
+    let word = &doc.text[span.start..span.end];
+    let text = if let Some(def) = analysis.def_at(word, offset) {
+        def_hover(def, doc, enc)
+    } else if let Some(b) = builtins::lookup(word) {
+        format!("```\n{}\n```", help::function(b, &Settings::default()))
+    } else {
+        keywords::keyword(word)?.to_string()
+    };
+    Some(Hover {
+        contents: HoverContents::Markup(MarkupContent {
+            kind: MarkupKind::Markdown,
+            value: text,
+        }),
+        range: Some(doc.range(span, enc)),
+    })
+}
+
+/// The location of the definition of the name at `offset`.
+pub fn definition(
+    doc: &Document,
+    analysis: &Analysis,
+    offset: usize,
+    uri: &Uri,
+    enc: Encoding,
+) -> Option<Location> {
+    let span = doc.word_at(offset)?;
+    let def = analysis.def_at(&doc.text[span.start..span.end], offset)?;
+    Some(Location::new(uri.clone(), doc.range(def.span, enc)))
+}
+
+/// The bindings and user functions of the document, in order.
+#[allow(deprecated)] // `DocumentSymbol::deprecated` is a field the protocol still requires
+pub fn symbols(doc: &Document, analysis: &Analysis, enc: Encoding) -> Vec<DocumentSymbol> {
+    analysis
+        .defs
+        .iter()
+        .map(|d| DocumentSymbol {
+            name: d.name.clone(),
+            detail: Some(match &d.kind {
+                DefKind::Function(p) => format!("({})", p.join(", ")),
+                _ => d.ty.to_string(),
+            }),
+            kind: match d.kind {
+                DefKind::Function(_) => SymbolKind::FUNCTION,
+                DefKind::Given => SymbolKind::CONSTANT,
+                DefKind::Binding => SymbolKind::VARIABLE,
+            },
+            tags: None,
+            deprecated: None,
+            range: doc.range(d.statement, enc),
+            selection_range: doc.range(d.span, enc),
+            children: None,
+        })
+        .collect()
+}
+
+/// The frame that names after the text before the cursor should start
+/// from: after `T_ab *` (or `T_ab ` multiplying by juxtaposition, or
+/// `inv(T_ba) *`) the inner frame {b} of the operand, so that the product
+/// cancels (§6).
+fn wanted_frame(before: &str, analysis: &Analysis, offset: usize) -> Option<Frame> {
+    let t = before.trim_end();
+    let t = t.strip_suffix('*').unwrap_or(t).trim_end();
+    let end = t.len();
+    let start = t
+        .char_indices()
+        .rev()
+        .take_while(|(_, c)| is_name_char(*c))
+        .last()
+        .map(|(i, _)| i)?;
+    let def = analysis.def_at(&t[start..end], offset)?;
+    match def.ty.frames {
+        Frames::Pair(_, inner) => Some(inner),
+        _ => None,
+    }
+}
+
+/// The outer frame of a type: {a} of a map {a}←{b}, of a vector in {a}.
+fn outer(f: &Frames) -> Option<Frame> {
+    match f {
+        Frames::One(a) | Frames::Pair(a, _) | Frames::Disp(a) => Some(*a),
+        _ => None,
+    }
+}
+
+/// Completions at byte `offset`: `:` commands at the start of a line;
+/// otherwise the bindings made before the cursor (after `T_ab *`, those
+/// whose outer frame is {b} first), the builtins with their signatures,
+/// and keywords — each starting with the word typed (ignoring case).
+pub fn completion(doc: &Document, analysis: &Analysis, offset: usize) -> Vec<CompletionItem> {
+    let offset = crate::span::floor_boundary(&doc.text, offset);
+    let line_start = doc.text[..offset].rfind('\n').map_or(0, |i| i + 1);
+    let before = &doc.text[line_start..offset];
+    if before.trim_start().starts_with(':') {
+        let typed = before.trim_start().trim_start_matches(':');
+        return COMMANDS
+            .iter()
+            .filter(|c| c.name.starts_with(typed))
+            .map(|c| CompletionItem {
+                label: format!(":{}", c.name),
+                insert_text: Some(c.name.into()),
+                kind: Some(CompletionItemKind::KEYWORD),
+                detail: Some(format!(":{} {}", c.name, c.args).trim_end().into()),
+                documentation: Some(Documentation::String(c.doc.into())),
+                ..Default::default()
+            })
+            .collect();
+    }
+    let word_start = before
+        .char_indices()
+        .rev()
+        .take_while(|(_, c)| is_name_char(*c))
+        .last()
+        .map_or(before.len(), |(i, _)| i);
+    let typed = before[word_start..].to_lowercase();
+    let fits = |name: &str| name.to_lowercase().starts_with(&typed);
+    let want = wanted_frame(&before[..word_start], analysis, offset);
+    let mut items = Vec::new();
+    let mut seen = std::collections::HashSet::new();
+    for d in analysis
+        .defs
+        .iter()
+        .rev()
+        .filter(|d| d.statement.start < offset)
+    {
+        if !fits(&d.name) || !seen.insert(d.name.as_str()) {
+            continue;
+        }
+        let follows = want.is_some() && outer(&d.ty.frames) == want;
+        items.push(CompletionItem {
+            label: d.name.clone(),
+            kind: Some(match d.kind {
+                DefKind::Function(_) => CompletionItemKind::FUNCTION,
+                _ => CompletionItemKind::VARIABLE,
+            }),
+            detail: Some(d.ty.to_string()),
+            sort_text: Some(format!("{}{}", if follows { "0" } else { "1" }, d.name)),
+            preselect: follows.then_some(true),
+            ..Default::default()
+        });
+    }
+    for b in builtins::table() {
+        for name in b.names().filter(|n| !n.is_empty() && fits(n)) {
+            items.push(CompletionItem {
+                label: name.into(),
+                kind: Some(CompletionItemKind::FUNCTION),
+                detail: Some(b.signature.into()),
+                documentation: Some(Documentation::String(if b.section.is_empty() {
+                    b.doc.into()
+                } else {
+                    format!("{} ({})", b.doc, b.section)
+                })),
+                sort_text: Some(format!("2{name}")),
+                ..Default::default()
+            });
+        }
+    }
+    for k in KEYWORDS.iter().filter(|k| fits(k)) {
+        items.push(CompletionItem {
+            label: (*k).into(),
+            kind: Some(CompletionItemKind::KEYWORD),
+            documentation: keywords::keyword(k).map(|t| Documentation::String(t.into())),
+            sort_text: Some(format!("3{k}")),
+            ..Default::default()
+        });
+    }
+    items
+}

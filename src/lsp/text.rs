@@ -1,0 +1,195 @@
+//! An open document as the server keeps it (LANGUAGE.md §15): its text,
+//! edited in place by the client's incremental changes, and the mapping
+//! between the protocol's positions (a line and a column counted in UTF-16
+//! code units, or in bytes where the client agreed to UTF-8) and the byte
+//! offsets every [`crate::span::Span`] uses.
+
+use lsp_types::{Position, Range, TextDocumentContentChangeEvent};
+
+use crate::span::Span;
+
+/// How the client counts columns: UTF-16 code units (the protocol's
+/// default) or bytes (`positionEncoding: "utf-8"`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Encoding {
+    #[default]
+    Utf16,
+    Utf8,
+}
+
+/// One open `.chs` document.
+#[derive(Debug, Clone, Default)]
+pub struct Document {
+    pub text: String,
+    pub version: i32,
+    /// The byte offset where each line starts (line 0 at 0).
+    starts: Vec<usize>,
+}
+
+impl Document {
+    /// A document holding `text` at `version`.
+    pub fn new(text: String, version: i32) -> Document {
+        let mut d = Document {
+            text,
+            version,
+            starts: Vec::new(),
+        };
+        d.index();
+        d
+    }
+
+    fn index(&mut self) {
+        self.starts.clear();
+        self.starts.push(0);
+        self.starts.extend(
+            self.text
+                .bytes()
+                .enumerate()
+                .filter(|(_, b)| *b == b'\n')
+                .map(|(i, _)| i + 1),
+        );
+    }
+
+    /// The number of lines (a final line without `\n` counts).
+    pub fn lines(&self) -> usize {
+        self.starts.len()
+    }
+
+    /// The text of line `line` (0-based), without its line break.
+    pub fn line(&self, line: usize) -> &str {
+        let Some(&start) = self.starts.get(line) else {
+            return "";
+        };
+        let end = self.starts.get(line + 1).map_or(self.text.len(), |e| e - 1);
+        self.text[start..end].trim_end_matches('\r')
+    }
+
+    /// The byte offset of `pos` (clamped to its line and to the text; a
+    /// column inside a character lands at its start).
+    pub fn offset(&self, pos: Position, enc: Encoding) -> usize {
+        let line = pos.line as usize;
+        let Some(&start) = self.starts.get(line) else {
+            return self.text.len();
+        };
+        let text = self.line(line);
+        let want = pos.character as usize;
+        let mut units = 0;
+        for (i, c) in text.char_indices() {
+            if units >= want {
+                return start + i;
+            }
+            units += match enc {
+                Encoding::Utf16 => c.len_utf16(),
+                Encoding::Utf8 => c.len_utf8(),
+            };
+        }
+        start + text.len()
+    }
+
+    /// The position of byte `offset`.
+    pub fn position(&self, offset: usize, enc: Encoding) -> Position {
+        let offset = crate::span::floor_boundary(&self.text, offset);
+        let line = self.starts.partition_point(|&s| s <= offset) - 1;
+        let before = &self.text[self.starts[line]..offset];
+        let character = match enc {
+            Encoding::Utf16 => before.encode_utf16().count(),
+            Encoding::Utf8 => before.len(),
+        };
+        Position::new(line as u32, character as u32)
+    }
+
+    /// The range of a byte span.
+    pub fn range(&self, span: Span, enc: Encoding) -> Range {
+        Range::new(self.position(span.start, enc), self.position(span.end, enc))
+    }
+
+    /// Applies one change from `textDocument/didChange`: a range replaced,
+    /// or the whole text when the change has no range.
+    pub fn apply(&mut self, change: &TextDocumentContentChangeEvent, enc: Encoding) {
+        match change.range {
+            Some(r) => {
+                let start = self.offset(r.start, enc);
+                let end = self.offset(r.end, enc).max(start);
+                self.text.replace_range(start..end, &change.text);
+            }
+            None => self.text.clone_from(&change.text),
+        }
+        self.index();
+    }
+
+    /// The name at byte `offset` (a binding, a builtin, a keyword): its span,
+    /// if the offset touches one.
+    pub fn word_at(&self, offset: usize) -> Option<Span> {
+        let offset = crate::span::floor_boundary(&self.text, offset);
+        let before = &self.text[..offset];
+        let start = before
+            .char_indices()
+            .rev()
+            .take_while(|(_, c)| is_name_char(*c))
+            .last()
+            .map_or(offset, |(i, _)| i);
+        let end = offset
+            + self.text[offset..]
+                .char_indices()
+                .find(|(_, c)| !is_name_char(*c))
+                .map_or(self.text.len() - offset, |(i, _)| i);
+        let word = &self.text[start..end];
+        (!word.is_empty() && !word.starts_with(|c: char| c.is_ascii_digit()))
+            .then(|| Span::new(start, end))
+    }
+}
+
+/// Whether `c` may be part of a name (letters, digits, `_`, a prime).
+pub fn is_name_char(c: char) -> bool {
+    c.is_alphanumeric() || c == '_' || c == '\''
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn change(l0: u32, c0: u32, l1: u32, c1: u32, text: &str) -> TextDocumentContentChangeEvent {
+        TextDocumentContentChangeEvent {
+            range: Some(Range::new(Position::new(l0, c0), Position::new(l1, c1))),
+            range_length: None,
+            text: text.into(),
+        }
+    }
+
+    #[test]
+    fn columns_count_utf16_units_or_bytes() {
+        let d = Document::new("θ = 1\nR_ab = Rotz(θ)\n".into(), 1);
+        // θ is one UTF-16 unit and two bytes.
+        assert_eq!(d.offset(Position::new(0, 1), Encoding::Utf16), 2);
+        assert_eq!(d.offset(Position::new(0, 2), Encoding::Utf8), 2);
+        let at = d.text.rfind('θ').unwrap();
+        assert_eq!(d.position(at, Encoding::Utf16), Position::new(1, 12));
+        assert_eq!(d.position(at + 2, Encoding::Utf8), Position::new(1, 14));
+        // Past the line's end: clamped to it (θ = 1 is 6 bytes).
+        assert_eq!(d.offset(Position::new(0, 99), Encoding::Utf16), 6);
+        assert_eq!(d.lines(), 3);
+    }
+
+    #[test]
+    fn incremental_changes_edit_in_place() {
+        let mut d = Document::new("T_ab * T_cb\nx = 1\n".into(), 1);
+        d.apply(&change(0, 10, 0, 11, "a"), Encoding::Utf16);
+        assert_eq!(d.text, "T_ab * T_ca\nx = 1\n");
+        d.apply(&change(1, 0, 1, 5, "θ = 2"), Encoding::Utf16);
+        d.apply(&change(1, 1, 1, 1, "₁"), Encoding::Utf16);
+        assert_eq!(d.line(1), "θ₁ = 2");
+        d.apply(&change(0, 0, 2, 0, ""), Encoding::Utf16);
+        assert_eq!((d.text.as_str(), d.lines()), ("", 1));
+    }
+
+    #[test]
+    fn the_word_under_the_cursor() {
+        let d = Document::new("T_sb' = exp([S] θ) M".into(), 1);
+        let w = d.word_at(2).unwrap();
+        assert_eq!(&d.text[w.start..w.end], "T_sb'");
+        let at = d.text.find("exp").unwrap() + 3;
+        let w = d.word_at(at).unwrap();
+        assert_eq!(&d.text[w.start..w.end], "exp");
+        assert!(d.word_at(d.text.find('=').unwrap() + 1).is_none());
+    }
+}

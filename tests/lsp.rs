@@ -1,0 +1,420 @@
+//! `chasles lsp` (LANGUAGE.md §15) driven over stdio as an editor drives
+//! it: the real binary, Content-Length framed JSON-RPC, every wait bounded
+//! so that a silent server fails the test instead of hanging it.
+
+mod common;
+
+use std::io::{BufRead, BufReader, Read, Write};
+use std::path::Path;
+use std::process::{Child, ChildStdin, Stdio};
+use std::sync::mpsc::{Receiver, channel};
+use std::time::{Duration, Instant};
+
+use serde_json::{Value, json};
+
+/// How long one answer may take (generous: CI's machine is small and shared).
+const WAIT: Duration = Duration::from_secs(60);
+
+const URI: &str = "file:///work/frames.chs";
+
+/// A client speaking to one server process.
+struct Client {
+    child: Child,
+    stdin: ChildStdin,
+    rx: Receiver<Value>,
+    next_id: i64,
+    /// Notifications read while waiting for something else.
+    pending: Vec<Value>,
+}
+
+impl Client {
+    /// Starts `chasles lsp` in `dir` and initializes it.
+    fn start(dir: &Path) -> (Client, Value) {
+        let mut child = common::command(&["lsp"])
+            .current_dir(dir)
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::inherit())
+            .spawn()
+            .expect("chasles lsp starts");
+        let stdin = child.stdin.take().unwrap();
+        let mut out = BufReader::new(child.stdout.take().unwrap());
+        let (tx, rx) = channel();
+        std::thread::spawn(move || {
+            loop {
+                let mut len = None;
+                loop {
+                    let mut line = String::new();
+                    if out.read_line(&mut line).unwrap_or(0) == 0 {
+                        return;
+                    }
+                    let line = line.trim_end();
+                    if line.is_empty() {
+                        break;
+                    }
+                    if let Some(n) = line.strip_prefix("Content-Length: ") {
+                        len = n.parse::<usize>().ok();
+                    }
+                }
+                let mut body = vec![0; len.expect("a Content-Length header")];
+                if out.read_exact(&mut body).is_err() {
+                    return;
+                }
+                let v: Value = serde_json::from_slice(&body).expect("a JSON message");
+                if tx.send(v).is_err() {
+                    return;
+                }
+            }
+        });
+        let mut c = Client {
+            child,
+            stdin,
+            rx,
+            next_id: 0,
+            pending: Vec::new(),
+        };
+        let init = c.request(
+            "initialize",
+            json!({"processId": null, "rootUri": null, "capabilities": {}}),
+        );
+        c.notify("initialized", json!({}));
+        (c, init)
+    }
+
+    fn send(&mut self, v: Value) {
+        let body = v.to_string();
+        write!(self.stdin, "Content-Length: {}\r\n\r\n{body}", body.len()).unwrap();
+        self.stdin.flush().unwrap();
+    }
+
+    fn next(&mut self, what: &str) -> Value {
+        self.rx.recv_timeout(WAIT).unwrap_or_else(|_| {
+            panic!("no answer from chasles lsp within {WAIT:?} waiting for {what}")
+        })
+    }
+
+    fn notify(&mut self, method: &str, params: Value) {
+        self.send(json!({"jsonrpc": "2.0", "method": method, "params": params}));
+    }
+
+    /// Sends a request and returns its result (failing on an error reply).
+    fn request(&mut self, method: &str, params: Value) -> Value {
+        self.next_id += 1;
+        let id = self.next_id;
+        self.send(json!({"jsonrpc": "2.0", "id": id, "method": method, "params": params}));
+        loop {
+            let v = self.next(method);
+            if v["id"] == json!(id) {
+                assert!(v.get("error").is_none(), "{method} failed: {v}");
+                return v["result"].clone();
+            }
+            self.pending.push(v);
+        }
+    }
+
+    /// The diagnostics published for `URI` at `version`.
+    fn diagnostics(&mut self, version: i64) -> Vec<Value> {
+        let is_it = |v: &Value| {
+            v["method"] == "textDocument/publishDiagnostics"
+                && v["params"]["uri"] == URI
+                && v["params"]["version"] == json!(version)
+        };
+        if let Some(i) = self.pending.iter().position(is_it) {
+            let v = self.pending.remove(i);
+            return v["params"]["diagnostics"].as_array().unwrap().clone();
+        }
+        loop {
+            let v = self.next("publishDiagnostics");
+            if is_it(&v) {
+                return v["params"]["diagnostics"].as_array().unwrap().clone();
+            }
+            self.pending.push(v);
+        }
+    }
+
+    fn open(&mut self, text: &str) {
+        self.notify(
+            "textDocument/didOpen",
+            json!({"textDocument": {"uri": URI, "languageId": "chasles", "version": 1, "text": text}}),
+        );
+    }
+
+    /// Replaces line `line`, columns `from..to` (UTF-16 units), by `text`.
+    fn edit(&mut self, version: i64, line: u32, from: u32, to: u32, text: &str) {
+        self.notify(
+            "textDocument/didChange",
+            json!({
+                "textDocument": {"uri": URI, "version": version},
+                "contentChanges": [{
+                    "range": {"start": {"line": line, "character": from}, "end": {"line": line, "character": to}},
+                    "text": text,
+                }],
+            }),
+        );
+    }
+
+    fn at(&mut self, method: &str, line: u32, character: u32) -> Value {
+        self.request(
+            method,
+            json!({"textDocument": {"uri": URI}, "position": {"line": line, "character": character}}),
+        )
+    }
+
+    /// `shutdown` then `exit`: the exit code.
+    fn stop(mut self) -> i32 {
+        assert_eq!(self.request("shutdown", Value::Null), Value::Null);
+        self.notify("exit", Value::Null);
+        let start = Instant::now();
+        loop {
+            if let Some(s) = self.child.try_wait().unwrap() {
+                return s.code().unwrap_or(-1);
+            }
+            assert!(
+                start.elapsed() < WAIT,
+                "chasles lsp did not exit after `exit`"
+            );
+            std::thread::sleep(Duration::from_millis(20));
+        }
+    }
+}
+
+const SCRIPT: &str = "\
+given T_ab, T_cb : SE3
+T_bc = inv(T_cb)
+R_sb = Rotz(30 deg)
+T_ac = T_ab * T_cb
+w_b = (0, 0, 1)
+";
+
+/// Labels of a completion list, ordered as the client sorts them.
+fn labels(items: &Value) -> Vec<String> {
+    let mut items = items.as_array().expect("a completion array").clone();
+    items.sort_by_key(|i| {
+        i["sortText"]
+            .as_str()
+            .unwrap_or(i["label"].as_str().unwrap())
+            .to_string()
+    });
+    items
+        .iter()
+        .map(|i| i["label"].as_str().unwrap().to_string())
+        .collect()
+}
+
+#[test]
+fn a_frame_error_appears_and_disappears_as_the_line_is_edited() {
+    let dir = common::scratch("frames");
+    let (mut c, init) = Client::start(&dir);
+    let caps = &init["capabilities"];
+    assert_eq!(caps["textDocumentSync"], json!(2), "incremental sync");
+    assert_eq!(caps["hoverProvider"], json!(true));
+    assert_eq!(caps["definitionProvider"], json!(true));
+    assert_eq!(caps["documentSymbolProvider"], json!(true));
+    assert_eq!(init["serverInfo"]["name"], "chasles");
+
+    c.open(SCRIPT);
+    let d = c.diagnostics(1);
+    assert_eq!(d.len(), 1, "{d:?}");
+    assert_eq!(d[0]["code"], "frame");
+    assert_eq!(d[0]["severity"], json!(1));
+    assert_eq!(d[0]["message"], "frames do not cancel");
+    // The caret is the `*` of line 4 (0-based line 3, column 12).
+    assert_eq!(
+        d[0]["range"],
+        json!({"start": {"line": 3, "character": 12}, "end": {"line": 3, "character": 13}})
+    );
+    let related: Vec<&str> = d[0]["relatedInformation"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| r["message"].as_str().unwrap())
+        .collect();
+    assert!(related.contains(&"{b} in {c}"), "{related:?}");
+    assert!(
+        related
+            .iter()
+            .any(|m| m.starts_with("help:") && m.contains("inv(T_cb) = T_bc")),
+        "{related:?}"
+    );
+
+    // Fix it: T_cb → T_bc (columns 14..18 of line 3).
+    c.edit(2, 3, 14, 18, "T_bc");
+    assert_eq!(c.diagnostics(2), Vec::<Value>::new());
+    // Break it again in a second way: a rotation times a transform.
+    c.edit(3, 3, 7, 11, "R_sb");
+    let d = c.diagnostics(3);
+    assert_eq!(d.len(), 1, "{d:?}");
+    assert_eq!(d[0]["code"], "type");
+    c.edit(4, 3, 7, 11, "T_ab");
+    assert_eq!(c.diagnostics(4), Vec::<Value>::new());
+
+    // Hover: a binding's type and frames; a builtin's :help text.
+    let h = c.at("textDocument/hover", 3, 1);
+    let text = h["contents"]["value"].as_str().unwrap();
+    assert!(text.contains("SE(3) {a}←{c}"), "{text}");
+    assert!(text.contains("maps coordinates in {c} to {a}"), "{text}");
+    assert_eq!(h["range"]["start"], json!({"line": 3, "character": 0}));
+    let h = c.at("textDocument/hover", 2, 9);
+    let text = h["contents"]["value"].as_str().unwrap();
+    assert!(text.contains("Rotz(θ)") || text.contains("Rotz("), "{text}");
+    assert!(text.contains("3.2"), "the book's section: {text}");
+
+    // Go to definition: T_bc read on line 4 was bound on line 2.
+    let loc = c.at("textDocument/definition", 3, 15);
+    assert_eq!(loc["uri"], URI);
+    assert_eq!(
+        loc["range"],
+        json!({"start": {"line": 1, "character": 0}, "end": {"line": 1, "character": 4}})
+    );
+    // A given's definition is its name in the `given` line.
+    let loc = c.at("textDocument/definition", 3, 8);
+    assert_eq!(loc["range"]["start"], json!({"line": 0, "character": 6}));
+
+    // Completion after `MatrixLo`, then after `T_ab * `.
+    c.edit(5, 5, 0, 0, "MatrixLo");
+    let items = c.at("textDocument/completion", 5, 8);
+    let l = labels(&items);
+    assert!(
+        l.contains(&"MatrixLog3".into()) && l.contains(&"MatrixLog6".into()),
+        "{l:?}"
+    );
+    assert!(
+        l.iter().all(|n| n.to_lowercase().starts_with("matrixlo")),
+        "{l:?}"
+    );
+    let six = items
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|i| i["label"] == "MatrixLog6")
+        .unwrap();
+    assert!(
+        six["detail"].as_str().unwrap().starts_with("MatrixLog6("),
+        "{six}"
+    );
+    c.edit(6, 5, 0, 8, "x = T_ab * ");
+    let l = labels(&c.at("textDocument/completion", 5, 11));
+    // {b} is T_ab's inner frame: T_bc (outer {b}) comes before the others.
+    assert_eq!(l[0], "T_bc", "{l:?}");
+    assert!(
+        l.contains(&"T_ac".into()) && l.contains(&"Rotz".into()),
+        "{l:?}"
+    );
+    let l = labels(&c.at("textDocument/completion", 5, 0));
+    assert!(l.contains(&"given".into()), "{l:?}");
+
+    // Document symbols: every binding, with its type.
+    let s = c.request(
+        "textDocument/documentSymbol",
+        json!({"textDocument": {"uri": URI}}),
+    );
+    let names: Vec<&str> = s
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| s["name"].as_str().unwrap())
+        .collect();
+    assert_eq!(names, ["T_ab", "T_cb", "T_bc", "R_sb", "T_ac", "w_b"]);
+    assert_eq!(s.as_array().unwrap()[4]["detail"], "SE(3) {a}←{c}");
+
+    assert_eq!(c.stop(), 0);
+}
+
+#[test]
+fn a_script_that_would_run_for_minutes_and_write_files_is_only_checked() {
+    let dir = common::scratch("effects");
+    let (mut c, _) = Client::start(&dir);
+    // Run, each grid below is a million transforms (seconds each, and the
+    // last is a frame error); the pictures would be written as pic.svg and
+    // saved.svg.
+    let mut text = String::new();
+    for i in 0..6 {
+        text.push_str(&format!(
+            "g{i} = [MatrixExp6(VecTose3((0, 0, 1, a, b, {i}))) for a in 1:1000, b in 1:1000]\n"
+        ));
+    }
+    text.push_str("pic = draw(Rotz(pi/4))\npic\nsave(draw(Rotz(1)), \"saved.svg\")\n");
+    text.push_str("given T_ab, T_cb : SE3\nT_ab T_cb\n");
+    let start = Instant::now();
+    c.open(&text);
+    let d = c.diagnostics(1);
+    let took = start.elapsed();
+    assert_eq!(d.len(), 1, "{d:?}");
+    assert_eq!(d[0]["code"], "frame");
+    assert_eq!(d[0]["range"]["start"]["line"], json!(10));
+    // Checked without numbers: far below the seconds each grid takes to run.
+    assert!(took < Duration::from_secs(20), "checking took {took:?}");
+    let h = c.at("textDocument/hover", 0, 0);
+    assert!(
+        h["contents"]["value"].as_str().unwrap().contains("list"),
+        "{h}"
+    );
+    // `save`'s help shows its example, save(draw(Rotz(pi/4)), "rotz.svg"),
+    // evaluated without writing rotz.svg.
+    let h = c.at("textDocument/hover", 8, 1);
+    let text = h["contents"]["value"].as_str().unwrap();
+    assert!(text.contains("\"rotz.svg\")"), "{text}");
+    assert_eq!(c.stop(), 0);
+    let left: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert!(left.is_empty(), "the server wrote {left:?}");
+}
+
+#[test]
+fn exit_without_shutdown_is_an_error_and_a_bad_request_is_answered() {
+    let dir = common::scratch("exit");
+    let (mut c, _) = Client::start(&dir);
+    c.next_id += 1;
+    let id = c.next_id;
+    c.send(json!({"jsonrpc": "2.0", "id": id, "method": "textDocument/formatting", "params": {}}));
+    let v = c.next("an error reply");
+    assert_eq!(v["id"], json!(id));
+    assert_eq!(v["error"]["code"], json!(-32601));
+    // Hover on a document never opened: no answer, no crash.
+    assert_eq!(c.at("textDocument/hover", 0, 0), Value::Null);
+    c.notify("exit", Value::Null);
+    let start = Instant::now();
+    let code = loop {
+        if let Some(s) = c.child.try_wait().unwrap() {
+            break s.code();
+        }
+        assert!(start.elapsed() < WAIT);
+        std::thread::sleep(Duration::from_millis(20));
+    };
+    assert_eq!(code, Some(1));
+}
+
+/// The TextMate grammar (editors/vscode/) colours every builtin as one: its
+/// `builtin` pattern lists exactly the names of the builtin table.
+#[test]
+fn the_editor_grammar_lists_every_builtin() {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/editors/vscode/syntaxes/chasles.tmLanguage.json"
+    );
+    let g: Value = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+    let pattern = g["repository"]["builtin"]["match"].as_str().unwrap();
+    let inner = pattern
+        .split("(?:")
+        .nth(1)
+        .unwrap()
+        .split(')')
+        .next()
+        .unwrap();
+    let mut listed: Vec<String> = inner.split('|').map(|n| n.replace('\\', "")).collect();
+    listed.sort();
+    let mut names: Vec<String> = chasles::builtins::all_names()
+        .into_iter()
+        .map(String::from)
+        .collect();
+    names.sort();
+    names.dedup();
+    let missing: Vec<&String> = names.iter().filter(|n| !listed.contains(n)).collect();
+    let extra: Vec<&String> = listed.iter().filter(|n| !names.contains(n)).collect();
+    assert!(
+        missing.is_empty() && extra.is_empty(),
+        "{path}: the builtin pattern lacks {missing:?} and has {extra:?} (longest names first)"
+    );
+}
