@@ -51,10 +51,24 @@ fn roots_and_inverse_sines_decide_by_the_exact_form() {
     assert_eq!(value("sqrt(sin(pi))"), 0.0);
     let (out, err) = outputs("sqrt(sin(2*pi))");
     assert_eq!((out.as_str(), err.as_str()), ("0\n", ""));
-    // a number as typed is exact: outside by 2e-16 is outside
-    let e = error("acos(1 + 2e-16)");
+    // a number as typed is exact, but a few units in the last place
+    // outside is a computed float typed back: the edge, with a note
+    // (issue 36; this was a domain error)
+    for (src, want) in [
+        ("acos(1 + 2e-16)", 0.0),
+        ("acos(1.0000000000000002)", 0.0),
+        ("asin(-1.0000000000000002)", -std::f64::consts::FRAC_PI_2),
+        ("sqrt(-2e-16)", 0.0),
+        ("sqrt(-1e-17)", 0.0),
+    ] {
+        assert_eq!(value(src), want, "{src}");
+        let (_, err) = outputs(src);
+        assert!(err.contains("a rounding error; taken as"), "{src}: {err}");
+    }
+    // beyond a few units, the domain error as before
+    let e = error("acos(1.000000000000001)");
     assert!(e.contains("must be in [−1, 1]"), "{e}");
-    let e = error("sqrt(-2e-16)");
+    let e = error("sqrt(-1e-15)");
     assert!(e.contains("not real"), "{e}");
     // a float with no exact form within rounding is clamped, with a note
     let (out, err) = outputs("acos(exp(0) + 2e-16)");

@@ -405,7 +405,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
                 ret: scalar,
                 frames: FrameRule::None,
             },
-            eval: |a| Ok(Value::scalar(a.mat(0)?.to_dmatrix().norm())),
+            eval: |a| Ok(Value::scalar(crate::lie::norm(&a.mat(0)?.to_dmatrix()))),
         },
         Builtin {
             name: "cross",

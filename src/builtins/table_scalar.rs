@@ -63,10 +63,19 @@ const POLE: f64 = 1e-15;
 /// with a note.
 pub const ROUNDING: f64 = 1e-12;
 
+/// How far outside its domain an exact argument (a number as typed) may be
+/// and still be rounded to the edge, with a note: four units in the last
+/// place of 1 (8.9e-16), so that a float printed at full precision and
+/// typed back (`acos(1.0000000000000002)`, `sqrt(-1e-17)`) is the edge it
+/// was computed as; `acos(1.000000000000001)` stays a domain error.
+pub const ULPS: f64 = 4.0 * f64::EPSILON;
+
 /// A scalar function on `[lo, hi]`. An exact argument (typed, or with an
 /// exact form) is in or out by its value, exactly (`sqrt(√5 +
 /// cos(3π/2)/1e-17)` is √√5: the float of the argument, −16.1, is not the
-/// number; `sqrt(-2e-16)` is not real); a float with no exact form within
+/// number; `sqrt(-1e-6)` is not real), except that within [`ULPS`] of the
+/// edge it is taken as the edge with a note (`sqrt(-2e-16)` is 0, a
+/// rounding typed back); a float with no exact form within
 /// [`ROUNDING`] of the interval is clamped into it with a note (rounding
 /// may have put it outside); farther is a domain error giving the value.
 fn near_domain(
@@ -89,32 +98,51 @@ fn near_domain(
         (Some(l), Some(h)) if d.is_exact() => Some(l.is_ge() && h.is_le()),
         _ => None,
     };
-    match inside {
+    let c = match inside {
         // (the float of an exact number inside may be a rounding outside)
         Some(true) => return Ok(Value::scalar(f(x.clamp(lo, hi)))),
+        // an exact number a few units in the last place outside (by its
+        // exact value) is a computed float typed back
+        // (`acos(1.0000000000000002)`, `sqrt(-1e-17)`): rounded to the
+        // edge it is outside of, with the note below
+        Some(false)
+            if d.order(lo - ULPS).is_some_and(Ordering::is_ge)
+                && d.order(lo).is_some_and(Ordering::is_lt) =>
+        {
+            lo
+        }
+        Some(false)
+            if below(hi + ULPS).is_some_and(Ordering::is_le)
+                && below(hi).is_some_and(Ordering::is_gt) =>
+        {
+            hi
+        }
         Some(false) => {
             return Err(a.error(0, ErrorKind::Domain, format!("{}({x}): {why}", a.name)));
         }
         None if (lo..=hi).contains(&x) => return Ok(Value::scalar(f(x))),
-        None => {}
-    }
-    if !(x >= lo - ROUNDING && x <= hi + ROUNDING) {
-        return Err(a.error(0, ErrorKind::Domain, format!("{}({x}): {why}", a.name)));
-    }
-    let c = x.clamp(lo, hi);
+        None if x >= lo - ROUNDING && x <= hi + ROUNDING => x.clamp(lo, hi),
+        None => {
+            return Err(a.error(0, ErrorKind::Domain, format!("{}({x}): {why}", a.name)));
+        }
+    };
     let num = |v: f64| crate::values::number::fmt_num(v, 4);
     let interval = if hi.is_finite() {
         format!("[{}, {}]", num(lo), num(hi))
     } else {
         format!("[{}, ∞)", num(lo))
     };
+    let by = match (x - c).abs() {
+        // (an exact number outside whose float is the edge)
+        0.0 => "less than a unit in the last place".to_string(),
+        d => format!("{d:.1e}"),
+    };
     a.warnings.push(Diagnostic::note(
         ErrorKind::Domain,
         a.call_span,
         format!(
-            "{}({x}): the argument is outside {interval} by {:.1e}, a rounding error; taken as {}",
+            "{}({x}): the argument is outside {interval} by {by}, a rounding error; taken as {}",
             a.name,
-            (x - c).abs(),
             num(c)
         ),
     ));

@@ -60,7 +60,7 @@ fn displacement_rule(args: &[Ty]) -> Result<Ty, ArgError> {
 /// normalised, with a warning (S must be a unit screw axis, §3.3.2.2).
 fn eval_screw_to_axis(a: &mut Args) -> Result<Value, Diagnostic> {
     let (q, s, h) = (a.vec3(0)?, a.vec3(1)?, a.scalar(2)?);
-    let n = s.norm();
+    let n = crate::lie::norm(&s);
     if n == 0.0 || !n.is_finite() {
         return Err(a.error(
             1,
@@ -310,7 +310,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
             },
             eval: |a| {
                 let (q, s, h) = (a.vec3(0)?, a.vec3(1)?, a.scalar(2)?);
-                let n = s.norm();
+                let n = crate::lie::norm(&s);
                 if n == 0.0 || !n.is_finite() {
                     return Err(a.error(
                         1,

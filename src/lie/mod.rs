@@ -58,6 +58,31 @@ pub fn near_zero(x: f64) -> bool {
     x.abs() < NEAR_ZERO_TOL
 }
 
+/// The Euclidean (Frobenius) norm `‖v‖ = √Σ vᵢ²`, scaled by the largest
+/// entry before the square root when the plain sum of squares would
+/// underflow or overflow (hypot-style): ‖(1e-170, 1e-170)‖ is 1.4e-170, not
+/// 0, and ‖(1e200, 1e200)‖ is 1.4e200, not inf. Every norm of the book's
+/// functions (‖ω‖ of §3.2.3.2, ‖q‖ of a quaternion, ‖r‖ of Cayley
+/// parameters, `Normalize`) goes through it, so no finite input is refused
+/// for a norm that is 0 or inf only in floats.
+pub fn norm<R, C, S>(v: &nalgebra::Matrix<f64, R, C, S>) -> f64
+where
+    R: nalgebra::Dim,
+    C: nalgebra::Dim,
+    S: nalgebra::RawStorage<f64, R, C>,
+{
+    let n2 = v.iter().map(|x| x * x).sum::<f64>();
+    // (within this range no square lost matters and none overflowed)
+    if (1e-280..=1e280).contains(&n2) || n2 == 0.0 && v.iter().all(|x| *x == 0.0) {
+        return n2.sqrt();
+    }
+    let big = v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    if big == 0.0 || !big.is_finite() || v.iter().any(|x| x.is_nan()) {
+        return n2.sqrt();
+    }
+    big * v.iter().map(|x| (x / big) * (x / big)).sum::<f64>().sqrt()
+}
+
 /// `Normalize(V)` of the book's software (§3.6): the unit vector `V/‖V‖` in
 /// the direction of `V`. `None` when V is zero or has an entry that is not
 /// finite (the direction is then undefined); a tiny or huge V is
@@ -66,10 +91,6 @@ pub fn normalize(v: &nalgebra::DVector<f64>) -> Option<nalgebra::DVector<f64>> {
     if v.iter().any(|x| !x.is_finite()) {
         return None;
     }
-    let n = v.norm();
-    if (1e-150..=1e150).contains(&n) {
-        return Some(v / n);
-    }
     // (scaled by the largest entry first: ‖(1e-200, 0)‖² underflows to 0
     // and ‖(3e200, 4e200)‖² overflows)
     let big = v.amax();
@@ -77,7 +98,7 @@ pub fn normalize(v: &nalgebra::DVector<f64>) -> Option<nalgebra::DVector<f64>> {
         return None;
     }
     let w = v / big;
-    Some(&w / w.norm())
+    Some(&w / norm(&w))
 }
 
 #[cfg(test)]
@@ -89,6 +110,20 @@ mod tests {
         // NearZero(-1e-7) = True (Python docstring).
         assert!(near_zero(-1e-7));
         assert!(!near_zero(1e-6));
+    }
+
+    #[test]
+    fn norms_neither_underflow_nor_overflow() {
+        let tiny = Vec3::new(1e-170, 1e-170, 0.0);
+        assert!((norm(&tiny) / 1e-170 - 2f64.sqrt()).abs() < 1e-15);
+        let huge = Vec3::new(3e200, 4e200, 0.0);
+        assert!((norm(&huge) / 5e200 - 1.0).abs() < 1e-15);
+        let sub = Vec4::new(1e-320, 0.0, 0.0, 0.0);
+        assert_eq!(norm(&sub), 1e-320);
+        assert_eq!(norm(&Vec3::new(3.0, 4.0, 0.0)), 5.0);
+        assert_eq!(norm(&Vec3::zeros()), 0.0);
+        assert!(norm(&Vec3::new(f64::INFINITY, 0.0, 0.0)).is_infinite());
+        assert!(norm(&Vec3::new(f64::NAN, 1.0, 0.0)).is_nan());
     }
 
     #[test]

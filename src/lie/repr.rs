@@ -204,11 +204,13 @@ pub fn quat(r: &Mat3) -> Vec4 {
 /// `R = I + 2w[v] + 2[v]²` with v = (x, y, z), i.e. `Rot(ω̂, θ)` for
 /// q = (cos(θ/2), ω̂ sin(θ/2)). `None` for a zero (or non-finite) q.
 pub fn rot_quat(q: &Vec4) -> Option<Mat3> {
-    let n = q.norm();
+    let n = super::norm(q);
     if !(n > 0.0 && n.is_finite()) {
         return None;
     }
-    let q = q / n;
+    // (by the largest entry first: a subnormal q keeps its digits)
+    let q = q / q.amax();
+    let q = q / super::norm(&q);
     let v = Vec3::new(q.y, q.z, q.w);
     let vm = hat(&v);
     Some(Mat3::identity() + 2.0 * q.x * vm + 2.0 * vm * vm)
@@ -244,9 +246,22 @@ pub fn cayley(r: &Mat3) -> Result<Vec3, String> {
 /// `R = I + 2([r] + [r]²)/(1 + rᵀr)` (the Cayley transform
 /// `(I + [r])(I − [r])⁻¹`); any r ∈ ℝ³ gives a rotation with θ < π.
 pub fn rot_cayley(r: &Vec3) -> Mat3 {
-    let rm = hat(r);
-    let k = 2.0 / (1.0 + r.norm_squared());
-    Mat3::identity() + k * (rm + rm * rm)
+    // With n = ‖r‖ and û = r/n: I + 2[û]·n/(1 + n²) + 2[û]²·n²/(1 + n²),
+    // written so that no square is formed (a huge r is a turn near π, a
+    // tiny one near the identity; neither overflows to NaN).
+    let n = super::norm(r);
+    if n == 0.0 || !n.is_finite() {
+        let rm = hat(r);
+        let k = 2.0 / (1.0 + r.norm_squared());
+        return Mat3::identity() + k * (rm + rm * rm);
+    }
+    let u = hat(&(r / n));
+    let (k1, k2) = if n <= 1.0 {
+        (n / (1.0 + n * n), n * n / (1.0 + n * n))
+    } else {
+        (1.0 / (n + 1.0 / n), 1.0 / (1.0 + (1.0 / n) / n))
+    };
+    Mat3::identity() + 2.0 * k1 * u + 2.0 * k2 * u * u
 }
 
 #[cfg(test)]

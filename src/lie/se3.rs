@@ -218,9 +218,10 @@ pub fn screw_to_axis(q: &Vec3, s: &Vec3, h: f64) -> Vec6 {
 /// translation). The zero vector gives `(0, 0.0)`.
 pub fn axis_angle(expc: &Vec6) -> (Vec6, f64) {
     let (w, v) = split(expc);
-    let mut theta = w.norm();
-    if near_zero(theta) {
-        theta = v.norm();
+    let mut theta = super::norm(&w);
+    // (a tiny rotation with no translation is still a rotation: θ = ‖ω‖)
+    if near_zero(theta) && super::norm(&v) > 0.0 {
+        theta = super::norm(&v);
     }
     if theta > 0.0 {
         (expc / theta, theta)
@@ -237,19 +238,20 @@ pub fn axis_angle(expc: &Vec6) -> (Vec6, f64) {
 /// `(0, 0, 0.0)`.
 pub fn screw_params(v: &Vec6) -> (Vec3, Vec3, f64) {
     let (w, lin) = split(v);
-    let wn = w.norm();
+    let wn = super::norm(&w);
     if near_zero(wn) {
-        let ln = lin.norm();
+        let ln = super::norm(&lin);
         if ln > 0.0 {
             (Vec3::zeros(), lin / ln, f64::INFINITY)
         } else {
             (Vec3::zeros(), Vec3::zeros(), 0.0)
         }
     } else {
-        let w2 = wn * wn;
-        let q = w.cross(&lin) / w2;
-        let h = w.dot(&lin) / w2;
-        (q, w / wn, h)
+        // (with ŝ = ω/‖ω‖ first, so that ‖ω‖² is never formed)
+        let s = w / wn;
+        let q = s.cross(&lin) / wn;
+        let h = s.dot(&lin) / wn;
+        (q, s, h)
     }
 }
 

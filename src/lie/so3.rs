@@ -92,7 +92,14 @@ pub(crate) fn coeffs(theta: f64) -> (f64, f64, f64) {
 /// rounding error is proportional to its size), which keeps the result
 /// orthogonal to a couple of ulps even at θ → π.
 pub fn exp(expc: &Vec3) -> Mat3 {
-    let (a, b, c) = coeffs(expc.norm());
+    let theta = super::norm(expc);
+    if theta > 1e150 && theta.is_finite() {
+        // (φᵢφⱼ would overflow: Rodrigues with the unit axis, 3.51)
+        let (s, c) = theta.sin_cos();
+        let w = hat(&(expc / theta));
+        return Mat3::identity() + s * w + (1.0 - c) * w * w;
+    }
+    let (a, b, c) = coeffs(theta);
     exp_with(expc, a, b, c)
 }
 
@@ -308,7 +315,7 @@ fn near_pi_axis<S: Storage<f64, U3, U3>>(
 /// axis ω̂ and the angle θ = ‖ω̂θ‖ (§3.2.3.2). The zero vector gives
 /// `(0, 0.0)`: the axis is undefined for θ = 0 (case (i) of §3.2.3.3).
 pub fn axis_angle(expc: &Vec3) -> (Vec3, f64) {
-    let theta = expc.norm();
+    let theta = super::norm(expc);
     if theta > 0.0 {
         (expc / theta, theta)
     } else {
@@ -324,7 +331,7 @@ pub fn inv(r: &Mat3) -> Mat3 {
 /// `Rot(ω̂, θ) = e^{[ω̂]θ}` (3.51): the rotation by θ about `axis`, which is
 /// normalized here. A zero (or non-finite) axis gives the identity.
 pub fn rot(axis: &Vec3, theta: f64) -> Mat3 {
-    let n = axis.norm();
+    let n = super::norm(axis);
     if n > 0.0 && n.is_finite() {
         exp(&(axis * (theta / n)))
     } else {
