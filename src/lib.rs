@@ -7,6 +7,7 @@
 //! ```text
 //! cli, repl,    front ends (the terminal, flags, `:` commands; the
 //! kernel        Jupyter kernel)
+//! grade         a run's asserts as test cases: JUnit XML, Gradescope (§14)
 //! session       parse → check → evaluate over a source text; reading scripts
 //! effects       the one gate for files a statement asks to write (`save`,
 //!               printed pictures, `:save`): written, refused or confined
@@ -61,6 +62,8 @@
 //!   asks whether to go on;
 //! - [`session`]: the pipeline parse → check → evaluate over a source text;
 //! - [`effects`]: the gate every file write goes through;
+//! - [`grade`]: every assert of a run as a test case, written as JUnit XML
+//!   or Gradescope's `results.json`;
 //! - [`cli`], [`repl`], [`kernel`]: the front ends.
 #![forbid(unsafe_code)]
 // Errors carry spans, labels and help text; they are rare, so their size is not worth boxing.
@@ -78,6 +81,7 @@ pub mod diagnostics;
 pub mod draw;
 pub mod effects;
 pub mod eval;
+pub mod grade;
 pub mod kernel;
 pub mod lie;
 pub mod mech;
