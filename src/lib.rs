@@ -12,6 +12,7 @@
 //! frontend      what the front ends share: `:` commands, help text, the
 //!               statement runner that records each statement's writes,
 //!               completion
+//! grade         a run's asserts as test cases: JUnit XML, Gradescope (§14)
 //! session       parse → check → evaluate over a source text; reading scripts
 //! effects       the one gate for files a statement asks to write (`save`,
 //!               printed pictures, `:save`): written, refused or confined
@@ -76,6 +77,8 @@
 //! - [`effects`]: the gate every file write goes through;
 //! - [`frontend`]: the `:` commands, help and completion every front end
 //!   shares;
+//! - [`grade`]: every assert of a run as a test case, written as JUnit XML
+//!   or Gradescope's `results.json`;
 //! - [`cli`], [`repl`], [`kernel`], [`lsp`]: the dispatcher and the front
 //!   ends.
 #![forbid(unsafe_code)]
@@ -96,6 +99,7 @@ pub mod draw;
 pub mod effects;
 pub mod eval;
 pub mod frontend;
+pub mod grade;
 pub mod kernel;
 pub mod lie;
 pub mod lsp;

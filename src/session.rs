@@ -6,7 +6,7 @@ use std::io::Read;
 
 use crate::budget::{self, Budget, Stop};
 use crate::diagnostics::{Diagnostic, ErrorKind, render};
-use crate::effects::{Effect, Gate, PictureTo};
+use crate::effects::{Done, Effect, Gate, PictureTo};
 use crate::eval::env::{Env, FrameMode, Mode};
 use crate::eval::interp::{Interp, Outcome};
 use crate::eval::value::Value;
@@ -127,7 +127,7 @@ pub struct Session {
     /// The front end's decision on every file a statement asks to write
     /// (`save`, printed pictures, `:save`): see [`crate::effects`]. The
     /// default keeps pictures in memory; the CLI and REPL write them (to
-    /// `.` or `--draw-dir`), `--no-write` refuses, `--write-dir` confines.
+    /// `.` or `--draw-dir`), `--no-write` skips (a warning), `--write-dir` confines.
     pub gate: Gate,
     /// The file of the last picture written (the REPL's `:open`).
     pub last_picture: Option<String>,
@@ -180,14 +180,20 @@ impl Session {
     }
 
     /// Performs the report's effects through the gate: a picture written
-    /// says where (`→ pic.svg`); a write refused or failed makes the
+    /// says where (`→ pic.svg`); a write skipped (`--no-write`) is a
+    /// warning naming the file; a write refused or failed makes the
     /// statement's error.
     fn settle(&mut self, report: &mut Report) {
         let Ok(o) = &mut report.result else { return };
         for e in &report.effects {
             match self.gate.perform(e) {
-                Ok(None) => {}
-                Ok(Some(shown)) => {
+                Ok(Done::InMemory) => {}
+                Ok(Done::Skipped(m)) => {
+                    report
+                        .warnings
+                        .push(Diagnostic::warning(ErrorKind::Domain, o.span, m));
+                }
+                Ok(Done::Written(shown)) => {
                     if let (Effect::Picture { .. }, Some(Value::Picture(p))) =
                         (e, o.val.as_deref_mut())
                     {

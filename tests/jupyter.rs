@@ -8,8 +8,11 @@
 //! They need a Python with the pinned tools of
 //! `tests/jupyter/requirements.txt`: `CHASLES_JUPYTER_PYTHON` names it, else
 //! `target/jupyter-venv` (which `.ci/run` creates) is used when present.
-//! Without one the tests say so and pass, unless `CHASLES_REQUIRE_JUPYTER`
+//! Without one the tests print `skipped: …` beside their `ok` (on the
+//! uncaptured stderr) and pass, unless `CHASLES_REQUIRE_JUPYTER`
 //! is set (as `.ci/run` sets it), when they fail.
+
+mod common;
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -18,23 +21,10 @@ fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
-/// The Python with the Jupyter test tools, if any.
+/// The Python with the Jupyter test tools, if any (skipped, and said so
+/// on the test's output, without one).
 fn python() -> Option<PathBuf> {
-    let named = std::env::var_os("CHASLES_JUPYTER_PYTHON")
-        .filter(|p| !p.is_empty())
-        .map(PathBuf::from);
-    let venv = root().join("target/jupyter-venv/bin/python");
-    let found = named.or_else(|| venv.is_file().then_some(venv));
-    if found.is_none() {
-        let msg =
-            "no Python with the Jupyter test tools: set CHASLES_JUPYTER_PYTHON or run .ci/run";
-        assert!(
-            std::env::var_os("CHASLES_REQUIRE_JUPYTER").is_none(),
-            "{msg}"
-        );
-        eprintln!("skipped: {msg}");
-    }
-    found
+    common::test_python()
 }
 
 /// A fresh folder with the kernelspec of this build installed in

@@ -2,15 +2,16 @@
 //! statement that wants a file written — `save(pic, "f.svg")`, a picture
 //! printed but not saved (`NAME.svg`, `draw-LINE.svg`, LANGUAGE.md §12), the
 //! REPL's `:save` (§11) — returns an [`Effect`], and the front end's
-//! [`Gate`] decides: write it (atomically, [`atomic`]), refuse it
-//! (`--no-write`), confine it to a folder (`--write-dir`, [`confine`]), or
+//! [`Gate`] decides: write it (atomically, [`atomic`]), skip it
+//! (`--no-write`: [`Done::Skipped`], a warning naming the file, and the
+//! script goes on), confine it to a folder (`--write-dir`, [`confine`]), or
 //! keep the picture in memory (a library session, a notebook, the REPL's
 //! live preview, which never even asks the gate).
 //!
 //! A front end sets [`crate::session::Session::gate`] once; `Session::run`
 //! then settles each statement's effects before its report is seen (a
-//! written picture says where, `→ pic.svg`; a refused write is the
-//! statement's domain error), while `Session::evaluate` performs none.
+//! written picture says where, `→ pic.svg`; a skipped write is the
+//! statement's warning; a refused or failed write is its domain error), while `Session::evaluate` performs none.
 //! Each report keeps its [`Effect`]s: a notebook, with
 //! `Gate::anywhere(None)`, writes what `save` asks and finds every printed
 //! picture among them (`PictureTo::Printed`) to show inline, as SVG from
@@ -79,7 +80,7 @@ impl Effect {
 enum Policy {
     /// Anything the user can write, names relative to the working folder.
     Anywhere,
-    /// Nothing (`--no-write`).
+    /// Nothing (`--no-write`): every write skipped with a warning.
     Deny,
     /// Only inside one folder (`--write-dir`).
     Within(confine::Root),
@@ -128,8 +129,9 @@ impl Gate {
         }
     }
 
-    /// `--no-write`: every write (`save`, a printed picture, `:save`) is
-    /// refused with an error.
+    /// `--no-write` (LANGUAGE.md §1): every write (`save`, a printed
+    /// picture, `:save`) is skipped, [`Done::Skipped`] naming the file, and
+    /// the script goes on (a grader's script that draws is not failed).
     pub fn deny() -> Gate {
         Gate {
             policy: Policy::Deny,
@@ -179,14 +181,14 @@ impl Gate {
         }
     }
 
-    /// Performs `effect` if allowed: Ok(Some(path shown)) when written,
-    /// Ok(None) when the gate keeps it in memory, Err with the message
-    /// (`cannot write 'x.svg': …`) when refused or failed.
-    pub fn perform(&self, effect: &Effect) -> Result<Option<String>, WriteError> {
+    /// Performs `effect` if allowed: [`Done`] says whether it was written,
+    /// kept in memory or skipped (`--no-write`); Err with the message
+    /// (`cannot write 'x.svg': …`) when refused (`--write-dir`) or failed.
+    pub fn perform(&self, effect: &Effect) -> Result<Done, WriteError> {
         let (folder, overwrite) = match effect {
             Effect::Picture { to, .. } => match (&self.pictures, to) {
                 (Pictures::InMemory, _) | (Pictures::Saved, PictureTo::Printed(_)) => {
-                    return Ok(None);
+                    return Ok(Done::InMemory);
                 }
                 (Pictures::All(dir), PictureTo::Printed(_)) => (dir.as_path(), true),
                 (_, PictureTo::Saved(_)) => (Path::new(""), true),
@@ -196,8 +198,8 @@ impl Gate {
         let name = effect.name();
         let (real, shown) = match &self.policy {
             Policy::Deny => {
-                return Err(WriteError::Refused(format!(
-                    "cannot write '{}': writing files is turned off (--no-write)",
+                return Ok(Done::Skipped(format!(
+                    "'{}' not written: writing files is turned off (--no-write)",
                     show(&folder.join(&name))
                 )));
             }
@@ -216,7 +218,7 @@ impl Gate {
             Effect::Write { bytes, .. } => bytes.clone(),
         };
         match atomic::write(&real, &bytes, overwrite) {
-            Ok(()) => Ok(Some(shown)),
+            Ok(()) => Ok(Done::Written(shown)),
             Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => {
                 Err(WriteError::Exists(shown))
             }
@@ -226,6 +228,17 @@ impl Gate {
             ))),
         }
     }
+}
+
+/// What the gate did with an effect it allowed.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Done {
+    /// Written: the path as shown (`→ pic.svg`).
+    Written(String),
+    /// Kept in memory (a library session, a notebook's printed picture).
+    InMemory,
+    /// Skipped under `--no-write`: the warning, naming the file.
+    Skipped(String),
 }
 
 /// Why a write did not happen.

@@ -92,7 +92,7 @@ pub fn script(session: &Session) -> String {
 
 /// `:save FILE` (`overwrite` false) or `:save! FILE`: Ok is the message
 /// for stdout, Err the one for stderr. The file is written by the
-/// session's effects gate (atomically; refused under `--no-write`,
+/// session's effects gate (atomically; skipped under `--no-write`,
 /// confined by `--write-dir`).
 pub fn save(session: &mut Session, arg: &str, overwrite: bool) -> Result<String, String> {
     let name = arg.trim().trim_matches(|c| c == '"' || c == '\'');
@@ -110,6 +110,7 @@ pub fn save(session: &mut Session, arg: &str, overwrite: bool) -> Result<String,
         overwrite,
     };
     match session.gate.perform(&effect) {
+        Ok(crate::effects::Done::Skipped(m)) => Err(format!(":save: {m}")),
         Ok(_) => Ok(format!(
             "saved {} statement{} to {shown}",
             session.accepted.len(),

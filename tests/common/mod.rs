@@ -322,3 +322,35 @@ pub fn scratch(name: &str) -> PathBuf {
     std::fs::create_dir_all(&d).expect("a temporary folder");
     d
 }
+
+// ------------------------------------------------- the Python test tools
+
+/// Says on the test's real stderr (not captured, so `cargo test` shows it
+/// beside the test's `ok`) that a check was skipped and why.
+pub fn say_skipped(why: &str) {
+    let _ = writeln!(std::io::stderr().lock(), "skipped: {why}");
+}
+
+/// The Python with the pinned tools of `tests/jupyter/requirements.txt`
+/// (Jupyter's test tools, xmlschema): `CHASLES_JUPYTER_PYTHON`, else
+/// `target/jupyter-venv` (which `.ci/run` creates) when present. Without
+/// one the caller skips its check and says so, unless
+/// `CHASLES_REQUIRE_JUPYTER` is set (as `.ci/run` sets it): then the test
+/// fails.
+pub fn test_python() -> Option<PathBuf> {
+    let named = std::env::var_os("CHASLES_JUPYTER_PYTHON")
+        .filter(|p| !p.is_empty())
+        .map(PathBuf::from);
+    let venv = Path::new(env!("CARGO_MANIFEST_DIR")).join("target/jupyter-venv/bin/python");
+    let found = named.or_else(|| venv.is_file().then_some(venv));
+    if found.is_none() {
+        let msg = "no Python with the test tools of tests/jupyter/requirements.txt: set \
+                   CHASLES_JUPYTER_PYTHON or run .ci/run";
+        assert!(
+            std::env::var_os("CHASLES_REQUIRE_JUPYTER").is_none(),
+            "{msg}"
+        );
+        say_skipped(msg);
+    }
+    found
+}
