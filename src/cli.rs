@@ -52,6 +52,10 @@ struct Opts {
     /// Keep running after an error.
     #[arg(long, global = true)]
     keep_going: bool,
+    /// Print only errors, warnings and failed asserts (batch runs,
+    /// grading): no value is printed, as if every statement ended by `;`.
+    #[arg(long, global = true)]
+    quiet: bool,
     /// Print exact numbers as such: 1/√2, √3/2, π/6 (floats stay decimals;
     /// text output; the REPL's :exact).
     #[arg(long, global = true)]
@@ -289,8 +293,9 @@ fn run_sources(sources: &[(String, String)], mode: Mode, opts: &Opts) -> i32 {
         let keep_going = opts.keep_going || mode == Mode::Check;
         errors += session.run(src, mode, keep_going, |r| {
             statements += 1;
-            // `check` prints only errors and its summary (or JSON lines).
-            if mode == Mode::Run || settings.json {
+            // `check` prints only errors and its summary (or JSON lines);
+            // `--quiet` only errors (a failed assert is one) and warnings.
+            if (mode == Mode::Run || settings.json) && !(opts.quiet && r.result.is_ok()) {
                 let text = r.stdout(&settings, src);
                 if !text.is_empty() {
                     emit(&mut out, &text);
