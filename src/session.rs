@@ -162,7 +162,9 @@ impl Session {
         };
         let fail = |m: String| Diagnostic::error(ErrorKind::Domain, o.span, m);
         let p = crate::draw::described(p).map_err(fail)?;
-        let effect = if !p.is_view_only() && o.prints {
+        // A picture `save` names is written even by a silent statement
+        // (`save(pic, "f.svg");`); one only printed is not, when silenced.
+        let effect = if !p.is_view_only() && (o.prints || p.save_to.is_some()) {
             let to = match (&p.save_to, o.names.as_slice()) {
                 (Some(f), _) => PictureTo::Saved(f.into()),
                 (None, [name]) => PictureTo::Printed(format!("{}.svg", file_stem(name))),

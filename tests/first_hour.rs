@@ -298,7 +298,7 @@ fn help_for_everything() {
 /// symbols; [V]ᵀ is not se(3).
 #[test]
 fn the_transpose_of_so3_is_so3() {
-    let j = json("w = (1, 2, 3); [w]^T; [w].T + [w]; [(1, 2, 3, 4, 5, 6)]^T");
+    let j = json("w = (1, 2, 3)\n[w]^T\n[w].T + [w]\n[(1, 2, 3, 4, 5, 6)]^T");
     assert_eq!(j[1]["type"], "so3");
     assert_eq!(
         j[1]["value"],

@@ -8,6 +8,7 @@
 pub mod algebra;
 pub mod bind;
 pub mod error;
+mod frame_text;
 mod free;
 mod hints;
 pub mod name;

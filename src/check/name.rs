@@ -26,6 +26,12 @@ static ASCII_TEXT: [u8; ASCII as usize] = {
     t
 };
 
+/// [`ASCII_TEXT`] as text, to slice one character from.
+static ASCII_STR: &str = match std::str::from_utf8(&ASCII_TEXT) {
+    Ok(s) => s,
+    Err(_) => "",
+};
+
 /// The text of every longer name, by handle − [`ASCII`], and the way back.
 #[derive(Default)]
 struct Table {
@@ -64,7 +70,8 @@ impl Name {
     pub fn as_str(self) -> &'static str {
         if self.0 < ASCII {
             let i = self.0 as usize;
-            return std::str::from_utf8(&ASCII_TEXT[i..=i]).unwrap_or("");
+            // (one ASCII byte is a whole character: no scan)
+            return ASCII_STR.get(i..=i).unwrap_or("");
         }
         table().text[(self.0 - ASCII) as usize]
     }

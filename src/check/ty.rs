@@ -338,23 +338,6 @@ impl Frame {
     }
 }
 
-impl fmt::Display for Frame {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let name = self.name.as_str();
-        // As the name wrote it, with one more prime once moved further.
-        let primes = match self.written {
-            at if at > 0 && self.moved == at => at,
-            at if at > 0 && self.moved > at => at + 1,
-            _ => u32::from(self.moved > 0),
-        };
-        f.write_str(name)?;
-        for _ in 0..primes {
-            f.write_str("'")?;
-        }
-        Ok(())
-    }
-}
-
 /// The frame tag of a value (LANGUAGE.md §6).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Frames {
@@ -432,22 +415,6 @@ impl Frames {
             Frames::Pair(a, b) => Frames::Pair(*b, *a),
             Frames::Transposed(a, b) => Frames::Transposed(*b, *a),
             other => *other,
-        }
-    }
-}
-
-impl fmt::Display for Frames {
-    /// `{a}`, `{a}←{b}`, `displacement in {a}`; empty when untagged.
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        if let Some(a) = self.displacement_frame() {
-            return write!(f, "displacement in {{{a}}}");
-        }
-        match self {
-            Frames::None => Ok(()),
-            Frames::One(a) => write!(f, "{{{a}}}"),
-            Frames::Pair(a, b) => write!(f, "{{{a}}}←{{{b}}}"),
-            Frames::Disp(a) => write!(f, "displacement in {{{a}}}"),
-            Frames::Transposed(a, b) => write!(f, "({{{a}}}←{{{b}}})ᵀ"),
         }
     }
 }

@@ -190,8 +190,9 @@ impl Batch<'_> {
         }
         errors += session.run(src, self.mode, keep_going, |r| {
             statements += 1;
-            // `check` prints only errors and its summary (or JSON lines).
-            if self.mode == Mode::Run || settings.json {
+            // `check` prints only errors and its summary (or JSON lines);
+            // `--quiet` only errors (a failed assert is one) and warnings.
+            if (self.mode == Mode::Run || settings.json) && !(self.opts.quiet && r.result.is_ok()) {
                 let text = r.stdout(&settings, src);
                 if !text.is_empty() {
                     if self.file_key {

@@ -165,7 +165,8 @@ impl<'a> Interp<'a> {
             ty: t.ty,
             val: t.val,
             note: None,
-            prints: true,
+            // (a statement ended by `;` is silent, LANGUAGE.md §3)
+            prints: !s.silent,
             parts: Vec::new(),
             labels: &[],
         };

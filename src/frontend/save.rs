@@ -42,7 +42,9 @@ pub fn run_recording_each(
             && let Some(text) = src.get(outcome.span.start..outcome.span.end)
             && !text.trim().is_empty()
         {
-            accepted.push(text.trim().to_string());
+            // (a silent statement stays silent when the script reruns)
+            let silent = crate::syntax::silenced(src, outcome.span.end);
+            accepted.push(format!("{}{}", text.trim(), if silent { ";" } else { "" }));
         }
     });
     session.accepted.extend(accepted);

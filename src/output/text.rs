@@ -276,7 +276,8 @@ fn write_type_label(out: &mut String, ty: &Ty, val: Option<&Value>) -> bool {
                 }
             }
             if !ty.frames.is_none() {
-                let _ = write!(out, " {}", ty.frames);
+                out.push(' ');
+                ty.frames.write_to(out);
             }
             true
         }

@@ -23,6 +23,10 @@ pub struct Stmt {
     pub kind: StmtKind,
     /// The whole statement, without its terminator.
     pub span: Span,
+    /// Ended by `;` (LANGUAGE.md §3): evaluated and bound, but its value
+    /// is not printed, as in MATLAB and Julia. Errors, warnings and notes
+    /// still print.
+    pub silent: bool,
 }
 
 #[derive(Debug, Clone, PartialEq)]

@@ -187,7 +187,11 @@ fn statement_in(text: &str, off: usize, stack: &mut Stack) -> Option<Stmt> {
     p.ws();
     p.stack.stop = p.pos;
     p.stack.spent = BUDGET - p.budget;
-    Some(Stmt { kind, span })
+    Some(Stmt {
+        kind,
+        span,
+        silent: false,
+    })
 }
 
 type Built = Option<(Expr, usize)>;

@@ -88,6 +88,7 @@ fn statements_read(
             && let Some(mut stmt) = fast::parse_statement_in(src, from, &mut stack)
         {
             splitter.skip_to(stack.end);
+            stmt.silent = src.as_bytes().get(stack.end) == Some(&b';');
             return Some(match after_parsing(&mut stmt, stack.passes, src) {
                 Ok(()) => Ok(stmt),
                 Err(d) => Err(d),
@@ -102,6 +103,7 @@ fn statements_read(
             && chunk.depth <= FAST_DEPTH
             && let Some(mut stmt) = fast::parse_statement_with(text, chunk.span, &mut stack)
         {
+            stmt.silent = silenced(src, stmt.span.end);
             return Some(after_parsing(&mut stmt, stack.passes, src).map(|()| stmt));
         }
         let parsed = match chunk.error {
@@ -110,12 +112,22 @@ fn statements_read(
             None if chunk.depth > SHALLOW => parse_on_big_stack(text, chunk.span),
             None => parser::parse_chunk(text, chunk.span),
         };
-        Some(
-            parsed.and_then(|mut stmt| {
-                after_parsing(&mut stmt, fast::Passes::ALL, src).map(|()| stmt)
-            }),
-        )
+        Some(parsed.and_then(|mut stmt| {
+            stmt.silent = silenced(src, stmt.span.end);
+            after_parsing(&mut stmt, fast::Passes::ALL, src).map(|()| stmt)
+        }))
     })
+}
+
+/// Whether the statement ending at `end` in `src` is ended by `;` (only
+/// blanks between): it is silent (LANGUAGE.md §3). The splitter ends a
+/// statement at a `;` outside brackets, so the first byte after its text
+/// that is not a blank is its terminator; a comment's `;` is behind a `#`.
+pub fn silenced(src: &str, end: usize) -> bool {
+    src.as_bytes()
+        .get(end..)
+        .and_then(|rest| rest.iter().find(|&&b| !matches!(b, b' ' | b'\t' | b'\r')))
+        == Some(&b';')
 }
 
 /// The passes after parsing: `spacing` refuses what reads two ways,

@@ -75,7 +75,11 @@ pub(crate) fn parse_chunk(chunk: &str, span: Span) -> Result<Stmt, Diagnostic> {
         .find(|p| p.as_rule() != Rule::EOI)
         .ok_or_else(|| cx.internal(span))?;
     let kind = cx.statement(form)?;
-    Ok(Stmt { kind, span })
+    Ok(Stmt {
+        kind,
+        span,
+        silent: false,
+    })
 }
 
 /// Parses again with pest's error details (which rules were tried where),
