@@ -14,6 +14,7 @@ mod decide;
 mod derive;
 pub mod env;
 mod exactness;
+pub mod explain;
 mod expr;
 pub mod graph;
 mod hold;
