@@ -33,7 +33,7 @@ pub fn text(steps: &[Shown], style: Style) -> String {
         out.push_str("  ");
         out.push_str(&reference(s.reference));
         out.push('\n');
-        if !matches!(s.value, Value::Str(_)) {
+        if !matches!(s.value, Value::Str(_) | Value::Mech(_)) {
             let ty = Ty::plain(s.value.kind());
             let prefix = format!("{pad}{} = ", s.name);
             out.push_str(&crate::output::text::show_value(

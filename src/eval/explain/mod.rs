@@ -112,6 +112,24 @@ fn transform(v: &Value) -> Option<Mat4> {
     })
 }
 
+/// An SE(2) matrix (by its kind, or a 3×3 that is not a rotation and
+/// reads as one, LANGUAGE.md §5) embedded in SE(3), as Example 3.4 does.
+fn planar(v: &Value) -> Option<Mat4> {
+    let m = mat::<3, 3>(v)?;
+    let se2 = crate::lie::SE2::distance(&m) <= 1e-2;
+    if !(v.kind() == Kind::SE2 || (se2 && SO3::distance(&m) > 1e-2)) {
+        return None;
+    }
+    let mut t = Mat4::identity();
+    t[(0, 0)] = m[(0, 0)];
+    t[(0, 1)] = m[(0, 1)];
+    t[(1, 0)] = m[(1, 0)];
+    t[(1, 1)] = m[(1, 1)];
+    t[(0, 3)] = m[(0, 2)];
+    t[(1, 3)] = m[(1, 2)];
+    Some(t)
+}
+
 /// A 3-vector or the vee of an so(3) matrix (exponential coordinates).
 fn expc3(v: &Value) -> Option<Vec3> {
     mat::<3, 1>(v).or_else(|| mat::<3, 3>(v).map(|m| crate::lie::so3::vee(&m)))
@@ -132,9 +150,30 @@ impl Interp<'_> {
             Some(s) => s,
             None => return Err(refusal(e)),
         };
+        // A tuple's parts are the last steps (q, ŝ, h; the angles): the
+        // tuple itself is the last step.
+        if let Value::Tuple(parts) = value {
+            let reference = steps.last().map_or("3.6", |s| s.reference);
+            let same = steps.last().and_then(|s| numbers(&s.value)) == numbers(value)
+                && steps
+                    .last()
+                    .is_some_and(|s| !matches!(s.value, Value::Tuple(_)));
+            if !same || parts.len() == 3 && steps.last().is_some_and(|s| s.name == "h") {
+                steps.push(Shown {
+                    reference,
+                    name: "value".to_string(),
+                    text: "the result, part by part".to_string(),
+                    latex: String::new(),
+                    note: None,
+                    value: value.clone(),
+                    frames: Vec::new(),
+                });
+            }
+        }
         // The last step is the value itself (LANGUAGE.md §14).
         if let Some(last) = steps.last_mut() {
-            if !same_numbers(&last.value, value) {
+            let shape = |v: &Value| v.as_matrix().map(|m| m.shape());
+            if shape(&last.value) == shape(value) && !same_numbers(&last.value, value) {
                 last.note = Some(
                     "the value is computed from the exact form of the input; the steps show the \
                      floating-point algorithm on its numbers"
@@ -157,7 +196,11 @@ impl Interp<'_> {
             steps.push(Shown {
                 reference: "2.2",
                 name: "mechanism".to_string(),
-                text: "the mechanism".to_string(),
+                text: format!(
+                    "the mechanism: joints {}, {}",
+                    m.joints_text(),
+                    m.space().name()
+                ),
                 latex: r"\text{the mechanism}".to_string(),
                 note: None,
                 value: value.clone(),
@@ -171,7 +214,7 @@ impl Interp<'_> {
                 let Some(b) = crate::builtins::lookup(&func.name) else {
                     return Ok(None);
                 };
-                if value.is_symbolic() {
+                if has_symbols(value) {
                     return match args.first() {
                         Some(a) => self.symbolic_steps(b.name, a, value),
                         None => Ok(None),
@@ -182,7 +225,7 @@ impl Interp<'_> {
                 if let (true, Some(Value::Mech(m))) = (b.name == "dof", args.first()) {
                     return Ok(Some(mechanism(m)));
                 }
-                if args.iter().any(Value::is_symbolic) {
+                if args.iter().any(has_symbols) {
                     return Ok(None);
                 }
                 Ok(call_steps(b.name, &args).map(|s| s.into_iter().map(Shown::of).collect()))
@@ -211,6 +254,30 @@ impl Interp<'_> {
         self.warnings.truncate(warned);
         self.env.units_noted.truncate(units);
         Ok(out)
+    }
+}
+
+/// Whether a value holds symbols (a symbolic name or a formula).
+fn has_symbols(v: &Value) -> bool {
+    match v {
+        Value::Sym(_) | Value::Formula { .. } => true,
+        Value::Tuple(vs) => vs.iter().any(has_symbols),
+        _ => false,
+    }
+}
+
+/// The numbers of a value in order (a tuple's parts one after another).
+fn numbers(v: &Value) -> Option<Vec<f64>> {
+    match v {
+        Value::Num { m, .. } => Some(m.as_slice().to_vec()),
+        Value::Tuple(vs) => {
+            let mut out = Vec::new();
+            for x in vs {
+                out.extend(numbers(x)?);
+            }
+            Some(out)
+        }
+        _ => None,
     }
 }
 
@@ -254,10 +321,24 @@ fn call_steps(name: &str, args: &[Value]) -> Option<Vec<Step>> {
                 .and(transform(a0))
             {
                 steps::log::log6(&t, half.as_ref())
-            } else if a0.kind() != Kind::SE2 {
-                steps::log::log3(&rotation(a0)?, half.as_ref())
+            } else if let Some(t) = planar(a0) {
+                let mut out = vec![Step::new(
+                    "3.3.3.2",
+                    "T",
+                    "SE(2) as SE(3): [R, p; 0, 1] with R = Rot(ẑ, φ), p = (x, y, 0) (Example 3.4)",
+                    r"T = \begin{bmatrix} R & p \\ 0 & 1 \end{bmatrix}",
+                    Quantity::Transform(t),
+                )];
+                out.extend(steps::log::log6(&t, None));
+                if let Some(last) = out.last_mut() {
+                    last.name = "se2";
+                    last.text =
+                        "log T = [S]θ, read back in the plane: [[ω]θ, (vθ)ₓᵧ; 0, 0] (Example 3.4)"
+                            .into();
+                }
+                out
             } else {
-                return None;
+                steps::log::log3(&rotation(a0)?, half.as_ref())
             }
         }
         "MatrixLog3" => steps::log::matrix_log3(&rotation(a0)?, half.as_ref()),

@@ -51,7 +51,7 @@ impl Interp<'_> {
             return Ok(None);
         };
         let parts = self.quiet_values(&[(**lhs).clone(), (**rhs).clone()])?;
-        let (axis, theta) = match (parts[0].is_symbolic(), parts[1].is_symbolic()) {
+        let (axis, theta) = match (super::has_symbols(&parts[0]), super::has_symbols(&parts[1])) {
             (false, true) => (&parts[0], &parts[1]),
             (true, false) => (&parts[1], &parts[0]),
             _ => return Ok(None),

@@ -6,7 +6,7 @@
 use super::{Quantity as Q, Step};
 use crate::lie::repr::{self, Angles};
 use crate::lie::so3::rotz;
-use crate::lie::{Mat3, Vec3};
+use crate::lie::Mat3;
 
 /// Which Euler-type extraction.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -37,14 +37,18 @@ pub fn euler(r: &Mat3, which: Euler, gimbal: Option<bool>) -> Vec<Step> {
         Euler::Zxz => repr::euler_zxz_decided(r, gimbal),
         Euler::Rpy => repr::rpy_decided(r, gimbal),
     };
-    let (e, product) = match which {
-        Euler::Zyx => (angles.angles, "R = Rz(a) Ry(b) Rx(c)"),
-        Euler::Zxz => (angles.angles, "R = Rz(a) Rx(b) Rz(c)"),
-        // (roll, pitch, yaw) = (c, b, a) of ZYX
-        Euler::Rpy => (
-            Vec3::new(angles.angles.z, angles.angles.y, angles.angles.x),
-            "R = Rz(yaw) Ry(pitch) Rx(roll)",
-        ),
+    // (roll, pitch, yaw) = (c, b, a) of ZYX: the first and last angles
+    // of the product, and the value in the function's order.
+    let e = angles.angles;
+    let (first, last) = if which == Euler::Rpy {
+        (e.z, e.x)
+    } else {
+        (e.x, e.z)
+    };
+    let product = match which {
+        Euler::Zyx => "R = Rz(a) Ry(b) Rx(c)",
+        Euler::Zxz => "R = Rz(a) Rx(b) Rz(c)",
+        Euler::Rpy => "R = Rz(yaw) Ry(pitch) Rx(roll)",
     };
     let mut out = vec![Step::new(
         "App. B",
@@ -110,8 +114,13 @@ pub fn euler(r: &Mat3, which: Euler, gimbal: Option<bool>) -> Vec<Step> {
             r"a = \operatorname{atan2}(r_{21}, r_{11})",
         ),
     };
-    let a = if which == Euler::Rpy { e.z } else { e.x };
-    out.push(Step::new("App. B", a_name, a_text, a_latex, Q::Scalar(a)));
+    out.push(Step::new(
+        "App. B",
+        a_name,
+        a_text,
+        a_latex,
+        Q::Scalar(first),
+    ));
     out.push(Step::new(
         "App. B",
         "R_prime",
@@ -121,7 +130,7 @@ pub fn euler(r: &Mat3, which: Euler, gimbal: Option<bool>) -> Vec<Step> {
             "R' = Rz(−a) R = Ry(b) Rx(c)"
         },
         r"R' = R_z(-a)\, R",
-        Q::Matrix3(rotz(-angles.angles.x) * r),
+        Q::Matrix3(rotz(-first) * r),
     ));
     let (b_text, b_latex, c_text, c_latex) = if zxz {
         (
@@ -139,7 +148,6 @@ pub fn euler(r: &Mat3, which: Euler, gimbal: Option<bool>) -> Vec<Step> {
         )
     };
     out.push(Step::new("App. B", b_name, b_text, b_latex, Q::Scalar(e.y)));
-    let c = if which == Euler::Rpy { e.x } else { e.z };
     let c_step = Step::new(
         "App. B",
         c_name,
@@ -149,7 +157,7 @@ pub fn euler(r: &Mat3, which: Euler, gimbal: Option<bool>) -> Vec<Step> {
             c_text
         },
         if gimbal { "c = 0" } else { c_latex },
-        Q::Scalar(c),
+        Q::Scalar(last),
     );
     out.push(c_step);
     out.push(Step::new(
