@@ -303,7 +303,13 @@ impl<'a> Interp<'a> {
                 Ok(o)
             }
             StmtKind::Explain(e) => {
-                let mut t = self.expr(e)?;
+                let mut t = match self.expr(e) {
+                    Ok(t) => t,
+                    Err(d) if d.kind == ErrorKind::Frame => {
+                        return Err(self.explain_frame_error(e, d));
+                    }
+                    Err(d) => return Err(d),
+                };
                 self.commit(t.value(), s.span)?;
                 crate::check::rules::settle_in_place(&mut t.ty);
                 let steps = self.explain(e, &t)?;

@@ -107,7 +107,7 @@ pub fn latex(steps: &[Shown], style: Style) -> String {
             format!(
                 r"&{}{value} && \text{{{}}}",
                 s.latex,
-                reference(s.reference).replace('§', r"\S ")
+                reference(s.reference)
             )
         })
         .collect();

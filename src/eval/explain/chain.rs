@@ -93,6 +93,74 @@ impl Interp<'_> {
         Ok(framed.then_some(out))
     }
 
+    /// A frame error of `explain e` explained the same way as a chain: the
+    /// products that cancel, in order, then the one that does not.
+    pub(in crate::eval) fn explain_frame_error(&mut self, e: &Expr, d: Diagnostic) -> Diagnostic {
+        let warned = self.warnings.len();
+        let units = self.env.units_noted.len();
+        let mut lines = Vec::new();
+        let _ = self.trace_frames(e, &mut lines);
+        self.warnings.truncate(warned);
+        self.env.units_noted.truncate(units);
+        if lines.is_empty() {
+            return d;
+        }
+        let trace = lines
+            .iter()
+            .enumerate()
+            .map(|(i, l)| format!("  {}. {l}", i + 1))
+            .collect::<Vec<_>>()
+            .join("\n");
+        let help = match &d.help {
+            Some(h) => format!("{h}\nthe chain, step by step (§3.3.1.2):\n{trace}"),
+            None => format!("the chain, step by step (§3.3.1.2):\n{trace}"),
+        };
+        d.with_help(help)
+    }
+
+    /// The lines of [`Interp::explain_frame_error`]; Err at the product
+    /// that fails.
+    fn trace_frames(&mut self, e: &Expr, lines: &mut Vec<String>) -> Result<(), ()> {
+        let ExprKind::Binary {
+            op: BinOp::Mul,
+            lhs,
+            rhs,
+            ..
+        } = &e.kind
+        else {
+            return match inverse_of(e) {
+                Some(inner) => self.trace_frames(inner, lines),
+                None => Ok(()),
+            };
+        };
+        self.trace_frames(lhs, lines)?;
+        self.trace_frames(rhs, lines)?;
+        let (Ok(l), Ok(r)) = (self.expr(lhs), self.expr(rhs)) else {
+            return Err(());
+        };
+        let (ls, rs) = (src(self, lhs), src(self, rhs));
+        let (lf, rf) = (frames_text(&l.ty.frames), frames_text(&r.ty.frames));
+        match self.expr(e) {
+            Ok(t) => {
+                lines.push(format!(
+                    "{ls} · {rs}: ({lf}) · ({rf}) gives {}",
+                    frames_text(&t.ty.frames)
+                ));
+                Ok(())
+            }
+            Err(_) => {
+                let why = match (&l.ty.frames, &r.ty.frames) {
+                    (Frames::Pair(_, b), Frames::Pair(c, _) | Frames::One(c)) => {
+                        format!("{{{b}}} ≠ {{{c}}}: nothing cancels")
+                    }
+                    _ => "the frames do not compose".to_string(),
+                };
+                lines.push(format!("{ls} · {rs}: ({lf}) · ({rf}): {why}"));
+                Err(())
+            }
+        }
+    }
+
     /// `Ad(T_ab).T * F_a`: the steps of (3.99) with T_ab's adjoint.
     fn wrench_steps(&mut self, e: &Expr) -> Result<Option<Vec<Shown>>, Diagnostic> {
         let ExprKind::Binary { lhs, rhs, .. } = &e.kind else {

@@ -259,6 +259,13 @@ fn transform_steps(t: &Mat4, d: Option<&HalfTurn>, out: &mut Vec<Step>) -> Vec6 
         Q::Case(if d.half_turn { "half_turn" } else { "general" }),
     ));
     let parts = rotation_steps(&r, &d, out);
+    out.push(Step::new(
+        "3.95",
+        "so3",
+        "[ω]θ = log R",
+        r"[\omega]\theta = \log R",
+        Q::So3(so3::hat(&parts.phi)),
+    ));
     let theta = parts.theta;
     let w = parts.phi / theta;
     let wm = so3::hat(&w);

@@ -4,9 +4,9 @@
 //! quaternions and Cayley-Rodrigues parameters.
 
 use super::{Quantity as Q, Step};
+use crate::lie::Mat3;
 use crate::lie::repr::{self, Angles};
 use crate::lie::so3::rotz;
-use crate::lie::Mat3;
 
 /// Which Euler-type extraction.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
