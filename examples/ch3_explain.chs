@@ -52,5 +52,13 @@ given t : scalar
 S = (0, 0, 1, 2, 0, 0)
 explain exp([S] t)
 
+# --- §3.3.2: twists from Ṫ, T⁻¹Ṫ = [V_b] (3.72) and ṪT⁻¹ = [V_s] (3.73) --
+given q(t) : scalar
+T = RpToTrans(Rotz(q), [2 * cos(q); 2 * sin(q); 0])
+explain inv(T) diff(T, t)
+explain diff(T, t) inv(T)
+# and diff itself, the rule at each node (§3.2.2)
+explain diff(sin(q)^2 + 3 q, t)
+
 # --- Chapter 2, Grübler's formula (2.4), in the same step format --------
 explain mech < links 4; joints R R R R; planar >

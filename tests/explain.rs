@@ -231,3 +231,92 @@ fn last_step_is_the_statement_value_bit_for_bit() {
         }
     }
 }
+
+/// The outcome of the last statement of `src`.
+fn last_outcome(src: &str) -> chasles::eval::interp::Outcome {
+    let mut session = Session::new(Settings::default());
+    let mut outs = Vec::new();
+    let errors = session.run(src, Mode::Run, false, |r| outs.push(r.result.clone()));
+    assert_eq!(errors, 0, "{src}");
+    outs.pop().unwrap().unwrap()
+}
+
+fn shown<'a>(o: &'a chasles::eval::interp::Outcome, name: &str) -> &'a Value {
+    &o.steps
+        .iter()
+        .find(|s| s.name == name)
+        .unwrap_or_else(|| panic!("no step {name}"))
+        .value
+}
+
+fn floats(v: &Value) -> Vec<f64> {
+    match v {
+        Value::Num { m, .. } => m.as_slice().to_vec(),
+        other => panic!("not numbers: {other:?}"),
+    }
+}
+
+/// Twists from Ṫ (3.69)–(3.74): ω_b = vee(RᵀṘ), v_b = Rᵀṗ, ω_s =
+/// vee(ṘRᵀ), v_s = ṗ − ω_s × p, computed here independently.
+#[test]
+fn twists_from_t_dot_agree_with_the_book() {
+    let r = so3::exp(&Vec3::new(0.3, -0.2, 0.9));
+    let p = Vec3::new(1.0, -2.0, 0.5);
+    let w = Vec3::new(0.4, 0.1, -0.7);
+    let pdot = Vec3::new(0.2, 0.3, -1.0);
+    let rdot = so3::hat(&w) * r;
+    let t = se3::from_rp(&r, &p);
+    let mut tdot = Mat4::zeros();
+    tdot.fixed_view_mut::<3, 3>(0, 0).copy_from(&rdot);
+    tdot.fixed_view_mut::<3, 1>(0, 3).copy_from(&pdot);
+    let setup = format!("T = {}\nTd = {}", matrix_literal(&t), matrix_literal(&tdot));
+    let body = last_outcome(&format!("{setup}\nexplain inv(T) Td"));
+    let wb = so3::vee(&(r.transpose() * rdot));
+    let vb = r.transpose() * pdot;
+    for (got, want) in floats(shown(&body, "omega_b")).iter().zip(wb.iter()) {
+        assert!((got - want).abs() < 1e-12, "ω_b {got} vs {want}");
+    }
+    for (got, want) in floats(shown(&body, "v_b")).iter().zip(vb.iter()) {
+        assert!((got - want).abs() < 1e-12, "v_b {got} vs {want}");
+    }
+    let space = last_outcome(&format!("{setup}\nexplain Td inv(T)"));
+    let vs = pdot - w.cross(&p);
+    for (got, want) in floats(shown(&space, "omega_s")).iter().zip(w.iter()) {
+        assert!((got - want).abs() < 1e-12, "ω_s {got} vs {want}");
+    }
+    for (got, want) in floats(shown(&space, "v_s")).iter().zip(vs.iter()) {
+        assert!((got - want).abs() < 1e-12, "v_s {got} vs {want}");
+    }
+}
+
+/// `diff`: a step per node, bottom up, ending with the derivative itself.
+#[test]
+fn diff_steps_end_with_the_derivative() {
+    let src = "given q(t) : scalar\nx = diff(sin(q)^2 + 3 q, t)\nexplain diff(sin(q)^2 + 3 q, t)";
+    let mut session = Session::new(Settings::default());
+    let mut outs = Vec::new();
+    assert_eq!(
+        session.run(src, Mode::Run, false, |r| outs.push(r.result.clone())),
+        0
+    );
+    let explained = outs.pop().unwrap().unwrap();
+    let plain = outs.pop().unwrap().unwrap();
+    let texts: Vec<&str> = explained.steps.iter().map(|s| s.text.as_str()).collect();
+    assert_eq!(explained.steps.len(), 7, "{texts:?}");
+    assert!(texts[1].contains("chain rule"), "{texts:?}");
+    assert!(texts[2].contains("power rule"), "{texts:?}");
+    assert!(texts[6].contains("sum rule"), "{texts:?}");
+    assert_eq!(&explained.steps[6].value, plain.val.as_deref().unwrap());
+}
+
+/// Grübler (2.4): the counts and dof as numbers (Example 2.1, the four-bar).
+#[test]
+fn grubler_steps_have_the_counts() {
+    let o = last_outcome("explain dof(mech < links 4; joints R R R R; planar >)");
+    let n = |name| shown(&o, name).as_scalar().unwrap();
+    assert_eq!(
+        (n("m"), n("N"), n("J"), n("f_i"), n("dof")),
+        (3.0, 4.0, 4.0, 4.0, 1.0)
+    );
+    assert_eq!(o.steps.last().unwrap().reference, "2.4");
+}

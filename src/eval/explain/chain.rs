@@ -17,7 +17,7 @@ fn src<'s>(it: &Interp<'s>, e: &Expr) -> &'s str {
 }
 
 /// `X^-1` or `inv(X)` / `TransInv(X)` / `RotInv(X)`: X.
-fn inverse_of(e: &Expr) -> Option<&Expr> {
+pub(super) fn inverse_of(e: &Expr) -> Option<&Expr> {
     match &e.kind {
         ExprKind::Call { func, args } if args.len() == 1 => {
             let b = crate::builtins::lookup(&func.name)?;

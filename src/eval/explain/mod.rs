@@ -6,10 +6,14 @@
 //! the statement's value itself.
 //!
 //! Submodules: [`chain`] (frame chains: which subscripts cancel, in
-//! order), [`symbolic`] (closed forms over symbols, Prop. 3.16).
+//! order), [`symbolic`] (closed forms over symbols, Prop. 3.16),
+//! [`calculus`] (twists from Ṫ, (3.69)–(3.75); `diff` node by node).
 
+mod calculus;
 mod chain;
 mod symbolic;
+
+use chain::inverse_of as chain_inverse;
 
 use super::interp::{Interp, Typed};
 use super::value::Value;
@@ -78,8 +82,9 @@ fn quantity(q: &Quantity) -> Value {
 pub const COVERS: &str = "explain covers log / MatrixLog3 / MatrixLog6 (§3.2.3.3, §3.3.3.2), exp / MatrixExp3 / \
      MatrixExp6 (3.51, Prop. 3.16), inv / RotInv / TransInv (3.64), Ad (Def. 3.6), ScrewToAxis / screw / \
      screw_params (§3.3.2.2), Ad(T_ab).T * F_a (3.99), euler_zyx / euler_zxz / rpy / quat / cayley, \
-     products of framed values (the subscript cancellation rule), mechanisms (Grübler, (2.4)) and \
-     exp of a screw axis times a symbol (Prop. 3.16)";
+     products of framed values (the subscript cancellation rule), twists from Ṫ (inv(T) Ṫ, Ṫ inv(T), \
+     (3.69)–(3.75)), diff (the rule at each node), mechanisms (Grübler, (2.4)) and exp of a screw \
+     axis times a symbol (Prop. 3.16)";
 
 /// Numbers of a value as a fixed 3-vector, 6-vector, 3×3 or 4×4 matrix.
 fn mat<const R: usize, const C: usize>(v: &Value) -> Option<nalgebra::SMatrix<f64, R, C>> {
@@ -214,6 +219,9 @@ impl Interp<'_> {
                 let Some(b) = crate::builtins::lookup(&func.name) else {
                     return Ok(None);
                 };
+                if b.name == "diff" {
+                    return self.diff_steps(args);
+                }
                 if has_symbols(value) {
                     return match args.first() {
                         Some(a) => self.symbolic_steps(b.name, a, value),
@@ -230,7 +238,10 @@ impl Interp<'_> {
                 }
                 Ok(call_steps(b.name, &args).map(|s| s.into_iter().map(Shown::of).collect()))
             }
-            ExprKind::Binary { .. } => self.chain_steps(e),
+            ExprKind::Binary { .. } => match self.twist_steps(e, value) {
+                Some(steps) => Ok(Some(steps)),
+                None => self.chain_steps(e),
+            },
             _ => Ok(None),
         }
     }
