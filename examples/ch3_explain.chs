@@ -8,6 +8,7 @@
 w_hat = (0, 0.866, 0.5)
 theta = 30 deg
 explain exp([w_hat] theta)
+explain Rot(w_hat, theta)        # the same by Rot(ω̂, θ) = e^{[ω̂]θ}
 R_sb = Rot(w_hat, theta);
 # ...and back: the log of R_sb (§3.2.3.3, case (iii)) gives ω̂ and θ again
 explain MatrixLog3(R_sb)
@@ -51,6 +52,13 @@ explain ScrewToAxis((3, 0, 0), (0, 0, 1), 2)
 given t : scalar
 S = (0, 0, 1, 2, 0, 0)
 explain exp([S] t)
+# the joint's transform times a home configuration M: the product as written
+M = [1, 0, 0, 0; 0, 1, 0, 3; 0, 0, 1, 0; 0, 0, 0, 1]
+explain exp([S] (pi/2)) M
+# closed forms of the inverse (3.64) and the adjoint (Def. 3.6) over a symbol
+T_t = RpToTrans(Rotz(t), [1; 2; 0])
+explain inv(T_t)
+explain Ad(T_t)
 
 # --- §3.3.2: twists from Ṫ, T⁻¹Ṫ = [V_b] (3.72) and ṪT⁻¹ = [V_s] (3.73) --
 given q(t) : scalar

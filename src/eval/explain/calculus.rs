@@ -3,7 +3,7 @@
 //! book names — and `diff(x, t)` with the rule used at each node of x
 //! (sum, product, quotient, power, chain rule), bottom up.
 
-use super::{Shown, chain_inverse};
+use super::{Shown, block, chain_inverse};
 use crate::check::ty::Kind;
 use crate::diagnostics::Diagnostic;
 use crate::eval::formula;
@@ -23,24 +23,6 @@ fn shown(reference: &'static str, name: &str, text: String, latex: String, value
         note: None,
         value,
         frames: Vec::new(),
-    }
-}
-
-/// The block `rows × cols` of a numeric or symbolic matrix, as `kind`.
-fn block(
-    v: &Value,
-    rows: std::ops::Range<usize>,
-    cols: std::ops::Range<usize>,
-    kind: Kind,
-) -> Option<Value> {
-    match v {
-        Value::Num { m, .. } => {
-            let d = m.to_dmatrix();
-            let b = d.view((rows.start, cols.start), (rows.len(), cols.len()));
-            Some(Value::num(kind, &b))
-        }
-        Value::Formula { m, .. } => Some(formula::make(&kind, m.block(rows, cols))),
-        _ => None,
     }
 }
 

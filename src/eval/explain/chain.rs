@@ -61,8 +61,8 @@ fn frames_text(f: &Frames) -> String {
 }
 
 impl Interp<'_> {
-    /// The steps of a product of framed values, None when no factor has
-    /// frames (a product of plain numbers has no chain to show).
+    /// The steps of a product of framed values (or of matrices), None for
+    /// a product of plain numbers (no chain to show).
     pub(super) fn chain_steps(&mut self, e: &Expr) -> Result<Option<Vec<Shown>>, Diagnostic> {
         if !matches!(e.kind, ExprKind::Binary { op: BinOp::Mul, .. }) {
             return Ok(None);
@@ -81,7 +81,13 @@ impl Interp<'_> {
                     self.warnings.truncate(warned);
                     return Err(d);
                 }
-                out.iter().any(|s| !s.frames.is_empty())
+                // frames to follow, or at least matrices and vectors (a
+                // product of plain numbers has no chain to show)
+                out.iter().any(|s| {
+                    !s.frames.is_empty()
+                        || matches!(&s.value, Value::Num { m, .. } if m.len() > 1)
+                        || matches!(s.value, Value::Formula { .. })
+                })
             }
             Err(d) => {
                 self.warnings.truncate(warned);
@@ -249,6 +255,17 @@ impl Interp<'_> {
             _ => "the frames compose".to_string(),
         };
         let (ls, rs) = (src(self, lhs), src(self, rhs));
+        if l.ty.frames.is_none() && r.ty.frames.is_none() {
+            return Shown {
+                reference: rule_ref(&l.ty.kind),
+                name: "chain".to_string(),
+                text: format!("{ls} · {rs}: the product as written (no frames to cancel)"),
+                latex: format!(r"\left({ls}\right)\left({rs}\right)"),
+                note: None,
+                value: t.value().cloned().unwrap_or(Value::Bool(false)),
+                frames: Vec::new(),
+            };
+        }
         Shown {
             reference: rule_ref(&l.ty.kind),
             name: "chain".to_string(),

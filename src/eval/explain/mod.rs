@@ -180,8 +180,8 @@ impl Interp<'_> {
             let shape = |v: &Value| v.as_matrix().map(|m| m.shape());
             if shape(&last.value) == shape(value) && !same_numbers(&last.value, value) {
                 last.note = Some(
-                    "the value is computed from the exact form of the input; the steps show the \
-                     floating-point algorithm on its numbers"
+                    "chasles computes this value from the exact form of the input (its closed \
+                     form), so it may differ in the last digits from the floating-point steps above"
                         .to_string(),
                 );
             }
@@ -265,6 +265,24 @@ impl Interp<'_> {
         self.warnings.truncate(warned);
         self.env.units_noted.truncate(units);
         Ok(out)
+    }
+}
+
+/// The block `rows × cols` of a numeric or symbolic matrix, as `kind`.
+pub(super) fn block(
+    v: &Value,
+    rows: std::ops::Range<usize>,
+    cols: std::ops::Range<usize>,
+    kind: Kind,
+) -> Option<Value> {
+    match v {
+        Value::Num { m, .. } => {
+            let d = m.to_dmatrix();
+            let b = d.view((rows.start, cols.start), (rows.len(), cols.len()));
+            Some(Value::num(kind, &b))
+        }
+        Value::Formula { m, .. } => Some(super::formula::make(&kind, m.block(rows, cols))),
+        _ => None,
     }
 }
 
@@ -369,6 +387,14 @@ fn call_steps(name: &str, args: &[Value]) -> Option<Vec<Step>> {
             _ => return None,
         },
         "Adjoint" => steps::motion::adjoint(&transform(a0)?),
+        "Rot" => {
+            let (axis, theta) = (mat::<3, 1>(a0)?, args.get(1)?.as_scalar()?);
+            let n = axis.norm();
+            if !(n > 0.0 && n.is_finite()) {
+                return None;
+            }
+            steps::exp::exp3(&(axis * (theta / n)))
+        }
         "ScrewToAxis" | "screw" => {
             let (q, s, h) = (
                 mat::<3, 1>(a0)?,

@@ -4,7 +4,7 @@
 //! then e^{[ω]θ} by Rodrigues (3.51) and G(θ)v (3.89) as closed forms;
 //! `exp([ω̂] θ)` is (3.51).
 
-use super::{Shown, expc3, expc6};
+use super::{Shown, block, expc3, expc6};
 use crate::check::ty::Kind;
 use crate::diagnostics::Diagnostic;
 use crate::eval::formula;
@@ -25,6 +25,70 @@ fn shown(reference: &'static str, name: &str, text: &str, latex: &str, value: Va
     }
 }
 
+/// The closed forms of an inverse (Prop. 3.1, (3.64)) or an adjoint
+/// (Def. 3.6) over symbols, read from the blocks of the value as the book
+/// writes them.
+fn inverse_or_adjoint(name: &str, shape: (usize, usize), value: &Value) -> Option<Vec<Shown>> {
+    let v3 = Kind::Vector(Some(3));
+    let m3 = Kind::Matrix(Some(3), Some(3));
+    Some(match (name, shape) {
+        ("inv" | "TransInv", (4, 4)) => vec![
+            shown(
+                "3.64",
+                "R_T",
+                "Rᵀ (= R⁻¹, Prop. 3.1)",
+                r"R^T",
+                block(value, 0..3, 0..3, Kind::SO3)?,
+            ),
+            shown(
+                "3.64",
+                "p_inv",
+                "−Rᵀp",
+                r"-R^T p",
+                block(value, 0..3, 3..4, v3)?,
+            ),
+            shown(
+                "3.64",
+                "T_inv",
+                "T⁻¹ = [Rᵀ, −Rᵀp; 0, 1]",
+                r"T^{-1} = \begin{bmatrix} R^T & -R^T p \\ 0 & 1 \end{bmatrix}",
+                value.clone(),
+            ),
+        ],
+        ("inv" | "RotInv", (3, 3)) => vec![shown(
+            "Prop. 3.1",
+            "R_inv",
+            "R⁻¹ = Rᵀ",
+            r"R^{-1} = R^T",
+            value.clone(),
+        )],
+        ("Adjoint", (6, 6)) => vec![
+            shown(
+                "Def. 3.6",
+                "R",
+                "R",
+                "R",
+                block(value, 0..3, 0..3, Kind::SO3)?,
+            ),
+            shown(
+                "Def. 3.6",
+                "pR",
+                "[p]R",
+                r"[p]R",
+                block(value, 3..6, 0..3, m3)?,
+            ),
+            shown(
+                "Def. 3.6",
+                "Ad",
+                "[Ad_T] = [R, 0; [p]R, R]",
+                r"[\mathrm{Ad}_T] = \begin{bmatrix} R & 0 \\ [p]R & R \end{bmatrix}",
+                value.clone(),
+            ),
+        ],
+        _ => return None,
+    })
+}
+
 impl Interp<'_> {
     /// The closed-form steps of `name(arg)` whose value is symbolic, None
     /// when there is none to show.
@@ -34,12 +98,15 @@ impl Interp<'_> {
         arg: &Expr,
         value: &Value,
     ) -> Result<Option<Vec<Shown>>, Diagnostic> {
-        if !matches!(name, "exp" | "MatrixExp3" | "MatrixExp6") {
-            return Ok(None);
-        }
         let Some(m) = formula::mat_of(value) else {
             return Ok(None);
         };
+        if let Some(steps) = inverse_or_adjoint(name, (m.rows, m.cols), value) {
+            return Ok(Some(steps));
+        }
+        if !matches!(name, "exp" | "MatrixExp3" | "MatrixExp6") {
+            return Ok(None);
+        }
         // `[S] θ` or `θ [S]`: the numeric axis and the symbolic angle.
         let ExprKind::Binary {
             op: BinOp::Mul,
