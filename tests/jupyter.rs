@@ -1,7 +1,9 @@
 //! The Jupyter kernel driven by Jupyter's own tools (LANGUAGE.md §13):
 //! `tests/jupyter/kernel_test.py` runs `jupyter_kernel_test`'s protocol
 //! suite and the interrupt tests, `tests/jupyter/notebook_test.py` executes
-//! `notebooks/ch3_tour.ipynb` with `nbclient` and checks its outputs. Each
+//! `notebooks/ch3_tour.ipynb` with `nbclient` and checks its outputs, and
+//! `tests/jupyter/explain_notebook_test.py` does the same for
+//! `notebooks/explain.ipynb` (`explain` rendered, §14). Each
 //! installs the kernelspec of this build into a temporary
 //! `JUPYTER_DATA_DIR` first.
 //!
@@ -77,5 +79,12 @@ fn the_protocol_suite_and_interrupts() {
 fn the_tour_notebook_runs_end_to_end() {
     if let Some(python) = python() {
         run_script(&python, "notebook_test.py", "notebook-test");
+    }
+}
+
+#[test]
+fn the_explain_notebook_runs_end_to_end() {
+    if let Some(python) = python() {
+        run_script(&python, "explain_notebook_test.py", "explain-notebook-test");
     }
 }

@@ -112,6 +112,7 @@ fn stmt_sexp(s: &Stmt) -> String {
         }
         StmtKind::Derive { target } => format!("derive {}", target.name),
         StmtKind::Assert(e) => format!("assert {}", sexp(e)),
+        StmtKind::Explain(e) => format!("explain {}", sexp(e)),
     }
 }
 
@@ -940,6 +941,19 @@ fn comparisons_and_assert() {
     assert_eq!(stmt_sexp(&one("assert(a == b)")), "assert (== a b)");
     // `assert` is not reserved: it can still be a name.
     assert_eq!(stmt_sexp(&one("assert = 3")), "assert = 3");
+}
+
+/// `explain EXPR` takes one expression (LANGUAGE.md §14); like `assert`,
+/// the word is not reserved.
+#[test]
+fn explain_statement() {
+    assert_eq!(stmt_sexp(&one("explain log(R)")), "explain log(R)");
+    assert_eq!(
+        stmt_sexp(&one("explain T_ad T_db")),
+        "explain (j* T_ad T_db)"
+    );
+    assert_eq!(stmt_sexp(&one("explain = 3")), "explain = 3");
+    assert_eq!(stmt_sexp(&one("explained = 3")), "explained = 3");
 }
 
 /// Issue 22: the forms a student types in the second hour, as trees.

@@ -169,6 +169,7 @@ impl<'a> Interp<'a> {
             prints: !s.silent,
             parts: Vec::new(),
             labels: &[],
+            steps: Vec::new(),
         };
         match &s.kind {
             StmtKind::Expr(e) => {
@@ -300,6 +301,26 @@ impl<'a> Interp<'a> {
                     Typed::new(Ty::plain(Kind::Bool), None),
                 );
                 o.prints = false;
+                Ok(o)
+            }
+            StmtKind::Explain(e) => {
+                let mut t = match self.expr(e) {
+                    Ok(t) => t,
+                    Err(d) if d.kind == ErrorKind::Frame => {
+                        return Err(self.explain_frame_error(e, d));
+                    }
+                    Err(d) => return Err(d),
+                };
+                self.commit(t.value(), s.span)?;
+                crate::check::rules::settle_in_place(&mut t.ty);
+                let steps = self.explain(e, &t)?;
+                if t.ty.kind != Kind::Function {
+                    self.bind_value(*super::env::ANS, &t);
+                }
+                let mut o = out(Names::Many(Vec::new()), t);
+                o.labels = self.part_labels(e);
+                self.shown(&mut o.val, s.span);
+                o.steps = steps;
                 Ok(o)
             }
             StmtKind::Derive { target } => {

@@ -6,6 +6,7 @@ mod compare;
 mod compound;
 mod derive;
 pub mod env;
+pub mod explain;
 mod expr;
 pub mod graph;
 mod hold;

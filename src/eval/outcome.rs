@@ -25,6 +25,9 @@ pub struct Outcome {
     /// For a bare call of a builtin whose tuple parts have names
     /// ([`crate::builtins::parts`]), those names, to print `q = …`.
     pub labels: &'static [&'static str],
+    /// For `explain EXPR`, the book's steps that compute the value, the
+    /// last being the value itself (LANGUAGE.md §14); empty otherwise.
+    pub steps: Vec<super::explain::Shown>,
 }
 
 /// The names a statement bound, in order: read as a slice of names. One

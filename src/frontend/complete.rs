@@ -23,7 +23,8 @@ pub struct Candidate {
 
 /// Keywords of the language worth completing.
 const KEYWORDS: &[&str] = &[
-    "given", "derive", "mech", "assert", "for", "in", "pi", "deg", "rad", "true", "false",
+    "given", "derive", "mech", "assert", "explain", "for", "in", "pi", "deg", "rad", "true",
+    "false",
 ];
 
 /// Longest line the preview evaluates.
@@ -213,6 +214,11 @@ pub fn preview(session: &Session, line: &str) -> Option<String> {
     if line.len() > PREVIEW_MAX_CHARS || needs_more_input(line) {
         return None;
     }
+    // `explain X` previews the value of X, never its steps (LANGUAGE.md §14).
+    let line = match line.trim_start().strip_prefix("explain") {
+        Some(rest) if rest.starts_with([' ', '\t']) => rest,
+        _ => line,
+    };
     let mut copy = session.clone();
     copy.budget = crate::budget::Budget::preview();
     let (out, err, errors) = copy.evaluate_to_strings("<preview>", line, Mode::Run, false);

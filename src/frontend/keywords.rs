@@ -1,6 +1,6 @@
 //! Help for the words of the language that are not functions (LANGUAGE.md
 //! §11: every keyword, unit and command has help): keywords (`given`,
-//! `derive`, `mech`, `assert`), units (`deg`, `°`, `rad`), constants (`pi`,
+//! `derive`, `mech`, `assert`, `explain`), units (`deg`, `°`, `rad`), constants (`pi`,
 //! `e`, `inf`, `I`, `true`), `ans`, and the operators a student asks about
 //! (`==`, `≈`, `^T`, `^-1`).
 
@@ -34,6 +34,24 @@ pub const KEYWORDS: &[(&[&str], &str)] = &[
         "assert COND    stop the script (exit 1, an `assert` error) when COND is false,
   showing both sides: assert T_ce ≈ T_ce_book, assert det(R) == 1;
   passing asserts print nothing; `chasles check` checks the sides' kinds and frames",
+    ),
+    (
+        &["explain", "steps"],
+        "explain EXPR    the book's steps for the value of EXPR, with this case's numbers (§14):
+  each step names its equation, proposition or section and the quantity it gives;
+  the last step is the value itself. --json adds \"steps\": [{ref, name, text, value}];
+  --latex and notebooks render them as LaTeX. It covers:
+  log(R), MatrixLog3   §3.2.3.3: tr R (3.54), the case (R = I; tr R = −1 with (3.58)/(3.59)/(3.60);
+                       general), θ, ω̂ (3.61), [ω̂]θ; near θ = 0 or π the formula used instead and why
+  log(T), MatrixLog6   §3.3.3.2: the case (R = I: pure translation), G⁻¹(θ) (3.94), v (3.93)
+  exp, MatrixExp3/6    Rodrigues (3.51) term by term; Prop. 3.16: G(θ) (3.88), p (3.89), (3.90)
+  inv, TransInv        (3.64);  Ad(T): [p]R (Def. 3.6);  Ad(T_ab).T * F_a: (3.99)
+  ScrewToAxis, screw, screw_params    q, ŝ, h (§3.3.2.2)
+  euler_zyx, euler_zxz, rpy, quat, cayley    the branch and gimbal lock
+  T_ad T_db T_bc ...   a frame chain: which subscript cancels in each product, in order
+  mech < ... >, dof    Grübler's formula (2.4) with N, J, Σfᵢ, m
+  exp([S] θ)           with a symbol θ: q, ŝ, h of the axis and the closed forms (Prop. 3.16)
+  The REPL's preview shows the value only.",
     ),
     (
         &["for", "in", "range", "ranges", "list", "lists", ":"],

@@ -15,6 +15,8 @@
 //! - [`repr`]: Euler angles, roll-pitch-yaw, quaternions, Cayley parameters;
 //! - [`project`]: projection onto and distance to the groups (§3.6 software);
 //! - [`matexp`]: the exponential of a general square matrix (§3.2.3.1);
+//! - [`steps`]: the same algorithms recording the book's steps (`explain`,
+//!   LANGUAGE.md §14);
 //! - [`dlog`]: the rates of the exponential coordinates (log R, log T);
 //! - [`group`]: the groups as types ([`SO3`], [`SE3`], [`SO2`], [`SE2`])
 //!   with the [`LieGroup`] operations, over the functions above.
@@ -29,6 +31,7 @@ pub mod se2;
 pub mod se3;
 pub mod so2;
 pub mod so3;
+pub mod steps;
 
 pub use group::{LieGroup, SE2, SE3, SO2, SO3};
 

@@ -8,7 +8,7 @@ use super::{Mat3, Mat4, Mat6, Vec3, Vec6, near_zero, so3};
 
 /// Below this angle the coefficients of (3.89) and (3.94) come from their
 /// Taylor series (see [`exp`] and [`log`]).
-const SERIES_THETA: f64 = 1e-2;
+pub(crate) const SERIES_THETA: f64 = 1e-2;
 
 fn split(v: &Vec6) -> (Vec3, Vec3) {
     (Vec3::new(v[0], v[1], v[2]), Vec3::new(v[3], v[4], v[5]))
@@ -73,7 +73,7 @@ pub fn inv(t: &Mat4) -> Mat4 {
 /// comes from the series 1/6 − θ²/120 + θ⁴/5040 − θ⁶/362880 (truncation
 /// < 1e-24); above, its absolute error ε/θ² is multiplied by
 /// ‖[φ]²ρ‖ ≤ θ²‖ρ‖, i.e. costs only O(ε‖ρ‖).
-fn g_coeff(theta: f64, a: f64) -> f64 {
+pub(crate) fn g_coeff(theta: f64, a: f64) -> f64 {
     if theta < SERIES_THETA {
         let t2 = theta * theta;
         1.0 / 6.0 - t2 / 120.0 + t2 * t2 / 5040.0 - t2 * t2 * t2 / 362_880.0
@@ -117,7 +117,7 @@ pub fn exp(expc: &Vec6) -> Mat4 {
 /// ε/θ²), so below θ = 1e-2 the series 1/12 + θ²/720 + θ⁴/30240 +
 /// θ⁶/1209600 is used (truncation < 1e-20). At θ = π, cot(π/2) = 0 and the
 /// coefficient is 1/π²: no singularity on [0, π].
-fn ginv_coeff(theta: f64, sin: f64, cos: f64) -> f64 {
+pub(crate) fn ginv_coeff(theta: f64, sin: f64, cos: f64) -> f64 {
     if theta < SERIES_THETA {
         let t2 = theta * theta;
         1.0 / 12.0 + t2 / 720.0 + t2 * t2 / 30_240.0 + t2 * t2 * t2 / 1_209_600.0

@@ -15,7 +15,7 @@ pub(crate) type Block3<S> = Matrix<f64, U3, U3, S>;
 
 /// Below this angle the coefficients sinθ/θ and (1−cosθ)/θ² of Rodrigues'
 /// formula are evaluated by their Taylor series (truncation error < 1e-24).
-const SERIES_THETA: f64 = 1e-4;
+pub(crate) const SERIES_THETA: f64 = 1e-4;
 
 /// `VecToso3(ω)`: the 3×3 skew-symmetric matrix `[ω] ∈ so(3)` of
 /// Definition 3.3 (3.30), so that `[ω] x = ω × x`.
@@ -277,7 +277,7 @@ fn book_sign<S: Storage<f64, U3, U3>>(r: &Block3<S>, w: Vec3) -> Vec3 {
 /// largest diagonal entry, signed to agree with `s_vec` = sinθ ω̂, or the
 /// book's sign at a half turn. Zero for input that is not a rotation (e.g.
 /// NaN entries).
-fn near_pi_axis<S: Storage<f64, U3, U3>>(
+pub(crate) fn near_pi_axis<S: Storage<f64, U3, U3>>(
     r: &Block3<S>,
     c: f64,
     s_vec: &Vec3,

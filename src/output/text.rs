@@ -395,6 +395,14 @@ pub fn show_outcome(o: &Outcome, style: impl Into<Style>) -> String {
     if !o.prints {
         return String::new();
     }
+    // `explain`: the steps, the last of which is the value (§14).
+    if !o.steps.is_empty() {
+        return if style.sym == crate::sym::print::Mode::Latex {
+            super::steps::latex(&o.steps, style)
+        } else {
+            super::steps::text(&o.steps, style)
+        };
+    }
     // Room for a 4×4 matrix with its name and label, so printing one
     // rarely grows the string.
     let mut out = String::with_capacity(192);

@@ -59,6 +59,9 @@ pub enum StmtKind {
     /// `assert cond` — stops the script (an `assert` error) when `cond` is
     /// false, showing both sides of a comparison (LANGUAGE.md §3).
     Assert(Expr),
+    /// `explain expr` — the value of `expr` with the book's steps that
+    /// compute it (LANGUAGE.md §14).
+    Explain(Expr),
 }
 
 /// An expression node with its span.

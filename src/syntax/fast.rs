@@ -274,6 +274,13 @@ impl P<'_> {
             self.pos = end;
             return Some(StmtKind::Assert(self.expr(0)?.0));
         }
+        // `explain expr` (LANGUAGE.md §14), the same way.
+        if self.s.first() == Some(&b'e')
+            && let Some(end) = self.keyword_at(0, "explain")
+        {
+            self.pos = end;
+            return Some(StmtKind::Explain(self.expr(0)?.0));
+        }
         match self.byte(0)? {
             b'(' => {
                 if let Some(targets) = self.destructure_head() {

@@ -259,6 +259,10 @@ impl Cx {
                 Some(p) => Ok(StmtKind::Assert(self.expr(p)?.0)),
                 None => Err(self.internal(whole)),
             },
+            Rule::explain_stmt => match form.into_inner().find(|p| p.as_rule() == Rule::expr) {
+                Some(p) => Ok(StmtKind::Explain(self.expr(p)?.0)),
+                None => Err(self.internal(whole)),
+            },
             Rule::derive_stmt => {
                 let p = form
                     .into_inner()

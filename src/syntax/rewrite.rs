@@ -17,7 +17,9 @@ pub fn stmt(stmt: &mut Stmt) {
     match &mut stmt.kind {
         StmtKind::Expr(e) => expr(e),
         StmtKind::Assign { value, .. } | StmtKind::Destructure { value, .. } => expr(value),
-        StmtKind::FnDef { body, .. } | StmtKind::Assert(body) => expr(body),
+        StmtKind::FnDef { body, .. } | StmtKind::Assert(body) | StmtKind::Explain(body) => {
+            expr(body)
+        }
         StmtKind::Given { .. } | StmtKind::Derive { .. } => {}
     }
 }

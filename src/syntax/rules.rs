@@ -44,6 +44,7 @@ pub(crate) fn rule_name(rule: Rule) -> &'static str {
         Rule::given_name => "a name (or a function of time, `theta(t)`)",
         Rule::derive_stmt => "a `derive` statement",
         Rule::assert_stmt => "an `assert` statement",
+        Rule::explain_stmt => "an `explain` statement",
         Rule::fn_def => "a function definition",
         Rule::params => "a parameter name",
         Rule::destructure => "a destructuring assignment",
@@ -126,6 +127,7 @@ pub(crate) fn rule_name(rule: Rule) -> &'static str {
         Rule::kw_given => "`given`",
         Rule::kw_derive => "`derive`",
         Rule::kw_assert => "`assert`",
+        Rule::kw_explain => "`explain`",
         Rule::comp_tail | Rule::kw_for => "`for`",
         Rule::comp_var => "a name and `in`",
         Rule::kw_in => "`in`",
@@ -265,6 +267,7 @@ fn is_container(rule: Rule) -> bool {
             | Rule::given_name
             | Rule::derive_stmt
             | Rule::assert_stmt
+            | Rule::explain_stmt
             | Rule::fn_def
             | Rule::destructure
             | Rule::assign

@@ -39,7 +39,7 @@ pub fn check(stmt: &Stmt, src: &str) -> Checked {
         }
         StmtKind::Given { names, .. } => names.iter().try_for_each(|t| c.name(t)),
         StmtKind::Derive { target } => c.name(target),
-        StmtKind::Assert(cond) => c.expr(cond),
+        StmtKind::Assert(cond) | StmtKind::Explain(cond) => c.expr(cond),
     }
 }
 

@@ -133,8 +133,8 @@ fn fast_path_agrees_with_pest() {
 const TOKENS: &[&str] = &[
     "(", ")", "[", "]", ",", ";", "+", "-", "*", "/", "^", ".", "'", "deg", "°", "pi", "π", "1",
     "2.5", ".5", "1e", "1e-3", "T_ab", "x", "θ", "=", "==", ":", "true", "false", "given",
-    "derive", "mech", "assert", "~=", "≈", "<", ">", "\n", " ", "\t", "_{", "}", "f(", "**", ".T",
-    "_", // The book's notation.
+    "derive", "mech", "assert", "explain", "~=", "≈", "<", ">", "\n", " ", "\t", "_{", "}", "f(",
+    "**", ".T", "_", // The book's notation.
     "ᵀ", "^T", "^{", "sin", "cos ", "sqrt", "cot", "sec ", "csc", "e^", "0.", "1.e", "-1.", "[[",
     "]]", "I", "T_01", "²", "−", " −", "⁻¹", "⁻", // Issue 22's forms.
     "√", "·", "ŵ·", "×", "<=", ">=", "≤", "≥", "end", "for", "in", "^T (", "R (", "links",
@@ -234,10 +234,11 @@ proptest! {
     }
 
     #[test]
-    fn random_expressions_agree(e in expr(), form in 0..5usize) {
+    fn random_expressions_agree(e in expr(), form in 0..6usize) {
         let src = match form {
             0 => e,
             4 => format!("assert {e}"),
+            5 => format!("explain {e}"),
             1 => format!("y_1 = {e}"),
             2 => format!("h(a, b) = {e}"),
             _ => format!("(a, b) = {e}"),

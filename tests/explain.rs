@@ -1,0 +1,322 @@
+//! `explain` (LANGUAGE.md §14, issue 37): every step's value agrees with an
+//! independent computation of that quantity by the book's own formula
+//! where it is accurate — tr R (3.54), θ = cos⁻¹((tr R − 1)/2), ω̂ from
+//! (R − Rᵀ)/(2 sin θ) (3.61), G⁻¹(θ) from (3.94), v = G⁻¹(θ)p (3.93), G(θ)
+//! from (3.88) — and the last step is the expression's value bit for bit,
+//! in the library and through the language.
+
+use chasles::eval::env::Mode;
+use chasles::lie::steps::{self, Quantity, Step};
+use chasles::lie::{Mat3, Mat4, Vec3, Vec6, se3, so3};
+use chasles::session::{Session, Settings};
+use chasles::values::value::Value;
+use proptest::prelude::*;
+use std::f64::consts::PI;
+
+fn unit_axis() -> impl Strategy<Value = Vec3> {
+    (-1.0..1.0f64, -1.0..1.0f64, -1.0..1.0f64)
+        .prop_filter("axis not too short", |(x, y, z)| {
+            x * x + y * y + z * z > 0.01
+        })
+        .prop_map(|(x, y, z)| Vec3::new(x, y, z).normalize())
+}
+
+/// θ: uniform on (0, π), near 0, near π, or exactly π.
+fn angle() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        6 => 1e-9..PI,
+        1 => 1e-12..1e-5f64,
+        1 => (1e-12..1e-5f64).prop_map(|d| PI - d),
+        1 => Just(PI),
+    ]
+}
+
+fn point() -> impl Strategy<Value = Vec3> {
+    (-5.0..5.0f64, -5.0..5.0f64, -5.0..5.0f64).prop_map(|(x, y, z)| Vec3::new(x, y, z))
+}
+
+fn step<'a>(steps: &'a [Step], name: &str) -> &'a Step {
+    steps
+        .iter()
+        .find(|s| s.name == name)
+        .unwrap_or_else(|| panic!("no step {name} in {steps:#?}"))
+}
+
+fn scalar(s: &Step) -> f64 {
+    match s.value {
+        Quantity::Scalar(x) => x,
+        ref q => panic!("{} is {q:?}", s.name),
+    }
+}
+
+fn vector(s: &Step) -> Vec3 {
+    match s.value {
+        Quantity::Vector3(v) => v,
+        ref q => panic!("{} is {q:?}", s.name),
+    }
+}
+
+fn matrix(s: &Step) -> Mat3 {
+    match s.value {
+        Quantity::Matrix3(m) | Quantity::So3(m) | Quantity::Rotation(m) => m,
+        ref q => panic!("{} is {q:?}", s.name),
+    }
+}
+
+/// G⁻¹(θ) of (3.94), written as the book writes it.
+fn book_g_inv(w: &Vec3, theta: f64) -> Mat3 {
+    let wm = so3::hat(w);
+    Mat3::identity() / theta - 0.5 * wm + (1.0 / theta - 0.5 / (theta / 2.0).tan()) * wm * wm
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    /// The steps of log T (§3.3.3.2) against the book's formulas.
+    #[test]
+    fn log6_steps_agree_with_the_book(w in unit_axis(), theta in angle(), p in point()) {
+        let r = so3::exp(&(w * theta));
+        let t = se3::from_rp(&r, &p);
+        let steps = steps::log::log6(&t, None);
+        // the last step is the value, bit for bit
+        prop_assert_eq!(&steps.last().unwrap().value, &Quantity::Se3(se3::hat(&se3::log(&t))));
+        // tr R (3.54)
+        prop_assert_eq!(scalar(step(&steps, "trace")), r.trace());
+        let th = scalar(step(&steps, "theta"));
+        // θ = cos⁻¹((tr R − 1)/2) where cos⁻¹ is accurate (away from ±1)
+        if (0.1..PI - 0.1).contains(&th) {
+            let book = ((r.trace() - 1.0) / 2.0).acos();
+            prop_assert!((th - book).abs() < 1e-12, "θ {th} vs {book}");
+        }
+        prop_assert!((th - theta).abs() < 1e-7, "θ {th} vs {theta}");
+        // ω̂ from (3.61) where sin θ is not small
+        let wh = vector(step(&steps, "omega_hat"));
+        if th.sin() > 0.1 {
+            let book = so3::vee(&((r - r.transpose()) / (2.0 * th.sin())));
+            prop_assert!((wh - book).amax() < 1e-12, "ω̂ {wh} vs {book}");
+        }
+        prop_assert!((wh.norm() - 1.0).abs() < 1e-12);
+        // G⁻¹(θ) (3.94) and v (3.93) where 1/θ is not huge
+        if th > 1e-3 {
+            let g = matrix(step(&steps, "G_inv"));
+            let book = book_g_inv(&wh, th);
+            prop_assert!((g - book).amax() < 1e-11 * book.amax(), "G⁻¹ {g} vs {book}");
+            let v = vector(step(&steps, "v"));
+            let want = book * p;
+            prop_assert!((v - want).amax() < 1e-10 * (1.0 + want.amax()), "v {v} vs {want}");
+        }
+    }
+
+    /// The steps of MatrixLog3 and of log R end with the value bit for bit,
+    /// and a half turn cites the sub-case of (3.58)–(3.60) the book picks.
+    #[test]
+    fn log3_steps_end_with_the_value(w in unit_axis(), theta in angle()) {
+        let r = so3::exp(&(w * theta));
+        let s = steps::log::matrix_log3(&r, None);
+        prop_assert_eq!(&s.last().unwrap().value, &Quantity::Vector3(so3::log(&r)));
+        let s = steps::log::log3(&r, None);
+        prop_assert_eq!(&s.last().unwrap().value, &Quantity::So3(so3::hat(&so3::log(&r))));
+        if so3::is_half_turn(&r) {
+            let w = step(&s, "omega_hat");
+            let want = if 1.0 + r[(2, 2)] >= 1e-6 {
+                "3.58"
+            } else if 1.0 + r[(1, 1)] >= 1e-6 {
+                "3.59"
+            } else {
+                "3.60"
+            };
+            prop_assert_eq!(w.reference, want);
+        }
+    }
+
+    /// The steps of exp([S]θ) (Prop. 3.16): G(θ) of (3.88) and p = G(θ)v
+    /// (3.89), and the last step is the value bit for bit.
+    #[test]
+    fn exp6_steps_agree_with_the_book(w in unit_axis(), theta in 1e-2..3.0f64, v in point()) {
+        let s = Vec6::new(w.x, w.y, w.z, v.x, v.y, v.z) * theta;
+        let steps = steps::exp::exp6(&s);
+        let t = se3::exp(&s);
+        prop_assert_eq!(&steps.last().unwrap().value, &Quantity::Transform(t));
+        let wm = so3::hat(&w);
+        let g = Mat3::identity() * theta + (1.0 - theta.cos()) * wm + (theta - theta.sin()) * wm * wm;
+        let got = matrix(step(&steps, "G"));
+        prop_assert!((got - g).amax() < 1e-12 * (1.0 + g.amax()));
+        let p = vector(step(&steps, "p"));
+        prop_assert!((p - g * v).amax() < 1e-10 * (1.0 + p.amax()));
+    }
+}
+
+/// A float as the language reads it back exactly.
+fn lit(x: f64) -> String {
+    format!("{x:?}")
+}
+
+fn matrix_literal(t: &Mat4) -> String {
+    let rows: Vec<String> = (0..4)
+        .map(|i| {
+            (0..4)
+                .map(|j| lit(t[(i, j)]))
+                .collect::<Vec<_>>()
+                .join(", ")
+        })
+        .collect();
+    format!("[{}]", rows.join("; "))
+}
+
+/// The numbers of a value.
+fn numbers(v: &Value) -> Vec<u64> {
+    match v {
+        Value::Num { m, .. } => m.as_slice().iter().map(|x| (x + 0.0).to_bits()).collect(),
+        Value::Tuple(vs) => vs.iter().flat_map(numbers).collect(),
+        other => panic!("not numbers: {other:?}"),
+    }
+}
+
+/// Through the language: `explain X`'s last step is the value of `X`
+/// typed as a plain statement, bit for bit, for every algorithm.
+#[test]
+fn last_step_is_the_statement_value_bit_for_bit() {
+    let mut rng = 0x2545_f491_4f6c_dd1du64;
+    let mut next = || {
+        rng ^= rng << 13;
+        rng ^= rng >> 7;
+        rng ^= rng << 17;
+        (rng >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+    };
+    for _ in 0..20 {
+        let w = Vec3::new(next(), next(), next());
+        let t = se3::from_rp(
+            &so3::exp(&(w * 1.5)),
+            &(Vec3::new(next(), next(), next()) * 4.0),
+        );
+        let setup = format!(
+            "T = {0}\nT_ab = {0}\nT_bc = {0}\nR = T.R\nF = wrench((1, 2, 3), (4, 5, 6))",
+            matrix_literal(&t)
+        );
+        for e in [
+            "log(T)",
+            "MatrixLog6(T)",
+            "log(R)",
+            "MatrixLog3(R)",
+            "exp(log(T))",
+            "MatrixExp3(MatrixLog3(R))",
+            "inv(T)",
+            "Ad(T)",
+            "Ad(T).T * F",
+            "euler_zyx(R)",
+            "rpy(R)",
+            "quat(R)",
+            "screw_params(MatrixLog6(T))",
+            "inv(T_ab) T_ab T_bc",
+        ] {
+            let src = format!("{setup}\nexplain {e}\n{e}");
+            let mut session = Session::new(Settings::default());
+            let mut outs = Vec::new();
+            let errors = session.run(&src, Mode::Run, false, |r| outs.push(r.result.clone()));
+            assert_eq!(errors, 0, "{src}");
+            let n = outs.len();
+            let explained = outs[n - 2].as_ref().unwrap();
+            let plain = outs[n - 1].as_ref().unwrap();
+            let last = explained
+                .steps
+                .last()
+                .unwrap_or_else(|| panic!("no steps: {e}"));
+            let value = plain.val.as_deref().unwrap();
+            assert_eq!(numbers(&last.value), numbers(value), "{e}");
+            assert!(explained.steps.len() >= 2, "{e}");
+            assert!(
+                explained.steps.iter().all(|s| !s.reference.is_empty()),
+                "{e}"
+            );
+        }
+    }
+}
+
+/// The outcome of the last statement of `src`.
+fn last_outcome(src: &str) -> chasles::eval::interp::Outcome {
+    let mut session = Session::new(Settings::default());
+    let mut outs = Vec::new();
+    let errors = session.run(src, Mode::Run, false, |r| outs.push(r.result.clone()));
+    assert_eq!(errors, 0, "{src}");
+    outs.pop().unwrap().unwrap()
+}
+
+fn shown<'a>(o: &'a chasles::eval::interp::Outcome, name: &str) -> &'a Value {
+    &o.steps
+        .iter()
+        .find(|s| s.name == name)
+        .unwrap_or_else(|| panic!("no step {name}"))
+        .value
+}
+
+fn floats(v: &Value) -> Vec<f64> {
+    match v {
+        Value::Num { m, .. } => m.as_slice().to_vec(),
+        other => panic!("not numbers: {other:?}"),
+    }
+}
+
+/// Twists from Ṫ (3.69)–(3.74): ω_b = vee(RᵀṘ), v_b = Rᵀṗ, ω_s =
+/// vee(ṘRᵀ), v_s = ṗ − ω_s × p, computed here independently.
+#[test]
+fn twists_from_t_dot_agree_with_the_book() {
+    let r = so3::exp(&Vec3::new(0.3, -0.2, 0.9));
+    let p = Vec3::new(1.0, -2.0, 0.5);
+    let w = Vec3::new(0.4, 0.1, -0.7);
+    let pdot = Vec3::new(0.2, 0.3, -1.0);
+    let rdot = so3::hat(&w) * r;
+    let t = se3::from_rp(&r, &p);
+    let mut tdot = Mat4::zeros();
+    tdot.fixed_view_mut::<3, 3>(0, 0).copy_from(&rdot);
+    tdot.fixed_view_mut::<3, 1>(0, 3).copy_from(&pdot);
+    let setup = format!("T = {}\nTd = {}", matrix_literal(&t), matrix_literal(&tdot));
+    let body = last_outcome(&format!("{setup}\nexplain inv(T) Td"));
+    let wb = so3::vee(&(r.transpose() * rdot));
+    let vb = r.transpose() * pdot;
+    for (got, want) in floats(shown(&body, "omega_b")).iter().zip(wb.iter()) {
+        assert!((got - want).abs() < 1e-12, "ω_b {got} vs {want}");
+    }
+    for (got, want) in floats(shown(&body, "v_b")).iter().zip(vb.iter()) {
+        assert!((got - want).abs() < 1e-12, "v_b {got} vs {want}");
+    }
+    let space = last_outcome(&format!("{setup}\nexplain Td inv(T)"));
+    let vs = pdot - w.cross(&p);
+    for (got, want) in floats(shown(&space, "omega_s")).iter().zip(w.iter()) {
+        assert!((got - want).abs() < 1e-12, "ω_s {got} vs {want}");
+    }
+    for (got, want) in floats(shown(&space, "v_s")).iter().zip(vs.iter()) {
+        assert!((got - want).abs() < 1e-12, "v_s {got} vs {want}");
+    }
+}
+
+/// `diff`: a step per node, bottom up, ending with the derivative itself.
+#[test]
+fn diff_steps_end_with_the_derivative() {
+    let src = "given q(t) : scalar\nx = diff(sin(q)^2 + 3 q, t)\nexplain diff(sin(q)^2 + 3 q, t)";
+    let mut session = Session::new(Settings::default());
+    let mut outs = Vec::new();
+    assert_eq!(
+        session.run(src, Mode::Run, false, |r| outs.push(r.result.clone())),
+        0
+    );
+    let explained = outs.pop().unwrap().unwrap();
+    let plain = outs.pop().unwrap().unwrap();
+    let texts: Vec<&str> = explained.steps.iter().map(|s| s.text.as_str()).collect();
+    assert_eq!(explained.steps.len(), 7, "{texts:?}");
+    assert!(texts[1].contains("chain rule"), "{texts:?}");
+    assert!(texts[2].contains("power rule"), "{texts:?}");
+    assert!(texts[6].contains("sum rule"), "{texts:?}");
+    assert_eq!(&explained.steps[6].value, plain.val.as_deref().unwrap());
+}
+
+/// Grübler (2.4): the counts and dof as numbers (Example 2.1, the four-bar).
+#[test]
+fn grubler_steps_have_the_counts() {
+    let o = last_outcome("explain dof(mech < links 4; joints R R R R; planar >)");
+    let n = |name| shown(&o, name).as_scalar().unwrap();
+    assert_eq!(
+        (n("m"), n("N"), n("J"), n("f_i"), n("dof")),
+        (3.0, 4.0, 4.0, 4.0, 1.0)
+    );
+    assert_eq!(o.steps.last().unwrap().reference, "2.4");
+}
