@@ -9,7 +9,7 @@ w_hat = (0, 0.866, 0.5)
 theta = 30 deg
 explain exp([w_hat] theta)
 explain Rot(w_hat, theta)        # the same by Rot(ω̂, θ) = e^{[ω̂]θ}
-R_sb = Rot(w_hat, theta);
+R_sb = Rot(w_hat, theta)
 # ...and back: the log of R_sb (§3.2.3.3, case (iii)) gives ω̂ and θ again
 explain MatrixLog3(R_sb)
 
