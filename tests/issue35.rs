@@ -78,3 +78,33 @@ fn a_float_coefficient_that_cancels_to_rounding_does_not_decide() {
         "given a\nG = exp([MatrixLog3(Rotx(3))]);\nA = Rot(z, a);\nB = Rot(z, -a);\nA G == G B";
     assert_eq!(last(src), "false");
 }
+
+#[test]
+fn a_unit_axis_once_noted_is_assumed_in_every_later_statement() {
+    let before = "given θ\ngiven u : vec3\ndot(u, u) == 1";
+    // before any note, u is any vector: not a unit one
+    assert_eq!(last(before), "false");
+    let src = "given θ\ngiven u : vec3\nR = exp([u] θ)\n";
+    let (_, err) = outputs(src);
+    assert!(err.contains("u is assumed to be a unit vector"), "{err}");
+    for (line, want) in [
+        ("dot(u, u) == 1", "true"),
+        ("[u]^3 == -[u]", "true"),
+        ("dot(u, u)", "1"),
+        ("R u == u", "true"),
+        ("R R^T == I", "true"),
+        // G(θ) G(θ)⁻¹ = I (3.91, 3.92) under the assumption
+        (
+            "G = I θ + (1 - cos(θ)) [u] + (θ - sin(θ)) [u]^2\nGi = I/θ - [u]/2 + (1/θ - cot(θ/2)/2) [u]^2\nG Gi == I",
+            "true",
+        ),
+        // a true inequality stays false: not every identity becomes true
+        ("dot(u, u) == 2", "false"),
+        ("[u]^2 == -[u]", "false"),
+        // numbers bound later are numbers: a unit u keeps it, another not
+        ("u = (0.6, 0, 0.8)\ndot(u, u) == 1", "true"),
+        ("u = (1, 2, 3)\ndot(u, u) == 1", "false"),
+    ] {
+        assert_eq!(last(&format!("{src}{line}")), want, "{line}");
+    }
+}
