@@ -108,3 +108,42 @@ fn a_unit_axis_once_noted_is_assumed_in_every_later_statement() {
         assert_eq!(last(&format!("{src}{line}")), want, "{line}");
     }
 }
+
+#[test]
+fn exact_multiples_of_pi_are_reduced_exactly() {
+    for (src, want) in [
+        ("sin(3*10^17*pi)", "0"),
+        ("tan(-3*10^73*pi)", "0"),
+        ("tan(-3*10^73*pi) == 0", "true"),
+        ("sin(10^15*pi + pi/6)", "0.5"),
+        ("sin(10^15*pi + pi/6) == 1/2", "true"),
+        ("cos(2^60*pi)", "1"),
+        ("cos(2^60*pi) == 1", "true"),
+        ("cos(2^60*pi + pi) == -1", "true"),
+        ("sec(10^30*pi)", "1"),
+        ("cos(10^20*pi + 1) == cos(1)", "true"),
+        ("sin(-7*pi/6)", "0.5"),
+        // a decimal as typed is exact (§7): 1e17 π is a whole number of turns
+        ("x = 1e17\nsin(x*pi)", "0"),
+        // and symbolically: the period is taken off exactly
+        ("given t\nsin(t + 10^20*pi) == sin(t)", "true"),
+        ("given t\ncos(t + (2^70 + 1)*pi) == -cos(t)", "true"),
+    ] {
+        assert_eq!(last(src), want, "{src}");
+    }
+    // a pole stays a pole however many turns before it
+    let err = common::error("tan(3*10^17*pi + pi/2)");
+    assert!(err.contains("the tangent is infinite"), "{err}");
+}
+
+#[test]
+fn a_float_angle_too_large_to_reduce_says_so() {
+    let (out, err) = outputs("sin(exp(40))");
+    assert_eq!(out.lines().count(), 1, "{out}");
+    assert!(err.contains("no significant digit"), "{err}");
+    // an exact angle of any size, and a float of ordinary size, say nothing
+    for src in ["sin(3*10^17*pi)", "sin(exp(3))", "cos(1e17)"] {
+        let (_, err) = outputs(src);
+        assert!(!err.contains("significant digit"), "{src}: {err}");
+    }
+}

@@ -488,6 +488,9 @@ impl Expr {
                 _ => return None,
             }
         }
+        // (e^{iπp} has period 2 in p: reduced exactly, so that
+        // cos(2^60 π) is 1, not the cosine of a float, issue 35)
+        let pi = pi.rem_euclid(2);
         let coef = match Coef::unit_root(pi.clone()) {
             Some(c) if rad.is_zero() => c,
             _ if mono.is_empty() => return None,
