@@ -147,3 +147,50 @@ fn a_float_angle_too_large_to_reduce_says_so() {
         assert!(!err.contains("significant digit"), "{src}: {err}");
     }
 }
+
+/// What `src` prints for `x` over the given names `decl`, run back as
+/// source with `bind` bound, against `x` itself with the same numbers.
+fn runs_back(decl: &str, src: &str, bind: &str) -> (String, String, String) {
+    let (out, _) = outputs(&format!("{decl}\nx = {src}"));
+    let text = out
+        .lines()
+        .last()
+        .unwrap()
+        .trim_start_matches("x = ")
+        .to_string();
+    let value = last(&format!("{decl}\nx = {src}\n{bind}\nx"));
+    let again = last(&format!("{decl}\nx = {text}\n{bind}\nx"));
+    (text, value, again)
+}
+
+#[test]
+fn printed_forms_are_their_values() {
+    for (src, printed) in [
+        ("1/tan(t)", "cot(t)"),
+        ("1/(sin(t)/(cos(t) + 1))", "(1 + cos(t))/sin(t)"),
+        ("1/(p/q)", "q/p"),
+        ("1/(p/(q + 1))", "(1 + q)/p"),
+        ("2/(3 tan(t))", "(2/3) cot(t)"),
+        ("(p + q)/(sin(t)/cos(t))", ""),
+        ("sin(1)^y", "0.8414709848078965^y"),
+        ("simplify(sin(1)^y/cos(1)^y)", ""),
+    ] {
+        let (text, value, again) = runs_back(
+            "given t, p, q, y",
+            src,
+            "t = 0.7\np = 1.3\nq = -0.4\ny = 2.5",
+        );
+        if !printed.is_empty() {
+            assert_eq!(text, printed, "{src}");
+        }
+        assert_eq!(value, again, "{src} printed {text}");
+    }
+    // and in LaTeX: 1/tan(t) is \cot t, not \frac{1}{\left(\cos t\right) \sin t}
+    let j = common::json("given t\n1/tan(t)\n1/(sin(t)/(cos(t) + 1))");
+    let n = j.len();
+    assert_eq!(j[n - 2]["latex"], "\\cot t");
+    assert_eq!(
+        j[n - 1]["latex"],
+        "\\frac{\\left(1 + \\cos t\\right)}{\\sin t}"
+    );
+}

@@ -747,6 +747,10 @@ struct Tally {
     checked: usize,
     refused: usize,
     skipped: usize,
+    /// Printed forms parsed back and found to be the value.
+    printed: usize,
+    /// Printed forms that do not run back as chasles source.
+    unparsed: usize,
 }
 
 /// Checks one expression at one point; Err describes a wrong answer.
@@ -811,7 +815,54 @@ fn check(e: &T, p: &Point, tally: &mut Tally) -> Result<(), String> {
             }
         }
     }
+    printed_is_value(e, &src, &at, want, tally)?;
     tally.checked += 1;
+    Ok(())
+}
+
+/// The printed text of the value over free symbols, parsed back and
+/// evaluated at the point, is the value (issue 35: `1/tan(t)` printed
+/// `1/((cos(t)) sin(t))`, a different function). A float coefficient
+/// prints with 4 digits, so the text is the value within 1e-3 of the
+/// size of its terms; a wrong structure is off by far more at almost
+/// every point.
+fn printed_is_value(e: &T, src: &str, at: &At, want: f64, tally: &mut Tally) -> Result<(), String> {
+    let decl = "given a, b, c : scalar\ngiven q1(t), q2(t) : scalar\n";
+    let shown = format!("{decl}x = {src}\n");
+    let mut s = Session::new(Settings::default());
+    let (out, _, n) = s.run_to_strings("t.chs", &shown, Mode::Run, false);
+    let Some(text) = out.lines().find_map(|l| l.strip_prefix("x = ")) else {
+        return Ok(());
+    };
+    if n > 0 || !out.trim_end().ends_with(text) {
+        // (refused, or printed on several lines: a matrix's layout)
+        return Ok(());
+    }
+    let mut text = text.to_string();
+    for (i, q) in QS.iter().enumerate() {
+        text = text.replace(&format!("q\u{308}{}", i + 1), &format!("{q}''"));
+        text = text.replace(&format!("q\u{307}{}", i + 1), &format!("{q}'"));
+    }
+    let back = format!("{decl}z = {text}\n{}w = z\n", bindings(at));
+    let (s, n, msg) = session(&back);
+    if n > 0 {
+        tally.unparsed += 1;
+        if std::env::var_os("CHASLES_DIFF_VERBOSE").is_some() {
+            eprintln!("printed text does not run back: {text}\n{msg}");
+        }
+        return Ok(());
+    }
+    let Some(got) = number(&s, "w") else {
+        return Ok(());
+    };
+    let (_, terms) = e.eval(at);
+    let tol = 1e-3 * (1.0 + want.abs() + terms);
+    if !((got - want).abs() <= tol) {
+        return Err(format!(
+            "the printed form is not the value: {text} is {got} at the point, the value {want}\n{shown}\n{back}"
+        ));
+    }
+    tally.printed += 1;
     Ok(())
 }
 
@@ -943,7 +994,7 @@ fn random_expressions_agree_with_numbers() {
     );
     let t = tally.into_inner();
     eprintln!(
-        "checked {}, refused {}, skipped {}",
-        t.checked, t.refused, t.skipped
+        "checked {}, refused {}, skipped {}; printed forms run back {} (unparsed {})",
+        t.checked, t.refused, t.skipped, t.printed, t.unparsed
     );
 }
