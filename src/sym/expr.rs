@@ -483,14 +483,11 @@ impl Expr {
                     let k = i32::try_from(k.as_int()?).ok()?;
                     mono = mono_mul(&mono, &vec![(Var::Z(s.clone()), k)]);
                 }
-                [(Var::Pi, 1)] => pi = k,
+                [(Var::Pi, 1)] => pi = k.rem_euclid(2), // (period 2: cos(2^60 π) is 1)
                 [] => rad = k,
                 _ => return None,
             }
         }
-        // (e^{iπp} has period 2 in p: reduced exactly, so that
-        // cos(2^60 π) is 1, not the cosine of a float, issue 35)
-        let pi = pi.rem_euclid(2);
         let coef = match Coef::unit_root(pi.clone()) {
             Some(c) if rad.is_zero() => c,
             _ if mono.is_empty() => return None,
