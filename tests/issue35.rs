@@ -78,3 +78,119 @@ fn a_float_coefficient_that_cancels_to_rounding_does_not_decide() {
         "given a\nG = exp([MatrixLog3(Rotx(3))]);\nA = Rot(z, a);\nB = Rot(z, -a);\nA G == G B";
     assert_eq!(last(src), "false");
 }
+
+#[test]
+fn a_unit_axis_once_noted_is_assumed_in_every_later_statement() {
+    let before = "given θ\ngiven u : vec3\ndot(u, u) == 1";
+    // before any note, u is any vector: not a unit one
+    assert_eq!(last(before), "false");
+    let src = "given θ\ngiven u : vec3\nR = exp([u] θ)\n";
+    let (_, err) = outputs(src);
+    assert!(err.contains("u is assumed to be a unit vector"), "{err}");
+    for (line, want) in [
+        ("dot(u, u) == 1", "true"),
+        ("[u]^3 == -[u]", "true"),
+        ("dot(u, u)", "1"),
+        ("R u == u", "true"),
+        ("R R^T == I", "true"),
+        // G(θ) G(θ)⁻¹ = I (3.91, 3.92) under the assumption
+        (
+            "G = I θ + (1 - cos(θ)) [u] + (θ - sin(θ)) [u]^2\nGi = I/θ - [u]/2 + (1/θ - cot(θ/2)/2) [u]^2\nG Gi == I",
+            "true",
+        ),
+        // a true inequality stays false: not every identity becomes true
+        ("dot(u, u) == 2", "false"),
+        ("[u]^2 == -[u]", "false"),
+        // numbers bound later are numbers: a unit u keeps it, another not
+        ("u = (0.6, 0, 0.8)\ndot(u, u) == 1", "true"),
+        ("u = (1, 2, 3)\ndot(u, u) == 1", "false"),
+    ] {
+        assert_eq!(last(&format!("{src}{line}")), want, "{line}");
+    }
+}
+
+#[test]
+fn exact_multiples_of_pi_are_reduced_exactly() {
+    for (src, want) in [
+        ("sin(3*10^17*pi)", "0"),
+        ("tan(-3*10^73*pi)", "0"),
+        ("tan(-3*10^73*pi) == 0", "true"),
+        ("sin(10^15*pi + pi/6)", "0.5"),
+        ("sin(10^15*pi + pi/6) == 1/2", "true"),
+        ("cos(2^60*pi)", "1"),
+        ("cos(2^60*pi) == 1", "true"),
+        ("cos(2^60*pi + pi) == -1", "true"),
+        ("sec(10^30*pi)", "1"),
+        ("cos(10^20*pi + 1) == cos(1)", "true"),
+        ("sin(-7*pi/6)", "0.5"),
+        // a decimal as typed is exact (§7): 1e17 π is a whole number of turns
+        ("x = 1e17\nsin(x*pi)", "0"),
+        // and symbolically: the period is taken off exactly
+        ("given t\nsin(t + 10^20*pi) == sin(t)", "true"),
+        ("given t\ncos(t + (2^70 + 1)*pi) == -cos(t)", "true"),
+    ] {
+        assert_eq!(last(src), want, "{src}");
+    }
+    // a pole stays a pole however many turns before it
+    let err = common::error("tan(3*10^17*pi + pi/2)");
+    assert!(err.contains("the tangent is infinite"), "{err}");
+}
+
+#[test]
+fn a_float_angle_too_large_to_reduce_says_so() {
+    let (out, err) = outputs("sin(exp(40))");
+    assert_eq!(out.lines().count(), 1, "{out}");
+    assert!(err.contains("no significant digit"), "{err}");
+    // an exact angle of any size, and a float of ordinary size, say nothing
+    for src in ["sin(3*10^17*pi)", "sin(exp(3))", "cos(1e17)"] {
+        let (_, err) = outputs(src);
+        assert!(!err.contains("significant digit"), "{src}: {err}");
+    }
+}
+
+/// What `src` prints for `x` over the given names `decl`, run back as
+/// source with `bind` bound, against `x` itself with the same numbers.
+fn runs_back(decl: &str, src: &str, bind: &str) -> (String, String, String) {
+    let (out, _) = outputs(&format!("{decl}\nx = {src}"));
+    let text = out
+        .lines()
+        .last()
+        .unwrap()
+        .trim_start_matches("x = ")
+        .to_string();
+    let value = last(&format!("{decl}\nx = {src}\n{bind}\nx"));
+    let again = last(&format!("{decl}\nx = {text}\n{bind}\nx"));
+    (text, value, again)
+}
+
+#[test]
+fn printed_forms_are_their_values() {
+    for (src, printed) in [
+        ("1/tan(t)", "cot(t)"),
+        ("1/(sin(t)/(cos(t) + 1))", "(1 + cos(t))/sin(t)"),
+        ("1/(p/q)", "q/p"),
+        ("1/(p/(q + 1))", "(1 + q)/p"),
+        ("2/(3 tan(t))", "(2/3) cot(t)"),
+        ("(p + q)/(sin(t)/cos(t))", ""),
+        ("sin(1)^y", "0.8414709848078965^y"),
+        ("simplify(sin(1)^y/cos(1)^y)", ""),
+    ] {
+        let (text, value, again) = runs_back(
+            "given t, p, q, y",
+            src,
+            "t = 0.7\np = 1.3\nq = -0.4\ny = 2.5",
+        );
+        if !printed.is_empty() {
+            assert_eq!(text, printed, "{src}");
+        }
+        assert_eq!(value, again, "{src} printed {text}");
+    }
+    // and in LaTeX: 1/tan(t) is \cot t, not \frac{1}{\left(\cos t\right) \sin t}
+    let j = common::json("given t\n1/tan(t)\n1/(sin(t)/(cos(t) + 1))");
+    let n = j.len();
+    assert_eq!(j[n - 2]["latex"], "\\cot t");
+    assert_eq!(
+        j[n - 1]["latex"],
+        "\\frac{\\left(1 + \\cos t\\right)}{\\sin t}"
+    );
+}

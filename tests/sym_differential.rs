@@ -107,6 +107,8 @@ use proptest::prelude::*;
 
 #[path = "sym_differential/cases.rs"]
 mod cases;
+#[path = "sym_differential/latex.rs"]
+mod latex;
 #[path = "sym_differential/matrix.rs"]
 mod matrix;
 use std::f64::consts::PI;
@@ -747,6 +749,10 @@ struct Tally {
     checked: usize,
     refused: usize,
     skipped: usize,
+    /// Printed forms (text and LaTeX) parsed back and found to be the value.
+    printed: usize,
+    /// Printed forms that do not run back as chasles source.
+    unparsed: usize,
 }
 
 /// Checks one expression at one point; Err describes a wrong answer.
@@ -811,7 +817,65 @@ fn check(e: &T, p: &Point, tally: &mut Tally) -> Result<(), String> {
             }
         }
     }
+    printed_is_value(e, &src, &at, want, tally)?;
     tally.checked += 1;
+    Ok(())
+}
+
+/// The printed text of the value over free symbols, and its LaTeX
+/// ([`latex`]), parsed back and evaluated at the point, are the value
+/// (issue 35: `1/tan(t)` printed `1/((cos(t)) sin(t))`, a different
+/// function). A float coefficient prints with 4 digits, so a form is the
+/// value within 1e-3 of the size of its terms; a wrong structure is off
+/// by far more at almost every point.
+fn printed_is_value(e: &T, src: &str, at: &At, want: f64, tally: &mut Tally) -> Result<(), String> {
+    let decl = "given a, b, c : scalar\ngiven q1(t), q2(t) : scalar\n";
+    let shown = format!("{decl}x = {src}\n");
+    let mut s = Session::new(Settings {
+        json: true,
+        ..Settings::default()
+    });
+    let (out, _, n) = s.run_to_strings("t.chs", &shown, Mode::Run, false);
+    let line = out
+        .lines()
+        .filter_map(|l| serde_json::from_str::<serde_json::Value>(l).ok())
+        .find(|j| j["name"] == "x");
+    let Some(line) = line.filter(|_| n == 0) else {
+        return Ok(());
+    };
+    let (Some(text), Some(tex)) = (line["value"].as_str(), line["latex"].as_str()) else {
+        // (a number: nothing symbolic printed)
+        return Ok(());
+    };
+    let mut text = text.to_string();
+    for (i, q) in QS.iter().enumerate() {
+        text = text.replace(&format!("q\u{308}{}", i + 1), &format!("{q}''"));
+        text = text.replace(&format!("q\u{307}{}", i + 1), &format!("{q}'"));
+    }
+    let (_, terms) = e.eval(at);
+    let tol = 1e-3 * (1.0 + want.abs() + terms);
+    for (form, source) in [("text", Some(text)), ("LaTeX", latex::source(tex))] {
+        let Some(source) = source else {
+            tally.unparsed += 1;
+            continue;
+        };
+        let back = format!("{decl}z = {source}\n{}w = z\n", bindings(at));
+        let (s, n, msg) = session(&back);
+        let got = (n == 0).then(|| number(&s, "w")).flatten();
+        let Some(got) = got else {
+            tally.unparsed += 1;
+            if std::env::var_os("CHASLES_DIFF_VERBOSE").is_some() {
+                eprintln!("printed {form} does not run back: {source}\n{msg}");
+            }
+            continue;
+        };
+        if (got - want).abs().is_nan() || (got - want).abs() > tol {
+            return Err(format!(
+                "the printed {form} is not the value: {source} is {got} at the point, the value {want}\n{shown}\n{back}"
+            ));
+        }
+        tally.printed += 1;
+    }
     Ok(())
 }
 
@@ -943,7 +1007,7 @@ fn random_expressions_agree_with_numbers() {
     );
     let t = tally.into_inner();
     eprintln!(
-        "checked {}, refused {}, skipped {}",
-        t.checked, t.refused, t.skipped
+        "checked {}, refused {}, skipped {}; printed forms run back {} (unparsed {})",
+        t.checked, t.refused, t.skipped, t.printed, t.unparsed
     );
 }

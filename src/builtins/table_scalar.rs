@@ -24,9 +24,32 @@ pub(super) fn scalar() -> Kind {
 /// of x when it has one ([`Decided::is_pole`]: `tan(π/2 + 10¹⁶π)` is at
 /// a pole whatever its float); a float within rounding of a pole is
 /// refused too, its value there being rounding noise.
-fn unary(a: &Args, f: fn(f64) -> f64, pole: Option<Zero>, why: &str) -> Result<Value, Diagnostic> {
+fn unary(
+    a: &mut Args,
+    f: fn(f64) -> f64,
+    pole: Option<Zero>,
+    why: &str,
+) -> Result<Value, Diagnostic> {
     let d = a.decided(0)?;
-    let x = d.value();
+    let trig = matches!(a.name, "sin" | "cos" | "tan" | "cot" | "sec" | "csc");
+    let x = match trig {
+        // (an exact multiple of π reduced exactly, issue 35)
+        true => d.angle(),
+        false => d.value(),
+    };
+    if trig && d.angle_lost() {
+        a.warnings.push(Diagnostic::warning(
+            ErrorKind::Domain,
+            a.call_span,
+            format!(
+                "{}({}): the argument is a float with no exact form, and at this size its last digit is worth {} radians, so its angle modulo 2π is unknown and the result has no significant digit",
+                a.name,
+                crate::values::number::fmt_num(x, 4),
+                crate::values::number::fmt_num(ulp(x), 4)
+            ),
+        )
+        .with_help("give the angle exactly (`3*10^17*pi`), or reduce it modulo 2π before it grows"));
+    }
     let Some(zero) = pole else {
         return Ok(Value::scalar(f(x)));
     };
@@ -52,6 +75,12 @@ fn unary(a: &Args, f: fn(f64) -> f64, pole: Option<Zero>, why: &str) -> Result<V
         _ => return Ok(Value::scalar(f(x))),
     }
     Err(a.error(0, ErrorKind::Domain, format!("{}({x}): {why}", a.name)))
+}
+
+/// The gap between `x` and the next float away from 0.
+fn ulp(x: f64) -> f64 {
+    let x = x.abs();
+    f64::from_bits(x.to_bits() + 1) - x
 }
 
 /// Below this, cos x (or sin x) is a computed zero: x is a pole (π/2 in

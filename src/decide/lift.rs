@@ -97,7 +97,18 @@ impl Lift {
 
     /// An angle `x` as this lift reads it.
     fn angle(&mut self, x: &Expr) -> Option<Expr> {
-        let parts = rational_and_pi(x);
+        // (every function of an angle here has period 2π: a + bπ is
+        // a + (b mod 2)π, exactly, so cos(10²⁰π + 1) lifts as cos 1 does)
+        let parts = rational_and_pi(x).map(|(a, b)| (a, b.rem_euclid(2)));
+        let reduced;
+        let x = match &parts {
+            Some((a, b)) if rational_and_pi(x).is_some_and(|(_, b0)| b0 != *b) => {
+                reduced = Expr::constant(Coef::rat(a.clone()))
+                    .add(&Expr::constant(Coef::rat(b.clone())).mul(&Expr::pi()));
+                &reduced
+            }
+            _ => x,
+        };
         match (parts, self.split) {
             (Some((a, b)), Some((m, l))) => {
                 let scaled = |r: &Rat, k: i64| Coef::rat(r.mul(&Rat::int(k)));

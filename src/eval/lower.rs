@@ -36,9 +36,11 @@ fn entries(kind: &Kind) -> Option<u8> {
     }
 }
 
-/// What a name in the tree is now: a `given` vector's kind, or a number.
+/// What a name in the tree is now: a `given` vector's kind (and whether
+/// a note has said it is assumed a unit axis: the assumption then holds
+/// for every later use, §7), or a number.
 enum Leaf {
-    Vector(Kind),
+    Vector(Kind, bool),
     Number(Value),
 }
 
@@ -151,10 +153,21 @@ fn lower(s: &Sym, leaf: &dyn Fn(&str) -> Option<Leaf>, assumed: &Assumed) -> Opt
         Sym::Name(n) if n == "deg" => Some(Value::scalar(std::f64::consts::PI / 180.0)),
         Sym::Name(n) => match leaf(n)? {
             Leaf::Number(v) => Some(v),
-            Leaf::Vector(kind) => Some(formula::make(
-                &kind,
-                Mat::column(axis::components(n, entries(&kind)?)),
-            )),
+            Leaf::Vector(kind, unit) => {
+                let parts = axis::components(n, entries(&kind)?);
+                let parts = match unit {
+                    // (ω̂₁, ω̂₂, ω̂₃ of the axis noted unit: ‖u‖ = 1 holds)
+                    true => {
+                        let name: Arc<str> = Arc::from(n.as_str());
+                        parts
+                            .iter()
+                            .map(|e| e.assume_unit(std::slice::from_ref(&name)))
+                            .collect()
+                    }
+                    false => parts,
+                };
+                Some(formula::make(&kind, Mat::column(parts)))
+            }
         },
         Sym::Const(v, _) => Some((**v).clone()),
         Sym::Identity | Sym::Compare(..) => None,
@@ -226,7 +239,8 @@ impl Interp<'_> {
         match &b.val {
             Some(v @ Value::Num { .. }) => Some(Leaf::Number(v.clone())),
             Some(Value::Sym(Sym::Name(n))) if b.symbolic && n == name => {
-                entries(&b.ty.kind).map(|_| Leaf::Vector(b.ty.kind))
+                let unit = self.env.units_noted.iter().any(|m| m == name);
+                entries(&b.ty.kind).map(|_| Leaf::Vector(b.ty.kind, unit))
             }
             _ => None,
         }

@@ -500,10 +500,19 @@ pub fn call_nowhere(b: &Builtin, vals: Vec<Value>) -> Result<Value, OpError> {
 pub(crate) fn to_sym(v: &Value) -> Sym {
     match v {
         Value::Sym(s) => s.clone(),
-        other => Sym::Const(
-            Box::new(other.clone()),
-            crate::values::format::inline(other, 4),
-        ),
+        other => Sym::Const(Box::new(other.clone()), constant_text(other)),
+    }
+}
+
+/// A constant's text inside a tree over symbols: 4 digits where they read
+/// back as the number (`0.5`, `2`), else a scalar's every digit, so that
+/// the printed tree is its value (issue 35: `sin(1)^y` printed
+/// `0.8415^y`, a different number); matrices keep 4 digits a cell.
+fn constant_text(v: &Value) -> String {
+    let short = crate::values::format::inline(v, 4);
+    match v.as_scalar() {
+        Some(x) if x.is_finite() && short.parse::<f64>().ok() != Some(x) => format!("{x}"),
+        _ => short,
     }
 }
 

@@ -483,7 +483,7 @@ impl Expr {
                     let k = i32::try_from(k.as_int()?).ok()?;
                     mono = mono_mul(&mono, &vec![(Var::Z(s.clone()), k)]);
                 }
-                [(Var::Pi, 1)] => pi = k,
+                [(Var::Pi, 1)] => pi = k.rem_euclid(2), // (period 2: cos(2^60 π) is 1)
                 [] => rad = k,
                 _ => return None,
             }

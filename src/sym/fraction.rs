@@ -47,14 +47,14 @@ pub fn terms(e: &Expr, st: Style) -> Vec<(bool, String)> {
             continue;
         }
         let real = real_form(&num);
-        if real.len() == 1 {
+        let below = denominator(&den, st);
+        let Some((scale, den_text)) = below.filter(|_| real.len() > 1) else {
             for ((poly, trig), c) in &real {
                 out.push(term(c, &mono_mul(poly, &den), trig, st));
             }
             continue;
-        }
+        };
         // (numerator)/(denominator): the denominator's own constant moves up
-        let (scale, den_text) = denominator(&den, st);
         let body = join(&plain(&num.scale(&scale), st), usize::MAX, 0);
         let text = if st.mode == Mode::Latex {
             format!("\\frac{{{body}}}{{{den_text}}}")
@@ -111,11 +111,14 @@ fn opened(v: &Var, e: i32) -> Option<(Coef, Mono, Vec<Factor>)> {
 
 /// The denominator of a quotient as text, and the constant its opened
 /// reciprocals move to the numerator.
-fn denominator(den: &Mono, st: Style) -> (Coef, String) {
+fn denominator(den: &Mono, st: Style) -> Option<(Coef, String)> {
     let mut scale = Coef::one();
     let mut parts: Vec<String> = Vec::new();
     for (v, e) in den {
         match opened(v, *e) {
+            // (a kept reciprocal inside belongs above the bar: the caller
+            // prints the terms one by one)
+            Some((_, vars, _)) if vars.iter().any(|(w, _)| is_recip(w)) => return None,
             Some((k, vars, factors)) => {
                 scale = scale.mul(&k);
                 for (v, p) in &vars {
@@ -134,7 +137,72 @@ fn denominator(den: &Mono, st: Style) -> (Coef, String) {
     } else {
         text
     };
-    (scale, text)
+    Some((scale, text))
+}
+
+/// The two sides of a term's fraction bar as they are filled in: the
+/// coefficient, the factors above and below, the trigonometric factors
+/// above and below.
+struct Sides<'a> {
+    c: &'a mut Coef,
+    num: &'a mut Vec<String>,
+    den: &'a mut Vec<String>,
+    num_t: &'a mut Vec<Factor>,
+    den_t: &'a mut Vec<Factor>,
+    st: Style,
+}
+
+impl Sides<'_> {
+    /// The factor v^e on its side of the bar: above for e > 0, below for
+    /// e < 0. A kept reciprocal 1/(x) is x on the other side, opened when
+    /// x is one real term (its constant joins the coefficient, its
+    /// variables — kept reciprocals among them, issue 35: `1/tan(t)`
+    /// printed 1/((cos(t)) sin(t)) — and trigonometric factors go where
+    /// they belong), else `(x)`.
+    fn place(&mut self, v: &Var, e: i32, depth: u32) {
+        let latex = self.st.mode == Mode::Latex;
+        if e == 0 {
+            return;
+        }
+        if is_recip(v) {
+            // v^e = x^(−e): above when e < 0
+            if depth < 8
+                && let Some((k, vars, factors)) = opened(v, e.saturating_abs())
+            {
+                // opened gives 1/x^|e| = k / (vars · factors)
+                match e > 0 {
+                    true => {
+                        *self.c = self.c.mul(&k);
+                        for (w, q) in &vars {
+                            self.place(w, q.saturating_neg(), depth + 1);
+                        }
+                        self.den_t.extend(factors);
+                    }
+                    false => {
+                        *self.c = self.c.mul(&k.inv().unwrap_or_else(Coef::one));
+                        for (w, q) in &vars {
+                            self.place(w, *q, depth + 1);
+                        }
+                        self.num_t.extend(factors);
+                    }
+                }
+                return;
+            }
+            let into = if e > 0 {
+                &mut *self.den
+            } else {
+                &mut *self.num
+            };
+            into.push(power(&var(v, self.st), e.saturating_abs(), latex));
+            return;
+        }
+        let into = if e > 0 {
+            &mut *self.num
+        } else {
+            &mut *self.den
+        };
+        into.push(power(&var(v, self.st), e.saturating_abs(), latex));
+    }
 }
 
 /// sin(θ)/cos(θ) is tan(θ), cos(θ)/sin(θ) is cot(θ), power by power.
@@ -177,25 +245,16 @@ pub(super) fn term(c: &Coef, poly: &Mono, trig: &[Trig], st: Style) -> (bool, St
         })
         .collect();
     let mut den_t: Vec<Factor> = Vec::new();
+    let mut sides = Sides {
+        c: &mut c,
+        num: &mut num,
+        den: &mut den,
+        num_t: &mut num_t,
+        den_t: &mut den_t,
+        st,
+    };
     for (v, e) in poly {
-        if let Some((k, vars, factors)) = opened(v, *e) {
-            c = c.mul(&k);
-            for (v, p) in vars {
-                match p > 0 {
-                    true => den.push(power(&var(&v, st), p, latex)),
-                    false => num.push(power(&var(&v, st), p.saturating_neg(), latex)),
-                }
-            }
-            den_t.extend(factors);
-            continue;
-        }
-        let (into, e) = match (v, *e > 0) {
-            (Var::Call(c), true) if c.f == Func::Recip => (&mut den, *e),
-            (Var::Call(c), false) if c.f == Func::Recip => (&mut num, e.saturating_neg()),
-            (_, true) => (&mut num, *e),
-            (_, false) => (&mut den, e.saturating_neg()),
-        };
-        into.push(power(&var(v, st), e, latex));
+        sides.place(v, *e, 0);
     }
     tangents(&mut num_t, &mut den_t);
     num.extend(num_t.iter().map(|f| trig_factor(&f.k, f.f, f.p, st)));

@@ -110,6 +110,23 @@ impl Rat {
             Rat::Big(b) => (b.numer().bits() + b.denom().bits()).div_ceil(64) as usize,
         }
     }
+    /// The remainder of this fraction by the positive integer `m`, in
+    /// [0, m): r − m⌊r/m⌋, exactly however large r is (an angle's
+    /// multiple of π reduced by its period: 3·10⁷³ mod 2 is 0).
+    pub fn rem_euclid(&self, m: i64) -> Rat {
+        if let Rat::Small { num, den } = self
+            && let Some(md) = m.checked_mul(*den)
+        {
+            return Rat::Small {
+                num: num.rem_euclid(md),
+                den: *den,
+            };
+        }
+        let r = self.to_big();
+        let m = BigRational::from_integer(BigInt::from(m));
+        let q = (&r / &m).floor();
+        Rat::from_big(r - q * m)
+    }
     /// The integer n.
     pub fn int(n: i64) -> Rat {
         Rat::Small { num: n, den: 1 }
@@ -398,6 +415,24 @@ pub fn scientific(p: &str, q: &str) -> Option<String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn remainders_are_exact_at_any_size() {
+        let r = |n: i128, d: i128| Rat::new(n, d).unwrap();
+        assert_eq!(r(7, 1).rem_euclid(2), Rat::ONE);
+        assert_eq!(r(-7, 6).rem_euclid(2), r(5, 6));
+        assert_eq!(r(13, 6).rem_euclid(2), r(1, 6));
+        // 3·10³⁰ + 1/6 (big): 1/6; −2⁷⁰ − 1/2: 3/2
+        let big = Rat::new(3 * 10i128.pow(30), 1).unwrap().add(&r(1, 6));
+        assert!(matches!(big, Rat::Big(_)));
+        assert_eq!(big.rem_euclid(2), r(1, 6));
+        let neg = Rat::new(-(1i128 << 70), 1).unwrap().add(&r(-1, 2));
+        assert_eq!(neg.rem_euclid(2), r(3, 2));
+        assert_eq!(
+            Rat::new(i128::from(i64::MAX), 1).unwrap().rem_euclid(2),
+            Rat::ONE
+        );
+    }
 
     #[test]
     fn small_and_big_agree() {

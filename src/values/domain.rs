@@ -84,6 +84,38 @@ impl Decided {
         }
     }
 
+    /// The float of an angle to take a sine, cosine or tangent of: an
+    /// exact form cπ + d with c rational has c reduced modulo 2 first,
+    /// exactly (`sin(3·10¹⁷π)` is sin 0, not the sine of the float of
+    /// 3·10¹⁷π, which is off by more than a turn; issue 35); else
+    /// [`Decided::value`].
+    pub fn angle(&self) -> f64 {
+        let Some(e) = &self.exact else {
+            return self.value();
+        };
+        let turns = e.terms.iter().find_map(|(mono, c)| {
+            matches!(mono.as_slice(), [(Var::Pi, 1)])
+                .then(|| c.as_rat())
+                .flatten()
+        });
+        match turns {
+            Some(r) if r.rem_euclid(2) != r => {
+                // e − (r − (r mod 2))π, an even multiple of π less
+                let whole = r.add(&r.rem_euclid(2).neg());
+                let reduced = e.sub(&Expr::constant(Coef::rat(whole)).mul(&Expr::pi()));
+                nearest(&reduced).unwrap_or_else(|| self.value())
+            }
+            _ => self.value(),
+        }
+    }
+
+    /// True when the number is a float with no exact form so large that
+    /// its last place is worth a radian or more: its angle modulo 2π is
+    /// unknown, and a sine or cosine of it has no significant digit.
+    pub fn angle_lost(&self) -> bool {
+        !self.is_exact() && self.float.is_finite() && self.float.abs() >= 2f64.powi(53)
+    }
+
     /// The order of the number and the integer `c`: exactly when it has
     /// an exact form (None when even 50 decimal places cannot tell), else
     /// by its float (None for NaN; a decimal as typed is on the same side
