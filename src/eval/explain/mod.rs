@@ -5,9 +5,9 @@
 //! for that algorithm's steps on the same inputs. The last step's value is
 //! the statement's value itself.
 //!
-//! Submodules: [`chain`] (frame chains: which subscripts cancel, in
-//! order), [`symbolic`] (closed forms over symbols, Prop. 3.16),
-//! [`calculus`] (twists from Ṫ, (3.69)–(3.75); `diff` node by node).
+//! Submodules: `chain` (frame chains: which subscripts cancel, in
+//! order), `symbolic` (closed forms over symbols, Prop. 3.16),
+//! `calculus` (twists from Ṫ, (3.69)–(3.75); `diff` node by node).
 
 mod calculus;
 mod chain;

@@ -11,7 +11,7 @@ use crate::lie::{Mat3, Mat4, Vec3, Vec6, se3};
 const NEAR: f64 = 1e-2;
 
 /// The branch decision of [`so3::log`] read from R's floats (as
-/// [`so3::log_parts`] reads it).
+/// the logarithm itself reads it).
 pub fn decide(r: &Mat3) -> HalfTurn {
     let skew = so3::skew_part(r);
     HalfTurn {

@@ -1,7 +1,7 @@
 //! The book's algorithms of chapter 3 step by step (`explain`, LANGUAGE.md
 //! §14): each function here runs the same computation as its plain
 //! counterpart in [`super::so3`] or [`super::se3`] (it calls the same
-//! pieces: [`super::so3::log_parts_with`], the same coefficients) and
+//! pieces: the SO(3) logarithm's `log_parts_with`, the same coefficients) and
 //! records, in the book's order, every intermediate quantity with the
 //! equation, proposition or section it comes from. The last step's value is
 //! the plain function's value, bit for bit (a property test checks it).
