@@ -137,6 +137,14 @@ fn check_reports_each_file_on_its_own_line_past_one_not_utf8() {
          c.chs: 1 error\n"
     );
     assert!(out.stderr.contains("c.chs:2:6: frame error"), "{out:?}");
+    // check evaluates no assert: it has nothing to report.
+    let report = in_dir(&dir, &["check", "--report", "junit", "r.xml", "a.chs"]);
+    assert_eq!(report.code, Some(2), "{report:?}");
+    assert!(
+        report.stderr.contains("--report is for `run`"),
+        "{report:?}"
+    );
+    assert!(!dir.join("r.xml").exists());
     // Without the unreadable file, a script error is exit 1.
     assert_eq!(in_dir(&dir, &["check", "a.chs", "c.chs"]).code, Some(1));
 }

@@ -19,7 +19,9 @@ use crate::session::{Report, Session, read_source, shown_path};
 /// A script to run: its name in messages and its text, or why it could
 /// not be read (with the bytes, when there were any, for the report).
 pub(super) struct Source {
+    /// The file as messages name it (`<stdin>`, `<-e>`).
     pub name: String,
+    /// The text, or the message and the bytes read.
     pub text: Result<String, (String, Option<Vec<u8>>)>,
 }
 
@@ -84,6 +86,11 @@ pub(super) fn run(sources: &[Source], mode: Mode, opts: &Opts, file_key: bool) -
         },
     };
     let report = match opts.report() {
+        // `check` evaluates no assert: it has no verdict to report.
+        Ok(Some(_)) if mode == Mode::Check => {
+            emit_err("chasles: --report is for `run` (check evaluates no assert)\n");
+            return 2;
+        }
         Ok(r) => r,
         Err(m) => {
             emit_err(&format!("chasles: {m}\n"));
