@@ -47,11 +47,21 @@ pub(super) fn load(files: &[PathBuf]) -> Vec<Source> {
                 } else {
                     shown_path(f)
                 },
-                text: read_source(f)
-                    .map_err(|m| (m, (!stdin).then(|| std::fs::read(f).ok()).flatten())),
+                text: read_source(f).map_err(|m| (m, (!stdin).then(|| bytes_of(f)).flatten())),
             }
         })
         .collect()
+}
+
+/// The bytes of a script that is not text, for the report to find its
+/// asserts in: only a regular file under the size cap (never `/dev/zero`
+/// or a pipe).
+fn bytes_of(f: &std::path::Path) -> Option<Vec<u8>> {
+    let meta = std::fs::metadata(f).ok()?;
+    if !meta.is_file() || meta.len() > crate::session::MAX_SOURCE_BYTES {
+        return None;
+    }
+    std::fs::read(f).ok()
 }
 
 /// What a run of many files shares: the flags, the gate, the prelude.
