@@ -8,7 +8,7 @@
 use std::ffi::OsString;
 use std::io::{IsTerminal, Write};
 
-use clap::{Parser, Subcommand};
+use clap::{CommandFactory, Parser, Subcommand};
 
 mod batch;
 
@@ -231,6 +231,15 @@ enum Command {
     /// The language server (LANGUAGE.md §15): diagnostics, hover,
     /// completion and definitions for `.chs` files, over stdio.
     Lsp,
+    /// Print shell completions for bash, zsh or fish (e.g. `chasles
+    /// completions bash > ~/.local/share/bash-completion/completions/chasles`).
+    Completions {
+        #[arg(value_name = "SHELL")]
+        shell: clap_complete::Shell,
+    },
+    /// Print the manual page (roff): `chasles man > chasles.1`, `man
+    /// ./chasles.1`.
+    Man,
     /// `chasles FILE.chs ...`: a name that is no command is a script,
     /// run as `chasles run FILE.chs ...` is (as `python FILE` runs one).
     #[command(external_subcommand)]
@@ -308,6 +317,13 @@ fn emit(out: &mut impl Write, s: &str) {
     {
         std::process::exit(0);
     }
+}
+
+/// Writes generated text (completions, the manual page) to stdout; exit 0
+/// (a closed pipe too).
+fn print_bytes(bytes: &[u8]) -> i32 {
+    let _ = std::io::stdout().lock().write_all(bytes);
+    0
 }
 
 fn emit_err(s: &str) {
@@ -389,7 +405,7 @@ where
     };
     match (&cli.command, &cli.eval) {
         (Some(_), Some(_)) => {
-            emit_err("chasles: -e cannot be combined with a command (run, check, kernel, lsp)\n");
+            emit_err("chasles: -e cannot be combined with a command (run, check, kernel, lsp, …)\n");
             2
         }
         (None, Some(src)) => match eval_text(src) {
@@ -406,6 +422,21 @@ where
         },
         (Some(Command::Run { files }), None) => {
             batch::run(&batch::load(files), Mode::Run, &cli.opts, true)
+        }
+        (Some(Command::Completions { shell }), None) => {
+            let mut out = Vec::new();
+            clap_complete::generate(*shell, &mut Cli::command(), "chasles", &mut out);
+            print_bytes(&out)
+        }
+        (Some(Command::Man), None) => {
+            let mut out = Vec::new();
+            match clap_mangen::Man::new(Cli::command()).render(&mut out) {
+                Ok(()) => print_bytes(&out),
+                Err(e) => {
+                    emit_err(&format!("chasles: cannot render the manual page: {e}\n"));
+                    2
+                }
+            }
         }
         (Some(Command::File(names)), None) => {
             let files: Vec<std::path::PathBuf> = names.iter().map(Into::into).collect();

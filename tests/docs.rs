@@ -1,7 +1,9 @@
 //! The reference that ships with the code: `docs/builtins.md` is what the
 //! builtin table generates (rewrite it with `UPDATE_DOCS=1 cargo test
-//! --test docs`), and the README and docs link only files of the
-//! repository.
+//! --test docs`), the README, docs/ and examples/README.md link only files
+//! of the repository and cite the language reference by its name here
+//! (`docs/language.md`, not the contract's `LANGUAGE.md`), and
+//! examples/README.md lists every example script.
 
 use chasles::repl::reference::{REGENERATE, builtins_markdown};
 
@@ -46,7 +48,7 @@ fn builtins_md_names_the_book_functions() {
 /// a clone (the old `../shared/LANGUAGE.md` link did not).
 #[test]
 fn links_stay_inside_the_repository() {
-    let mut files = vec![root().join("README.md")];
+    let mut files = vec![root().join("README.md"), root().join("examples/README.md")];
     for e in std::fs::read_dir(root().join("docs")).expect("docs/ exists") {
         let p = e.expect("a docs entry").path();
         if p.extension().is_some_and(|x| x == "md") {
@@ -74,5 +76,66 @@ fn links_stay_inside_the_repository() {
                 f.display()
             );
         }
+    }
+}
+
+/// The user's documents, and what `:help` shows (the builtin table), name
+/// the language reference as it is in a clone: `docs/language.md`.
+#[test]
+fn the_language_reference_is_cited_by_its_file() {
+    let mut texts = vec![(
+        "docs/builtins.md (generated)".to_string(),
+        builtins_markdown(),
+    )];
+    for f in [
+        "README.md",
+        "examples/README.md",
+        "docs/language.md",
+        "docs/builtins.md",
+    ] {
+        texts.push((
+            f.to_string(),
+            std::fs::read_to_string(root().join(f)).expect(f),
+        ));
+    }
+    for (name, text) in texts {
+        for (n, line) in text.lines().enumerate() {
+            assert!(
+                !line.contains("LANGUAGE.md"),
+                "{name}:{}: cites LANGUAGE.md, which is docs/language.md in this repository: {line}",
+                n + 1
+            );
+        }
+    }
+}
+
+/// examples/README.md lists every script of examples/ (as `NAME.chs`), and
+/// only scripts that exist.
+#[test]
+fn every_example_is_listed() {
+    let readme = std::fs::read_to_string(root().join("examples/README.md")).expect("readable");
+    let mut scripts = Vec::new();
+    for e in std::fs::read_dir(root().join("examples")).expect("examples/") {
+        let p = e.expect("an entry").path();
+        if p.extension().is_some_and(|x| x == "chs") {
+            scripts.push(p.file_name().unwrap().to_string_lossy().into_owned());
+        }
+    }
+    assert!(scripts.len() > 40, "{scripts:?}");
+    let missing: Vec<&String> = scripts
+        .iter()
+        .filter(|s| !readme.contains(&format!("`{s}`")))
+        .collect();
+    assert!(
+        missing.is_empty(),
+        "examples/README.md does not list {missing:?}"
+    );
+    for (i, _) in readme.match_indices(".chs`") {
+        let start = readme[..i].rfind('`').expect("an opening backquote") + 1;
+        let name = format!("{}.chs", &readme[start..i]);
+        assert!(
+            name.contains(' ') || scripts.contains(&name),
+            "examples/README.md lists {name}, which is not in examples/"
+        );
     }
 }

@@ -137,6 +137,14 @@ fn check_reports_each_file_on_its_own_line_past_one_not_utf8() {
          c.chs: 1 error\n"
     );
     assert!(out.stderr.contains("c.chs:2:6: frame error"), "{out:?}");
+    // check evaluates no assert: it has nothing to report.
+    let report = in_dir(&dir, &["check", "--report", "junit", "r.xml", "a.chs"]);
+    assert_eq!(report.code, Some(2), "{report:?}");
+    assert!(
+        report.stderr.contains("--report is for `run`"),
+        "{report:?}"
+    );
+    assert!(!dir.join("r.xml").exists());
     // Without the unreadable file, a script error is exit 1.
     assert_eq!(in_dir(&dir, &["check", "a.chs", "c.chs"]).code, Some(1));
 }
@@ -170,4 +178,51 @@ fn json_objects_name_their_file_and_stderr_keeps_the_diagnostics() {
     // `check --json` names the file too.
     let check = in_dir(&dir, &["check", "--json", "b.chs"]);
     assert_eq!(json_lines(&check.stdout)[0]["file"], "b.chs", "{check:?}");
+}
+
+#[test]
+fn completions_and_the_manual_page_are_generated() {
+    let dir = scratch("completions");
+    let bash = in_dir(&dir, &["completions", "bash"]);
+    assert_eq!(bash.code, Some(0), "{bash:?}");
+    assert!(bash.stdout.contains("_chasles()"), "{}", bash.stdout);
+    for word in [
+        "--no-write",
+        "--report",
+        "--prelude",
+        "run",
+        "check",
+        "kernel",
+    ] {
+        assert!(bash.stdout.contains(word), "{word}");
+    }
+    // bash reads it without a syntax error.
+    std::fs::write(dir.join("chasles.bash"), &bash.stdout).unwrap();
+    if let Ok(out) = std::process::Command::new("bash")
+        .args(["-n", "chasles.bash"])
+        .current_dir(&dir)
+        .output()
+    {
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
+    let zsh = in_dir(&dir, &["completions", "zsh"]);
+    assert!(zsh.stdout.starts_with("#compdef chasles"), "{}", zsh.stdout);
+    let fish = in_dir(&dir, &["completions", "fish"]);
+    assert!(
+        fish.stdout.contains("complete -c chasles"),
+        "{}",
+        fish.stdout
+    );
+    let bad = in_dir(&dir, &["completions", "tcsh"]);
+    assert_eq!(bad.code, Some(2), "{bad:?}");
+    let man = in_dir(&dir, &["man"]);
+    assert_eq!(man.code, Some(0), "{man:?}");
+    assert!(man.stdout.starts_with(".ie \\n(.g"), "{}", man.stdout);
+    assert!(man.stdout.contains(".TH chasles 1"), "{}", man.stdout);
+    assert!(man.stdout.contains("\\-\\-no\\-write"), "{}", man.stdout);
+    assert!(man.stdout.contains("completions"), "{}", man.stdout);
 }

@@ -19,7 +19,9 @@ use crate::session::{Report, Session, read_source, shown_path};
 /// A script to run: its name in messages and its text, or why it could
 /// not be read (with the bytes, when there were any, for the report).
 pub(super) struct Source {
+    /// The file as messages name it (`<stdin>`, `<-e>`).
     pub name: String,
+    /// The text, or the message and the bytes read.
     pub text: Result<String, (String, Option<Vec<u8>>)>,
 }
 
@@ -45,11 +47,21 @@ pub(super) fn load(files: &[PathBuf]) -> Vec<Source> {
                 } else {
                     shown_path(f)
                 },
-                text: read_source(f)
-                    .map_err(|m| (m, (!stdin).then(|| std::fs::read(f).ok()).flatten())),
+                text: read_source(f).map_err(|m| (m, (!stdin).then(|| bytes_of(f)).flatten())),
             }
         })
         .collect()
+}
+
+/// The bytes of a script that is not text, for the report to find its
+/// asserts in: only a regular file under the size cap (never `/dev/zero`
+/// or a pipe).
+fn bytes_of(f: &std::path::Path) -> Option<Vec<u8>> {
+    let meta = std::fs::metadata(f).ok()?;
+    if !meta.is_file() || meta.len() > crate::session::MAX_SOURCE_BYTES {
+        return None;
+    }
+    std::fs::read(f).ok()
 }
 
 /// What a run of many files shares: the flags, the gate, the prelude.
@@ -84,6 +96,11 @@ pub(super) fn run(sources: &[Source], mode: Mode, opts: &Opts, file_key: bool) -
         },
     };
     let report = match opts.report() {
+        // `check` evaluates no assert: it has no verdict to report.
+        Ok(Some(_)) if mode == Mode::Check => {
+            emit_err("chasles: --report is for `run` (check evaluates no assert)\n");
+            return 2;
+        }
         Ok(r) => r,
         Err(m) => {
             emit_err(&format!("chasles: {m}\n"));

@@ -62,7 +62,11 @@ pub struct Case {
     pub line: usize,
     /// `[N pts]` of its comment, else 1.
     pub points: f64,
+    /// Whether it held, failed or never ran.
     pub verdict: Verdict,
+    /// Its place among the script's statements (0-based): the session
+    /// reports each statement once, in order.
+    statement: usize,
 }
 
 impl Case {
@@ -81,19 +85,23 @@ impl Case {
 pub struct Suite {
     /// The file as named in messages.
     pub file: String,
+    /// Its asserts, in the order of the script.
     pub cases: Vec<Case>,
     /// Why the script stopped before its end (its first error without
     /// `--keep-going`, a spent budget, an unreadable file), if it did.
     pub stopped: Option<String>,
     /// The seconds the script took.
     pub seconds: f64,
+    /// The statements reported so far.
+    seen: usize,
 }
 
 impl Suite {
     /// The asserts of `src` (file `file`), none of them run yet.
     pub fn new(file: &str, src: &str) -> Suite {
         let mut cases = Vec::new();
-        for stmt in crate::syntax::statements(src).flatten() {
+        for (statement, parsed) in crate::syntax::statements(src).enumerate() {
+            let Ok(stmt) = parsed else { continue };
             if let StmtKind::Assert(_) = stmt.kind {
                 let start = stmt.span.start.min(src.len());
                 let line = src[..start].matches('\n').count() + 1;
@@ -106,6 +114,7 @@ impl Suite {
                     line,
                     points,
                     verdict: Verdict::NotRun(String::new()),
+                    statement,
                 });
             }
         }
@@ -114,6 +123,7 @@ impl Suite {
             cases,
             stopped: None,
             seconds: 0.0,
+            seen: 0,
         }
     }
 
@@ -130,16 +140,20 @@ impl Suite {
                 line: 0,
                 points: 0.0,
                 verdict: Verdict::NotRun(String::new()),
+                statement: usize::MAX,
             });
         }
         suite.stop(message.to_string());
         suite
     }
 
-    /// Notes one statement's report: an assert's report settles its case
-    /// (the rendered error when it failed).
+    /// Notes the report of the script's next statement (call it for each,
+    /// in order): an assert's report settles its case (the rendered error
+    /// when it failed).
     pub fn observe(&mut self, report: &Report, src: &str) {
-        let Some(case) = self.cases.iter_mut().find(|c| c.line == report.line) else {
+        let statement = self.seen;
+        self.seen += 1;
+        let Some(case) = self.cases.iter_mut().find(|c| c.statement == statement) else {
             return;
         };
         case.verdict = match &report.result {
@@ -162,14 +176,14 @@ impl Suite {
     }
 
     /// Closes the suite after its run: asserts that were never reported
-    /// (a statement that did not parse) fail as not run.
+    /// fail as not run.
     pub fn finish(&mut self, seconds: f64) {
         self.seconds = seconds;
         for c in &mut self.cases {
             if let Verdict::NotRun(why) = &mut c.verdict
                 && why.is_empty()
             {
-                *why = "not run: the statement did not parse".into();
+                *why = "not run".into();
             }
         }
     }
@@ -240,6 +254,31 @@ mod tests {
         assert_eq!(s.cases[0].points, 2.0);
         assert_eq!((s.cases[1].name.as_str(), s.cases[1].line), ("hw.chs:4", 4));
         assert_eq!(s.cases[1].points, 1.0);
+    }
+
+    #[test]
+    fn each_report_settles_the_assert_it_is_for() {
+        use crate::eval::env::Mode;
+        use crate::session::{Session, Settings};
+        // Two asserts on one line, a binding before one on the same line.
+        let src = "x = 1; assert x == 2; assert x == 1  # (b)\ny = 2; assert y == 2\n";
+        let mut suite = Suite::new("hw.chs", src);
+        let mut session = Session::new(Settings::default());
+        session.run(src, Mode::Run, true, |r| suite.observe(r, src));
+        suite.finish(0.0);
+        let verdicts: Vec<bool> = suite
+            .cases
+            .iter()
+            .map(|c| c.verdict == Verdict::Passed)
+            .collect();
+        assert_eq!(verdicts, [false, true, true]);
+        assert!(
+            matches!(&suite.cases[0].verdict, Verdict::Failed(m) if m.starts_with("hw.chs:1:15: assert error")),
+            "{:?}",
+            suite.cases[0].verdict
+        );
+        assert_eq!(suite.cases[1].name, "(b)");
+        assert_eq!(suite.cases[2].name, "hw.chs:2");
     }
 
     #[test]

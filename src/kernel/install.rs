@@ -15,8 +15,9 @@ pub enum Place {
     /// platform's (`~/.local/share/jupyter`, `~/Library/Jupyter`,
     /// `%APPDATA%\jupyter`).
     User,
-    /// The active Python environment (`$VIRTUAL_ENV` or `$CONDA_PREFIX`):
-    /// `PREFIX/share/jupyter`.
+    /// The active Python environment (`$VIRTUAL_ENV` or `$CONDA_PREFIX`),
+    /// else the one `pip install chasles` put this binary in (its folder's
+    /// parent holds `pyvenv.cfg` or `conda-meta`): `PREFIX/share/jupyter`.
     SysPrefix,
 }
 
@@ -40,13 +41,28 @@ pub fn data_dir(place: Place) -> Result<PathBuf, String> {
         }
         Place::SysPrefix => var("VIRTUAL_ENV")
             .or_else(|| var("CONDA_PREFIX"))
-            .map(|p| PathBuf::from(p).join("share").join("jupyter"))
+            .map(PathBuf::from)
+            .or_else(own_environment)
+            .map(|p| p.join("share").join("jupyter"))
             .ok_or_else(|| {
                 "--sys-prefix needs an active Python environment (VIRTUAL_ENV or CONDA_PREFIX); \
                  use --user"
                     .into()
             }),
     }
+}
+
+/// The Python environment this binary was installed in by pip (a wheel
+/// puts it in `PREFIX/bin` or `PREFIX\Scripts`), if it is one.
+fn own_environment() -> Option<PathBuf> {
+    environment_of(&std::env::current_exe().ok()?)
+}
+
+/// The Python environment holding the binary `exe`, if it is in one.
+fn environment_of(exe: &Path) -> Option<PathBuf> {
+    let prefix = exe.parent()?.parent()?;
+    (prefix.join("pyvenv.cfg").is_file() || prefix.join("conda-meta").is_dir())
+        .then(|| prefix.to_path_buf())
 }
 
 /// The `kernel.json` that starts `binary` as the kernel.
@@ -113,6 +129,17 @@ pub fn install(place: Place) -> Result<PathBuf, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_binary_in_a_virtual_environment_knows_its_prefix() {
+        let venv = std::env::temp_dir().join(format!("chasles-venv-{}", std::process::id()));
+        std::fs::create_dir_all(venv.join("bin")).unwrap();
+        let exe = venv.join("bin").join("chasles");
+        assert_eq!(environment_of(&exe), None);
+        std::fs::write(venv.join("pyvenv.cfg"), "home = /usr/bin\n").unwrap();
+        assert_eq!(environment_of(&exe), Some(venv.clone()));
+        let _ = std::fs::remove_dir_all(&venv);
+    }
 
     #[test]
     fn the_spec_starts_the_kernel_with_the_connection_file() {

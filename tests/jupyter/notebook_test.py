@@ -1,7 +1,8 @@
 """notebooks/ch3_tour.ipynb executed end to end by nbclient on the chasles
 kernel, its outputs checked: a picture as SVG, LaTeX matrices, the frame
 error as an error output, Example 3.2's values as the terminal prints them,
-the mechanism's dof, and no file written. Run by tests/jupyter.rs (env
+the mechanism's dof, no file written, and the committed outputs the same
+as this fresh run's (CHASLES_UPDATE_NOTEBOOK=1 rewrites them). Run by tests/jupyter.rs (env
 CHASLES_BIN, JUPYTER_DATA_DIR; the working folder is a fresh temporary one)."""
 
 import os
@@ -17,15 +18,34 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 NOTEBOOK = os.path.join(ROOT, "notebooks", "ch3_tour.ipynb")
 
 
+def shown(cell):
+    """What a cell's outputs show (text, LaTeX, SVG, errors), without the
+    counters and ids that change from run to run, nor the application/json
+    a reader does not see."""
+    out = []
+    for o in cell.outputs:
+        if o.output_type == "stream":
+            out.append((o.name, o.text))
+        elif o.output_type == "error":
+            out.append(("error", o.ename, o.evalue))
+        else:
+            out.append((o.output_type, {k: v for k, v in o.data.items() if k != "application/json"}))
+    return out
+
+
 class TourNotebook(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         cls.before = set(os.listdir("."))
+        cls.committed = [c for c in nbformat.read(NOTEBOOK, as_version=4).cells if c.cell_type == "code"]
         nb = nbformat.read(NOTEBOOK, as_version=4)
         for cell in nb.cells:
             if cell.cell_type == "code":
                 cell.outputs = []
-        nbclient.NotebookClient(nb, timeout=120, kernel_name="chasles").execute()
+        nbclient.NotebookClient(nb, timeout=120, kernel_name="chasles", record_timing=False).execute()
+        if os.environ.get("CHASLES_UPDATE_NOTEBOOK"):
+            # Rewrites the committed outputs with this run's (then commit it).
+            nbformat.write(nb, NOTEBOOK)
         cls.cells = [c for c in nb.cells if c.cell_type == "code"]
 
     def tagged(self, tag):
@@ -77,6 +97,18 @@ class TourNotebook(unittest.TestCase):
         (result,) = self.outputs([cell], "execute_result")
         self.assertEqual(result.data["text/plain"], "6")
         self.assertTrue(any("dof = 6(14 − 1 − 18)" in o.data["text/plain"] for o in self.outputs([cell]) if "data" in o))
+
+    def test_the_committed_outputs_are_a_fresh_runs(self):
+        # GitHub renders the committed outputs: they must be what the kernel
+        # shows now (rewrite them with CHASLES_UPDATE_NOTEBOOK=1).
+        self.assertEqual(len(self.committed), len(self.cells))
+        for i, (old, new) in enumerate(zip(self.committed, self.cells)):
+            self.assertEqual(
+                shown(old),
+                shown(new),
+                f"code cell {i + 1} ({old.source[:40]!r}): its committed outputs differ from a fresh run; "
+                "rerun tests/jupyter.rs with CHASLES_UPDATE_NOTEBOOK=1 and commit the notebook",
+            )
 
     def test_no_file_was_written(self):
         self.assertEqual(set(os.listdir(".")) - self.before, set())
