@@ -253,7 +253,17 @@ fn a_frame_error_appears_and_disappears_as_the_line_is_edited() {
     let text = h["contents"]["value"].as_str().unwrap();
     assert!(text.contains("SE(3) {a}←{c}"), "{text}");
     assert!(text.contains("maps coordinates in {c} to {a}"), "{text}");
-    assert_eq!(h["range"]["start"], json!({"line": 3, "character": 0}));
+    // T_ac is made of given symbols: its value is the product, kept
+    // symbolic, with T_bc's own value inv(T_cb).
+    assert!(text.contains("= `T_ab inv(T_cb)`"), "{text}");
+    let h = c.at("textDocument/hover", 2, 1);
+    let text = h["contents"]["value"].as_str().unwrap();
+    assert!(text.contains("SO(3) {s}←{b}"), "{text}");
+    assert!(text.contains("= `[0.866"), "R_sb's value: {text}");
+    assert_eq!(
+        h["range"],
+        json!({"start": {"line": 2, "character": 0}, "end": {"line": 2, "character": 4}})
+    );
     let h = c.at("textDocument/hover", 2, 9);
     let text = h["contents"]["value"].as_str().unwrap();
     assert!(text.contains("Rotz(θ)") || text.contains("Rotz("), "{text}");
@@ -345,10 +355,12 @@ fn a_script_that_would_run_for_minutes_and_write_files_is_only_checked() {
     // Checked without numbers: far below the seconds each grid takes to run.
     assert!(took < Duration::from_secs(20), "checking took {took:?}");
     let h = c.at("textDocument/hover", 0, 0);
-    assert!(
-        h["contents"]["value"].as_str().unwrap().contains("list"),
-        "{h}"
-    );
+    let text = h["contents"]["value"].as_str().unwrap();
+    assert!(text.contains("list"), "{text}");
+    // Its value would take seconds: the hover says it was not computed.
+    assert!(text.contains("value not computed"), "{text}");
+    let took = start.elapsed();
+    assert!(took < Duration::from_secs(20), "hover took {took:?}");
     // `save`'s help shows its example, save(draw(Rotz(pi/4)), "rotz.svg"),
     // evaluated without writing rotz.svg.
     let h = c.at("textDocument/hover", 8, 1);

@@ -22,6 +22,12 @@ use super::text::is_name_char;
 /// limit met in practice: a 2,000-line script checks in milliseconds).
 pub const CHECK_TIME: Duration = Duration::from_secs(2);
 
+/// The time hover may spend computing a binding's value: the document up to
+/// the binding run with numbers under the REPL preview's caps
+/// ([`Budget::preview`]), no effect performed. Past it the hover says the
+/// value was not computed.
+pub const VALUE_TIME: Duration = Duration::from_millis(250);
+
 /// What a definition binds.
 #[derive(Debug, Clone, PartialEq)]
 pub enum DefKind {
@@ -36,6 +42,7 @@ pub enum DefKind {
 /// A name bound by a statement that checked without error.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Def {
+    /// The name as written (`T_ab`, `θ1`).
     pub name: String,
     /// The name where the statement writes it.
     pub span: Span,
@@ -43,6 +50,7 @@ pub struct Def {
     pub statement: Span,
     /// Its kind and frames (§6) as the check inferred them.
     pub ty: Ty,
+    /// A binding, a given symbol or a function.
     pub kind: DefKind,
 }
 
@@ -168,6 +176,38 @@ fn given_names(stmt: &str) -> Vec<String> {
         .collect()
 }
 
+/// A one-line summary of the value `def` binds, computed by running `text`
+/// up to the end of its statement with numbers, under the preview's caps
+/// and [`VALUE_TIME`], performing no effect (no file is written, whatever
+/// the script saves); `None` when it was not computed within them or the
+/// binding has no value (a `given` symbol, a function).
+pub fn value_summary(text: &str, def: &Def, settings: Settings) -> Option<String> {
+    if def.kind != DefKind::Binding {
+        return None;
+    }
+    let end = crate::span::floor_boundary(text, def.statement.end);
+    let mut session = Session::new(settings);
+    session.gate = Gate::deny();
+    session.budget = Budget::preview().with_timeout(VALUE_TIME);
+    // The binding's own statement must have run (not an earlier binding of
+    // the same name, left when the budget stopped the run before it).
+    let mut reached = false;
+    session.evaluate(&text[..end], Mode::Run, true, |r| {
+        reached |= r.result.as_ref().is_ok_and(|o| o.span == def.statement);
+    });
+    if !reached {
+        return None;
+    }
+    let b = session.env.get(def.name.as_str())?;
+    let v = b.val.as_ref()?;
+    let shown = crate::output::text::inline(v, settings.text_style());
+    let mut short: String = shown.chars().take(200).collect();
+    if short.len() < shown.len() {
+        short.push('…');
+    }
+    Some(short)
+}
+
 /// The byte offset of `word` in `text` standing alone (not part of a longer
 /// name).
 fn find_word(text: &str, word: &str) -> Option<usize> {
@@ -209,6 +249,14 @@ mod tests {
         assert_eq!(frame[0].kind.as_str(), "frame");
         let line4 = src.find("T_ab * T_ac").unwrap();
         assert!(frame[0].span.start >= line4 && frame[0].span.end <= line4 + 11);
+        // Values are computed for hover only, with numbers, on demand.
+        let twice = "x = 2\ny = x * 3\n";
+        let b = Analysis::of(twice, Settings::default());
+        assert_eq!(
+            value_summary(twice, &b.defs[1], Settings::default()).as_deref(),
+            Some("6")
+        );
+        assert_eq!(value_summary(src, &a.defs[0], Settings::default()), None);
         // Where a name is read: the binding before it.
         let use_at = src.rfind("T_ac").unwrap();
         assert_eq!(

@@ -15,7 +15,7 @@ use crate::diagnostics::{Diagnostic, Severity};
 use crate::frontend::{commands::COMMANDS, help, keywords};
 use crate::session::Settings;
 
-use super::analysis::{Analysis, Def, DefKind};
+use super::analysis::{Analysis, Def, DefKind, value_summary};
 use super::text::{Document, Encoding, is_name_char};
 
 /// The words of the language offered by completion (statements, units,
@@ -84,8 +84,9 @@ fn frames_meaning(f: &Frames) -> Option<String> {
     })
 }
 
-/// The hover of a definition: its type and frames, where it was bound.
-fn def_hover(def: &Def, doc: &Document, enc: Encoding) -> String {
+/// The hover of a definition: its type and frames, its value (computed on
+/// demand within [`super::analysis::VALUE_TIME`]), where it was bound.
+fn def_hover(def: &Def, doc: &Document, enc: Encoding, settings: Settings) -> String {
     let line = doc.position(def.statement.start, enc).line + 1;
     let stmt = doc.text[def.statement.start..def.statement.end.min(doc.text.len())].trim();
     let mut out = match &def.kind {
@@ -99,6 +100,14 @@ fn def_hover(def: &Def, doc: &Document, enc: Encoding) -> String {
     if let Some(m) = frames_meaning(&def.ty.frames) {
         out.push_str(&format!("\n\n{m}"));
     }
+    if def.kind == DefKind::Binding {
+        match value_summary(&doc.text, def, settings) {
+            Some(v) => out.push_str(&format!("\n\n= `{v}`")),
+            None => out.push_str(
+                "\n\nvalue not computed within the editor's budget (`chasles run` computes it)",
+            ),
+        }
+    }
     let shown: String = stmt.chars().take(120).collect();
     out.push_str(&format!("\n\nbound on line {line}: `{shown}`"));
     out
@@ -107,13 +116,19 @@ fn def_hover(def: &Def, doc: &Document, enc: Encoding) -> String {
 /// The hover at byte `offset`: a binding's type, frames and definition; a
 /// builtin's `:help` text (signature, book section, meaning, example); a
 /// keyword's help.
-pub fn hover(doc: &Document, analysis: &Analysis, offset: usize, enc: Encoding) -> Option<Hover> {
+pub fn hover(
+    doc: &Document,
+    analysis: &Analysis,
+    offset: usize,
+    enc: Encoding,
+    settings: Settings,
+) -> Option<Hover> {
     let span = doc.word_at(offset)?;
     let word = &doc.text[span.start..span.end];
     let text = if let Some(def) = analysis.def_at(word, offset) {
-        def_hover(def, doc, enc)
+        def_hover(def, doc, enc, settings)
     } else if let Some(b) = builtins::lookup(word) {
-        format!("```\n{}\n```", help::function(b, &Settings::default()))
+        format!("```\n{}\n```", help::function(b, &settings))
     } else {
         keywords::keyword(word)?.to_string()
     };

@@ -290,9 +290,12 @@ impl Server<'_> {
                 else {
                     return self.reply_err(req, ErrorCode::InvalidParams, "bad hover params");
                 };
+                let settings = self.settings;
                 let hover = self
                     .at(&p.text_document_position_params)
-                    .and_then(|(o, at)| features::hover(&o.doc, o.analysis.as_ref()?, at, enc));
+                    .and_then(|(o, at)| {
+                        features::hover(&o.doc, o.analysis.as_ref()?, at, enc, settings)
+                    });
                 serde_json::to_value(hover)
             }
             Completion::METHOD => {

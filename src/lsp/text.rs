@@ -12,15 +12,19 @@ use crate::span::Span;
 /// default) or bytes (`positionEncoding: "utf-8"`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Encoding {
+    /// UTF-16 code units, the protocol's default.
     #[default]
     Utf16,
+    /// Bytes, where the client offers `utf-8`.
     Utf8,
 }
 
 /// One open `.chs` document.
 #[derive(Debug, Clone, Default)]
 pub struct Document {
+    /// The text as the editor holds it.
     pub text: String,
+    /// The client's version of the text (diagnostics name it).
     pub version: i32,
     /// The byte offset where each line starts (line 0 at 0).
     starts: Vec<usize>,
