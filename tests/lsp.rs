@@ -375,6 +375,51 @@ fn a_script_that_would_run_for_minutes_and_write_files_is_only_checked() {
 }
 
 #[test]
+fn changes_typed_quickly_are_checked_once() {
+    let dir = common::scratch("debounce");
+    let (mut c, _) = Client::start(&dir);
+    c.open("given T_ab, T_cb : SE3\nx = 1\n");
+    assert_eq!(c.diagnostics(1), Vec::<Value>::new());
+    // Three keystrokes in one write, well inside the debounce: `T_ab * T_cb`
+    // typed as three changes; one check, of the last version.
+    let mut burst = String::new();
+    for (v, (from, text)) in [(0, "T_ab"), (4, " * "), (7, "T_cb")]
+        .into_iter()
+        .enumerate()
+    {
+        let body = json!({
+            "jsonrpc": "2.0",
+            "method": "textDocument/didChange",
+            "params": {
+                "textDocument": {"uri": URI, "version": v + 2},
+                "contentChanges": [{
+                    "range": {"start": {"line": 2, "character": from}, "end": {"line": 2, "character": from}},
+                    "text": text,
+                }],
+            },
+        })
+        .to_string();
+        burst.push_str(&format!("Content-Length: {}\r\n\r\n{body}", body.len()));
+    }
+    c.stdin.write_all(burst.as_bytes()).unwrap();
+    c.stdin.flush().unwrap();
+    let d = c.diagnostics(4);
+    assert_eq!(d.len(), 1, "{d:?}");
+    assert_eq!(d[0]["code"], "frame");
+    assert_eq!(d[0]["range"]["start"], json!({"line": 2, "character": 5}));
+    let early: Vec<&Value> = c
+        .pending
+        .iter()
+        .filter(|v| v["method"] == "textDocument/publishDiagnostics")
+        .collect();
+    assert!(
+        early.is_empty(),
+        "versions 2 and 3 were checked too: {early:?}"
+    );
+    assert_eq!(c.stop(), 0);
+}
+
+#[test]
 fn exit_without_shutdown_is_an_error_and_a_bad_request_is_answered() {
     let dir = common::scratch("exit");
     let (mut c, _) = Client::start(&dir);
