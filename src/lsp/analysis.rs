@@ -151,6 +151,22 @@ impl Analysis {
         out
     }
 
+    /// What the editor shows when the check itself failed (a bug in
+    /// chasles, caught so that the server goes on): one error at the start
+    /// of the text saying so, and no definitions.
+    pub fn failed(text: &str) -> Analysis {
+        let end = text.find('\n').unwrap_or(text.len());
+        let d = Diagnostic::error(
+            crate::diagnostics::ErrorKind::Domain,
+            Span::new(0, end),
+            "chasles could not check this file (an internal error: please report it with the file)",
+        );
+        Analysis {
+            diagnostics: vec![d],
+            ..Analysis::default()
+        }
+    }
+
     /// The definition of `name` in force at byte `offset`: the last one
     /// whose statement starts at or before it (a use reads the binding
     /// made before it), else the first (a name used before it is bound).
@@ -226,6 +242,14 @@ fn find_word(text: &str, word: &str) -> Option<usize> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_failed_check_is_one_error_on_the_first_line() {
+        let a = Analysis::failed("x = 1\ny = 2\n");
+        assert_eq!(a.diagnostics.len(), 1);
+        assert_eq!(a.diagnostics[0].span, Span::new(0, 5));
+        assert!(a.defs.is_empty());
+    }
 
     #[test]
     fn bindings_givens_functions_and_errors() {

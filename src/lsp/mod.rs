@@ -165,7 +165,17 @@ impl Server<'_> {
                         self.send(Response::new_ok(req.id, ()).into());
                         continue;
                     }
-                    self.request(req);
+                    let (id, method) = (req.id.clone(), req.method.clone());
+                    let answered = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+                        self.request(req)
+                    }));
+                    if answered.is_err() {
+                        let msg =
+                            format!("chasles lsp failed on {method} (a bug: please report it)");
+                        self.send(
+                            Response::new_err(id, ErrorCode::InternalError as i32, msg).into(),
+                        );
+                    }
                 }
                 Message::Notification(n) if n.method == "exit" => {
                     return if shut_down { 0 } else { 1 };
@@ -209,7 +219,9 @@ impl Server<'_> {
         if open.analysis.is_some() {
             return;
         }
-        let analysis = Analysis::of(&open.doc.text, settings);
+        let text = &open.doc.text;
+        let analysis = std::panic::catch_unwind(|| Analysis::of(text, settings))
+            .unwrap_or_else(|_| Analysis::failed(text));
         open.due = None;
         let diagnostics = analysis
             .diagnostics

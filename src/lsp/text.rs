@@ -184,6 +184,14 @@ mod tests {
         assert_eq!(d.line(1), "θ₁ = 2");
         d.apply(&change(0, 0, 2, 0, ""), Encoding::Utf16);
         assert_eq!((d.text.as_str(), d.lines()), ("", 1));
+        // A change without a range replaces the whole text.
+        let all = TextDocumentContentChangeEvent {
+            range: None,
+            range_length: None,
+            text: "a\nb".into(),
+        };
+        d.apply(&all, Encoding::Utf8);
+        assert_eq!((d.line(1), d.lines()), ("b", 2));
     }
 
     #[test]
