@@ -312,6 +312,18 @@ fn a_frame_error_appears_and_disappears_as_the_line_is_edited() {
     );
     let l = labels(&c.at("textDocument/completion", 5, 0));
     assert!(l.contains(&"given".into()), "{l:?}");
+    c.edit(7, 5, 0, 11, "given q : S");
+    let l = labels(&c.at("textDocument/completion", 5, 11));
+    assert_eq!(
+        l,
+        ["SE2", "SE3", "SO2", "SO3", "scalar", "screw", "se3", "so3"]
+    );
+    c.edit(8, 5, 0, 11, ":");
+    let l = labels(&c.at("textDocument/completion", 5, 1));
+    assert!(
+        l.contains(&":help".into()) && l.contains(&":vars".into()),
+        "{l:?}"
+    );
 
     // Document symbols: every binding, with its type.
     let s = c.request(

@@ -25,6 +25,12 @@ const KEYWORDS: &[&str] = &[
     "false",
 ];
 
+/// The types `given` accepts (§7, `eval::interp::given_kind`), offered after
+/// `given NAME :`.
+const GIVEN_TYPES: &[&str] = &[
+    "scalar", "vec3", "vec6", "SO3", "SE3", "SO2", "SE2", "so3", "se3", "twist", "screw", "wrench",
+];
+
 /// A diagnostic as the protocol carries it: the primary span as the range,
 /// the kind (`frame`, `syntax`, …) as the code, each label and the help as
 /// related information pointing into the document.
@@ -209,8 +215,8 @@ fn outer(f: &Frames) -> Option<Frame> {
     }
 }
 
-/// Completions at byte `offset`: `:` commands at the start of a line;
-/// otherwise the bindings made before the cursor (after `T_ab *`, those
+/// Completions at byte `offset`: `:` commands at the start of a line; the
+/// types after `given NAME :`; otherwise the bindings made before the cursor (after `T_ab *`, those
 /// whose outer frame is {b} first), the builtins with their signatures,
 /// and keywords — each starting with the word typed (ignoring case).
 pub fn completion(doc: &Document, analysis: &Analysis, offset: usize) -> Vec<CompletionItem> {
@@ -240,6 +246,23 @@ pub fn completion(doc: &Document, analysis: &Analysis, offset: usize) -> Vec<Com
         .map_or(before.len(), |(i, _)| i);
     let typed = before[word_start..].to_lowercase();
     let fits = |name: &str| name.to_lowercase().starts_with(&typed);
+    let lead = before[..word_start].trim_end();
+    if lead.trim_start().starts_with("given") && lead.contains(':') {
+        return GIVEN_TYPES
+            .iter()
+            .filter(|t| fits(t))
+            .filter(|t| crate::eval::interp::given_kind(t).is_some())
+            .map(|t| CompletionItem {
+                label: (*t).into(),
+                kind: Some(CompletionItemKind::TYPE_PARAMETER),
+                ..Default::default()
+            })
+            .collect();
+    }
+    // A `:` of a range or a type, with nothing typed after it: no list.
+    if typed.is_empty() && lead.ends_with(':') {
+        return Vec::new();
+    }
     let want = wanted_frame(&before[..word_start], analysis, offset);
     let mut items = Vec::new();
     let mut seen = std::collections::HashSet::new();

@@ -99,7 +99,7 @@ pub fn serve_on(conn: &Connection, settings: Settings) -> i32 {
         )),
         hover_provider: Some(lsp_types::HoverProviderCapability::Simple(true)),
         completion_provider: Some(CompletionOptions {
-            trigger_characters: Some(vec![":".into(), "*".into(), " ".into()]),
+            trigger_characters: Some(vec![":".into(), "*".into()]),
             ..Default::default()
         }),
         definition_provider: Some(OneOf::Left(true)),
