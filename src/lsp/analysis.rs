@@ -5,6 +5,8 @@
 //! what the editor needs from it: every diagnostic, and where each name
 //! was bound with its type and frames (§6).
 
+use std::cell::RefCell;
+use std::collections::HashMap;
 use std::time::Duration;
 
 use crate::budget::Budget;
@@ -64,6 +66,9 @@ pub struct Analysis {
     pub defs: Vec<Def>,
     /// The statements checked.
     pub statements: usize,
+    /// The value summaries computed so far for hover, by the start of the
+    /// binding's statement (this check's text only).
+    values: RefCell<HashMap<usize, Option<String>>>,
 }
 
 /// A statement's outcome as far as the editor keeps it.
@@ -165,6 +170,19 @@ impl Analysis {
             diagnostics: vec![d],
             ..Analysis::default()
         }
+    }
+
+    /// [`value_summary`] of `def` in `text` (the text this analysis
+    /// checked), computed once and then remembered.
+    pub fn value_of(&self, text: &str, def: &Def, settings: Settings) -> Option<String> {
+        if let Some(v) = self.values.borrow().get(&def.statement.start) {
+            return v.clone();
+        }
+        let v = value_summary(text, def, settings);
+        self.values
+            .borrow_mut()
+            .insert(def.statement.start, v.clone());
+        v
     }
 
     /// The definition of `name` in force at byte `offset`: the last one
@@ -281,6 +299,18 @@ mod tests {
             Some("6")
         );
         assert_eq!(value_summary(src, &a.defs[0], Settings::default()), None);
+        // Remembered by the analysis: one computation per binding and check.
+        assert_eq!(
+            b.value_of(twice, &b.defs[1], Settings::default())
+                .as_deref(),
+            Some("6")
+        );
+        assert_eq!(
+            b.value_of(twice, &b.defs[1], Settings::default())
+                .as_deref(),
+            Some("6")
+        );
+        assert_eq!(b.values.borrow().len(), 1);
         // Where a name is read: the binding before it.
         let use_at = src.rfind("T_ac").unwrap();
         assert_eq!(

@@ -15,7 +15,7 @@ use crate::diagnostics::{Diagnostic, Severity};
 use crate::frontend::{commands::COMMANDS, help, keywords};
 use crate::session::Settings;
 
-use super::analysis::{Analysis, Def, DefKind, value_summary};
+use super::analysis::{Analysis, Def, DefKind};
 use super::text::{Document, Encoding, is_name_char};
 
 /// The words of the language offered by completion (statements, units,
@@ -91,8 +91,15 @@ fn frames_meaning(f: &Frames) -> Option<String> {
 }
 
 /// The hover of a definition: its type and frames, its value (computed on
-/// demand within [`super::analysis::VALUE_TIME`]), where it was bound.
-fn def_hover(def: &Def, doc: &Document, enc: Encoding, settings: Settings) -> String {
+/// demand within [`super::analysis::VALUE_TIME`], once per check), where it
+/// was bound.
+fn def_hover(
+    def: &Def,
+    analysis: &Analysis,
+    doc: &Document,
+    enc: Encoding,
+    settings: Settings,
+) -> String {
     let line = doc.position(def.statement.start, enc).line + 1;
     let stmt = doc.text[def.statement.start..def.statement.end.min(doc.text.len())].trim();
     let mut out = match &def.kind {
@@ -107,7 +114,7 @@ fn def_hover(def: &Def, doc: &Document, enc: Encoding, settings: Settings) -> St
         out.push_str(&format!("\n\n{m}"));
     }
     if def.kind == DefKind::Binding {
-        match value_summary(&doc.text, def, settings) {
+        match analysis.value_of(&doc.text, def, settings) {
             Some(v) => out.push_str(&format!("\n\n= `{v}`")),
             None => out.push_str(
                 "\n\nvalue not computed within the editor's budget (`chasles run` computes it)",
@@ -132,7 +139,7 @@ pub fn hover(
     let span = doc.word_at(offset)?;
     let word = &doc.text[span.start..span.end];
     let text = if let Some(def) = analysis.def_at(word, offset) {
-        def_hover(def, doc, enc, settings)
+        def_hover(def, analysis, doc, enc, settings)
     } else if let Some(b) = builtins::lookup(word) {
         format!("```\n{}\n```", help::function(b, &settings))
     } else {
