@@ -30,7 +30,12 @@ struct Client {
 impl Client {
     /// Starts `chasles lsp` in `dir` and initializes it.
     fn start(dir: &Path) -> (Client, Value) {
-        let mut child = common::command(&["lsp"])
+        Client::start_with(dir, &["lsp"])
+    }
+
+    /// Starts `chasles ARGS` (flags, then `lsp`) in `dir` and initializes it.
+    fn start_with(dir: &Path, args: &[&str]) -> (Client, Value) {
+        let mut child = common::command(args)
             .current_dir(dir)
             .stdin(Stdio::piped())
             .stdout(Stdio::piped())
@@ -384,6 +389,41 @@ fn a_script_that_would_run_for_minutes_and_write_files_is_only_checked() {
         .map(|e| e.unwrap().file_name())
         .collect();
     assert!(left.is_empty(), "the server wrote {left:?}");
+}
+
+#[test]
+fn syntax_and_domain_errors_and_warnings_under_the_command_line_flags() {
+    let dir = common::scratch("kinds");
+    // `--frames warn` before `lsp` applies: a frame mismatch is a warning.
+    let (mut c, _) = Client::start_with(&dir, &["--frames", "warn", "lsp"]);
+    c.open(
+        "dof(mech < links 4; joints 4S; planar >)\nx = (1, 2\ny = 1\ngiven T_ab, T_cb : SE3\nT_ab * T_cb\n",
+    );
+    let d = c.diagnostics(1);
+    let seen: Vec<(u64, &str, u64)> = d
+        .iter()
+        .map(|d| {
+            (
+                d["range"]["start"]["line"].as_u64().unwrap(),
+                d["code"].as_str().unwrap(),
+                d["severity"].as_u64().unwrap(),
+            )
+        })
+        .collect();
+    assert_eq!(
+        seen,
+        [(0, "domain", 1), (1, "syntax", 1), (4, "frame", 2)],
+        "{d:?}"
+    );
+    assert!(
+        d[0]["message"]
+            .as_str()
+            .unwrap()
+            .contains("spherical joint (S)"),
+        "{d:?}"
+    );
+    assert_eq!(d[1]["message"], "unclosed '(' opened here");
+    assert_eq!(c.stop(), 0);
 }
 
 #[test]
