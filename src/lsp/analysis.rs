@@ -311,6 +311,12 @@ mod tests {
             Some("6")
         );
         assert_eq!(b.values.borrow().len(), 1);
+        // Long frame names in braces (§2).
+        let braces = "T_{world,cam} = RpToTrans(Rotz(1), (1, 2, 3))\n";
+        let c = Analysis::of(braces, Settings::default());
+        assert_eq!(c.defs[0].name, "T_{world,cam}");
+        assert_eq!(c.defs[0].span, Span::new(0, 13));
+        assert_eq!(c.defs[0].ty.to_string(), "SE(3) {world}←{cam}");
         // Where a name is read: the binding before it.
         let use_at = src.rfind("T_ac").unwrap();
         assert_eq!(
