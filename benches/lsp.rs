@@ -28,14 +28,12 @@ fn script(n: usize) -> String {
         .map(|p| std::fs::read_to_string(p).expect("an example"))
         .collect();
     let mut out = String::new();
-    let mut count = 0;
-    for line in texts.iter().cycle().flat_map(|t| t.lines()) {
+    for (count, line) in texts.iter().cycle().flat_map(|t| t.lines()).enumerate() {
         if count >= n && line.trim().is_empty() {
             break;
         }
         out.push_str(line);
         out.push('\n');
-        count += 1;
     }
     out
 }

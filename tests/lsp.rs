@@ -30,7 +30,12 @@ struct Client {
 impl Client {
     /// Starts `chasles lsp` in `dir` and initializes it.
     fn start(dir: &Path) -> (Client, Value) {
-        let mut child = common::command(&["lsp"])
+        Client::start_with(dir, &["lsp"])
+    }
+
+    /// Starts `chasles ARGS` (flags, then `lsp`) in `dir` and initializes it.
+    fn start_with(dir: &Path, args: &[&str]) -> (Client, Value) {
+        let mut child = common::command(args)
             .current_dir(dir)
             .stdin(Stdio::piped())
             .stdout(Stdio::piped())
@@ -253,7 +258,17 @@ fn a_frame_error_appears_and_disappears_as_the_line_is_edited() {
     let text = h["contents"]["value"].as_str().unwrap();
     assert!(text.contains("SE(3) {a}←{c}"), "{text}");
     assert!(text.contains("maps coordinates in {c} to {a}"), "{text}");
-    assert_eq!(h["range"]["start"], json!({"line": 3, "character": 0}));
+    // T_ac is made of given symbols: its value is the product, kept
+    // symbolic, with T_bc's own value inv(T_cb).
+    assert!(text.contains("= `T_ab inv(T_cb)`"), "{text}");
+    let h = c.at("textDocument/hover", 2, 1);
+    let text = h["contents"]["value"].as_str().unwrap();
+    assert!(text.contains("SO(3) {s}←{b}"), "{text}");
+    assert!(text.contains("= `[0.866"), "R_sb's value: {text}");
+    assert_eq!(
+        h["range"],
+        json!({"start": {"line": 2, "character": 0}, "end": {"line": 2, "character": 4}})
+    );
     let h = c.at("textDocument/hover", 2, 9);
     let text = h["contents"]["value"].as_str().unwrap();
     assert!(text.contains("Rotz(θ)") || text.contains("Rotz("), "{text}");
@@ -302,6 +317,18 @@ fn a_frame_error_appears_and_disappears_as_the_line_is_edited() {
     );
     let l = labels(&c.at("textDocument/completion", 5, 0));
     assert!(l.contains(&"given".into()), "{l:?}");
+    c.edit(7, 5, 0, 11, "given q : S");
+    let l = labels(&c.at("textDocument/completion", 5, 11));
+    assert_eq!(
+        l,
+        ["SE2", "SE3", "SO2", "SO3", "scalar", "screw", "se3", "so3"]
+    );
+    c.edit(8, 5, 0, 11, ":");
+    let l = labels(&c.at("textDocument/completion", 5, 1));
+    assert!(
+        l.contains(&":help".into()) && l.contains(&":vars".into()),
+        "{l:?}"
+    );
 
     // Document symbols: every binding, with its type.
     let s = c.request(
@@ -345,10 +372,12 @@ fn a_script_that_would_run_for_minutes_and_write_files_is_only_checked() {
     // Checked without numbers: far below the seconds each grid takes to run.
     assert!(took < Duration::from_secs(20), "checking took {took:?}");
     let h = c.at("textDocument/hover", 0, 0);
-    assert!(
-        h["contents"]["value"].as_str().unwrap().contains("list"),
-        "{h}"
-    );
+    let text = h["contents"]["value"].as_str().unwrap();
+    assert!(text.contains("list"), "{text}");
+    // Its value would take seconds: the hover says it was not computed.
+    assert!(text.contains("value not computed"), "{text}");
+    let took = start.elapsed();
+    assert!(took < Duration::from_secs(20), "hover took {took:?}");
     // `save`'s help shows its example, save(draw(Rotz(pi/4)), "rotz.svg"),
     // evaluated without writing rotz.svg.
     let h = c.at("textDocument/hover", 8, 1);
@@ -360,6 +389,86 @@ fn a_script_that_would_run_for_minutes_and_write_files_is_only_checked() {
         .map(|e| e.unwrap().file_name())
         .collect();
     assert!(left.is_empty(), "the server wrote {left:?}");
+}
+
+#[test]
+fn syntax_and_domain_errors_and_warnings_under_the_command_line_flags() {
+    let dir = common::scratch("kinds");
+    // `--frames warn` before `lsp` applies: a frame mismatch is a warning.
+    let (mut c, _) = Client::start_with(&dir, &["--frames", "warn", "lsp"]);
+    c.open(
+        "dof(mech < links 4; joints 4S; planar >)\nx = (1, 2\ny = 1\ngiven T_ab, T_cb : SE3\nT_ab * T_cb\n",
+    );
+    let d = c.diagnostics(1);
+    let seen: Vec<(u64, &str, u64)> = d
+        .iter()
+        .map(|d| {
+            (
+                d["range"]["start"]["line"].as_u64().unwrap(),
+                d["code"].as_str().unwrap(),
+                d["severity"].as_u64().unwrap(),
+            )
+        })
+        .collect();
+    assert_eq!(
+        seen,
+        [(0, "domain", 1), (1, "syntax", 1), (4, "frame", 2)],
+        "{d:?}"
+    );
+    assert!(
+        d[0]["message"]
+            .as_str()
+            .unwrap()
+            .contains("spherical joint (S)"),
+        "{d:?}"
+    );
+    assert_eq!(d[1]["message"], "unclosed '(' opened here");
+    assert_eq!(c.stop(), 0);
+}
+
+#[test]
+fn changes_typed_quickly_are_checked_once() {
+    let dir = common::scratch("debounce");
+    let (mut c, _) = Client::start(&dir);
+    c.open("given T_ab, T_cb : SE3\nx = 1\n");
+    assert_eq!(c.diagnostics(1), Vec::<Value>::new());
+    // Three keystrokes in one write, well inside the debounce: `T_ab * T_cb`
+    // typed as three changes; one check, of the last version.
+    let mut burst = String::new();
+    for (v, (from, text)) in [(0, "T_ab"), (4, " * "), (7, "T_cb")]
+        .into_iter()
+        .enumerate()
+    {
+        let body = json!({
+            "jsonrpc": "2.0",
+            "method": "textDocument/didChange",
+            "params": {
+                "textDocument": {"uri": URI, "version": v + 2},
+                "contentChanges": [{
+                    "range": {"start": {"line": 2, "character": from}, "end": {"line": 2, "character": from}},
+                    "text": text,
+                }],
+            },
+        })
+        .to_string();
+        burst.push_str(&format!("Content-Length: {}\r\n\r\n{body}", body.len()));
+    }
+    c.stdin.write_all(burst.as_bytes()).unwrap();
+    c.stdin.flush().unwrap();
+    let d = c.diagnostics(4);
+    assert_eq!(d.len(), 1, "{d:?}");
+    assert_eq!(d[0]["code"], "frame");
+    assert_eq!(d[0]["range"]["start"], json!({"line": 2, "character": 5}));
+    let early: Vec<&Value> = c
+        .pending
+        .iter()
+        .filter(|v| v["method"] == "textDocument/publishDiagnostics")
+        .collect();
+    assert!(
+        early.is_empty(),
+        "versions 2 and 3 were checked too: {early:?}"
+    );
+    assert_eq!(c.stop(), 0);
 }
 
 #[test]

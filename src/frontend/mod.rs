@@ -5,7 +5,7 @@
 //! [`commands`] runs an input (statements or a `:` command), [`save`]
 //! runs statements recording what each wrote and keeps the history that
 //! `:save` writes, [`help`] answers `:help` from the builtin table,
-//! [`keywords`] and [`reference`] hold the words of the language and the
+//! [`keywords`] and [`reference`](mod@reference) hold the words of the language and the
 //! generated builtin reference, [`complete`] computes completions, hints
 //! and the live preview. Nothing here touches a terminal or a socket.
 

@@ -1,10 +1,11 @@
 //! One notebook session (LANGUAGE.md §13): the REPL's session and
 //! commands driven cell by cell, with nothing of the wire protocol. A cell
 //! is statements and `:` commands (`:exact`, `:latex`, `:digits N`, …, one
-//! per line, run by the shared command code, `crate::frontend`); each statement's value
-//! becomes a MIME bundle ([`super::rich`]), each error an error output
-//! with the terminal's caret diagnostic. A failing statement binds
-//! nothing and ends the cell; every earlier binding stays.
+//! per line, run by the command code every front end shares,
+//! [`crate::frontend`]); each statement's value becomes a MIME bundle
+//! ([`super::rich`]), each error an error output with the terminal's caret
+//! diagnostic. A failing statement binds nothing and ends the cell; every
+//! earlier binding stays.
 
 use serde_json::{Map, Value as J, json};
 

@@ -5,6 +5,8 @@
 //! what the editor needs from it: every diagnostic, and where each name
 //! was bound with its type and frames (§6).
 
+use std::cell::RefCell;
+use std::collections::HashMap;
 use std::time::Duration;
 
 use crate::budget::Budget;
@@ -22,6 +24,12 @@ use super::text::is_name_char;
 /// limit met in practice: a 2,000-line script checks in milliseconds).
 pub const CHECK_TIME: Duration = Duration::from_secs(2);
 
+/// The time hover may spend computing a binding's value: the document up to
+/// the binding run with numbers under the REPL preview's caps
+/// ([`Budget::preview`]), no effect performed. Past it the hover says the
+/// value was not computed.
+pub const VALUE_TIME: Duration = Duration::from_millis(250);
+
 /// What a definition binds.
 #[derive(Debug, Clone, PartialEq)]
 pub enum DefKind {
@@ -36,6 +44,7 @@ pub enum DefKind {
 /// A name bound by a statement that checked without error.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Def {
+    /// The name as written (`T_ab`, `θ1`).
     pub name: String,
     /// The name where the statement writes it.
     pub span: Span,
@@ -43,6 +52,7 @@ pub struct Def {
     pub statement: Span,
     /// Its kind and frames (§6) as the check inferred them.
     pub ty: Ty,
+    /// A binding, a given symbol or a function.
     pub kind: DefKind,
 }
 
@@ -56,6 +66,9 @@ pub struct Analysis {
     pub defs: Vec<Def>,
     /// The statements checked.
     pub statements: usize,
+    /// The value summaries computed so far for hover, by the start of the
+    /// binding's statement (this check's text only).
+    values: RefCell<HashMap<usize, Option<String>>>,
 }
 
 /// A statement's outcome as far as the editor keeps it.
@@ -143,6 +156,35 @@ impl Analysis {
         out
     }
 
+    /// What the editor shows when the check itself failed (a bug in
+    /// chasles, caught so that the server goes on): one error at the start
+    /// of the text saying so, and no definitions.
+    pub fn failed(text: &str) -> Analysis {
+        let end = text.find('\n').unwrap_or(text.len());
+        let d = Diagnostic::error(
+            crate::diagnostics::ErrorKind::Domain,
+            Span::new(0, end),
+            "chasles could not check this file (an internal error: please report it with the file)",
+        );
+        Analysis {
+            diagnostics: vec![d],
+            ..Analysis::default()
+        }
+    }
+
+    /// [`value_summary`] of `def` in `text` (the text this analysis
+    /// checked), computed once and then remembered.
+    pub fn value_of(&self, text: &str, def: &Def, settings: Settings) -> Option<String> {
+        if let Some(v) = self.values.borrow().get(&def.statement.start) {
+            return v.clone();
+        }
+        let v = value_summary(text, def, settings);
+        self.values
+            .borrow_mut()
+            .insert(def.statement.start, v.clone());
+        v
+    }
+
     /// The definition of `name` in force at byte `offset`: the last one
     /// whose statement starts at or before it (a use reads the binding
     /// made before it), else the first (a name used before it is bound).
@@ -168,6 +210,38 @@ fn given_names(stmt: &str) -> Vec<String> {
         .collect()
 }
 
+/// A one-line summary of the value `def` binds, computed by running `text`
+/// up to the end of its statement with numbers, under the preview's caps
+/// and [`VALUE_TIME`], performing no effect (no file is written, whatever
+/// the script saves); `None` when it was not computed within them or the
+/// binding has no value (a `given` symbol, a function).
+pub fn value_summary(text: &str, def: &Def, settings: Settings) -> Option<String> {
+    if def.kind != DefKind::Binding {
+        return None;
+    }
+    let end = crate::span::floor_boundary(text, def.statement.end);
+    let mut session = Session::new(settings);
+    session.gate = Gate::deny();
+    session.budget = Budget::preview().with_timeout(VALUE_TIME);
+    // The binding's own statement must have run (not an earlier binding of
+    // the same name, left when the budget stopped the run before it).
+    let mut reached = false;
+    session.evaluate(&text[..end], Mode::Run, true, |r| {
+        reached |= r.result.as_ref().is_ok_and(|o| o.span == def.statement);
+    });
+    if !reached {
+        return None;
+    }
+    let b = session.env.get(def.name.as_str())?;
+    let v = b.val.as_ref()?;
+    let shown = crate::output::text::inline(v, settings.text_style());
+    let mut short: String = shown.chars().take(200).collect();
+    if short.len() < shown.len() {
+        short.push('…');
+    }
+    Some(short)
+}
+
 /// The byte offset of `word` in `text` standing alone (not part of a longer
 /// name).
 fn find_word(text: &str, word: &str) -> Option<usize> {
@@ -186,6 +260,14 @@ fn find_word(text: &str, word: &str) -> Option<usize> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_failed_check_is_one_error_on_the_first_line() {
+        let a = Analysis::failed("x = 1\ny = 2\n");
+        assert_eq!(a.diagnostics.len(), 1);
+        assert_eq!(a.diagnostics[0].span, Span::new(0, 5));
+        assert!(a.defs.is_empty());
+    }
 
     #[test]
     fn bindings_givens_functions_and_errors() {
@@ -209,6 +291,32 @@ mod tests {
         assert_eq!(frame[0].kind.as_str(), "frame");
         let line4 = src.find("T_ab * T_ac").unwrap();
         assert!(frame[0].span.start >= line4 && frame[0].span.end <= line4 + 11);
+        // Values are computed for hover only, with numbers, on demand.
+        let twice = "x = 2\ny = x * 3\n";
+        let b = Analysis::of(twice, Settings::default());
+        assert_eq!(
+            value_summary(twice, &b.defs[1], Settings::default()).as_deref(),
+            Some("6")
+        );
+        assert_eq!(value_summary(src, &a.defs[0], Settings::default()), None);
+        // Remembered by the analysis: one computation per binding and check.
+        assert_eq!(
+            b.value_of(twice, &b.defs[1], Settings::default())
+                .as_deref(),
+            Some("6")
+        );
+        assert_eq!(
+            b.value_of(twice, &b.defs[1], Settings::default())
+                .as_deref(),
+            Some("6")
+        );
+        assert_eq!(b.values.borrow().len(), 1);
+        // Long frame names in braces (§2).
+        let braces = "T_{world,cam} = RpToTrans(Rotz(1), (1, 2, 3))\n";
+        let c = Analysis::of(braces, Settings::default());
+        assert_eq!(c.defs[0].name, "T_{world,cam}");
+        assert_eq!(c.defs[0].span, Span::new(0, 13));
+        assert_eq!(c.defs[0].ty.to_string(), "SE(3) {world}←{cam}");
         // Where a name is read: the binding before it.
         let use_at = src.rfind("T_ac").unwrap();
         assert_eq!(

@@ -25,6 +25,12 @@ const KEYWORDS: &[&str] = &[
     "false",
 ];
 
+/// The types `given` accepts (§7, `eval::interp::given_kind`), offered after
+/// `given NAME :`.
+const GIVEN_TYPES: &[&str] = &[
+    "scalar", "vec3", "vec6", "SO3", "SE3", "SO2", "SE2", "so3", "se3", "twist", "screw", "wrench",
+];
+
 /// A diagnostic as the protocol carries it: the primary span as the range,
 /// the kind (`frame`, `syntax`, …) as the code, each label and the help as
 /// related information pointing into the document.
@@ -84,8 +90,16 @@ fn frames_meaning(f: &Frames) -> Option<String> {
     })
 }
 
-/// The hover of a definition: its type and frames, where it was bound.
-fn def_hover(def: &Def, doc: &Document, enc: Encoding) -> String {
+/// The hover of a definition: its type and frames, its value (computed on
+/// demand within [`super::analysis::VALUE_TIME`], once per check), where it
+/// was bound.
+fn def_hover(
+    def: &Def,
+    analysis: &Analysis,
+    doc: &Document,
+    enc: Encoding,
+    settings: Settings,
+) -> String {
     let line = doc.position(def.statement.start, enc).line + 1;
     let stmt = doc.text[def.statement.start..def.statement.end.min(doc.text.len())].trim();
     let mut out = match &def.kind {
@@ -99,6 +113,14 @@ fn def_hover(def: &Def, doc: &Document, enc: Encoding) -> String {
     if let Some(m) = frames_meaning(&def.ty.frames) {
         out.push_str(&format!("\n\n{m}"));
     }
+    if def.kind == DefKind::Binding {
+        match analysis.value_of(&doc.text, def, settings) {
+            Some(v) => out.push_str(&format!("\n\n= `{v}`")),
+            None => out.push_str(
+                "\n\nvalue not computed within the editor's budget (`chasles run` computes it)",
+            ),
+        }
+    }
     let shown: String = stmt.chars().take(120).collect();
     out.push_str(&format!("\n\nbound on line {line}: `{shown}`"));
     out
@@ -107,13 +129,19 @@ fn def_hover(def: &Def, doc: &Document, enc: Encoding) -> String {
 /// The hover at byte `offset`: a binding's type, frames and definition; a
 /// builtin's `:help` text (signature, book section, meaning, example); a
 /// keyword's help.
-pub fn hover(doc: &Document, analysis: &Analysis, offset: usize, enc: Encoding) -> Option<Hover> {
+pub fn hover(
+    doc: &Document,
+    analysis: &Analysis,
+    offset: usize,
+    enc: Encoding,
+    settings: Settings,
+) -> Option<Hover> {
     let span = doc.word_at(offset)?;
     let word = &doc.text[span.start..span.end];
     let text = if let Some(def) = analysis.def_at(word, offset) {
-        def_hover(def, doc, enc)
+        def_hover(def, analysis, doc, enc, settings)
     } else if let Some(b) = builtins::lookup(word) {
-        format!("```\n{}\n```", help::function(b, &Settings::default()))
+        format!("```\n{}\n```", help::function(b, &settings))
     } else {
         keywords::keyword(word)?.to_string()
     };
@@ -194,8 +222,8 @@ fn outer(f: &Frames) -> Option<Frame> {
     }
 }
 
-/// Completions at byte `offset`: `:` commands at the start of a line;
-/// otherwise the bindings made before the cursor (after `T_ab *`, those
+/// Completions at byte `offset`: `:` commands at the start of a line; the
+/// types after `given NAME :`; otherwise the bindings made before the cursor (after `T_ab *`, those
 /// whose outer frame is {b} first), the builtins with their signatures,
 /// and keywords — each starting with the word typed (ignoring case).
 pub fn completion(doc: &Document, analysis: &Analysis, offset: usize) -> Vec<CompletionItem> {
@@ -225,6 +253,23 @@ pub fn completion(doc: &Document, analysis: &Analysis, offset: usize) -> Vec<Com
         .map_or(before.len(), |(i, _)| i);
     let typed = before[word_start..].to_lowercase();
     let fits = |name: &str| name.to_lowercase().starts_with(&typed);
+    let lead = before[..word_start].trim_end();
+    if lead.trim_start().starts_with("given") && lead.contains(':') {
+        return GIVEN_TYPES
+            .iter()
+            .filter(|t| fits(t))
+            .filter(|t| crate::eval::interp::given_kind(t).is_some())
+            .map(|t| CompletionItem {
+                label: (*t).into(),
+                kind: Some(CompletionItemKind::TYPE_PARAMETER),
+                ..Default::default()
+            })
+            .collect();
+    }
+    // A `:` of a range or a type, with nothing typed after it: no list.
+    if typed.is_empty() && lead.ends_with(':') {
+        return Vec::new();
+    }
     let want = wanted_frame(&before[..word_start], analysis, offset);
     let mut items = Vec::new();
     let mut seen = std::collections::HashSet::new();

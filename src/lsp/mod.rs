@@ -99,7 +99,7 @@ pub fn serve_on(conn: &Connection, settings: Settings) -> i32 {
         )),
         hover_provider: Some(lsp_types::HoverProviderCapability::Simple(true)),
         completion_provider: Some(CompletionOptions {
-            trigger_characters: Some(vec![":".into(), "*".into(), " ".into()]),
+            trigger_characters: Some(vec![":".into(), "*".into()]),
             ..Default::default()
         }),
         definition_provider: Some(OneOf::Left(true)),
@@ -165,7 +165,17 @@ impl Server<'_> {
                         self.send(Response::new_ok(req.id, ()).into());
                         continue;
                     }
-                    self.request(req);
+                    let (id, method) = (req.id.clone(), req.method.clone());
+                    let answered = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+                        self.request(req)
+                    }));
+                    if answered.is_err() {
+                        let msg =
+                            format!("chasles lsp failed on {method} (a bug: please report it)");
+                        self.send(
+                            Response::new_err(id, ErrorCode::InternalError as i32, msg).into(),
+                        );
+                    }
                 }
                 Message::Notification(n) if n.method == "exit" => {
                     return if shut_down { 0 } else { 1 };
@@ -209,7 +219,9 @@ impl Server<'_> {
         if open.analysis.is_some() {
             return;
         }
-        let analysis = Analysis::of(&open.doc.text, settings);
+        let text = &open.doc.text;
+        let analysis = std::panic::catch_unwind(|| Analysis::of(text, settings))
+            .unwrap_or_else(|_| Analysis::failed(text));
         open.due = None;
         let diagnostics = analysis
             .diagnostics
@@ -290,9 +302,12 @@ impl Server<'_> {
                 else {
                     return self.reply_err(req, ErrorCode::InvalidParams, "bad hover params");
                 };
+                let settings = self.settings;
                 let hover = self
                     .at(&p.text_document_position_params)
-                    .and_then(|(o, at)| features::hover(&o.doc, o.analysis.as_ref()?, at, enc));
+                    .and_then(|(o, at)| {
+                        features::hover(&o.doc, o.analysis.as_ref()?, at, enc, settings)
+                    });
                 serde_json::to_value(hover)
             }
             Completion::METHOD => {

@@ -12,15 +12,19 @@ use crate::span::Span;
 /// default) or bytes (`positionEncoding: "utf-8"`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Encoding {
+    /// UTF-16 code units, the protocol's default.
     #[default]
     Utf16,
+    /// Bytes, where the client offers `utf-8`.
     Utf8,
 }
 
 /// One open `.chs` document.
 #[derive(Debug, Clone, Default)]
 pub struct Document {
+    /// The text as the editor holds it.
     pub text: String,
+    /// The client's version of the text (diagnostics name it).
     pub version: i32,
     /// The byte offset where each line starts (line 0 at 0).
     starts: Vec<usize>,
@@ -117,25 +121,52 @@ impl Document {
         self.index();
     }
 
-    /// The name at byte `offset` (a binding, a builtin, a keyword): its span,
-    /// if the offset touches one.
+    /// The name at byte `offset` (a binding, a builtin, a keyword, with a
+    /// braced subscript as in `T_{world,cam}`, §2): its span, if the offset
+    /// touches one (its end included, where the cursor stands after typing).
     pub fn word_at(&self, offset: usize) -> Option<Span> {
         let offset = crate::span::floor_boundary(&self.text, offset);
-        let before = &self.text[..offset];
-        let start = before
-            .char_indices()
-            .rev()
-            .take_while(|(_, c)| is_name_char(*c))
-            .last()
-            .map_or(offset, |(i, _)| i);
-        let end = offset
-            + self.text[offset..]
-                .char_indices()
-                .find(|(_, c)| !is_name_char(*c))
-                .map_or(self.text.len() - offset, |(i, _)| i);
-        let word = &self.text[start..end];
-        (!word.is_empty() && !word.starts_with(|c: char| c.is_ascii_digit()))
-            .then(|| Span::new(start, end))
+        let line_start = self.text[..offset].rfind('\n').map_or(0, |i| i + 1);
+        let line_end = self.text[offset..]
+            .find('\n')
+            .map_or(self.text.len(), |i| offset + i);
+        let line = &self.text[line_start..line_end];
+        let mut chars = line.char_indices().peekable();
+        while let Some((i, c)) = chars.next() {
+            if !is_name_char(c) {
+                continue;
+            }
+            let mut end = i + c.len_utf8();
+            let mut last = c;
+            while let Some(&(j, d)) = chars.peek() {
+                if is_name_char(d) {
+                    end = j + d.len_utf8();
+                    last = d;
+                    chars.next();
+                } else if d == '{' && last == '_' {
+                    // A braced subscript: through its `}` and any primes.
+                    let Some(close) = line[j..].find('}') else {
+                        break;
+                    };
+                    end = j + close + 1;
+                    end += line[end..].chars().take_while(|p| *p == '\'').count();
+                    while chars.peek().is_some_and(|&(k, _)| k < end) {
+                        chars.next();
+                    }
+                    break;
+                } else {
+                    break;
+                }
+            }
+            let (s, e) = (line_start + i, line_start + end);
+            if s <= offset && offset <= e {
+                return (!c.is_ascii_digit()).then(|| Span::new(s, e));
+            }
+            if s > offset {
+                break;
+            }
+        }
+        None
     }
 }
 
@@ -180,6 +211,14 @@ mod tests {
         assert_eq!(d.line(1), "θ₁ = 2");
         d.apply(&change(0, 0, 2, 0, ""), Encoding::Utf16);
         assert_eq!((d.text.as_str(), d.lines()), ("", 1));
+        // A change without a range replaces the whole text.
+        let all = TextDocumentContentChangeEvent {
+            range: None,
+            range_length: None,
+            text: "a\nb".into(),
+        };
+        d.apply(&all, Encoding::Utf8);
+        assert_eq!((d.line(1), d.lines()), ("b", 2));
     }
 
     #[test]
@@ -191,5 +230,12 @@ mod tests {
         let w = d.word_at(at).unwrap();
         assert_eq!(&d.text[w.start..w.end], "exp");
         assert!(d.word_at(d.text.find('=').unwrap() + 1).is_none());
+        let d = Document::new("x = T_{world,cam}' * p_{cam}\n2.5".into(), 1);
+        let inside = d.text.find("cam").unwrap();
+        let w = d.word_at(inside).unwrap();
+        assert_eq!(&d.text[w.start..w.end], "T_{world,cam}'");
+        let w = d.word_at(d.text.len() - 6).unwrap();
+        assert_eq!(&d.text[w.start..w.end], "p_{cam}");
+        assert!(d.word_at(d.text.len() - 1).is_none(), "a number is no name");
     }
 }
