@@ -5,9 +5,10 @@
    benches/lie.rs, to compare with `cargo bench --bench lie`.
 2. Side by side in one run: issue 14's script of N statements (blocks of
    T_ab = exp([S] 0.1), T_bc = exp([S] 0.2), T_ac = T_ab * T_bc,
-   X = log(T_ac), V_a = Ad(T_ab) * (1, 2, 3, 4, 5, 6), every result printed)
-   in Python with modern_robotics, and the same script through the chasles
-   binary as a whole process; prints both times and the ratio.
+   X = log(T_ac), V_a = Ad(T_ab) * (1, 2, 3, 4, 5, 6), every result printed,
+   then the same with every statement silenced by `;`) in Python with
+   modern_robotics, and the same script through the chasles binary as a
+   whole process; prints both times and the ratio.
 
     pip install modern_robotics numpy
     cargo build --release
@@ -70,28 +71,36 @@ def script(n):
     return "S = (0, 0, 1, 0, 2, 0)\n" + "\n".join(body) + "\n"
 
 
-def python_script(n, out):
-    """The same n statements with the book's library, printing every result."""
+def silent_script(n):
+    """`script(n)` with every statement ended by `;`: the same work, nothing
+    printed (LANGUAGE.md §3)."""
+    return script(n).replace("\n", ";\n")
+
+
+def python_script(n, out, show=True):
+    """The same n statements with the book's library, printing every result
+    (with `show` false, computing the same and printing nothing)."""
     mr, np = book()
     np.set_printoptions(precision=4, suppress=True)
     S = np.array([0.0, 0.0, 1.0, 0.0, 2.0, 0.0])
-    print("S =", S, file=out)
+    say = (lambda *a: print(*a, file=out)) if show else (lambda *a: None)
+    say("S =", S)
     T_ab = T_bc = T_ac = None
     for i in range(n - 1):
         k = i % len(LINES)
         if k == 0:
             T_ab = mr.MatrixExp6(mr.VecTose3(S * 0.1))
-            print("T_ab =", T_ab, file=out)
+            say("T_ab =", T_ab)
         elif k == 1:
             T_bc = mr.MatrixExp6(mr.VecTose3(S * 0.2))
-            print("T_bc =", T_bc, file=out)
+            say("T_bc =", T_bc)
         elif k == 2:
             T_ac = T_ab @ T_bc
-            print("T_ac =", T_ac, file=out)
+            say("T_ac =", T_ac)
         elif k == 3:
-            print("X =", mr.MatrixLog6(T_ac), file=out)
+            say("X =", mr.MatrixLog6(T_ac))
         else:
-            print("V_a =", mr.Adjoint(T_ab) @ np.array([1, 2, 3, 4, 5, 6.0]), file=out)
+            say("V_a =", mr.Adjoint(T_ab) @ np.array([1, 2, 3, 4, 5, 6.0]))
 
 
 def main():
@@ -99,24 +108,29 @@ def main():
     here = os.path.dirname(os.path.abspath(__file__))
     binary = sys.argv[2] if len(sys.argv) > 2 else os.path.join(here, "..", "target", "release", "chasles")
     with tempfile.TemporaryDirectory() as d:
-        path = os.path.join(d, "screw.chs")
-        with open(path, "w") as f:
-            f.write(script(n))
-        t0 = time.perf_counter()
-        python_script(n, io.StringIO())
-        py = time.perf_counter() - t0
-        runs = []
-        for _ in range(3):
+        for label, text, show in [
+            ("every result printed", script(n), True),
+            ("silenced by `;` (nothing printed)", silent_script(n), False),
+        ]:
+            path = os.path.join(d, "screw.chs")
+            with open(path, "w") as f:
+                f.write(text)
             t0 = time.perf_counter()
-            subprocess.run([binary, "run", path], stdout=subprocess.DEVNULL, check=True)
-            runs.append(time.perf_counter() - t0)
-        ch = min(runs)
-    print(f"script of {n} statements, every result printed:")
-    print(f"  book's Python library  {py:8.3f} s")
-    print(f"  chasles (whole process) {ch:7.3f} s")
-    print(f"  ratio                  {py / ch:8.1f}x")
+            python_script(n, io.StringIO(), show)
+            py = time.perf_counter() - t0
+            runs = []
+            for _ in range(5):
+                t0 = time.perf_counter()
+                subprocess.run([binary, "run", path], stdout=subprocess.DEVNULL, check=True)
+                runs.append(time.perf_counter() - t0)
+            ch = min(runs)
+            print(f"script of {n} statements, {label}:")
+            print(f"  book's Python library  {py:8.3f} s")
+            print(f"  chasles (whole process) {ch:7.3f} s  (best of 5; all: {' '.join(f'{r:.3f}' for r in runs)})")
+            print(f"  ratio                  {py / ch:8.1f}x")
 
 
 if __name__ == "__main__":
-    single_operations()
+    if os.environ.get("SCRIPT_ONLY") is None:
+        single_operations()
     main()

@@ -2,7 +2,11 @@
 # Instructions per statement of issue 14's script (callgrind counts
 # instructions, not seconds, so the figure is repeatable on a shared
 # machine). Runs the release binary on 1k and 11k statements and prints
-# (I(11k) - I(1k)) / 10k for `run` (every result printed) and `check`.
+# (I(11k) - I(1k)) / 10k for `run` (every result printed), `run` of the
+# same script with every statement ended by `;` (silenced: nothing
+# printed) and `check`; then, from the 11k `run`, the part of each
+# statement spent in parsing (the statement reader), in the interpreter
+# (check and evaluation) and in printing.
 #
 #   benches/instructions.sh [path/to/chasles]
 #
@@ -16,17 +20,29 @@ trap 'rm -rf "$tmp"' EXIT
 python3 - "$tmp" <<'PY'
 import sys
 sys.path.insert(0, "benches")
-from book_python import script
+from book_python import script, silent_script
 for n in (1000, 11000):
     open(f"{sys.argv[1]}/s{n}.chs", "w").write(script(n))
+    open(f"{sys.argv[1]}/q{n}.chs", "w").write(silent_script(n))
 PY
 count() {
-  valgrind --tool=callgrind --callgrind-out-file="$tmp/cg" "$bin" "$1" "$2" \
+  valgrind --tool=callgrind --callgrind-out-file="$tmp/cg-$1-$3" "$bin" "$1" "$2" \
     >/dev/null 2>"$tmp/err"
   grep -o 'refs: *[0-9,]*' "$tmp/err" | tr -dc 0-9
 }
-for mode in run check; do
-  a=$(count "$mode" "$tmp/s1000.chs")
-  b=$(count "$mode" "$tmp/s11000.chs")
-  echo "$mode: $(( (b - a) / 10000 )) instructions per statement"
+for mode in run:s run:q check:s; do
+  m=${mode%:*} f=${mode#*:}
+  a=$(count "$m" "$tmp/${f}1000.chs" "${f}1000")
+  b=$(count "$m" "$tmp/${f}11000.chs" "${f}11000")
+  label=$m; [ "$f" = q ] && label="run (silenced by ;)"
+  echo "$label: $(( (b - a) / 10000 )) instructions per statement"
 done
+# Where a printed statement's instructions go (inclusive costs of the
+# 11k run, divided by 11k: start-up is in none of them).
+callgrind_annotate --inclusive=yes "$tmp/cg-run-s11000" 2>/dev/null |
+  awk '
+    function n(s) { gsub(",", "", s); return s / 11000 }
+    !p && index($0, ":chasles::syntax::statements_read::{{closure}} [") { p = n($1) }
+    !e && index($0, ":chasles::eval::interp::Interp::stmt [") { e = n($1) }
+    !o && index($0, ":chasles::output::text::show_outcome [") { o = n($1) }
+    END { printf "per printed statement: parse %d, check and evaluate %d, print %d\n", p, e, o }'

@@ -1,6 +1,7 @@
 //! Speed of the whole pipeline (parse → check → evaluate → print) on long
 //! scripts, to show that time grows linearly with length (issue 3 §8):
 //! `script/run_and_print` and `script/check` run issue 14's script,
+//! `script/run_silenced` the same with every statement ended by `;`,
 //! `script/book_run_and_print` issue 3's. `draw/svg` lays out and renders
 //! a picture of 1k, 10k and 20k frames, to show that drawing is linear in
 //! the number of frames (issue 23).
@@ -19,6 +20,13 @@ fn pipeline(c: &mut Criterion) {
         let src = common::screw_script(n);
         group.throughput(Throughput::Elements(n as u64));
         group.bench_with_input(BenchmarkId::new("run_and_print", n), &src, |b, src| {
+            b.iter(|| {
+                let mut session = Session::new(Settings::default());
+                session.run_to_strings("bench.chs", src, Mode::Run, false)
+            })
+        });
+        let silent = common::silent_screw_script(n);
+        group.bench_with_input(BenchmarkId::new("run_silenced", n), &silent, |b, src| {
             b.iter(|| {
                 let mut session = Session::new(Settings::default());
                 session.run_to_strings("bench.chs", src, Mode::Run, false)

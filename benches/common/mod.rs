@@ -21,6 +21,13 @@ pub fn screw_script(n: usize) -> String {
     s
 }
 
+/// [`screw_script`] with every statement ended by `;`: the same work,
+/// nothing printed (LANGUAGE.md §3).
+#[allow(dead_code)]
+pub fn silent_screw_script(n: usize) -> String {
+    screw_script(n).replace('\n', ";\n")
+}
+
 /// A script of `n` statements in the book's style (issue 3).
 #[allow(dead_code)]
 pub fn book_script(n: usize) -> String {
