@@ -31,6 +31,7 @@ mod replay;
 mod resolve;
 mod shapes;
 mod slice;
+mod slips;
 mod substitute;
 mod symbols;
 mod transcendental;
