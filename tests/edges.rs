@@ -263,3 +263,39 @@ fn contact_words_suggest_rolling_or_sliding() {
         [0.0]
     );
 }
+
+#[test]
+fn identity_takes_the_size_a_call_fixes() {
+    // frame(I, p) is Trans(p); Ad(I) the 6×6 identity; RotInv(I) = I
+    assert_eq!(numbers("frame(I, (1, 2, 3))"), numbers("Trans((1, 2, 3))"));
+    let ad = numbers("Ad(I)");
+    assert_eq!(ad.len(), 36);
+    assert!((0..36).all(|k| ad[k] == if k % 7 == 0 { 1.0 } else { 0.0 }));
+    assert_eq!(numbers("RotInv(I)").len(), 9);
+    // a call that leaves the size open still asks for it
+    let (code, _, err) = run(&["-e", "inv(I)"]);
+    assert_eq!(code, 1);
+    assert!(err.contains("`I` has no size here"), "{err}");
+}
+
+#[test]
+fn axis_angle_of_the_books_bracket_form() {
+    // AxisAng3([ω̂]θ) reads the so(3) matrix as its vector ω̂θ (§3.2.3.3)
+    assert!(close(
+        &numbers("R = Rotz(1)\nAxisAng3(log(R))"),
+        &[0.0, 0.0, 1.0, 1.0],
+        1e-15
+    ));
+    assert_eq!(
+        numbers("AxisAng3(log(Rot((1, 2, 2)/3, 0.5)))"),
+        numbers("AxisAng3(MatrixLog3(Rot((1, 2, 2)/3, 0.5)))")
+    );
+    // and AxisAng6([S]θ) as AxisAng6 of the vector Sθ
+    assert_eq!(
+        numbers("AxisAng6(log(RpToTrans(Rotz(1), (1, 2, 3))))"),
+        numbers("AxisAng6(MatrixLog6(RpToTrans(Rotz(1), (1, 2, 3))))")
+    );
+    // a matrix that is not skew-symmetric is still refused
+    let (code, _, _) = run(&["-e", "AxisAng3([1, 0, 0; 0, 1, 0; 0, 0, 1])"]);
+    assert_eq!(code, 1);
+}

@@ -467,6 +467,10 @@ impl Interp<'_> {
                 // diff(x, t): the variable may be a name with no value (time).
                 _ => match self.time_variable(b.name, i, a) {
                     Some(t) => t,
+                    // (`frame(I, p)`: the call fixes the size of `I`)
+                    None if matches!(&a.kind, ExprKind::Var(n) if *n == *super::env::IDENTITY) => {
+                        self.sized_identity(super::slips::identity_size(b, i), a)?
+                    }
                     None => self.expr(a)?,
                 },
             };

@@ -102,3 +102,21 @@ pub(super) fn shadowed(name: &str, signature: &str, span: crate::span::Span) -> 
         "choose another name to keep the builtin; `:help {name}` still describes it"
     ))
 }
+
+/// The size of `I` written as argument `i` of the builtin `b` where the
+/// call fixes it (`frame(I, p)`, `RotInv(I)`: 3; `Ad(I)`, `TransInv(I)`:
+/// 4), as `I + W` takes the size of W (LANGUAGE.md §4). None where the call
+/// leaves it open (`inv(I)`, `det(I)`).
+pub(super) fn identity_size(b: &crate::builtins::Builtin, i: usize) -> Option<usize> {
+    use crate::builtins::{Param, Typing};
+    match (&b.typing, b.name, i) {
+        (_, "RpToTrans", 0) => Some(3),
+        (_, "TransToRp", 0) => Some(4),
+        (Typing::Fixed { params, .. }, _, _) => match params.get(i)? {
+            Param::Rot => Some(3),
+            Param::Trans => Some(4),
+            _ => None,
+        },
+        _ => None,
+    }
+}
