@@ -196,6 +196,9 @@ impl Session {
                         .push(Diagnostic::warning(ErrorKind::Domain, o.span, m));
                 }
                 Ok(Done::Written(shown)) => {
+                    if let Some(n) = renamed(e, &shown, o.span) {
+                        report.warnings.push(n);
+                    }
                     if let (Effect::Picture { .. }, Some(Value::Picture(p))) =
                         (e, o.val.as_deref_mut())
                     {
@@ -430,6 +433,29 @@ fn not_finite_warning(o: &crate::eval::interp::Outcome) -> Option<Diagnostic> {
         return None;
     };
     Some(Diagnostic::warning(ErrorKind::Domain, o.span, message))
+}
+
+/// The note when a printed picture took another name than it asked for
+/// (the name was a file of the user's, kept: `crate::effects`).
+fn renamed(e: &Effect, shown: &str, span: crate::span::Span) -> Option<Diagnostic> {
+    let Effect::Picture {
+        to: PictureTo::Printed(asked),
+        ..
+    } = e
+    else {
+        return None;
+    };
+    let name = |p: &str| std::path::Path::new(p).file_name().map(|n| n.to_owned());
+    if name(shown) == name(asked) {
+        return None;
+    }
+    Some(Diagnostic::note(
+        ErrorKind::Domain,
+        span,
+        format!(
+            "'{asked}' exists and is not a picture chasles printed: it is kept, and this picture is '{shown}'"
+        ),
+    ))
 }
 
 /// A binding name as a file name: letters, digits, `_` and `-` kept,

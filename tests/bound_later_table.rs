@@ -71,6 +71,32 @@ fn settings() -> [Settings; 3] {
     ]
 }
 
+/// JSON lines without their `warnings` key: a statement's notes are
+/// compared as [`Said::notes`], where bound later may say them at the read
+/// rather than at the call (text output, whose stderr they are, is
+/// compared the same way; issue 36 put them into JSON). Cut as text, the
+/// key being the last: parsing and printing again could move a float by an
+/// ulp.
+fn without_warnings(out: String) -> String {
+    if !out.contains("\"warnings\"") {
+        return out;
+    }
+    out.lines()
+        .filter_map(|l| match l.find(",\"warnings\":") {
+            // (a statement that printed only its warnings)
+            Some(_)
+                if l.starts_with("{\"line\":")
+                    && !l.contains("\"name\"")
+                    && !l.contains("\"error\"") =>
+            {
+                None
+            }
+            Some(at) => Some(format!("{}}}\n", &l[..at])),
+            None => Some(format!("{l}\n")),
+        })
+        .collect()
+}
+
 /// Runs `steps` one statement at a time in one session: what each said.
 fn run(set: &Settings, steps: &[String]) -> Vec<Said> {
     let mut s = Session::new(*set);
@@ -78,7 +104,7 @@ fn run(set: &Settings, steps: &[String]) -> Vec<Said> {
     for st in steps {
         let (out, err, n) = s.run_to_strings("t.chs", st, Mode::Run, false);
         said.push(Said {
-            out: without_warnings(&out),
+            out: without_warnings(out),
             notes: diagnostics(&err),
             failed: n > 0,
         });
@@ -87,22 +113,6 @@ fn run(set: &Settings, steps: &[String]) -> Vec<Said> {
         }
     }
     said
-}
-
-/// JSON lines without their `warnings` (LANGUAGE.md §1): the notes are
-/// compared on their own (`Said::notes`), where each way of writing the
-/// statement says them; text lines as they are.
-fn without_warnings(out: &str) -> String {
-    out.lines()
-        .map(|l| match serde_json::from_str::<serde_json::Value>(l) {
-            Ok(serde_json::Value::Object(mut o)) => {
-                o.remove("warnings");
-                serde_json::Value::Object(o).to_string()
-            }
-            _ => l.to_string(),
-        })
-        .map(|l| l + "\n")
-        .collect()
 }
 
 /// A statement made of `expr` with `a` in it, and the names it binds

@@ -138,4 +138,23 @@ fn every_example_is_listed() {
             "examples/README.md lists {name}, which is not in examples/"
         );
     }
+/// Every difference from the book's Python library (issue 36) is a row of
+/// the README's table and is said by `:help` of its function.
+#[test]
+fn differences_from_the_python_library_are_in_the_readme_and_help() {
+    use chasles::builtins::python::DIFFERENCES;
+    let readme = std::fs::read_to_string(root().join("README.md")).unwrap();
+    assert!(DIFFERENCES.len() >= 8);
+    for d in DIFFERENCES {
+        let row = format!("| `{}` | {} |", d.name, d.text);
+        assert!(readme.contains(&row), "README lacks the row {row}");
+        let help = chasles::repl::help::help(d.name, &Default::default()).unwrap();
+        assert!(
+            help.contains(&format!("unlike the book's Python library: {}", d.text)),
+            "{help}"
+        );
+    }
+    // the book's own note (§3.6): MatrixLog3 returns exponential coordinates
+    let help = chasles::repl::help::help("MatrixLog3", &Default::default()).unwrap();
+    assert!(help.contains("Python returns the so(3) matrix"), "{help}");
 }

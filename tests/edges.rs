@@ -97,3 +97,205 @@ fn screw_parameters_of_a_huge_twist() {
         "{r:?}"
     );
 }
+
+/// The text of `src` run: (stdout, stderr).
+fn texts(src: &str) -> (String, String) {
+    let (_, out, err) = run(&["-e", src]);
+    (out, err)
+}
+
+#[test]
+fn a_whole_number_of_radians_beyond_a_turn_gets_a_note() {
+    let (out, err) = texts("Rotz(30)");
+    assert!(
+        err.contains("note: 30 rad = 1718.9°; did you mean `30 deg`?"),
+        "{err}"
+    );
+    // the value is still 30 radians: cos 30 = 0.1543
+    assert!(out.starts_with("[ 0.1543, 0.988,  0"), "{out}");
+    // in JSON too, on the statement's object
+    let (_, out, _) = run(&["--json", "-e", "Rot((0, 0, 1), -45)"]);
+    let j = &json_lines(&out)[0];
+    assert_eq!(
+        j["warnings"][0]["message"],
+        "-45 rad = -2578.3°; did you mean `-45 deg`?"
+    );
+    // said explicitly, within a turn, or in degrees: no note
+    for src in [
+        "Rotz(30 rad)",
+        "Rotz(6)",
+        "Rotz(30 deg)",
+        "Rotx(pi)",
+        "Rotz(2.5)",
+    ] {
+        let (_, err) = texts(src);
+        assert!(err.is_empty(), "{src}: {err}");
+    }
+}
+
+#[test]
+fn a_misspelled_degree_unit_suggests_deg() {
+    for src in ["Rotz(30 dgr)", "Rotz(30 degree)", "Rotz(30 degrees)"] {
+        let (_, err) = texts(src);
+        assert!(err.contains("30 deg or 30°"), "{src}: {err}");
+    }
+}
+
+#[test]
+fn a_printed_picture_never_replaces_a_users_file() {
+    let dir = common::scratch("edges-pictures");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("draw-2.svg"), "mine").unwrap();
+    let src = "T_ab = Trans((1, 0, 0))\ndraw(T_ab)\n";
+    let (code, out, err) = common::run_in(&["-e", src], &dir);
+    assert_eq!(code, 0, "{err}");
+    // the user's file is kept, the picture takes the next free name, and
+    // the statement says so (in text and in JSON)
+    assert_eq!(
+        std::fs::read_to_string(dir.join("draw-2.svg")).unwrap(),
+        "mine"
+    );
+    let svg = std::fs::read_to_string(dir.join("draw-2_2.svg")).unwrap();
+    assert!(svg.starts_with("<svg"), "{svg}");
+    assert!(out.contains("→ draw-2_2.svg"), "{out}");
+    assert!(
+        err.contains("note: 'draw-2.svg' exists and is not a picture chasles printed: it is kept, and this picture is 'draw-2_2.svg'"),
+        "{err}"
+    );
+    // a rerun replaces its own picture, not the user's, and adds no file
+    let (_, out, _) = common::run_in(&["--json", "-e", src], &dir);
+    let j = &json_lines(&out)[1];
+    assert_eq!(j["value"]["file"], "draw-2_2.svg", "{j}");
+    assert!(
+        j["warnings"][0]["message"]
+            .as_str()
+            .unwrap()
+            .contains("'draw-2.svg' exists"),
+        "{j}"
+    );
+    let mut names: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    assert_eq!(names, ["draw-2.svg", "draw-2_2.svg"]);
+    // a picture chasles printed there before is replaced, with no note
+    std::fs::remove_file(dir.join("draw-2.svg")).unwrap();
+    for _ in 0..2 {
+        let (_, out, err) = common::run_in(&["-e", src], &dir);
+        assert!(out.contains("→ draw-2.svg"), "{out}");
+        assert!(err.is_empty(), "{err}");
+    }
+    assert!(!dir.join("draw-2_3.svg").exists());
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn the_books_point_v_of_figure_3_13() {
+    // §3.3.1.2, Fig. 3.13: v_b = (0, 0, 1.5), v_a = T_ab v_b with v a point
+    let src = "T_ab = [1, 0, 0, 1; 0, 1, 0, 2; 0, 0, 1, 0; 0, 0, 0, 1]\nv_b = (0, 0, 1.5)\nv_a = T_ab v_b\n";
+    assert_eq!(numbers(src), [1.0, 2.0, 1.5]);
+    // a value that is a linear velocity (a twist's v) is still refused
+    let (code, _, err) = run(&[
+        "-e",
+        "T_ab = Trans((1, 2, 0))\nV_b = (0, 0, 1, 1, 0, 0)\nv_b = V_b.v\nT_ab * v_b\n",
+    ]);
+    assert_eq!(code, 1);
+    assert!(
+        err.contains("v_b is a linear velocity, not a point"),
+        "{err}"
+    );
+    // and a rotation still acts on a literal v as on any vector
+    assert!(close(
+        &numbers("R_ab = Rotz(pi/2)\nv_b = (1, 0, 0)\nR_ab v_b"),
+        &[0.0, 1.0, 0.0],
+        1e-15
+    ));
+}
+
+#[test]
+fn a_user_function_may_shadow_a_builtin_with_a_note() {
+    let (code, out, err) = run(&["-e", "trans(n) = n + 1\ntrans(2)\nrot(n) = 2 n\nrot(3)\n"]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(out, "3\n6\n");
+    assert!(
+        err.contains("note: trans is now your function: it hides the builtin Trans"),
+        "{err}"
+    );
+    // the builtin under its other names is untouched
+    assert_eq!(
+        numbers("trans(n) = n\nTrans((1, 2, 3))")[3],
+        1.0,
+        "Trans keeps its meaning"
+    );
+}
+
+#[test]
+fn contact_words_suggest_rolling_or_sliding() {
+    for (src, want) in [
+        (
+            "mech < links 8; joints 6 contact, 4R; planar >",
+            "say which point contact, `rolling` or `sliding`",
+        ),
+        (
+            "mech < links 3; joints 2R 1 point; planar >",
+            "say which point contact",
+        ),
+        (
+            "mech < links 3; joints 2R 1 roll; planar >",
+            "did you mean `rolling`?",
+        ),
+        (
+            "mech < links 3; joints 2R 1 slide; spatial >",
+            "did you mean `sliding`?",
+        ),
+    ] {
+        let (code, _, err) = run(&["-e", src]);
+        assert_eq!(code, 1, "{src}");
+        assert!(err.contains(want), "{src}: {err}");
+        assert!(!err.contains("cylindrical"), "{src}: {err}");
+    }
+    // the words themselves work: 2R and a rolling contact in the plane,
+    // 3(3 − 1 − 3) + 2 + 1 = 0
+    assert_eq!(
+        numbers("dof(mech < links 3; joints 2R 1 rolling; planar >)"),
+        [0.0]
+    );
+}
+
+#[test]
+fn identity_takes_the_size_a_call_fixes() {
+    // frame(I, p) is Trans(p); Ad(I) the 6×6 identity; RotInv(I) = I
+    assert_eq!(numbers("frame(I, (1, 2, 3))"), numbers("Trans((1, 2, 3))"));
+    let ad = numbers("Ad(I)");
+    assert_eq!(ad.len(), 36);
+    assert!((0..36).all(|k| ad[k] == if k % 7 == 0 { 1.0 } else { 0.0 }));
+    assert_eq!(numbers("RotInv(I)").len(), 9);
+    // a call that leaves the size open still asks for it
+    let (code, _, err) = run(&["-e", "inv(I)"]);
+    assert_eq!(code, 1);
+    assert!(err.contains("`I` has no size here"), "{err}");
+}
+
+#[test]
+fn axis_angle_of_the_books_bracket_form() {
+    // AxisAng3([ω̂]θ) reads the so(3) matrix as its vector ω̂θ (§3.2.3.3)
+    assert!(close(
+        &numbers("R = Rotz(1)\nAxisAng3(log(R))"),
+        &[0.0, 0.0, 1.0, 1.0],
+        1e-15
+    ));
+    assert_eq!(
+        numbers("AxisAng3(log(Rot((1, 2, 2)/3, 0.5)))"),
+        numbers("AxisAng3(MatrixLog3(Rot((1, 2, 2)/3, 0.5)))")
+    );
+    // and AxisAng6([S]θ) as AxisAng6 of the vector Sθ
+    assert_eq!(
+        numbers("AxisAng6(log(RpToTrans(Rotz(1), (1, 2, 3))))"),
+        numbers("AxisAng6(MatrixLog6(RpToTrans(Rotz(1), (1, 2, 3))))")
+    );
+    // a matrix that is not skew-symmetric is still refused
+    let (code, _, _) = run(&["-e", "AxisAng3([1, 0, 0; 0, 1, 0; 0, 0, 1])"]);
+    assert_eq!(code, 1);
+}

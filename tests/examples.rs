@@ -24,6 +24,11 @@ fn rel(path: &Path) -> String {
 
 #[test]
 fn example_scripts() {
+    // A fresh folder: a printed picture replaces only a picture chasles
+    // printed (an older build's, unmarked, would be kept and renamed).
+    let _ = std::fs::remove_dir_all(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("target/example-pictures"),
+    );
     insta::glob!("../examples", "*.chs", |path| {
         // Pictures printed but not saved go under target/, never into the tree.
         let out = run(&["run", "--draw-dir", "target/example-pictures", &rel(path)]);

@@ -144,7 +144,8 @@ fn every_examples_notes_are_in_its_json_and_nothing_else() {
         .collect();
     scripts.sort();
     assert!(scripts.len() > 20, "{scripts:?}");
-    let draw = root.join("target/example-pictures");
+    // (a folder of its own: tests/examples.rs clears its folder first)
+    let draw = common::scratch("json-warnings-pictures");
     let draw = draw.to_str().unwrap();
     let mut seen = 0;
     for path in &scripts {

@@ -10,6 +10,7 @@ mod conditioning;
 mod decisions;
 pub mod notes;
 pub mod parts;
+pub mod python;
 mod table_calculus;
 mod table_draw;
 mod table_habits;

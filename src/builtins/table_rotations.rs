@@ -122,18 +122,18 @@ pub(super) fn builtins() -> Vec<Builtin> {
         Builtin {
             name: "AxisAng3",
             aliases: &["axis_ang3"],
-            signature: "AxisAng3(expc3: 3-vector) -> (omghat: 3-vector, theta: scalar)",
+            signature: "AxisAng3(expc3: 3-vector or so3) -> (omghat: 3-vector, theta: scalar)",
             section: "§3.2.3.2",
-            doc: "unit axis ω̂ and angle θ of exponential coordinates ω̂θ",
+            doc: "unit axis ω̂ and angle θ of exponential coordinates ω̂θ (or of [ω̂]θ: AxisAng3(log(R)))",
             example: "(w, theta) = AxisAng3((1, 2, 3))",
             area: Rotations,
             typing: Typing::Fixed {
-                params: &[Vec(3)],
+                params: &[Expc3],
                 ret: rot_of_axis_tuple,
                 frames: FrameRule::Same(0),
             },
             eval: |a| {
-                let (w, t) = so3::axis_angle(&a.vec3(0)?);
+                let (w, t) = so3::axis_angle(&a.expc3(0)?);
                 Ok(Value::Tuple(vec![v3val(&w), Value::scalar(t)]))
             },
         },

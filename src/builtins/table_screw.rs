@@ -346,18 +346,18 @@ pub(super) fn builtins() -> Vec<Builtin> {
         Builtin {
             name: "AxisAng6",
             aliases: &["axis_ang6"],
-            signature: "AxisAng6(expc6: 6-vector) -> (S: screw, theta: scalar)",
+            signature: "AxisAng6(expc6: 6-vector or se3) -> (S: screw, theta: scalar)",
             section: "§3.3.3.1",
-            doc: "screw axis S and distance θ of exponential coordinates Sθ",
+            doc: "screw axis S and distance θ of exponential coordinates Sθ (or of [S]θ: AxisAng6(log(T)))",
             example: "(S, theta) = AxisAng6((1, 0, 0, 1, 2, 3))",
             area: Twists,
             typing: Typing::Fixed {
-                params: &[Vec(6)],
+                params: &[Expc6],
                 ret: || Kind::tuple(vec![Kind::Screw, Kind::Scalar]),
                 frames: FrameRule::Same(0),
             },
             eval: |a| {
-                let (s, t) = se3::axis_angle(&a.vec6(0)?);
+                let (s, t) = se3::axis_angle(&a.expc6(0)?);
                 Ok(Value::Tuple(vec![
                     Value::num(Kind::Screw, &s),
                     Value::scalar(t),

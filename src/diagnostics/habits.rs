@@ -66,6 +66,10 @@ pub fn name(name: &str) -> Option<String> {
         "format" => format_help(),
         "rad" | "radians" => "angles are in radians already: pi/6 rad = pi/6".into(),
         "degrees" => "degrees are a unit after the number: 30 deg or 30°".into(),
+        // (`Rotz(30 dgr)`: the unit misspelled)
+        "dgr" | "dg" | "dge" | "dgs" | "degs" | "degree" | "degr" | "grad" | "grd" => {
+            "did you mean `deg`? degrees are a unit after the number: 30 deg or 30°".into()
+        }
         _ => return None,
     })
 }

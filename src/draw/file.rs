@@ -68,3 +68,21 @@ pub fn bytes(p: &Picture, name: &str) -> Result<Vec<u8>, String> {
         Format::Png => png(&svg)?,
     })
 }
+
+/// The comment an SVG file chasles writes carries after its `<svg …>` tag:
+/// how the effects gate knows a printed picture of an earlier run (which
+/// a rerun replaces) from a file of the user's (which it never replaces).
+pub const MARK: &str = "<!-- drawn by chasles -->";
+
+/// The SVG text with [`MARK`] after its opening tag.
+pub(super) fn marked(mut svg: String) -> String {
+    if let Some(end) = svg.find('>') {
+        svg.insert_str(end + 1, &format!("\n{MARK}"));
+    }
+    svg
+}
+
+/// Whether `head` (the start of a file) is an SVG chasles wrote.
+pub fn is_marked(head: &[u8]) -> bool {
+    head.windows(MARK.len()).any(|w| w == MARK.as_bytes())
+}

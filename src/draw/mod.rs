@@ -33,7 +33,8 @@ pub fn scenes(p: &Picture) -> Result<(Vec<marks::Scene>, String), String> {
 /// The SVG text of a picture and the pixels where axis colours must show.
 pub fn svg(p: &Picture) -> Result<(String, Vec<Probe>), String> {
     let (scenes, _) = scenes(p)?;
-    render::svg(&scenes)
+    let (svg, probes) = render::svg(&scenes)?;
+    Ok((file::marked(svg), probes))
 }
 
 /// The picture with its summary filled in (checks that it can be drawn).

@@ -210,6 +210,16 @@ impl Gate {
             }
             Policy::Within(root) => root.resolve(folder, &name).map_err(WriteError::Refused)?,
         };
+        // A printed picture replaces only a picture chasles printed there
+        // before (a rerun); a file of the user's is kept and the picture
+        // takes the next free name, `draw-3_2.svg` (issue 36).
+        let (real, shown, overwrite) = match effect {
+            Effect::Picture {
+                to: PictureTo::Printed(_),
+                ..
+            } if foreign(&real) => self.free_name(folder, &name)?,
+            _ => (real, shown, overwrite),
+        };
         let bytes = match effect {
             Effect::Picture { picture, .. } => {
                 crate::draw::file::bytes(picture, &name.to_string_lossy())
@@ -239,6 +249,58 @@ pub enum Done {
     InMemory,
     /// Skipped under `--no-write`: the warning, naming the file.
     Skipped(String),
+}
+
+impl Gate {
+    /// The first of `STEM_2.EXT`, `STEM_3.EXT`, … in `folder` that names no
+    /// file or a picture chasles printed (a rerun's), where it lies under
+    /// this gate's policy: (real path, shown path, whether it replaces).
+    fn free_name(&self, folder: &Path, name: &Path) -> Result<(PathBuf, String, bool), WriteError> {
+        let stem = name.file_stem().unwrap_or_default().to_string_lossy();
+        let ext = name
+            .extension()
+            .map(|e| format!(".{}", e.to_string_lossy()))
+            .unwrap_or_default();
+        for k in 2..1000 {
+            let other = name.with_file_name(format!("{stem}_{k}{ext}"));
+            let (real, shown) = match &self.policy {
+                Policy::Within(root) => {
+                    root.resolve(folder, &other).map_err(WriteError::Refused)?
+                }
+                _ => {
+                    let real = folder.join(&other);
+                    let shown = show(&real);
+                    (real, shown)
+                }
+            };
+            if std::fs::symlink_metadata(&real).is_err() {
+                return Ok((real, shown, false));
+            }
+            if !foreign(&real) {
+                return Ok((real, shown, true));
+            }
+        }
+        Err(WriteError::Refused(format!(
+            "cannot write '{}': it exists, as do 998 other names for it",
+            show(&folder.join(name))
+        )))
+    }
+}
+
+/// Whether `path` is taken by something other than an SVG chasles wrote
+/// (a file of the user's, a folder, a link): a printed picture must not
+/// replace it.
+fn foreign(path: &Path) -> bool {
+    use std::io::Read;
+    let Ok(meta) = std::fs::symlink_metadata(path) else {
+        return false;
+    };
+    if !meta.is_file() {
+        return true;
+    }
+    let mut head = Vec::with_capacity(512);
+    let read = std::fs::File::open(path).and_then(|f| f.take(512).read_to_end(&mut head));
+    !(read.is_ok() && crate::draw::file::is_marked(&head))
 }
 
 /// Why a write did not happen.

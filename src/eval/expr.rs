@@ -287,7 +287,11 @@ impl Interp<'_> {
                 span,
                 format!("'{name}' is a function"),
             )
-            .with_help(format!("call it: {name}(...)")));
+            .with_help(match name {
+                // (`30 degrees`: the unit meant, not the conversion)
+                "degrees" => "degrees are a unit after the number: 30 deg or 30°; degrees(x) converts radians".into(),
+                _ => format!("call it: {name}(...)"),
+            }));
         }
         let mut d = Diagnostic::error(ErrorKind::Name, span, format!("unknown name '{name}'"));
         if let Some(h) = crate::diagnostics::habits::name(name) {
@@ -469,6 +473,10 @@ impl Interp<'_> {
                 // diff(x, t): the variable may be a name with no value (time).
                 _ => match self.time_variable(b.name, i, a) {
                     Some(t) => t,
+                    // (`frame(I, p)`: the call fixes the size of `I`)
+                    None if matches!(&a.kind, ExprKind::Var(n) if *n == *super::env::IDENTITY) => {
+                        self.sized_identity(super::slips::identity_size(b, i), a)?
+                    }
                     None => self.expr(a)?,
                 },
             };
@@ -504,6 +512,8 @@ impl Interp<'_> {
         if !self.running() {
             return Ok(Typed::new(ty, None));
         }
+        self.warnings
+            .extend(super::slips::radians_slip(b.name, args));
         // (len, sum, min, max of a range that waits for numbers wait too)
         if let [range] = vals.as_slice()
             && matches!(b.name, "len" | "sum" | "min" | "max")

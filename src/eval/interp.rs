@@ -189,6 +189,8 @@ impl<'a> Interp<'a> {
                 self.commit(t.value(), s.span)?;
                 crate::check::rules::settle_in_place(&mut t.ty);
                 self.bind_checked(target.name, &mut t, target.span, value.span)?;
+                // (Fig. 3.13: `v_b = (0, 0, 1.5)` is a point, as the book uses it)
+                t.ty.free &= !super::slips::literal_point(&target.name, value);
                 self.bind_value(target.name, &t);
                 let mut o = out(Names::One([target.name]), t);
                 self.shown(&mut o.val, s.span);
@@ -264,13 +266,11 @@ impl<'a> Interp<'a> {
                 Ok(o)
             }
             StmtKind::FnDef { name, params, body } => {
-                if crate::builtins::lookup(&name.name).is_some() {
-                    return Err(Diagnostic::error(
-                        ErrorKind::Name,
-                        name.span,
-                        format!("'{}' is a builtin function", name.name),
-                    )
-                    .with_help("choose another name for your function"));
+                // A user function may shadow a builtin, as in Python and
+                // MATLAB (`trans(n) = n`), with a note (issue 36).
+                if let Some(b) = crate::builtins::lookup(&name.name) {
+                    self.warnings
+                        .push(super::slips::shadowed(&name.name, b.signature, name.span));
                 }
                 let f = UserFn {
                     name: String::from(name.name),

@@ -19,6 +19,7 @@ mod outcome;
 mod paren_product;
 mod resolve;
 mod slice;
+mod slips;
 mod substitute;
 mod symbols;
 mod tuple_call;

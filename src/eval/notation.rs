@@ -97,7 +97,11 @@ impl Interp<'_> {
 
     /// Evaluates `e` with `I` of size `n` (a scalar or unknown context,
     /// `n` = None or 1, keeps the size from further out).
-    fn sized_identity(&mut self, n: Option<usize>, e: &Expr) -> Result<Typed, Diagnostic> {
+    pub(super) fn sized_identity(
+        &mut self,
+        n: Option<usize>,
+        e: &Expr,
+    ) -> Result<Typed, Diagnostic> {
         let outer = self.eye;
         if let Some(n) = n.filter(|&n| n > 1) {
             self.eye = Some(n);

@@ -189,6 +189,9 @@ pub fn function(b: &Builtin, settings: &Settings) -> String {
         out.push_str(&format!("    {}", b.section));
     }
     out.push_str(&format!("\n  {}", b.doc));
+    if let Some(d) = builtins::python::difference(b.name) {
+        out.push_str(&format!("\n  unlike the book's Python library: {d}"));
+    }
     if !b.aliases.is_empty() {
         out.push_str(&format!("\n  also: {}", b.aliases.join(", ")));
     }

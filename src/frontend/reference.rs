@@ -58,6 +58,9 @@ pub fn builtins_markdown() -> String {
                 out.push_str(&format!(" — {}", b.section));
             }
             out.push_str(&format!("\n\n{}\n", b.doc));
+            if let Some(d) = builtins::python::difference(b.name) {
+                out.push_str(&format!("\nUnlike the book's Python library: {d}.\n"));
+            }
             if !b.aliases.is_empty() {
                 let also: Vec<String> = b.aliases.iter().map(|a| format!("`{a}`")).collect();
                 out.push_str(&format!("\nAlso: {}.\n", also.join(", ")));

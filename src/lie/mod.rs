@@ -72,16 +72,18 @@ pub fn norm<R, C, S>(v: &nalgebra::Matrix<f64, R, C, S>) -> f64
 where
     R: nalgebra::Dim,
     C: nalgebra::Dim,
-    S: nalgebra::RawStorage<f64, R, C>,
+    S: nalgebra::Storage<f64, R, C>,
 {
-    let n2 = v.iter().map(|x| x * x).sum::<f64>();
-    // (within this range no square lost matters and none overflowed)
-    if (1e-280..=1e280).contains(&n2) || n2 == 0.0 && v.iter().all(|x| *x == 0.0) {
-        return n2.sqrt();
+    // (the squares summed in order, as the exact forms' floats are: a
+    // norm in range rounds as theirs does; within this range no square
+    // lost matters and none overflowed)
+    let n = v.iter().map(|x| x * x).sum::<f64>().sqrt();
+    if (1e-140..=1e140).contains(&n) || n == 0.0 && v.iter().all(|x| *x == 0.0) {
+        return n;
     }
     let big = v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
     if big == 0.0 || !big.is_finite() || v.iter().any(|x| x.is_nan()) {
-        return n2.sqrt();
+        return n;
     }
     big * v.iter().map(|x| (x / big) * (x / big)).sum::<f64>().sqrt()
 }
@@ -93,6 +95,10 @@ where
 pub fn normalize(v: &nalgebra::DVector<f64>) -> Option<nalgebra::DVector<f64>> {
     if v.iter().any(|x| !x.is_finite()) {
         return None;
+    }
+    let n = v.norm();
+    if (1e-150..=1e150).contains(&n) {
+        return Some(v / n);
     }
     // (scaled by the largest entry first: ‖(1e-200, 0)‖² underflows to 0
     // and ‖(3e200, 4e200)‖² overflows)

@@ -132,6 +132,9 @@ fn parse_letters(
         }
         return Ok(vec![contact]);
     }
+    if let Some(e) = contact_word(letters, part) {
+        return Err(e);
+    }
     let mut kinds = Vec::new();
     for c in letters.chars() {
         let Some(kind) = JointType::from_letter(c) else {
@@ -151,6 +154,33 @@ fn parse_letters(
         kinds.push(kind);
     }
     Ok(kinds)
+}
+
+/// A word a student types for a point contact (`6 contact`, `1 point`,
+/// `roll`): not read as letters (`contact` is no C joint) but answered
+/// with the two contact joints of Exercises 2.17–2.19.
+fn contact_word(word: &str, part: MechPart) -> Option<MechError> {
+    let lower = word.to_ascii_lowercase();
+    let meant = match lower.as_str() {
+        "roll" | "rolls" | "rolled" | "nonslip" | "noslipping" => Some("rolling"),
+        "slide" | "slides" | "slip" | "slips" | "slipping" | "smooth" => Some("sliding"),
+        "contact" | "contacts" | "point" | "points" | "pointcontact" | "pointcontacts" => None,
+        _ => return None,
+    };
+    let both = "a point contact is `rolling` (no slip: f = 1 planar, 3 spatial) or `sliding` (frictionless: f = 2 planar, 5 spatial), Exercises 2.17–2.19";
+    let e = match meant {
+        Some(m) => MechError::new(
+            part,
+            format!("`{word}` is no joint of Table 2.1: did you mean `{m}`?"),
+        ),
+        None => MechError::new(
+            part,
+            format!(
+                "`{word}` is no joint of Table 2.1: say which point contact, `rolling` or `sliding`"
+            ),
+        ),
+    };
+    Some(e.help(both))
 }
 
 fn not_in_space(kind: JointType, space: Space, part: MechPart) -> MechError {

@@ -1,0 +1,122 @@
+//! Notes on a student's common slips in a call that is otherwise correct
+//! (issue 36): an angle typed as a whole number of radians beyond a full
+//! turn, `Rotz(30)`, is almost always meant in degrees (§2.2: the book
+//! writes angles in both; chasles reads a bare number as radians).
+
+use crate::diagnostics::{Diagnostic, ErrorKind};
+use crate::syntax::ast::{Expr, ExprKind, UnOp};
+
+/// Which argument of a rotation builtin is its angle θ (Rotx/Roty/Rotz
+/// §3.2.1, Rot §3.2.3.2, SE2 Example 3.4), or None.
+fn angle_arg(name: &str, nargs: usize) -> Option<usize> {
+    match (name, nargs) {
+        ("Rotx" | "Roty" | "Rotz", 1) => Some(0),
+        ("Rot", 2) => Some(1),
+        ("SE2", 3) => Some(0),
+        _ => None,
+    }
+}
+
+/// A whole number typed as the literal (`30`, `-45`), or None.
+fn whole_literal(e: &Expr) -> Option<f64> {
+    let x = match &e.kind {
+        ExprKind::Number(x) => *x,
+        ExprKind::Unary {
+            op: UnOp::Neg,
+            operand,
+        } => match operand.kind {
+            ExprKind::Number(x) => -x,
+            _ => return None,
+        },
+        _ => return None,
+    };
+    (x.fract() == 0.0 && x.is_finite()).then_some(x)
+}
+
+/// The note on `name(args)` when its angle is a whole number literal of
+/// radians beyond 2π: "30 rad = 1718.9°; did you mean `30 deg`?". The
+/// value is still the rotation by that many radians; `30 rad` (said
+/// explicitly) and a computed angle get no note.
+pub(super) fn radians_slip(name: &str, args: &[Expr]) -> Option<Diagnostic> {
+    let arg = args.get(angle_arg(name, args.len())?)?;
+    let x = whole_literal(arg)?;
+    if x.abs() <= std::f64::consts::TAU {
+        return None;
+    }
+    let n = crate::values::number::fmt_num(x, 0);
+    let deg = crate::values::number::fmt_num(x.to_degrees(), 1);
+    Some(
+        Diagnostic::note(
+            ErrorKind::Domain,
+            arg.span,
+            format!("{n} rad = {deg}°; did you mean `{n} deg`?"),
+        )
+        .with_help(format!(
+            "a bare number is an angle in radians: write `{n} deg` (or `{n}°`) for degrees, `{n} rad` to keep radians without this note"
+        )),
+    )
+}
+
+/// A number as typed, or arithmetic of numbers (`1.5`, `-2`, `1/2`,
+/// `30 deg`).
+fn constant(e: &Expr) -> bool {
+    match &e.kind {
+        ExprKind::Number(_) => true,
+        ExprKind::Unary { operand, .. } => constant(operand),
+        ExprKind::Binary { lhs, rhs, .. } => constant(lhs) && constant(rhs),
+        ExprKind::Degrees(x) => constant(x),
+        _ => false,
+    }
+}
+
+/// Whether `name = value` binds a vector typed as numbers (`(0, 0, 1.5)`,
+/// `[1; 2; 3]`) to a name whose letter the book uses both for a linear
+/// velocity and for a point: v. Fig. 3.13 (§3.3.1.2) writes
+/// `v_b = (0, 0, 1.5)` and `v_a = T_ab v_b` with v a point, so such a
+/// vector is not made a free vector by its name; a value that *is* a
+/// linear velocity (a twist's `.v`) stays one (LANGUAGE.md §4).
+pub(super) fn literal_point(name: &str, value: &Expr) -> bool {
+    if crate::check::role::noun(name) != Some("a linear velocity") {
+        return false;
+    }
+    match &value.kind {
+        ExprKind::Paren(xs) => xs.iter().all(constant),
+        ExprKind::Brackets(rows) => {
+            rows.iter().all(|r| r.len() == 1 && constant(&r[0]))
+                || rows.len() == 1 && rows[0].len() > 1 && rows[0].iter().all(constant)
+        }
+        _ => false,
+    }
+}
+
+/// The note on a user function named like a builtin (`trans(n) = n`):
+/// allowed, as Python and MATLAB allow it, and said.
+pub(super) fn shadowed(name: &str, signature: &str, span: crate::span::Span) -> Diagnostic {
+    let builtin = signature.split(" -> ").next().unwrap_or(signature);
+    Diagnostic::note(
+        ErrorKind::Name,
+        span,
+        format!("{name} is now your function: it hides the builtin {builtin} in this session"),
+    )
+    .with_help(format!(
+        "choose another name to keep the builtin; `:help {name}` still describes it"
+    ))
+}
+
+/// The size of `I` written as argument `i` of the builtin `b` where the
+/// call fixes it (`frame(I, p)`, `RotInv(I)`: 3; `Ad(I)`, `TransInv(I)`:
+/// 4), as `I + W` takes the size of W (LANGUAGE.md §4). None where the call
+/// leaves it open (`inv(I)`, `det(I)`).
+pub(super) fn identity_size(b: &crate::builtins::Builtin, i: usize) -> Option<usize> {
+    use crate::builtins::{Param, Typing};
+    match (&b.typing, b.name, i) {
+        (_, "RpToTrans", 0) => Some(3),
+        (_, "TransToRp", 0) => Some(4),
+        (Typing::Fixed { params, .. }, _, _) => match params.get(i)? {
+            Param::Rot => Some(3),
+            Param::Trans => Some(4),
+            _ => None,
+        },
+        _ => None,
+    }
+}
