@@ -43,7 +43,11 @@ fn rows() -> Vec<Row> {
             assert_eq!(c.len(), 5, "five columns: {l}");
             Row {
                 source: c[0].to_string(),
-                symbols: c[1].split(',').filter(|s| !s.is_empty()).map(String::from).collect(),
+                symbols: c[1]
+                    .split(',')
+                    .filter(|s| !s.is_empty())
+                    .map(String::from)
+                    .collect(),
                 lhs: c[2].to_string(),
                 rhs: c[3].to_string(),
                 form: c[4] == "rhs",
@@ -69,7 +73,10 @@ fn last(src: &str) -> Value {
         ..Settings::default()
     });
     let (out, _, _) = s.run_to_strings("sympy.chs", src, Mode::Run, true);
-    let line = out.lines().last().unwrap_or_else(|| panic!("no output for {src}"));
+    let line = out
+        .lines()
+        .last()
+        .unwrap_or_else(|| panic!("no output for {src}"));
     serde_json::from_str(line).expect("a JSON object")
 }
 
@@ -84,7 +91,11 @@ fn verdict(src: &str) -> Verdict {
     let o = last(src);
     if let Some(e) = o.get("error") {
         let m = e["message"].as_str().unwrap_or_default();
-        return if m.contains("cannot decide") { Verdict::Undecided } else { Verdict::Refused };
+        return if m.contains("cannot decide") {
+            Verdict::Undecided
+        } else {
+            Verdict::Refused
+        };
     }
     match &o["value"] {
         Value::Bool(true) => Verdict::True,
@@ -105,15 +116,24 @@ fn sympys_identities_are_never_false_and_perturbed_never_true() {
         if v == Verdict::False {
             wrong.push(format!("{}: ({}) == ({}) is false", r.source, r.lhs, r.rhs));
         }
-        let p = verdict(&script(r, &format!("({}) == ({}) + 1/1000003", r.lhs, r.rhs)));
+        let p = verdict(&script(
+            r,
+            &format!("({}) == ({}) + 1/1000003", r.lhs, r.rhs),
+        ));
         if p == Verdict::True {
-            wrong.push(format!("{}: ({}) == ({}) + 1/1000003 is true", r.source, r.lhs, r.rhs));
+            wrong.push(format!(
+                "{}: ({}) == ({}) + 1/1000003 is true",
+                r.source, r.lhs, r.rhs
+            ));
         }
     }
     println!("SymPy's suite, {} identities: {counts:?}", rows.len());
     assert!(wrong.is_empty(), "wrong answers:\n{}", wrong.join("\n"));
     let proven = counts.get("True").copied().unwrap_or(0);
-    assert!(proven >= TRUE_FLOOR, "{proven} proven, fewer than {TRUE_FLOOR}: {counts:?}");
+    assert!(
+        proven >= TRUE_FLOOR,
+        "{proven} proven, fewer than {TRUE_FLOOR}: {counts:?}"
+    );
 }
 
 #[test]
@@ -132,16 +152,25 @@ fn simplified_forms_print_their_value() {
         total += 1;
         // SymPy's expected form, printed by chasles, for a fair length.
         let expected = last(&script(r, &r.rhs));
-        let expected = expected.get("value").map(|v| v.as_str().map_or(v.to_string(), String::from));
+        let expected = expected
+            .get("value")
+            .map(|v| v.as_str().map_or(v.to_string(), String::from));
         if expected.is_some_and(|e| shown.chars().count() <= e.chars().count()) {
             short += 1;
         }
         // The printed text read back is the value.
         if verdict(&script(r, &format!("({shown}) == ({})", r.lhs))) == Verdict::False {
-            wrong.push(format!("{}: simplify({}) prints {shown}, which is not its value", r.source, r.lhs));
+            wrong.push(format!(
+                "{}: simplify({}) prints {shown}, which is not its value",
+                r.source, r.lhs
+            ));
         }
     }
     println!("SymPy's simplified forms: {short} of {total} as short as SymPy's");
-    assert!(wrong.is_empty(), "printed forms that are not their value:\n{}", wrong.join("\n"));
+    assert!(
+        wrong.is_empty(),
+        "printed forms that are not their value:\n{}",
+        wrong.join("\n")
+    );
     assert!(total > 80, "only {total} simplified forms read");
 }

@@ -292,6 +292,13 @@ fn proof(a: &Value, b: &Value, lift: &mut Lift) -> Option<Result<(), Expr>> {
     if x.data == y.data {
         return Some(Ok(()));
     }
+    if x.data
+        .iter()
+        .zip(&y.data)
+        .all(|(p, q)| p == q || cleared_equal(p, q, lift.split))
+    {
+        return Some(Ok(()));
+    }
     x.data
         .iter()
         .zip(&y.data)
@@ -303,6 +310,44 @@ fn proof(a: &Value, b: &Value, lift: &mut Lift) -> Option<Result<(), Expr>> {
                     .all(|mono| mono.iter().all(|(v, _)| matches!(v, Var::Pi)))
         })
         .map(Err)
+}
+
+/// True when p = q once both are multiplied by every kept denominator
+/// of either ([`crate::sym::together::cleared`]: `sec(2π + 11)` against
+/// `sec 11`, `sin 2/(cos 2 + 1)` against `tan 1`), the products reduced in
+/// ℚ(e^{iπ/L}) when the angles are split. The denominators are nonzero
+/// numbers (each side's certified balls were finite before the lift is
+/// asked), and none of them may reduce to zero here, so equal numerators
+/// are equal sides.
+fn cleared_equal(p: &Expr, q: &Expr, split: Option<(i64, i64)>) -> bool {
+    let mut dens = Vec::new();
+    denominators(p, &mut dens);
+    denominators(q, &mut dens);
+    let Some((mut p, mut q)) = crate::sym::together::cleared(p, q) else {
+        return false;
+    };
+    if let Some((_, l)) = split {
+        let z = z_of([&p, &q].into_iter().chain(&dens));
+        if dens.iter().any(|d| reduced(d, l, &z).terms.is_empty()) {
+            return false;
+        }
+        p = reduced(&p, l, &z);
+        q = reduced(&q, l, &z);
+    }
+    exact(&p) && exact(&q) && p == q
+}
+
+/// The arguments of the kept reciprocals anywhere in `e`, calls' arguments
+/// included.
+fn denominators(e: &Expr, out: &mut Vec<Expr>) {
+    for (v, _) in e.terms.keys().flatten() {
+        if let Var::Call(c) = v {
+            if c.f == crate::sym::expr::Func::Recip {
+                out.extend(c.args.iter().cloned());
+            }
+            c.args.iter().for_each(|a| denominators(a, out));
+        }
+    }
 }
 
 /// The names of the lift's own symbols, which no typed name can be
