@@ -70,6 +70,9 @@ pub fn equal(a: &Value, b: &Value) -> Option<Verdict> {
                 }
                 None => {}
             }
+            if same_sign(a, b) && super::lift::squares_equal(a, b) {
+                return Some(Verdict::Equal);
+            }
         }
         let mut memo = Memo::default();
         let (p, q) = (balls(a, prec, &mut memo)?, balls(b, prec, &mut memo)?);
@@ -102,6 +105,18 @@ pub fn equal(a: &Value, b: &Value) -> Option<Verdict> {
         (scale.max(1.0) / rad).log10().floor().max(0.0)
     };
     Some(Verdict::Agree(digits as u32))
+}
+
+/// True when the numbers `a` and `b` are scalars whose 128-bit balls
+/// both exclude 0 on one side of it: with a² = b² proven, then a = b.
+fn same_sign(a: &Value, b: &Value) -> bool {
+    let mut memo = Memo::default();
+    let sign = |v: &Value, memo: &mut Memo| {
+        let x = balls(v, PRECISIONS[0], memo)?;
+        let x = x.one()?.clone();
+        ball::nonzero(&x).then(|| ball::floats(&x).0 > 0.0)
+    };
+    matches!((sign(a, &mut memo), sign(b, &mut memo)), (Some(p), Some(q)) if p == q)
 }
 
 /// True when `a` and `b` are made by the same operations over the same

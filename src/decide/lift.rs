@@ -27,7 +27,22 @@ use std::rc::Rc;
 /// `Err(d)` different, `d` an entry of `a − b` that is a nonzero exact
 /// number (no ν left: the same at ν = 1); None nothing.
 pub fn verdict(a: &Value, b: &Value) -> Option<Result<(), Expr>> {
-    let mut lift = Lift::default();
+    verdict_of(a, b, false)
+}
+
+/// True when the squares of the numbers `a` and `b` are proven equal as
+/// [`verdict`] proves sides equal: then a = ±b, and the signs decide
+/// (`super::certify`: sin(π/5) == √((5 − √5)/8), tan(π/8) == √2 − 1).
+pub fn squares_equal(a: &Value, b: &Value) -> bool {
+    matches!(verdict_of(a, b, true), Some(Ok(())))
+}
+
+/// [`verdict`], of the squares of the sides when `squared`.
+fn verdict_of(a: &Value, b: &Value, squared: bool) -> Option<Result<(), Expr>> {
+    let mut lift = Lift {
+        squared,
+        ..Lift::default()
+    };
     let first = proof(a, b, &mut lift);
     if matches!(first, Some(Ok(()))) {
         return first;
@@ -38,6 +53,7 @@ pub fn verdict(a: &Value, b: &Value) -> Option<Result<(), Expr>> {
     let split = lift.split()?;
     let mut lift = Lift {
         split: Some(split),
+        squared,
         ..Lift::default()
     };
     let mut tried = proof(a, b, &mut lift);
@@ -47,6 +63,7 @@ pub fn verdict(a: &Value, b: &Value) -> Option<Result<(), Expr>> {
         // (again in the field that holds the square roots met too)
         let mut wider = Lift {
             split: Some((split.0, l)),
+            squared,
             ..Lift::default()
         };
         tried = proof(a, b, &mut wider).or(tried);
@@ -74,6 +91,8 @@ struct Lift {
     /// the coefficients (their conductors divide 2L), when the split's L
     /// does not and the larger one is at most 360.
     wider: Option<i64>,
+    /// The sides' squares are compared ([`squares_equal`]).
+    squared: bool,
 }
 
 impl Lift {
@@ -276,6 +295,13 @@ fn widened<'a>(forms: impl Iterator<Item = &'a Expr>, l: i64) -> Option<i64> {
 /// The proof `verdict` asks for, with angles read by `lift`.
 fn proof(a: &Value, b: &Value, lift: &mut Lift) -> Option<Result<(), Expr>> {
     let (mut x, mut y) = (side(a, lift)?, side(b, lift)?);
+    if lift.squared {
+        if x.data.len() != 1 || y.data.len() != 1 {
+            return None;
+        }
+        x.data[0] = x.data[0].mul(&x.data[0]);
+        y.data[0] = y.data[0].mul(&y.data[0]);
+    }
     if let Some((_, l)) = lift.split {
         lift.wider = widened(x.data.iter().chain(&y.data), l);
         let z = z_of(x.data.iter().chain(&y.data));
@@ -428,6 +454,15 @@ fn lifted(v: &Value, lift: &mut Lift, depth: u32) -> Option<Mat> {
                     m,
                     how: None,
                 });
+            }
+            // (a square root with no exact form is kept as a call, whose
+            // square is its argument: sin(π/5) against √((5 − √5)/8))
+            if let (Operation::Call(name), [Value::Formula { m, .. }]) = (&p.op, &forms[..])
+                && crate::builtins::lookup(name).is_some_and(|b| b.name == "sqrt")
+                && m.data.len() == 1
+                && self::exact(&m.data[0])
+            {
+                return Some(Mat::scalar(Expr::sqrt_kept(&m.data[0])));
             }
             crate::seam::exactness::formula_of(&p.op, forms, &p.kind)
         })
