@@ -44,6 +44,12 @@ pub(crate) const PRECISIONS: [usize; 3] = [128, 256, 512];
 /// to evaluate, or its recipe holds an operation not bounded here: the
 /// sides then compare as floats.
 pub fn equal(a: &Value, b: &Value) -> Option<Verdict> {
+    equal_at(a, b, 0)
+}
+
+/// [`equal`], asked `depth` times within itself (by
+/// [`super::inverse`], which proves f(c) == y to prove asin y == c).
+pub(crate) fn equal_at(a: &Value, b: &Value, depth: u32) -> Option<Verdict> {
     let (Value::Num { m: x, .. }, Value::Num { m: y, .. }) = (a, b) else {
         return None;
     };
@@ -71,6 +77,9 @@ pub fn equal(a: &Value, b: &Value) -> Option<Verdict> {
                 None => {}
             }
             if same_sign(a, b) && super::lift::squares_equal(a, b) {
+                return Some(Verdict::Equal);
+            }
+            if super::inverse::proven_equal(a, b, depth) {
                 return Some(Verdict::Equal);
             }
         }
