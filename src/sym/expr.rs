@@ -522,10 +522,8 @@ impl Expr {
     /// A one-argument function: evaluated when the argument is a number,
     /// else kept as a call.
     pub fn apply(f: Func, x: &Expr, num: fn(f64) -> f64) -> Expr {
-        // (asin, acos, atan at the book's angles: exactly rπ, `super::arc`)
-        if matches!(f, Func::Asin | Func::Acos | Func::Atan)
-            && let Some(e) = super::arc::inverse(f, x)
-        {
+        // (asin, acos, atan at the book's angles, sin and cos of them)
+        if let Some(e) = super::inverse::closed(f, x) {
             return e;
         }
         match x.as_f64() {
@@ -559,19 +557,6 @@ impl Expr {
     }
     /// atan2(y, x), a number when both are.
     pub fn atan2(y: &Expr, x: &Expr) -> Expr {
-        Expr::atan2_of(y, x)
-    }
-    /// √x kept as a call whatever x is (no float for a root with no exact
-    /// form): a proof's square root of a number, whose square is x
-    /// exactly (`decide::lift`).
-    pub fn sqrt_kept(x: &Expr) -> Expr {
-        let e = Expr::sqrt(x);
-        if e.terms.values().all(Coef::is_exact) && !e.terms.is_empty() {
-            return e;
-        }
-        Expr::call(Func::Sqrt, vec![x.clone()])
-    }
-    fn atan2_of(y: &Expr, x: &Expr) -> Expr {
         if let Some(e) = super::arc::atan2(y, x) {
             return e;
         }
