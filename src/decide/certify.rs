@@ -44,6 +44,12 @@ pub(crate) const PRECISIONS: [usize; 3] = [128, 256, 512];
 /// to evaluate, or its recipe holds an operation not bounded here: the
 /// sides then compare as floats.
 pub fn equal(a: &Value, b: &Value) -> Option<Verdict> {
+    equal_at(a, b, 0)
+}
+
+/// [`equal`], asked `depth` times within itself (by
+/// [`super::inverse`], which proves f(c) == y to prove asin y == c).
+pub(crate) fn equal_at(a: &Value, b: &Value, depth: u32) -> Option<Verdict> {
     let (Value::Num { m: x, .. }, Value::Num { m: y, .. }) = (a, b) else {
         return None;
     };
@@ -69,6 +75,12 @@ pub fn equal(a: &Value, b: &Value) -> Option<Verdict> {
                     return Some(Verdict::Differ(d));
                 }
                 None => {}
+            }
+            if same_sign(a, b) && super::lift::squares_equal(a, b) {
+                return Some(Verdict::Equal);
+            }
+            if super::inverse::proven_equal(a, b, depth) {
+                return Some(Verdict::Equal);
             }
         }
         let mut memo = Memo::default();
@@ -102,6 +114,18 @@ pub fn equal(a: &Value, b: &Value) -> Option<Verdict> {
         (scale.max(1.0) / rad).log10().floor().max(0.0)
     };
     Some(Verdict::Agree(digits as u32))
+}
+
+/// True when the numbers `a` and `b` are scalars whose 128-bit balls
+/// both exclude 0 on one side of it: with a² = b² proven, then a = b.
+fn same_sign(a: &Value, b: &Value) -> bool {
+    let mut memo = Memo::default();
+    let sign = |v: &Value, memo: &mut Memo| {
+        let x = balls(v, PRECISIONS[0], memo)?;
+        let x = x.one()?.clone();
+        ball::nonzero(&x).then(|| ball::floats(&x).0 > 0.0)
+    };
+    matches!((sign(a, &mut memo), sign(b, &mut memo)), (Some(p), Some(q)) if p == q)
 }
 
 /// True when `a` and `b` are made by the same operations over the same

@@ -27,7 +27,22 @@ use std::rc::Rc;
 /// `Err(d)` different, `d` an entry of `a − b` that is a nonzero exact
 /// number (no ν left: the same at ν = 1); None nothing.
 pub fn verdict(a: &Value, b: &Value) -> Option<Result<(), Expr>> {
-    let mut lift = Lift::default();
+    verdict_of(a, b, false)
+}
+
+/// True when the squares of the numbers `a` and `b` are proven equal as
+/// [`verdict`] proves sides equal: then a = ±b, and the signs decide
+/// (`super::certify`: sin(π/5) == √((5 − √5)/8), tan(π/8) == √2 − 1).
+pub fn squares_equal(a: &Value, b: &Value) -> bool {
+    matches!(verdict_of(a, b, true), Some(Ok(())))
+}
+
+/// [`verdict`], of the squares of the sides when `squared`.
+fn verdict_of(a: &Value, b: &Value, squared: bool) -> Option<Result<(), Expr>> {
+    let mut lift = Lift {
+        squared,
+        ..Lift::default()
+    };
     let first = proof(a, b, &mut lift);
     if matches!(first, Some(Ok(()))) {
         return first;
@@ -38,6 +53,7 @@ pub fn verdict(a: &Value, b: &Value) -> Option<Result<(), Expr>> {
     let split = lift.split()?;
     let mut lift = Lift {
         split: Some(split),
+        squared,
         ..Lift::default()
     };
     let mut tried = proof(a, b, &mut lift);
@@ -47,6 +63,7 @@ pub fn verdict(a: &Value, b: &Value) -> Option<Result<(), Expr>> {
         // (again in the field that holds the square roots met too)
         let mut wider = Lift {
             split: Some((split.0, l)),
+            squared,
             ..Lift::default()
         };
         tried = proof(a, b, &mut wider).or(tried);
@@ -74,6 +91,8 @@ struct Lift {
     /// the coefficients (their conductors divide 2L), when the split's L
     /// does not and the larger one is at most 360.
     wider: Option<i64>,
+    /// The sides' squares are compared ([`squares_equal`]).
+    squared: bool,
 }
 
 impl Lift {
@@ -287,6 +306,13 @@ fn widened<'a>(forms: impl Iterator<Item = &'a Expr>, l: i64) -> Option<i64> {
 /// The proof `verdict` asks for, with angles read by `lift`.
 fn proof(a: &Value, b: &Value, lift: &mut Lift) -> Option<Result<(), Expr>> {
     let (mut x, mut y) = (side(a, lift)?, side(b, lift)?);
+    if lift.squared {
+        if x.data.len() != 1 || y.data.len() != 1 {
+            return None;
+        }
+        x.data[0] = x.data[0].mul(&x.data[0]);
+        y.data[0] = y.data[0].mul(&y.data[0]);
+    }
     if let Some((_, l)) = lift.split {
         lift.wider = widened(x.data.iter().chain(&y.data), l);
         let z = z_of(x.data.iter().chain(&y.data));
@@ -303,6 +329,13 @@ fn proof(a: &Value, b: &Value, lift: &mut Lift) -> Option<Result<(), Expr>> {
     if x.data == y.data {
         return Some(Ok(()));
     }
+    if x.data
+        .iter()
+        .zip(&y.data)
+        .all(|(p, q)| p == q || cleared_equal(p, q, lift.split))
+    {
+        return Some(Ok(()));
+    }
     x.data
         .iter()
         .zip(&y.data)
@@ -314,6 +347,44 @@ fn proof(a: &Value, b: &Value, lift: &mut Lift) -> Option<Result<(), Expr>> {
                     .all(|mono| mono.iter().all(|(v, _)| matches!(v, Var::Pi)))
         })
         .map(Err)
+}
+
+/// True when p = q once both are multiplied by every kept denominator
+/// of either ([`crate::sym::together::cleared`]: `sec(2π + 11)` against
+/// `sec 11`, `sin 2/(cos 2 + 1)` against `tan 1`), the products reduced in
+/// ℚ(e^{iπ/L}) when the angles are split. The denominators are nonzero
+/// numbers (each side's certified balls were finite before the lift is
+/// asked), and none of them may reduce to zero here, so equal numerators
+/// are equal sides.
+fn cleared_equal(p: &Expr, q: &Expr, split: Option<(i64, i64)>) -> bool {
+    let mut dens = Vec::new();
+    denominators(p, &mut dens);
+    denominators(q, &mut dens);
+    let Some((mut p, mut q)) = crate::sym::together::cleared(p, q) else {
+        return false;
+    };
+    if let Some((_, l)) = split {
+        let z = z_of([&p, &q].into_iter().chain(&dens));
+        if dens.iter().any(|d| reduced(d, l, &z).terms.is_empty()) {
+            return false;
+        }
+        p = reduced(&p, l, &z);
+        q = reduced(&q, l, &z);
+    }
+    exact(&p) && exact(&q) && p == q
+}
+
+/// The arguments of the kept reciprocals anywhere in `e`, calls' arguments
+/// included.
+fn denominators(e: &Expr, out: &mut Vec<Expr>) {
+    for (v, _) in e.terms.keys().flatten() {
+        if let Var::Call(c) = v {
+            if c.f == crate::sym::expr::Func::Recip {
+                out.extend(c.args.iter().cloned());
+            }
+            c.args.iter().for_each(|a| denominators(a, out));
+        }
+    }
 }
 
 /// The names of the lift's own symbols, which no typed name can be
@@ -394,6 +465,15 @@ fn lifted(v: &Value, lift: &mut Lift, depth: u32) -> Option<Mat> {
                     m,
                     how: None,
                 });
+            }
+            // (a square root with no exact form is kept as a call, whose
+            // square is its argument: sin(π/5) against √((5 − √5)/8))
+            if let (Operation::Call(name), [Value::Formula { m, .. }]) = (&p.op, &forms[..])
+                && crate::builtins::lookup(name).is_some_and(|b| b.name == "sqrt")
+                && m.data.len() == 1
+                && self::exact(&m.data[0])
+            {
+                return Some(Mat::scalar(Expr::sqrt_kept(&m.data[0])));
             }
             crate::seam::exactness::formula_of(&p.op, forms, &p.kind)
         })

@@ -8,7 +8,8 @@
 //! points (`witness`), which replays how each side was made with
 //! numbers (`replay`: the same replay makes a value bound later a
 //! number, and a comparison replayed is decided here again, so the two
-//! live in one room); the half-turn branch of a rotation's log
+//! live in one room); inverse trigonometric sides by their principal
+//! ranges (`inverse`); the half-turn branch of a rotation's log
 //! (`turn`, §3.2.3.3) and the order of scalars (`order`). Imports
 //! the operation seam ([`crate::seam`]), nothing from the interpreter.
 
@@ -17,6 +18,7 @@ pub(crate) mod balls;
 pub(crate) mod certify;
 pub(crate) mod cyclotomic;
 pub(crate) mod equality;
+pub(crate) mod inverse;
 pub(crate) mod lift;
 pub(crate) mod order;
 pub(crate) mod replay;

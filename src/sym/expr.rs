@@ -522,10 +522,8 @@ impl Expr {
     /// A one-argument function: evaluated when the argument is a number,
     /// else kept as a call.
     pub fn apply(f: Func, x: &Expr, num: fn(f64) -> f64) -> Expr {
-        // (asin, acos, atan at the book's angles: exactly rπ, `super::arc`)
-        if matches!(f, Func::Asin | Func::Acos | Func::Atan)
-            && let Some(e) = super::arc::inverse(f, x)
-        {
+        // (asin, acos, atan at the book's angles, sin and cos of them)
+        if let Some(e) = super::inverse::closed(f, x) {
             return e;
         }
         match x.as_f64() {

@@ -17,6 +17,7 @@ pub mod factor;
 pub mod fraction;
 pub mod half;
 pub mod intern;
+pub mod inverse;
 pub mod layout;
 pub mod matrix;
 pub mod modular;
