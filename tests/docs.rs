@@ -138,6 +138,8 @@ fn every_example_is_listed() {
             "examples/README.md lists {name}, which is not in examples/"
         );
     }
+}
+
 /// Every difference from the book's Python library (issue 36) is a row of
 /// the README's table and is said by `:help` of its function.
 #[test]
