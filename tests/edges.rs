@@ -272,6 +272,18 @@ fn identity_takes_the_size_a_call_fixes() {
     assert_eq!(ad.len(), 36);
     assert!((0..36).all(|k| ad[k] == if k % 7 == 0 { 1.0 } else { 0.0 }));
     assert_eq!(numbers("RotInv(I)").len(), 9);
+    // frame(R) is [R, 0; 0, 1], so frame(I) is the identity transform
+    let id = numbers("frame(I)");
+    assert!(
+        (0..16).all(|k| id[k] == if k % 5 == 0 { 1.0 } else { 0.0 }),
+        "{id:?}"
+    );
+    assert_eq!(
+        numbers("frame(Rotz(pi/3))"),
+        numbers("RpToTrans(Rotz(pi/3), (0, 0, 0))")
+    );
+    let (_, out, _) = run(&["-e", "given t : scalar\nframe(Rotz(t))"]);
+    assert!(out.starts_with("[cos(t), -sin(t), 0, 0"), "{out}");
     // a call that leaves the size open still asks for it
     let (code, _, err) = run(&["-e", "inv(I)"]);
     assert_eq!(code, 1);
