@@ -272,6 +272,18 @@ fn identity_takes_the_size_a_call_fixes() {
     assert_eq!(ad.len(), 36);
     assert!((0..36).all(|k| ad[k] == if k % 7 == 0 { 1.0 } else { 0.0 }));
     assert_eq!(numbers("RotInv(I)").len(), 9);
+    // frame(R) is [R, 0; 0, 1], so frame(I) is the identity transform
+    let id = numbers("frame(I)");
+    assert!(
+        (0..16).all(|k| id[k] == if k % 5 == 0 { 1.0 } else { 0.0 }),
+        "{id:?}"
+    );
+    assert_eq!(
+        numbers("frame(Rotz(pi/3))"),
+        numbers("RpToTrans(Rotz(pi/3), (0, 0, 0))")
+    );
+    let (_, out, _) = run(&["-e", "given t : scalar\nframe(Rotz(t))"]);
+    assert!(out.starts_with("[cos(t), -sin(t), 0, 0"), "{out}");
     // a call that leaves the size open still asks for it
     let (code, _, err) = run(&["-e", "inv(I)"]);
     assert_eq!(code, 1);
@@ -298,4 +310,31 @@ fn axis_angle_of_the_books_bracket_form() {
     // a matrix that is not skew-symmetric is still refused
     let (code, _, _) = run(&["-e", "AxisAng3([1, 0, 0; 0, 1, 0; 0, 0, 1])"]);
     assert_eq!(code, 1);
+}
+
+#[test]
+fn hostile_numbers_get_answers_not_panics() {
+    // huge and tiny angles and axes: values or clear refusals, exit 0 or 1
+    for src in [
+        "Rotz(1e308)",
+        "Rot((1e308, 1e308, 1e308), 1)",
+        "rot_quat((1e308, 1e308, 0, 0))",
+        "rot_cayley((1e308, 1e308, 1e308))",
+        "AxisAng3((1e-320, 0, 0))",
+        "exp([(1e-300, 0, 0)])",
+        "acos(-1.0000000000000002)",
+        "sqrt(-0.0)",
+    ] {
+        let (code, out, err) = run(&["-e", src]);
+        assert!(code == 0 || code == 1, "{src}: {code}");
+        assert!(!err.contains("panicked"), "{src}: {err}");
+        assert!(code == 1 || !out.is_empty(), "{src}");
+    }
+    // no note for an angle beyond what degrees are written as
+    let (_, _, err) = run(&["-e", "Rotz(1e308)"]);
+    assert!(!err.contains("did you mean"), "{err}");
+    // rot_cayley of huge parameters along (1, 1, 1) is the half turn about it
+    let r = numbers("rot_cayley((1e308, 1e308, 1e308))");
+    let h = numbers("Rot((1, 1, 1), pi)");
+    assert!(close(&r, &h, 1e-15), "{r:?} vs {h:?}");
 }

@@ -88,7 +88,12 @@ fn cyclotomic_identities_are_never_false() {
     // (acos α = π/2 − asin α: proven since session 15)
     let out = common::printed("given t\nacos(0.3)*t == (pi/2 - asin(0.3))*t");
     assert_eq!(out.lines().last(), Some("true"), "{out}");
-    undecided("given a\nsqrt(1+sqrt(2))^2*a == (1+sqrt(2))*a");
+    // (the square of a root of a positive number is that number: proven
+    // since session 16, and a side moved off by 1e-30 is false)
+    let out = common::printed("given a\nsqrt(1+sqrt(2))^2*a == (1+sqrt(2))*a");
+    assert_eq!(out.lines().last(), Some("true"), "{out}");
+    let off = common::printed("given a\nsqrt(1+sqrt(2))^2*a == (1+sqrt(2) + 1e-30)*a");
+    assert_eq!(off.lines().last(), Some("false"), "{off}");
     // cos A + cos B = 2 cos((A+B)/2) cos((A−B)/2): here 2 cos(π/5) ≠ 1, so false
     let v = last_numbers("given t\ncos(t + pi/5) + cos(t + 3 pi/5) == cos(t + 2 pi/5)");
     assert_eq!(v, vec![0.0], "{v:?}");

@@ -107,7 +107,15 @@ fn rp_rule(args: &[Ty]) -> Result<Ty, ArgError> {
             format!("R must be SO(3), not {}", args[0].kind.a()),
         ));
     }
-    if !Param::Vec(3).accepts(&args[1].kind) {
+    // `frame(R)`: the rotation as a transform, p = 0 (`frame(I)` is I₄)
+    let Some(p) = args.get(1) else {
+        let frames = match args[0].frames {
+            f @ Frames::Pair(..) => f,
+            _ => Frames::None,
+        };
+        return Ok(Ty::new(Kind::SE3, frames));
+    };
+    if !Param::Vec(3).accepts(&p.kind) {
         return Err(ArgError::type_of(
             1,
             format!("p must be a 3-vector, not {}", args[1].kind.a()),
@@ -152,16 +160,23 @@ pub(super) fn builtins() -> Vec<Builtin> {
         Builtin {
             name: "RpToTrans",
             aliases: &["rp_to_trans", "SE3", "frame"],
-            signature: "RpToTrans(R: SO3, p: 3-vector) -> SE3",
+            signature: "RpToTrans(R: SO3, p: 3-vector) -> SE3   |   RpToTrans(R) -> SE3 (p = 0)",
             section: "§3.3.1 (3.62)",
-            doc: "the transform T = [R, p; 0, 1]",
+            doc: "the transform T = [R, p; 0, 1] (p = 0 when only R is given: frame(I) is the identity transform)",
             example: "RpToTrans(Rotz(pi/2), (1, 2, 3))",
             area: Transforms,
             typing: Typing::Custom {
-                arity: (2, 2),
+                arity: (1, 2),
                 rule: rp_rule,
             },
-            eval: |a| Ok(SE3::from_parts(&a.so3(0)?, &a.vec3(1)?).into()),
+            eval: |a| {
+                let p = if a.len() == 2 {
+                    a.vec3(1)?
+                } else {
+                    crate::lie::Vec3::zeros()
+                };
+                Ok(SE3::from_parts(&a.so3(0)?, &p).into())
+            },
         },
         Builtin {
             name: "TransToRp",

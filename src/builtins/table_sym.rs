@@ -172,6 +172,11 @@ pub fn eval_symbolic(name: &str, vals: &[Value], kind: &Kind) -> Out {
         ("RpToTrans", 2) if shape(0) == (3, 3) && shape(1) == (3, 1) => {
             ok(make(&Kind::SE3, sm::rp_to_trans(&ms[0], &ms[1])))
         }
+        // frame(R): [R, 0; 0, 1]
+        ("RpToTrans", 1) if shape(0) == (3, 3) => ok(make(
+            &Kind::SE3,
+            sm::rp_to_trans(&ms[0], &sm::Mat::zeros(3, 1)),
+        )),
         ("TransToRp", 1) if shape(0) == (4, 4) => ok(tuple(vec![
             make(&Kind::SO3, ms[0].block(0..3, 0..3)),
             make(&Kind::Vector(Some(3)), ms[0].block(0..3, 3..4)),

@@ -34,13 +34,15 @@ fn whole_literal(e: &Expr) -> Option<f64> {
 }
 
 /// The note on `name(args)` when its angle is a whole number literal of
-/// radians beyond 2π: "30 rad = 1718.9°; did you mean `30 deg`?". The
+/// radians beyond 2π (and within 3600, as degrees are written):
+/// "30 rad = 1718.9°; did you mean `30 deg`?". The
 /// value is still the rotation by that many radians; `30 rad` (said
 /// explicitly) and a computed angle get no note.
 pub(super) fn radians_slip(name: &str, args: &[Expr]) -> Option<Diagnostic> {
     let arg = args.get(angle_arg(name, args.len())?)?;
     let x = whole_literal(arg)?;
-    if x.abs() <= std::f64::consts::TAU {
+    // (beyond ten turns in degrees it is no slip for `deg`)
+    if x.abs() <= std::f64::consts::TAU || x.abs() > 3600.0 {
         return None;
     }
     let n = crate::values::number::fmt_num(x, 0);

@@ -249,13 +249,18 @@ pub fn rot_cayley(r: &Vec3) -> Mat3 {
     // With n = ‖r‖ and û = r/n: I + 2[û]·n/(1 + n²) + 2[û]²·n²/(1 + n²),
     // written so that no square is formed (a huge r is a turn near π, a
     // tiny one near the identity; neither overflows to NaN).
-    let n = super::norm(r);
-    if n == 0.0 || !n.is_finite() {
+    let big = r.amax();
+    if big == 0.0 || !big.is_finite() {
         let rm = hat(r);
         let k = 2.0 / (1.0 + r.norm_squared());
         return Mat3::identity() + k * (rm + rm * rm);
     }
-    let u = hat(&(r / n));
+    // (the direction from r scaled by its largest entry; n itself may
+    // overflow to inf, where the weights below are their limits 0 and 1)
+    let s = r / big;
+    let m = super::norm(&s);
+    let u = hat(&(s / m));
+    let n = big * m;
     let (k1, k2) = if n <= 1.0 {
         (n / (1.0 + n * n), n * n / (1.0 + n * n))
     } else {
@@ -268,6 +273,22 @@ pub fn rot_cayley(r: &Vec3) -> Mat3 {
 mod tests {
     use super::*;
     use std::f64::consts::{FRAC_PI_2, PI};
+
+    #[test]
+    fn cayley_parameters_at_every_scale() {
+        // huge r: the half turn about r̂, even when ‖r‖ overflows
+        for big in [1e200, 1e308] {
+            let r = rot_cayley(&Vec3::new(big, big, big));
+            let want = crate::lie::so3::rot(&Vec3::new(1.0, 1.0, 1.0), PI);
+            assert!((r - want).amax() < 1e-15, "{big}: {r}");
+        }
+        // tiny r: I + 2[r] to first order
+        let r = rot_cayley(&Vec3::new(0.0, 0.0, 1e-170));
+        assert_eq!(r[(1, 0)], 2e-170);
+        // ordinary r: r = ẑ tan(π/4) is Rot(ẑ, π/2), as the old formula gave
+        let r = rot_cayley(&Vec3::new(0.0, 0.0, 1.0));
+        assert!((r - rotz(FRAC_PI_2)).amax() < 1e-15);
+    }
 
     #[test]
     fn zyx_gimbal_lock_is_finite_and_noted() {

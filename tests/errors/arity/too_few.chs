@@ -1,2 +1,2 @@
-# too few arguments
-RpToTrans(Rotz(1))
+# too few arguments (RpToTrans(R) alone is now frame(R), p = 0)
+ScrewToAxis((0, 0, 0), (0, 0, 1))
