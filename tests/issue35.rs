@@ -194,3 +194,23 @@ fn printed_forms_are_their_values() {
         "\\frac{\\left(1 + \\cos t\\right)}{\\sin t}"
     );
 }
+
+#[test]
+fn a_bool_over_a_given_vector_is_decided_again_with_its_numbers() {
+    let pre = "given u : vec3\nd = u[1] == 0.6\ne = dot(u, u) == 1\nf = u == (0.6, 0, 0.8)\ng = u[2] < 1\n";
+    // over the symbols: not identities
+    let (out, _) = outputs(pre);
+    assert_eq!(
+        out.lines().take(3).collect::<Vec<_>>(),
+        ["d = false", "e = false", "f = false"]
+    );
+    for (numbers, want) in [
+        ("u = (0.6, 0, 0.8)", "true\ntrue\ntrue"),
+        ("u = (1, 2, 3)", "false\nfalse\nfalse"),
+    ] {
+        let (out, _) = outputs(&format!("{pre}{numbers}\nd\ne\nf"));
+        assert!(out.ends_with(&format!("{want}\n")), "{numbers}: {out}");
+    }
+    // as over a scalar, which was decided again already
+    assert_eq!(last("given s\nd = s == 0.6\ns = 0.6\nd"), "true");
+}

@@ -91,7 +91,11 @@ impl Interp<'_> {
         let sides = self.sides(op, lhs, rhs, op_span)?;
         // (over symbols, the bool is decided again once they have numbers)
         let val = match (sides.verdict, sides.l.value(), sides.r.value()) {
-            (Some(v), Some(a), Some(b)) => Some(crate::values::recipe::compared(v, op, a, b)),
+            (Some(v), Some(a), Some(b)) => Some(match self.lowered_sides(a, b, op_span) {
+                // (over given vectors: their components, decided again)
+                Some((x, y)) => crate::values::recipe::compared(v, op, &x, &y),
+                None => crate::values::recipe::compared(v, op, a, b),
+            }),
             // Undecided while its symbols are free: a bool that waits for
             // their numbers and is then decided as typed first (§7).
             (None, Some(a), Some(b)) if sides.undecided => {
