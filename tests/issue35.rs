@@ -214,3 +214,21 @@ fn a_bool_over_a_given_vector_is_decided_again_with_its_numbers() {
     // as over a scalar, which was decided again already
     assert_eq!(last("given s\nd = s == 0.6\ns = 0.6\nd"), "true");
 }
+
+#[test]
+fn a_matrix_compares_with_0_as_with_the_zero_matrix() {
+    for (src, want) in [
+        ("given a\nM = Rotz(a) - Rotz(a)\nM == 0", "true"),
+        ("given a\nRotz(a) Rotz(a)^T - I == 0", "true"),
+        ("given a\n0 == Rotz(a)", "false"),
+        ("N = [1, 2; 3, 4]\nN - N == 0", "true"),
+        ("N = [1, 2; 3, 4]\nN == 0", "false"),
+        ("(1, 2, 3) - (1, 2, 3) == 0", "true"),
+        ("x = 0\nx == 0", "true"),
+    ] {
+        assert_eq!(last(src), want, "{src}");
+    }
+    // an order has no zero matrix: still a scalar comparison, refused
+    let err = common::error("N = [1, 2; 3, 4]\nN < 0");
+    assert!(err.contains("error"), "{err}");
+}
