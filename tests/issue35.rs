@@ -232,3 +232,16 @@ fn a_matrix_compares_with_0_as_with_the_zero_matrix() {
     let err = common::error("N = [1, 2; 3, 4]\nN < 0");
     assert!(err.contains("error"), "{err}");
 }
+
+#[test]
+fn the_inverse_of_an_adjoint_is_the_adjoint_of_the_inverse() {
+    let pre = "given T2 : SE3\ngiven T3 : SE3\n";
+    assert_eq!(last(&format!("{pre}inv(Ad(T2)) == Ad(inv(T2))")), "true");
+    assert_eq!(last(&format!("{pre}Ad(inv(T2)) == inv(Ad(T2))")), "true");
+    // not everything becomes true: these are no identities over symbols
+    for src in ["inv(Ad(T2)) == Ad(T2)", "inv(Ad(T2)) == Ad(inv(T3))"] {
+        let (out, err) = outputs(&format!("{pre}{src}"));
+        assert!(!out.contains("true"), "{src}: {out}");
+        assert!(err.contains("cannot decide"), "{src}: {err}");
+    }
+}
