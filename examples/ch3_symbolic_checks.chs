@@ -301,3 +301,34 @@ dl8
 # --- a given transform is no function of time --------------------------------
 given T8 : SE3
 diff(T8, t)                                   # 0 (only a scalar can be a function of time)
+
+# --- every spelling of a rotation at an exact angle is exact (issue 35) ------
+# Exercise 3.12(b): R_y(π) R_z(−α) R_y(π)⁻¹ = R_z(α), in each spelling (x has
+# a value in this script, so the axis keyword is y here)
+given a9
+A9 = Rot(z, a9)
+B9 = Rot(z, -a9)
+A9 Rot(y, pi) == Rot(y, pi) B9                # true
+A9 exp([(1, 0, 0)] pi) == exp([(1, 0, 0)] pi) B9
+Rotz(a9) Rot(y, pi/2)                         # no 6.1232e-17 in sight
+
+# --- an assumption stated holds for every later use --------------------------
+given th9
+given u9 : vec3
+R9 = exp([u9] th9)                            # notes: u9 is a unit vector
+dot(u9, u9) == 1                              # true
+[u9]^3 == -[u9]                               # true
+given v9 : vec3
+d9 = v9[1] == 0.6                             # false: not an identity
+v9 = (0.6, 0, 0.8)
+d9                                            # true: decided again with the numbers
+
+# --- exact multiples of π, reduced exactly ------------------------------------
+sin(3*10^17*pi)                               # 0
+sin(10^15*pi + pi/6)                          # 0.5
+cos(2^60*pi) == 1                             # true
+
+# --- printed forms are their values ---------------------------------------------
+given t9, p9, q9
+1/tan(t9)                                     # cot(t9)
+1/(sin(t9)/(cos(t9) + 1))                     # (1 + cos(t9))/sin(t9)

@@ -194,3 +194,54 @@ fn printed_forms_are_their_values() {
         "\\frac{\\left(1 + \\cos t\\right)}{\\sin t}"
     );
 }
+
+#[test]
+fn a_bool_over_a_given_vector_is_decided_again_with_its_numbers() {
+    let pre = "given u : vec3\nd = u[1] == 0.6\ne = dot(u, u) == 1\nf = u == (0.6, 0, 0.8)\ng = u[2] < 1\n";
+    // over the symbols: not identities
+    let (out, _) = outputs(pre);
+    assert_eq!(
+        out.lines().take(3).collect::<Vec<_>>(),
+        ["d = false", "e = false", "f = false"]
+    );
+    for (numbers, want) in [
+        ("u = (0.6, 0, 0.8)", "true\ntrue\ntrue"),
+        ("u = (1, 2, 3)", "false\nfalse\nfalse"),
+    ] {
+        let (out, _) = outputs(&format!("{pre}{numbers}\nd\ne\nf"));
+        assert!(out.ends_with(&format!("{want}\n")), "{numbers}: {out}");
+    }
+    // as over a scalar, which was decided again already
+    assert_eq!(last("given s\nd = s == 0.6\ns = 0.6\nd"), "true");
+}
+
+#[test]
+fn a_matrix_compares_with_0_as_with_the_zero_matrix() {
+    for (src, want) in [
+        ("given a\nM = Rotz(a) - Rotz(a)\nM == 0", "true"),
+        ("given a\nRotz(a) Rotz(a)^T - I == 0", "true"),
+        ("given a\n0 == Rotz(a)", "false"),
+        ("N = [1, 2; 3, 4]\nN - N == 0", "true"),
+        ("N = [1, 2; 3, 4]\nN == 0", "false"),
+        ("(1, 2, 3) - (1, 2, 3) == 0", "true"),
+        ("x = 0\nx == 0", "true"),
+    ] {
+        assert_eq!(last(src), want, "{src}");
+    }
+    // an order has no zero matrix: still a scalar comparison, refused
+    let err = common::error("N = [1, 2; 3, 4]\nN < 0");
+    assert!(err.contains("error"), "{err}");
+}
+
+#[test]
+fn the_inverse_of_an_adjoint_is_the_adjoint_of_the_inverse() {
+    let pre = "given T2 : SE3\ngiven T3 : SE3\n";
+    assert_eq!(last(&format!("{pre}inv(Ad(T2)) == Ad(inv(T2))")), "true");
+    assert_eq!(last(&format!("{pre}Ad(inv(T2)) == inv(Ad(T2))")), "true");
+    // not everything becomes true: these are no identities over symbols
+    for src in ["inv(Ad(T2)) == Ad(T2)", "inv(Ad(T2)) == Ad(inv(T3))"] {
+        let (out, err) = outputs(&format!("{pre}{src}"));
+        assert!(!out.contains("true"), "{src}: {out}");
+        assert!(err.contains("cannot decide"), "{src}: {err}");
+    }
+}

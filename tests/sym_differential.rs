@@ -614,7 +614,12 @@ impl T {
                     .filter(|(c, _)| **c != 0)
                     .map(|(c, n)| format!("({c}) * {n}"))
                     .collect();
-                arg.push(format!("({p}) * pi / {d}"));
+                // (at d = 7, 10^15 whole turns more, exact: reduced exactly,
+                // as the reference's angle without them, issue 35)
+                match d {
+                    7 => arg.push(format!("({p} + {} * 10^15) * pi / {d}", 2 * d)),
+                    _ => arg.push(format!("({p}) * pi / {d}")),
+                }
                 if let Some((m, e)) = off {
                     arg.push(format!("({})", dec_src(*m, *e)));
                 }

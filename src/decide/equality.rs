@@ -109,8 +109,32 @@ pub fn symbolic_equal(a: &Sym, b: &Sym, _op: CmpOp) -> Option<bool> {
     if identity(a) && identity(b) {
         return Some(true);
     }
-    // Trees compare structurally, constants by value (not printed text).
-    (a == b).then_some(true)
+    // Trees compare structurally, constants by value (not printed text),
+    // with the adjoint of an inverse written one way: (Ad_T)⁻¹ = Ad_{T⁻¹}
+    // (Proposition 3.20), so inv(Ad(T)) == Ad(inv(T)) is true (issue 35).
+    (a == b || adjoint_inverses(a) == adjoint_inverses(b)).then_some(true)
+}
+
+/// `s` with every inverse of an adjoint written as the adjoint of the
+/// inverse.
+fn adjoint_inverses(s: &Sym) -> Sym {
+    use crate::values::symbolic::Role;
+    let go = |x: &Sym| Box::new(adjoint_inverses(x));
+    match s {
+        Sym::Inv(x) => match adjoint_inverses(x) {
+            Sym::Call(f, args) if f.role == Role::Adjoint && args.len() == 1 => {
+                Sym::Call(f, vec![args[0].clone().inverse()])
+            }
+            x => x.inverse(),
+        },
+        Sym::Call(f, args) => Sym::Call(*f, args.iter().map(adjoint_inverses).collect()),
+        Sym::Product(xs) => Sym::product(xs.iter().map(adjoint_inverses).collect()),
+        Sym::Transpose(x) => Sym::Transpose(go(x)),
+        Sym::Neg(x) => Sym::Neg(go(x)),
+        Sym::Add(x, y) => Sym::Add(go(x), go(y)),
+        Sym::Sub(x, y) => Sym::Sub(go(x), go(y)),
+        other => other.clone(),
+    }
 }
 
 /// `a == b` on numbers (LANGUAGE.md §3, §7): by their exact forms when

@@ -60,6 +60,35 @@ pub fn compare_rule(l: &Ty, r: &Ty) -> Result<Ty, RuleError> {
     Ok(Ty::plain(Kind::Bool))
 }
 
+/// True for the literal `0`.
+fn literal_zero(e: &Expr) -> bool {
+    matches!(&e.kind, ExprKind::Number(x) if *x == 0.0)
+}
+
+impl Interp<'_> {
+    /// The zero vector or matrix of the shape of `t` (not a scalar), for
+    /// the `0` of `M == 0`; None when `t` has no such shape.
+    fn zero_like(&self, t: &Typed) -> Option<Typed> {
+        let (Some(r), Some(c)) = t.ty.kind.shape()? else {
+            return None;
+        };
+        if (r, c) == (1, 1) {
+            return None;
+        }
+        let kind = if c == 1 {
+            Kind::Vector(Some(r))
+        } else {
+            Kind::Matrix(Some(r), Some(c))
+        };
+        let val = self.running().then(|| Value::Num {
+            kind,
+            m: crate::values::num::Num::zeros(r, c),
+            exact: crate::values::exact::Exact::Typed,
+        });
+        Some(Typed::new(Ty::plain(kind), val))
+    }
+}
+
 /// True when both sides are numbers (no symbol to wait for).
 fn numbers(a: &Value, b: &Value) -> bool {
     matches!(a, Value::Num { .. }) && matches!(b, Value::Num { .. })
@@ -91,7 +120,11 @@ impl Interp<'_> {
         let sides = self.sides(op, lhs, rhs, op_span)?;
         // (over symbols, the bool is decided again once they have numbers)
         let val = match (sides.verdict, sides.l.value(), sides.r.value()) {
-            (Some(v), Some(a), Some(b)) => Some(crate::values::recipe::compared(v, op, a, b)),
+            (Some(v), Some(a), Some(b)) => Some(match self.lowered_sides(a, b, op_span) {
+                // (over given vectors: their components, decided again)
+                Some((x, y)) => crate::values::recipe::compared(v, op, &x, &y),
+                None => crate::values::recipe::compared(v, op, a, b),
+            }),
             // Undecided while its symbols are free: a bool that waits for
             // their numbers and is then decided as typed first (§7).
             (None, Some(a), Some(b)) if sides.undecided => {
@@ -197,6 +230,18 @@ impl Interp<'_> {
     ) -> Result<Sides, Diagnostic> {
         // `R Rᵀ == I`: an `I` takes its size from the other side, as in a sum.
         let (l, r) = self.operands(BinOp::Sub, lhs, rhs)?;
+        // `M == 0`: a 0 stands for the zero matrix that fits (§7)
+        let (l, r) = match (literal_zero(lhs), literal_zero(rhs), op.is_order()) {
+            (false, true, false) => {
+                let z = self.zero_like(&l);
+                (l, z.unwrap_or(r))
+            }
+            (true, false, false) => {
+                let z = self.zero_like(&r);
+                (z.unwrap_or(l), r)
+            }
+            _ => (l, r),
+        };
         let rule = if op.is_order() {
             crate::decide::order::order_rule
         } else {

@@ -322,6 +322,28 @@ impl Interp<'_> {
         Some(super::compare::equal(&x, &y, op))
     }
 
+    /// The sides of a comparison decided over trees of `given` vectors,
+    /// computed in closed form (their components u[1], u[2], …) for the
+    /// bool to be decided again when the vectors get numbers, as over
+    /// scalars (§7, issue 35: `d = u[1] == 0.6; u = (0.6, 0, 0.8); d` was
+    /// false). None where no side is a tree, or where a side's closed form
+    /// assumed a unit axis (its canonical form holds the assumption, not
+    /// the numbers bound later).
+    pub(super) fn lowered_sides(&self, a: &Value, b: &Value, span: Span) -> Option<(Value, Value)> {
+        if !matches!(a, Value::Sym(_)) && !matches!(b, Value::Sym(_)) {
+            return None;
+        }
+        let side = |v: &Value| match v {
+            Value::Sym(s) => {
+                let (x, assumed) = self.lower(s, false, span)?;
+                assumed.axes.borrow().is_empty().then_some(x)
+            }
+            v @ (Value::Num { .. } | Value::Formula { .. }) => Some(v.clone()),
+            _ => None,
+        };
+        Some((side(a)?, side(b)?))
+    }
+
     /// A statement's value as shown: a tree computed in closed form where
     /// [`Interp::lower`] gives one, with the note of the axes assumed to
     /// be unit vectors. The binding keeps the tree.

@@ -306,6 +306,27 @@ fn symbols_of(m: &Mat, how: Option<&Rc<recipe::Recipe>>) -> Vec<Symbol> {
 
 /// The value bound to a symbol now, if it is a number.
 pub(super) fn bound(env: &Env, s: &Symbol) -> Option<Value> {
+    // (a component u[i] of a given vector: entry i of the numbers bound
+    // to u, so that a bool over u[1] is decided again, issue 35)
+    if s.index > 0 && s.dots == 0 && s.time.is_none() {
+        return match env.get(&*s.name) {
+            Some(Binding {
+                val: Some(v @ Value::Num { m, .. }),
+                ..
+            }) if m.ncols() == 1 && usize::from(s.index) <= m.nrows() => {
+                let i = usize::from(s.index) - 1;
+                // (exact where the vector is: u = (0.6, 0, 0.8) as typed)
+                Some(match v.exact_form() {
+                    Some(f) if f.data.len() == m.nrows() => super::formula::make(
+                        &crate::check::ty::Kind::Scalar,
+                        crate::sym::Mat::scalar(f.data[i].clone()),
+                    ),
+                    _ => Value::scalar(m[(i, 0)]),
+                })
+            }
+            _ => None,
+        };
+    }
     match env.get(&*super::formula::binding_name(s)) {
         Some(Binding {
             val: Some(v @ Value::Num { .. }),

@@ -276,7 +276,18 @@ impl M {
 
     fn source(&self) -> String {
         match self {
-            M::Rot(k, s) => format!("Rot{}({})", ["x", "y", "z"][*k as usize], s.source()),
+            // (every spelling of an axis rotation, issue 35: `Rotx(θ)`, the
+            // axis keyword `Rot(x, θ)`, `exp([(1, 0, 0)] θ)`)
+            M::Rot(k, s) => {
+                let axis = ["x", "y", "z"][*k as usize];
+                let unit = ["(1, 0, 0)", "(0, 1, 0)", "(0, 0, 1)"][*k as usize];
+                let src = s.source();
+                match src.len() % 3 {
+                    0 => format!("Rot{axis}({src})"),
+                    1 => format!("Rot({axis}, {src})"),
+                    _ => format!("exp([{unit}] * {src})"),
+                }
+            }
             M::RotW(w, s) => format!("Rot({}, {})", vec_src(*w), s.source()),
             M::ExpW(k, s) => format!("exp([{}] * {})", AXES[*k].1, s.source()),
             M::ExpS(k, v, s) => {
