@@ -218,14 +218,14 @@ fn last_step_is_the_statement_value_bit_for_bit() {
             let explained = outs[n - 2].as_ref().unwrap();
             let plain = outs[n - 1].as_ref().unwrap();
             let last = explained
-                .steps
+                .steps()
                 .last()
                 .unwrap_or_else(|| panic!("no steps: {e}"));
             let value = plain.val.as_deref().unwrap();
             assert_eq!(numbers(&last.value), numbers(value), "{e}");
-            assert!(explained.steps.len() >= 2, "{e}");
+            assert!(explained.steps().len() >= 2, "{e}");
             assert!(
-                explained.steps.iter().all(|s| !s.reference.is_empty()),
+                explained.steps().iter().all(|s| !s.reference.is_empty()),
                 "{e}"
             );
         }
@@ -242,7 +242,7 @@ fn last_outcome(src: &str) -> chasles::eval::interp::Outcome {
 }
 
 fn shown<'a>(o: &'a chasles::eval::interp::Outcome, name: &str) -> &'a Value {
-    &o.steps
+    &o.steps()
         .iter()
         .find(|s| s.name == name)
         .unwrap_or_else(|| panic!("no step {name}"))
@@ -301,12 +301,12 @@ fn diff_steps_end_with_the_derivative() {
     );
     let explained = outs.pop().unwrap().unwrap();
     let plain = outs.pop().unwrap().unwrap();
-    let texts: Vec<&str> = explained.steps.iter().map(|s| s.text.as_str()).collect();
-    assert_eq!(explained.steps.len(), 7, "{texts:?}");
+    let texts: Vec<&str> = explained.steps().iter().map(|s| s.text.as_str()).collect();
+    assert_eq!(explained.steps().len(), 7, "{texts:?}");
     assert!(texts[1].contains("chain rule"), "{texts:?}");
     assert!(texts[2].contains("power rule"), "{texts:?}");
     assert!(texts[6].contains("sum rule"), "{texts:?}");
-    assert_eq!(&explained.steps[6].value, plain.val.as_deref().unwrap());
+    assert_eq!(&explained.steps()[6].value, plain.val.as_deref().unwrap());
 }
 
 /// Grübler (2.4): the counts and dof as numbers (Example 2.1, the four-bar).
@@ -318,5 +318,5 @@ fn grubler_steps_have_the_counts() {
         (n("m"), n("N"), n("J"), n("f_i"), n("dof")),
         (3.0, 4.0, 4.0, 4.0, 1.0)
     );
-    assert_eq!(o.steps.last().unwrap().reference, "2.4");
+    assert_eq!(o.steps().last().unwrap().reference, "2.4");
 }

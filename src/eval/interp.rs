@@ -168,7 +168,7 @@ impl<'a> Interp<'a> {
             prints: true,
             parts: Vec::new(),
             labels: &[],
-            steps: Vec::new(),
+            steps: None,
         };
         match &s.kind {
             StmtKind::Expr(e) => {
@@ -319,7 +319,7 @@ impl<'a> Interp<'a> {
                 let mut o = out(Names::Many(Vec::new()), t);
                 o.labels = self.part_labels(e);
                 self.shown(&mut o.val, s.span);
-                o.steps = steps;
+                o.steps = (!steps.is_empty()).then(|| Box::new(steps));
                 Ok(o)
             }
             StmtKind::Derive { target } => {
