@@ -320,3 +320,102 @@ fn grubler_steps_have_the_counts() {
     );
     assert_eq!(o.steps().last().unwrap().reference, "2.4");
 }
+
+mod common;
+
+/// `--json`: the statement's object carries `steps`, each with `ref`,
+/// `name`, `text` and `value` (LANGUAGE.md §14), for each branch of the
+/// logs as the book's library takes them: the general case, R = I, and
+/// θ = π with the sub-cases (3.58), (3.59), (3.60).
+#[test]
+fn json_steps_name_the_branch_and_the_equation() {
+    let cases = [
+        ("explain log(Rotz(1))", "general", "3.61", [0.0, 0.0, 1.0]),
+        (
+            "explain log(Rotz(pi))",
+            "half_turn_3.58",
+            "3.58",
+            [0.0, 0.0, 1.0],
+        ),
+        (
+            "explain log(Roty(pi))",
+            "half_turn_3.59",
+            "3.59",
+            [0.0, 1.0, 0.0],
+        ),
+        (
+            "explain log(Rotx(pi))",
+            "half_turn_3.60",
+            "3.60",
+            [1.0, 0.0, 0.0],
+        ),
+    ];
+    for (src, case, eq, w) in cases {
+        let lines = common::json(src);
+        let steps = lines[0]["steps"].as_array().expect("steps");
+        for s in steps {
+            for key in ["ref", "name", "text", "value"] {
+                assert!(s.get(key).is_some(), "{src}: {s} has no {key}");
+            }
+        }
+        let by = |name: &str| {
+            steps
+                .iter()
+                .find(|s| s["name"] == name)
+                .unwrap_or_else(|| panic!("{src}: no {name}"))
+        };
+        assert_eq!(by("case")["value"], case, "{src}");
+        assert_eq!(by("omega_hat")["ref"], eq, "{src}");
+        assert_eq!(
+            common::numbers(&by("omega_hat")["value"]),
+            w.to_vec(),
+            "{src}"
+        );
+        assert_eq!(by("trace")["ref"], "3.54");
+        // the last step is the statement's value
+        assert_eq!(steps.last().unwrap()["value"], lines[0]["value"], "{src}");
+    }
+    // R = I: case (i); a pure translation: θ = ‖p‖, v = p/‖p‖ (§3.3.3.2)
+    let lines = common::json("explain MatrixLog6(Trans((3, 0, 4)))");
+    let steps = lines[0]["steps"].as_array().unwrap();
+    let by = |name: &str| steps.iter().find(|s| s["name"] == name).unwrap();
+    assert_eq!(by("case")["value"], "pure_translation");
+    assert_eq!(by("theta")["value"], 5);
+    assert_eq!(common::numbers(&by("v")["value"]), vec![0.6, 0.0, 0.8]);
+    // G⁻¹ (3.94) and v (3.93) of the book's MatrixLog6 docstring
+    let lines =
+        common::json("explain MatrixLog6([1, 0, 0, 0; 0, 0, -1, 0; 0, 1, 0, 3; 0, 0, 0, 1])");
+    let steps = lines[0]["steps"].as_array().unwrap();
+    let by = |name: &str| steps.iter().find(|s| s["name"] == name).unwrap();
+    assert_eq!(by("G_inv")["ref"], "3.94");
+    assert_eq!(by("v")["ref"], "3.93");
+    let v = common::numbers(&by("v")["value"]);
+    assert!(
+        (v[1] - 1.5).abs() < 1e-12 && (v[2] - 1.5).abs() < 1e-12,
+        "{v:?}"
+    );
+    // screw axis from q, ŝ, h and Grübler's dof
+    let lines = common::json(
+        "explain ScrewToAxis((3, 0, 0), (0, 0, 1), 2)\nexplain mech < links 4; joints 4R; planar >",
+    );
+    let names: Vec<&str> = lines[0]["steps"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| s["name"].as_str().unwrap())
+        .collect();
+    assert!(
+        ["q", "s_hat", "h"].iter().all(|n| names.contains(n)),
+        "{names:?}"
+    );
+    let dof = lines[1]["steps"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|s| s["name"] == "dof")
+        .unwrap();
+    assert_eq!(
+        (dof["ref"].as_str(), dof["value"].as_i64()),
+        (Some("2.4"), Some(1))
+    );
+}
