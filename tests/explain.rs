@@ -419,3 +419,15 @@ fn json_steps_name_the_branch_and_the_equation() {
         (Some("2.4"), Some(1))
     );
 }
+
+/// The exponential of a matrix that is not in so(3) or se(3) is not
+/// Rodrigues' formula or Prop. 3.16: explain refuses rather than show the
+/// wrong algorithm's steps; the value itself is still computed by `exp`.
+#[test]
+fn exp_of_a_general_matrix_is_not_explained_as_rodrigues() {
+    let err = common::error("explain exp([1, 2, 0; 0, 1, 0; 0, 0, 1])");
+    assert!(err.contains("no book algorithm"), "{err}");
+    assert!(common::try_json("exp([1, 2, 0; 0, 1, 0; 0, 0, 1])").is_ok());
+    let err = common::error("explain exp([1, 0, 0, 1; 0, 1, 0, 0; 0, 0, 1, 0; 0, 0, 0, 1])");
+    assert!(err.contains("no book algorithm"), "{err}");
+}
