@@ -431,3 +431,14 @@ fn exp_of_a_general_matrix_is_not_explained_as_rodrigues() {
     let err = common::error("explain exp([1, 0, 0, 1; 0, 1, 0, 0; 0, 0, 1, 0; 0, 0, 0, 1])");
     assert!(err.contains("no book algorithm"), "{err}");
 }
+
+/// T⁻¹A with A not a derivative of T whose product is not in se(3) is not
+/// a twist (3.72): it is shown as the product it is, never as ω_b and v_b.
+#[test]
+fn a_product_that_is_not_a_twist_is_not_explained_as_one() {
+    let src = "T = [Rotz(1), (1, 2, 3); 0, 1]\nA = [1, 2, 0, 1; 0, 1, 0, 0; 0, 0, 1, 0; 0, 0, 0, 0]\nexplain inv(T) A";
+    let lines = common::json(src);
+    let steps = lines[2]["steps"].as_array().unwrap();
+    assert!(steps.iter().all(|s| s["name"] != "omega_b"), "{steps:?}");
+    assert_eq!(steps.last().unwrap()["name"], "chain");
+}
