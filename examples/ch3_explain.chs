@@ -59,6 +59,8 @@ explain exp([S] (pi/2)) M
 T_t = RpToTrans(Rotz(t), [1; 2; 0])
 explain inv(T_t)
 explain Ad(T_t)
+# and its logarithm, on the branch the note names (§3.3.3.2)
+explain MatrixLog6(T_t)
 
 # --- §3.3.2: twists from Ṫ, T⁻¹Ṫ = [V_b] (3.72) and ṪT⁻¹ = [V_s] (3.73) --
 given q(t) : scalar

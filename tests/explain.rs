@@ -218,14 +218,14 @@ fn last_step_is_the_statement_value_bit_for_bit() {
             let explained = outs[n - 2].as_ref().unwrap();
             let plain = outs[n - 1].as_ref().unwrap();
             let last = explained
-                .steps
+                .steps()
                 .last()
                 .unwrap_or_else(|| panic!("no steps: {e}"));
             let value = plain.val.as_deref().unwrap();
             assert_eq!(numbers(&last.value), numbers(value), "{e}");
-            assert!(explained.steps.len() >= 2, "{e}");
+            assert!(explained.steps().len() >= 2, "{e}");
             assert!(
-                explained.steps.iter().all(|s| !s.reference.is_empty()),
+                explained.steps().iter().all(|s| !s.reference.is_empty()),
                 "{e}"
             );
         }
@@ -242,7 +242,7 @@ fn last_outcome(src: &str) -> chasles::eval::interp::Outcome {
 }
 
 fn shown<'a>(o: &'a chasles::eval::interp::Outcome, name: &str) -> &'a Value {
-    &o.steps
+    &o.steps()
         .iter()
         .find(|s| s.name == name)
         .unwrap_or_else(|| panic!("no step {name}"))
@@ -301,12 +301,12 @@ fn diff_steps_end_with_the_derivative() {
     );
     let explained = outs.pop().unwrap().unwrap();
     let plain = outs.pop().unwrap().unwrap();
-    let texts: Vec<&str> = explained.steps.iter().map(|s| s.text.as_str()).collect();
-    assert_eq!(explained.steps.len(), 7, "{texts:?}");
+    let texts: Vec<&str> = explained.steps().iter().map(|s| s.text.as_str()).collect();
+    assert_eq!(explained.steps().len(), 7, "{texts:?}");
     assert!(texts[1].contains("chain rule"), "{texts:?}");
     assert!(texts[2].contains("power rule"), "{texts:?}");
     assert!(texts[6].contains("sum rule"), "{texts:?}");
-    assert_eq!(&explained.steps[6].value, plain.val.as_deref().unwrap());
+    assert_eq!(&explained.steps()[6].value, plain.val.as_deref().unwrap());
 }
 
 /// Grübler (2.4): the counts and dof as numbers (Example 2.1, the four-bar).
@@ -318,5 +318,127 @@ fn grubler_steps_have_the_counts() {
         (n("m"), n("N"), n("J"), n("f_i"), n("dof")),
         (3.0, 4.0, 4.0, 4.0, 1.0)
     );
-    assert_eq!(o.steps.last().unwrap().reference, "2.4");
+    assert_eq!(o.steps().last().unwrap().reference, "2.4");
+}
+
+mod common;
+
+/// `--json`: the statement's object carries `steps`, each with `ref`,
+/// `name`, `text` and `value` (LANGUAGE.md §14), for each branch of the
+/// logs as the book's library takes them: the general case, R = I, and
+/// θ = π with the sub-cases (3.58), (3.59), (3.60).
+#[test]
+fn json_steps_name_the_branch_and_the_equation() {
+    let cases = [
+        ("explain log(Rotz(1))", "general", "3.61", [0.0, 0.0, 1.0]),
+        (
+            "explain log(Rotz(pi))",
+            "half_turn_3.58",
+            "3.58",
+            [0.0, 0.0, 1.0],
+        ),
+        (
+            "explain log(Roty(pi))",
+            "half_turn_3.59",
+            "3.59",
+            [0.0, 1.0, 0.0],
+        ),
+        (
+            "explain log(Rotx(pi))",
+            "half_turn_3.60",
+            "3.60",
+            [1.0, 0.0, 0.0],
+        ),
+    ];
+    for (src, case, eq, w) in cases {
+        let lines = common::json(src);
+        let steps = lines[0]["steps"].as_array().expect("steps");
+        for s in steps {
+            for key in ["ref", "name", "text", "value"] {
+                assert!(s.get(key).is_some(), "{src}: {s} has no {key}");
+            }
+        }
+        let by = |name: &str| {
+            steps
+                .iter()
+                .find(|s| s["name"] == name)
+                .unwrap_or_else(|| panic!("{src}: no {name}"))
+        };
+        assert_eq!(by("case")["value"], case, "{src}");
+        assert_eq!(by("omega_hat")["ref"], eq, "{src}");
+        assert_eq!(
+            common::numbers(&by("omega_hat")["value"]),
+            w.to_vec(),
+            "{src}"
+        );
+        assert_eq!(by("trace")["ref"], "3.54");
+        // the last step is the statement's value
+        assert_eq!(steps.last().unwrap()["value"], lines[0]["value"], "{src}");
+    }
+    // R = I: case (i); a pure translation: θ = ‖p‖, v = p/‖p‖ (§3.3.3.2)
+    let lines = common::json("explain MatrixLog6(Trans((3, 0, 4)))");
+    let steps = lines[0]["steps"].as_array().unwrap();
+    let by = |name: &str| steps.iter().find(|s| s["name"] == name).unwrap();
+    assert_eq!(by("case")["value"], "pure_translation");
+    assert_eq!(by("theta")["value"], 5);
+    assert_eq!(common::numbers(&by("v")["value"]), vec![0.6, 0.0, 0.8]);
+    // G⁻¹ (3.94) and v (3.93) of the book's MatrixLog6 docstring
+    let lines =
+        common::json("explain MatrixLog6([1, 0, 0, 0; 0, 0, -1, 0; 0, 1, 0, 3; 0, 0, 0, 1])");
+    let steps = lines[0]["steps"].as_array().unwrap();
+    let by = |name: &str| steps.iter().find(|s| s["name"] == name).unwrap();
+    assert_eq!(by("G_inv")["ref"], "3.94");
+    assert_eq!(by("v")["ref"], "3.93");
+    let v = common::numbers(&by("v")["value"]);
+    assert!(
+        (v[1] - 1.5).abs() < 1e-12 && (v[2] - 1.5).abs() < 1e-12,
+        "{v:?}"
+    );
+    // screw axis from q, ŝ, h and Grübler's dof
+    let lines = common::json(
+        "explain ScrewToAxis((3, 0, 0), (0, 0, 1), 2)\nexplain mech < links 4; joints 4R; planar >",
+    );
+    let names: Vec<&str> = lines[0]["steps"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| s["name"].as_str().unwrap())
+        .collect();
+    assert!(
+        ["q", "s_hat", "h"].iter().all(|n| names.contains(n)),
+        "{names:?}"
+    );
+    let dof = lines[1]["steps"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|s| s["name"] == "dof")
+        .unwrap();
+    assert_eq!(
+        (dof["ref"].as_str(), dof["value"].as_i64()),
+        (Some("2.4"), Some(1))
+    );
+}
+
+/// The exponential of a matrix that is not in so(3) or se(3) is not
+/// Rodrigues' formula or Prop. 3.16: explain refuses rather than show the
+/// wrong algorithm's steps; the value itself is still computed by `exp`.
+#[test]
+fn exp_of_a_general_matrix_is_not_explained_as_rodrigues() {
+    let err = common::error("explain exp([1, 2, 0; 0, 1, 0; 0, 0, 1])");
+    assert!(err.contains("no book algorithm"), "{err}");
+    assert!(common::try_json("exp([1, 2, 0; 0, 1, 0; 0, 0, 1])").is_ok());
+    let err = common::error("explain exp([1, 0, 0, 1; 0, 1, 0, 0; 0, 0, 1, 0; 0, 0, 0, 1])");
+    assert!(err.contains("no book algorithm"), "{err}");
+}
+
+/// T⁻¹A with A not a derivative of T whose product is not in se(3) is not
+/// a twist (3.72): it is shown as the product it is, never as ω_b and v_b.
+#[test]
+fn a_product_that_is_not_a_twist_is_not_explained_as_one() {
+    let src = "T = [Rotz(1), (1, 2, 3); 0, 1]\nA = [1, 2, 0, 1; 0, 1, 0, 0; 0, 0, 1, 0; 0, 0, 0, 0]\nexplain inv(T) A";
+    let lines = common::json(src);
+    let steps = lines[2]["steps"].as_array().unwrap();
+    assert!(steps.iter().all(|s| s["name"] != "omega_b"), "{steps:?}");
+    assert_eq!(steps.last().unwrap()["name"], "chain");
 }

@@ -169,7 +169,7 @@ impl<'a> Interp<'a> {
             prints: !s.silent,
             parts: Vec::new(),
             labels: &[],
-            steps: Vec::new(),
+            steps: None,
         };
         match &s.kind {
             StmtKind::Expr(e) => {
@@ -320,7 +320,7 @@ impl<'a> Interp<'a> {
                 let mut o = out(Names::Many(Vec::new()), t);
                 o.labels = self.part_labels(e);
                 self.shown(&mut o.val, s.span);
-                o.steps = steps;
+                o.steps = (!steps.is_empty()).then(|| Box::new(steps));
                 Ok(o)
             }
             StmtKind::Derive { target } => {

@@ -26,8 +26,16 @@ pub struct Outcome {
     /// ([`crate::builtins::parts`]), those names, to print `q = …`.
     pub labels: &'static [&'static str],
     /// For `explain EXPR`, the book's steps that compute the value, the
-    /// last being the value itself (LANGUAGE.md §14); empty otherwise.
-    pub steps: Vec<super::explain::Shown>,
+    /// last being the value itself (LANGUAGE.md §14); None otherwise.
+    /// Boxed: every statement moves an `Outcome`, few explain.
+    pub steps: Option<Box<Vec<super::explain::Shown>>>,
+}
+
+impl Outcome {
+    /// The steps of `explain` (empty for any other statement).
+    pub fn steps(&self) -> &[super::explain::Shown] {
+        self.steps.as_deref().map_or(&[], Vec::as_slice)
+    }
 }
 
 /// The names a statement bound, in order: read as a slice of names. One

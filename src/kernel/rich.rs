@@ -48,8 +48,8 @@ pub fn bundle(o: &Outcome, line: usize, settings: &Settings) -> Option<Map<Strin
 /// None for values that read as well in text (numbers, tuples, lists,
 /// mechanisms, pictures).
 pub fn outcome_latex(o: &Outcome, style: Style) -> Option<String> {
-    if !o.steps.is_empty() {
-        return Some(crate::output::steps::latex(&o.steps, style));
+    if !o.steps().is_empty() {
+        return Some(crate::output::steps::latex(o.steps(), style));
     }
     let v = o.val.as_deref()?;
     let body = value_latex(v, style)?;

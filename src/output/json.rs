@@ -95,8 +95,8 @@ pub fn outcome(o: &Outcome, line: usize) -> Option<J> {
         obj.insert("kind".into(), json!(kind.json_name()));
     }
     // `explain`: the book's steps (§14)
-    if let (false, Some(obj)) = (o.steps.is_empty(), out.as_object_mut()) {
-        obj.insert("steps".into(), super::steps::json(&o.steps));
+    if let (Some(steps), Some(obj)) = (o.steps.as_deref(), out.as_object_mut()) {
+        obj.insert("steps".into(), super::steps::json(steps));
     }
     // a call kept over its symbols is what the checker says it is
     if let (Some(Value::Sym(_)), Some(obj)) = (o.val.as_deref(), out.as_object_mut()) {

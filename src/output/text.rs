@@ -396,11 +396,11 @@ pub fn show_outcome(o: &Outcome, style: impl Into<Style>) -> String {
         return String::new();
     }
     // `explain`: the steps, the last of which is the value (§14).
-    if !o.steps.is_empty() {
+    if let Some(steps) = o.steps.as_deref() {
         return if style.sym == crate::sym::print::Mode::Latex {
-            super::steps::latex(&o.steps, style)
+            super::steps::latex(steps, style)
         } else {
-            super::steps::text(&o.steps, style)
+            super::steps::text(steps, style)
         };
     }
     // Room for a 4×4 matrix with its name and label, so printing one

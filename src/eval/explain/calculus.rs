@@ -47,15 +47,23 @@ fn omega(v: &Value) -> Option<Value> {
     }
 }
 
-/// Whether a value is a 4×4 matrix whose last row is zero (an se(3) shape).
+/// Whether a value is in se(3): a 4×4 matrix with a skew-symmetric
+/// rotation block (to rounding, or exactly for symbols) and a zero last
+/// row — what T⁻¹Ṫ and ṪT⁻¹ are (3.72), (3.73).
 fn se3_shaped(v: &Value) -> bool {
     match v {
         Value::Num { m, .. } if m.shape() == (4, 4) => {
             let d = m.to_dmatrix();
+            let big = d.amax().max(1.0);
             (0..4).all(|j| d[(3, j)] == 0.0)
+                && (0..3).all(|i| (0..3).all(|j| (d[(i, j)] + d[(j, i)]).abs() <= 1e-9 * big))
         }
         Value::Formula { m, .. } if (m.rows, m.cols) == (4, 4) => {
-            (0..4).all(|j| num_traits::Zero::is_zero(m.get(3, j)))
+            let w = m.block(0..3, 0..3);
+            let skew = w
+                .add(&w.transpose(), false)
+                .is_some_and(|s| s.data.iter().all(num_traits::Zero::is_zero));
+            skew && (0..4).all(|j| num_traits::Zero::is_zero(m.get(3, j)))
         }
         _ => false,
     }

@@ -135,14 +135,31 @@ fn planar(v: &Value) -> Option<Mat4> {
     Some(t)
 }
 
-/// A 3-vector or the vee of an so(3) matrix (exponential coordinates).
-fn expc3(v: &Value) -> Option<Vec3> {
-    mat::<3, 1>(v).or_else(|| mat::<3, 3>(v).map(|m| crate::lie::so3::vee(&m)))
+/// Whether a 3×3 block is skew-symmetric (to rounding): an element of so(3).
+fn skew(m: &Mat3) -> bool {
+    (m + m.transpose()).amax() <= 1e-12 * m.amax().max(1.0)
 }
 
-/// A 6-vector or the vee of an se(3) matrix.
+/// A 3-vector or the vee of an so(3) matrix (exponential coordinates);
+/// None for a 3×3 matrix that is not in so(3) (its exp is not (3.51)).
+fn expc3(v: &Value) -> Option<Vec3> {
+    mat::<3, 1>(v).or_else(|| {
+        mat::<3, 3>(v)
+            .filter(skew)
+            .map(|m| crate::lie::so3::vee(&m))
+    })
+}
+
+/// A 6-vector or the vee of an se(3) matrix; None for a 4×4 matrix that
+/// is not in se(3) (its exp is not Prop. 3.16).
 fn expc6(v: &Value) -> Option<Vec6> {
-    mat::<6, 1>(v).or_else(|| mat::<4, 4>(v).map(|m| crate::lie::se3::vee(&m)))
+    mat::<6, 1>(v).or_else(|| {
+        mat::<4, 4>(v)
+            .filter(|m| {
+                skew(&m.fixed_view::<3, 3>(0, 0).into_owned()) && (0..4).all(|j| m[(3, j)] == 0.0)
+            })
+            .map(|m| crate::lie::se3::vee(&m))
+    })
 }
 
 impl Interp<'_> {
@@ -395,6 +412,9 @@ fn call_steps(name: &str, args: &[Value]) -> Option<Vec<Step>> {
             }
             steps::exp::exp3(&(axis * (theta / n)))
         }
+        // ScrewToAxis takes a finite pitch (the book's software); `screw`
+        // also h = ∞, the pure translation (0, ŝ)
+        "ScrewToAxis" if args.get(2)?.as_scalar()?.is_infinite() => return None,
         "ScrewToAxis" | "screw" => {
             let (q, s, h) = (
                 mat::<3, 1>(a0)?,

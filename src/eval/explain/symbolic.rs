@@ -89,6 +89,82 @@ fn inverse_or_adjoint(name: &str, shape: (usize, usize), value: &Value) -> Optio
     })
 }
 
+/// The closed form of a log over symbols (§3.2.3.3, §3.3.3.2): tr R
+/// (3.54), p, and the parts of the value ([ω̂]θ, vθ) as the book names
+/// them; the branch assumed is the statement's note.
+fn log_steps(input: &Value, value: &Value) -> Option<Vec<Shown>> {
+    let r = formula::mat_of(input)?;
+    let v = formula::mat_of(value)?;
+    let v3 = Kind::Vector(Some(3));
+    let trace = shown(
+        "3.54",
+        "trace",
+        "tr R = r₁₁ + r₂₂ + r₃₃ = 1 + 2 cos θ",
+        r"\operatorname{tr} R = 1 + 2\cos\theta",
+        formula::scalar(r.block(0..3, 0..3).trace()),
+    );
+    let expc3 = |m: &crate::sym::Mat| {
+        formula::make(&v3, crate::sym::Mat::column(crate::sym::matrix::unskew(m)))
+    };
+    let mut out = Vec::new();
+    match ((r.rows, r.cols), (v.rows, v.cols)) {
+        ((3, 3), (3, 3)) => {
+            out.push(trace);
+            out.push(shown(
+                "3.2.3.3",
+                "expc",
+                "ω̂θ (exponential coordinates)",
+                r"\hat\omega\theta",
+                expc3(&v),
+            ));
+        }
+        ((3, 3), (3, 1)) => out.push(trace),
+        ((4, 4), shape) => {
+            out.push(shown(
+                "3.62",
+                "p",
+                "T = [R, p; 0, 1]: p",
+                "p",
+                formula::make(&v3, r.block(0..3, 3..4)),
+            ));
+            out.push(trace);
+            let (w, vt) = if shape == (4, 4) {
+                (expc3(&v.block(0..3, 0..3)), v.block(0..3, 3..4))
+            } else {
+                (formula::make(&v3, v.block(0..3, 0..1)), v.block(3..6, 0..1))
+            };
+            out.push(shown(
+                "3.2.3.3",
+                "expc3",
+                "ω̂θ of the rotation",
+                r"\hat\omega\theta",
+                w,
+            ));
+            out.push(shown(
+                "3.93",
+                "v_theta",
+                "vθ = θG⁻¹(θ)p (3.93), (3.94)",
+                r"v\theta = \theta G^{-1}(\theta) p",
+                formula::make(&v3, vt),
+            ));
+        }
+        _ => return None,
+    }
+    let name = match (v.rows, v.cols) {
+        (3, 3) => "so3",
+        (4, 4) => "se3",
+        _ => "expc",
+    };
+    out.push(shown(
+        "3.2.3.3",
+        name,
+        "the logarithm",
+        r"\log",
+        value.clone(),
+    ));
+    Some(out)
+}
+
 impl Interp<'_> {
     /// The closed-form steps of `name(arg)` whose value is symbolic, None
     /// when there is none to show.
@@ -103,6 +179,10 @@ impl Interp<'_> {
         };
         if let Some(steps) = inverse_or_adjoint(name, (m.rows, m.cols), value) {
             return Ok(Some(steps));
+        }
+        if matches!(name, "log" | "MatrixLog3" | "MatrixLog6") {
+            let input = self.quiet_values(std::slice::from_ref(arg))?;
+            return Ok(input.first().and_then(|a| log_steps(a, value)));
         }
         if !matches!(name, "exp" | "MatrixExp3" | "MatrixExp6") {
             return Ok(None);
