@@ -284,6 +284,7 @@ fn run_sources(sources: &[(String, String)], mode: Mode, opts: &Opts) -> i32 {
     let settings = opts.settings();
     let mut session = Session::new(settings);
     session.budget = opts.budget();
+    session.quiet = opts.quiet;
     if mode == Mode::Run {
         match gate(opts) {
             Ok(g) => session.gate = g,
@@ -298,9 +299,8 @@ fn run_sources(sources: &[(String, String)], mode: Mode, opts: &Opts) -> i32 {
         let keep_going = opts.keep_going || mode == Mode::Check;
         errors += session.run(src, mode, keep_going, |r| {
             statements += 1;
-            // `check` prints only errors and its summary (or JSON lines);
-            // `--quiet` only errors (a failed assert is one) and warnings.
-            if (mode == Mode::Run || settings.json) && !(opts.quiet && r.result.is_ok()) {
+            // `check` prints only errors and its summary (or JSON lines).
+            if mode == Mode::Run || settings.json {
                 let text = r.stdout(&settings, src);
                 if !text.is_empty() {
                     emit(&mut out, &text);
