@@ -137,6 +137,10 @@ pub struct Session {
     /// Whether the last [`Session::run`] was stopped by an interrupt (its
     /// statement bound nothing and was not reported).
     pub interrupted: bool,
+    /// `--quiet` (LANGUAGE.md §1): every statement as if ended by `;` —
+    /// no value printed, no printed picture written; errors and warnings
+    /// still reported.
+    pub quiet: bool,
 }
 
 impl Session {
@@ -149,6 +153,7 @@ impl Session {
             last_picture: None,
             budget: Budget::new(),
             interrupted: false,
+            quiet: false,
         }
     }
 
@@ -293,6 +298,7 @@ impl Session {
                     match &mut report.result {
                         Err(d) => add_habit_help(d, src),
                         Ok(o) => {
+                            o.prints &= !self.quiet;
                             // Only a picture has more to do (checked here,
                             // without the call, for every other value).
                             if matches!(o.val.as_deref(), Some(Value::Picture(_))) {

@@ -128,6 +128,20 @@ fn a_silent_save_writes_and_a_silent_picture_is_not_printed() {
 }
 
 #[test]
+fn quiet_is_a_semicolon_on_every_statement() {
+    // A picture only printed is not written; one `save` names is.
+    let dir = scratch("quiet-pictures");
+    let src = "pic = draw(Rotz(1))\nsave(pic, \"kept.svg\")\n";
+    let (code, stdout, stderr) = run_in(&["--quiet", "-e", src], &dir);
+    assert_eq!((code, stdout.as_str()), (0, ""), "{stderr}");
+    assert!(dir.join("kept.svg").is_file());
+    assert!(!dir.join("pic.svg").exists());
+    let (_, loud, _) = run_in(&["-e", src], &dir);
+    assert!(loud.contains("pic.svg"), "{loud}");
+    assert!(dir.join("pic.svg").is_file());
+}
+
+#[test]
 fn check_mode_silences_too() {
     let out = chasles(
         &["check", "--json", "-"],

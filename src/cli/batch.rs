@@ -186,6 +186,7 @@ impl Batch<'_> {
         let mut session = Session::new(settings);
         session.gate = self.gate.clone();
         session.budget = budget;
+        session.quiet = self.opts.quiet;
         let keep_going = self.opts.keep_going || self.mode == Mode::Check;
         let mut suite = Suite::new(name, src);
         let mut last_error = None;
@@ -207,9 +208,8 @@ impl Batch<'_> {
         }
         errors += session.run(src, self.mode, keep_going, |r| {
             statements += 1;
-            // `check` prints only errors and its summary (or JSON lines);
-            // `--quiet` only errors (a failed assert is one) and warnings.
-            if (self.mode == Mode::Run || settings.json) && !(self.opts.quiet && r.result.is_ok()) {
+            // `check` prints only errors and its summary (or JSON lines).
+            if self.mode == Mode::Run || settings.json {
                 let text = r.stdout(&settings, src);
                 if !text.is_empty() {
                     if self.file_key {
