@@ -255,7 +255,11 @@ pub fn eval_symbolic(name: &str, vals: &[Value], kind: &Kind) -> Out {
             ok(scalar(Expr::apply(f, &s(0)?, g)))
         }
         ("diff", 2) => Some(super::table_calculus::diff(&vals[0], &ms[0], &ms[1], kind)),
-        ("simplify" | "expand", 1) => ok(make(&vals[0].kind(), ms[0].map(Expr::cancel))),
+        ("simplify", 1) => ok(make(
+            &vals[0].kind(),
+            ms[0].map(crate::sym::together::simplest),
+        )),
+        ("expand", 1) => ok(make(&vals[0].kind(), ms[0].map(Expr::cancel))),
         ("subs", 3) => Some(super::table_calculus::subs(
             &vals[0], &ms[0], &ms[1], &ms[2],
         )),
