@@ -518,6 +518,10 @@ fn trig_of_inverse_trig_of_symbols() {
         ("tan(atan(x)) == x", true),
         ("sin(asin(x)) == x + 1/1000003", false),
         ("cos(atan(x)) == x/sqrt(1 + x^2)", false),
+        // (log(exp(u)) = u for a real u, exp(log(u)) = u where log u is)
+        ("log(exp(x)) == x", true),
+        ("exp(log(x)) == x", true),
+        ("log(exp(x)) == x + 1/1000003", false),
     ] {
         assert_eq!(
             last(&format!("given x\n{src}")),

@@ -235,6 +235,12 @@ pub fn eval_symbolic(name: &str, vals: &[Value], kind: &Kind) -> Out {
             inverse_map(name, &ms[0])
         }
         ("log" | "MatrixLog6", 1) if shape(0) == (4, 4) => inverse_map(name, &ms[0]),
+        // (log(exp(u)) = u for a real u)
+        ("log", 1)
+            if shape(0) == (1, 1) && crate::sym::inverse::exp_arg(&ms[0].data[0]).is_some() =>
+        {
+            ok(scalar(crate::sym::inverse::exp_arg(&ms[0].data[0])?))
+        }
         ("sin", 1) => ok(scalar(Expr::sin(&s(0)?))),
         ("cos", 1) => ok(scalar(Expr::cos(&s(0)?))),
         ("tan" | "cot" | "sec" | "csc", 1) => ok(scalar(ratio(name, &s(0)?)?)),
