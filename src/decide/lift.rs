@@ -23,6 +23,7 @@ use crate::values::value::Value;
 use std::rc::Rc;
 
 mod cleared;
+mod kept;
 use cleared::cleared_equal;
 
 /// What the canonical forms of both sides' recipes, with their angles
@@ -420,14 +421,8 @@ fn lifted(v: &Value, lift: &mut Lift, depth: u32) -> Option<Mat> {
                     how: None,
                 });
             }
-            // (a square root with no exact form is kept as a call, whose
-            // square is its argument: sin(π/5) against √((5 − √5)/8))
-            if let (Operation::Call(name), [Value::Formula { m, .. }]) = (&p.op, &forms[..])
-                && crate::builtins::lookup(name).is_some_and(|b| b.name == "sqrt")
-                && m.data.len() == 1
-                && self::exact(&m.data[0])
-            {
-                return Some(Mat::scalar(Expr::sqrt_kept(&m.data[0])));
+            if let Some(m) = kept::kept(&p.op, &forms) {
+                return Some(m);
             }
             crate::seam::exactness::formula_of(&p.op, forms, &p.kind)
         })
