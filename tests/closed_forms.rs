@@ -373,3 +373,46 @@ fn half_angles_fold_and_compare() {
         ]
     );
 }
+
+/// `simplify` over one denominator where that prints shorter (issue 35:
+/// SymPy's forms), and reciprocals of powers met as powers of one
+/// reciprocal (`1/cos² − tan²` is 1).
+#[test]
+fn simplify_over_one_denominator_when_shorter() {
+    let out = lines(
+        "given x\nsimplify(1 + tan(x)^2)\nsimplify(1/cos(x)^2 - 1)\nsimplify(1 - 1/sin(x)^2)\nsimplify(1/cos(x)^2 - tan(x)^2)\nsimplify(1/sin(x)^2 - cot(x)^2)\nsimplify(tan(x) + 1)",
+    );
+    assert_eq!(
+        out,
+        [
+            "1/cos(x)^2",
+            "tan(x)^2",
+            "-cot(x)^2",
+            "1",
+            "1",
+            "1 + tan(x)"
+        ]
+    );
+    // each is its value
+    let (out, _) =
+        outputs("given x\nx = 0.7\nsimplify(1 + tan(x)^2) == 1/cos(x)^2\n1/cos(x)^2 - tan(x)^2");
+    assert!(out.lines().last().unwrap().starts_with("1"), "{out}");
+}
+
+/// A power with a sum, product or fraction in its exponent prints it in
+/// parentheses, so the text read back is the same value (issue 35:
+/// `x^(2 + y)` printed `x^2 + y`, `3^(x/2)` printed `3^(1/2) x`).
+#[test]
+fn symbolic_exponents_print_parenthesized() {
+    let out = lines("given x, y\nx^(2 + y)\n2^(2*x)\n3^(x/2)\n(-2)^x\n2^x");
+    assert_eq!(
+        out,
+        ["x^(2 + y)", "2^(2 x)", "3^((1/2) x)", "(-2)^x", "2^x"]
+    );
+    // read back at numbers: the printed text is the value
+    for (typed, shown) in [("x^(2 + y)", "x^(2 + y)"), ("3^(x/2)", "3^((1/2) x)")] {
+        let a = lines(&format!("x = 1.3\ny = 0.4\n{typed}"));
+        let b = lines(&format!("x = 1.3\ny = 0.4\n{shown}"));
+        assert_eq!(a, b, "{typed} against {shown}");
+    }
+}

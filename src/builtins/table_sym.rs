@@ -240,6 +240,12 @@ pub fn eval_symbolic(name: &str, vals: &[Value], kind: &Kind) -> Out {
             inverse_map(name, &ms[0])
         }
         ("log" | "MatrixLog6", 1) if shape(0) == (4, 4) => inverse_map(name, &ms[0]),
+        // (log(exp(u)) = u for a real u)
+        ("log", 1)
+            if shape(0) == (1, 1) && crate::sym::inverse::exp_arg(&ms[0].data[0]).is_some() =>
+        {
+            ok(scalar(crate::sym::inverse::exp_arg(&ms[0].data[0])?))
+        }
         ("sin", 1) => ok(scalar(Expr::sin(&s(0)?))),
         ("cos", 1) => ok(scalar(Expr::cos(&s(0)?))),
         ("tan" | "cot" | "sec" | "csc", 1) => ok(scalar(ratio(name, &s(0)?)?)),
@@ -260,7 +266,11 @@ pub fn eval_symbolic(name: &str, vals: &[Value], kind: &Kind) -> Out {
             ok(scalar(Expr::apply(f, &s(0)?, g)))
         }
         ("diff", 2) => Some(super::table_calculus::diff(&vals[0], &ms[0], &ms[1], kind)),
-        ("simplify" | "expand", 1) => ok(make(&vals[0].kind(), ms[0].map(Expr::cancel))),
+        ("simplify", 1) => ok(make(
+            &vals[0].kind(),
+            ms[0].map(crate::sym::together::simplest),
+        )),
+        ("expand", 1) => ok(make(&vals[0].kind(), ms[0].map(Expr::cancel))),
         ("subs", 3) => Some(super::table_calculus::subs(
             &vals[0], &ms[0], &ms[1], &ms[2],
         )),

@@ -22,6 +22,10 @@ use crate::values::recipe::{Recipe, Step};
 use crate::values::value::Value;
 use std::rc::Rc;
 
+mod cleared;
+mod kept;
+use cleared::cleared_equal;
+
 /// What the canonical forms of both sides' recipes, with their angles
 /// scaled by ν (the module's doc), prove of `a == b`: `Ok(())` equal;
 /// `Err(d)` different, `d` an entry of `a − b` that is a nonzero exact
@@ -349,44 +353,6 @@ fn proof(a: &Value, b: &Value, lift: &mut Lift) -> Option<Result<(), Expr>> {
         .map(Err)
 }
 
-/// True when p = q once both are multiplied by every kept denominator
-/// of either ([`crate::sym::together::cleared`]: `sec(2π + 11)` against
-/// `sec 11`, `sin 2/(cos 2 + 1)` against `tan 1`), the products reduced in
-/// ℚ(e^{iπ/L}) when the angles are split. The denominators are nonzero
-/// numbers (each side's certified balls were finite before the lift is
-/// asked), and none of them may reduce to zero here, so equal numerators
-/// are equal sides.
-fn cleared_equal(p: &Expr, q: &Expr, split: Option<(i64, i64)>) -> bool {
-    let mut dens = Vec::new();
-    denominators(p, &mut dens);
-    denominators(q, &mut dens);
-    let Some((mut p, mut q)) = crate::sym::together::cleared(p, q) else {
-        return false;
-    };
-    if let Some((_, l)) = split {
-        let z = z_of([&p, &q].into_iter().chain(&dens));
-        if dens.iter().any(|d| reduced(d, l, &z).terms.is_empty()) {
-            return false;
-        }
-        p = reduced(&p, l, &z);
-        q = reduced(&q, l, &z);
-    }
-    exact(&p) && exact(&q) && p == q
-}
-
-/// The arguments of the kept reciprocals anywhere in `e`, calls' arguments
-/// included.
-fn denominators(e: &Expr, out: &mut Vec<Expr>) {
-    for (v, _) in e.terms.keys().flatten() {
-        if let Var::Call(c) = v {
-            if c.f == crate::sym::expr::Func::Recip {
-                out.extend(c.args.iter().cloned());
-            }
-            c.args.iter().for_each(|a| denominators(a, out));
-        }
-    }
-}
-
 /// The names of the lift's own symbols, which no typed name can be
 /// (identifiers hold no ⟨): ν scales every angle, μ = 1/M and ρ = π/L
 /// split them, and ⟨αn⟩ is a number read as a symbol of its own.
@@ -466,14 +432,8 @@ fn lifted(v: &Value, lift: &mut Lift, depth: u32) -> Option<Mat> {
                     how: None,
                 });
             }
-            // (a square root with no exact form is kept as a call, whose
-            // square is its argument: sin(π/5) against √((5 − √5)/8))
-            if let (Operation::Call(name), [Value::Formula { m, .. }]) = (&p.op, &forms[..])
-                && crate::builtins::lookup(name).is_some_and(|b| b.name == "sqrt")
-                && m.data.len() == 1
-                && self::exact(&m.data[0])
-            {
-                return Some(Mat::scalar(Expr::sqrt_kept(&m.data[0])));
+            if let Some(m) = kept::kept(&p.op, &forms) {
+                return Some(m);
             }
             crate::seam::exactness::formula_of(&p.op, forms, &p.kind)
         })

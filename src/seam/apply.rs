@@ -274,6 +274,15 @@ impl<'a> Op<'a> {
             Op::Vector => Sym::Vector(args),
             Op::Call(b, name) => match b.role() {
                 Role::Inverse => one(&mut args).inverse(),
+                // (exp(log(u)) = u wherever log u is defined)
+                _ if b.name == "exp"
+                    && matches!(args.as_slice(), [Sym::Call(f, a)] if f.name == "log" && a.len() == 1) =>
+                {
+                    match one(&mut args) {
+                        Sym::Call(_, mut a) => a.pop().unwrap_or(Sym::Identity),
+                        other => other,
+                    }
+                }
                 role => Sym::Call(
                     Fun {
                         name: b.names().find(|n| *n == name).unwrap_or(b.name),

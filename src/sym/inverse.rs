@@ -47,6 +47,18 @@ pub fn of_inverse(f: Func, x: &Expr) -> Option<Expr> {
     })
 }
 
+/// u when `e` is exactly exp(u) (one term, coefficient 1): log(exp(u)) =
+/// u for a real u.
+pub fn exp_arg(e: &Expr) -> Option<Expr> {
+    let (mono, c) = e.terms.iter().next()?;
+    match (e.terms.len(), mono.as_slice()) {
+        (1, [(Var::Call(call), 1)]) if c.is_one() && call.f == Func::Exp => {
+            call.args.first().cloned()
+        }
+        _ => None,
+    }
+}
+
 impl Expr {
     /// √x kept as a call whatever x is (no float for a root with no exact
     /// form): a proof's square root of a number, whose square is x

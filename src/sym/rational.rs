@@ -149,9 +149,10 @@ impl Expr {
         if !self.has_recip() {
             return self.clone();
         }
+        let me = self.unified_recips();
         // numerators grouped by their denominator (the reciprocal factors)
         let mut groups: std::collections::BTreeMap<Mono, Expr> = Default::default();
-        for (m, c) in &self.terms {
+        for (m, c) in &me.terms {
             let (den, rest): (Mono, Mono) =
                 m.iter().cloned().partition(|(v, e)| is_recip(v) && *e > 0);
             groups.entry(den).or_default().push(rest, c.clone());
@@ -179,6 +180,67 @@ impl Expr {
                 }
             }
             out = out.add(&num.mul(&single(left, Coef::one())));
+        }
+        out
+    }
+
+    /// Each kept reciprocal 1/D whose sum D is c·E^k for the sum E of
+    /// another kept reciprocal written as c⁻¹ (1/E)^k: 1/cos² t (one
+    /// reciprocal of (z + z⁻¹)²/4) and tan² t = sin² t (1/cos t)² then
+    /// meet over 1/cos t, and 1/cos² t − tan² t cancels to 1.
+    fn unified_recips(&self) -> Expr {
+        let mut recips: Vec<(&Var, &Expr)> = Vec::new();
+        for (v, _) in self.terms.keys().flatten() {
+            if let Var::Call(c) = v
+                && is_recip(v)
+                && !recips.iter().any(|(w, _)| *w == v)
+            {
+                recips.push((v, &c.args[0]));
+            }
+        }
+        let mut map: Vec<(&Var, &Var, i32, Coef, Coef)> = Vec::new();
+        for (v, d) in &recips {
+            for (w, e) in &recips {
+                if v == w || d.terms.len() < e.terms.len() || e.terms.len() < 2 {
+                    continue;
+                }
+                let (mut q, mut k) = ((*d).clone(), 0);
+                while k < 8 && q.as_const().is_none() {
+                    match q.div_exact(e) {
+                        Some(r) => (q, k) = (r, k + 1),
+                        None => break,
+                    }
+                }
+                if let Some(c) = q.as_const().filter(|_| k > 0)
+                    && let Some(ci) = c.inv()
+                {
+                    map.push((v, w, k, c, ci));
+                    break;
+                }
+            }
+        }
+        if map.is_empty() {
+            return self.clone();
+        }
+        let mut out = Expr::zero();
+        for (m, c) in &self.terms {
+            let mut t = single(Vec::new(), c.clone());
+            let mut rest: Mono = Vec::new();
+            for (v, e) in m {
+                match map.iter().find(|(x, ..)| *x == v) {
+                    // (1/D)^e = c^(−e) (1/E)^(k e)
+                    Some((_, w, k, q, qi)) => {
+                        let base = if *e > 0 { qi } else { q };
+                        let mut f = Coef::one();
+                        for _ in 0..e.unsigned_abs() {
+                            f = f.mul(base);
+                        }
+                        t = t.mul(&single(vec![((*w).clone(), k * e)], f));
+                    }
+                    None => rest.push((v.clone(), *e)),
+                }
+            }
+            out = out.add(&t.mul(&single(rest, Coef::one())));
         }
         out
     }

@@ -252,3 +252,47 @@ pub fn unhalved(p: &Expr, q: &Expr) -> Option<(Expr, Expr)> {
     };
     Some((p.subst(&by), q.subst(&by)))
 }
+
+/// `e` over one denominator: every term times each kept reciprocal's sum
+/// to its highest power, that product of reciprocals written once, common
+/// factors cancelled (`1 + tan² t` is `1/cos² t`, `1/cos² t − 1` is
+/// `tan² t`); None when `e` has no reciprocal, one nested in another, or
+/// past [`MAX_TERMS`].
+pub fn over_one(e: &Expr) -> Option<Expr> {
+    let mut top = Vec::new();
+    powers(e, &mut top);
+    top.retain(|(_, h)| *h > 0);
+    if top.is_empty() {
+        return None;
+    }
+    let num = times(e, &top)?;
+    if num.has_recip() {
+        return None;
+    }
+    let mut den = Expr::zero();
+    let mut mono = top;
+    mono.sort_by(|a, b| a.0.cmp(&b.0));
+    den.push(mono, Coef::one());
+    Some(num.mul(&den).cancel())
+}
+
+/// What `simplify` prints (LANGUAGE.md §7): the canonical form with
+/// quotients cancelled ([`Expr::cancel`]), or the same over one
+/// denominator ([`over_one`]) when that prints shorter; equal values
+/// either way.
+pub fn simplest(e: &Expr) -> Expr {
+    let cancelled = e.cancel();
+    let Some(one) = over_one(e) else {
+        return cancelled;
+    };
+    let len = |x: &Expr| {
+        super::print::expr(x, super::print::Style::default())
+            .chars()
+            .count()
+    };
+    if len(&one) < len(&cancelled) {
+        one
+    } else {
+        cancelled
+    }
+}

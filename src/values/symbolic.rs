@@ -355,10 +355,29 @@ impl<C: Clone + PartialEq> fmt::Display for Tree<C> {
                 };
                 write!(f, "{l}/{r}")
             }
-            Tree::Pow(a, b) => match **a {
-                Tree::Name(_) | Tree::Const(..) => write!(f, "{a}^{b}"),
-                _ => write!(f, "({a})^{b}"),
-            },
+            Tree::Pow(a, b) => {
+                // (a sum, product or fraction in the exponent, or a signed
+                // or fractional base, is parenthesized: `2^(2 + x)` read
+                // back is not `2^2 + x`)
+                let plain = |t: &Tree<C>| match t {
+                    Tree::Name(_) | Tree::Call(..) => true,
+                    Tree::Const(_, text) => {
+                        !text.is_empty()
+                            && text
+                                .chars()
+                                .all(|c| c.is_alphanumeric() || c == '_' || c == '.')
+                    }
+                    _ => false,
+                };
+                let (l, r) = (a.to_string(), b.to_string());
+                let l = if plain(a) && !matches!(**a, Tree::Call(..)) {
+                    l
+                } else {
+                    format!("({l})")
+                };
+                let r = if plain(b) { r } else { format!("({r})") };
+                write!(f, "{l}^{r}")
+            }
             Tree::Bracket(x) => write!(f, "[{x}]"),
             Tree::Transpose(x) => match **x {
                 Tree::Name(_) | Tree::Call(..) | Tree::Bracket(_) | Tree::Block(_) => {
