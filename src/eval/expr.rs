@@ -287,11 +287,7 @@ impl Interp<'_> {
                 span,
                 format!("'{name}' is a function"),
             )
-            .with_help(match name {
-                // (`30 degrees`: the unit meant, not the conversion)
-                "degrees" => "degrees are a unit after the number: 30 deg or 30°; degrees(x) converts radians".into(),
-                _ => format!("call it: {name}(...)"),
-            }));
+            .with_help(super::slips::function_as_value(name)));
         }
         let mut d = Diagnostic::error(ErrorKind::Name, span, format!("unknown name '{name}'"));
         if let Some(h) = crate::diagnostics::habits::name(name) {

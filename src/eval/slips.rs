@@ -122,3 +122,14 @@ pub(super) fn identity_size(b: &crate::builtins::Builtin, i: usize) -> Option<us
         _ => None,
     }
 }
+
+/// The help when a function's name is read as a value: call it, or, for
+/// `30 degrees`, the unit that was meant (`30 deg`), not the conversion.
+pub(super) fn function_as_value(name: &str) -> String {
+    match name {
+        "degrees" => {
+            "degrees are a unit after the number: 30 deg or 30°; degrees(x) converts radians".into()
+        }
+        _ => format!("call it: {name}(...)"),
+    }
+}
