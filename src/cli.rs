@@ -405,7 +405,9 @@ where
     };
     match (&cli.command, &cli.eval) {
         (Some(_), Some(_)) => {
-            emit_err("chasles: -e cannot be combined with a command (run, check, kernel, lsp, …)\n");
+            emit_err(
+                "chasles: -e cannot be combined with a command (run, check, kernel, lsp, …)\n",
+            );
             2
         }
         (None, Some(src)) => match eval_text(src) {

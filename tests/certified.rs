@@ -519,6 +519,10 @@ fn trig_of_inverse_trig_of_symbols() {
         ("sin(asin(x)) == x + 1/1000003", false),
         ("cos(atan(x)) == x/sqrt(1 + x^2)", false),
     ] {
-        assert_eq!(last(&format!("given x\n{src}")), serde_json::json!(want), "{src}");
+        assert_eq!(
+            last(&format!("given x\n{src}")),
+            serde_json::json!(want),
+            "{src}"
+        );
     }
 }

@@ -357,6 +357,17 @@ impl<'a> Op<'a> {
                 .map_err(OpError::Message),
             );
         }
+        // the transform `[R, p; 0, 1]`'s inverse in closed form (3.64)
+        let inverse = match self {
+            Op::Inverse => true,
+            Op::Call(b, _) => b.name == "inv",
+            _ => false,
+        };
+        if let (true, Kind::SE3, [Value::Sym(s)]) = (inverse, kind, args)
+            && let Some(t) = super::transform::inverse(s)
+        {
+            return Some(Ok(Value::Sym(t)));
+        }
         if let Op::Call(b, _) = self
             && let Some(zero) = crate::builtins::constant_derivative(b.name, args, kind)
         {
