@@ -92,3 +92,66 @@ fn a_symbolic_rotation_in_a_block() {
     assert_eq!(j[4]["type"], "SE3");
     assert_eq!(j[4]["value"], j[5]["value"]);
 }
+
+/// The error line of `chasles --json -e SRC` (the last line).
+fn error(src: &str) -> serde_json::Value {
+    json(src).pop().unwrap()["error"].clone()
+}
+
+/// Exercise 2.7: `solve(6 (1 − n) + n f == 6, f)` is 6, for n ≠ 0.
+#[test]
+fn solve_one_unknown_of_a_linear_equation() {
+    let j = json(
+        "given n, f, x, a : scalar\nsolve(6*(1 - n) + n*f == 6, f)\nsolve(2*x + 1, x)\n\
+         solve(0.5*x == 3, x)\nsolve(x - a == 0, x)\ny = solve(3*x == 1, x); y * 3",
+    );
+    assert_eq!(j[0]["value"], 6, "{:?}", j[0]);
+    assert_eq!(
+        j[0]["warnings"][0]["message"],
+        "for n ≠ 0: where n = 0 the equation does not fix f"
+    );
+    assert_eq!(j[1]["value"], -0.5);
+    assert_eq!(j[2]["value"], 6);
+    assert_eq!(j[3]["value"], "a");
+    assert!(j[3].get("warnings").is_none(), "{:?}", j[3]);
+    // the root is exact: 1/3 times 3 is 1
+    assert_eq!(j[4]["value"], 1, "{:?}", j[4]);
+}
+
+/// A quadratic with exact numbers: its real roots in increasing order.
+#[test]
+fn solve_a_quadratic() {
+    let j = json(
+        "given x : scalar\nsolve(x^2 - 5*x + 6 == 0, x)\nsolve(x^2 == 2, x)\nsolve((x - 1)^2, x)\n\
+         (p, q) = solve(x^2 == 2, x); (q^2 == 2, p == -sqrt(2))",
+    );
+    assert_eq!(j[0]["value"], serde_json::json!([2, 3]));
+    let r = &j[1]["value"];
+    assert!((r[0].as_f64().unwrap() + 2f64.sqrt()).abs() < 1e-15);
+    assert!((r[1].as_f64().unwrap() - 2f64.sqrt()).abs() < 1e-15);
+    assert_eq!(j[2]["value"], 1);
+    assert_eq!(j[3]["value"], serde_json::json!([true, true]), "{:?}", j[3]);
+}
+
+/// Beyond reach, a refusal naming why (never a wrong root).
+#[test]
+fn solve_refuses_naming_why() {
+    let cases = [
+        ("solve(x^2 + 1 == 0, x)", "no real x solves it"),
+        ("solve(x^3 == 1, x)", "degree 3"),
+        ("solve(sin(x) == 1, x)", "inside"),
+        ("solve(a*x^2 == 1, x)", "symbolic or inexact coefficients"),
+        ("solve(x == 1/x, x)", "in a denominator"),
+        ("solve(x == x, x)", "holds for every x"),
+        ("solve(a == 1, x)", "x does not occur"),
+        ("solve(x < 1, x)", "joined by =="),
+        ("solve(x == 1, 3)", "`3` is not one"),
+        ("solve((1, 2, 3) == x, x)", "scalar equations"),
+    ];
+    for (src, want) in cases {
+        let e = error(&format!("given x, a : scalar\n{src}"));
+        let msg = e["message"].as_str().unwrap_or_default();
+        assert!(msg.contains(want), "{src}: {e:?}");
+        assert!(e["help"].is_string(), "{src}: no help in {e:?}");
+    }
+}
