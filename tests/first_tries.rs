@@ -155,3 +155,31 @@ fn solve_refuses_naming_why() {
         assert!(e["help"].is_string(), "{src}: no help in {e:?}");
     }
 }
+
+/// First-try errors name the fix in their help (the trial's six kinds:
+/// a name not declared, Python's boolean words, the member tried first).
+#[test]
+fn first_try_errors_name_the_fix() {
+    let cases = [
+        (
+            "solve(6*(1 - n) + n*f == 6, f)",
+            "give it a value first (f = ...) or declare it: given f : scalar",
+        ),
+        ("a = 1; a == 1 and a < 2", "chasles has no `and`"),
+        ("a = 1; a == 1 or a < 2", "chasles has no `or`"),
+        ("given R : SO3; R.inverse", "the inverse is inv(x)"),
+        ("given R : SO3; R.inv", "the inverse is inv(x)"),
+        (
+            "p = (1, 2, 3); p.x",
+            "an entry is v[1], v[2], v[3] (1-based)",
+        ),
+        ("M = eye(3); M.det", "det(x)"),
+        ("given T_sb : SE3; T_sb.transpose", "the transpose is x.T"),
+        ("given T : SE3; T * T_bc", "given T_bc : SE3"),
+    ];
+    for (src, want) in cases {
+        let e = error(src);
+        let help = e["help"].as_str().unwrap_or_default();
+        assert!(help.contains(want), "{src}: {e:?}");
+    }
+}

@@ -214,7 +214,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
             signature: "solve(lhs == rhs, x: symbol) -> x (or the tuple of the real roots of a quadratic)",
             section: "Exercise 2.7; §8 (docs/language.md)",
             doc: "one unknown of a linear equation, or the real roots of a quadratic with exact numbers",
-            example: "given n, f : scalar; solve(6*(1 - n) + n*f == 6, f)",
+            example: "given x : scalar; solve(x^2 - 5*x + 6 == 0, x)",
             area: Area::Scalars,
             typing: Typing::Custom {
                 arity: (2, 2),
