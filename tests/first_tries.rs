@@ -183,3 +183,17 @@ fn first_try_errors_name_the_fix() {
         assert!(help.contains(want), "{src}: {e:?}");
     }
 }
+
+/// `T^-1` of the transform block is its inverse in closed form too; a
+/// block with another last row keeps its inverse as a call.
+#[test]
+fn the_power_minus_one_of_a_transform_block() {
+    let j = json(
+        "given R : SO3\ngiven p : vec3\nT = [R, p; 0, 1]\nT^-1\nT^-1 == inv(T)\n\
+         M = [R, p; 0, 2]\nM^-1",
+    );
+    assert_eq!(j[1]["value"], "[R.T, (-R.T) p; 0, 1]");
+    assert_eq!(j[2]["value"], true);
+    assert_eq!(j[4]["value"], "inv([R, p; 0, 2])");
+    assert_eq!(j[4]["kind"], "matrix");
+}
