@@ -208,5 +208,35 @@ pub(super) fn builtins() -> Vec<Builtin> {
             },
             eval: |a| Ok(a.value(0).clone()),
         },
+        Builtin {
+            name: "solve",
+            aliases: &[],
+            signature: "solve(lhs == rhs, x: symbol) -> x (or the tuple of the real roots of a quadratic)",
+            section: "Exercise 2.7; §8 (docs/language.md)",
+            doc: "one unknown of a linear equation, or the real roots of a quadratic with exact numbers",
+            example: "given x : scalar; solve(x^2 - 5*x + 6 == 0, x)",
+            area: Area::Scalars,
+            typing: Typing::Custom {
+                arity: (2, 2),
+                rule: solve_rule,
+            },
+            eval: |a| {
+                Err(a.domain(
+                    "solve(lhs == rhs, x) solves for a symbol: declare it first, given x : scalar",
+                ))
+            },
+        },
     ]
+}
+
+/// `solve`: an equation (or an expression, = 0) and a scalar symbol; the
+/// result is a scalar, or a tuple of them (known only from the roots).
+fn solve_rule(args: &[Ty]) -> Result<Ty, ArgError> {
+    if !matches!(args[1].kind, Kind::Scalar | Kind::Unknown) {
+        return Err(ArgError::type_of(
+            1,
+            "solve(lhs == rhs, x) solves for a scalar symbol x",
+        ));
+    }
+    Ok(Ty::plain(Kind::Unknown))
 }

@@ -298,9 +298,17 @@ pub fn member(t: &Ty, name: &str) -> Result<Ty, RuleError> {
                 k if k.shape().is_some() => ".T",
                 _ => "none",
             };
+            // (the member a student tries first, and what does it)
+            let instead = match name {
+                "inv" | "inverse" | "I" | "Inv" => "; the inverse is inv(x)",
+                "x" | "y" | "z" if t.kind.is_vector() => "; an entry is v[1], v[2], v[3] (1-based)",
+                "det" | "trace" | "norm" => "; call it as a function: det(x), trace(x), norm(x)",
+                "transpose" | "t" => "; the transpose is x.T or x^T",
+                _ => "",
+            };
             Err(
                 RuleError::typ(format!("{} has no member .{name}", t.kind.a()))
-                    .with_help(format!("members of {}: {known}", t.kind.a())),
+                    .with_help(format!("members of {}: {known}{instead}", t.kind.a())),
             )
         }
     }

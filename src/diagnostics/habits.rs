@@ -63,6 +63,10 @@ pub fn name(name: &str) -> Option<String> {
         "clc" | "clear" | "clf" => "in the REPL :reset forgets every binding".into(),
         "who" | "whos" => "in the REPL :vars lists the bindings".into(),
         "syms" => "declare symbols with given: given x, y : scalar".into(),
+        // (Python's boolean words: a tuple of tests shows each)
+        "and" | "or" | "not" => format!(
+            "chasles has no `{name}`: test each condition on its own, or show them together as a tuple: (a == 1, a < 2)"
+        ),
         "format" => format_help(),
         "rad" | "radians" => "angles are in radians already: pi/6 rad = pi/6".into(),
         "degrees" => "degrees are a unit after the number: 30 deg or 30°".into(),

@@ -157,6 +157,7 @@ impl Interp<'_> {
         let ty = op
             .rule(&tys, Hints::default())
             .map_err(|e| Diagnostic::error(ErrorKind::Type, span, e.message))?;
+        let ty = transform_block(&rows, &trows).unwrap_or(ty);
         if !self.running() {
             return Ok(Typed::new(ty, None));
         }
@@ -168,6 +169,15 @@ impl Interp<'_> {
                     .collect()
             })
             .collect();
+        // `[Rotz(t), p; 0, 1]` among formulas: its lone 0 is a zero block
+        if vrows
+            .iter()
+            .flatten()
+            .any(|v| matches!(v, Value::Formula { .. }))
+            && !vrows.iter().flatten().any(Value::is_symbolic)
+        {
+            super::notation::zero_blocks(&rows, &mut vrows);
+        }
         let v = match apply::block(&vrows) {
             Some(v) => v,
             None => {
@@ -175,7 +185,11 @@ impl Interp<'_> {
                 apply::block_numeric(&vrows)
             }
         };
-        let val = Some(v.map_err(|m| op.failure(m, span))?);
+        let mut val = Some(v.map_err(|m| op.failure(m, span))?);
+        // (a formula's kind is what the rule says: the transform (3.62))
+        if let (Kind::SE3, Some(Value::Formula { kind, .. })) = (ty.kind, val.as_mut()) {
+            *kind = Kind::SE3;
+        }
         Ok(Typed::new(refine(ty, &val), val))
     }
 
@@ -314,4 +328,26 @@ impl Interp<'_> {
         }
         Ok(x as i64)
     }
+}
+
+/// The book's transform (3.62) written as a block, `[R, p; 0, 1]` or
+/// `[R, p; 0, 0, 0, 1]`, with R in SO(3) and p a 3-vector: it is in
+/// SE(3), between the frames of R (`[R_sb, p_sb; 0, 1]` is {s}←{b}), so
+/// `inv`, `Ad`, `log` and `T.R`, `T.p` treat it as one (also over
+/// symbols, where the numbers cannot tell). None for any other block.
+fn transform_block(rows: &[&Vec<Expr>], trows: &[Vec<Typed>]) -> Option<Ty> {
+    use crate::syntax::ast::ExprKind;
+    let [top, bottom] = trows else { return None };
+    let [r, p] = top.as_slice() else { return None };
+    let is = |e: &Expr, x: f64| matches!(e.kind, ExprKind::Number(y) if y == x);
+    let last = rows.get(1)?;
+    let zeros = match last.as_slice() {
+        [z, o] => is(z, 0.0) && is(o, 1.0),
+        [a, b, c, o] => is(a, 0.0) && is(b, 0.0) && is(c, 0.0) && is(o, 1.0),
+        _ => false,
+    };
+    let rotation = r.ty.kind == Kind::SO3;
+    let vector = matches!(p.ty.kind, Kind::Vector(Some(3)));
+    (zeros && rotation && vector && bottom.len() == last.len())
+        .then(|| Ty::new(Kind::SE3, r.ty.frames))
 }

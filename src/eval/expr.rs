@@ -323,9 +323,14 @@ impl Interp<'_> {
         candidates.extend(builtins::all_names());
         if let Some(s) = suggest::did_you_mean(name, &candidates) {
             d = d.with_help(format!("did you mean '{s}'?"));
-        } else if self.mode == Mode::Check || name.contains('_') {
+        } else {
+            // (a frame-tagged name is a transform, another most often a scalar)
+            let ty = match self.mode == Mode::Check || name.contains('_') {
+                true => "SE3",
+                false => "scalar",
+            };
             d = d.with_help(format!(
-                "give it a value first ({name} = ...) or declare it: given {name} : SE3"
+                "give it a value first ({name} = ...) or declare it: given {name} : {ty}"
             ));
         }
         Err(d)
@@ -415,6 +420,9 @@ impl Interp<'_> {
             }
             return Err(d);
         };
+        if b.name == "solve" && self.running() {
+            return self.solve(args, span);
+        }
         // The arguments' types go on the interpreter's stack of them (no
         // vector per call); whatever happens, the stack is as it was after.
         let base = self.env.arg_tys.len();

@@ -20,6 +20,7 @@ mod paren_product;
 mod resolve;
 mod slice;
 mod slips;
+mod solve;
 mod substitute;
 mod symbols;
 mod tuple_call;

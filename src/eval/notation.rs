@@ -311,9 +311,17 @@ pub(super) fn parts(t: &Typed) -> Vec<Typed> {
 /// zero block as wide as its column (from rows with as many entries) and
 /// as tall as its row.
 pub(super) fn zero_blocks(rows: &[&Vec<Expr>], vals: &mut [Vec<Value>]) {
-    let lone = |e: &Expr| matches!(e.kind, ExprKind::Number(x) if x == 0.0);
+    let lone = |i: usize, j: usize| matches!(rows[i][j].kind, ExprKind::Number(x) if x == 0.0);
+    zero_blocks_where(lone, vals);
+}
+
+/// [`zero_blocks`] where `lone(i, j)` says which entries were written as
+/// a lone `0` (also when a block kept over symbols gets its numbers,
+/// LANGUAGE.md §7: as if they had been typed first).
+pub(super) fn zero_blocks_where(lone: impl Fn(usize, usize) -> bool, vals: &mut [Vec<Value>]) {
     let shape = |v: &Value| match v {
         Value::Num { m, .. } => Some(m.shape()),
+        Value::Formula { m, .. } => Some((m.rows, m.cols)),
         _ => None,
     };
     let blocks = vals
@@ -324,22 +332,22 @@ pub(super) fn zero_blocks(rows: &[&Vec<Expr>], vals: &mut [Vec<Value>]) {
         return;
     }
     let mut fills = Vec::new();
-    for (i, row) in rows.iter().enumerate() {
+    for (i, row) in vals.iter().enumerate() {
         let height = row
             .iter()
-            .zip(&vals[i])
-            .filter(|(e, _)| !lone(e))
+            .enumerate()
+            .filter(|&(j, _)| !lone(i, j))
             .filter_map(|(_, v)| shape(v).map(|s| s.0))
             .max()
             .unwrap_or(1);
-        for (j, e) in row.iter().enumerate() {
-            if !lone(e) {
+        for j in 0..row.len() {
+            if !lone(i, j) {
                 continue;
             }
-            let width = rows
+            let width = vals
                 .iter()
-                .zip(vals.iter())
-                .filter(|(r, _)| r.len() == row.len() && !lone(&r[j]))
+                .enumerate()
+                .filter(|(k, r)| r.len() == row.len() && !lone(*k, j))
                 .filter_map(|(_, vs)| shape(&vs[j]).map(|s| s.1))
                 .max()
                 .unwrap_or(1);

@@ -125,15 +125,23 @@ impl Resolving<'_, '_> {
                     None => Sym::Bracket(Box::new(x)),
                 }
             }
-            Sym::Block(rows) => {
-                let rows: Vec<Vec<Sym>> = rows
+            Sym::Block(rows_written) => {
+                let rows: Vec<Vec<Sym>> = rows_written
                     .iter()
                     .map(|r| r.iter().map(|x| self.go(x)).collect())
                     .collect();
-                let vals: Option<Vec<Vec<Value>>> = rows
+                let mut vals: Option<Vec<Vec<Value>>> = rows
                     .iter()
                     .map(|r| r.iter().map(|x| num(x).cloned()).collect())
                     .collect();
+                // `[R, p; 0, 1]`: its lone 0 is a zero block, as typed first
+                let written = &rows_written;
+                if let Some(v) = vals.as_mut() {
+                    super::notation::zero_blocks_where(
+                        |i, j| matches!(&written[i][j], Sym::Const(c, _) if c.as_scalar() == Some(0.0)),
+                        v,
+                    );
+                }
                 match vals.map(|v| apply::block_numeric(&v)) {
                     Some(Ok(v)) => constant(v),
                     Some(Err(e)) => {

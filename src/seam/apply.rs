@@ -366,6 +366,18 @@ impl<'a> Op<'a> {
                 .map_err(OpError::Message),
             );
         }
+        // the transform `[R, p; 0, 1]`'s inverse in closed form (3.64)
+        let inverse = match (self, args) {
+            (Op::Inverse, [_]) => true,
+            (Op::Call(b, _), [_]) => b.name == "inv",
+            (Op::Arith(BinOp::Pow), [_, e]) => e.as_scalar() == Some(-1.0),
+            _ => false,
+        };
+        if let (true, Kind::SE3, Some(Value::Sym(s))) = (inverse, kind, args.first())
+            && let Some(t) = super::transform::inverse(s)
+        {
+            return Some(Ok(Value::Sym(t)));
+        }
         if let Op::Call(b, _) = self
             && let Some(zero) = crate::builtins::constant_derivative(b.name, args, kind)
         {

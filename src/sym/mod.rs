@@ -28,6 +28,7 @@ pub mod rat;
 pub mod rational;
 pub mod sign;
 pub mod size;
+pub mod solve;
 pub mod squarefree;
 pub mod surd;
 pub mod together;

@@ -1,0 +1,110 @@
+//! `solve(lhs == rhs, x)` (LANGUAGE.md §8, Exercise 2.7): the sides are
+//! evaluated, not compared, and [`crate::sym::solve`] finds x.
+
+use super::interp::{Interp, Typed};
+use super::value::Value;
+use crate::check::ty::{Kind, Ty};
+use crate::diagnostics::{Diagnostic, ErrorKind};
+use crate::sym::Expr;
+use crate::sym::expr::as_symbol;
+use crate::sym::matrix::Mat;
+use crate::syntax::ast::{CmpOp, Expr as Ast, ExprKind, Span};
+use crate::values::formula;
+
+/// The help of every refusal of `solve`: how it is called.
+const HOW: &str = "write solve(lhs == rhs, x) with x declared first: given x : scalar";
+
+impl Interp<'_> {
+    /// `solve(eq, x)`: x's value from one equation (or an expression,
+    /// taken = 0), a tuple of the real roots of a quadratic; a note names
+    /// the coefficient that must not be 0.
+    pub(super) fn solve(&mut self, args: &[Ast], span: Span) -> Result<Typed, Diagnostic> {
+        let [eq, x] = args else {
+            return Err(self
+                .domain(span, "solve takes an equation and the unknown")
+                .with_help(HOW));
+        };
+        let (lhs, rhs) = match &eq.kind {
+            ExprKind::Compare {
+                op: CmpOp::Eq,
+                lhs,
+                rhs,
+                ..
+            } => (&**lhs, Some(&**rhs)),
+            ExprKind::Compare { op_span, .. } => {
+                return Err(self
+                    .domain(
+                        *op_span,
+                        "solve solves an equation: its sides are joined by ==",
+                    )
+                    .with_help(HOW));
+            }
+            _ => (eq, None),
+        };
+        let unknown = self.expr(x)?;
+        let sym = unknown
+            .value()
+            .and_then(formula::scalar_of)
+            .and_then(|e| as_symbol(&e))
+            .ok_or_else(|| {
+                self.domain(
+                    x.span,
+                    format!(
+                        "solve(eq, x) solves for a symbol, and `{}` is not one",
+                        self.text(x.span)
+                    ),
+                )
+                .with_help(HOW)
+            })?;
+        let left = self.side(lhs)?;
+        let right = match rhs {
+            Some(r) => self.side(r)?,
+            None => Expr::default(),
+        };
+        let solution = crate::sym::solve::solve(&left.sub(&right), &sym)
+            .map_err(|m| {
+                self.domain(eq.span, format!("cannot solve for {}: {m}", sym.name))
+                    .with_help(
+                        "solve finds one unknown of a linear equation, or the real roots of a quadratic with exact numbers; else give the other symbols numbers first",
+                    )
+            })?;
+        if let Some(c) = &solution.unless_zero {
+            let c = crate::sym::print::expr(c, Default::default());
+            self.warnings.push(Diagnostic::note(
+                ErrorKind::Domain,
+                span,
+                format!(
+                    "for {c} ≠ 0: where {c} = 0 the equation does not fix {}",
+                    sym.name
+                ),
+            ));
+        }
+        let scalar = |e: &Expr| formula::make(&Kind::Scalar, Mat::scalar(e.clone()));
+        Ok(match solution.roots.as_slice() {
+            [r] => {
+                let v = scalar(r);
+                Typed::new(Ty::plain(v.kind()), Some(v))
+            }
+            roots => {
+                let vs: Vec<Value> = roots.iter().map(scalar).collect();
+                let kinds: Vec<Kind> = vs.iter().map(Value::kind).collect();
+                Typed::new(Ty::plain(Kind::tuple(kinds)), Some(Value::Tuple(vs)))
+            }
+        })
+    }
+
+    /// One side of the equation: a scalar, as an expression.
+    fn side(&mut self, e: &Ast) -> Result<Expr, Diagnostic> {
+        let t = self.expr(e)?;
+        t.value().and_then(formula::scalar_of).ok_or_else(|| {
+            self.domain(
+                e.span,
+                format!(
+                    "solve solves scalar equations, and this side is a {}",
+                    t.ty.kind
+                ),
+            )
+            .with_help("solve one entry at a time: solve(M[1, 2] == 0, x)")
+        })
+    }
+}

@@ -1,0 +1,209 @@
+//! `solve(eq, x)` (LANGUAGE.md §8): one unknown of a linear or polynomial
+//! equation, as Exercise 2.7 asks (`6 (1 − n) + n f = 6` for f). The
+//! equation's two sides minus each other, a polynomial in x with
+//! coefficients free of x, is solved in closed form up to degree 2; any
+//! other equation is refused, naming why.
+
+use super::Expr;
+use super::coef::Coef;
+use super::expr::{Symbol, Var};
+use std::collections::BTreeMap;
+
+/// The solution of one unknown.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Solution {
+    /// The real roots, in increasing order (one for a linear equation).
+    pub roots: Vec<Expr>,
+    /// The coefficient that must not be 0 for the root of a linear
+    /// equation with a symbolic coefficient (`n f = 6 n` gives f = 6 for
+    /// n ≠ 0); None when it is a nonzero number.
+    pub unless_zero: Option<Expr>,
+}
+
+/// The coefficients of `e` as a polynomial in `x`, by power; Err naming
+/// why it is not one (x inside a function, or in a denominator).
+pub fn coefficients(e: &Expr, x: &Symbol) -> Result<BTreeMap<i32, Expr>, String> {
+    let mut out: BTreeMap<i32, Expr> = BTreeMap::new();
+    for (m, c) in &e.terms {
+        let mut power = 0;
+        let mut rest = Vec::with_capacity(m.len());
+        for (v, k) in m {
+            match v {
+                Var::Sym(s) if s == x => power = *k,
+                Var::Z(s) if s == x => {
+                    return Err(format!("{} is inside a sine or cosine", x.name));
+                }
+                Var::Call(call) if call.args.iter().any(|a| mentions(a, x)) => {
+                    return Err(format!("{} is inside {}(…)", x.name, call.f.name()));
+                }
+                _ => rest.push((v.clone(), *k)),
+            }
+        }
+        if power < 0 {
+            return Err(format!("{} is in a denominator", x.name));
+        }
+        out.entry(power).or_default().push(rest, c.clone());
+    }
+    out.retain(|_, c| !c.terms.is_empty());
+    Ok(out)
+}
+
+/// Whether `x` occurs in `e`.
+fn mentions(e: &Expr, x: &Symbol) -> bool {
+    let mut found = Vec::new();
+    e.symbols(&mut found);
+    found.contains(x)
+}
+
+/// The real roots of `e = 0` for `x` (see the module): Err naming why
+/// there is no answer to give.
+pub fn solve(e: &Expr, x: &Symbol) -> Result<Solution, String> {
+    let cs = coefficients(e, x)?;
+    let c = |k: i32| cs.get(&k).cloned().unwrap_or_default();
+    let degree = cs.keys().next_back().copied().unwrap_or(0);
+    match degree {
+        0 if cs.is_empty() => Err(format!(
+            "the equation holds for every {}: both sides are the same",
+            x.name
+        )),
+        0 => Err(format!(
+            "{} does not occur in the equation (its sides differ by {})",
+            x.name,
+            super::print::expr(&c(0), Default::default())
+        )),
+        1 => {
+            let (a, b) = (c(1), c(0));
+            let root = b
+                .neg()
+                .div(&a)
+                .map(|r| r.cancel())
+                .ok_or_else(|| format!("cannot divide by the coefficient of {}", x.name))?;
+            let unless_zero = a.as_const().is_none().then_some(a);
+            Ok(Solution {
+                roots: vec![root],
+                unless_zero,
+            })
+        }
+        2 => quadratic(&c(2), &c(1), &c(0), x),
+        d => Err(format!(
+            "the equation has degree {d} in {}: solve finds the roots of degree 1 and 2",
+            x.name
+        )),
+    }
+}
+
+/// The real roots of a x² + b x + c = 0 with exact numbers a ≠ 0, b, c:
+/// (−b ± √(b² − 4ac)) / 2a, in increasing order.
+fn quadratic(a: &Expr, b: &Expr, c: &Expr, x: &Symbol) -> Result<Solution, String> {
+    let exact = |e: &Expr| {
+        e.terms.is_empty()
+            || e.as_const()
+                .is_some_and(|k| k.as_real().is_some() && k.is_exact())
+    };
+    if !(exact(a) && exact(b) && exact(c)) {
+        return Err(format!(
+            "a quadratic in {} with symbolic or inexact coefficients: solve finds its roots when they are exact numbers",
+            x.name
+        ));
+    }
+    let disc = b.mul(b).sub(&a.mul(c).scale(&Coef::int(4)));
+    let d = disc.as_f64().unwrap_or(0.0);
+    if d < 0.0 {
+        return Err(format!(
+            "no real {} solves it: the discriminant b² − 4ac is {} < 0",
+            x.name,
+            super::print::expr(&disc, Default::default())
+        ));
+    }
+    let two_a = a.scale(&Coef::int(2));
+    let root = |s: &Expr| {
+        b.neg()
+            .add(s)
+            .div(&two_a)
+            .map(|r| r.cancel())
+            .ok_or_else(|| "cannot divide by 2a".to_string())
+    };
+    let mut roots = if disc.terms.is_empty() {
+        vec![root(&Expr::default())?]
+    } else {
+        let s = Expr::sqrt(&disc);
+        vec![root(&s.neg())?, root(&s)?]
+    };
+    roots.sort_by(|p, q| {
+        let (p, q) = (p.as_f64().unwrap_or(0.0), q.as_f64().unwrap_or(0.0));
+        p.total_cmp(&q)
+    });
+    Ok(Solution {
+        roots,
+        unless_zero: None,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn x() -> Symbol {
+        Symbol::new("x")
+    }
+
+    fn sx() -> Expr {
+        Expr::symbol(x())
+    }
+
+    #[test]
+    fn linear_with_a_symbolic_coefficient() {
+        // Exercise 2.7: 6 (1 − n) + n f − 6 = 0 for f is 6, for n ≠ 0.
+        let n = Expr::symbol(Symbol::new("n"));
+        let f = Symbol::new("f");
+        let e = Expr::int(6)
+            .mul(&Expr::int(1).sub(&n))
+            .add(&n.mul(&Expr::symbol(f.clone())))
+            .sub(&Expr::int(6));
+        let s = solve(&e, &f).unwrap();
+        assert_eq!(s.roots, vec![Expr::int(6)]);
+        assert_eq!(s.unless_zero, Some(n));
+    }
+
+    #[test]
+    fn quadratic_roots_are_exact_and_ordered() {
+        // x² − 2 = 0: ∓√2
+        let e = sx().mul(&sx()).sub(&Expr::int(2));
+        let s = solve(&e, &x()).unwrap();
+        let r: Vec<f64> = s.roots.iter().map(|r| r.as_f64().unwrap()).collect();
+        assert!((r[0] + 2f64.sqrt()).abs() < 1e-15 && (r[1] - 2f64.sqrt()).abs() < 1e-15);
+        // x² − 5x + 6 = 0: 2, 3
+        let e = sx()
+            .mul(&sx())
+            .sub(&sx().scale(&Coef::int(5)))
+            .add(&Expr::int(6));
+        assert_eq!(
+            solve(&e, &x()).unwrap().roots,
+            vec![Expr::int(2), Expr::int(3)]
+        );
+        // (x − 1)² = 0: one root
+        let e = sx().sub(&Expr::int(1)).powi(2).unwrap();
+        assert_eq!(solve(&e, &x()).unwrap().roots, vec![Expr::int(1)]);
+    }
+
+    #[test]
+    fn refusals_name_why() {
+        let e = sx().mul(&sx()).add(&Expr::int(1));
+        assert!(solve(&e, &x()).unwrap_err().contains("no real x"));
+        let e = sx().powi(3).unwrap().sub(&Expr::int(1));
+        assert!(solve(&e, &x()).unwrap_err().contains("degree 3"));
+        let e = Expr::sin(&sx()).sub(&Expr::int(1));
+        let err = solve(&e, &x()).unwrap_err();
+        assert!(err.contains("inside"), "{err}");
+        assert!(
+            solve(&Expr::default(), &x())
+                .unwrap_err()
+                .contains("every x")
+        );
+        assert!(
+            solve(&Expr::int(3), &x())
+                .unwrap_err()
+                .contains("does not occur")
+        );
+    }
+}
