@@ -324,14 +324,7 @@ impl Interp<'_> {
         if let Some(s) = suggest::did_you_mean(name, &candidates) {
             d = d.with_help(format!("did you mean '{s}'?"));
         } else {
-            // (a frame-tagged name is a transform, another most often a scalar)
-            let ty = match self.mode == Mode::Check || name.contains('_') {
-                true => "SE3",
-                false => "scalar",
-            };
-            d = d.with_help(format!(
-                "give it a value first ({name} = ...) or declare it: given {name} : {ty}"
-            ));
+            d = d.with_help(super::slips::declare_it(name, self.mode == Mode::Check));
         }
         Err(d)
     }

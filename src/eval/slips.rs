@@ -133,3 +133,15 @@ pub(super) fn function_as_value(name: &str) -> String {
         _ => format!("call it: {name}(...)"),
     }
 }
+
+/// The help for an unknown name with no near spelling: give it a value or
+/// declare it with `given` (§7) — a transform for a frame-tagged name or
+/// in `check` mode, most often a scalar otherwise.
+pub(super) fn declare_it(name: &str, checking: bool) -> String {
+    let ty = if checking || name.contains('_') {
+        "SE3"
+    } else {
+        "scalar"
+    };
+    format!("give it a value first ({name} = ...) or declare it: given {name} : {ty}")
+}
