@@ -496,34 +496,52 @@ fn exit_without_shutdown_is_an_error_and_a_bad_request_is_answered() {
 }
 
 /// The TextMate grammar (editors/vscode/) colours every builtin as one: its
-/// `builtin` pattern lists exactly the names of the builtin table.
+/// `builtin` pattern lists exactly the names of the builtin table, longest
+/// first. `UPDATE_GRAMMAR=1 cargo test --test lsp editor_grammar` rewrites
+/// it from the table (then `node tokenize.js --update` in
+/// editors/vscode/test/ for the scopes' snapshots).
 #[test]
 fn the_editor_grammar_lists_every_builtin() {
     let path = concat!(
         env!("CARGO_MANIFEST_DIR"),
         "/editors/vscode/syntaxes/chasles.tmLanguage.json"
     );
-    let g: Value = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
-    let pattern = g["repository"]["builtin"]["match"].as_str().unwrap();
-    let inner = pattern
-        .split("(?:")
-        .nth(1)
-        .unwrap()
-        .split(')')
-        .next()
-        .unwrap();
-    let mut listed: Vec<String> = inner.split('|').map(|n| n.replace('\\', "")).collect();
-    listed.sort();
+    let text = std::fs::read_to_string(path).unwrap();
+    let mut g: Value = serde_json::from_str(&text).unwrap();
     let mut names: Vec<String> = chasles::builtins::all_names()
         .into_iter()
         .map(String::from)
         .collect();
-    names.sort();
+    names.sort_by(|a, b| b.len().cmp(&a.len()).then(a.cmp(b)));
     names.dedup();
-    let missing: Vec<&String> = names.iter().filter(|n| !listed.contains(n)).collect();
-    let extra: Vec<&String> = listed.iter().filter(|n| !names.contains(n)).collect();
+    let pattern = g["repository"]["builtin"]["match"]
+        .as_str()
+        .unwrap()
+        .to_string();
+    let (head, rest) = pattern.split_once("(?:").unwrap();
+    let tail = &rest[rest.find(')').unwrap()..];
+    let want = format!("{head}(?:{}{tail}", names.join("|"));
+    if std::env::var_os("UPDATE_GRAMMAR").is_some() {
+        g["repository"]["builtin"]["match"] = Value::String(want);
+        let out = serde_json::to_string_pretty(&g).unwrap() + "\n";
+        std::fs::write(path, out).unwrap();
+        return;
+    }
+    let listed: Vec<&str> = rest[..rest.find(')').unwrap()].split('|').collect();
+    let missing: Vec<&String> = names
+        .iter()
+        .filter(|n| !listed.contains(&n.as_str()))
+        .collect();
+    let extra: Vec<&&str> = listed
+        .iter()
+        .filter(|n| !names.iter().any(|m| m == *n))
+        .collect();
     assert!(
-        missing.is_empty() && extra.is_empty(),
-        "{path}: the builtin pattern lacks {missing:?} and has {extra:?} (longest names first)"
+        pattern == want,
+        "{path}: the builtin pattern lacks {missing:?} and has {extra:?}, or is out of order; \
+         rewrite it with UPDATE_GRAMMAR=1 cargo test --test lsp editor_grammar"
     );
+    // The file is as the update writes it (so that an update changes only
+    // the pattern).
+    assert_eq!(text, serde_json::to_string_pretty(&g).unwrap() + "\n");
 }

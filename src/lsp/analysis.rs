@@ -66,6 +66,9 @@ pub struct Analysis {
     pub defs: Vec<Def>,
     /// The statements checked.
     pub statements: usize,
+    /// The bindings at the end of the check (kinds and frames, no
+    /// numbers): completion types an operand such as `inv(T_ba)` in them.
+    pub env: crate::eval::env::Env,
     /// The value summaries computed so far for hover, by the start of the
     /// binding's statement (this check's text only).
     values: RefCell<HashMap<usize, Option<String>>>,
@@ -153,6 +156,7 @@ impl Analysis {
                 });
             }
         }
+        out.env = session.env;
         out
     }
 

@@ -12,8 +12,10 @@ use lsp_types::{
 use crate::builtins;
 use crate::check::ty::{Frame, Frames};
 use crate::diagnostics::{Diagnostic, Severity};
+use crate::effects::Gate;
+use crate::eval::env::Mode;
 use crate::frontend::{commands::COMMANDS, help, keywords};
-use crate::session::Settings;
+use crate::session::{Session, Settings};
 
 use super::analysis::{Analysis, Def, DefKind};
 use super::text::{Document, Encoding, is_name_char};
@@ -193,22 +195,54 @@ pub fn symbols(doc: &Document, analysis: &Analysis, enc: Encoding) -> Vec<Docume
         .collect()
 }
 
+/// The operand that ends `t`: a name, or a bracketed group with the name
+/// before it (`T_ab`, `inv(T_ba)`, `Ad(T_sb)`, `(T_ab T_bc)`, `T_sb.R`).
+fn last_operand(t: &str) -> &str {
+    let mut depth = 0usize;
+    let mut start = t.len();
+    for (i, c) in t.char_indices().rev() {
+        match c {
+            ')' | ']' => depth += 1,
+            '(' | '[' if depth == 0 => break,
+            '(' | '[' => depth -= 1,
+            c if depth == 0 && !(is_name_char(c) || c == '.') => break,
+            _ => {}
+        }
+        start = i;
+    }
+    &t[start..]
+}
+
 /// The frame that names after the text before the cursor should start
 /// from: after `T_ab *` (or `T_ab ` multiplying by juxtaposition, or
 /// `inv(T_ba) *`) the inner frame {b} of the operand, so that the product
-/// cancels (§6).
-fn wanted_frame(before: &str, analysis: &Analysis, offset: usize) -> Option<Frame> {
+/// cancels (§6). A name is looked up where it is read; any other operand
+/// is typed, in check mode, in the bindings the check ended with.
+fn wanted_frame(
+    before: &str,
+    analysis: &Analysis,
+    offset: usize,
+    settings: Settings,
+) -> Option<Frame> {
     let t = before.trim_end();
     let t = t.strip_suffix('*').unwrap_or(t).trim_end();
-    let end = t.len();
-    let start = t
-        .char_indices()
-        .rev()
-        .take_while(|(_, c)| is_name_char(*c))
-        .last()
-        .map(|(i, _)| i)?;
-    let def = analysis.def_at(&t[start..end], offset)?;
-    match def.ty.frames {
+    let operand = last_operand(t);
+    if operand.is_empty() {
+        return None;
+    }
+    let frames = if operand.chars().all(is_name_char) {
+        analysis.def_at(operand, offset)?.ty.frames
+    } else {
+        let mut session = Session::new(settings);
+        session.gate = Gate::deny();
+        session.env = analysis.env.clone();
+        let mut frames = None;
+        session.evaluate(operand, Mode::Check, false, |r| {
+            frames = r.result.as_ref().ok().map(|o| o.ty.frames);
+        });
+        frames?
+    };
+    match frames {
         Frames::Pair(_, inner) => Some(inner),
         _ => None,
     }
@@ -226,7 +260,12 @@ fn outer(f: &Frames) -> Option<Frame> {
 /// types after `given NAME :`; otherwise the bindings made before the cursor (after `T_ab *`, those
 /// whose outer frame is {b} first), the builtins with their signatures,
 /// and keywords — each starting with the word typed (ignoring case).
-pub fn completion(doc: &Document, analysis: &Analysis, offset: usize) -> Vec<CompletionItem> {
+pub fn completion(
+    doc: &Document,
+    analysis: &Analysis,
+    offset: usize,
+    settings: Settings,
+) -> Vec<CompletionItem> {
     let offset = crate::span::floor_boundary(&doc.text, offset);
     let line_start = doc.text[..offset].rfind('\n').map_or(0, |i| i + 1);
     let before = &doc.text[line_start..offset];
@@ -270,7 +309,7 @@ pub fn completion(doc: &Document, analysis: &Analysis, offset: usize) -> Vec<Com
     if typed.is_empty() && lead.ends_with(':') {
         return Vec::new();
     }
-    let want = wanted_frame(&before[..word_start], analysis, offset);
+    let want = wanted_frame(&before[..word_start], analysis, offset, settings);
     let mut items = Vec::new();
     let mut seen = std::collections::HashSet::new();
     for d in analysis
@@ -321,4 +360,49 @@ pub fn completion(doc: &Document, analysis: &Analysis, offset: usize) -> Vec<Com
         });
     }
     items
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_operand_before_the_cursor() {
+        assert_eq!(last_operand("x = T_ab"), "T_ab");
+        assert_eq!(last_operand("x = inv(T_ba)"), "inv(T_ba)");
+        assert_eq!(last_operand("T_ab T_bc"), "T_bc");
+        assert_eq!(last_operand("y = (T_ab T_bc)"), "(T_ab T_bc)");
+        assert_eq!(last_operand("f(T_sb.R"), "T_sb.R");
+        assert_eq!(last_operand("x = "), "");
+    }
+
+    #[test]
+    fn after_a_product_the_names_that_cancel_come_first() {
+        let src = "given T_ab, T_ca, T_bc : SE3\nw_a = (0, 0, 1)\nx = inv(T_ca) * \n";
+        let doc = Document::new(src.into(), 1);
+        let a = Analysis::of(src, Settings::default());
+        let items = completion(&doc, &a, src.len() - 1, Settings::default());
+        let mut first: Vec<&str> = items
+            .iter()
+            .filter(|i| i.preselect == Some(true))
+            .map(|i| i.label.as_str())
+            .collect();
+        first.sort();
+        // inv(T_ca) is {a}←{c}: what follows it starts from {c}, as T_ca does.
+        assert_eq!(first, ["T_ca"]);
+        let src = "given T_ab, T_ca, T_bc : SE3\nw_b = (0, 0, 1)\nx = Ad(T_ab) * \n";
+        let doc = Document::new(src.into(), 1);
+        let a = Analysis::of(src, Settings::default());
+        let items = completion(&doc, &a, src.len() - 1, Settings::default());
+        let first: Vec<&str> = items
+            .iter()
+            .filter(|i| i.preselect == Some(true))
+            .map(|i| i.label.as_str())
+            .collect();
+        assert!(
+            first.contains(&"T_bc") && first.contains(&"w_b"),
+            "{first:?}"
+        );
+        assert!(!first.contains(&"T_ca"), "{first:?}");
+    }
 }

@@ -316,10 +316,16 @@ impl Server<'_> {
                 else {
                     return self.reply_err(req, ErrorCode::InvalidParams, "bad completion params");
                 };
+                let settings = self.settings;
                 let items = self
                     .at(&p.text_document_position)
                     .and_then(|(o, at)| {
-                        Some(features::completion(&o.doc, o.analysis.as_ref()?, at))
+                        Some(features::completion(
+                            &o.doc,
+                            o.analysis.as_ref()?,
+                            at,
+                            settings,
+                        ))
                     })
                     .unwrap_or_default();
                 serde_json::to_value(CompletionResponse::Array(items))
