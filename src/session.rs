@@ -102,6 +102,25 @@ impl Report {
         self.stderr_text(settings, file, src)
     }
 
+    /// Appends what this statement prints to `out` (a line) and `err`, as
+    /// [`Session::run_to_strings`] and the REPL's recording runner collect
+    /// a run's text.
+    pub fn append_to(
+        &self,
+        settings: &Settings,
+        file: &str,
+        src: &str,
+        out: &mut String,
+        err: &mut String,
+    ) {
+        let o = self.stdout(settings, src);
+        if !o.is_empty() {
+            out.push_str(&o);
+            out.push('\n');
+        }
+        err.push_str(&self.stderr(settings, file, src));
+    }
+
     fn stderr_text(&self, settings: &Settings, file: &str, src: &str) -> String {
         let mut out = String::new();
         for w in &self.warnings {
@@ -376,12 +395,7 @@ impl Session {
         let (mut out, mut err) = (String::new(), String::new());
         let settings = self.settings;
         let n = self.statements(src, mode, keep_going, write, |r| {
-            let o = r.stdout(&settings, src);
-            if !o.is_empty() {
-                out.push_str(&o);
-                out.push('\n');
-            }
-            err.push_str(&r.stderr(&settings, file, src));
+            r.append_to(&settings, file, src, &mut out, &mut err);
         });
         (out, err, n)
     }

@@ -147,6 +147,13 @@ fn check_reports_each_file_on_its_own_line_past_one_not_utf8() {
     assert!(!dir.join("r.xml").exists());
     // Without the unreadable file, a script error is exit 1.
     assert_eq!(in_dir(&dir, &["check", "a.chs", "c.chs"]).code, Some(1));
+    // One statement is one, not "1 statements".
+    write(&dir, "one.chs", b"T_ab = Rotz(1)\n");
+    let one = in_dir(&dir, &["check", "one.chs"]);
+    assert_eq!(
+        one.stdout,
+        "one.chs: 1 statement checked, frames consistent\n"
+    );
 }
 
 #[test]

@@ -234,7 +234,10 @@ impl Batch<'_> {
         }
         if self.mode == Mode::Check && !settings.json {
             let summary = if errors == 0 {
-                format!("{name}: {statements} statements checked, frames consistent")
+                format!(
+                    "{name}: {statements} statement{} checked, frames consistent",
+                    if statements == 1 { "" } else { "s" }
+                )
             } else {
                 format!(
                     "{name}: {errors} error{}",

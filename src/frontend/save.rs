@@ -16,12 +16,7 @@ pub fn run_recording(session: &mut Session, file: &str, src: &str) -> (String, S
     let (mut out, mut err) = (String::new(), String::new());
     let settings = session.settings;
     let n = run_recording_each(session, src, |r| {
-        let o = r.stdout(&settings, src);
-        if !o.is_empty() {
-            out.push_str(&o);
-            out.push('\n');
-        }
-        err.push_str(&r.stderr(&settings, file, src));
+        r.append_to(&settings, file, src, &mut out, &mut err);
     });
     (out, err, n)
 }
