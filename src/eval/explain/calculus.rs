@@ -14,18 +14,6 @@ use crate::syntax::ast::{BinOp, Expr, ExprKind, Ident, Name, UnOp};
 /// At most this many nodes of a `diff` are shown.
 const MAX_NODES: usize = 24;
 
-fn shown(reference: &'static str, name: &str, text: String, latex: String, value: Value) -> Shown {
-    Shown {
-        reference,
-        name: name.to_string(),
-        text,
-        latex,
-        note: None,
-        value,
-        frames: Vec::new(),
-    }
-}
-
 /// ω of the so(3) block of a numeric or symbolic 4×4 matrix: (m₃₂, m₁₃, m₂₁).
 fn omega(v: &Value) -> Option<Value> {
     match v {
@@ -97,14 +85,14 @@ impl Interp<'_> {
         }
         let tdv = self.expr(tdot).ok()?.value()?.clone();
         let mut out = vec![
-            shown(
+            Shown::new(
                 "3.68",
                 "T",
                 "T = [R, p; 0, 1]".into(),
                 r"T = \begin{bmatrix} R & p \\ 0 & 1 \end{bmatrix}".into(),
                 tv.value()?.clone(),
             ),
-            shown(
+            Shown::new(
                 "3.69",
                 "T_dot",
                 "Ṫ = [Ṙ, ṗ; 0, 0]".into(),
@@ -113,21 +101,21 @@ impl Interp<'_> {
             ),
         ];
         if body {
-            out.push(shown(
+            out.push(Shown::new(
                 "3.69",
                 "omega_b",
                 "[ω_b] = RᵀṘ".into(),
                 r"[\omega_b] = R^T \dot R".into(),
                 omega(value)?,
             ));
-            out.push(shown(
+            out.push(Shown::new(
                 "3.70",
                 "v_b",
                 "v_b = Rᵀṗ".into(),
                 r"v_b = R^T \dot p".into(),
                 block(value, 0..3, 3..4, Kind::Vector(Some(3)))?,
             ));
-            out.push(shown(
+            out.push(Shown::new(
                 "3.72",
                 "V_b",
                 "T⁻¹Ṫ = [V_b] = [[ω_b], v_b; 0, 0]".into(),
@@ -135,21 +123,21 @@ impl Interp<'_> {
                 value.clone(),
             ));
         } else {
-            out.push(shown(
+            out.push(Shown::new(
                 "3.73",
                 "omega_s",
                 "[ω_s] = ṘRᵀ".into(),
                 r"[\omega_s] = \dot R R^T".into(),
                 omega(value)?,
             ));
-            out.push(shown(
+            out.push(Shown::new(
                 "3.74",
                 "v_s",
                 "v_s = ṗ − ṘRᵀp = ṗ − ω_s × p".into(),
                 r"v_s = \dot p - \omega_s \times p".into(),
                 block(value, 0..3, 3..4, Kind::Vector(Some(3)))?,
             ));
-            out.push(shown(
+            out.push(Shown::new(
                 "3.73",
                 "V_s",
                 "ṪT⁻¹ = [V_s] = [[ω_s], v_s; 0, 0]".into(),
@@ -221,7 +209,7 @@ impl Interp<'_> {
             _ => rule,
         };
         let text = self.src.get(x.span.start..x.span.end).unwrap_or("?");
-        out.push(shown(
+        out.push(Shown::new(
             "3.2.2",
             "diff",
             format!("d/dt {text}: {rule}"),

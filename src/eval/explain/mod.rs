@@ -45,6 +45,26 @@ pub struct Shown {
 }
 
 impl Shown {
+    /// A step computed here (not recorded by `lie::steps`): no note, no
+    /// frames.
+    fn new(
+        reference: &'static str,
+        name: &str,
+        text: String,
+        latex: String,
+        value: Value,
+    ) -> Shown {
+        Shown {
+            reference,
+            name: name.to_string(),
+            text,
+            latex,
+            note: None,
+            value,
+            frames: Vec::new(),
+        }
+    }
+
     fn of(s: Step) -> Shown {
         Shown {
             reference: s.reference,
@@ -440,17 +460,8 @@ fn call_steps(name: &str, args: &[Value]) -> Option<Vec<Step>> {
 /// Grübler's formula (2.4) with this mechanism's counts.
 fn mechanism(m: &crate::mech::Mechanism) -> Vec<Shown> {
     let int = |x: i64| Value::scalar(x as f64);
-    let step = |reference, name: &str, text: String, latex: String, value| Shown {
-        reference,
-        name: name.to_string(),
-        text,
-        latex,
-        note: None,
-        value,
-        frames: Vec::new(),
-    };
     let mut out = vec![
-        step(
+        Shown::new(
             "2.4",
             "m",
             format!(
@@ -461,21 +472,21 @@ fn mechanism(m: &crate::mech::Mechanism) -> Vec<Shown> {
             format!(r"m = {}", m.m()),
             int(m.m()),
         ),
-        step(
+        Shown::new(
             "2.4",
             "N",
             "N = the number of links, ground included".into(),
             "N".into(),
             int(m.links()),
         ),
-        step(
+        Shown::new(
             "2.4",
             "J",
             format!("J = the number of joints ({})", m.joints_text()),
             "J".into(),
             int(m.joint_count()),
         ),
-        step(
+        Shown::new(
             "Table 2.1",
             "f_i",
             "Σ fᵢ = the freedoms of the joints (Table 2.1)".into(),
@@ -483,7 +494,7 @@ fn mechanism(m: &crate::mech::Mechanism) -> Vec<Shown> {
             int(m.sum_f()),
         ),
     ];
-    let mut dof = step(
+    let mut dof = Shown::new(
         "2.4",
         "dof",
         m.formula(),

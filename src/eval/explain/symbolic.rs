@@ -13,16 +13,9 @@ use crate::eval::value::Value;
 use crate::lie::steps::{self, Quantity, Step};
 use crate::syntax::ast::{BinOp, Expr, ExprKind};
 
+/// [`Shown::new`] with the formula's texts borrowed.
 fn shown(reference: &'static str, name: &str, text: &str, latex: &str, value: Value) -> Shown {
-    Shown {
-        reference,
-        name: name.to_string(),
-        text: text.to_string(),
-        latex: latex.to_string(),
-        note: None,
-        value,
-        frames: Vec::new(),
-    }
+    Shown::new(reference, name, text.to_string(), latex.to_string(), value)
 }
 
 /// The closed forms of an inverse (Prop. 3.1, (3.64)) or an adjoint
