@@ -341,6 +341,9 @@ impl Interp<'_> {
             if let Some(t) = self.e_power(lhs, rhs, span) {
                 return t;
             }
+            if let Some(t) = self.exp_power(lhs, rhs, span) {
+                return t;
+            }
             if let Some(t) = self.bracket_power(lhs, rhs, span)? {
                 return Ok(t);
             }

@@ -193,6 +193,62 @@ impl Interp<'_> {
         Some(self.call(*super::env::EXP, lhs.span, std::slice::from_ref(rhs), span))
     }
 
+    /// `exp(X)^n` for an integer n is `exp(n X)` (LANGUAGE.md §7: e^{X}
+    /// commutes with itself, so (e^{X})ⁿ = e^{nX}, n < 0 included): one
+    /// closed form of the multiple, not the n-th power of the entries
+    /// (`exp([(1,2,3)] x)^50` is Rodrigues' form at the angle 50√14 x).
+    /// None when `lhs` is not a call of the builtin `exp` with one
+    /// argument over symbols, or the exponent is not an integer number.
+    pub(super) fn exp_power(
+        &mut self,
+        lhs: &Expr,
+        rhs: &Expr,
+        span: Span,
+    ) -> Option<Result<Typed, Diagnostic>> {
+        let ExprKind::Call { func, args } = &lhs.kind else {
+            return None;
+        };
+        let [arg] = args.as_slice() else {
+            return None;
+        };
+        if func.name != *super::env::EXP || self.env.func(func.name).is_some() {
+            return None;
+        }
+        let n = match self.probe(rhs) {
+            Ok(t) => t.val.as_deref().and_then(Value::as_scalar)?,
+            Err(_) => return None,
+        };
+        if n.fract() != 0.0 || n.abs() > f64::from(i32::MAX) {
+            return None;
+        }
+        // (numbers keep their power: the closed form is for symbols)
+        match self.probe(arg) {
+            Ok(t)
+                if t.val
+                    .as_deref()
+                    .is_some_and(|v| matches!(v, Value::Sym(_) | Value::Formula { .. })) => {}
+            _ => return None,
+        }
+        let multiple = Expr {
+            kind: ExprKind::Binary {
+                op: BinOp::Mul,
+                lhs: Box::new(rhs.clone()),
+                rhs: Box::new(arg.clone()),
+                op_span: Span::new(rhs.span.start, rhs.span.start),
+                implicit: true,
+            },
+            span: arg.span,
+        };
+        let call = Expr {
+            kind: ExprKind::Call {
+                func: func.clone(),
+                args: vec![multiple],
+            },
+            span,
+        };
+        Some(self.expr(&call))
+    }
+
     /// `X[v]` with `v` a 3- or 6-vector: the book's `X [v]`, a product.
     pub(super) fn bracket_index(
         &mut self,

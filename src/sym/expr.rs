@@ -356,11 +356,11 @@ impl Expr {
         out.folded(self.has_phase() || o.has_phase())
     }
 
-    /// A raw product made canonical: roots, unit axes, half angles
-    /// ([`super::half`]) and (when a factor had one) phases folded. Each fold maps term by term, so a sum of
+    /// A raw product made canonical: roots, exponentials ([`super::exps`]), unit
+    /// axes, half angles ([`super::half`]) and (when a factor had one) phases folded. Each fold maps term by term, so a sum of
     /// raw products folds to the sum of the folded products.
     pub(super) fn folded(self, phases: bool) -> Expr {
-        let out = self.fold_roots().fold_units().fold_halves();
+        let out = self.fold_exps().fold_roots().fold_units().fold_halves();
         if phases {
             return out.fold_phases();
         }
@@ -427,7 +427,7 @@ impl Expr {
                 .collect();
             let mut out = Expr::zero();
             out.push(m, c.inv()?);
-            return Some(out.fold_phases());
+            return Some(out.fold_exps().fold_phases());
         }
         let bar = self.conj();
         if bar != *self {

@@ -273,7 +273,7 @@ pub fn rodrigues(w: &[Expr], theta: &Expr) -> Mat {
 
 /// Entries that are constant multiples of one expression: (multiples, θ)
 /// with θ's leading coefficient 1, so that [ω]θ splits into ω and θ.
-fn common_factor(entries: &[Expr]) -> Option<(Vec<Coef>, Expr)> {
+pub(super) fn common_factor(entries: &[Expr]) -> Option<(Vec<Coef>, Expr)> {
     let first = entries.iter().find(|e| !e.is_zero())?;
     let lead = first.terms.values().next()?.clone();
     let theta = first.scale(&lead.inv()?);
