@@ -337,16 +337,10 @@ impl Interp<'_> {
         op_span: Span,
         span: Span,
     ) -> Result<Typed, Diagnostic> {
-        if op == BinOp::Pow {
-            if let Some(t) = self.e_power(lhs, rhs, span) {
-                return t;
-            }
-            if let Some(t) = self.exp_power(lhs, rhs, span) {
-                return t;
-            }
-            if let Some(t) = self.bracket_power(lhs, rhs, span)? {
-                return Ok(t);
-            }
+        if op == BinOp::Pow
+            && let Some(t) = self.power_notation(lhs, rhs, span)?
+        {
+            return Ok(t);
         }
         let (l, r) = self.operands(op, lhs, rhs)?;
         self.no_arithmetic(&[(&l, lhs.span), (&r, rhs.span)], op_span)?;

@@ -193,6 +193,24 @@ impl Interp<'_> {
         Some(self.call(*super::env::EXP, lhs.span, std::slice::from_ref(rhs), span))
     }
 
+    /// A power in the book's notation: `e^(A t)` ([`Interp::e_power`]),
+    /// `exp(X)^n` ([`Interp::exp_power`]), `X[v]^2`
+    /// ([`Interp::bracket_power`]); None for any other power.
+    pub(super) fn power_notation(
+        &mut self,
+        lhs: &Expr,
+        rhs: &Expr,
+        span: Span,
+    ) -> Result<Option<Typed>, Diagnostic> {
+        if let Some(t) = self.e_power(lhs, rhs, span) {
+            return t.map(Some);
+        }
+        if let Some(t) = self.exp_power(lhs, rhs, span) {
+            return t.map(Some);
+        }
+        self.bracket_power(lhs, rhs, span)
+    }
+
     /// `exp(X)^n` for an integer n is `exp(n X)` (LANGUAGE.md §7: e^{X}
     /// commutes with itself, so (e^{X})ⁿ = e^{nX}, n < 0 included): one
     /// closed form of the multiple, not the n-th power of the entries
