@@ -232,3 +232,56 @@ fn a_power_of_exp_is_exp_of_the_multiple() {
         assert!((g - w).abs() < 1e-9, "{got:?} {want:?}");
     }
 }
+
+/// The book's transform of symbolic blocks (3.62) and its algebra: the
+/// inverse (3.64), products (3.63), the adjoint's inverse (Proposition
+/// 3.20) and the parts; with numbers bound later, the numeric product.
+#[test]
+fn the_transform_of_symbolic_blocks() {
+    let setup = "given R : SO3\ngiven p : vec3\nT = [R, p; 0, 1]";
+    for (stmt, want) in [
+        ("inv(Ad(T)) == Ad(inv(T))", "true"),
+        ("inv(T) T == I", "true"),
+        ("T inv(T) == I", "true"),
+        ("inv(T) T", "I  : SE(3)"),
+        ("T.R", "R  : SO(3)"),
+        ("T.p", "p  : 3-vector"),
+        ("inv(T).p", "(-R.T) p  : 3-vector"),
+        ("inv(T) T T == T", "true"),
+    ] {
+        assert_eq!(last(&format!("{setup}\n{stmt}")), want, "{stmt}");
+    }
+    let two = format!("{setup}\ngiven S : SO3\ngiven q : vec3\nU = [S, q; 0, 1]");
+    assert_eq!(
+        last(&format!("{two}\nT U")),
+        "[R S, R q + p; 0, 1]  : SE(3)"
+    );
+    assert_eq!(last(&format!("{two}\n(T U).R")), "R S  : SO(3)");
+    // numbers bound later: the numeric product of the numeric transforms
+    let got = numbers(
+        &json(&format!(
+            "{two}\nV = T U\nR = Rotz(0.3)\np = (1, 2, 3)\nS = Roty(0.2)\nq = (0, 1, 0)\nV"
+        ))
+        .last()
+        .unwrap()["value"],
+    );
+    let want = numbers(
+        &json("[Rotz(0.3), (1, 2, 3); 0, 1] [Roty(0.2), (0, 1, 0); 0, 1]")
+            .last()
+            .unwrap()["value"],
+    );
+    assert_eq!(got.len(), 16);
+    for (g, w) in got.iter().zip(&want) {
+        assert!((g - w).abs() < 1e-12, "{got:?} {want:?}");
+    }
+    // a block that is not a transform is not inverted by transposing
+    let m = "given R : SO3\ngiven p : vec3\nM = [2 R, p; 0, 1]";
+    assert_eq!(
+        last(&format!("{m}\ninv(M)")),
+        "inv([2 R, p; 0, 1])  : 4×4 matrix"
+    );
+    assert_eq!(
+        last(&format!("{m}\nM M")),
+        "[2 R, p; 0, 1] [2 R, p; 0, 1]  : 4×4 matrix"
+    );
+}

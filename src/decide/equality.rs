@@ -122,8 +122,12 @@ fn adjoint_inverses(s: &Sym) -> Sym {
     let go = |x: &Sym| Box::new(adjoint_inverses(x));
     match s {
         Sym::Inv(x) => match adjoint_inverses(x) {
+            // (a block [R, p; 0, 1] where Ad is defined is a transform:
+            // its inverse in closed form, 3.64, as `inv` gives it)
             Sym::Call(f, args) if f.role == Role::Adjoint && args.len() == 1 => {
-                Sym::Call(f, vec![args[0].clone().inverse()])
+                let inv = crate::seam::transform::inverse(&args[0])
+                    .unwrap_or_else(|| args[0].clone().inverse());
+                Sym::Call(f, vec![inv])
             }
             x => x.inverse(),
         },

@@ -251,7 +251,11 @@ impl<'a> Op<'a> {
             }
             Op::Inverse => one(&mut args).inverse(),
             Op::Transpose => one(&mut args).transpose(),
-            Op::Member(part) => Sym::Member(Box::new(one(&mut args)), part),
+            // (`[R, p; 0, 1].R` is R, 3.62)
+            Op::Member(part) => {
+                let x = one(&mut args);
+                super::transform::member(&x, part).unwrap_or_else(|| Sym::Member(Box::new(x), part))
+            }
             Op::Index(sels) => Sym::Index(
                 Box::new(one(&mut args)),
                 sels.iter()
@@ -375,6 +379,13 @@ impl<'a> Op<'a> {
         };
         if let (true, Kind::SE3, Some(Value::Sym(s))) = (inverse, kind, args.first())
             && let Some(t) = super::transform::inverse(s)
+        {
+            return Some(Ok(Value::Sym(t)));
+        }
+        // a product of transforms `[R, p; 0, 1]` in closed form (3.63)
+        if let (Op::Arith(BinOp::Mul), Kind::SE3, [Value::Sym(a), Value::Sym(b)]) =
+            (self, kind, args)
+            && let Some(t) = super::transform::product(a, b)
         {
             return Some(Ok(Value::Sym(t)));
         }

@@ -15,4 +15,4 @@ pub(crate) mod exactness;
 pub(crate) mod operation;
 pub(crate) mod range;
 mod shapes;
-mod transform;
+pub mod transform;

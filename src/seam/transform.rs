@@ -1,8 +1,12 @@
 //! The book's transform written as a block over symbols, `[R, p; 0, 1]`
-//! with R in SO(3) (3.62), and its inverse in closed form (3.64):
-//! T⁻¹ = `[Rᵀ, -Rᵀ p; 0, 1]`.
+//! with R in SO(3) (3.62), and its algebra in closed form: the inverse
+//! (3.64) T⁻¹ = `[Rᵀ, -Rᵀ p; 0, 1]`, the product (3.63 applied twice)
+//! `[R₁, p₁; 0, 1] [R₂, p₂; 0, 1]` = `[R₁R₂, R₁p₂ + p₁; 0, 1]`, and the
+//! parts `T.R` = R, `T.p` = p. So `inv(T) T` is `I` (RᵀR = I for the
+//! rotation block, Rᵀp − Rᵀp = 0).
 
-use crate::values::value::Sym;
+use crate::values::symbolic::Part;
+use crate::values::value::{Sym, Value};
 
 /// Whether `s` is the constant number `x` (the literal `0` or `1` of a
 /// transform's last row).
@@ -10,25 +14,128 @@ fn is_const(s: &Sym, x: f64) -> bool {
     matches!(s, Sym::Const(v, _) if v.as_scalar() == Some(x))
 }
 
-/// The inverse (3.64) of `[R, p; 0, 1]` (or `[R, p; 0, 0, 0, 1]`), given
-/// that the checker typed it a transform in SE(3), so that R is a rotation
-/// and Rᵀ = R⁻¹ (3.57): `[Rᵀ, -Rᵀ p; 0, 1]`. None for any other shape.
-pub(super) fn inverse(s: &Sym) -> Option<Sym> {
+/// The blocks R and p and the last row of `[R, p; 0, 1]` (or `[R, p; 0,
+/// 0, 0, 1]`); None for any other shape.
+fn parts(s: &Sym) -> Option<(&Sym, &Sym, &Vec<Sym>)> {
     let Sym::Block(rows) = s else { return None };
     let [top, bottom] = rows.as_slice() else {
         return None;
     };
     let [r, p] = top.as_slice() else { return None };
-    let last = match bottom.as_slice() {
-        [z, o] if is_const(z, 0.0) && is_const(o, 1.0) => bottom.clone(),
+    match bottom.as_slice() {
+        [z, o] if is_const(z, 0.0) && is_const(o, 1.0) => {}
         [a, b, c, o]
-            if is_const(a, 0.0) && is_const(b, 0.0) && is_const(c, 0.0) && is_const(o, 1.0) =>
-        {
-            bottom.clone()
-        }
+            if is_const(a, 0.0) && is_const(b, 0.0) && is_const(c, 0.0) && is_const(o, 1.0) => {}
         _ => return None,
-    };
+    }
+    Some((r, p, bottom))
+}
+
+/// The inverse (3.64) of `[R, p; 0, 1]` (or `[R, p; 0, 0, 0, 1]`), given
+/// that the checker typed it a transform in SE(3), so that R is a rotation
+/// and Rᵀ = R⁻¹ (3.57): `[Rᵀ, -Rᵀ p; 0, 1]`. None for any other shape.
+pub fn inverse(s: &Sym) -> Option<Sym> {
+    let (r, p, last) = parts(s)?;
     let rt = r.clone().transpose();
     let moved = Sym::times(Sym::Neg(Box::new(rt.clone())), p.clone());
-    Some(Sym::Block(vec![vec![rt, moved], last]))
+    Some(Sym::Block(vec![vec![rt, moved], last.clone()]))
+}
+
+/// `T.R` or `T.p` of the block `[R, p; 0, 1]`: the block itself (3.62).
+pub(super) fn member(s: &Sym, part: Part) -> Option<Sym> {
+    let (r, p, _) = parts(s)?;
+    match part {
+        Part::R => Some(r.clone()),
+        Part::P => Some(p.clone()),
+        _ => None,
+    }
+}
+
+/// The zero vector, as the block `0` is written.
+fn zero() -> Sym {
+    Sym::Const(Box::new(Value::scalar(0.0)), "0".into())
+}
+
+/// (true, x) for −x, written `-x` or `(-X) y …` (the inverse's −Rᵀp);
+/// (false, s) otherwise.
+fn sign(s: &Sym) -> (bool, Sym) {
+    match s {
+        Sym::Neg(x) => (true, (**x).clone()),
+        Sym::Product(fs) => match fs.split_first() {
+            Some((Sym::Neg(x), rest)) => {
+                let mut all = vec![(**x).clone()];
+                all.extend(rest.iter().cloned());
+                (true, Sym::product(all))
+            }
+            _ => (false, s.clone()),
+        },
+        _ => (false, s.clone()),
+    }
+}
+
+fn signed(neg: bool, s: Sym) -> Sym {
+    if is_const(&s, 0.0) || !neg {
+        s
+    } else {
+        Sym::Neg(Box::new(s))
+    }
+}
+
+/// True when `a b` is I for the rotation blocks a and b: one is the
+/// other's transpose or inverse (the blocks are whole rotations, 3.57; a
+/// factor of one need not be).
+fn inverse_rotations(a: &Sym, b: &Sym) -> bool {
+    a.clone().transpose() == *b || b.clone().transpose() == *a || a.clone().inverse() == *b
+}
+
+/// R v for the rotation block R: v's leading Rᵀ (or R⁻¹) cancels.
+fn rotate(r: &Sym, v: &Sym) -> Sym {
+    let (neg, v) = sign(v);
+    if is_const(&v, 0.0) {
+        return zero();
+    }
+    if let Sym::Product(fs) = &v
+        && let Some((first, rest)) = fs.split_first()
+        && inverse_rotations(r, first)
+    {
+        return signed(neg, Sym::product(rest.to_vec()));
+    }
+    if matches!(r, Sym::Identity) {
+        return signed(neg, v);
+    }
+    signed(neg, Sym::times(r.clone(), v))
+}
+
+/// a + b, with x + (−x) = 0 and 0 + x = x.
+fn plus(a: Sym, b: &Sym) -> Sym {
+    if is_const(&a, 0.0) {
+        return b.clone();
+    }
+    if is_const(b, 0.0) {
+        return a;
+    }
+    let ((na, xa), (nb, xb)) = (sign(&a), sign(b));
+    if na != nb && xa == xb {
+        return zero();
+    }
+    Sym::Add(Box::new(a), Box::new(b.clone()))
+}
+
+/// `[R₁, p₁; 0, 1] [R₂, p₂; 0, 1]` = `[R₁R₂, R₁p₂ + p₁; 0, 1]`, given that
+/// the checker typed the product a transform in SE(3) (so both factors
+/// are, and R₁, R₂ are rotations); `I` when that is the identity. None
+/// when either factor is not such a block.
+pub(super) fn product(a: &Sym, b: &Sym) -> Option<Sym> {
+    let (r1, p1, last) = parts(a)?;
+    let (r2, p2, _) = parts(b)?;
+    let r = if inverse_rotations(r1, r2) {
+        Sym::Identity
+    } else {
+        Sym::times(r1.clone(), r2.clone())
+    };
+    let p = plus(rotate(r1, p2), p1);
+    if matches!(r, Sym::Identity) && is_const(&p, 0.0) {
+        return Some(Sym::Identity);
+    }
+    Some(Sym::Block(vec![vec![r, p], last.clone()]))
 }
