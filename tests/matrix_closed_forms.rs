@@ -285,3 +285,35 @@ fn the_transform_of_symbolic_blocks() {
         "[2 R, p; 0, 1] [2 R, p; 0, 1]  : 4×4 matrix"
     );
 }
+
+/// A stated assumption broken by numbers bound later (LANGUAGE.md §7):
+/// the value that relied on "u is a unit vector" is computed again with
+/// the numbers and says so, naming the assumption and the numbers; with
+/// a unit u it holds, silently.
+#[test]
+fn a_value_that_relied_on_a_unit_axis_says_so_when_numbers_break_it() {
+    let setup = "given θ\ngiven u : vec3\nR = exp([u] θ)\nd = dot(u, u) == 1\ne = dot(u, u)\nc = [u]^3 == -[u]";
+    let (out, err) = outputs(&format!("{setup}\nu = (1, 1, 0)\nd\ne\nc\nd"));
+    let lines: Vec<&str> = out.lines().collect();
+    assert_eq!(
+        lines[lines.len() - 4..],
+        ["false", "2", "false", "false"],
+        "{out}"
+    );
+    for name in ["d", "e", "c"] {
+        let said = format!(
+            "{name} was computed assuming u is a unit vector, ‖u‖ = 1; u = (1, 1, 0) breaks it (‖u‖ = 1.4142)"
+        );
+        assert_eq!(err.matches(&said).count(), 1, "{name}: {err}");
+    }
+    // before the numbers, under the assumption: true, 1, true
+    assert!(out.contains("d = true\ne = 1\nc = true\n"), "{out}");
+    // a unit u keeps it: the same values, no warning
+    let (out, err) = outputs(&format!("{setup}\nu = (0.6, 0, 0.8)\nd\ne\nc"));
+    assert!(out.ends_with("true\n1\ntrue\n"), "{out}");
+    assert!(!err.contains("computed assuming"), "{err}");
+    // a value made without the assumption has nothing to say
+    let (out, err) = outputs("given u : vec3\nv = 2 u\nu = (1, 1, 0)\nv");
+    assert!(out.ends_with("(2, 2, 0)  : 3-vector\n"), "{out}");
+    assert!(!err.contains("assuming"), "{err}");
+}

@@ -426,7 +426,7 @@ fn ratio(name: &str, x: &Expr) -> Option<Expr> {
 /// exponential coordinates, as MatrixExp3/6 take), or of a scalar.
 fn exp(m: &Mat, kind: &Kind) -> Out {
     match (m.rows, m.cols) {
-        (1, 1) => ok(scalar(Expr::exp(&m.data[0]))),
+        (1, 1) => ok(scalar(Expr::apply(Func::Exp, &m.data[0], f64::exp))),
         (3, 1) => ok(make(&Kind::SO3, sm::exp3(&sm::skew(&m.data))?)),
         (6, 1) => ok(make(&Kind::SE3, sm::exp6(&sm::twist_matrix(&m.data))?)),
         (3, 3) if m.add(&m.transpose(), false) == Some(Mat::zeros(3, 3)) => {

@@ -123,7 +123,12 @@ impl Interp<'_> {
             (Some(v), Some(a), Some(b)) => Some(match self.lowered_sides(a, b, op_span) {
                 // (over given vectors: their components, decided again)
                 Some((x, y)) => crate::values::recipe::compared(v, op, &x, &y),
-                None => crate::values::recipe::compared(v, op, a, b),
+                // (decided by taking a `given` axis as a unit vector: the
+                // comparison is kept, shown decided, and decided again
+                // with the numbers bound later, §7, `super::relied`)
+                None => self
+                    .relied_comparison(op, a, b)
+                    .unwrap_or_else(|| crate::values::recipe::compared(v, op, a, b)),
             }),
             // Undecided while its symbols are free: a bool that waits for
             // their numbers and is then decided as typed first (§7).

@@ -213,6 +213,16 @@ impl std::fmt::Debug for Called {
     }
 }
 
+/// A binding whose closed form took `axes` as unit vectors (LANGUAGE.md
+/// §7, `super::relied`): its name and the stamp of the binding (a name
+/// bound again relies on nothing).
+#[derive(Debug, Clone)]
+pub struct Relied {
+    pub(super) name: String,
+    pub(super) stamp: u64,
+    pub(super) axes: Vec<std::sync::Arc<str>>,
+}
+
 /// All bindings of a session. Statements only insert after they succeed,
 /// so an error never leaves a partial change behind.
 #[derive(Debug, Clone, Default)]
@@ -235,6 +245,9 @@ pub struct Env {
     /// The `given` axes already said to be assumed unit vectors (the note
     /// of `super::lower`, once a session).
     pub(super) units_noted: Vec<String>,
+    /// The bindings whose closed form took some of those axes as unit
+    /// vectors (`super::relied`).
+    pub(super) relied: Vec<Relied>,
     /// The last stamp given to a binding ([`Binding::stamp`]).
     stamp: u64,
     /// The warnings given by reads of values bound later (once per

@@ -239,6 +239,9 @@ impl Interp<'_> {
             };
             // (the warnings of the steps replayed, at the name read: once
             // per binding of the numbers it reads, as typed first)
+            if self.running() {
+                warnings.extend(self.broken_assumptions(name.as_str(), span));
+            }
             if !warnings.is_empty() {
                 for mut w in self.env.fresh_warnings(name.as_str(), warnings) {
                     w.span = span;

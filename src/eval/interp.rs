@@ -192,6 +192,7 @@ impl<'a> Interp<'a> {
                 // (Fig. 3.13: `v_b = (0, 0, 1.5)` is a point, as the book uses it)
                 t.ty.free &= !super::slips::literal_point(&target.name, value);
                 self.bind_value(target.name, &t);
+                self.note_reliance(target.name);
                 let mut o = out(Names::One([target.name]), t);
                 self.shown(&mut o.val, s.span);
                 Ok(o)
@@ -327,6 +328,7 @@ impl<'a> Interp<'a> {
                 let (chain, t) = self.derive(target)?;
                 self.commit(t.value(), s.span)?;
                 self.bind_value(target.name, &t);
+                self.note_reliance(target.name);
                 let mut o = out(Names::One([target.name]), t);
                 o.note = Some(format!("{} = {chain}", target.name));
                 Ok(o)

@@ -59,7 +59,12 @@ fn worth_lowering(s: &Sym, leaf: &dyn Fn(&str) -> Option<Leaf>, asks: &mut bool)
             }
             _ => false,
         },
-        Sym::Identity | Sym::Compare(..) => false,
+        Sym::Identity => false,
+        // (a comparison decided in closed form: `dot(u, u) == 1`)
+        Sym::Compare(_, a, b) => {
+            *asks = true;
+            worth_lowering(a, leaf, asks) && worth_lowering(b, leaf, asks)
+        }
         Sym::Call(_, xs) => {
             *asks = true;
             xs.iter().all(|x| worth_lowering(x, leaf, asks))
@@ -159,6 +164,13 @@ fn lower(s: &Sym, leaf: &dyn Fn(&str) -> Option<Leaf>, assumed: &Assumed) -> Opt
                     // (ω̂₁, ω̂₂, ω̂₃ of the axis noted unit: ‖u‖ = 1 holds)
                     true => {
                         let name: Arc<str> = Arc::from(n.as_str());
+                        // (read as a unit vector: what is made of it relies
+                        // on ‖u‖ = 1 even where no ω̂ is left, dot(u, u) = 1)
+                        let mut seen = assumed.axes.borrow_mut();
+                        if !seen.contains(&name) {
+                            seen.push(name.clone());
+                        }
+                        drop(seen);
                         parts
                             .iter()
                             .map(|e| e.assume_unit(std::slice::from_ref(&name)))
@@ -170,7 +182,25 @@ fn lower(s: &Sym, leaf: &dyn Fn(&str) -> Option<Leaf>, assumed: &Assumed) -> Opt
             }
         },
         Sym::Const(v, _) => Some((**v).clone()),
-        Sym::Identity | Sym::Compare(..) => None,
+        Sym::Identity => None,
+        Sym::Compare(op, a, b) => {
+            let mut both = share_units(vec![go(a)?, go(b)?]).into_iter();
+            let (x, y) = (both.next()?, both.next()?);
+            for v in [&x, &y] {
+                if let Value::Formula { m, .. } = v
+                    && !m.data.iter().all(crate::sym::Expr::unit_reduced)
+                {
+                    return None;
+                }
+            }
+            let mut seen = assumed.axes.borrow_mut();
+            for n in unit_axes(&x).into_iter().chain(unit_axes(&y)) {
+                if !seen.contains(&n) {
+                    seen.push(n);
+                }
+            }
+            super::compare::equal(&x, &y, *op).ok()?.map(Value::Bool)
+        }
         Sym::Product(fs) => {
             let mut acc = go(fs.first()?)?;
             for f in &fs[1..] {
@@ -280,9 +310,17 @@ impl Interp<'_> {
             {
                 None
             }
-            Value::Formula { .. } | Value::Num { .. } => Some((v, assumed)),
+            Value::Formula { .. } | Value::Num { .. } | Value::Bool(_) => Some((v, assumed)),
             _ => None,
         }
+    }
+
+    /// The `given` axes that the closed form of tree `s` takes as unit
+    /// vectors (none when it has no closed form, [`Interp::lower`]).
+    pub(super) fn unit_axes_of(&self, s: &Sym) -> Vec<Arc<str>> {
+        self.lower(s, true, Span::default())
+            .map(|(_, a)| a.axes.into_inner())
+            .unwrap_or_default()
     }
 
     /// `a op b` where a side is a tree: both sides computed in closed form

@@ -17,6 +17,7 @@ mod naming;
 mod notation;
 mod outcome;
 mod paren_product;
+mod relied;
 mod resolve;
 mod slice;
 mod slips;

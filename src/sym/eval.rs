@@ -117,7 +117,7 @@ pub fn rebuild(f: Func, args: &[Expr]) -> Expr {
         Func::Acos => Expr::apply(f, x, f64::acos),
         Func::Atan => Expr::apply(f, x, f64::atan),
         Func::Abs => Expr::apply(f, x, f64::abs),
-        Func::Exp => Expr::exp(x),
+        Func::Exp => Expr::apply(f, x, f64::exp),
         Func::Sqrt => Expr::sqrt(x),
         // 1/0 is inf; a reciprocal whose exact form does not fit stays a call
         Func::Recip if x.is_zero() => Expr::num(f64::INFINITY),

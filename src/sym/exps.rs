@@ -31,8 +31,11 @@ fn may_fold(m: &Mono) -> bool {
 }
 
 impl Expr {
-    /// eˣ: exactly 1 at x = 0, a float at another number (e has no exact
-    /// form here), else the call exp(x) of the canonical x.
+    /// eˣ: exactly 1 at x = 0 (what a fold e^{a} e^{−a} leaves), a float
+    /// at another number (e has no exact form here), else the call exp(x)
+    /// of the canonical x. (A typed `exp(0)` stays the float the numeric
+    /// path computes: the scripts that need a float 1 with no exact form
+    /// use it, `tests/errors/domain/near_domain.chs`.)
     pub fn exp(x: &Expr) -> Expr {
         if x.is_zero() {
             return Expr::one();

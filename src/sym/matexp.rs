@@ -30,6 +30,10 @@ use num_traits::{One, Signed, ToPrimitive, Zero};
 /// divisors are searched for a rational eigenvalue.
 const MAX_COEFFICIENT: u64 = 1_000_000_000_000;
 
+/// The most candidates p/q the rational root theorem may try (each an
+/// exact evaluation of the cubic).
+const MAX_CANDIDATES: usize = 4096;
+
 /// e^{M} for a square matrix M = A s, 1×1 to 3×3, with A exact rational
 /// and s one expression (the module's doc); None otherwise.
 pub fn exp_square(m: &Mat) -> Option<Mat> {
@@ -164,6 +168,9 @@ fn rational_root(b: &[BigRational; 3]) -> Option<BigRational> {
         return None;
     }
     let (ps, qs) = (divisors(a0), divisors(a3));
+    if ps.len().saturating_mul(qs.len()) > MAX_CANDIDATES {
+        return None;
+    }
     for q in &qs {
         for num in &ps {
             for sign in [1i64, -1] {
@@ -292,6 +299,16 @@ mod tests {
         let d = exp_square(&mat(3, &[1, 0, 0, 0, 2, 0, 0, 0, 3])).unwrap();
         assert_eq!(*d.get(2, 2), exp_t(3));
         assert!(d.get(0, 1).is_zero());
+    }
+
+    #[test]
+    fn a_cubic_with_too_many_candidate_roots_keeps_the_call() {
+        // p(z) = z³ − 963761198400 (6720 divisors): not searched, the call kept
+        let m = mat(3, &[0, 1, 0, 0, 0, 1, 963_761_198_400, 0, 0]);
+        assert_eq!(exp_square(&m), None);
+        // (few divisors: 2³·3·5·7 = 840, z = 2 a root of z³ − 8)
+        let m = mat(3, &[0, 1, 0, 0, 0, 1, 8, 0, 0]);
+        assert!(exp_square(&m).is_some());
     }
 
     #[test]
