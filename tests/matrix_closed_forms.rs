@@ -248,6 +248,9 @@ fn the_transform_of_symbolic_blocks() {
         ("T.p", "p  : 3-vector"),
         ("inv(T).p", "(-R.T) p  : 3-vector"),
         ("inv(T) T T == T", "true"),
+        ("inv(inv(T)) == T", "true"),
+        ("inv(T)^-1", "[R, p; 0, 1]  : SE(3)"),
+        ("T inv(T) T == T", "true"),
     ] {
         assert_eq!(last(&format!("{setup}\n{stmt}")), want, "{stmt}");
     }

@@ -37,7 +37,17 @@ fn parts(s: &Sym) -> Option<(&Sym, &Sym, &Vec<Sym>)> {
 pub fn inverse(s: &Sym) -> Option<Sym> {
     let (r, p, last) = parts(s)?;
     let rt = r.clone().transpose();
-    let moved = Sym::times(Sym::Neg(Box::new(rt.clone())), p.clone());
+    // (−Rᵀ p of an inverse's p = −R'ᵀ p₀ is p₀: inv(inv(T)) is T)
+    let moved = match sign(p) {
+        (neg, Sym::Product(fs))
+            if fs
+                .first()
+                .is_some_and(|first| inverse_rotations(&rt, first)) =>
+        {
+            signed(!neg, Sym::product(fs[1..].to_vec()))
+        }
+        _ => Sym::times(Sym::Neg(Box::new(rt.clone())), p.clone()),
+    };
     Some(Sym::Block(vec![vec![rt, moved], last.clone()]))
 }
 
