@@ -320,3 +320,35 @@ fn a_value_that_relied_on_a_unit_axis_says_so_when_numbers_break_it() {
     assert!(out.ends_with("(2, 2, 0)  : 3-vector\n"), "{out}");
     assert!(!err.contains("assuming"), "{err}");
 }
+
+/// The book's exercises on ẋ = Ax (chapter 3, Exercises 33 and 34 of the
+/// seed): the closed forms as a student writes them, and the solutions
+/// x(t) = e^{At} x₀ the exercise gives.
+#[test]
+fn exercises_33_and_34() {
+    let out =
+        printed("given t, x1, x2\nA = [-2, 1; 0, -1]\nexp(A t) (x1, x2)\nexp([2, -1; 1, 2] t)");
+    let lines: Vec<&str> = out.lines().collect();
+    assert_eq!(
+        lines[2..],
+        [
+            "(x1 exp(-2 t) - x2 exp(-2 t) + x2 exp(-t), x2 exp(-t))  : 2-vector",
+            "[exp(2 t) cos(t), -exp(2 t) sin(t)",
+            " exp(2 t) sin(t), exp(2 t) cos(t)]  : 2×2 matrix",
+        ]
+    );
+    // A from its eigenvectors (1, −3) at −3 and (1, 1) at 1
+    let setup = "given t\nP = [1, 1; -3, 1]\nA = P [-3, 0; 0, 1] inv(P)\nE = exp(A t)";
+    let out = printed(&format!("{setup}\nE (1, -3)\nE (1, 1)"));
+    let lines: Vec<&str> = out.lines().collect();
+    assert_eq!(
+        lines[lines.len() - 2..],
+        [
+            "(exp(-3 t), -3 exp(-3 t))  : 2-vector",
+            "(exp(t), exp(t))  : 2-vector"
+        ]
+    );
+    assert!(check_closed_form(2, &[0, 1, 3, -2]));
+    assert!(check_closed_form(2, &[-2, 1, 0, -1]));
+    assert!(check_closed_form(2, &[2, -1, 1, 2]));
+}
