@@ -250,6 +250,7 @@ fn the_transform_of_symbolic_blocks() {
         ("inv(T) T T == T", "true"),
         ("inv(inv(T)) == T", "true"),
         ("inv(T)^-1", "[R, p; 0, 1]  : SE(3)"),
+        ("given q : vec3\nT q", "R q + p  : 3-vector"),
         ("T inv(T) T == T", "true"),
     ] {
         assert_eq!(last(&format!("{setup}\n{stmt}")), want, "{stmt}");

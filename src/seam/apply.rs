@@ -389,6 +389,13 @@ impl<'a> Op<'a> {
         {
             return Some(Ok(Value::Sym(t)));
         }
+        // T q of a point q: R q + p
+        if let (Op::Arith(BinOp::Mul), Kind::Vector(Some(3)), [Value::Sym(a), q]) =
+            (self, kind, args)
+            && let Some(t) = super::transform::point(a, &to_sym(q))
+        {
+            return Some(Ok(Value::Sym(t)));
+        }
         if let Op::Call(b, _) = self
             && let Some(zero) = crate::builtins::constant_derivative(b.name, args, kind)
         {

@@ -131,6 +131,17 @@ fn plus(a: Sym, b: &Sym) -> Sym {
     Sym::Add(Box::new(a), Box::new(b.clone()))
 }
 
+/// `[A, p; 0, 1] q` = `A q + p`, the point transform (3.2.1's T·q in
+/// homogeneous coordinates, true for any block A: no cancellation).
+/// None when `a` is not such a block or `q` is itself a block.
+pub(super) fn point(a: &Sym, q: &Sym) -> Option<Sym> {
+    let (r, p, _) = parts(a)?;
+    if matches!(q, Sym::Block(_)) {
+        return None;
+    }
+    Some(plus(Sym::times(r.clone(), q.clone()), p))
+}
+
 /// `[R₁, p₁; 0, 1] [R₂, p₂; 0, 1]` = `[R₁R₂, R₁p₂ + p₁; 0, 1]`, given that
 /// the checker typed the product a transform in SE(3) (so both factors
 /// are, and R₁, R₂ are rotations); `I` when that is the identity. None
