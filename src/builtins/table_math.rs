@@ -311,7 +311,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
             aliases: &["expm"],
             signature: "exp(X: so3 | se3 | so2 | se2 | square matrix | scalar) -> SO3 | SE3 | SO2 | SE2 | matrix | scalar",
             section: "§3.2.3.2 (3.51), §3.3.3.1 Prop. 3.16, Exercises 3.33–3.35",
-            doc: "the matrix exponential: e^[ω]θ ∈ SO(3), e^[S]θ ∈ SE(3), e^{At} for any square A",
+            doc: "the matrix exponential: e^[ω]θ ∈ SO(3), e^[S]θ ∈ SE(3), e^{At} for any square A (over a symbol t in closed form, up to 3×3 with exact eigenvalues: eq. 3.41–3.48)",
             example: "exp([(0, 0, 1)] (pi/2))",
             area: LinearAlgebra,
             typing: Typing::Custom {
