@@ -316,6 +316,14 @@ fn a_value_that_relied_on_a_unit_axis_says_so_when_numbers_break_it() {
     let (out, err) = outputs(&format!("{setup}\nu = (0.6, 0, 0.8)\nd\ne\nc"));
     assert!(out.ends_with("true\n1\ntrue\n"), "{out}");
     assert!(!err.contains("computed assuming"), "{err}");
+    // the bool is a bool: compared, put in a tuple, asserted
+    let out = printed(&format!(
+        "{setup}\nd == true\n(d, 1)\nassert d\nnot_d = d == false\nnot_d"
+    ));
+    assert!(
+        out.ends_with("true\n(true, 1)\nnot_d = false\nfalse\n"),
+        "{out}"
+    );
     // a value made without the assumption has nothing to say
     let (out, err) = outputs("given u : vec3\nv = 2 u\nu = (1, 1, 0)\nv");
     assert!(out.ends_with("(2, 2, 0)  : 3-vector\n"), "{out}");

@@ -229,6 +229,8 @@ impl Interp<'_> {
             } else {
                 None
             };
+            // (what relied on an axis assumed unit, super::relied)
+            let v = self.relied_read(name.as_str(), v, span, &mut warnings);
             // (a value made from symbols that has become numbers is typed
             // by what it is now, as typed first: `rpy` gives a vector)
             let ty = match (&b.val, &v) {
@@ -239,9 +241,6 @@ impl Interp<'_> {
             };
             // (the warnings of the steps replayed, at the name read: once
             // per binding of the numbers it reads, as typed first)
-            if self.running() {
-                warnings.extend(self.broken_assumptions(name.as_str(), span));
-            }
             if !warnings.is_empty() {
                 for mut w in self.env.fresh_warnings(name.as_str(), warnings) {
                     w.span = span;

@@ -315,6 +315,20 @@ impl Interp<'_> {
         }
     }
 
+    /// A comparison kept as a tree (`d = dot(u, u) == 1` over an axis
+    /// assumed unit, `super::relied`) decided in closed form while its
+    /// symbols are free: the bool a name of it reads as, so that `d ==
+    /// true` and `(d, 1)` hold the bool. None for any other value.
+    pub(super) fn decided_now(&self, v: &Value) -> Option<Value> {
+        let Value::Sym(s @ Sym::Compare(..)) = v else {
+            return None;
+        };
+        match self.lower(s, true, Span::default()) {
+            Some((b @ Value::Bool(_), _)) => Some(b),
+            _ => None,
+        }
+    }
+
     /// The `given` axes that the closed form of tree `s` takes as unit
     /// vectors (none when it has no closed form, [`Interp::lower`]).
     pub(super) fn unit_axes_of(&self, s: &Sym) -> Vec<Arc<str>> {

@@ -59,9 +59,29 @@ impl Interp<'_> {
         }
     }
 
+    /// `name` read as `v`: a comparison kept over an axis assumed unit
+    /// reads as its bool while the axis is free ([`Interp::decided_now`]),
+    /// and the warnings of the assumptions numbers broke since go to
+    /// `warnings` ([`Interp::broken_assumptions`]).
+    pub(super) fn relied_read(
+        &self,
+        name: &str,
+        v: Option<Value>,
+        span: Span,
+        warnings: &mut Vec<Diagnostic>,
+    ) -> Option<Value> {
+        if !self.env.relied.is_empty() {
+            warnings.extend(self.broken_assumptions(name, span));
+        }
+        match v.as_ref().and_then(|x| self.decided_now(x)) {
+            Some(b) => Some(b),
+            None => v,
+        }
+    }
+
     /// The warnings of reading `name` now: one for each axis its value
     /// took as a unit vector that is now bound to numbers that are not one.
-    pub(super) fn broken_assumptions(&self, name: &str, span: Span) -> Vec<Diagnostic> {
+    fn broken_assumptions(&self, name: &str, span: Span) -> Vec<Diagnostic> {
         if self.env.relied.is_empty() {
             return Vec::new();
         }
