@@ -321,7 +321,7 @@ fn a_value_that_relied_on_a_unit_axis_says_so_when_numbers_break_it() {
         "{setup}\nd == true\n(d, 1)\nassert d\nnot_d = d == false\nnot_d"
     ));
     assert!(
-        out.ends_with("true\n(true, 1)\nnot_d = false\nfalse\n"),
+        out.ends_with("c = true\ntrue\ntrue\n1\nnot_d = false\nfalse\n"),
         "{out}"
     );
     // a value made without the assumption has nothing to say

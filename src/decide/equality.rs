@@ -125,7 +125,7 @@ fn adjoint_inverses(s: &Sym) -> Sym {
             // (a block [R, p; 0, 1] where Ad is defined is a transform:
             // its inverse in closed form, 3.64, as `inv` gives it)
             Sym::Call(f, args) if f.role == Role::Adjoint && args.len() == 1 => {
-                let inv = crate::seam::transform::inverse(&args[0])
+                let inv = crate::seam::transform::inverse_of(&args[0])
                     .unwrap_or_else(|| args[0].clone().inverse());
                 Sym::Call(f, vec![inv])
             }

@@ -370,30 +370,8 @@ impl<'a> Op<'a> {
                 .map_err(OpError::Message),
             );
         }
-        // the transform `[R, p; 0, 1]`'s inverse in closed form (3.64)
-        let inverse = match (self, args) {
-            (Op::Inverse, [_]) => true,
-            (Op::Call(b, _), [_]) => b.name == "inv",
-            (Op::Arith(BinOp::Pow), [_, e]) => e.as_scalar() == Some(-1.0),
-            _ => false,
-        };
-        if let (true, Kind::SE3, Some(Value::Sym(s))) = (inverse, kind, args.first())
-            && let Some(t) = super::transform::inverse(s)
-        {
-            return Some(Ok(Value::Sym(t)));
-        }
-        // a product of transforms `[R, p; 0, 1]` in closed form (3.63)
-        if let (Op::Arith(BinOp::Mul), Kind::SE3, [Value::Sym(a), Value::Sym(b)]) =
-            (self, kind, args)
-            && let Some(t) = super::transform::product(a, b)
-        {
-            return Some(Ok(Value::Sym(t)));
-        }
-        // T q of a point q: R q + p
-        if let (Op::Arith(BinOp::Mul), Kind::Vector(Some(3)), [Value::Sym(a), q]) =
-            (self, kind, args)
-            && let Some(t) = super::transform::point(a, &to_sym(q))
-        {
+        // the transform `[R, p; 0, 1]`: inverse, products, points (3.62–3.64)
+        if let Some(t) = super::transform::of_op(self, args, kind) {
             return Some(Ok(Value::Sym(t)));
         }
         if let Op::Call(b, _) = self

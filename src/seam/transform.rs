@@ -5,8 +5,34 @@
 //! parts `T.R` = R, `T.p` = p. So `inv(T) T` is `I` (RᵀR = I for the
 //! rotation block, Rᵀp − Rᵀp = 0).
 
+use super::apply::{Op, to_sym};
+use crate::check::ty::Kind;
+use crate::syntax::ast::BinOp;
 use crate::values::symbolic::Part;
 use crate::values::value::{Sym, Value};
+
+/// Operation `op` on `args` (its result typed `kind`) in closed form over
+/// transform blocks: the inverse of a block typed SE(3) (`inv(T)`,
+/// `T^-1`), the product of two typed SE(3), a block times a point. None
+/// for any other operation or operand.
+pub(super) fn of_op(op: Op, args: &[&Value], kind: &Kind) -> Option<Sym> {
+    let inverse = match (op, args) {
+        (Op::Inverse, [_]) => true,
+        (Op::Call(b, _), [_]) => b.name == "inv",
+        (Op::Arith(BinOp::Pow), [_, e]) => e.as_scalar() == Some(-1.0),
+        _ => false,
+    };
+    match (kind, args) {
+        (Kind::SE3, [Value::Sym(s), ..]) if inverse => inverse_of(s),
+        (Kind::SE3, [Value::Sym(a), Value::Sym(b)]) if matches!(op, Op::Arith(BinOp::Mul)) => {
+            product(a, b)
+        }
+        (Kind::Vector(Some(3)), [Value::Sym(a), q]) if matches!(op, Op::Arith(BinOp::Mul)) => {
+            point(a, &to_sym(q))
+        }
+        _ => None,
+    }
+}
 
 /// Whether `s` is the constant number `x` (the literal `0` or `1` of a
 /// transform's last row).
@@ -34,7 +60,7 @@ fn parts(s: &Sym) -> Option<(&Sym, &Sym, &Vec<Sym>)> {
 /// The inverse (3.64) of `[R, p; 0, 1]` (or `[R, p; 0, 0, 0, 1]`), given
 /// that the checker typed it a transform in SE(3), so that R is a rotation
 /// and Rᵀ = R⁻¹ (3.57): `[Rᵀ, -Rᵀ p; 0, 1]`. None for any other shape.
-pub fn inverse(s: &Sym) -> Option<Sym> {
+pub fn inverse_of(s: &Sym) -> Option<Sym> {
     let (r, p, last) = parts(s)?;
     let rt = r.clone().transpose();
     // (−Rᵀ p of an inverse's p = −R'ᵀ p₀ is p₀: inv(inv(T)) is T)
@@ -134,7 +160,7 @@ fn plus(a: Sym, b: &Sym) -> Sym {
 /// `[A, p; 0, 1] q` = `A q + p`, the point transform (3.2.1's T·q in
 /// homogeneous coordinates, true for any block A: no cancellation).
 /// None when `a` is not such a block or `q` is itself a block.
-pub(super) fn point(a: &Sym, q: &Sym) -> Option<Sym> {
+fn point(a: &Sym, q: &Sym) -> Option<Sym> {
     let (r, p, _) = parts(a)?;
     if matches!(q, Sym::Block(_)) {
         return None;
@@ -146,7 +172,7 @@ pub(super) fn point(a: &Sym, q: &Sym) -> Option<Sym> {
 /// the checker typed the product a transform in SE(3) (so both factors
 /// are, and R₁, R₂ are rotations); `I` when that is the identity. None
 /// when either factor is not such a block.
-pub(super) fn product(a: &Sym, b: &Sym) -> Option<Sym> {
+fn product(a: &Sym, b: &Sym) -> Option<Sym> {
     let (r1, p1, last) = parts(a)?;
     let (r2, p2, _) = parts(b)?;
     let r = if inverse_rotations(r1, r2) {
