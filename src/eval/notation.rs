@@ -229,7 +229,11 @@ impl Interp<'_> {
         let [arg] = args.as_slice() else {
             return None;
         };
-        if func.name != *super::env::EXP || self.env.func(func.name).is_some() {
+        // (a user function or a value named exp is not the builtin)
+        if func.name != *super::env::EXP
+            || self.env.func(func.name).is_some()
+            || self.env.get(func.name).is_some()
+        {
             return None;
         }
         let n = match self.probe(rhs) {
