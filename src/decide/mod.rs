@@ -21,6 +21,7 @@ pub(crate) mod equality;
 pub(crate) mod inverse;
 pub(crate) mod lift;
 pub(crate) mod order;
+pub(crate) mod powers;
 pub(crate) mod replay;
 pub(crate) mod transcendental;
 pub(crate) mod turn;

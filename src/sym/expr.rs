@@ -429,6 +429,14 @@ impl Expr {
             out.push(m, c.inv()?);
             return Some(out.fold_phases());
         }
+        // 1/(n/d) = d/n: a sum over kept reciprocals (`cot t`, `1 − tan t`)
+        // is turned over, not kept as a reciprocal of a reciprocal
+        // (`1/cot(t)` is `tan(t)`, the same canonical form).
+        if self.has_recip()
+            && let Some(r) = super::together::turned_over(self)
+        {
+            return Some(r);
+        }
         let bar = self.conj();
         if bar != *self {
             // x x̄ is real; its real part drops any rounding of float coefficients.

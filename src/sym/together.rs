@@ -276,6 +276,31 @@ pub fn over_one(e: &Expr) -> Option<Expr> {
     Some(num.mul(&den).cancel())
 }
 
+/// 1/e for a sum `e` over kept reciprocals: e = n/d with d the product of
+/// its reciprocals' sums to their highest powers, so 1/e = d/n, cancelled;
+/// None when `n` still holds a reciprocal (one nested in another), or
+/// past [`MAX_TERMS`].
+pub fn turned_over(e: &Expr) -> Option<Expr> {
+    let mut top = Vec::new();
+    powers(e, &mut top);
+    top.retain(|(_, h)| *h > 0);
+    if top.is_empty() {
+        return None;
+    }
+    let num = times(e, &top)?;
+    if num.has_recip() || num.is_zero() {
+        return None;
+    }
+    let mut den = Expr::one();
+    for (v, h) in &top {
+        den = den.mul(&bounded_pow(&recip_of(v)?.args[0], *h)?);
+        if den.terms.len() > MAX_TERMS {
+            return None;
+        }
+    }
+    Some(den.mul(&num.recip()?).cancel())
+}
+
 /// What `simplify` prints (LANGUAGE.md §7): the canonical form with
 /// quotients cancelled ([`Expr::cancel`]), or the same over one
 /// denominator ([`over_one`]) when that prints shorter; equal values
