@@ -16,6 +16,7 @@
 pub(crate) mod ball;
 pub(crate) mod balls;
 pub(crate) mod certify;
+pub(crate) mod constant;
 pub(crate) mod cyclotomic;
 pub(crate) mod equality;
 pub(crate) mod inverse;

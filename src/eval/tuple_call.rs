@@ -19,6 +19,13 @@ pub(super) fn each_part(
     vals: &[Value],
     warnings: &mut Vec<Diagnostic>,
 ) -> Option<Result<Value, OpError>> {
+    // (a constant: the exact short number it is proven to be, §7)
+    if let [v] = vals
+        && name == "simplify"
+        && let Some(exact) = crate::decide::constant::simplest(v)
+    {
+        return Some(Ok(exact));
+    }
     // (a comparison decided over free symbols is its bool)
     if let [v @ Value::Formula { .. }, ..] = vals
         && matches!(name, "subs" | "simplify" | "expand")

@@ -229,6 +229,50 @@ fn tangents(num: &mut Vec<Factor>, den: &mut Vec<Factor>) {
     }
 }
 
+/// sin(x)/cos(x) and cos(x)/sin(x) of one kept call's argument (a half
+/// angle, `tan(x/2)`) as the tangent and cotangent, power by power: the
+/// monomial left, and the tangents' texts.
+fn call_tangents(poly: &Mono, st: Style) -> (Mono, Vec<String>) {
+    let latex = st.mode == Mode::Latex;
+    let call = |v: &Var, f: Func| match v {
+        Var::Call(c) if c.f == f => Some(c.args[0].clone()),
+        _ => None,
+    };
+    let mut left: Mono = poly.clone();
+    let mut texts = Vec::new();
+    for (top, bottom, from, to) in [
+        (Func::Sin, Func::Cos, "sin", "tan"),
+        (Func::Cos, Func::Sin, "cos", "cot"),
+    ] {
+        for i in 0..left.len() {
+            let Some(x) = call(&left[i].0, top).filter(|_| left[i].1 > 0) else {
+                continue;
+            };
+            let Some(j) = left
+                .iter()
+                .position(|(w, k)| *k < 0 && call(w, bottom).as_ref() == Some(&x))
+            else {
+                continue;
+            };
+            let text = var(&left[i].0, st);
+            let renamed = if latex {
+                let a = format!("operatorname{{{from}}}");
+                text.contains(&a)
+                    .then(|| text.replacen(&a, &format!("operatorname{{{to}}}"), 1))
+            } else {
+                text.strip_prefix(from).map(|r| format!("{to}{r}"))
+            };
+            let Some(renamed) = renamed else { continue };
+            let m = left[i].1.min(-left[j].1);
+            left[i].1 -= m;
+            left[j].1 += m;
+            texts.push(power(&renamed, m, latex));
+        }
+        left.retain(|(_, k)| *k != 0);
+    }
+    (left, texts)
+}
+
 /// One term: its sign and its text, `(1/2) L1 cos(t1)`, `tan(t)`,
 /// `3/(a + b sin(t))`.
 pub(super) fn term(c: &Coef, poly: &Mono, trig: &[Trig], st: Style) -> (bool, String) {
@@ -253,9 +297,11 @@ pub(super) fn term(c: &Coef, poly: &Mono, trig: &[Trig], st: Style) -> (bool, St
         den_t: &mut den_t,
         st,
     };
-    for (v, e) in poly {
+    let (poly, kept_tangents) = call_tangents(poly, st);
+    for (v, e) in &poly {
         sides.place(v, *e, 0);
     }
+    num.extend(kept_tangents);
     tangents(&mut num_t, &mut den_t);
     num.extend(num_t.iter().map(|f| trig_factor(&f.k, f.f, f.p, st)));
     den.extend(den_t.iter().map(|f| trig_factor(&f.k, f.f, f.p, st)));

@@ -26,6 +26,7 @@ pub mod print;
 pub mod probe;
 pub mod rat;
 pub mod rational;
+pub mod shortest;
 pub mod sign;
 pub mod size;
 pub mod solve;

@@ -301,23 +301,30 @@ pub fn turned_over(e: &Expr) -> Option<Expr> {
     Some(den.mul(&num.recip()?).cancel())
 }
 
-/// What `simplify` prints (LANGUAGE.md §7): the canonical form with
-/// quotients cancelled ([`Expr::cancel`]), or the same over one
-/// denominator ([`over_one`]) when that prints shorter; equal values
-/// either way.
+/// What `simplify` prints (LANGUAGE.md §7): the shortest in print of the
+/// canonical form with quotients cancelled ([`Expr::cancel`]), the same
+/// over one denominator ([`over_one`]), cancelled factor by factor
+/// ([`super::shortest::by_factors`]), and its half-angle forms
+/// ([`super::shortest::half_angle`]); equal values every one, the
+/// canonical form on a tie.
 pub fn simplest(e: &Expr) -> Expr {
     let cancelled = e.cancel();
-    let Some(one) = over_one(e) else {
-        return cancelled;
-    };
     let len = |x: &Expr| {
         super::print::expr(x, super::print::Style::default())
             .chars()
             .count()
     };
-    if len(&one) < len(&cancelled) {
-        one
-    } else {
-        cancelled
+    let mut best_len = len(&cancelled);
+    let mut best = cancelled;
+    let others = over_one(e)
+        .into_iter()
+        .chain(Some(super::shortest::by_factors(&best)))
+        .chain(super::shortest::half_angle(&best));
+    for c in others {
+        let n = len(&c);
+        if n < best_len {
+            (best, best_len) = (c, n);
+        }
     }
+    best
 }

@@ -1,0 +1,200 @@
+//! Candidate forms for `simplify` (LANGUAGE.md §7: "tan and cot kept as
+//! tan and cot"; SymPy's `sin(x)/(2 (1 + cos x))` = `tan(x/2)/2`,
+//! `sin(x)/cos(x/2)` = `2 sin(x/2)`). Each candidate is the same value
+//! written over another angle, made by exact steps only, so choosing among
+//! them by printed length ([`super::together::simplest`]) never shows a
+//! form that is not the value:
+//!
+//! - [`half_angle`]: an angle x written as 2u (a one-to-one change of
+//!   variable), the quotient cancelled over u, and u written back as x/2:
+//!   `sin x/(1 + cos x)` is `2 sin u cos u/(2 cos² u)` = `sin u/cos u`,
+//!   which prints `tan(x/2)`.
+
+use super::coef::{Coef, Rat};
+use super::expr::{Expr, Func, Mono, Symbol, Var};
+use super::trig::real_form;
+use num_traits::{One, Zero};
+
+/// The most terms an expression may have for its half-angle forms to be
+/// tried (each try is a substitution and a cancel per angle).
+const MAX_TERMS: usize = 24;
+/// The most angles tried.
+const MAX_ANGLES: usize = 3;
+
+/// The angles of `e` (symbols with a z, and the symbols of half-angle
+/// sine and cosine calls).
+fn angles(e: &Expr, out: &mut Vec<Symbol>) {
+    for (v, _) in e.terms.keys().flatten() {
+        match v {
+            Var::Z(s) if s.phase().is_none() && !out.contains(s) => out.push(s.clone()),
+            Var::Call(c) if matches!(c.f, Func::Sin | Func::Cos | Func::Recip) => {
+                for a in &c.args {
+                    if c.f == Func::Recip {
+                        angles(a, out);
+                        continue;
+                    }
+                    let mut syms = Vec::new();
+                    a.symbols(&mut syms);
+                    for s in syms {
+                        if !out.contains(&s) {
+                            out.push(s);
+                        }
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+}
+
+/// A symbol that no user name can be (a control character leads it).
+fn fresh(s: &Symbol) -> Symbol {
+    Symbol::new(&format!("\u{1}half {}", s.name))
+}
+
+/// `e` with each of its angles x in turn written as 2u, cancelled over u
+/// and written back with u = x/2: one candidate per angle where that
+/// changes the form; none for a large `e` or one with no quotient or half
+/// angle.
+pub fn half_angle(e: &Expr) -> Vec<Expr> {
+    let has_half = e
+        .terms
+        .keys()
+        .flatten()
+        .any(|(v, _)| matches!(v, Var::Call(c) if matches!(c.f, Func::Sin | Func::Cos)));
+    if e.terms.len() > MAX_TERMS || !(e.has_recip() || has_half) {
+        return Vec::new();
+    }
+    let mut found = Vec::new();
+    angles(e, &mut found);
+    let mut out = Vec::new();
+    for x in found.into_iter().take(MAX_ANGLES) {
+        if x.is_timed() || x.unit {
+            continue;
+        }
+        let u = fresh(&x);
+        let two_u = Expr::symbol(u.clone()).scale(&Coef::int(2));
+        let doubled = by_factors(&e.subst(&|s| (*s == x).then(|| two_u.clone())).cancel());
+        let half_x = Expr::symbol(x.clone()).scale(&Coef::rat(Rat::new(1, 2).unwrap_or(Rat::ONE)));
+        let back = doubled
+            .subst(&|s| (*s == u).then(|| half_x.clone()))
+            .cancel();
+        let mut left = Vec::new();
+        back.symbols(&mut left);
+        if left.contains(&u) || back == *e {
+            continue;
+        }
+        out.push(back);
+    }
+    out
+}
+
+/// An angle's expression from its integer combination of symbols; None
+/// with a constant phase in it.
+fn angle(k: &[(Symbol, i32)]) -> Option<Expr> {
+    let mut a = Expr::zero();
+    for (s, n) in k {
+        if s.phase().is_some() {
+            return None;
+        }
+        a = a.add(&Expr::symbol(s.clone()).scale(&Coef::int(i64::from(*n))));
+    }
+    Some(a)
+}
+
+/// `e` with each quotient N/D whose D is one real term c·Π fᵢ^pᵢ (sines
+/// and cosines) cancelled factor by factor: N divided by each fᵢ as often
+/// as it divides (`sin 2u/(4 cos² u)` is `sin u/(2 cos u)`, where the
+/// whole D does not divide N). Exact division only: the same value.
+pub fn by_factors(e: &Expr) -> Expr {
+    use std::collections::BTreeMap;
+    if !e.has_recip() {
+        return e.clone();
+    }
+    let mut groups: BTreeMap<Mono, Expr> = BTreeMap::new();
+    for (m, c) in &e.terms {
+        let (den, rest): (Mono, Mono) = m
+            .iter()
+            .cloned()
+            .partition(|(v, k)| *k > 0 && matches!(v, Var::Call(c) if c.f == Func::Recip));
+        groups.entry(den).or_default().push(rest, c.clone());
+    }
+    let mut out = Expr::zero();
+    for (den, num) in groups {
+        out = out.add(&over_factors(&den, num));
+    }
+    out
+}
+
+/// num over the reciprocals `den`, each opened into its factors where it
+/// is one real term, and those that divide num divided out.
+fn over_factors(den: &Mono, mut num: Expr) -> Expr {
+    let mut below = Expr::one();
+    let mut kept = Expr::one();
+    for (v, k) in den {
+        let Var::Call(call) = v else { continue };
+        let d = &call.args[0];
+        let real = one_term(d);
+        let single = (real.len() == 1).then(|| real.iter().next()).flatten();
+        let Some(((poly, trig), c)) = single.filter(|((p, _), _)| p.is_empty()) else {
+            let mut m = Expr::zero();
+            m.push(vec![(v.clone(), *k)], Coef::one());
+            kept = kept.mul(&m);
+            continue;
+        };
+        let _ = poly;
+        let mut rest = Expr::constant(c.clone())
+            .powi(i64::from(*k))
+            .unwrap_or_else(Expr::one);
+        for (a, sin, p) in trig {
+            let Some(x) = angle(a) else {
+                let mut m = Expr::zero();
+                m.push(vec![(v.clone(), *k)], Coef::one());
+                return num.mul(&m).mul(&kept);
+            };
+            let f = if *sin { Expr::sin(&x) } else { Expr::cos(&x) };
+            let mut left = i64::from(*p) * i64::from(*k);
+            while left > 0 {
+                match num.div_exact(&f) {
+                    Some(q) => {
+                        num = q;
+                        left -= 1;
+                    }
+                    None => break,
+                }
+            }
+            rest = rest.mul(&f.powi(left).unwrap_or_else(Expr::one));
+        }
+        below = below.mul(&rest);
+    }
+    match below.recip() {
+        Some(r) => num.mul(&r).mul(&kept),
+        None => num.mul(&kept),
+    }
+}
+
+/// The real form of `d` as one term where it has one: its own best form,
+/// for one angle its powers of cos and sin first (`sin 2u` is
+/// `2 sin u cos u`), whose factors may divide a numerator.
+fn one_term(d: &Expr) -> super::trig::Real {
+    use super::trig::{Power, realize};
+    let best = real_form(d);
+    let mut found = Vec::new();
+    for (v, _) in d.terms.keys().flatten() {
+        if let Var::Z(s) = v
+            && !found.contains(s)
+        {
+            found.push(s.clone());
+        }
+    }
+    if found.len() != 1 {
+        return best;
+    }
+    for basis in [Power::Cos, Power::Sin] {
+        let r = realize(d, std::slice::from_ref(&found), &[basis]);
+        if r.len() == 1 {
+            return r;
+        }
+    }
+    best
+}
