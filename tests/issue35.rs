@@ -169,7 +169,7 @@ fn printed_forms_are_their_values() {
         ("1/tan(t)", "cot(t)"),
         ("1/(sin(t)/(cos(t) + 1))", "(1 + cos(t))/sin(t)"),
         ("1/(p/q)", "q/p"),
-        ("1/(p/(q + 1))", "(1 + q)/p"),
+        ("1/(p/(q + 1))", "1/p + q/p"),
         ("2/(3 tan(t))", "(2/3) cot(t)"),
         ("(p + q)/(sin(t)/cos(t))", ""),
         ("sin(1)^y", "0.8414709848078965^y"),

@@ -19,12 +19,15 @@ pub(super) fn each_part(
     vals: &[Value],
     warnings: &mut Vec<Diagnostic>,
 ) -> Option<Result<Value, OpError>> {
-    // (a constant: the exact short number it is proven to be, §7)
-    if let [v] = vals
+    // (a constant: the exact short number it is proven to be, §7; else
+    // itself, with its exact form, so that `simplify(x) == x`'s proofs
+    // still see how it was made)
+    if let [v @ Value::Num { .. }] = vals
         && name == "simplify"
-        && let Some(exact) = crate::decide::constant::simplest(v)
     {
-        return Some(Ok(exact));
+        return Some(Ok(
+            crate::decide::constant::simplest(v).unwrap_or_else(|| v.clone())
+        ));
     }
     // (a comparison decided over free symbols is its bool)
     if let [v @ Value::Formula { .. }, ..] = vals

@@ -46,6 +46,10 @@ pub fn terms(e: &Expr, st: Style) -> Vec<(bool, String)> {
             out.extend(plain(&num, st));
             continue;
         }
+        if let Some(t) = tangent_product(&num, &den, st) {
+            out.push(t);
+            continue;
+        }
         let real = real_form(&num);
         let below = denominator(&den, st);
         let Some((scale, den_text)) = below.filter(|_| real.len() > 1) else {
@@ -227,6 +231,63 @@ fn tangents(num: &mut Vec<Factor>, den: &mut Vec<Factor>) {
         num.retain(|f| f.p > 0);
         den.retain(|f| f.p > 0);
     }
+}
+
+/// A quotient whose denominator is a product of sines and cosines of
+/// angles A and whose numerator is a constant times the co-functions of
+/// the same angles, as a product of cotangents and tangents:
+/// cos(x) cos(x + y)/(sin(x) sin(x + y)) is `cot(x) cot(x + y)` (the
+/// numerator, a sum once multiplied out, is found by exact division by
+/// each co-function). None for any other quotient.
+fn tangent_product(num: &Expr, den: &Mono, st: Style) -> Option<(bool, String)> {
+    if num.terms.len() < 2 {
+        return None;
+    }
+    let mut num = num.clone();
+    let mut scale = Coef::one();
+    let mut out: Vec<Factor> = Vec::new();
+    for (v, e) in den {
+        let (k, vars, factors) = opened(v, *e)?;
+        if !vars.is_empty() {
+            return None;
+        }
+        scale = scale.mul(&k);
+        for f in factors {
+            let mut angle = Expr::zero();
+            for (s, n) in &f.k {
+                if s.phase().is_some() {
+                    return None;
+                }
+                angle = angle.add(&Expr::symbol(s.clone()).scale(&Coef::int(i64::from(*n))));
+            }
+            let (co, name) = if f.f == "sin" {
+                (Expr::cos(&angle), "cot")
+            } else {
+                (Expr::sin(&angle), "tan")
+            };
+            for _ in 0..f.p {
+                num = num.div_exact(&co)?;
+            }
+            out.push(Factor {
+                f: name,
+                k: f.k,
+                p: f.p,
+            });
+        }
+    }
+    let c = num.as_const()?.mul(&scale);
+    let (neg, coef) = coefficient(&c, st);
+    let body: Vec<String> = out
+        .iter()
+        .map(|f| trig_factor(&f.k, f.f, f.p, st))
+        .collect();
+    let body = body.join(" ");
+    let text = match coef.as_str() {
+        "1" => body,
+        _ if st.mode != Mode::Latex && needs_parens(&coef) => format!("({coef}) {body}"),
+        _ => format!("{coef} {body}"),
+    };
+    Some((neg, text))
 }
 
 /// sin(x)/cos(x) and cos(x)/sin(x) of one kept call's argument (a half
