@@ -131,3 +131,28 @@ fn constants_simplify_to_exact_numbers_only_when_proven() {
     );
     assert_eq!(last("simplify(sin(1))").as_f64(), Some(1f64.sin()));
 }
+
+#[test]
+fn products_of_symbols_inside_angles_are_decided() {
+    for (src, holds) in [
+        (
+            "cos(x y) - cos(y) == -2 sin(x y/2 - y/2) sin(x y/2 + y/2)",
+            Some(true),
+        ),
+        (
+            "sin(x y) - sin(y) == 2 sin(x y/2 - y/2) cos(x y/2 + y/2)",
+            Some(true),
+        ),
+        ("cos(x y)^2 + sin(x y)^2 == 1", Some(true)),
+        ("cos(x^2 y) == 2 cos(x^2 y/2)^2 - 1", Some(true)),
+        // moved off: never true
+        (
+            "sin(x y) - sin(y) == 2 sin(x y/2 - y/2) cos(x y/2 + y/2) + 1/1000003",
+            Some(false),
+        ),
+        ("cos(x y) == cos(x) cos(y)", Some(false)),
+    ] {
+        let v = last(src);
+        assert_eq!(v.as_bool(), holds, "{src}: {v}");
+    }
+}

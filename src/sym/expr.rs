@@ -421,27 +421,9 @@ impl Expr {
     pub fn recip(&self) -> Option<Expr> {
         if self.terms.len() == 1 {
             let (m, c) = self.terms.iter().next()?;
-            let m: Mono = m
-                .iter()
-                .map(|(v, e)| (v.clone(), e.saturating_neg()))
-                .collect();
-            // (a kept reciprocal turned over is its sum again: 1/(1/(1 + sin t))
-            // is 1 + sin t, not the reciprocal to the power −1)
-            let (sums, m): (Mono, Mono) = m
-                .into_iter()
-                .partition(|(v, e)| *e < 0 && matches!(v, Var::Call(c) if c.f == Func::Recip));
-            let mut out = Expr::zero();
-            out.push(m, c.inv()?);
-            for (v, e) in sums {
-                if let Var::Call(call) = v {
-                    out = out.mul(&call.args[0].powi(i64::from(e.saturating_neg()))?);
-                }
-            }
-            return Some(out.fold_phases());
+            return super::together::turned_term(m, c);
         }
-        // 1/(n/d) = d/n: a sum over kept reciprocals (`cot t`, `1 − tan t`)
-        // is turned over, not kept as a reciprocal of a reciprocal
-        // (`1/cot(t)` is `tan(t)`, the same canonical form).
+        // 1/(n/d) = d/n (`1/cot(t)` is `tan(t)`, one canonical form)
         if self.has_recip()
             && let Some(r) = super::together::turned_over(self)
         {

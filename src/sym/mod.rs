@@ -15,6 +15,7 @@ pub mod eval;
 pub mod expr;
 pub mod factor;
 pub mod fraction;
+pub mod generalize;
 pub mod half;
 pub mod intern;
 pub mod inverse;

@@ -276,6 +276,22 @@ pub fn over_one(e: &Expr) -> Option<Expr> {
     Some(num.mul(&den).cancel())
 }
 
+/// 1/(c·m) for one term: each exponent negated, and a kept reciprocal
+/// turned over is its sum again (1/(1/(1 + sin t)) is 1 + sin t, not the
+/// reciprocal to the power −1, a second form of the same value).
+pub fn turned_term(m: &Mono, c: &Coef) -> Option<Expr> {
+    let (sums, m): (Mono, Mono) = m
+        .iter()
+        .map(|(v, e)| (v.clone(), e.saturating_neg()))
+        .partition(|(v, e)| *e < 0 && recip_of(v).is_some());
+    let mut out = Expr::zero();
+    out.push(m, c.inv()?);
+    for (v, e) in sums {
+        out = out.mul(&recip_of(&v)?.args[0].powi(i64::from(e.saturating_neg()))?);
+    }
+    Some(out.fold_phases())
+}
+
 /// 1/e for a sum `e` over kept reciprocals: e = n/d with d the product of
 /// its reciprocals' sums to their highest powers, so 1/e = d/n, cancelled;
 /// None when `n` still holds a reciprocal (one nested in another), or
