@@ -135,9 +135,14 @@ fn sympys_identities_are_never_false_and_perturbed_never_true() {
     assert!(rows.len() > 350, "the table has {} rows", rows.len());
     let mut counts = std::collections::BTreeMap::new();
     let mut wrong = Vec::new();
+    // (listed with the counts: what is left to decide)
+    let mut undecided = Vec::new();
     for r in &rows {
         let v = verdict(&script(r, &format!("({}) == ({})", r.lhs, r.rhs)));
         *counts.entry(format!("{v:?}")).or_insert(0usize) += 1;
+        if matches!(v, Verdict::Undecided | Verdict::Refused) {
+            undecided.push(format!("{v:?} {}: ({}) == ({})", r.source, r.lhs, r.rhs));
+        }
         if v == Verdict::False {
             wrong.push(format!("{}: ({}) == ({}) is false", r.source, r.lhs, r.rhs));
         }
@@ -153,6 +158,9 @@ fn sympys_identities_are_never_false_and_perturbed_never_true() {
         }
     }
     println!("SymPy's suite, {} identities: {counts:?}", rows.len());
+    for u in &undecided {
+        println!("  {u}");
+    }
     assert!(wrong.is_empty(), "wrong answers:\n{}", wrong.join("\n"));
     let proven = counts.get("True").copied().unwrap_or(0);
     assert!(
