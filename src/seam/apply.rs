@@ -394,9 +394,13 @@ impl<'a> Op<'a> {
         args.iter()
             .any(|v| v.is_symbolic() || (formulas && matches!(v, Value::Formula { .. })))
             .then(|| {
-                Ok(Value::Sym(
-                    self.symbolic(args.iter().map(|v| to_sym(v)).collect()),
-                ))
+                // (a law of exponents may leave a number: 2^x 2^(-x) is 1)
+                Ok(
+                    match self.symbolic(args.iter().map(|v| to_sym(v)).collect()) {
+                        Sym::Const(v, _) => *v,
+                        s => Value::Sym(s),
+                    },
+                )
             })
     }
 }

@@ -91,6 +91,13 @@ pub(super) fn opposite(a: &Sym, b: &Sym) -> Option<Sym> {
     if f1.as_const().is_some() || !f1.add(&f2).is_zero() {
         return None;
     }
+    // (b^(−e) b^e is 1)
+    if let (Some(a), Some(b)) = (formula::scalar_of(v1), formula::scalar_of(v2))
+        && a == b
+        && a.as_const().is_some_and(|c| c.is_exact())
+    {
+        return Some(constant(Expr::int(1)));
+    }
     let (p1, p2) = (v1.as_scalar()?, v2.as_scalar()?);
     if !(p1 > 0.0 && p2 > 0.0) {
         return None;
