@@ -136,24 +136,30 @@ fn over_factors(den: &Mono, mut num: Expr) -> Expr {
         let d = &call.args[0];
         let real = one_term(d);
         let single = (real.len() == 1).then(|| real.iter().next()).flatten();
-        let Some(((poly, trig), c)) = single.filter(|((p, _), _)| p.is_empty()) else {
+        // (each factor's angle, none with a constant phase: else kept whole)
+        let opened = single
+            .filter(|((p, _), _)| p.is_empty())
+            .and_then(|((_, trig), c)| {
+                let fs: Option<Vec<(Expr, u32)>> = trig
+                    .iter()
+                    .map(|(a, sin, p)| {
+                        let x = angle(a)?;
+                        Some((if *sin { Expr::sin(&x) } else { Expr::cos(&x) }, *p))
+                    })
+                    .collect();
+                Some((c.clone(), fs?))
+            });
+        let Some((c, factors)) = opened else {
             let mut m = Expr::zero();
             m.push(vec![(v.clone(), *k)], Coef::one());
             kept = kept.mul(&m);
             continue;
         };
-        let _ = poly;
-        let mut rest = Expr::constant(c.clone())
+        let mut rest = Expr::constant(c)
             .powi(i64::from(*k))
             .unwrap_or_else(Expr::one);
-        for (a, sin, p) in trig {
-            let Some(x) = angle(a) else {
-                let mut m = Expr::zero();
-                m.push(vec![(v.clone(), *k)], Coef::one());
-                return num.mul(&m).mul(&kept);
-            };
-            let f = if *sin { Expr::sin(&x) } else { Expr::cos(&x) };
-            let mut left = i64::from(*p) * i64::from(*k);
+        for (f, p) in factors {
+            let mut left = i64::from(p) * i64::from(*k);
             while left > 0 {
                 match num.div_exact(&f) {
                     Some(q) => {
@@ -197,4 +203,53 @@ fn one_term(d: &Expr) -> super::trig::Real {
         }
     }
     best
+}
+
+/// A guard, not a proof (each candidate is made by exact steps): the
+/// candidate and the canonical form agree at two points, or neither is
+/// defined there.
+pub fn agrees(candidate: &Expr, canonical: &Expr) -> bool {
+    let mut names = Vec::new();
+    canonical.symbols(&mut names);
+    candidate.symbols(&mut names);
+    [0.3719, -1.2345].iter().all(|x0| {
+        let at = |s: &Symbol| {
+            let i = names.iter().position(|n| n == s)?;
+            Some(x0 + 0.6180 * i as f64)
+        };
+        match (candidate.eval(&at), canonical.eval(&at)) {
+            (Some(a), Some(b)) => (a - b).abs() <= 1e-9 * (1.0 + a.abs().max(b.abs())),
+            (None, None) => true,
+            _ => false,
+        }
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sym::print::{Style, expr};
+
+    fn s(n: &str) -> Expr {
+        Expr::symbol(Symbol::new(n))
+    }
+
+    #[test]
+    fn half_angle_and_factor_forms_are_the_value() {
+        let x = s("x");
+        // sin x/(1 + cos x) over x/2 is tan(x/2)
+        let q = Expr::sin(&x).mul(&Expr::one().add(&Expr::cos(&x)).recip().unwrap());
+        let forms = half_angle(&q);
+        let texts: Vec<String> = forms.iter().map(|f| expr(f, Style::default())).collect();
+        assert!(texts.contains(&"tan(x/2)".to_string()), "{texts:?}");
+        assert!(forms.iter().all(|f| agrees(f, &q)));
+        // sin 2x/cos² x cancelled factor by factor is 2 tan x
+        let c = Expr::cos(&x);
+        let r = Expr::sin(&x.scale(&Coef::int(2))).mul(&c.mul(&c).recip().unwrap());
+        let f = by_factors(&r.cancel());
+        assert_eq!(expr(&f, Style::default()), "2 tan(x)");
+        assert!(agrees(&f, &r));
+        // a guard that sees a wrong form
+        assert!(!agrees(&Expr::sin(&x), &Expr::cos(&x)));
+    }
 }

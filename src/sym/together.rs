@@ -338,7 +338,7 @@ pub fn simplest(e: &Expr) -> Expr {
         .chain(super::shortest::half_angle(&best));
     for c in others {
         let n = len(&c);
-        if n < best_len {
+        if n < best_len && super::shortest::agrees(&c, &best) {
             (best, best_len) = (c, n);
         }
     }
