@@ -12,10 +12,10 @@ use super::trig::{Trig, real_form};
 use num_traits::Zero;
 
 /// A trigonometric factor as printed: the function, the angle, the power.
-struct Factor {
-    f: &'static str,
-    k: Vec<(Symbol, i32)>,
-    p: u32,
+pub(super) struct Factor {
+    pub(super) f: &'static str,
+    pub(super) k: Vec<(Symbol, i32)>,
+    pub(super) p: u32,
 }
 
 fn is_recip(v: &Var) -> bool {
@@ -46,7 +46,7 @@ pub fn terms(e: &Expr, st: Style) -> Vec<(bool, String)> {
             out.extend(plain(&num, st));
             continue;
         }
-        if let Some(t) = tangent_product(&num, &den, st) {
+        if let Some(t) = super::tangents::tangent_product(&num, &den, st) {
             out.push(t);
             continue;
         }
@@ -76,7 +76,7 @@ fn plain(e: &Expr, st: Style) -> Vec<(bool, String)> {
 
 /// A kept reciprocal 1/(d)^e whose d is one real term k·(variables)·(trig
 /// factors): (1/k^e, the variables, the factors), each to the power e.
-fn opened(v: &Var, e: i32) -> Option<(Coef, Mono, Vec<Factor>)> {
+pub(super) fn opened(v: &Var, e: i32) -> Option<(Coef, Mono, Vec<Factor>)> {
     let Var::Call(call) = v else { return None };
     if call.f != Func::Recip || e <= 0 {
         return None;
@@ -233,107 +233,6 @@ fn tangents(num: &mut Vec<Factor>, den: &mut Vec<Factor>) {
     }
 }
 
-/// A quotient whose denominator is a product of sines and cosines of
-/// angles A and whose numerator is a constant times the co-functions of
-/// the same angles, as a product of cotangents and tangents:
-/// cos(x) cos(x + y)/(sin(x) sin(x + y)) is `cot(x) cot(x + y)` (the
-/// numerator, a sum once multiplied out, is found by exact division by
-/// each co-function). None for any other quotient.
-fn tangent_product(num: &Expr, den: &Mono, st: Style) -> Option<(bool, String)> {
-    if num.terms.len() < 2 {
-        return None;
-    }
-    let mut num = num.clone();
-    let mut scale = Coef::one();
-    let mut out: Vec<Factor> = Vec::new();
-    for (v, e) in den {
-        let (k, vars, factors) = opened(v, *e)?;
-        if !vars.is_empty() {
-            return None;
-        }
-        scale = scale.mul(&k);
-        for f in factors {
-            let mut angle = Expr::zero();
-            for (s, n) in &f.k {
-                if s.phase().is_some() {
-                    return None;
-                }
-                angle = angle.add(&Expr::symbol(s.clone()).scale(&Coef::int(i64::from(*n))));
-            }
-            let (co, name) = if f.f == "sin" {
-                (Expr::cos(&angle), "cot")
-            } else {
-                (Expr::sin(&angle), "tan")
-            };
-            for _ in 0..f.p {
-                num = num.div_exact(&co)?;
-            }
-            out.push(Factor {
-                f: name,
-                k: f.k,
-                p: f.p,
-            });
-        }
-    }
-    let c = num.as_const()?.mul(&scale);
-    let (neg, coef) = coefficient(&c, st);
-    let body: Vec<String> = out
-        .iter()
-        .map(|f| trig_factor(&f.k, f.f, f.p, st))
-        .collect();
-    let body = body.join(" ");
-    let text = match coef.as_str() {
-        "1" => body,
-        _ if st.mode != Mode::Latex && needs_parens(&coef) => format!("({coef}) {body}"),
-        _ => format!("{coef} {body}"),
-    };
-    Some((neg, text))
-}
-
-/// sin(x)/cos(x) and cos(x)/sin(x) of one kept call's argument (a half
-/// angle, `tan(x/2)`) as the tangent and cotangent, power by power: the
-/// monomial left, and the tangents' texts.
-fn call_tangents(poly: &Mono, st: Style) -> (Mono, Vec<String>) {
-    let latex = st.mode == Mode::Latex;
-    let call = |v: &Var, f: Func| match v {
-        Var::Call(c) if c.f == f => Some(c.args[0].clone()),
-        _ => None,
-    };
-    let mut left: Mono = poly.clone();
-    let mut texts = Vec::new();
-    for (top, bottom, from, to) in [
-        (Func::Sin, Func::Cos, "sin", "tan"),
-        (Func::Cos, Func::Sin, "cos", "cot"),
-    ] {
-        for i in 0..left.len() {
-            let Some(x) = call(&left[i].0, top).filter(|_| left[i].1 > 0) else {
-                continue;
-            };
-            let Some(j) = left
-                .iter()
-                .position(|(w, k)| *k < 0 && call(w, bottom).as_ref() == Some(&x))
-            else {
-                continue;
-            };
-            let text = var(&left[i].0, st);
-            let renamed = if latex {
-                let a = format!("operatorname{{{from}}}");
-                text.contains(&a)
-                    .then(|| text.replacen(&a, &format!("operatorname{{{to}}}"), 1))
-            } else {
-                text.strip_prefix(from).map(|r| format!("{to}{r}"))
-            };
-            let Some(renamed) = renamed else { continue };
-            let m = left[i].1.min(-left[j].1);
-            left[i].1 -= m;
-            left[j].1 += m;
-            texts.push(power(&renamed, m, latex));
-        }
-        left.retain(|(_, k)| *k != 0);
-    }
-    (left, texts)
-}
-
 /// One term: its sign and its text, `(1/2) L1 cos(t1)`, `tan(t)`,
 /// `3/(a + b sin(t))`.
 pub(super) fn term(c: &Coef, poly: &Mono, trig: &[Trig], st: Style) -> (bool, String) {
@@ -358,7 +257,7 @@ pub(super) fn term(c: &Coef, poly: &Mono, trig: &[Trig], st: Style) -> (bool, St
         den_t: &mut den_t,
         st,
     };
-    let (poly, kept_tangents) = call_tangents(poly, st);
+    let (poly, kept_tangents) = super::tangents::call_tangents(poly, st);
     for (v, e) in &poly {
         sides.place(v, *e, 0);
     }
@@ -410,7 +309,7 @@ pub(super) fn term(c: &Coef, poly: &Mono, trig: &[Trig], st: Style) -> (bool, St
 
 /// True when a coefficient's text needs parentheses before a factor
 /// (`(1/2) t`): a fraction or a sum not already in them (`(1 + √2) t`).
-fn needs_parens(coef: &str) -> bool {
+pub(super) fn needs_parens(coef: &str) -> bool {
     coef.contains(['/', ' ']) && !(coef.starts_with('(') && coef.ends_with(')'))
 }
 

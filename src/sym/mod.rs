@@ -33,6 +33,7 @@ pub mod size;
 pub mod solve;
 pub mod squarefree;
 pub mod surd;
+mod tangents;
 pub mod together;
 pub mod trig;
 
