@@ -70,6 +70,11 @@ fn tan_and_cot_are_kept() {
         ("simplify((cos(x) + 1)/sin(x))", "cot(x/2)"),
         ("simplify(sin(x)/cos(x/2))", "2 sin(x/2)"),
         ("simplify(sin(2 x)/cos(x)^2)", "2 tan(x)"),
+        ("simplify(1/(tan(x) tan(x + y)))", "cot(x) cot(x + y)"),
+        (
+            "simplify(sin(x)/(cos(x + y) + cos(x - y)))",
+            "(1/2) tan(x)/cos(y)",
+        ),
         ("-tan(x)/tan(y)/3", "-(1/3) tan(x) cot(y)"),
         ("tan(x/2)", "tan(x/2)"),
     ] {

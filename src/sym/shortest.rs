@@ -121,43 +121,33 @@ pub fn by_factors(e: &Expr) -> Expr {
     }
     let mut out = Expr::zero();
     for (den, num) in groups {
-        out = out.add(&over_factors(&den, num));
+        match over_factors(&den, num) {
+            Some(t) => out = out.add(&t),
+            None => return e.clone(),
+        }
     }
     out
 }
 
 /// num over the reciprocals `den`, each opened into its factors where it
-/// is one real term, and those that divide num divided out.
-fn over_factors(den: &Mono, mut num: Expr) -> Expr {
-    let mut below = Expr::one();
+/// has them ([`factor_list`]), those that divide num divided out, and the
+/// rest kept as one reciprocal each (so that they print as the tangents
+/// and cotangents they make with the numerator).
+fn over_factors(den: &Mono, mut num: Expr) -> Option<Expr> {
+    let mut scale = Coef::one();
+    let mut below: Vec<(Expr, i64)> = Vec::new();
     let mut kept = Expr::one();
     for (v, k) in den {
         let Var::Call(call) = v else { continue };
-        let d = &call.args[0];
-        let real = one_term(d);
-        let single = (real.len() == 1).then(|| real.iter().next()).flatten();
-        // (each factor's angle, none with a constant phase: else kept whole)
-        let opened = single
-            .filter(|((p, _), _)| p.is_empty())
-            .and_then(|((_, trig), c)| {
-                let fs: Option<Vec<(Expr, u32)>> = trig
-                    .iter()
-                    .map(|(a, sin, p)| {
-                        let x = angle(a)?;
-                        Some((if *sin { Expr::sin(&x) } else { Expr::cos(&x) }, *p))
-                    })
-                    .collect();
-                Some((c.clone(), fs?))
-            });
-        let Some((c, factors)) = opened else {
+        let Some((c, factors)) = factor_list(&call.args[0]) else {
             let mut m = Expr::zero();
             m.push(vec![(v.clone(), *k)], Coef::one());
             kept = kept.mul(&m);
             continue;
         };
-        let mut rest = Expr::constant(c)
-            .powi(i64::from(*k))
-            .unwrap_or_else(Expr::one);
+        for _ in 0..*k {
+            scale = scale.mul(&c);
+        }
         for (f, p) in factors {
             let mut left = i64::from(p) * i64::from(*k);
             while left > 0 {
@@ -169,14 +159,66 @@ fn over_factors(den: &Mono, mut num: Expr) -> Expr {
                     None => break,
                 }
             }
-            rest = rest.mul(&f.powi(left).unwrap_or_else(Expr::one));
+            if left > 0 {
+                below.push((f, left));
+            }
         }
-        below = below.mul(&rest);
     }
-    match below.recip() {
-        Some(r) => num.mul(&r).mul(&kept),
-        None => num.mul(&kept),
+    let mut out = num.mul(&kept);
+    if let Some(r) = Expr::constant(scale).recip() {
+        out = out.mul(&r);
     }
+    for (f, n) in below {
+        match f.recip().and_then(|r| r.powi(n)) {
+            Some(r) => out = out.mul(&r),
+            None => return None,
+        }
+    }
+    Some(out)
+}
+
+/// A reciprocal's sum d as c·Π fᵢ^pᵢ with each fᵢ a sine or cosine: where
+/// d is one real term ([`one_term`]), or two whose angles A, B give
+/// d = c·f((A + B)/2)·g((A − B)/2) exactly (sum to product:
+/// cos(2x + y) − cos y = −2 sin(x + y) sin x). None otherwise, or with a
+/// constant phase in an angle.
+fn factor_list(d: &Expr) -> Option<(Coef, Vec<(Expr, u32)>)> {
+    let real = one_term(d);
+    if real.len() == 1 {
+        let ((poly, trig), c) = real.iter().next()?;
+        if !poly.is_empty() {
+            return None;
+        }
+        let fs: Option<Vec<(Expr, u32)>> = trig
+            .iter()
+            .map(|(a, sin, p)| {
+                let x = angle(a)?;
+                Some((if *sin { Expr::sin(&x) } else { Expr::cos(&x) }, *p))
+            })
+            .collect();
+        return Some((c.clone(), fs?));
+    }
+    if real.len() != 2 {
+        return None;
+    }
+    let mut angles = Vec::new();
+    for (poly, trig) in real.keys() {
+        match trig.as_slice() {
+            [(a, _, 1)] if poly.is_empty() => angles.push(angle(a)?),
+            _ => return None,
+        }
+    }
+    let half = Coef::rat(Rat::new(1, 2)?);
+    let u = angles[0].add(&angles[1]).scale(&half);
+    let v = angles[0].sub(&angles[1]).scale(&half);
+    for f in [Expr::sin(&u), Expr::cos(&u)] {
+        for g in [Expr::sin(&v), Expr::cos(&v)] {
+            if let Some(c) = d.div_exact(&f.mul(&g)).and_then(|q| q.as_const()) {
+                return Some((c, vec![(f, 1), (g, 1)]));
+            }
+        }
+    }
+    None
 }
 
 /// The real form of `d` as one term where it has one: its own best form,
