@@ -325,6 +325,18 @@ pub fn turned_over(e: &Expr) -> Option<Expr> {
 /// canonical form on a tie.
 pub fn simplest(e: &Expr) -> Expr {
     let cancelled = e.cancel();
+    let factored = cancelled
+        .has_recip()
+        .then(|| super::shortest::by_factors(&cancelled));
+    let others: Vec<Expr> = over_one(e)
+        .into_iter()
+        .chain(factored)
+        .chain(super::shortest::half_angle(&cancelled))
+        .filter(|c| *c != cancelled)
+        .collect();
+    if others.is_empty() {
+        return cancelled;
+    }
     let len = |x: &Expr| {
         super::print::expr(x, super::print::Style::default())
             .chars()
@@ -332,10 +344,6 @@ pub fn simplest(e: &Expr) -> Expr {
     };
     let mut best_len = len(&cancelled);
     let mut best = cancelled;
-    let others = over_one(e)
-        .into_iter()
-        .chain(Some(super::shortest::by_factors(&best)))
-        .chain(super::shortest::half_angle(&best));
     for c in others {
         let n = len(&c);
         if n < best_len && super::shortest::agrees(&c, &best) {
