@@ -49,6 +49,9 @@ fn simplify_prints_the_form_never_the_call() {
     assert_eq!(text("simplify(2^(2 + x)/4)"), "2^x");
     assert_eq!(text("2^(2 + x) * 4"), "2^(4 + x)");
     assert_eq!(text("2^x * 2^(-x) + 1"), "2");
+    assert_eq!(text("2^x * 2^(1 - x)"), "2");
+    assert_eq!(text("2^x * 2^y"), "2^(x + y)");
+    assert_eq!(text("2^x * 3^x"), "6^x");
     for src in [
         "simplify((cos(1) + 1)^(-a) sin(1)^a)",
         "simplify(sin(1)^a)",

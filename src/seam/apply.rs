@@ -241,7 +241,7 @@ impl<'a> Op<'a> {
                 match op {
                     BinOp::Mul => super::powers::scaled(&a, &b, true)
                         .or_else(|| super::powers::scaled(&b, &a, true))
-                        .or_else(|| super::powers::opposite(&a, &b))
+                        .or_else(|| super::powers::joined(&a, &b))
                         .unwrap_or_else(|| Sym::times(a, b)),
                     BinOp::Add => Sym::Add(Box::new(a), Box::new(b)),
                     BinOp::Sub => Sym::Sub(Box::new(a), Box::new(b)),

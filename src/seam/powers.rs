@@ -5,6 +5,8 @@
 //!
 //! - b^e / c = b^(e − k) and b^e · c = b^(e + k) where c = b^(∓k) for an
 //!   integer k (`2^(2 + x)/4` is `2^x`, as SymPy's `simplify` gives);
+//! - b^e₁ · b^e₂ = b^(e₁ + e₂) (`2^x 2^y` is `2^(x + y)`, `2^x 2^(1 − x)`
+//!   is 2), b₁^e · b₂^e = (b₁ b₂)^e (`2^x 3^x` is `6^x`);
 //! - b₁^(−e) · b₂^e = (b₂/b₁)^e, one power of one base
 //!   (`(1 + cos 1)^(−a) sin(1)^a` is `(sin 1/(1 + cos 1))^a`).
 //!
@@ -75,9 +77,64 @@ pub(super) fn scaled(a: &Sym, c: &Sym, times: bool) -> Option<Sym> {
     shifted(base, ev, if times { k } else { -k })
 }
 
+/// A product of two powers of positive constants as one power (module
+/// doc): b^e₁ · b^e₂ = b^(e₁ + e₂), b₁^e · b₂^e = (b₁ b₂)^e, b₁^(−e) · b₂^e
+/// = (b₂/b₁)^e; None otherwise.
+pub(super) fn joined(a: &Sym, b: &Sym) -> Option<Sym> {
+    same_base(a, b)
+        .or_else(|| same_exponent(a, b))
+        .or_else(|| opposite(a, b))
+}
+
+/// The constant base and the exponent's formula of a power b^e.
+fn parts(a: &Sym) -> Option<(&Sym, &Value, &Sym, Expr)> {
+    let Sym::Pow(base, e) = a else { return None };
+    let Sym::Const(v, _) = base.as_ref() else {
+        return None;
+    };
+    let Sym::Const(x, _) = e.as_ref() else {
+        return None;
+    };
+    let f = formula::scalar_of(x)?;
+    (v.as_scalar()? > 0.0).then_some((base.as_ref(), v.as_ref(), e.as_ref(), f))
+}
+
+/// b^e₁ · b^e₂ = b^(e₁ + e₂) for one exact base b > 0; a number where the
+/// sum is an integer (2^x 2^(1 − x) is 2).
+fn same_base(a: &Sym, b: &Sym) -> Option<Sym> {
+    let (base, v1, _, f1) = parts(a)?;
+    let (_, v2, _, f2) = parts(b)?;
+    let (x1, x2) = (formula::scalar_of(v1)?, formula::scalar_of(v2)?);
+    if x1 != x2 || !x1.as_const().is_some_and(|c| c.is_exact()) {
+        return None;
+    }
+    let sum = f1.add(&f2);
+    match sum.as_const() {
+        Some(k) => {
+            let k = k.as_rat()?.as_int().filter(|k| k.abs() <= MAX_K)?;
+            x1.powi(k).map(constant)
+        }
+        None => Some(Sym::Pow(Box::new(base.clone()), Box::new(constant(sum)))),
+    }
+}
+
+/// b₁^e · b₂^e = (b₁ b₂)^e for positive constants (the product made by
+/// the multiplication itself, as [`quotient`]).
+fn same_exponent(a: &Sym, b: &Sym) -> Option<Sym> {
+    let (_, v1, e, f1) = parts(a)?;
+    let (_, v2, _, f2) = parts(b)?;
+    if f1 != f2 || f1.as_const().is_some() {
+        return None;
+    }
+    let p = super::apply::Op::Arith(crate::syntax::ast::BinOp::Mul)
+        .apply(&[v1, v2], &Kind::Scalar)
+        .ok()?;
+    Some(Sym::Pow(Box::new(constant_value(p)), Box::new(e.clone())))
+}
+
 /// b₁^(−e) · b₂^e (either order) as (b₂/b₁)^e for positive constants b₁, b₂;
 /// None otherwise.
-pub(super) fn opposite(a: &Sym, b: &Sym) -> Option<Sym> {
+fn opposite(a: &Sym, b: &Sym) -> Option<Sym> {
     let (Sym::Pow(b1, e1), Sym::Pow(b2, e2)) = (a, b) else {
         return None;
     };
@@ -120,12 +177,17 @@ pub(crate) fn quotient(num: &Value, den: &Value) -> Option<Sym> {
     let v = super::apply::Op::Arith(crate::syntax::ast::BinOp::Div)
         .apply(&[num, den], &Kind::Scalar)
         .ok()?;
-    let x = v.as_scalar()?;
+    v.as_scalar()?;
+    Some(constant_value(v))
+}
+
+/// A number as a constant of the tree, its text every digit where 4 do
+/// not read back as it.
+fn constant_value(v: Value) -> Sym {
     let short = crate::values::format::inline(&v, 4);
-    let text = if short.parse::<f64>().ok() == Some(x) {
-        short
-    } else {
-        format!("{x}")
+    let text = match v.as_scalar() {
+        Some(x) if short.parse::<f64>().ok() != Some(x) => format!("{x}"),
+        _ => short,
     };
-    Some(Sym::Const(Box::new(v), text))
+    Sym::Const(Box::new(v), text)
 }
