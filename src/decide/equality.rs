@@ -112,6 +112,9 @@ pub fn symbolic_equal(a: &Sym, b: &Sym, _op: CmpOp) -> Option<bool> {
     // Trees compare structurally, constants by value (not printed text),
     // with the adjoint of an inverse written one way: (Ad_T)⁻¹ = Ad_{T⁻¹}
     // (Proposition 3.20), so inv(Ad(T)) == Ad(inv(T)) is true (issue 35).
+    if let Some(t) = super::powers::equal(a, b) {
+        return Some(t);
+    }
     (a == b || adjoint_inverses(a) == adjoint_inverses(b)).then_some(true)
 }
 

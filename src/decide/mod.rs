@@ -16,11 +16,13 @@
 pub(crate) mod ball;
 pub(crate) mod balls;
 pub(crate) mod certify;
+pub(crate) mod constant;
 pub(crate) mod cyclotomic;
 pub(crate) mod equality;
 pub(crate) mod inverse;
 pub(crate) mod lift;
 pub(crate) mod order;
+pub(crate) mod powers;
 pub(crate) mod replay;
 pub(crate) mod transcendental;
 pub(crate) mod turn;

@@ -19,6 +19,16 @@ pub(super) fn each_part(
     vals: &[Value],
     warnings: &mut Vec<Diagnostic>,
 ) -> Option<Result<Value, OpError>> {
+    // (a constant: the exact short number it is proven to be, §7; else
+    // itself, with its exact form, so that `simplify(x) == x`'s proofs
+    // still see how it was made)
+    if let [v @ Value::Num { .. }] = vals
+        && name == "simplify"
+    {
+        return Some(Ok(
+            crate::decide::constant::simplest(v).unwrap_or_else(|| v.clone())
+        ));
+    }
     // (a comparison decided over free symbols is its bool)
     if let [v @ Value::Formula { .. }, ..] = vals
         && matches!(name, "subs" | "simplify" | "expand")

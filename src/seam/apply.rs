@@ -239,10 +239,14 @@ impl<'a> Op<'a> {
                 let b = one(&mut args);
                 let a = one(&mut args);
                 match op {
-                    BinOp::Mul => Sym::times(a, b),
+                    BinOp::Mul => super::powers::scaled(&a, &b, true)
+                        .or_else(|| super::powers::scaled(&b, &a, true))
+                        .or_else(|| super::powers::joined(&a, &b))
+                        .unwrap_or_else(|| Sym::times(a, b)),
                     BinOp::Add => Sym::Add(Box::new(a), Box::new(b)),
                     BinOp::Sub => Sym::Sub(Box::new(a), Box::new(b)),
-                    BinOp::Div => Sym::Div(Box::new(a), Box::new(b)),
+                    BinOp::Div => super::powers::scaled(&a, &b, false)
+                        .unwrap_or_else(|| Sym::Div(Box::new(a), Box::new(b))),
                     BinOp::Pow if constant(&b).and_then(Value::as_scalar) == Some(-1.0) => {
                         a.inverse()
                     }
@@ -278,6 +282,9 @@ impl<'a> Op<'a> {
             Op::Vector => Sym::Vector(args),
             Op::Call(b, name) => match b.role() {
                 Role::Inverse => one(&mut args).inverse(),
+                // (a tree over symbols is already in its simplest form: the
+                // result prints the form, never the call)
+                _ if matches!(b.name, "simplify" | "expand") && args.len() == 1 => one(&mut args),
                 // (exp(log(u)) = u wherever log u is defined)
                 _ if b.name == "exp"
                     && matches!(args.as_slice(), [Sym::Call(f, a)] if f.name == "log" && a.len() == 1) =>
@@ -383,9 +390,13 @@ impl<'a> Op<'a> {
         args.iter()
             .any(|v| v.is_symbolic() || (formulas && matches!(v, Value::Formula { .. })))
             .then(|| {
-                Ok(Value::Sym(
-                    self.symbolic(args.iter().map(|v| to_sym(v)).collect()),
-                ))
+                // (a law of exponents may leave a number: 2^x 2^(-x) is 1)
+                Ok(
+                    match self.symbolic(args.iter().map(|v| to_sym(v)).collect()) {
+                        Sym::Const(v, _) => *v,
+                        s => Value::Sym(s),
+                    },
+                )
             })
     }
 }

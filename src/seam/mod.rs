@@ -13,6 +13,7 @@ pub mod apply;
 mod chain;
 pub(crate) mod exactness;
 pub(crate) mod operation;
+mod powers;
 pub(crate) mod range;
 mod shapes;
 pub mod transform;

@@ -421,13 +421,13 @@ impl Expr {
     pub fn recip(&self) -> Option<Expr> {
         if self.terms.len() == 1 {
             let (m, c) = self.terms.iter().next()?;
-            let m: Mono = m
-                .iter()
-                .map(|(v, e)| (v.clone(), e.saturating_neg()))
-                .collect();
-            let mut out = Expr::zero();
-            out.push(m, c.inv()?);
-            return Some(out.fold_exps().fold_phases());
+            return super::together::turned_term(m, c);
+        }
+        // 1/(n/d) = d/n (`1/cot(t)` is `tan(t)`, one canonical form)
+        if self.has_recip()
+            && let Some(r) = super::together::turned_over(self)
+        {
+            return Some(r);
         }
         let bar = self.conj();
         if bar != *self {

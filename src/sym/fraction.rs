@@ -12,10 +12,10 @@ use super::trig::{Trig, real_form};
 use num_traits::Zero;
 
 /// A trigonometric factor as printed: the function, the angle, the power.
-struct Factor {
-    f: &'static str,
-    k: Vec<(Symbol, i32)>,
-    p: u32,
+pub(super) struct Factor {
+    pub(super) f: &'static str,
+    pub(super) k: Vec<(Symbol, i32)>,
+    pub(super) p: u32,
 }
 
 fn is_recip(v: &Var) -> bool {
@@ -46,6 +46,10 @@ pub fn terms(e: &Expr, st: Style) -> Vec<(bool, String)> {
             out.extend(plain(&num, st));
             continue;
         }
+        if let Some(t) = super::tangents::tangent_product(&num, &den, st) {
+            out.push(t);
+            continue;
+        }
         let real = real_form(&num);
         let below = denominator(&den, st);
         let Some((scale, den_text)) = below.filter(|_| real.len() > 1) else {
@@ -72,7 +76,7 @@ fn plain(e: &Expr, st: Style) -> Vec<(bool, String)> {
 
 /// A kept reciprocal 1/(d)^e whose d is one real term k·(variables)·(trig
 /// factors): (1/k^e, the variables, the factors), each to the power e.
-fn opened(v: &Var, e: i32) -> Option<(Coef, Mono, Vec<Factor>)> {
+pub(super) fn opened(v: &Var, e: i32) -> Option<(Coef, Mono, Vec<Factor>)> {
     let Var::Call(call) = v else { return None };
     if call.f != Func::Recip || e <= 0 {
         return None;
@@ -253,9 +257,11 @@ pub(super) fn term(c: &Coef, poly: &Mono, trig: &[Trig], st: Style) -> (bool, St
         den_t: &mut den_t,
         st,
     };
-    for (v, e) in poly {
+    let (poly, kept_tangents) = super::tangents::call_tangents(poly, st);
+    for (v, e) in &poly {
         sides.place(v, *e, 0);
     }
+    num.extend(kept_tangents);
     tangents(&mut num_t, &mut den_t);
     num.extend(num_t.iter().map(|f| trig_factor(&f.k, f.f, f.p, st)));
     den.extend(den_t.iter().map(|f| trig_factor(&f.k, f.f, f.p, st)));
@@ -303,7 +309,7 @@ pub(super) fn term(c: &Coef, poly: &Mono, trig: &[Trig], st: Style) -> (bool, St
 
 /// True when a coefficient's text needs parentheses before a factor
 /// (`(1/2) t`): a fraction or a sum not already in them (`(1 + √2) t`).
-fn needs_parens(coef: &str) -> bool {
+pub(super) fn needs_parens(coef: &str) -> bool {
     coef.contains(['/', ' ']) && !(coef.starts_with('(') && coef.ends_with(')'))
 }
 

@@ -276,23 +276,79 @@ pub fn over_one(e: &Expr) -> Option<Expr> {
     Some(num.mul(&den).cancel())
 }
 
-/// What `simplify` prints (LANGUAGE.md §7): the canonical form with
-/// quotients cancelled ([`Expr::cancel`]), or the same over one
-/// denominator ([`over_one`]) when that prints shorter; equal values
-/// either way.
+/// 1/(c·m) for one term: each exponent negated, and a kept reciprocal
+/// turned over is its sum again (1/(1/(1 + sin t)) is 1 + sin t, not the
+/// reciprocal to the power −1, a second form of the same value).
+pub fn turned_term(m: &Mono, c: &Coef) -> Option<Expr> {
+    let (sums, m): (Mono, Mono) = m
+        .iter()
+        .map(|(v, e)| (v.clone(), e.saturating_neg()))
+        .partition(|(v, e)| *e < 0 && recip_of(v).is_some());
+    let mut out = Expr::zero();
+    out.push(m, c.inv()?);
+    for (v, e) in sums {
+        out = out.mul(&recip_of(&v)?.args[0].powi(i64::from(e.saturating_neg()))?);
+    }
+    Some(out.fold_exps().fold_phases())
+}
+
+/// 1/e for a sum `e` over kept reciprocals: e = n/d with d the product of
+/// its reciprocals' sums to their highest powers, so 1/e = d/n, cancelled;
+/// None when `n` still holds a reciprocal (one nested in another), or
+/// past [`MAX_TERMS`].
+pub fn turned_over(e: &Expr) -> Option<Expr> {
+    let mut top = Vec::new();
+    powers(e, &mut top);
+    top.retain(|(_, h)| *h > 0);
+    if top.is_empty() {
+        return None;
+    }
+    let num = times(e, &top)?;
+    if num.has_recip() || num.is_zero() {
+        return None;
+    }
+    let mut den = Expr::one();
+    for (v, h) in &top {
+        den = den.mul(&bounded_pow(&recip_of(v)?.args[0], *h)?);
+        if den.terms.len() > MAX_TERMS {
+            return None;
+        }
+    }
+    Some(den.mul(&num.recip()?).cancel())
+}
+
+/// What `simplify` prints (LANGUAGE.md §7): the shortest in print of the
+/// canonical form with quotients cancelled ([`Expr::cancel`]), the same
+/// over one denominator ([`over_one`]), cancelled factor by factor
+/// ([`super::shortest::by_factors`]), and its half-angle forms
+/// ([`super::shortest::half_angle`]); equal values every one, the
+/// canonical form on a tie.
 pub fn simplest(e: &Expr) -> Expr {
     let cancelled = e.cancel();
-    let Some(one) = over_one(e) else {
+    let factored = cancelled
+        .has_recip()
+        .then(|| super::shortest::by_factors(&cancelled));
+    let others: Vec<Expr> = over_one(e)
+        .into_iter()
+        .chain(factored)
+        .chain(super::shortest::half_angle(&cancelled))
+        .filter(|c| *c != cancelled)
+        .collect();
+    if others.is_empty() {
         return cancelled;
-    };
+    }
     let len = |x: &Expr| {
         super::print::expr(x, super::print::Style::default())
             .chars()
             .count()
     };
-    if len(&one) < len(&cancelled) {
-        one
-    } else {
-        cancelled
+    let mut best_len = len(&cancelled);
+    let mut best = cancelled;
+    for c in others {
+        let n = len(&c);
+        if n < best_len && super::shortest::agrees(&c, &best) {
+            (best, best_len) = (c, n);
+        }
     }
+    best
 }

@@ -144,7 +144,7 @@ fn real_part(c: &Coef) -> Coef {
 }
 
 /// The largest |k| of e^{ikθ} written in powers of cos θ and sin θ.
-const MAX_POWER: i32 = 8;
+const MAX_POWER: i32 = 12;
 
 /// e^{ikθ} = (cos θ + i sin θ)^k in powers of c = cos θ and s = sin θ:
 /// with s² = 1 − c² (`sin_basis` false) or c² = 1 − s² (true), as

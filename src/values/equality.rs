@@ -40,10 +40,22 @@ pub fn equal(a: &Value, b: &Value, approx: bool) -> Result<Option<bool>, String>
         match verdict(&p3, &q3, approx, true) {
             Some(true) => continue,
             Some(false) if witnessed(p, q) || exactly(&p3, &q3) => return Ok(Some(false)),
+            _ if general(p, q, approx) => continue,
             _ => decided = None,
         }
     }
     Ok(decided)
+}
+
+/// True when p = q is proven with each product of symbols in an angle as
+/// a symbol of its own (`sym::generalize`: a proof, never a difference).
+fn general(p: &Expr, q: &Expr, approx: bool) -> bool {
+    let Some((p, q)) = crate::sym::generalize::linearized(p, q) else {
+        return false;
+    };
+    let (p, q) = crate::sym::together::unhalved(&p, &q).unwrap_or((p, q));
+    let (p, q) = crate::sym::together::cleared(&p, &q).unwrap_or((p, q));
+    verdict(&p, &q, approx, true) == Some(true)
 }
 
 /// True when every coefficient of both is exact (a float multiplied out
