@@ -25,8 +25,12 @@ fn half_turn(a: &Args, v: &Value) -> Option<Diagnostic> {
         ("MatrixLog3" | "MatrixLog6", k) => k.is_vector(),
         _ => false,
     };
+    // (asked before the operand is read as a matrix: that is a copy)
+    if !applies {
+        return None;
+    }
     let m = a.vals.first()?.as_matrix()?;
-    if !applies || !matches!(m.shape(), (3, 3) | (4, 4)) {
+    if !matches!(m.shape(), (3, 3) | (4, 4)) {
         return None;
     }
     let r = Mat3::from_fn(|i, j| m[(i, j)]);

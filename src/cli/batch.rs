@@ -72,6 +72,9 @@ struct Batch<'a> {
     prelude: Option<(String, String)>,
     /// Whether each JSON object names its file (`run` and `check`).
     file_key: bool,
+    /// Whether `--report` asks for the asserts as test cases: only then
+    /// is each script read once more for its asserts (`Suite::new`).
+    report: bool,
 }
 
 /// Runs (or checks) each source in a fresh session; returns the exit code:
@@ -113,6 +116,7 @@ pub(super) fn run(sources: &[Source], mode: Mode, opts: &Opts, file_key: bool) -
         gate,
         prelude,
         file_key,
+        report: report.is_some(),
     };
     // One Ctrl-C handler for the whole run; each file's clock starts anew.
     let base = opts.budget();
@@ -188,7 +192,9 @@ impl Batch<'_> {
         session.budget = budget;
         session.quiet = self.opts.quiet;
         let keep_going = self.opts.keep_going || self.mode == Mode::Check;
-        let mut suite = Suite::new(name, src);
+        // Without `--report` the suite is empty: no second parse of the
+        // script for asserts nobody reports.
+        let mut suite = Suite::new(name, if self.report { src } else { "" });
         let mut last_error = None;
         let mut errors = 0;
         let mut statements = 0;

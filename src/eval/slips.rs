@@ -78,17 +78,16 @@ fn constant(e: &Expr) -> bool {
 /// vector is not made a free vector by its name; a value that *is* a
 /// linear velocity (a twist's `.v`) stays one (LANGUAGE.md §4).
 pub(super) fn literal_point(name: &str, value: &Expr) -> bool {
-    if crate::check::role::noun(name) != Some("a linear velocity") {
-        return false;
-    }
-    match &value.kind {
+    // The literal first: it is one match, the name's letter a string walk.
+    let literal = match &value.kind {
         ExprKind::Paren(xs) => xs.iter().all(constant),
         ExprKind::Brackets(rows) => {
             rows.iter().all(|r| r.len() == 1 && constant(&r[0]))
                 || rows.len() == 1 && rows[0].len() > 1 && rows[0].iter().all(constant)
         }
         _ => false,
-    }
+    };
+    literal && crate::check::role::noun(name) == Some("a linear velocity")
 }
 
 /// The note on a user function named like a builtin (`trans(n) = n`):

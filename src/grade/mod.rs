@@ -100,11 +100,15 @@ impl Suite {
     /// The asserts of `src` (file `file`), none of them run yet.
     pub fn new(file: &str, src: &str) -> Suite {
         let mut cases = Vec::new();
+        // (lines counted on from the assert before: statements come in
+        // order, so a script of many asserts is read once, not once each)
+        let (mut counted, mut line) = (0, 1);
         for (statement, parsed) in crate::syntax::statements(src).enumerate() {
             let Ok(stmt) = parsed else { continue };
             if let StmtKind::Assert(_) = stmt.kind {
-                let start = stmt.span.start.min(src.len());
-                let line = src[..start].matches('\n').count() + 1;
+                let start = stmt.span.start.min(src.len()).max(counted);
+                line += src[counted..start].matches('\n').count();
+                counted = start;
                 let end = stmt.span.end.min(src.len());
                 let rest = &src[end..];
                 let rest = &rest[..rest.find('\n').unwrap_or(rest.len())];

@@ -196,10 +196,18 @@ pub fn near_half_turn(v: &Value) -> bool {
     let Value::Num { m, exact, .. } = v else {
         return false;
     };
-    if exact.is_float() || !matches!(m.shape(), (3, 3) | (4, 4)) {
+    let n = match m.shape() {
+        (3, 3) => 3,
+        (4, 4) => 4,
+        _ => return false,
+    };
+    if exact.is_float() {
         return false;
     }
-    let f = |i: usize, j: usize| m[(i, j)];
+    // (the entries read from one slice: indexing `m` asks its shape anew
+    // at every entry)
+    let xs = m.as_slice();
+    let f = |i: usize, j: usize| xs[j * n + i];
     let skew = Vec3::new(f(2, 1) - f(1, 2), f(0, 2) - f(2, 0), f(1, 0) - f(0, 1)) * 0.5;
     let cos = 0.5 * (f(0, 0) + f(1, 1) + f(2, 2) - 1.0);
     cos < 0.0 && skew.norm() <= 1e-12
