@@ -37,12 +37,55 @@ impl ArgError {
     }
 }
 
+/// Where each argument of a call stands in the text, for its messages:
+/// held inline for up to four arguments, so that a call allocates nothing
+/// for them (most builtins take one or two).
+#[derive(Debug, Clone, Default)]
+pub struct Spans {
+    len: usize,
+    first: [Span; 4],
+    rest: Vec<Span>,
+}
+
+impl Spans {
+    /// `n` arguments standing at one `span` (a tuple argument spread
+    /// into its parts).
+    pub fn repeat(span: Span, n: usize) -> Spans {
+        std::iter::repeat_n(span, n).collect()
+    }
+
+    /// Where argument `i` stands, if the call has one.
+    pub fn get(&self, i: usize) -> Option<Span> {
+        if i >= self.len {
+            None
+        } else if i < self.first.len() {
+            Some(self.first[i])
+        } else {
+            self.rest.get(i - self.first.len()).copied()
+        }
+    }
+}
+
+impl FromIterator<Span> for Spans {
+    fn from_iter<I: IntoIterator<Item = Span>>(iter: I) -> Spans {
+        let mut spans = Spans::default();
+        for span in iter {
+            match spans.first.get_mut(spans.len) {
+                Some(slot) => *slot = span,
+                None => spans.rest.push(span),
+            }
+            spans.len += 1;
+        }
+        spans
+    }
+}
+
 /// The evaluated arguments of one call.
 pub struct Args<'a> {
     pub name: &'static str,
     pub signature: &'static str,
     pub vals: Vec<Value>,
-    pub spans: Vec<Span>,
+    pub spans: Spans,
     pub call_span: Span,
     pub warnings: &'a mut Vec<Diagnostic>,
     /// Each argument's static kind and frames, and its source text (what
@@ -66,7 +109,7 @@ impl Args<'_> {
     }
 
     fn span(&self, i: usize) -> Span {
-        self.spans.get(i).copied().unwrap_or(self.call_span)
+        self.spans.get(i).unwrap_or(self.call_span)
     }
 
     /// An error of `kind` pointing at argument `i`.

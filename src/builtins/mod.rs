@@ -25,7 +25,7 @@ mod table_units;
 
 use std::sync::OnceLock;
 
-pub use args::{ArgError, Args};
+pub use args::{ArgError, Args, Spans};
 pub use table_calculus::constant_derivative;
 pub use table_sym::{branch_note, branch_of, eval_symbolic};
 

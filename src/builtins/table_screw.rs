@@ -73,7 +73,7 @@ fn eval_screw_to_axis(a: &mut Args) -> Result<Value, Diagnostic> {
         a.warnings.push(
             Diagnostic::warning(
                 ErrorKind::Domain,
-                a.spans.get(1).copied().unwrap_or(a.call_span),
+                a.spans.get(1).unwrap_or(a.call_span),
                 format!(
                     "ŝ = {} is not a unit vector (‖ŝ‖ = {}); normalised to {}",
                     shown(&s),

@@ -104,7 +104,7 @@ pub(crate) fn typed_first(
         Op::Call(b, _) => {
             let exact = op.exact_of(args, kind);
             let site = apply::Site {
-                spans: vec![Default::default(); args.len()],
+                spans: apply::Spans::repeat(Default::default(), args.len()),
                 call_span: Default::default(),
                 typed: Vec::new(),
                 warnings,

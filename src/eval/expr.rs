@@ -545,8 +545,8 @@ impl Interp<'_> {
                 return Ok(Typed::new(refine(ty, &val), val));
             }
         }
-        let spans: Vec<Span> = match args {
-            [one] => vec![one.span; vals.len()],
+        let spans = match args {
+            [one] => apply::Spans::repeat(one.span, vals.len()),
             _ => args.iter().map(|a| a.span).collect(),
         };
         // Only pictures read the arguments' types and source text.

@@ -17,6 +17,7 @@
 use std::f64::consts::PI;
 
 use super::shapes::{block_type, bracket_type, index_type};
+pub use crate::builtins::Spans;
 use crate::builtins::{Args, Builtin, Role};
 use crate::check::rules::{self, Operands, RuleError};
 use crate::check::ty::{Kind, Ty};
@@ -478,7 +479,7 @@ pub fn block_symbolic(rows: impl Iterator<Item = Vec<Sym>>) -> Sym {
 /// Where a builtin call stands, for its messages: the arguments' spans
 /// and source texts, the call's span, and the statement's warnings.
 pub struct Site<'w> {
-    pub spans: Vec<Span>,
+    pub spans: Spans,
     pub call_span: Span,
     pub typed: Vec<(Ty, String)>,
     pub warnings: &'w mut Vec<Diagnostic>,
@@ -514,7 +515,7 @@ pub fn call(b: &Builtin, vals: Vec<Value>, site: Site) -> Result<Value, Diagnost
 pub fn call_nowhere(b: &Builtin, vals: Vec<Value>) -> Result<Value, OpError> {
     let mut warnings = Vec::new();
     let site = Site {
-        spans: Vec::new(),
+        spans: Spans::default(),
         call_span: Span::default(),
         typed: Vec::new(),
         warnings: &mut warnings,
