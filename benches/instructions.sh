@@ -44,5 +44,5 @@ callgrind_annotate --inclusive=yes "$tmp/cg-run-s11000" 2>/dev/null |
     function n(s) { gsub(",", "", s); return s / 11000 }
     !p && index($0, ":chasles::syntax::statements_read::{{closure}} [") { p = n($1) }
     !e && index($0, ":chasles::eval::interp::Interp::stmt [") { e = n($1) }
-    !o && index($0, ":chasles::output::text::show_outcome [") { o = n($1) }
+    !o && index($0, ":chasles::output::text::write_outcome [") { o = n($1) }
     END { printf "per printed statement: parse %d, check and evaluate %d, print %d\n", p, e, o }'

@@ -71,25 +71,34 @@ pub struct Report {
 impl Report {
     /// What goes to stdout: the value text or JSON line (empty if nothing).
     pub fn stdout(&self, settings: &Settings, src: &str) -> String {
-        match (&self.result, settings.json) {
-            (Ok(o), false) => text::show_outcome(o, settings.text_style()),
+        let mut out = String::new();
+        self.write_stdout(&mut out, settings, src);
+        out
+    }
+
+    /// [`Report::stdout`] appended to `out` (a batch run reuses one buffer).
+    pub fn write_stdout(&self, out: &mut String, settings: &Settings, src: &str) {
+        let json = match (&self.result, settings.json) {
+            (Ok(o), false) => return text::write_outcome(out, o, settings.text_style()),
+            (Err(_), false) => return,
             (Ok(o), true) => match json::outcome(o, self.line) {
                 Some(mut j) => {
                     json::add_warnings(&mut j, &self.warnings);
-                    j.to_string()
+                    j
                 }
-                None => json::silent(self.line, &self.warnings)
-                    .map(|j| j.to_string())
-                    .unwrap_or_default(),
+                None => match json::silent(self.line, &self.warnings) {
+                    Some(j) => j,
+                    None => return,
+                },
             },
             (Err(d), true) => {
                 let (line, col) = render::line_col_from(src, d.span.start, self.anchor);
                 let mut j = json::error(d, line, col);
                 json::add_warnings(&mut j, &self.warnings);
-                j.to_string()
+                j
             }
-            (Err(_), false) => String::new(),
-        }
+        };
+        out.push_str(&json.to_string());
     }
 
     /// What goes to stderr: rendered warnings, and the error in text mode.

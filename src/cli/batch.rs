@@ -212,11 +212,14 @@ impl Batch<'_> {
                 return (suite, 1);
             }
         }
+        // One buffer for every statement's printed text.
+        let mut text = String::with_capacity(192);
         errors += session.run(src, self.mode, keep_going, |r| {
             statements += 1;
             // `check` prints only errors and its summary (or JSON lines).
             if self.mode == Mode::Run || settings.json {
-                let text = r.stdout(&settings, src);
+                text.clear();
+                r.write_stdout(&mut text, &settings, src);
                 if !text.is_empty() {
                     if self.file_key {
                         emit(out, &with_file(&text, name));

@@ -211,8 +211,14 @@ impl Interp<'_> {
         if !self.running() {
             return Ok(Typed::new(ty, None));
         }
+        let numbers = matches!(t.val.as_deref(), Some(Value::Num { .. }));
         let rows = [vec![t.val.map_or_else(|| Value::scalar(f64::NAN), |v| *v)]];
-        let v = apply::block(&rows).unwrap_or_else(|| apply::block_numeric(&rows));
+        // (numbers, `[S]` of a screw axis: no formula or symbol to look for)
+        let v = if numbers {
+            apply::block_numeric(&rows)
+        } else {
+            apply::block(&rows).unwrap_or_else(|| apply::block_numeric(&rows))
+        };
         let val = Some(v.map_err(|m| op.failure(m, span))?);
         Ok(Typed::new(refine(ty, &val), val))
     }

@@ -391,21 +391,28 @@ fn write_label(out: &mut String, ty: &Ty, v: &Value, style: Style) {
 
 /// The text printed for a statement's outcome (empty when it prints nothing).
 pub fn show_outcome(o: &Outcome, style: impl Into<Style>) -> String {
-    let style = style.into();
-    if !o.prints {
-        return String::new();
-    }
-    // `explain`: the steps, the last of which is the value (§14).
-    if let Some(steps) = o.steps.as_deref() {
-        return if style.sym == crate::sym::print::Mode::Latex {
-            super::steps::latex(steps, style)
-        } else {
-            super::steps::text(steps, style)
-        };
-    }
     // Room for a 4×4 matrix with its name and label, so printing one
     // rarely grows the string.
     let mut out = String::with_capacity(192);
+    write_outcome(&mut out, o, style.into());
+    out
+}
+
+/// [`show_outcome`] appended to `out` (a batch run reuses one buffer for
+/// every statement: no string made and freed per statement).
+pub fn write_outcome(out: &mut String, o: &Outcome, style: Style) {
+    if !o.prints {
+        return;
+    }
+    // `explain`: the steps, the last of which is the value (§14).
+    if let Some(steps) = o.steps.as_deref() {
+        out.push_str(&if style.sym == crate::sym::print::Mode::Latex {
+            super::steps::latex(steps, style)
+        } else {
+            super::steps::text(steps, style)
+        });
+        return;
+    }
     if let Some(note) = &o.note {
         out.push_str(note);
         out.push('\n');
@@ -419,7 +426,7 @@ pub fn show_outcome(o: &Outcome, style: impl Into<Style>) -> String {
         } else {
             format!("{names} : {label}")
         });
-        return out;
+        return;
     };
     match (o.names.len(), v) {
         (0, Value::Tuple(items)) => {
@@ -439,19 +446,19 @@ pub fn show_outcome(o: &Outcome, style: impl Into<Style>) -> String {
                 .collect();
             out.push_str(&parts.join("\n"));
         }
-        (0, _) => write_value(&mut out, "", &o.ty, v, style),
+        (0, _) => write_value(out, "", &o.ty, v, style),
         (1, Value::Num { .. }) => {
             // `T_ab = ` written in place (no prefix string).
             let name = &o.names[0];
             out.push_str(name);
             out.push_str(" = ");
-            write_number(&mut out, width(name) + 3, &o.ty, v, style);
+            write_number(out, width(name) + 3, &o.ty, v, style);
         }
         (1, _) => {
             let mut prefix = String::with_capacity(o.names[0].len() + 3);
             prefix.push_str(&o.names[0]);
             prefix.push_str(" = ");
-            write_value(&mut out, &prefix, &o.ty, v, style);
+            write_value(out, &prefix, &o.ty, v, style);
         }
         (_, Value::Tuple(items)) => {
             let parts: Vec<String> = o
@@ -470,9 +477,8 @@ pub fn show_outcome(o: &Outcome, style: impl Into<Style>) -> String {
                 .collect();
             out.push_str(&parts.join("\n"));
         }
-        _ => write_value(&mut out, "", &o.ty, v, style),
+        _ => write_value(out, "", &o.ty, v, style),
     }
-    out
 }
 
 #[cfg(test)]
