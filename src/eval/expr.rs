@@ -233,9 +233,9 @@ impl Interp<'_> {
             let v = self.relied_read(name.as_str(), v, span, &mut warnings);
             // (a value made from symbols that has become numbers is typed
             // by what it is now, as typed first: `rpy` gives a vector)
-            let ty = match (&b.val, &v) {
-                (Some(old), Some(_)) if crate::values::recipe::holds_symbols(old) => {
-                    refine(b.ty, &v)
+            let ty = match (&b.val, v.as_deref()) {
+                (Some(old), Some(now)) if crate::values::recipe::holds_symbols(old) => {
+                    super::interp::refine_by(b.ty, Some(now))
                 }
                 _ => b.ty,
             };
@@ -253,7 +253,7 @@ impl Interp<'_> {
                 // (the numbers of given symbols it holds, super::hold)
                 super::hold::note_read(self.env, name);
             }
-            return Ok(Typed::new(ty, v));
+            return Ok(Typed { ty, val: v });
         }
         let name = name.as_str();
         if let Some(d) = self.derivative_symbol(name) {

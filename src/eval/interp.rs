@@ -59,6 +59,12 @@ pub struct Interp<'a> {
 /// is SO(3)); frames stay as the checker found them.
 #[inline]
 pub(super) fn refine(ty: Ty, val: &Option<Value>) -> Ty {
+    refine_by(ty, val.as_ref())
+}
+
+/// [`refine`] by a value held elsewhere (a boxed result).
+#[inline]
+pub(super) fn refine_by(ty: Ty, val: Option<&Value>) -> Ty {
     match val {
         Some(v @ (Value::Num { .. } | Value::Tuple(_) | Value::Formula { .. })) => {
             let kind = v.kind();

@@ -69,13 +69,14 @@ impl Interp<'_> {
         v: Option<Value>,
         span: Span,
         warnings: &mut Vec<Diagnostic>,
-    ) -> Option<Value> {
+    ) -> Option<Box<Value>> {
         if !self.env.relied.is_empty() {
             warnings.extend(self.broken_assumptions(name, span));
         }
+        // (boxed here, as the result holds it: not moved on by value)
         match v.as_ref().and_then(|x| self.decided_now(x)) {
-            Some(b) => Some(b),
-            None => v,
+            Some(b) => Some(Box::new(b)),
+            None => v.map(Box::new),
         }
     }
 
