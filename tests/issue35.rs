@@ -244,3 +244,42 @@ fn the_inverse_of_an_adjoint_is_the_adjoint_of_the_inverse() {
         assert!(err.contains("cannot decide"), "{src}: {err}");
     }
 }
+
+#[test]
+fn an_se3_builtin_refuses_a_symbolic_4x4_not_known_to_be_a_transform() {
+    // [2 R, p; 0, 1] is no transform: Ad of it is a domain error once
+    // numbers are bound, so over symbols it is refused too (naming why and
+    // the fix), and `inv(Ad(M)) == Ad(inv(M))` never reaches a `true`
+    let pre = "given R : SO3\ngiven p : vec3\nM = [2*R, p; 0, 1]\n";
+    for call in [
+        "Ad(M)",
+        "inv(Ad(M)) == Ad(inv(M))",
+        "Ad(M) Ad(inv(M))",
+        "TransInv(M)",
+        "TransToRp(M)",
+        "MatrixLog6(M)",
+        "f(X) = Ad(X)\nf(M)",
+    ] {
+        let err = common::error(&format!("{pre}{call}"));
+        assert!(!err.contains("true"), "{call}: {err}");
+        assert!(err.contains("not known to be a rotation"), "{call}: {err}");
+        assert!(err.contains("given T : SE3"), "{call}: {err}");
+    }
+    // the same with symbolic entries, decided from the entries themselves
+    let g = "given a\nG = [2*Rotz(a), (1, 2, 3); 0, 0, 0, 1]\nAd(G)";
+    assert!(common::error(g).contains("not known to be a rotation"));
+    // a transform stated or built from a rotation keeps the rule
+    let n = "given R : SO3\ngiven p : vec3\nN = [R, p; 0, 1]\n";
+    assert_eq!(last(&format!("{n}inv(Ad(N)) == Ad(inv(N))")), "true");
+    assert_eq!(
+        last("given a\nF = [Rotz(a), (1, 2, 3); 0, 0, 0, 1]\nAd(F) Ad(inv(F)) == eye(6)"),
+        "true"
+    );
+    // and numbers bound later agree with it
+    assert_eq!(
+        last(&format!(
+            "{n}d = inv(Ad(N)) == Ad(inv(N))\nR = Rotz(1)\np = (1, 2, 3)\nd"
+        )),
+        "true"
+    );
+}
