@@ -283,3 +283,41 @@ fn an_se3_builtin_refuses_a_symbolic_4x4_not_known_to_be_a_transform() {
         "true"
     );
 }
+
+#[test]
+fn an_angle_with_an_irrational_coefficient_is_an_angle_of_its_own() {
+    // sin(√6 x), sin(2√6 x), cos(π x): each a multiple of one fresh angle,
+    // so the Pythagorean identity and angle sums hold there too
+    for src in [
+        "given x\nsin(sqrt(6)*x)^2 + cos(sqrt(6)*x)^2 == 1",
+        "given x\nsin(2*sqrt(6)*x) == 2*sin(sqrt(6)*x)*cos(sqrt(6)*x)",
+        "given x\nsin(pi*x)^2 + cos(pi*x)^2 == 1",
+        "given x\ngiven y\nsin(sqrt(2)*x + y) == sin(sqrt(2)*x)*cos(y) + cos(sqrt(2)*x)*sin(y)",
+        // Exercise 3.33's closed forms: eigenvalues 1 ± √6 i, and |ω| = √14
+        "given t\ndet(exp([1,-2;3,1] t)) == exp(2*t)",
+        "given t\nB = [1,-2;3,1]\nexp(B t) exp(-B t) == eye(2)",
+        "given x\nE = exp([(1,2,3)] x)\nE E.T == eye(3)",
+    ] {
+        assert_eq!(last(src), "true", "{src}");
+    }
+    // never a wrong `true`: these are no identities
+    for src in [
+        "given x\nsin(sqrt(6)*x) == sin(sqrt(3)*x)",
+        "given x\nsin(sqrt(6)*x)^2 + cos(sqrt(6)*x)^2 == 2",
+        "given x\nsin(2*sqrt(6)*x) == sin(sqrt(6)*x)",
+        "given x\ncos(pi*x) == cos(x)",
+        "given x\ngiven y\nsin(sqrt(2)*x + y) == sin(sqrt(2)*x) + sin(y)",
+    ] {
+        let (out, err) = outputs(src);
+        assert!(!out.contains("true"), "{src}: {out}");
+        assert!(
+            out.contains("false") || err.contains("cannot decide"),
+            "{src}: {out} {err}"
+        );
+    }
+    // numbers bound later agree with numbers given first
+    let later = "given x\nd = sin(sqrt(6)*x)^2 + cos(sqrt(6)*x)^2 == 1\nx = 0.7\nd";
+    let first = "x = 0.7\nsin(sqrt(6)*x)^2 + cos(sqrt(6)*x)^2 == 1";
+    assert_eq!(last(later), last(first));
+    assert_eq!(last(first), "true");
+}
