@@ -192,10 +192,10 @@ fn product(a: &Sym, b: &Sym) -> Option<Sym> {
 /// a symbolic argument that is not known to be a transform: a 4×4 whose
 /// top-left block is not known to be a rotation (`[2 R, p; 0, 1]`), where
 /// numbers bound later would be a domain error. Given the call's name as
-/// typed, its arguments and their checked kinds (a formula's own kind,
-/// decided from its entries, counts too): the argument's index and the message, or
-/// None when every such argument is a transform, a number (checked when
-/// the call runs), or not a 4×4.
+/// typed, its arguments and their checked kinds: the argument's index
+/// and the message, or None when every such argument is a transform, a
+/// number or a formula (checked when the call runs, or when its numbers
+/// are bound), or not a 4×4.
 fn unproven_transform(
     b: &crate::builtins::Builtin,
     called: &str,
@@ -211,11 +211,11 @@ fn unproven_transform(
     };
     let four = |k: &Kind| matches!(k, Kind::Matrix(Some(4), Some(4)));
     vals.iter().zip(kinds).enumerate().find_map(|(i, (v, k))| {
-        let unproven = match v {
-            Value::Sym(_) => four(k),
-            Value::Formula { .. } => four(&v.kind()),
-            _ => false,
-        };
+        // (a formula, numbers with symbols among them, waits for them: its
+        // kind is decided from its entries, and its Ad is the arithmetic
+        // of Definition 3.6 on them, trusting nothing; with numbers bound
+        // later the call is checked as if typed first)
+        let unproven = matches!(v, Value::Sym(_)) && four(k);
         (wants(i) && unproven).then(|| {
             (
                 i,
@@ -228,7 +228,7 @@ fn unproven_transform(
     })
 }
 
-/// [`unproven_transform`] as the call's domain error, at the argument
+/// `unproven_transform` (above) as the call's domain error, at the argument
 /// (`args`, the call's typed arguments with `tys` their checked types;
 /// `span` the call's), with the fix as help: state the transform, or
 /// build it from a rotation (§3.3.1, (3.62)).
