@@ -274,6 +274,11 @@ fn an_se3_builtin_refuses_a_symbolic_4x4_not_known_to_be_a_transform() {
         common::printed(g)
     );
     assert!(common::printed(&format!("{pre}M.R")).contains("2 R  : 3×3 matrix"));
+    // and its Ad is Definition 3.6's arithmetic, no rule that trusts it
+    let g = "given a\nG = [2*Rotz(a), (1, 2, 3); 0, 0, 0, 1]\n";
+    assert_eq!(last(&format!("{g}Ad(G) Ad(inv(G)) == eye(6)")), "false");
+    let (out, _) = outputs(&format!("{g}inv(Ad(G)) == Ad(inv(G))"));
+    assert!(!out.ends_with("true\n"), "{out}");
     let t2 = format!("{pre}T2 = [M.R, p; 0, 1]\nAd(T2)");
     assert!(common::error(&t2).contains("not known to be a rotation"));
     // a transform stated or built from a rotation keeps the rule
