@@ -244,3 +244,93 @@ fn the_inverse_of_an_adjoint_is_the_adjoint_of_the_inverse() {
         assert!(err.contains("cannot decide"), "{src}: {err}");
     }
 }
+
+#[test]
+fn an_se3_builtin_refuses_a_symbolic_4x4_not_known_to_be_a_transform() {
+    // [2 R, p; 0, 1] is no transform: Ad of it is a domain error once
+    // numbers are bound, so over symbols it is refused too (naming why and
+    // the fix), and `inv(Ad(M)) == Ad(inv(M))` never reaches a `true`
+    let pre = "given R : SO3\ngiven p : vec3\nM = [2*R, p; 0, 1]\n";
+    for call in [
+        "Ad(M)",
+        "inv(Ad(M)) == Ad(inv(M))",
+        "Ad(M) Ad(inv(M))",
+        "TransInv(M)",
+        "TransToRp(M)",
+        "MatrixLog6(M)",
+        "f(X) = Ad(X)\nf(M)",
+    ] {
+        let err = common::error(&format!("{pre}{call}"));
+        assert!(!err.contains("true"), "{call}: {err}");
+        assert!(err.contains("not known to be a rotation"), "{call}: {err}");
+        assert!(err.contains("given T : SE3"), "{call}: {err}");
+    }
+    // numbers with a symbol among them wait for it (bound later as typed
+    // first), and the part of a 4×4 that is no transform is no rotation
+    let g = "given a\nG = [2*Rotz(a), (1, 2, 3); 0, 0, 0, 1]\nG.R";
+    assert!(
+        common::printed(g).ends_with(": 3×3 matrix\n"),
+        "{}",
+        common::printed(g)
+    );
+    assert!(common::printed(&format!("{pre}M.R")).contains("2 R  : 3×3 matrix"));
+    // and its Ad is Definition 3.6's arithmetic, no rule that trusts it
+    let g = "given a\nG = [2*Rotz(a), (1, 2, 3); 0, 0, 0, 1]\n";
+    assert_eq!(last(&format!("{g}Ad(G) Ad(inv(G)) == eye(6)")), "false");
+    let (out, _) = outputs(&format!("{g}inv(Ad(G)) == Ad(inv(G))"));
+    assert!(!out.ends_with("true\n"), "{out}");
+    let t2 = format!("{pre}T2 = [M.R, p; 0, 1]\nAd(T2)");
+    assert!(common::error(&t2).contains("not known to be a rotation"));
+    // a transform stated or built from a rotation keeps the rule
+    let n = "given R : SO3\ngiven p : vec3\nN = [R, p; 0, 1]\n";
+    assert_eq!(last(&format!("{n}inv(Ad(N)) == Ad(inv(N))")), "true");
+    assert_eq!(
+        last("given a\nF = [Rotz(a), (1, 2, 3); 0, 0, 0, 1]\nAd(F) Ad(inv(F)) == eye(6)"),
+        "true"
+    );
+    // and numbers bound later agree with it
+    assert_eq!(
+        last(&format!(
+            "{n}d = inv(Ad(N)) == Ad(inv(N))\nR = Rotz(1)\np = (1, 2, 3)\nd"
+        )),
+        "true"
+    );
+}
+
+#[test]
+fn an_angle_with_an_irrational_coefficient_is_an_angle_of_its_own() {
+    // sin(√6 x), sin(2√6 x), cos(π x): each a multiple of one fresh angle,
+    // so the Pythagorean identity and angle sums hold there too
+    for src in [
+        "given x\nsin(sqrt(6)*x)^2 + cos(sqrt(6)*x)^2 == 1",
+        "given x\nsin(2*sqrt(6)*x) == 2*sin(sqrt(6)*x)*cos(sqrt(6)*x)",
+        "given x\nsin(pi*x)^2 + cos(pi*x)^2 == 1",
+        "given x\ngiven y\nsin(sqrt(2)*x + y) == sin(sqrt(2)*x)*cos(y) + cos(sqrt(2)*x)*sin(y)",
+        // Exercise 3.33's closed forms: eigenvalues 1 ± √6 i, and |ω| = √14
+        "given t\ndet(exp([1,-2;3,1] t)) == exp(2*t)",
+        "given t\nB = [1,-2;3,1]\nexp(B t) exp(-B t) == eye(2)",
+        "given x\nE = exp([(1,2,3)] x)\nE E.T == eye(3)",
+    ] {
+        assert_eq!(last(src), "true", "{src}");
+    }
+    // never a wrong `true`: these are no identities
+    for src in [
+        "given x\nsin(sqrt(6)*x) == sin(sqrt(3)*x)",
+        "given x\nsin(sqrt(6)*x)^2 + cos(sqrt(6)*x)^2 == 2",
+        "given x\nsin(2*sqrt(6)*x) == sin(sqrt(6)*x)",
+        "given x\ncos(pi*x) == cos(x)",
+        "given x\ngiven y\nsin(sqrt(2)*x + y) == sin(sqrt(2)*x) + sin(y)",
+    ] {
+        let (out, err) = outputs(src);
+        assert!(!out.contains("true"), "{src}: {out}");
+        assert!(
+            out.contains("false") || err.contains("cannot decide"),
+            "{src}: {out} {err}"
+        );
+    }
+    // numbers bound later agree with numbers given first
+    let later = "given x\nd = sin(sqrt(6)*x)^2 + cos(sqrt(6)*x)^2 == 1\nx = 0.7\nd";
+    let first = "x = 0.7\nsin(sqrt(6)*x)^2 + cos(sqrt(6)*x)^2 == 1";
+    assert_eq!(last(later), last(first));
+    assert_eq!(last(first), "true");
+}

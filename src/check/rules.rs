@@ -276,7 +276,11 @@ pub fn member(t: &Ty, name: &str) -> Result<Ty, RuleError> {
     let is6 = |k: &Kind| matches!(k, Twist | Screw | Wrench | Unknown) || k.vec_len() == Some(6);
     match (name, &t.kind) {
         ("T", _) => transpose(t),
-        ("R", SE3 | Matrix(Some(4), Some(4))) => Ok(Ty::new(SO3, t.frames)),
+        ("R", SE3) => Ok(Ty::new(SO3, t.frames)),
+        // (of a 4×4 not known to be a transform, a 3×3 block: a symbolic
+        // `[2 R, p; 0, 1].R` is no rotation; numbers say theirs, SO(3)
+        // when they are one)
+        ("R", Matrix(Some(4), Some(4))) => Ok(Ty::new(Matrix(Some(3), Some(3)), t.frames)),
         ("R", Matrix(None, _) | Matrix(_, None)) => Ok(Ty::new(Unknown, t.frames)),
         ("p", Matrix(Some(4), Some(4))) => Ok(Ty::new(v3, outer())),
         ("p", Matrix(None, _) | Matrix(_, None)) => Ok(Ty::new(Unknown, outer())),

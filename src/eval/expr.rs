@@ -525,6 +525,7 @@ impl Interp<'_> {
             return Ok(Typed::new(ty, val));
         }
         super::list::numbers_only(b, &vals, span)?;
+        crate::seam::transform::known(b, name, &vals, &self.env.arg_tys[base..], args, span)?;
         if vals
             .iter()
             .any(|v| matches!(v, Value::Sym(_) | Value::Formula { .. }))

@@ -186,3 +186,69 @@ fn product(a: &Sym, b: &Sym) -> Option<Sym> {
     }
     Some(Sym::Block(vec![vec![r, p], last.clone()]))
 }
+
+/// Why a builtin defined on SE(3) only (`Ad`, `TransInv`, `MatrixLog6`,
+/// `TransToRp`, `displacement`: Definition 3.6, (3.64), §3.3.3.2) refuses
+/// a symbolic argument that is not known to be a transform: a 4×4 whose
+/// top-left block is not known to be a rotation (`[2 R, p; 0, 1]`), where
+/// numbers bound later would be a domain error. Given the call's name as
+/// typed, its arguments and their checked kinds: the argument's index
+/// and the message, or None when every such argument is a transform, a
+/// number or a formula (checked when the call runs, or when its numbers
+/// are bound), or not a 4×4.
+fn unproven_transform(
+    b: &crate::builtins::Builtin,
+    called: &str,
+    vals: &[Value],
+    kinds: &[Kind],
+) -> Option<(usize, String)> {
+    use crate::builtins::{Param, Typing};
+    let wants = |i: usize| match (&b.typing, b.name) {
+        (Typing::Fixed { params, .. }, _) => params.get(i) == Some(&Param::Trans),
+        (_, "TransToRp") => i == 0,
+        (_, "displacement") => true,
+        _ => false,
+    };
+    let four = |k: &Kind| matches!(k, Kind::Matrix(Some(4), Some(4)));
+    vals.iter().zip(kinds).enumerate().find_map(|(i, (v, k))| {
+        // (a formula, numbers with symbols among them, waits for them: its
+        // kind is decided from its entries, and its Ad is the arithmetic
+        // of Definition 3.6 on them, trusting nothing; with numbers bound
+        // later the call is checked as if typed first)
+        let unproven = matches!(v, Value::Sym(_)) && four(k);
+        (wants(i) && unproven).then(|| {
+            (
+                i,
+                format!(
+                    "{} takes a transform in SE(3), and this 4×4 matrix is not known to be one: its top-left block is not known to be a rotation",
+                    called
+                ),
+            )
+        })
+    })
+}
+
+/// `unproven_transform` (above) as the call's domain error, at the argument
+/// (`args`, the call's typed arguments with `tys` their checked types;
+/// `span` the call's), with the fix as help: state the transform, or
+/// build it from a rotation (§3.3.1, (3.62)).
+pub fn known(
+    b: &crate::builtins::Builtin,
+    called: &str,
+    vals: &[Value],
+    tys: &[crate::check::ty::Ty],
+    args: &[crate::syntax::ast::Expr],
+    span: crate::syntax::ast::Span,
+) -> Result<(), crate::diagnostics::Diagnostic> {
+    use crate::diagnostics::{Diagnostic, ErrorKind};
+    let kinds: Vec<Kind> = tys.iter().map(|t| t.kind).collect();
+    match unproven_transform(b, called, vals, &kinds) {
+        None => Ok(()),
+        Some((i, message)) => {
+            let at = args.get(i).map_or(span, |a| a.span);
+            Err(Diagnostic::error(ErrorKind::Domain, at, message).with_help(
+                "state that it is one: `given T : SE3`, or build it as the block `[R, p; 0, 1]` with `given R : SO3` and `given p : vec3`",
+            ))
+        }
+    }
+}

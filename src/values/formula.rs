@@ -313,7 +313,9 @@ pub fn member(v: &Value, name: &str) -> Result<Value, String> {
     let col = |r: std::ops::Range<usize>| make(&Kind::Vector(Some(3)), m.block(r, 0..1));
     match (name, m.rows, m.cols) {
         ("T", _, _) => Ok(make(&transposed_kind(&k), m.transpose())),
-        ("R", 4, 4) => Ok(make(&Kind::SO3, m.block(0..3, 0..3))),
+        // (a rotation only when the 4×4 is a transform, (3.62))
+        ("R", 4, 4) if k == Kind::SE3 => Ok(make(&Kind::SO3, m.block(0..3, 0..3))),
+        ("R", 4, 4) => Ok(make(&Kind::Matrix(Some(3), Some(3)), m.block(0..3, 0..3))),
         ("p", 4, 4) => Ok(make(&Kind::Vector(Some(3)), m.block(0..3, 3..4))),
         ("w" | "m", 6, 1) => Ok(col(0..3)),
         ("v" | "f", 6, 1) => Ok(col(3..6)),

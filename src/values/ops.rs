@@ -366,8 +366,13 @@ pub fn member(v: &Value, name: &'static str) -> Result<Value, OpError> {
         exact: Default::default(),
     };
     match (name, m) {
+        // (a rotation only when the 4×4 is a transform, (3.62))
         ("R", Num::M4(t)) => Ok(Value::Num {
-            kind: Kind::SO3,
+            kind: if *k == Kind::SE3 {
+                Kind::SO3
+            } else {
+                Kind::Matrix(Some(3), Some(3))
+            },
             m: Num::M3(t.fixed_view::<3, 3>(0, 0).into_owned()),
             exact: Default::default(),
         }),
