@@ -62,30 +62,105 @@ fn shareable(v: &Var, e: i32) -> bool {
     e > 0 && !matches!(v, Var::Call(c) if c.f == Func::Recip)
 }
 
-/// The signed terms of `items` collected, each with its place in print
-/// order (that of its first term).
-pub(super) fn collect(items: Vec<Item>, st: Style) -> Vec<(usize, (bool, String))> {
+/// A sum as it prints: terms, and groups of terms with what they share
+/// taken out. Decided once on the plain text ([`measure`]), so that the
+/// text, the shorthand and LaTeX print one shape.
+#[derive(Debug, Clone)]
+pub(super) enum Node {
+    Term(Item),
+    /// `k poly (inner) trig`, in the place of its first term.
+    Group {
+        first: usize,
+        k: Coef,
+        poly: Mono,
+        trig: Vec<Trig>,
+        inner: Inner,
+    },
+    /// `(a-sum) (b-sum)`: a sum over the symbols times a sum over the
+    /// angles ([`super::bilinear`]), in the place of its first term.
+    Product {
+        first: usize,
+        left: Vec<Node>,
+        right: Real,
+    },
+}
+
+/// A group's inner sum: collected, or with trigonometric factors taken
+/// out alone ([`super::factor`]).
+#[derive(Debug, Clone)]
+pub(super) enum Inner {
+    Nodes(Vec<Node>),
+    ByTrig(Real),
+}
+
+impl Node {
+    pub(super) fn first(&self) -> usize {
+        match self {
+            Node::Term(x) => x.0,
+            Node::Group { first, .. } | Node::Product { first, .. } => *first,
+        }
+    }
+}
+
+/// The plain text every shape is decided on.
+pub(super) const PLAIN: Style = Style {
+    mode: Mode::Text,
+    digits: 4,
+};
+
+/// What a printed sum costs: its factors (each variable power,
+/// trigonometric factor and coefficient other than 1 — a group's shared
+/// factors once), then its columns. The book's shape has the fewest
+/// factors: `w[1] w[2] (1 - cos(θ))` has 4 where its expansion has 5.
+pub(super) fn measure(ts: &[(bool, String)]) -> (usize, usize) {
+    let text = join(ts, usize::MAX, 0);
+    let mut atoms = 0;
+    let mut word = false;
+    let mut call_depth = 0usize;
+    let mut prev = ' ';
+    for ch in text.chars() {
+        if call_depth > 0 {
+            match ch {
+                '(' => call_depth += 1,
+                ')' => call_depth -= 1,
+                _ => {}
+            }
+        } else if ch == '(' && (prev.is_alphanumeric() || prev == '/') {
+            // a call's argument (`cos(t1 + t2)`, `1/(…)`) is part of its word
+            call_depth = 1;
+        } else if matches!(ch, ' ' | '(' | ')') {
+            word = false;
+        } else if !word && !matches!(ch, '+' | '-') {
+            word = true;
+            atoms += 1;
+        }
+        prev = ch;
+    }
+    (atoms, text_width(&text))
+}
+
+/// The terms of `items` collected: the shape, each node in the place of
+/// its first term.
+pub(super) fn collect(items: Vec<Item>) -> Vec<Node> {
     if items.len() >= 2 {
         let (poly, trig, k) = common(&items);
         if !poly.is_empty() || !trig.is_empty() || !k.is_one() {
-            let first = items.iter().map(|x| x.0).min().unwrap_or(0);
-            return vec![(first, grouped(items, &poly, &trig, &k, st))];
+            return vec![grouped(items, poly, trig, k)];
         }
     }
     let mut left = items;
     let mut tried: Vec<Fac> = Vec::new();
-    let mut out: Vec<(usize, (bool, String))> = Vec::new();
+    let mut out: Vec<Node> = Vec::new();
     while let Some(f) = most_shared(&left, &tried) {
         let (shared, rest): (Vec<Item>, Vec<Item>) = left.into_iter().partition(|x| has(x, &f));
         let flat: Vec<(bool, String)> = shared
             .iter()
-            .map(|(_, poly, trig, c)| term(c, poly, trig, st))
+            .map(|(_, poly, trig, c)| term(c, poly, trig, PLAIN))
             .collect();
         let (poly, trig, k) = common(&shared);
-        let first = shared.iter().map(|x| x.0).min().unwrap_or(0);
-        let g = grouped(shared.clone(), &poly, &trig, &k, st);
-        if width(std::slice::from_ref(&g)) < width(&flat) {
-            out.push((first, g));
+        let g = grouped(shared.clone(), poly, trig, k);
+        if measure(&[render(&g, PLAIN)]) < measure(&flat) {
+            out.push(g);
             left = rest;
         } else {
             tried.push(f);
@@ -93,16 +168,106 @@ pub(super) fn collect(items: Vec<Item>, st: Style) -> Vec<(usize, (bool, String)
             left.sort_by_key(|x| x.0);
         }
     }
-    for (i, poly, trig, c) in left {
-        out.push((i, term(&c, &poly, &trig, st)));
-    }
-    out.sort_by_key(|(i, _)| *i);
+    out.extend(left.into_iter().map(Node::Term));
+    out.sort_by_key(Node::first);
     out
 }
 
-/// Columns of signed terms on one line.
-pub(super) fn width(ts: &[(bool, String)]) -> usize {
-    text_width(&join(ts, usize::MAX, 0))
+/// The signed terms of a shape in the style `st`.
+pub(super) fn render_all(nodes: &[Node], st: Style) -> Vec<(bool, String)> {
+    nodes.iter().map(|n| render(n, st)).collect()
+}
+
+fn render_inner(inner: &Inner, st: Style) -> Vec<(bool, String)> {
+    match inner {
+        Inner::Nodes(nodes) => render_all(nodes, st),
+        Inner::ByTrig(real) => super::factor::factored(real, st),
+    }
+}
+
+/// One node's sign and text: a group's sign is its inner sum's first.
+fn render(node: &Node, st: Style) -> (bool, String) {
+    let (k, poly, trig, inner) = match node {
+        Node::Term((_, poly, trig, c)) => return term(c, poly, trig, st),
+        Node::Product { left, right, .. } => return product(left, right, st),
+        Node::Group {
+            k,
+            poly,
+            trig,
+            inner,
+            ..
+        } => (k, poly, trig, inner),
+    };
+    let mut sum = render_inner(inner, st);
+    let neg = sum.first().is_some_and(|t| t.0);
+    if neg {
+        sum.iter_mut().for_each(|t| t.0 = !t.0);
+    }
+    let latex = st.mode == Mode::Latex;
+    let body = join(&sum, usize::MAX, 0);
+    let mut parts: Vec<String> = Vec::new();
+    if !poly.is_empty() || !k.is_one() {
+        let (_, front) = term(k, poly, &[], st);
+        let wrap = !latex && poly.is_empty() && front.contains(['/', ' ']);
+        parts.push(if wrap { format!("({front})") } else { front });
+    }
+    parts.push(if sum.len() == 1 {
+        // (one term left: the shared factors were all it had)
+        body
+    } else if latex {
+        format!("\\left({body}\\right)")
+    } else {
+        format!("({body})")
+    });
+    for (a, s, e) in trig {
+        parts.push(trig_factor(a, if *s { "sin" } else { "cos" }, *e, st));
+    }
+    (neg, parts.join(" "))
+}
+
+/// `(a) (b)`, each side's sign in front, a side of one term without
+/// parentheses, a side that is 1 left out; under a negative sign, the
+/// symbol side turned where it has a negative term, else the angle side
+/// (`S[1] (…) (t - sin(t))`, not `-S[1] (…) (sin(t) - t)`).
+fn product(left: &[Node], right: &Real, st: Style) -> (bool, String) {
+    let mut a = render_all(left, st);
+    let mut b = super::factor::factored(right, st);
+    let mut neg = false;
+    for side in [&mut a, &mut b] {
+        if side.first().is_some_and(|t| t.0) {
+            side.iter_mut().for_each(|t| t.0 = !t.0);
+            neg = !neg;
+        }
+    }
+    // under a negative sign, a side that has a negative term turns:
+    // (S[3] S[4] - S[1] S[6]) (1 - cos(t)), not -(S[1] S[6] - S[3] S[4]) (…)
+    if neg && let Some(j) = a.iter().position(|t| t.0) {
+        a.iter_mut().for_each(|t| t.0 = !t.0);
+        let t = a.remove(j);
+        a.insert(0, t);
+        neg = false;
+    }
+    if neg && let Some(j) = b.iter().position(|t| t.0) {
+        b.iter_mut().for_each(|t| t.0 = !t.0);
+        let t = b.remove(j);
+        b.insert(0, t);
+        neg = false;
+    }
+    let latex = st.mode == Mode::Latex;
+    let side = |ts: &[(bool, String)]| -> Option<String> {
+        let body = join(ts, usize::MAX, 0);
+        match ts.len() {
+            1 if body == "1" => None,
+            1 => Some(body),
+            _ if latex => Some(format!("\\left({body}\\right)")),
+            _ => Some(format!("({body})")),
+        }
+    };
+    let parts: Vec<String> = [side(&a), side(&b)].into_iter().flatten().collect();
+    if parts.is_empty() {
+        return (neg, "1".into());
+    }
+    (neg, parts.join(" "))
 }
 
 fn has(x: &Item, f: &Fac) -> bool {
@@ -200,9 +365,10 @@ fn gcd(mut a: i64, mut b: i64) -> i64 {
 }
 
 /// The group `k poly (inner) trig`: the terms divided by what they share,
-/// collected in turn (or with trigonometric factors taken out alone,
-/// [`super::factor`], where that is shorter), their sign in front.
-fn grouped(items: Vec<Item>, poly: &Mono, trig: &[Trig], k: &Coef, st: Style) -> (bool, String) {
+/// collected in turn (or with trigonometric factors taken out alone where
+/// that costs less).
+fn grouped(items: Vec<Item>, poly: Mono, trig: Vec<Trig>, k: Coef) -> Node {
+    let first = items.iter().map(|x| x.0).min().unwrap_or(0);
     let inv = k.inv().unwrap_or_else(Coef::one);
     let inner: Vec<Item> = items
         .into_iter()
@@ -227,48 +393,30 @@ fn grouped(items: Vec<Item>, poly: &Mono, trig: &[Trig], k: &Coef, st: Style) ->
             (i, p, t, c.mul(&inv))
         })
         .collect();
-    let mut sum = inner_terms(inner, st);
-    let neg = sum.first().is_some_and(|t| t.0);
-    if neg {
-        sum.iter_mut().for_each(|t| t.0 = !t.0);
+    Node::Group {
+        first,
+        k,
+        poly,
+        trig,
+        inner: inner_shape(inner),
     }
-    let latex = st.mode == Mode::Latex;
-    let body = join(&sum, usize::MAX, 0);
-    let mut parts: Vec<String> = Vec::new();
-    if !poly.is_empty() || !k.is_one() {
-        let (_, front) = term(k, poly, &[], st);
-        let wrap = !latex && poly.is_empty() && front.contains(['/', ' ']);
-        parts.push(if wrap { format!("({front})") } else { front });
-    }
-    parts.push(if sum.len() == 1 {
-        // (one term left: the shared factors were all it had)
-        body
-    } else if latex {
-        format!("\\left({body}\\right)")
-    } else {
-        format!("({body})")
-    });
-    for (a, s, e) in trig {
-        parts.push(trig_factor(a, if *s { "sin" } else { "cos" }, *e, st));
-    }
-    (neg, parts.join(" "))
 }
 
 /// A group's inner sum: collected, or with trigonometric factors taken
-/// out alone where that prints shorter.
-fn inner_terms(inner: Vec<Item>, st: Style) -> Vec<(bool, String)> {
+/// out alone where that costs less.
+fn inner_shape(inner: Vec<Item>) -> Inner {
     let real: Real = inner
         .iter()
         .map(|(_, p, t, c)| ((p.clone(), t.clone()), c.clone()))
         .collect();
-    let by_trig = super::factor::factored(&real, st);
     if !worth(&inner) {
-        return by_trig;
+        return Inner::ByTrig(real);
     }
-    let collected: Vec<(bool, String)> = collect(inner, st).into_iter().map(|x| x.1).collect();
-    if width(&collected) <= width(&by_trig) {
-        collected
+    let by_trig = super::factor::factored(&real, PLAIN);
+    let nodes = collect(inner);
+    if measure(&render_all(&nodes, PLAIN)) <= measure(&by_trig) {
+        Inner::Nodes(nodes)
     } else {
-        by_trig
+        Inner::ByTrig(real)
     }
 }

@@ -7,6 +7,7 @@
 
 pub mod arc;
 pub mod axis;
+pub mod bilinear;
 pub mod branch;
 pub mod coef;
 pub mod collect;

@@ -129,6 +129,7 @@ pub fn var_power(v: &Var, e: i32, st: Style) -> String {
 mod tests {
     use super::*;
     use crate::sym::Symbol;
+    use num_traits::One;
 
     fn s(n: &str) -> Expr {
         Expr::symbol(Symbol::new(n))

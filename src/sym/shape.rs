@@ -14,7 +14,7 @@
 use std::collections::BTreeMap;
 
 use super::coef::Coef;
-use super::collect::{collect, items, width, worth};
+use super::collect::{Node, PLAIN, collect, items, measure, render_all, worth};
 use super::expr::{Mono, Symbol, Var, mono_mul};
 use super::print::Style;
 use super::trig::{Real, Trig};
@@ -23,37 +23,81 @@ use super::trig::{Real, Trig};
 /// an expansion: trigonometric factors taken out alone).
 const MAX_TERMS: usize = 300;
 
-/// The signed terms of a real form in its shortest shape: trigonometric
-/// factors taken out, or all shared factors collected (on a tie the
-/// collected form, the book's), each of the unit sphere's charts tried
-/// where a unit axis appears (on a tie the canonical chart).
+/// A shape's terms as plain text, what it costs ([`measure`]), and how to
+/// print it in another style.
+type Scored<'a> = (Vec<(bool, String)>, (usize, usize), Chosen<'a>);
+
+/// A shape chosen: trigonometric factors taken out alone from a form, or
+/// a collected shape.
+enum Chosen<'a> {
+    ByTrig(&'a Real),
+    Nodes(Vec<Node>),
+}
+
+/// The signed terms of a real form in the shape with the fewest factors
+/// ([`measure`]): trigonometric factors taken out alone, or all shared
+/// factors collected (on a tie the collected form, the book's: `cos(θ) +
+/// w[1]^2 (1 - cos(θ))`), each of the unit sphere's charts tried where a
+/// unit axis appears (kept when it costs less). The shape is decided on
+/// the plain text, so that every style prints the same one.
 pub fn shaped(real: &Real, st: Style) -> Vec<(bool, String)> {
-    let mut best = super::factor::factored(real, st);
     if real.len() < 2 || real.len() > MAX_TERMS {
-        return best;
+        return super::factor::factored(real, st);
     }
-    let mut best_width = width(&best);
-    let charts = std::iter::once(None).chain(unit_charts(real).into_iter().map(Some));
-    for (i, chart) in charts.enumerate() {
-        let form = chart.as_ref().unwrap_or(real);
+    let charts = unit_charts(real);
+    let mut best_terms = super::factor::factored(real, PLAIN);
+    let mut best_cost = measure(&best_terms);
+    let mut chosen = Chosen::ByTrig(real);
+    for (i, form) in std::iter::once(real).chain(&charts).enumerate() {
         let all = items(form);
-        if !worth(&all) && i == 0 {
-            continue;
+        // this form's shapes, the book's last: on a tie in factors, the
+        // later one
+        let mut shapes: Vec<Vec<Node>> = Vec::new();
+        if i > 0 || worth(&all) {
+            shapes.push(collect(all.clone()));
         }
-        let mut terms: Vec<(bool, String)> = collect(all, st).into_iter().map(|x| x.1).collect();
+        shapes.extend(super::bilinear::bilinear(&all));
+        let mut here: Option<Scored> = None;
         if i > 0 {
-            let by_trig = super::factor::factored(form, st);
-            if width(&by_trig) < width(&terms) {
-                terms = by_trig;
+            let by_trig = super::factor::factored(form, PLAIN);
+            let cost = measure(&by_trig);
+            here = Some((by_trig, cost, Chosen::ByTrig(form)));
+        }
+        for mut nodes in shapes {
+            let mut plain = render_all(&nodes, PLAIN);
+            // a sum starts with a positive term where it has one (3.52:
+            // `w[2] w[3] (1 - cos(θ)) - w[1] sin(θ)`)
+            if plain.first().is_some_and(|t| t.0)
+                && let Some(j) = plain.iter().position(|t| !t.0)
+            {
+                let n = nodes.remove(j);
+                nodes.insert(0, n);
+                let t = plain.remove(j);
+                plain.insert(0, t);
+            }
+            let cost = measure(&plain);
+            if here.as_ref().is_none_or(|h| cost.0 <= h.1.0) {
+                here = Some((plain, cost, Chosen::Nodes(nodes)));
             }
         }
-        let w = width(&terms);
-        if w < best_width || (i == 0 && w == best_width) {
-            best = terms;
-            best_width = w;
+        let Some((terms, cost, how)) = here else {
+            continue;
+        };
+        let wins = match i {
+            0 => cost.0 <= best_cost.0,
+            _ => cost < best_cost,
+        };
+        if wins {
+            (best_terms, best_cost, chosen) = (terms, cost, how);
         }
     }
-    best
+    if st == PLAIN {
+        return best_terms;
+    }
+    match chosen {
+        Chosen::ByTrig(form) => super::factor::factored(form, st),
+        Chosen::Nodes(nodes) => render_all(&nodes, st),
+    }
 }
 
 /// The real form rewritten on the unit sphere's other charts: for each
