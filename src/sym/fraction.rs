@@ -128,13 +128,18 @@ fn denominator(den: &Mono, st: Style) -> Option<(Coef, String)> {
             Some((k, vars, factors)) => {
                 scale = scale.mul(&k);
                 for (v, p) in &vars {
-                    parts.push(var_power(v, *p, st));
+                    parts.push(var_power(v, *p, st).1);
                 }
                 for f in &factors {
                     parts.push(trig_factor(&f.k, f.f, f.p, st));
                 }
             }
-            None => parts.push(var_power(v, *e, st)),
+            None => {
+                // d^e = f·(text): 1/f moves up
+                let (f, text) = var_power(v, *e, st);
+                scale = scale.mul(&f.inv()?);
+                parts.push(text);
+            }
         }
     }
     let text = parts.join(" ");
@@ -198,7 +203,15 @@ impl Sides<'_> {
             } else {
                 &mut *self.num
             };
-            into.push(var_power(v, e.saturating_abs(), self.st));
+            // d^|e| = f·(text): f joins the coefficient, or 1/f below
+            let (f, text) = var_power(v, e.saturating_abs(), self.st);
+            let f = if e > 0 {
+                f.inv().unwrap_or_else(Coef::one)
+            } else {
+                f
+            };
+            *self.c = self.c.mul(&f);
+            into.push(text);
             return;
         }
         let into = if e > 0 {
@@ -206,7 +219,7 @@ impl Sides<'_> {
         } else {
             &mut *self.den
         };
-        into.push(var_power(v, e.saturating_abs(), self.st));
+        into.push(var_power(v, e.saturating_abs(), self.st).1);
     }
 }
 

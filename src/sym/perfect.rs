@@ -29,10 +29,11 @@ fn lead<'a>(e: &'a Expr, vars: &[Var]) -> Option<(&'a Mono, &'a Coef)> {
         .max_by(|a, b| exps(a.0, vars).cmp(&exps(b.0, vars)))
 }
 
-/// (root, k) with rootᵏ = e, k ≥ 2 the largest such (the root's leading
-/// coefficient a rational k-th root of e's): None when `e` is no such
-/// power (or too long to try).
-pub fn perfect_power(e: &Expr) -> Option<(Expr, u32)> {
+/// (c, root, k) with c·rootᵏ = e, k ≥ 2 the largest such, c rational, the
+/// root's constant term 1 where it has one (`1 + cos(t)`), else its
+/// leading coefficient: None when `e` is no such power (or too long to
+/// try).
+pub fn perfect_power(e: &Expr) -> Option<(Coef, Expr, u32)> {
     let n = e.terms.len();
     if !(2..=MAX_TERMS).contains(&n) {
         return None;
@@ -40,8 +41,8 @@ pub fn perfect_power(e: &Expr) -> Option<(Expr, u32)> {
     let mut vars: Vec<Var> = e.terms.keys().flatten().map(|(v, _)| v.clone()).collect();
     vars.sort();
     vars.dedup();
-    let (top, c) = lead(e, &vars)?;
-    let (num, den) = c.as_rat()?.small()?;
+    let (top, lc) = lead(e, &vars)?;
+    lc.as_rat()?;
     let low = e
         .terms
         .keys()
@@ -51,25 +52,19 @@ pub fn perfect_power(e: &Expr) -> Option<(Expr, u32)> {
         .iter()
         .chain(low)
         .fold(0u32, |g, (_, x)| gcd(g, x.unsigned_abs()));
+    let f = e.scale(&lc.inv()?);
     (2..=g.min(16)).rev().filter(|k| g % k == 0).find_map(|k| {
-        // e = c·fᵏ: c's k-th root leads the root
-        let c0 = super::coef::Rat::new(
-            i128::from(num.signum()) * i128::from(iroot(num.unsigned_abs(), k)?),
-            i128::from(iroot(den.unsigned_abs(), k)?),
-        )?;
-        if k % 2 == 0 && num < 0 {
-            return None;
+        let r = root(&f, k, top, &vars)?;
+        // e = lc·rᵏ = lc·c0ᵏ·(r/c0)ᵏ
+        let c0 = r.terms.get(&Vec::new()).cloned().unwrap_or_else(Coef::one);
+        c0.as_rat()?;
+        let inv = c0.inv()?;
+        let mut c = lc.clone();
+        for _ in 0..k {
+            c = c.mul(&c0);
         }
-        let c0 = Coef::rat(c0);
-        let f = e.scale(&c.inv()?);
-        root(&f, k, top, &vars).map(|r| (r.scale(&c0), k))
+        Some((c, r.scale(&inv), k))
     })
-}
-
-/// The exact k-th root of n, if n is a k-th power.
-fn iroot(n: u64, k: u32) -> Option<u64> {
-    let guess = (n as f64).powf(1.0 / f64::from(k)).round() as u64;
-    (guess.saturating_sub(1)..=guess + 1).find(|r| r.checked_pow(k) == Some(n))
 }
 
 fn gcd(mut a: u32, mut b: u32) -> u32 {
@@ -106,23 +101,30 @@ fn root(e: &Expr, k: u32, top: &Mono, vars: &[Var]) -> Option<Expr> {
     None
 }
 
-/// The text of vᵉ (e > 0): a kept reciprocal whose sum is a perfect power
-/// as that power, `(1 + r[1]^2 + r[2]^2 + r[3]^2)^2`; else `v^e`.
-pub fn var_power(v: &Var, e: i32, st: Style) -> String {
+/// The text of vᵉ (e > 0) and the constant f it leaves out (vᵉ = f·text):
+/// a kept reciprocal 1/(d) prints its sum d, and where d is c·qᵏ, dᵉ as
+/// `(q)^(k e)` with f = cᵉ, `(1 + r[1]^2 + r[2]^2 + r[3]^2)^2`; else `v^e`
+/// with f = 1.
+pub fn var_power(v: &Var, e: i32, st: Style) -> (Coef, String) {
     let latex = st.mode == Mode::Latex;
     if let Var::Call(call) = v
         && call.f == Func::Recip
-        && let Some((r, k)) = perfect_power(&call.args[0])
+        && let Some((c, r, k)) = perfect_power(&call.args[0])
     {
         let inner = expr(&r, st);
+        let mut f = Coef::one();
+        for _ in 0..e {
+            f = f.mul(&c);
+        }
         let k = e.saturating_mul(k as i32);
-        return if latex {
+        let text = if latex {
             format!("\\left({inner}\\right)^{{{k}}}")
         } else {
             format!("({inner})^{k}")
         };
+        return (f, text);
     }
-    power(&super::print::var(v, st), e, latex)
+    (Coef::one(), power(&super::print::var(v, st), e, latex))
 }
 
 #[cfg(test)]
@@ -139,22 +141,37 @@ mod tests {
     fn powers_of_sums_are_found_and_others_are_not() {
         let (a, b, t) = (s("a"), s("b"), s("t"));
         let q = Expr::one().add(&a.mul(&a)).add(&b.mul(&b));
-        assert_eq!(perfect_power(&q.powi(2).unwrap()), Some((q.clone(), 2)));
-        assert_eq!(perfect_power(&q.powi(3).unwrap()), Some((q.clone(), 3)));
+        let one = Coef::one();
+        assert_eq!(
+            perfect_power(&q.powi(2).unwrap()),
+            Some((one.clone(), q.clone(), 2))
+        );
+        assert_eq!(
+            perfect_power(&q.powi(3).unwrap()),
+            Some((one.clone(), q.clone(), 3))
+        );
         // a fourth power is the largest: (q²)² is q⁴
-        assert_eq!(perfect_power(&q.powi(4).unwrap()), Some((q.clone(), 4)));
+        assert_eq!(
+            perfect_power(&q.powi(4).unwrap()),
+            Some((one.clone(), q.clone(), 4))
+        );
         assert_eq!(perfect_power(&q), None);
         // one more term: no longer a square
         assert_eq!(perfect_power(&q.powi(2).unwrap().add(&a)), None);
         // a trigonometric sum: (1 + cos t)²
         let c = Expr::one().add(&Expr::cos(&t));
-        assert_eq!(perfect_power(&c.powi(2).unwrap()), Some((c, 2)));
-        // a leading coefficient that is a square: (2 q)²; one that is not
-        let two = q.scale(&Coef::int(2));
-        assert_eq!(perfect_power(&two.powi(2).unwrap()), Some((two, 2)));
         assert_eq!(
-            perfect_power(&q.powi(2).unwrap().scale(&Coef::int(3))),
-            None
+            perfect_power(&c.powi(2).unwrap()),
+            Some((one.clone(), c.clone(), 2))
         );
+        // (2/3)(1 + cos t)²: its constant term 1
+        let third = c
+            .powi(2)
+            .unwrap()
+            .scale(&Coef::rat(super::super::coef::Rat::new(2, 3).unwrap()));
+        assert_eq!(perfect_power(&third).map(|x| x.1), Some(c));
+        // a constant taken out: 3 q² (q with its constant term 1)
+        let three = q.powi(2).unwrap().scale(&Coef::int(3));
+        assert_eq!(perfect_power(&three), Some((Coef::int(3), q.clone(), 2)));
     }
 }
