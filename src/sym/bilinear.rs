@@ -89,7 +89,8 @@ pub(super) fn bilinear(items: &[Item]) -> Option<Vec<Node>> {
             _ => Node::Product {
                 first,
                 left: collect(left),
-                right,
+                // (the angle side collected too: `(1 - cos(t1 + t2)) sin(t3)`)
+                right: collect(super::collect::items(&right)),
             },
         });
     }

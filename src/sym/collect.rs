@@ -81,7 +81,7 @@ pub(super) enum Node {
     Product {
         first: usize,
         left: Vec<Node>,
-        right: Real,
+        right: Vec<Node>,
     },
 }
 
@@ -199,10 +199,7 @@ fn render(node: &Node, st: Style) -> (bool, String) {
         } => (k, poly, trig, inner),
     };
     let mut sum = render_inner(inner, st);
-    let neg = sum.first().is_some_and(|t| t.0);
-    if neg {
-        sum.iter_mut().for_each(|t| t.0 = !t.0);
-    }
+    let neg = positive(&mut sum);
     let latex = st.mode == Mode::Latex;
     let body = join(&sum, usize::MAX, 0);
     let mut parts: Vec<String> = Vec::new();
@@ -225,33 +222,44 @@ fn render(node: &Node, st: Style) -> (bool, String) {
     (neg, parts.join(" "))
 }
 
+/// Turns a sum in parentheses to start positive, with its constant first
+/// where that can be (`(1 - cos(t))`, not `(cos(t) - 1)` nor `-(…)`):
+/// true when the sum was turned (its sign goes in front).
+fn positive(sum: &mut [(bool, String)]) -> bool {
+    let constant = |t: &(bool, String)| {
+        t.1.chars()
+            .all(|c| c.is_ascii_digit() || matches!(c, '/' | '.' | '√'))
+    };
+    let turn = match sum.iter().position(constant) {
+        Some(j) => sum[j].0,
+        None => sum.first().is_some_and(|t| t.0),
+    };
+    if turn {
+        sum.iter_mut().for_each(|t| t.0 = !t.0);
+    }
+    if let Some(j) = sum.iter().position(constant) {
+        sum[..=j].rotate_right(1);
+    }
+    turn
+}
+
 /// `(a) (b)`, each side's sign in front, a side of one term without
 /// parentheses, a side that is 1 left out; under a negative sign, the
 /// symbol side turned where it has a negative term, else the angle side
 /// (`S[1] (…) (t - sin(t))`, not `-S[1] (…) (sin(t) - t)`).
-fn product(left: &[Node], right: &Real, st: Style) -> (bool, String) {
+fn product(left: &[Node], right: &[Node], st: Style) -> (bool, String) {
     let mut a = render_all(left, st);
-    let mut b = super::factor::factored(right, st);
-    let mut neg = false;
+    let mut b = render_all(right, st);
+    let mut neg = positive(&mut a) != positive(&mut b);
+    // under a negative sign, a side that has a negative term turns, its
+    // positive terms first: (S[3] S[4] - S[1] S[6]) (1 - cos(t)), not
+    // -(S[1] S[6] - S[3] S[4]) (…); (t1 + t2 - sin(t1 + t2))
     for side in [&mut a, &mut b] {
-        if side.first().is_some_and(|t| t.0) {
+        if neg && side.iter().any(|t| t.0) {
             side.iter_mut().for_each(|t| t.0 = !t.0);
-            neg = !neg;
+            side.sort_by_key(|t| t.0);
+            neg = false;
         }
-    }
-    // under a negative sign, a side that has a negative term turns:
-    // (S[3] S[4] - S[1] S[6]) (1 - cos(t)), not -(S[1] S[6] - S[3] S[4]) (…)
-    if neg && let Some(j) = a.iter().position(|t| t.0) {
-        a.iter_mut().for_each(|t| t.0 = !t.0);
-        let t = a.remove(j);
-        a.insert(0, t);
-        neg = false;
-    }
-    if neg && let Some(j) = b.iter().position(|t| t.0) {
-        b.iter_mut().for_each(|t| t.0 = !t.0);
-        let t = b.remove(j);
-        b.insert(0, t);
-        neg = false;
     }
     let latex = st.mode == Mode::Latex;
     let side = |ts: &[(bool, String)]| -> Option<String> {
