@@ -68,7 +68,15 @@ pub(super) fn bilinear(items: &[Item]) -> Option<Vec<Node>> {
     }
     let one = |r: &[((Mono, Vec<Trig>), Coef)]| matches!(r, [((b, t), c)] if b.is_empty() && t.is_empty() && c.is_one());
     let mut out = Vec::new();
-    for (first, left, right) in classes {
+    for (first, mut left, mut right) in classes {
+        // one angle term: its coefficient (a float, unnormalized) joins the
+        // symbols, `(0.5 a + 0.5 b) cos(t)`, not `(a + b) 0.5 cos(t)`
+        if let [(_, c)] = right.as_mut_slice()
+            && !c.is_one()
+        {
+            left.iter_mut().for_each(|x| x.3 = x.3.mul(c));
+            *c = Coef::one();
+        }
         if one(&right) {
             // no angle: the symbol sum itself, collected
             out.extend(collect(left));

@@ -145,7 +145,10 @@ pub(super) fn collect(items: Vec<Item>) -> Vec<Node> {
     if items.len() >= 2 {
         let (poly, trig, k) = common(&items);
         if !poly.is_empty() || !trig.is_empty() || !k.is_one() {
-            return vec![grouped(items, poly, trig, k)];
+            let g = grouped(items.clone(), poly.clone(), trig.clone(), k);
+            if pays(&items, &g, &poly, &trig) {
+                return vec![g];
+            }
         }
     }
     let mut left = items;
@@ -153,13 +156,9 @@ pub(super) fn collect(items: Vec<Item>) -> Vec<Node> {
     let mut out: Vec<Node> = Vec::new();
     while let Some(f) = most_shared(&left, &tried) {
         let (shared, rest): (Vec<Item>, Vec<Item>) = left.into_iter().partition(|x| has(x, &f));
-        let flat: Vec<(bool, String)> = shared
-            .iter()
-            .map(|(_, poly, trig, c)| term(c, poly, trig, PLAIN))
-            .collect();
         let (poly, trig, k) = common(&shared);
-        let g = grouped(shared.clone(), poly, trig, k);
-        if measure(&[render(&g, PLAIN)]) < measure(&flat) {
+        let g = grouped(shared.clone(), poly.clone(), trig.clone(), k);
+        if pays(&shared, &g, &poly, &trig) {
             out.push(g);
             left = rest;
         } else {
@@ -171,6 +170,37 @@ pub(super) fn collect(items: Vec<Item>) -> Vec<Node> {
     out.extend(left.into_iter().map(Node::Term));
     out.sort_by_key(Node::first);
     out
+}
+
+/// True when the group `g` of `items` (sharing `poly` and `trig`) prints
+/// fewer factors than its terms; or as many where it is m + m·x = m (1 + x)
+/// with m gone from x: `x^2 (1 + y)`, `L1 (1 - sin(t2))`, `2 (1 - cos(t))`
+/// — not Horner's nesting `t (1/5 + t)` of a polynomial.
+fn pays(items: &[Item], g: &Node, poly: &Mono, trig: &[Trig]) -> bool {
+    let flat: Vec<(bool, String)> = items
+        .iter()
+        .map(|(_, p, t, c)| term(c, p, t, PLAIN))
+        .collect();
+    let (after, before) = (measure(&[render(g, PLAIN)]), measure(&flat));
+    if after.0 != before.0 {
+        return after.0 < before.0;
+    }
+    let alone = items.iter().any(|x| {
+        let vars: Mono =
+            x.1.iter()
+                .filter(|(v, e)| shareable(v, *e))
+                .cloned()
+                .collect();
+        vars == *poly && x.2 == trig
+    });
+    let gone = items.iter().all(|x| {
+        poly.iter()
+            .all(|(v, e)| x.1.iter().find(|(w, _)| w == v).map(|y| y.1) == Some(*e))
+            && trig.iter().all(|(a, s, e)| {
+                x.2.iter().find(|(b, r, _)| b == a && r == s).map(|y| y.2) == Some(*e)
+            })
+    });
+    alone && gone
 }
 
 /// The signed terms of a shape in the style `st`.
