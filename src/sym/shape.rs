@@ -35,7 +35,7 @@ enum Chosen<'a> {
 }
 
 /// The signed terms of a real form in the shape with the fewest factors
-/// ([`measure`]): trigonometric factors taken out alone, or all shared
+/// (`collect::measure`): trigonometric factors taken out alone, or all shared
 /// factors collected (on a tie the collected form, the book's: `cos(θ) +
 /// w[1]^2 (1 - cos(θ))`), each of the unit sphere's charts tried where a
 /// unit axis appears (kept when it costs less). The shape is decided on
