@@ -253,21 +253,25 @@ fn render(node: &Node, st: Style) -> (bool, String) {
 }
 
 /// Turns a sum in parentheses to start positive, with its constant first
-/// where that can be (`(1 - cos(t))`, not `(cos(t) - 1)` nor `-(…)`):
-/// true when the sum was turned (its sign goes in front).
+/// where it has one (`(1 - cos(t))`, not `(cos(t) - 1)` nor `-(…)`), else
+/// its first positive term first (`2 r[2] r[3] - r[1] (…)`), else all
+/// turned: true when the sum was turned (its sign goes in front).
 fn positive(sum: &mut [(bool, String)]) -> bool {
     let constant = |t: &(bool, String)| {
         t.1.chars()
             .all(|c| c.is_ascii_digit() || matches!(c, '/' | '.' | '√'))
     };
-    let turn = match sum.iter().position(constant) {
-        Some(j) => sum[j].0,
-        None => sum.first().is_some_and(|t| t.0),
+    let (turn, front) = match sum.iter().position(constant) {
+        Some(j) => (sum[j].0, Some(j)),
+        None => match sum.iter().position(|t| !t.0) {
+            Some(j) => (false, Some(j)),
+            None => (true, None),
+        },
     };
     if turn {
         sum.iter_mut().for_each(|t| t.0 = !t.0);
     }
-    if let Some(j) = sum.iter().position(constant) {
+    if let Some(j) = front {
         sum[..=j].rotate_right(1);
     }
     turn
