@@ -121,6 +121,10 @@ fn common_factors_stay_factored() {
         ("x/2 + y/2", "(1/2) (x + y)"),
         ("(x + y)^2", "2 x y + x^2 + y^2"),
         ("x + 2 y", "x + 2 y"),
+        ("2 x + 4 y", "2 x + 4 y"),
+        // no Horner nesting of a polynomial: x (1/5 + x) is no shorter
+        ("x/5 + x^2", "(1/5) x + x^2"),
+        ("(1 + x)^4", "1 + 4 x + 6 x^2 + 4 x^3 + x^4"),
     ] {
         assert_eq!(reads_back(setup, entry, ""), want, "{entry}");
     }
