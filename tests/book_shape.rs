@@ -128,6 +128,12 @@ fn common_factors_stay_factored() {
     ] {
         assert_eq!(reads_back(setup, entry, ""), want, "{entry}");
     }
+    // a long expansion stays one: symbols shared by some of its terms are
+    // not nested out of it (Horner's form of (a + … + f)^3 has fewer factors)
+    let setup = "given a, b, c, d, e, f";
+    let text = reads_back(setup, "(a + b + c + d + e + f)^3", "");
+    assert!(!text.contains('('), "{text}");
+    assert!(text.starts_with("6 a b c + 6 a b d"), "{text}");
 }
 
 #[test]

@@ -22,8 +22,9 @@ type Row = (usize, Mono, Angles);
 
 /// The sum as products of a symbol sum and an angle sum, one product per
 /// class of proportional rows, in the place of its first term; None when
-/// no two rows are proportional (nothing to share).
-pub(super) fn bilinear(items: &[Item]) -> Option<Vec<Node>> {
+/// no two rows are proportional (nothing to share). `partial` as in
+/// [`collect`].
+pub(super) fn bilinear(items: &[Item], partial: bool) -> Option<Vec<Node>> {
     // the angles: symbols inside a sine or cosine (θ itself, as in G(θ),
     // is on the angle side)
     let mut angles: Vec<&Symbol> = Vec::new();
@@ -79,7 +80,7 @@ pub(super) fn bilinear(items: &[Item]) -> Option<Vec<Node>> {
         }
         if one(&right) {
             // no angle: the symbol sum itself, collected
-            out.extend(collect(left));
+            out.extend(collect(left, partial));
             continue;
         }
         let right: Real = right.into_iter().collect();
@@ -96,9 +97,9 @@ pub(super) fn bilinear(items: &[Item]) -> Option<Vec<Node>> {
             }
             _ => Node::Product {
                 first,
-                left: collect(left),
+                left: collect(left, partial),
                 // (the angle side collected too: `(1 - cos(t1 + t2)) sin(t3)`)
-                right: collect(super::collect::items(&right)),
+                right: collect(super::collect::items(&right), partial),
             },
         });
     }

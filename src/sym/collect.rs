@@ -17,6 +17,10 @@ use super::fraction::term;
 use super::print::{Mode, Style, join, text_width, trig_factor};
 use super::trig::{Angle, Real, Trig};
 
+/// The most terms of a sum whose symbols shared by some of its terms are
+/// taken out (`partial` in [`collect`]).
+pub(super) const LONG: usize = 12;
+
 /// One term being collected: its place in print order, its monomial
 /// (the non-angle variables), its trigonometric factors, its coefficient.
 pub(super) type Item = (usize, Mono, Vec<Trig>, Coef);
@@ -140,24 +144,33 @@ pub(super) fn measure(ts: &[(bool, String)]) -> (usize, usize) {
 }
 
 /// The terms of `items` collected: the shape, each node in the place of
-/// its first term.
-pub(super) fn collect(items: Vec<Item>) -> Vec<Node> {
+/// its first term; symbols shared by some of the terms (not all) taken out
+/// only where `partial` (the whole sum has at most [`LONG`] terms).
+pub(super) fn collect(items: Vec<Item>, partial: bool) -> Vec<Node> {
     if items.len() >= 2 {
         let (poly, trig, k) = common(&items);
         if !poly.is_empty() || !trig.is_empty() || !k.is_one() {
-            let g = grouped(items.clone(), poly.clone(), trig.clone(), k);
+            let g = grouped(items.clone(), poly.clone(), trig.clone(), k, partial);
             if pays(&items, &g, &poly, &trig) {
                 return vec![g];
             }
         }
     }
+    // in a long sum, an expansion ((a + b + c)^3), symbols shared by some
+    // of the terms stay in them, as the trigonometric grouping keeps a long
+    // sum with multiple angles a sum of short lines ([`super::factor`])
+    let long = !partial;
     let mut left = items;
     let mut tried: Vec<Fac> = Vec::new();
     let mut out: Vec<Node> = Vec::new();
     while let Some(f) = most_shared(&left, &tried) {
+        if long && matches!(f, Fac::Var(_)) {
+            tried.push(f);
+            continue;
+        }
         let (shared, rest): (Vec<Item>, Vec<Item>) = left.into_iter().partition(|x| has(x, &f));
         let (poly, trig, k) = common(&shared);
-        let g = grouped(shared.clone(), poly.clone(), trig.clone(), k);
+        let g = grouped(shared.clone(), poly.clone(), trig.clone(), k, partial);
         if pays(&shared, &g, &poly, &trig) {
             out.push(g);
             left = rest;
@@ -409,7 +422,7 @@ fn gcd(mut a: i64, mut b: i64) -> i64 {
 /// The group `k poly (inner) trig`: the terms divided by what they share,
 /// collected in turn (or with trigonometric factors taken out alone where
 /// that costs less).
-fn grouped(items: Vec<Item>, poly: Mono, trig: Vec<Trig>, k: Coef) -> Node {
+fn grouped(items: Vec<Item>, poly: Mono, trig: Vec<Trig>, k: Coef, partial: bool) -> Node {
     let first = items.iter().map(|x| x.0).min().unwrap_or(0);
     let inv = k.inv().unwrap_or_else(Coef::one);
     let inner: Vec<Item> = items
@@ -440,13 +453,13 @@ fn grouped(items: Vec<Item>, poly: Mono, trig: Vec<Trig>, k: Coef) -> Node {
         k,
         poly,
         trig,
-        inner: inner_shape(inner),
+        inner: inner_shape(inner, partial),
     }
 }
 
 /// A group's inner sum: collected, or with trigonometric factors taken
 /// out alone where that costs less.
-fn inner_shape(inner: Vec<Item>) -> Inner {
+fn inner_shape(inner: Vec<Item>, partial: bool) -> Inner {
     let real: Real = inner
         .iter()
         .map(|(_, p, t, c)| ((p.clone(), t.clone()), c.clone()))
@@ -455,7 +468,7 @@ fn inner_shape(inner: Vec<Item>) -> Inner {
         return Inner::ByTrig(real);
     }
     let by_trig = super::factor::factored(&real, PLAIN);
-    let nodes = collect(inner);
+    let nodes = collect(inner, partial);
     if measure(&render_all(&nodes, PLAIN)) <= measure(&by_trig) {
         Inner::Nodes(nodes)
     } else {

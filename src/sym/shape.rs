@@ -45,6 +45,7 @@ pub fn shaped(real: &Real, st: Style) -> Vec<(bool, String)> {
         return super::factor::factored(real, st);
     }
     let charts = unit_charts(real);
+    let partial = real.len() <= super::collect::LONG;
     let mut best_terms = super::factor::factored(real, PLAIN);
     let mut best_cost = measure(&best_terms);
     let mut chosen = Chosen::ByTrig(real);
@@ -54,9 +55,9 @@ pub fn shaped(real: &Real, st: Style) -> Vec<(bool, String)> {
         // later one
         let mut shapes: Vec<Vec<Node>> = Vec::new();
         if i > 0 || worth(&all) {
-            shapes.push(collect(all.clone()));
+            shapes.push(collect(all.clone(), partial));
         }
-        shapes.extend(super::bilinear::bilinear(&all));
+        shapes.extend(super::bilinear::bilinear(&all, partial));
         let mut here: Option<Scored> = None;
         if i > 0 {
             let by_trig = super::factor::factored(form, PLAIN);
