@@ -110,7 +110,7 @@ fn most_shared(terms: &[Item]) -> Option<Trig> {
 #[cfg(test)]
 mod tests {
     use crate::sym::expr::{Expr, Symbol};
-    use crate::sym::print::{Style, expr};
+    use crate::sym::print::{Style, expr, join};
 
     fn s(n: &str) -> Expr {
         Expr::symbol(Symbol::new(n))
@@ -133,9 +133,12 @@ mod tests {
         // nothing shared: as before
         let f = ca.add(&sc);
         assert_eq!(expr(&f, Style::default()), "cos(a) + sin(c)");
-        // L + (1 - L) cos t: the term without cos t stays outside
+        // L + (1 - L) cos t: the term without cos t stays outside (the
+        // printed shape is the book's, cos(t) + L (1 - cos(t)): sym::shape)
         let (l, t) = (s("L"), s("t"));
         let g = l.sub(&l.mul(&Expr::cos(&t))).add(&Expr::cos(&t));
-        assert_eq!(expr(&g, Style::default()), "(1 - L) cos(t) + L");
+        let alone = super::factored(&crate::sym::trig::real_form(&g), Style::default());
+        assert_eq!(join(&alone, usize::MAX, 0), "(1 - L) cos(t) + L");
+        assert_eq!(expr(&g, Style::default()), "cos(t) + L (1 - cos(t))");
     }
 }

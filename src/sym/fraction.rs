@@ -7,7 +7,8 @@
 
 use super::coef::Coef;
 use super::expr::{Expr, Func, Mono, Symbol, Var, mono_mul};
-use super::print::{Mode, Style, coefficient, join, power, trig_factor, var};
+use super::perfect::var_power;
+use super::print::{Mode, Style, coefficient, join, trig_factor};
 use super::trig::{Trig, real_form};
 use num_traits::Zero;
 
@@ -59,19 +60,24 @@ pub fn terms(e: &Expr, st: Style) -> Vec<(bool, String)> {
             continue;
         };
         // (numerator)/(denominator): the denominator's own constant moves up
-        let body = join(&plain(&num.scale(&scale), st), usize::MAX, 0);
-        let text = if st.mode == Mode::Latex {
-            format!("\\frac{{{body}}}{{{den_text}}}")
-        } else {
-            format!("({body})/{den_text}")
+        // (one term above, its sign in front: `-8 (r[2]^2 + r[3]^2)/(…)^2`)
+        let top = plain(&num.scale(&scale), st);
+        let (neg, body) = match top.as_slice() {
+            [(neg, one)] => (*neg, one.clone()),
+            _ => (false, join(&top, usize::MAX, 0)),
         };
-        out.push((false, text));
+        let text = match (st.mode == Mode::Latex, top.len()) {
+            (true, _) => format!("\\frac{{{body}}}{{{den_text}}}"),
+            (false, 1) => format!("{body}/{den_text}"),
+            (false, _) => format!("({body})/{den_text}"),
+        };
+        out.push((neg, text));
     }
     out
 }
 
 fn plain(e: &Expr, st: Style) -> Vec<(bool, String)> {
-    super::factor::factored(&real_form(e), st)
+    super::shape::shaped(&real_form(e), st)
 }
 
 /// A kept reciprocal 1/(d)^e whose d is one real term k·(variables)·(trig
@@ -126,13 +132,18 @@ fn denominator(den: &Mono, st: Style) -> Option<(Coef, String)> {
             Some((k, vars, factors)) => {
                 scale = scale.mul(&k);
                 for (v, p) in &vars {
-                    parts.push(power(&var(v, st), *p, st.mode == Mode::Latex));
+                    parts.push(var_power(v, *p, st).1);
                 }
                 for f in &factors {
                     parts.push(trig_factor(&f.k, f.f, f.p, st));
                 }
             }
-            None => parts.push(power(&var(v, st), *e, st.mode == Mode::Latex)),
+            None => {
+                // d^e = f·(text): 1/f moves up
+                let (f, text) = var_power(v, *e, st);
+                scale = scale.mul(&f.inv()?);
+                parts.push(text);
+            }
         }
     }
     let text = parts.join(" ");
@@ -164,7 +175,6 @@ impl Sides<'_> {
     /// printed 1/((cos(t)) sin(t)) — and trigonometric factors go where
     /// they belong), else `(x)`.
     fn place(&mut self, v: &Var, e: i32, depth: u32) {
-        let latex = self.st.mode == Mode::Latex;
         if e == 0 {
             return;
         }
@@ -197,7 +207,15 @@ impl Sides<'_> {
             } else {
                 &mut *self.num
             };
-            into.push(power(&var(v, self.st), e.saturating_abs(), latex));
+            // d^|e| = f·(text): f joins the coefficient, or 1/f below
+            let (f, text) = var_power(v, e.saturating_abs(), self.st);
+            let f = if e > 0 {
+                f.inv().unwrap_or_else(Coef::one)
+            } else {
+                f
+            };
+            *self.c = self.c.mul(&f);
+            into.push(text);
             return;
         }
         let into = if e > 0 {
@@ -205,7 +223,7 @@ impl Sides<'_> {
         } else {
             &mut *self.den
         };
-        into.push(power(&var(v, self.st), e.saturating_abs(), latex));
+        into.push(var_power(v, e.saturating_abs(), self.st).1);
     }
 }
 

@@ -7,8 +7,10 @@
 
 pub mod arc;
 pub mod axis;
+pub mod bilinear;
 pub mod branch;
 pub mod coef;
+pub mod collect;
 pub mod dense;
 pub mod diff;
 pub mod eval;
@@ -24,11 +26,13 @@ pub mod layout;
 pub mod matexp;
 pub mod matrix;
 pub mod modular;
+pub mod perfect;
 pub mod phase;
 pub mod print;
 pub mod probe;
 pub mod rat;
 pub mod rational;
+pub mod shape;
 pub mod shortest;
 pub mod sign;
 pub mod size;

@@ -1,0 +1,195 @@
+//! Closed forms printed in the book's shape (issue 35; LANGUAGE.md §7):
+//! Rodrigues' entries as (3.52), cθ + ω̂₁²(1 − cθ), not multiplied out;
+//! common factors and integer content kept factored; a denominator that is
+//! a power of a sum printed as that power (3.104); G(θ)v of Proposition 3.16
+//! grouped by (1 − cos θ) and (θ − sin θ). Each printed form, text and
+//! LaTeX, read back, is the value (`==` decides it exactly).
+
+mod common;
+use common::json;
+
+#[path = "sym_differential/latex.rs"]
+#[allow(dead_code)]
+mod latex;
+
+/// The JSON `value` and `latex` of the statement named `name` in `src`.
+fn shown(src: &str, name: &str) -> (String, String) {
+    let lines = json(src);
+    let line = lines
+        .iter()
+        .find(|j| j["name"] == name)
+        .unwrap_or_else(|| panic!("no {name} in {src}"));
+    let text = line["value"].as_str().expect("a symbolic value");
+    let tex = line["latex"].as_str().expect("its LaTeX");
+    (text.to_string(), tex.to_string())
+}
+
+/// The last line `src` prints.
+fn last(src: &str) -> String {
+    common::printed(src)
+        .lines()
+        .last()
+        .unwrap_or_default()
+        .trim()
+        .to_string()
+}
+
+/// The top-level terms of a printed sum: its `+` and `-` outside
+/// parentheses, plus one.
+fn top_terms(text: &str) -> usize {
+    let (mut depth, mut n) = (0i32, 1);
+    let b = text.as_bytes();
+    for (i, c) in b.iter().enumerate() {
+        match c {
+            b'(' => depth += 1,
+            b')' => depth -= 1,
+            b'+' | b'-' if depth == 0 && i > 0 && b[i - 1] == b' ' => n += 1,
+            _ => {}
+        }
+    }
+    n
+}
+
+/// `entry` of `setup`, printed as text and as LaTeX, read back in the same
+/// session (where the same assumptions hold) and compared with `==`: both
+/// are the value. `names` binds the LaTeX names (`w_{1}` reads as `w1`).
+fn reads_back(setup: &str, entry: &str, names: &str) -> String {
+    let (text, tex) = shown(&format!("{setup}\nx = {entry}"), "x");
+    let src = format!("{setup}\n{names}\n{entry} == {text}");
+    assert_eq!(last(&src), "true", "text {text} is not {entry}\n{src}");
+    let back = latex::source(&tex).unwrap_or_else(|| panic!("LaTeX {tex} does not read"));
+    let src = format!("{setup}\n{names}\n{entry} == {back}");
+    assert_eq!(last(&src), "true", "LaTeX {tex} is not {entry}\n{src}");
+    text
+}
+
+const RODRIGUES: &str = "given t\ngiven w : vec3\nR = exp([w] t)";
+const W: &str = "w1 = w[1]\nw2 = w[2]\nw3 = w[3]";
+
+#[test]
+fn rodrigues_prints_the_books_eighteen_terms() {
+    let want = [
+        [
+            "cos(t) + w[1]^2 (1 - cos(t))",
+            "w[1] w[2] (1 - cos(t)) - w[3] sin(t)",
+            "w[1] w[3] (1 - cos(t)) + w[2] sin(t)",
+        ],
+        [
+            "w[1] w[2] (1 - cos(t)) + w[3] sin(t)",
+            "cos(t) + w[2]^2 (1 - cos(t))",
+            "w[2] w[3] (1 - cos(t)) - w[1] sin(t)",
+        ],
+        [
+            "w[1] w[3] (1 - cos(t)) - w[2] sin(t)",
+            "w[1] sin(t) + w[2] w[3] (1 - cos(t))",
+            "cos(t) + w[3]^2 (1 - cos(t))",
+        ],
+    ];
+    let mut terms = 0;
+    for (i, row) in want.iter().enumerate() {
+        for (j, cell) in row.iter().enumerate() {
+            let entry = format!("R[{}, {}]", i + 1, j + 1);
+            // the symmetric form: r33 in w[3], as the book, though the
+            // canonical form writes w[3]^2 as 1 - w[1]^2 - w[2]^2
+            assert_eq!(reads_back(RODRIGUES, &entry, W), *cell, "{entry}");
+            terms += top_terms(cell);
+            // Rot(w, θ) is the same rotation, printed alike
+            let rot = "given t\ngiven w : vec3\nR = Rot(w, t)";
+            assert_eq!(shown(&format!("{rot}\nx = {entry}"), "x").0, *cell);
+        }
+    }
+    assert_eq!(terms, 18);
+    // the shorthand prints the same shape
+    let short = common::run(&["--short", "-e", "given t\ngiven w : vec3\nexp([w] t)[3, 3]"]);
+    assert!(short.1.contains("ct + w[3]^2 (1 - ct)"), "{short:?}");
+}
+
+#[test]
+fn common_factors_stay_factored() {
+    let setup = "given s\ngiven r : vec3";
+    let text = reads_back(
+        setup,
+        "det(s*eye(3) - [r])",
+        "r1 = r[1]\nr2 = r[2]\nr3 = r[3]",
+    );
+    assert_eq!(text, "s (r[1]^2 + r[2]^2 + r[3]^2 + s^2)");
+    // integer content and a shared monomial, only where shorter
+    let setup = "given x, y";
+    for (entry, want) in [
+        ("-8 x^2 - 8 y^2", "-8 (x^2 + y^2)"),
+        ("x^2 + x^2 y", "x^2 (1 + y)"),
+        ("x/2 + y/2", "(1/2) (x + y)"),
+        ("(x + y)^2", "2 x y + x^2 + y^2"),
+        ("x + 2 y", "x + 2 y"),
+        ("2 x + 4 y", "2 x + 4 y"),
+        // no Horner nesting of a polynomial: x (1/5 + x) is no shorter
+        ("x/5 + x^2", "(1/5) x + x^2"),
+        ("(1 + x)^4", "1 + 4 x + 6 x^2 + 4 x^3 + x^4"),
+    ] {
+        assert_eq!(reads_back(setup, entry, ""), want, "{entry}");
+    }
+    // a long expansion stays one: symbols shared by some of its terms are
+    // not nested out of it (Horner's form of (a + … + f)^3 has fewer factors)
+    let setup = "given a, b, c, d, e, f";
+    let text = reads_back(setup, "(a + b + c + d + e + f)^3", "");
+    assert!(!text.contains('('), "{text}");
+    assert!(text.starts_with("6 a b c + 6 a b d"), "{text}");
+}
+
+#[test]
+fn a_square_denominator_prints_as_the_square() {
+    // Cayley's form (3.104)
+    let setup = "given r : vec3\nR = eye(3) + 4*(1 - dot(r,r))/(1 + dot(r,r))^2 * [r] + 8/(1+dot(r,r))^2 * [r]^2";
+    let names = "r1 = r[1]\nr2 = r[2]\nr3 = r[3]";
+    let d = "(1 + r[1]^2 + r[2]^2 + r[3]^2)^2";
+    let mut chars = 0;
+    for i in 1..=3 {
+        for j in 1..=3 {
+            let text = reads_back(setup, &format!("R[{i}, {j}]"), names);
+            assert!(text.ends_with(&format!("/{d}")), "{text}");
+            chars += text.chars().count();
+        }
+    }
+    assert_eq!(
+        shown(&format!("{setup}\nx = R[1, 1]"), "x").0,
+        format!("1 - 8 (r[2]^2 + r[3]^2)/{d}")
+    );
+    // 1,225 characters when every denominator was expanded
+    assert!(chars < 700, "{chars}");
+    // powers of other sums: a cube, a square of a trigonometric sum
+    let setup = "given a, b, t";
+    assert_eq!(reads_back(setup, "1/(1 + a b)^3", ""), "1/(1 + a b)^3");
+    assert_eq!(
+        reads_back(setup, "a/(1 + cos(t))^2", ""),
+        "a/(1 + cos(t))^2"
+    );
+}
+
+#[test]
+fn the_screw_exponential_groups_as_proposition_3_16() {
+    let setup = "given t\ngiven S : screw\nT = exp([S] t)";
+    let names = "S1 = S[1]\nS2 = S[2]\nS3 = S[3]\nS4 = S[4]\nS5 = S[5]\nS6 = S[6]";
+    let text = reads_back(setup, "T[1, 4]", names);
+    assert_eq!(
+        text,
+        "S[1] (S[1] S[4] + S[2] S[5] + S[3] S[6]) (t - sin(t)) + (S[2] S[6] - S[3] S[5]) (1 - cos(t)) + S[4] sin(t)"
+    );
+    let text = reads_back(setup, "T[2, 4]", names);
+    assert!(
+        text.contains("(S[3] S[4] - S[1] S[6]) (1 - cos(t))"),
+        "{text}"
+    );
+    assert_eq!(
+        reads_back(setup, "T[1, 1]", names),
+        "cos(t) + S[1]^2 (1 - cos(t))"
+    );
+}
+
+#[test]
+fn numeric_chains_keep_their_trigonometric_grouping() {
+    // no symbols shared: the shape is the trigonometric factors' alone
+    let src = "given t1, t2\nx = 0.425 cos(t1) + 0.392 cos(t1 + t2)";
+    assert_eq!(shown(src, "x").0, "0.425 cos(t1) + 0.392 cos(t1 + t2)");
+    let src = "given a, b, c\nx = sin(a) cos(c) + cos(b) cos(c) + sin(b)";
+    assert_eq!(shown(src, "x").0, "(sin(a) + cos(b)) cos(c) + sin(b)");
+}
