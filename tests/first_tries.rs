@@ -197,3 +197,20 @@ fn the_power_minus_one_of_a_transform_block() {
     assert_eq!(j[4]["value"], "inv([R, p; 0, 2])");
     assert_eq!(j[4]["kind"], "matrix");
 }
+
+/// `R R^T` of a given rotation prints `I` as `R inv(R)` does (Rᵀ = R⁻¹,
+/// Prop. 3.3), where the transposed pair meets inside a product; a
+/// transform's transpose is not its inverse, so `T T.T` stays.
+#[test]
+fn a_rotation_times_its_transpose_is_the_identity() {
+    let j = json(
+        "given R : SO3\ngiven R_ab : SO3\ngiven R_bc : SO3\ngiven T : SE3\nR R^T\nR.T R\n\
+         R_ab R_bc R_bc^T R_ab^T\nR_ab R_bc R_bc.T\nT T.T",
+    );
+    assert_eq!(j[0]["value"], "I", "{:?}", j[0]);
+    assert_eq!(j[1]["value"], "I", "{:?}", j[1]);
+    assert_eq!(j[2]["value"], "I", "{:?}", j[2]);
+    assert_eq!(j[2]["frames"], serde_json::json!(["a", "a"]), "{:?}", j[2]);
+    assert_eq!(j[3]["value"], "R_ab", "{:?}", j[3]);
+    assert_eq!(j[4]["value"], "T T.T", "{:?}", j[4]);
+}

@@ -30,8 +30,38 @@ pub(super) fn of_op(op: Op, args: &[&Value], kind: &Kind) -> Option<Sym> {
         (Kind::Vector(Some(3)), [Value::Sym(a), q]) if matches!(op, Op::Arith(BinOp::Mul)) => {
             point(a, &to_sym(q))
         }
+        (Kind::SO3 | Kind::SO2, [Value::Sym(a), Value::Sym(b)])
+            if matches!(op, Op::Arith(BinOp::Mul)) =>
+        {
+            rotations(a, b)
+        }
         _ => None,
     }
+}
+
+/// The product `a b` of two rotations (typed SO(3) or SO(2), so each
+/// factor of either is one) with `Xᵀ X` and `X Xᵀ` cancelled where they
+/// meet: Rᵀ = R⁻¹ (Prop. 3.3), so `R R^T` prints `I` as `R inv(R)` does.
+/// None when nothing cancels (the product is formed as usual).
+fn rotations(a: &Sym, b: &Sym) -> Option<Sym> {
+    let factors = |s: &Sym| match s {
+        Sym::Product(fs) => fs.clone(),
+        Sym::Identity => Vec::new(),
+        other => vec![other.clone()],
+    };
+    let (mut left, right) = (factors(a), factors(b));
+    let mut right = right.into_iter().peekable();
+    let mut cancelled = false;
+    while let (Some(x), Some(y)) = (left.last(), right.peek()) {
+        let transposes = |x: &Sym, y: &Sym| matches!(x, Sym::Transpose(i) if **i == *y);
+        if !(transposes(x, y) || transposes(y, x)) {
+            break;
+        }
+        left.pop();
+        right.next();
+        cancelled = true;
+    }
+    cancelled.then(|| Sym::product(left.into_iter().chain(right).collect()))
 }
 
 /// Whether `s` is the constant number `x` (the literal `0` or `1` of a
