@@ -108,8 +108,8 @@ fn exercise_3_34_prints_the_closed_form_of_exp_a_t() {
         [
             "A = [ 0,  1",
             "     -2, -3]  : 2×2 matrix",
-            "[-exp(-2 t) + 2 exp(-t),  -exp(-2 t) + exp(-t)",
-            " 2 exp(-2 t) - 2 exp(-t), 2 exp(-2 t) - exp(-t)]  : 2×2 matrix",
+            "[2 exp(-t) - exp(-2 t),   exp(-t) - exp(-2 t)",
+            " 2 (exp(-2 t) - exp(-t)), 2 exp(-2 t) - exp(-t)]  : 2×2 matrix",
         ]
     );
     assert!(check_closed_form(2, &[0, 1, -2, -3]));
@@ -341,7 +341,7 @@ fn exercises_33_and_34() {
     assert_eq!(
         lines[2..],
         [
-            "(x1 exp(-2 t) - x2 exp(-2 t) + x2 exp(-t), x2 exp(-t))  : 2-vector",
+            "(exp(-2 t) (x1 - x2) + x2 exp(-t), x2 exp(-t))  : 2-vector",
             "[exp(2 t) cos(t), -exp(2 t) sin(t)",
             " exp(2 t) sin(t), exp(2 t) cos(t)]  : 2×2 matrix",
         ]
