@@ -214,3 +214,16 @@ fn a_rotation_times_its_transpose_is_the_identity() {
     assert_eq!(j[3]["value"], "R_ab", "{:?}", j[3]);
     assert_eq!(j[4]["value"], "T T.T", "{:?}", j[4]);
 }
+
+/// The book's `TransInv` of a block transform is its closed form (3.64), as
+/// `inv` is: it printed the call `inv([R, p; 0, 1])`.
+#[test]
+fn trans_inv_of_a_block_is_the_books_inverse() {
+    let j = json(
+        "given R : SO3\ngiven p : vec3\nT = [R, p; 0, 1]\nTransInv(T)\nTransInv(T) == inv(T)\n\
+         TransInv(T) T",
+    );
+    assert_eq!(j[1]["value"], "[R.T, (-R.T) p; 0, 1]", "{:?}", j[1]);
+    assert_eq!(j[2]["value"], true, "{:?}", j[2]);
+    assert_eq!(j[3]["value"], "I", "{:?}", j[3]);
+}

@@ -18,7 +18,8 @@ use crate::values::value::{Sym, Value};
 pub(super) fn of_op(op: Op, args: &[&Value], kind: &Kind) -> Option<Sym> {
     let inverse = match (op, args) {
         (Op::Inverse, [_]) => true,
-        (Op::Call(b, _), [_]) => b.name == "inv",
+        // (the book's own name for it, 3.6: `TransInv`)
+        (Op::Call(b, _), [_]) => matches!(b.name, "inv" | "TransInv"),
         (Op::Arith(BinOp::Pow), [_, e]) => e.as_scalar() == Some(-1.0),
         _ => false,
     };
