@@ -43,18 +43,34 @@ impl Expr {
         Expr::apply(Func::Exp, x, f64::exp)
     }
 
-    /// e^{a}ᵐ e^{b}ⁿ = e^{m a + n b} in every monomial (the module's doc);
-    /// the expression unchanged when no monomial holds such a product.
-    pub(super) fn fold_exps(self) -> Expr {
-        if !self.terms.keys().any(may_fold) {
+    /// `self` with each monomial that `may` holds replaced by `fold` of it
+    /// and its coefficient, the others kept: the one walk of the product
+    /// folds ([`Expr::fold_exps`], [`Expr::fold_halves`]); `self` unchanged
+    /// when no monomial may fold.
+    pub(super) fn fold_terms(
+        self,
+        may: fn(&Mono) -> bool,
+        fold: impl Fn(Mono, Coef) -> Expr,
+    ) -> Expr {
+        if !self.terms.keys().any(may) {
             return self;
         }
         let mut out = Expr::zero();
         for (m, c) in self.terms {
-            if !may_fold(&m) {
+            if may(&m) {
+                for (m, c) in fold(m, c).terms {
+                    out.push(m, c);
+                }
+            } else {
                 out.push(m, c);
-                continue;
             }
+        }
+        out
+    }
+    /// e^{a}ᵐ e^{b}ⁿ = e^{m a + n b} in every monomial (the module's doc);
+    /// the expression unchanged when no monomial holds such a product.
+    pub(super) fn fold_exps(self) -> Expr {
+        self.fold_terms(may_fold, |m, c| {
             let mut rest: Mono = Vec::with_capacity(m.len());
             let mut arg = Expr::zero();
             for (v, e) in m {
@@ -69,9 +85,8 @@ impl Expr {
             t.push(rest, c);
             // (the product of t, which holds no exponential, with one call:
             // no further exponential fold)
-            out = out.add(&t.mul(&Expr::exp(&arg)));
-        }
-        out
+            t.mul(&Expr::exp(&arg))
+        })
     }
 }
 

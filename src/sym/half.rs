@@ -88,21 +88,7 @@ impl Expr {
     /// Products of sines and cosines of a half angle folded into its whole
     /// angle (module doc).
     pub(super) fn fold_halves(self) -> Expr {
-        if !self.terms.keys().any(may_fold) {
-            return self;
-        }
-        let mut out = Expr::zero();
-        for (m, c) in self.terms {
-            if !may_fold(&m) {
-                out.push(m, c);
-                continue;
-            }
-            let t = fold_mono(m, c);
-            for (m, c) in t.terms {
-                out.push(m, c);
-            }
-        }
-        out
+        self.fold_terms(may_fold, fold_mono)
     }
 }
 

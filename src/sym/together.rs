@@ -253,12 +253,10 @@ pub fn unhalved(p: &Expr, q: &Expr) -> Option<(Expr, Expr)> {
     Some((p.subst(&by), q.subst(&by)))
 }
 
-/// `e` over one denominator: every term times each kept reciprocal's sum
-/// to its highest power, that product of reciprocals written once, common
-/// factors cancelled (`1 + tan² t` is `1/cos² t`, `1/cos² t − 1` is
-/// `tan² t`); None when `e` has no reciprocal, one nested in another, or
-/// past [`MAX_TERMS`].
-pub fn over_one(e: &Expr) -> Option<Expr> {
+/// `e` = n/d split at its kept reciprocals: n, and d's reciprocals with
+/// their highest powers; None when `e` has none, when n still holds one
+/// (one nested in another), or past [`MAX_TERMS`].
+fn split(e: &Expr) -> Option<(Expr, Vec<(Var, i32)>)> {
     let mut top = Vec::new();
     powers(e, &mut top);
     top.retain(|(_, h)| *h > 0);
@@ -266,9 +264,16 @@ pub fn over_one(e: &Expr) -> Option<Expr> {
         return None;
     }
     let num = times(e, &top)?;
-    if num.has_recip() {
-        return None;
-    }
+    (!num.has_recip()).then_some((num, top))
+}
+
+/// `e` over one denominator: every term times each kept reciprocal's sum
+/// to its highest power, that product of reciprocals written once, common
+/// factors cancelled (`1 + tan² t` is `1/cos² t`, `1/cos² t − 1` is
+/// `tan² t`); None when `e` has no reciprocal, one nested in another, or
+/// past [`MAX_TERMS`].
+pub fn over_one(e: &Expr) -> Option<Expr> {
+    let (num, top) = split(e)?;
     let mut den = Expr::zero();
     let mut mono = top;
     mono.sort_by(|a, b| a.0.cmp(&b.0));
@@ -297,16 +302,7 @@ pub fn turned_term(m: &Mono, c: &Coef) -> Option<Expr> {
 /// None when `n` still holds a reciprocal (one nested in another), or
 /// past [`MAX_TERMS`].
 pub fn turned_over(e: &Expr) -> Option<Expr> {
-    let mut top = Vec::new();
-    powers(e, &mut top);
-    top.retain(|(_, h)| *h > 0);
-    if top.is_empty() {
-        return None;
-    }
-    let num = times(e, &top)?;
-    if num.has_recip() || num.is_zero() {
-        return None;
-    }
+    let (num, top) = split(e).filter(|(num, _)| !num.is_zero())?;
     let mut den = Expr::one();
     for (v, h) in &top {
         den = den.mul(&bounded_pow(&recip_of(v)?.args[0], *h)?);
