@@ -564,9 +564,10 @@ impl Interp<'_> {
             certified_turn: Some(crate::decide::turn::half_turn),
             certified_entries: Some(crate::decide::turn::entries),
         };
-        let exact = op.exact_of(&vals, &ty.kind);
-        let mut v = apply::call(b, vals, site)?;
-        v.set_call_exact(exact);
+        // (the recipe of the exact form keeps the arguments the call gives
+        // back, unchanged: no copy of them)
+        let (mut v, vals) = apply::call_keeping(b, vals, site)?;
+        v.set_call_exact(op.exact_of_owned(vals, &ty.kind));
         crate::decide::replay::not_finite_group(&v, b.name, span)?;
         let val = Some(v);
         Ok(Typed::new(refine(ty, &val), val))

@@ -494,6 +494,17 @@ pub struct Site<'w> {
 /// notes ([`Op::Call`]'s numeric function; the evaluator gives the call's
 /// [`Site`], the substitution of numbers into symbols none).
 pub fn call(b: &Builtin, vals: Vec<Value>, site: Site) -> Result<Value, Diagnostic> {
+    call_keeping(b, vals, site).map(|(v, _)| v)
+}
+
+/// [`call`], giving back the arguments as they were (a builtin only reads
+/// them): the recipe of the result's exact form keeps them, with no copy
+/// ([`Op::exact_of_owned`]).
+pub fn call_keeping(
+    b: &Builtin,
+    vals: Vec<Value>,
+    site: Site,
+) -> Result<(Value, Vec<Value>), Diagnostic> {
     let mut args = Args {
         name: b.name,
         signature: b.signature,
@@ -507,7 +518,7 @@ pub fn call(b: &Builtin, vals: Vec<Value>, site: Site) -> Result<Value, Diagnost
     };
     let v = (b.eval)(&mut args)?;
     crate::builtins::notes::after_call(&mut args, &v);
-    Ok(v)
+    Ok((v, args.vals))
 }
 
 /// [`call`] where the call stands nowhere (symbols re-evaluated): errors

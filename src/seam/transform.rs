@@ -231,7 +231,7 @@ fn unproven_transform(
     b: &crate::builtins::Builtin,
     called: &str,
     vals: &[Value],
-    kinds: &[Kind],
+    tys: &[crate::check::ty::Ty],
 ) -> Option<(usize, String)> {
     use crate::builtins::{Param, Typing};
     let wants = |i: usize| match (&b.typing, b.name) {
@@ -241,7 +241,8 @@ fn unproven_transform(
         _ => false,
     };
     let four = |k: &Kind| matches!(k, Kind::Matrix(Some(4), Some(4)));
-    vals.iter().zip(kinds).enumerate().find_map(|(i, (v, k))| {
+    vals.iter().zip(tys).enumerate().find_map(|(i, (v, t))| {
+        let k = &t.kind;
         // (a formula, numbers with symbols among them, waits for them: its
         // kind is decided from its entries, and its Ad is the arithmetic
         // of Definition 3.6 on them, trusting nothing; with numbers bound
@@ -272,8 +273,12 @@ pub fn known(
     span: crate::syntax::ast::Span,
 ) -> Result<(), crate::diagnostics::Diagnostic> {
     use crate::diagnostics::{Diagnostic, ErrorKind};
-    let kinds: Vec<Kind> = tys.iter().map(|t| t.kind).collect();
-    match unproven_transform(b, called, vals, &kinds) {
+    // (only a symbolic argument can be refused: numbers, the common case,
+    // are checked when the call runs)
+    if !vals.iter().any(|v| matches!(v, Value::Sym(_))) {
+        return Ok(());
+    }
+    match unproven_transform(b, called, vals, tys) {
         None => Ok(()),
         Some((i, message)) => {
             let at = args.get(i).map_or(span, |a| a.span);
