@@ -273,3 +273,24 @@ fn equality_is_the_same_with_or_without_a_symbol() {
         }
     }
 }
+
+/// A vector of numbers as typed (`(0.1, 0.2, 0.3)`, made at once without a
+/// value per entry: issue 40) is exact as its entries are: sums of its
+/// decimals are the decimals, its `[x]` is exact, and π or a literal with
+/// more digits than a float holds keeps its own exact form.
+#[test]
+fn a_vector_of_typed_numbers_is_exact() {
+    assert_eq!(
+        last("(0.1, 0.2, 0.3) + (0.2, 0.1, 0) == (0.3, 0.3, 0.3)"),
+        true
+    );
+    assert_eq!(last("(0.1, 0.2) + (0.2, 0.1) ≈ (0.3, 0.3)"), true);
+    assert_eq!(last("(0.1, pi) == (1/10, pi)"), true);
+    assert_eq!(last("(1, 3.14159265358979323) == (1, pi)"), false);
+    assert_eq!(last("2 * (0.1, 0.2, 0.3) == (1/5, 2/5, 3/5)"), true);
+    assert_eq!(
+        last("[(0.1, 0, 0)] == [0, 0, 0; 0, 0, -1/10; 0, 1/10, 0]"),
+        true
+    );
+    assert_eq!(last("v = (1, 2, 3, 4, 5, 6)\nv[6]"), 6.0);
+}

@@ -77,11 +77,46 @@ impl Interp<'_> {
     }
 
     pub(super) fn paren(&mut self, items: &[Expr], span: Span) -> Result<Typed, Diagnostic> {
+        if let Some(t) = self.typed_vector(items) {
+            return Ok(t);
+        }
         let mut ts = Vec::with_capacity(items.len());
         for i in items {
             ts.push(self.expr(i)?);
         }
         self.paren_of(ts, span)
+    }
+
+    /// `(1, 2, 3, 4, 5, 6)` run: a vector of numbers as typed, made at
+    /// once (what [`Interp::paren_of`] makes of the literals, without a
+    /// box for each); None for anything else (a literal that is π or has
+    /// more digits than a float holds, a name, checking).
+    fn typed_vector(&self, items: &[Expr]) -> Option<Typed> {
+        const MOST: usize = 36;
+        let n = items.len();
+        if !self.running() || !(2..=MOST).contains(&n) {
+            return None;
+        }
+        let mut xs = [0.0; MOST];
+        for (x, e) in xs.iter_mut().zip(items) {
+            let crate::syntax::ast::ExprKind::Number(typed) = e.kind else {
+                return None;
+            };
+            match self.literal(typed, e.span) {
+                Value::Num {
+                    exact: crate::values::exact::Exact::Typed,
+                    ..
+                } => *x = typed,
+                _ => return None,
+            }
+        }
+        let kind = Kind::Vector(Some(n));
+        let val = Value::Num {
+            kind,
+            m: crate::values::num::Num::vector(&xs[..n]),
+            exact: crate::values::exact::Exact::Typed,
+        };
+        Some(Typed::new(Ty::plain(kind), Some(val)))
     }
 
     /// `(a, b, c)` of checked parts: a vector of scalars, else a tuple.
@@ -211,13 +246,14 @@ impl Interp<'_> {
         if !self.running() {
             return Ok(Typed::new(ty, None));
         }
-        let numbers = matches!(t.val.as_deref(), Some(Value::Num { .. }));
-        let rows = [vec![t.val.map_or_else(|| Value::scalar(f64::NAN), |v| *v)]];
-        // (numbers, `[S]` of a screw axis: no formula or symbol to look for)
-        let v = if numbers {
-            apply::block_numeric(&rows)
-        } else {
-            apply::block(&rows).unwrap_or_else(|| apply::block_numeric(&rows))
+        // (numbers, `[S]` of a screw axis: no formula or symbol to look
+        // for, and no rows to make)
+        let v = match t.val.as_deref() {
+            Some(x @ Value::Num { .. }) => apply::bracket_numeric(x),
+            _ => {
+                let rows = [vec![t.val.map_or_else(|| Value::scalar(f64::NAN), |v| *v)]];
+                apply::block(&rows).unwrap_or_else(|| apply::block_numeric(&rows))
+            }
         };
         let val = Some(v.map_err(|m| op.failure(m, span))?);
         Ok(Typed::new(refine(ty, &val), val))

@@ -166,7 +166,7 @@ impl Interp<'_> {
     /// A number as typed, exact (LANGUAGE.md §3, §7): its decimals
     /// (`0.866` is 866/1000), or π where `pi` or `π` was written.
     #[inline]
-    fn literal(&self, x: f64, span: Span) -> Value {
+    pub(super) fn literal(&self, x: f64, span: Span) -> Value {
         let exact = if x == std::f64::consts::PI {
             self.pi_literal(span)
         } else if span.end - span.start > 15

@@ -464,6 +464,14 @@ pub fn block_numeric(rows: &[Vec<Value>]) -> Result<Value, OpError> {
     Ok(v)
 }
 
+/// `[x]` of one number ([`block_numeric`] of one entry, with no rows to
+/// make): `[S]` of a screw axis.
+pub fn bracket_numeric(x: &Value) -> Result<Value, OpError> {
+    let mut v = ops::bracket(x)?;
+    v.set_exact(Op::Block(&[1]).exact_of(std::slice::from_ref(x), &Kind::Unknown));
+    Ok(v)
+}
+
 /// `[ ... ]` over symbols: the bracket `[x]` of one entry, else a block.
 pub fn block_symbolic(rows: impl Iterator<Item = Vec<Sym>>) -> Sym {
     let mut rows: Vec<Vec<Sym>> = rows.collect();

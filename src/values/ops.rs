@@ -454,18 +454,24 @@ pub fn index(v: &Value, sels: &[Sel]) -> Result<Value, OpError> {
 /// `[ ... ]` after evaluation: the book's bracket for one 3- or 6-vector,
 /// a column vector for one row of numbers, MATLAB block concatenation
 /// otherwise (LANGUAGE.md §4).
+/// `[x]` of numbers: the so(3) or se(3) matrix of a 3- or 6-vector (3.30,
+/// (3.85)), else `x` itself ([`brackets`] of one entry).
+pub fn bracket(x: &Value) -> Result<Value, OpError> {
+    let (k, m) = num(x)?;
+    Ok(match m {
+        Num::V3(w) => Value::of(Kind::So3, crate::lie::so3::hat(w)),
+        Num::V6(v) => Value::of(Kind::Se3, se3::hat(v)),
+        _ => Value::Num {
+            kind: *k,
+            m: m.clone(),
+            exact: Default::default(),
+        },
+    })
+}
+
 pub fn brackets(rows: &[Vec<Value>]) -> Result<Value, OpError> {
     if rows.len() == 1 && rows[0].len() == 1 {
-        let (k, m) = num(&rows[0][0])?;
-        return Ok(match m {
-            Num::V3(w) => Value::of(Kind::So3, crate::lie::so3::hat(w)),
-            Num::V6(v) => Value::of(Kind::Se3, se3::hat(v)),
-            _ => Value::Num {
-                kind: *k,
-                m: m.clone(),
-                exact: Default::default(),
-            },
-        });
+        return bracket(&rows[0][0]);
     }
     let all_scalars = rows
         .iter()
