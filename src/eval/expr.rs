@@ -564,8 +564,7 @@ impl Interp<'_> {
             certified_turn: Some(crate::decide::turn::half_turn),
             certified_entries: Some(crate::decide::turn::entries),
         };
-        // (the recipe of the exact form keeps the arguments the call gives
-        // back, unchanged: no copy of them)
+        // (the exact form's recipe keeps the arguments given back: no copy)
         let (mut v, vals) = apply::call_keeping(b, vals, site)?;
         v.set_call_exact(op.exact_of_owned(vals, &ty.kind));
         crate::decide::replay::not_finite_group(&v, b.name, span)?;

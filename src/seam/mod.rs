@@ -10,6 +10,7 @@
 //! apply operations through it; it imports neither.
 
 pub mod apply;
+mod call;
 mod chain;
 pub(crate) mod exactness;
 pub(crate) mod operation;
