@@ -40,3 +40,60 @@ fn the_adjoint_of_an_exact_transform_carries_no_rounding_into_symbols() {
     );
     assert_eq!(out.lines().last(), Some("true"), "{out}{err}");
 }
+
+/// Exercise 3.28 over symbols: ω_b = R_sbᵀ ω_s, and back, R_sb ω_b = ω_s
+/// (Prop. 3.3: Rᵀ = R⁻¹), where the rotation and its transpose meet
+/// across a parenthesis; it could not decide.
+#[test]
+fn a_rotation_undoes_its_transpose_across_a_product() {
+    let pre = "given R_sb : SO3\ngiven w_s : vec3\nw_b = R_sb^T w_s\n";
+    assert_eq!(last(&format!("{pre}R_sb w_b == w_s")), "true");
+    assert_eq!(last(&format!("{pre}R_sb w_b")), "w_s  : 3-vector {s}");
+    assert_eq!(
+        last(&format!("{pre}R_sb^T (R_sb w_b)")),
+        "R_sb.T w_s  : 3-vector {b}"
+    );
+    // a transform's transpose is not its inverse: nothing cancels
+    let kept = last("given T : SE3\nq = T^T (1, 2, 3, 1)\nT q == (1, 2, 3, 1)");
+    assert!(kept.contains("=="), "{kept}");
+    // and the numbers bound later agree with the numbers typed first
+    let later = last(&format!(
+        "{pre}v = R_sb w_b\nR_sb = Rotx(0.3)\nw_s = (1, 2, 3)\nv"
+    ));
+    assert_eq!(later, "(1, 2, 3)  : 3-vector {s}");
+}
+
+/// The adjoint is a homomorphism, Ad_{T₁T₂} = Ad_{T₁} Ad_{T₂}, and the
+/// power of a wrench on a twist is the same in every frame (3.99):
+/// both were "cannot decide" over given transforms.
+#[test]
+fn adjoint_of_a_product_and_power_in_two_frames_are_decided() {
+    let pre = "given T1 : SE3\ngiven T2 : SE3\ngiven T3 : SE3\n";
+    for (src, want) in [
+        ("Ad(T1 T2) == Ad(T1) Ad(T2)", "true"),
+        ("Ad(T1 T2 T3) == Ad(T1) Ad(T2 T3)", "true"),
+        ("inv(Ad(T1 T2)) == Ad(inv(T2)) Ad(inv(T1))", "true"),
+    ] {
+        assert_eq!(last(&format!("{pre}{src}")), want, "{src}");
+    }
+    // the order matters: never true
+    let (out, err) = outputs(&format!("{pre}Ad(T1 T2) == Ad(T2) Ad(T1)"));
+    assert!(err.contains("cannot decide"), "{out}{err}");
+    let power = "given T_ab : SE3\ngiven V_a : twist\ngiven F_b : wrench\n\
+                 V_b = Ad(inv(T_ab)) V_a\nF_a = Ad(inv(T_ab)).T F_b\n";
+    assert_eq!(
+        last(&format!("{power}dot(V_a, F_a) == dot(V_b, F_b)")),
+        "true"
+    );
+    let (out, err) = outputs(&format!("{power}dot(V_a, F_a) == dot(V_b, 2 F_b)"));
+    assert!(err.contains("cannot decide"), "{out}{err}");
+    // with numbers bound later, both sides are the same number
+    let nums = "T_ab = [Rotz(0.4), (1, 2, 3); 0, 1]\nV_a = (1, 0, 2, 0, 1, 1)\n\
+                F_b = (0, 1, 1, 2, 0, 1)\n";
+    assert_eq!(
+        last(&format!(
+            "{power}d = dot(V_a, F_a) == dot(V_b, F_b)\n{nums}d"
+        )),
+        "true"
+    );
+}

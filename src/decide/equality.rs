@@ -119,11 +119,21 @@ pub fn symbolic_equal(a: &Sym, b: &Sym, _op: CmpOp) -> Option<bool> {
 }
 
 /// `s` with every inverse of an adjoint written as the adjoint of the
-/// inverse.
+/// inverse, and the adjoint of a product as the product of the adjoints
+/// (Ad is a homomorphism: `Ad(T1 T2) == Ad(T1) Ad(T2)` is true), and
+/// `dot(a, M y)` as `dot(Mᵀ a, y)`.
 fn adjoint_inverses(s: &Sym) -> Sym {
     use crate::values::symbolic::Role;
     let go = |x: &Sym| Box::new(adjoint_inverses(x));
     match s {
+        // (the inverse of an adjoint of a product: of the inverse, split)
+        Sym::Inv(x) if matches!(&**x, Sym::Call(f, args) if f.role == Role::Adjoint && args.len() == 1 && matches!(args[0], Sym::Product(_))) =>
+        {
+            let Sym::Call(f, args) = &**x else {
+                return s.clone();
+            };
+            adjoint_inverses(&Sym::Call(*f, vec![args[0].clone().inverse()]))
+        }
         Sym::Inv(x) => match adjoint_inverses(x) {
             // (a block [R, p; 0, 1] where Ad is defined is a transform:
             // its inverse in closed form, 3.64, as `inv` gives it)
@@ -134,6 +144,29 @@ fn adjoint_inverses(s: &Sym) -> Sym {
             }
             x => x.inverse(),
         },
+        // (Ad_{T₁T₂} = Ad_{T₁} Ad_{T₂}: the checker typed the argument a
+        // transform, so each factor of the product is one)
+        Sym::Call(f, args) if f.role == Role::Adjoint && args.len() == 1 => {
+            match adjoint_inverses(&args[0]) {
+                Sym::Product(xs) => {
+                    Sym::product(xs.into_iter().map(|x| Sym::Call(*f, vec![x])).collect())
+                }
+                x => Sym::Call(*f, vec![x]),
+            }
+        }
+        // (dot(a, M y) = dot(Mᵀ a, y): the matrices moved to the left, so
+        // the power of a wrench on a twist reads alike in either frame, 3.99)
+        Sym::Call(f, args) if f.name == "dot" && args.len() == 2 => {
+            let (a, b) = (adjoint_inverses(&args[0]), adjoint_inverses(&args[1]));
+            match b {
+                Sym::Product(mut fs) if fs.len() > 1 => {
+                    let y = fs.pop().unwrap_or(Sym::Identity);
+                    let moved = Sym::times(Sym::product(fs).transpose(), a);
+                    Sym::Call(*f, vec![moved, y])
+                }
+                b => Sym::Call(*f, vec![a, b]),
+            }
+        }
         Sym::Call(f, args) => Sym::Call(*f, args.iter().map(adjoint_inverses).collect()),
         Sym::Product(xs) => Sym::product(xs.iter().map(adjoint_inverses).collect()),
         Sym::Transpose(x) => Sym::Transpose(go(x)),

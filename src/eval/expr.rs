@@ -364,6 +364,13 @@ impl Interp<'_> {
             }
         };
         let val = match (l.val, r.val) {
+            // (R (Rᵀ w) is w: Prop. 3.3, where the left factor is typed a rotation)
+            (Some(a), Some(b))
+                if matches!(op, Op::Arith(BinOp::Mul))
+                    && let Some(v) = crate::seam::transform::rotation_times(&l.ty.kind, &a, &b) =>
+            {
+                Some(v)
+            }
             (Some(a), Some(b)) => Some(
                 op.apply_pair(a, b, &ty.kind)
                     .map_err(|m| op.failure(m, op_span))?,
