@@ -97,3 +97,43 @@ fn adjoint_of_a_product_and_power_in_two_frames_are_decided() {
         "true"
     );
 }
+
+/// The printed text of `src` over `given b, c, q, t`, and the numbers it
+/// and the value give at one point (as the differential test checks).
+fn printed_and_value(src: &str) -> (String, f64, f64) {
+    let decl = "given b, c, q, t\n";
+    let bind = "b = 0.3\nc = 1.7\nq = 0.2\nt = -0.4";
+    let (out, _) = outputs(&format!("{decl}x = {src}"));
+    let text = out.trim().trim_start_matches("x = ").to_string();
+    let number = |s: &str| {
+        let v = last(&format!("{decl}x = {s}\n{bind}\nx"));
+        v.parse::<f64>().unwrap_or(f64::NAN)
+    };
+    let (a, b) = (number(&text), number(src));
+    (text, a, b)
+}
+
+/// The random differential test's seed 7101884 (trial 18): the reciprocal
+/// of a sine cubed at an angle with π/6 in it printed `-8/(sin(…))^3`,
+/// eight times its value with the wrong sign (a perfect power taken with
+/// a root that was not real, printed as a real sine).
+#[test]
+fn a_reciprocal_of_a_trigonometric_cube_prints_its_value() {
+    for src in [
+        "1/sin(b + pi/6)^3",
+        "2/sin(b + pi/6)^3",
+        "1/cos(b + pi/3)^3",
+        "c/sin(-2*b + 2*t - q + 10*pi/12)^3",
+        "1/sin(b + pi/4)^3",
+        "1/(1 + cos(b))^3",
+        "1/sin(b)^3",
+    ] {
+        let (text, printed, value) = printed_and_value(src);
+        assert!(
+            (printed - value).abs() <= 1e-9 * value.abs().max(1.0),
+            "{src} printed {text}: {printed} against {value}"
+        );
+    }
+    // where the power is real it stays one power
+    assert_eq!(printed_and_value("1/(1 + cos(b))^3").0, "1/(1 + cos(b))^3");
+}
