@@ -137,3 +137,29 @@ fn a_reciprocal_of_a_trigonometric_cube_prints_its_value() {
     // where the power is real it stays one power
     assert_eq!(printed_and_value("1/(1 + cos(b))^3").0, "1/(1 + cos(b))^3");
 }
+
+/// Proposition 3.20 over a block with a symbolic rotation written out
+/// (`[Rotz(a), p; 0, 1]`): the inverse of its 6×6 adjoint is the adjoint
+/// of its inverse in closed form (it stayed the call `inv([…])` and `==`
+/// could not decide); a 6×6 that is not an adjoint keeps the call.
+#[test]
+fn the_inverse_of_a_written_out_adjoint_is_in_closed_form() {
+    let pre = "given a\nT = [Rotz(a), (1, 2, 3); 0, 1]\n";
+    assert_eq!(last(&format!("{pre}inv(Ad(T)) == Ad(inv(T))")), "true");
+    assert_eq!(last(&format!("{pre}inv(Ad(T).T) == Ad(inv(T)).T")), "true");
+    let (out, _) = outputs(&format!("{pre}inv(Ad(T)) Ad(T)"));
+    assert!(
+        out.ends_with("[1, 0, 0, 0, 0, 0\n 0, 1, 0, 0, 0, 0\n 0, 0, 1, 0, 0, 0\n 0, 0, 0, 1, 0, 0\n 0, 0, 0, 0, 1, 0\n 0, 0, 0, 0, 0, 1]  : adjoint\n"),
+        "{out}"
+    );
+    let g = "given a\nG = [2*Rotz(a), (1, 2, 3); 0, 0, 0, 1]\ninv(Ad(G)) == Ad(inv(G))";
+    let (out, err) = outputs(g);
+    assert!(
+        !out.ends_with("true\n") && err.contains("cannot decide"),
+        "{out}{err}"
+    );
+    // with the number bound later, the entries are the numbers typed first
+    let later = last(&format!("{pre}X = inv(Ad(T))\na = 0.7\nX[4, 1]"));
+    let first = last("a = 0.7\nT = [Rotz(a), (1, 2, 3); 0, 1]\nX = inv(Ad(T))\nX[4, 1]");
+    assert_eq!(later, first);
+}
