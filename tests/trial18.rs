@@ -163,3 +163,38 @@ fn the_inverse_of_a_written_out_adjoint_is_in_closed_form() {
     let first = last("a = 0.7\nT = [Rotz(a), (1, 2, 3); 0, 1]\nX = inv(Ad(T))\nX[4, 1]");
     assert_eq!(later, first);
 }
+
+/// What a `given` kind says is used (Prop. 3.2, 3.3; §3.2.3.1): the
+/// transpose of a rotation is its inverse, the transpose of an so(3)
+/// matrix its negative, a rotation's determinant 1, an so(3) trace 0 and
+/// the trace of the identity a product leaves its size. Each was "cannot
+/// decide" or printed the call (`trace(I)`).
+#[test]
+fn what_a_given_kind_says_decides() {
+    let pre = "given R : SO3\ngiven R2 : SO3\ngiven W : so3\ngiven T : SE3\n";
+    for (src, want) in [
+        ("inv(R) == R^T", "true"),
+        ("R^T R R^T == inv(R)", "true"),
+        ("inv(R R2) == R2^T R^T", "true"),
+        ("W^T == -W", "true"),
+        ("det(R)", "1"),
+        ("det(R) == 1", "true"),
+        ("det(T)", "1"),
+        ("det(T.R)", "1"),
+        ("trace(W)", "0"),
+        ("trace(R^T R)", "3"),
+        ("trace(inv(T) T)", "4"),
+    ] {
+        assert_eq!(last(&format!("{pre}{src}")), want, "{src}");
+    }
+    // no more than the kind says: these stay undecided
+    for src in ["R^T == R", "W^T == W", "T^T == inv(T)", "det(W) == 0"] {
+        let (out, err) = outputs(&format!("{pre}{src}"));
+        assert!(
+            !out.ends_with("true\n") && err.contains("cannot decide"),
+            "{src}: {out}{err}"
+        );
+    }
+    // numbers bound later agree with numbers typed first
+    assert_eq!(last(&format!("{pre}d = det(R)\nR = Rotz(0.3)\nd")), "1");
+}

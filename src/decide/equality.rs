@@ -326,3 +326,34 @@ pub fn largest_difference(a: &Value, b: &Value) -> Option<(f64, usize, usize)> {
     }
     Some(best)
 }
+
+/// `s` with what the kinds of its `given` names say written out
+/// (LANGUAGE.md §7), for `==` over trees the structure alone cannot
+/// settle: the transpose of a rotation is its inverse (Rᵀ = R⁻¹, Prop. 3.3,
+/// so products cancel it: `inv(R) == R^T`, `R^T R R^T == R^T`), and the
+/// transpose of an so(3) or so(2) matrix its negative (`W^T == -W`).
+/// `kind_of` gives the kind of a `given` name, None for any other.
+pub fn with_kinds(s: &Sym, kind_of: &dyn Fn(&str) -> Option<Kind>) -> Sym {
+    let go = |x: &Sym| with_kinds(x, kind_of);
+    match s {
+        Sym::Transpose(x) => match &**x {
+            Sym::Name(n) if matches!(kind_of(n), Some(Kind::SO3 | Kind::SO2)) => {
+                Sym::Name(n.clone()).inverse()
+            }
+            Sym::Name(n) if matches!(kind_of(n), Some(Kind::So3 | Kind::So2)) => {
+                Sym::Neg(Box::new(Sym::Name(n.clone())))
+            }
+            _ => go(x).transpose(),
+        },
+        Sym::Product(xs) => Sym::product(xs.iter().map(go).collect()),
+        Sym::Inv(x) => go(x).inverse(),
+        Sym::Neg(x) => match go(x) {
+            Sym::Neg(y) => *y,
+            y => Sym::Neg(Box::new(y)),
+        },
+        Sym::Add(x, y) => Sym::Add(Box::new(go(x)), Box::new(go(y))),
+        Sym::Sub(x, y) => Sym::Sub(Box::new(go(x)), Box::new(go(y))),
+        Sym::Call(f, args) => Sym::Call(*f, args.iter().map(go).collect()),
+        other => other.clone(),
+    }
+}

@@ -537,6 +537,10 @@ impl Interp<'_> {
             .iter()
             .any(|v| matches!(v, Value::Sym(_) | Value::Formula { .. }))
         {
+            // (det of a given rotation is 1, trace of a given so(3) is 0)
+            if let Some(v) = builtins::known_by_kind(b.name, &vals, &self.env.arg_tys[base..]) {
+                return Ok(Typed::new(ty, Some(v)));
+            }
             let refs: Vec<&Value> = vals.iter().collect();
             // (subs with a number replays how its operand was made, §7)
             let subs = (b.name == "subs")
