@@ -198,3 +198,20 @@ fn what_a_given_kind_says_decides() {
     // numbers bound later agree with numbers typed first
     assert_eq!(last(&format!("{pre}d = det(R)\nR = Rotz(0.3)\nd")), "1");
 }
+
+/// Exercises 3.19, 3.22 and 3.23 move at angles ω t, products of two
+/// symbols: `simplify` folds sin²(ω t) + cos²(ω t) to 1 as it does for
+/// a plain angle (the canonical form, which `==` already used to prove
+/// it, kept the sum over the product angle).
+#[test]
+fn simplify_folds_the_pythagorean_identity_at_a_product_angle() {
+    let pre = "given t, w, r\n";
+    for (src, want) in [
+        ("simplify(r (sin(t w)^2 + cos(t w)^2))", "r"),
+        ("simplify(sin(t w)^2 + cos(t w)^2)", "1"),
+        ("simplify(sin(sqrt(2) t)^2 + cos(sqrt(2) t)^2 + r)", "1 + r"),
+        ("simplify(r cos(t w)^2 + r sin(t w)^2 - r)", "0"),
+    ] {
+        assert_eq!(last(&format!("{pre}{src}")), want, "{src}");
+    }
+}
