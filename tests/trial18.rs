@@ -215,3 +215,23 @@ fn simplify_folds_the_pythagorean_identity_at_a_product_angle() {
         assert_eq!(last(&format!("{pre}{src}")), want, "{src}");
     }
 }
+
+/// A screw axis typed as the book reads it, `(0, 0, 1, -cross(w, q))`,
+/// is a tuple, not a 6-vector: the error of `[S]` names the spelling that
+/// is (a pair of 3-vectors), and that spelling gives the revolute joint
+/// through q (§3.3.2.2), which leaves q where it is.
+#[test]
+fn a_screw_typed_as_a_tuple_gets_the_spelling_of_the_six_vector() {
+    let pre = "q = (1, 1, 0)\ngiven θ\n";
+    let err = common::error(&format!(
+        "{pre}S = (0, 0, 1, -cross((0, 0, 1), q))\nexp([S] θ)"
+    ));
+    assert!(err.contains("cannot go inside [ ]"), "{err}");
+    assert!(err.contains("((0, 0, 1), v)"), "{err}");
+    assert_eq!(
+        last(&format!(
+            "{pre}S = ((0, 0, 1), -cross((0, 0, 1), q))\nT = exp([S] θ)\nT (1, 1, 0)"
+        )),
+        "(1, 1, 0)  : 3-vector"
+    );
+}
