@@ -235,3 +235,28 @@ fn a_screw_typed_as_a_tuple_gets_the_spelling_of_the_six_vector() {
         "(1, 1, 0)  : 3-vector"
     );
 }
+
+/// The bracket of a rotated vector and of a moved twist (3.30 and
+/// Definition 3.6), typed with the product the first-try error names:
+/// `R [w] R^T == [R * w]` and `T [V] inv(T) == [Ad(T) * V]` are true
+/// (they could not decide); the bracket of a vector that was not rotated
+/// stays undecided.
+#[test]
+fn brackets_of_rotated_vectors_and_moved_twists_are_conjugates() {
+    let pre = "given R : SO3\ngiven R2 : SO3\ngiven w : vec3\ngiven T : SE3\ngiven V : twist\n";
+    for src in [
+        "R [w] R^T == [R * w]",
+        "[R * w] == R [w] inv(R)",
+        "R R2 [w] R2^T R^T == [R * R2 * w]",
+        "T [V] inv(T) == [Ad(T) * V]",
+    ] {
+        assert_eq!(last(&format!("{pre}{src}")), "true", "{src}");
+    }
+    for src in ["[R * w] == [w]", "[Ad(T) * V] == T [V] T^T"] {
+        let (out, err) = outputs(&format!("{pre}{src}"));
+        assert!(
+            !out.ends_with("true\n") && err.contains("cannot decide"),
+            "{src}: {out}{err}"
+        );
+    }
+}

@@ -331,8 +331,11 @@ pub fn largest_difference(a: &Value, b: &Value) -> Option<(f64, usize, usize)> {
 /// (LANGUAGE.md §7), for `==` over trees the structure alone cannot
 /// settle: the transpose of a rotation is its inverse (Rᵀ = R⁻¹, Prop. 3.3,
 /// so products cancel it: `inv(R) == R^T`, `R^T R R^T == R^T`), and the
-/// transpose of an so(3) or so(2) matrix its negative (`W^T == -W`).
-/// `kind_of` gives the kind of a `given` name, None for any other.
+/// transpose of an so(3) or so(2) matrix its negative (`W^T == -W`),
+/// and a bracket of a rotated vector or a moved twist the conjugate of
+/// the bracket: \[Rω\] = R\[ω\]Rᵀ (3.30), \[Ad_T V\] = T\[V\]T⁻¹
+/// (Definition 3.6). `kind_of` gives the kind of a `given` name, None for
+/// any other.
 pub fn with_kinds(s: &Sym, kind_of: &dyn Fn(&str) -> Option<Kind>) -> Sym {
     let go = |x: &Sym| with_kinds(x, kind_of);
     match s {
@@ -346,6 +349,7 @@ pub fn with_kinds(s: &Sym, kind_of: &dyn Fn(&str) -> Option<Kind>) -> Sym {
             _ => go(x).transpose(),
         },
         Sym::Product(xs) => Sym::product(xs.iter().map(go).collect()),
+        Sym::Bracket(x) => bracket(go(x), kind_of),
         Sym::Inv(x) => go(x).inverse(),
         Sym::Neg(x) => match go(x) {
             Sym::Neg(y) => *y,
@@ -356,4 +360,27 @@ pub fn with_kinds(s: &Sym, kind_of: &dyn Fn(&str) -> Option<Kind>) -> Sym {
         Sym::Call(f, args) => Sym::Call(*f, args.iter().map(go).collect()),
         other => other.clone(),
     }
+}
+
+/// \[x\] of `x` (already with the kinds written out, [`with_kinds`]):
+/// \[R y\] = R\[y\]R⁻¹ for a rotation R (a `given` SO(3) or its
+/// inverse, 3.30) and \[Ad_T y\] = T\[y\]T⁻¹ (Definition 3.6), factor by
+/// factor; else the bracket as it is.
+fn bracket(x: Sym, kind_of: &dyn Fn(&str) -> Option<Kind>) -> Sym {
+    use crate::values::symbolic::Role;
+    let rotation = |s: &Sym| match s {
+        Sym::Name(n) => matches!(kind_of(n), Some(Kind::SO3)),
+        Sym::Inv(y) => matches!(&**y, Sym::Name(n) if matches!(kind_of(n), Some(Kind::SO3))),
+        _ => false,
+    };
+    let Sym::Product(fs) = &x else {
+        return Sym::Bracket(Box::new(x));
+    };
+    let by = match fs.first() {
+        Some(Sym::Call(f, a)) if f.role == Role::Adjoint && a.len() == 1 => a[0].clone(),
+        Some(r) if rotation(r) => r.clone(),
+        _ => return Sym::Bracket(Box::new(x)),
+    };
+    let rest = bracket(Sym::product(fs[1..].to_vec()), kind_of);
+    Sym::product(vec![by.clone(), rest, by.inverse()])
 }
