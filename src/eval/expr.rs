@@ -364,13 +364,6 @@ impl Interp<'_> {
             }
         };
         let val = match (l.val, r.val) {
-            // (R (Rᵀ w) is w: Prop. 3.3, where the left factor is typed a rotation)
-            (Some(a), Some(b))
-                if matches!(op, Op::Arith(BinOp::Mul))
-                    && let Some(v) = crate::seam::transform::rotation_times(&l.ty.kind, &a, &b) =>
-            {
-                Some(v)
-            }
             (Some(a), Some(b)) => Some(
                 op.apply_pair(a, b, &ty.kind)
                     .map_err(|m| op.failure(m, op_span))?,
@@ -537,10 +530,6 @@ impl Interp<'_> {
             .iter()
             .any(|v| matches!(v, Value::Sym(_) | Value::Formula { .. }))
         {
-            // (det of a given rotation is 1, trace of a given so(3) is 0)
-            if let Some(v) = builtins::known_by_kind(b.name, &vals, &self.env.arg_tys[base..]) {
-                return Ok(Typed::new(ty, Some(v)));
-            }
             let refs: Vec<&Value> = vals.iter().collect();
             // (subs with a number replays how its operand was made, §7)
             let subs = (b.name == "subs")

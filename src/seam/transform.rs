@@ -40,20 +40,6 @@ pub(super) fn of_op(op: Op, args: &[&Value], kind: &Kind) -> Option<Sym> {
     }
 }
 
-/// `a b` where `a` is typed a rotation (SO(3) or SO(2), `left`) and `b`
-/// is symbolic, with `Xᵀ X` and `X Xᵀ` cancelled where the factors meet
-/// as in a product of two rotations ([`rotations`]): `R (Rᵀ w)` is `w`
-/// (Prop. 3.3), so `w_b = R_sb^T w_s; R_sb w_b == w_s` is true (it could
-/// not decide). The meeting factor of `a` is a rotation (a product typed
-/// SO(3) has rotations for factors), so `b`'s leading `Xᵀ` is its inverse.
-/// None when nothing cancels or `a` is not a rotation.
-pub fn rotation_times(left: &Kind, a: &Value, b: &Value) -> Option<Value> {
-    match (left, a, b) {
-        (Kind::SO3 | Kind::SO2, Value::Sym(x), Value::Sym(y)) => rotations(x, y).map(Value::Sym),
-        _ => None,
-    }
-}
-
 /// The product `a b` of two rotations (typed SO(3) or SO(2), so each
 /// factor of either is one) with `Xᵀ X` and `X Xᵀ` cancelled where they
 /// meet: Rᵀ = R⁻¹ (Prop. 3.3), so `R R^T` prints `I` as `R inv(R)` does.
