@@ -191,6 +191,23 @@ fn what_a_given_kind_says_decides() {
             "{src}: {out}{err}"
         );
     }
+    // a rotation keeps inner products: dot(R u, R v) = dot(u, v)
+    let dots = "given u, v : vec3\n";
+    assert_eq!(
+        last(&format!("{pre}{dots}dot(R u, R v) == dot(u, v)")),
+        "true"
+    );
+    assert_eq!(
+        last(&format!("{pre}{dots}dot(R R2 u, R R2 v) == dot(u, v)")),
+        "true"
+    );
+    for src in ["dot(R u, R2 v) == dot(u, v)", "dot(u, R v) == dot(R u, v)"] {
+        let (out, err) = outputs(&format!("{pre}{dots}{src}"));
+        assert!(
+            !out.ends_with("true\n") && err.contains("cannot decide"),
+            "{src}: {out}{err}"
+        );
+    }
     // numbers bound later agree with numbers typed first
     assert_eq!(last(&format!("{pre}d = det(R)\nR = Rotz(0.3)\nd")), "1");
 }

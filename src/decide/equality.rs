@@ -350,6 +350,18 @@ pub fn with_kinds(s: &Sym, kind_of: &dyn Fn(&str) -> Option<Kind>) -> Sym {
         },
         Sym::Product(xs) => Sym::product(xs.iter().map(go).collect()),
         Sym::Bracket(x) => bracket(go(x), kind_of),
+        // (dot(a, M y) = dot(Mᵀ a, y), then Rᵀ R cancels: dot(R u, R v)
+        // is dot(u, v))
+        Sym::Call(f, args) if f.name == "dot" && args.len() == 2 => {
+            match (go(&args[0]), go(&args[1])) {
+                (a, Sym::Product(mut fs)) if fs.len() > 1 => {
+                    let y = fs.pop().unwrap_or(Sym::Identity);
+                    let moved = go(&Sym::times(Sym::product(fs).transpose(), a));
+                    Sym::Call(*f, vec![moved, y])
+                }
+                (a, b) => Sym::Call(*f, vec![a, b]),
+            }
+        }
         Sym::Inv(x) => go(x).inverse(),
         Sym::Neg(x) => match go(x) {
             Sym::Neg(y) => *y,
