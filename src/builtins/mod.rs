@@ -27,7 +27,7 @@ use std::sync::OnceLock;
 
 pub use args::{ArgError, Args, Spans};
 pub use table_calculus::constant_derivative;
-pub use table_sym::{branch_note, branch_of, eval_symbolic};
+pub use table_sym::{branch_note, branch_of, eval_symbolic, known_by_kind};
 
 use crate::check::ty::{Frames, Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};

@@ -437,3 +437,31 @@ fn exp(m: &Mat, kind: &Kind) -> Out {
         _ => None,
     }
 }
+
+/// A call on a `given` matrix whose value its kind decides (LANGUAGE.md
+/// §7): `det` of a rotation or transform is 1 (Prop. 3.2; the SE(3)
+/// determinant is its rotation's), `trace` of an so(3) or so(2) matrix is
+/// 0 (skew-symmetric), `trace(I)` is n for the n×n identity a product of
+/// inverses leaves (`trace(R^T R)` printed `trace(I)`). Given the
+/// builtin's name, its arguments and their kinds; None for anything else.
+pub fn known_by_kind(name: &str, args: &[Value], tys: &[crate::check::ty::Ty]) -> Option<Value> {
+    let ([Value::Sym(s)], [ty]) = (args, tys) else {
+        return None;
+    };
+    let k = &ty.kind;
+    use crate::values::symbolic::Tree;
+    let x = match (name, k, s) {
+        ("det", Kind::SO3 | Kind::SO2 | Kind::SE3 | Kind::SE2, _) => 1.0,
+        ("trace", Kind::So3 | Kind::So2, _) => 0.0,
+        ("trace", _, Tree::Identity) => match k.shape()? {
+            (Some(n), Some(m)) if n == m => n as f64,
+            _ => return None,
+        },
+        _ => return None,
+    };
+    Some(Value::Num {
+        kind: Kind::Scalar,
+        m: crate::values::num::Num::Scalar(x),
+        exact: crate::values::exact::Exact::Typed,
+    })
+}

@@ -119,11 +119,21 @@ pub fn symbolic_equal(a: &Sym, b: &Sym, _op: CmpOp) -> Option<bool> {
 }
 
 /// `s` with every inverse of an adjoint written as the adjoint of the
-/// inverse.
+/// inverse, and the adjoint of a product as the product of the adjoints
+/// (Ad is a homomorphism: `Ad(T1 T2) == Ad(T1) Ad(T2)` is true), and
+/// `dot(a, M y)` as `dot(Mᵀ a, y)`.
 fn adjoint_inverses(s: &Sym) -> Sym {
     use crate::values::symbolic::Role;
     let go = |x: &Sym| Box::new(adjoint_inverses(x));
     match s {
+        // (the inverse of an adjoint of a product: of the inverse, split)
+        Sym::Inv(x) if matches!(&**x, Sym::Call(f, args) if f.role == Role::Adjoint && args.len() == 1 && matches!(args[0], Sym::Product(_))) =>
+        {
+            let Sym::Call(f, args) = &**x else {
+                return s.clone();
+            };
+            adjoint_inverses(&Sym::Call(*f, vec![args[0].clone().inverse()]))
+        }
         Sym::Inv(x) => match adjoint_inverses(x) {
             // (a block [R, p; 0, 1] where Ad is defined is a transform:
             // its inverse in closed form, 3.64, as `inv` gives it)
@@ -134,6 +144,29 @@ fn adjoint_inverses(s: &Sym) -> Sym {
             }
             x => x.inverse(),
         },
+        // (Ad_{T₁T₂} = Ad_{T₁} Ad_{T₂}: the checker typed the argument a
+        // transform, so each factor of the product is one)
+        Sym::Call(f, args) if f.role == Role::Adjoint && args.len() == 1 => {
+            match adjoint_inverses(&args[0]) {
+                Sym::Product(xs) => {
+                    Sym::product(xs.into_iter().map(|x| Sym::Call(*f, vec![x])).collect())
+                }
+                x => Sym::Call(*f, vec![x]),
+            }
+        }
+        // (dot(a, M y) = dot(Mᵀ a, y): the matrices moved to the left, so
+        // the power of a wrench on a twist reads alike in either frame, 3.99)
+        Sym::Call(f, args) if f.name == "dot" && args.len() == 2 => {
+            let (a, b) = (adjoint_inverses(&args[0]), adjoint_inverses(&args[1]));
+            match b {
+                Sym::Product(mut fs) if fs.len() > 1 => {
+                    let y = fs.pop().unwrap_or(Sym::Identity);
+                    let moved = Sym::times(Sym::product(fs).transpose(), a);
+                    Sym::Call(*f, vec![moved, y])
+                }
+                b => Sym::Call(*f, vec![a, b]),
+            }
+        }
         Sym::Call(f, args) => Sym::Call(*f, args.iter().map(adjoint_inverses).collect()),
         Sym::Product(xs) => Sym::product(xs.iter().map(adjoint_inverses).collect()),
         Sym::Transpose(x) => Sym::Transpose(go(x)),
@@ -292,4 +325,74 @@ pub fn largest_difference(a: &Value, b: &Value) -> Option<(f64, usize, usize)> {
         }
     }
     Some(best)
+}
+
+/// `s` with what the kinds of its `given` names say written out
+/// (LANGUAGE.md §7), for `==` over trees the structure alone cannot
+/// settle: the transpose of a rotation is its inverse (Rᵀ = R⁻¹, Prop. 3.3,
+/// so products cancel it: `inv(R) == R^T`, `R^T R R^T == R^T`), and the
+/// transpose of an so(3) or so(2) matrix its negative (`W^T == -W`),
+/// and a bracket of a rotated vector or a moved twist the conjugate of
+/// the bracket: \[Rω\] = R\[ω\]Rᵀ (3.30), \[Ad_T V\] = T\[V\]T⁻¹
+/// (Definition 3.6). `kind_of` gives the kind of a `given` name, None for
+/// any other.
+pub fn with_kinds(s: &Sym, kind_of: &dyn Fn(&str) -> Option<Kind>) -> Sym {
+    let go = |x: &Sym| with_kinds(x, kind_of);
+    match s {
+        Sym::Transpose(x) => match &**x {
+            Sym::Name(n) if matches!(kind_of(n), Some(Kind::SO3 | Kind::SO2)) => {
+                Sym::Name(n.clone()).inverse()
+            }
+            Sym::Name(n) if matches!(kind_of(n), Some(Kind::So3 | Kind::So2)) => {
+                Sym::Neg(Box::new(Sym::Name(n.clone())))
+            }
+            _ => go(x).transpose(),
+        },
+        Sym::Product(xs) => Sym::product(xs.iter().map(go).collect()),
+        Sym::Bracket(x) => bracket(go(x), kind_of),
+        // (dot(a, M y) = dot(Mᵀ a, y), then Rᵀ R cancels: dot(R u, R v)
+        // is dot(u, v))
+        Sym::Call(f, args) if f.name == "dot" && args.len() == 2 => {
+            match (go(&args[0]), go(&args[1])) {
+                (a, Sym::Product(mut fs)) if fs.len() > 1 => {
+                    let y = fs.pop().unwrap_or(Sym::Identity);
+                    let moved = go(&Sym::times(Sym::product(fs).transpose(), a));
+                    Sym::Call(*f, vec![moved, y])
+                }
+                (a, b) => Sym::Call(*f, vec![a, b]),
+            }
+        }
+        Sym::Inv(x) => go(x).inverse(),
+        Sym::Neg(x) => match go(x) {
+            Sym::Neg(y) => *y,
+            y => Sym::Neg(Box::new(y)),
+        },
+        Sym::Add(x, y) => Sym::Add(Box::new(go(x)), Box::new(go(y))),
+        Sym::Sub(x, y) => Sym::Sub(Box::new(go(x)), Box::new(go(y))),
+        Sym::Call(f, args) => Sym::Call(*f, args.iter().map(go).collect()),
+        other => other.clone(),
+    }
+}
+
+/// \[x\] of `x` (already with the kinds written out, [`with_kinds`]):
+/// \[R y\] = R\[y\]R⁻¹ for a rotation R (a `given` SO(3) or its
+/// inverse, 3.30) and \[Ad_T y\] = T\[y\]T⁻¹ (Definition 3.6), factor by
+/// factor; else the bracket as it is.
+fn bracket(x: Sym, kind_of: &dyn Fn(&str) -> Option<Kind>) -> Sym {
+    use crate::values::symbolic::Role;
+    let rotation = |s: &Sym| match s {
+        Sym::Name(n) => matches!(kind_of(n), Some(Kind::SO3)),
+        Sym::Inv(y) => matches!(&**y, Sym::Name(n) if matches!(kind_of(n), Some(Kind::SO3))),
+        _ => false,
+    };
+    let Sym::Product(fs) = &x else {
+        return Sym::Bracket(Box::new(x));
+    };
+    let by = match fs.first() {
+        Some(Sym::Call(f, a)) if f.role == Role::Adjoint && a.len() == 1 => a[0].clone(),
+        Some(r) if rotation(r) => r.clone(),
+        _ => return Sym::Bracket(Box::new(x)),
+    };
+    let rest = bracket(Sym::product(fs[1..].to_vec()), kind_of);
+    Sym::product(vec![by.clone(), rest, by.inverse()])
 }

@@ -89,6 +89,33 @@ impl Interp<'_> {
     }
 }
 
+impl Interp<'_> {
+    /// [`equal`], and where it cannot decide two trees over `given`
+    /// matrices, the same with what their names' kinds say written out
+    /// ([`crate::decide::equality::with_kinds`]: `inv(R) == R^T` for a
+    /// rotation R, `W^T == -W` for W in so(3)).
+    fn equal_by_kinds(&self, a: &Value, b: &Value, op: CmpOp) -> Result<Option<bool>, String> {
+        let first = equal(a, b, op);
+        if !matches!(first, Ok(None))
+            || op.is_order()
+            || !(matches!(a, Value::Sym(_)) || matches!(b, Value::Sym(_)))
+        {
+            return first;
+        }
+        let kind_of = |n: &str| self.env.get(n).filter(|b| b.symbolic).map(|b| b.ty.kind);
+        let canon = |v: &Value| {
+            Value::Sym(crate::decide::equality::with_kinds(
+                &crate::seam::apply::to_sym(v),
+                &kind_of,
+            ))
+        };
+        match equal(&canon(a), &canon(b), op) {
+            Ok(Some(true)) => Ok(Some(true)),
+            _ => first,
+        }
+    }
+}
+
 /// True when both sides are numbers (no symbol to wait for).
 fn numbers(a: &Value, b: &Value) -> bool {
     matches!(a, Value::Num { .. }) && matches!(b, Value::Num { .. })
@@ -259,7 +286,7 @@ impl Interp<'_> {
         let verdict = match (l.val.as_deref(), r.val.as_deref()) {
             (Some(a), Some(b)) => match self
                 .lowered_equal(a, b, op, op_span)
-                .unwrap_or_else(|| equal(a, b, op))
+                .unwrap_or_else(|| self.equal_by_kinds(a, b, op))
             {
                 // (a verdict over symbols that rests on a number with no
                 // exact form is found at points: `crate::decide::witness`)

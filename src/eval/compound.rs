@@ -177,11 +177,7 @@ impl Interp<'_> {
             }
             for (t, e) in tr.iter().zip(row.iter()) {
                 if t.ty.kind.shape().is_none() {
-                    return Err(Diagnostic::error(
-                        ErrorKind::Type,
-                        e.span,
-                        format!("a {} cannot go inside [ ]", t.ty.kind),
-                    ));
+                    return Err(not_inside(&t.ty.kind, e.span));
                 }
             }
             trows.push(tr);
@@ -233,11 +229,7 @@ impl Interp<'_> {
     fn bracket(&mut self, e: &Expr, span: Span) -> Result<Typed, Diagnostic> {
         let t = self.expr(e)?;
         if t.ty.kind.shape().is_none() {
-            return Err(Diagnostic::error(
-                ErrorKind::Type,
-                e.span,
-                format!("a {} cannot go inside [ ]", t.ty.kind),
-            ));
+            return Err(not_inside(&t.ty.kind, e.span));
         }
         let op = Op::Block(&[1]);
         let ty = op
@@ -392,4 +384,36 @@ fn transform_block(rows: &[&Vec<Expr>], trows: &[Vec<Typed>]) -> Option<Ty> {
     let vector = matches!(p.ty.kind, Kind::Vector(Some(3)));
     (zeros && rotation && vector && bottom.len() == last.len())
         .then(|| Ty::new(Kind::SE3, r.ty.frames))
+}
+
+/// "a … cannot go inside [ ]", and for a tuple of numbers and vectors of
+/// three or six entries in all (`(0, 0, 1, -cross(w, q))`, a screw axis
+/// typed as it reads in the book) the help naming the 6-vector's
+/// spelling: a pair of 3-vectors, `((0, 0, 1), v)` (§4).
+fn not_inside(kind: &Kind, span: Span) -> Diagnostic {
+    let d = Diagnostic::error(
+        ErrorKind::Type,
+        span,
+        format!("a {kind} cannot go inside [ ]"),
+    );
+    let Kind::Tuple(parts) = kind else {
+        return d;
+    };
+    let entries: Option<usize> = parts
+        .iter()
+        .map(|k| match k.shape() {
+            Some((Some(n), Some(1))) => Some(n),
+            _ if *k == Kind::Scalar => Some(1),
+            _ => None,
+        })
+        .sum();
+    match entries {
+        Some(6) => d.with_help(
+            "a tuple is not a vector: write the 6-vector (ω, v) as a pair of 3-vectors, `((0, 0, 1), v)`, or as six numbers",
+        ),
+        Some(3) => d.with_help(
+            "a tuple is not a vector: write the 3-vector as three numbers, `(x, y, z)`, or a vector by name",
+        ),
+        _ => d,
+    }
 }

@@ -68,12 +68,17 @@ pub fn elementwise_help(k: &Kind) -> Option<String> {
 
 /// `len(v)` of a vector over symbols (`given v : vec3`, `(1, 2, a)`): its
 /// count, which needs no numbers — the kind checked gives it, as the
-/// numbers typed first would. None for anything else.
+/// numbers typed first would; and the other calls a `given` kind decides
+/// (`det` of a rotation is 1, `trace` of an so(3) is 0:
+/// [`crate::builtins::known_by_kind`]). None for anything else.
 pub(super) fn symbolic_len(
     b: &crate::builtins::Builtin,
     tys: &[crate::check::ty::Ty],
     vals: &[Value],
 ) -> Option<Value> {
+    if let Some(v) = crate::builtins::known_by_kind(b.name, vals, tys) {
+        return Some(v);
+    }
     let ([ty], [v]) = (tys, vals) else {
         return None;
     };

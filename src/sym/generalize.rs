@@ -153,3 +153,29 @@ pub fn linearized(p: &Expr, q: &Expr) -> Option<(Expr, Expr)> {
     }
     Some((rewrite(p, &names), rewrite(q, &names)))
 }
+
+/// `e` with its odd angles written as multiples of fresh symbols (module
+/// doc), in canonical form there, and written back: sin²(t w) + cos²(t w)
+/// is 1, which the canonical form over the product angle t w, a call it
+/// cannot see into, kept (Exercise 3.19's T₂₁ printed `r2 (sin(t w2)^2 +
+/// cos(t w2)^2)`). Equal to `e` (the identity holds for independent
+/// fresh symbols, so at their values); None when `e` has no odd angle.
+pub fn restored(e: &Expr) -> Option<Expr> {
+    let mut found = Vec::new();
+    terms(e, &mut found);
+    if found.is_empty() || found.len() > 8 {
+        return None;
+    }
+    let names = fresh(&found);
+    if names.is_empty() || names.len() > 4 {
+        return None;
+    }
+    let value = |s: &Symbol| {
+        names.iter().find(|(_, _, n)| n == s).map(|(m, w, _)| {
+            let mut x = Expr::zero();
+            x.push(m.clone(), w.clone());
+            x
+        })
+    };
+    Some(rewrite(e, &names).subst(&value))
+}

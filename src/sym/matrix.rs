@@ -419,6 +419,24 @@ pub fn adjoint(t: &Mat) -> Option<Mat> {
     Some(a)
 }
 
+/// The inverse of an adjoint \[Ad_T\] = \[R, 0; \[p\]R, R\] in closed form,
+/// \[Ad_T\]⁻¹ = \[Ad_{T⁻¹}\] = \[Rᵀ, 0; −Rᵀ(\[p\]R)Rᵀ, Rᵀ\] (Proposition
+/// 3.20), kept only when it is the inverse (`a` times it is exactly I):
+/// None for a 6×6 that is not such a matrix (a general 6×6 inverse is not
+/// formed at all).
+pub fn adjoint_inverse(a: &Mat) -> Option<Mat> {
+    if a.rows != 6 || a.cols != 6 {
+        return None;
+    }
+    let rt = a.block(0..3, 0..3).transpose();
+    let q = rt.mul(&a.block(3..6, 0..3))?.mul(&rt)?.map(Expr::neg);
+    let mut out = Mat::zeros(6, 6);
+    out.put(0, 0, &rt);
+    out.put(3, 0, &q);
+    out.put(3, 3, &rt);
+    (a.mul(&out)? == Mat::identity(6)).then_some(out)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -55,6 +55,12 @@ pub fn perfect_power(e: &Expr) -> Option<(Coef, Expr, u32)> {
     let f = e.scale(&lc.inv()?);
     (2..=g.min(16)).rev().filter(|k| g % k == 0).find_map(|k| {
         let r = root(&f, k, top, &vars)?;
+        // (a root that is not real prints as a real form that is not its
+        // value: sin(b + π/6)³ is −(1/8)(z + e^{2πi/3} z⁻¹)³, whose root
+        // printed `sin(b + π/6)`, so 1/sin(b + π/6)^3 printed −8/(…)^3)
+        if r.conj() != r {
+            return None;
+        }
         // e = lc·rᵏ = lc·c0ᵏ·(r/c0)ᵏ
         let c0 = r.terms.get(&Vec::new()).cloned().unwrap_or_else(Coef::one);
         c0.as_rat()?;
@@ -173,5 +179,12 @@ mod tests {
         // a constant taken out: 3 q² (q with its constant term 1)
         let three = q.powi(2).unwrap().scale(&Coef::int(3));
         assert_eq!(perfect_power(&three), Some((Coef::int(3), q.clone(), 2)));
+        // sin(t + π/6)³: its only root term by term is not real (trial 18)
+        let sixth = Coef::rat(super::super::coef::Rat::new(1, 6).unwrap());
+        let u = t.add(&Expr::pi().scale(&sixth));
+        assert_eq!(perfect_power(&Expr::sin(&u).powi(3).unwrap()), None);
+        // a real root is kept: (1 + cos t)³
+        let c = Expr::one().add(&Expr::cos(&t));
+        assert_eq!(perfect_power(&c.powi(3).unwrap()), Some((one, c, 3)));
     }
 }

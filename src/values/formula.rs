@@ -289,13 +289,19 @@ fn checked_power(x: &Mat, mut n: u64, acc: &mut Mat) -> Result<Mat, String> {
 }
 
 /// The inverse by the book's formulas: Rᵀ (3.23's Rᵀ = R⁻¹), the SE(3)
-/// inverse of §3.3.1, 1/x for a scalar, else adj(A)/det(A) up to 4×4;
+/// inverse of §3.3.1, the adjoint's of Prop. 3.20, 1/x for a scalar, else
+/// adj(A)/det(A) up to 4×4;
 /// None when the determinant is identically 0 (or the matrix larger).
 pub fn inverse(kind: &Kind, x: &Mat) -> Option<Mat> {
     match (kind, x.rows, x.cols) {
         (_, 1, 1) => Some(Mat::scalar(x.data[0].recip()?)),
         (Kind::SO3 | Kind::SO2, _, _) => Some(x.transpose()),
         (Kind::SE3, 4, 4) => matrix::trans_inv(x),
+        // (Proposition 3.20: [Ad_T]⁻¹ = [Ad_{T⁻¹}], and its transpose's)
+        (Kind::Adjoint { transposed: false }, 6, 6) => matrix::adjoint_inverse(x),
+        (Kind::Adjoint { transposed: true }, 6, 6) => {
+            Some(matrix::adjoint_inverse(&x.transpose())?.transpose())
+        }
         _ => matrix::inverse(x),
     }
 }
