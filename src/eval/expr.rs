@@ -219,13 +219,15 @@ impl Interp<'_> {
         if let Some(b) = self.env.get(name) {
             let mut warnings = Vec::new();
             let v = if self.running() {
-                super::substitute::current(b, self.env, &mut warnings).map_err(|e| {
-                    Diagnostic::error(
-                        ErrorKind::Domain,
-                        span,
-                        format!("{name} with the numbers bound since: {}", e.0),
-                    )
-                })?
+                crate::calculus::substitute::current(b.bound(), self.env, &mut warnings).map_err(
+                    |e| {
+                        Diagnostic::error(
+                            ErrorKind::Domain,
+                            span,
+                            format!("{name} with the numbers bound since: {}", e.0),
+                        )
+                    },
+                )?
             } else {
                 None
             };
@@ -536,7 +538,7 @@ impl Interp<'_> {
                 .then(|| crate::decide::replay::subs_numbers(&refs, &mut self.warnings))
                 .flatten()
                 .map(|v| {
-                    v.map(|v| super::substitute::retag(v, &ty.kind))
+                    v.map(|v| crate::calculus::substitute::retag(v, &ty.kind))
                         .map_err(crate::values::error::OpError::Message)
                 });
             if let Some(v) = subs.or_else(|| op.exact_or_symbolic(&refs, &ty.kind)) {

@@ -18,15 +18,12 @@ mod notation;
 mod outcome;
 mod paren_product;
 mod relied;
-mod resolve;
 mod slice;
 mod slips;
 mod solve;
-mod substitute;
 mod symbols;
 mod tuple_call;
 mod user_fn;
-mod warned;
 
 pub use crate::values::{convert, formula, ops, symbolic, value};
 

@@ -7,7 +7,7 @@
 //! ([`Op::symbolic`], LANGUAGE.md §7). [`Op::apply`] picks among the three
 //! value paths. The evaluator evaluates a node's children and applies its
 //! operation; the substitution of numbers into symbols
-//! (`eval::substitute`) applies the same operations to the numbers it
+//! (`calculus::substitute`) applies the same operations to the numbers it
 //! finds. Adding an operation is one variant, one rule, one numeric
 //! function and one symbolic form.
 //!

@@ -15,5 +15,5 @@ pub(crate) mod exactness;
 pub(crate) mod operation;
 mod powers;
 pub(crate) mod range;
-mod shapes;
+pub(crate) mod shapes;
 pub mod transform;
