@@ -219,15 +219,13 @@ impl Interp<'_> {
         if let Some(b) = self.env.get(name) {
             let mut warnings = Vec::new();
             let v = if self.running() {
-                crate::calculus::substitute::current(b.bound(), self.env, &mut warnings).map_err(
-                    |e| {
-                        Diagnostic::error(
-                            ErrorKind::Domain,
-                            span,
-                            format!("{name} with the numbers bound since: {}", e.0),
-                        )
-                    },
-                )?
+                super::substitute::current(b.bound(), self.env, &mut warnings).map_err(|e| {
+                    Diagnostic::error(
+                        ErrorKind::Domain,
+                        span,
+                        format!("{name} with the numbers bound since: {}", e.0),
+                    )
+                })?
             } else {
                 None
             };
@@ -538,7 +536,7 @@ impl Interp<'_> {
                 .then(|| crate::decide::replay::subs_numbers(&refs, &mut self.warnings))
                 .flatten()
                 .map(|v| {
-                    v.map(|v| crate::calculus::substitute::retag(v, &ty.kind))
+                    v.map(|v| super::substitute::retag(v, &ty.kind))
                         .map_err(crate::values::error::OpError::Message)
                 });
             if let Some(v) = subs.or_else(|| op.exact_or_symbolic(&refs, &ty.kind)) {

@@ -27,6 +27,9 @@ mod user_fn;
 
 pub use crate::values::{convert, formula, ops, symbolic, value};
 
+/// A binding read with the numbers bound since (the calculus on recipes).
+use crate::calculus::substitute;
+
 /// The operation seam, now [`crate::seam::apply`] (kept here for the
 /// paths `eval::apply` already written).
 pub use crate::seam::apply;
