@@ -360,6 +360,9 @@ impl<'a> Op<'a> {
     /// The first two paths of [`Op::apply`]: None when the operands are
     /// numbers (a builtin call then computes with its spans and warnings).
     pub fn exact_or_symbolic(self, args: &[&Value], kind: &Kind) -> Option<Result<Value, OpError>> {
+        if let Some(v) = super::exponential::power(self, args, kind) {
+            return Some(v);
+        }
         if formula::applies(args)
             && let Some(v) = self.formula(args, kind)
         {

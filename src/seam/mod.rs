@@ -12,6 +12,7 @@
 pub mod apply;
 mod chain;
 pub(crate) mod exactness;
+mod exponential;
 pub(crate) mod operation;
 mod powers;
 pub(crate) mod range;
