@@ -27,16 +27,28 @@ const MAX_DEPTH: u32 = 12;
 /// `E^n` for a square formula E made by `exp(X)` and an integer number n:
 /// `exp(n X)` over formulas, with its own recipe. None for any other
 /// operation or operands, or when X cannot be made again.
+/// (The test of the operation and operands only, inlined where every
+/// operation is applied; the rest is [`of_exp`].)
+#[inline]
 pub(super) fn power(op: Op, args: &[&Value], kind: &Kind) -> Option<Result<Value, OpError>> {
-    let (
-        Op::Arith(BinOp::Pow),
-        [
-            Value::Formula {
-                how: Some(r), m, ..
-            },
-            n,
-        ],
-    ) = (op, args)
+    match (op, args) {
+        (Op::Arith(BinOp::Pow), [Value::Formula { how: Some(_), .. }, Value::Num { .. }]) => {
+            of_exp(args, kind)
+        }
+        _ => None,
+    }
+}
+
+/// [`power`] past its test.
+#[cold]
+#[inline(never)]
+fn of_exp(args: &[&Value], kind: &Kind) -> Option<Result<Value, OpError>> {
+    let [
+        Value::Formula {
+            how: Some(r), m, ..
+        },
+        n,
+    ] = args
     else {
         return None;
     };
