@@ -54,8 +54,8 @@ pub fn equal(a: &Sym, b: &Sym, is_rotation: &dyn Fn(&str) -> Option<usize>) -> b
         rotation: Vec::new(),
         is_rotation,
     };
-    if let (Some(x), Some(y)) = (atoms.blocks(a), atoms.blocks(b)) {
-        return same_blocks(&x, &y);
+    if let (Some((c, x)), Some((d, y))) = (atoms.blocks(a), atoms.blocks(b)) {
+        return meet(c, d).is_some() && x == y;
     }
     match (atoms.poly(a), atoms.poly(b)) {
         (Some(x), Some(y)) => x == y,
@@ -63,20 +63,43 @@ pub fn equal(a: &Sym, b: &Sym, is_rotation: &dyn Fn(&str) -> Option<usize>) -> b
     }
 }
 
-/// Whether two block matrices are equal entry by entry, a last row of a
-/// transform written `0, 0, 0, 1` being `0, 1`.
-fn same_blocks(x: &Blocks, y: &Blocks) -> bool {
-    let row = |r: &[Poly]| -> Vec<Poly> {
-        let last = r.len().saturating_sub(1);
-        let is_last_row =
-            r.len() == 4 && r[..last].iter().all(|p| p.0.is_empty()) && r[last] == Poly::one();
-        if is_last_row {
-            vec![Poly::default(), Poly::one()]
-        } else {
-            r.to_vec()
-        }
-    };
-    x.len() == y.len() && x.iter().zip(y).all(|(a, b)| row(a) == row(b))
+/// How a block matrix is cut into its 2×2 blocks, which says what each
+/// entry's sum stands for: a transform `[X, y; 0, 1]` (n − 1 | 1: its last
+/// row and column are one entry wide), an adjoint (3 | 3), or either (the
+/// identity and zero, the same under any cut into square diagonal
+/// blocks). Blocks are compared and multiplied only under the same cut
+/// (`[2 A, 0; 0, 1]` and `[2, 0; 0, A]` have the same sums and are not
+/// equal).
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Cut {
+    Transform,
+    Adjoint,
+    Any,
+}
+
+/// The cut two block matrices share, if any.
+fn meet(a: Cut, b: Cut) -> Option<Cut> {
+    match (a, b) {
+        (Cut::Any, c) | (c, Cut::Any) => Some(c),
+        (a, b) => (a == b).then_some(a),
+    }
+}
+
+/// Whether `s` is the scalar constant `x`.
+fn is_const(s: &Sym, x: f64) -> bool {
+    matches!(s, Sym::Const(v, _) if v.as_scalar() == Some(x))
+}
+
+/// The blocks X and y of `[X, y; 0, 1]` (or `[X, y; 0, 0, 0, 1]`) as
+/// written: a last row of scalar zeros and a scalar 1.
+fn transform_rows(rows: &[Vec<Sym>]) -> Option<(&Sym, &Sym)> {
+    let [top, bottom] = rows else { return None };
+    let [x, y] = top.as_slice() else { return None };
+    let (one, zeros) = bottom.split_last()?;
+    let last = matches!(zeros.len(), 1 | 3)
+        && zeros.iter().all(|z| is_const(z, 0.0))
+        && is_const(one, 1.0);
+    last.then_some((x, y))
 }
 
 impl Poly {
@@ -247,41 +270,45 @@ impl Atoms<'_> {
         Some(out)
     }
 
-    /// `s` as a block matrix: a block literal (entries as sums), the
-    /// adjoint `Ad` of a transform `[R, p; 0, 1]` as `[R, 0; [p] R, R]`
-    /// (Definition 3.20), and products of such; None for anything else.
-    fn blocks(&mut self, s: &Sym) -> Option<Blocks> {
+    /// `s` as a block matrix with its cut: a transform `[X, y; 0, 1]`
+    /// (entries as sums), the adjoint `Ad` of one as `[R, 0; [p] R, R]`
+    /// (Definition 3.20), the identity and zero, and products of such
+    /// under the same cut; None for anything else.
+    fn blocks(&mut self, s: &Sym) -> Option<(Cut, Blocks)> {
         match s {
-            Sym::Block(rows) => rows
-                .iter()
-                .map(|r| r.iter().map(|x| self.poly(x)).collect())
-                .collect(),
-            Sym::Call(f, args) if f.role == Role::Adjoint && args.len() == 1 => {
-                let t = match &args[0] {
-                    Sym::Block(_) => self.blocks(&args[0])?,
-                    _ => return None,
-                };
-                let (r, p) = transform(&t)?;
-                let (r, p) = (r.clone(), p.clone());
-                let pr = {
-                    let b = self.bracket_of(&p)?;
-                    self.times(&b, &r)?
-                };
-                Some(vec![vec![r.clone(), Poly::default()], vec![pr, r]])
+            Sym::Block(rows) => {
+                let (x, y) = transform_rows(rows)?;
+                let (x, y) = (self.poly(x)?, self.poly(y)?);
+                Some((
+                    Cut::Transform,
+                    vec![vec![x, y], vec![Poly::default(), Poly::one()]],
+                ))
             }
-            // (the identity and zero of any partition into square blocks)
-            Sym::Identity => Some(diagonal(Poly::one())),
+            Sym::Call(f, args) if f.role == Role::Adjoint && args.len() == 1 => {
+                let (Cut::Transform, t) = self.blocks(&args[0])? else {
+                    return None;
+                };
+                let (r, p) = (t[0][0].clone(), t[0][1].clone());
+                let b = self.bracket_of(&p)?;
+                let pr = self.times(&b, &r)?;
+                Some((
+                    Cut::Adjoint,
+                    vec![vec![r.clone(), Poly::default()], vec![pr, r]],
+                ))
+            }
+            Sym::Identity => Some((Cut::Any, diagonal(Poly::one()))),
             Sym::Const(v, _) if v.as_scalar().is_none() => match constant(v)? {
-                c @ (0 | 1) => Some(diagonal(Poly::constant(c))),
+                c @ (0 | 1) => Some((Cut::Any, diagonal(Poly::constant(c)))),
                 _ => None,
             },
             Sym::Product(fs) if fs.len() > 1 => {
-                let mut acc = self.blocks(&fs[0])?;
+                let (mut cut, mut acc) = self.blocks(&fs[0])?;
                 for f in &fs[1..] {
-                    let b = self.blocks(f)?;
+                    let (c, b) = self.blocks(f)?;
+                    cut = meet(cut, c)?;
                     acc = self.block_times(&acc, &b)?;
                 }
-                Some(acc)
+                Some((cut, acc))
             }
             _ => None,
         }
@@ -323,22 +350,6 @@ fn diagonal(d: Poly) -> Blocks {
     vec![vec![d.clone(), Poly::default()], vec![Poly::default(), d]]
 }
 
-/// The rotation and position blocks of a transform `[R, p; 0, 1]`.
-fn transform(t: &Blocks) -> Option<(&Poly, &Poly)> {
-    match t.as_slice() {
-        [top, bottom]
-            if top.len() == 2
-                && same_blocks(
-                    &vec![bottom.clone()],
-                    &vec![vec![Poly::default(), Poly::one()]],
-                ) =>
-        {
-            Some((&top[0], &top[1]))
-        }
-        _ => None,
-    }
-}
-
 /// An integer scalar constant (a coefficient), or 0 for a zero matrix and
 /// 1 for an identity.
 fn constant(v: &Value) -> Option<i64> {
@@ -350,4 +361,51 @@ fn constant(v: &Value) -> Option<i64> {
         return Some(0);
     }
     (m.is_square() && m.is_identity(0.0)).then_some(1)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn name(n: &str) -> Sym {
+        Sym::Name(n.into())
+    }
+
+    fn num(x: f64) -> Sym {
+        Sym::Const(Box::new(Value::scalar(x)), format!("{x}"))
+    }
+
+    fn rotation(n: &str) -> Option<usize> {
+        (n == "R").then_some(3)
+    }
+
+    #[test]
+    fn a_rotation_cancels_its_transpose_and_nothing_else_does() {
+        let rt_r = Sym::Product(vec![name("R").transpose(), name("R")]);
+        let xt_x = Sym::Product(vec![name("X").transpose(), name("X")]);
+        assert!(equal(&rt_r, &Sym::Identity, &rotation));
+        assert!(!equal(&xt_x, &Sym::Identity, &rotation));
+        // (R^T (R + X) - R^T X is I: products distribute)
+        let sum = Sym::Sub(
+            Box::new(Sym::Product(vec![
+                name("R").transpose(),
+                Sym::Add(Box::new(name("R")), Box::new(name("X"))),
+            ])),
+            Box::new(Sym::Product(vec![name("R").transpose(), name("X")])),
+        );
+        assert!(equal(&sum, &Sym::Identity, &rotation));
+    }
+
+    #[test]
+    fn blocks_cut_differently_are_not_compared_by_their_sums() {
+        let rt_r = Sym::Product(vec![name("R").transpose(), name("R")]);
+        // [2 RᵀR, 0; 0, 1] is diag(2, 2, 2, 1); [2, 0; 0, RᵀR] is diag(2, 1, 1, 1)
+        let a = Sym::Block(vec![
+            vec![Sym::Product(vec![num(2.0), rt_r.clone()]), num(0.0)],
+            vec![num(0.0), num(1.0)],
+        ]);
+        let b = Sym::Block(vec![vec![num(2.0), num(0.0)], vec![num(0.0), rt_r]]);
+        assert!(!equal(&a, &b, &rotation));
+        assert!(equal(&a, &a.clone(), &rotation));
+    }
 }
