@@ -19,8 +19,12 @@
 //!               by the front end; evaluation itself never writes
 //! output        outcomes as text blocks and JSON lines
 //! draw          pictures: marks, projection, SVG and PNG (§12)
-//! eval          the environment and the interpreter; substitution of
-//!               numbers bound later (it reads the environment), derive
+//! eval          the environment and the interpreter (`diff` and `subs`
+//!               run with the given names held), derive
+//! calculus      the calculus on recipes: values made over `given`
+//!               symbols read with the numbers bound since, their
+//!               warnings once per binding, what `diff`/`subs` may read;
+//!               the bindings through a trait the environment implements
 //! decide        the proofs of `==`, `≈` and `<` (exact forms, certified
 //!               balls, lifts, witnesses at points) and the replay of how
 //!               a value was made with numbers (§7)
@@ -59,6 +63,8 @@
 //!   numbers on one line (`eval::value`, `eval::ops`, `output::number` are
 //!   re-exports of its modules);
 //! - [`eval`]: the session environment and evaluation;
+//! - [`calculus`]: numbers bound later put into values made over symbols
+//!   (§7), read through [`calculus::Bindings`];
 //! - [`decide`]: deciding `==`, `≈` and `<`, and replaying recipes with
 //!   numbers;
 //! - [`seam`]: the operation seam every evaluation goes through;
@@ -91,6 +97,7 @@ extern crate alloc;
 
 pub mod budget;
 pub mod builtins;
+pub mod calculus;
 pub mod check;
 pub mod cli;
 pub mod decide;

@@ -9,12 +9,14 @@
 //! numbers (`replay`: the same replay makes a value bound later a
 //! number, and a comparison replayed is decided here again, so the two
 //! live in one room); inverse trigonometric sides by their principal
-//! ranges (`inverse`); the half-turn branch of a rotation's log
+//! ranges (`inverse`); trees of the book's transforms by the algebra of
+//! their blocks (`blocks`: (T U)⁻¹ = U⁻¹ T⁻¹); the half-turn branch of a rotation's log
 //! (`turn`, §3.2.3.3) and the order of scalars (`order`). Imports
 //! the operation seam ([`crate::seam`]), nothing from the interpreter.
 
 pub(crate) mod ball;
 pub(crate) mod balls;
+pub(crate) mod blocks;
 pub(crate) mod certify;
 pub(crate) mod constant;
 pub(crate) mod cyclotomic;

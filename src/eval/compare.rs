@@ -253,6 +253,29 @@ impl Interp<'_> {
         })
     }
 
+    /// [`equal`], and for trees over `given` matrices that it cannot
+    /// tell, the algebra of their blocks ([`crate::decide::blocks`]: the
+    /// book's transforms, (T U)⁻¹ = U⁻¹ T⁻¹) with the names typed SO(3)
+    /// or SO(2) as rotations.
+    fn equal_trees(&self, a: &Value, b: &Value, op: CmpOp) -> Result<Option<bool>, String> {
+        let v = self.equal_by_kinds(a, b, op);
+        if op == CmpOp::Eq
+            && matches!(v, Ok(None))
+            && (matches!(a, Value::Sym(_)) || matches!(b, Value::Sym(_)))
+        {
+            let to = crate::seam::apply::to_sym;
+            let rotation = |n: &str| match self.env.get(n) {
+                Some(b) if b.symbolic && b.ty.kind == Kind::SO3 => Some(3),
+                Some(b) if b.symbolic && b.ty.kind == Kind::SO2 => Some(2),
+                _ => None,
+            };
+            if crate::decide::blocks::equal(&to(a), &to(b), &rotation) {
+                return Ok(Some(true));
+            }
+        }
+        v
+    }
+
     fn sides(
         &mut self,
         op: CmpOp,
@@ -286,7 +309,7 @@ impl Interp<'_> {
         let verdict = match (l.val.as_deref(), r.val.as_deref()) {
             (Some(a), Some(b)) => match self
                 .lowered_equal(a, b, op, op_span)
-                .unwrap_or_else(|| self.equal_by_kinds(a, b, op))
+                .unwrap_or_else(|| self.equal_trees(a, b, op))
             {
                 // (a verdict over symbols that rests on a number with no
                 // exact form is found at points: `crate::decide::witness`)

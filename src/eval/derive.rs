@@ -115,7 +115,7 @@ impl Interp<'_> {
         let mut acc: Option<Value> = None;
         for s in &steps {
             let b = self.env.get(&s.name).expect("a step is a bound name");
-            let v = super::substitute::current(b, self.env, &mut self.warnings)
+            let v = crate::calculus::substitute::current(b.bound(), self.env, &mut self.warnings)
                 .map_err(|e| {
                     Diagnostic::error(
                         ErrorKind::Domain,
@@ -143,11 +143,11 @@ impl Interp<'_> {
             acc = Some(match acc {
                 None => v,
                 Some(Value::Sym(a)) => {
-                    Value::Sym(super::value::Sym::times(a, super::substitute::to_sym(&v)))
+                    Value::Sym(super::value::Sym::times(a, crate::seam::apply::to_sym(&v)))
                 }
                 Some(a) if v.is_symbolic() => Value::Sym(super::value::Sym::times(
-                    super::substitute::to_sym(&a),
-                    super::substitute::to_sym(&v),
+                    crate::seam::apply::to_sym(&a),
+                    crate::seam::apply::to_sym(&v),
                 )),
                 Some(a) if super::formula::applies(&[&a, &v]) => {
                     super::formula::binary(crate::syntax::ast::BinOp::Mul, &a, &v, &kind)

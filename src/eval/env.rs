@@ -173,12 +173,12 @@ pub struct Binding {
     pub derived: bool,
     /// When it was bound: [`Env::set`] and [`Env::set_value`] give each
     /// binding a new stamp (a value bound later warns once per binding of
-    /// the numbers it reads, `super::warned`).
+    /// the numbers it reads, `crate::calculus::warned`).
     pub stamp: u64,
     /// The `given` names (and rates `q'`) whose numbers the value was
     /// computed from: it holds those numbers, not the symbols, so `diff`
     /// and `subs` by them, which read the symbols ([`Env::hold`]), refuse
-    /// it (§7, `super::hold`).
+    /// it (§7, `crate::calculus::held`).
     pub absorbed: Vec<Name>,
 }
 
@@ -192,6 +192,17 @@ impl Binding {
             derived: false,
             stamp: 0,
             absorbed: Vec::new(),
+        }
+    }
+    /// The binding as the calculus on recipes reads it
+    /// ([`crate::calculus::Bound`]).
+    #[inline]
+    pub fn bound(&self) -> crate::calculus::Bound<'_> {
+        crate::calculus::Bound {
+            val: self.val.as_ref(),
+            kind: self.ty.kind,
+            symbolic: self.symbolic,
+            derived: self.derived,
         }
     }
 }
@@ -252,7 +263,7 @@ pub struct Env {
     stamp: u64,
     /// The warnings given by reads of values bound later (once per
     /// binding of their numbers).
-    pub(super) warned: super::warned::Warned,
+    pub(super) warned: crate::calculus::warned::Warned,
     /// The binding each `given` name was declared with (its symbol), kept
     /// after numbers are bound to it: [`Env::hold`] reads it again.
     givens: NameMap<Binding>,
@@ -335,7 +346,7 @@ impl Env {
     }
     /// Of `warnings`, given by reading `name` now, those that reading the
     /// same value with the same bindings of its symbols has not given
-    /// already (`super::warned`: once per binding of its numbers).
+    /// already ([`crate::calculus::warned`]: once per binding of its numbers).
     pub(super) fn fresh_warnings(
         &mut self,
         name: &str,
@@ -508,6 +519,21 @@ impl Env {
         let mut v: Vec<(Name, &Binding)> = self.vars.iter().map(|(k, b)| (k.0, b)).collect();
         v.sort_by_key(|(n, _)| *n);
         v
+    }
+}
+
+/// The calculus on recipes reads the session's bindings through this
+/// ([`crate::calculus`]: values bound later, §7).
+impl crate::calculus::Bindings for Env {
+    #[inline]
+    fn binding(&self, name: Name) -> Option<crate::calculus::Bound<'_>> {
+        self.get(name).map(Binding::bound)
+    }
+    fn is_given(&self, name: Name) -> bool {
+        Env::is_given(self, name)
+    }
+    fn declared(&self, name: Name) -> Option<&Value> {
+        self.given(name).and_then(|b| b.val.as_ref())
     }
 }
 

@@ -219,7 +219,7 @@ impl Interp<'_> {
         if let Some(b) = self.env.get(name) {
             let mut warnings = Vec::new();
             let v = if self.running() {
-                super::substitute::current(b, self.env, &mut warnings).map_err(|e| {
+                super::substitute::current(b.bound(), self.env, &mut warnings).map_err(|e| {
                     Diagnostic::error(
                         ErrorKind::Domain,
                         span,

@@ -1,28 +1,22 @@
-//! `diff` and `subs` by a symbol that already has a number (LANGUAGE.md §7:
-//! "once every symbol of a value has a number, the value is a number …
-//! exactly as if the numbers had been typed first").
+//! `diff` and `subs` by a symbol that already has a number, as the
+//! interpreter runs them (LANGUAGE.md §7: bound first or later, the same
+//! answer; what they may read is decided below, in [`crate::calculus::held`]).
 //!
-//! `x = diff(sin(s), s); s = 1; x` is cos 1: the derivative is taken over
-//! the symbol and read with its number. Typed the other way round, `s = 1;
-//! diff(sin(s), s)` must be cos 1 too, not the derivative of the number
-//! sin 1 (0): a student who binds the joint angles and then asks for
-//! `diff(T, theta1)` wants ∂T/∂θ₁ there. So while `diff` or `subs`
-//! evaluates its operands, every `given` name bound to a value (and every
-//! rate `q'` of a given function of time) is read as its symbol
-//! ([`Env::hold`]); the result is then read with the numbers, as a value
-//! bound later is.
-//!
-//! A value computed *after* its symbols had numbers holds the numbers, not
-//! the symbols (`s = 1; y = sin(s); diff(y, s)`): differentiating it would
-//! give a plausible 0. Such a value is marked when it is bound
-//! ([`super::env::Binding::from_numbers`], from [`carries_numbers`]) and a
-//! `diff` or `subs` that reads it is refused, with the way out.
+//! This is interpreter, not calculus: it walks the call's AST. While `diff`
+//! or `subs` evaluates its operands through [`Interp`], every `given` name
+//! bound to a value (and every rate `q'` of a given function of time) is
+//! read as its symbol ([`Env::hold`]); the numbers the statement reads are
+//! noted in [`Env`] as the operands are evaluated; the result is then read
+//! with the numbers ([`crate::calculus::substitute::now`]), and a call whose
+//! operand holds numbers in place of the symbol it is by is refused here,
+//! with the way out.
 
 use super::env::{Binding, Env};
 use super::interp::refine;
 use super::interp::{Interp, Typed};
-use super::value::{Sym, Value};
+use super::value::Value;
 use crate::builtins::Builtin;
+use crate::calculus::held;
 use crate::diagnostics::{Diagnostic, ErrorKind};
 use crate::syntax::ast::{Expr, ExprKind, Name, Span};
 
@@ -34,89 +28,16 @@ pub(super) fn reads_symbols(name: &str, args: &[Expr]) -> bool {
 }
 
 /// Notes in [`Env`]'s numbers read by the statement those reading `name`
-/// gives ([`absorbed`]).
+/// gives ([`held::absorbed`]).
 #[cold]
 pub(super) fn note_read(env: &mut Env, name: Name) {
     let mut found = Vec::new();
     if let Some(b) = env.get(name)
         && !b.symbolic
     {
-        absorbed(env, name, b, &mut found);
+        held::absorbed(env, name, b.val.as_ref(), &b.absorbed, &mut found);
     }
     env.numbers_read.extend(found);
-}
-
-/// Adds to `out` the `given` names whose numbers reading `name` (bound to
-/// `b`) gives, each with `name`: a given name or rate bound to a value,
-/// the names a value computed from such numbers absorbed, the symbols now
-/// bound of a value made from symbols (reading it puts their numbers in).
-/// Held names ([`Env::hold`]) read as symbols and give none.
-pub(super) fn absorbed(env: &Env, name: Name, b: &Binding, out: &mut Vec<(Name, Name)>) {
-    let mut add = |s: Name| {
-        if !out.contains(&(s, name)) {
-            out.push((s, name));
-        }
-    };
-    if env.is_given(name) {
-        add(name);
-    }
-    b.absorbed.iter().for_each(|s| add(*s));
-    if let Some(v) = &b.val {
-        bound_symbols(env, v, &mut add);
-    }
-}
-
-/// Calls `add` with the names of the symbols of `v` (and of how it was
-/// made) that are bound to numbers now.
-fn bound_symbols(env: &Env, v: &Value, add: &mut impl FnMut(Name)) {
-    match v {
-        Value::Formula { m, how, .. } => {
-            let mut syms = Vec::new();
-            m.data.iter().for_each(|e| e.symbols(&mut syms));
-            if let Some(r) = how {
-                crate::values::recipe::symbols(r, &mut syms);
-            }
-            for s in &syms {
-                if super::resolve::bound(env, s).is_some() {
-                    add(Name::new(&crate::values::formula::binding_name(s)));
-                }
-            }
-        }
-        Value::Sym(t) => {
-            t.any(&mut |node| {
-                if let Sym::Name(n) = node {
-                    let n = Name::new(n);
-                    if env.is_given(n) && env.get(n).is_some_and(|b| !b.symbolic) {
-                        add(n);
-                    }
-                }
-                false
-            });
-        }
-        Value::Tuple(vs) => vs.iter().for_each(|x| bound_symbols(env, x, add)),
-        Value::List(vs) => vs.iter().for_each(|x| bound_symbols(env, x, add)),
-        _ => {}
-    }
-}
-
-/// Whether the number of `absorbed` (a given name or rate) moves with
-/// `by` (`diff(x, by)`, `subs(x, by, v)`): it is `by`, or `by` is the time
-/// variable of the function of time it is (or is a rate of). Other
-/// numbers are constants to a partial derivative and to a substitution:
-/// putting them in first changes nothing.
-fn moves_with(env: &Env, absorbed: Name, by: Name) -> bool {
-    if absorbed == by {
-        return true;
-    }
-    let base = absorbed.as_str().trim_end_matches('\'');
-    let time = env
-        .given(Name::new(base))
-        .and_then(|b| match &b.val {
-            Some(Value::Formula { m, .. }) => m.data.first().and_then(crate::sym::expr::as_symbol),
-            _ => None,
-        })
-        .and_then(|s| s.time.clone());
-    time.is_some_and(|t| *t == *by.as_str())
 }
 
 impl Interp<'_> {
@@ -187,7 +108,9 @@ impl Interp<'_> {
         for s in held {
             self.env.numbers_read.push((s, by));
         }
-        let moving = inner.iter().find(|(s, _)| moves_with(self.env, *s, by));
+        let moving = inner
+            .iter()
+            .find(|(s, _)| held::moves_with(self.env, *s, by));
         self.env.numbers_read.extend(inner.iter().copied());
         if let Some((s, read)) = moving {
             return Err(Diagnostic::error(
@@ -213,7 +136,7 @@ impl Interp<'_> {
             return Ok(t);
         };
         let mut warnings = Vec::new();
-        let now = super::substitute::now(v, self.env, &mut warnings).map_err(|e| {
+        let now = crate::calculus::substitute::now(v, self.env, &mut warnings).map_err(|e| {
             Diagnostic::error(
                 ErrorKind::Domain,
                 span,

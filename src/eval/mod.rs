@@ -18,17 +18,17 @@ mod notation;
 mod outcome;
 mod paren_product;
 mod relied;
-mod resolve;
 mod slice;
 mod slips;
 mod solve;
-mod substitute;
 mod symbols;
 mod tuple_call;
 mod user_fn;
-mod warned;
 
 pub use crate::values::{convert, formula, ops, symbolic, value};
+
+/// A binding read with the numbers bound since (the calculus on recipes).
+use crate::calculus::substitute;
 
 /// The operation seam, now [`crate::seam::apply`] (kept here for the
 /// paths `eval::apply` already written).

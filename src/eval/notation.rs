@@ -390,53 +390,5 @@ pub(super) fn parts(t: &Typed) -> Vec<Typed> {
 /// as tall as its row.
 pub(super) fn zero_blocks(rows: &[&Vec<Expr>], vals: &mut [Vec<Value>]) {
     let lone = |i: usize, j: usize| matches!(rows[i][j].kind, ExprKind::Number(x) if x == 0.0);
-    zero_blocks_where(lone, vals);
-}
-
-/// [`zero_blocks`] where `lone(i, j)` says which entries were written as
-/// a lone `0` (also when a block kept over symbols gets its numbers,
-/// LANGUAGE.md §7: as if they had been typed first).
-pub(super) fn zero_blocks_where(lone: impl Fn(usize, usize) -> bool, vals: &mut [Vec<Value>]) {
-    let shape = |v: &Value| match v {
-        Value::Num { m, .. } => Some(m.shape()),
-        Value::Formula { m, .. } => Some((m.rows, m.cols)),
-        _ => None,
-    };
-    let blocks = vals
-        .iter()
-        .flatten()
-        .any(|v| shape(v).is_some_and(|s| s != (1, 1)));
-    if !blocks {
-        return;
-    }
-    let mut fills = Vec::new();
-    for (i, row) in vals.iter().enumerate() {
-        let height = row
-            .iter()
-            .enumerate()
-            .filter(|&(j, _)| !lone(i, j))
-            .filter_map(|(_, v)| shape(v).map(|s| s.0))
-            .max()
-            .unwrap_or(1);
-        for j in 0..row.len() {
-            if !lone(i, j) {
-                continue;
-            }
-            let width = vals
-                .iter()
-                .enumerate()
-                .filter(|(k, r)| r.len() == row.len() && !lone(*k, j))
-                .filter_map(|(_, vs)| shape(&vs[j]).map(|s| s.1))
-                .max()
-                .unwrap_or(1);
-            fills.push((i, j, height, width));
-        }
-    }
-    for (i, j, h, w) in fills {
-        vals[i][j] = Value::Num {
-            kind: Kind::Matrix(Some(h), Some(w)),
-            m: crate::values::num::Num::zeros(h, w),
-            exact: crate::values::exact::Exact::Typed,
-        };
-    }
+    crate::seam::shapes::zero_blocks_where(lone, vals);
 }

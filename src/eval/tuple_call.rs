@@ -76,7 +76,7 @@ pub(super) fn each_part(
             .then(|| crate::decide::replay::subs_numbers(&refs, warnings))
             .flatten()
             .map(|v| {
-                v.map(|v| super::substitute::retag(v, &kind))
+                v.map(|v| crate::calculus::substitute::retag(v, &kind))
                     .map_err(OpError::Message)
             });
         out.push(match subs.or_else(|| op.exact_or_symbolic(&refs, &kind)) {

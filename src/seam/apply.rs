@@ -7,7 +7,7 @@
 //! ([`Op::symbolic`], LANGUAGE.md §7). [`Op::apply`] picks among the three
 //! value paths. The evaluator evaluates a node's children and applies its
 //! operation; the substitution of numbers into symbols
-//! (`eval::substitute`) applies the same operations to the numbers it
+//! (`calculus::substitute`) applies the same operations to the numbers it
 //! finds. Adding an operation is one variant, one rule, one numeric
 //! function and one symbolic form.
 //!
@@ -361,6 +361,9 @@ impl<'a> Op<'a> {
     /// The first two paths of [`Op::apply`]: None when the operands are
     /// numbers (a builtin call then computes with its spans and warnings).
     pub fn exact_or_symbolic(self, args: &[&Value], kind: &Kind) -> Option<Result<Value, OpError>> {
+        if let Some(v) = super::exponential::power(self, args, kind) {
+            return Some(v);
+        }
         if formula::applies(args)
             && let Some(v) = self.formula(args, kind)
         {

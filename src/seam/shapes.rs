@@ -1,10 +1,12 @@
 //! The rules (LANGUAGE.md §6) of the operations that take shapes apart
 //! or build them: indexing `x[i]`, the book's bracket `[x]` (3.30, 3.70)
 //! and block matrices `[a, b; c, d]`. [`super::apply::Op::rule`] uses them.
+//! With values: the zero blocks a lone `0` of `[R, p; 0, 1]` stands for.
 
 use crate::check::rules::RuleError;
 use crate::check::ty::{Frames, Kind, Ty};
 use crate::values::ops::Sel;
+use crate::values::value::Value;
 
 /// The rule of `x[i]`, `M[i, j]`, `M[:, j]`: a tuple's part, a column
 /// in the outer frame of the matrix, a row, or an entry.
@@ -84,4 +86,54 @@ pub(crate) fn block_type(widths: &[usize], args: &[&Ty]) -> Ty {
         start += n;
     }
     Ty::new(Kind::Matrix(height, width), frames)
+}
+
+/// `[R, p; 0, 1]` with its values: each entry that `lone(i, j)` says was
+/// written as a lone `0` becomes the zero block as wide as its column
+/// (from rows with as many entries) and as tall as its row: at a block
+/// literal, and when a block kept over symbols gets its numbers
+/// (LANGUAGE.md §7: as if they had been typed first).
+pub(crate) fn zero_blocks_where(lone: impl Fn(usize, usize) -> bool, vals: &mut [Vec<Value>]) {
+    let shape = |v: &Value| match v {
+        Value::Num { m, .. } => Some(m.shape()),
+        Value::Formula { m, .. } => Some((m.rows, m.cols)),
+        _ => None,
+    };
+    let blocks = vals
+        .iter()
+        .flatten()
+        .any(|v| shape(v).is_some_and(|s| s != (1, 1)));
+    if !blocks {
+        return;
+    }
+    let mut fills = Vec::new();
+    for (i, row) in vals.iter().enumerate() {
+        let height = row
+            .iter()
+            .enumerate()
+            .filter(|&(j, _)| !lone(i, j))
+            .filter_map(|(_, v)| shape(v).map(|s| s.0))
+            .max()
+            .unwrap_or(1);
+        for j in 0..row.len() {
+            if !lone(i, j) {
+                continue;
+            }
+            let width = vals
+                .iter()
+                .enumerate()
+                .filter(|(k, r)| r.len() == row.len() && !lone(*k, j))
+                .filter_map(|(_, vs)| shape(&vs[j]).map(|s| s.1))
+                .max()
+                .unwrap_or(1);
+            fills.push((i, j, height, width));
+        }
+    }
+    for (i, j, h, w) in fills {
+        vals[i][j] = Value::Num {
+            kind: Kind::Matrix(Some(h), Some(w)),
+            m: crate::values::num::Num::zeros(h, w),
+            exact: crate::values::exact::Exact::Typed,
+        };
+    }
 }

@@ -8,21 +8,18 @@
 //! been typed first. Partly numeric expressions keep their symbols
 //! (`[1, 0, …] T_bc`). Types and frames are not recomputed: they were
 //! checked when the expression was built.
-use super::env::{Binding, Env};
-use super::resolve::resolve;
-use super::value::Sym;
-use super::value::Value;
+use super::resolve::{self, resolve};
+use super::{Bindings, Bound};
 use crate::check::ty::Kind;
 use crate::decide::replay;
 use crate::diagnostics::Diagnostic;
 use crate::sym::Symbol;
 use crate::values::recipe;
+use crate::values::value::{Sym, Value};
 use std::rc::Rc;
 
-pub(crate) use crate::seam::apply::to_sym;
-
 /// The value of a binding as of now: a value derived from symbols has the
-/// numbers bound since substituted ([`resolve`], [`formula`]; the items of
+/// numbers bound since substituted ([`resolve()`], [`resolve::formula_now`]; the items of
 /// a list or tuple too); a numeric result takes the kind the checker gave
 /// the expression where that says more than the numbers can (a twist, a
 /// wrench). `given` symbols are themselves. The warnings of the steps
@@ -31,20 +28,21 @@ pub(crate) use crate::seam::apply::to_sym;
 ///
 /// Err when replaying it with the numbers fails as the numbers typed
 /// first would (a division by zero the canonical form cancelled).
+#[inline]
 pub fn current(
-    b: &Binding,
-    env: &Env,
+    b: Bound<'_>,
+    env: &dyn Bindings,
     warnings: &mut Vec<Diagnostic>,
 ) -> Result<Option<Value>, replay::Failed> {
-    let Some(v) = b.val.as_ref() else {
+    let Some(v) = b.val else {
         return Ok(None);
     };
     Ok(Some(match v {
         Value::Sym(s) if !b.symbolic => match resolve(s, env, warnings)? {
-            Sym::Const(v, _) => retag(*v, &b.ty.kind),
+            Sym::Const(v, _) => retag(*v, &b.kind),
             s => Value::Sym(s),
         },
-        v @ Value::Formula { .. } if !b.symbolic => super::resolve::formula_now(v, env, warnings)?,
+        v @ Value::Formula { .. } if !b.symbolic => resolve::formula_now(v, env, warnings)?,
         v @ (Value::Tuple(_) | Value::List(_)) if b.derived => now(v, env, warnings)?,
         v => v.clone(),
     }))
@@ -54,9 +52,9 @@ pub fn current(
 /// to a name of its own). A tuple whose items are the parts of one
 /// operation's result (`rpy(R)`'s angles) is that operation's value once
 /// its symbols have numbers: a vector, as typed first.
-pub(super) fn now(
+pub fn now(
     v: &Value,
-    env: &Env,
+    env: &dyn Bindings,
     warnings: &mut Vec<Diagnostic>,
 ) -> Result<Value, replay::Failed> {
     Ok(match v {
@@ -64,7 +62,7 @@ pub(super) fn now(
             Sym::Const(v, _) => *v,
             s => Value::Sym(s),
         },
-        Value::Formula { .. } => super::resolve::formula_now(v, env, warnings)?,
+        Value::Formula { .. } => resolve::formula_now(v, env, warnings)?,
         Value::Tuple(vs) if vs.iter().any(recipe::holds_symbols) => {
             let whole = parts_of_one(vs);
             if let Some(whole) = &whole
@@ -79,7 +77,7 @@ pub(super) fn now(
             match whole {
                 // partly bound: the parts stay parts of one call (rebased once)
                 Some(whole) => {
-                    let lookup = |s: &Symbol| super::resolve::bound(env, s);
+                    let lookup = |s: &Symbol| resolve::bound(env, s);
                     let shared = replay::at_numbers(&whole, &lookup);
                     Value::Tuple(
                         items
@@ -137,10 +135,10 @@ fn parts_of_one(vs: &[Value]) -> Option<Rc<recipe::Recipe>> {
 /// (replayed as typed first); None while one is free.
 fn numbers(
     r: &Rc<recipe::Recipe>,
-    env: &Env,
+    env: &dyn Bindings,
     warnings: &mut Vec<Diagnostic>,
 ) -> Result<Option<Value>, replay::Failed> {
-    let lookup = |s: &Symbol| super::resolve::bound(env, s);
+    let lookup = |s: &Symbol| resolve::bound(env, s);
     let mut syms = Vec::new();
     recipe::symbols(r, &mut syms);
     if !syms.iter().all(|s| lookup(s).is_some()) {
@@ -151,7 +149,7 @@ fn numbers(
 
 /// `v` with the checker's kind, unless that is only a shape (a plain
 /// matrix or vector keeps the kind read from its entries).
-pub(super) fn retag(v: Value, kind: &Kind) -> Value {
+pub fn retag(v: Value, kind: &Kind) -> Value {
     match (v, kind) {
         (v, Kind::Unknown | Kind::Matrix(..) | Kind::Vector(_)) => v,
         (Value::Num { m, exact, .. }, k) => Value::Num { kind: *k, m, exact },

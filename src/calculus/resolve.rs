@@ -7,10 +7,7 @@
 //! warnings); one that fails with its numbers (`Rot(w, θ)` with w = 0)
 //! is the value's refusal, as typed first.
 
-use super::env::Binding;
-use super::env::Env;
-use super::ops::Sel;
-use super::value::{Sym, Value};
+use super::Bindings;
 use crate::check::ty::Kind;
 use crate::decide::replay::{self, Failed};
 use crate::diagnostics::Diagnostic;
@@ -18,13 +15,17 @@ use crate::seam::apply::to_sym;
 use crate::seam::apply::{self, Op};
 use crate::sym::{Mat, Symbol};
 use crate::syntax::ast::BinOp;
+use crate::syntax::name::Name;
+use crate::values::formula;
+use crate::values::ops::Sel;
 use crate::values::recipe;
+use crate::values::value::{Sym, Value};
 use std::rc::Rc;
 
 /// Where a tree is resolved: the session's bindings, the warnings of the
 /// operations computed, and the first that failed with its numbers.
 struct Resolving<'a, 'w> {
-    env: &'a Env,
+    env: &'a dyn Bindings,
     warnings: &'w mut Vec<Diagnostic>,
     failed: Option<String>,
 }
@@ -34,7 +35,7 @@ struct Resolving<'a, 'w> {
 /// typed first. Err with the message of the first operation that fails
 /// with its numbers (the value is refused, as typed first); an operation
 /// whose operands are not yet all numbers stays symbolic.
-pub fn resolve(s: &Sym, env: &Env, warnings: &mut Vec<Diagnostic>) -> Result<Sym, Failed> {
+pub fn resolve(s: &Sym, env: &dyn Bindings, warnings: &mut Vec<Diagnostic>) -> Result<Sym, Failed> {
     let mut r = Resolving {
         env,
         warnings,
@@ -64,7 +65,7 @@ impl Resolving<'_, '_> {
 
     fn go(&mut self, s: &Sym) -> Sym {
         match s {
-            Sym::Name(n) => match self.env.get(n).and_then(|b| b.val.as_ref()) {
+            Sym::Name(n) => match self.env.binding(Name::new(n)).and_then(|b| b.val) {
                 Some(v @ Value::Num { .. }) => to_sym(v),
                 _ if n == "deg" => to_sym(&Value::scalar(std::f64::consts::PI / 180.0)),
                 _ => s.clone(),
@@ -137,7 +138,7 @@ impl Resolving<'_, '_> {
                 // `[R, p; 0, 1]`: its lone 0 is a zero block, as typed first
                 let written = &rows_written;
                 if let Some(v) = vals.as_mut() {
-                    super::notation::zero_blocks_where(
+                    crate::seam::shapes::zero_blocks_where(
                         |i, j| matches!(&written[i][j], Sym::Const(c, _) if c.as_scalar() == Some(0.0)),
                         v,
                     );
@@ -313,19 +314,18 @@ fn symbols_of(m: &Mat, how: Option<&Rc<recipe::Recipe>>) -> Vec<Symbol> {
 }
 
 /// The value bound to a symbol now, if it is a number.
-pub(super) fn bound(env: &Env, s: &Symbol) -> Option<Value> {
+pub fn bound(env: &dyn Bindings, s: &Symbol) -> Option<Value> {
     // (a component u[i] of a given vector: entry i of the numbers bound
     // to u, so that a bool over u[1] is decided again, issue 35)
     if s.index > 0 && s.dots == 0 && s.time.is_none() {
-        return match env.get(&*s.name) {
-            Some(Binding {
-                val: Some(v @ Value::Num { m, .. }),
-                ..
-            }) if m.ncols() == 1 && usize::from(s.index) <= m.nrows() => {
+        return match env.binding(Name::new(&s.name)).and_then(|b| b.val) {
+            Some(v @ Value::Num { m, .. })
+                if m.ncols() == 1 && usize::from(s.index) <= m.nrows() =>
+            {
                 let i = usize::from(s.index) - 1;
                 // (exact where the vector is: u = (0.6, 0, 0.8) as typed)
                 Some(match v.exact_form() {
-                    Some(f) if f.data.len() == m.nrows() => super::formula::make(
+                    Some(f) if f.data.len() == m.nrows() => formula::make(
                         &crate::check::ty::Kind::Scalar,
                         crate::sym::Mat::scalar(f.data[i].clone()),
                     ),
@@ -335,11 +335,11 @@ pub(super) fn bound(env: &Env, s: &Symbol) -> Option<Value> {
             _ => None,
         };
     }
-    match env.get(&*super::formula::binding_name(s)) {
-        Some(Binding {
-            val: Some(v @ Value::Num { .. }),
-            ..
-        }) => Some(v.clone()),
+    match env
+        .binding(Name::new(&formula::binding_name(s)))
+        .and_then(|b| b.val)
+    {
+        Some(v @ Value::Num { .. }) => Some(v.clone()),
         _ => None,
     }
 }
@@ -356,9 +356,9 @@ pub(super) fn bound(env: &Env, s: &Symbol) -> Option<Value> {
 /// operations give the numbers, as typed first. Partly bound, the numbers
 /// are put in, exactly where they are exact ([`replay::put_numbers`], and
 /// into how it was made).
-pub(super) fn formula_now(
+pub fn formula_now(
     v: &Value,
-    env: &Env,
+    env: &dyn Bindings,
     warnings: &mut Vec<Diagnostic>,
 ) -> Result<Value, replay::Failed> {
     let Value::Formula { kind, m, how } = v else {
@@ -382,7 +382,7 @@ pub(super) fn formula_now(
         }
     }
     Ok(
-        match super::formula::make(kind, m.map(|e| replay::put_numbers(e, &lookup))) {
+        match formula::make(kind, m.map(|e| replay::put_numbers(e, &lookup))) {
             Value::Formula { kind, m, .. } => Value::Formula {
                 kind,
                 m,

@@ -6,17 +6,17 @@
 //! value remembers the warnings it gave, with what the value was made by
 //! (its recipe, shared by `z = y`, or its binding) and the bindings of
 //! the symbols it reads (each binding has its own stamp,
-//! `Binding::stamp` in `super::env`). A later read of the same value with
+//! `Binding::stamp` in `crate::eval::env`). A later read of the same value with
 //! the same bindings gives those warnings no more; once a symbol it reads
 //! is bound again, the numbers are new and their warnings are given again.
 
 use std::rc::Rc;
 
-use super::value::{Sym, Value};
 use crate::diagnostics::Diagnostic;
 use crate::sym::Symbol;
 use crate::values::operation::Operation;
 use crate::values::recipe::{self, Recipe, Step};
+use crate::values::value::{Sym, Value};
 
 /// The most values remembered (the oldest are forgotten first: a value
 /// forgotten warns again, which is the safe side).
