@@ -121,3 +121,37 @@ fn perturbed_block_identities_are_never_true() {
         assert_ne!(last["value"], true, "{wrong}: {last:?}");
     }
 }
+
+/// A block of symbolic blocks is as tall as its tallest entry in each row
+/// and as wide as its widest in each column, as the same block of numbers
+/// is (a lone `0` is a zero block): `[1, 0; 0, R]` is 4×4 and
+/// `[R, 0; 0, R]` 6×6 (they were typed 2×2 and 4×4, so comparing them
+/// with `eye(4)` or `eye(6)` was a false size error).
+#[test]
+fn a_block_of_symbolic_blocks_has_the_size_of_its_blocks() {
+    let src = "given R : SO3\ngiven K : so3\ngiven p : vec3\nA = [1, 0; 0, R]\nB = [R, 0; 0, R]\n\
+               C = [2, 0; 0, R^T (R + K) - R^T K]\nD = [R, p; 0, 0, 0, 1]";
+    let text = run(&["-e", src]).1;
+    for (name, size) in [
+        ("A", "4×4 matrix"),
+        ("B", "6×6 matrix"),
+        ("C", "4×4 matrix"),
+    ] {
+        let line = text
+            .lines()
+            .find(|l| l.starts_with(&format!("{name} = ")))
+            .unwrap_or_else(|| panic!("{name} in {text}"));
+        assert!(line.ends_with(&format!(": {size}")), "{line}");
+    }
+    let j = json(&format!(
+        "{src}\nA == [1, 0; 0, R]\nC == [2, 0; 0, eye(3)]\nB == eye(6)\nR = Rotz(0.3)\n\
+         A == [1, 0, 0, 0; 0, R[1,1], R[1,2], R[1,3]; 0, R[2,1], R[2,2], R[2,3]; 0, R[3,1], R[3,2], R[3,3]]"
+    ));
+    assert_eq!(j[3]["kind"], "SE3", "{:?}", j[3]);
+    assert_eq!(j[4]["value"], true, "{:?}", j[4]);
+    // Same sizes: compared (C's corner is RᵀR = I; not decided over
+    // differently cut blocks, never refused as a size mismatch).
+    assert_eq!(j[5]["kind"], "bool", "{:?}", j[5]);
+    assert_eq!(j[6]["kind"], "bool", "{:?}", j[6]);
+    assert_eq!(j[8]["value"], true, "{:?}", j[8]);
+}

@@ -70,21 +70,30 @@ pub(crate) fn block_type(widths: &[usize], args: &[&Ty]) -> Ty {
             }
         }
     }
-    // Shape: sum of widths of the first row, sum of heights of the first column.
+    // Shape: a row is as tall as its tallest entry and a column as wide as
+    // its widest (among rows with as many entries as the first), as
+    // `zero_blocks_where` makes the values: a scalar may be a lone `0`
+    // standing for a zero block, so it only says "at least 1"
+    // (`[1, 0; 0, R]` is 4×4, `[R, 0; 0, R]` 6×6). An entry of unknown
+    // shape leaves its row's height or its column's width unknown.
+    let dims = |t: &&Ty| t.kind.shape().unwrap_or((None, None));
+    let widest = |a: Option<usize>, b: Option<usize>| a.zip(b).map(|(a, b)| a.max(b));
     let first = widths.first().map_or(0, |&n| n.min(args.len()));
-    let width: Option<usize> = args[..first]
-        .iter()
-        .map(|t| t.kind.shape().and_then(|s| s.1))
-        .sum();
-    let mut start = 0;
+    let mut columns: Vec<Option<usize>> = vec![Some(1); first];
     let mut height = Some(0);
+    let mut start = 0;
     for &n in widths {
-        let h = args
-            .get(start)
-            .and_then(|t| t.kind.shape().and_then(|s| s.0));
-        height = height.zip(h).map(|(a, b)| a + b);
+        let row = &args[start.min(args.len())..(start + n).min(args.len())];
+        let tall = row.iter().map(|t| dims(t).0).fold(Some(1), widest);
+        height = height.zip(tall).map(|(a, b)| a + b);
+        if n == first {
+            for (c, t) in columns.iter_mut().zip(row) {
+                *c = widest(*c, dims(t).1);
+            }
+        }
         start += n;
     }
+    let width: Option<usize> = columns.into_iter().sum();
     Ty::new(Kind::Matrix(height, width), frames)
 }
 
