@@ -8,6 +8,7 @@ mod derive;
 pub mod env;
 pub mod explain;
 mod expr;
+mod given_equal;
 pub mod graph;
 mod hold;
 pub mod interp;
