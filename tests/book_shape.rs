@@ -193,3 +193,36 @@ fn numeric_chains_keep_their_trigonometric_grouping() {
     let src = "given a, b, c\nx = sin(a) cos(c) + cos(b) cos(c) + sin(b)";
     assert_eq!(shown(src, "x").0, "(sin(a) + cos(b)) cos(c) + sin(b)");
 }
+
+/// What `src` prints with `--exact` (text output).
+fn exact_text(src: &str) -> String {
+    let mut s = chasles::session::Session::new(chasles::session::Settings {
+        exact: true,
+        digits: 17,
+        ..chasles::session::Settings::default()
+    });
+    let (out, err, n) = s.run_to_strings("t.chs", src, chasles::eval::env::Mode::Run, false);
+    assert_eq!(n, 0, "{src}\n{err}");
+    out
+}
+
+#[test]
+fn exact_fractions_print_as_fractions_and_typed_decimals_as_typed() {
+    // 1/8 computed from integers printed `0.125` (a denominator dividing
+    // a power of ten was taken for a typed decimal)
+    let t = reads_back("given x", "diff(tan(x/2)/2, x)", "");
+    assert!(t.contains("1/4") && !t.contains("0.125"), "{t}");
+    let t = reads_back("given x", "x/8 + x^2/16", "");
+    assert_eq!(t, "(1/8) x + (1/16) x^2");
+    // a typed decimal prints as typed, and so does what arithmetic makes
+    // of it (the book's lengths: 0.425/2 is 0.2125)
+    let t = reads_back("given x\nL = 0.425", "L cos(x)/2 + 0.125 x", "");
+    assert_eq!(t, "0.2125 cos(x) + 0.125 x");
+    let t = reads_back("given x", "0.1 x + x/20", "");
+    assert_eq!(t, "0.15 x");
+    // exact numbers: SymPy's 1/16 is 1/16, a typed 0.0625 is 0.0625
+    let out = exact_text(
+        "simplify(cos(pi/9) cos(2 pi/9) cos(3 pi/9) cos(4 pi/9))\n1/8\n0.0625\n0.1 + 0.2\n",
+    );
+    assert_eq!(out, "1/16\n1/8\n0.0625\n0.3\n");
+}

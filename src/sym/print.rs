@@ -348,8 +348,10 @@ fn surd_term(r: &Rat, k: u128, latex: bool) -> String {
             return format!("{sign}{p}");
         }
         // a decimal as typed (0.1, 0.425), in full up to 12 places; halves,
-        // quarters and fifths stay fractions (0.392 = 49/125 is a decimal)
+        // quarters and fifths stay fractions (0.392 = 49/125 is a decimal),
+        // and so does a fraction computed from integers (1/8, 1/16)
         if let Some(q) = q_small
+            && r.is_typed()
             && q > 5
             && (1..=12).any(|k| 10i128.pow(k) % q == 0)
             && let Some(digits) = (if r.is_negative() { r.neg() } else { r.clone() }).decimal_text()
