@@ -226,3 +226,42 @@ fn exact_fractions_print_as_fractions_and_typed_decimals_as_typed() {
     );
     assert_eq!(out, "1/16\n1/8\n0.0625\n0.3\n");
 }
+
+#[test]
+fn half_angle_tangent_powers_print_as_powers() {
+    // tan(x/2)^2 printed (1/2) (1/cos(x/2)^2 - cos(x)/cos(x/2)^2): the
+    // canonical form folds sin(x/2)^2 into (1 - cos(x))/2
+    for (entry, want) in [
+        ("tan(x/2)^2", "tan(x/2)^2"),
+        ("simplify(tan(x/2)^2)", "tan(x/2)^2"),
+        ("tan(x/2)^3", "tan(x/2)^3"),
+        ("cot(x/2)^3", "cot(x/2)^3"),
+        ("a tan(x/2)^2 + b", "a tan(x/2)^2 + b"),
+        ("tan(x/2)^2 + tan(x/2)", "tan(x/2) + tan(x/2)^2"),
+        ("diff(tan(x/2), x)", "(1/2) (1 + tan(x/2)^2)"),
+    ] {
+        assert_eq!(reads_back("given x, a, b", entry, ""), want, "{entry}");
+    }
+    // a quotient that is no tangent's power stays as it was
+    let t = reads_back("given x", "1/cos(x/2)^2", "");
+    assert!(!t.contains("tan"), "{t}");
+}
+
+#[test]
+fn a_sum_of_mixed_signs_keeps_its_own_sign() {
+    // exp(-(-1/2 + √5/2) t): the sign pulled into the sum
+    for (entry, want) in [
+        ("exp(-(-1/2 + sqrt(5)/2) t)", "exp((1/2 - √5/2) t)"),
+        ("exp(-(1/2 + sqrt(5)/2) t)", "exp(-(1/2 + √5/2) t)"),
+        ("(1 - sqrt(2)) x", "(1 - √2) x"),
+        ("y + (1 - sqrt(2)) x", "(1 - √2) x + y"),
+    ] {
+        assert_eq!(reads_back("given t, x, y", entry, ""), want, "{entry}");
+    }
+    // LaTeX names the exponential as the book does
+    let (_, tex) = shown("given t\nx = exp(-(-1/2 + sqrt(5)/2) t)", "x");
+    assert_eq!(
+        tex,
+        "\\exp\\left(\\left(\\frac{1}{2} - \\frac{\\sqrt{5}}{2}\\right) t\\right)"
+    );
+}

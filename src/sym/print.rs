@@ -66,6 +66,8 @@ pub(super) fn var(v: &Var, st: Style) -> String {
                 (Func::Recip, true) => format!("\\left({}\\right)", args[0]),
                 (Func::Recip, false) => format!("({})", args[0]),
                 (Func::Sqrt, true) => format!("\\sqrt{{{}}}", args[0]),
+                // the book's exponential, as LaTeX names it
+                (Func::Exp, true) => format!("\\exp\\left({}\\right)", args[0]),
                 (f, true) => format!(
                     "\\operatorname{{{}}}\\left({}\\right)",
                     f.name(),
@@ -307,7 +309,10 @@ pub(super) fn coefficient(c: &Coef, st: Style) -> (bool, String) {
     match c {
         Coef::Approx { re, .. } => (*re < 0.0, fmt_float(re.abs(), st.digits)),
         Coef::Exact { re, .. } => {
-            let neg = re.signum() < 0.0;
+            // the sign in front when every part is negative; a sum of
+            // mixed signs keeps its own (`(1/2 - √5/2) t`, not
+            // `-(-1/2 + √5/2) t`)
+            let neg = re.terms().all(|(_, r)| r.is_negative()) && !re.is_zero();
             let s = if neg { re.neg() } else { re.clone() };
             let parts: Vec<(u128, &Rat)> = s.terms().collect();
             match parts.as_slice() {
