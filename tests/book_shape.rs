@@ -265,3 +265,23 @@ fn a_sum_of_mixed_signs_keeps_its_own_sign() {
         "\\exp\\left(\\left(\\frac{1}{2} - \\frac{\\sqrt{5}}{2}\\right) t\\right)"
     );
 }
+
+#[test]
+fn irrational_angles_print_folded_as_eq_proves_them() {
+    // sin(√6 x)^2 + cos(√6 x)^2 was proven == 1 but printed itself
+    for (entry, want) in [
+        ("sin(sqrt(6) x)^2 + cos(sqrt(6) x)^2", "1"),
+        ("simplify(sin(sqrt(6) x)^2 + cos(sqrt(6) x)^2)", "1"),
+        ("a sin(sqrt(2) x)^2 + a cos(sqrt(2) x)^2 + y", "a + y"),
+        ("simplify(2 sin(sqrt(2) x) cos(sqrt(2) x))", "sin(2√2 x)"),
+        (
+            "simplify(cos(sqrt(2) x)^2 - sin(sqrt(2) x)^2)",
+            "cos(2√2 x)",
+        ),
+        ("cos(x y)^2 + sin(x y)^2 + cos(y)", "1 + cos(y)"),
+    ] {
+        assert_eq!(reads_back("given x, y, a", entry, ""), want, "{entry}");
+    }
+    // nothing shorter: kept as it is
+    assert_eq!(reads_back("given x", "cos(sqrt(2) x)^2", ""), "cos(√2 x)^2");
+}

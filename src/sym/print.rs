@@ -34,8 +34,16 @@ impl Default for Style {
     }
 }
 
-/// The terms of `e`, each with its sign: `("+", "L1 cos(t1)")`.
+/// The terms of `e`, each with its sign: `("+", "L1 cos(t1)")`. Angles
+/// that are not integer combinations of the symbols (`sin(√6 x)`) are
+/// first folded through fresh symbols ([`super::generalize::refolded`]),
+/// where that leaves fewer terms: `sin(√6 x)^2 + cos(√6 x)^2` prints `1`.
 pub fn terms(e: &Expr, st: Style) -> Vec<(bool, String)> {
+    if let Some(f) = super::generalize::refolded(e, &|g| g.clone())
+        && f.terms.len() < e.terms.len()
+    {
+        return super::fraction::terms(&f, st);
+    }
     super::fraction::terms(e, st)
 }
 

@@ -316,8 +316,10 @@ pub fn turned_over(e: &Expr) -> Option<Expr> {
 /// What `simplify` prints (LANGUAGE.md §7): the shortest in print of the
 /// canonical form with quotients cancelled ([`Expr::cancel`]), the same
 /// over one denominator ([`over_one`]), cancelled factor by factor
-/// ([`super::shortest::by_factors`]), and its half-angle forms
-/// ([`super::shortest::half_angle`]); equal values every one, the
+/// ([`super::shortest::by_factors`]), its half-angle forms
+/// ([`super::shortest::half_angle`]) and the same made simplest over
+/// fresh symbols for its irrational angles
+/// ([`super::generalize::refolded`]); equal values every one, the
 /// canonical form on a tie.
 pub fn simplest(e: &Expr) -> Expr {
     let cancelled = e.cancel();
@@ -328,6 +330,7 @@ pub fn simplest(e: &Expr) -> Expr {
         .into_iter()
         .chain(factored)
         .chain(super::shortest::half_angle(&cancelled))
+        .chain(super::generalize::refolded(&cancelled, &simplest))
         .filter(|c| *c != cancelled)
         .collect();
     if others.is_empty() {
