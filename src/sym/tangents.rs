@@ -118,9 +118,9 @@ const MAX_HALF_TERMS: usize = 64;
 /// `e` with its quotients over a power of a kept half-angle cosine written
 /// as powers of the tangent, a kept call, and those over a power of the
 /// sine with the cosine to the same power above, which [`call_tangents`]
-/// prints as the cotangent: the
-/// canonical form folds sin(x/2)² into (1 − cos x)/2, and `tan(x/2)^2`
-/// printed `(1/2) (1/cos(x/2)^2 - cos(x)/cos(x/2)^2)`. The terms over
+/// prints as the cotangent: the canonical form folds sin(x/2)² into
+/// (1 − cos x)/2, and `tan(x/2)^2` printed
+/// `(1/2) (1/cos(x/2)^2 - cos(x)/cos(x/2)^2)`. The terms over
 /// cos(u)^p, N/cos(u)^p, are Q·tan(u)^p where N = Q·sin(u)^p exactly
 /// (checked by multiplying back), with Q no longer than N: the same value,
 /// with a variable the canonical form does not use for it. None when
