@@ -279,9 +279,23 @@ fn irrational_angles_print_folded_as_eq_proves_them() {
             "cos(2√2 x)",
         ),
         ("cos(x y)^2 + sin(x y)^2 + cos(y)", "1 + cos(y)"),
+        // a plain angle beside an irrational one joins it
+        (
+            "sin(sqrt(2) x) cos(y) + cos(sqrt(2) x) sin(y)",
+            "sin(√2 x + y)",
+        ),
+        ("cos(sqrt(2) x + pi/5)^2 + sin(sqrt(2) x + pi/5)^2", "1"),
     ] {
         assert_eq!(reads_back("given x, y, a", entry, ""), want, "{entry}");
     }
+    // a constant offset with no exact sine (0.3) is not folded into
+    // floats: the printed form reads back as the value
+    let t = reads_back(
+        "given x, y",
+        "simplify(cos(sqrt(2) x) cos(y + 0.3) - sin(sqrt(2) x) sin(y + 0.3))",
+        "",
+    );
+    assert!(t.contains("y + 0.3"), "{t}");
     // nothing shorter: kept as it is
     assert_eq!(reads_back("given x", "cos(sqrt(2) x)^2", ""), "cos(√2 x)^2");
 }

@@ -161,8 +161,14 @@ pub fn linearized(p: &Expr, q: &Expr) -> Option<(Expr, Expr)> {
 /// itself as a. The same value by construction (an identity in an
 /// independent w holds at w = a), so `sin(√6 x)^2 + cos(√6 x)^2` prints
 /// `1`, as `==` proves it. None when `e` has no odd angle, or one nested
-/// in a call that is not a sine or cosine of it.
+/// in a call that is not a sine or cosine of it, or a float coefficient.
 pub fn refolded(e: &Expr, make: &dyn Fn(&Expr) -> Expr) -> Option<Expr> {
+    // (a float coefficient, such as a constant offset's e^{0.3i} in
+    // cos(y + 0.3), would be multiplied into the calls put back, where
+    // it prints in floats: not folded)
+    if !e.terms.values().all(Coef::is_exact) {
+        return None;
+    }
     let mut found = Vec::new();
     terms(e, &mut found);
     if found.is_empty() || found.len() > 8 {
@@ -185,11 +191,22 @@ pub fn refolded(e: &Expr, make: &dyn Fn(&Expr) -> Expr) -> Option<Expr> {
         let mut rest: Mono = Vec::new();
         let mut turn = Expr::zero();
         let mut factor = Expr::one();
+        // a plain angle beside a fresh one joins it (e^{iw} e^{iy} is
+        // e^{i(√2 x + y)}: `sin(√2 x + y)`, one call)
+        let fresh_here = m
+            .iter()
+            .any(|(v, _)| matches!(v, Var::Z(s) if angle(s).is_some()));
         for (v, k) in m {
             match v {
                 Var::Z(s) if let Some(a) = angle(s) => {
                     turn = turn.add(&a.scale(&Coef::int(i64::from(*k))));
                 }
+                Var::Z(s) if fresh_here && s.phase().is_none() => {
+                    turn = turn.add(&Expr::symbol(s.clone()).scale(&Coef::int(i64::from(*k))));
+                }
+                // a constant offset (y + 0.3) beside a fresh angle would
+                // print in floats: not folded
+                Var::Z(_) if fresh_here => return None,
                 Var::Sym(s) if let Some(a) = angle(s) => {
                     factor = factor.mul(&a.powi(i64::from(*k))?);
                 }
@@ -223,7 +240,8 @@ pub fn refolded(e: &Expr, make: &dyn Fn(&Expr) -> Expr) -> Option<Expr> {
         }
         out = out.add(&t.mul(&factor));
     }
-    Some(out)
+    // never floats where the value had none
+    out.terms.values().all(Coef::is_exact).then_some(out)
 }
 
 #[cfg(test)]
