@@ -193,3 +193,109 @@ fn numeric_chains_keep_their_trigonometric_grouping() {
     let src = "given a, b, c\nx = sin(a) cos(c) + cos(b) cos(c) + sin(b)";
     assert_eq!(shown(src, "x").0, "(sin(a) + cos(b)) cos(c) + sin(b)");
 }
+
+/// What `src` prints with `--exact` (text output).
+fn exact_text(src: &str) -> String {
+    let mut s = chasles::session::Session::new(chasles::session::Settings {
+        exact: true,
+        digits: 17,
+        ..chasles::session::Settings::default()
+    });
+    let (out, err, n) = s.run_to_strings("t.chs", src, chasles::eval::env::Mode::Run, false);
+    assert_eq!(n, 0, "{src}\n{err}");
+    out
+}
+
+#[test]
+fn exact_fractions_print_as_fractions_and_typed_decimals_as_typed() {
+    // 1/8 computed from integers printed `0.125` (a denominator dividing
+    // a power of ten was taken for a typed decimal)
+    let t = reads_back("given x", "diff(tan(x/2)/2, x)", "");
+    assert!(t.contains("1/4") && !t.contains("0.125"), "{t}");
+    let t = reads_back("given x", "x/8 + x^2/16", "");
+    assert_eq!(t, "(1/8) x + (1/16) x^2");
+    // a typed decimal prints as typed, and so does what arithmetic makes
+    // of it (the book's lengths: 0.425/2 is 0.2125)
+    let t = reads_back("given x\nL = 0.425", "L cos(x)/2 + 0.125 x", "");
+    assert_eq!(t, "0.2125 cos(x) + 0.125 x");
+    let t = reads_back("given x", "0.1 x + x/20", "");
+    assert_eq!(t, "0.15 x");
+    // exact numbers: SymPy's 1/16 is 1/16, a typed 0.0625 is 0.0625
+    let out = exact_text(
+        "simplify(cos(pi/9) cos(2 pi/9) cos(3 pi/9) cos(4 pi/9))\n1/8\n0.0625\n0.1 + 0.2\n",
+    );
+    assert_eq!(out, "1/16\n1/8\n0.0625\n0.3\n");
+}
+
+#[test]
+fn half_angle_tangent_powers_print_as_powers() {
+    // tan(x/2)^2 printed (1/2) (1/cos(x/2)^2 - cos(x)/cos(x/2)^2): the
+    // canonical form folds sin(x/2)^2 into (1 - cos(x))/2
+    for (entry, want) in [
+        ("tan(x/2)^2", "tan(x/2)^2"),
+        ("simplify(tan(x/2)^2)", "tan(x/2)^2"),
+        ("tan(x/2)^3", "tan(x/2)^3"),
+        ("cot(x/2)^3", "cot(x/2)^3"),
+        ("a tan(x/2)^2 + b", "a tan(x/2)^2 + b"),
+        ("tan(x/2)^2 + tan(x/2)", "tan(x/2) + tan(x/2)^2"),
+        ("diff(tan(x/2), x)", "(1/2) (1 + tan(x/2)^2)"),
+    ] {
+        assert_eq!(reads_back("given x, a, b", entry, ""), want, "{entry}");
+    }
+    // a quotient that is no tangent's power stays as it was
+    let t = reads_back("given x", "1/cos(x/2)^2", "");
+    assert!(!t.contains("tan"), "{t}");
+}
+
+#[test]
+fn a_sum_of_mixed_signs_keeps_its_own_sign() {
+    // exp(-(-1/2 + √5/2) t): the sign pulled into the sum
+    for (entry, want) in [
+        ("exp(-(-1/2 + sqrt(5)/2) t)", "exp((1/2 - √5/2) t)"),
+        ("exp(-(1/2 + sqrt(5)/2) t)", "exp(-(1/2 + √5/2) t)"),
+        ("(1 - sqrt(2)) x", "(1 - √2) x"),
+        ("y + (1 - sqrt(2)) x", "(1 - √2) x + y"),
+    ] {
+        assert_eq!(reads_back("given t, x, y", entry, ""), want, "{entry}");
+    }
+    // LaTeX names the exponential as the book does
+    let (_, tex) = shown("given t\nx = exp(-(-1/2 + sqrt(5)/2) t)", "x");
+    assert_eq!(
+        tex,
+        "\\exp\\left(\\left(\\frac{1}{2} - \\frac{\\sqrt{5}}{2}\\right) t\\right)"
+    );
+}
+
+#[test]
+fn irrational_angles_print_folded_as_eq_proves_them() {
+    // sin(√6 x)^2 + cos(√6 x)^2 was proven == 1 but printed itself
+    for (entry, want) in [
+        ("sin(sqrt(6) x)^2 + cos(sqrt(6) x)^2", "1"),
+        ("simplify(sin(sqrt(6) x)^2 + cos(sqrt(6) x)^2)", "1"),
+        ("a sin(sqrt(2) x)^2 + a cos(sqrt(2) x)^2 + y", "a + y"),
+        ("simplify(2 sin(sqrt(2) x) cos(sqrt(2) x))", "sin(2√2 x)"),
+        (
+            "simplify(cos(sqrt(2) x)^2 - sin(sqrt(2) x)^2)",
+            "cos(2√2 x)",
+        ),
+        ("cos(x y)^2 + sin(x y)^2 + cos(y)", "1 + cos(y)"),
+        // a plain angle beside an irrational one joins it
+        (
+            "sin(sqrt(2) x) cos(y) + cos(sqrt(2) x) sin(y)",
+            "sin(√2 x + y)",
+        ),
+        ("cos(sqrt(2) x + pi/5)^2 + sin(sqrt(2) x + pi/5)^2", "1"),
+    ] {
+        assert_eq!(reads_back("given x, y, a", entry, ""), want, "{entry}");
+    }
+    // a constant offset with no exact sine (0.3) is not folded into
+    // floats: the printed form reads back as the value
+    let t = reads_back(
+        "given x, y",
+        "simplify(cos(sqrt(2) x) cos(y + 0.3) - sin(sqrt(2) x) sin(y + 0.3))",
+        "",
+    );
+    assert!(t.contains("y + 0.3"), "{t}");
+    // nothing shorter: kept as it is
+    assert_eq!(reads_back("given x", "cos(sqrt(2) x)^2", ""), "cos(√2 x)^2");
+}

@@ -176,7 +176,9 @@ fn roots_print_exactly() {
             "b = 1/√3",
             "c = 5",
             "d = (√5, 1/√7, -1/√5)  : 3-vector",
-            "e = 1.5",
+            // (a fraction computed from integers is a fraction; a typed
+            // 1.5 prints as typed)
+            "e = 3/2",
             "f = (-√2 + √3)"
         ]
     );

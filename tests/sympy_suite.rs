@@ -34,7 +34,7 @@ use serde_json::Value;
 const TRUE_FLOOR: usize = 401;
 /// Simplified forms as short as SymPy's at the last count (numbers by
 /// their exact text, module doc).
-const SHORT_FLOOR: usize = 125;
+const SHORT_FLOOR: usize = 127;
 
 /// One identity of the table.
 struct Row {

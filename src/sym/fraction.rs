@@ -77,6 +77,10 @@ pub fn terms(e: &Expr, st: Style) -> Vec<(bool, String)> {
 }
 
 fn plain(e: &Expr, st: Style) -> Vec<(bool, String)> {
+    // powers of half-angle tangents, which the canonical form folds
+    if let Some(t) = super::tangents::half_tangents(e) {
+        return super::shape::shaped(&real_form(&t), st);
+    }
     super::shape::shaped(&real_form(e), st)
 }
 

@@ -14,7 +14,7 @@
 
 use super::coef::{Coef, Rat};
 use super::expr::{Expr, Func, Mono, Symbol, Var};
-use num_traits::Zero;
+use num_traits::{One, Zero};
 
 /// One fresh angle: the monomial it stands on, the coefficient w has
 /// there, and its symbol.
@@ -154,13 +154,21 @@ pub fn linearized(p: &Expr, q: &Expr) -> Option<(Expr, Expr)> {
     Some((rewrite(p, &names), rewrite(q, &names)))
 }
 
-/// `e` with its odd angles written as multiples of fresh symbols (module
-/// doc), in canonical form there, and written back: sin²(t w) + cos²(t w)
-/// is 1, which the canonical form over the product angle t w, a call it
-/// cannot see into, kept (Exercise 3.19's T₂₁ printed `r2 (sin(t w2)^2 +
-/// cos(t w2)^2)`). Equal to `e` (the identity holds for independent
-/// fresh symbols, so at their values); None when `e` has no odd angle.
-pub fn restored(e: &Expr) -> Option<Expr> {
+/// `e` made again through fresh angles: its odd terms renamed (module
+/// doc), `make` applied there (where the canonical form folds
+/// sin²(w) + cos²(w) into 1, or `simplify`), and the angles put back —
+/// e^{ikw} as cos(k a) + i sin(k a) of the angle a that w stands for, w
+/// itself as a. The same value by construction (an identity in an
+/// independent w holds at w = a), so `sin(√6 x)^2 + cos(√6 x)^2` prints
+/// `1`, as `==` proves it. None when `e` has no odd angle, or one nested
+/// in a call that is not a sine or cosine of it, or a float coefficient.
+pub fn refolded(e: &Expr, make: &dyn Fn(&Expr) -> Expr) -> Option<Expr> {
+    // (a float coefficient, such as a constant offset's e^{0.3i} in
+    // cos(y + 0.3), would be multiplied into the calls put back, where
+    // it prints in floats: not folded)
+    if !e.terms.values().all(Coef::is_exact) {
+        return None;
+    }
     let mut found = Vec::new();
     terms(e, &mut found);
     if found.is_empty() || found.len() > 8 {
@@ -170,12 +178,94 @@ pub fn restored(e: &Expr) -> Option<Expr> {
     if names.is_empty() || names.len() > 4 {
         return None;
     }
-    let value = |s: &Symbol| {
+    let general = make(&rewrite(e, &names));
+    let angle = |s: &Symbol| {
         names.iter().find(|(_, _, n)| n == s).map(|(m, w, _)| {
-            let mut x = Expr::zero();
-            x.push(m.clone(), w.clone());
-            x
+            let mut a = Expr::zero();
+            a.push(m.clone(), w.clone());
+            a
         })
     };
-    Some(rewrite(e, &names).subst(&value))
+    let mut out = Expr::zero();
+    for (m, c) in &general.terms {
+        let mut rest: Mono = Vec::new();
+        let mut turn = Expr::zero();
+        let mut factor = Expr::one();
+        // a plain angle beside a fresh one joins it (e^{iw} e^{iy} is
+        // e^{i(√2 x + y)}: `sin(√2 x + y)`, one call)
+        let fresh_here = m
+            .iter()
+            .any(|(v, _)| matches!(v, Var::Z(s) if angle(s).is_some()));
+        for (v, k) in m {
+            match v {
+                Var::Z(s) if let Some(a) = angle(s) => {
+                    turn = turn.add(&a.scale(&Coef::int(i64::from(*k))));
+                }
+                Var::Z(s) if fresh_here && s.phase().is_none() => {
+                    turn = turn.add(&Expr::symbol(s.clone()).scale(&Coef::int(i64::from(*k))));
+                }
+                // a constant offset (y + 0.3) beside a fresh angle would
+                // print in floats: not folded
+                Var::Z(_) if fresh_here => return None,
+                Var::Sym(s) if let Some(a) = angle(s) => {
+                    factor = factor.mul(&a.powi(i64::from(*k))?);
+                }
+                Var::Call(_) => {
+                    let mut syms = Vec::new();
+                    Expr::var(v.clone()).symbols(&mut syms);
+                    if syms.iter().any(|s| angle(s).is_some()) {
+                        return None;
+                    }
+                    rest.push((v.clone(), *k));
+                }
+                _ => rest.push((v.clone(), *k)),
+            }
+        }
+        let mut t = Expr::zero();
+        t.push(rest, c.clone());
+        if !turn.is_zero() {
+            // e^{iθ} = cos θ + i sin θ, over the angle whose first
+            // coefficient is positive (sin(−θ) is another call than
+            // sin θ: written −sin θ, the terms of ±θ meet)
+            let neg = turn
+                .terms
+                .values()
+                .next()
+                .is_some_and(|c| c.to_c64().0 < 0.0);
+            let (turn, i) = match neg {
+                true => (turn.neg(), Coef::i().neg()),
+                false => (turn, Coef::i()),
+            };
+            factor = factor.mul(&Expr::cos(&turn).add(&Expr::sin(&turn).scale(&i)));
+        }
+        out = out.add(&t.mul(&factor));
+    }
+    // never floats where the value had none
+    out.terms.values().all(Coef::is_exact).then_some(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sym::print::{Style, expr};
+
+    #[test]
+    fn irrational_angles_fold_through_fresh_symbols() {
+        let x = Expr::symbol(Symbol::new("x"));
+        let a = x.scale(&Coef::real(
+            crate::sym::coef::Surd::sqrt_of(&Rat::int(6)).unwrap(),
+        ));
+        let (s, c) = (Expr::sin(&a), Expr::cos(&a));
+        let one = s.mul(&s).add(&c.mul(&c));
+        assert_eq!(expr(&one, Style::default()), "1");
+        let f = refolded(&one, &|g| g.clone()).expect("an odd angle");
+        assert_eq!(f, Expr::one());
+        let two = s.mul(&c).scale(&Coef::int(2));
+        let back = refolded(&two, &|g| g.clone()).expect("an odd angle");
+        assert_eq!(expr(&back, Style::default()), "sin(2√6 x)");
+        assert_eq!(
+            expr(&crate::sym::together::simplest(&two), Style::default()),
+            "sin(2√6 x)"
+        );
+    }
 }

@@ -34,8 +34,16 @@ impl Default for Style {
     }
 }
 
-/// The terms of `e`, each with its sign: `("+", "L1 cos(t1)")`.
+/// The terms of `e`, each with its sign: `("+", "L1 cos(t1)")`. Angles
+/// that are not integer combinations of the symbols (`sin(√6 x)`) are
+/// first folded through fresh symbols ([`super::generalize::refolded`]),
+/// where that leaves fewer terms: `sin(√6 x)^2 + cos(√6 x)^2` prints `1`.
 pub fn terms(e: &Expr, st: Style) -> Vec<(bool, String)> {
+    if let Some(f) = super::generalize::refolded(e, &|g| g.clone())
+        && f.terms.len() < e.terms.len()
+    {
+        return super::fraction::terms(&f, st);
+    }
     super::fraction::terms(e, st)
 }
 
@@ -66,6 +74,8 @@ pub(super) fn var(v: &Var, st: Style) -> String {
                 (Func::Recip, true) => format!("\\left({}\\right)", args[0]),
                 (Func::Recip, false) => format!("({})", args[0]),
                 (Func::Sqrt, true) => format!("\\sqrt{{{}}}", args[0]),
+                // the book's exponential, as LaTeX names it
+                (Func::Exp, true) => format!("\\exp\\left({}\\right)", args[0]),
                 (f, true) => format!(
                     "\\operatorname{{{}}}\\left({}\\right)",
                     f.name(),
@@ -307,7 +317,10 @@ pub(super) fn coefficient(c: &Coef, st: Style) -> (bool, String) {
     match c {
         Coef::Approx { re, .. } => (*re < 0.0, fmt_float(re.abs(), st.digits)),
         Coef::Exact { re, .. } => {
-            let neg = re.signum() < 0.0;
+            // the sign in front when every part is negative; a sum of
+            // mixed signs keeps its own (`(1/2 - √5/2) t`, not
+            // `-(-1/2 + √5/2) t`)
+            let neg = re.terms().all(|(_, r)| r.is_negative()) && !re.is_zero();
             let s = if neg { re.neg() } else { re.clone() };
             let parts: Vec<(u128, &Rat)> = s.terms().collect();
             match parts.as_slice() {
@@ -348,8 +361,10 @@ fn surd_term(r: &Rat, k: u128, latex: bool) -> String {
             return format!("{sign}{p}");
         }
         // a decimal as typed (0.1, 0.425), in full up to 12 places; halves,
-        // quarters and fifths stay fractions (0.392 = 49/125 is a decimal)
+        // quarters and fifths stay fractions (0.392 = 49/125 is a decimal),
+        // and so does a fraction computed from integers (1/8, 1/16)
         if let Some(q) = q_small
+            && r.is_typed()
             && q > 5
             && (1..=12).any(|k| 10i128.pow(k) % q == 0)
             && let Some(digits) = (if r.is_negative() { r.neg() } else { r.clone() }).decimal_text()

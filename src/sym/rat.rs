@@ -11,14 +11,80 @@ use num_traits::{One, Signed, ToPrimitive};
 
 /// A reduced fraction num/den with den > 0: inline while both fit an
 /// `i64` (the usual case), a big rational otherwise. Each value has one
-/// form, so the derived equality, order and hash are those of the value's
+/// form, so equality, order and hash are those of the value's
 /// representation (a consistent total order, not the numeric one).
-#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord, Hash)]
+///
+/// An inline fraction also remembers whether it was made from a number
+/// typed as a decimal (`0.425`, LANGUAGE.md §7), so that the printer shows
+/// the book's lengths as typed while ⅛ computed from integers stays a
+/// fraction: the mark is kept by arithmetic (a sum or product with a
+/// marked operand is marked), lives in the tag's padding (the size is
+/// unchanged) and takes no part in equality, order or hash.
+#[derive(Clone)]
 pub enum Rat {
-    /// num/den, reduced, den > 0.
-    Small { num: i64, den: i64 },
+    /// num/den, reduced, den > 0; `typed`: made from a typed decimal.
+    Small { num: i64, den: i64, typed: bool },
     /// A fraction too large for [`Rat::Small`].
     Big(Box<BigRational>),
+}
+
+/// The value's equality: the typed mark is not part of it.
+impl PartialEq for Rat {
+    fn eq(&self, o: &Rat) -> bool {
+        match (self, o) {
+            (Rat::Small { num: a, den: b, .. }, Rat::Small { num: c, den: d, .. }) => {
+                a == c && b == d
+            }
+            (Rat::Big(x), Rat::Big(y)) => x == y,
+            _ => false,
+        }
+    }
+}
+
+impl Eq for Rat {}
+
+/// The representation's order (inline fractions first, then by numerator
+/// and denominator): a consistent total order, not the numeric one.
+impl Ord for Rat {
+    fn cmp(&self, o: &Rat) -> std::cmp::Ordering {
+        match (self, o) {
+            (Rat::Small { num: a, den: b, .. }, Rat::Small { num: c, den: d, .. }) => {
+                (a, b).cmp(&(c, d))
+            }
+            (Rat::Big(x), Rat::Big(y)) => x.cmp(y),
+            (Rat::Small { .. }, Rat::Big(_)) => std::cmp::Ordering::Less,
+            (Rat::Big(_), Rat::Small { .. }) => std::cmp::Ordering::Greater,
+        }
+    }
+}
+
+impl PartialOrd for Rat {
+    fn partial_cmp(&self, o: &Rat) -> Option<std::cmp::Ordering> {
+        Some(self.cmp(o))
+    }
+}
+
+/// The hash of the equality (the typed mark left out).
+impl std::hash::Hash for Rat {
+    fn hash<H: std::hash::Hasher>(&self, h: &mut H) {
+        match self {
+            Rat::Small { num, den, .. } => (0u8, num, den).hash(h),
+            Rat::Big(b) => (1u8, b).hash(h),
+        }
+    }
+}
+
+impl std::fmt::Debug for Rat {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Rat::Small { num, den, .. } => f
+                .debug_struct("Small")
+                .field("num", num)
+                .field("den", den)
+                .finish(),
+            Rat::Big(b) => f.debug_tuple("Big").field(b).finish(),
+        }
+    }
 }
 
 fn gcd(a: u128, b: u128) -> u128 {
@@ -48,9 +114,17 @@ fn gcd(a: u128, b: u128) -> u128 {
 
 impl Rat {
     /// 0.
-    pub const ZERO: Rat = Rat::Small { num: 0, den: 1 };
+    pub const ZERO: Rat = Rat::Small {
+        num: 0,
+        den: 1,
+        typed: false,
+    };
     /// 1.
-    pub const ONE: Rat = Rat::Small { num: 1, den: 1 };
+    pub const ONE: Rat = Rat::Small {
+        num: 1,
+        den: 1,
+        typed: false,
+    };
 
     /// `num/den` reduced; None for a zero denominator.
     pub fn new(num: i128, den: i128) -> Option<Rat> {
@@ -68,6 +142,7 @@ impl Rat {
             return Rat::Small {
                 num: if neg { -a } else { a },
                 den: b,
+                typed: false,
             };
         }
         let n = BigInt::from(n);
@@ -77,28 +152,34 @@ impl Rat {
     /// A reduced big rational, inline when it fits.
     pub fn from_big(r: BigRational) -> Rat {
         if let (Some(num), Some(den)) = (r.numer().to_i64(), r.denom().to_i64()) {
-            return Rat::Small { num, den };
+            return Rat::Small {
+                num,
+                den,
+                typed: false,
+            };
         }
         Rat::Big(Box::new(r))
     }
     /// The value as a big rational.
     pub fn to_big(&self) -> BigRational {
         match self {
-            Rat::Small { num, den } => BigRational::new_raw(BigInt::from(*num), BigInt::from(*den)),
+            Rat::Small { num, den, .. } => {
+                BigRational::new_raw(BigInt::from(*num), BigInt::from(*den))
+            }
             Rat::Big(b) => (**b).clone(),
         }
     }
     /// Numerator and denominator (reduced, denominator > 0).
     pub fn parts(&self) -> (BigInt, BigInt) {
         match self {
-            Rat::Small { num, den } => (BigInt::from(*num), BigInt::from(*den)),
+            Rat::Small { num, den, .. } => (BigInt::from(*num), BigInt::from(*den)),
             Rat::Big(b) => (b.numer().clone(), b.denom().clone()),
         }
     }
     /// Numerator and denominator when both fit an `i64`.
     pub fn small(&self) -> Option<(i64, i64)> {
         match self {
-            Rat::Small { num, den } => Some((*num, *den)),
+            Rat::Small { num, den, .. } => Some((*num, *den)),
             Rat::Big(_) => None,
         }
     }
@@ -114,12 +195,13 @@ impl Rat {
     /// [0, m): r − m⌊r/m⌋, exactly however large r is (an angle's
     /// multiple of π reduced by its period: 3·10⁷³ mod 2 is 0).
     pub fn rem_euclid(&self, m: i64) -> Rat {
-        if let Rat::Small { num, den } = self
+        if let Rat::Small { num, den, typed } = self
             && let Some(md) = m.checked_mul(*den)
         {
             return Rat::Small {
                 num: num.rem_euclid(md),
                 den: *den,
+                typed: *typed,
             };
         }
         let r = self.to_big();
@@ -127,9 +209,26 @@ impl Rat {
         let q = (&r / &m).floor();
         Rat::from_big(r - q * m)
     }
+    /// True when the fraction was made from a number typed as a decimal
+    /// (its printed form is then a decimal: `0.425`, not `17/40`).
+    pub fn is_typed(&self) -> bool {
+        matches!(self, Rat::Small { typed: true, .. })
+    }
+    /// The fraction, marked as made from a typed decimal when `typed`
+    /// (an integer or a big fraction is never marked).
+    pub fn marked(mut self, typed: bool) -> Rat {
+        if typed && let Rat::Small { den, typed: t, .. } = &mut self {
+            *t = *den != 1;
+        }
+        self
+    }
     /// The integer n.
     pub fn int(n: i64) -> Rat {
-        Rat::Small { num: n, den: 1 }
+        Rat::Small {
+            num: n,
+            den: 1,
+            typed: false,
+        }
     }
     /// True for 0.
     pub fn is_zero(&self) -> bool {
@@ -142,12 +241,15 @@ impl Rat {
             Rat::Big(b) => b.is_negative(),
         }
     }
-    /// The sum.
+    /// The sum (marked as typed when an operand is).
     pub fn add(&self, o: &Rat) -> Rat {
+        self.add_unmarked(o).marked(self.is_typed() || o.is_typed())
+    }
+    fn add_unmarked(&self, o: &Rat) -> Rat {
         match (self, o) {
             (x, y) if y.is_zero() => x.clone(),
             (x, y) if x.is_zero() => y.clone(),
-            (Rat::Small { num: a, den: b }, Rat::Small { num: c, den: d }) => {
+            (Rat::Small { num: a, den: b, .. }, Rat::Small { num: c, den: d, .. }) => {
                 let (a, b, c, d) = (
                     i128::from(*a),
                     i128::from(*b),
@@ -165,11 +267,14 @@ impl Rat {
             _ => big_add(self, o),
         }
     }
-    /// The product.
+    /// The product (marked as typed when an operand is).
     pub fn mul(&self, o: &Rat) -> Rat {
+        self.mul_unmarked(o).marked(self.is_typed() || o.is_typed())
+    }
+    fn mul_unmarked(&self, o: &Rat) -> Rat {
         match (self, o) {
             _ if self.is_zero() || o.is_zero() => Rat::ZERO,
-            (Rat::Small { num: a, den: b }, Rat::Small { num: c, den: d }) => {
+            (Rat::Small { num: a, den: b, .. }, Rat::Small { num: c, den: d, .. }) => {
                 let (a, b, c, d) = (
                     i128::from(*a),
                     i128::from(*b),
@@ -187,9 +292,10 @@ impl Rat {
     /// −x.
     pub fn neg(&self) -> Rat {
         match self {
-            Rat::Small { num, den } if *num != i64::MIN => Rat::Small {
+            Rat::Small { num, den, typed } if *num != i64::MIN => Rat::Small {
                 num: -num,
                 den: *den,
+                typed: *typed,
             },
             _ => Rat::from_big(-self.to_big()),
         }
@@ -198,7 +304,9 @@ impl Rat {
     pub fn inv(&self) -> Option<Rat> {
         match self {
             _ if self.is_zero() => None,
-            Rat::Small { num, den } => Rat::new(i128::from(*den), i128::from(*num)),
+            Rat::Small { num, den, typed } => {
+                Rat::new(i128::from(*den), i128::from(*num)).map(|r| r.marked(*typed))
+            }
             Rat::Big(b) => Some(Rat::from_big(b.recip())),
         }
     }
@@ -206,7 +314,7 @@ impl Rat {
     pub fn to_f64(&self) -> f64 {
         match self {
             // both exact in an f64: one rounding, the nearest float
-            Rat::Small { num, den } if num.unsigned_abs() <= 1 << 53 && *den <= 1 << 53 => {
+            Rat::Small { num, den, .. } if num.unsigned_abs() <= 1 << 53 && *den <= 1 << 53 => {
                 *num as f64 / *den as f64
             }
             Rat::Small { .. } => self.to_big().to_f64().unwrap_or(f64::NAN),
@@ -242,7 +350,7 @@ impl Rat {
     /// The integer, when the fraction is one that fits an `i64`.
     pub fn as_int(&self) -> Option<i64> {
         match self {
-            Rat::Small { num, den: 1 } => Some(*num),
+            Rat::Small { num, den: 1, .. } => Some(*num),
             _ => None,
         }
     }
@@ -279,14 +387,14 @@ impl Rat {
         Some(Rat::decimal(&digits, exp - frac.len() as i32))
     }
     /// The decimal `digits · 10^exp` exactly (a number as typed: `0.866`
-    /// is 866/1000, `1e-13` is 1/10¹³).
+    /// is 866/1000, `1e-13` is 1/10¹³), marked as typed.
     pub fn decimal(digits: &BigInt, exp: i32) -> Rat {
         let ten = BigInt::from(10);
         let p = num_traits::pow(ten, exp.unsigned_abs() as usize);
         if exp >= 0 {
             Rat::from_big(BigRational::from_integer(digits * p))
         } else {
-            Rat::from_big(BigRational::new(digits.clone(), p))
+            Rat::from_big(BigRational::new(digits.clone(), p)).marked(true)
         }
     }
     /// The fraction nearest `x` with a denominator at most `max_den`
@@ -413,75 +521,4 @@ pub fn scientific(p: &str, q: &str) -> Option<String> {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn remainders_are_exact_at_any_size() {
-        let r = |n: i128, d: i128| Rat::new(n, d).unwrap();
-        assert_eq!(r(7, 1).rem_euclid(2), Rat::ONE);
-        assert_eq!(r(-7, 6).rem_euclid(2), r(5, 6));
-        assert_eq!(r(13, 6).rem_euclid(2), r(1, 6));
-        // 3·10³⁰ + 1/6 (big): 1/6; −2⁷⁰ − 1/2: 3/2
-        let big = Rat::new(3 * 10i128.pow(30), 1).unwrap().add(&r(1, 6));
-        assert!(matches!(big, Rat::Big(_)));
-        assert_eq!(big.rem_euclid(2), r(1, 6));
-        let neg = Rat::new(-(1i128 << 70), 1).unwrap().add(&r(-1, 2));
-        assert_eq!(neg.rem_euclid(2), r(3, 2));
-        assert_eq!(
-            Rat::new(i128::from(i64::MAX), 1).unwrap().rem_euclid(2),
-            Rat::ONE
-        );
-    }
-
-    #[test]
-    fn small_and_big_agree() {
-        let big = Rat::new(1i128 << 100, 3).unwrap();
-        assert!(matches!(big, Rat::Big(_)));
-        let back = big.mul(&Rat::new(3, 1i128 << 100).unwrap());
-        assert_eq!(back, Rat::ONE);
-        assert!(matches!(back, Rat::Small { .. }));
-        // 2^62 + 2^62 leaves i64 and comes back by subtraction.
-        let x = Rat::int(1 << 62);
-        let y = x.add(&x);
-        assert!(matches!(y, Rat::Big(_)));
-        assert_eq!(y.add(&x.neg()), x);
-        assert_eq!(
-            Rat::int(i64::MIN).neg().add(&Rat::int(-1)),
-            Rat::int(i64::MAX)
-        );
-        assert_eq!(big.to_string(), format!("{}/3", 1u128 << 100));
-    }
-
-    #[test]
-    fn binomials_stay_exact() {
-        // C(120, 60) / 2^120 and back.
-        let mut c = Rat::ONE;
-        for k in 0..60i64 {
-            c = c.mul(&Rat::new(i128::from(120 - k), i128::from(k + 1)).unwrap());
-        }
-        assert_eq!(c.to_string(), "96614908840363322603893139521372656");
-        let half = Rat::new(1, 2).unwrap();
-        let mut d = c.clone();
-        for _ in 0..120 {
-            d = d.mul(&half);
-        }
-        assert!((d.to_f64() - 0.0726).abs() < 1e-3, "{}", d.to_f64());
-    }
-
-    #[test]
-    fn floats_and_decimals() {
-        assert_eq!(Rat::from_f64_exact(0.5), Rat::new(1, 2));
-        assert_eq!(Rat::from_f64_exact(-3.0), Some(Rat::int(-3)));
-        assert_eq!(Rat::from_f64_exact(f64::NAN), None);
-        assert_eq!(
-            Rat::decimal(&BigInt::from(866), -3),
-            Rat::new(433, 500).unwrap()
-        );
-        assert_eq!(
-            Rat::decimal(&BigInt::from(1), -13),
-            Rat::new(1, 10_000_000_000_000).unwrap()
-        );
-        assert_eq!(Rat::decimal(&BigInt::from(15), 2), Rat::int(1500));
-    }
-}
+mod tests;

@@ -5,7 +5,7 @@
 //! and a kept half-angle sine over its cosine (`tan(x/2)`).
 
 use super::coef::Coef;
-use super::expr::{Expr, Func, Mono, Var};
+use super::expr::{Expr, Func, Mono, Var, mono_mul};
 use super::fraction::{Factor, needs_parens, opened};
 use super::print::{Mode, Style, coefficient, power, trig_factor, var};
 use num_traits::Zero;
@@ -109,4 +109,101 @@ pub(super) fn call_tangents(poly: &Mono, st: Style) -> (Mono, Vec<String>) {
         left.retain(|(_, k)| *k != 0);
     }
     (left, texts)
+}
+
+/// The most terms a sum may have for its half-angle tangents to be looked
+/// for (each is an exact division).
+const MAX_HALF_TERMS: usize = 64;
+
+/// `e` with its quotients over a power of a kept half-angle cosine written
+/// as powers of the tangent, a kept call, and those over a power of the
+/// sine with the cosine to the same power above, which [`call_tangents`]
+/// prints as the cotangent: the canonical form folds sin(x/2)² into
+/// (1 − cos x)/2, and `tan(x/2)^2` printed
+/// `(1/2) (1/cos(x/2)^2 - cos(x)/cos(x/2)^2)`. The terms over
+/// cos(u)^p, N/cos(u)^p, are Q·tan(u)^p where N = Q·sin(u)^p exactly
+/// (checked by multiplying back), with Q no longer than N: the same value,
+/// with a variable the canonical form does not use for it. None when
+/// nothing changes.
+pub(super) fn half_tangents(e: &Expr) -> Option<Expr> {
+    if e.terms.len() > MAX_HALF_TERMS {
+        return None;
+    }
+    let below = |v: &Var| matches!(v, Var::Call(c) if matches!(c.f, Func::Sin | Func::Cos));
+    let mut keys: Vec<(Var, i32)> = Vec::new();
+    for m in e.terms.keys() {
+        for (v, k) in m {
+            if *k < 0 && below(v) && !keys.iter().any(|(w, j)| w == v && j == k) {
+                keys.push((v.clone(), *k));
+            }
+        }
+    }
+    if keys.is_empty() {
+        return None;
+    }
+    let mut out = e.clone();
+    let mut changed = false;
+    for (v, k) in keys {
+        let Var::Call(c) = &v else { continue };
+        let u = &c.args[0];
+        let co = if c.f == Func::Cos {
+            Expr::sin(u)
+        } else {
+            Expr::cos(u)
+        };
+        // the co-function must be a kept call of the same angle
+        let Some(co_var) = co
+            .terms
+            .iter()
+            .next()
+            .filter(|(m, c)| co.terms.len() == 1 && m.len() == 1 && m[0].1 == 1 && c.is_one())
+            .map(|(m, _)| m[0].0.clone())
+        else {
+            continue;
+        };
+        let over: Mono = vec![(v.clone(), -k)];
+        let (mut num, mut rest) = (Expr::zero(), Expr::zero());
+        for (m, c) in &out.terms {
+            if m.iter().any(|(w, j)| *w == v && *j == k) {
+                num.terms.insert(mono_mul(m, &over), c.clone());
+            } else {
+                rest.terms.insert(m.clone(), c.clone());
+            }
+        }
+        let Some(power) = co.powi(i64::from(-k)) else {
+            continue;
+        };
+        let Some(q) = num.div_exact(&power) else {
+            continue;
+        };
+        if q.terms.len() > num.terms.len() || q.mul(&power) != num {
+            continue;
+        }
+        // tan(u)^p as a kept call (a variable of its own, so that a sum
+        // above collects: `(a + b) tan(x/2)^2`); cot(u)^p as cos(u)^p over
+        // sin(u)^p, which [`call_tangents`] prints, for one term above
+        let tan = Expr::apply(Func::Tan, u, f64::tan);
+        let tan_var = (tan.terms.len() == 1)
+            .then(|| tan.terms.iter().next())
+            .flatten()
+            .filter(|(m, c)| m.len() == 1 && m[0].1 == 1 && c.is_one())
+            .map(|(m, _)| m[0].0.clone());
+        let pair: Mono = match (c.f, tan_var) {
+            (Func::Cos, Some(t)) => vec![(t, -k)],
+            (Func::Sin, _) if q.terms.len() == 1 => {
+                mono_mul(&vec![(v.clone(), k)], &vec![(co_var.clone(), -k)])
+            }
+            _ => continue,
+        };
+        for (m, c) in &q.terms {
+            rest.terms.insert(mono_mul(m, &pair), c.clone());
+        }
+        if rest.terms.len() != out.terms.len() - num.terms.len() + q.terms.len() {
+            // (two monomials met: leave the form as it was)
+            continue;
+        }
+        out = rest;
+        changed = true;
+    }
+    changed.then_some(out)
 }

@@ -317,9 +317,10 @@ pub fn turned_over(e: &Expr) -> Option<Expr> {
 /// canonical form with quotients cancelled ([`Expr::cancel`]), the same
 /// over one denominator ([`over_one`]), cancelled factor by factor
 /// ([`super::shortest::by_factors`]), its half-angle forms
-/// ([`super::shortest::half_angle`]) and the form with its angles that
-/// are products of symbols folded ([`super::generalize::restored`]:
-/// sin²(t w) + cos²(t w) is 1); equal values every one, the
+/// ([`super::shortest::half_angle`]) and the same made simplest over
+/// fresh symbols for its irrational angles and its angles that are
+/// products of symbols
+/// ([`super::generalize::refolded`]); equal values every one, the
 /// canonical form on a tie.
 pub fn simplest(e: &Expr) -> Expr {
     let cancelled = e.cancel();
@@ -330,7 +331,7 @@ pub fn simplest(e: &Expr) -> Expr {
         .into_iter()
         .chain(factored)
         .chain(super::shortest::half_angle(&cancelled))
-        .chain(super::generalize::restored(&cancelled).map(|c| c.cancel()))
+        .chain(super::generalize::refolded(&cancelled, &simplest))
         .filter(|c| *c != cancelled)
         .collect();
     if others.is_empty() {

@@ -344,8 +344,8 @@ pub fn is_decimal(r: &Rat) -> bool {
 }
 
 /// True when the exact form of a value prints as its decimals anyway:
-/// every entry a decimal that its float `floats` at `digits` decimals
-/// shows exactly (`0.866`,
+/// every entry an integer or a typed decimal that its float `floats` at
+/// `digits` decimals shows exactly (`0.866`,
 /// `1e20`; not `0.12345` at 4 digits, nor 10²⁰ + 1): `--exact` then
 /// prints the value as usual.
 pub fn prints_as_decimals(m: &Mat, digits: usize, floats: &Num) -> bool {
@@ -356,7 +356,9 @@ pub fn prints_as_decimals(m: &Mat, digits: usize, floats: &Num) -> bool {
                 // where floats cancelled, (0.1 − 10¹³) + 10¹³)
                 Some(r) => {
                     let x = floats[(k / m.cols, k % m.cols)];
-                    is_short_decimal(&r) && reads_as(&super::number::fmt_num(x, digits), &r)
+                    (r.is_typed() || r.is_integer())
+                        && is_short_decimal(&r)
+                        && reads_as(&super::number::fmt_num(x, digits), &r)
                 }
                 None => false,
             }
@@ -394,10 +396,12 @@ fn decimal_text(r: &Rat, digits: usize) -> String {
 /// multiple of π as `π/6`, `-π/2`, `2π/3`; anything else as the symbolic
 /// printer writes a constant (`√3/2`, `1/√2`, `1/3`).
 pub fn text(e: &Expr, st: crate::sym::print::Style) -> String {
-    // A decimal prints as numbers do, to `--digits` places; halves,
-    // quarters and fifths stay fractions, as in symbolic output.
+    // A decimal as typed prints as numbers do, to `--digits` places;
+    // halves, quarters and fifths stay fractions, as in symbolic output,
+    // and so does a fraction computed from integers (1/16, not 0.0625).
     if let Some(r) = e.as_const().and_then(|c| c.as_rat())
         && is_short_decimal(&r)
+        && (r.is_typed() || r.is_integer())
         && r.small().is_none_or(|(_, q)| q == 1 || q > 5)
     {
         return decimal_text(&r, st.digits);

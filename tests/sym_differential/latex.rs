@@ -98,6 +98,10 @@ impl Reader<'_> {
                 c.to_string()
             }
             "operatorname" => self.word_group()?,
+            // `\exp\left(…\right)`: the name, then its bracket
+            "exp" if self.s[self.at..].starts_with(&['\\', 'l', 'e', 'f', 't', '(']) => {
+                "exp".into()
+            }
             "pi" => "pi".into(),
             "cdot" => "*".into(),
             "dot" | "ddot" => {
@@ -187,6 +191,10 @@ fn the_printers_latex_reads_back() {
         ("\\ddot{q}_{2}", "q2''"),
         ("\\sin(2 a + \\frac{\\pi}{6})", "sin(2 a + ((pi)/(6)))"),
         ("\\operatorname{atan2}\\left(a, b\\right)", "atan2(a, b)"),
+        (
+            "\\exp\\left(\\left(\\frac{1}{2} - \\frac{\\sqrt{5}}{2}\\right) t\\right)",
+            "exp((((1)/(2)) - ((sqrt(5))/(2))) t)",
+        ),
         ("\\sqrt{1 + a} a^{2}", "sqrt(1 + a) a^(2)"),
     ] {
         assert_eq!(source(latex).as_deref(), Some(want), "{latex}");
