@@ -16,12 +16,7 @@ impl Interp<'_> {
     /// matrices, the same with what their names' kinds say written out
     /// ([`crate::decide::equality::with_kinds`]: `inv(R) == R^T` for a
     /// rotation R, `W^T == -W` for W in so(3)).
-    fn equal_by_kinds(
-        &self,
-        a: &Value,
-        b: &Value,
-        op: CmpOp,
-    ) -> Result<Option<bool>, String> {
+    fn equal_by_kinds(&self, a: &Value, b: &Value, op: CmpOp) -> Result<Option<bool>, String> {
         let first = equal(a, b, op);
         if !matches!(first, Ok(None))
             || op.is_order()

@@ -79,6 +79,21 @@ impl Interp<'_> {
                 ),
             ));
         }
+        if let Some(k) = solution.period_of {
+            let step = if k == 1 {
+                "2πn".to_string()
+            } else {
+                format!("2πn/{k}")
+            };
+            self.warnings.push(Diagnostic::note(
+                ErrorKind::Domain,
+                span,
+                format!(
+                    "the roots in (−π, π]; every {} = root + {step} (n an integer) solves it too",
+                    sym.name
+                ),
+            ));
+        }
         let scalar = |e: &Expr| formula::make(&Kind::Scalar, Mat::scalar(e.clone()));
         Ok(match solution.roots.as_slice() {
             [r] => {

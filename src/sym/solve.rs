@@ -18,6 +18,10 @@ pub struct Solution {
     /// equation with a symbolic coefficient (`n f = 6 n` gives f = 6 for
     /// n ≠ 0); None when it is a nonzero number.
     pub unless_zero: Option<Expr>,
+    /// For an angle inside a sine and cosine of k x
+    /// ([`super::solve_angle`]): k, the roots being those in (−π, π] and
+    /// the general solution adding 2πn/k. None for a polynomial.
+    pub period_of: Option<i32>,
 }
 
 /// The coefficients of `e` as a polynomial in `x`, by power; Err naming
@@ -58,6 +62,18 @@ fn mentions(e: &Expr, x: &Symbol) -> bool {
 /// The real roots of `e = 0` for `x` (see the module): Err naming why
 /// there is no answer to give.
 pub fn solve(e: &Expr, x: &Symbol) -> Result<Solution, String> {
+    let in_angle = e
+        .terms
+        .keys()
+        .any(|m| m.iter().any(|(v, _)| matches!(v, Var::Z(s) if s == x)));
+    if in_angle {
+        let (roots, k) = super::solve_angle::solve_angle(e, x)?;
+        return Ok(Solution {
+            roots,
+            unless_zero: None,
+            period_of: Some(k),
+        });
+    }
     let cs = coefficients(e, x)?;
     let c = |k: i32| cs.get(&k).cloned().unwrap_or_default();
     let degree = cs.keys().next_back().copied().unwrap_or(0);
@@ -82,6 +98,7 @@ pub fn solve(e: &Expr, x: &Symbol) -> Result<Solution, String> {
             Ok(Solution {
                 roots: vec![root],
                 unless_zero,
+                period_of: None,
             })
         }
         2 => quadratic(&c(2), &c(1), &c(0), x),
@@ -136,6 +153,7 @@ fn quadratic(a: &Expr, b: &Expr, c: &Expr, x: &Symbol) -> Result<Solution, Strin
     Ok(Solution {
         roots,
         unless_zero: None,
+        period_of: None,
     })
 }
 
@@ -192,7 +210,7 @@ mod tests {
         assert!(solve(&e, &x()).unwrap_err().contains("no real x"));
         let e = sx().powi(3).unwrap().sub(&Expr::int(1));
         assert!(solve(&e, &x()).unwrap_err().contains("degree 3"));
-        let e = Expr::sin(&sx()).sub(&Expr::int(1));
+        let e = Expr::sin(&sx()).sub(&sx());
         let err = solve(&e, &x()).unwrap_err();
         assert!(err.contains("inside"), "{err}");
         assert!(
