@@ -62,11 +62,7 @@ fn mentions(e: &Expr, x: &Symbol) -> bool {
 /// The real roots of `e = 0` for `x` (see the module): Err naming why
 /// there is no answer to give.
 pub fn solve(e: &Expr, x: &Symbol) -> Result<Solution, String> {
-    let in_angle = e
-        .terms
-        .keys()
-        .any(|m| m.iter().any(|(v, _)| matches!(v, Var::Z(s) if s == x)));
-    if in_angle {
+    if super::solve_angle::is_angular(e, x) {
         let (roots, k) = super::solve_angle::solve_angle(e, x)?;
         return Ok(Solution {
             roots,

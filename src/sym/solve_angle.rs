@@ -19,6 +19,118 @@ const MAX_MULTIPLE: i32 = 12;
 /// z = e^{ix} of `x` (see the module), and the multiple k; Err naming why
 /// there is no answer to give.
 pub fn solve_angle(e: &Expr, x: &Symbol) -> Result<(Vec<Expr>, i32), String> {
+    let Some((numerator, d)) = cleared(e, x) else {
+        return candidates(e, x).and_then(|(roots, k)| Ok((checked_all(e, x, roots)?, k)));
+    };
+    // tan x = c is sin x − c cos x = 0 where cos x ≠ 0
+    let (roots, k) = candidates(&numerator, x)?;
+    let mut kept = Vec::with_capacity(roots.len());
+    for r in roots {
+        let at = d.subst(&|s| (s == x).then(|| r.clone()));
+        if at.terms.is_empty() {
+            continue;
+        }
+        let clear = sign_with_pi(&at).is_some_and(|s| s != 0)
+            || at.eval(&|_| None).is_some_and(|v| v.abs() > 1e-9);
+        if !clear {
+            return Err(format!(
+                "cannot decide whether the denominator {} is 0 at a root",
+                super::print::expr(&d, Default::default())
+            ));
+        }
+        kept.push(r);
+    }
+    Ok((checked_all(e, x, kept)?, k))
+}
+
+/// Whether x enters `e` through an angle: its z = e^{ix}, or a
+/// reciprocal of a sum in it (1/cos x, of tan x).
+pub fn is_angular(e: &Expr, x: &Symbol) -> bool {
+    let z = |e: &Expr| {
+        e.terms
+            .keys()
+            .any(|m| m.iter().any(|(v, _)| matches!(v, Var::Z(s) if s == x)))
+    };
+    z(e) || e.terms.keys().any(|m| {
+        m.iter()
+            .any(|(v, _)| matches!(v, Var::Call(c) if c.f == Func::Recip && z(&c.args[0])))
+    })
+}
+
+/// The equation `e = 0` with its one reciprocal of a trigonometric
+/// polynomial d in x (tan x = sin x · 1/cos x) multiplied out: the
+/// numerator e dⁿ and d, whose zeros are no roots. None when `e` has no
+/// such reciprocal, or more than one kind of it.
+fn cleared(e: &Expr, x: &Symbol) -> Option<(Expr, Expr)> {
+    let mut call = None;
+    let mut n = 0;
+    for m in e.terms.keys() {
+        for (v, k) in m {
+            if let Var::Call(c) = v
+                && c.f == Func::Recip
+                && mentions(&c.args[0], x)
+            {
+                if call.as_ref().is_some_and(|d| d != c) || *k < 0 {
+                    return None;
+                }
+                call = Some(c.clone());
+                n = n.max(*k);
+            }
+        }
+    }
+    let call = call?;
+    if n > 4 {
+        return None;
+    }
+    let d = call.args[0].clone();
+    let mut out = Expr::default();
+    for (m, c) in &e.terms {
+        let j = m
+            .iter()
+            .find(|(v, _)| matches!(v, Var::Call(k) if *k == call))
+            .map_or(0, |(_, j)| *j);
+        let rest: Vec<_> = m
+            .iter()
+            .filter(|(v, _)| !matches!(v, Var::Call(k) if *k == call))
+            .cloned()
+            .collect();
+        let mut t = Expr::default();
+        t.push(rest, c.clone());
+        out = out.add(&t.mul(&d.powi(i64::from(n - j))?));
+    }
+    Some((out, d))
+}
+
+/// Every root substituted back into `e` ([`checked`]), in increasing
+/// order; Err when one does not check or two cannot be told apart.
+fn checked_all(e: &Expr, x: &Symbol, roots: Vec<Expr>) -> Result<Vec<Expr>, String> {
+    let show = |e: &Expr| super::print::expr(e, Default::default());
+    let mut keyed = Vec::with_capacity(roots.len());
+    for r in roots {
+        let v = value(&r).ok_or("a root has no numeric value")?;
+        if !checked(e, x, &r) {
+            return Err(format!(
+                "a root {} = {} did not check when substituted back",
+                x.name,
+                show(&r)
+            ));
+        }
+        // (a root with no closed form is its number, as asin(1/3) typed is)
+        let exact = r
+            .terms
+            .iter()
+            .all(|(m, c)| c.is_exact() && m.iter().all(|(v, _)| matches!(v, Var::Pi)));
+        keyed.push((v, if exact { r } else { Expr::float(v) }));
+    }
+    keyed.sort_by(|p, q| p.0.total_cmp(&q.0));
+    if keyed.windows(2).any(|w| w[1].0 - w[0].0 < 1e-9) {
+        return Err("cannot order two roots that are too close to tell apart".to_string());
+    }
+    Ok(keyed.into_iter().map(|(_, r)| r).collect())
+}
+
+/// The roots in (−π, π] of a cos kx + b sin kx = c, unchecked, and k.
+fn candidates(e: &Expr, x: &Symbol) -> Result<(Vec<Expr>, i32), String> {
     let name = &x.name;
     // the coefficients by the power of z
     let mut by_power: BTreeMap<i32, Expr> = BTreeMap::new();
@@ -103,23 +215,7 @@ pub fn solve_angle(e: &Expr, x: &Symbol) -> Result<(Vec<Expr>, i32), String> {
             }
         }
     }
-    let mut keyed = Vec::with_capacity(roots.len());
-    for r in roots {
-        let v = value(&r).ok_or("a root has no numeric value")?;
-        if !checked(e, x, &r) {
-            return Err(format!(
-                "a root {} = {} did not check when substituted back",
-                name,
-                show(&r)
-            ));
-        }
-        keyed.push((v, r));
-    }
-    keyed.sort_by(|p, q| p.0.total_cmp(&q.0));
-    if keyed.windows(2).any(|w| w[1].0 - w[0].0 < 1e-9) {
-        return Err("cannot order two roots that are too close to tell apart".to_string());
-    }
-    Ok((keyed.into_iter().map(|(_, r)| r).collect(), k))
+    Ok((roots, k))
 }
 
 /// 1/k as a coefficient.
@@ -155,6 +251,16 @@ fn angles(a: &Expr, b: &Expr, c: &Expr, r2: &Expr, touching: bool) -> Result<Vec
         }
         return Ok(vec![t.neg(), t]);
     }
+    if c.terms.is_empty() {
+        // a cos θ + b sin θ = 0 is tan θ = −a/b: atan(−a/b), and π after it
+        let s = a.neg().div(b).ok_or("cannot divide by b")?;
+        let t = match sign_with_pi(&s) {
+            Some(-1) => arc(Func::Atan, &s.neg()).neg(),
+            _ => arc(Func::Atan, &s),
+        };
+        let other = t.add(&pi);
+        return Ok(vec![t, other]);
+    }
     let phi = super::arc::atan2(b, a)
         .unwrap_or_else(|| Expr::call(Func::Atan2, vec![b.clone(), a.clone()]));
     if touching {
@@ -168,7 +274,7 @@ fn angles(a: &Expr, b: &Expr, c: &Expr, r2: &Expr, touching: bool) -> Result<Vec
     Ok(vec![phi.sub(&alpha), phi.add(&alpha)])
 }
 
-/// asin or acos of an exact number: the book's angle when there is one
+/// asin, acos or atan of an exact number: the book's angle when there is one
 /// ([`super::inverse::closed`]), else kept as the call (never a float).
 fn arc(f: Func, s: &Expr) -> Expr {
     super::inverse::closed(f, s).unwrap_or_else(|| Expr::call(f, vec![s.clone()]))
@@ -228,4 +334,41 @@ fn mentions(e: &Expr, x: &Symbol) -> bool {
     let mut found = Vec::new();
     e.symbols(&mut found);
     found.contains(x)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The roots of e = 0 for x, as printed.
+    fn printed(e: &Expr) -> Vec<String> {
+        let x = Symbol::new("x");
+        let (roots, _) = solve_angle(e, &x).unwrap();
+        roots
+            .iter()
+            .map(|r| super::super::print::expr(r, Default::default()))
+            .collect()
+    }
+
+    #[test]
+    fn the_book_angles_print_exactly() {
+        let x = Expr::symbol(Symbol::new("x"));
+        let half = Expr::constant(inv_int(2));
+        assert_eq!(printed(&Expr::sin(&x).sub(&half)), ["(1/6) π", "(5/6) π"]);
+        assert_eq!(printed(&Expr::cos(&x)), ["-(1/2) π", "(1/2) π"]);
+        assert_eq!(
+            printed(&Expr::sin(&x).sub(&Expr::cos(&x))),
+            ["-(3/4) π", "(1/4) π"]
+        );
+        assert_eq!(printed(&Expr::cos(&x).add(&Expr::int(1))), ["π"]);
+        assert_eq!(printed(&Expr::sin(&x)), ["0", "π"]);
+    }
+
+    #[test]
+    fn no_real_root_is_refused_naming_why() {
+        let x = Symbol::new("x");
+        let e = Expr::sin(&Expr::symbol(x.clone())).sub(&Expr::int(2));
+        let err = solve_angle(&e, &x).unwrap_err();
+        assert!(err.contains("|c| > √(a² + b²)"), "{err}");
+    }
 }
