@@ -121,3 +121,42 @@ fn refusals_name_why() {
         assert!(e.contains("cannot solve for x"), "{eq}: {e}");
     }
 }
+
+/// Exercise 3.7(b): v₂ = e^{[ω̂]θ} v₁ with ω̂ = (2/3, 2/3, 1/3), v₁ = (1, 0,
+/// 1), v₂ = (0, 1, 1), θ in [−π, π]: each entry alone has two roots, and
+/// the vector equation keeps the one they share, θ = −π/2 (checked here
+/// by Rodrigues' formula in f64, and exactly by `==`).
+#[test]
+fn a_vector_equation_keeps_the_roots_of_every_entry() {
+    let src = "given θ\nw = (2/3, 2/3, 1/3)\nv1 = (1, 0, 1)\nv2 = (0, 1, 1)\n\
+               t = solve(Rot(w, θ) v1 == v2, θ)\nt == -pi/2\nsolve(exp([w] θ) v1 - v2, θ)\n\
+               solve((Rot(w, θ) v1)[1] == 0, θ)";
+    let j = json(src);
+    let n = j.len();
+    let t = j[n - 4]["value"].as_f64().unwrap();
+    assert_eq!(j[n - 3]["value"], true, "{:?}", j[n - 3]);
+    assert_eq!(j[n - 2]["value"].as_f64(), Some(t));
+    // entry 1 alone has a second root, which the vector equation drops
+    assert_eq!(numbers(&j[n - 1]["value"]).len(), 2);
+    // independent: Rodrigues' formula v cos θ + (ω × v) sin θ + ω (ω·v)(1 − cos θ)
+    let (w, v1, v2) = (
+        [2.0 / 3.0, 2.0 / 3.0, 1.0 / 3.0],
+        [1.0, 0.0, 1.0],
+        [0.0, 1.0, 1.0],
+    );
+    let cross = [
+        w[1] * v1[2] - w[2] * v1[1],
+        w[2] * v1[0] - w[0] * v1[2],
+        w[0] * v1[1] - w[1] * v1[0],
+    ];
+    let dot: f64 = (0..3).map(|i| w[i] * v1[i]).sum();
+    for i in 0..3 {
+        let rv = v1[i] * t.cos() + cross[i] * t.sin() + w[i] * dot * (1.0 - t.cos());
+        assert!((rv - v2[i]).abs() < 1e-12, "entry {i}: {rv}");
+    }
+    // no common root: refused naming why
+    let e = error("given θ\nw = (2/3, 2/3, 1/3)\nsolve(Rot(w, θ) (1, 0, 1) == (0, 0, 1), θ)");
+    assert!(e.contains("no real θ solves every entry"), "{e}");
+    let e = error("given x\nsolve((1, 2, 3) == x, x)");
+    assert!(e.contains("these sides are 3x1 and 1x1"), "{e}");
+}

@@ -40,6 +40,12 @@ pub fn solve_angle(e: &Expr, x: &Symbol) -> Result<(Vec<Expr>, i32), String> {
         }
         kept.push(r);
     }
+    if kept.is_empty() {
+        return Err(format!(
+            "no real {} solves it: the roots of its numerator are the zeros of its denominator",
+            x.name
+        ));
+    }
     Ok((checked_all(e, x, kept)?, k))
 }
 
