@@ -125,8 +125,9 @@ pub fn solve_entries(es: &[Expr], x: &Symbol) -> Result<Solution, String> {
     if live.len() == 1 {
         return solve(first, x);
     }
-    // the entry with the fewest inexact roots, then the fewest roots (any
-    // one has every common root; the exact ones print the book's angles)
+    // an entry with no condition on its coefficient first, then the one
+    // with the fewest inexact roots, then the fewest roots (any one has
+    // every common root; the exact ones print the book's angles)
     let inexact = |s: &Solution| {
         s.roots
             .iter()
@@ -136,7 +137,7 @@ pub fn solve_entries(es: &[Expr], x: &Symbol) -> Result<Solution, String> {
     let Some((i, mut s)) = live
         .iter()
         .filter_map(|(i, e)| solve(e, x).ok().map(|s| (*i, s)))
-        .min_by_key(|(_, s)| (inexact(s), s.roots.len()))
+        .min_by_key(|(_, s)| (s.unless_zero.is_some(), inexact(s), s.roots.len()))
     else {
         let m = solve(first, x).err().unwrap_or_default();
         return Err(format!("no entry can be solved for {}: {m}", x.name));
