@@ -211,9 +211,9 @@ pub(super) fn builtins() -> Vec<Builtin> {
         Builtin {
             name: "solve",
             aliases: &[],
-            signature: "solve(lhs == rhs, x: symbol) -> x (or the tuple of the real roots of a quadratic)",
-            section: "Exercise 2.7; §8 (docs/language.md)",
-            doc: "one unknown of a linear equation, or the real roots of a quadratic with exact numbers",
+            signature: "solve(lhs == rhs, x: symbol) -> x (or the tuple of the real roots, increasing)",
+            section: "Exercises 2.7 and 3.7(b); §8 (docs/language.md)",
+            doc: "one unknown of a linear equation, the real roots of a quadratic with exact numbers, or the angles x in (−π, π] of a cos kx + b sin kx = c (tan x = c too) with exact a, b, c; vectors and matrices entry by entry",
             example: "given x : scalar; solve(x^2 - 5*x + 6 == 0, x)",
             area: Area::Scalars,
             typing: Typing::Custom {

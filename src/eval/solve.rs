@@ -1,5 +1,6 @@
-//! `solve(lhs == rhs, x)` (LANGUAGE.md §8, Exercise 2.7): the sides are
-//! evaluated, not compared, and [`crate::sym::solve`] finds x.
+//! `solve(lhs == rhs, x)` (LANGUAGE.md §8, Exercises 2.7 and 3.7(b)): the
+//! sides are evaluated, not compared, and [`crate::sym::solve`] finds x
+//! (of every entry at once when the sides are vectors or matrices).
 
 use super::interp::{Interp, Typed};
 use super::value::Value;
@@ -59,13 +60,25 @@ impl Interp<'_> {
         let left = self.side(lhs)?;
         let right = match rhs {
             Some(r) => self.side(r)?,
-            None => Expr::default(),
+            None => Mat::zeros(left.rows, left.cols),
         };
-        let solution = crate::sym::solve::solve(&left.sub(&right), &sym)
+        let Some(diff) = left.add(&right, true) else {
+            let (r, c) = (right.rows, right.cols);
+            return Err(self
+                .domain(
+                    eq.span,
+                    format!(
+                        "solve solves scalar equations, or two sides of one size entry by entry, and these sides are {}x{} and {r}x{c}",
+                        left.rows, left.cols
+                    ),
+                )
+                .with_help("solve one entry at a time: solve(M[1, 2] == 0, x)"));
+        };
+        let solution = crate::sym::solve::solve_entries(&diff.data, &sym)
             .map_err(|m| {
                 self.domain(eq.span, format!("cannot solve for {}: {m}", sym.name))
                     .with_help(
-                        "solve finds one unknown of a linear equation, or the real roots of a quadratic with exact numbers; else give the other symbols numbers first",
+                        "solve finds one unknown of a linear equation, the real roots of a quadratic with exact numbers, or an angle x of a cos x + b sin x = c with exact a, b, c; else give the other symbols numbers first",
                     )
             })?;
         if let Some(c) = &solution.unless_zero {
@@ -75,6 +88,21 @@ impl Interp<'_> {
                 span,
                 format!(
                     "for {c} ≠ 0: where {c} = 0 the equation does not fix {}",
+                    sym.name
+                ),
+            ));
+        }
+        if let Some(k) = solution.period_of {
+            let step = if k == 1 {
+                "2πn".to_string()
+            } else {
+                format!("2πn/{k}")
+            };
+            self.warnings.push(Diagnostic::note(
+                ErrorKind::Domain,
+                span,
+                format!(
+                    "the roots in (−π, π]; every {} = root + {step} (n an integer) solves it too",
                     sym.name
                 ),
             ));
@@ -93,14 +121,15 @@ impl Interp<'_> {
         })
     }
 
-    /// One side of the equation: a scalar, as an expression.
-    fn side(&mut self, e: &Ast) -> Result<Expr, Diagnostic> {
+    /// One side of the equation: a scalar, vector or matrix, as its
+    /// entries.
+    fn side(&mut self, e: &Ast) -> Result<Mat, Diagnostic> {
         let t = self.expr(e)?;
-        t.value().and_then(formula::scalar_of).ok_or_else(|| {
+        t.value().and_then(formula::mat_of).ok_or_else(|| {
             self.domain(
                 e.span,
                 format!(
-                    "solve solves scalar equations, and this side is a {}",
+                    "solve solves scalar equations (or vectors and matrices entry by entry), and this side is a {}",
                     t.ty.kind
                 ),
             )

@@ -37,6 +37,7 @@ pub mod shortest;
 pub mod sign;
 pub mod size;
 pub mod solve;
+pub mod solve_angle;
 pub mod squarefree;
 pub mod surd;
 mod tangents;

@@ -18,6 +18,10 @@ pub struct Solution {
     /// equation with a symbolic coefficient (`n f = 6 n` gives f = 6 for
     /// n ≠ 0); None when it is a nonzero number.
     pub unless_zero: Option<Expr>,
+    /// For an angle inside a sine and cosine of k x
+    /// ([`super::solve_angle`]): k, the roots being those in (−π, π] and
+    /// the general solution adding 2πn/k. None for a polynomial.
+    pub period_of: Option<i32>,
 }
 
 /// The coefficients of `e` as a polynomial in `x`, by power; Err naming
@@ -58,6 +62,14 @@ fn mentions(e: &Expr, x: &Symbol) -> bool {
 /// The real roots of `e = 0` for `x` (see the module): Err naming why
 /// there is no answer to give.
 pub fn solve(e: &Expr, x: &Symbol) -> Result<Solution, String> {
+    if super::solve_angle::is_angular(e, x) {
+        let (roots, k) = super::solve_angle::solve_angle(e, x)?;
+        return Ok(Solution {
+            roots,
+            unless_zero: None,
+            period_of: Some(k),
+        });
+    }
     let cs = coefficients(e, x)?;
     let c = |k: i32| cs.get(&k).cloned().unwrap_or_default();
     let degree = cs.keys().next_back().copied().unwrap_or(0);
@@ -82,6 +94,7 @@ pub fn solve(e: &Expr, x: &Symbol) -> Result<Solution, String> {
             Ok(Solution {
                 roots: vec![root],
                 unless_zero,
+                period_of: None,
             })
         }
         2 => quadratic(&c(2), &c(1), &c(0), x),
@@ -89,6 +102,113 @@ pub fn solve(e: &Expr, x: &Symbol) -> Result<Solution, String> {
             "the equation has degree {d} in {}: solve finds the roots of degree 1 and 2",
             x.name
         )),
+    }
+}
+
+/// The real roots of every `es[i] = 0` at once (the entries of a vector
+/// or matrix equation, Exercise 3.7(b)'s v₂ = e^{[ω̂]θ} v₁): the roots of
+/// the first entry [`solve`] solves, kept where every other entry is 0 at
+/// them (exactly, or to 1e-12 of its size at the root's number; between
+/// that and 1e-9 is doubt, and refused). Roots must be numbers.
+pub fn solve_entries(es: &[Expr], x: &Symbol) -> Result<Solution, String> {
+    let live: Vec<(usize, &Expr)> = es
+        .iter()
+        .enumerate()
+        .filter(|(_, e)| !e.terms.is_empty())
+        .collect();
+    let [(_, first), ..] = live.as_slice() else {
+        return Err(format!(
+            "the equation holds for every {}: both sides are the same",
+            x.name
+        ));
+    };
+    if live.len() == 1 {
+        return solve(first, x);
+    }
+    // an entry with no condition on its coefficient first, then the one
+    // with the fewest inexact roots, then the fewest roots (any one has
+    // every common root; the exact ones print the book's angles)
+    let inexact = |s: &Solution| {
+        s.roots
+            .iter()
+            .filter(|r| r.as_const().is_some_and(|c| !c.is_exact()))
+            .count()
+    };
+    let Some((i, mut s)) = live
+        .iter()
+        .filter_map(|(i, e)| solve(e, x).ok().map(|s| (*i, s)))
+        .min_by_key(|(_, s)| (s.unless_zero.is_some(), inexact(s), s.roots.len()))
+    else {
+        let m = solve(first, x).err().unwrap_or_default();
+        return Err(format!("no entry can be solved for {}: {m}", x.name));
+    };
+    let mut kept = Vec::with_capacity(s.roots.len());
+    for r in &s.roots {
+        let Some(v) = r.eval(&|_| None) else {
+            return Err(format!(
+                "the root {} = {} of entry {} has symbols: solve one entry at a time",
+                x.name,
+                super::print::expr(r, Default::default()),
+                i + 1
+            ));
+        };
+        let mut all = true;
+        for (j, e) in &live {
+            if *j == i {
+                continue;
+            }
+            match zero_at(e, x, r, v) {
+                Some(true) => {}
+                Some(false) => all = false,
+                None => {
+                    return Err(format!(
+                        "cannot decide whether entry {} is 0 at {} = {v}",
+                        j + 1,
+                        x.name
+                    ));
+                }
+            }
+        }
+        if all {
+            kept.push(r.clone());
+        }
+    }
+    if kept.is_empty() {
+        return Err(format!(
+            "no real {} solves every entry: the roots of entry {} leave another entry ≠ 0",
+            x.name,
+            i + 1
+        ));
+    }
+    s.roots = kept;
+    // (the entries may differ in period; all of them have 2π)
+    s.period_of = s.period_of.map(|_| 1);
+    Ok(s)
+}
+
+/// Whether `e` is 0 at x = r (of number v): exactly, or to 1e-12 of its
+/// size; false beyond 1e-9 of it; None between (doubt).
+fn zero_at(e: &Expr, x: &Symbol, r: &Expr, v: f64) -> Option<bool> {
+    if e.subst(&|s| (s == x).then(|| r.clone())).terms.is_empty() {
+        return Some(true);
+    }
+    let scale: f64 = e
+        .terms
+        .values()
+        .map(|c| {
+            let (re, im) = c.to_c64();
+            re.hypot(im)
+        })
+        .sum::<f64>()
+        .max(1.0);
+    let (re, im) = e.eval_c(&|s| (s == x).then_some(v))?;
+    let size = re.hypot(im) / scale;
+    if size <= 1e-12 {
+        Some(true)
+    } else if size > 1e-9 {
+        Some(false)
+    } else {
+        None
     }
 }
 
@@ -136,6 +256,7 @@ fn quadratic(a: &Expr, b: &Expr, c: &Expr, x: &Symbol) -> Result<Solution, Strin
     Ok(Solution {
         roots,
         unless_zero: None,
+        period_of: None,
     })
 }
 
@@ -192,7 +313,7 @@ mod tests {
         assert!(solve(&e, &x()).unwrap_err().contains("no real x"));
         let e = sx().powi(3).unwrap().sub(&Expr::int(1));
         assert!(solve(&e, &x()).unwrap_err().contains("degree 3"));
-        let e = Expr::sin(&sx()).sub(&Expr::int(1));
+        let e = Expr::sin(&sx()).sub(&sx());
         let err = solve(&e, &x()).unwrap_err();
         assert!(err.contains("inside"), "{err}");
         assert!(
