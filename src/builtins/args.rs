@@ -313,14 +313,14 @@ impl Args<'_> {
     /// Argument `i` as a rotation R ∈ SO(3) (§3.2.1), read per `read_group` (LANGUAGE.md §5).
     pub fn so3(&mut self, i: usize) -> Result<SO3, Diagnostic> {
         Ok(SO3::assume(match self.group(i, Group::SO3)? {
-            Num::M3(m) => m,
+            Num::M3(m) => *m,
             m => Mat3::from_column_slice(m.as_slice()),
         }))
     }
     /// Argument `i` as a transform T ∈ SE(3) (§3.3.1), read per `read_group` (LANGUAGE.md §5).
     pub fn se3(&mut self, i: usize) -> Result<SE3, Diagnostic> {
         Ok(SE3::assume(match self.group(i, Group::SE3)? {
-            Num::M4(m) => m,
+            Num::M4(m) => *m,
             m => Mat4::from_column_slice(m.as_slice()),
         }))
     }
