@@ -196,7 +196,8 @@ impl<'a> Interp<'a> {
                 crate::check::rules::settle_in_place(&mut t.ty);
                 self.bind_checked(target.name, &mut t, target.span, value.span)?;
                 // (Fig. 3.13: `v_b = (0, 0, 1.5)` is a point, as the book uses it)
-                t.ty.free &= !super::slips::literal_point(&target.name, value);
+                let role = || self.env.claim(target.name).role;
+                t.ty.free &= !super::slips::literal_point(&target.name, role, value);
                 self.bind_value(target.name, &t);
                 self.note_reliance(target.name);
                 let mut o = out(Names::One([target.name]), t);

@@ -77,7 +77,16 @@ fn constant(e: &Expr) -> bool {
 /// `v_b = (0, 0, 1.5)` and `v_a = T_ab v_b` with v a point, so such a
 /// vector is not made a free vector by its name; a value that *is* a
 /// linear velocity (a twist's `.v`) stays one (LANGUAGE.md §4).
-pub(super) fn literal_point(name: &str, value: &Expr) -> bool {
+///
+/// `role` reads the role the session's claim on the name gives
+/// ([`crate::check::bind::Claim`], made once per name); it is asked only
+/// for a literal, and only a name whose role is a free vector can be a
+/// velocity, so other names skip the walk over the name's letters.
+pub(super) fn literal_point(
+    name: &str,
+    role: impl FnOnce() -> Option<crate::check::role::Role>,
+    value: &Expr,
+) -> bool {
     // The literal first: it is one match, the name's letter a string walk.
     let literal = match &value.kind {
         ExprKind::Paren(xs) => xs.iter().all(constant),
@@ -87,7 +96,9 @@ pub(super) fn literal_point(name: &str, value: &Expr) -> bool {
         }
         _ => false,
     };
-    literal && crate::check::role::noun(name) == Some("a linear velocity")
+    literal
+        && role() == Some(crate::check::role::Role::Free)
+        && crate::check::role::noun(name) == Some("a linear velocity")
 }
 
 /// The note on a user function named like a builtin (`trans(n) = n`):

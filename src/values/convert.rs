@@ -91,9 +91,9 @@ pub fn distance(m: &Num, group: Group) -> Option<f64> {
 /// the group's shape.
 pub fn project(m: &Num, group: Group) -> Num {
     match (group, m) {
-        (Group::SO3, Num::M3(r)) => Num::M3(Box::new(*SO3::project(r).matrix())),
-        (Group::SE3, Num::M4(t)) => Num::M4(Box::new(*SE3::project(t).matrix())),
-        (Group::SE2, Num::M3(t)) => Num::M3(Box::new(*SE2::project(t).matrix())),
+        (Group::SO3, Num::M3(r)) => Num::M3(std::rc::Rc::new(*SO3::project(r).matrix())),
+        (Group::SE3, Num::M4(t)) => Num::M4(std::rc::Rc::new(*SE3::project(t).matrix())),
+        (Group::SE2, Num::M3(t)) => Num::M3(std::rc::Rc::new(*SE2::project(t).matrix())),
         (Group::SO2, _) => Num::from_slice(2, 2, SO2::project(&mat2(m)).matrix().as_slice()),
         _ => m.clone(),
     }

@@ -12,6 +12,7 @@
 //! column-major order) and converts to a `DMatrix` for the general path.
 
 use std::borrow::Cow;
+use std::rc::Rc;
 
 use nalgebra::DMatrix;
 
@@ -30,15 +31,19 @@ pub enum Num {
     V4(Vec4),
     /// A 6-vector: a twist V = (ω, v), screw axis S or wrench F (§3.3–3.4).
     V6(Vec6),
-    /// A 3×3 matrix: R ∈ SO(3), \[ω\] ∈ so(3), SE(2). Boxed, as the 4×4.
-    M3(Box<Mat3>),
-    /// A 4×4 matrix: T ∈ SE(3) (3.62), \[V\] ∈ se(3) (3.71). Boxed so that
-    /// a value is 104 bytes to move, not 184 (a value moves ~20 times a
-    /// statement; the box is one allocation of a result).
-    M4(Box<Mat4>),
-    /// A 6×6 matrix: \[Ad_T\] (Definition 3.6), \[ad_V\] (3.82). Boxed so that
-    /// a value stays small to move; it is rare next to 4×4 transforms.
-    M6(Box<Mat6>),
+    /// A 3×3 matrix: R ∈ SO(3), \[ω\] ∈ so(3), SE(2). Shared, as the 4×4.
+    M3(Rc<Mat3>),
+    /// A 4×4 matrix: T ∈ SE(3) (3.62), \[V\] ∈ se(3) (3.71). Behind a
+    /// reference count so that a value is 104 bytes to move, not 184 (a
+    /// value moves ~20 times a statement), and a copy — a name read, a
+    /// binding, an operand kept by an exact form's recipe — shares the
+    /// numbers instead of allocating and copying them (changed in place
+    /// only through [`Num::as_mut_slice`], which copies a shared matrix
+    /// first).
+    M4(Rc<Mat4>),
+    /// A 6×6 matrix: \[Ad_T\] (Definition 3.6), \[ad_V\] (3.82). Shared, as
+    /// the 4×4.
+    M6(Rc<Mat6>),
     /// Any other shape (including 2×2, 2-vectors, rows and empty matrices).
     Dyn(DMatrix<f64>),
 }
@@ -53,9 +58,9 @@ impl Num {
             (3, 1) => Num::V3(Vec3::from_column_slice(xs)),
             (4, 1) => Num::V4(Vec4::from_column_slice(xs)),
             (6, 1) => Num::V6(Vec6::from_column_slice(xs)),
-            (3, 3) => Num::M3(Box::new(Mat3::from_column_slice(xs))),
-            (4, 4) => Num::M4(Box::new(Mat4::from_column_slice(xs))),
-            (6, 6) => Num::M6(Box::new(Mat6::from_column_slice(xs))),
+            (3, 3) => Num::M3(Rc::new(Mat3::from_column_slice(xs))),
+            (4, 4) => Num::M4(Rc::new(Mat4::from_column_slice(xs))),
+            (6, 6) => Num::M6(Rc::new(Mat6::from_column_slice(xs))),
             _ => Num::Dyn(DMatrix::from_column_slice(r, c, xs)),
         }
     }
@@ -149,9 +154,10 @@ impl Num {
             Num::V3(v) => v.as_mut_slice(),
             Num::V4(v) => v.as_mut_slice(),
             Num::V6(v) => v.as_mut_slice(),
-            Num::M3(m) => m.as_mut_slice(),
-            Num::M4(m) => m.as_mut_slice(),
-            Num::M6(m) => m.as_mut_slice(),
+            // (a matrix shared with a copy is copied first: copy on write)
+            Num::M3(m) => Rc::make_mut(m).as_mut_slice(),
+            Num::M4(m) => Rc::make_mut(m).as_mut_slice(),
+            Num::M6(m) => Rc::make_mut(m).as_mut_slice(),
             Num::Dyn(m) => m.as_mut_slice(),
         }
     }
@@ -200,9 +206,9 @@ impl Num {
     pub fn transpose(&self) -> Num {
         match self {
             Num::Scalar(x) => Num::Scalar(*x),
-            Num::M3(m) => Num::M3(Box::new(m.transpose())),
-            Num::M4(m) => Num::M4(Box::new(m.transpose())),
-            Num::M6(m) => Num::M6(Box::new(m.transpose())),
+            Num::M3(m) => Num::M3(Rc::new(m.transpose())),
+            Num::M4(m) => Num::M4(Rc::new(m.transpose())),
+            Num::M6(m) => Num::M6(Rc::new(m.transpose())),
             other => Num::from_dmatrix(other.to_dmatrix().transpose()),
         }
     }
@@ -303,17 +309,17 @@ impl From<Vec6> for Num {
 }
 impl From<Mat3> for Num {
     fn from(m: Mat3) -> Num {
-        Num::M3(Box::new(m))
+        Num::M3(Rc::new(m))
     }
 }
 impl From<Mat4> for Num {
     fn from(m: Mat4) -> Num {
-        Num::M4(Box::new(m))
+        Num::M4(Rc::new(m))
     }
 }
 impl From<Mat6> for Num {
     fn from(m: Mat6) -> Num {
-        Num::M6(Box::new(m))
+        Num::M6(Rc::new(m))
     }
 }
 impl From<DMatrix<f64>> for Num {
@@ -338,9 +344,21 @@ mod tests {
 
     #[test]
     fn a_value_is_small_to_move() {
-        // The matrices are boxed: the largest inline numbers are a 6-vector.
+        // The matrices are shared: the largest inline numbers are a 6-vector.
         assert_eq!(std::mem::size_of::<Num>(), 56);
         assert_eq!(std::mem::size_of::<crate::values::value::Value>(), 104);
+    }
+
+    #[test]
+    fn a_copy_shares_a_matrix_until_it_is_changed() {
+        let a = Num::identity(4);
+        let mut b = a.clone();
+        assert_eq!(a.as_slice().as_ptr(), b.as_slice().as_ptr());
+        b.as_mut_slice()[1] = 2.0;
+        // (copy on write: the original keeps its numbers)
+        assert_eq!(a[(1, 0)], 0.0);
+        assert_eq!(b[(1, 0)], 2.0);
+        assert_ne!(a.as_slice().as_ptr(), b.as_slice().as_ptr());
     }
 
     #[test]

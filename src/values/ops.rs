@@ -62,9 +62,9 @@ pub fn mul(l: &Value, r: &Value, kind: &Kind) -> Result<Value, OpError> {
     // The book's products of fixed shapes, without a general matrix:
     // T₁T₂ (3.63), [Ad_T]V (3.83), Rp, and so on.
     let fixed = match (lm, rm) {
-        (Num::M4(a), Num::M4(b)) => Some(Num::M4(Box::new(**a * **b))),
-        (Num::M3(a), Num::M3(b)) => Some(Num::M3(Box::new(**a * **b))),
-        (Num::M6(a), Num::M6(b)) => Some(Num::M6(Box::new(**a * **b))),
+        (Num::M4(a), Num::M4(b)) => Some(Num::M4(std::rc::Rc::new(**a * **b))),
+        (Num::M3(a), Num::M3(b)) => Some(Num::M3(std::rc::Rc::new(**a * **b))),
+        (Num::M6(a), Num::M6(b)) => Some(Num::M6(std::rc::Rc::new(**a * **b))),
         (Num::M3(a), Num::V3(b)) => Some(Num::V3(**a * b)),
         (Num::M4(a), Num::V4(b)) => Some(Num::V4(**a * b)),
         (Num::M6(a), Num::V6(b)) => Some(Num::V6(**a * b)),
@@ -310,10 +310,16 @@ fn num_inverse(k: &Kind, m: &Num) -> Result<(Num, Option<f64>), OpError> {
     Ok((
         match (k, m) {
             // Closed forms: Rᵀ (Prop. 3.3), (3.64) for transforms.
-            (Kind::SO3, Num::M3(r)) => Num::M3(Box::new(*SO3::assume(**r).inverse().matrix())),
+            (Kind::SO3, Num::M3(r)) => {
+                Num::M3(std::rc::Rc::new(*SO3::assume(**r).inverse().matrix()))
+            }
             (Kind::SO3 | Kind::SO2, _) => m.transpose(),
-            (Kind::SE3, Num::M4(t)) => Num::M4(Box::new(*SE3::assume(**t).inverse().matrix())),
-            (Kind::SE2, Num::M3(t)) => Num::M3(Box::new(*SE2::assume(**t).inverse().matrix())),
+            (Kind::SE3, Num::M4(t)) => {
+                Num::M4(std::rc::Rc::new(*SE3::assume(**t).inverse().matrix()))
+            }
+            (Kind::SE2, Num::M3(t)) => {
+                Num::M3(std::rc::Rc::new(*SE2::assume(**t).inverse().matrix()))
+            }
             _ if m.is_square() => {
                 let r = m.nrows();
                 check_cost(cube(r), || format!("the inverse of a {r}×{r} matrix"))?;
@@ -373,7 +379,7 @@ pub fn member(v: &Value, name: &'static str) -> Result<Value, OpError> {
             } else {
                 Kind::Matrix(Some(3), Some(3))
             },
-            m: Num::M3(Box::new(t.fixed_view::<3, 3>(0, 0).into_owned())),
+            m: Num::M3(std::rc::Rc::new(t.fixed_view::<3, 3>(0, 0).into_owned())),
             exact: Default::default(),
         }),
         ("R", Num::M3(t)) if *k == Kind::SE2 => Ok(Value::Num {
