@@ -281,7 +281,17 @@ pub struct Env {
 /// ([`crate::budget`]): its entries, a list's or tuple's items' own, a
 /// picture's items', one for anything else. A list bound to two names
 /// counts twice.
+#[inline]
 pub fn numbers(v: &Value) -> u64 {
+    // (a number, vector or matrix in place; the containers out of line)
+    match v {
+        Value::Num { m, .. } => m.len() as u64,
+        _ => numbers_within(v),
+    }
+}
+
+/// [`numbers`] of a value that is not one array of numbers.
+fn numbers_within(v: &Value) -> u64 {
     match v {
         Value::Num { m, .. } => m.len() as u64,
         Value::Tuple(vs) => vs.iter().map(numbers).sum(),

@@ -129,7 +129,17 @@ impl Value {
         }
     }
     /// The kind this value has at run time.
+    #[inline]
     pub fn kind(&self) -> Kind {
+        // (numbers carry theirs: read in place, the rest out of line)
+        match self {
+            Value::Num { kind, .. } | Value::Formula { kind, .. } => *kind,
+            other => other.kind_made(),
+        }
+    }
+    /// [`Value::kind`] of a value that does not carry its kind.
+    #[cold]
+    fn kind_made(&self) -> Kind {
         match self {
             Value::Num { kind, .. } => *kind,
             Value::Bool(_) => Kind::Bool,
