@@ -2,7 +2,7 @@
 //! parse back (`[1, 0; 0, 1]` with one row per line), vectors as the book
 //! writes them `(1, 2, 3)`, and the type and frames after the value.
 
-use crate::check::ty::{Kind, Ty};
+use crate::check::ty::{Frames, Kind, Ty};
 use crate::eval::interp::Outcome;
 use crate::values::format::write_inline;
 pub use crate::values::format::{Style, inline};
@@ -171,29 +171,29 @@ fn align_cells<const N: usize>(
     let block = &mut s.bytes;
     block.clear();
     block.resize(2 + nrows * (at + indent) + W, b' ');
-    block[0] = b'[';
+    let b = block.as_mut_slice();
+    b[0] = b'[';
     let mut first = 1;
     for (r, row) in cells[..nrows * ncols].chunks_exact(ncols).enumerate() {
         if r > 0 {
             // `first` is where the row above ended.
-            block[first] = b'\n';
+            b[first] = b'\n';
             first += indent + 2;
         }
         let mut end = first;
         for (j, cell) in row.iter().enumerate() {
             let start = first + point[j] - cell.int_width();
-            block[start..start + W].copy_from_slice(cell.padded());
+            b[start..start + W].copy_from_slice(cell.padded());
             end = start + cell.len();
             if j + 1 < ncols {
-                block[end] = b',';
+                b[end] = b',';
             }
         }
         first = end;
     }
-    block[first] = b']';
-    block.truncate(first + 1);
+    b[first] = b']';
     // Every byte is ASCII: digits, '.', '-', spaces, brackets, commas.
-    out.push_str(std::str::from_utf8(block).unwrap_or_default());
+    out.push_str(std::str::from_utf8(&b[..=first]).unwrap_or_default());
 }
 
 fn align(out: &mut String, m: &Num, style: Style, indent: usize, s: &mut Scratch) {
@@ -277,17 +277,26 @@ fn write_type_label(out: &mut String, ty: &Ty, val: Option<&Value>) -> bool {
         // As `Ty`'s Display: the kind, then the frames if any.
         k => {
             match kind_name(k) {
-                Some(name) => out.push_str(name),
+                Some(name) => write_label_text(out, name, &ty.frames),
                 None => {
                     let _ = write!(out, "{k}");
+                    if !ty.frames.is_none() {
+                        out.push(' ');
+                        ty.frames.write_to(out);
+                    }
                 }
-            }
-            if !ty.frames.is_none() {
-                out.push(' ');
-                ty.frames.write_to(out);
             }
             true
         }
+    }
+}
+
+/// `name`, then the frames if any.
+fn write_label_text(out: &mut String, name: &str, frames: &Frames) {
+    out.push_str(name);
+    if !frames.is_none() {
+        out.push(' ');
+        frames.write_to(out);
     }
 }
 

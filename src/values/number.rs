@@ -151,13 +151,6 @@ impl Ascii {
     /// 1e-12), so the test for one is not needed there.
     fn fixed_nonzero(&mut self, x: f64, digits: usize) -> bool {
         let a = x.abs();
-        if a <= 1e-12 && digits <= 9 {
-            // Within 1e-12 of 0 (rounding noise): the integer 0, unsigned.
-            self.buf[0] = b'0';
-            self.len = 1;
-            self.int = 1;
-            return true;
-        }
         if digits <= 8 && (digits == 0 || a >= TINY[digits]) {
             let scaled = a * POW10F[digits];
             if scaled < 1e11 {
@@ -182,6 +175,13 @@ impl Ascii {
                     return true;
                 }
             }
+        }
+        if a <= 1e-12 && digits <= 9 {
+            // Within 1e-12 of 0 (rounding noise): the integer 0, unsigned.
+            self.buf[0] = b'0';
+            self.len = 1;
+            self.int = 1;
+            return true;
         }
         self.fixed_general(x, digits)
     }
