@@ -192,8 +192,17 @@ fn align_cells<const N: usize>(
         first = end;
     }
     b[first] = b']';
-    // Every byte is ASCII: digits, '.', '-', spaces, brackets, commas.
-    out.push_str(std::str::from_utf8(&b[..=first]).unwrap_or_default());
+    out.push_str(ascii_text(b, first + 1));
+}
+
+/// The first `len` bytes of `b` as text: every byte is ASCII (digits,
+/// '.', '-', spaces, brackets, commas, line breaks) and `b` has at least
+/// 15 spaces after them, so the check of the text runs over whole 16-byte
+/// blocks (its byte-by-byte tail is most of its cost on short texts).
+fn ascii_text(b: &[u8], len: usize) -> &str {
+    let checked = (len + 15) & !15;
+    let text = std::str::from_utf8(&b[..checked.min(b.len())]).unwrap_or_default();
+    text.get(..len).unwrap_or_default()
 }
 
 fn align(out: &mut String, m: &Num, style: Style, indent: usize, s: &mut Scratch) {

@@ -90,8 +90,12 @@ pub fn write_tuple(out: &mut String, xs: &[f64], digits: usize, close: &str) -> 
         buf[at] = b;
         at += 1;
     }
-    // Every byte is ASCII: digits, '.', '-', spaces, brackets, commas.
-    out.push_str(std::str::from_utf8(&buf[..at]).unwrap_or_default());
+    // Every byte is ASCII: digits, '.', '-', spaces, brackets, commas. The
+    // check runs over whole 16-byte blocks (the spaces after the text),
+    // which is cheaper than its byte-by-byte tail.
+    let checked = ((at + 15) & !15).min(buf.len());
+    let text = std::str::from_utf8(&buf[..checked]).unwrap_or_default();
+    out.push_str(text.get(..at).unwrap_or_default());
     true
 }
 
