@@ -20,9 +20,16 @@ impl Frame {
     /// [`Frame`]'s `Display` text appended to `out`, without the
     /// formatting machinery (printing a value's label).
     pub fn write_to(&self, out: &mut String) {
-        out.push_str(self.name.as_str());
-        for _ in 0..self.primes() {
-            out.push('\'');
+        let name = self.name.as_str();
+        match name.as_bytes() {
+            // Most frames are one letter: pushed without a copy.
+            &[b] => out.push(char::from(b)),
+            _ => out.push_str(name),
+        }
+        if self.written > 0 || self.moved > 0 {
+            for _ in 0..self.primes() {
+                out.push('\'');
+            }
         }
     }
 }
@@ -54,9 +61,11 @@ impl Frames {
             Frames::None => {}
             Frames::One(a) => braced(out, a),
             Frames::Pair(a, b) => {
-                braced(out, a);
-                out.push('←');
-                braced(out, b);
+                out.push('{');
+                a.write_to(out);
+                out.push_str("}←{");
+                b.write_to(out);
+                out.push('}');
             }
             Frames::Disp(a) => {
                 out.push_str("displacement in ");

@@ -2,7 +2,7 @@
 //! parse back (`[1, 0; 0, 1]` with one row per line), vectors as the book
 //! writes them `(1, 2, 3)`, and the type and frames after the value.
 
-use crate::check::ty::{Kind, Ty};
+use crate::check::ty::{Frames, Kind, Ty};
 use crate::eval::interp::Outcome;
 use crate::values::format::write_inline;
 pub use crate::values::format::{Style, inline};
@@ -113,80 +113,96 @@ fn write_matrix_block(out: &mut String, m: &Num, style: Style, indent: usize) {
 /// bytes and appended in one copy. The same text as [`align`], which
 /// takes over when a cell is not in [`Ascii::fixed`]'s common case.
 fn align_ascii(out: &mut String, m: &Num, digits: usize, indent: usize, s: &mut Scratch) {
-    // The cells live on the stack, in as small an array as fits.
-    match m.len() {
-        ..=16 => align_cells::<16>(out, m, digits, indent, s),
-        17..=36 => align_cells::<36>(out, m, digits, indent, s),
+    // The cells live on the stack, in as small an array as fits; the
+    // shapes printed most (transforms, rotations, adjoints) get a copy of
+    // the loops with their shape known.
+    match m.shape() {
+        (4, 4) => align_cells::<16>(out, m, (4, 4), digits, indent, s),
+        (3, 3) => align_cells::<16>(out, m, (3, 3), digits, indent, s),
+        (6, 6) => align_cells::<36>(out, m, (6, 6), digits, indent, s),
+        (r, c) if r * c <= 16 => align_cells::<16>(out, m, (r, c), digits, indent, s),
+        (r, c) if r * c <= 36 => align_cells::<36>(out, m, (r, c), digits, indent, s),
         _ => align(out, m, digits.into(), indent, s),
     }
 }
 
-/// [`align_ascii`] with room for `N` cells.
+/// [`align_ascii`] with room for `N` cells, for a matrix of `shape`.
+#[inline(always)]
 fn align_cells<const N: usize>(
     out: &mut String,
     m: &Num,
+    (nrows, ncols): (usize, usize),
     digits: usize,
     indent: usize,
     s: &mut Scratch,
 ) {
-    let (nrows, ncols) = m.shape();
     let xs = m.as_slice();
-    if xs.len() > N || ncols > 6 {
+    if xs.len() != nrows * ncols || xs.len() > N || ncols > 6 || nrows == 0 {
         return align(out, m, digits.into(), indent, s);
     }
+    // The cells in row order, and each column's widest integer part and
+    // fraction (from the point on).
     let mut cells = [Ascii::default(); N];
     let (mut int_w, mut frac_w) = ([0usize; 6], [0usize; 6]);
-    for j in 0..ncols {
-        for r in 0..nrows {
+    for (j, column) in xs.chunks_exact(nrows).enumerate() {
+        for (r, &x) in column.iter().enumerate() {
             let cell = &mut cells[r * ncols + j];
-            if !cell.fixed(xs[j * nrows + r], digits) {
+            if !cell.fixed(x, digits) {
                 return align(out, m, digits.into(), indent, s);
             }
             int_w[j] = int_w[j].max(cell.int_width());
             frac_w[j] = frac_w[j].max(cell.frac_width());
         }
     }
-    // Each row is laid out in a buffer of spaces on the stack, right to
-    // left: a cell is copied as its whole fixed-size buffer (spaces, then
-    // its text) ending where the cell ends, so that the copy has a
-    // constant size; the spaces fall only where cells to the left, the
-    // commas and the row's start are written afterwards.
-    const ROW: usize = 512;
-    let lead = Ascii::WIDTH + indent + 2;
-    let width: usize = int_w.iter().chain(&frac_w).sum::<usize>() + 2 * ncols;
-    if lead + width > ROW {
-        return align(out, m, digits.into(), indent, s);
+    // Where each column's decimal points stand, counted from the row's
+    // first cell (a row ends with its last cell's text).
+    let mut point = [0usize; 6];
+    let mut at = 0;
+    for j in 0..ncols {
+        point[j] = at + int_w[j];
+        at = point[j] + frac_w[j] + 2;
     }
+    // The block is laid out left to right in spaces, with `W` bytes of
+    // room after it: a cell is copied as its whole padded buffer (a copy
+    // of constant size) from where its text starts, so the spaces it
+    // carries fall only where text to its right is written afterwards:
+    // the cells to its right, the commas, the line breaks and the `]`.
+    const W: usize = Ascii::WIDTH;
     let block = &mut s.bytes;
     block.clear();
-    block.reserve(nrows * (indent + 2 + width) + 1);
-    let mut row = [b' '; ROW];
-    for r in 0..nrows {
-        let cells = &cells[r * ncols..(r + 1) * ncols];
-        let mut ends = [0usize; 6];
-        let mut k = lead;
-        for (j, cell) in cells.iter().enumerate() {
-            k += int_w[j] - cell.int_width() + cell.len();
-            ends[j] = k;
+    block.resize(2 + nrows * (at + indent) + W, b' ');
+    let b = block.as_mut_slice();
+    b[0] = b'[';
+    let mut first = 1;
+    for (r, row) in cells[..nrows * ncols].chunks_exact(ncols).enumerate() {
+        if r > 0 {
+            // `first` is where the row above ended.
+            b[first] = b'\n';
+            first += indent + 2;
+        }
+        let mut end = first;
+        for (j, cell) in row.iter().enumerate() {
+            let start = first + point[j] - cell.int_width();
+            b[start..start + W].copy_from_slice(cell.padded());
+            end = start + cell.len();
             if j + 1 < ncols {
-                k += frac_w[j] - cell.frac_width() + 2;
+                b[end] = b',';
             }
         }
-        for j in (0..ncols).rev() {
-            let end = ends[j];
-            row[end - Ascii::WIDTH..end].copy_from_slice(cells[j].padded());
-            if j + 1 < ncols {
-                row[end] = b',';
-            }
-        }
-        let from = if r == 0 { lead - 1 } else { lead - indent - 2 };
-        row[from] = if r == 0 { b'[' } else { b'\n' };
-        block.extend_from_slice(&row[from..k]);
-        row[from..k].fill(b' ');
+        first = end;
     }
-    block.push(b']');
-    // Every byte is ASCII: digits, '.', '-', spaces, brackets.
-    out.push_str(std::str::from_utf8(block).unwrap_or_default());
+    b[first] = b']';
+    out.push_str(ascii_text(b, first + 1));
+}
+
+/// The first `len` bytes of `b` as text: every byte is ASCII (digits,
+/// '.', '-', spaces, brackets, commas, line breaks) and `b` has at least
+/// 15 spaces after them, so the check of the text runs over whole 16-byte
+/// blocks (its byte-by-byte tail is most of its cost on short texts).
+fn ascii_text(b: &[u8], len: usize) -> &str {
+    let checked = (len + 15) & !15;
+    let text = std::str::from_utf8(&b[..checked.min(b.len())]).unwrap_or_default();
+    text.get(..len).unwrap_or_default()
 }
 
 fn align(out: &mut String, m: &Num, style: Style, indent: usize, s: &mut Scratch) {
@@ -270,17 +286,26 @@ fn write_type_label(out: &mut String, ty: &Ty, val: Option<&Value>) -> bool {
         // As `Ty`'s Display: the kind, then the frames if any.
         k => {
             match kind_name(k) {
-                Some(name) => out.push_str(name),
+                Some(name) => write_label_text(out, name, &ty.frames),
                 None => {
                     let _ = write!(out, "{k}");
+                    if !ty.frames.is_none() {
+                        out.push(' ');
+                        ty.frames.write_to(out);
+                    }
                 }
-            }
-            if !ty.frames.is_none() {
-                out.push(' ');
-                ty.frames.write_to(out);
             }
             true
         }
+    }
+}
+
+/// `name`, then the frames if any.
+fn write_label_text(out: &mut String, name: &str, frames: &Frames) {
+    out.push_str(name);
+    if !frames.is_none() {
+        out.push(' ');
+        frames.write_to(out);
     }
 }
 
@@ -507,5 +532,59 @@ mod tests {
             assert_eq!(kind_name(&k), Some(k.to_string().as_str()));
         }
         assert_eq!(kind_name(&Kind::Vector(Some(3))), None);
+    }
+
+    /// The block laid out from fixed-size copies is the block [`align`]
+    /// writes cell by cell, for every shape up to 6×6, any indent, and
+    /// entries of every width and sign.
+    #[test]
+    fn fast_layout_is_the_plain_layout() {
+        let entries = [
+            0.0,
+            1.0,
+            -1.0,
+            0.995,
+            -0.0998,
+            0.1997,
+            12.5,
+            -123.25,
+            3e-17,
+            0.05,
+            -7.0,
+            1234567.891,
+        ];
+        let mut seed = 0x2545_f491_4f6c_dd1du64;
+        for rows in 2..=6 {
+            for cols in 2..=6 {
+                for trial in 0..20 {
+                    let xs: Vec<f64> = (0..rows * cols)
+                        .map(|_| {
+                            seed ^= seed << 13;
+                            seed ^= seed >> 7;
+                            seed ^= seed << 17;
+                            entries[(seed % entries.len() as u64) as usize]
+                        })
+                        .collect();
+                    let m = Num::from_slice(rows, cols, &xs);
+                    let (indent, digits) = (trial % 9, [4, 2, 0, 6][trial % 4]);
+                    let mut plain = String::from("ab");
+                    align(
+                        &mut plain,
+                        &m,
+                        digits.into(),
+                        indent,
+                        &mut Scratch::default(),
+                    );
+                    let mut fast = String::from("ab");
+                    align_ascii(&mut fast, &m, digits, indent, &mut Scratch::default());
+                    assert_eq!(fast, plain, "{rows}x{cols} {xs:?}");
+                }
+            }
+        }
+        let t = Num::from_slice(2, 2, &[0.995, 0.0998, -0.0998, 0.995]);
+        assert_eq!(
+            matrix_block(&t, 4, 7),
+            "[0.995,  -0.0998\n        0.0998,  0.995]"
+        );
     }
 }

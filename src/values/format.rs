@@ -7,7 +7,7 @@
 
 use std::fmt::Write;
 
-use super::number::write_num;
+use super::number::{write_num, write_tuple};
 use super::value::Value;
 use crate::sym::Mat;
 use crate::sym::print::{self, Mode};
@@ -102,12 +102,17 @@ pub fn write_inline(out: &mut String, v: &Value, style: Style) {
             style.write(out, m[0])
         }
         Value::Num { m, .. } if m.ncols() == 1 => {
-            out.push('(');
-            write_list(out, m.iter().copied(), style);
-            out.push(')');
+            if !write_tuple(out, m.as_slice(), style.digits, ")") {
+                out.push('(');
+                write_list(out, m.iter().copied(), style);
+                out.push(')');
+            }
         }
         // A row: `[a, b]` would read back as a column, so print its transpose.
         Value::Num { m, .. } if m.nrows() == 1 => {
+            if write_tuple(out, m.as_slice(), style.digits, ").T") {
+                return;
+            }
             out.push('(');
             write_list(out, m.iter().copied(), style);
             out.push_str(").T");
