@@ -357,7 +357,7 @@ impl P<'_> {
         self.ws();
         let start = self.pos;
         let sup = std::mem::take(&mut self.sup);
-        let mut lhs = match self.byte(start) {
+        let lhs = match self.byte(start) {
             // `R^{T}`, `R^{-1}`: the group is the whole exponent. What
             // reads two ways inside it is left to the spacing pass.
             Some(b'{') if sup => {
@@ -384,6 +384,36 @@ impl P<'_> {
             }
             _ => self.operand()?,
         };
+        self.ops(lhs, rbp)
+    }
+
+    /// The operand after a binary operator other than `^`: `expr(rbp)`
+    /// without a call of its own where the operand is the whole of it
+    /// (`T_bc` in `T_ab * T_bc;`, `0.1` in `exp([S] 0.1)`).
+    #[inline(always)]
+    fn rhs(&mut self, rbp: u8) -> Built {
+        self.ws();
+        // A sign (or `−`, `≈`): the full path.
+        if matches!(self.byte(self.pos), Some(b'-' | b'+' | 0xE2)) {
+            return self.expr(rbp);
+        }
+        let e = self.operand()?;
+        let mut after = self.pos;
+        while self.byte(after).is_some_and(is_ws) {
+            after += 1;
+        }
+        if matches!(
+            self.byte(after),
+            None | Some(b';' | b'\n' | b')' | b',' | b']' | b'}')
+        ) {
+            return Some(e);
+        }
+        self.ops(e, rbp)
+    }
+
+    /// The operator loop of [`Self::expr`] after its first operand `lhs`.
+    #[inline(always)]
+    fn ops(&mut self, mut lhs: Expr, rbp: u8) -> Built {
         loop {
             let save = self.pos;
             self.ws();
@@ -432,7 +462,12 @@ impl P<'_> {
             self.spend()?;
             self.pos = at + width;
             self.sup = op == Some(BinOp::Pow);
-            let rhs = self.expr(if op == Some(BinOp::Pow) { bp - 1 } else { bp })?;
+            // `self.sup` is set only after `^`, which `rhs` does not take.
+            let rhs = if op == Some(BinOp::Pow) {
+                self.expr(bp - 1)?
+            } else {
+                self.rhs(bp)?
+            };
             let (op, implicit, op_span) = match op {
                 Some(op) => {
                     self.stack.passes.rewrite |= op == BinOp::Pow;

@@ -395,7 +395,7 @@ impl P<'_> {
         self.ws();
         if !(empty_ok && self.byte(self.pos) == Some(close)) {
             loop {
-                let e = match self.simple_item(close) {
+                let e = match self.simple_item(close, false) {
                     Some(e) => e,
                     None => self.expr(0)?,
                 };
@@ -413,11 +413,11 @@ impl P<'_> {
     }
 
     /// An element that is a plain number or name directly followed by `,`
-    /// or `close` (`1` in `(1, 2)`, `T_ab` in `Ad(T_ab)`): the tree
-    /// `expr(0)` builds for it, without the operator loop. `None` (position
-    /// after whitespace) for anything else.
+    /// or `close` (`1` in `(1, 2)`, `T_ab` in `Ad(T_ab)`), or by `close`
+    /// only when `alone`: the tree `expr(0)` builds for it, without the
+    /// operator loop. `None` (position after whitespace) for anything else.
     #[inline(always)]
-    fn simple_item(&mut self, close: u8) -> Option<Expr> {
+    fn simple_item(&mut self, close: u8, alone: bool) -> Option<Expr> {
         self.ws();
         let start = self.pos;
         let first = self.byte(start)?;
@@ -434,7 +434,7 @@ impl P<'_> {
         } else {
             return None;
         };
-        if !matches!(self.byte(end), Some(b) if b == b',' || b == close) {
+        if !matches!(self.byte(end), Some(b) if b == close || (b == b',' && !alone)) {
             return None;
         }
         let kind = match number {
@@ -535,13 +535,21 @@ impl P<'_> {
         self.pos += 1;
         let rows_mark = self.stack.rows.len();
         self.row_seps();
+        // `[S]`, `[w]`: the book's bracket of one name or number, built at
+        // once (no plain row has a single number).
+        if let Some(e) = self.simple_item(b']', true) {
+            self.pos += 1;
+            let span = self.span(start, self.pos);
+            let kind = ExprKind::Brackets(vec![vec![e]]);
+            return Some(Expr { kind, span });
+        }
         while self.byte(self.pos) != Some(b']') {
             if let Some(plain) = self.plain_rows() {
                 self.stack.rows.extend(plain);
             } else {
                 let mark = self.stack.items.len();
                 loop {
-                    let e = match self.simple_item(b']') {
+                    let e = match self.simple_item(b']', false) {
                         Some(e) => e,
                         None => self.expr(0)?,
                     };
