@@ -48,10 +48,12 @@ pub enum StmtKind {
         ty: Ident,
         times: Vec<Option<Ident>>,
     },
-    /// `f(x, y) = expr` — a user function.
+    /// `f(x, y) = expr` — a user function. The parameters are a boxed
+    /// slice (two words, not a vector's three) so that a statement fits in
+    /// 128 bytes and moves without a call to `memcpy`.
     FnDef {
         name: Ident,
-        params: Vec<Ident>,
+        params: Box<[Ident]>,
         body: Expr,
     },
     /// `derive T_ce` — search the known transforms for a chain from {c} to {e}.

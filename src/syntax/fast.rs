@@ -32,9 +32,16 @@ mod plain;
 mod tests;
 
 /// At most this many operators, postfixes and brackets per statement, so
-/// that both the tree depth and the recursion stay far below
-/// [`MAX_DEPTH`] (the pest path reports the limit).
-const BUDGET: usize = 100;
+/// that both the tree depth and the recursion stay below [`MAX_DEPTH`]
+/// (the pest path reports the limit). Each node the parser builds spends
+/// one unit and adds at most two levels (a superscript `x²` is two: the
+/// power and its exponent), and a leaf is at most three deep (`[1 -2]`,
+/// `deg`), so a tree is at most `2 BUDGET + 3` deep: with 98, 199, within
+/// the limit. The tree's depth is therefore never counted.
+const BUDGET: usize = 98;
+
+/// The bound of [`BUDGET`]'s comment, checked when compiled.
+const _: () = assert!(2 * BUDGET + 3 <= MAX_DEPTH);
 
 /// Pratt binding powers, as in `parser.rs`'s `PRATT` (10 per level).
 const BP_CMP: u8 = 5;
@@ -194,7 +201,7 @@ fn statement_in(text: &str, off: usize, stack: &mut Stack) -> Option<Stmt> {
     })
 }
 
-type Built = Option<(Expr, usize)>;
+type Built = Option<Expr>;
 
 struct P<'a> {
     stack: &'a mut Stack,
@@ -272,19 +279,19 @@ impl P<'_> {
             && let Some(end) = self.keyword_at(0, "assert")
         {
             self.pos = end;
-            return Some(StmtKind::Assert(self.expr(0)?.0));
+            return Some(StmtKind::Assert(self.expr(0)?));
         }
         // `explain expr` (LANGUAGE.md §14), the same way.
         if self.s.first() == Some(&b'e')
             && let Some(end) = self.keyword_at(0, "explain")
         {
             self.pos = end;
-            return Some(StmtKind::Explain(self.expr(0)?.0));
+            return Some(StmtKind::Explain(self.expr(0)?));
         }
         match self.byte(0)? {
             b'(' => {
                 if let Some(targets) = self.destructure_head() {
-                    let value = self.expr(0)?.0;
+                    let value = self.expr(0)?;
                     return Some(StmtKind::Destructure { targets, value });
                 }
                 self.pos = 0;
@@ -297,14 +304,15 @@ impl P<'_> {
                         Some(b'(') => {
                             if let Some(params) = self.fn_def_head() {
                                 let name = self.ident(0, end);
-                                let body = self.expr(0)?.0;
+                                let body = self.expr(0)?;
+                                let params = params.into_boxed_slice();
                                 return Some(StmtKind::FnDef { name, params, body });
                             }
                         }
                         Some(b'=') if self.byte(self.pos + 1) != Some(b'=') => {
                             self.pos += 1;
                             let target = self.ident(0, end);
-                            let value = self.expr(0)?.0;
+                            let value = self.expr(0)?;
                             return Some(StmtKind::Assign { target, value });
                         }
                         _ => {}
@@ -313,7 +321,7 @@ impl P<'_> {
                 }
             }
         }
-        Some(StmtKind::Expr(self.expr(0)?.0))
+        Some(StmtKind::Expr(self.expr(0)?))
     }
 
     /// `"(" ~ ident ~ ("," ~ ident)+ ~ ","? ~ ")" ~ "="`, or `None` where
@@ -349,7 +357,7 @@ impl P<'_> {
         self.ws();
         let start = self.pos;
         let sup = std::mem::take(&mut self.sup);
-        let (mut lhs, mut depth) = match self.byte(start) {
+        let lhs = match self.byte(start) {
             // `R^{T}`, `R^{-1}`: the group is the whole exponent. What
             // reads two ways inside it is left to the spacing pass.
             Some(b'{') if sup => {
@@ -361,7 +369,7 @@ impl P<'_> {
                 self.spend()?;
                 self.pos += width;
                 self.ws();
-                let (operand, d) = self.expr(BP_PREFIX - 1)?;
+                let operand = self.expr(BP_PREFIX - 1)?;
                 let op = if op == BinOp::Sub {
                     UnOp::Neg
                 } else {
@@ -372,10 +380,40 @@ impl P<'_> {
                     op,
                     operand: Box::new(operand),
                 };
-                (Expr { kind, span }, d + 1)
+                Expr { kind, span }
             }
             _ => self.operand()?,
         };
+        self.ops(lhs, rbp)
+    }
+
+    /// The operand after a binary operator other than `^`: `expr(rbp)`
+    /// without a call of its own where the operand is the whole of it
+    /// (`T_bc` in `T_ab * T_bc;`, `0.1` in `exp([S] 0.1)`).
+    #[inline(always)]
+    fn rhs(&mut self, rbp: u8) -> Built {
+        self.ws();
+        // A sign (or `−`, `≈`): the full path.
+        if matches!(self.byte(self.pos), Some(b'-' | b'+' | 0xE2)) {
+            return self.expr(rbp);
+        }
+        let e = self.operand()?;
+        let mut after = self.pos;
+        while self.byte(after).is_some_and(is_ws) {
+            after += 1;
+        }
+        if matches!(
+            self.byte(after),
+            None | Some(b';' | b'\n' | b')' | b',' | b']' | b'}')
+        ) {
+            return Some(e);
+        }
+        self.ops(e, rbp)
+    }
+
+    /// The operator loop of [`Self::expr`] after its first operand `lhs`.
+    #[inline(always)]
+    fn ops(&mut self, mut lhs: Expr, rbp: u8) -> Built {
         loop {
             let save = self.pos;
             self.ws();
@@ -384,6 +422,12 @@ impl P<'_> {
                 self.pos = save;
                 break;
             };
+            // What ends an expression most often: no comparison, operator
+            // or juxtaposition starts with these.
+            if matches!(b, b';' | b'\n' | b')' | b',' | b']' | b'}') {
+                self.pos = save;
+                break;
+            }
             if let Some((op, width)) = self.cmp_at(at) {
                 if rbp >= BP_CMP {
                     self.pos = save;
@@ -392,9 +436,8 @@ impl P<'_> {
                 self.spend()?;
                 self.pos = at + width;
                 self.sup = false;
-                let (rhs, dr) = self.expr(BP_CMP)?;
+                let rhs = self.expr(BP_CMP)?;
                 lhs = Expr::compare(op, lhs, rhs, self.span(at, at + width));
-                depth = depth.max(dr) + 1;
                 continue;
             }
             let (op, bp, width) = match b {
@@ -419,7 +462,12 @@ impl P<'_> {
             self.spend()?;
             self.pos = at + width;
             self.sup = op == Some(BinOp::Pow);
-            let (rhs, dr) = self.expr(if op == Some(BinOp::Pow) { bp - 1 } else { bp })?;
+            // `self.sup` is set only after `^`, which `rhs` does not take.
+            let rhs = if op == Some(BinOp::Pow) {
+                self.expr(bp - 1)?
+            } else {
+                self.rhs(bp)?
+            };
             let (op, implicit, op_span) = match op {
                 Some(op) => {
                     self.stack.passes.rewrite |= op == BinOp::Pow;
@@ -440,9 +488,8 @@ impl P<'_> {
                 implicit,
             };
             lhs = Expr { kind, span };
-            depth = depth.max(dr) + 1;
         }
-        (depth <= MAX_DEPTH).then_some((lhs, depth))
+        Some(lhs)
     }
 
     /// A comparison `==`, `~=` or `≈` at `at`, with its width in bytes.

@@ -231,7 +231,11 @@ impl Cx {
                     }
                 }
                 match (name, body) {
-                    (Some(name), Some(body)) => Ok(StmtKind::FnDef { name, params, body }),
+                    (Some(name), Some(body)) => Ok(StmtKind::FnDef {
+                        name,
+                        params: params.into_boxed_slice(),
+                        body,
+                    }),
                     _ => Err(self.internal(whole)),
                 }
             }

@@ -5,7 +5,6 @@
 //! rules read them.
 
 use super::{Built, P};
-use crate::syntax::MAX_DEPTH;
 use crate::syntax::ast::{Expr, ExprKind, Ident, IndexArg};
 
 /// The scalar functions the book writes without parentheses (`bare_fn`).
@@ -50,6 +49,29 @@ pub(super) fn number_value(text: &str) -> Option<f64> {
         }
     }
     Some(m as f64 / POW10[frac])
+}
+
+/// The elements of `v` from `mark` on, moved into a vector of their own
+/// allocated at its length; one element (`log(T_ac)`, `[S]`) is moved
+/// without `split_off`'s call to `memcpy`.
+#[inline(always)]
+fn split_tail<T>(v: &mut Vec<T>, mark: usize) -> Vec<T> {
+    if v.len() == mark + 1
+        && let Some(last) = v.pop()
+    {
+        return vec![last];
+    }
+    v.split_off(mark)
+}
+
+/// What [`P::name_operand`] read.
+enum Named {
+    /// A name alone: the whole operand.
+    Var(Expr),
+    /// A call, which postfix operators may follow.
+    Call(Expr),
+    /// Neither: [`P::word`] decides.
+    Other,
 }
 
 impl P<'_> {
@@ -100,9 +122,9 @@ impl P<'_> {
         Some((m as i64 as f64 / POW10[frac], end))
     }
 
-    pub(super) fn leaf(&self, kind: ExprKind, start: usize, end: usize) -> (Expr, usize) {
+    pub(super) fn leaf(&self, kind: ExprKind, start: usize, end: usize) -> Expr {
         let span = self.span(start, end);
-        (Expr { kind, span }, 1)
+        Expr { kind, span }
     }
 
     /// `(number | pi) ~ (WHITESPACE* ~ degrees)*` at the current position.
@@ -120,27 +142,27 @@ impl P<'_> {
             _ => return None,
         };
         self.pos = end;
-        let (e, d) = self.leaf(ExprKind::Number(value), start, end);
+        let e = self.leaf(ExprKind::Number(value), start, end);
         if !self
             .byte(self.pos)
             .is_some_and(|b| super::is_ws(b) || b == b'd' || b == 0xC2)
         {
             // No `deg` or `°` can follow (the common case).
-            return Some(Some((e, d)));
+            return Some(Some(e));
         }
-        Some(self.units(e, d))
+        Some(self.units(e))
     }
 
     /// `(WHITESPACE* ~ degrees)*` after `e`.
-    fn units(&mut self, mut e: Expr, mut d: usize) -> Built {
+    fn units(&mut self, mut e: Expr) -> Built {
         loop {
             let save = self.pos;
             self.ws();
             match self.degrees_at(self.pos) {
-                Some(end) => (e, d) = self.degrees(e, d, self.pos, end)?,
+                Some(end) => e = self.degrees(e, self.pos, end)?,
                 None => {
                     self.pos = save;
-                    return Some((e, d));
+                    return Some(e);
                 }
             }
         }
@@ -152,13 +174,18 @@ impl P<'_> {
         let first = self.byte(start)?;
         // primary = mech | call | bare_call | bool_lit | ident | paren | brackets | deg_unit,
         // after `numeric`; the first byte rules out most alternatives.
-        let (mut e, mut d) = match first {
+        let mut e = match first {
             b'(' => self.paren()?,
             b'[' => self.brackets()?,
             // `numeric` starts with a digit, `.`, `pi` or `π` (0xCF);
             // a number takes no postfix operators.
             b'0'..=b'9' | b'.' => return self.numeric()?,
             b'p' | 0xCF if let Some(built) = self.numeric() => return built,
+            b'a'..=b'z' | b'A'..=b'Z' => match self.name_operand(start)? {
+                Named::Var(var) => return Some(var),
+                Named::Call(call) => call,
+                Named::Other => self.word()?,
+            },
             _ => self.word()?,
         };
 
@@ -166,7 +193,7 @@ impl P<'_> {
         loop {
             let at = self.pos;
             if self.byte(at) == Some(b'[') {
-                (e, d) = self.index(e, d)?;
+                e = self.index(e)?;
                 continue;
             }
             self.ws();
@@ -175,7 +202,7 @@ impl P<'_> {
                 Some(b'.') => {
                     if let Some(end) = self.ident_at(op + 1)? {
                         let member = self.ident(op + 1, end);
-                        (e, d) = self.member(e, d, op, member)?;
+                        e = self.member(e, op, member)?;
                         self.pos = end;
                         continue;
                     }
@@ -183,7 +210,7 @@ impl P<'_> {
                 // `deg`; the rest (`°`, superscripts, `ᵀ`) are not ASCII.
                 Some(b'd' | 0x80..) => {
                     if let Some(end) = self.degrees_at(op) {
-                        (e, d) = self.degrees(e, d, op, end)?;
+                        e = self.degrees(e, op, end)?;
                         continue;
                     } else if let Some(end) = self.superscript_at(op) {
                         self.spend()?;
@@ -193,7 +220,6 @@ impl P<'_> {
                             crate::syntax::ast::superscript_power(e, &self.src[op..end], sup);
                         self.stack.passes.rewrite = true;
                         e = Expr { kind, span };
-                        d += 2;
                         self.pos = end;
                         continue;
                     } else if self.src[op..].starts_with('ᵀ') {
@@ -202,7 +228,7 @@ impl P<'_> {
                             name: "T".into(),
                             span: self.span(op, end),
                         };
-                        (e, d) = self.member(e, d, op, member)?;
+                        e = self.member(e, op, member)?;
                         self.pos = end;
                         continue;
                     }
@@ -212,7 +238,44 @@ impl P<'_> {
             self.pos = at;
             break;
         }
-        (d <= MAX_DEPTH).then_some((e, d))
+        Some(e)
+    }
+
+    /// The two commonest primaries that start with a name, read once: a
+    /// call `f(…)` ([`Self::word`]'s first alternative), and a name that no
+    /// call, `sin θ`, postfix or keyword can continue because what follows
+    /// it (after blanks) ends an operand or is a binary operator (`T_bc`
+    /// in `T_ab * T_bc;`). [`Named::Other`] where it may be something else
+    /// (left to `word`); `None` to give up (as `word` does).
+    #[inline(always)]
+    fn name_operand(&mut self, start: usize) -> Option<Named> {
+        let Some(end) = self.ident_at(start)? else {
+            return Some(Named::Other);
+        };
+        let mut after = end;
+        while self.byte(after).is_some_and(super::is_ws) {
+            after += 1;
+        }
+        match self.byte(after) {
+            Some(b'(') => {
+                self.pos = after;
+                let func = self.ident(start, end);
+                let args = self.call_args()?;
+                let span = self.span(start, self.pos);
+                let kind = ExprKind::Call { func, args };
+                Some(Named::Call(Expr { kind, span }))
+            }
+            // `true'` is `true` then a stray `'`: left to `word`.
+            None
+            | Some(
+                b';' | b'\n' | b')' | b',' | b']' | b'}' | b'*' | b'/' | b'+' | b'-' | b'=' | b'^',
+            ) if !self.s[start..end].contains(&b'\'') => {
+                self.pos = end;
+                let var = ExprKind::Var(self.stack.names.name_in(self.src, start, end));
+                Some(Named::Var(self.leaf(var, start, end)))
+            }
+            _ => Some(Named::Other),
+        }
     }
 
     /// The primaries that start with a letter (after `pi`): a call,
@@ -228,10 +291,10 @@ impl P<'_> {
             self.ws();
             if self.byte(self.pos) == Some(b'(') {
                 let func = self.ident(start, end);
-                let (args, d) = self.call_args()?;
+                let args = self.call_args()?;
                 let span = self.span(start, self.pos);
                 let kind = ExprKind::Call { func, args };
-                return Some((Expr { kind, span }, d + 1));
+                return Some(Expr { kind, span });
             }
             self.pos = start;
             if let Some(built) = self.bare_call(start, end) {
@@ -252,22 +315,22 @@ impl P<'_> {
         }
         if let Some(end) = self.keyword_at(start, "deg") {
             self.pos = end;
-            let one = self.leaf(ExprKind::Number(1.0), start, end).0;
+            let one = self.leaf(ExprKind::Number(1.0), start, end);
             let span = one.span;
             let kind = ExprKind::Degrees(Box::new(one));
-            return Some((Expr { kind, span }, 2));
+            return Some(Expr { kind, span });
         }
         None
     }
 
-    fn member(&mut self, e: Expr, d: usize, op: usize, member: Ident) -> Built {
+    fn member(&mut self, e: Expr, op: usize, member: Ident) -> Built {
         self.spend()?;
         let span = e.span.join(self.span(op, member.span.end - self.off));
         let kind = ExprKind::Member {
             base: Box::new(e),
             member,
         };
-        Some((Expr { kind, span }, d + 1))
+        Some(Expr { kind, span })
     }
 
     /// `bare_call` for the name at `start..end`: `sin θ`, `cos 30°`. `None`
@@ -298,11 +361,11 @@ impl P<'_> {
                 }
                 self.pos = stop;
                 let var = ExprKind::Var(self.stack.names.name_in(self.src, at, stop));
-                let (e, d) = self.leaf(var, at, stop);
-                self.units(e, d)
+                let e = self.leaf(var, at, stop);
+                self.units(e)
             }
         };
-        Some(arg.and_then(|(arg, d)| {
+        Some(arg.and_then(|arg| {
             self.spend()?;
             self.stack.passes.spacing = true;
             let func = self.ident(start, end);
@@ -311,33 +374,31 @@ impl P<'_> {
                 func,
                 args: vec![arg],
             };
-            Some((Expr { kind, span }, d + 1))
+            Some(Expr { kind, span })
         }))
     }
 
-    pub(super) fn degrees(&mut self, base: Expr, d: usize, start: usize, end: usize) -> Built {
+    pub(super) fn degrees(&mut self, base: Expr, start: usize, end: usize) -> Built {
         self.spend()?;
         self.pos = end;
         let span = base.span.join(self.span(start, end));
         let kind = ExprKind::Degrees(Box::new(base));
-        Some((Expr { kind, span }, d + 1))
+        Some(Expr { kind, span })
     }
 
     /// Comma-separated expressions up to `close`, with an optional final
     /// comma; at least one unless `empty_ok`. Leaves `pos` after `close`
     /// and the expressions on top of `self.stack`, from the returned mark.
-    fn list_on_stack(&mut self, close: u8, empty_ok: bool) -> Option<(usize, usize)> {
+    fn list_on_stack(&mut self, close: u8, empty_ok: bool) -> Option<usize> {
         self.pos += 1;
         let mark = self.stack.items.len();
-        let mut depth = 0;
         self.ws();
         if !(empty_ok && self.byte(self.pos) == Some(close)) {
             loop {
-                let (e, d) = match self.simple_item(close) {
-                    Some(e) => (e, 1),
+                let e = match self.simple_item(close, false) {
+                    Some(e) => e,
                     None => self.expr(0)?,
                 };
-                depth = depth.max(d);
                 self.stack.items.push(e);
                 if !self.eat(b',') {
                     break;
@@ -348,15 +409,15 @@ impl P<'_> {
                 }
             }
         }
-        self.eat(close).then_some((mark, depth))
+        self.eat(close).then_some(mark)
     }
 
     /// An element that is a plain number or name directly followed by `,`
-    /// or `close` (`1` in `(1, 2)`, `T_ab` in `Ad(T_ab)`): the tree
-    /// `expr(0)` builds for it, without the operator loop. `None` (position
-    /// after whitespace) for anything else.
+    /// or `close` (`1` in `(1, 2)`, `T_ab` in `Ad(T_ab)`), or by `close`
+    /// only when `alone`: the tree `expr(0)` builds for it, without the
+    /// operator loop. `None` (position after whitespace) for anything else.
     #[inline(always)]
-    fn simple_item(&mut self, close: u8) -> Option<Expr> {
+    fn simple_item(&mut self, close: u8, alone: bool) -> Option<Expr> {
         self.ws();
         let start = self.pos;
         let first = self.byte(start)?;
@@ -373,7 +434,7 @@ impl P<'_> {
         } else {
             return None;
         };
-        if !matches!(self.byte(end), Some(b) if b == b',' || b == close) {
+        if !matches!(self.byte(end), Some(b) if b == close || (b == b',' && !alone)) {
             return None;
         }
         let kind = match number {
@@ -382,33 +443,33 @@ impl P<'_> {
         };
         self.pos = end;
         self.sup = false;
-        Some(self.leaf(kind, start, end).0)
+        Some(self.leaf(kind, start, end))
     }
 
     /// The expressions above `mark` on the stack, as a vector of their own.
     fn take_from(&mut self, mark: usize) -> Vec<Expr> {
-        self.stack.items.split_off(mark)
+        split_tail(&mut self.stack.items, mark)
     }
 
     #[inline(always)]
-    pub(super) fn call_args(&mut self) -> Option<(Vec<Expr>, usize)> {
+    pub(super) fn call_args(&mut self) -> Option<Vec<Expr>> {
         self.spend()?;
-        let (mark, d) = self.list_on_stack(b')', true)?;
-        Some((self.take_from(mark), d))
+        let mark = self.list_on_stack(b')', true)?;
+        Some(self.take_from(mark))
     }
 
     pub(super) fn paren(&mut self) -> Built {
         self.spend()?;
         let start = self.pos;
-        let (mark, d) = self.list_on_stack(b')', false)?;
+        let mark = self.list_on_stack(b')', false)?;
         let span = self.span(start, self.pos);
         if self.stack.items.len() == mark + 1 {
             let mut e = self.stack.items.pop()?;
             e.span = span;
-            return Some((e, d));
+            return Some(e);
         }
         let kind = ExprKind::Paren(self.take_from(mark));
-        Some((Expr { kind, span }, d + 1))
+        Some(Expr { kind, span })
     }
 
     /// `sup_group`: `{ expr }`, the expression spanning its braces.
@@ -416,28 +477,26 @@ impl P<'_> {
         self.spend()?;
         let start = self.pos;
         self.pos += 1;
-        let (mut e, d) = self.expr(0)?;
+        let mut e = self.expr(0)?;
         if !self.eat(close) {
             return None;
         }
         e.span = self.span(start, self.pos);
-        Some((e, d))
+        Some(e)
     }
 
-    pub(super) fn index(&mut self, base: Expr, depth: usize) -> Built {
+    pub(super) fn index(&mut self, base: Expr) -> Built {
         self.spend()?;
         let start = self.pos;
         self.pos += 1;
         let mut args = Vec::new();
-        let mut d = 0;
         loop {
             self.ws();
             if self.byte(self.pos) == Some(b':') {
                 args.push(IndexArg::All(self.span(self.pos, self.pos + 1)));
                 self.pos += 1;
             } else {
-                let (e, ed) = self.expr(0)?;
-                d = d.max(ed);
+                let e = self.expr(0)?;
                 args.push(IndexArg::Expr(e));
             }
             if !self.eat(b',') {
@@ -452,7 +511,7 @@ impl P<'_> {
             base: Box::new(base),
             args,
         };
-        Some((Expr { kind, span }, (depth + 1).max(d + 1)))
+        Some(Expr { kind, span })
     }
 
     /// Skips `row_sep`s (`;` or a newline) and whitespace.
@@ -475,20 +534,25 @@ impl P<'_> {
         let start = self.pos;
         self.pos += 1;
         let rows_mark = self.stack.rows.len();
-        let mut depth = 0;
         self.row_seps();
+        // `[S]`, `[w]`: the book's bracket of one name or number, built at
+        // once (no plain row has a single number).
+        if let Some(e) = self.simple_item(b']', true) {
+            self.pos += 1;
+            let span = self.span(start, self.pos);
+            let kind = ExprKind::Brackets(vec![vec![e]]);
+            return Some(Expr { kind, span });
+        }
         while self.byte(self.pos) != Some(b']') {
             if let Some(plain) = self.plain_rows() {
-                depth = depth.max(2);
                 self.stack.rows.extend(plain);
             } else {
                 let mark = self.stack.items.len();
                 loop {
-                    let (e, d) = match self.simple_item(b']') {
-                        Some(e) => (e, 1),
+                    let e = match self.simple_item(b']', false) {
+                        Some(e) => e,
                         None => self.expr(0)?,
                     };
-                    depth = depth.max(d);
                     self.stack.items.push(e);
                     if !self.eat(b',') {
                         break;
@@ -515,7 +579,7 @@ impl P<'_> {
         }
         self.pos += 1;
         let span = self.span(start, self.pos);
-        let rows = self.stack.rows.split_off(rows_mark);
+        let rows = split_tail(&mut self.stack.rows, rows_mark);
         for e in rows.iter().flatten() {
             match e.kind {
                 // numpy's nested rows `[[1, 2], [3, 4]]` are rewritten.
@@ -527,6 +591,6 @@ impl P<'_> {
             }
         }
         let kind = ExprKind::Brackets(rows);
-        Some((Expr { kind, span }, depth + 1))
+        Some(Expr { kind, span })
     }
 }

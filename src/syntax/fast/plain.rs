@@ -12,6 +12,14 @@ impl P<'_> {
     /// A `plain_row` at the current position: its rows, and the position
     /// moved past it; `None` (position kept) where it does not match.
     pub(super) fn plain_rows(&mut self) -> Option<Vec<Vec<Expr>>> {
+        // A plain number starts with a sign, a digit or `.`, a plain list
+        // with `[`: anything else (`[S]`, `[R, p]`) is ruled out at once.
+        if !matches!(
+            self.byte(self.pos),
+            Some(b'+' | b'-' | 0xE2 | b'0'..=b'9' | b'.' | b'[')
+        ) {
+            return None;
+        }
         let (end, rows) = self
             .plain_numbers_at(self.pos)
             .or_else(|| self.plain_lists_at(self.pos))?;

@@ -128,6 +128,19 @@ fn fast_path_agrees_with_pest() {
         let (f, o) = agree(src);
         assert!(f == o && o > 0, "{src:?} takes the slow path");
     }
+    // Names that nothing continues, read at once (`name_operand`), beside
+    // names that a call, a postfix, `sin θ` or a keyword continues.
+    for src in [
+        "y = true' + x; y = false\t; y = true",
+        "z = sin; w = sin -x; v = sin x; u = sqrt\t2",
+        "a = x .T + f (x) * y [1] + x deg + x ° + xᵀ + x²",
+        "b = T_ab *T_bc^T/ x - y == z ~= w",
+        "c = x'; d = (x, y'); e = [x_1 y]; g = {x}",
+        "h = pi; k = π; m = mech; n = T_{a,b}; o = x_{1}",
+    ] {
+        let (f, _) = agree(src);
+        assert!(f > 0, "{src:?}");
+    }
 }
 
 const TOKENS: &[&str] = &[
