@@ -38,7 +38,10 @@ for mode in run:s run:q check:s; do
   echo "$label: $(( (b - a) / 10000 )) instructions per statement"
 done
 # Where a printed statement's instructions go (inclusive costs of the
-# 11k run, divided by 11k: start-up is in none of them).
+# 11k run, divided by 11k: start-up is in none of them). Read from the
+# plain release build: with line tables (`debug = "line-tables-only"`)
+# callgrind splits each function by the file of its inlined code, and
+# these three figures come out wrong (the totals above stay right).
 callgrind_annotate --inclusive=yes "$tmp/cg-run-s11000" 2>/dev/null |
   awk '
     function n(s) { gsub(",", "", s); return s / 11000 }

@@ -101,6 +101,14 @@ fn a_picture_is_inline_svg_and_only_save_writes_a_file() {
     let dir = std::env::temp_dir().join(format!("chasles-nb-{}", std::process::id()));
     let _ = std::fs::create_dir_all(&dir);
     let cwd = std::env::current_dir().expect("cwd");
+    // (a `pic.svg` left in the checkout by something else is not this
+    // cell's: what it must not do is write one)
+    let stamp = || {
+        std::fs::metadata(cwd.join("pic.svg"))
+            .and_then(|m| m.modified())
+            .ok()
+    };
+    let before = stamp();
     let mut nb = Notebook::new();
     let (outs, r) = run(
         &mut nb,
@@ -113,10 +121,7 @@ fn a_picture_is_inline_svg_and_only_save_writes_a_file() {
         "{}",
         &svg[..40.min(svg.len())]
     );
-    assert!(
-        !cwd.join("pic.svg").exists(),
-        "a printed picture writes no file"
-    );
+    assert_eq!(stamp(), before, "a printed picture writes no file");
     let file = dir.join("saved.svg");
     let code = format!("save(pic, \"{}\")", file.display());
     let (outs, r) = run(&mut nb, &code);
