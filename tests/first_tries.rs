@@ -142,6 +142,7 @@ fn solve_refuses_naming_why() {
         ("solve(sin(x) == x, x)", "inside"),
         ("solve(a*x^2 == 1, x)", "symbolic or inexact coefficients"),
         ("solve(x == 1/x, x)", "in a denominator"),
+        ("solve(exp(x) == 2, x)", "x is inside exp(…)"),
         ("solve(x == x, x)", "holds for every x"),
         ("solve(a == 1, x)", "x does not occur"),
         ("solve(x < 1, x)", "joined by =="),

@@ -27,24 +27,49 @@ pub struct Solution {
 /// The coefficients of `e` as a polynomial in `x`, by power; Err naming
 /// why it is not one (x inside a function, or in a denominator).
 pub fn coefficients(e: &Expr, x: &Symbol) -> Result<BTreeMap<i32, Expr>, String> {
+    let out = by_power(
+        e,
+        x,
+        |v| matches!(v, Var::Sym(s) if s == x),
+        |v| match v {
+            Var::Z(s) if s == x => Some(format!("{} is inside a sine or cosine", x.name)),
+            Var::Call(call) => Some(format!("{} is inside {}(…)", x.name, call.f.name())),
+            _ => None,
+        },
+    )?;
+    if out.keys().any(|p| *p < 0) {
+        return Err(format!("{} is in a denominator", x.name));
+    }
+    Ok(out)
+}
+
+/// The terms of `e` grouped by the power of the one factor `of` picks out
+/// (x itself for a polynomial, z = e^{ix} for an angle), every other factor
+/// kept in that power's coefficient; the zero coefficients dropped. A
+/// factor that mentions `x` otherwise is refused with `refuse`'s message
+/// (a call is asked only when its arguments mention x).
+pub(super) fn by_power(
+    e: &Expr,
+    x: &Symbol,
+    of: impl Fn(&Var) -> bool,
+    refuse: impl Fn(&Var) -> Option<String>,
+) -> Result<BTreeMap<i32, Expr>, String> {
     let mut out: BTreeMap<i32, Expr> = BTreeMap::new();
     for (m, c) in &e.terms {
         let mut power = 0;
         let mut rest = Vec::with_capacity(m.len());
         for (v, k) in m {
-            match v {
-                Var::Sym(s) if s == x => power = *k,
-                Var::Z(s) if s == x => {
-                    return Err(format!("{} is inside a sine or cosine", x.name));
-                }
-                Var::Call(call) if call.args.iter().any(|a| mentions(a, x)) => {
-                    return Err(format!("{} is inside {}(…)", x.name, call.f.name()));
-                }
-                _ => rest.push((v.clone(), *k)),
+            let mentioned = match v {
+                Var::Call(call) => call.args.iter().any(|a| mentions(a, x)),
+                _ => true,
+            };
+            if of(v) {
+                power = *k;
+            } else if let Some(why) = mentioned.then(|| refuse(v)).flatten() {
+                return Err(why);
+            } else {
+                rest.push((v.clone(), *k));
             }
-        }
-        if power < 0 {
-            return Err(format!("{} is in a denominator", x.name));
         }
         out.entry(power).or_default().push(rest, c.clone());
     }
@@ -53,7 +78,7 @@ pub fn coefficients(e: &Expr, x: &Symbol) -> Result<BTreeMap<i32, Expr>, String>
 }
 
 /// Whether `x` occurs in `e`.
-fn mentions(e: &Expr, x: &Symbol) -> bool {
+pub(super) fn mentions(e: &Expr, x: &Symbol) -> bool {
     let mut found = Vec::new();
     e.symbols(&mut found);
     found.contains(x)

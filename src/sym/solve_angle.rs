@@ -9,7 +9,6 @@
 use super::coef::Coef;
 use super::expr::{Expr, Func, Symbol, Var};
 use super::sign::sign_with_pi;
-use std::collections::BTreeMap;
 
 /// The largest k of sin(k x) solved for: beyond it the roots in (−π, π]
 /// are too many to list usefully.
@@ -74,7 +73,7 @@ fn cleared(e: &Expr, x: &Symbol) -> Option<(Expr, Expr)> {
         for (v, k) in m {
             if let Var::Call(c) = v
                 && c.f == Func::Recip
-                && mentions(&c.args[0], x)
+                && super::solve::mentions(&c.args[0], x)
             {
                 if call.as_ref().is_some_and(|d| d != c) || *k < 0 {
                     return None;
@@ -139,30 +138,21 @@ fn checked_all(e: &Expr, x: &Symbol, roots: Vec<Expr>) -> Result<Vec<Expr>, Stri
 fn candidates(e: &Expr, x: &Symbol) -> Result<(Vec<Expr>, i32), String> {
     let name = &x.name;
     // the coefficients by the power of z
-    let mut by_power: BTreeMap<i32, Expr> = BTreeMap::new();
-    for (m, c) in &e.terms {
-        let mut power = 0;
-        let mut rest = Vec::with_capacity(m.len());
-        for (v, k) in m {
-            match v {
-                Var::Z(s) if s == x => power = *k,
-                Var::Sym(s) if s == x => {
-                    return Err(format!(
-                        "{name} occurs both alone and inside a sine or cosine: solve finds x of a cos x + b sin x = c"
-                    ));
-                }
-                Var::Call(call) if call.args.iter().any(|a| mentions(a, x)) => {
-                    return Err(format!(
-                        "{name} is inside {}(…): solve finds x of a cos x + b sin x = c",
-                        call.f.name()
-                    ));
-                }
-                _ => rest.push((v.clone(), *k)),
-            }
-        }
-        by_power.entry(power).or_default().push(rest, c.clone());
-    }
-    by_power.retain(|_, c| !c.terms.is_empty());
+    let by_power = super::solve::by_power(
+        e,
+        x,
+        |v| matches!(v, Var::Z(s) if s == x),
+        |v| match v {
+            Var::Sym(s) if s == x => Some(format!(
+                "{name} occurs both alone and inside a sine or cosine: solve finds x of a cos x + b sin x = c"
+            )),
+            Var::Call(call) => Some(format!(
+                "{name} is inside {}(…): solve finds x of a cos x + b sin x = c",
+                call.f.name()
+            )),
+            _ => None,
+        },
+    )?;
     let k = by_power.keys().map(|p| p.abs()).max().unwrap_or(0);
     if k == 0 || by_power.keys().any(|p| *p != 0 && p.abs() != k) {
         return Err(format!(
@@ -333,13 +323,6 @@ fn checked(e: &Expr, x: &Symbol, r: &Expr) -> bool {
         .sum();
     let numeric = e.eval_c(&|s| (s == x).then_some(v));
     numeric.is_some_and(|(re, im)| re.hypot(im) <= 1e-12 * scale.max(1.0))
-}
-
-/// Whether `x` occurs in `e`.
-fn mentions(e: &Expr, x: &Symbol) -> bool {
-    let mut found = Vec::new();
-    e.symbols(&mut found);
-    found.contains(x)
 }
 
 #[cfg(test)]

@@ -473,10 +473,7 @@ mod tests {
         }
         let mut seed = 0x2545_f491_4f6c_dd1du64;
         for i in 0..20_000 {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            let unit = (seed >> 11) as f64 / (1u64 << 53) as f64;
+            let unit = uniform(&mut seed);
             let x = (unit - 0.5) * 10f64.powi(i % 13 - 6);
             for digits in [0, 2, 4, 6] {
                 let (fast, slow) = (fmt_num(x, digits), slow(x, digits));
@@ -490,6 +487,15 @@ mod tests {
         for (d, t) in TINY.iter().enumerate() {
             assert_eq!(t.to_bits(), (0.5 * 10f64.powi(-(d as i32))).to_bits());
         }
+    }
+
+    /// The next number in [0, 1) of a xorshift generator (repeatable
+    /// samples without a crate).
+    fn uniform(seed: &mut u64) -> f64 {
+        *seed ^= *seed << 13;
+        *seed ^= *seed >> 7;
+        *seed ^= *seed << 17;
+        (*seed >> 11) as f64 / (1u64 << 53) as f64
     }
 
     /// Numbers of every kind the fast path of [`Ascii::fixed`] takes or
@@ -526,10 +532,7 @@ mod tests {
         ];
         let mut seed = 0x9e37_79b9_7f4a_7c15u64;
         for i in 0..30_000 {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            let unit = (seed >> 11) as f64 / (1u64 << 53) as f64;
+            let unit = uniform(&mut seed);
             let x = (unit - 0.5) * 10f64.powi(i % 30 - 14);
             xs.push(x);
             // Ties at every number of decimals, and near-integers.
