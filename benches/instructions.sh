@@ -4,7 +4,8 @@
 # machine). Runs the release binary on 1k and 11k statements and prints
 # (I(11k) - I(1k)) / 10k for `run` (every result printed), `run` of the
 # same script with every statement ended by `;` (silenced: nothing
-# printed) and `check`; then, from the 11k `run`, the part of each
+# printed) and `check`, all threads' instructions and the evaluating
+# thread's; then, from the 11k `run` on one thread, the part of each
 # statement spent in parsing (the statement reader), in the interpreter
 # (check and evaluation) and in printing.
 #
@@ -25,24 +26,33 @@ for n in (1000, 11000):
     open(f"{sys.argv[1]}/s{n}.chs", "w").write(script(n))
     open(f"{sys.argv[1]}/q{n}.chs", "w").write(silent_script(n))
 PY
+# Instructions of one run: all threads', then the evaluating thread's (the
+# one that did the most: a long script is read ahead and its text written
+# on two more threads, issue 40, so the evaluating thread's count is the
+# run's critical path).
 count() {
-  valgrind --tool=callgrind --callgrind-out-file="$tmp/cg-$1-$3" "$bin" "$1" "$2" \
-    >/dev/null 2>"$tmp/err"
-  grep -o 'refs: *[0-9,]*' "$tmp/err" | tr -dc 0-9
+  rm -f "$tmp/cg-$1-$3"*
+  valgrind --tool=callgrind --separate-threads=yes \
+    --callgrind-out-file="$tmp/cg-$1-$3" "$bin" "$1" "$2" >/dev/null 2>"$tmp/err"
+  cat "$tmp/cg-$1-$3"-* | awk '/^totals:/ { t += $2; if ($2 > m) m = $2 } END { print t, m }'
 }
 for mode in run:s run:q check:s; do
   m=${mode%:*} f=${mode#*:}
-  a=$(count "$m" "$tmp/${f}1000.chs" "${f}1000")
-  b=$(count "$m" "$tmp/${f}11000.chs" "${f}11000")
+  read -r a am <<<"$(count "$m" "$tmp/${f}1000.chs" "${f}1000")"
+  read -r b bm <<<"$(count "$m" "$tmp/${f}11000.chs" "${f}11000")"
   label=$m; [ "$f" = q ] && label="run (silenced by ;)"
-  echo "$label: $(( (b - a) / 10000 )) instructions per statement"
+  echo "$label: $(( (b - a) / 10000 )) instructions per statement," \
+    "$(( (bm - am) / 10000 )) of them on the evaluating thread"
 done
 # Where a printed statement's instructions go (inclusive costs of the
-# 11k run, divided by 11k: start-up is in none of them). Read from the
-# plain release build: with line tables (`debug = "line-tables-only"`)
-# callgrind splits each function by the file of its inlined code, and
-# these three figures come out wrong (the totals above stay right).
-callgrind_annotate --inclusive=yes "$tmp/cg-run-s11000" 2>/dev/null |
+# 11k run on one thread, CHASLES_THREADS=1, divided by 11k: start-up is
+# in none of them). Read from the plain release build: with line tables
+# (`debug = "line-tables-only"`) callgrind splits each function by the
+# file of its inlined code, and these three figures come out wrong (the
+# totals above stay right).
+CHASLES_THREADS=1 valgrind --tool=callgrind --callgrind-out-file="$tmp/cg-one" "$bin" run \
+  "$tmp/s11000.chs" >/dev/null 2>"$tmp/err"
+callgrind_annotate --inclusive=yes "$tmp/cg-one" 2>/dev/null |
   awk '
     function n(s) { gsub(",", "", s); return s / 11000 }
     !p && index($0, ":chasles::syntax::statements_read::{{closure}} [") { p = n($1) }

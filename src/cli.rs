@@ -11,6 +11,7 @@ use std::io::{IsTerminal, Write};
 use clap::{CommandFactory, Parser, Subcommand};
 
 mod batch;
+mod writer;
 
 use crate::effects::Gate;
 use crate::eval::env::{FrameMode, Mode};

@@ -3,6 +3,7 @@
 //! The CLI, the REPL and the tests all drive chasles through this.
 
 use std::io::Read;
+use std::ops::ControlFlow;
 
 use crate::budget::{self, Budget, Stop};
 use crate::diagnostics::{Diagnostic, ErrorKind, render};
@@ -169,6 +170,12 @@ pub struct Session {
     /// no value printed, no printed picture written; errors and warnings
     /// still reported.
     pub quiet: bool,
+    /// Whether a long source is read on a second thread while its
+    /// statements run ([`syntax::each_statement`]), and a batch run's text
+    /// written on another (true; the same results either way). False
+    /// keeps a run on one thread: `CHASLES_THREADS=1`, for measurement
+    /// and for the tests that compare the two.
+    pub read_ahead: bool,
 }
 
 impl Session {
@@ -182,6 +189,7 @@ impl Session {
             budget: Budget::new(),
             interrupted: false,
             quiet: false,
+            read_ahead: std::env::var_os("CHASLES_THREADS").is_none_or(|n| n != "1"),
         }
     }
 
@@ -296,7 +304,7 @@ impl Session {
         let mut lines = Lines::new(src);
         let _budget = self.budget.enter();
         self.interrupted = false;
-        for parsed in syntax::statements(src) {
+        syntax::each_statement(src, self.read_ahead, |parsed| {
             budget::begin_statement(self.env.held());
             // The report is built in place and changed there: its result
             // (a large value) is written once, not moved through
@@ -307,7 +315,7 @@ impl Session {
                     report = Report {
                         line: lines.line(d.span.start),
                         anchor: lines.anchor(),
-                        result: Err(habit_help(d, src)),
+                        result: Err(habit_help(d.clone(), src)),
                         warnings: Vec::new(),
                         effects: Vec::new(),
                     }
@@ -318,7 +326,7 @@ impl Session {
                     report = Report {
                         line,
                         anchor: lines.anchor(),
-                        result: interp.stmt(&stmt),
+                        result: interp.stmt(stmt),
                         warnings: Vec::new(),
                         effects: Vec::new(),
                     };
@@ -353,7 +361,7 @@ impl Session {
                 if stop == Stop::Interrupted {
                     self.interrupted = true;
                     errors += 1;
-                    break;
+                    return ControlFlow::Break(());
                 }
                 *d = crate::eval::interp::budget_error(stop, d.span);
                 fatal = true;
@@ -363,10 +371,11 @@ impl Session {
             if failed {
                 errors += 1;
                 if !keep_going || fatal {
-                    break;
+                    return ControlFlow::Break(());
                 }
             }
-        }
+            ControlFlow::Continue(())
+        });
         errors
     }
 

@@ -9,12 +9,13 @@ use std::io::Write;
 use std::path::PathBuf;
 use std::time::Instant;
 
-use super::{Opts, emit, emit_err, gate};
+use super::{Opts, emit, emit_err, gate, writer};
 use crate::diagnostics::render;
 use crate::effects::Gate;
 use crate::eval::env::Mode;
 use crate::grade::{Suite, Verdict};
 use crate::session::{Report, Session, read_source, shown_path};
+use crate::syntax::AHEAD_FROM;
 
 /// A script to run: its name in messages and its text, or why it could
 /// not be read (with the bytes, when there were any, for the report).
@@ -120,8 +121,9 @@ pub(super) fn run(sources: &[Source], mode: Mode, opts: &Opts, file_key: bool) -
     };
     // One Ctrl-C handler for the whole run; each file's clock starts anew.
     let base = opts.budget();
-    let stdout = std::io::stdout();
-    let mut out = std::io::BufWriter::new(stdout.lock());
+    // Not locked for the run: a long script's text is written by a thread
+    // of its own (`writer`); the buffer locks stdout only when it writes.
+    let mut out = std::io::BufWriter::new(std::io::stdout());
     let mut suites = Vec::new();
     let mut code = 0;
     for source in sources {
@@ -191,13 +193,12 @@ impl Batch<'_> {
         session.gate = self.gate.clone();
         session.budget = budget;
         session.quiet = self.opts.quiet;
-        let keep_going = self.opts.keep_going || self.mode == Mode::Check;
+        let keep_going = self.keep_going();
         // Without `--report` the suite is empty: no second parse of the
         // script for asserts nobody reports.
         let mut suite = Suite::new(name, if self.report { src } else { "" });
         let mut last_error = None;
         let mut errors = 0;
-        let mut statements = 0;
         if let Some((pname, psrc)) = &self.prelude {
             // The prelude's values are not printed; its errors are.
             errors += session.run(psrc, self.mode, keep_going, |r| {
@@ -212,25 +213,20 @@ impl Batch<'_> {
                 return (suite, 1);
             }
         }
-        // One buffer for every statement's printed text.
-        let mut text = String::with_capacity(192);
-        errors += session.run(src, self.mode, keep_going, |r| {
-            statements += 1;
-            // `check` prints only errors and its summary (or JSON lines).
-            if self.mode == Mode::Run || settings.json {
-                text.clear();
-                r.write_stdout(&mut text, &settings, src);
-                if !text.is_empty() {
-                    if self.file_key {
-                        emit(out, &with_file(&text, name));
-                    } else {
-                        emit(out, &text);
-                    }
-                }
-            }
-            suite.observe(r, src);
-            self.diagnostics(r, name, src, out, &mut last_error);
-        });
+        // A long script's text is written by a second thread while the
+        // next statements are evaluated (the text of `run` only: JSON
+        // lines and `check`'s errors are written here).
+        let beside = self.mode == Mode::Run
+            && !settings.json
+            && session.read_ahead
+            && src.len() >= AHEAD_FROM;
+        let (script_errors, statements) = if beside {
+            let _ = out.flush();
+            self.script_beside(&mut session, name, src, &mut suite, &mut last_error)
+        } else {
+            self.script(&mut session, name, src, &mut suite, &mut last_error, out)
+        };
+        errors += script_errors;
         if session.interrupted {
             return (suite, 130);
         }
@@ -258,6 +254,74 @@ impl Batch<'_> {
         (suite, i32::from(errors > 0))
     }
 
+    /// The script's statements in `session`, each one's text written as
+    /// it is reported. Returns the errors and the statements run.
+    fn script(
+        &self,
+        session: &mut Session,
+        name: &str,
+        src: &str,
+        suite: &mut Suite,
+        last_error: &mut Option<String>,
+        out: &mut impl Write,
+    ) -> (usize, usize) {
+        let settings = self.opts.settings();
+        let mut statements = 0;
+        // One buffer for every statement's printed text.
+        let mut text = String::with_capacity(192);
+        let errors = session.run(src, self.mode, self.keep_going(), |r| {
+            statements += 1;
+            // `check` prints only errors and its summary (or JSON lines).
+            if self.mode == Mode::Run || settings.json {
+                text.clear();
+                r.write_stdout(&mut text, &settings, src);
+                if !text.is_empty() {
+                    if self.file_key {
+                        emit(out, &with_file(&text, name));
+                    } else {
+                        emit(out, &text);
+                    }
+                }
+            }
+            suite.observe(r, src);
+            self.diagnostics(r, name, src, out, last_error);
+        });
+        (errors, statements)
+    }
+
+    /// [`Batch::script`] with each statement's text written by a second
+    /// thread ([`writer`]), for a long script run as text.
+    fn script_beside(
+        &self,
+        session: &mut Session,
+        name: &str,
+        src: &str,
+        suite: &mut Suite,
+        last_error: &mut Option<String>,
+    ) -> (usize, usize) {
+        let style = self.opts.settings().text_style();
+        let mut statements = 0;
+        let errors = writer::beside(style, |w| {
+            session.run(src, self.mode, self.keep_going(), |r| {
+                statements += 1;
+                let job = w.next();
+                if let Ok(o) = &r.result {
+                    job.out.write(o, style);
+                }
+                suite.observe(r, src);
+                job.err = self.diagnostics_text(r, name, src, last_error);
+                w.done();
+            })
+        });
+        (errors, statements)
+    }
+
+    /// Whether a file runs on after an error (`--keep-going`, and always
+    /// in `check`).
+    fn keep_going(&self) -> bool {
+        self.opts.keep_going || self.mode == Mode::Check
+    }
+
     /// A report's warnings and error on stderr — the error under `--json`
     /// too, so that a grader's `NAME.err` holds it — remembering the
     /// error's first line.
@@ -269,6 +333,21 @@ impl Batch<'_> {
         out: &mut impl Write,
         last_error: &mut Option<String>,
     ) {
+        let err = self.diagnostics_text(r, file, src, last_error);
+        if !err.is_empty() {
+            let _ = out.flush();
+            emit_err(&err);
+        }
+    }
+
+    /// What [`Batch::diagnostics`] writes on stderr (empty when nothing).
+    fn diagnostics_text(
+        &self,
+        r: &Report,
+        file: &str,
+        src: &str,
+        last_error: &mut Option<String>,
+    ) -> String {
         let settings = self.opts.settings();
         let mut err = r.stderr(&settings, file, src);
         if let Err(d) = &r.result {
@@ -278,10 +357,7 @@ impl Batch<'_> {
                 err.push_str(&text);
             }
         }
-        if !err.is_empty() {
-            let _ = out.flush();
-            emit_err(&err);
-        }
+        err
     }
 }
 

@@ -72,7 +72,7 @@ pub fn matrix_block(m: &Num, style: impl Into<Style>, indent: usize) -> String {
 }
 
 /// Width of a cell's text in characters (`√`, `π` are one each).
-fn width(s: &str) -> usize {
+pub(super) fn width(s: &str) -> usize {
     if s.is_ascii() {
         s.len()
     } else {
@@ -99,7 +99,7 @@ thread_local! {
 
 /// [`matrix_block`], appended to `out`: the cells are written once into
 /// one buffer (reused from call to call), then aligned.
-fn write_matrix_block(out: &mut String, m: &Num, style: Style, indent: usize) {
+pub(super) fn write_matrix_block(out: &mut String, m: &Num, style: Style, indent: usize) {
     // Decimals are ASCII, so widths are byte counts and the block is
     // built as bytes (exact forms print as formulas, not here).
     SCRATCH.with(|s| match s.try_borrow_mut() {
@@ -404,7 +404,7 @@ fn write_number(out: &mut String, indent: usize, ty: &Ty, v: &Value, style: Styl
 }
 
 /// `  : SE(3) {a}←{b}` after a value (nothing for plain numbers).
-fn write_label(out: &mut String, ty: &Ty, v: &Value, style: Style) {
+pub(super) fn write_label(out: &mut String, ty: &Ty, v: &Value, style: Style) {
     let at = out.len();
     // In LaTeX the label is a comment, so the line stays valid LaTeX (§7).
     let latex = style.sym == crate::sym::print::Mode::Latex && matches!(v, Value::Formula { .. });

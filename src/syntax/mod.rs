@@ -28,6 +28,7 @@
 //!   (the REPL keeps reading lines);
 //! - [`ident::name_frames`]: the frame subscript of a name (`T_sb` → s, b).
 
+mod ahead;
 pub mod ast;
 mod book;
 mod comprehension;
@@ -43,6 +44,8 @@ mod rules;
 mod signs;
 mod spacing;
 mod split;
+
+pub use ahead::{AHEAD_FROM, Parsed, each_statement};
 
 use crate::diagnostics::{Diagnostic, ErrorKind};
 

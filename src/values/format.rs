@@ -7,6 +7,7 @@
 
 use std::fmt::Write;
 
+use super::num::Num;
 use super::number::{write_num, write_tuple};
 use super::value::Value;
 use crate::sym::Mat;
@@ -88,6 +89,41 @@ fn write_list(out: &mut String, xs: impl Iterator<Item = f64>, style: Style) {
     }
 }
 
+/// The numbers of a value, inline, as [`write_inline`] writes them when
+/// no exact form is printed: a scalar, `(1, 2, 3)` for a column vector,
+/// `(1, 2).T` for a row, `[1, 2; 3, 4]` for a matrix, `zeros(r, c)` for
+/// an empty one.
+pub fn write_numbers(out: &mut String, m: &Num, style: Style) {
+    if m.is_empty() {
+        let _ = write!(out, "zeros({}, {})", m.nrows(), m.ncols());
+    } else if m.len() == 1 && m.ncols() == 1 && m.nrows() == 1 {
+        style.write(out, m[0])
+    } else if m.ncols() == 1 {
+        if !write_tuple(out, m.as_slice(), style.digits, ")") {
+            out.push('(');
+            write_list(out, m.iter().copied(), style);
+            out.push(')');
+        }
+    } else if m.nrows() == 1 {
+        // A row: `[a, b]` would read back as a column, so print its
+        // transpose.
+        if !write_tuple(out, m.as_slice(), style.digits, ").T") {
+            out.push('(');
+            write_list(out, m.iter().copied(), style);
+            out.push_str(").T");
+        }
+    } else {
+        out.push('[');
+        for i in 0..m.nrows() {
+            if i > 0 {
+                out.push_str("; ");
+            }
+            write_list(out, m.row(i), style);
+        }
+        out.push(']');
+    }
+}
+
 /// [`inline`], appended to `out`.
 pub fn write_inline(out: &mut String, v: &Value, style: Style) {
     if let Some(m) = exact_text(v, style) {
@@ -95,38 +131,7 @@ pub fn write_inline(out: &mut String, v: &Value, style: Style) {
         return;
     }
     match v {
-        Value::Num { m, .. } if m.is_empty() => {
-            let _ = write!(out, "zeros({}, {})", m.nrows(), m.ncols());
-        }
-        Value::Num { m, .. } if m.len() == 1 && m.ncols() == 1 && m.nrows() == 1 => {
-            style.write(out, m[0])
-        }
-        Value::Num { m, .. } if m.ncols() == 1 => {
-            if !write_tuple(out, m.as_slice(), style.digits, ")") {
-                out.push('(');
-                write_list(out, m.iter().copied(), style);
-                out.push(')');
-            }
-        }
-        // A row: `[a, b]` would read back as a column, so print its transpose.
-        Value::Num { m, .. } if m.nrows() == 1 => {
-            if write_tuple(out, m.as_slice(), style.digits, ").T") {
-                return;
-            }
-            out.push('(');
-            write_list(out, m.iter().copied(), style);
-            out.push_str(").T");
-        }
-        Value::Num { m, .. } => {
-            out.push('[');
-            for i in 0..m.nrows() {
-                if i > 0 {
-                    out.push_str("; ");
-                }
-                write_list(out, m.row(i), style);
-            }
-            out.push(']');
-        }
+        Value::Num { m, .. } => write_numbers(out, m, style),
         Value::Bool(b) => out.push_str(if *b { "true" } else { "false" }),
         Value::Tuple(vs) => {
             out.push('(');

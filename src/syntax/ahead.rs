@@ -1,0 +1,191 @@
+//! Reading ahead (issue 40): the statements of a long script are read on a
+//! second thread while the caller's thread checks and evaluates them, so
+//! that a batch run of many statements pays for reading them on the other
+//! core. The reader is [`super::statements`], unchanged: the same
+//! statements, the same errors, in the same order; only where the reading
+//! happens differs.
+//!
+//! The reader sends statements in batches over a bounded channel (so it is
+//! never more than a few batches ahead, and memory stays bounded by them,
+//! not by the script), and the caller hands each batch back when it is
+//! done with it, so the trees are also dropped on the reader's thread and
+//! the batch's storage is used again. A caller that stops early (an error,
+//! an interrupt) drops its end; the reader then stops at its next batch.
+//!
+//! A short source (a REPL entry, a book exercise) is read in line, on the
+//! caller's thread, statement by statement as before: starting a thread
+//! costs about as much as reading a few hundred statements.
+
+use std::ops::ControlFlow;
+use std::sync::mpsc;
+
+use super::{ast, statements};
+use crate::diagnostics::Diagnostic;
+
+/// One statement as read: its tree, or the syntax error that stands for it.
+pub type Parsed = Result<ast::Stmt, Diagnostic>;
+
+/// Sources shorter than this many bytes are read in line (about 800 of
+/// the book's statements: a thread's start and end, tens of microseconds,
+/// is then a few percent of the run).
+pub const AHEAD_FROM: usize = 16 * 1024;
+
+/// Statements per batch: enough that the channel's hand-over (a wake-up of
+/// the other thread now and then) is a small part of a batch's work.
+const BATCH: usize = 256;
+
+/// Full batches the reader may be ahead by.
+const QUEUE: usize = 3;
+
+/// The reader's stack: the fast parser's depth is bounded; a statement
+/// nested deeper than the splitter's shallow bound is parsed on a thread of
+/// its own with a larger stack (see `parse_on_big_stack`), as in line.
+const READER_STACK: usize = 16 << 20;
+
+/// Calls `each` with every statement of `src` in order, until it breaks:
+/// [`super::statements`], read on a second thread when `src` is long and
+/// `ahead` allows it (see the module's comment). `each` gets the statement in place; it may take
+/// what it keeps (a syntax error, say), and the rest is dropped with the
+/// batch.
+pub fn each_statement(
+    src: &str,
+    ahead: bool,
+    mut each: impl FnMut(&mut Parsed) -> ControlFlow<()>,
+) {
+    if !ahead || src.len() < AHEAD_FROM {
+        return in_line(src, &mut each);
+    }
+    std::thread::scope(|scope| {
+        let (full_to_caller, full) = mpsc::sync_channel::<Vec<Parsed>>(QUEUE);
+        let (used_to_reader, used) = mpsc::channel::<Vec<Parsed>>();
+        let reader = std::thread::Builder::new()
+            .name("chasles-read".into())
+            .stack_size(READER_STACK)
+            .spawn_scoped(scope, move || read(src, full_to_caller, &used));
+        if reader.is_err() {
+            // No second thread to be had: read in line.
+            return in_line(src, &mut each);
+        }
+        while let Ok(mut batch) = full.recv() {
+            for parsed in &mut batch {
+                if each(parsed).is_break() {
+                    return;
+                }
+            }
+            // The reader may have finished (and dropped its end): the
+            // batch is then dropped here.
+            let _ = used_to_reader.send(batch);
+        }
+    });
+}
+
+/// [`each_statement`] on the caller's thread, one statement at a time.
+fn in_line(src: &str, each: &mut impl FnMut(&mut Parsed) -> ControlFlow<()>) {
+    for mut parsed in statements(src) {
+        if each(&mut parsed).is_break() {
+            return;
+        }
+    }
+}
+
+/// The reader's loop: fills a batch (one handed back, emptied here, or a
+/// new one) and sends it, until the source or the caller ends.
+fn read(src: &str, full: mpsc::SyncSender<Vec<Parsed>>, used: &mpsc::Receiver<Vec<Parsed>>) {
+    let mut statements = statements(src);
+    loop {
+        let mut batch = match used.try_recv() {
+            Ok(mut batch) => {
+                batch.clear();
+                batch
+            }
+            Err(_) => Vec::with_capacity(BATCH),
+        };
+        batch.extend(statements.by_ref().take(BATCH));
+        let last = batch.len() < BATCH;
+        if batch.is_empty() || full.send(batch).is_err() || last {
+            break;
+        }
+    }
+    // The caller's loop ends when this end is dropped; the batches still
+    // coming back are dropped here, off the caller's thread, until the
+    // caller is done.
+    drop(full);
+    while let Ok(batch) = used.recv() {
+        drop(batch);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Reads `src` through [`each_statement`] and through the plain
+    /// iterator, each statement's tree or error as debug text.
+    fn both(src: &str) -> (Vec<String>, Vec<String>) {
+        let mut ahead = Vec::new();
+        each_statement(src, true, |p| {
+            ahead.push(format!("{p:?}"));
+            ControlFlow::Continue(())
+        });
+        let plain = statements(src).map(|p| format!("{p:?}")).collect();
+        (ahead, plain)
+    }
+
+    /// A script long enough to be read ahead, with errors, silenced
+    /// statements, comments, blank lines, a statement over several lines
+    /// and one deeper than the fast path takes, reads the same as in line,
+    /// across several batches.
+    #[test]
+    fn a_long_script_reads_the_same_ahead_as_in_line() {
+        let lines = [
+            "T_ab = exp([S] 0.1)",
+            "X = log(T_ab);",
+            "# a comment",
+            "",
+            "y = (1 +",
+            "  2)",
+            "z = 1 +* 2",
+            "w = ((((((((((((((((((((1))))))))))))))))))))",
+            "a = [1, 2; 3, 4]; b = a'",
+            "s = \"text; with a semicolon\"",
+        ];
+        let src: String = (0..3000)
+            .map(|i| lines[i % lines.len()])
+            .collect::<Vec<_>>()
+            .join("\n");
+        assert!(src.len() >= AHEAD_FROM);
+        let (ahead, plain) = both(&src);
+        assert!(plain.len() > 2 * BATCH, "{} statements", plain.len());
+        assert_eq!(ahead.len(), plain.len());
+        for (i, (a, p)) in ahead.iter().zip(&plain).enumerate() {
+            assert_eq!(a, p, "statement {i}");
+        }
+        assert!(plain.iter().any(|p| p.starts_with("Err")));
+    }
+
+    /// A caller that stops early gets no statement after it stopped, and
+    /// the reader ends (the call returns).
+    #[test]
+    fn stopping_early_ends_the_reader() {
+        let src = "x = 1\n".repeat(AHEAD_FROM);
+        let mut seen = 0;
+        each_statement(&src, true, |p| {
+            assert!(p.is_ok());
+            seen += 1;
+            if seen == 10 {
+                ControlFlow::Break(())
+            } else {
+                ControlFlow::Continue(())
+            }
+        });
+        assert_eq!(seen, 10);
+    }
+
+    /// A short source is read in line, and reads the same.
+    #[test]
+    fn a_short_source_reads_the_same() {
+        let (ahead, plain) = both("x = 1; y = 2\nz = x +\n");
+        assert_eq!(ahead, plain);
+        assert_eq!(ahead.len(), 3);
+    }
+}
