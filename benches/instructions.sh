@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Instructions per statement of issue 14's script (callgrind counts
 # instructions, not seconds, so the figure is repeatable on a shared
-# machine). Runs the release binary on 1k and 11k statements and prints
-# (I(11k) - I(1k)) / 10k for `run` (every result printed), `run` of the
+# machine). Runs the release binary on 11k and 21k statements (both long
+# enough to run on three threads, `syntax::AHEAD_FROM`) and prints
+# (I(21k) - I(11k)) / 10k for `run` (every result printed), `run` of the
 # same script with every statement ended by `;` (silenced: nothing
 # printed) and `check`, all threads' instructions and the evaluating
 # thread's; then, from the 11k `run` on one thread, the part of each
@@ -22,7 +23,7 @@ python3 - "$tmp" <<'PY'
 import sys
 sys.path.insert(0, "benches")
 from book_python import script, silent_script
-for n in (1000, 11000):
+for n in (11000, 21000):
     open(f"{sys.argv[1]}/s{n}.chs", "w").write(script(n))
     open(f"{sys.argv[1]}/q{n}.chs", "w").write(silent_script(n))
 PY
@@ -38,8 +39,8 @@ count() {
 }
 for mode in run:s run:q check:s; do
   m=${mode%:*} f=${mode#*:}
-  read -r a am <<<"$(count "$m" "$tmp/${f}1000.chs" "${f}1000")"
-  read -r b bm <<<"$(count "$m" "$tmp/${f}11000.chs" "${f}11000")"
+  read -r a am <<<"$(count "$m" "$tmp/${f}11000.chs" "${f}11000")"
+  read -r b bm <<<"$(count "$m" "$tmp/${f}21000.chs" "${f}21000")"
   label=$m; [ "$f" = q ] && label="run (silenced by ;)"
   echo "$label: $(( (b - a) / 10000 )) instructions per statement," \
     "$(( (bm - am) / 10000 )) of them on the evaluating thread"

@@ -12,7 +12,7 @@ use std::fs::File;
 use std::process::Stdio;
 
 /// Statements of every kind of outcome; repeated past the length where a
-/// script is read and written on threads of their own (16 KB).
+/// script is read and written on threads of their own (`AHEAD_FROM`).
 const BLOCK: &[&str] = &[
     "S = (0, 0, 1, 0, 2, 0)",
     "T_ab = exp([S] 0.1)",
@@ -31,6 +31,10 @@ const BLOCK: &[&str] = &[
     "C = zeros(7, 7);",
     "true",
 ];
+
+/// Blocks in a script: enough to pass the length from which a script runs
+/// on three threads.
+const BLOCKS: usize = 2 * chasles::syntax::AHEAD_FROM / 250;
 
 /// A script of `blocks` blocks with `bad` (an error or a failed assert)
 /// after block `at`.
@@ -103,25 +107,28 @@ fn same_both_ways(name: &str, args: &[&str], src: &str) -> (i32, String) {
 
 #[test]
 fn keep_going_interleaves_errors_and_values_as_on_one_thread() {
-    let src = script(200, "z = nope", 70);
+    let src = script(BLOCKS, "z = nope", 70);
     let (code, text) = same_both_ways("keep", &["run", "--keep-going"], &src);
     assert_eq!(code, 1);
     // Every block's warning, the one error, between block 70's values and
     // block 71's.
-    assert_eq!(text.matches("warning: the result is infinite").count(), 200);
+    assert_eq!(
+        text.matches("warning: the result is infinite").count(),
+        BLOCKS
+    );
     assert_eq!(text.matches("unknown name 'nope'").count(), 1);
     let error = text.find("unknown name 'nope'").expect("the error");
     let before = &text[..error];
     assert_eq!(before.matches("X = [").count(), 71);
     assert_eq!(before.matches("warning: the result").count(), 71);
-    assert_eq!(text.matches("T_ab = [").count(), 200);
+    assert_eq!(text.matches("T_ab = [").count(), BLOCKS);
     // `T_bc = ...;` and `C = ...;` printed nothing.
     assert!(!text.contains("T_bc = ") && !text.contains("C = "));
 }
 
 #[test]
 fn an_error_stops_the_run_where_it_stopped_on_one_thread() {
-    let src = script(200, "y = 1/0", 40);
+    let src = script(BLOCKS, "y = 1/0", 40);
     let (code, text) = same_both_ways("stop", &["run"], &src);
     assert_eq!(code, 1);
     assert_eq!(text.matches("T_ab = [").count(), 41);
@@ -130,7 +137,7 @@ fn an_error_stops_the_run_where_it_stopped_on_one_thread() {
 
 #[test]
 fn failed_asserts_quiet_and_digits_are_as_on_one_thread() {
-    let src = script(200, "assert 1 == 2", 3);
+    let src = script(BLOCKS, "assert 1 == 2", 3);
     let (code, text) = same_both_ways("quiet", &["run", "--quiet", "--keep-going"], &src);
     assert_eq!(code, 1);
     assert!(!text.contains("T_ab = ["), "quiet prints no value");
@@ -141,7 +148,7 @@ fn failed_asserts_quiet_and_digits_are_as_on_one_thread() {
 
 #[test]
 fn json_and_check_read_ahead_as_on_one_thread() {
-    let src = script(200, "z = nope", 60);
+    let src = script(BLOCKS, "z = nope", 60);
     let (_, text) = same_both_ways("json", &["run", "--json", "--keep-going"], &src);
     assert!(text.contains("\"name\":\"T_ab\""));
     let (code, text) = same_both_ways("check", &["check"], &src);

@@ -12,9 +12,10 @@
 //! the batch's storage is used again. A caller that stops early (an error,
 //! an interrupt) drops its end; the reader then stops at its next batch.
 //!
-//! A short source (a REPL entry, a book exercise) is read in line, on the
-//! caller's thread, statement by statement as before: starting a thread
-//! costs about as much as reading a few hundred statements.
+//! A short source (a REPL entry, a book exercise, any script of fewer than
+//! a few thousand statements) is read in line, on the caller's thread,
+//! statement by statement as before: the threads cost more than they save
+//! there (see [`AHEAD_FROM`]).
 
 use std::ops::ControlFlow;
 use std::sync::mpsc;
@@ -25,14 +26,24 @@ use crate::diagnostics::Diagnostic;
 /// One statement as read: its tree, or the syntax error that stands for it.
 pub type Parsed = Result<ast::Stmt, Diagnostic>;
 
-/// Sources shorter than this many bytes are read in line (about 800 of
-/// the book's statements: a thread's start and end, tens of microseconds,
-/// is then a few percent of the run).
-pub const AHEAD_FROM: usize = 16 * 1024;
+/// Sources shorter than this many bytes are read in line: about 6,000 of
+/// the book's statements (`T_ab = exp([S] 0.1)`), 8 ms of work. The second
+/// and third threads cost about 0.6 ms on this project's 2-core virtual
+/// machine (their start, their allocators' first pages, the hand-overs),
+/// which the overlap repays from about 4,000 statements on
+/// (`benches/book_python.py`'s script, whole process, 40 runs each:
+/// 1,000 statements 3.6 ms against 3.0 ms on one thread, 4,000 even,
+/// 10,000 12.3 ms against 14.5 ms).
+pub const AHEAD_FROM: usize = 128 * 1024;
 
 /// Statements per batch: enough that the channel's hand-over (a wake-up of
-/// the other thread now and then) is a small part of a batch's work.
+/// the other thread now and then) is a small part of a batch's work. The
+/// first batches are smaller ([`FIRST_BATCH`], doubling up to this), so
+/// that the caller starts on the first statements soon.
 const BATCH: usize = 256;
+
+/// Statements in the first batch.
+const FIRST_BATCH: usize = 16;
 
 /// Full batches the reader may be ahead by.
 const QUEUE: usize = 3;
@@ -92,19 +103,21 @@ fn in_line(src: &str, each: &mut impl FnMut(&mut Parsed) -> ControlFlow<()>) {
 /// new one) and sends it, until the source or the caller ends.
 fn read(src: &str, full: mpsc::SyncSender<Vec<Parsed>>, used: &mpsc::Receiver<Vec<Parsed>>) {
     let mut statements = statements(src);
+    let mut size = FIRST_BATCH;
     loop {
         let mut batch = match used.try_recv() {
             Ok(mut batch) => {
                 batch.clear();
                 batch
             }
-            Err(_) => Vec::with_capacity(BATCH),
+            Err(_) => Vec::with_capacity(size),
         };
-        batch.extend(statements.by_ref().take(BATCH));
-        let last = batch.len() < BATCH;
+        batch.extend(statements.by_ref().take(size));
+        let last = batch.len() < size;
         if batch.is_empty() || full.send(batch).is_err() || last {
             break;
         }
+        size = (2 * size).min(BATCH);
     }
     // The caller's loop ends when this end is dropped; the batches still
     // coming back are dropped here, off the caller's thread, until the
@@ -149,7 +162,7 @@ mod tests {
             "a = [1, 2; 3, 4]; b = a'",
             "s = \"text; with a semicolon\"",
         ];
-        let src: String = (0..3000)
+        let src: String = (0..2 * AHEAD_FROM / 20)
             .map(|i| lines[i % lines.len()])
             .collect::<Vec<_>>()
             .join("\n");
