@@ -61,8 +61,13 @@ impl Writer {
     }
 
     /// The job [`Writer::next`] gave is filled: it is written, now or by
-    /// the thread with its batch.
+    /// the thread with its batch (a statement that writes nothing, a
+    /// silenced one, is not sent at all).
     pub fn done(&mut self) {
+        let job = &self.batch[self.filled];
+        if job.out.is_empty() && job.err.is_empty() {
+            return;
+        }
         self.filled += 1;
         match &self.to_thread {
             None => {
