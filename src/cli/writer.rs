@@ -34,6 +34,11 @@ const BATCH: usize = 256;
 /// Full batches the writing thread may be behind by.
 const QUEUE: usize = 3;
 
+/// A batch is sent once its jobs hold this many bytes of text, so that the
+/// text waiting to be written stays small whatever the values' size (a
+/// large matrix is written out here, not later).
+const BATCH_BYTES: usize = 64 * 1024;
+
 /// The evaluating side: takes each statement's [`Job`] in turn.
 pub(super) struct Writer {
     /// To the writing thread: a batch and how many of its jobs are filled
@@ -43,6 +48,8 @@ pub(super) struct Writer {
     back: mpsc::Receiver<Vec<Job>>,
     batch: Vec<Job>,
     filled: usize,
+    /// The bytes of text the filled jobs hold.
+    held: usize,
     /// For writing in line.
     style: Style,
     text: String,
@@ -68,6 +75,7 @@ impl Writer {
         if job.out.is_empty() && job.err.is_empty() {
             return;
         }
+        self.held += job.out.held() + job.err.len();
         self.filled += 1;
         match &self.to_thread {
             None => {
@@ -77,8 +85,9 @@ impl Writer {
                 }
                 let _ = out.flush();
                 self.filled = 0;
+                self.held = 0;
             }
-            Some(_) if self.filled == BATCH => self.send(),
+            Some(_) if self.filled == BATCH || self.held >= BATCH_BYTES => self.send(),
             Some(_) => {}
         }
     }
@@ -92,6 +101,7 @@ impl Writer {
         // The thread ends only when this side is dropped.
         let _ = to.send((full, self.filled));
         self.filled = 0;
+        self.held = 0;
     }
 }
 
@@ -121,6 +131,7 @@ pub(super) fn beside<R>(style: Style, body: impl FnOnce(&mut Writer) -> R) -> R 
             back,
             batch: Vec::with_capacity(BATCH),
             filled: 0,
+            held: 0,
             style,
             text: String::new(),
         };

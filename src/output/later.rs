@@ -92,6 +92,12 @@ impl Printed {
         self.numbers = None;
     }
 
+    /// The bytes of text held (the numbers still to be written not
+    /// counted: at most 36 of them).
+    pub fn held(&self) -> usize {
+        self.text.len()
+    }
+
     /// Whether the statement prints nothing.
     pub fn is_empty(&self) -> bool {
         self.text.is_empty() && self.numbers.is_none()

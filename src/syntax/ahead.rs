@@ -45,6 +45,12 @@ const BATCH: usize = 256;
 /// Statements in the first batch.
 const FIRST_BATCH: usize = 16;
 
+/// A batch ends once its statements span this many bytes of source, so
+/// that the trees read ahead stay few whatever the statements' size (a
+/// script of large literal matrices): at most [`QUEUE`] + 2 batches of
+/// them exist at once, each this much text and one statement more.
+const BATCH_BYTES: usize = 64 * 1024;
+
 /// Full batches the reader may be ahead by.
 const QUEUE: usize = 3;
 
@@ -104,6 +110,8 @@ fn in_line(src: &str, each: &mut impl FnMut(&mut Parsed) -> ControlFlow<()>) {
 fn read(src: &str, full: mpsc::SyncSender<Vec<Parsed>>, used: &mpsc::Receiver<Vec<Parsed>>) {
     let mut statements = statements(src);
     let mut size = FIRST_BATCH;
+    // Where the last batch's text ended.
+    let mut read_to = 0;
     loop {
         let mut batch = match used.try_recv() {
             Ok(mut batch) => {
@@ -112,9 +120,22 @@ fn read(src: &str, full: mpsc::SyncSender<Vec<Parsed>>, used: &mpsc::Receiver<Ve
             }
             Err(_) => Vec::with_capacity(size),
         };
-        batch.extend(statements.by_ref().take(size));
-        let last = batch.len() < size;
-        if batch.is_empty() || full.send(batch).is_err() || last {
+        let (from, mut ended) = (read_to, false);
+        while batch.len() < size {
+            let Some(parsed) = statements.next() else {
+                ended = true;
+                break;
+            };
+            read_to = match &parsed {
+                Ok(stmt) => stmt.span.end,
+                Err(d) => d.span.end,
+            };
+            batch.push(parsed);
+            if read_to.saturating_sub(from) >= BATCH_BYTES {
+                break;
+            }
+        }
+        if batch.is_empty() || full.send(batch).is_err() || ended {
             break;
         }
         size = (2 * size).min(BATCH);
@@ -192,6 +213,44 @@ mod tests {
             }
         });
         assert_eq!(seen, 10);
+    }
+
+    /// Batches hold at most [`BATCH`] statements and end once they span
+    /// [`BATCH_BYTES`] of source: long statements make short batches.
+    #[test]
+    fn batches_are_bounded_in_statements_and_in_bytes() {
+        let row = (0..500)
+            .map(|i| format!("{i}.5"))
+            .collect::<Vec<_>>()
+            .join(", ");
+        let big = format!("m = [{row}]\n");
+        let src = format!(
+            "{}{}{}",
+            "x = 1\n".repeat(1000),
+            big.repeat(200),
+            "y = 2\n".repeat(1000)
+        );
+        let (to, full) = mpsc::sync_channel(1000);
+        // No batch comes back: `read` reuses none and returns at the end.
+        let (back, used) = mpsc::channel();
+        drop(back);
+        read(&src, to, &used);
+        let batches: Vec<Vec<Parsed>> = full.iter().collect();
+        let sizes: Vec<usize> = batches.iter().map(Vec::len).collect();
+        assert_eq!(sizes.iter().sum::<usize>(), 2200);
+        assert_eq!(sizes[..5], [16, 32, 64, 128, 256], "{sizes:?}");
+        for batch in &batches {
+            assert!(batch.len() <= BATCH);
+            let span = |p: &Parsed| p.as_ref().map(|s| s.span).expect("no error");
+            let bytes = span(&batch[batch.len() - 1]).end - span(&batch[0]).start;
+            assert!(bytes < BATCH_BYTES + big.len(), "{bytes} bytes");
+        }
+        // The big statements came in batches of a few (≈ 64 KB of them).
+        let per = BATCH_BYTES.div_ceil(big.len());
+        assert!(
+            sizes.iter().any(|&n| n == per),
+            "{sizes:?} (expected some of {per})"
+        );
     }
 
     /// A short source is read in line, and reads the same.
