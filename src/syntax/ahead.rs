@@ -247,10 +247,7 @@ mod tests {
         }
         // The big statements came in batches of a few (≈ 64 KB of them).
         let per = BATCH_BYTES.div_ceil(big.len());
-        assert!(
-            sizes.iter().any(|&n| n == per),
-            "{sizes:?} (expected some of {per})"
-        );
+        assert!(sizes.contains(&per), "{sizes:?} (expected some of {per})");
     }
 
     /// A short source is read in line, and reads the same.
