@@ -6,10 +6,11 @@
 //! `--json`, `check`, `--digits`.
 
 mod common;
-use common::{command, scratch};
+use common::{LIMIT, command, scratch};
 
 use std::fs::File;
 use std::process::Stdio;
+use std::time::{Duration, Instant};
 
 /// Statements of every kind of outcome; repeated past the length where a
 /// script is read and written on threads of their own (`AHEAD_FROM`).
@@ -70,7 +71,19 @@ fn merged(args: &[&str], file: &str, one_thread: bool, dir: &std::path::Path) ->
     } else {
         cmd.env_remove("CHASLES_THREADS");
     }
-    let status = cmd.status().expect("chasles runs");
+    // Bounded: a deadlock between the threads fails the test, not CI.
+    let mut child = cmd.spawn().expect("chasles runs");
+    let started = Instant::now();
+    let status = loop {
+        if let Some(status) = child.try_wait().expect("the run's status") {
+            break status;
+        }
+        if started.elapsed() > LIMIT {
+            let _ = child.kill();
+            panic!("chasles {args:?} did not end within {LIMIT:?}");
+        }
+        std::thread::sleep(Duration::from_millis(5));
+    };
     let text = std::fs::read_to_string(&path).expect("the output");
     (status.code().unwrap_or(-1), text)
 }
