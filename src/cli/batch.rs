@@ -213,19 +213,8 @@ impl Batch<'_> {
                 return (suite, 1);
             }
         }
-        // A long script's text is written by a second thread while the
-        // next statements are evaluated (the text of `run` only: JSON
-        // lines and `check`'s errors are written here).
-        let beside = self.mode == Mode::Run
-            && !settings.json
-            && session.read_ahead
-            && src.len() >= AHEAD_FROM;
-        let (script_errors, statements) = if beside {
-            let _ = out.flush();
-            self.script_beside(&mut session, name, src, &mut suite, &mut last_error)
-        } else {
-            self.script(&mut session, name, src, &mut suite, &mut last_error, out)
-        };
+        let (script_errors, statements) =
+            self.script(&mut session, name, src, &mut suite, &mut last_error, out);
         errors += script_errors;
         if session.interrupted {
             return (suite, 130);
@@ -266,10 +255,32 @@ impl Batch<'_> {
         out: &mut impl Write,
     ) -> (usize, usize) {
         let settings = self.opts.settings();
+        let keep_going = self.keep_going();
         let mut statements = 0;
+        // A long script's text is written by a second thread while the
+        // next statements are evaluated ([`writer`]; the text of `run`
+        // only: JSON lines and `check`'s errors are written here).
+        if self.mode == Mode::Run && !settings.json && session.read_ahead && src.len() >= AHEAD_FROM
+        {
+            let _ = out.flush();
+            let style = settings.text_style();
+            let errors = writer::beside(style, |w| {
+                session.run(src, self.mode, keep_going, |r| {
+                    statements += 1;
+                    let job = w.next();
+                    if let Ok(o) = &r.result {
+                        job.out.write(o, style);
+                    }
+                    suite.observe(r, src);
+                    job.err = self.diagnostics_text(r, name, src, last_error);
+                    w.done();
+                })
+            });
+            return (errors, statements);
+        }
         // One buffer for every statement's printed text.
         let mut text = String::with_capacity(192);
-        let errors = session.run(src, self.mode, self.keep_going(), |r| {
+        let errors = session.run(src, self.mode, keep_going, |r| {
             statements += 1;
             // `check` prints only errors and its summary (or JSON lines).
             if self.mode == Mode::Run || settings.json {
@@ -285,33 +296,6 @@ impl Batch<'_> {
             }
             suite.observe(r, src);
             self.diagnostics(r, name, src, out, last_error);
-        });
-        (errors, statements)
-    }
-
-    /// [`Batch::script`] with each statement's text written by a second
-    /// thread ([`writer`]), for a long script run as text.
-    fn script_beside(
-        &self,
-        session: &mut Session,
-        name: &str,
-        src: &str,
-        suite: &mut Suite,
-        last_error: &mut Option<String>,
-    ) -> (usize, usize) {
-        let style = self.opts.settings().text_style();
-        let mut statements = 0;
-        let errors = writer::beside(style, |w| {
-            session.run(src, self.mode, self.keep_going(), |r| {
-                statements += 1;
-                let job = w.next();
-                if let Ok(o) = &r.result {
-                    job.out.write(o, style);
-                }
-                suite.observe(r, src);
-                job.err = self.diagnostics_text(r, name, src, last_error);
-                w.done();
-            })
         });
         (errors, statements)
     }

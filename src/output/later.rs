@@ -6,13 +6,13 @@
 //! transform's 4×4 behind an `Rc`), so what crosses threads is a copy of
 //! them — at most 36, a 6×6 adjoint — beside the text around them, the
 //! name and the type label, written here. The numbers are then written by
-//! the very functions [`super::text::write_outcome`] calls, so the text is
+//! the very function [`super::text::write_outcome`] calls (`text::write_decimals`), so the text is
 //! the same byte for byte; every other outcome (exact forms under
 //! `--exact`, symbols, lists, tuples, pictures, `explain`) is written here
 //! whole, as before.
 
 use crate::eval::interp::Outcome;
-use crate::values::format::{Style, write_numbers};
+use crate::values::format::Style;
 use crate::values::num::Num;
 use crate::values::value::Value;
 
@@ -112,11 +112,7 @@ impl Printed {
         };
         out.push_str(&self.text[..n.at]);
         let m = Num::from_slice(n.rows, n.cols, &n.xs[..n.rows * n.cols]);
-        if n.rows > 1 && n.cols > 1 {
-            text::write_matrix_block(out, &m, style, n.indent);
-        } else {
-            write_numbers(out, &m, style);
-        }
+        text::write_decimals(out, &m, style, n.indent);
         out.push_str(&self.text[n.at..]);
     }
 }

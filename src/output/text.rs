@@ -99,7 +99,7 @@ thread_local! {
 
 /// [`matrix_block`], appended to `out`: the cells are written once into
 /// one buffer (reused from call to call), then aligned.
-pub(super) fn write_matrix_block(out: &mut String, m: &Num, style: Style, indent: usize) {
+fn write_matrix_block(out: &mut String, m: &Num, style: Style, indent: usize) {
     // Decimals are ASCII, so widths are byte counts and the block is
     // built as bytes (exact forms print as formulas, not here).
     SCRATCH.with(|s| match s.try_borrow_mut() {
@@ -395,12 +395,22 @@ fn write_number(out: &mut String, indent: usize, ty: &Ty, v: &Value, style: Styl
         return write_label(out, ty, v, style);
     }
     match v {
-        Value::Num { m, .. } if m.ncols() > 1 && m.nrows() > 1 => {
-            write_matrix_block(out, m, style, indent)
-        }
+        Value::Num { m, .. } => write_decimals(out, m, style, indent),
         _ => write_inline(out, v, style),
     }
     write_label(out, ty, v, style);
+}
+
+/// A value's numbers as decimals, after a prefix ending at column
+/// `indent`: a matrix as an aligned block, anything else inline (what
+/// [`write_number`] writes when no exact form is printed, and what
+/// [`super::later`] writes on the writing thread).
+pub(super) fn write_decimals(out: &mut String, m: &Num, style: Style, indent: usize) {
+    if m.ncols() > 1 && m.nrows() > 1 {
+        write_matrix_block(out, m, style, indent)
+    } else {
+        crate::values::format::write_numbers(out, m, style)
+    }
 }
 
 /// `  : SE(3) {a}←{b}` after a value (nothing for plain numbers).
