@@ -346,7 +346,11 @@ impl Session {
                                     self.settle(&mut report);
                                 }
                             } else {
-                                report.warnings.extend(not_finite_warning(o));
+                                report.warnings.extend(
+                                    o.val
+                                        .as_deref()
+                                        .and_then(|v| crate::eval::outcome::not_finite(v, o.span)),
+                                );
                             }
                         }
                     }
@@ -438,39 +442,6 @@ fn add_habit_help(d: &mut Diagnostic, src: &str) {
     if let Some(h) = crate::diagnostics::habits::statement(&src[start..end]) {
         d.help = Some(h);
     }
-}
-
-/// A warning when a result holds NaN (an undefined operation such as
-/// inf − inf) or, outside a tuple, ±inf (an overflow such as `2^1e308`, or
-/// inf in the input): IEEE values are printed, never silently. Tuples may
-/// hold inf by design (`screw_params` gives h = inf for a pure translation).
-fn not_finite_warning(o: &crate::eval::interp::Outcome) -> Option<Diagnostic> {
-    fn scan(v: &Value, top: bool, nan: &mut bool, inf: &mut bool) {
-        match v {
-            Value::Num { m, .. } => {
-                // (the common all-finite case in one pass that vectorizes:
-                // 0·x is ±0 for a finite x and NaN for ±inf or NaN)
-                let xs = m.as_slice();
-                if xs.iter().fold(0.0, |acc, x| acc + x * 0.0) == 0.0 {
-                    return;
-                }
-                *nan |= xs.iter().any(|x| x.is_nan());
-                *inf |= top && xs.iter().any(|x| x.is_infinite());
-            }
-            Value::Tuple(vs) => vs.iter().for_each(|v| scan(v, false, nan, inf)),
-            _ => {}
-        }
-    }
-    let (mut nan, mut inf) = (false, false);
-    scan(o.val.as_deref()?, true, &mut nan, &mut inf);
-    let message = if nan {
-        "the result has NaN entries: an undefined operation (inf − inf, 0·inf, an angle of inf)"
-    } else if inf {
-        "the result is infinite: an overflow (the number exceeds 1.8e308) or inf in the input"
-    } else {
-        return None;
-    };
-    Some(Diagnostic::warning(ErrorKind::Domain, o.span, message))
 }
 
 /// The note when a printed picture took another name than it asked for

@@ -44,6 +44,42 @@ fn json_has_no_object_for_a_silent_statement_and_keeps_errors() {
 }
 
 #[test]
+fn a_silent_number_that_is_not_finite_still_warns_and_is_bound() {
+    // A silenced number moves into its binding (nothing shows it): the
+    // warning of its inf and NaN entries is still given, once, at its
+    // statement, and the name holds the value.
+    let src = "x = 1e308 * 10;\ny = (1, inf - inf, 3);\nx\ny[2]\n";
+    let out = chasles(&["-e", src], None);
+    assert_eq!(out.code, Some(0), "{}", out.stderr);
+    assert_eq!(out.stdout, "inf\nNaN\n");
+    assert_eq!(
+        out.stderr
+            .matches("warning: the result is infinite")
+            .count(),
+        2,
+        "{}",
+        out.stderr
+    );
+    assert_eq!(
+        out.stderr.matches("warning: the result has NaN").count(),
+        2,
+        "{}",
+        out.stderr
+    );
+    assert!(out.stderr.contains("1 │ x = 1e308 * 10;"), "{}", out.stderr);
+    assert!(
+        out.stderr.contains("2 │ y = (1, inf - inf, 3);"),
+        "{}",
+        out.stderr
+    );
+    // (in JSON, the silent statements' warnings are objects of their own)
+    let out = chasles(&["--json", "-e", "x = 1e308 * 10;"], None);
+    let lines = json_lines(&out.stdout);
+    assert_eq!(lines.len(), 1, "{}", out.stdout);
+    assert_eq!(lines[0]["line"], 1, "{}", out.stdout);
+}
+
+#[test]
 fn warnings_and_errors_of_a_silent_statement_print() {
     // 1.001 is within 1e-2 of SO(3): bound projected, with a warning.
     let out = chasles(

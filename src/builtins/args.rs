@@ -51,7 +51,12 @@ impl Spans {
     /// `n` arguments standing at one `span` (a tuple argument spread
     /// into its parts).
     pub fn repeat(span: Span, n: usize) -> Spans {
-        std::iter::repeat_n(span, n).collect()
+        let first = [span; 4];
+        Spans {
+            len: n,
+            first,
+            rest: vec![span; n.saturating_sub(first.len())],
+        }
     }
 
     /// Where argument `i` stands, if the call has one.

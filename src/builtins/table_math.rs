@@ -55,7 +55,7 @@ fn eval_exp(a: &mut Args) -> Result<Value, Diagnostic> {
         return Ok(Value::scalar(x.exp()));
     }
     let m = a.mat(0)?;
-    if m.iter().any(|x| !x.is_finite()) {
+    if !crate::values::num::all_finite(m.as_slice()) {
         return Err(a.error(
             0,
             ErrorKind::Domain,
@@ -117,9 +117,16 @@ fn eval_exp(a: &mut Args) -> Result<Value, Diagnostic> {
 /// [`is_se3`] for a 4×4 matrix on the stack: [ω] skew-symmetric, the
 /// last row zero.
 fn is_se3_fixed(m: &Mat4) -> bool {
-    let scale = m.amax().max(1.0);
-    let w = m.fixed_view::<3, 3>(0, 0);
-    (w + w.transpose()).amax() <= 1e-12 * scale && m.row(3).amax() == 0.0
+    // (plain loops over the 16 finite entries: nalgebra's `amax` goes
+    // through its generic SIMD comparisons, several times the cost)
+    let scale = m.iter().fold(1.0f64, |s, x| s.max(x.abs()));
+    let mut skew = 0.0f64;
+    for i in 0..3 {
+        for j in 0..3 {
+            skew = skew.max((m[(i, j)] + m[(j, i)]).abs());
+        }
+    }
+    skew <= 1e-12 * scale && (0..4).all(|j| m[(3, j)] == 0.0)
 }
 
 fn is_se3(m: &DMatrix<f64>) -> bool {

@@ -332,6 +332,10 @@ impl Batch<'_> {
         src: &str,
         last_error: &mut Option<String>,
     ) -> String {
+        // (most statements: nothing to say)
+        if r.warnings.is_empty() && r.result.is_ok() {
+            return String::new();
+        }
         let settings = self.opts.settings();
         let mut err = r.stderr(&settings, file, src);
         if let Err(d) = &r.result {

@@ -469,9 +469,7 @@ pub(crate) fn not_finite_group(
                 | Kind::Se2
                 | Kind::Adjoint { .. }
         )
-        // (in one pass that vectorizes: Σ 0·x is 0 when every entry is
-        // finite, NaN when one is inf or NaN)
-        && m.iter().fold(0.0, |acc, x| acc + x * 0.0) != 0.0
+        && !crate::values::num::all_finite(m.as_slice())
     {
         return Err(Diagnostic::error(
             crate::diagnostics::ErrorKind::Domain,

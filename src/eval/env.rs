@@ -1,6 +1,7 @@
 //! The session state: bindings with their static type (kind and frames)
 //! and, when running, their value; user functions; settings.
 
+use std::borrow::Cow;
 use std::collections::HashMap;
 use std::hash::{Hash, Hasher};
 use std::rc::Rc;
@@ -391,20 +392,32 @@ impl Env {
     /// `given` names `absorbed` ([`Binding::absorbed`]).
     #[inline(always)]
     pub fn set_made(&mut self, name: impl AsKey, ty: &Ty, val: Option<&Value>, absorbed: &[Name]) {
+        self.set_made_from(name, ty, val.map(Cow::Borrowed), absorbed);
+    }
+    /// [`Env::set_made`] of a value given or lent: one given is moved into
+    /// the binding (a statement silenced by `;`, whose value nothing
+    /// shows), one lent is copied.
+    pub fn set_made_from(
+        &mut self,
+        name: impl AsKey,
+        ty: &Ty,
+        val: Option<Cow<'_, Value>>,
+        absorbed: &[Name],
+    ) {
         let key = name.key();
         self.stamp += 1;
+        let counted = val.as_deref().map_or(0, numbers);
+        let derived = derived(val.as_deref());
         match self.vars.get_mut(&key) {
             Some(old) => {
-                self.held = self.held.saturating_sub(binding_numbers(old)) + val.map_or(0, numbers);
+                self.held = self.held.saturating_sub(binding_numbers(old)) + counted;
                 old.ty = *ty;
                 match (&mut old.val, val) {
-                    (Some(o), Some(v)) => o.clone_from(v),
-                    // Checking: no value before, none now.
-                    (None, None) => {}
-                    (o, v) => *o = v.cloned(),
+                    (Some(o), Some(Cow::Borrowed(v))) => o.clone_from(v),
+                    (o, v) => *o = v.map(Cow::into_owned),
                 }
                 old.symbolic = false;
-                old.derived = derived(val);
+                old.derived = derived;
                 old.stamp = self.stamp;
                 if !(old.absorbed.is_empty() && absorbed.is_empty()) {
                     old.absorbed.clear();
@@ -412,12 +425,12 @@ impl Env {
                 }
             }
             None => {
-                self.held += val.map_or(0, numbers);
+                self.held += counted;
                 let b = Binding {
                     ty: *ty,
-                    val: val.cloned(),
+                    val: val.map(Cow::into_owned),
                     symbolic: false,
-                    derived: derived(val),
+                    derived,
                     stamp: self.stamp,
                     absorbed: absorbed.to_vec(),
                 };

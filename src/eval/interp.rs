@@ -9,7 +9,8 @@ use crate::check::bind;
 use crate::check::rules::RuleError;
 use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
-use crate::syntax::ast::{Name, Span, Stmt, StmtKind};
+use crate::syntax::ast::{Span, Stmt, StmtKind};
+use std::borrow::Cow;
 
 pub use super::outcome::{Names, Outcome};
 
@@ -147,20 +148,6 @@ impl<'a> Interp<'a> {
             .map_err(|stop| budget_error(stop, span))
     }
 
-    /// Binds a checked value to `name` (statements call this only after
-    /// they have succeeded).
-    #[inline]
-    fn bind_value(&mut self, name: Name, t: &Typed) {
-        if self.env.numbers_read.is_empty() {
-            self.env.set_made(name, &t.ty, t.val.as_deref(), &[]);
-            return;
-        }
-        let mut absorbed: Vec<Name> = self.env.numbers_read.iter().map(|(s, _)| *s).collect();
-        absorbed.sort_unstable_by_key(|n| n.as_str());
-        absorbed.dedup();
-        self.env.set_made(name, &t.ty, t.val.as_deref(), &absorbed);
-    }
-
     /// Runs one statement. On error nothing is bound.
     pub fn stmt(&mut self, s: &Stmt) -> Result<Outcome, Diagnostic> {
         self.warnings.clear();
@@ -198,6 +185,19 @@ impl<'a> Interp<'a> {
                 // (Fig. 3.13: `v_b = (0, 0, 1.5)` is a point, as the book uses it)
                 let role = || self.env.claim(target.name).role;
                 t.ty.free &= !super::slips::literal_point(&target.name, role, value);
+                // A number silenced by `;` moves into its binding: nothing
+                // shows it (§3), so no copy is kept for printing; it still
+                // warns when it is not finite.
+                if s.silent
+                    && let Some(v @ Value::Num { .. }) = t.val.as_deref()
+                {
+                    let warning = super::outcome::not_finite(v, s.span);
+                    let val = t.val.take().map(|v| Cow::Owned(*v));
+                    self.bind_from(target.name, &t.ty, val);
+                    self.note_reliance(target.name);
+                    self.warnings.extend(warning);
+                    return Ok(out(Names::One([target.name]), t));
+                }
                 self.bind_value(target.name, &t);
                 self.note_reliance(target.name);
                 let mut o = out(Names::One([target.name]), t);
@@ -343,57 +343,6 @@ impl<'a> Interp<'a> {
         }
     }
 
-    /// Checks a binding's name against the value's frames (§3) and gives
-    /// the value the kind its name implies (`V_b` a twist, `F_a` a wrench).
-    fn bind_checked(
-        &mut self,
-        name: crate::syntax::name::Name,
-        t: &mut Typed,
-        name_span: Span,
-        value_span: Span,
-    ) -> Result<(), Diagnostic> {
-        // Lists, pictures and strings take no frames from their names (§12):
-        // theirs come from what they hold.
-        if matches!(t.ty.kind, Kind::List(_) | Kind::Picture | Kind::Text) {
-            return Ok(());
-        }
-        let claim = self.env.claim(name);
-        match bind::bind_in_place(&name, &claim, &mut t.ty) {
-            Ok(None) => {}
-            Ok(Some(w)) => self.rule_warning(*w, value_span, name_span),
-            Err(e) => {
-                self.rule_failure(*e, value_span, Some(name_span), Some(value_span), None)?;
-            }
-        }
-        let ty = t.ty.kind;
-        // (The value first: checking has none, and kinds compare by a call.)
-        if let Some(Value::Num { m, kind, exact }) = t.val.as_deref_mut()
-            && ty != Kind::Unknown
-        {
-            if ty.is_group() && *kind != ty {
-                let owned = std::mem::replace(m, crate::values::num::Num::Scalar(0.0));
-                let before = owned.clone();
-                *m = self.group_at_binding(&name, &ty, owned, exact, value_span)?;
-                // Numbers moved onto the group are no longer what was typed.
-                if *m != before {
-                    *exact = Default::default();
-                }
-            }
-            *kind = ty;
-        } else if let Some(Value::Formula { kind, .. }) = t.val.as_deref_mut()
-            && ty != Kind::Unknown
-            && !ty.is_group()
-        {
-            // the book's names label symbolic 6-vectors as they do numbers
-            // (`S2 = (0, 0, 1, 0, -L1, 0)` is a screw axis, §5)
-            *kind = ty;
-        }
-        if matches!(ty, Kind::Matrix(Some(4), Some(4))) {
-            self.transform_lookalike(&name, t, value_span);
-        }
-        Ok(())
-    }
-
     /// The names of the parts of a bare builtin call's tuple (`q`, `s`, `h`
     /// of `screw_params`); empty for anything else or a user function.
     fn part_labels(&self, e: &crate::syntax::ast::Expr) -> &'static [&'static str] {
@@ -406,82 +355,6 @@ impl<'a> Interp<'a> {
                     .unwrap_or(&[])
             }
             _ => &[],
-        }
-    }
-
-    /// A warning from a binding rule (the name renames a moved frame).
-    fn rule_warning(&mut self, e: RuleError, value_span: Span, name_span: Span) {
-        let kind = e.kind.unwrap_or(ErrorKind::Frame);
-        let mut d = Diagnostic::warning(kind, name_span, e.message);
-        if !e.rhs.is_empty() {
-            d = d.with_label(value_span, e.rhs);
-        }
-        if let Some(h) = e.help {
-            d = d.with_help(h);
-        }
-        self.frames.warning(d, &mut self.warnings);
-    }
-
-    /// `R_sb = M`, `T_ab = M`: the name asserts the group (LANGUAGE.md §5).
-    /// Within 1e-9 the matrix is taken as it is (exactly in the group, when
-    /// it has an exact form); within 1e-2 it is projected
-    /// (ProjectToSO3/SE3, §3.6) with a warning giving the distance; farther
-    /// is a domain error giving the distance (DistanceToSO3/SE3).
-    fn group_at_binding(
-        &mut self,
-        name: &str,
-        kind: &Kind,
-        m: crate::values::num::Num,
-        exact: &crate::values::exact::Exact,
-        span: Span,
-    ) -> Result<crate::values::num::Num, Diagnostic> {
-        use super::convert::{Group, Membership};
-        use crate::values::exact_mat::membership;
-        let group = match kind {
-            Kind::SO3 => Group::SO3,
-            Kind::SE3 => Group::SE3,
-            Kind::SO2 => Group::SO2,
-            Kind::SE2 => Group::SE2,
-            _ => return Ok(m),
-        };
-        if m.shape() != (group.size(), group.size()) {
-            return Ok(m);
-        }
-        let measure = format!("DistanceTo{}", group.name().replace(['(', ')'], ""));
-        let fmt = |d: f64| crate::values::number::fmt_num(d, 4);
-        match membership(&m, exact, group) {
-            Membership::Exact(x) => Ok(x),
-            Membership::Projected(p, d) => {
-                self.warnings.push(
-                    Diagnostic::warning(
-                        ErrorKind::Domain,
-                        span,
-                        format!(
-                            "{name} names {}, and the matrix is {:.2e} from {} ({measure}); projected to the nearest element",
-                            group.noun(),
-                            d,
-                            group.name()
-                        ),
-                    )
-                    .with_help("book values are rounded to 3 digits: within 1e-2 the name's group is assumed (ProjectTo, §3.6)"),
-                );
-                Ok(p)
-            }
-            Membership::Outside { distance, .. } => Err(Diagnostic::error(
-                ErrorKind::Domain,
-                span,
-                format!(
-                    "{name} names {}, but the matrix is {} from {} ({measure})",
-                    group.noun(),
-                    if distance.is_finite() { fmt(distance) } else { "infinitely far".into() },
-                    group.name()
-                ),
-            )
-            .with_help(format!(
-                "a matrix within 1e-2 of {} is projected onto it; check the entries, or bind it to a name that is not a rotation or transform (M{})",
-                group.name(),
-                name.strip_prefix(crate::syntax::ident::base_name(name)).unwrap_or("")
-            ))),
         }
     }
 

@@ -2,6 +2,8 @@
 //! walks each statement once, checking kinds and frames by
 //! [`crate::check`]'s rules and computing values through [`crate::lie`].
 
+mod binding;
+mod call;
 mod compare;
 mod compound;
 mod derive;
@@ -16,7 +18,7 @@ pub mod list;
 mod lower;
 mod naming;
 mod notation;
-mod outcome;
+pub mod outcome;
 mod paren_product;
 mod relied;
 mod slice;

@@ -3,6 +3,7 @@
 
 use super::value::Value;
 use crate::check::ty::Ty;
+use crate::diagnostics::{Diagnostic, ErrorKind};
 use crate::syntax::ast::{Name, Span};
 
 /// What a successful statement produced, for printing.
@@ -64,4 +65,38 @@ impl std::ops::Deref for Names {
     fn deref(&self) -> &[Name] {
         self.as_slice()
     }
+}
+
+/// The warning of a statement's result `v` (at `span`) that holds NaN (an
+/// undefined operation such as inf − inf) or, outside a tuple, ±inf (an
+/// overflow such as `2^1e308`, or inf in the input): IEEE values are
+/// printed, never silently, and a statement silenced by `;` still warns
+/// (LANGUAGE.md §3). Tuples may hold inf by design (`screw_params` gives
+/// h = inf for a pure translation).
+pub fn not_finite(v: &Value, span: Span) -> Option<Diagnostic> {
+    fn scan(v: &Value, top: bool, nan: &mut bool, inf: &mut bool) {
+        match v {
+            Value::Num { m, .. } => {
+                // (the common all-finite case in one pass that vectorizes)
+                let xs = m.as_slice();
+                if crate::values::num::all_finite(xs) {
+                    return;
+                }
+                *nan |= xs.iter().any(|x| x.is_nan());
+                *inf |= top && xs.iter().any(|x| x.is_infinite());
+            }
+            Value::Tuple(vs) => vs.iter().for_each(|v| scan(v, false, nan, inf)),
+            _ => {}
+        }
+    }
+    let (mut nan, mut inf) = (false, false);
+    scan(v, true, &mut nan, &mut inf);
+    let message = if nan {
+        "the result has NaN entries: an undefined operation (inf − inf, 0·inf, an angle of inf)"
+    } else if inf {
+        "the result is infinite: an overflow (the number exceeds 1.8e308) or inf in the input"
+    } else {
+        return None;
+    };
+    Some(Diagnostic::warning(ErrorKind::Domain, span, message))
 }

@@ -24,6 +24,8 @@ impl<'a> Op<'a> {
             Op::Index(sels) => Operation::Index(sels.to_vec()),
             Op::Block(widths) => Operation::Block(widths.to_vec()),
             Op::Vector => Operation::Vector,
+            // (most calls use the builtin's own name: no search of its aliases)
+            Op::Call(b, name) if b.name == name => Operation::Call(b.name),
             Op::Call(b, name) => Operation::Call(b.names().find(|n| *n == name).unwrap_or(b.name)),
         }
     }

@@ -48,6 +48,25 @@ pub enum Num {
     Dyn(DMatrix<f64>),
 }
 
+/// True when every entry of `xs` is finite (no NaN, no ±inf): 0·x is ±0
+/// for a finite x and NaN otherwise, and the sum is kept in four lanes so
+/// that the loop vectorizes (a single running sum cannot: floating-point
+/// addition is not reassociated). Read by every statement (a result's
+/// non-finite warning, a group operation's refusal), so it is worth the
+/// lanes.
+#[inline]
+pub fn all_finite(xs: &[f64]) -> bool {
+    let mut lanes = [0.0f64; 4];
+    let mut chunks = xs.chunks_exact(4);
+    for c in &mut chunks {
+        for (l, x) in lanes.iter_mut().zip(c) {
+            *l += x * 0.0;
+        }
+    }
+    let tail: f64 = chunks.remainder().iter().map(|x| x * 0.0).sum();
+    (lanes[0] + lanes[1]) + (lanes[2] + lanes[3]) + tail == 0.0
+}
+
 impl Num {
     /// The numbers of an r×c matrix with entries `xs` in column-major
     /// order, in the fixed-size variant where the shape has one.
@@ -340,6 +359,23 @@ mod tests {
         assert!(matches!(Num::identity(2), Num::Dyn(_)));
         assert!(matches!(Num::zeros(1, 1), Num::Scalar(_)));
         assert!(matches!(Num::zeros(1, 3), Num::Dyn(_)));
+    }
+
+    #[test]
+    fn all_finite_sees_every_entry() {
+        for n in 0..20 {
+            let xs: Vec<f64> = (0..n).map(|i| i as f64 - 3.5).collect();
+            assert!(all_finite(&xs));
+            for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+                for at in 0..n {
+                    let mut ys = xs.clone();
+                    ys[at] = bad;
+                    assert!(!all_finite(&ys), "{bad} at {at} of {n}");
+                }
+            }
+        }
+        // (huge finite entries stay finite: 0·x is 0, not an overflow)
+        assert!(all_finite(&[f64::MAX, -f64::MAX, f64::MIN_POSITIVE, -0.0]));
     }
 
     #[test]
