@@ -4,8 +4,7 @@
 //! it is, projected or refused by its distance, and the value stored in
 //! the session, copied or moved.
 
-use std::borrow::Cow;
-
+use super::env::Stored;
 use super::interp::{Interp, Typed};
 use super::value::Value;
 use crate::check::bind;
@@ -19,12 +18,13 @@ impl Interp<'_> {
     /// they have succeeded).
     #[inline]
     pub(super) fn bind_value(&mut self, name: Name, t: &Typed) {
-        self.bind_from(name, &t.ty, t.val.as_deref().map(Cow::Borrowed));
+        self.bind_from(name, &t.ty, t.val.as_deref().map(Stored::Copied));
     }
 
     /// [`Interp::bind_value`] of a value given (moved into the binding) or
     /// lent (copied).
-    pub(super) fn bind_from(&mut self, name: Name, ty: &Ty, val: Option<Cow<'_, Value>>) {
+    #[inline]
+    pub(super) fn bind_from(&mut self, name: Name, ty: &Ty, val: Option<Stored<'_>>) {
         if self.env.numbers_read.is_empty() {
             self.env.set_made_from(name, ty, val, &[]);
             return;

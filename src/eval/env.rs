@@ -1,7 +1,6 @@
 //! The session state: bindings with their static type (kind and frames)
 //! and, when running, their value; user functions; settings.
 
-use std::borrow::Cow;
 use std::collections::HashMap;
 use std::hash::{Hash, Hasher};
 use std::rc::Rc;
@@ -208,6 +207,30 @@ impl Binding {
     }
 }
 
+/// A value a binding is made from ([`Env::set_made_from`]): lent, and
+/// copied into the binding (its numbers shared), or given, and moved in.
+pub enum Stored<'a> {
+    Copied(&'a Value),
+    Moved(Box<Value>),
+}
+
+impl Stored<'_> {
+    /// The value.
+    pub fn get(&self) -> &Value {
+        match self {
+            Stored::Copied(v) => v,
+            Stored::Moved(v) => v,
+        }
+    }
+    /// The value, owned: a copy of one lent.
+    fn into_value(self) -> Value {
+        match self {
+            Stored::Copied(v) => v.clone(),
+            Stored::Moved(v) => *v,
+        }
+    }
+}
+
 /// Whether a binding of `v` is [`Binding::derived`].
 #[inline]
 fn derived(v: Option<&Value>) -> bool {
@@ -392,29 +415,32 @@ impl Env {
     /// `given` names `absorbed` ([`Binding::absorbed`]).
     #[inline(always)]
     pub fn set_made(&mut self, name: impl AsKey, ty: &Ty, val: Option<&Value>, absorbed: &[Name]) {
-        self.set_made_from(name, ty, val.map(Cow::Borrowed), absorbed);
+        self.set_made_from(name, ty, val.map(Stored::Copied), absorbed);
     }
-    /// [`Env::set_made`] of a value given or lent: one given is moved into
-    /// the binding (a statement silenced by `;`, whose value nothing
-    /// shows), one lent is copied.
+    /// [`Env::set_made`] of a value lent (copied into the binding) or
+    /// given (moved: a statement silenced by `;`, whose value nothing
+    /// shows).
+    #[inline(always)]
     pub fn set_made_from(
         &mut self,
         name: impl AsKey,
         ty: &Ty,
-        val: Option<Cow<'_, Value>>,
+        val: Option<Stored<'_>>,
         absorbed: &[Name],
     ) {
         let key = name.key();
         self.stamp += 1;
-        let counted = val.as_deref().map_or(0, numbers);
-        let derived = derived(val.as_deref());
+        let counted = val.as_ref().map_or(0, |v| numbers(v.get()));
+        let derived = derived(val.as_ref().map(Stored::get));
         match self.vars.get_mut(&key) {
             Some(old) => {
                 self.held = self.held.saturating_sub(binding_numbers(old)) + counted;
                 old.ty = *ty;
                 match (&mut old.val, val) {
-                    (Some(o), Some(Cow::Borrowed(v))) => o.clone_from(v),
-                    (o, v) => *o = v.map(Cow::into_owned),
+                    (Some(o), Some(Stored::Copied(v))) => o.clone_from(v),
+                    // Checking: no value before, none now.
+                    (None, None) => {}
+                    (o, v) => *o = v.map(Stored::into_value),
                 }
                 old.symbolic = false;
                 old.derived = derived;
@@ -428,7 +454,7 @@ impl Env {
                 self.held += counted;
                 let b = Binding {
                     ty: *ty,
-                    val: val.map(Cow::into_owned),
+                    val: val.map(Stored::into_value),
                     symbolic: false,
                     derived,
                     stamp: self.stamp,

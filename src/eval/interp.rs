@@ -10,7 +10,6 @@ use crate::check::rules::RuleError;
 use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
 use crate::syntax::ast::{Span, Stmt, StmtKind};
-use std::borrow::Cow;
 
 pub use super::outcome::{Names, Outcome};
 
@@ -192,7 +191,7 @@ impl<'a> Interp<'a> {
                     && let Some(v @ Value::Num { .. }) = t.val.as_deref()
                 {
                     let warning = super::outcome::not_finite(v, s.span);
-                    let val = t.val.take().map(|v| Cow::Owned(*v));
+                    let val = t.val.take().map(super::env::Stored::Moved);
                     self.bind_from(target.name, &t.ty, val);
                     self.note_reliance(target.name);
                     self.warnings.extend(warning);
