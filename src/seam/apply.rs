@@ -361,6 +361,14 @@ impl<'a> Op<'a> {
     /// The first two paths of [`Op::apply`]: None when the operands are
     /// numbers (a builtin call then computes with its spans and warnings).
     pub fn exact_or_symbolic(self, args: &[&Value], kind: &Kind) -> Option<Result<Value, OpError>> {
+        // Every path below needs a symbolic operand (an expression or a
+        // formula): numbers, the common case, leave at once.
+        if !args
+            .iter()
+            .any(|v| matches!(v, Value::Sym(_) | Value::Formula { .. }))
+        {
+            return None;
+        }
         if let Some(v) = super::exponential::power(self, args, kind) {
             return Some(v);
         }
