@@ -219,6 +219,20 @@ impl Interp<'_> {
 
     fn var(&mut self, name: Name, span: Span) -> Result<Typed, Diagnostic> {
         if let Some(b) = self.env.get(name) {
+            // Numbers (most names read) are what they were bound to: a copy
+            // (the numbers shared), boxed as the result holds it, when no
+            // axis was assumed a unit vector and no symbol is `given` (the
+            // paths below then change nothing).
+            if let Some(v @ Value::Num { .. }) = &b.val
+                && self.running()
+                && self.env.relied.is_empty()
+                && !self.env.has_givens()
+            {
+                return Ok(Typed {
+                    ty: b.ty,
+                    val: Some(Box::new(v.clone())),
+                });
+            }
             let mut warnings = Vec::new();
             let v = if self.running() {
                 super::substitute::current(b.bound(), self.env, &mut warnings).map_err(|e| {
