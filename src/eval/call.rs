@@ -14,6 +14,9 @@ use crate::seam::apply::{self, Hints, Op};
 use crate::syntax::ast::{Expr, ExprKind, Name, Span};
 
 impl Interp<'_> {
+    /// `name(args)` (LANGUAGE.md §4): a user function's call, a bound
+    /// name's value times a parenthesis, or a builtin's call; an unknown
+    /// name is an error that suggests the nearest one.
     pub(super) fn call(
         &mut self,
         name: Name,
