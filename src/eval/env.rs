@@ -1,8 +1,6 @@
 //! The session state: bindings with their static type (kind and frames)
 //! and, when running, their value; user functions; settings.
 
-use std::collections::HashMap;
-use std::hash::{Hash, Hasher};
 use std::rc::Rc;
 use std::sync::LazyLock;
 
@@ -13,73 +11,7 @@ use crate::check::ty::Ty;
 use crate::diagnostics::{Diagnostic, Severity};
 use crate::syntax::name::Name;
 
-/// A map keyed by names, each hashed and compared by where its interned
-/// text is ([`Name`]: one text, one address), so that a look-up hashes one
-/// word, not the text (foldhash's fixed-seed hasher: a session's names are
-/// not adversarial).
-pub type NameMap<V> = HashMap<Key, V, foldhash::fast::FixedState>;
-
-/// A name as a key of a [`NameMap`]: equal, and hashed alike, exactly when
-/// the names are the same (`Name`'s own hash reads the text, to agree with
-/// its `Borrow<str>`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
-pub struct Key(pub Name);
-
-impl Hash for Key {
-    #[inline]
-    fn hash<H: Hasher>(&self, state: &mut H) {
-        state.write_usize(self.0.as_str().as_ptr() as usize);
-    }
-}
-
-/// Anything that names a binding: a [`Name`] (no look-up) or a text (found
-/// in, or added to, the table of names first).
-pub trait AsKey {
-    /// The key of the name.
-    fn key(self) -> Key;
-}
-
-impl AsKey for Name {
-    #[inline]
-    fn key(self) -> Key {
-        Key(self)
-    }
-}
-
-impl AsKey for &Name {
-    #[inline]
-    fn key(self) -> Key {
-        Key(*self)
-    }
-}
-
-impl AsKey for &str {
-    #[inline]
-    fn key(self) -> Key {
-        Key(Name::new(self))
-    }
-}
-
-impl AsKey for &String {
-    #[inline]
-    fn key(self) -> Key {
-        Key(Name::new(self))
-    }
-}
-
-impl AsKey for Key {
-    #[inline]
-    fn key(self) -> Key {
-        self
-    }
-}
-
-impl AsKey for &Key {
-    #[inline]
-    fn key(self) -> Key {
-        *self
-    }
-}
+pub use super::key::{AsKey, Key, NameMap};
 
 /// `ans`, the name an expression statement binds its value to.
 pub static ANS: LazyLock<Name> = LazyLock::new(|| Name::new("ans"));

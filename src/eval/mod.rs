@@ -14,6 +14,7 @@ mod given_equal;
 pub mod graph;
 mod hold;
 pub mod interp;
+mod key;
 pub mod list;
 mod lower;
 mod naming;
