@@ -346,6 +346,8 @@ impl Session {
                                     self.settle(&mut report);
                                 }
                             } else {
+                                // (a number silenced by `;` was moved into
+                                // its binding and warned there)
                                 report.warnings.extend(
                                     o.val
                                         .as_deref()

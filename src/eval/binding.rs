@@ -26,13 +26,13 @@ impl Interp<'_> {
     #[inline]
     pub(super) fn bind_from(&mut self, name: Name, ty: &Ty, val: Option<Stored<'_>>) {
         if self.env.numbers_read.is_empty() {
-            self.env.set_made_from(name, ty, val, &[]);
+            self.env.set_made(name, ty, val, &[]);
             return;
         }
         let mut absorbed: Vec<Name> = self.env.numbers_read.iter().map(|(s, _)| *s).collect();
         absorbed.sort_unstable_by_key(|n| n.as_str());
         absorbed.dedup();
-        self.env.set_made_from(name, ty, val, &absorbed);
+        self.env.set_made(name, ty, val, &absorbed);
     }
 
     /// Checks a binding's name against the value's frames (§3) and gives

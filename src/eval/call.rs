@@ -154,7 +154,7 @@ impl Interp<'_> {
         // paths below are for lists, tuples and symbols, and for
         // `simplify` of a number.
         let numbers = vals.iter().all(|v| matches!(v, Value::Num { .. }));
-        if !numbers || b.name == "simplify" {
+        if !numbers || super::tuple_call::takes_numbers(b.name) {
             if let Some(v) = self.call_on_parts(b, op, &vals, &ty, span, base)? {
                 return Ok(Typed::new(ty, Some(v)));
             }

@@ -139,7 +139,7 @@ impl Binding {
     }
 }
 
-/// A value a binding is made from ([`Env::set_made_from`]): lent, and
+/// A value a binding is made from ([`Env::set_made`]): lent, and
 /// copied into the binding (its numbers shared), or given, and moved in.
 pub enum Stored<'a> {
     Copied(&'a Value),
@@ -341,19 +341,14 @@ impl Env {
     /// reusing the old binding's storage when the name is bound already.
     #[inline]
     pub fn set_value(&mut self, name: impl AsKey, ty: &Ty, val: Option<&Value>) {
-        self.set_made(name, ty, val, &[]);
+        self.set_made(name, ty, val.map(Stored::Copied), &[]);
     }
-    /// [`Env::set_value`] of a value computed from the numbers of the
-    /// `given` names `absorbed` ([`Binding::absorbed`]).
-    #[inline(always)]
-    pub fn set_made(&mut self, name: impl AsKey, ty: &Ty, val: Option<&Value>, absorbed: &[Name]) {
-        self.set_made_from(name, ty, val.map(Stored::Copied), absorbed);
-    }
-    /// [`Env::set_made`] of a value lent (copied into the binding) or
+    /// [`Env::set_value`] of a value lent (copied into the binding) or
     /// given (moved: a statement silenced by `;`, whose value nothing
-    /// shows).
+    /// shows), computed from the numbers of the `given` names `absorbed`
+    /// ([`Binding::absorbed`]).
     #[inline(always)]
-    pub fn set_made_from(
+    pub fn set_made(
         &mut self,
         name: impl AsKey,
         ty: &Ty,

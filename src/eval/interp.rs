@@ -3,7 +3,7 @@
 //! [`Mode::Run`], computes its value through the Lie-group core. `chasles
 //! check` runs the same pass in [`Mode::Check`], with no numbers.
 
-use super::env::{Binding, Env, FrameMode, Mode};
+use super::env::{Binding, Env, FrameMode, Mode, Stored};
 use super::value::{UserFn, Value};
 use crate::check::bind;
 use crate::check::rules::RuleError;
@@ -185,14 +185,13 @@ impl<'a> Interp<'a> {
                 let role = || self.env.claim(target.name).role;
                 t.ty.free &= !super::slips::literal_point(&target.name, role, value);
                 // A number silenced by `;` moves into its binding: nothing
-                // shows it (§3), so no copy is kept for printing; it still
-                // warns when it is not finite.
+                // shows it (§3), so no copy is kept for printing; its
+                // not-finite warning is given here, before it moves.
                 if s.silent
                     && let Some(v @ Value::Num { .. }) = t.val.as_deref()
                 {
                     let warning = super::outcome::not_finite(v, s.span);
-                    let val = t.val.take().map(super::env::Stored::Moved);
-                    self.bind_from(target.name, &t.ty, val);
+                    self.bind_from(target.name, &t.ty, t.val.take().map(Stored::Moved));
                     self.note_reliance(target.name);
                     self.warnings.extend(warning);
                     return Ok(out(Names::One([target.name]), t));

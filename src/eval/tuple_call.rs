@@ -11,8 +11,15 @@ use crate::diagnostics::Diagnostic;
 use crate::seam::apply::Op;
 use crate::values::error::OpError;
 
+/// Whether [`each_part`] may give a value for `name` called on numbers
+/// only: `simplify` of a number (its simplest exact form); every other
+/// path needs a tuple, a formula or a symbol.
+pub(super) fn takes_numbers(name: &str) -> bool {
+    name == "simplify"
+}
+
 /// `name(x, rest…)` for a tuple `x` with a symbolic part, part by part;
-/// None for any other call.
+/// `simplify` of a number ([`takes_numbers`]); None for any other call.
 pub(super) fn each_part(
     op: Op,
     name: &str,
@@ -23,7 +30,7 @@ pub(super) fn each_part(
     // itself, with its exact form, so that `simplify(x) == x`'s proofs
     // still see how it was made)
     if let [v @ Value::Num { .. }] = vals
-        && name == "simplify"
+        && takes_numbers(name)
     {
         return Some(Ok(
             crate::decide::constant::simplest(v).unwrap_or_else(|| v.clone())
