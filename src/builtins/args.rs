@@ -312,6 +312,11 @@ impl Args<'_> {
     /// by certified arithmetic on its recipe ([`Args::certified_turn`]).
     pub fn half_turn(&self, i: usize) -> Option<so3::HalfTurn> {
         let v = self.vals.get(i)?;
+        // (both ways start by asking whether the floats are near a half
+        // turn: asked once here, as almost every logarithm is not)
+        if !crate::values::exact_mat::near_half_turn(v) {
+            return None;
+        }
         crate::values::exact_mat::half_turn(v).or_else(|| self.certified_turn?(v))
     }
 

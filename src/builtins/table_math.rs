@@ -55,7 +55,7 @@ fn eval_exp(a: &mut Args) -> Result<Value, Diagnostic> {
         return Ok(Value::scalar(x.exp()));
     }
     let m = a.mat(0)?;
-    if !crate::values::num::all_finite(m.as_slice()) {
+    if !m.all_finite() {
         return Err(a.error(
             0,
             ErrorKind::Domain,

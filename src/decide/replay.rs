@@ -469,7 +469,7 @@ pub(crate) fn not_finite_group(
                 | Kind::Se2
                 | Kind::Adjoint { .. }
         )
-        && !crate::values::num::all_finite(m.as_slice())
+        && !m.all_finite()
     {
         return Err(Diagnostic::error(
             crate::diagnostics::ErrorKind::Domain,

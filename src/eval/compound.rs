@@ -102,11 +102,8 @@ impl Interp<'_> {
             let crate::syntax::ast::ExprKind::Number(typed) = e.kind else {
                 return None;
             };
-            match self.literal(typed, e.span) {
-                Value::Num {
-                    exact: crate::values::exact::Exact::Typed,
-                    ..
-                } => *x = typed,
+            match self.literal_exact(typed, e.span) {
+                crate::values::exact::Exact::Typed => *x = typed,
                 _ => return None,
             }
         }

@@ -169,7 +169,18 @@ impl Interp<'_> {
     /// (`0.866` is 866/1000), or π where `pi` or `π` was written.
     #[inline]
     pub(super) fn literal(&self, x: f64, span: Span) -> Value {
-        let exact = if x == std::f64::consts::PI {
+        Value::Num {
+            kind: Kind::Scalar,
+            m: crate::values::num::Num::Scalar(x),
+            exact: self.literal_exact(x, span),
+        }
+    }
+
+    /// The exact form of the literal `x` typed at `span` ([`Interp::literal`]):
+    /// [`Exact::Typed`] but for π and the literals a float does not hold.
+    #[inline]
+    pub(super) fn literal_exact(&self, x: f64, span: Span) -> Exact {
+        if x == std::f64::consts::PI {
             self.pi_literal(span)
         } else if span.end - span.start > 15
             || (span.end - span.start > 3 && !(x.abs() >= f64::MIN_POSITIVE && x.is_finite()))
@@ -179,11 +190,6 @@ impl Interp<'_> {
             self.long_literal(x, span)
         } else {
             Exact::Typed
-        };
-        Value::Num {
-            kind: Kind::Scalar,
-            m: crate::values::num::Num::Scalar(x),
-            exact,
         }
     }
 

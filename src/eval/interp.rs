@@ -182,8 +182,11 @@ impl<'a> Interp<'a> {
                 crate::check::rules::settle_in_place(&mut t.ty);
                 self.bind_checked(target.name, &mut t, target.span, value.span)?;
                 // (Fig. 3.13: `v_b = (0, 0, 1.5)` is a point, as the book uses it)
-                let role = || self.env.claim(target.name).role;
-                t.ty.free &= !super::slips::literal_point(&target.name, role, value);
+                // (only a free vector can be made a point)
+                if t.ty.free {
+                    let role = || self.env.claim(target.name).role;
+                    t.ty.free = !super::slips::literal_point(&target.name, role, value);
+                }
                 // A number silenced by `;` moves into its binding: nothing
                 // shows it (§3), so no copy is kept for printing; its
                 // not-finite warning is given here, before it moves.

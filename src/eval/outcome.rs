@@ -78,10 +78,10 @@ pub fn not_finite(v: &Value, span: Span) -> Option<Diagnostic> {
         match v {
             Value::Num { m, .. } => {
                 // (the common all-finite case in one pass that vectorizes)
-                let xs = m.as_slice();
-                if crate::values::num::all_finite(xs) {
+                if m.all_finite() {
                     return;
                 }
+                let xs = m.as_slice();
                 *nan |= xs.iter().any(|x| x.is_nan());
                 *inf |= top && xs.iter().any(|x| x.is_infinite());
             }

@@ -360,15 +360,22 @@ impl<'a> Op<'a> {
 
     /// The first two paths of [`Op::apply`]: None when the operands are
     /// numbers (a builtin call then computes with its spans and warnings).
+    #[inline]
     pub fn exact_or_symbolic(self, args: &[&Value], kind: &Kind) -> Option<Result<Value, OpError>> {
-        // Every path below needs a symbolic operand (an expression or a
-        // formula): numbers, the common case, leave at once.
+        // Every path needs a symbolic operand (an expression or a formula):
+        // numbers, the common case, leave at once, without a call.
         if !args
             .iter()
             .any(|v| matches!(v, Value::Sym(_) | Value::Formula { .. }))
         {
             return None;
         }
+        self.symbolic_paths(args, kind)
+    }
+
+    /// [`Op::exact_or_symbolic`] of operands of which one is symbolic.
+    #[inline(never)]
+    fn symbolic_paths(self, args: &[&Value], kind: &Kind) -> Option<Result<Value, OpError>> {
         if let Some(v) = super::exponential::power(self, args, kind) {
             return Some(v);
         }

@@ -117,6 +117,15 @@ impl Op<'_> {
     /// The exact form of this operation on `args` when it needs no recipe
     /// (a float, or numbers as typed moved about); None when it needs one.
     fn exactness<V: std::borrow::Borrow<Value>>(self, args: &[V]) -> Option<Exact> {
+        // (what the builtin keeps, read first: a float result, `log` of a
+        // transform, is known without looking at the operands)
+        let keeps = match self {
+            Op::Call(b, _) => call_keeps(b),
+            _ => Keeps::Always,
+        };
+        if keeps == Keeps::Never {
+            return Some(Exact::Float);
+        }
         let mut typed = true;
         for a in args {
             match a.borrow() {
@@ -128,16 +137,16 @@ impl Op<'_> {
                 _ => return Some(Exact::Float),
             }
         }
-        if args.is_empty() || !self.may_be_exact() {
+        if args.is_empty() {
             return Some(Exact::Float);
         }
         // (exp, log and the inverse trigonometric functions keep a recipe
         // of a number only: certified arithmetic and the normal forms of
         // `crate::decide::transcendental` read it; of a matrix they are floats)
-        if let Op::Call(b, _) = self
-            && scalar_only(b.name)
+        if matches!(keeps, Keeps::OfNumber | Keeps::OfNumberOrMotion)
             && args.iter().any(|a| a.borrow().as_scalar().is_none())
-            && !(b.name == "exp" && args.iter().all(|a| rotation_or_motion(a.borrow())))
+            && !(keeps == Keeps::OfNumberOrMotion
+                && args.iter().all(|a| rotation_or_motion(a.borrow())))
         {
             return Some(Exact::Float);
         }
@@ -170,6 +179,38 @@ impl Op<'_> {
             _ => true,
         }
     }
+}
+
+/// Which results of a builtin keep an exact form's recipe ([`exact_name`],
+/// [`scalar_only`]).
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+enum Keeps {
+    /// None: its results are floats (`MatrixLog6`, `Ad`'s 6×6 of a float).
+    Never,
+    /// Every result of exact operands (`sqrt`, `Rotz`, `Adjoint`).
+    Always,
+    /// A number's only (`log`, `atan2`): of a matrix, a float.
+    OfNumber,
+    /// A number's, or that of so(3) and se(3) and their vectors
+    /// ([`rotation_or_motion`]): `exp`.
+    OfNumberOrMotion,
+}
+
+impl Keeps {
+    /// What the builtin named `name` keeps.
+    fn of(name: &str) -> Keeps {
+        match (exact_name(name), scalar_only(name), name == "exp") {
+            (false, _, _) => Keeps::Never,
+            (true, false, _) => Keeps::Always,
+            (true, true, false) => Keeps::OfNumber,
+            (true, true, true) => Keeps::OfNumberOrMotion,
+        }
+    }
+}
+
+/// True for the builtins [`Op::exact_of`] gives an exact form.
+fn exact_call(b: &crate::builtins::Builtin) -> bool {
+    call_keeps(b) != Keeps::Never
 }
 
 /// The exact form of `op` on operands `vals` (a [`Pending`] recipe, run
@@ -213,19 +254,18 @@ pub(crate) fn formula_of(op: &Operation, forms: Vec<Value>, kind: &Kind) -> Opti
     }
 }
 
-/// True for the builtins [`Op::exact_of`] gives an exact form, read from
-/// a table made once beside the builtins' table ([`exact_name`] of each
-/// row): the row is found by its place in the table, not by comparing its
-/// name with every name of the list.
-fn exact_call(b: &crate::builtins::Builtin) -> bool {
-    static EXACT: OnceLock<Vec<bool>> = OnceLock::new();
+/// What builtin `b` keeps ([`Keeps::of`] its name), read from a table made
+/// once beside the builtins' table: the row is found by its place in the
+/// table, not by comparing its name with every name of the lists.
+fn call_keeps(b: &crate::builtins::Builtin) -> Keeps {
+    static KEEPS: OnceLock<Vec<Keeps>> = OnceLock::new();
     let table = crate::builtins::table();
-    let exact = EXACT.get_or_init(|| table.iter().map(|b| exact_name(b.name)).collect());
+    let keeps = KEEPS.get_or_init(|| table.iter().map(|b| Keeps::of(b.name)).collect());
     let at = (b as *const crate::builtins::Builtin as usize).wrapping_sub(table.as_ptr() as usize)
         / std::mem::size_of::<crate::builtins::Builtin>().max(1);
-    match (exact.get(at), table.get(at)) {
-        (Some(&e), Some(row)) if std::ptr::eq(row, b) => e,
-        _ => exact_name(b.name),
+    match (keeps.get(at), table.get(at)) {
+        (Some(&k), Some(row)) if std::ptr::eq(row, b) => k,
+        _ => Keeps::of(b.name),
     }
 }
 
@@ -301,7 +341,14 @@ mod tests {
     fn the_table_of_exact_calls_agrees_with_the_names() {
         for b in table() {
             assert_eq!(exact_call(b), exact_name(b.name), "{}", b.name);
+            assert_eq!(call_keeps(b), Keeps::of(b.name), "{}", b.name);
         }
+        let keeps = |n| call_keeps(lookup(n).expect("a builtin"));
+        assert_eq!(keeps("exp"), Keeps::OfNumberOrMotion);
+        assert_eq!(keeps("log"), Keeps::OfNumber);
+        assert_eq!(keeps("atan2"), Keeps::OfNumber);
+        assert_eq!(keeps("Rotz"), Keeps::Always);
+        assert_eq!(keeps("MatrixLog6"), Keeps::Never);
         let row = |n| lookup(n).expect("a builtin");
         assert!(exact_call(row("sqrt")) && exact_call(row("Rotz")));
         assert!(exact_call(row("exp")) && exact_call(row("Ad")));

@@ -67,7 +67,35 @@ pub fn all_finite(xs: &[f64]) -> bool {
     (lanes[0] + lanes[1]) + (lanes[2] + lanes[3]) + tail == 0.0
 }
 
+/// [`all_finite`] of `xs` read as `N` entries, so that the loop is
+/// unrolled for the size the variant fixes (a 4×4's 16 entries in four
+/// steps, no remainder).
+#[inline(always)]
+fn all_finite_of<const N: usize>(xs: &[f64]) -> bool {
+    match <&[f64; N]>::try_from(xs) {
+        Ok(a) => all_finite(a),
+        Err(_) => all_finite(xs),
+    }
+}
+
 impl Num {
+    /// True when every entry is finite ([`all_finite`]), the sizes of the
+    /// fixed variants known: a statement's result, a group operation's
+    /// operands and `exp`'s input are scanned by it.
+    #[inline]
+    pub fn all_finite(&self) -> bool {
+        match self {
+            Num::Scalar(x) => x.is_finite(),
+            Num::V3(v) => all_finite_of::<3>(v.as_slice()),
+            Num::V4(v) => all_finite_of::<4>(v.as_slice()),
+            Num::V6(v) => all_finite_of::<6>(v.as_slice()),
+            Num::M3(m) => all_finite_of::<9>(m.as_slice()),
+            Num::M4(m) => all_finite_of::<16>(m.as_slice()),
+            Num::M6(m) => all_finite_of::<36>(m.as_slice()),
+            Num::Dyn(m) => all_finite(m.as_slice()),
+        }
+    }
+
     /// The numbers of an r×c matrix with entries `xs` in column-major
     /// order, in the fixed-size variant where the shape has one.
     pub fn from_slice(r: usize, c: usize, xs: &[f64]) -> Num {
@@ -376,6 +404,31 @@ mod tests {
         }
         // (huge finite entries stay finite: 0·x is 0, not an overflow)
         assert!(all_finite(&[f64::MAX, -f64::MAX, f64::MIN_POSITIVE, -0.0]));
+        // (and each fixed size of `Num` reads every entry)
+        for (r, c) in [
+            (1, 1),
+            (3, 1),
+            (4, 1),
+            (6, 1),
+            (3, 3),
+            (4, 4),
+            (6, 6),
+            (2, 5),
+        ] {
+            let n = r * c;
+            let xs: Vec<f64> = (0..n).map(|i| i as f64 * 1e300).collect();
+            assert!(Num::from_slice(r, c, &xs).all_finite(), "{r}×{c}");
+            for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+                for at in 0..n {
+                    let mut ys = xs.clone();
+                    ys[at] = bad;
+                    assert!(
+                        !Num::from_slice(r, c, &ys).all_finite(),
+                        "{bad} at {at} of {r}×{c}"
+                    );
+                }
+            }
+        }
     }
 
     #[test]
