@@ -10,11 +10,21 @@
 # statement spent in parsing (the statement reader), in the interpreter
 # (check and evaluation) and in printing.
 #
-#   benches/instructions.sh [path/to/chasles]
+#   benches/instructions.sh [--kinds] [path/to/chasles]
+#
+# With --kinds, it then prints the evaluating thread's instructions per
+# statement for each of the script's kinds of statement alone (`exp`, the
+# product, `log`, the adjoint, and the literal `S = (...)`), silenced,
+# each repeated 10k and 20k times after the lines that bind its operands
+# (the scripts are long enough to be read ahead, as the 11k and 21k
+# ones: a script under `syntax::AHEAD_FROM` runs on one thread, and its
+# figure would include parsing).
 #
 # Needs valgrind and python3; not run in CI.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+kinds=
+if [ "${1:-}" = --kinds ]; then kinds=1; shift; fi
 bin=${1:-target/release/chasles}
 [ "${1:-}" ] || cargo build --release --quiet
 tmp=$(mktemp -d)
@@ -60,3 +70,20 @@ callgrind_annotate --inclusive=yes "$tmp/cg-one" 2>/dev/null |
     !e && index($0, ":chasles::eval::interp::Interp::stmt [") { e = n($1) }
     !o && index($0, ":chasles::output::text::write_outcome [") { o = n($1) }
     END { printf "per printed statement: parse %d, check and evaluate %d, print %d\n", p, e, o }'
+[ "$kinds" ] || exit 0
+python3 - "$tmp" <<'PY'
+import sys
+sys.path.insert(0, "benches")
+from book_python import LINES
+first = "S = (0, 0, 1, 0, 2, 0);\n" + "".join(l + ";\n" for l in LINES[:3])
+kinds = {"exp": LINES[0], "product": LINES[2], "log": LINES[3], "adjoint": LINES[4],
+         "literal": "S = (0, 0, 1, 0, 2, 0)"}
+for k, line in kinds.items():
+    for n in (10000, 20000):
+        open(f"{sys.argv[1]}/k-{k}-{n}.chs", "w").write(first + (line + ";\n") * n)
+PY
+for k in exp product log adjoint literal; do
+  read -r _ a <<<"$(count run "$tmp/k-$k-10000.chs" "k-$k-10000")"
+  read -r _ b <<<"$(count run "$tmp/k-$k-20000.chs" "k-$k-20000")"
+  echo "$k alone (silenced): $(( (b - a) / 10000 )) instructions per statement on the evaluating thread"
+done
