@@ -185,7 +185,7 @@ impl Op<'_> {
 /// [`scalar_only`]).
 #[derive(Clone, Copy, PartialEq, Eq, Debug)]
 enum Keeps {
-    /// None: its results are floats (`MatrixLog6`, `Ad`'s 6×6 of a float).
+    /// None: its results are floats (`MatrixLog6`).
     Never,
     /// Every result of exact operands (`sqrt`, `Rotz`, `Adjoint`).
     Always,
