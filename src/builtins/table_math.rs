@@ -203,11 +203,11 @@ fn eval_log(a: &mut Args) -> Result<Value, Diagnostic> {
 }
 
 fn inv_rule(args: &[Ty]) -> Result<Ty, ArgError> {
-    crate::check::rules::inverse(&args[0]).map_err(|e| ArgError::type_of(0, e.message))
+    crate::check::rules::inverse(&args[0]).map_err(|e| ArgError::type_of(0, e.into_message()))
 }
 
 fn transpose_rule(args: &[Ty]) -> Result<Ty, ArgError> {
-    crate::check::rules::transpose(&args[0]).map_err(|e| ArgError::type_of(0, e.message))
+    crate::check::rules::transpose(&args[0]).map_err(|e| ArgError::type_of(0, e.into_message()))
 }
 
 fn pair_rule(what: &'static str, ret: fn(&[Ty]) -> Kind) -> impl Fn(&[Ty]) -> Result<Ty, ArgError> {

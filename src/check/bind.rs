@@ -149,11 +149,11 @@ pub fn named_group(name: &str, kind: &Kind) -> Option<Kind> {
 #[derive(Debug, Clone)]
 pub struct Bound {
     pub ty: Ty,
-    pub warning: Option<Box<RuleError>>,
+    pub warning: Option<RuleError>,
 }
 
 /// The type a binding `name = value` gets, or the frame error.
-pub fn bind(name: &str, ty: &Ty) -> Result<Bound, Box<RuleError>> {
+pub fn bind(name: &str, ty: &Ty) -> Result<Bound, RuleError> {
     bind_claimed(name, &Claim::of(name), *ty).map_err(|r| r.error)
 }
 
@@ -161,7 +161,7 @@ pub fn bind(name: &str, ty: &Ty) -> Result<Bound, Box<RuleError>> {
 /// value when frames are not checked (its kind, the frames it claims).
 #[derive(Debug, Clone)]
 pub struct Refused {
-    pub error: Box<RuleError>,
+    pub error: RuleError,
     pub ty: Ty,
 }
 
@@ -182,7 +182,7 @@ pub fn bind_in_place(
     name: &str,
     claim: &Claim,
     ty: &mut Ty,
-) -> Result<Option<Box<RuleError>>, Box<RuleError>> {
+) -> Result<Option<RuleError>, RuleError> {
     let kind = claim.kind_for(ty.kind);
     // Scalars and bools take no frames from their name (§2, §3).
     if matches!(kind, Kind::Scalar | Kind::Bool) {
@@ -200,24 +200,19 @@ pub fn bind_in_place(
         (c, Frames::None) => c,
         (Frames::Pair(x, y), Frames::Pair(a, b)) if x == a && (y == b || b.is_moved()) => {
             if y.name == b.name && y.moved == 0 && b.moved > 0 {
-                warning = Some(Box::new(renamed_moved_frame(name, &ty.frames, &b, &y)));
+                warning = Some(renamed_moved_frame(name, &ty.frames, &b, &y));
             }
             claim
         }
         (Frames::Pair(x, y), Frames::Disp(a)) if x == a => {
             if y.name == a.name && y.moved == 0 {
-                warning = Some(Box::new(renamed_moved_frame(
-                    name,
-                    &ty.frames,
-                    &a.moved(),
-                    &y,
-                )));
+                warning = Some(renamed_moved_frame(name, &ty.frames, &a.moved(), &y));
             }
             claim
         }
         (Frames::One(x), Frames::One(a) | Frames::Disp(a)) if x == a => ty.frames,
         _ => {
-            let error = Box::new(mismatch(name, &claim, &ty.frames));
+            let error = mismatch(name, &claim, &ty.frames);
             let free = ty.free;
             *ty = Ty::new(kind, claim);
             ty.free = free;
@@ -231,7 +226,7 @@ pub fn bind_in_place(
 }
 
 fn mismatch(name: &str, claim: &Frames, frames: &Frames) -> RuleError {
-    let mut e = RuleError {
+    let mut e = RuleError::from(crate::check::rules::Refusal {
         kind: Some(ErrorKind::Frame),
         message: format!(
             "the value is {}, but the name {name} says {}",
@@ -239,13 +234,13 @@ fn mismatch(name: &str, claim: &Frames, frames: &Frames) -> RuleError {
             describe(claim)
         ),
         ..Default::default()
-    };
+    });
     e.lhs = format!("says {}", describe(claim));
     e.rhs = describe(frames);
     e.help = Some(suggest_name(name, frames));
     // `ω_b = R.T ω_s` with an untagged R: the value stays in {s}.
     if let (Frames::One(want), Frames::One(_)) = (claim, frames) {
-        e.help = e.help.map(|h| {
+        e.help = e.help.take().map(|h| {
             format!(
                 "{h}; or, if it is in {{{want}}}, give the matrix its frames: an untagged matrix keeps the frame of the vector it multiplies"
             )
@@ -264,13 +259,13 @@ fn renamed_moved_frame(name: &str, frames: &Frames, moved: &Frame, named: &Frame
         }
         _ => name.to_string(),
     };
-    let mut e = RuleError {
+    let mut e = RuleError::from(crate::check::rules::Refusal {
         kind: Some(ErrorKind::Frame),
         message: format!(
             "{name} calls the moved frame {{{moved}}} by the name of the unmoved frame {{{named}}}"
         ),
         ..Default::default()
-    };
+    });
     e.rhs = describe(frames);
     e.help = Some(format!(
         "a displacement moved {{{named}}} to {{{moved}}}, and {name} now names {{{moved}}} as {{{named}}}: name it {better} to keep them apart"
@@ -374,7 +369,14 @@ mod tests {
         );
         let b = bind("Tq_ab", &moved).unwrap();
         assert_eq!(b.ty.frames, Frames::pair("a", "b"));
-        assert!(b.warning.unwrap().help.unwrap().contains("name it Tq_ab'"));
+        assert!(
+            b.warning
+                .unwrap()
+                .help
+                .as_deref()
+                .unwrap()
+                .contains("name it Tq_ab'")
+        );
         assert!(bind("T_ab'", &moved).unwrap().warning.is_none());
         assert!(bind("T_ab''", &moved).unwrap().warning.is_none());
         assert!(bind("T_ac", &moved).unwrap().warning.is_none());

@@ -8,8 +8,48 @@ use crate::syntax::ast::{Expr, ExprKind};
 
 /// Why an operation is refused, with the text for each part of the
 /// diagnostic. `lhs`/`rhs` label the operands, `op` the operator.
+///
+/// The [`Refusal`] is behind one pointer: every rule returns a
+/// `Result<Ty, RuleError>`, refusals are rare, and a type is smaller than
+/// the texts.
 #[derive(Debug, Clone, Default)]
-pub struct RuleError {
+pub struct RuleError(Box<Refusal>);
+
+impl std::ops::Deref for RuleError {
+    type Target = Refusal;
+    #[inline]
+    fn deref(&self) -> &Refusal {
+        &self.0
+    }
+}
+
+impl std::ops::DerefMut for RuleError {
+    #[inline]
+    fn deref_mut(&mut self) -> &mut Refusal {
+        &mut self.0
+    }
+}
+
+impl RuleError {
+    /// The message, taken (the rest is dropped).
+    pub fn into_message(self) -> String {
+        self.0.message
+    }
+    /// The texts, taken out of their box.
+    pub fn into_refusal(self) -> Refusal {
+        *self.0
+    }
+}
+
+impl From<Refusal> for RuleError {
+    fn from(r: Refusal) -> RuleError {
+        RuleError(Box::new(r))
+    }
+}
+
+/// What a [`RuleError`] says: the texts of the diagnostic's parts.
+#[derive(Debug, Clone, Default)]
+pub struct Refusal {
     pub kind: Option<ErrorKind>,
     pub message: String,
     pub lhs: String,
@@ -24,18 +64,18 @@ pub struct RuleError {
 
 impl RuleError {
     pub(super) fn typ(message: impl Into<String>) -> RuleError {
-        RuleError {
+        RuleError::from(Refusal {
             kind: Some(ErrorKind::Type),
             message: message.into(),
             ..Default::default()
-        }
+        })
     }
     pub(super) fn frame(message: impl Into<String>) -> RuleError {
-        RuleError {
+        RuleError::from(Refusal {
             kind: Some(ErrorKind::Frame),
             message: message.into(),
             ..Default::default()
-        }
+        })
     }
     pub(super) fn with_help(mut self, help: impl Into<String>) -> RuleError {
         self.help = Some(help.into());

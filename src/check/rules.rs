@@ -25,7 +25,7 @@
 
 use super::algebra::{self, Clash};
 use super::error::same_frame_error;
-pub use super::error::{Operands, RuleError, describe};
+pub use super::error::{Operands, Refusal, RuleError, describe};
 use super::product::dims_agree;
 pub use super::product::mul;
 use super::ty::{Frame, Frames, Kind, Ty};

@@ -14,14 +14,14 @@ use crate::values::value::Value;
 pub fn order_rule(l: &Ty, r: &Ty) -> Result<Ty, RuleError> {
     for side in [l, r] {
         if !side.kind.maybe_scalar() && !matches!(side.kind, Kind::Unknown) {
-            return Err(RuleError {
+            return Err(RuleError::from(crate::check::rules::Refusal {
                 kind: Some(ErrorKind::Type),
                 message: format!("only numbers are ordered, not {}", side.kind.a()),
                 help: Some(
                     "compare a number made from it: norm(v) < 1, R[1, 1] > 0, dof(m) >= 1".into(),
                 ),
-                ..RuleError::default()
-            });
+                ..Default::default()
+            }));
         }
     }
     Ok(Ty::plain(Kind::Bool))

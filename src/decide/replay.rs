@@ -112,10 +112,11 @@ pub(crate) fn typed_first(
                 certified_entries: Some(super::turn::entries),
             };
             let vals = args.iter().map(|v| (*v).clone()).collect();
-            let mut v = apply::call(b, vals, site).map_err(|d| OpError::Message(d.message))?;
+            let mut v =
+                apply::call(b, vals, site).map_err(|d| OpError::Message(d.into_message()))?;
             v.set_call_exact(exact);
             not_finite_group(&v, b.name, Default::default())
-                .map_err(|d| OpError::Message(d.message))?;
+                .map_err(|d| OpError::Message(d.into_message()))?;
             Ok(v)
         }
         Op::Block(_) => op.numeric(args, Some(kind)),

@@ -59,9 +59,31 @@ pub struct Label {
     pub message: String,
 }
 
-/// One error or warning, pointing into the source.
+/// One error or warning, pointing into the source: its [`Detail`] behind
+/// one pointer, so that a `Result<_, Diagnostic>` (every node of the
+/// interpreter returns one, and errors are rare) is no larger than its
+/// value and a `Vec` of warnings moves pointers.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Diagnostic {
+pub struct Diagnostic(Box<Detail>);
+
+impl std::ops::Deref for Diagnostic {
+    type Target = Detail;
+    #[inline]
+    fn deref(&self) -> &Detail {
+        &self.0
+    }
+}
+
+impl std::ops::DerefMut for Diagnostic {
+    #[inline]
+    fn deref_mut(&mut self) -> &mut Detail {
+        &mut self.0
+    }
+}
+
+/// What a [`Diagnostic`] says and where.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Detail {
     pub kind: ErrorKind,
     pub severity: Severity,
     pub message: String,
@@ -76,7 +98,7 @@ pub struct Diagnostic {
 impl Diagnostic {
     /// An error of `kind` at `span`.
     pub fn error(kind: ErrorKind, span: Span, message: impl Into<String>) -> Diagnostic {
-        Diagnostic {
+        Diagnostic(Box::new(Detail {
             kind,
             severity: Severity::Error,
             message: message.into(),
@@ -84,23 +106,26 @@ impl Diagnostic {
             primary_label: String::new(),
             labels: Vec::new(),
             help: None,
-        }
+        }))
     }
 
     /// A note on a correct result at `span` (printed as `note:`).
     pub fn note(kind: ErrorKind, span: Span, message: impl Into<String>) -> Diagnostic {
-        Diagnostic {
-            severity: Severity::Note,
-            ..Diagnostic::error(kind, span, message)
-        }
+        let mut d = Diagnostic::error(kind, span, message);
+        d.severity = Severity::Note;
+        d
     }
 
     /// A warning of `kind` at `span` (printed, does not stop the statement).
     pub fn warning(kind: ErrorKind, span: Span, message: impl Into<String>) -> Diagnostic {
-        Diagnostic {
-            severity: Severity::Warning,
-            ..Diagnostic::error(kind, span, message)
-        }
+        let mut d = Diagnostic::error(kind, span, message);
+        d.severity = Severity::Warning;
+        d
+    }
+
+    /// The message, taken (the rest is dropped).
+    pub fn into_message(self) -> String {
+        self.0.message
     }
 
     /// Adds the note under the primary caret.

@@ -52,9 +52,9 @@ impl Interp<'_> {
         let claim = self.env.claim(name);
         match bind::bind_in_place(&name, &claim, &mut t.ty) {
             Ok(None) => {}
-            Ok(Some(w)) => self.rule_warning(*w, value_span, name_span),
+            Ok(Some(w)) => self.rule_warning(w, value_span, name_span),
             Err(e) => {
-                self.rule_failure(*e, value_span, Some(name_span), Some(value_span), None)?;
+                self.rule_failure(e, value_span, Some(name_span), Some(value_span), None)?;
             }
         }
         let ty = t.ty.kind;
@@ -88,6 +88,7 @@ impl Interp<'_> {
 
     /// A warning from a binding rule (the name renames a moved frame).
     fn rule_warning(&mut self, e: RuleError, value_span: Span, name_span: Span) {
+        let e = e.into_refusal();
         let kind = e.kind.unwrap_or(ErrorKind::Frame);
         let mut d = Diagnostic::warning(kind, name_span, e.message);
         if !e.rhs.is_empty() {

@@ -141,7 +141,7 @@ impl Interp<'_> {
                 let plain: Vec<Ty> = self.env.arg_tys[base..].iter().map(strip).collect();
                 self.rule_failure(err, at, args.first().map(|a| a.span), None, None)?;
                 op.rule(&plain, Hints::default()).map_err(|e| {
-                    Diagnostic::error(e.kind.unwrap_or(ErrorKind::Type), at, e.message)
+                    Diagnostic::error(e.kind.unwrap_or(ErrorKind::Type), at, e.into_message())
                 })?
             }
         };

@@ -27,10 +27,12 @@ fn op_text(op: CmpOp) -> &'static str {
 /// tag (or one untagged, or a displacement in the outer frame of the
 /// other); the result is a bool.
 pub fn compare_rule(l: &Ty, r: &Ty) -> Result<Ty, RuleError> {
-    let type_error = |message: String| RuleError {
-        kind: Some(ErrorKind::Type),
-        message,
-        ..RuleError::default()
+    let type_error = |message: String| {
+        RuleError::from(crate::check::rules::Refusal {
+            kind: Some(ErrorKind::Type),
+            message,
+            ..Default::default()
+        })
     };
     let comparable = match (&l.kind, &r.kind) {
         (Kind::Unknown, _) | (_, Kind::Unknown) => true,

@@ -68,7 +68,7 @@ impl Interp<'_> {
         let op = Op::Index(&sels);
         let ty = op
             .rule(&[&t.ty], Hints::default())
-            .map_err(|e| Diagnostic::error(ErrorKind::Type, span, e.message))?;
+            .map_err(|e| Diagnostic::error(ErrorKind::Type, span, e.into_message()))?;
         let val = match t.val.as_deref() {
             Some(v) => Some(op.apply(&[v], &ty.kind).map_err(|m| op.failure(m, span))?),
             None => None,
@@ -184,7 +184,7 @@ impl Interp<'_> {
         let tys: Vec<&Ty> = trows.iter().flatten().map(|t| &t.ty).collect();
         let ty = op
             .rule(&tys, Hints::default())
-            .map_err(|e| Diagnostic::error(ErrorKind::Type, span, e.message))?;
+            .map_err(|e| Diagnostic::error(ErrorKind::Type, span, e.into_message()))?;
         let ty = transform_block(&rows, &trows).unwrap_or(ty);
         if !self.running() {
             return Ok(Typed::new(ty, None));
@@ -231,7 +231,7 @@ impl Interp<'_> {
         let op = Op::Block(&[1]);
         let ty = op
             .rule(&[&t.ty], Hints::default())
-            .map_err(|e| Diagnostic::error(ErrorKind::Type, span, e.message))?;
+            .map_err(|e| Diagnostic::error(ErrorKind::Type, span, e.into_message()))?;
         if !self.running() {
             return Ok(Typed::new(ty, None));
         }

@@ -382,7 +382,7 @@ impl Interp<'_> {
             Err(err) => {
                 self.rule_failure(err, span, Some(lhs.span), Some(rhs.span), Some(op_span))?;
                 rule(&strip(&l.ty), &strip(&r.ty))
-                    .map_err(|e| Diagnostic::error(ErrorKind::Type, op_span, e.message))?
+                    .map_err(|e| Diagnostic::error(ErrorKind::Type, op_span, e.into_message()))?
             }
         };
         let val = match (l.val, r.val) {

@@ -119,16 +119,17 @@ impl<'a> Interp<'a> {
         rhs: Option<Span>,
         op: Option<Span>,
     ) -> Result<(), Diagnostic> {
+        let e = e.into_refusal();
         let kind = e.kind.unwrap_or(ErrorKind::Type);
-        let mut d = Diagnostic::error(kind, op.unwrap_or(span), e.message.clone());
+        let mut d = Diagnostic::error(kind, op.unwrap_or(span), e.message);
         if let (Some(l), false) = (lhs, e.lhs.is_empty()) {
-            d = d.with_label(l, e.lhs.clone());
+            d = d.with_label(l, e.lhs);
         }
         if let (Some(r), false) = (rhs, e.rhs.is_empty()) {
-            d = d.with_label(r, e.rhs.clone());
+            d = d.with_label(r, e.rhs);
         }
         if !e.op.is_empty() {
-            d = d.with_primary_label(e.op.clone());
+            d = d.with_primary_label(e.op);
         }
         if let Some(h) = e.help {
             d = d.with_help(h);

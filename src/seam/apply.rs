@@ -449,12 +449,14 @@ pub fn block(rows: &[Vec<Value>]) -> Option<Result<Value, OpError>> {
 /// [`rules::settle`].
 #[inline]
 fn call_rule(b: &Builtin, args: &[Ty]) -> Result<Ty, RuleError> {
-    let ty = b.check(args).map_err(|e| RuleError {
-        kind: Some(e.kind),
-        message: e.message,
-        help: Some(format!("signature: {}", b.signature)),
-        arg: e.arg.and_then(|i| u16::try_from(i).ok()),
-        ..RuleError::default()
+    let ty = b.check(args).map_err(|e| {
+        RuleError::from(crate::check::rules::Refusal {
+            kind: Some(e.kind),
+            message: e.message,
+            help: Some(format!("signature: {}", b.signature)),
+            arg: e.arg.and_then(|i| u16::try_from(i).ok()),
+            ..Default::default()
+        })
     })?;
     rules::settle(ty, b.name)
 }

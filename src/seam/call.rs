@@ -67,5 +67,5 @@ pub fn call_nowhere(b: &Builtin, vals: Vec<Value>) -> Result<Value, OpError> {
         certified_turn: None,
         certified_entries: None,
     };
-    call(b, vals, site).map_err(|d| OpError::Message(d.message))
+    call(b, vals, site).map_err(|d| OpError::Message(d.into_message()))
 }

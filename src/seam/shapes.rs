@@ -23,11 +23,11 @@ pub(crate) fn index_type(t: &Ty, sels: &[Sel]) -> Result<Ty, RuleError> {
         }
         (Kind::Tuple(_), _) => Ty::plain(Kind::Unknown),
         (k, _) if k.shape().is_none() => {
-            return Err(RuleError {
+            return Err(RuleError::from(crate::check::rules::Refusal {
                 kind: Some(crate::diagnostics::ErrorKind::Type),
                 message: format!("cannot index a {k}"),
                 ..Default::default()
-            });
+            }));
         }
         (_, [Sel::All, Sel::At(_)]) => Ty::new(Kind::Vector(None), outer),
         (_, [Sel::At(_), Sel::All]) => Ty::plain(Kind::Matrix(Some(1), None)),

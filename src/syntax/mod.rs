@@ -111,7 +111,7 @@ fn statements_read(
             return Some(after_parsing(&mut stmt, stack.passes, src).map(|()| stmt));
         }
         let parsed = match chunk.error {
-            Some(error) => Err(*error),
+            Some(error) => Err(error),
             None if text.len() > MAX_STATEMENT_BYTES => Err(too_long(chunk.span, text.len())),
             None if chunk.depth > SHALLOW => parse_on_big_stack(text, chunk.span),
             None => parser::parse_chunk(text, chunk.span),

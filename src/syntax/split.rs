@@ -20,7 +20,7 @@ use crate::diagnostics::{Diagnostic, ErrorKind};
 pub(crate) struct Chunk {
     pub span: Span,
     /// Boxed: rare, and a chunk is handed out per statement.
-    pub error: Option<Box<Diagnostic>>,
+    pub error: Option<Diagnostic>,
     /// The deepest bracket nesting in the statement.
     pub depth: usize,
 }
@@ -77,7 +77,7 @@ pub(crate) struct Splitter<'a> {
     i: usize,
     /// Open brackets: the byte (`(`, `[`, `{`, or `<` for `mech <`) and offset.
     stack: Vec<(u8, usize)>,
-    error: Option<Box<Diagnostic>>,
+    error: Option<Diagnostic>,
     /// The deepest nesting in the current statement.
     depth: usize,
     done: bool,
@@ -160,7 +160,7 @@ impl<'a> Splitter<'a> {
 
     /// The statement `buf[start..end]` (nested `depth` deep), trimmed;
     /// None for a blank one.
-    fn chunk(&self, start: usize, end: usize, error: Option<Box<Diagnostic>>) -> Option<Chunk> {
+    fn chunk(&self, start: usize, end: usize, error: Option<Diagnostic>) -> Option<Chunk> {
         make_chunk(self.view(), (start, end, self.depth), error)
     }
 }
@@ -210,10 +210,7 @@ impl Iterator for Splitter<'_> {
                 }
                 // Report the outermost: the statement is cut at its line.
                 let &(open, at) = self.stack.first().unwrap_or(&(b'(', self.start));
-                let err = self
-                    .error
-                    .take()
-                    .unwrap_or_else(|| Box::new(unclosed(open, at)));
+                let err = self.error.take().unwrap_or_else(|| unclosed(open, at));
                 self.any_error = true;
                 // Recover: end this statement at the end of the line of the
                 // outermost open bracket and scan the rest afresh.
@@ -306,7 +303,7 @@ impl Iterator for Splitter<'_> {
                         Some(&(o, _)) if closer_of(o) == b => {}
                         Some(&(o, at)) => {
                             if error.is_none() {
-                                *error = Some(Box::new(
+                                *error = Some(
                                     Diagnostic::error(
                                         ErrorKind::Syntax,
                                         Span::new(i, i + 1),
@@ -320,12 +317,12 @@ impl Iterator for Splitter<'_> {
                                         Span::new(at, at + 1),
                                         format!("'{}' opened here", opener_name(o)),
                                     ),
-                                ));
+                                );
                             }
                         }
                         None => {
                             if error.is_none() {
-                                *error = Some(Box::new(
+                                *error = Some(
                                     Diagnostic::error(
                                         ErrorKind::Syntax,
                                         Span::new(i, i + 1),
@@ -334,7 +331,7 @@ impl Iterator for Splitter<'_> {
                                     .with_primary_label(
                                         format!("no '{}' is open here", opener_of(b) as char),
                                     ),
-                                ));
+                                );
                             }
                         }
                     }
@@ -364,17 +361,17 @@ static SIGNIFICANT: [bool; 256] = {
     table
 };
 
-fn open(stack: &mut Vec<(u8, usize)>, error: &mut Option<Box<Diagnostic>>, b: u8, at: usize) {
+fn open(stack: &mut Vec<(u8, usize)>, error: &mut Option<Diagnostic>, b: u8, at: usize) {
     stack.push((b, at));
     if stack.len() > MAX_DEPTH && error.is_none() {
-        *error = Some(Box::new(
+        *error = Some(
             Diagnostic::error(
                 ErrorKind::Syntax,
                 Span::new(at, at + 1),
                 format!("expression nested too deeply (limit {MAX_DEPTH})"),
             )
             .with_help("split it into several statements with intermediate names"),
-        ));
+        );
     }
 }
 
@@ -438,7 +435,7 @@ fn follows_mech(before: &[u8]) -> bool {
 fn make_chunk(
     buf: &[u8],
     (mut start, mut end, depth): (usize, usize, usize),
-    error: Option<Box<Diagnostic>>,
+    error: Option<Diagnostic>,
 ) -> Option<Chunk> {
     let blank = |b: u8| matches!(b, b' ' | b'\t' | b'\r' | b'\n' | b'\x0C');
     while start < end && blank(buf[start]) {
