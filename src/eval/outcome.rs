@@ -73,7 +73,19 @@ impl std::ops::Deref for Names {
 /// printed, never silently, and a statement silenced by `;` still warns
 /// (LANGUAGE.md §3). Tuples may hold inf by design (`screw_params` gives
 /// h = inf for a pure translation).
+#[inline]
 pub fn not_finite(v: &Value, span: Span) -> Option<Diagnostic> {
+    // (the common case, finite numbers, answered here without a call)
+    match v {
+        Value::Num { m, .. } if m.all_finite() => None,
+        Value::Num { .. } | Value::Tuple(_) => not_finite_found(v, span),
+        _ => None,
+    }
+}
+
+/// [`not_finite`] of a value that may hold NaN or inf.
+#[inline(never)]
+fn not_finite_found(v: &Value, span: Span) -> Option<Diagnostic> {
     fn scan(v: &Value, top: bool, nan: &mut bool, inf: &mut bool) {
         match v {
             Value::Num { m, .. } => {
