@@ -12,7 +12,7 @@ use crate::eval::env::{Env, FrameMode, Mode};
 use crate::eval::interp::{Interp, Outcome};
 use crate::eval::value::Value;
 use crate::output::{json, text};
-use crate::span::{Anchor, Lines};
+use crate::span::Anchor;
 use crate::syntax;
 
 /// Output settings.
@@ -301,10 +301,9 @@ impl Session {
         mut each: impl FnMut(&Report),
     ) -> usize {
         let mut errors = 0;
-        let mut lines = Lines::new(src);
         let _budget = self.budget.enter();
         self.interrupted = false;
-        syntax::each_statement(src, self.read_ahead, |parsed| {
+        syntax::each_statement(src, self.read_ahead, |parsed, anchor| {
             budget::begin_statement(self.env.held());
             // The report is built in place and changed there: its result
             // (a large value) is written once, not moved through
@@ -313,19 +312,19 @@ impl Session {
             match parsed {
                 Err(d) => {
                     report = Report {
-                        line: lines.line(d.span.start),
-                        anchor: lines.anchor(),
+                        line: anchor.line,
+                        anchor,
                         result: Err(habit_help(d.clone(), src)),
                         warnings: Vec::new(),
                         effects: Vec::new(),
                     }
                 }
                 Ok(stmt) => {
-                    let line = lines.line(stmt.span.start);
+                    let line = anchor.line;
                     let mut interp = Interp::new(&mut self.env, src, mode, self.settings.frames);
                     report = Report {
                         line,
-                        anchor: lines.anchor(),
+                        anchor,
                         result: interp.stmt(stmt),
                         warnings: Vec::new(),
                         effects: Vec::new(),

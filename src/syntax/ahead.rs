@@ -22,9 +22,22 @@ use std::sync::mpsc;
 
 use super::{ast, statements};
 use crate::diagnostics::Diagnostic;
+use crate::span::{Anchor, Lines};
 
 /// One statement as read: its tree, or the syntax error that stands for it.
 pub type Parsed = Result<ast::Stmt, Diagnostic>;
+
+/// Where a statement read starts: its line, and where that line starts
+/// (the line of its tree's span, or of its error's). Counted by the reader
+/// as it reads, so that the caller's thread does not walk the text again.
+fn at(lines: &mut Lines<'_>, parsed: &Parsed) -> Anchor {
+    let start = match parsed {
+        Ok(stmt) => stmt.span.start,
+        Err(d) => d.span.start,
+    };
+    lines.line(start);
+    lines.anchor()
+}
 
 /// Sources shorter than this many bytes are read in line: about 6,000 of
 /// the book's statements (`T_ab = exp([S] 0.1)`), 8 ms of work. The second
@@ -63,18 +76,19 @@ const READER_STACK: usize = 16 << 20;
 /// [`super::statements`], read on a second thread when `src` is long and
 /// `ahead` allows it (see the module's comment). `each` gets the statement in place; it may take
 /// what it keeps (a syntax error, say), and the rest is dropped with the
-/// batch.
+/// batch. With it comes where it starts: its line and where that line
+/// starts ([`Anchor`], the line of the statement's span or of its error's).
 pub fn each_statement(
     src: &str,
     ahead: bool,
-    mut each: impl FnMut(&mut Parsed) -> ControlFlow<()>,
+    mut each: impl FnMut(&mut Parsed, Anchor) -> ControlFlow<()>,
 ) {
     if !ahead || src.len() < AHEAD_FROM {
         return in_line(src, &mut each);
     }
     std::thread::scope(|scope| {
-        let (full_to_caller, full) = mpsc::sync_channel::<Vec<Parsed>>(QUEUE);
-        let (used_to_reader, used) = mpsc::channel::<Vec<Parsed>>();
+        let (full_to_caller, full) = mpsc::sync_channel::<Vec<(Parsed, Anchor)>>(QUEUE);
+        let (used_to_reader, used) = mpsc::channel::<Vec<(Parsed, Anchor)>>();
         let reader = std::thread::Builder::new()
             .name("chasles-read".into())
             .stack_size(READER_STACK)
@@ -84,8 +98,8 @@ pub fn each_statement(
             return in_line(src, &mut each);
         }
         while let Ok(mut batch) = full.recv() {
-            for parsed in &mut batch {
-                if each(parsed).is_break() {
+            for (parsed, at) in &mut batch {
+                if each(parsed, *at).is_break() {
                     return;
                 }
             }
@@ -97,9 +111,11 @@ pub fn each_statement(
 }
 
 /// [`each_statement`] on the caller's thread, one statement at a time.
-fn in_line(src: &str, each: &mut impl FnMut(&mut Parsed) -> ControlFlow<()>) {
+fn in_line(src: &str, each: &mut impl FnMut(&mut Parsed, Anchor) -> ControlFlow<()>) {
+    let mut lines = Lines::new(src);
     for mut parsed in statements(src) {
-        if each(&mut parsed).is_break() {
+        let at = at(&mut lines, &parsed);
+        if each(&mut parsed, at).is_break() {
             return;
         }
     }
@@ -107,8 +123,13 @@ fn in_line(src: &str, each: &mut impl FnMut(&mut Parsed) -> ControlFlow<()>) {
 
 /// The reader's loop: fills a batch (one handed back, emptied here, or a
 /// new one) and sends it, until the source or the caller ends.
-fn read(src: &str, full: mpsc::SyncSender<Vec<Parsed>>, used: &mpsc::Receiver<Vec<Parsed>>) {
+fn read(
+    src: &str,
+    full: mpsc::SyncSender<Vec<(Parsed, Anchor)>>,
+    used: &mpsc::Receiver<Vec<(Parsed, Anchor)>>,
+) {
     let mut statements = statements(src);
+    let mut lines = Lines::new(src);
     let mut size = FIRST_BATCH;
     // Where the last batch's text ended.
     let mut read_to = 0;
@@ -130,7 +151,8 @@ fn read(src: &str, full: mpsc::SyncSender<Vec<Parsed>>, used: &mpsc::Receiver<Ve
                 Ok(stmt) => stmt.span.end,
                 Err(d) => d.span.end,
             };
-            batch.push(parsed);
+            let at = at(&mut lines, &parsed);
+            batch.push((parsed, at));
             if read_to.saturating_sub(from) >= BATCH_BYTES {
                 break;
             }
@@ -154,14 +176,22 @@ mod tests {
     use super::*;
 
     /// Reads `src` through [`each_statement`] and through the plain
-    /// iterator, each statement's tree or error as debug text.
+    /// iterator, each statement's tree or error as debug text with where
+    /// it starts (for the plain one, counted from the top for each).
     fn both(src: &str) -> (Vec<String>, Vec<String>) {
         let mut ahead = Vec::new();
-        each_statement(src, true, |p| {
-            ahead.push(format!("{p:?}"));
+        each_statement(src, true, |p, at| {
+            ahead.push(format!("{p:?} at {at:?}"));
             ControlFlow::Continue(())
         });
-        let plain = statements(src).map(|p| format!("{p:?}")).collect();
+        let plain = statements(src)
+            .map(|p| {
+                let start = p.as_ref().map_or_else(|d| d.span.start, |s| s.span.start);
+                let line = 1 + src[..start].matches('\n').count();
+                let offset = src[..start].rfind('\n').map_or(0, |i| i + 1);
+                format!("{p:?} at {:?}", Anchor { offset, line })
+            })
+            .collect();
         (ahead, plain)
     }
 
@@ -203,7 +233,7 @@ mod tests {
     fn stopping_early_ends_the_reader() {
         let src = "x = 1\n".repeat(AHEAD_FROM);
         let mut seen = 0;
-        each_statement(&src, true, |p| {
+        each_statement(&src, true, |p, _| {
             assert!(p.is_ok());
             seen += 1;
             if seen == 10 {
@@ -235,7 +265,10 @@ mod tests {
         let (back, used) = mpsc::channel();
         drop(back);
         read(&src, to, &used);
-        let batches: Vec<Vec<Parsed>> = full.iter().collect();
+        let batches: Vec<Vec<Parsed>> = full
+            .iter()
+            .map(|b: Vec<(Parsed, Anchor)>| b.into_iter().map(|(p, _)| p).collect())
+            .collect();
         let sizes: Vec<usize> = batches.iter().map(Vec::len).collect();
         assert_eq!(sizes.iter().sum::<usize>(), 2200);
         assert_eq!(sizes[..5], [16, 32, 64, 128, 256], "{sizes:?}");
