@@ -11,6 +11,7 @@ pub mod error;
 mod frame_text;
 mod free;
 mod hints;
+mod kind_eq;
 pub mod name;
 mod product;
 pub mod role;

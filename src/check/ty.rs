@@ -6,8 +6,9 @@ use std::fmt;
 pub use super::name::Name;
 
 /// What kind of mathematical object a value is (LANGUAGE.md §5). `None`
-/// dimensions are unknown until evaluation (e.g. `zeros(n, m)`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+/// dimensions are unknown until evaluation (e.g. `zeros(n, m)`). Compared
+/// and hashed as written out in [`super::kind_eq`].
+#[derive(Debug, Clone, Copy, Eq)]
 pub enum Kind {
     Scalar,
     Bool,
