@@ -7,7 +7,8 @@ pub use super::name::Name;
 
 /// What kind of mathematical object a value is (LANGUAGE.md §5). `None`
 /// dimensions are unknown until evaluation (e.g. `zeros(n, m)`). Compared
-/// and hashed as written out in [`super::kind_eq`].
+/// and hashed as written out in `check::kind_eq` (inlined: kinds compare at
+/// every node).
 #[derive(Debug, Clone, Copy, Eq)]
 pub enum Kind {
     Scalar,
