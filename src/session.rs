@@ -56,12 +56,11 @@ impl Settings {
 /// The result of one statement.
 #[derive(Debug, Clone)]
 pub struct Report {
-    /// 1-based line where the statement starts.
-    pub line: usize,
     pub result: Result<Outcome, Diagnostic>,
     pub warnings: Vec<Diagnostic>,
-    /// A known line before the statement, to number the lines of its
-    /// diagnostics without rescanning the source from its start.
+    /// Where the statement's line starts, and its number: the statement's
+    /// line ([`Report::line`]), and where its diagnostics number lines
+    /// from without rescanning the source from its start.
     pub anchor: Anchor,
     /// The files the statement asks to write (a picture saved or printed),
     /// performed by the session's gate in [`Session::run`] before the
@@ -70,6 +69,10 @@ pub struct Report {
 }
 
 impl Report {
+    /// The 1-based line where the statement starts.
+    pub fn line(&self) -> usize {
+        self.anchor.line
+    }
     /// What goes to stdout: the value text or JSON line (empty if nothing).
     pub fn stdout(&self, settings: &Settings, src: &str) -> String {
         let mut out = String::new();
@@ -82,12 +85,12 @@ impl Report {
         let json = match (&self.result, settings.json) {
             (Ok(o), false) => return text::write_outcome(out, o, settings.text_style()),
             (Err(_), false) => return,
-            (Ok(o), true) => match json::outcome(o, self.line) {
+            (Ok(o), true) => match json::outcome(o, self.line()) {
                 Some(mut j) => {
                     json::add_warnings(&mut j, &self.warnings);
                     j
                 }
-                None => match json::silent(self.line, &self.warnings) {
+                None => match json::silent(self.line(), &self.warnings) {
                     Some(j) => j,
                     None => return,
                 },
@@ -312,7 +315,6 @@ impl Session {
             match parsed {
                 Err(d) => {
                     report = Report {
-                        line: anchor.line,
                         anchor,
                         result: Err(habit_help(d.clone(), src)),
                         warnings: Vec::new(),
@@ -320,10 +322,8 @@ impl Session {
                     }
                 }
                 Ok(stmt) => {
-                    let line = anchor.line;
                     let mut interp = Interp::new(&mut self.env, src, mode, self.settings.frames);
                     report = Report {
-                        line,
                         anchor,
                         result: interp.stmt(stmt),
                         warnings: Vec::new(),
@@ -337,7 +337,7 @@ impl Session {
                             // Only a picture has more to do (checked here,
                             // without the call, for every other value).
                             if matches!(o.val.as_deref(), Some(Value::Picture(_))) {
-                                match Session::picture(o, line) {
+                                match Session::picture(o, anchor.line) {
                                     Err(d) => report.result = Err(d),
                                     Ok(e) => report.effects.extend(e),
                                 }

@@ -67,7 +67,7 @@ fn run(src: &str) -> Vec<Line> {
     };
     let mut lines = vec![Line::default(); src.lines().count() + 2];
     s.run(src, Mode::Run, true, |r: &Report| {
-        let Some(l) = lines.get_mut(r.line) else {
+        let Some(l) = lines.get_mut(r.line()) else {
             return;
         };
         match &r.result {

@@ -24,10 +24,10 @@ fn pictures(src: &str, dir: &Path) -> Vec<(usize, chasles::eval::value::Picture)
     s.run(src, Mode::Run, false, |r| match &r.result {
         Ok(o) => {
             if let Some(Value::Picture(p)) = o.val.as_deref() {
-                out.push((r.line, (**p).clone()));
+                out.push((r.line(), (**p).clone()));
             }
         }
-        Err(d) => panic!("line {}: {}", r.line, d.message),
+        Err(d) => panic!("line {}: {}", r.line(), d.message),
     });
     out
 }

@@ -252,7 +252,7 @@ impl Notebook {
             }
             match &r.result {
                 Ok(o) => {
-                    if let Some(mut b) = super::rich::bundle(o, r.line, &settings) {
+                    if let Some(mut b) = super::rich::bundle(o, r.line(), &settings) {
                         // the statement's notes ride with its JSON, as in `--json`
                         if let Some(j) = b.get_mut("application/json") {
                             crate::output::json::add_warnings(j, &r.warnings);
