@@ -30,10 +30,15 @@ fn half_turn(a: &Args, v: &Value) -> Option<Diagnostic> {
         return None;
     }
     let m = a.vals.first()?.as_matrix()?;
-    if !matches!(m.shape(), (3, 3) | (4, 4)) {
-        return None;
-    }
-    let r = Mat3::from_fn(|i, j| m[(i, j)]);
+    let n = match m.shape() {
+        (3, 3) => 3,
+        (4, 4) => 4,
+        _ => return None,
+    };
+    // (the rotation block read from one slice, column by column: indexing
+    // `m` asks its shape anew at every entry)
+    let xs = m.as_slice();
+    let r = Mat3::from_fn(|i, j| xs[j * n + i]);
     // (by the exact form where it decides: `Args::so3_log`)
     let half_turn = match a.half_turn(0) {
         Some(d) => d.half_turn,

@@ -82,7 +82,7 @@ impl Interp<'_> {
         // The types go on the stack; the values, when running, into the
         // vector the builtin takes (checking has none to keep).
         let mut vals = Vec::with_capacity(if running { args.len() } else { 0 });
-        let mut keep = |tys: &mut Vec<Ty>, t: Typed| {
+        let keep = |tys: &mut Vec<Ty>, vals: &mut Vec<Value>, t: Typed| {
             tys.push(t.ty);
             if let Some(v) = t.val {
                 vals.push(*v);
@@ -91,6 +91,20 @@ impl Interp<'_> {
             }
         };
         for (i, a) in args.iter().enumerate() {
+            // A name bound to numbers that are not a tuple or vector (which
+            // may be spread over the arguments), `Ad(T_ab)`, `log(T_ac)`:
+            // its copy goes straight into the arguments, without the box a
+            // node's result is held in (`Interp::var`).
+            if let ExprKind::Var(n) = &a.kind
+                && let Some((ty, v)) = self.bound_number(*n)
+                && !matches!(ty.kind, Kind::Tuple(_) | Kind::Vector(Some(_)))
+                && *n != *super::env::IDENTITY
+            {
+                let v = v.clone();
+                self.env.arg_tys.push(ty);
+                vals.push(v);
+                continue;
+            }
             let t = match (i, b.name, &a.kind) {
                 // Rot(x, θ): the axis may be written as a bare x, y or z.
                 (0, "Rot", ExprKind::Var(axis))
@@ -121,10 +135,10 @@ impl Interp<'_> {
                 1 => match self.spread(b, t) {
                     Ok(parts) => parts
                         .into_iter()
-                        .for_each(|p| keep(&mut self.env.arg_tys, p)),
-                    Err(t) => keep(&mut self.env.arg_tys, t),
+                        .for_each(|p| keep(&mut self.env.arg_tys, &mut vals, p)),
+                    Err(t) => keep(&mut self.env.arg_tys, &mut vals, t),
                 },
-                _ => keep(&mut self.env.arg_tys, t),
+                _ => keep(&mut self.env.arg_tys, &mut vals, t),
             }
         }
         // The call's rule (its table row's check, then one frame for a

@@ -223,22 +223,42 @@ impl Interp<'_> {
         }
     }
 
+    #[inline]
     fn var(&mut self, name: Name, span: Span) -> Result<Typed, Diagnostic> {
-        if let Some(b) = self.env.get(name) {
-            // Numbers (most names read) are what they were bound to: a copy
-            // (the numbers shared), boxed as the result holds it, when no
-            // axis was assumed a unit vector and no symbol is `given` (the
-            // paths below then change nothing).
-            if let Some(v @ Value::Num { .. }) = &b.val
-                && self.running()
-                && self.env.relied.is_empty()
-                && !self.env.has_givens()
+        // Numbers (most names read) are what they were bound to: a copy
+        // (the numbers shared), boxed as the result holds it, when no axis
+        // was assumed a unit vector and no symbol is `given` (the paths of
+        // `var_read` then change nothing).
+        if let Some((ty, v)) = self.bound_number(name) {
+            return Ok(Typed {
+                ty,
+                val: Some(Box::new(v.clone())),
+            });
+        }
+        self.var_read(name, span)
+    }
+
+    /// The type and numbers bound to `name` when reading it is just that
+    /// (see [`Interp::var`]); None for every other name.
+    #[inline]
+    pub(super) fn bound_number(&self, name: Name) -> Option<(Ty, &Value)> {
+        let b = self.env.get(name)?;
+        match &b.val {
+            Some(v @ Value::Num { .. })
+                if self.running() && self.env.relied.is_empty() && !self.env.has_givens() =>
             {
-                return Ok(Typed {
-                    ty: b.ty,
-                    val: Some(Box::new(v.clone())),
-                });
+                Some((b.ty, v))
             }
+            _ => None,
+        }
+    }
+
+    /// [`Interp::var`] of anything but bound numbers read plainly: a value
+    /// replayed with the numbers bound since, a constant (`pi`, `e`, `I`),
+    /// or the error of an unknown name.
+    #[inline(never)]
+    fn var_read(&mut self, name: Name, span: Span) -> Result<Typed, Diagnostic> {
+        if let Some(b) = self.env.get(name) {
             let mut warnings = Vec::new();
             let v = if self.running() {
                 super::substitute::current(b.bound(), self.env, &mut warnings).map_err(|e| {
