@@ -14,21 +14,27 @@ use super::ty::Kind;
 /// parts out of line. The same relation as a derived `==`; the match is
 /// over every variant, so that a new one must say how it compares.
 impl PartialEq for Kind {
-    #[inline]
+    #[inline(always)]
     fn eq(&self, other: &Kind) -> bool {
         use Kind::*;
-        match self {
-            Vector(a) => matches!(other, Vector(b) if a == b),
-            Matrix(a, b) => matches!(other, Matrix(c, d) if a == c && b == d),
-            Adjoint { transposed: a } => matches!(other, Adjoint { transposed: b } if a == b),
-            Tuple(a) => matches!(other, Tuple(b) if same_parts(a, b)),
-            List(a) => {
-                matches!(other, List(b) if same_parts(std::slice::from_ref(*a), std::slice::from_ref(*b)))
-            }
-            Scalar | Bool | SO3 | SE3 | So3 | Se3 | SO2 | SE2 | So2 | Se2 | Twist | Screw
-            | Wrench | Mechanism | Function | Picture | Text | Unknown => {
-                std::mem::discriminant(self) == std::mem::discriminant(other)
-            }
+        // (the variants first: most kinds compared are unit variants, or
+        // differ there; the data only of the same variant)
+        if std::mem::discriminant(self) != std::mem::discriminant(other) {
+            return false;
+        }
+        match (self, other) {
+            (Vector(a), Vector(b)) => a == b,
+            (Matrix(a, b), Matrix(c, d)) => a == c && b == d,
+            (Adjoint { transposed: a }, Adjoint { transposed: b }) => a == b,
+            (Tuple(a), Tuple(b)) => same_parts(a, b),
+            (List(a), List(b)) => same_parts(std::slice::from_ref(*a), std::slice::from_ref(*b)),
+            (
+                Scalar | Bool | SO3 | SE3 | So3 | Se3 | SO2 | SE2 | So2 | Se2 | Twist | Screw
+                | Wrench | Mechanism | Function | Picture | Text | Unknown,
+                _,
+            ) => true,
+            // (the discriminants are equal: never reached)
+            (Vector(_) | Matrix(..) | Adjoint { .. } | Tuple(_) | List(_), _) => false,
         }
     }
 }

@@ -325,6 +325,7 @@ impl Batch<'_> {
     }
 
     /// What [`Batch::diagnostics`] writes on stderr (empty when nothing).
+    #[inline]
     fn diagnostics_text(
         &self,
         r: &Report,
@@ -336,6 +337,18 @@ impl Batch<'_> {
         if r.warnings.is_empty() && r.result.is_ok() {
             return String::new();
         }
+        self.diagnostics_said(r, file, src, last_error)
+    }
+
+    /// [`Batch::diagnostics_text`] of a report with a warning or an error.
+    #[inline(never)]
+    fn diagnostics_said(
+        &self,
+        r: &Report,
+        file: &str,
+        src: &str,
+        last_error: &mut Option<String>,
+    ) -> String {
         let settings = self.opts.settings();
         let mut err = r.stderr(&settings, file, src);
         if let Err(d) = &r.result {

@@ -9,7 +9,7 @@ use super::value::Value;
 use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
 use crate::seam::apply::{self, Hints, Op};
-use crate::syntax::ast::{Expr, IndexArg, Span};
+use crate::syntax::ast::{Expr, ExprKind, IndexArg, Span};
 
 impl Interp<'_> {
     pub(super) fn index(
@@ -99,7 +99,7 @@ impl Interp<'_> {
         }
         let mut xs = [0.0; MOST];
         for (x, e) in xs.iter_mut().zip(items) {
-            let crate::syntax::ast::ExprKind::Number(typed) = e.kind else {
+            let ExprKind::Number(typed) = e.kind else {
                 return None;
             };
             match self.literal_exact(typed, e.span) {
@@ -224,11 +224,26 @@ impl Interp<'_> {
     /// `[x]`, one entry: the general path of [`Interp::brackets`] without
     /// its rows (the book's bracket `[S]` is common).
     fn bracket(&mut self, e: &Expr, span: Span) -> Result<Typed, Diagnostic> {
+        let op = Op::Block(&[1]);
+        // `[S]` of a name bound to numbers: the bracket of the numbers read
+        // where they are bound (what the path below makes of the name's
+        // copy, without the copy).
+        if let ExprKind::Var(name) = &e.kind
+            && let Some((ty, x)) = self.bound_number(*name)
+        {
+            if ty.kind.shape().is_none() {
+                return Err(not_inside(&ty.kind, e.span));
+            }
+            let ty = op
+                .rule(&[&ty], Hints::default())
+                .map_err(|e| Diagnostic::error(ErrorKind::Type, span, e.into_message()))?;
+            let val = Some(apply::bracket_numeric(x).map_err(|m| op.failure(m, span))?);
+            return Ok(Typed::new(refine(ty, &val), val));
+        }
         let t = self.expr(e)?;
         if t.ty.kind.shape().is_none() {
             return Err(not_inside(&t.ty.kind, e.span));
         }
-        let op = Op::Block(&[1]);
         let ty = op
             .rule(&[&t.ty], Hints::default())
             .map_err(|e| Diagnostic::error(ErrorKind::Type, span, e.into_message()))?;
@@ -367,7 +382,6 @@ impl Interp<'_> {
 /// `inv`, `Ad`, `log` and `T.R`, `T.p` treat it as one (also over
 /// symbols, where the numbers cannot tell). None for any other block.
 fn transform_block(rows: &[&Vec<Expr>], trows: &[Vec<Typed>]) -> Option<Ty> {
-    use crate::syntax::ast::ExprKind;
     let [top, bottom] = trows else { return None };
     let [r, p] = top.as_slice() else { return None };
     let is = |e: &Expr, x: f64| matches!(e.kind, ExprKind::Number(y) if y == x);

@@ -37,10 +37,17 @@ impl Interp<'_> {
 
     /// After `name` is bound: remembers the axes its closed form took as
     /// unit vectors (or forgets what an earlier binding of it relied on).
+    #[inline]
     pub(super) fn note_reliance(&mut self, name: Name) {
-        if self.env.relied.is_empty() && self.env.units_noted.is_empty() {
-            return;
+        // (most sessions assume no axis a unit vector: nothing to do)
+        if !(self.env.relied.is_empty() && self.env.units_noted.is_empty()) {
+            self.note_reliance_of(name);
         }
+    }
+
+    /// [`Interp::note_reliance`] where an axis has been assumed a unit.
+    #[inline(never)]
+    fn note_reliance_of(&mut self, name: Name) {
         self.env.relied.retain(|r| r.name != name.as_str());
         let Some(b) = self.env.get(name) else {
             return;

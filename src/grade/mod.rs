@@ -94,6 +94,10 @@ pub struct Suite {
     pub seconds: f64,
     /// The statements reported so far.
     seen: usize,
+    /// The first case whose statement has not been reported yet (the
+    /// cases are in the order of their statements, which are reported in
+    /// order: each report looks at one case, not at all of them).
+    next: usize,
 }
 
 impl Suite {
@@ -128,6 +132,7 @@ impl Suite {
             stopped: None,
             seconds: 0.0,
             seen: 0,
+            next: 0,
         }
     }
 
@@ -157,7 +162,18 @@ impl Suite {
     pub fn observe(&mut self, report: &Report, src: &str) {
         let statement = self.seen;
         self.seen += 1;
-        let Some(case) = self.cases.iter_mut().find(|c| c.statement == statement) else {
+        while self
+            .cases
+            .get(self.next)
+            .is_some_and(|c| c.statement < statement)
+        {
+            self.next += 1;
+        }
+        let Some(case) = self
+            .cases
+            .get_mut(self.next)
+            .filter(|c| c.statement == statement)
+        else {
             return;
         };
         case.verdict = match &report.result {
@@ -283,6 +299,36 @@ mod tests {
         );
         assert_eq!(suite.cases[1].name, "(b)");
         assert_eq!(suite.cases[2].name, "hw.chs:2");
+    }
+
+    #[test]
+    fn many_asserts_each_get_their_own_report() {
+        use crate::eval::env::Mode;
+        use crate::session::{Session, Settings};
+        // Asserts between other statements, every third one false, with a
+        // syntax error (a statement too) and a run of bindings between.
+        let mut src = String::from("x = 1\n(1, 2\n");
+        let mut want = Vec::new();
+        for k in 0..40 {
+            src.push_str(&format!("y = {k}; z = y\n"));
+            let holds = k % 3 != 0;
+            let rhs = if holds { k } else { k + 1 };
+            src.push_str(&format!("assert z == {rhs}\n"));
+            want.push(holds);
+        }
+        let mut suite = Suite::new("hw.chs", &src);
+        let mut session = Session::new(Settings::default());
+        session.run(&src, Mode::Run, true, |r| suite.observe(r, &src));
+        suite.finish(0.0);
+        let verdicts: Vec<bool> = suite
+            .cases
+            .iter()
+            .map(|c| c.verdict == Verdict::Passed)
+            .collect();
+        assert_eq!(verdicts, want);
+        for (c, holds) in suite.cases.iter().zip(&want) {
+            assert!(*holds || matches!(&c.verdict, Verdict::Failed(_)), "{c:?}");
+        }
     }
 
     #[test]
