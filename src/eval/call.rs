@@ -32,7 +32,8 @@ impl Interp<'_> {
             return self.value_times_paren(name, name_span, args, span);
         }
         let name = name.as_str();
-        let Some(b) = found else {
+        // (the name as the table spells it: the same text)
+        let Some((b, name)) = found else {
             let mut d = Diagnostic::error(
                 ErrorKind::Name,
                 name_span,

@@ -171,11 +171,11 @@ fn derived(v: Option<&Value>) -> bool {
 
 /// The builtins called so far, by name (none where a name is no builtin).
 #[derive(Clone, Default)]
-struct Called(NameMap<Option<&'static Builtin>>);
+struct Called(NameMap<Option<(&'static Builtin, &'static str)>>);
 
 impl std::fmt::Debug for Called {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        let names = self.0.iter().map(|(k, b)| (k.0, b.map(|b| b.name)));
+        let names = self.0.iter().map(|(k, b)| (k.0, b.map(|(b, _)| b.name)));
         f.debug_map().entries(names).finish()
     }
 }
@@ -480,14 +480,16 @@ impl Env {
         self.fns.keys().map(|k| k.0.as_str())
     }
     /// The builtin called `name` ([`builtins::lookup`]), looked up in the
-    /// table the first time only.
+    /// table the first time only, with the table's own text of the name
+    /// (`Ad`, an alias of `Adjoint`): a recipe keeping the name by which
+    /// it was called ([`crate::seam::apply::Op::owned`]) then finds it at
+    /// once.
     #[inline]
-    pub fn builtin(&mut self, name: Name) -> Option<&'static Builtin> {
-        *self
-            .builtins
-            .0
-            .entry(Key(name))
-            .or_insert_with(|| builtins::lookup(name.as_str()))
+    pub fn builtin(&mut self, name: Name) -> Option<(&'static Builtin, &'static str)> {
+        *self.builtins.0.entry(Key(name)).or_insert_with(|| {
+            let b = builtins::lookup(name.as_str())?;
+            Some((b, b.names().find(|n| *n == name.as_str()).unwrap_or(b.name)))
+        })
     }
     /// The bindings with their names, in the names' sorted order (for
     /// `:vars`, completion and derive's deterministic search).

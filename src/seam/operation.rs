@@ -24,9 +24,14 @@ impl<'a> Op<'a> {
             Op::Index(sels) => Operation::Index(sels.to_vec()),
             Op::Block(widths) => Operation::Block(widths.to_vec()),
             Op::Vector => Operation::Vector,
-            // (most calls use the builtin's own name: no search of its aliases)
-            Op::Call(b, name) if b.name == name => Operation::Call(b.name),
-            Op::Call(b, name) => Operation::Call(b.names().find(|n| *n == name).unwrap_or(b.name)),
+            // (most calls name the builtin by the table's own text of the
+            // name, `Env::builtin`: found by its address, no text compared)
+            Op::Call(b, name) => Operation::Call(
+                b.names()
+                    .find(|n| std::ptr::eq(*n, name))
+                    .or_else(|| b.names().find(|n| *n == name))
+                    .unwrap_or(b.name),
+            ),
         }
     }
 
