@@ -272,7 +272,9 @@ impl Batch<'_> {
                         job.out.write(o, style);
                     }
                     suite.observe(r, src);
-                    job.err = self.diagnostics_text(r, name, src, last_error);
+                    if !says_nothing(r) {
+                        job.err = self.diagnostics_text(r, name, src, last_error);
+                    }
                     w.done();
                 })
             });
@@ -317,6 +319,10 @@ impl Batch<'_> {
         out: &mut impl Write,
         last_error: &mut Option<String>,
     ) {
+        // (most statements: nothing to say, answered without a call)
+        if says_nothing(r) {
+            return;
+        }
         let err = self.diagnostics_text(r, file, src, last_error);
         if !err.is_empty() {
             let _ = out.flush();
@@ -324,25 +330,10 @@ impl Batch<'_> {
         }
     }
 
-    /// What [`Batch::diagnostics`] writes on stderr (empty when nothing).
-    #[inline]
-    fn diagnostics_text(
-        &self,
-        r: &Report,
-        file: &str,
-        src: &str,
-        last_error: &mut Option<String>,
-    ) -> String {
-        // (most statements: nothing to say)
-        if r.warnings.is_empty() && r.result.is_ok() {
-            return String::new();
-        }
-        self.diagnostics_said(r, file, src, last_error)
-    }
-
-    /// [`Batch::diagnostics_text`] of a report with a warning or an error.
+    /// What [`Batch::diagnostics`] writes on stderr (empty when nothing;
+    /// callers ask [`says_nothing`] first, without a call).
     #[inline(never)]
-    fn diagnostics_said(
+    fn diagnostics_text(
         &self,
         r: &Report,
         file: &str,
@@ -360,6 +351,13 @@ impl Batch<'_> {
         }
         err
     }
+}
+
+/// True for a report with no warning and no error: nothing for stderr
+/// (most statements).
+#[inline]
+fn says_nothing(r: &Report) -> bool {
+    r.warnings.is_empty() && r.result.is_ok()
 }
 
 /// A JSON line with `"file"` first (LANGUAGE.md §1: with `run`, every

@@ -276,21 +276,28 @@ mod tests {
         assert_eq!(s.cases[1].points, 1.0);
     }
 
-    #[test]
-    fn each_report_settles_the_assert_it_is_for() {
+    /// The suite of `src` after running it to its end (`--keep-going`),
+    /// and whether each of its cases passed.
+    fn run_suite(src: &str) -> (Suite, Vec<bool>) {
         use crate::eval::env::Mode;
         use crate::session::{Session, Settings};
-        // Two asserts on one line, a binding before one on the same line.
-        let src = "x = 1; assert x == 2; assert x == 1  # (b)\ny = 2; assert y == 2\n";
         let mut suite = Suite::new("hw.chs", src);
         let mut session = Session::new(Settings::default());
         session.run(src, Mode::Run, true, |r| suite.observe(r, src));
         suite.finish(0.0);
-        let verdicts: Vec<bool> = suite
+        let passed = suite
             .cases
             .iter()
             .map(|c| c.verdict == Verdict::Passed)
             .collect();
+        (suite, passed)
+    }
+
+    #[test]
+    fn each_report_settles_the_assert_it_is_for() {
+        // Two asserts on one line, a binding before one on the same line.
+        let src = "x = 1; assert x == 2; assert x == 1  # (b)\ny = 2; assert y == 2\n";
+        let (suite, verdicts) = run_suite(src);
         assert_eq!(verdicts, [false, true, true]);
         assert!(
             matches!(&suite.cases[0].verdict, Verdict::Failed(m) if m.starts_with("hw.chs:1:15: assert error")),
@@ -303,11 +310,9 @@ mod tests {
 
     #[test]
     fn many_asserts_each_get_their_own_report() {
-        use crate::eval::env::Mode;
-        use crate::session::{Session, Settings};
-        // Asserts between other statements, every third one false, with a
-        // syntax error (a statement too) and a run of bindings between.
-        let mut src = String::from("x = 1\n(1, 2\n");
+        // Asserts between other statements, every third one false, after
+        // a syntax error (a statement too).
+        let mut src = String::from("x = 1\nz = 1 +* 2\n");
         let mut want = Vec::new();
         for k in 0..40 {
             src.push_str(&format!("y = {k}; z = y\n"));
@@ -316,15 +321,7 @@ mod tests {
             src.push_str(&format!("assert z == {rhs}\n"));
             want.push(holds);
         }
-        let mut suite = Suite::new("hw.chs", &src);
-        let mut session = Session::new(Settings::default());
-        session.run(&src, Mode::Run, true, |r| suite.observe(r, &src));
-        suite.finish(0.0);
-        let verdicts: Vec<bool> = suite
-            .cases
-            .iter()
-            .map(|c| c.verdict == Verdict::Passed)
-            .collect();
+        let (suite, verdicts) = run_suite(&src);
         assert_eq!(verdicts, want);
         for (c, holds) in suite.cases.iter().zip(&want) {
             assert!(*holds || matches!(&c.verdict, Verdict::Failed(_)), "{c:?}");
