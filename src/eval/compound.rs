@@ -224,29 +224,18 @@ impl Interp<'_> {
     /// `[x]`, one entry: the general path of [`Interp::brackets`] without
     /// its rows (the book's bracket `[S]` is common).
     fn bracket(&mut self, e: &Expr, span: Span) -> Result<Typed, Diagnostic> {
-        let op = Op::Block(&[1]);
         // `[S]` of a name bound to numbers: the bracket of the numbers read
         // where they are bound (what the path below makes of the name's
         // copy, without the copy).
         if let ExprKind::Var(name) = &e.kind
             && let Some((ty, x)) = self.bound_number(*name)
         {
-            if ty.kind.shape().is_none() {
-                return Err(not_inside(&ty.kind, e.span));
-            }
-            let ty = op
-                .rule(&[&ty], Hints::default())
-                .map_err(|e| Diagnostic::error(ErrorKind::Type, span, e.into_message()))?;
-            let val = Some(apply::bracket_numeric(x).map_err(|m| op.failure(m, span))?);
+            let ty = bracket_rule(&ty, e.span, span)?;
+            let val = Some(apply::bracket_numeric(x).map_err(|m| BRACKET.failure(m, span))?);
             return Ok(Typed::new(refine(ty, &val), val));
         }
         let t = self.expr(e)?;
-        if t.ty.kind.shape().is_none() {
-            return Err(not_inside(&t.ty.kind, e.span));
-        }
-        let ty = op
-            .rule(&[&t.ty], Hints::default())
-            .map_err(|e| Diagnostic::error(ErrorKind::Type, span, e.into_message()))?;
+        let ty = bracket_rule(&t.ty, e.span, span)?;
         if !self.running() {
             return Ok(Typed::new(ty, None));
         }
@@ -259,7 +248,7 @@ impl Interp<'_> {
                 apply::block(&rows).unwrap_or_else(|| apply::block_numeric(&rows))
             }
         };
-        let val = Some(v.map_err(|m| op.failure(m, span))?);
+        let val = Some(v.map_err(|m| BRACKET.failure(m, span))?);
         Ok(Typed::new(refine(ty, &val), val))
     }
 
@@ -377,6 +366,20 @@ impl Interp<'_> {
 }
 
 /// The book's transform (3.62) written as a block, `[R, p; 0, 1]` or
+/// `[x]`, the book's bracket (3.30, 3.70): a block of one entry.
+const BRACKET: Op<'static> = Op::Block(&[1]);
+
+/// The type of `[x]` for an entry `x` of type `ty` written at `at` (the
+/// bracket at `span`): a vector or matrix inside, else an error.
+fn bracket_rule(ty: &Ty, at: Span, span: Span) -> Result<Ty, Diagnostic> {
+    if ty.kind.shape().is_none() {
+        return Err(not_inside(&ty.kind, at));
+    }
+    BRACKET
+        .rule(&[ty], Hints::default())
+        .map_err(|e| Diagnostic::error(ErrorKind::Type, span, e.into_message()))
+}
+
 /// `[R, p; 0, 0, 0, 1]`, with R in SO(3) and p a 3-vector: it is in
 /// SE(3), between the frames of R (`[R_sb, p_sb; 0, 1]` is {s}←{b}), so
 /// `inv`, `Ad`, `log` and `T.R`, `T.p` treat it as one (also over
