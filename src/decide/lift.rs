@@ -24,6 +24,7 @@ use std::rc::Rc;
 
 mod cleared;
 mod kept;
+mod motion;
 use cleared::cleared_equal;
 
 /// What the canonical forms of both sides' recipes, with their angles
@@ -412,6 +413,8 @@ fn lifted(v: &Value, lift: &mut Lift, depth: u32) -> Option<Mat> {
             let mut forms = Vec::new();
             for (i, a) in p.args.refs().into_iter().enumerate() {
                 let mut m = lifted(a, lift, depth + 1)?;
+                // (an exponential's angle, read as a sine's is: motion.rs)
+                motion::read_angle(&p.op, i, &mut m, lift);
                 if Some(i) == angle {
                     if m.data.len() != 1 {
                         return None;

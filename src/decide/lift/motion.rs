@@ -1,0 +1,135 @@
+//! The exponential of a rotation or a motion lifted as a rotation's angle
+//! is: `exp([ω̂] θ)` and `exp([S] θ)` are Rodrigues' formula (3.51) and
+//! Proposition 3.25 in cos θ and sin θ, so `exp([ẑ] 0.1) exp([ẑ] 0.2) ==
+//! exp([ẑ] 0.3)` is proven as `Rotz(0.1) Rotz(2) == Rotz(0.3)` is. The
+//! argument M (an exact matrix of rationals: so(3), se(3), or the 3- or
+//! 6-vector of one) has an angle θ = ‖ω‖, its rotation part's norm; read
+//! as the lift reads angles (θ·ν, or a whole multiple of μ), θ becomes Θ,
+//! and M becomes M·Θ/θ. The exponential of that, made by the symbolic
+//! engine, is a function of the lift's symbol whose value at the symbol's
+//! number (ν = 1, μ = 1/M) is e^M: the same argument as for a sine's
+//! angle, so an identity between the lifted forms holds at that number.
+
+use super::Lift;
+use crate::sym::Mat;
+use crate::sym::coef::{Coef, Rat};
+use crate::sym::expr::Expr;
+use crate::values::exact::Operation;
+
+/// `m`, the lifted operand `i` of operation `op`, with its angle read by
+/// `lift` when `op` is an exponential and `m` its argument, of the form
+/// [`angle_read`] reads; else left as it is.
+pub(super) fn read_angle(op: &Operation, i: usize, m: &mut Mat, lift: &mut Lift) {
+    if i == 0
+        && exponential(op)
+        && let Some(read) = angle_read(m, lift)
+    {
+        *m = read;
+    }
+}
+
+/// True for the builtins that take the exponential of an so(3) or se(3)
+/// argument (`exp` of a matrix of those kinds, MatrixExp3, MatrixExp6).
+fn exponential(op: &Operation) -> bool {
+    let Operation::Call(name) = op else {
+        return false;
+    };
+    crate::builtins::lookup(name)
+        .is_some_and(|b| matches!(b.name, "exp" | "MatrixExp3" | "MatrixExp6"))
+}
+
+/// `m`, the lifted argument of an exponential ([`exponential`]), with its
+/// angle read by `lift` (the module's doc); None when it is not an exact
+/// so(3) or se(3) matrix or vector of rationals with a rational angle
+/// θ ≠ 0 (it is then lifted as it is).
+fn angle_read(m: &Mat, lift: &mut Lift) -> Option<Mat> {
+    let rats: Vec<Rat> = m
+        .data
+        .iter()
+        .map(|e| e.as_const().and_then(|c| c.as_rat()))
+        .collect::<Option<_>>()?;
+    let w = rotation_part(m.rows, m.cols, &rats)?;
+    let theta = rational_norm(&w)?;
+    if theta.is_zero() {
+        return None;
+    }
+    let read = lift.angle(&Expr::constant(Coef::rat(theta.clone())))?;
+    Some(m.scale(&read.scale(&Coef::rat(theta.inv()?))))
+}
+
+/// ω of an so(3) matrix, an se(3) matrix, a 3-vector ω or a 6-vector
+/// (ω, v), from its entries `x` row by row; None for any other shape, or
+/// a matrix that is not of that form exactly (not skew, a bottom row that
+/// is not 0).
+fn rotation_part(rows: usize, cols: usize, x: &[Rat]) -> Option<[Rat; 3]> {
+    let at = |i: usize, j: usize| &x[i * cols + j];
+    match (rows, cols) {
+        (3 | 6, 1) => Some([x[0].clone(), x[1].clone(), x[2].clone()]),
+        (3, 3) | (4, 4) => {
+            for i in 0..3 {
+                for j in 0..3 {
+                    if *at(i, j) != at(j, i).neg() {
+                        return None;
+                    }
+                }
+            }
+            if rows == 4 && !(0..4).all(|j| at(3, j).is_zero()) {
+                return None;
+            }
+            Some([at(2, 1).clone(), at(0, 2).clone(), at(1, 0).clone()])
+        }
+        _ => None,
+    }
+}
+
+/// ‖w‖ when it is rational (w·w a square of one).
+fn rational_norm(w: &[Rat; 3]) -> Option<Rat> {
+    let square = w.iter().fold(Rat::ZERO, |s, x| s.add(&x.mul(x)));
+    let root = Expr::sqrt(&Expr::constant(Coef::rat(square)));
+    root.as_const()?.as_rat()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn rat(n: i128, d: i128) -> Rat {
+        Rat::new(n, d).expect("a fraction")
+    }
+
+    #[test]
+    fn the_rotation_part_and_its_norm() {
+        let z = [Rat::ZERO, Rat::ZERO, rat(1, 10)];
+        // [ẑ] 0.1, row by row
+        let m = [
+            Rat::ZERO,
+            rat(-1, 10),
+            Rat::ZERO,
+            rat(1, 10),
+            Rat::ZERO,
+            Rat::ZERO,
+            Rat::ZERO,
+            Rat::ZERO,
+            Rat::ZERO,
+        ];
+        assert_eq!(rotation_part(3, 3, &m), Some(z.clone()));
+        assert_eq!(rational_norm(&z), Some(rat(1, 10)));
+        // (3/50, 4/50, 0): a norm of 1/10; (1/10, 1/10, 0) has none rational
+        assert_eq!(
+            rational_norm(&[rat(3, 50), rat(4, 50), Rat::ZERO]),
+            Some(rat(1, 10))
+        );
+        assert_eq!(rational_norm(&[rat(1, 10), rat(1, 10), Rat::ZERO]), None);
+        // not skew: no rotation part
+        let mut bent = m.clone();
+        bent[0] = rat(1, 10);
+        assert_eq!(rotation_part(3, 3, &bent), None);
+        // a 6-vector's first three entries
+        let v: Vec<Rat> = (1..=6).map(|k| rat(k, 1)).collect();
+        assert_eq!(
+            rotation_part(6, 1, &v),
+            Some([rat(1, 1), rat(2, 1), rat(3, 1)])
+        );
+        assert_eq!(rotation_part(2, 2, &v[..4]), None);
+    }
+}
