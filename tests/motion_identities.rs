@@ -178,3 +178,27 @@ fn the_two_spellings_of_a_rotation_agree() {
         assert!(answer(src), "{src}");
     }
 }
+
+/// The product of exponentials in the space form and in the body form
+/// (B_i = [Ad_M⁻¹] S_i, e^{M⁻¹[S]M θ} = M⁻¹ e^{[S]θ} M, (3.84)) of a
+/// UR5-like chain at numeric angles: the same transform, proven; an angle
+/// moved by 0.01 is a different one.
+#[test]
+fn space_and_body_products_of_exponentials_agree() {
+    let chain = "S1 = (0, 0, 1, 0, 0, 0)\n\
+                 S2 = (0, -1, 0, 0.089, 0, 0)\n\
+                 S3 = (0, -1, 0, 0.089, 0, 0.425)\n\
+                 S4 = (0, -1, 0, 0.089, 0, 0.817)\n\
+                 S5 = (0, 0, -1, 0.109, -0.817, 0)\n\
+                 S6 = (0, -1, 0, -0.006, 0, 0.817)\n\
+                 M = [-1, 0, 0, 0.817; 0, 0, 1, 0.191; 0, 1, 0, -0.006; 0, 0, 0, 1]\n\
+                 B = Ad(inv(M))\n\
+                 T = exp([S1] 0.1) * exp([S2] 0.2) * exp([S3] 0.3) * exp([S4] 0.4) * exp([S5] 0.5) * exp([S6] 0.6) * M\n";
+    let body = |last: &str| {
+        format!(
+            "M * exp([B * S1] 0.1) * exp([B * S2] 0.2) * exp([B * S3] 0.3) * exp([B * S4] 0.4) * exp([B * S5] 0.5) * exp([B * S6] {last})"
+        )
+    };
+    assert!(answer(&format!("{chain}T == {}", body("0.6"))));
+    assert!(!answer(&format!("{chain}T == {}", body("0.61"))));
+}
