@@ -164,6 +164,41 @@ proptest! {
     }
 }
 
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 48, ..ProptestConfig::default() })]
+
+    /// Angles in degrees (multiples of π): e^{Xa°} e^{Xb°} = e^{X(a+b)°}
+    /// is true of a rotation; of a screw, never true unless the floats
+    /// agree; a degree more is false.
+    #[test]
+    fn angles_in_degrees_add(g in generator(), a in -400i32..=400, b in -400i32..=400) {
+        prop_assume!(a != 0 && b != 0 && a + b != 0);
+        let deg = |n: i32| f64::from(n).to_radians();
+        let lhs = format!("{} * {}", g.text(&format!("{a} deg")), g.text(&format!("{b} deg")));
+        let want = g.float(deg(a)) * g.float(deg(b));
+        let src = format!("{lhs} == {}", g.text(&format!("{} deg", a + b)));
+        let said = answer(&src);
+        prop_assert!(said || g.v.is_some(), "{src}: a rotation's angles not added");
+        prop_assert!(!said || largest_difference(&want, &g.float(deg(a + b))) < 1e-9, "{src}");
+        let src = format!("{lhs} == {}", g.text(&format!("{} deg", a + b + 1)));
+        prop_assert!(!answer(&src), "{src}: true of different sides");
+    }
+
+    /// A whole turn more, 2π: the same rotation, and the same motion only
+    /// for a screw of pitch 0 (e^{[S](θ + 2π)} also translates by 2πh
+    /// along the axis); the answer is what the floats say.
+    #[test]
+    fn a_whole_turn_more(g in generator(), a in angle(), k in prop::sample::select(vec![-2i32, -1, 1, 2])) {
+        let t = f64::from(a) / 100.0;
+        let turned = t + f64::from(k) * std::f64::consts::TAU;
+        let same = largest_difference(&g.float(t), &g.float(turned)) < 1e-9;
+        let src = format!("{} == {}", g.text(&hundredths(a)), g.text(&format!("{} + {} pi", hundredths(a), 2 * k)));
+        let said = answer(&src);
+        prop_assert!(!said || same, "{src}: true of sides that differ");
+        prop_assert!(said || !same || g.v.is_some(), "{src}: a rotation's whole turn not proven");
+    }
+}
+
 /// The pair the book's readers meet first, and the same rotation two
 /// ways: proven, where they were "differ by rounding only" before.
 #[test]

@@ -25,6 +25,7 @@ use std::rc::Rc;
 mod cleared;
 mod kept;
 mod motion;
+mod symbols;
 use cleared::cleared_equal;
 
 /// What the canonical forms of both sides' recipes, with their angles
@@ -121,9 +122,15 @@ impl Lift {
 
     /// An angle `x` as this lift reads it.
     fn angle(&mut self, x: &Expr) -> Option<Expr> {
-        // (every function of an angle here has period 2π: a + bπ is
-        // a + (b mod 2)π, exactly, so cos(10²⁰π + 1) lifts as cos 1 does)
-        let parts = rational_and_pi(x).map(|(a, b)| (a, b.rem_euclid(2)));
+        self.angle_of(x, true)
+    }
+
+    /// [`Lift::angle`], a + bπ read as a + (b mod 2)π when `periodic`
+    /// (the angle of a sine: cos(10²⁰π + 1) lifts as cos 1 does), as it
+    /// is otherwise (the angle of a screw motion, which also translates).
+    fn angle_of(&mut self, x: &Expr, periodic: bool) -> Option<Expr> {
+        let turns = |b: Rat| if periodic { b.rem_euclid(2) } else { b };
+        let parts = rational_and_pi(x).map(|(a, b)| (a, turns(b)));
         let reduced;
         let x = match &parts {
             Some((a, b)) if rational_and_pi(x).is_some_and(|(_, b0)| b0 != *b) => {
@@ -548,51 +555,4 @@ fn lifted_recipe(r: &Rc<Recipe>, lift: &mut Lift) -> Option<Mat> {
     });
     lift.recipes.insert(key, out.clone());
     out
-}
-
-/// True for a variable of the lift's own (ν, μ, ρ, an atom).
-fn own(v: &Var) -> bool {
-    let named = |s: &Symbol| s.name.starts_with('⟨');
-    match v {
-        Var::Sym(s) | Var::Z(s) => named(s),
-        Var::Pi => false,
-        Var::Call(c) => {
-            let mut names = Vec::new();
-            c.args.iter().for_each(|e| e.symbols(&mut names));
-            names.iter().all(named)
-        }
-    }
-}
-
-impl Lift {
-    /// An angle that may hold symbols, S + C: the part S in the symbols
-    /// stays as it is, the constant part C is read as [`Lift::angle`]
-    /// reads a number's (a symbol of its own when it is not a + bπ).
-    fn angle_with_symbols(&mut self, x: &Expr) -> Option<Expr> {
-        let mut symbols = Expr::default();
-        let mut constant = Expr::default();
-        for (mono, c) in &x.terms {
-            let term = Expr {
-                terms: std::iter::once((mono.clone(), c.clone())).collect(),
-            };
-            let user = mono.iter().any(|(v, _)| !matches!(v, Var::Pi) && !own(v));
-            if user {
-                symbols = symbols.add(&term);
-            } else {
-                constant = constant.add(&term);
-            }
-        }
-        if symbols.terms.is_empty() {
-            return match rational_and_pi(&constant) {
-                Some(_) => self.angle(&constant),
-                None => Some(self.named(format!("{constant:?}"))),
-            };
-        }
-        let c = match rational_and_pi(&constant) {
-            _ if constant.terms.is_empty() => constant,
-            Some(_) => self.angle(&constant)?,
-            None => self.named(format!("{constant:?}")),
-        };
-        Some(symbols.add(&c))
-    }
 }

@@ -1,14 +1,17 @@
 //! The exponential of a rotation or a motion lifted as a rotation's angle
 //! is: `exp([ω̂] θ)` and `exp([S] θ)` are Rodrigues' formula (3.51) and
 //! Proposition 3.25 in cos θ and sin θ, so `exp([ẑ] 0.1) exp([ẑ] 0.2) ==
-//! exp([ẑ] 0.3)` is proven as `Rotz(0.1) Rotz(2) == Rotz(0.3)` is. The
-//! argument M (an exact matrix of rationals: so(3), se(3), or the 3- or
-//! 6-vector of one) has an angle θ = ‖ω‖, its rotation part's norm; read
-//! as the lift reads angles (θ·ν, or a whole multiple of μ), θ becomes Θ,
-//! and M becomes M·Θ/θ. The exponential of that, made by the symbolic
-//! engine, is a function of the lift's symbol whose value at the symbol's
-//! number (ν = 1, μ = 1/M) is e^M: the same argument as for a sine's
-//! angle, so an identity between the lifted forms holds at that number.
+//! exp([ẑ] 0.3)` is proven as `Rotz(0.1) Rotz(0.2) == Rotz(0.3)` is, and
+//! so are angles in degrees. The argument M (an exact so(3) or se(3)
+//! matrix, or the 3- or 6-vector of one, its entries a + bπ) is θ·M̂ with
+//! M̂ rational, its ω̂ a unit vector, and θ = α + βπ; read as the lift
+//! reads angles (θ·ν, or whole multiples of μ = 1/M and ρ = π/L), θ
+//! becomes Θ, and M becomes M̂·Θ. The exponential of that, made by the
+//! symbolic engine, is a function of the lift's symbols whose value at
+//! their numbers (ν = 1, μ = 1/M, ρ = π/L) is e^M: the same argument as
+//! for a sine's angle, so an identity between the lifted forms holds at
+//! those numbers. Unlike a sine's, θ is not taken modulo 2π: a screw of
+//! pitch h ≠ 0 translates by 2πh in a whole turn.
 
 use super::Lift;
 use crate::sym::Mat;
@@ -39,22 +42,60 @@ fn exponential(op: &Operation) -> bool {
 }
 
 /// `m`, the lifted argument of an exponential ([`exponential`]), with its
-/// angle read by `lift` (the module's doc); None when it is not an exact
-/// so(3) or se(3) matrix or vector of rationals with a rational angle
-/// θ ≠ 0 (it is then lifted as it is).
+/// angle read by `lift` (the module's doc): M = θ·M̂ with M̂ rational and
+/// its ω̂ a unit vector, θ = α + βπ (α, β rational, θ ≠ 0), lifted as
+/// M̂·Θ for Θ the angle θ as the lift reads it. None when M is not an
+/// exact so(3) or se(3) matrix or vector of that form (an angle that is
+/// not a + bπ, an axis of irrational norm, a translation not along θ): it
+/// is then lifted as it is.
 fn angle_read(m: &Mat, lift: &mut Lift) -> Option<Mat> {
-    let rats: Vec<Rat> = m
+    let parts: Vec<(Rat, Rat)> = m
         .data
         .iter()
-        .map(|e| e.as_const().and_then(|c| c.as_rat()))
+        .map(super::rational_and_pi)
         .collect::<Option<_>>()?;
-    let w = rotation_part(m.rows, m.cols, &rats)?;
-    let theta = rational_norm(&w)?;
-    if theta.is_zero() {
+    let a: Vec<Rat> = parts.iter().map(|(x, _)| x.clone()).collect();
+    let b: Vec<Rat> = parts.iter().map(|(_, y)| y.clone()).collect();
+    let (wa, wb) = (
+        rotation_part(m.rows, m.cols, &a)?,
+        rotation_part(m.rows, m.cols, &b)?,
+    );
+    // (θ = α + βπ and M̂ from the rational part when it has a rotation,
+    // else from the part in π; the other part must be the same M̂ scaled)
+    let (alpha, beta, hat) = match rational_norm(&wa)? {
+        n if !n.is_zero() => {
+            let beta = dot(&wb, &wa).mul(&n.inv()?);
+            (n.clone(), beta, scaled(&a, &n.inv()?))
+        }
+        _ => {
+            let n = rational_norm(&wb)?;
+            (Rat::ZERO, n.clone(), scaled(&b, &n.inv()?))
+        }
+    };
+    if scaled(&hat, &alpha) != a || scaled(&hat, &beta) != b {
         return None;
     }
-    let read = lift.angle(&Expr::constant(Coef::rat(theta.clone())))?;
-    Some(m.scale(&read.scale(&Coef::rat(theta.inv()?))))
+    let theta =
+        Expr::constant(Coef::rat(alpha)).add(&Expr::constant(Coef::rat(beta)).mul(&Expr::pi()));
+    // (as it is: e^{[S](θ + 2π)} is e^{[S]θ} only for a screw of pitch 0)
+    let read = lift.angle_of(&theta, false)?;
+    let data = hat
+        .into_iter()
+        .map(|r| Expr::constant(Coef::rat(r)).mul(&read))
+        .collect();
+    Some(Mat { data, ..*m })
+}
+
+/// Each of `x` times `k`.
+fn scaled(x: &[Rat], k: &Rat) -> Vec<Rat> {
+    x.iter().map(|r| r.mul(k)).collect()
+}
+
+/// u·w.
+fn dot(u: &[Rat; 3], w: &[Rat; 3]) -> Rat {
+    u.iter()
+        .zip(w)
+        .fold(Rat::ZERO, |s, (x, y)| s.add(&x.mul(y)))
 }
 
 /// ω of an so(3) matrix, an se(3) matrix, a 3-vector ω or a 6-vector
