@@ -325,7 +325,12 @@ fn proof(a: &Value, b: &Value, lift: &mut Lift) -> Option<Result<(), Expr>> {
         x.data[0] = x.data[0].mul(&x.data[0]);
         y.data[0] = y.data[0].mul(&y.data[0]);
     }
-    if let Some((_, l)) = lift.split {
+    if let Some((m, l)) = lift.split {
+        // (μ and ρ outside a sine, the angle of a screw's translation: at
+        // their numbers, as the exact forms beside them hold π)
+        for e in x.data.iter_mut().chain(y.data.iter_mut()) {
+            *e = motion::bare_angles_at(e, m, l);
+        }
         lift.wider = widened(x.data.iter().chain(&y.data), l);
         let z = z_of(x.data.iter().chain(&y.data));
         for e in x.data.iter_mut().chain(y.data.iter_mut()) {

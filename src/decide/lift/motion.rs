@@ -16,7 +16,7 @@
 use super::Lift;
 use crate::sym::Mat;
 use crate::sym::coef::{Coef, Rat};
-use crate::sym::expr::Expr;
+use crate::sym::expr::{Expr, Var};
 use crate::values::exact::Operation;
 
 /// `m`, the lifted operand `i` of operation `op`, with its angle read by
@@ -84,6 +84,31 @@ fn angle_read(m: &Mat, lift: &mut Lift) -> Option<Mat> {
         .map(|r| Expr::constant(Coef::rat(r)).mul(&read))
         .collect();
     Some(Mat { data, ..*m })
+}
+
+/// `e` with the split's μ and ρ (1/M and π/L, [`Lift::split`]) at their
+/// numbers where they stand alone, outside a sine's e^{iρ} and outside a
+/// kept call: the linear part of a screw's exponential in its angle
+/// (Prop. 3.25's Iθ and (θ − sin θ)), which an exact form beside it
+/// holds as a multiple of π.
+pub(super) fn bare_angles_at(e: &Expr, m: i64, l: i64) -> Expr {
+    let (Some(mu), Some(rho)) = (Rat::int(m).inv(), Rat::int(l).inv()) else {
+        return e.clone();
+    };
+    let mut out = Expr::default();
+    for (mono, c) in &e.terms {
+        let mut t = Expr::constant(c.clone());
+        for (v, k) in mono {
+            let f = match v {
+                Var::Sym(s) if *s.name == *super::MU => Expr::constant(Coef::rat(mu.clone())),
+                Var::Sym(s) if *s.name == *super::RHO => Expr::pi().scale(&Coef::rat(rho.clone())),
+                _ => Expr::var(v.clone()),
+            };
+            t = t.mul(&f.powi(i64::from(*k)).unwrap_or_default());
+        }
+        out = out.add(&t);
+    }
+    out
 }
 
 /// Each of `x` times `k`.
