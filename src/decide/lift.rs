@@ -453,6 +453,10 @@ fn lifted(v: &Value, lift: &mut Lift, depth: u32) -> Option<Mat> {
             crate::seam::exactness::formula_of(&p.op, forms, &p.kind)
         })
         .flatten();
+    // (a form past MAX_LIFTED_TERMS proves nothing: a product of many
+    // exponentials about other axes grows by a factor at each one)
+    let out =
+        out.filter(|m| m.data.iter().map(|e| e.terms.len()).sum::<usize>() <= MAX_LIFTED_TERMS);
     // (a number the symbolic engine cannot make exactly, atan 2 or
     // tan(cos 2), is read as a symbol of its own, as its angle would be)
     let out = match out {
@@ -463,6 +467,10 @@ fn lifted(v: &Value, lift: &mut Lift, depth: u32) -> Option<Mat> {
     lift.memo.insert(key, out.clone());
     out
 }
+
+/// The most terms, all entries together, of a lifted form (the products
+/// of its operations grow as the square of their operands').
+const MAX_LIFTED_TERMS: usize = 512;
 
 /// The symbol that stands for number `v` in the lifted forms (the
 /// [`Lift::atoms`]): one per fingerprint, so the same recipe typed on
