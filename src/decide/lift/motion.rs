@@ -17,6 +17,7 @@ use super::Lift;
 use crate::sym::Mat;
 use crate::sym::coef::{Coef, Rat};
 use crate::sym::expr::{Expr, Var};
+use crate::sym::surd::Surd;
 use crate::values::exact::Operation;
 
 /// `m`, the lifted operand `i` of operation `op`, with its angle read by
@@ -64,12 +65,13 @@ fn angle_read(m: &Mat, lift: &mut Lift) -> Option<Mat> {
     // else from the part in π; the other part must be the same M̂ scaled)
     let (alpha, beta, hat) = match rational_norm(&wa)? {
         n if !n.is_zero() => {
-            let beta = dot(&wb, &wa).mul(&n.inv()?);
-            (n.clone(), beta, scaled(&a, &n.inv()?))
+            let inv = n.inv()?;
+            (n, dot(&wb, &wa).mul(&inv), scaled(&a, &inv))
         }
         _ => {
             let n = rational_norm(&wb)?;
-            (Rat::ZERO, n.clone(), scaled(&b, &n.inv()?))
+            let hat = scaled(&b, &n.inv()?);
+            (Rat::ZERO, n, hat)
         }
     };
     if scaled(&hat, &alpha) != a || scaled(&hat, &beta) != b {
@@ -150,9 +152,7 @@ fn rotation_part(rows: usize, cols: usize, x: &[Rat]) -> Option<[Rat; 3]> {
 
 /// ‖w‖ when it is rational (w·w a square of one).
 fn rational_norm(w: &[Rat; 3]) -> Option<Rat> {
-    let square = w.iter().fold(Rat::ZERO, |s, x| s.add(&x.mul(x)));
-    let root = Expr::sqrt(&Expr::constant(Coef::rat(square)));
-    root.as_const()?.as_rat()
+    Surd::sqrt_of(&dot(w, w))?.as_rat()
 }
 
 #[cfg(test)]
