@@ -338,3 +338,48 @@ fn hostile_numbers_get_answers_not_panics() {
     let h = numbers("Rot((1, 1, 1), pi)");
     assert!(close(&r, &h, 1e-15), "{r:?} vs {h:?}");
 }
+
+/// The JSON warnings' messages of the last statement of `src`.
+fn notes(src: &str) -> Vec<String> {
+    let (code, out, err) = run(&["--json", "-e", src]);
+    assert_eq!(code, 0, "{src}: {out}{err}");
+    let last = json_lines(&out).pop().expect("a value");
+    last["warnings"]
+        .as_array()
+        .map(|ws| {
+            ws.iter()
+                .map(|w| w["message"].as_str().unwrap_or_default().to_owned())
+                .collect()
+        })
+        .unwrap_or_default()
+}
+
+#[test]
+fn a_zero_angle_has_no_axis_and_says_so() {
+    // θ = 0: ω̂ is undefined (§3.2.3.3, case (i)); the zero vector stands
+    // in for it, with a note (the book's Python gives NaN)
+    assert_eq!(numbers("axis_ang3((0, 0, 0))"), [0.0, 0.0, 0.0, 0.0]);
+    let n = notes("axis_ang3((0, 0, 0))");
+    assert!(
+        n.len() == 1 && n[0].starts_with("θ = 0: no rotation, so the axis ω̂ is undefined"),
+        "{n:?}"
+    );
+    assert_eq!(numbers("AxisAng6((0, 0, 0, 0, 0, 0))"), [0.0; 7]);
+    let n = notes("AxisAng6((0, 0, 0, 0, 0, 0))");
+    assert!(
+        n.len() == 1 && n[0].starts_with("θ = 0: no motion, so the screw axis S is undefined"),
+        "{n:?}"
+    );
+    // any θ > 0 has its axis, however small θ is, and no note: a tiny
+    // rotation, a pure translation
+    assert_eq!(
+        numbers("axis_ang3((1e-300, 0, 0))"),
+        [1.0, 0.0, 0.0, 1e-300]
+    );
+    assert!(notes("axis_ang3((1e-300, 0, 0))").is_empty());
+    assert_eq!(
+        numbers("axis_ang6((0, 0, 0, 3, 0, 4))"),
+        [0.0, 0.0, 0.0, 0.6, 0.0, 0.8, 5.0]
+    );
+    assert!(notes("axis_ang6((0, 0, 0, 3, 0, 4))").is_empty());
+}

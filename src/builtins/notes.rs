@@ -1,6 +1,8 @@
 //! Notes that a correct result deserves, added after a builtin has run:
 //! at θ = π the logarithms' axis is one of two equally valid answers
-//! (§3.2.3.3, case (ii)); chasles gives the book's, and says so.
+//! (§3.2.3.3, case (ii)); chasles gives the book's, and says so. At θ = 0
+//! `AxisAng3` and `AxisAng6` have no axis to give (§3.2.3.3, case (i));
+//! the zero vector stands in for it, and the note says so.
 
 use super::Args;
 use crate::check::ty::Kind;
@@ -10,9 +12,31 @@ use crate::values::value::Value;
 
 /// Notes on the call `a` (its arguments still in place) that returned `v`.
 pub fn after_call(a: &mut Args, v: &Value) {
-    if let Some(n) = half_turn(a, v) {
+    if let Some(n) = half_turn(a, v).or_else(|| no_axis(a, v)) {
         a.warnings.push(n);
     }
+}
+
+/// `AxisAng3` or `AxisAng6` of the zero vector: θ = 0, and the axis is
+/// undefined (§3.2.3.3, case (i): "If R = I, then θ = 0 and ω̂ is
+/// undefined"); the zero vector it returns is a stand-in, not a unit axis
+/// (the book's Python divides by ‖0‖ and returns NaN).
+fn no_axis(a: &Args, v: &Value) -> Option<Diagnostic> {
+    let what = match a.name {
+        "AxisAng3" => "no rotation, so the axis ω̂ is undefined (§3.2.3.3, case (i))",
+        "AxisAng6" => "no motion, so the screw axis S is undefined (§3.3.3.1)",
+        _ => return None,
+    };
+    let Value::Tuple(parts) = v else {
+        return None;
+    };
+    (parts.get(1)?.as_scalar()? == 0.0).then(|| {
+        Diagnostic::note(
+            ErrorKind::Domain,
+            a.call_span,
+            format!("θ = 0: {what}; the zero vector stands in for it"),
+        )
+    })
 }
 
 /// `log`, `MatrixLog3`, `MatrixLog6` of a rotation or transform with

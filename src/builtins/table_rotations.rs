@@ -124,7 +124,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
             aliases: &["axis_ang3"],
             signature: "AxisAng3(expc3: 3-vector or so3) -> (omghat: 3-vector, theta: scalar)",
             section: "§3.2.3.2",
-            doc: "unit axis ω̂ and angle θ of exponential coordinates ω̂θ (or of [ω̂]θ: AxisAng3(log(R)))",
+            doc: "unit axis ω̂ and angle θ of exponential coordinates ω̂θ (or of [ω̂]θ: AxisAng3(log(R))); at θ = 0 the axis is undefined: zeros, with a note",
             example: "(w, theta) = AxisAng3((1, 2, 3))",
             area: Rotations,
             typing: Typing::Fixed {

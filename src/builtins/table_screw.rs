@@ -363,7 +363,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
             aliases: &["axis_ang6"],
             signature: "AxisAng6(expc6: 6-vector or se3) -> (S: screw, theta: scalar)",
             section: "§3.3.3.1",
-            doc: "screw axis S and distance θ of exponential coordinates Sθ (or of [S]θ: AxisAng6(log(T)))",
+            doc: "screw axis S and distance θ of exponential coordinates Sθ (or of [S]θ: AxisAng6(log(T))); at θ = 0 the axis is undefined: zeros, with a note",
             example: "(S, theta) = AxisAng6((1, 0, 0, 1, 2, 3))",
             area: Twists,
             typing: Typing::Fixed {
