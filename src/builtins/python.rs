@@ -20,7 +20,7 @@ pub struct Difference {
 pub const DIFFERENCES: &[Difference] = &[
     Difference {
         name: "AxisAng3",
-        text: "of the zero vector gives (0, 0): the axis is undefined at θ = 0 (§3.2.3.3 (i)); Python divides by zero (nan axis)",
+        text: "of the zero vector gives (0, 0) and a note: the axis is undefined at θ = 0 (§3.2.3.3 (i)); Python divides by zero (nan axis)",
     },
     Difference {
         name: "MatrixExp3",
@@ -36,7 +36,7 @@ pub const DIFFERENCES: &[Difference] = &[
     },
     Difference {
         name: "AxisAng6",
-        text: "of the zero vector gives (0, 0); with ω ≈ 0 (NearZero) and v = 0 it takes θ = ‖ω‖; Python divides by zero (nan)",
+        text: "of the zero vector gives (0, 0) and a note (S is undefined at θ = 0); with ω ≈ 0 (NearZero) and v = 0 it takes θ = ‖ω‖; Python divides by zero (nan)",
     },
     Difference {
         name: "MatrixExp6",
