@@ -11,7 +11,7 @@
 #
 # The book prints no numbers in this section. Expected values (by hand from
 # (3.58)–(3.61), checked with numpy):
-#   (i)   MatrixLog3(I) = (0, 0, 0)
+#   (i)   MatrixLog3(I) = (0, 0, 0); AxisAng3 of it: θ = 0, ŵ undefined (zeros)
 #   (ii)  R_sb of §3.3.1.2 = [0 0 1; 0 -1 0; 1 0 0]: (3.58) gives ŵ = (1, 0, 1)/√2,
 #         ŵθ = (2.2214, 0, 2.2214)
 #         Rot(ŷ, π) = diag(−1, 1, −1): r33 = −1, (3.59) gives ŵ = (0, 1, 0)
@@ -26,6 +26,7 @@
 # --- (i) R = I ---------------------------------------------------------------
 MatrixLog3(eye(3))               # (0, 0, 0)
 log(eye(3))                      # the zero so(3) matrix
+AxisAng3(MatrixLog3(eye(3)))     # θ = 0 and no axis: zeros, with a note that ŵ is undefined
 
 # --- (ii) tr R = −1, θ = π ---------------------------------------------------
 R1 = [0, 0, 1; 0, -1, 0; 1, 0, 0]
