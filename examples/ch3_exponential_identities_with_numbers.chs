@@ -5,7 +5,8 @@
 #   - one rotation written two ways: e^{[ẑ]θ} (3.51) and Rot(ẑ, θ) (3.18),
 #     at a decimal angle and in degrees;
 #   - a one-parameter subgroup adds its angles, e^{[ω̂]a} e^{[ω̂]b} =
-#     e^{[ω̂](a+b)}, for a rotation and for a screw of pitch 0.5 (Prop. 3.25);
+#     e^{[ω̂](a+b)}, for a rotation and for a screw of pitch 0.5 (Prop. 3.25),
+#     and about a unit axis with surd entries, ω̂ = (1, 1, 1)/√3;
 #   - R Rᵀ = I and det R = 1 (Prop. 3.1) of an exponential;
 #   - a whole turn more is the same rotation, but a pitched screw moves
 #     2πh along its axis: `false`;
@@ -18,6 +19,10 @@ exp([(0, 0, 1)] 0.1) == Rotz(0.1)
 exp([(0, 0, 1)] 10 deg) == Rotz(10 deg)
 exp([(0, 0, 1)] 0.1) * exp([(0, 0, 1)] 0.2) == exp([(0, 0, 1)] 0.3)
 exp([(0, 0, 1)] 0.1) * exp([(0, 0, 1)] 0.2) == exp([(0, 0, 1)] 0.31)
+
+w = (1, 1, 1)/sqrt(3);
+exp([w] 0.1) * exp([w] 0.2) == exp([w] 0.3)
+exp([w] 1) == Rot((1, 1, 1), 1)
 
 S = (0.6, 0.8, 0, 0.3, 0.4, 0);
 h = dot(S[1:3], S[4:6])

@@ -1,8 +1,9 @@
 //! `==` of exponentials of rotations and motions (LANGUAGE.md §7;
 //! `decide/lift/motion.rs`): `exp([ω̂] a) exp([ω̂] b) == exp([ω̂] (a + b))`
 //! is proven true, as `Rotz(a) Rotz(b) == Rotz(a + b)` is, for so(3) and
-//! se(3) arguments of exact rationals with a rational angle; sides that
-//! differ are false. Checked over random axes, screws and angles against
+//! se(3) arguments of exact rationals with a rational angle, and of unit
+//! axes with surd entries (`(1, 1, 1)/sqrt(3)`); sides that differ are
+//! false. Checked over random axes, screws and angles against
 //! an independent oracle: both sides computed here in floats (nalgebra's
 //! matrix exponential), which must agree to rounding where the answer is
 //! true and differ clearly where it is false, and the answer must be the
@@ -14,9 +15,9 @@ use nalgebra::{DMatrix, Matrix3, Matrix4};
 use proptest::prelude::*;
 
 /// Unit axes with rational entries (and the axes scaled, whose angle is
-/// the scale times the angle written), as the script writes them and as
-/// numbers.
-const AXES: [([&str; 3], [f64; 3]); 10] = [
+/// the scale times the angle written), and unit axes with surd entries,
+/// as the script writes them and as numbers.
+const AXES: [([&str; 3], [f64; 3]); 15] = [
     (["1", "0", "0"], [1.0, 0.0, 0.0]),
     (["0", "1", "0"], [0.0, 1.0, 0.0]),
     (["0", "0", "1"], [0.0, 0.0, 1.0]),
@@ -27,7 +28,24 @@ const AXES: [([&str; 3], [f64; 3]); 10] = [
     (["1/9", "4/9", "8/9"], [1.0 / 9.0, 4.0 / 9.0, 8.0 / 9.0]),
     (["0", "0", "2"], [0.0, 0.0, 2.0]),
     (["1.2", "1.6", "0"], [1.2, 1.6, 0.0]),
+    (["1/sqrt(3)", "1/sqrt(3)", "1/sqrt(3)"], [R3, R3, R3]),
+    (["1/sqrt(2)", "-1/sqrt(3)", "1/sqrt(6)"], [R2, -R3, R6]),
+    (["sqrt(2)/2", "0", "-sqrt(2)/2"], [R2, 0.0, -R2]),
+    (
+        ["sqrt(3)/2", "0.5", "0"],
+        [0.866_025_403_784_438_6, 0.5, 0.0],
+    ),
+    (
+        ["1/sqrt(14)", "2/sqrt(14)", "-3/sqrt(14)"],
+        [R14, 2.0 * R14, -3.0 * R14],
+    ),
 ];
+
+/// 1/√2, 1/√3, 1/√6 and 1/√14 as floats.
+const R2: f64 = std::f64::consts::FRAC_1_SQRT_2;
+const R3: f64 = 0.577_350_269_189_625_8;
+const R6: f64 = 0.408_248_290_463_863_1;
+const R14: f64 = 0.267_261_241_912_424_4;
 
 /// A generator: an so(3) axis, or a screw (ω, v) with that axis.
 #[derive(Debug, Clone)]

@@ -3,8 +3,9 @@
 //! Proposition 3.25 in cos θ and sin θ, so `exp([ẑ] 0.1) exp([ẑ] 0.2) ==
 //! exp([ẑ] 0.3)` is proven as `Rotz(0.1) Rotz(0.2) == Rotz(0.3)` is, and
 //! so are angles in degrees. The argument M (an exact so(3) or se(3)
-//! matrix, or the 3- or 6-vector of one, its entries a + bπ) is θ·M̂ with
-//! M̂ rational, its ω̂ a unit vector, and θ = α + βπ; read as the lift
+//! matrix, or the 3- or 6-vector of one, its entries a + bπ with a and b
+//! rational or surds) is θ·M̂ with its ω̂ a unit vector (rational, or with
+//! surd entries: `(1, 1, 1)/√3`) and θ = α + βπ, α and β rational; read as the lift
 //! reads angles (θ·ν, or whole multiples of μ = 1/M and ρ = π/L), θ
 //! becomes Θ, and M becomes M̂·Θ. The exponential of that, made by the
 //! symbolic engine, is a function of the lift's symbols whose value at
@@ -43,20 +44,19 @@ fn exponential(op: &Operation) -> bool {
 }
 
 /// `m`, the lifted argument of an exponential ([`exponential`]), with its
-/// angle read by `lift` (the module's doc): M = θ·M̂ with M̂ rational and
-/// its ω̂ a unit vector, θ = α + βπ (α, β rational, θ ≠ 0), lifted as
-/// M̂·Θ for Θ the angle θ as the lift reads it. None when M is not an
-/// exact so(3) or se(3) matrix or vector of that form (an angle that is
-/// not a + bπ, an axis of irrational norm, a translation not along θ): it
-/// is then lifted as it is.
+/// angle read by `lift` (the module's doc): M = θ·M̂ with ω̂ a unit vector
+/// and θ = α + βπ (α, β rational, θ ≠ 0), lifted as M̂·Θ for Θ the angle θ
+/// as the lift reads it. M̂'s entries may be surds (an axis typed unit,
+/// `(1, 1, 1)/sqrt(3)` or `w/norm(w)`), so long as θ is rational and
+/// M̂'s surds come to no float: Rodrigues' formula then has those surds as
+/// coefficients, exactly. None when M is not an exact so(3) or se(3)
+/// matrix or vector of that form (an angle that is not a + bπ, an axis
+/// whose norm is not rational, `(1, 1, 0)`, a translation not along θ):
+/// it is then lifted as it is.
 fn angle_read(m: &Mat, lift: &mut Lift) -> Option<Mat> {
-    let parts: Vec<(Rat, Rat)> = m
-        .data
-        .iter()
-        .map(super::rational_and_pi)
-        .collect::<Option<_>>()?;
-    let a: Vec<Rat> = parts.iter().map(|(x, _)| x.clone()).collect();
-    let b: Vec<Rat> = parts.iter().map(|(_, y)| y.clone()).collect();
+    let parts: Vec<(Surd, Surd)> = m.data.iter().map(surd_and_pi).collect::<Option<_>>()?;
+    let a: Vec<Surd> = parts.iter().map(|(x, _)| x.clone()).collect();
+    let b: Vec<Surd> = parts.iter().map(|(_, y)| y.clone()).collect();
     let (wa, wb) = (
         rotation_part(m.rows, m.cols, &a)?,
         rotation_part(m.rows, m.cols, &b)?,
@@ -66,7 +66,8 @@ fn angle_read(m: &Mat, lift: &mut Lift) -> Option<Mat> {
     let (alpha, beta, hat) = match rational_norm(&wa)? {
         n if !n.is_zero() => {
             let inv = n.inv()?;
-            (n, dot(&wb, &wa).mul(&inv), scaled(&a, &inv))
+            let beta = dot(&wb, &wa)?.as_rat()?.mul(&inv);
+            (n, beta, scaled(&a, &inv))
         }
         _ => {
             let n = rational_norm(&wb)?;
@@ -83,9 +84,23 @@ fn angle_read(m: &Mat, lift: &mut Lift) -> Option<Mat> {
     let read = lift.angle_of(&theta, false)?;
     let data = hat
         .into_iter()
-        .map(|r| Expr::constant(Coef::rat(r)).mul(&read))
+        .map(|r| Expr::constant(Coef::real(r)).mul(&read))
         .collect();
     Some(Mat { data, ..*m })
+}
+
+/// x as a + bπ with a and b real surds (no other symbol, no float).
+fn surd_and_pi(x: &Expr) -> Option<(Surd, Surd)> {
+    let (mut a, mut b) = (Surd::ZERO, Surd::ZERO);
+    for (mono, c) in &x.terms {
+        let r = c.as_real()?;
+        match mono.as_slice() {
+            [] => a = r,
+            [(Var::Pi, 1)] => b = r,
+            _ => return None,
+        }
+    }
+    Some((a, b))
 }
 
 /// `e` with the split's μ and ρ (1/M and π/L, [`Lift::split`]) at their
@@ -114,22 +129,22 @@ pub(super) fn bare_angles_at(e: &Expr, m: i64, l: i64) -> Expr {
 }
 
 /// Each of `x` times `k`.
-fn scaled(x: &[Rat], k: &Rat) -> Vec<Rat> {
-    x.iter().map(|r| r.mul(k)).collect()
+fn scaled(x: &[Surd], k: &Rat) -> Vec<Surd> {
+    x.iter().map(|r| r.scale(k)).collect()
 }
 
-/// u·w.
-fn dot(u: &[Rat; 3], w: &[Rat; 3]) -> Rat {
+/// u·w (None when a product of roots is too large to hold).
+fn dot(u: &[Surd; 3], w: &[Surd; 3]) -> Option<Surd> {
     u.iter()
         .zip(w)
-        .fold(Rat::ZERO, |s, (x, y)| s.add(&x.mul(y)))
+        .try_fold(Surd::ZERO, |s, (x, y)| Some(s.add(&x.mul(y)?)))
 }
 
 /// ω of an so(3) matrix, an se(3) matrix, a 3-vector ω or a 6-vector
 /// (ω, v), from its entries `x` row by row; None for any other shape, or
 /// a matrix that is not of that form exactly (not skew, a bottom row that
 /// is not 0).
-fn rotation_part(rows: usize, cols: usize, x: &[Rat]) -> Option<[Rat; 3]> {
+fn rotation_part(rows: usize, cols: usize, x: &[Surd]) -> Option<[Surd; 3]> {
     let at = |i: usize, j: usize| &x[i * cols + j];
     match (rows, cols) {
         (3 | 6, 1) => Some([x[0].clone(), x[1].clone(), x[2].clone()]),
@@ -150,48 +165,66 @@ fn rotation_part(rows: usize, cols: usize, x: &[Rat]) -> Option<[Rat; 3]> {
     }
 }
 
-/// ‖w‖ when it is rational (w·w a square of one).
-fn rational_norm(w: &[Rat; 3]) -> Option<Rat> {
-    Surd::sqrt_of(&dot(w, w))?.as_rat()
+/// ‖w‖ when it is rational (w·w the square of a rational: so for a
+/// unit axis with surd entries, `(1, 1, 1)/√3`, but not `(1, 1, 0)`).
+fn rational_norm(w: &[Surd; 3]) -> Option<Rat> {
+    Surd::sqrt_of(&dot(w, w)?.as_rat()?)?.as_rat()
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    fn rat(n: i128, d: i128) -> Rat {
+    fn q(n: i128, d: i128) -> Rat {
         Rat::new(n, d).expect("a fraction")
+    }
+
+    fn rat(n: i128, d: i128) -> Surd {
+        Surd::rat(q(n, d))
     }
 
     #[test]
     fn the_rotation_part_and_its_norm() {
-        let z = [Rat::ZERO, Rat::ZERO, rat(1, 10)];
+        let z = [Surd::ZERO, Surd::ZERO, rat(1, 10)];
         // [ẑ] 0.1, row by row
         let m = [
-            Rat::ZERO,
+            Surd::ZERO,
             rat(-1, 10),
-            Rat::ZERO,
+            Surd::ZERO,
             rat(1, 10),
-            Rat::ZERO,
-            Rat::ZERO,
-            Rat::ZERO,
-            Rat::ZERO,
-            Rat::ZERO,
+            Surd::ZERO,
+            Surd::ZERO,
+            Surd::ZERO,
+            Surd::ZERO,
+            Surd::ZERO,
         ];
         assert_eq!(rotation_part(3, 3, &m), Some(z.clone()));
-        assert_eq!(rational_norm(&z), Some(rat(1, 10)));
+        assert_eq!(rational_norm(&z), Some(q(1, 10)));
         // (3/50, 4/50, 0): a norm of 1/10; (1/10, 1/10, 0) has none rational
         assert_eq!(
-            rational_norm(&[rat(3, 50), rat(4, 50), Rat::ZERO]),
-            Some(rat(1, 10))
+            rational_norm(&[rat(3, 50), rat(4, 50), Surd::ZERO]),
+            Some(q(1, 10))
         );
-        assert_eq!(rational_norm(&[rat(1, 10), rat(1, 10), Rat::ZERO]), None);
+        assert_eq!(rational_norm(&[rat(1, 10), rat(1, 10), Surd::ZERO]), None);
+        // (1, 1, 1)/√3 and (1, 2, 3)/√14 are unit axes with surd entries
+        let third = Surd::sqrt_of(&q(1, 3)).expect("√(1/3)");
+        assert_eq!(
+            rational_norm(&[third.clone(), third.clone(), third]),
+            Some(q(1, 1))
+        );
+        let w: Vec<Surd> = (1..=3)
+            .map(|k| Surd::sqrt_of(&q(k * k, 14)).expect("a root"))
+            .collect();
+        assert_eq!(
+            rational_norm(&[w[0].clone(), w[1].clone(), w[2].clone()]),
+            Some(q(1, 1))
+        );
         // not skew: no rotation part
         let mut bent = m.clone();
         bent[0] = rat(1, 10);
         assert_eq!(rotation_part(3, 3, &bent), None);
         // a 6-vector's first three entries
-        let v: Vec<Rat> = (1..=6).map(|k| rat(k, 1)).collect();
+        let v: Vec<Surd> = (1..=6).map(|k| rat(k, 1)).collect();
         assert_eq!(
             rotation_part(6, 1, &v),
             Some([rat(1, 1), rat(2, 1), rat(3, 1)])
