@@ -15,7 +15,7 @@ use std::collections::HashMap;
 
 use super::cyclotomic::{coef_poly, conductor_of, cyclotomic};
 use crate::sym::Mat;
-use crate::sym::coef::{Coef, Rat};
+use crate::sym::coef::{Coef, Rat, Surd};
 use crate::sym::expr::{Expr, Symbol, Var};
 use crate::values::exact::Operation;
 use crate::values::recipe::{Recipe, Step};
@@ -173,9 +173,15 @@ impl Lift {
 
 /// (a, b) of an exact angle a + bπ with a, b rational.
 fn rational_and_pi(x: &Expr) -> Option<(Rat, Rat)> {
-    let (mut a, mut b) = (Rat::ZERO, Rat::ZERO);
+    let (a, b) = surd_and_pi(x)?;
+    Some((a.as_rat()?, b.as_rat()?))
+}
+
+/// x as a + bπ with a and b real surds (no other symbol, no float).
+fn surd_and_pi(x: &Expr) -> Option<(Surd, Surd)> {
+    let (mut a, mut b) = (Surd::ZERO, Surd::ZERO);
     for (mono, c) in &x.terms {
-        let r = c.as_rat()?;
+        let r = c.as_real()?;
         match mono.as_slice() {
             [] => a = r,
             [(Var::Pi, 1)] => b = r,

@@ -54,7 +54,11 @@ fn exponential(op: &Operation) -> bool {
 /// whose norm is not rational, `(1, 1, 0)`, a translation not along θ):
 /// it is then lifted as it is.
 fn angle_read(m: &Mat, lift: &mut Lift) -> Option<Mat> {
-    let parts: Vec<(Surd, Surd)> = m.data.iter().map(surd_and_pi).collect::<Option<_>>()?;
+    let parts: Vec<(Surd, Surd)> = m
+        .data
+        .iter()
+        .map(super::surd_and_pi)
+        .collect::<Option<_>>()?;
     let a: Vec<Surd> = parts.iter().map(|(x, _)| x.clone()).collect();
     let b: Vec<Surd> = parts.iter().map(|(_, y)| y.clone()).collect();
     let (wa, wb) = (
@@ -87,20 +91,6 @@ fn angle_read(m: &Mat, lift: &mut Lift) -> Option<Mat> {
         .map(|r| Expr::constant(Coef::real(r)).mul(&read))
         .collect();
     Some(Mat { data, ..*m })
-}
-
-/// x as a + bπ with a and b real surds (no other symbol, no float).
-fn surd_and_pi(x: &Expr) -> Option<(Surd, Surd)> {
-    let (mut a, mut b) = (Surd::ZERO, Surd::ZERO);
-    for (mono, c) in &x.terms {
-        let r = c.as_real()?;
-        match mono.as_slice() {
-            [] => a = r,
-            [(Var::Pi, 1)] => b = r,
-            _ => return None,
-        }
-    }
-    Some((a, b))
 }
 
 /// `e` with the split's μ and ρ (1/M and π/L, [`Lift::split`]) at their
