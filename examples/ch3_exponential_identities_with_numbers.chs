@@ -10,7 +10,9 @@
 #   - R Rᵀ = I and det R = 1 (Prop. 3.1) of an exponential;
 #   - a whole turn more is the same rotation, but a pitched screw moves
 #     2πh along its axis: `false`;
-#   - Ad_{T1 T2} = Ad_{T1} Ad_{T2} (Prop. 3.20) of exponentials.
+#   - Ad_{T1 T2} = Ad_{T1} Ad_{T2} (Prop. 3.20) of exponentials;
+#   - the logarithm of an exponential is its argument while θ < π (the
+#     principal branch of §3.2.3.3 and §3.3.3.2), and another past it.
 # Each `==` is proven from how its sides were made (Rodrigues' formula with
 # the angles read exactly), never from rounded floats: a side that differs
 # by a hundredth is `false`.
@@ -37,6 +39,10 @@ exp([S] 0.5) == exp([S] (0.5 + 2 pi))
 T1 = exp([(0, 0, 1, 0, 2, 0)] 0.3);
 T2 = exp([S] 0.7);
 Ad(T1 * T2) == Ad(T1) * Ad(T2)
+
+log(exp([w] 0.5)) == [w] 0.5
+MatrixLog6(MatrixExp6((0, 0, 1, 0, 2, 0) * 3)) == (0, 0, 1, 0, 2, 0) * 3
+log(exp([(0, 0, 1)] 4)) == [(0, 0, 1)] 4
 
 assert exp([(0, 0, 1)] 0.1) * exp([(0, 0, 1)] 0.2) == exp([(0, 0, 1)] 0.3)
 assert h == 0.5

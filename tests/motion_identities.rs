@@ -3,7 +3,8 @@
 //! is proven true, as `Rotz(a) Rotz(b) == Rotz(a + b)` is, for so(3) and
 //! se(3) arguments of exact rationals with a rational angle, and of unit
 //! axes with surd entries (`(1, 1, 1)/sqrt(3)`); sides that differ are
-//! false. Checked over random axes, screws and angles against
+//! false. The logarithm of an exponential is its argument on the principal
+//! branch (`decide/log_exp.rs`), and never so past it. Checked over random axes, screws and angles against
 //! an independent oracle: both sides computed here in floats (nalgebra's
 //! matrix exponential), which must agree to rounding where the answer is
 //! true and differ clearly where it is false, and the answer must be the
@@ -58,16 +59,24 @@ struct Gen {
 impl Gen {
     /// The script's `exp([X] t)`, for the angle written `t`.
     fn text(&self, t: &str) -> String {
+        format!("exp({})", self.arg(t))
+    }
+    /// The script's `[X] t`, the exponential's argument.
+    fn arg(&self, t: &str) -> String {
         let [x, y, z] = AXES[self.axis].0;
         match self.v {
-            None => format!("exp([({x}, {y}, {z})] ({t}))"),
+            None => format!("[({x}, {y}, {z})] ({t})"),
             Some(v) => format!(
-                "exp([({x}, {y}, {z}, {}, {}, {})] ({t}))",
+                "[({x}, {y}, {z}, {}, {}, {})] ({t})",
                 tenths(v[0]),
                 tenths(v[1]),
                 tenths(v[2])
             ),
         }
+    }
+    /// ‖ω‖ of the axis as written (the rotation's angle per unit of t).
+    fn norm(&self) -> f64 {
+        AXES[self.axis].1.iter().map(|w| w * w).sum::<f64>().sqrt()
     }
     /// The matrix exponential of `[X] t`, in floats.
     fn float(&self, t: f64) -> DMatrix<f64> {
@@ -109,6 +118,13 @@ fn answer(src: &str) -> bool {
         Some(serde_json::Value::Bool(b)) => b,
         other => panic!("{src}\nnot a bool: {other:?}"),
     }
+}
+
+/// True when the last line of `src` answered `false` only as floats that
+/// differ by rounding, with the note that says so: no proof either way.
+fn unproven(src: &str) -> bool {
+    let (out, err) = common::outputs(src);
+    out.lines().last() == Some("false") && err.contains("differ by rounding only")
 }
 
 fn largest_difference(a: &DMatrix<f64>, b: &DMatrix<f64>) -> f64 {
@@ -195,7 +211,11 @@ proptest! {
         let want = g.float(deg(a)) * g.float(deg(b));
         let src = format!("{lhs} == {}", g.text(&format!("{} deg", a + b)));
         let said = answer(&src);
-        prop_assert!(said, "{src}: the angles not added");
+        // (the √14 axis at a multiple of 15°: that side's exact form holds
+        // √7 and √21, outside the lift's largest field, ℚ(e^{iπ/360}); the
+        // sides then compare as floats, and the answer says so)
+        let beyond = AXES[g.axis].0[0].contains("14") && [a, b, a + b].iter().any(|k| k % 15 == 0);
+        prop_assert!(said || (beyond && unproven(&src)), "{src}: the angles not added");
         prop_assert!(!said || largest_difference(&want, &g.float(deg(a + b))) < 1e-9, "{src}");
         let src = format!("{lhs} == {}", g.text(&format!("{} deg", a + b + 1)));
         prop_assert!(!answer(&src), "{src}: true of different sides");
@@ -213,6 +233,59 @@ proptest! {
         let said = answer(&src);
         prop_assert!(!said || same, "{src}: true of sides that differ");
         prop_assert!(said || !same, "{src}: a whole turn not proven");
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 48, ..ProptestConfig::default() })]
+
+    /// log e^X = X on the principal branch (§3.2.3.3, §3.3.3.2: θ = ‖ω‖ <
+    /// π): true, and X one hundredth off is false; past π the logarithm
+    /// is another X, and the answer is never true. The oracle: the angle,
+    /// and the floats of both sides as the language prints them.
+    #[test]
+    fn the_log_of_an_exponential_is_its_argument(g in generator(), a in -600i32..=600) {
+        prop_assume!(a != 0);
+        let theta = (f64::from(a) / 100.0).abs() * g.norm();
+        prop_assume!((theta - std::f64::consts::PI).abs() > 1e-6);
+        let t = hundredths(a);
+        let src = format!("log({}) == {}", g.text(&t), g.arg(&t));
+        let said = answer(&src);
+        if theta < std::f64::consts::PI {
+            prop_assert!(said, "{src}: not proven");
+            let src = format!("log({}) == {}", g.text(&t), g.arg(&hundredths(a + 1)));
+            prop_assert!(!answer(&src), "{src}: true of different sides");
+        } else {
+            prop_assert!(!said, "{src}: true past the principal branch (θ = {theta})");
+        }
+    }
+}
+
+/// The logarithm of an exponential in each of the book's spellings
+/// (`MatrixLog3`, `MatrixLog6` give the vector; `log` the matrix), and
+/// where it stays a float: at θ = π exactly (two answers, ±ω̂) and past
+/// it.
+#[test]
+fn the_log_of_an_exponential_in_each_spelling() {
+    for src in [
+        "w = (1, 1, 1)/sqrt(3)\nlog(exp([w] 0.5)) == [w] 0.5",
+        "MatrixLog3(MatrixExp3((0.3, 0.4, 0))) == (0.3, 0.4, 0)",
+        "MatrixLog6(MatrixExp6((0.3, 0.4, 0, 1, 2, 3))) == (0.3, 0.4, 0, 1, 2, 3)",
+        "MatrixLog3(exp([(0.3, 0.4, 0)])) == (0.3, 0.4, 0)",
+        "log(MatrixExp6((0.3, 0.4, 0, 1, 2, 3))) == [(0.3, 0.4, 0, 1, 2, 3)]",
+        // (a pure translation: θ = 0, v = p)
+        "log(exp([(0, 0, 0, 1, 2, 3)] 0.5)) == [(0, 0, 0, 1, 2, 3)] 0.5",
+        "R = exp([(0.6, 0.8, 0)] 2)\nlog(R) == [(0.6, 0.8, 0)] 2",
+        "S = (0, 0, 1, 0, 2, 0)\nT = exp([S] 3.1)\nlog(T) == [S] 3.1",
+    ] {
+        assert!(answer(src), "{src}");
+    }
+    for src in [
+        "MatrixLog6(MatrixExp6((0.3, 0.4, 0, 1, 2, 3))) == (0.3, 0.4, 0, 1, 2, 3.01)",
+        "log(exp([(0, 0, 1)] 4)) == [(0, 0, 1)] 4",
+        "log(exp([(0, 0, 1, 0, 2, 0)] 3.2)) == [(0, 0, 1, 0, 2, 0)] 3.2",
+    ] {
+        assert!(!answer(src), "{src}");
     }
 }
 

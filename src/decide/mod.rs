@@ -9,7 +9,8 @@
 //! numbers (`replay`: the same replay makes a value bound later a
 //! number, and a comparison replayed is decided here again, so the two
 //! live in one room); inverse trigonometric sides by their principal
-//! ranges (`inverse`); trees of the book's transforms by the algebra of
+//! ranges (`inverse`), and the exact form of a logarithm of an exponential
+//! by the principal branch (`log_exp`: log e^X = X for ‖ω‖ < π); trees of the book's transforms by the algebra of
 //! their blocks (`blocks`: (T U)⁻¹ = U⁻¹ T⁻¹); the half-turn branch of a rotation's log
 //! (`turn`, §3.2.3.3) and the order of scalars (`order`). Imports
 //! the operation seam ([`crate::seam`]), nothing from the interpreter.
@@ -23,6 +24,7 @@ pub(crate) mod cyclotomic;
 pub(crate) mod equality;
 pub(crate) mod inverse;
 pub(crate) mod lift;
+pub(crate) mod log_exp;
 pub(crate) mod order;
 pub(crate) mod powers;
 pub(crate) mod replay;

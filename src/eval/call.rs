@@ -217,7 +217,15 @@ impl Interp<'_> {
         };
         // (the exact form's recipe keeps the arguments given back: no copy)
         let (mut v, vals) = apply::call_keeping(b, vals, site)?;
-        v.set_call_exact(op.exact_of_owned(vals, &ty.kind));
+        // (log e^X on the principal branch is X exactly, `decide::log_exp`:
+        // asked of the kinds a logarithm gives only)
+        let log = match ty.kind {
+            Kind::So3 | Kind::Se3 | Kind::Vector(Some(3 | 6)) | Kind::Twist => {
+                crate::decide::log_exp::exact_of(b.name, &vals, &v)
+            }
+            _ => None,
+        };
+        v.set_call_exact(log.unwrap_or_else(|| op.exact_of_owned(vals, &ty.kind)));
         crate::decide::replay::not_finite_group(&v, b.name, span)?;
         let val = Some(v);
         Ok(Typed::new(refine(ty, &val), val))

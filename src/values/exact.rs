@@ -171,6 +171,15 @@ impl Exact {
         if !matches!(l.form.get(), Some(None)) {
             return None;
         }
+        self.peek_recipe(f)
+    }
+    /// `f` of the recipe this value was made by, while it is kept: before
+    /// its form is asked for, or after it was found missing ([`Exact::with_recipe`]
+    /// gives the second only). Reading it computes nothing: it is how a
+    /// call asks what its operand was made by (`log` of `exp`,
+    /// `decide::log_exp`) without working out the operand's form.
+    pub fn peek_recipe<R>(&self, f: impl FnOnce(&Pending) -> R) -> Option<R> {
+        let Exact::Later(l) = self else { return None };
         let make = l.make.take();
         let out = match &make {
             Some(Make::Op(p)) => Some(f(p)),
