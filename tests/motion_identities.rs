@@ -277,6 +277,9 @@ fn the_log_of_an_exponential_in_each_spelling() {
         "log(exp([(0, 0, 0, 1, 2, 3)] 0.5)) == [(0, 0, 0, 1, 2, 3)] 0.5",
         "R = exp([(0.6, 0.8, 0)] 2)\nlog(R) == [(0.6, 0.8, 0)] 2",
         "S = (0, 0, 1, 0, 2, 0)\nT = exp([S] 3.1)\nlog(T) == [S] 3.1",
+        // (the hard ends: θ → 0 and θ → π, still below it)
+        "log(exp([(0, 0, 1)] 1e-300)) == [(0, 0, 1)] 1e-300",
+        "w = (1, 2, 2)/3\nlog(exp([w] (pi - 1e-15))) == [w] (pi - 1e-15)",
     ] {
         assert!(answer(src), "{src}");
     }
@@ -287,6 +290,12 @@ fn the_log_of_an_exponential_in_each_spelling() {
     ] {
         assert!(!answer(src), "{src}");
     }
+    // (an exponential that overflows is a clear error, before any logarithm)
+    let err = common::error("log(exp([(1e308, 0, 0)] 10))");
+    assert!(
+        err.contains("domain error: exp of a matrix with entries that are not finite"),
+        "{err}"
+    );
 }
 
 /// The pair the book's readers meet first, and the same rotation two

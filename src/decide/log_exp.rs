@@ -19,6 +19,7 @@
 use super::ball;
 use super::certify::PRECISIONS;
 use crate::check::ty::Kind;
+use crate::sym::matrix::{skew, twist_matrix, unskew};
 use crate::sym::{Expr, Mat};
 use crate::values::exact::{Exact, Operation};
 use crate::values::value::Value;
@@ -35,12 +36,13 @@ pub(crate) fn exact_of(name: &str, args: &[Value], out: &Value) -> Option<Exact>
         return None;
     };
     let (group, x) = exponent(arg)?;
-    let form = x.exact_form()?;
-    if !principal(&rotation(&form, group)?) {
-        return None;
-    }
+    let v = algebra_vector(&x.exact_form()?, group)?;
     let (rows, cols) = m.shape();
-    Some(Exact::known(in_shape(&form, rows, cols)?))
+    // (the logarithm's shape is its group's: a vector of v's length, or
+    // that vector's matrix)
+    let side = if v.len() == 3 { 3 } else { 4 };
+    let fits = (rows, cols) == (v.len(), 1) || (rows, cols) == (side, side);
+    (fits && principal(&v[..3])).then(|| Exact::known(in_shape(&v, rows, cols)))
 }
 
 /// The group of e^X and the argument X, when `e` was made by an
@@ -69,59 +71,34 @@ fn exponent(e: &Value) -> Option<(Kind, Value)> {
     Some((*kind, x))
 }
 
-/// The rotation part ω of X, an exact element of the Lie algebra of
-/// `group` (so(3), se(3): of the matrix or of the 3- or 6-vector); None
-/// when X is not exactly of that form.
-fn rotation(x: &Mat, group: Kind) -> Option<Vec<Expr>> {
-    let at = |i: usize, j: usize| &x.data[i * x.cols + j];
-    let skew = |n: usize| (0..n).all(|i| (0..n).all(|j| *at(i, j) == at(j, i).neg()));
-    let zero_row = |i: usize| (0..x.cols).all(|j| *at(i, j) == Expr::default());
-    let omega = || vec![at(2, 1).clone(), at(0, 2).clone(), at(1, 0).clone()];
-    match (group, x.rows, x.cols) {
-        (Kind::SO3, 3, 1) | (Kind::SE3, 6, 1) => Some(x.data[..3].to_vec()),
-        (Kind::SO3, 3, 3) if skew(3) => Some(omega()),
-        (Kind::SE3, 4, 4) if skew(3) && zero_row(3) => Some(omega()),
-        _ => None,
-    }
-}
-
-/// X in the logarithm's shape: as it is, its 3- or 6-vector (X a matrix
-/// of so(3) or se(3), `MatrixLog3`, `MatrixLog6`), or the matrix of its
-/// vector (`log(MatrixExp3(v))`); None for any other pair of shapes.
-fn in_shape(x: &Mat, rows: usize, cols: usize) -> Option<Mat> {
-    if (x.rows, x.cols) == (rows, cols) {
-        return Some(x.clone());
-    }
-    let at = |i: usize, j: usize| x.data[i * x.cols + j].clone();
-    let data = match ((x.rows, x.cols), (rows, cols)) {
-        ((3, 3), (3, 1)) => vec![at(2, 1), at(0, 2), at(1, 0)],
-        ((4, 4), (6, 1)) => vec![at(2, 1), at(0, 2), at(1, 0), at(0, 3), at(1, 3), at(2, 3)],
-        ((3, 1), (3, 3)) | ((6, 1), (4, 4)) => {
-            let v = &x.data;
-            let z = Expr::default;
-            let mut m = vec![
-                z(),
-                v[2].neg(),
-                v[1].clone(),
-                v[2].clone(),
-                z(),
-                v[0].neg(),
-                v[1].neg(),
-                v[0].clone(),
-                z(),
-            ];
-            if rows == 4 {
-                // ([ω], v; 0, 0), row by row
-                m.insert(3, v[3].clone());
-                m.insert(7, v[4].clone());
-                m.push(v[5].clone());
-                m.extend((0..4).map(|_| z()));
-            }
-            m
+/// The vector of X, an exact element of the Lie algebra of `group`: ω
+/// (so(3)) or (ω, v) (se(3)), of the vector itself or of the matrix
+/// (3.30, 3.70); None when X is not exactly of that form (not skew, a
+/// bottom row that is not 0, another shape).
+fn algebra_vector(x: &Mat, group: Kind) -> Option<Vec<Expr>> {
+    let v = match (x.rows, x.cols) {
+        (3 | 6, 1) => x.data.clone(),
+        (3, 3) => unskew(x),
+        (4, 4) => {
+            let mut v = unskew(x);
+            v.extend((0..3).map(|i| x.get(i, 3).clone()));
+            v
         }
         _ => return None,
     };
-    Some(Mat { rows, cols, data })
+    let fits = matches!((group, v.len()), (Kind::SO3, 3) | (Kind::SE3, 6));
+    (fits && (x.cols == 1 || in_shape(&v, x.rows, x.cols) == *x)).then_some(v)
+}
+
+/// The vector `v` of an element of so(3) or se(3) in a logarithm's shape:
+/// as it is (`MatrixLog3`, `MatrixLog6`), or its matrix [ω] (3.30) or
+/// [V] (3.70) (`log`).
+fn in_shape(v: &[Expr], rows: usize, cols: usize) -> Mat {
+    match (rows, cols) {
+        (3, 3) => skew(v),
+        (4, 4) => twist_matrix(v),
+        _ => Mat::column(v.to_vec()),
+    }
 }
 
 /// True when ‖ω‖ < π is certified: π² − Σ ωᵢ² is a ball that excludes 0
@@ -149,8 +126,8 @@ mod tests {
     }
 
     #[test]
-    fn the_rotation_part_of_each_algebra() {
-        // [(1, 2, 3)] with v = (4, 5, 6) below, row by row
+    fn the_vector_of_each_algebra() {
+        // [(1, 2, 3)] with v = (4, 5, 6) beside it, row by row
         let m = Mat {
             rows: 4,
             cols: 4,
@@ -159,34 +136,25 @@ mod tests {
                 .map(|&k| q(k, 1))
                 .collect(),
         };
-        assert_eq!(
-            rotation(&m, Kind::SE3),
-            Some(vec![q(1, 1), q(2, 1), q(3, 1)])
-        );
-        // not skew, or a bottom row that is not 0: no rotation part
+        let v: Vec<Expr> = (1..=6).map(|k| q(k, 1)).collect();
+        assert_eq!(algebra_vector(&m, Kind::SE3), Some(v.clone()));
+        assert_eq!(in_shape(&v, 4, 4), m);
+        assert_eq!(in_shape(&v, 6, 1).data, v);
+        // not skew, or a bottom row that is not 0: not of se(3)
         let mut bent = m.clone();
         bent.data[0] = q(1, 1);
-        assert_eq!(rotation(&bent, Kind::SE3), None);
+        assert_eq!(algebra_vector(&bent, Kind::SE3), None);
         let mut bent = m.clone();
         bent.data[15] = q(1, 1);
-        assert_eq!(rotation(&bent, Kind::SE3), None);
-        // the same 4×4 is no element of so(3)
-        assert_eq!(rotation(&m, Kind::SO3), None);
-        // its 6-vector and back
-        let v = in_shape(&m, 6, 1).expect("the 6-vector");
-        let want: Vec<Expr> = (1..=6).map(|k| q(k, 1)).collect();
-        assert_eq!(v.data, want);
-        assert_eq!(in_shape(&v, 4, 4), Some(m.clone()));
-        // an so(3) matrix's 3-vector and back; no 2-vector of it
-        let w = Mat {
-            rows: 3,
-            cols: 1,
-            data: want[..3].to_vec(),
-        };
-        let hat = in_shape(&w, 3, 3).expect("[ω]");
-        assert_eq!(rotation(&hat, Kind::SO3), Some(want[..3].to_vec()));
-        assert_eq!(in_shape(&hat, 3, 1), Some(w));
-        assert_eq!(in_shape(&hat, 2, 1), None);
+        assert_eq!(algebra_vector(&bent, Kind::SE3), None);
+        // the same 4×4 is no element of so(3); a 3-vector is, and its [ω]
+        assert_eq!(algebra_vector(&m, Kind::SO3), None);
+        let hat = in_shape(&v[..3], 3, 3);
+        assert_eq!(algebra_vector(&hat, Kind::SO3), Some(v[..3].to_vec()));
+        assert_eq!(
+            algebra_vector(&Mat::column(v[..3].to_vec()), Kind::SE3),
+            None
+        );
     }
 
     #[test]
