@@ -14,6 +14,20 @@ fn run(args: &[&str]) -> String {
     report(&command(args).output().expect("the chasles binary runs"))
 }
 
+/// Held by each `insta::glob!` test while it runs. insta keeps the
+/// failures of a glob on one process-wide stack (`insta::glob`'s
+/// `GLOB_STACK`), so two globs running at once would report one's failing
+/// snapshot under the other's name (`error_scripts ... FAILED` for an
+/// example's diff). One glob at a time names the right test.
+static ONE_GLOB_AT_A_TIME: std::sync::Mutex<()> = std::sync::Mutex::new(());
+
+/// The lock of [`ONE_GLOB_AT_A_TIME`], whether or not a glob before failed.
+fn one_glob() -> std::sync::MutexGuard<'static, ()> {
+    ONE_GLOB_AT_A_TIME
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner)
+}
+
 fn rel(path: &Path) -> String {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     path.strip_prefix(root)
@@ -24,6 +38,7 @@ fn rel(path: &Path) -> String {
 
 #[test]
 fn example_scripts() {
+    let _one = one_glob();
     // A fresh folder: a printed picture replaces only a picture chasles
     // printed (an older build's, unmarked, would be kept and renamed).
     let _ = std::fs::remove_dir_all(
@@ -39,6 +54,7 @@ fn example_scripts() {
 
 #[test]
 fn error_scripts() {
+    let _one = one_glob();
     insta::glob!("errors", "*/*.chs", |path| {
         let out = run(&["run", "--keep-going", &rel(path)]);
         let kind = path
