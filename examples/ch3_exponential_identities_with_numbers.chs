@@ -12,7 +12,10 @@
 #     2πh along its axis: `false`;
 #   - Ad_{T1 T2} = Ad_{T1} Ad_{T2} (Prop. 3.20) of exponentials;
 #   - the logarithm of an exponential is its argument while θ < π (the
-#     principal branch of §3.2.3.3 and §3.3.3.2), and another past it.
+#     principal branch of §3.2.3.3 and §3.3.3.2), and past it X turned
+#     back by whole turns, ω̂(θ − 2π) for θ = 4;
+#   - the logarithm of a whole turn is 0 (case (a) of §3.2.3.3), and a
+#     pure translation's for a screw of pitch 0.5 (session 28).
 # Each `==` is proven from how its sides were made (Rodrigues' formula with
 # the angles read exactly), never from rounded floats: a side that differs
 # by a hundredth is `false`.
@@ -43,6 +46,9 @@ Ad(T1 * T2) == Ad(T1) * Ad(T2)
 log(exp([w] 0.5)) == [w] 0.5
 MatrixLog6(MatrixExp6((0, 0, 1, 0, 2, 0) * 3)) == (0, 0, 1, 0, 2, 0) * 3
 log(exp([(0, 0, 1)] 4)) == [(0, 0, 1)] 4
+log(exp([(0, 0, 1)] 4)) == [(0, 0, 1)] (4 - 2 pi)
+log(Rotz(2 pi)) == zeros(3, 3)
+MatrixLog6(exp([S] 2 pi)) == (0, 0, 0, 0.6, 0.8, 0) * pi
 
 assert exp([(0, 0, 1)] 0.1) * exp([(0, 0, 1)] 0.2) == exp([(0, 0, 1)] 0.3)
 assert h == 0.5

@@ -4,8 +4,9 @@
 //! se(3) arguments of exact rationals with a rational angle, and of unit
 //! axes with surd entries (`(1, 1, 1)/sqrt(3)`); sides that differ are
 //! false. The logarithm of an exponential is its argument on the principal
-//! branch (`decide/log_exp.rs`), and never so past it. Checked over random axes, screws and angles against
-//! an independent oracle: both sides computed here in floats (nalgebra's
+//! branch (`decide/log_exp.rs`), X turned back by whole turns past it
+//! (for rotations), and the logarithm of an exact identity is 0. Checked
+//! over random axes, screws and angles against an independent oracle: both sides computed here in floats (nalgebra's
 //! matrix exponential), which must agree to rounding where the answer is
 //! true and differ clearly where it is false, and the answer must be the
 //! one the construction of the pair says.
@@ -258,6 +259,64 @@ proptest! {
         } else {
             prop_assert!(!said, "{src}: true past the principal branch (θ = {theta})");
         }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 48, ..ProptestConfig::default() })]
+
+    /// Past π, the logarithm of a rotation's exponential is X turned back
+    /// by whole turns (§3.2.3.3: the principal θ′ = |θ − 2πk| ∈ [0, π)):
+    /// `log(exp([ω] t)) == [ω] (t − 2πk/‖ω‖)` is true, and a hundredth off
+    /// is false. The oracle: k from the angle in floats; angles within
+    /// 1e-6 of an odd multiple of π (two answers) are left out.
+    #[test]
+    fn past_pi_the_log_turns_back(axis in 0..AXES.len(), a in -2000i32..=2000) {
+        let g = Gen { axis, v: None };
+        let n = g.norm();
+        let theta = (f64::from(a) / 100.0).abs() * n;
+        let k = (theta / std::f64::consts::TAU).round();
+        let off_odd = |j: f64| (theta - std::f64::consts::PI * j).abs() > 1e-6;
+        prop_assume!(k >= 1.0 && off_odd(2.0 * k - 1.0) && off_odd(2.0 * k + 1.0));
+        // (the axes are of norm 1 or 2: 2πk/‖ω‖ is a whole multiple of π)
+        let turns = (2.0 * k / n).round() as i64 * i64::from(a.signum());
+        assert!((2.0 * k / n - (2.0 * k / n).round()).abs() < 1e-12, "axis norm {n}");
+        let t = hundredths(a);
+        let src = format!("log({}) == {}", g.text(&t), g.arg(&format!("{t} - {turns} pi")));
+        prop_assert!(answer(&src), "{src}: not proven");
+        let src = format!("log({}) == {}", g.text(&t), g.arg(&format!("{} - {turns} pi", hundredths(a + 1))));
+        prop_assert!(!answer(&src), "{src}: true of different sides");
+    }
+}
+
+/// The logarithm of a group element that is exactly the identity — a
+/// whole turn, written any way — is 0, and (0, p) for a transform whose
+/// rotation is I (§3.2.3.3 and §3.3.3.2, case (a)); its floats are
+/// rounding (sin 2π = −2.4e-16), which no tolerance relative to 0 can
+/// call rounding, so this is proven from the exact forms. A rotation by
+/// 1e-10 is not the identity.
+#[test]
+fn the_log_of_the_identity_is_zero() {
+    for src in [
+        "log(Rotz(2 pi)) == zeros(3, 3)",
+        "MatrixLog3(Rotz(2 pi) * Rotx(4 pi)) == (0, 0, 0)",
+        "R = exp([(0, 0, 1)] 2 pi)\nlog(R) == [(0, 0, 1)] 0",
+        "log(exp([(0.6, 0.8, 0)] 4 pi)) == zeros(3, 3)",
+        "MatrixLog6(RpToTrans(Rotz(2 pi), (1, 2, 3))) == (0, 0, 0, 1, 2, 3)",
+        "log(exp([(0, 0, 1, 0, 2, 0)] 2 pi)) == zeros(4, 4)",
+        // (a pitched screw's whole turn: a pure translation by 2πh along ẑ)
+        "log(exp([(0, 0, 1, 0, 2, 1)] 2 pi)) == [(0, 0, 0, 0, 0, 1)] 2 pi",
+        // (in turns of π: 5π/2 is π/2 past a whole turn)
+        "log(exp([(0, 0, 1)] 5 pi / 2)) == [(0, 0, 1)] pi / 2",
+    ] {
+        assert!(answer(src), "{src}");
+    }
+    for src in [
+        "log(Rotz(1e-10)) == zeros(3, 3)",
+        "MatrixLog6(RpToTrans(Rotz(2 pi), (1, 2, 3))) == (0, 0, 0, 1, 2, 3.01)",
+        "log(exp([(0, 0, 1, 0, 2, 1)] 2 pi)) == zeros(4, 4)",
+    ] {
+        assert!(!answer(src), "{src}");
     }
 }
 

@@ -11,17 +11,26 @@
 //! shape (skew, its bottom row 0) and the bound is certified by ball
 //! arithmetic, the logarithm's exact form is X's, in the logarithm's
 //! shape (the 3- or 6-vector of `MatrixLog3` and `MatrixLog6`), and every
-//! proof of `==` reads it as it reads X. At ‖ω‖ = π the logarithm has two
-//! answers (±ω̂, the θ = π note), and beyond it, it returns another X: the
-//! logarithm stays a float there, as it does for an X with no exact form
-//! (and in so(2) and se(2), whose exponentials keep no recipe).
+//! proof of `==` reads it as it reads X.
+//!
+//! Past π, a rotation's logarithm is X turned back by whole turns,
+//! ω(1 − 2πk/θ) ([`turned_back`]), when θ is certified between odd
+//! multiples of π; a transform's translation would change too
+//! (G⁻¹(θ′)G(θ)v), and stays a float. At an odd multiple of π the
+//! logarithm has two answers (±ω̂, the θ = π note) and stays a float.
+//! Whatever made it, a group element that is exactly I (a whole turn,
+//! `Rotz(2 pi)`), or a transform whose rotation is, has the logarithm 0 or
+//! [0, p; 0, 0] ([`identity_log`]); its floats are rounding's, which no
+//! tolerance relative to 0 could call rounding. An X with no exact form,
+//! and so(2) and se(2) (whose exponentials keep no recipe), stay floats.
 
 use super::ball;
 use super::certify::PRECISIONS;
 use crate::check::ty::Kind;
+use crate::sym::coef::{Coef, Rat};
 use crate::sym::matrix::{skew, twist_matrix, unskew};
 use crate::sym::{Expr, Mat};
-use crate::values::exact::{Exact, Operation};
+use crate::values::exact::{Exact, Operation, is_exact};
 use crate::values::value::Value;
 
 /// The exact form of `out`, the result of builtin `name` on `args`, when
@@ -35,14 +44,110 @@ pub(crate) fn exact_of(name: &str, args: &[Value], out: &Value) -> Option<Exact>
     let ([arg], Value::Num { m, .. }) = (args, out) else {
         return None;
     };
-    let (group, x) = exponent(arg)?;
-    let v = algebra_vector(&x.exact_form()?, group)?;
+    let of_exponent = |(group, x): (Kind, Value)| {
+        let v = algebra_vector(&x.exact_form()?, group)?;
+        if principal(&v[..3]) {
+            Some(v)
+        } else if v.len() == 3 {
+            // (past π: a rotation's X turned back by whole turns)
+            turned_back(&v)
+        } else {
+            // (a transform's translation would change too, G⁻¹(θ′)G(θ)v:
+            // a float, unless its rotation is I)
+            None
+        }
+    };
+    let v = exponent(arg)
+        .and_then(of_exponent)
+        .or_else(|| identity_log(arg))?;
     let (rows, cols) = m.shape();
     // (the logarithm's shape is its group's: a vector of v's length, or
     // that vector's matrix)
     let side = if v.len() == 3 { 3 } else { 4 };
     let fits = (rows, cols) == (v.len(), 1) || (rows, cols) == (side, side);
-    (fits && principal(&v[..3])).then(|| Exact::known(in_shape(&v, rows, cols)))
+    fits.then(|| Exact::known(in_shape(&v, rows, cols)))
+}
+
+/// The logarithm of a rotation that is exactly I (§3.2.3.3, case (a):
+/// θ = 0, log R = 0), or of a transform whose rotation is exactly I
+/// (§3.3.3.2, case (a): ω = 0, so [S]θ = [0, p; 0, 0]): the vector 0, or
+/// (0, p). Its floats are rounding's (`Rotz(2π)`'s sin 2π is −2.4e-16),
+/// so without this `log(Rotz(2 pi)) == zeros(3, 3)` compared noise with
+/// 0, where no relative tolerance can say "rounding". Only a rotation
+/// within 1e-9 of I in floats has its exact form asked for.
+fn identity_log(e: &Value) -> Option<Vec<Expr>> {
+    let Value::Num { m, kind, .. } = e else {
+        return None;
+    };
+    let n = match kind {
+        Kind::SO3 => 3,
+        Kind::SE3 => 4,
+        _ => return None,
+    };
+    let rows_near = (0..3).all(|i| {
+        m.row(i).take(3).enumerate().all(|(j, x)| {
+            let one = if i == j { 1.0 } else { 0.0 };
+            (x - one).abs() <= 1e-9
+        })
+    });
+    if m.shape() != (n, n) || !rows_near {
+        return None;
+    }
+    let x = e.exact_form()?;
+    let is = |i: usize, j: usize, k: i64| *x.get(i, j) == Expr::int(k);
+    let rotation_is_one = (0..3).all(|i| (0..3).all(|j| is(i, j, i64::from(i == j))));
+    if !rotation_is_one {
+        return None;
+    }
+    let mut v = vec![Expr::default(); 3];
+    if n == 4 {
+        if !(0..3).all(|j| is(3, j, 0)) || !is(3, 3, 1) {
+            return None;
+        }
+        v.extend((0..3).map(|i| x.get(i, 3).clone()));
+    }
+    Some(v)
+}
+
+/// The principal logarithm of e^[ω] for ‖ω‖ = θ past π (§3.2.3.3): the
+/// rotation by θ about ω̂ is the rotation by θ − 2πk, k the whole turns
+/// nearest θ/2π, so its logarithm is ω̂(θ − 2πk) = ω(1 − 2πk/θ) (about −ω̂
+/// when θ − 2πk < 0). None unless |θ − 2πk| < π is certified by ball
+/// arithmetic — at an odd multiple of π the logarithm has two answers (the
+/// θ = π note) — or when θ has no exact form (a square root the exact
+/// numbers do not hold; then the product is no exact form either, and
+/// [`Exact::known`] keeps none).
+fn turned_back(omega: &[Expr]) -> Option<Vec<Expr>> {
+    let square = omega.iter().fold(Expr::default(), |s, w| s.add(&w.mul(w)));
+    let prec = PRECISIONS[0];
+    let pi = ball::pi(prec);
+    let pi2 = ball::mul(&pi, &pi, prec)?;
+    let s = ball::exact(&square, prec)?;
+    // θ/2π from the floats, then certified: (2k − 1)²π² < θ² < (2k + 1)²π²
+    let turns = (ball::floats(&ball::div(&s, &pi2, prec)?).0.sqrt() / 2.0).round();
+    if !(1.0..=1e6).contains(&turns) {
+        return None;
+    }
+    let k = turns as i64;
+    let odd_squared = |j: i64| ball::mul(&ball::int(&(j * j).into()), &pi2, prec);
+    let below = ball::sub(&s, &odd_squared(2 * k - 1)?, prec)?;
+    let above = ball::sub(&odd_squared(2 * k + 1)?, &s, prec)?;
+    let inside = |d: &ball::Ball| ball::nonzero(d) && ball::floats(d).0 > 0.0;
+    if !inside(&below) || !inside(&above) {
+        return None;
+    }
+    // θ = √(θ²), or √(θ²/π²)·π for an angle in turns of π (`[ẑ] 5 pi/2`)
+    let pi_squared = Expr::pi().mul(&Expr::pi());
+    let theta = match square.div(&pi_squared)? {
+        turns if turns.as_const().is_some() => Expr::sqrt(&turns).mul(&Expr::pi()),
+        _ => Expr::sqrt(&square),
+    };
+    let whole = Expr::pi().scale(&Coef::rat(Rat::new(2 * i128::from(k), 1)?));
+    let factor = Expr::int(1).sub(&whole.div(&theta)?);
+    let v: Vec<Expr> = omega.iter().map(|w| w.mul(&factor)).collect();
+    // (an angle a + bπ, or a root the exact numbers do not hold, gives no
+    // exact form: the caller then tries whether e^X is exactly I)
+    is_exact(&Mat::column(v.clone())).then_some(v)
 }
 
 /// The group of e^X and the argument X, when `e` was made by an
@@ -119,7 +224,6 @@ fn principal(omega: &[Expr]) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::sym::coef::{Coef, Rat};
 
     fn q(n: i128, d: i128) -> Expr {
         Expr::constant(Coef::rat(Rat::new(n, d).expect("a fraction")))
@@ -164,5 +268,27 @@ mod tests {
         assert!(!principal(&[q(315, 100), q(0, 1), q(0, 1)]));
         assert!(!principal(&[Expr::pi(), q(0, 1), q(0, 1)]));
         assert!(principal(&[q(0, 1), q(0, 1), q(0, 1)]));
+    }
+
+    #[test]
+    fn past_pi_whole_turns_come_off() {
+        // (0, 0, 4): θ = 4, one turn off, (0, 0, 4 − 2π)
+        let four = [q(0, 1), q(0, 1), q(4, 1)];
+        let turned = turned_back(&four).expect("4 is between π and 3π");
+        assert_eq!(turned[2], q(4, 1).sub(&Expr::pi().scale(&Coef::int(2))));
+        assert_eq!(
+            (&turned[0], &turned[1]),
+            (&Expr::default(), &Expr::default())
+        );
+        // (0, 0, 5π/2): π/2; (0, 0, 3π): two answers, no form
+        let angle = |k: i128| Expr::pi().scale(&Coef::rat(Rat::new(k, 2).expect("k/2")));
+        let turned = turned_back(&[q(0, 1), q(0, 1), angle(5)]).expect("5π/2");
+        assert_eq!(turned[2], angle(1));
+        assert_eq!(turned_back(&[q(0, 1), q(0, 1), angle(6)]), None);
+        // (3, 4, 0)·(7/5): θ = 7, k = 1, ω(1 − 2π/7)
+        let w = [q(21, 5), q(28, 5), q(0, 1)];
+        let turned = turned_back(&w).expect("7 is between π and 3π");
+        let two_pi_seventh = Expr::pi().scale(&Coef::rat(Rat::new(2, 7).expect("2/7")));
+        assert_eq!(turned[0], q(21, 5).sub(&q(21, 5).mul(&two_pi_seventh)));
     }
 }
