@@ -81,6 +81,61 @@ impl Claim {
         }
     }
 
+    /// Why a value of `kind` (as [`Claim::kind_for`] makes it) cannot be
+    /// bound under this name: a rotation or transform name (`R_sb`,
+    /// `T_ab`) requires the group at the binding (LANGUAGE.md §5), so a
+    /// scalar, a vector, a matrix of another shape or another group under
+    /// it is a type error, whether numbers or symbols. A rotation under a
+    /// transform's name stays allowed (a pure rotation, p = 0), and a value
+    /// whose kind is not yet known passes (its numbers are checked when
+    /// they come).
+    fn group_refusal(&self, name: &str, kind: &Kind) -> Option<RuleError> {
+        if !matches!(self.frames, Frames::Pair(..)) {
+            return None;
+        }
+        let (what, groups, make, fits) = match self.letter? {
+            'R' => (
+                "a rotation",
+                "SO(3) or SO(2)",
+                "a rotation (ProjectToSO3(M) for a near one)",
+                matches!(kind, Kind::SO3 | Kind::SO2),
+            ),
+            'T' => (
+                "a transform",
+                "SE(3) or SE(2)",
+                "a transform (RpToTrans(R, p))",
+                matches!(kind, Kind::SE3 | Kind::SE2 | Kind::SO3),
+            ),
+            _ => return None,
+        };
+        let unknown = matches!(
+            kind,
+            Kind::Unknown | Kind::Function | Kind::Matrix(None, _) | Kind::Matrix(_, None)
+        );
+        if fits || unknown {
+            return None;
+        }
+        let other = match self.frames {
+            Frames::Pair(a, b) => tagged_name("M", &[&a.to_string(), &b.to_string()]),
+            _ => "M".into(),
+        };
+        let mut e = RuleError::from(crate::check::rules::Refusal {
+            kind: Some(ErrorKind::Type),
+            message: format!(
+                "{name} names {what}, in {groups}, but the value is {}",
+                kind.a()
+            ),
+            ..Default::default()
+        });
+        e.lhs = format!("says {what}");
+        e.rhs = kind.a();
+        e.help = Some(format!(
+            "{name} is the book's name of {what} (§5): give {} another name ({other}), or bind {make}",
+            kind.a()
+        ));
+        Some(e)
+    }
+
     fn group(&self, kind: &Kind) -> Option<Kind> {
         let n = match kind {
             Kind::Matrix(Some(r), Some(c)) if r == c => *r,
@@ -184,6 +239,9 @@ pub fn bind_in_place(
     ty: &mut Ty,
 ) -> Result<Option<RuleError>, RuleError> {
     let kind = claim.kind_for(ty.kind);
+    if let Some(e) = claim.group_refusal(name, &kind) {
+        return Err(e);
+    }
     // Scalars and bools take no frames from their name (§2, §3).
     if matches!(kind, Kind::Scalar | Kind::Bool) {
         *ty = Ty::new(kind, Frames::None);

@@ -57,6 +57,11 @@ impl Interp<'_> {
                 self.rule_failure(e, value_span, Some(name_span), Some(value_span), None)?;
             }
         }
+        // (a name declared by `given` holds its declared kind: §7)
+        let declared = self.declared(name, &t.ty.kind, name_span, value_span)?;
+        if let Some(group) = declared {
+            t.ty.kind = group;
+        }
         let ty = t.ty.kind;
         // (The value first: checking has none, and kinds compare by a call.)
         if let Some(Value::Num { m, kind, exact }) = t.val.as_deref_mut()
@@ -65,7 +70,11 @@ impl Interp<'_> {
             if ty.is_group() && *kind != ty {
                 let owned = std::mem::replace(m, crate::values::num::Num::Scalar(0.0));
                 let before = owned.clone();
-                *m = self.group_at_binding(&name, &ty, owned, exact, value_span)?;
+                let why = match declared {
+                    Some(_) => Why::Declared,
+                    None => Why::Named,
+                };
+                *m = self.group_at_binding(&name, &ty, why, owned, exact, value_span)?;
                 // Numbers moved onto the group are no longer what was typed.
                 if *m != before {
                     *exact = Default::default();
@@ -105,10 +114,60 @@ impl Interp<'_> {
     /// it has an exact form); within 1e-2 it is projected
     /// (ProjectToSO3/SE3, §3.6) with a warning giving the distance; farther
     /// is a domain error giving the distance (DistanceToSO3/SE3).
+    /// The kind `name` was declared with by `given name : kind`
+    /// (LANGUAGE.md §7), which a value bound to it later must have, as if
+    /// its numbers had been typed first: the same shape, or a type error
+    /// (`given x : scalar; x = (1, 2, 3)`), so that nothing computed from
+    /// the declaration (`R R^T = I` of `given R : SO3`) is silently wrong
+    /// of the numbers. For a group, the group itself is returned: the
+    /// numbers are then checked at the binding as a rotation's or
+    /// transform's name checks them (`given R : SO3; R = M`). None for a
+    /// name not so declared, or a value of the declared kind already.
+    fn declared(
+        &self,
+        name: Name,
+        kind: &Kind,
+        name_span: Span,
+        value_span: Span,
+    ) -> Result<Option<Kind>, Diagnostic> {
+        if !self.env.has_givens() {
+            return Ok(None);
+        }
+        let Some(declared) = self.env.given(name).map(|b| b.ty.kind) else {
+            return Ok(None);
+        };
+        if declared == *kind {
+            return Ok(None);
+        }
+        let (Some(want), Some(got)) = (declared.shape(), kind.shape()) else {
+            return Ok(None);
+        };
+        let known = |(r, c): (Option<usize>, Option<usize>)| r.is_some() && c.is_some();
+        if !known(want) || !known(got) || want == got {
+            return Ok(declared.is_group().then_some(declared));
+        }
+        Err(Diagnostic::error(
+            ErrorKind::Type,
+            value_span,
+            format!(
+                "{name} was declared {} (given {name} : {}), but the value is {}",
+                declared.a(),
+                super::interp::given_spelling(&declared).unwrap_or("…"),
+                kind.a()
+            ),
+        )
+        .with_label(name_span, format!("declared {}", declared.a()))
+        .with_help(format!(
+            "values worked out from {name} assumed {}: declare it again for the new kind (given {name} : …), or bind the value to another name",
+            declared.a()
+        )))
+    }
+
     fn group_at_binding(
         &mut self,
         name: &str,
         kind: &Kind,
+        why: Why,
         m: crate::values::num::Num,
         exact: &crate::values::exact::Exact,
         span: Span,
@@ -135,8 +194,8 @@ impl Interp<'_> {
                         ErrorKind::Domain,
                         span,
                         format!(
-                            "{name} names {}, and the matrix is {:.2e} from {} ({measure}); projected to the nearest element",
-                            group.noun(),
+                            "{}, and the matrix is {:.2e} from {} ({measure}); projected to the nearest element",
+                            why.subject(name, group),
                             d,
                             group.name()
                         ),
@@ -145,21 +204,64 @@ impl Interp<'_> {
                 );
                 Ok(p)
             }
-            Membership::Outside { distance, .. } => Err(Diagnostic::error(
+            Membership::Outside { distance, det } => Err(Diagnostic::error(
                 ErrorKind::Domain,
                 span,
                 format!(
-                    "{name} names {}, but the matrix is {} from {} ({measure})",
-                    group.noun(),
-                    if distance.is_finite() { fmt(distance) } else { "infinitely far".into() },
-                    group.name()
+                    "{}, but {}",
+                    why.subject(name, group),
+                    match (det <= 0.0, group) {
+                        (true, Group::SO3 | Group::SO2) =>
+                            format!("its determinant is {} (a rotation's is 1)", fmt(det)),
+                        (true, _) => format!(
+                            "its rotation block's determinant is {} (a rotation's is 1)",
+                            fmt(det)
+                        ),
+                        (false, _) => format!(
+                            "the matrix is {} from {} ({measure})",
+                            match distance {
+                                // (near the limit of 1e-2, digits enough to see it passed)
+                                d if d < 0.1 => format!("{d:.3e}"),
+                                d if d.is_finite() => fmt(d),
+                                _ => "infinitely far".into(),
+                            },
+                            group.name()
+                        ),
+                    }
                 ),
             )
-            .with_help(format!(
-                "a matrix within 1e-2 of {} is projected onto it; check the entries, or bind it to a name that is not a rotation or transform (M{})",
-                group.name(),
-                name.strip_prefix(crate::syntax::ident::base_name(name)).unwrap_or("")
-            ))),
+            .with_help(match why {
+                Why::Named => format!(
+                    "a matrix within 1e-2 of {} is projected onto it; check the entries, or bind it to a name that is not a rotation or transform (M{})",
+                    group.name(),
+                    name.strip_prefix(crate::syntax::ident::base_name(name)).unwrap_or("")
+                ),
+                Why::Declared => format!(
+                    "a matrix within 1e-2 of {} is projected onto it; check the entries, or bind the matrix to another name (values worked out from {name} assumed {})",
+                    group.name(),
+                    group.name()
+                ),
+            })),
+        }
+    }
+}
+
+/// Why a matrix bound to a name must be in a group (LANGUAGE.md §5, §7).
+#[derive(Clone, Copy)]
+enum Why {
+    /// The book's letter and frames name it one (`R_sb`, `T_ab`).
+    Named,
+    /// `given name : SO3` declared it one.
+    Declared,
+}
+
+impl Why {
+    /// The message's subject: "R_ab names a rotation matrix", "R was
+    /// declared an SO(3)".
+    fn subject(self, name: &str, group: super::convert::Group) -> String {
+        match self {
+            Why::Named => format!("{name} names {}", group.noun()),
+            Why::Declared => format!("{name} was declared an {}", group.name()),
         }
     }
 }

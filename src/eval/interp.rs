@@ -454,23 +454,34 @@ impl Interp<'_> {
     }
 }
 
-/// The kinds `given` accepts (LANGUAGE.md §7).
+/// The kinds `given` accepts (LANGUAGE.md §7), as the declaration spells
+/// them (`given u : vec3`).
+const GIVEN_KINDS: [(&str, Kind); 12] = [
+    ("scalar", Kind::Scalar),
+    ("vec3", Kind::Vector(Some(3))),
+    ("vec6", Kind::Vector(Some(6))),
+    ("SO3", Kind::SO3),
+    ("SE3", Kind::SE3),
+    ("SO2", Kind::SO2),
+    ("SE2", Kind::SE2),
+    ("so3", Kind::So3),
+    ("se3", Kind::Se3),
+    ("twist", Kind::Twist),
+    ("screw", Kind::Screw),
+    ("wrench", Kind::Wrench),
+];
+
+/// The kind `given x : name` declares (LANGUAGE.md §7).
 pub fn given_kind(name: &str) -> Option<Kind> {
-    Some(match name {
-        "scalar" => Kind::Scalar,
-        "vec3" => Kind::Vector(Some(3)),
-        "vec6" => Kind::Vector(Some(6)),
-        "SO3" => Kind::SO3,
-        "SE3" => Kind::SE3,
-        "SO2" => Kind::SO2,
-        "SE2" => Kind::SE2,
-        "so3" => Kind::So3,
-        "se3" => Kind::Se3,
-        "twist" => Kind::Twist,
-        "screw" => Kind::Screw,
-        "wrench" => Kind::Wrench,
-        _ => return None,
-    })
+    GIVEN_KINDS
+        .iter()
+        .find(|(n, _)| *n == name)
+        .map(|(_, k)| *k)
+}
+
+/// How `given` spells `kind` (`vec3` for a 3-vector), if it declares it.
+pub fn given_spelling(kind: &Kind) -> Option<&'static str> {
+    GIVEN_KINDS.iter().find(|(_, k)| k == kind).map(|(n, _)| *n)
 }
 
 #[cfg(test)]
