@@ -294,3 +294,36 @@ fn a_vector_of_typed_numbers_is_exact() {
     );
     assert_eq!(last("v = (1, 2, 3, 4, 5, 6)\nv[6]"), 6.0);
 }
+
+/// A sum whose floats cancel prints its exact value (LANGUAGE.md §7:
+/// "Arithmetic keeps exact numbers exact … an integer coefficient is
+/// never rounded"; §1: JSON numbers are full precision): the floats of
+/// `123456789012345678901 - 123456789012345678900` are 0, its value 1.
+/// A float with no exact form keeps its floats.
+#[test]
+fn a_cancelled_sum_prints_its_exact_value() {
+    for (src, want) in [
+        ("123456789012345678901 - 123456789012345678900", 1.0),
+        ("(10^16 + 1) - 10^16", 1.0),
+        ("2^100 + 1 - 2^100", 1.0),
+        ("0.1 + 0.2 - 0.3", 0.0),
+        ("pi + 1 - pi", 1.0),
+        ("-(10^20) + (10^20 + 3)", 3.0),
+        ("sin(1) + 1e-20 - sin(1)", 0.0),
+    ] {
+        assert_eq!(number(src), want, "{src}");
+    }
+    assert_eq!(
+        common::last_numbers("(1e16, 2, 3) + (1, 0, 0) - (1e16, 0, 0)"),
+        vec![1.0, 2.0, 3.0]
+    );
+    // (the differential: for integers past 2^53, (a + b) − a is b, as
+    // the same sum typed exactly as b would be)
+    for b in [-7i128, -1, 1, 2, 5, 1000, 123_456] {
+        for k in 0..6 {
+            let a = 9_007_199_254_740_993i128 * 31i128.pow(k) + 17;
+            let src = format!("({a} + {b}) - {a}");
+            assert_eq!(number(&src), b as f64, "{src}");
+        }
+    }
+}

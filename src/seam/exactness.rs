@@ -11,6 +11,7 @@ use std::sync::OnceLock;
 use super::apply::Op;
 use crate::check::ty::Kind;
 use crate::sym::Mat;
+use crate::syntax::ast::BinOp;
 use crate::values::error::OpError;
 use crate::values::exact::{Exact, Operands, Operation, Pending};
 use crate::values::formula;
@@ -29,9 +30,42 @@ impl Op<'_> {
             && a.may_be_exact()
             && b.may_be_exact()
         {
+            let cancels = self.cancels(&args);
             *exact = self.exact_of_pair(a, b, kind);
+            if cancels {
+                from_exact_form(&mut v);
+            }
         }
         Ok(v)
+    }
+
+    /// True when this is a sum or difference of numbers (that may be
+    /// exact: the caller asks) whose floats cancelled: an entry of the result smaller than
+    /// 2⁻²⁶ of its larger operand's, half the digits lost or more. Then
+    /// the floats may be rounding's alone — `123456789012345678901 -
+    /// 123456789012345678900` is 0 in floats and 1 exactly — and the
+    /// result's floats are made from its exact form ([`from_exact_form`]),
+    /// so that what prints, and JSON's full-precision numbers, are the
+    /// value `==` decides on (LANGUAGE.md §7: "Arithmetic keeps exact
+    /// numbers exact"). A broadcast operand (a scalar plus a matrix) is
+    /// left as it is.
+    fn cancels(self, args: &[&Value; 2]) -> bool {
+        if !matches!(self, Op::Arith(BinOp::Add | BinOp::Sub)) {
+            return false;
+        }
+        let [Value::Num { m: x, .. }, Value::Num { m: y, .. }] = args else {
+            return false;
+        };
+        x.shape() == y.shape()
+            && x.iter().zip(y.iter()).any(|(p, q)| {
+                let big = p.abs().max(q.abs());
+                let sum = if matches!(self, Op::Arith(BinOp::Add)) {
+                    p + q
+                } else {
+                    p - q
+                };
+                big > 0.0 && big.is_finite() && sum.abs() <= big * CANCELLED
+            })
     }
 
     /// `v`, the result of this operation on numbers `args`, with its exact
@@ -393,5 +427,31 @@ mod tests {
             &Kind::Scalar,
         );
         assert!(f.is_float());
+    }
+}
+
+/// How small a sum's entry must be against its larger operand for the
+/// floats to have cancelled ([`Op::cancels`]): 2⁻²⁶, half of a double's
+/// 53 bits of precision lost.
+const CANCELLED: f64 = 1.0 / 67_108_864.0;
+
+/// Gives the numbers `v` the floats of its exact form (each entry the
+/// float nearest its exact value, as far as `Expr::as_f64` reads it),
+/// when it has one whose entries are all real numbers; leaves `v` as it is
+/// otherwise (no exact form, or π's powers that do not fit a float).
+fn from_exact_form(v: &mut Value) {
+    let Some(form) = v.exact_form() else {
+        return;
+    };
+    let Some(xs) = form.as_f64() else {
+        return;
+    };
+    if let Value::Num { m, .. } = v
+        && m.shape() == (form.rows, form.cols)
+        && xs.iter().all(|x| x.is_finite())
+    {
+        *m = crate::values::num::Num::from_dmatrix(nalgebra::DMatrix::from_row_slice(
+            form.rows, form.cols, &xs,
+        ));
     }
 }
