@@ -72,10 +72,94 @@ fn superscripts_transpose_and_invert() {
     same(SETUP, "(1 - cos θ)[w]²", "(1 - cos(θ)) * [w]^2");
     // `^T` transposes even when a name T is bound.
     same(&format!("{SETUP}\nT = 2"), "R^T", "R.T");
-    // e^(x) is exp(x) for matrices; a scalar power of e is unchanged.
+    // e^(x) is exp(x) for matrices and for scalars (tested below).
     same(SETUP, "e^(A t)", "exp(A * t)");
     same(SETUP, "e^([w] θ)", "exp([w] * θ)");
-    same(SETUP, "e^2", "2.718281828459045^2");
+    same(SETUP, "e^2", "exp(2)");
+}
+
+/// What `setup` then `x` prints, the setup's own lines left out.
+fn shown(setup: &str, x: &str) -> String {
+    let all = common::printed(&format!("{setup}\n{x}"));
+    let before = common::printed(setup);
+    all.strip_prefix(&before).unwrap_or(&all).to_string()
+}
+
+/// `e^(x)` is `exp(x)` (LANGUAGE.md §4) for scalars and symbols as for
+/// matrices: the same value, the same exact form (so `==` is true, not
+/// false by rounding), the same closed form, derivative and explanation;
+/// `e^x` and `e^-t` are the same powers of e. A bound `e` is its value.
+#[test]
+fn e_to_a_scalar_is_exp() {
+    let given = "given t : scalar\nw = (0, 0, 1)";
+    for (a, b) in [
+        ("e^(t)", "exp(t)"),
+        ("e^t", "exp(t)"),
+        ("e^-t", "exp(-t)"),
+        ("e^{t}", "exp(t)"),
+        ("e^(2 t) + 1", "exp(2 t) + 1"),
+        ("diff(e^(t), t)", "diff(exp(t), t)"),
+        ("diff(e^(t^2), t)", "diff(exp(t^2), t)"),
+        ("e^([w] t)", "exp([w] t)"),
+        ("explain e^([w] t)", "explain exp([w] t)"),
+        ("explain e^([w] 0.5)", "explain exp([w] 0.5)"),
+    ] {
+        assert_eq!(shown(given, a), shown(given, b), "{a} vs {b}");
+    }
+    // diff's steps quote the source (`d/dt e^(t^2): …`): the same rules
+    // and values, node by node
+    let rules = |x: &str| -> Vec<String> {
+        shown(given, x)
+            .lines()
+            .map(|l| match l.split_once(": ") {
+                Some((step, rule)) if step.contains("d/dt") => rule.to_string(),
+                _ => l.to_string(),
+            })
+            .collect()
+    };
+    assert_eq!(
+        rules("explain diff(e^(t^2), t)"),
+        rules("explain diff(exp(t^2), t)")
+    );
+    // the closed form and its derivative print as exp's (it printed
+    // 2.718281828459045^t and left diff(2.718281828459045^t, t) unevaluated)
+    assert_eq!(shown(given, "e^(t)"), "exp(t)\n");
+    assert_eq!(shown(given, "diff(e^(t), t)"), "exp(t)\n");
+    assert_eq!(shown(given, "diff(e^-t, t)"), "-exp(-t)\n");
+    let chain = shown(given, "explain diff(e^(t), t)");
+    assert!(
+        chain.contains("chain rule") && !chain.contains("power rule"),
+        "{chain}"
+    );
+    // == decides by exp's exact form (it said false by rounding, or cannot
+    // decide, before)
+    for eq in [
+        "e^(t) == exp(t)",
+        "e^-t == exp(-t)",
+        "e^(2) == exp(2)",
+        "e^2 == exp(2)",
+        "e^(-1) == exp(-1)",
+        "e^(1/2) == sqrt(exp(1))",
+        "e^(log(5)) == 5",
+        "e^(2) e^(3) == e^(5)",
+    ] {
+        assert_eq!(shown(given, eq), "true\n", "{eq}");
+    }
+    assert_eq!(shown(given, "e^(0)"), "1\n");
+    // numbers bound later: exp's value, as typed first
+    assert_eq!(
+        common::printed("given s\ny = e^(s) == exp(1);\ns = 1;\ny"),
+        "true\n"
+    );
+    assert_eq!(
+        common::printed("given s\ny = e^(s);\ns = 2;\ny == exp(2)"),
+        "true\n"
+    );
+    // a bound e is a value like any other: its powers are powers
+    assert_eq!(common::printed("e = 3;\ne^(2)"), "9\n");
+    assert_eq!(common::printed("e = 3;\ne^(2) == 9"), "true\n");
+    assert_eq!(common::printed("f(e) = e^2;\nf(3)"), "9\n");
+    assert_eq!(common::printed("given e;\ne^(2)"), "e^2\n");
 }
 
 #[test]

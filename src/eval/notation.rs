@@ -45,6 +45,12 @@ fn mentions_identity_in(e: &Expr) -> bool {
     }
 }
 
+/// The name `e` as written, the base of `e^x` (Euler's number when no
+/// variable `e` is bound).
+pub(super) fn is_euler(e: &Expr) -> bool {
+    matches!(&e.kind, ExprKind::Var(n) if n == "e")
+}
+
 /// Rows and columns of a checked operand.
 fn dims(t: &Typed) -> Option<(usize, usize)> {
     if let Some(Value::Num { m, .. }) = t.val.as_deref() {
@@ -171,26 +177,47 @@ impl Interp<'_> {
         Ok(Typed::new(Ty::plain(kind), val))
     }
 
-    /// `e^x` with `e` unbound and `x` not a scalar: `exp(x)`.
+    /// `e^x` with `e` unbound is `exp(x)` (LANGUAGE.md §4), whatever x
+    /// is: a number (exact or float), a symbol (so `diff(e^(t), t)` and
+    /// `e^(t) == exp(t)` are exp's), a matrix (`e^(A t)`, e^{[ω]θ}).
+    /// None when `e` is bound: `e = 3; e^(2)` is 9.
     pub(super) fn e_power(
         &mut self,
         lhs: &Expr,
         rhs: &Expr,
         span: Span,
     ) -> Option<Result<Typed, Diagnostic>> {
-        if !matches!(&lhs.kind, ExprKind::Var(e) if e == "e")
-            || self.env.get(*super::env::EULER).is_some()
-        {
-            return None;
-        }
-        let r = match self.probe(rhs) {
-            Ok(r) => r,
-            Err(e) => return Some(Err(e)),
-        };
-        if r.ty.kind.maybe_scalar() {
+        if !is_euler(lhs) || self.env.get(*super::env::EULER).is_some() {
             return None;
         }
         Some(self.call(*super::env::EXP, lhs.span, std::slice::from_ref(rhs), span))
+    }
+
+    /// `e^x` with `e` unbound, written as the call `exp(x)` it is (for
+    /// `explain`, whose steps are exp's); None for any other expression.
+    pub(super) fn euler_call(&self, e: &Expr) -> Option<Expr> {
+        let ExprKind::Binary {
+            op: BinOp::Pow,
+            lhs,
+            rhs,
+            ..
+        } = &e.kind
+        else {
+            return None;
+        };
+        if !is_euler(lhs) || self.env.get(*super::env::EULER).is_some() {
+            return None;
+        }
+        Some(Expr {
+            kind: ExprKind::Call {
+                func: crate::syntax::ast::Ident {
+                    name: *super::env::EXP,
+                    span: lhs.span,
+                },
+                args: vec![(**rhs).clone()],
+            },
+            span: e.span,
+        })
     }
 
     /// A power in the book's notation: `e^(A t)` ([`Interp::e_power`]),

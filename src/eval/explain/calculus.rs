@@ -160,6 +160,9 @@ impl Interp<'_> {
     }
 
     fn diff_node(&mut self, x: &Expr, t: &Expr, out: &mut Vec<Shown>) -> Result<(), Diagnostic> {
+        // e^g is exp(g) (§4): the chain rule, not the power rule
+        let euler = self.euler_call(x);
+        let x = euler.as_ref().unwrap_or(x);
         let (rule, latex, children): (&str, &str, Vec<&Expr>) = match &x.kind {
             ExprKind::Binary { op, lhs, rhs, .. } => match op {
                 BinOp::Add | BinOp::Sub => (

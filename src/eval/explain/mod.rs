@@ -250,6 +250,9 @@ impl Interp<'_> {
             });
             return Ok(Some(steps));
         }
+        if let Some(call) = self.euler_call(e) {
+            return self.steps_of(&call, value); // e^x is exp(x) (§4)
+        }
         match &e.kind {
             ExprKind::Paren(items) if items.len() == 1 => self.steps_of(&items[0], value),
             ExprKind::Call { func, args } => {
