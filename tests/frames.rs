@@ -463,3 +463,101 @@ fn only_the_books_letters_name_screws_twists_and_wrenches() {
         );
     }
 }
+
+// A free vector is not a point (LANGUAGE.md §4), with numbers and with
+// symbols alike (§7): the contract sweep of session 28 found `given w_b :
+// vec3` let `T_sb * w_b` through (a `given` vector took no role from its
+// letters), so a derivation checked with symbols passed what numbers refuse.
+
+/// The verdict on the last statement of `src`: its frames, or its error's
+/// kind, message and help.
+fn verdict(src: &str, mode: Mode) -> Result<Vec<String>, [String; 3]> {
+    let mut s = Session::new(Settings {
+        json: true,
+        ..Settings::default()
+    });
+    let (out, _err, _) = s.run_to_strings("t.chs", src, mode, false);
+    let line = out.lines().last().expect("a result");
+    let v: serde_json::Value = serde_json::from_str(line).unwrap();
+    if let Some(e) = v.get("error") {
+        let text = |k: &str| e[k].as_str().unwrap_or("").to_string();
+        return Err([text("kind"), text("message"), text("help")]);
+    }
+    Ok(v["frames"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|f| f.as_str().unwrap().to_string())
+        .collect())
+}
+
+/// The verdicts on `expr` with numbers, with symbols (run) and with
+/// symbols (`chasles check`), all three the same.
+fn one_verdict(expr: &str) -> Result<Vec<String>, [String; 3]> {
+    const NUMBERS: &str = "T_sb = Trans((1, 2, 3))\nR_sb = Rotz(0.3)\nω_b = (0, 0, 1)\n\
+w_b = (0, 0, 1)\nV_b = (0, 0, 1, 1, 0, 0)\nv_b = V_b.v\nf_b = (0, 1, 0)\nm_b = (1, 1, 0)\nŝ_b = (0, 0, 1)\n\
+p_b = (1, 2, 3)\nq = (3, 2, 1)\ngiven u_b : free\nu_b = (0, 1, 0)\ngiven c_b, n_b : point\n\
+c_b = (1, 0, 0)\nn_b = (0, 0, 2)\n";
+    const SYMBOLS: &str = "given T_sb : SE3\ngiven R_sb : SO3\n\
+given ω_b, w_b, v_b, f_b, m_b, ŝ_b, p_b, q : vec3\ngiven u_b : free\ngiven c_b, n_b : point\n";
+    let numbers = verdict(&format!("{NUMBERS}{expr}\n"), Mode::Run);
+    let symbols = verdict(&format!("{SYMBOLS}{expr}\n"), Mode::Run);
+    let checked = verdict(&format!("{SYMBOLS}{expr}\n"), Mode::Check);
+    assert_eq!(numbers, symbols, "{expr}: numbers vs symbols");
+    assert_eq!(symbols, checked, "{expr}: run vs check");
+    numbers
+}
+
+#[test]
+fn a_transform_refuses_free_vectors_with_numbers_and_symbols_alike() {
+    for (v, what) in [
+        ("ω_b", "an angular velocity"),
+        ("w_b", "an angular velocity"),
+        ("v_b", "a linear velocity"),
+        ("f_b", "a force"),
+        ("m_b", "a moment"),
+        ("ŝ_b", "a unit axis"),
+        ("u_b", "a free vector"),
+    ] {
+        for expr in [format!("T_sb * {v}"), format!("x_s = T_sb * {v}")] {
+            let Err([kind, message, help]) = one_verdict(&expr) else {
+                panic!("{expr}: a transform moved a free vector");
+            };
+            assert_eq!(kind, "type", "{expr}");
+            assert_eq!(
+                message,
+                format!(
+                    "T_sb * {v} applies a transform to a free vector: {v} is {what}, not a point"
+                )
+            );
+            assert!(
+                help.contains(&format!("write T_sb.R * {v} (the book's R_sb {v})")),
+                "{expr}: {help}"
+            );
+        }
+        // a rotation moves it: R ω (3.35)
+        assert_eq!(one_verdict(&format!("T_sb.R * {v}")), Ok(vec!["s".into()]));
+        assert_eq!(one_verdict(&format!("R_sb * {v}")), Ok(vec!["s".into()]));
+    }
+    // v_b may be a point (Fig. 3.13): the help says how to declare it
+    // (numbers typed as a literal, `v_b = (0, 0, 1.5)`, are the figure's
+    // point already; the numbers above are a twist's linear velocity)
+    let Err([_, _, help]) = one_verdict("T_sb * v_b") else {
+        panic!("T_sb * v_b");
+    };
+    assert!(help.ends_with("given v_b : point"), "{help}");
+    // points move: p_b, q by their letters, c_b and n_b declared
+    for p in ["p_b", "c_b", "n_b"] {
+        assert_eq!(one_verdict(&format!("T_sb * {p}")), Ok(vec!["s".into()]));
+    }
+    assert_eq!(one_verdict("T_sb * q"), Ok(vec!["s".into()]));
+    // a derivation over symbols stops where numbers would: x_s never gets
+    // the point transform's (1, 2, 4)
+    let err = common::error(
+        "given T_sb : SE3\ngiven w_b : vec3\nx_s = T_sb * w_b\nT_sb = Trans((1, 2, 3))\nw_b = (0, 0, 1)\nx_s\n",
+    );
+    assert!(
+        err.contains("3:12: type error: T_sb * w_b applies a transform to a free vector"),
+        "{err}"
+    );
+}

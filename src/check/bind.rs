@@ -60,6 +60,25 @@ impl Claim {
         }
     }
 
+    /// Whether a vector of `kind` bound to this name is a free vector
+    /// (ω, v, f, m, an axis, or declared `: free`), which a transform does
+    /// not move (§4): Some when the name says (a point's name says no),
+    /// None when it says nothing and the value's own flag stands.
+    pub fn free_for(&self, kind: &Kind) -> Option<bool> {
+        self.role.map(|role| role.is_free() && kind.is_vector())
+    }
+
+    /// The type this name gives a value known by its kind only (`given
+    /// w_b : vec3`): the frames of its subscript, and a free vector when
+    /// its letters say so — as for numbers bound to it
+    /// ([`bind_in_place`]), so symbols are checked exactly like numbers
+    /// (§7: `T_sb * ω_b` is refused either way).
+    pub fn given_ty(&self, kind: Kind) -> Ty {
+        let mut ty = Ty::new(kind, self.frames_for(&kind));
+        ty.free = self.free_for(&kind).unwrap_or(false);
+        ty
+    }
+
     /// The kind a value of `kind` gets under this name: the book's letters
     /// name the kind of a plain 6-vector ([`named_kind`]) and the group of
     /// a square matrix ([`named_group`]).
@@ -155,15 +174,6 @@ impl Claim {
     }
 }
 
-/// The frames a name claims, as a tag for a value of `kind`
-/// ([`Claim::frames_for`]).
-pub fn claimed_frames(name: &str, kind: &Kind) -> Frames {
-    if matches!(kind, Kind::Scalar | Kind::Bool) {
-        return Frames::None;
-    }
-    Claim::of(name).frames_for(kind)
-}
-
 /// The book's letter of a name, when the name is one of the book's names
 /// for a 6-vector or a group element: one letter, optionally followed by
 /// digits, then optionally a frame or index subscript (`S`, `S1`, `S_b`,
@@ -247,10 +257,7 @@ pub fn bind_in_place(
         *ty = Ty::new(kind, Frames::None);
         return Ok(None);
     }
-    ty.free = match claim.role {
-        Some(role) => role.is_free() && kind.is_vector(),
-        None => ty.free && kind.is_vector(),
-    };
+    ty.free = claim.free_for(&kind).unwrap_or(ty.free && kind.is_vector());
     let claim = claim.frames_for(&kind);
     let mut warning = None;
     let frames = match (claim, ty.frames) {
@@ -416,7 +423,34 @@ mod tests {
     fn scalars_take_no_frames_from_their_name() {
         let b = bind("theta_b", &Ty::scalar()).unwrap();
         assert_eq!(b.ty, Ty::scalar());
-        assert_eq!(claimed_frames("P_b", &Kind::Scalar), Frames::None);
+        assert_eq!(Claim::of("P_b").given_ty(Kind::Scalar), Ty::scalar());
+    }
+
+    #[test]
+    fn a_given_vector_is_free_or_a_point_as_numbers_bound_to_it_are() {
+        let vec3 = Kind::Vector(Some(3));
+        for (name, free) in [
+            ("ω_b", true),
+            ("w_b", true),
+            ("v_s", true),
+            ("f_a", true),
+            ("m", true),
+            ("ŝ", true),
+            ("x_a", true),
+            ("p_b", false),
+            ("q", false),
+            ("u_b", false),
+        ] {
+            let given = Claim::of(name).given_ty(vec3);
+            assert_eq!(given.free, free, "{name}");
+            // the same type as numbers bound to the name (§7)
+            assert_eq!(bind(name, &Ty::plain(vec3)).unwrap().ty, given, "{name}");
+        }
+        let w = Claim::of("w_b").given_ty(vec3);
+        assert_eq!(w.frames, Frames::one("b"));
+        // only vectors are free: a transform named w is not
+        assert!(!Claim::of("w_sb").given_ty(Kind::SE3).free);
+        assert!(!Claim::of("ω").given_ty(Kind::Scalar).free);
     }
 
     #[test]

@@ -5,7 +5,6 @@
 
 use super::env::{Binding, Env, FrameMode, Mode, Stored};
 use super::value::{UserFn, Value};
-use crate::check::bind;
 use crate::check::rules::RuleError;
 use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
@@ -257,7 +256,9 @@ impl<'a> Interp<'a> {
                     if let Some(t) = time {
                         self.bind_time(t, &kind)?;
                     }
-                    let frames = bind::claimed_frames(&n.name, &kind);
+                    // (its frames and, for a vector, free or point by its
+                    // letters: the claim numbers bound to it would make)
+                    let ty = self.env.claim(n.name).given_ty(kind);
                     // A scalar is computed with (§7); other kinds stay names.
                     let val = if kind == Kind::Scalar {
                         let s = match time {
@@ -268,8 +269,7 @@ impl<'a> Interp<'a> {
                     } else {
                         Value::Sym(super::value::Sym::Name(String::from(n.name)))
                     };
-                    self.env
-                        .set(n.name, Binding::given(Ty::new(kind, frames), val));
+                    self.env.set(n.name, Binding::given(ty, val));
                 }
                 let mut o = out(Names::Many(Vec::new()), Typed::new(Ty::plain(kind), None));
                 o.prints = false;

@@ -89,9 +89,7 @@ impl Interp<'_> {
                 b.ty.free = free;
                 continue;
             }
-            let kind = Kind::Vector(Some(len));
-            let mut ty = Ty::new(kind, claim.frames_for(&kind));
-            ty.free = free;
+            let ty = claim.given_ty(Kind::Vector(Some(len)));
             let val = Value::Sym(Sym::Name(String::from(n.name)));
             self.env.set(
                 n.name,
