@@ -68,7 +68,7 @@ pub const COMMANDS: &[Command] = &[
     Command {
         name: "exact",
         args: "[on|off]",
-        doc: "toggle exact forms: exact numbers as 1/√2, √3/2, π/6, floats as decimals",
+        doc: "toggle exact forms: exact numbers as 1/√2, √3/2, π/6, and floats within 1e-12 of such a form",
     },
     Command {
         name: "short",
@@ -429,7 +429,7 @@ fn exact(session: &mut Session, arg: &str) -> Reply {
     };
     session.settings.exact = on;
     Reply::out(if on {
-        "exact: on (exact numbers print as such: 1/√2, √3/2, π/6; floats as decimals)"
+        "exact: on (exact numbers print as such: 1/√2, √3/2, π/6; so do floats within 1e-12 of such a form)"
     } else {
         "exact: off"
     })

@@ -41,15 +41,33 @@ impl Style {
     }
 }
 
-/// The exact form `--exact` prints for a value (LANGUAGE.md §10): its
+/// The exact form `--exact` prints for a value (LANGUAGE.md §1, §10): its
 /// entries as exact numbers (`1/√2`, `(1/9) π`), when it has an exact form
-/// that is not just the decimals it prints anyway (`0.866` stays `0.866`).
+/// that is not just the decimals it prints anyway (`0.866` stays `0.866`);
+/// for a float with none, the simple closed forms it is within 1e-12 of.
 #[inline]
 pub fn exact_text(v: &Value, style: Style) -> Option<Mat> {
-    if !style.exact || style.sym == Mode::Latex || !v.may_be_exact() {
+    if !style.exact || style.sym == Mode::Latex {
         return None;
     }
+    if !v.may_be_exact() || v.exact_form().is_none() {
+        return closed_form_text(v, style.digits);
+    }
     exact_form_text(v, style.digits)
+}
+
+/// The simple closed forms `--exact` prints for a float with no exact form
+/// ([`super::closed_form`]: within 1e-12 of `π/3`, `1/√2`), when every
+/// entry has one and they are not just the decimals it prints anyway.
+#[cold]
+fn closed_form_text(v: &Value, digits: usize) -> Option<Mat> {
+    let Value::Num { m, .. } = v else {
+        return None;
+    };
+    let (rows, cols) = m.shape();
+    let xs: Vec<f64> = (0..rows).flat_map(|i| m.row(i)).collect();
+    super::closed_form::of_floats(&xs, rows, cols)
+        .filter(|f| !super::exact::prints_as_decimals(f, digits, m))
 }
 
 /// [`exact_text`] once `--exact` asks for it.

@@ -7,13 +7,15 @@
 //! matrix belongs to ([`convert`]), the arithmetic of the language on values
 //! ([`ops`]: products, powers, inverses, members, indexing, brackets, with
 //! their errors in [`error`]), and
-//! numbers as text (`number`, `exact`, `format`), and decisions from a
+//! numbers as text (`number`, `exact`, `format`, and the simple closed
+//! forms `--exact` prints for floats, [`closed_form`]), and decisions from a
 //! number's value by its exact form when it has one ([`domain`]). It imports only
 //! `check`'s kinds, `syntax`'s tree (a user function's body), `lie` and
 //! `mech`; `builtins` and `eval` build on it. `crate::eval::{value, ops,
 //! convert, symbolic}` and `crate::output::{number, exact}` re-export these
 //! modules under their former paths.
 
+pub mod closed_form;
 pub mod convert;
 pub mod domain;
 pub mod equality;
