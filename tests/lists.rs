@@ -111,3 +111,54 @@ fn the_grammar_reads_ranges_comprehensions_and_strings() {
     // Indexing and `given` keep their colons.
     assert!(one("M[:, 1]").is_ok() && one("given T_ab : SE3").is_ok());
 }
+
+#[test]
+fn a_sum_of_group_elements_is_a_plain_matrix_as_with_plus() {
+    let run = |src: &str| {
+        let mut s = Session::new(Settings::default());
+        s.run_to_strings("t", src, Mode::Run, false)
+    };
+    // SO(3), SE(3) and the adjoints are not closed under addition: `sum`
+    // gives what `+` gives (Rotz(0) + Rotz(1) is a 3×3 matrix).
+    for (src, want) in [
+        ("sum([Rotz(k) for k in 0:1])", "2]  : 3×3 matrix"),
+        ("Rotz(0) + Rotz(1)", "2]  : 3×3 matrix"),
+        ("sum([Trans((1, 0, 0)) for k in 1:3])", "3]  : 4×4 matrix"),
+        (
+            "sum([Ad(Trans((0, 0, k))) for k in 1:2])",
+            "2]  : 6×6 matrix",
+        ),
+        (
+            "Ad(Trans((0, 0, 1))) + Ad(Trans((0, 0, 2)))",
+            "2]  : 6×6 matrix",
+        ),
+        // Twists keep what `+` keeps, and their frame; screws sum to a twist.
+        (
+            "V_s = (1, 0, 0, 0, 0, 1)\nsum([V_s for k in 1:2])",
+            "(2, 0, 0, 0, 0, 2)  : twist {s}",
+        ),
+        (
+            "S = (0, 0, 1, 0, 0, 0)\nsum([S for k in 1:3])",
+            "(0, 0, 3, 0, 0, 0)  : twist",
+        ),
+    ] {
+        let (out, err, n) = run(src);
+        assert_eq!(n, 0, "{src}: {err}");
+        assert!(out.trim_end().ends_with(want), "{src}: {out}");
+    }
+    // So the log of such a sum is the log of the same literal matrix: a
+    // domain error with the distance, not a number.
+    let (out, err, n) = run("MatrixLog3(sum([Rotz(k) for k in 0:1]))");
+    assert_eq!((n, out.as_str()), (1, ""), "{err}");
+    assert!(err.contains("distance from SO(3) is 4.2021"), "{err}");
+    let (_, err, n) = run("R_sb = sum([Rotz(k) for k in 0:1])");
+    assert_eq!(n, 1);
+    assert!(err.contains("is 4.2021 from SO(3)"), "{err}");
+    // JSON names the kind "matrix", not "SO3".
+    let mut j = Session::new(Settings {
+        json: true,
+        ..Settings::default()
+    });
+    let (out, _, _) = j.run_to_strings("t", "sum([Rotz(k) for k in 0:1])\n", Mode::Run, false);
+    assert!(out.contains("\"type\":\"matrix\""), "{out}");
+}

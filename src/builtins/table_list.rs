@@ -4,6 +4,7 @@
 use std::rc::Rc;
 
 use super::{Area, ArgError, Args, Builtin, Typing};
+use crate::check::rules;
 use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
 use crate::values::ops;
@@ -46,11 +47,15 @@ fn eval_len(a: &mut Args) -> Result<Value, Diagnostic> {
     Ok(Value::scalar(elements(a, 0)?.len() as f64))
 }
 
-/// `sum` of a list keeps its elements' kind and frames (a sum of twists in
-/// {s} is a twist in {s}); of a vector, a number.
+/// `sum` of a list is its items added with `+` (LANGUAGE.md §6): the kind
+/// `+` gives and the items' frames (a sum of twists in {s} is a twist in
+/// {s}; of rotations a plain 3×3 matrix, as Rotz(0) + Rotz(1) is, since
+/// SO(3) is not closed under addition); of a vector, a number.
 fn sum_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     match &args[0].kind {
-        Kind::List(k) => Ok(Ty::new(**k, args[0].frames)),
+        Kind::List(k) => rules::add_kind(k, k)
+            .map(|kind| Ty::new(kind, args[0].frames))
+            .map_err(|e| ArgError::type_of(0, format!("sum of a list: {}", e.message.clone()))),
         Kind::Unknown => Ok(Ty::plain(Kind::Unknown)),
         k if k.is_vector() => Ok(Ty::scalar()),
         k => Err(ArgError::type_of(
@@ -65,9 +70,11 @@ fn eval_sum(a: &mut Args) -> Result<Value, Diagnostic> {
     let Some(first) = items.first() else {
         return Ok(Value::scalar(0.0));
     };
-    let kind = first.kind();
     let mut acc = first.clone();
     for v in items.iter().skip(1) {
+        // (each step's kind is the one `+` gives: SO(3) + SO(3) is a matrix)
+        let kind = rules::add_kind(&acc.kind(), &v.kind())
+            .map_err(|e| a.error(0, ErrorKind::Type, e.message.clone()))?;
         acc = ops::add(&acc, v, false, &kind)
             .map_err(|m| a.error(0, ErrorKind::Type, m.to_string()))?;
     }
@@ -136,9 +143,9 @@ pub fn builtins() -> Vec<Builtin> {
         Builtin {
             name: "sum",
             aliases: &[],
-            signature: "sum(xs: list | vector) -> element kind | scalar",
+            signature: "sum(xs: list | vector) -> kind of + | scalar",
             section: "§12 (docs/language.md)",
-            doc: "the sum of a list's items (twists in {s} sum to a twist in {s}), or of a vector's entries",
+            doc: "the sum of a list's items, typed as + types it (twists in {s} sum to a twist in {s}, rotations to a plain 3×3 matrix), or of a vector's entries",
             example: "sum([k^2 for k in 1:4])",
             area: Area::Pictures,
             typing: one(sum_rule),

@@ -54,8 +54,14 @@ pub fn add(l: &Ty, r: &Ty) -> Result<Ty, RuleError> {
     Ok(out)
 }
 
-fn add_kind(l: &Kind, r: &Kind) -> Result<Kind, RuleError> {
+/// The kind of `l + r`: the group kinds are not closed under addition
+/// (Rotz(0) + Rotz(1) is a plain 3×3 matrix, and a sum of adjoints is the
+/// adjoint of no transform), the algebras, twists, wrenches and vectors are.
+pub fn add_kind(l: &Kind, r: &Kind) -> Result<Kind, RuleError> {
     use Kind::*;
+    if let (Adjoint { .. }, Adjoint { .. }) = (l, r) {
+        return Ok(Matrix(Some(6), Some(6)));
+    }
     if l == r {
         return Ok(scaled_kind(l));
     }
