@@ -222,3 +222,50 @@ fn screw_params_of_a_pure_translation() {
         1e-12,
     );
 }
+
+#[test]
+fn screw_to_axis_of_an_infinite_pitch_is_the_pure_translation() {
+    // h = ∞: S = (0, ŝ) (§3.3.2.2), wherever q is; no NaN.
+    assert_close(
+        "ScrewToAxis((1, 0, 0), (0, 0, 1), inf)",
+        &[0., 0., 0., 0., 0., 1.],
+        0.0,
+    );
+    // screw_params gives h = inf and q = 0 for a pure translation, and
+    // ScrewToAxis takes them back, as `screw` does.
+    for f in ["ScrewToAxis", "screw"] {
+        assert_close(
+            &format!("{f}(screw_params((0, 0, 0, 1, 0, 0)))"),
+            &[0., 0., 0., 1., 0., 0.],
+            0.0,
+        );
+        // h = −∞: the limit of the normalized axis as h → −∞, (0, −ŝ).
+        assert_close(
+            &format!("{f}((1, 2, 3), (0, 0, 2), -inf)"),
+            &[0., 0., 0., 0., 0., -1.],
+            0.0,
+        );
+    }
+    // explain shows the case and ends with the same value.
+    let lines = json("explain ScrewToAxis((1, 0, 0), (0, 0, 1), inf)");
+    let steps = lines[0]["steps"].as_array().expect("steps");
+    let last = steps.last().expect("a step");
+    assert!(
+        last["text"].as_str().is_some_and(|t| t.contains("h = ∞")),
+        "{last}"
+    );
+    assert_eq!(numbers(&last["value"]), vec![0., 0., 0., 0., 0., 1.]);
+    // A NaN pitch (inf − inf) is NaN entries with the NaN warning.
+    let mut s = Session::new(Settings::default());
+    let (out, err, n) = s.run_to_strings(
+        "t",
+        "ScrewToAxis((1, 0, 0), (0, 0, 1), inf - inf)\n",
+        Mode::Run,
+        false,
+    );
+    assert_eq!(n, 0, "{err}");
+    assert!(
+        out.contains("NaN") && err.contains("NaN entries"),
+        "{out}{err}"
+    );
+}

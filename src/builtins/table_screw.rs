@@ -300,7 +300,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
             aliases: &["screw_to_axis"],
             signature: "ScrewToAxis(q: 3-vector, s: 3-vector, h: scalar) -> screw",
             section: "§3.3.2.2",
-            doc: "the screw axis S = (ŝ, −ŝ×q + hŝ) through q along ŝ with pitch h",
+            doc: "the screw axis S = (ŝ, −ŝ×q + hŝ) through q along ŝ with pitch h; h = inf gives the pure translation (0, ŝ)",
             example: "ScrewToAxis((3, 0, 0), (0, 0, 1), 2)",
             area: Twists,
             typing: Typing::Fixed {
@@ -333,12 +333,11 @@ pub(super) fn builtins() -> Vec<Builtin> {
                         "the screw direction is the zero vector",
                     ));
                 }
-                let s = s / n;
-                if h.is_infinite() {
-                    let v = crate::lie::Vec6::new(0.0, 0.0, 0.0, s.x, s.y, s.z);
-                    return Ok(Value::num(Kind::Screw, &v));
-                }
-                Ok(Value::num(Kind::Screw, &se3::screw_to_axis(&q, &s, h)))
+                // (h = ±inf is the pure translation (0, ±ŝ), §3.3.2.2)
+                Ok(Value::num(
+                    Kind::Screw,
+                    &se3::screw_to_axis(&q, &(s / n), h),
+                ))
             },
         },
         Builtin {

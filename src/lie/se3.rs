@@ -204,10 +204,16 @@ pub fn ad(v: &Vec6) -> Mat6 {
 }
 
 /// `ScrewToAxis(q, ŝ, h)`: the screw axis `S = (ŝ, −ŝ × q + hŝ)` of a screw
-/// through the point `q` with unit direction `ŝ` and finite pitch `h`
+/// through the point `q` with unit direction `ŝ` and pitch `h`
 /// (§3.3.2.2, Definition 3.7, §3.5 table). `ŝ` is used as given, like the
-/// book's software: pass a unit vector to get a normalized axis.
+/// book's software: pass a unit vector to get a normalized axis. An
+/// infinite pitch is a pure translation, `S = (0, ŝ)` (§3.3.2.2; q plays no
+/// part), and `h = −∞` its limit `(0, −ŝ)` (the axis of pitch h → −∞,
+/// normalized); a NaN pitch gives NaN entries.
 pub fn screw_to_axis(q: &Vec3, s: &Vec3, h: f64) -> Vec6 {
+    if h.is_infinite() {
+        return join(&Vec3::zeros(), &(s * h.signum()));
+    }
     let v = q.cross(s) + h * s;
     join(s, &v)
 }

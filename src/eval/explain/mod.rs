@@ -435,9 +435,7 @@ fn call_steps(name: &str, args: &[Value]) -> Option<Vec<Step>> {
             }
             steps::exp::exp3(&(axis * (theta / n)))
         }
-        // ScrewToAxis takes a finite pitch (the book's software); `screw`
-        // also h = ∞, the pure translation (0, ŝ)
-        "ScrewToAxis" if args.get(2)?.as_scalar()?.is_infinite() => return None,
+        // (h = ±∞ is the pure translation (0, ±ŝ), for both)
         "ScrewToAxis" | "screw" => {
             let (q, s, h) = (
                 mat::<3, 1>(a0)?,

@@ -71,7 +71,8 @@ pub fn adjoint(t: &Mat4) -> Vec<Step> {
 
 /// The steps of the screw axis S = (ŝ, −ŝ × q + hŝ) of a screw through q
 /// along the unit ŝ with pitch h (§3.3.2.2), ending with S (the value of
-/// [`se3::screw_to_axis`], or (0, ŝ) for h = ∞). `s` is already unit.
+/// [`se3::screw_to_axis`]: (0, ŝ) for h = ∞, (0, −ŝ) for h = −∞). `s` is
+/// already unit.
 pub fn screw_axis(q: &Vec3, s: &Vec3, h: f64) -> Vec<Step> {
     let mut out = vec![
         Step::new(
@@ -90,17 +91,22 @@ pub fn screw_axis(q: &Vec3, s: &Vec3, h: f64) -> Vec<Step> {
         ),
         Step::new("3.3.2.2", "h", "h (the pitch)", r"h", Q::Scalar(h)),
     ];
+    let value = se3::screw_to_axis(q, s, h);
     if h.is_infinite() {
-        out.push(Step::new(
-            "3.3.2.2",
-            "S",
-            "h = ∞ (a pure translation): S = (0, ŝ)",
-            r"h = \infty:\ \mathcal{S} = (0, \hat s)",
-            Q::Screw(Vec6::new(0.0, 0.0, 0.0, s.x, s.y, s.z)),
-        ));
+        let (text, latex) = if h > 0.0 {
+            (
+                "h = ∞ (a pure translation): S = (0, ŝ)",
+                r"h = \infty:\ \mathcal{S} = (0, \hat s)",
+            )
+        } else {
+            (
+                "h = −∞ (a pure translation, against ŝ): S = (0, −ŝ)",
+                r"h = -\infty:\ \mathcal{S} = (0, -\hat s)",
+            )
+        };
+        out.push(Step::new("3.3.2.2", "S", text, latex, Q::Screw(value)));
         return out;
     }
-    let value = se3::screw_to_axis(q, s, h);
     out.push(Step::new(
         "3.3.2.2",
         "omega",
