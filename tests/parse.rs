@@ -1002,6 +1002,29 @@ fn mech_counts_and_contacts() {
     assert!(m.legs_expr.is_some());
     let m = mech("mech < links 2 * n + 1; joints R R; planar >");
     assert!(m.links_expr.is_some());
+    // Juxtaposition multiplies in counts as elsewhere (§4), before `+`:
+    // `links 2 n + 1` as the README writes it, `n (n - 1)`, `2n`.
+    let links = |src: &str| sexp(mech(src).links_expr.as_ref().expect("an expression"));
+    assert_eq!(links("mech < links 2 n + 1; planar >"), "(+ (j* 2 n) 1)");
+    assert_eq!(links("mech < links 2n+1; planar >"), "(+ (j* 2 n) 1)");
+    assert_eq!(
+        links("mech < links n (n - 1) + 1 >"),
+        "(+ (j* n (- n 1)) 1)"
+    );
+    assert_eq!(links("mech < links 1 + 2 * n m >"), "(+ 1 (j* (* 2 n) m))");
+    // In `legs` the last word is the chain, never a factor.
+    let m = mech("mech < legs 2 n UPS; spatial >");
+    assert_eq!(m.legs.as_ref().map(|l| l.1.as_str()), Some("UPS"));
+    assert_eq!(
+        sexp(m.legs_expr.as_ref().expect("an expression")),
+        "(j* 2 n)"
+    );
+    let m = mech("mech < legs n UPS; spatial >");
+    assert_eq!(m.legs.as_ref().map(|l| l.1.as_str()), Some("UPS"));
+    assert_eq!(sexp(m.legs_expr.as_ref().expect("an expression")), "n");
+    // Two numbers side by side are no product.
+    let e = err("mech < links 2 3; planar >");
+    assert_eq!(e.message, "expected an operator or ';', found '3'");
     // Whole numbers stay numbers.
     let m = mech("mech < links 4; joints R, R, R, R; planar >");
     assert_eq!(m.links.map(|l| l.0), Some(4));

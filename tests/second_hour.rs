@@ -95,6 +95,44 @@ fn mechanisms_with_names_commas_and_contacts() {
     same("N = 4", "mech < links N; joints R, R, R, R; planar >", "1");
     same("n = 6", "mech < legs n UPS; spatial >", "6");
     same("k = 3", "mech < links k + 1; joints (k)R; planar >", "3");
+    // Counts multiply side by side, as the README writes `links 2 n + 1`.
+    same(
+        "n = 3",
+        "mech < links 2 n + 1; joints (2 n)R; planar >",
+        "6",
+    );
+    same("n = 3", "mech < legs 2 n UPS; spatial >", "6");
+    same(
+        "n = 3",
+        "mech < links n (n - 1) + 1; joints (n (n - 1)) R; planar >",
+        "6",
+    );
+    // A bare name before a joint is refused, showing the one spelling.
+    for (src, fix) in [
+        (
+            "n = 2
+mech < links n; joints n R; planar >",
+            "`(n)R`",
+        ),
+        (
+            "n = 2
+mech < links 5; joints 2 n R; planar >",
+            "`(2 n)R`",
+        ),
+        (
+            "n = 2
+mech < links 3; joints n sliding; planar >",
+            "`(n) sliding`",
+        ),
+    ] {
+        let e = error(src);
+        assert!(
+            e.contains("a joint count given by a name is written in parentheses")
+                && e.contains(fix),
+            "{src}: {e}"
+        );
+        assert!(!e.contains("unknown joint letter"), "{e}");
+    }
     // Exercise 2.18: a caterpillar of 8 links and 7 RP pairs; six sliding
     // point contacts with the leaf (planar f = 2).
     same("", "mech < links 8; joints 7RP; planar >", "14");

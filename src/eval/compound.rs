@@ -266,6 +266,9 @@ impl Interp<'_> {
             )
             .with_help("items: links N; joints …; legs K CHAIN; planar | spatial | spherical"));
         }
+        if let Some(d) = self.name_before_joint(spec) {
+            return Err(d);
+        }
         // Counts written as expressions (`links N`, `legs n UPS`, `(n)R`).
         let links = match (&spec.links, &spec.links_expr) {
             (Some(_), Some(e)) => Some(self.mech_count(e)?),
@@ -316,6 +319,45 @@ impl Interp<'_> {
         })?;
         let val = self.running().then(|| Value::Mech(std::rc::Rc::new(m)));
         Ok(Typed::new(Ty::plain(Kind::Mechanism), val))
+    }
+
+    /// `joints n R` with `n` a bound name: joints are words (lower case
+    /// letters too, `r` is R), so a name before a joint reads two ways, as
+    /// a joint of its own or as the count of the next; the error shows the
+    /// one spelling of a count given by a name, `(n)R` (LANGUAGE.md §9, as
+    /// `8R` is eight R joints). None when no group reads so.
+    fn name_before_joint(&self, spec: &crate::syntax::ast::MechSpec) -> Option<Diagnostic> {
+        use crate::mech::JointType;
+        let joint = |w: &str| {
+            JointType::contact(w).is_some()
+                || w.chars().all(|c| JointType::from_letter(c).is_some())
+        };
+        spec.joints.windows(2).find_map(|pair| {
+            let [word, next] = pair else { return None };
+            let letters = word.letters.as_str();
+            let counted = self.text(next.span).starts_with(|c: char| !c.is_ascii_alphabetic());
+            if joint(letters) || !joint(&next.letters) || counted || self.env.get(letters).is_none() {
+                return None;
+            }
+            // (`2 n R`: the count written before the name goes inside too)
+            let count = self.text(word.span);
+            let gap = if JointType::contact(&next.letters).is_some() { " " } else { "" };
+            let fix = format!("({count}){gap}{}", next.letters);
+            Some(
+                Diagnostic::error(
+                    ErrorKind::Syntax,
+                    word.span.join(next.span),
+                    format!(
+                        "`{count} {}`: a joint count given by a name is written in parentheses, `{fix}`",
+                        next.letters
+                    ),
+                )
+                .with_help(format!(
+                    "`{fix}` is {count} {} joints, as `8R` is eight R joints; joints are words (`r` is R too), so a bare name before a joint would be a joint of its own",
+                    next.letters
+                )),
+            )
+        })
     }
 
     /// A count of a mechanism written as an expression (`links N`): a

@@ -22,8 +22,9 @@ impl Cx {
         })
     }
 
-    /// A `mech_count`: a whole number as `(n, None)`; anything else
-    /// (`N`, `2 n + 1`, `(k)`) as `(0, Some(expr))`, `*` before `+ -`.
+    /// A `mech_count` or `legs_count`: a whole number as `(n, None)`;
+    /// anything else (`N`, `2 n + 1`, `(k)`) as `(0, Some(expr))`, `*` and
+    /// juxtaposition before `+ -`.
     fn count(&self, pair: Pair<'_, Rule>) -> Result<(i64, Option<Expr>), Diagnostic> {
         let parts: Vec<Pair<'_, Rule>> = pair.into_inner().collect();
         if let [one] = parts.as_slice()
@@ -35,15 +36,16 @@ impl Cx {
         let mut sum: Option<Expr> = None;
         let mut product: Option<Expr> = None;
         let mut sign = BinOp::Add;
-        let mut pending = BinOp::Mul;
-        let join = |op: BinOp, l: Expr, r: Expr, op_span: Span| {
+        // (`2 n`: a product written side by side, as the parser marks it)
+        let mut implicit = false;
+        let join = |op: BinOp, l: Expr, r: Expr, op_span: Span, implicit: bool| {
             let span = l.span.join(r.span);
             let kind = ExprKind::Binary {
                 op,
                 lhs: Box::new(l),
                 rhs: Box::new(r),
                 op_span,
-                implicit: false,
+                implicit,
             };
             Expr { kind, span }
         };
@@ -51,23 +53,23 @@ impl Cx {
         for p in parts {
             let span = self.span(p.as_span());
             let term = match p.as_rule() {
+                Rule::mech_juxt => {
+                    (op_span, implicit) = (span, true);
+                    continue;
+                }
                 Rule::mech_op => {
                     op_span = span;
-                    let op = match p.as_str() {
-                        "*" => BinOp::Mul,
-                        "-" => BinOp::Sub,
-                        _ => BinOp::Add,
-                    };
-                    if op == BinOp::Mul {
-                        pending = BinOp::Mul;
-                    } else {
-                        if let Some(t) = product.take() {
-                            sum = Some(match sum.take() {
-                                Some(s) => join(sign, s, t, op_span),
-                                None => t,
-                            });
+                    match p.as_str() {
+                        "*" => implicit = false,
+                        op => {
+                            if let Some(t) = product.take() {
+                                sum = Some(match sum.take() {
+                                    Some(s) => join(sign, s, t, op_span, false),
+                                    None => t,
+                                });
+                            }
+                            sign = if op == "-" { BinOp::Sub } else { BinOp::Add };
                         }
-                        sign = op;
                     }
                     continue;
                 }
@@ -82,7 +84,7 @@ impl Cx {
                 _ => self.primary(p)?.0,
             };
             product = Some(match product.take() {
-                Some(l) => join(pending, l, term, op_span),
+                Some(l) => join(BinOp::Mul, l, term, op_span, implicit),
                 None => term,
             });
         }
@@ -90,7 +92,7 @@ impl Cx {
         Ok((
             0,
             Some(match sum {
-                Some(s) => join(sign, s, last, op_span),
+                Some(s) => join(sign, s, last, op_span, false),
                 None => last,
             }),
         ))
@@ -169,6 +171,7 @@ impl Cx {
                 Rule::mech_legs => {
                     first(spec.legs.as_ref().map(|l| l.2), "legs")?;
                     let mut it = item.into_inner().filter(|p| p.as_rule() != Rule::kw_legs);
+                    // (`legs_count`: its last factor is followed by the chain)
                     let (Some(n), Some(chain)) = (it.next(), it.next()) else {
                         return Err(self.internal(span));
                     };

@@ -117,8 +117,12 @@ pub(crate) fn rule_name(rule: Rule) -> &'static str {
         Rule::joint | Rule::joint_count | Rule::joint_letters => {
             "a joint such as R, P, 8R, RP or 6 sliding"
         }
-        Rule::mech_count | Rule::mech_term | Rule::mech_name => "a whole number",
-        Rule::mech_op => OPERATOR,
+        Rule::mech_count
+        | Rule::legs_count
+        | Rule::mech_term
+        | Rule::mech_factor
+        | Rule::mech_name => "a whole number",
+        Rule::mech_op | Rule::mech_infix | Rule::mech_juxt => OPERATOR,
         Rule::chain => "the joints of a leg, such as UPS",
         Rule::int => "a whole number",
         Rule::ident => "a name",
