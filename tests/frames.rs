@@ -434,6 +434,63 @@ fn rotation_and_transform_names_assert_their_group() {
 }
 
 #[test]
+fn explicit_conversions_read_any_matrix_of_their_size() {
+    // SO3(M) says M is a rotation (§5), even when its numbers read as SE(2)
+    // (last row (0, 0, 1)): within 1e-2 projected with a warning, farther a
+    // domain error giving the distance.
+    let (out, err) = text_and_err("R = SO3([0, -1, 0.001; 1, 0, 0; 0, 0, 1])\nR[1, 3]\n");
+    assert!(
+        out.contains(": SO(3)\n") && out.ends_with("\n0.0005\n"),
+        "{out}"
+    );
+    assert!(
+        err.contains("warning: not exactly in SO(3): distance 1.41e-3; projected"),
+        "{err}"
+    );
+    let (out, err) = text_and_err("SO3([0, -1, 0.1; 1, 0, 0; 0, 0, 1])\n");
+    assert!(out.is_empty(), "{out}");
+    assert!(
+        err.contains("domain error: not a rotation matrix: distance from SO(3) is 0.1418"),
+        "{err}"
+    );
+    // A vector is still no matrix.
+    let (_, err) = text_and_err("SO3((1, 2, 3))\n");
+    assert!(
+        err.contains("type error: SO3 takes a 3×3 matrix, not a 3-vector"),
+        "{err}"
+    );
+    // SE3(M) of a 4×4 reads a transform the same way, keeping the frames.
+    let (out, err) =
+        text_and_err("T_ab = SE3([1, 0, 0, 1; 0, 1, 0, 2; 0, 0, 1, 3; 0, 0, 0, 1.001])\n");
+    assert!(out.ends_with("0, 0, 0, 1]  : SE(3) {a}←{b}\n"), "{out}");
+    assert!(err.contains("distance 1.00e-3; projected"), "{err}");
+    let (_, err) = text_and_err("SE3([1, 0, 0, 0; 0, 1, 0, 0; 0, 0, 1, 0; 0, 0, 0, 2])\n");
+    assert!(err.contains("distance from SE(3) is 1"), "{err}");
+    // A rotation-only function given a 3×3 read as SE(2) but within 1e-2
+    // of SO(3) treats it as §5 treats a rotation: projected, with a warning
+    // (as binding it to R_sb does), literal or bound.
+    for src in [
+        "MatrixLog3([1, 0, 0; 0, 1, 0.0005; 0, 0, 1])\n",
+        "M = [1, 0, 0; 0, 1, 0.0005; 0, 0, 1];\nMatrixLog3(M)\n",
+    ] {
+        let (out, err) = text_and_err(src);
+        assert_eq!(out.trim(), "(-0.0002, 0, 0)  : 3-vector", "{src}{err}");
+        assert!(err.contains("distance 7.07e-4; projected"), "{err}");
+    }
+    let (out, err) = text_and_err("RotInv([1, 0, 0; 0, 1, 0.0005; 0, 0, 1])[3, 2]\n");
+    assert_eq!(out.trim(), "0.0002", "{err}");
+    // A planar transform far from SO(3) stays a type error, whose help
+    // names SO3(M).
+    let (out, err) = text_and_err("RotInv(SE2(1, 2, 3))\n");
+    assert!(out.is_empty(), "{out}");
+    assert!(
+        err.contains("type error: argument 1 of RotInv must be an SO(3), not an SE(2)"),
+        "{err}"
+    );
+    assert!(err.contains("SO3(M) reads a matrix as a rotation"), "{err}");
+}
+
+#[test]
 fn type_labels_only_for_members_of_the_set() {
     // [ω]² is symmetric, not so(3); a power of a plain matrix is a plain matrix.
     assert_eq!(run_type("[w_b]^2"), "matrix");

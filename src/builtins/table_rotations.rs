@@ -70,6 +70,29 @@ pub(super) fn v3val(v: &Vec3) -> Value {
     Value::num(v3(), v)
 }
 
+/// `SO3(M)` says explicitly that M is a rotation (LANGUAGE.md §5): any 3×3
+/// matrix, whatever its numbers were read as (SE(2) for a last row
+/// (0, 0, 1), so(3), a plain matrix), is taken, and the builtin reads it as
+/// SO(3): as it is within 1e-9, projected with a warning within 1e-2,
+/// else a domain error giving the distance. Keeps M's pair of frames.
+fn so3_rule(args: &[Ty]) -> Result<Ty, ArgError> {
+    let square3 = match args[0].kind.shape() {
+        Some((r, c)) => r.is_none_or(|r| r == 3) && c.is_none_or(|c| c == 3),
+        None => args[0].kind == Kind::Unknown,
+    };
+    if !square3 || args[0].kind.is_vector() {
+        return Err(ArgError::type_of(
+            0,
+            format!("SO3 takes a 3×3 matrix, not {}", args[0].kind.a()),
+        ));
+    }
+    let frames = match args[0].frames {
+        f @ Frames::Pair(..) => f,
+        _ => Frames::None,
+    };
+    Ok(Ty::new(Kind::SO3, frames))
+}
+
 pub(super) fn builtins() -> Vec<Builtin> {
     use Area::*;
     use Param::*;
@@ -232,13 +255,12 @@ pub(super) fn builtins() -> Vec<Builtin> {
             aliases: &[],
             signature: "SO3(M: 3×3 matrix) -> SO3",
             section: "§3.2.1",
-            doc: "reads a 3×3 matrix as a rotation (projected within 1e-2, else an error)",
-            example: "SO3([0, -1, 0; 1, 0, 0; 0, 0, 1])",
+            doc: "reads a 3×3 matrix as a rotation, whatever it was read as before (projected within 1e-2, else an error giving its distance)",
+            example: "SO3([0, -1, 0.001; 1, 0, 0; 0, 0, 1])",
             area: Rotations,
-            typing: Typing::Fixed {
-                params: &[Rot],
-                ret: so3k,
-                frames: FrameRule::Same(0),
+            typing: Typing::Custom {
+                arity: (1, 1),
+                rule: so3_rule,
             },
             eval: |a| Ok(a.so3(0)?.into()),
         },

@@ -101,6 +101,21 @@ fn eval_displacement(a: &mut Args) -> Result<Value, Diagnostic> {
 
 /// RpToTrans(R_ab, p_ab): {a}←{b}; p must be in {a}.
 fn rp_rule(args: &[Ty]) -> Result<Ty, ArgError> {
+    // `SE3(M)`: a 4×4 matrix read as a transform, as `SO3(M)` reads a
+    // rotation (LANGUAGE.md §5), keeping its frames.
+    if let [m] = args
+        && matches!(
+            m.kind,
+            Kind::SE3 | Kind::Se3 | Kind::Matrix(Some(4) | None, Some(4) | None)
+        )
+        && m.kind != Kind::Matrix(None, None)
+    {
+        let frames = match m.frames {
+            f @ Frames::Pair(..) => f,
+            _ => Frames::None,
+        };
+        return Ok(Ty::new(Kind::SE3, frames));
+    }
     if !Param::Rot.accepts(&args[0].kind) {
         return Err(ArgError::type_of(
             0,
@@ -160,9 +175,9 @@ pub(super) fn builtins() -> Vec<Builtin> {
         Builtin {
             name: "RpToTrans",
             aliases: &["rp_to_trans", "SE3", "frame"],
-            signature: "RpToTrans(R: SO3, p: 3-vector) -> SE3   |   RpToTrans(R) -> SE3 (p = 0)",
+            signature: "RpToTrans(R: SO3, p: 3-vector) -> SE3   |   RpToTrans(R) -> SE3 (p = 0)   |   SE3(M: 4×4) -> SE3",
             section: "§3.3.1 (3.62)",
-            doc: "the transform T = [R, p; 0, 1] (p = 0 when only R is given: frame(I) is the identity transform)",
+            doc: "the transform T = [R, p; 0, 1] (p = 0 when only R is given: frame(I) is the identity transform); SE3(M) of a 4×4 reads M as a transform (projected within 1e-2, else an error giving its distance)",
             example: "RpToTrans(Rotz(pi/2), (1, 2, 3))",
             area: Transforms,
             typing: Typing::Custom {
@@ -172,6 +187,9 @@ pub(super) fn builtins() -> Vec<Builtin> {
             eval: |a| {
                 let p = if a.len() == 2 {
                     a.vec3(1)?
+                } else if a.mat(0)?.shape() == (4, 4) {
+                    // SE3(M): read as SE(3), projected within 1e-2 (§5)
+                    return Ok(a.se3(0)?.into());
                 } else {
                     crate::lie::Vec3::zeros()
                 };

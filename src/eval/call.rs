@@ -146,7 +146,31 @@ impl Interp<'_> {
         // vector or Lie-algebra result, §6); refused, with the operands'
         // frames dropped when the frame mode lets evaluation go on.
         let op = Op::Call(b, name);
-        let ty = match op.rule(&self.env.arg_tys[base..], Hints::default()) {
+        let rule = match op.rule(&self.env.arg_tys[base..], Hints::default()) {
+            // A rotation written as a 3×3 whose numbers read as SE(2) (§5):
+            // near SO(3) it is a rotation (read, or projected with a
+            // warning, by the builtin), else the error names `SO3(M)`.
+            Err(mut err) if running => {
+                let tys = &self.env.arg_tys[base..];
+                let retype = |t: &[Ty]| op.rule(t, Hints::default()).is_ok();
+                match super::slips::se2_for_rotation(tys, &vals, retype) {
+                    Some(super::slips::Se2Read::Near(i)) => {
+                        self.env.arg_tys[base + i].kind = Kind::Matrix(Some(3), Some(3));
+                        op.rule(&self.env.arg_tys[base..], Hints::default())
+                    }
+                    Some(super::slips::Se2Read::Far(_)) => {
+                        err.help = Some(format!(
+                            "this 3×3 reads as SE(2) (last row (0, 0, 1)); SO3(M) reads a matrix as a rotation (projected within 1e-2, else an error giving its distance); signature: {}",
+                            b.signature
+                        ));
+                        Err(err)
+                    }
+                    None => Err(err),
+                }
+            }
+            other => other,
+        };
+        let ty = match rule {
             Ok(ty) => ty,
             Err(err) => {
                 let at = err

@@ -155,3 +155,44 @@ pub(super) fn declare_it(name: &str, checking: bool) -> String {
     };
     format!("give it a value first ({name} = ...) or declare it: given {name} : {ty}")
 }
+
+/// A numeric 3×3 argument that the rule refused because its numbers were
+/// read as SE(2) (last row (0, 0, 1), an SO(2) block: LANGUAGE.md §5's
+/// reading of an untyped 3×3) where the call takes a rotation. Near(i):
+/// argument i is within 1e-2 of SO(3), so §5's rotation rule applies to it
+/// (accepted, or projected with a warning, as `R_sb = M` does): the call is
+/// typed with it as a plain 3×3 matrix. Far(i): a planar transform, and
+/// the type error's help names `SO3(M)`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Se2Read {
+    Near(usize),
+    Far(usize),
+}
+
+/// [`Se2Read`] of the arguments `tys`/`vals` of a call that `retype`
+/// refused, when typing argument i as a plain 3×3 matrix is what it takes
+/// to pass (`retype` runs the call's rule on the types given); None when
+/// the refusal is of something else.
+pub(super) fn se2_for_rotation(
+    tys: &[crate::check::ty::Ty],
+    vals: &[crate::values::value::Value],
+    retype: impl Fn(&[crate::check::ty::Ty]) -> bool,
+) -> Option<Se2Read> {
+    use crate::check::ty::Kind;
+    use crate::values::convert::{self, Group};
+    let i = tys.iter().position(|t| t.kind == Kind::SE2)?;
+    let crate::values::value::Value::Num { m, .. } = vals.get(i)? else {
+        return None;
+    };
+    let mut plain = tys.to_vec();
+    plain[i].kind = Kind::Matrix(Some(3), Some(3));
+    if !retype(&plain) {
+        return None;
+    }
+    let d = convert::distance(m, Group::SO3)?;
+    Some(if d <= convert::PROJECT_TOL {
+        Se2Read::Near(i)
+    } else {
+        Se2Read::Far(i)
+    })
+}
