@@ -256,7 +256,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
             signature: "SO3(M: 3×3 matrix) -> SO3",
             section: "§3.2.1",
             doc: "reads a 3×3 matrix as a rotation, whatever it was read as before (projected within 1e-2, else an error giving its distance)",
-            example: "SO3([0, -1, 0.001; 1, 0, 0; 0, 0, 1])",
+            example: "SO3([0, -1, 0; 1, 0, 0; 0, 0, 1])",
             area: Rotations,
             typing: Typing::Custom {
                 arity: (1, 1),
