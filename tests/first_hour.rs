@@ -110,15 +110,15 @@ fn exact_on_the_command_line() {
     assert_eq!(code, 0);
     // 0.25 as typed is a decimal and prints as one (LANGUAGE.md §10)
     assert_eq!(out, "π/6\n√3/2\n0.25\n");
-    // Floats with no exact form print the simple form they are within
-    // 1e-12 of (LANGUAGE.md §1); a float of none, and a short decimal,
-    // print as decimals.
+    // Floats with no exact form print the simple form they are a rounding
+    // of (LANGUAGE.md §1), after `≈ `: the floats alone cannot say it is
+    // the value; a float of none, and a short decimal, print as decimals.
     let floats = "MatrixLog3(Rotz(pi/3))\ncos(0.5235987755982988)\nsin(1)\neuler_zyx(Rotz(0.3))\nquat(Rotz(pi/2))";
     let (code, out, _) = run(&["--exact", "-e", floats]);
     assert_eq!(code, 0);
     assert_eq!(
         out,
-        "(0, 0, π/3)  : 3-vector\n√3/2\n0.8415\n(0.3, 0, 0)  : 3-vector\n(1/√2, 0, 0, 1/√2)  : 4-vector\n"
+        "≈ (0, 0, π/3)  : 3-vector\n≈ √3/2\n0.8415\n(0.3, 0, 0)  : 3-vector\n≈ (1/√2, 0, 0, 1/√2)  : 4-vector\n"
     );
     let (_, out, _) = run(&["-e", floats]);
     assert!(out.starts_with("(0, 0, 1.0472)"), "{out}");

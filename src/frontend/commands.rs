@@ -68,7 +68,7 @@ pub const COMMANDS: &[Command] = &[
     Command {
         name: "exact",
         args: "[on|off]",
-        doc: "toggle exact forms: exact numbers as 1/√2, √3/2, π/6, and floats within 1e-12 of such a form",
+        doc: "toggle exact forms: exact numbers as 1/√2, √3/2, π/6, and a float that rounds one after ≈",
     },
     Command {
         name: "short",
@@ -429,7 +429,7 @@ fn exact(session: &mut Session, arg: &str) -> Reply {
     };
     session.settings.exact = on;
     Reply::out(if on {
-        "exact: on (exact numbers print as such: 1/√2, √3/2, π/6; so do floats within 1e-12 of such a form)"
+        "exact: on (exact numbers print as such: 1/√2, √3/2, π/6; a float that rounds one prints it after ≈)"
     } else {
         "exact: off"
     })

@@ -386,12 +386,20 @@ fn write_value(out: &mut String, prefix: &str, ty: &Ty, v: &Value, style: Style)
 /// A number, vector or matrix after its prefix (which ends at column
 /// `indent`), then its label.
 fn write_number(out: &mut String, indent: usize, ty: &Ty, v: &Value, style: Style) {
-    if let Some(m) = crate::values::format::exact_text(v, style) {
+    if let Some(t) = crate::values::format::exact_text(v, style) {
         let st = crate::sym::print::Style {
             mode: style.sym,
             digits: style.digits,
         };
-        out.push_str(&crate::values::exact::block(&m, st, indent, false));
+        // (the closed forms of a float's rounding follow `≈ `)
+        let indent = match t.rounded {
+            true => {
+                out.push_str("≈ ");
+                indent + 2
+            }
+            false => indent,
+        };
+        out.push_str(&crate::values::exact::block(&t.m, st, indent, false));
         return write_label(out, ty, v, style);
     }
     match v {

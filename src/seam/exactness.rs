@@ -366,6 +366,32 @@ fn scalar_only(name: &str) -> bool {
     matches!(name, "exp" | "log" | "atan" | "asin" | "acos" | "atan2")
 }
 
+/// How small a sum's entry must be against its larger operand for the
+/// floats to have cancelled ([`Op::cancels`]): 2⁻²⁶, half of a double's
+/// 53 bits of precision lost.
+const CANCELLED: f64 = 1.0 / 67_108_864.0;
+
+/// Gives the numbers `v` the floats of its exact form (each entry the
+/// float nearest its exact value, as far as `Expr::as_f64` reads it),
+/// when it has one whose entries are all real numbers; leaves `v` as it is
+/// otherwise (no exact form, or π's powers that do not fit a float).
+fn from_exact_form(v: &mut Value) {
+    let Some(form) = v.exact_form() else {
+        return;
+    };
+    let Some(xs) = form.as_f64() else {
+        return;
+    };
+    if let Value::Num { m, .. } = v
+        && m.shape() == (form.rows, form.cols)
+        && xs.iter().all(|x| x.is_finite())
+    {
+        *m = crate::values::num::Num::from_dmatrix(nalgebra::DMatrix::from_row_slice(
+            form.rows, form.cols, &xs,
+        ));
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -427,31 +453,5 @@ mod tests {
             &Kind::Scalar,
         );
         assert!(f.is_float());
-    }
-}
-
-/// How small a sum's entry must be against its larger operand for the
-/// floats to have cancelled ([`Op::cancels`]): 2⁻²⁶, half of a double's
-/// 53 bits of precision lost.
-const CANCELLED: f64 = 1.0 / 67_108_864.0;
-
-/// Gives the numbers `v` the floats of its exact form (each entry the
-/// float nearest its exact value, as far as `Expr::as_f64` reads it),
-/// when it has one whose entries are all real numbers; leaves `v` as it is
-/// otherwise (no exact form, or π's powers that do not fit a float).
-fn from_exact_form(v: &mut Value) {
-    let Some(form) = v.exact_form() else {
-        return;
-    };
-    let Some(xs) = form.as_f64() else {
-        return;
-    };
-    if let Value::Num { m, .. } = v
-        && m.shape() == (form.rows, form.cols)
-        && xs.iter().all(|x| x.is_finite())
-    {
-        *m = crate::values::num::Num::from_dmatrix(nalgebra::DMatrix::from_row_slice(
-            form.rows, form.cols, &xs,
-        ));
     }
 }

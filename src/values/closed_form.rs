@@ -2,14 +2,24 @@
 //! §1, §10: "numbers within 1e-12 of simple closed forms print as `1/√2`,
 //! `π/6`"). A value with an exact form prints that form; a float with none
 //! (`MatrixLog3(Rotz(pi/3))`, `cos(0.5235987755982988)`) prints the
-//! simple form it is within 1e-12 of, when every entry has one.
+//! simple form it is a rounding of, when every entry has one, after `≈ `
+//! (`≈ (0, 0, π/3)`): the floats alone cannot tell π/3 from a number a
+//! few units in the last place from it (22√7/21 + 3.8e-15 rounds within
+//! 7 units of 22√7/21), so the form is said to be the floats' rounding,
+//! not the value.
+//!
+//! "A rounding of" is within [`ULPS`] units in the last place of the form,
+//! not the contract's 1e-12: a float 7e-13 from 7/3 (`7 (1/3 + 1e-13)`
+//! with no exact form) is not 7/3 even to rounding; the floats of a closed
+//! form worked out in double precision (a logarithm, a quaternion) are
+//! within a few units of it.
 //!
 //! A simple form is (p/q)·√n·πᵏ: q at most [`MAX_DENOMINATOR`] (36 takes
 //! every multiple of 5° as a fraction of π), n one of 1, 2, 3, 5, 6, 7
 //! (the square roots of the book's rotations, √2/2, √3/2, and their
 //! neighbours), k 0 or 1. Rationals are tried first, then roots, then
-//! multiples of π, each by the smallest denominator: the first within
-//! 1e-12 is the form. A float of no such form is printed as a decimal; so
+//! multiples of π, each by the smallest denominator: the first the float
+//! is a rounding of is the form. A float of no such form is printed as a decimal; so
 //! is a matrix with one such entry, rather than a mix of both.
 
 use crate::sym::Mat;
@@ -23,8 +33,9 @@ const MAX_DENOMINATOR: i64 = 36;
 /// simple form.
 const MAX_NUMERATOR: f64 = 1e6;
 
-/// How close a float must be to a simple form (LANGUAGE.md §1).
-const WITHIN: f64 = 1e-12;
+/// How many units in the last place of a simple form a float may be from
+/// it and print as it (the module's doc).
+const ULPS: f64 = 8.0;
 
 /// The square roots a simple form may have.
 const ROOTS: [i64; 6] = [1, 2, 3, 5, 6, 7];
@@ -42,15 +53,18 @@ pub fn of_floats(xs: &[f64], rows: usize, cols: usize) -> Option<Mat> {
     Some(Mat { rows, cols, data })
 }
 
-/// The simple closed form within 1e-12 of `x`, if it has one.
+/// The simple closed form `x` is a rounding of, if it has one.
 pub fn of_float(x: f64) -> Option<Expr> {
     if !x.is_finite() {
         return None;
     }
+    if x == 0.0 {
+        return Some(Expr::default());
+    }
     for pi in [false, true] {
         for n in ROOTS {
             let base = (n as f64).sqrt() * if pi { std::f64::consts::PI } else { 1.0 };
-            if let Some((p, q)) = fraction_near(x / base, base) {
+            if let Some((p, q)) = fraction_near(x / base) {
                 // (a fraction that is a short decimal, 3/10, as the decimal:
                 // it then prints as one, `--exact` or not)
                 let r = match n == 1 && !pi && decimal(q) {
@@ -82,13 +96,14 @@ fn decimal(q: i64) -> bool {
     q == 1
 }
 
-/// The fraction p/q of smallest q with |p/q − y|·base within 1e-12, if
-/// there is one with q ≤ [`MAX_DENOMINATOR`].
-fn fraction_near(y: f64, base: f64) -> Option<(i64, i64)> {
+/// The fraction p/q of smallest q with (p/q)·base within [`ULPS`] of
+/// y·base, if there is one with q ≤ [`MAX_DENOMINATOR`] (p ≠ 0).
+fn fraction_near(y: f64) -> Option<(i64, i64)> {
     (1..=MAX_DENOMINATOR).find_map(|q| {
         let p = (y * q as f64).round();
-        let close = (p / q as f64 - y).abs() * base <= WITHIN;
-        (close && p.abs() <= MAX_NUMERATOR).then_some((p as i64, q))
+        let form = p / q as f64;
+        let close = (form - y).abs() <= ULPS * f64::EPSILON * form.abs();
+        (close && p != 0.0 && p.abs() <= MAX_NUMERATOR).then_some((p as i64, q))
     })
 }
 
@@ -120,9 +135,11 @@ mod tests {
         assert_eq!(shown(-pi / 6.0).as_deref(), Some("-π/6"));
         assert_eq!(shown(10.0 * pi / 180.0).as_deref(), Some("π/18"));
         assert_eq!(shown(0.0).as_deref(), Some("0"));
-        // within 1e-12 of π/3 still is; 1e-9 off is not
-        assert_eq!(shown(pi / 3.0 + 5e-13).as_deref(), Some("π/3"));
-        assert_eq!(shown(pi / 3.0 + 1e-9), None);
+        // a few units in the last place of π/3 still is; 1e-13 off is not
+        // (7/3 + 7e-13 is not 7/3)
+        assert_eq!(shown(pi / 3.0 + 4e-16).as_deref(), Some("π/3"));
+        assert_eq!(shown(pi / 3.0 + 1e-13), None);
+        assert_eq!(shown(7.0 * (1.0 / 3.0 + 1e-13)), None);
         // sin 1 is no simple form, nor is 1/37
         assert_eq!(shown(1f64.sin()), None);
         assert_eq!(shown(1.0 / 37.0), None);

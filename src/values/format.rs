@@ -41,23 +41,36 @@ impl Style {
     }
 }
 
+/// What `--exact` prints for a value in place of its decimals.
+pub struct ExactText {
+    /// The entries as exact numbers.
+    pub m: Mat,
+    /// True when they are the simple closed forms the floats are a
+    /// rounding of, not the value's exact form: printed after `≈ `.
+    pub rounded: bool,
+}
+
 /// The exact form `--exact` prints for a value (LANGUAGE.md §1, §10): its
 /// entries as exact numbers (`1/√2`, `(1/9) π`), when it has an exact form
 /// that is not just the decimals it prints anyway (`0.866` stays `0.866`);
-/// for a float with none, the simple closed forms it is within 1e-12 of.
+/// for a float with none, the simple closed forms it is a rounding of,
+/// marked as such (`≈ (0, 0, π/3)`: the value is a float, and a float a
+/// few units from 22√7/21 need not be it).
 #[inline]
-pub fn exact_text(v: &Value, style: Style) -> Option<Mat> {
+pub fn exact_text(v: &Value, style: Style) -> Option<ExactText> {
     if !style.exact || style.sym == Mode::Latex {
         return None;
     }
     if !v.may_be_exact() || v.exact_form().is_none() {
-        return closed_form_text(v, style.digits);
+        let m = closed_form_text(v, style.digits)?;
+        return Some(ExactText { m, rounded: true });
     }
-    exact_form_text(v, style.digits)
+    let m = exact_form_text(v, style.digits)?;
+    Some(ExactText { m, rounded: false })
 }
 
 /// The simple closed forms `--exact` prints for a float with no exact form
-/// ([`super::closed_form`]: within 1e-12 of `π/3`, `1/√2`), when every
+/// ([`super::closed_form`]: a rounding of `π/3`, `1/√2`), when every
 /// entry has one and they are not just the decimals it prints anyway.
 #[cold]
 fn closed_form_text(v: &Value, digits: usize) -> Option<Mat> {
@@ -144,8 +157,11 @@ pub fn write_numbers(out: &mut String, m: &Num, style: Style) {
 
 /// [`inline`], appended to `out`.
 pub fn write_inline(out: &mut String, v: &Value, style: Style) {
-    if let Some(m) = exact_text(v, style) {
-        out.push_str(&super::exact::block(&m, sym_style(style), 0, true));
+    if let Some(t) = exact_text(v, style) {
+        if t.rounded {
+            out.push_str("≈ ");
+        }
+        out.push_str(&super::exact::block(&t.m, sym_style(style), 0, true));
         return;
     }
     match v {

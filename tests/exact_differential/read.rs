@@ -17,9 +17,15 @@ pub struct Read {
 }
 
 /// The entries of a printed value (the text before any `  : kind`), in
-/// reading order (rows of a matrix one after the other).
+/// reading order (rows of a matrix one after the other). After `≈ `, the
+/// closed forms a float is a rounding of: none claims to be the value.
 pub fn entries(text: &str) -> Result<Vec<Read>, String> {
     let body = text.split("  :").next().unwrap_or("").trim();
+    if let Some(rounded) = body.strip_prefix("≈ ") {
+        let mut read = entries(rounded)?;
+        read.iter_mut().for_each(|r| r.claims_exact = false);
+        return Ok(read);
+    }
     let inner = if let Some(b) = body.strip_prefix('[').and_then(|b| b.strip_suffix(']')) {
         b.to_string()
     } else if body.starts_with('(') && body.ends_with(')') && top_level_comma(body) {
