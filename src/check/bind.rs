@@ -108,32 +108,44 @@ impl Claim {
     /// transform's name stays allowed (a pure rotation, p = 0), and a value
     /// whose kind is not yet known passes (its numbers are checked when
     /// they come).
+    #[inline]
     fn group_refusal(&self, name: &str, kind: &Kind) -> Option<RuleError> {
-        if !matches!(self.frames, Frames::Pair(..)) {
-            return None;
+        let unknown = |k: &Kind| {
+            matches!(
+                k,
+                Kind::Unknown | Kind::Function | Kind::Matrix(None, _) | Kind::Matrix(_, None)
+            )
+        };
+        let fits = match (self.letter, self.frames) {
+            (Some('R'), Frames::Pair(..)) => matches!(kind, Kind::SO3 | Kind::SO2) || unknown(kind),
+            (Some('T'), Frames::Pair(..)) => {
+                matches!(kind, Kind::SE3 | Kind::SE2 | Kind::SO3) || unknown(kind)
+            }
+            _ => true,
+        };
+        if fits {
+            None
+        } else {
+            Some(self.group_refused(name, kind))
         }
-        let (what, groups, make, fits) = match self.letter? {
-            'R' => (
+    }
+
+    /// The type error of [`Claim::group_refusal`].
+    #[cold]
+    #[inline(never)]
+    fn group_refused(&self, name: &str, kind: &Kind) -> RuleError {
+        let (what, groups, make) = match self.letter {
+            Some('R') => (
                 "a rotation",
                 "SO(3) or SO(2)",
                 "a rotation (ProjectToSO3(M) for a near one)",
-                matches!(kind, Kind::SO3 | Kind::SO2),
             ),
-            'T' => (
+            _ => (
                 "a transform",
                 "SE(3) or SE(2)",
                 "a transform (RpToTrans(R, p))",
-                matches!(kind, Kind::SE3 | Kind::SE2 | Kind::SO3),
             ),
-            _ => return None,
         };
-        let unknown = matches!(
-            kind,
-            Kind::Unknown | Kind::Function | Kind::Matrix(None, _) | Kind::Matrix(_, None)
-        );
-        if fits || unknown {
-            return None;
-        }
         let other = match self.frames {
             Frames::Pair(a, b) => tagged_name("M", &[&a.to_string(), &b.to_string()]),
             _ => "M".into(),
@@ -152,7 +164,7 @@ impl Claim {
             "{name} is the book's name of {what} (§5): give {} another name ({other}), or bind {make}",
             kind.a()
         ));
-        Some(e)
+        e
     }
 
     fn group(&self, kind: &Kind) -> Option<Kind> {
@@ -257,7 +269,10 @@ pub fn bind_in_place(
         *ty = Ty::new(kind, Frames::None);
         return Ok(None);
     }
-    ty.free = claim.free_for(&kind).unwrap_or(ty.free && kind.is_vector());
+    ty.free = match claim.free_for(&kind) {
+        Some(free) => free,
+        None => ty.free && kind.is_vector(),
+    };
     let claim = claim.frames_for(&kind);
     let mut warning = None;
     let frames = match (claim, ty.frames) {

@@ -74,7 +74,7 @@ pub(crate) fn exact_of(name: &str, args: &[Value], out: &Value) -> Option<Exact>
 /// (0, p). Its floats are rounding's (`Rotz(2π)`'s sin 2π is −2.4e-16),
 /// so without this `log(Rotz(2 pi)) == zeros(3, 3)` compared noise with
 /// 0, where no relative tolerance can say "rounding". Only a rotation
-/// within 1e-9 of I in floats has its exact form asked for.
+/// whose trace is within 1e-9 of 3 in floats has its exact form asked for.
 fn identity_log(e: &Value) -> Option<Vec<Expr>> {
     let Value::Num { m, kind, .. } = e else {
         return None;
@@ -84,13 +84,9 @@ fn identity_log(e: &Value) -> Option<Vec<Expr>> {
         Kind::SE3 => 4,
         _ => return None,
     };
-    let rows_near = (0..3).all(|i| {
-        m.row(i).take(3).enumerate().all(|(j, x)| {
-            let one = if i == j { 1.0 } else { 0.0 };
-            (x - one).abs() <= 1e-9
-        })
-    });
-    if m.shape() != (n, n) || !rows_near {
+    // (a rotation's trace is 1 + 2 cos θ: within 1e-9 of 3 only near I;
+    // the exact form below decides)
+    if m.shape() != (n, n) || (m[(0, 0)] + m[(1, 1)] + m[(2, 2)] - 3.0).abs() > 1e-9 {
         return None;
     }
     let x = e.exact_form()?;

@@ -58,7 +58,10 @@ impl Interp<'_> {
             }
         }
         // (a name declared by `given` holds its declared kind: §7)
-        let declared = self.declared(name, &t.ty.kind, name_span, value_span)?;
+        let declared = match self.env.has_givens() {
+            true => self.declared(name, &t.ty.kind, name_span, value_span)?,
+            false => None,
+        };
         if let Some(group) = declared {
             t.ty.kind = group;
         }
@@ -123,6 +126,7 @@ impl Interp<'_> {
     /// numbers are then checked at the binding as a rotation's or
     /// transform's name checks them (`given R : SO3; R = M`). None for a
     /// name not so declared, or a value of the declared kind already.
+    #[inline(never)]
     fn declared(
         &self,
         name: Name,
@@ -130,9 +134,6 @@ impl Interp<'_> {
         name_span: Span,
         value_span: Span,
     ) -> Result<Option<Kind>, Diagnostic> {
-        if !self.env.has_givens() {
-            return Ok(None);
-        }
         let Some(declared) = self.env.given(name).map(|b| b.ty.kind) else {
             return Ok(None);
         };

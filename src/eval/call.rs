@@ -146,42 +146,32 @@ impl Interp<'_> {
         // vector or Lie-algebra result, §6); refused, with the operands'
         // frames dropped when the frame mode lets evaluation go on.
         let op = Op::Call(b, name);
-        let rule = match op.rule(&self.env.arg_tys[base..], Hints::default()) {
-            // A rotation written as a 3×3 whose numbers read as SE(2) (§5):
-            // near SO(3) it is a rotation (read, or projected with a
-            // warning, by the builtin), else the error names `SO3(M)`.
-            Err(mut err) if running => {
-                let tys = &self.env.arg_tys[base..];
-                let retype = |t: &[Ty]| op.rule(t, Hints::default()).is_ok();
-                match super::slips::se2_for_rotation(tys, &vals, retype) {
-                    Some(super::slips::Se2Read::Near(i)) => {
-                        self.env.arg_tys[base + i].kind = Kind::Matrix(Some(3), Some(3));
-                        op.rule(&self.env.arg_tys[base..], Hints::default())
-                    }
-                    Some(super::slips::Se2Read::Far(_)) => {
-                        err.help = Some(format!(
-                            "this 3×3 reads as SE(2) (last row (0, 0, 1)); SO3(M) reads a matrix as a rotation (projected within 1e-2, else an error giving its distance); signature: {}",
-                            b.signature
-                        ));
-                        Err(err)
-                    }
-                    None => Err(err),
-                }
-            }
-            other => other,
-        };
-        let ty = match rule {
+        let ty = match op.rule(&self.env.arg_tys[base..], Hints::default()) {
             Ok(ty) => ty,
             Err(err) => {
-                let at = err
-                    .arg
-                    .and_then(|i| args.get(usize::from(i)))
-                    .map_or(span, |a| a.span);
-                let plain: Vec<Ty> = self.env.arg_tys[base..].iter().map(strip).collect();
-                self.rule_failure(err, at, args.first().map(|a| a.span), None, None)?;
-                op.rule(&plain, Hints::default()).map_err(|e| {
-                    Diagnostic::error(e.kind.unwrap_or(ErrorKind::Type), at, e.into_message())
-                })?
+                // (a rotation written as a 3×3 that reads as SE(2), §5)
+                let retried = match running {
+                    true => self.rotation_read_as_se2(op, err, &vals, base),
+                    false => Err(err),
+                };
+                match retried {
+                    Ok(ty) => ty,
+                    Err(err) => {
+                        let at = err
+                            .arg
+                            .and_then(|i| args.get(usize::from(i)))
+                            .map_or(span, |a| a.span);
+                        let plain: Vec<Ty> = self.env.arg_tys[base..].iter().map(strip).collect();
+                        self.rule_failure(err, at, args.first().map(|a| a.span), None, None)?;
+                        op.rule(&plain, Hints::default()).map_err(|e| {
+                            Diagnostic::error(
+                                e.kind.unwrap_or(ErrorKind::Type),
+                                at,
+                                e.into_message(),
+                            )
+                        })?
+                    }
+                }
             }
         };
         if !self.running() {
@@ -253,6 +243,41 @@ impl Interp<'_> {
         crate::decide::replay::not_finite_group(&v, b.name, span)?;
         let val = Some(v);
         Ok(Typed::new(refine(ty, &val), val))
+    }
+
+    /// A call's rule refused, retried for a rotation written as a 3×3
+    /// whose numbers read as SE(2) (LANGUAGE.md §5): near SO(3) it is a
+    /// rotation (read, or projected with a warning, by the builtin), and
+    /// the rule is asked again with it as a plain 3×3; farther, the error's
+    /// help names `SO3(M)`. Any other refusal is `err` as it was.
+    #[cold]
+    #[inline(never)]
+    fn rotation_read_as_se2(
+        &mut self,
+        op: Op<'_>,
+        mut err: crate::check::rules::RuleError,
+        vals: &[Value],
+        base: usize,
+    ) -> Result<Ty, crate::check::rules::RuleError> {
+        let tys = &self.env.arg_tys[base..];
+        let retype = |t: &[Ty]| op.rule(t, Hints::default()).is_ok();
+        match super::slips::se2_for_rotation(tys, vals, retype) {
+            Some(super::slips::Se2Read::Near(i)) => {
+                self.env.arg_tys[base + i].kind = Kind::Matrix(Some(3), Some(3));
+                op.rule(&self.env.arg_tys[base..], Hints::default())
+            }
+            Some(super::slips::Se2Read::Far(_)) => {
+                let signature = match op {
+                    Op::Call(b, _) => b.signature,
+                    _ => "",
+                };
+                err.help = Some(format!(
+                    "this 3×3 reads as SE(2) (last row (0, 0, 1)); SO3(M) reads a matrix as a rotation (projected within 1e-2, else an error giving its distance); signature: {signature}"
+                ));
+                Err(err)
+            }
+            None => Err(err),
+        }
     }
 
     /// A call whose value comes from its arguments' parts or kinds, not

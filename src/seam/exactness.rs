@@ -21,6 +21,28 @@ impl Op<'_> {
     /// [`Op::apply`] on two operands the evaluator gives away: the recipe
     /// of the result's exact form keeps them as they are ([`Op::exact_of_pair`]).
     pub fn apply_pair(self, a: Box<Value>, b: Box<Value>, kind: &Kind) -> Result<Value, OpError> {
+        if matches!(self, Op::Arith(BinOp::Add | BinOp::Sub)) {
+            return self.apply_sum(a, b, kind);
+        }
+        let args = [&*a, &*b];
+        if let Some(v) = self.exact_or_symbolic(&args, kind) {
+            return v;
+        }
+        let mut v = self.numeric(&args, Some(kind))?;
+        if let Value::Num { exact, .. } = &mut v
+            && a.may_be_exact()
+            && b.may_be_exact()
+        {
+            *exact = self.exact_of_pair(a, b, kind);
+        }
+        Ok(v)
+    }
+
+    /// [`Op::apply_pair`] of a sum or difference: the same, and a result
+    /// whose floats cancelled takes them from its exact form
+    /// ([`Op::cancels`]). Apart, so that products pay nothing for it.
+    #[inline(never)]
+    fn apply_sum(self, a: Box<Value>, b: Box<Value>, kind: &Kind) -> Result<Value, OpError> {
         let args = [&*a, &*b];
         if let Some(v) = self.exact_or_symbolic(&args, kind) {
             return v;
@@ -49,10 +71,8 @@ impl Op<'_> {
     /// value `==` decides on (LANGUAGE.md §7: "Arithmetic keeps exact
     /// numbers exact"). A broadcast operand (a scalar plus a matrix) is
     /// left as it is.
+    #[inline(never)]
     fn cancels(self, args: &[&Value; 2]) -> bool {
-        if !matches!(self, Op::Arith(BinOp::Add | BinOp::Sub)) {
-            return false;
-        }
         let [Value::Num { m: x, .. }, Value::Num { m: y, .. }] = args else {
             return false;
         };
