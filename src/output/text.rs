@@ -387,19 +387,7 @@ fn write_value(out: &mut String, prefix: &str, ty: &Ty, v: &Value, style: Style)
 /// `indent`), then its label.
 fn write_number(out: &mut String, indent: usize, ty: &Ty, v: &Value, style: Style) {
     if let Some(t) = crate::values::format::exact_text(v, style) {
-        let st = crate::sym::print::Style {
-            mode: style.sym,
-            digits: style.digits,
-        };
-        // (the closed forms of a float's rounding follow `≈ `)
-        let indent = match t.rounded {
-            true => {
-                out.push_str("≈ ");
-                indent + 2
-            }
-            false => indent,
-        };
-        out.push_str(&crate::values::exact::block(&t.m, st, indent, false));
+        t.write(out, style, indent, false);
         return write_label(out, ty, v, style);
     }
     match v {

@@ -50,6 +50,27 @@ pub struct ExactText {
     pub rounded: bool,
 }
 
+impl ExactText {
+    /// Appends the entries after a prefix ending at column `indent` (a
+    /// matrix as an aligned block, or on one line when `inline`), after
+    /// `≈ ` when they are a float's rounding.
+    pub fn write(&self, out: &mut String, style: Style, indent: usize, inline: bool) {
+        let indent = match self.rounded {
+            true => {
+                out.push_str("≈ ");
+                indent + 2
+            }
+            false => indent,
+        };
+        out.push_str(&super::exact::block(
+            &self.m,
+            sym_style(style),
+            indent,
+            inline,
+        ));
+    }
+}
+
 /// The exact form `--exact` prints for a value (LANGUAGE.md §1, §10): its
 /// entries as exact numbers (`1/√2`, `(1/9) π`), when it has an exact form
 /// that is not just the decimals it prints anyway (`0.866` stays `0.866`);
@@ -158,11 +179,7 @@ pub fn write_numbers(out: &mut String, m: &Num, style: Style) {
 /// [`inline`], appended to `out`.
 pub fn write_inline(out: &mut String, v: &Value, style: Style) {
     if let Some(t) = exact_text(v, style) {
-        if t.rounded {
-            out.push_str("≈ ");
-        }
-        out.push_str(&super::exact::block(&t.m, sym_style(style), 0, true));
-        return;
+        return t.write(out, style, 0, true);
     }
     match v {
         Value::Num { m, .. } => write_numbers(out, m, style),
