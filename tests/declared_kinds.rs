@@ -160,6 +160,15 @@ fn a_declared_kind_holds_when_numbers_come() {
         out.starts_with("R = [1, 0, 0\n") && out.contains(": SO(3)"),
         "{out}"
     );
+    // so(2) and se(2) are declared as the others (the kinds chasles prints)
+    let out = printed("given X : so2\nE = exp(X)\nX = [0, -1; 1, 0]\nE\ngiven Y : se2\nY");
+    assert!(out.contains("0.8415,  0.5403]  : SO(2)"), "{out}");
+    assert!(out.contains("Y  : se(2)"), "{out}");
+    let err = error("given X : so2\nX = 5");
+    assert!(
+        err.contains("X was declared an so(2) (given X : so2), but the value is a scalar"),
+        "{err}"
+    );
     // Declared again, the name takes the new kind.
     assert!(printed("given x : vec3\ngiven x : scalar\nx = 4").contains("x = 4"));
 }

@@ -321,7 +321,9 @@ fn a_frame_error_appears_and_disappears_as_the_line_is_edited() {
     let l = labels(&c.at("textDocument/completion", 5, 11));
     assert_eq!(
         l,
-        ["SE2", "SE3", "SO2", "SO3", "scalar", "screw", "se3", "so3"]
+        [
+            "SE2", "SE3", "SO2", "SO3", "scalar", "screw", "se2", "se3", "so2", "so3"
+        ]
     );
     c.edit(8, 5, 0, 11, ":");
     let l = labels(&c.at("textDocument/completion", 5, 1));

@@ -456,7 +456,7 @@ impl Interp<'_> {
 
 /// The kinds `given` accepts (LANGUAGE.md §7), as the declaration spells
 /// them (`given u : vec3`).
-const GIVEN_KINDS: [(&str, Kind); 12] = [
+const GIVEN_KINDS: [(&str, Kind); 14] = [
     ("scalar", Kind::Scalar),
     ("vec3", Kind::Vector(Some(3))),
     ("vec6", Kind::Vector(Some(6))),
@@ -466,6 +466,8 @@ const GIVEN_KINDS: [(&str, Kind); 12] = [
     ("SE2", Kind::SE2),
     ("so3", Kind::So3),
     ("se3", Kind::Se3),
+    ("so2", Kind::So2),
+    ("se2", Kind::Se2),
     ("twist", Kind::Twist),
     ("screw", Kind::Screw),
     ("wrench", Kind::Wrench),

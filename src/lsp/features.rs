@@ -30,7 +30,8 @@ const KEYWORDS: &[&str] = &[
 /// The types `given` accepts (§7, `eval::interp::given_kind`), offered after
 /// `given NAME :`.
 const GIVEN_TYPES: &[&str] = &[
-    "scalar", "vec3", "vec6", "SO3", "SE3", "SO2", "SE2", "so3", "se3", "twist", "screw", "wrench",
+    "scalar", "vec3", "vec6", "SO3", "SE3", "SO2", "SE2", "so3", "se3", "so2", "se2", "twist",
+    "screw", "wrench",
 ];
 
 /// A diagnostic as the protocol carries it: the primary span as the range,
