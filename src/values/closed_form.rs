@@ -8,13 +8,13 @@
 //! 7 units of 22√7/21), so the form is said to be the floats' rounding,
 //! not the value.
 //!
-//! "A rounding of" is within [`ULPS`] units in the last place of the form,
+//! "A rounding of" is within `ULPS` units in the last place of the form,
 //! not the contract's 1e-12: a float 7e-13 from 7/3 (`7 (1/3 + 1e-13)`
 //! with no exact form) is not 7/3 even to rounding; the floats of a closed
 //! form worked out in double precision (a logarithm, a quaternion) are
 //! within a few units of it.
 //!
-//! A simple form is (p/q)·√n·πᵏ: q at most [`MAX_DENOMINATOR`] (36 takes
+//! A simple form is (p/q)·√n·πᵏ: q at most `MAX_DENOMINATOR` (36 takes
 //! every multiple of 5° as a fraction of π), n one of 1, 2, 3, 5, 6, 7
 //! (the square roots of the book's rotations, √2/2, √3/2, and their
 //! neighbours), k 0 or 1. Rationals are tried first, then roots, then
@@ -96,8 +96,8 @@ fn decimal(q: i64) -> bool {
     q == 1
 }
 
-/// The fraction p/q of smallest q with (p/q)·base within [`ULPS`] of
-/// y·base, if there is one with q ≤ [`MAX_DENOMINATOR`] (p ≠ 0).
+/// The fraction p/q of smallest q with (p/q)·base within `ULPS` of
+/// y·base, if there is one with q ≤ `MAX_DENOMINATOR` (p ≠ 0).
 fn fraction_near(y: f64) -> Option<(i64, i64)> {
     (1..=MAX_DENOMINATOR).find_map(|q| {
         let p = (y * q as f64).round();
