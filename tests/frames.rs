@@ -10,16 +10,21 @@ use common::printed;
 /// The frames and JSON type of a result, or an error's kind and message.
 type Outcome = Result<(Vec<String>, String), (String, String)>;
 
-/// Runs `src` and returns the frames and type of the last statement's JSON
-/// line, or the error kind and message.
-fn last(src: &str, mode: Mode) -> Outcome {
+/// The JSON line of the last statement of `src`, run in `mode`.
+fn last_json(src: &str, mode: Mode) -> serde_json::Value {
     let mut s = Session::new(Settings {
         json: true,
         ..Settings::default()
     });
     let (out, _err, _) = s.run_to_strings("t.chs", src, mode, false);
     let line = out.lines().last().expect("a result");
-    let v: serde_json::Value = serde_json::from_str(line).unwrap();
+    serde_json::from_str(line).unwrap()
+}
+
+/// Runs `src` and returns the frames and type of the last statement's JSON
+/// line, or the error kind and message.
+fn last(src: &str, mode: Mode) -> Outcome {
+    let v = last_json(src, mode);
     if let Some(e) = v.get("error") {
         return Err((
             e["kind"].as_str().unwrap().to_string(),
@@ -529,13 +534,7 @@ fn only_the_books_letters_name_screws_twists_and_wrenches() {
 /// The verdict on the last statement of `src`: its frames, or its error's
 /// kind, message and help.
 fn verdict(src: &str, mode: Mode) -> Result<Vec<String>, [String; 3]> {
-    let mut s = Session::new(Settings {
-        json: true,
-        ..Settings::default()
-    });
-    let (out, _err, _) = s.run_to_strings("t.chs", src, mode, false);
-    let line = out.lines().last().expect("a result");
-    let v: serde_json::Value = serde_json::from_str(line).unwrap();
+    let v = last_json(src, mode);
     if let Some(e) = v.get("error") {
         let text = |k: &str| e[k].as_str().unwrap_or("").to_string();
         return Err([text("kind"), text("message"), text("help")]);

@@ -24,25 +24,25 @@ impl Op<'_> {
         if matches!(self, Op::Arith(BinOp::Add | BinOp::Sub)) {
             return self.apply_sum(a, b, kind);
         }
-        let args = [&*a, &*b];
-        if let Some(v) = self.exact_or_symbolic(&args, kind) {
-            return v;
-        }
-        let mut v = self.numeric(&args, Some(kind))?;
-        if let Value::Num { exact, .. } = &mut v
-            && a.may_be_exact()
-            && b.may_be_exact()
-        {
-            *exact = self.exact_of_pair(a, b, kind);
-        }
-        Ok(v)
+        self.pair::<false>(a, b, kind)
     }
 
-    /// [`Op::apply_pair`] of a sum or difference: the same, and a result
-    /// whose floats cancelled takes them from its exact form
-    /// ([`Op::cancels`]). Apart, so that products pay nothing for it.
+    /// [`Op::apply_pair`] of a sum or difference: a result whose floats
+    /// cancelled takes them from its exact form ([`Op::cancels`]). A
+    /// function apart, so that products pay nothing for it.
     #[inline(never)]
     fn apply_sum(self, a: Box<Value>, b: Box<Value>, kind: &Kind) -> Result<Value, OpError> {
+        self.pair::<true>(a, b, kind)
+    }
+
+    /// [`Op::apply_pair`]'s work; with `SUM`, the cancellation's too.
+    #[inline(always)]
+    fn pair<const SUM: bool>(
+        self,
+        a: Box<Value>,
+        b: Box<Value>,
+        kind: &Kind,
+    ) -> Result<Value, OpError> {
         let args = [&*a, &*b];
         if let Some(v) = self.exact_or_symbolic(&args, kind) {
             return v;
@@ -52,7 +52,7 @@ impl Op<'_> {
             && a.may_be_exact()
             && b.may_be_exact()
         {
-            let cancels = self.cancels(&args);
+            let cancels = SUM && self.cancels(&args);
             *exact = self.exact_of_pair(a, b, kind);
             if cancels {
                 from_exact_form(&mut v);
