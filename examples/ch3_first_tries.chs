@@ -7,7 +7,9 @@
 #     book's [Rᵀ, -Rᵀ p; 0, 1] (3.64);
 #   - [Rotz(t), (1, 2, 3); 0, 1]: a symbolic rotation beside numbers;
 #   - numbers bound later give the values typed first;
-#   - solve(eq, x): Exercise 2.7's f, and the real roots of a quadratic.
+#   - solve(eq, x): Exercise 2.7's f, and the real roots of a quadratic;
+#   - exact numbers stay exact where their floats cancel: the difference
+#     of two 21-digit integers is 1, not the floats' 0 (session 28).
 
 given R : SO3
 given p : vec3
@@ -34,3 +36,6 @@ solve(6*(1 - n) + n*f == 6, f)
 solve(x^2 - 5*x + 6 == 0, x)                  # (2, 3)
 (r1, r2) = solve(x^2 == 2, x)                 # ∓√2
 assert r2^2 == 2
+
+123456789012345678901 - 123456789012345678900
+(10^16 + 1) - 10^16

@@ -114,7 +114,7 @@ fn identity_log(e: &Value) -> Option<Vec<Expr>> {
 /// numbers do not hold; then the product is no exact form either, and
 /// [`Exact::known`] keeps none).
 fn turned_back(omega: &[Expr]) -> Option<Vec<Expr>> {
-    let square = omega.iter().fold(Expr::default(), |s, w| s.add(&w.mul(w)));
+    let square = norm_squared(omega);
     let prec = PRECISIONS[0];
     let pi = ball::pi(prec);
     let pi2 = ball::mul(&pi, &pi, prec)?;
@@ -202,10 +202,15 @@ fn in_shape(v: &[Expr], rows: usize, cols: usize) -> Mat {
     }
 }
 
+/// ‖ω‖² = Σ ωᵢ², exactly.
+fn norm_squared(omega: &[Expr]) -> Expr {
+    omega.iter().fold(Expr::default(), |s, w| s.add(&w.mul(w)))
+}
+
 /// True when ‖ω‖ < π is certified: π² − Σ ωᵢ² is a ball that excludes 0
 /// and lies above it.
 fn principal(omega: &[Expr]) -> bool {
-    let square = omega.iter().fold(Expr::default(), |s, w| s.add(&w.mul(w)));
+    let square = norm_squared(omega);
     let prec = PRECISIONS[0];
     let pi = ball::pi(prec);
     let Some(pi2) = ball::mul(&pi, &pi, prec) else {

@@ -67,9 +67,10 @@ pub fn of_float(x: f64) -> Option<Expr> {
             if let Some((p, q)) = fraction_near(x / base) {
                 // (a fraction that is a short decimal, 3/10, as the decimal:
                 // it then prints as one, `--exact` or not)
-                let r = match n == 1 && !pi && decimal(q) {
+                let r = Rat::new(p.into(), q.into())?;
+                let r = match n == 1 && !pi && super::exact::is_decimal(&r) {
                     true => Rat::typed(p as f64 / q as f64)?,
-                    false => Rat::new(p.into(), q.into())?,
+                    false => r,
                 };
                 let mut e = Expr::constant(Coef::rat(r));
                 if n > 1 {
@@ -83,17 +84,6 @@ pub fn of_float(x: f64) -> Option<Expr> {
         }
     }
     None
-}
-
-/// True when 1/q is a terminating decimal (q = 2ᵃ5ᵇ).
-fn decimal(q: i64) -> bool {
-    let mut q = q;
-    for f in [2, 5] {
-        while q % f == 0 {
-            q /= f;
-        }
-    }
-    q == 1
 }
 
 /// The fraction p/q of smallest q with (p/q)·base within `ULPS` of
