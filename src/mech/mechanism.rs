@@ -399,6 +399,17 @@ impl Mechanism {
                     .help("write the joints, e.g. `joints 4R`; a single free rigid body is `links 2` with no joints"));
                 }
                 let j: i128 = groups.iter().map(|(c, _)| i128::from(*c)).sum();
+                // (a joint connects two links: the ground alone has none)
+                if n == 1 && j > 0 {
+                    return Err(MechError::new(
+                        MechPart::Links,
+                        format!(
+                            "links 1 with {j} joint{}: a joint connects two links, and the ground is the only one",
+                            if j == 1 { "" } else { "s" }
+                        ),
+                    )
+                    .help("N counts every link, ground included: one joint on the ground is `links 2; joints R`"));
+                }
                 let f: i128 = groups
                     .iter()
                     .map(|(c, jt)| i128::from(*c) * i128::from(jt.freedoms_in(space)))
