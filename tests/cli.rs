@@ -204,6 +204,8 @@ fn derive_finds_a_chain_and_names_reachable_frames() {
     assert_eq!(lines[4]["value"][0][3], 2);
     assert_eq!(lines[4]["value"][1][3], -1);
     assert_eq!(lines[4]["value"][2][3], -1);
+    // its JSON carries the chain text prints
+    assert_eq!(lines[4]["chain"], "inv(T_bc) * inv(T_db) * T_de");
     let text = chasles(&["-e", src], None).stdout;
     assert!(
         text.contains("T_ce = inv(T_bc) * inv(T_db) * T_de"),
@@ -229,4 +231,35 @@ fn derive_finds_a_chain_and_names_reachable_frames() {
         "{}",
         none.stderr
     );
+}
+
+/// `derive T_cc` is the empty chain: the identity of {c} to itself, of
+/// the size of the transforms that reach {c} (it was "no chain from {c}
+/// to {c}", whose help listed {c} as reachable).
+#[test]
+fn derive_of_a_frame_to_itself_is_the_identity() {
+    let src =
+        "T_ab = Trans((1, 2, 3))\nderive T_bb\nT_xy = SE2(0.5, 1, 2)\nderive T_yy\nderive R_qq";
+    let out = chasles(&["--json", "-e", src], None);
+    assert_eq!(out.code, Some(0), "{}", out.stderr);
+    let lines = json_lines(&out.stdout);
+    let eye = |n: usize| -> serde_json::Value {
+        (0..n)
+            .map(|i| (0..n).map(|j| u8::from(i == j)).collect::<Vec<_>>())
+            .collect::<Vec<_>>()
+            .into()
+    };
+    for (line, name, ty, n) in [
+        (1, "T_bb", "SE3", 4),
+        (3, "T_yy", "SE2", 3),
+        (4, "R_qq", "SO3", 3),
+    ] {
+        let l = &lines[line];
+        assert_eq!(l["name"], name, "{l}");
+        assert_eq!(l["type"], ty, "{l}");
+        assert_eq!(l["value"], eye(n), "{l}");
+        assert_eq!(l["chain"], "I", "{l}");
+        let f = &name[2..3];
+        assert_eq!(l["frames"], serde_json::json!([f, f]), "{l}");
+    }
 }

@@ -65,6 +65,9 @@ impl Interp<'_> {
                 },
             ));
         }
+        if from == to {
+            return Ok(self.derived_identity(&edges, &from, rotations));
+        }
         let itself = self.env.get(target.name).map(|_| {
             vec![Step {
                 name: String::from(target.name),
@@ -158,6 +161,38 @@ impl Interp<'_> {
             });
         }
         Ok((text, Typed::new(ty, acc)))
+    }
+}
+
+impl Interp<'_> {
+    /// `derive T_cc`: the empty chain, the identity I of {c} to itself,
+    /// of the size of the transforms that reach {c} (SE(3) or SO(3) when
+    /// none does, as `T_` or `R_` says).
+    fn derived_identity(
+        &self,
+        edges: &HashMap<String, Vec<(String, Step)>>,
+        frame: &str,
+        rotations: bool,
+    ) -> (String, Typed) {
+        let kind = edges
+            .get(frame)
+            .and_then(|es| es.first())
+            .and_then(|(_, s)| self.env.get(&s.name))
+            .map(|b| b.ty.kind)
+            .unwrap_or(if rotations { Kind::SO3 } else { Kind::SE3 });
+        let n = match kind {
+            Kind::SE3 => 4,
+            Kind::SO2 => 2,
+            _ => 3,
+        };
+        let f = Frame::named(frame);
+        let ty = Ty::new(kind, Frames::Pair(f.clone(), f));
+        let val = (self.mode != super::env::Mode::Check).then(|| Value::Num {
+            kind,
+            m: crate::values::num::Num::identity(n),
+            exact: crate::values::exact::Exact::Typed,
+        });
+        ("I".to_string(), Typed::new(ty, val))
     }
 }
 

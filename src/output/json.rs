@@ -94,6 +94,11 @@ pub fn outcome(o: &Outcome, line: usize) -> Option<J> {
         );
         obj.insert("kind".into(), json!(kind.json_name()));
     }
+    // `derive T_ce`: the chain it used, as text prints it (§6)
+    if let (Some(note), Some(obj)) = (o.note.as_deref(), out.as_object_mut()) {
+        let chain = note.split_once(" = ").map_or(note, |(_, c)| c);
+        obj.insert("chain".into(), json!(chain));
+    }
     // `explain`: the book's steps (§14)
     if let (Some(steps), Some(obj)) = (o.steps.as_deref(), out.as_object_mut()) {
         obj.insert("steps".into(), super::steps::json(steps));
