@@ -51,5 +51,12 @@ assert log(exp([S] t)) == [S] t
 # --- bound later: the operations as typed, with the numbers -----------------------
 w = (0, 0, 2)                    # not a unit vector: exp([w] t) = Rotz(2 t)
 t = 0.3
-R
+R                                # R says it relied on ‖w‖ = 1 (§7)
 assert R ~= Rotz(0.6)
+
+# --- numbers that leave a closed form's branch (§7) ------------------------------
+given u : scalar
+L = log(Rotz(u))                 # [ẑ] u, for u in (−π, π)
+u = 4
+L                                # the principal log [ẑ] (4 − 2π), and a warning
+assert L == log(Rotz(4))

@@ -551,6 +551,8 @@ fn lifted_recipe(r: &Rc<Recipe>, lift: &mut Lift) -> Option<Mat> {
         Step::Leaf(v @ Value::Num { .. }) => lifted(v, lift, 0),
         Step::Leaf(Value::Formula { m, .. }) => m.data.iter().all(exact).then(|| m.clone()),
         Step::Retag => lifted_recipe(r.args.first()?, lift),
+        // (a closed form marked with its branch is the call, §7)
+        Step::Closed(on) if !on.guards => lifted_recipe(r.args.first()?, lift),
         Step::Op(op) => {
             let angle = angle_of(op);
             let mut forms = Vec::with_capacity(r.args.len());

@@ -14,11 +14,12 @@ use std::collections::HashMap;
 use std::rc::Rc;
 
 use crate::check::ty::Kind;
-use crate::diagnostics::Diagnostic;
+use crate::diagnostics::{Diagnostic, ErrorKind};
 use crate::seam::apply::{self, Op};
 use crate::sym::{Expr, Mat, Symbol};
+use crate::syntax::ast::Span;
 use crate::values::exact::Exact;
-use crate::values::recipe::{Recipe, Step, vague};
+use crate::values::recipe::{OnBranch, Recipe, Step, vague};
 use crate::values::value::Value;
 
 /// A symbol's number, if it has one now: the value bound to it, with its
@@ -267,8 +268,14 @@ fn step(r: &Recipe, at: Lookup, memo: &mut Memo) -> Option<Value> {
                 }
             };
         }
-        // the call the closed form was made by, right on every branch
-        Step::Closed(_) => return args.into_iter().next(),
+        // the call the closed form was made by, right on every branch;
+        // numbers off the branch the closed form assumed say so (§7)
+        Step::Closed(on) => {
+            if let Some(why) = on.broken(&|s: &Symbol| float(at, s)) {
+                memo.warnings.push(off_branch(on, &why));
+            }
+            return args.into_iter().next();
+        }
         // a derivative of a closed form, on its branch only; off it, the
         // rate where there is one
         Step::Guard(on) => {
@@ -327,6 +334,26 @@ fn step(r: &Recipe, at: Lookup, memo: &mut Memo) -> Option<Value> {
             None
         }
     }
+}
+
+/// The warning of a value whose closed form held on a branch that the
+/// numbers bound since leave (LANGUAGE.md §7: the value that relied on an
+/// assumption says so when numbers break it): the value is the call
+/// itself, computed from the numbers as if they had been typed first.
+fn off_branch(on: &OnBranch, why: &str) -> Diagnostic {
+    Diagnostic::warning(
+        ErrorKind::Domain,
+        Span::default(),
+        format!(
+            "{}, which the numbers bound since leave ({why}): this value is computed from the \
+             numbers, as if they had been typed first",
+            on.text
+        ),
+    )
+    .with_help(
+        "the closed form printed before holds on its branch only; off it the value is the \
+         book's principal one for these numbers, not the closed form's",
+    )
 }
 
 /// The 4×4 of numbers `v` is, if it is one.

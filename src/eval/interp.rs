@@ -200,9 +200,11 @@ impl<'a> Interp<'a> {
                     return Ok(out(Names::One([target.name]), t));
                 }
                 self.bind_value(target.name, &t);
-                self.note_reliance(target.name);
                 let mut o = out(Names::One([target.name]), t);
                 self.shown(&mut o.val, s.span);
+                // (after it is shown: showing a closed form notes the axes
+                // it takes as unit vectors, super::relied)
+                self.note_reliance(target.name);
                 Ok(o)
             }
             StmtKind::Destructure { targets, value } => {

@@ -112,7 +112,9 @@ impl Interp<'_> {
             };
             // (a screw axis S = (ω, v) assumed ‖ω‖ = 1, Proposition 3.16)
             let norm = m.iter().take(3).map(|x| x * x).sum::<f64>().sqrt();
-            if (norm - 1.0).abs() <= UNIT_TOL {
+            // (a screw axis with ω = 0 is the case the note also gave:
+            // exp([S] θ) = [I, v θ; 0, 1])
+            if (norm - 1.0).abs() <= UNIT_TOL || (m.len() == 6 && norm == 0.0) {
                 continue;
             }
             let (what, n) = if m.len() == 6 {

@@ -93,6 +93,8 @@ fn made_again(r: &Rc<Recipe>, depth: u32) -> Option<Value> {
     let op = match (&r.step, r.args.as_slice()) {
         (Step::Leaf(v), _) => return Some(v.clone()),
         (Step::Op(o), _) => Op::of(o)?,
+        // (a closed form marked with its branch is the call, §7)
+        (Step::Closed(on), [call]) if !on.guards => return made_again(call, depth),
         // (with the kind its name gave it: `w = (1, 2, 3) x`)
         (Step::Retag, [made]) => {
             return Some(match made_again(made, depth)? {

@@ -84,6 +84,12 @@ pub struct OnBranch {
     pub angles: Vec<crate::sym::Expr>,
     /// The branch as the note says it.
     pub text: String,
+    /// Whether a derivative of the closed form holds on the branch only
+    /// ([`Step::Guard`]: the log of a symbolic transform). The closed
+    /// forms of the log of a rotation, `quat`, `cayley` and `atan2` are
+    /// marked only so that numbers off their branch say so (§7); their
+    /// derivatives are the call's, right on every branch.
+    pub guards: bool,
 }
 
 impl OnBranch {
@@ -113,6 +119,7 @@ impl OnBranch {
             positive: each(&self.positive),
             angles: each(&self.angles),
             text: self.text.clone(),
+            guards: self.guards,
         }
     }
 
@@ -139,6 +146,34 @@ impl OnBranch {
             sure &= x.abs() < pi - TOL;
         }
         sure.then_some(true)
+    }
+
+    /// The first condition of the branch that numbers `at` break by more
+    /// than rounding, as the note says it (`θ = 4 is not in (−π, π)`);
+    /// None when they are on the branch or too near its bounds to tell
+    /// ([`OnBranch::holds`]).
+    pub fn broken(&self, at: &dyn Fn(&crate::sym::Symbol) -> Option<f64>) -> Option<String> {
+        if self.holds(at) != Some(false) {
+            return None;
+        }
+        let show = |e: &crate::sym::Expr, x: f64| {
+            format!(
+                "{} = {}",
+                crate::sym::print::expr(e, Default::default()),
+                crate::values::number::fmt_num(x, 4)
+            )
+        };
+        let pi = std::f64::consts::PI;
+        let angle = self.angles.iter().find_map(|a| {
+            let x = a.eval(at)?;
+            (x.abs() > pi + 1e-12).then(|| format!("{} is outside [−π, π]", show(a, x)))
+        });
+        angle.or_else(|| {
+            self.positive.iter().find_map(|p| {
+                let x = p.eval(at)?;
+                (x < -1e-12).then(|| format!("{} is negative", show(p, x)))
+            })
+        })
     }
 }
 

@@ -17,25 +17,29 @@ use crate::values::recipe::{OnBranch, Operation, Recipe, Step};
 use crate::values::value::Value;
 
 /// `v`, the value of builtin `name` over `args` made with its recipe,
-/// marked as a closed form on a branch where it is one: the log of a
-/// symbolic transform. (The maps with rates need no mark; nor does the
-/// log of a rotation, whose closed forms are ω̂θ about a fixed axis: off
-/// the branch the log is ω̂(θ − 2πk), of the same derivative ω̂ dθ.)
+/// marked as a closed form on a branch where it is one (LANGUAGE.md §7:
+/// the note says which, and numbers bound later that leave it say so,
+/// `decide::replay`). The log of a symbolic transform guards its
+/// derivative ([`OnBranch::guards`]); the other marks (the log of a
+/// rotation, whose closed forms are ω̂θ about a fixed axis: off the
+/// branch the log is ω̂(θ − 2πk), of the same derivative ω̂ dθ) leave
+/// the chain rule as it was.
 pub(in crate::seam) fn closed_form(name: &str, v: Value, args: &[&Value]) -> Value {
+    let Value::Formula {
+        kind,
+        m,
+        how: Some(r),
+    } = &v
+    else {
+        return v;
+    };
     let transform = |a: &Value| matches!(a.kind().shape(), Some((Some(4), Some(4))));
-    if !(matches!(name, "log" | "MatrixLog6") && args.first().is_some_and(|a| transform(a))) {
+    let guards = matches!(name, "log" | "MatrixLog6") && args.first().is_some_and(|a| transform(a));
+    if !guards && !matches!(name, "log" | "MatrixLog3" | "quat" | "cayley" | "atan2") {
         return v;
     }
     let vals: Vec<Value> = args.iter().map(|a| (*a).clone()).collect();
-    let (
-        Some((b, text)),
-        Value::Formula {
-            kind,
-            m,
-            how: Some(r),
-        },
-    ) = (crate::builtins::branch_of(name, &vals), &v)
-    else {
+    let Some((b, text)) = crate::builtins::branch_of(name, &vals) else {
         return v;
     };
     let on = OnBranch {
@@ -47,6 +51,7 @@ pub(in crate::seam) fn closed_form(name: &str, v: Value, args: &[&Value]) -> Val
         positive: b.positive,
         angles: b.angles,
         text,
+        guards,
     };
     match Recipe::node(Step::Closed(Rc::new(on)), vec![r.clone()], r.kind) {
         Some(how) => Value::Formula {
