@@ -299,3 +299,26 @@ fn irrational_angles_print_folded_as_eq_proves_them() {
     // nothing shorter: kept as it is
     assert_eq!(reads_back("given x", "cos(sqrt(2) x)^2", ""), "cos(√2 x)^2");
 }
+
+#[test]
+fn quotient_and_root_angles_fold_and_decide() {
+    // Exercise 3.23: car 1 on a table of radius r turns through v1 t/r;
+    // sin² + cos² of that angle printed itself, T_12's position kept it,
+    // and == with the folded form was `cannot decide`
+    for (entry, want) in [
+        ("sin(a/b)^2 + cos(a/b)^2", "1"),
+        ("sin(1/b)^2 + cos(1/b)^2", "1"),
+        ("sin(a + 1/b)^2 + cos(a + 1/b)^2", "1"),
+        ("sin(sqrt(a))^2 + cos(sqrt(a))^2", "1"),
+        ("sin(a/(1 + b^2))^2 + cos(a/(1 + b^2))^2", "1"),
+        ("r (sin(a/b) + sin(a/b)^2 + cos(a/b)^2)", "r (1 + sin(a/b))"),
+    ] {
+        assert_eq!(reads_back("given a, b, r", entry, ""), want, "{entry}");
+    }
+    let src = "given t, v1, v2, r\nphi = v1 t/r\n\
+               T_01 = [Rotz(phi), (r cos(phi), r sin(phi), 0); 0, 1]\n\
+               T_02 = [Rotz(pi/2), (0, v2 t - r, 0); 0, 1]\n\
+               T_12 = inv(T_01) * T_02\n\
+               T_12[1, 4] == v2 t sin(phi) - r sin(phi) - r";
+    assert_eq!(last(src), "true");
+}

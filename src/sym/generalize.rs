@@ -21,16 +21,18 @@ use num_traits::{One, Zero};
 type Fresh = (Mono, Coef, Symbol);
 
 /// True for a term of an argument that is not a plain angle: a product
-/// of symbols (or of π and symbols), or a symbol with an irrational
-/// coefficient. A symbol with a rational coefficient, π alone and a
-/// constant are the canonical form's own.
+/// or quotient of symbols (or of π and symbols, `x y`, `v t/r`), a real
+/// call such as `√x` or `1/(a + b)` in it, or a symbol with an
+/// irrational coefficient. A symbol with a rational coefficient, π alone
+/// and a constant are the canonical form's own; a term with an angle's
+/// e^{iθ} is not real alone, so it is never renamed.
 fn odd(m: &Mono, c: &Coef) -> bool {
-    let plain = m
+    let real = m.iter().all(|(v, _)| !matches!(v, Var::Z(_)));
+    let symbols = m
         .iter()
-        .all(|(v, k)| matches!(v, Var::Sym(_) | Var::Pi) && *k > 0);
-    let degree: i32 = m.iter().map(|(_, k)| *k).sum();
-    let symbols = m.iter().any(|(v, _)| matches!(v, Var::Sym(_)));
-    plain && symbols && (degree >= 2 || c.as_rat().is_none())
+        .any(|(v, _)| matches!(v, Var::Sym(_) | Var::Call(_)));
+    let angle = matches!(m.as_slice(), [(Var::Sym(_), 1)]) && c.as_rat().is_some();
+    real && symbols && !angle
 }
 
 /// The odd terms (monomial and coefficient) in the arguments of the sines
