@@ -155,3 +155,23 @@ fn a_block_of_symbolic_blocks_has_the_size_of_its_blocks() {
     assert_eq!(j[6]["kind"], "bool", "{:?}", j[6]);
     assert_eq!(j[8]["value"], true, "{:?}", j[8]);
 }
+
+/// An integer power of a `given` transform or rotation is the product it
+/// is (Exercise 3.11's e^A e^A, written A^2): `A^2 == A A` was `cannot
+/// decide`, as were `R^2 == R R` and `A^0 == I`; a wrong one stays
+/// undecided, never true.
+#[test]
+fn integer_powers_of_given_matrices_are_their_products() {
+    let j = json(
+        "given A, B : SE3\ngiven R : SO3\nA^2 == A A\nA^3 == A A A\nA^2 A == A A^2\n\
+         A^-2 == inv(A) inv(A)\nR^2 == R R\nA^0 == I\n(A B)^2 == A B A B\n\
+         inv(A^2) == A^-1 A^-1\nA^2 == A\nA^2 B == A B A\nA^3 == A A\nA^-2 == A A",
+    );
+    assert_eq!(j.len(), 12, "{j:?}");
+    for proven in &j[..8] {
+        assert_eq!(proven["value"], true, "{proven:?}");
+    }
+    for wrong in &j[8..] {
+        assert_ne!(wrong["value"], true, "{wrong:?}");
+    }
+}

@@ -98,7 +98,7 @@ pub fn rounding_note(span: Span) -> Diagnostic {
 /// the trees are also compared in full (their `Debug` form holds every
 /// constant's exact value): `t + 1.00001` is not `t + 1.00002`.
 pub fn symbolic_equal(a: &Sym, b: &Sym, _op: CmpOp) -> Option<bool> {
-    // What cancelled products leave (`inv(T) * T`) is the identity `I`.
+    // What cancelled products leave (`inv(T) * T`, `A^0`) is the identity `I`.
     let identity = |s: &Sym| match s {
         Sym::Identity => true,
         Sym::Const(v, _) => v
@@ -111,17 +111,45 @@ pub fn symbolic_equal(a: &Sym, b: &Sym, _op: CmpOp) -> Option<bool> {
     }
     // Trees compare structurally, constants by value (not printed text),
     // with the adjoint of an inverse written one way: (Ad_T)⁻¹ = Ad_{T⁻¹}
-    // (Proposition 3.20), so inv(Ad(T)) == Ad(inv(T)) is true (issue 35).
+    // (Proposition 3.20), so inv(Ad(T)) == Ad(inv(T)) is true (issue 35),
+    // and an integer power written as the product it is (`A^2 == A A`).
     if let Some(t) = super::powers::equal(a, b) {
         return Some(t);
     }
-    (a == b || adjoint_inverses(a) == adjoint_inverses(b)).then_some(true)
+    if a == b {
+        return Some(true);
+    }
+    let (x, y) = (adjoint_inverses(a), adjoint_inverses(b));
+    (x == y || identity(&x) && identity(&y)).then_some(true)
+}
+
+/// The largest integer power written out as a product for `==`
+/// ([`adjoint_inverses`]): `A^8` is eight factors.
+const POWER_FACTORS: u32 = 8;
+
+/// `x^n` as the product it is, for an integer `n` with |n| at most
+/// [`POWER_FACTORS`]: `x x … x`, `inv(x) … inv(x)` for a negative power,
+/// the identity for `x^0` (of a square matrix or a scalar alike, the
+/// product of no factors). None for any other exponent.
+fn power_product(x: &Sym, e: &Sym) -> Option<Sym> {
+    let Sym::Const(v, _) = e else { return None };
+    let n = v.as_scalar()?;
+    if n.fract() != 0.0 || n.abs() > f64::from(POWER_FACTORS) {
+        return None;
+    }
+    let factor = if n < 0.0 {
+        x.clone().inverse()
+    } else {
+        x.clone()
+    };
+    Some(Sym::product(vec![factor; n.abs() as usize]))
 }
 
 /// `s` with every inverse of an adjoint written as the adjoint of the
 /// inverse, and the adjoint of a product as the product of the adjoints
-/// (Ad is a homomorphism: `Ad(T1 T2) == Ad(T1) Ad(T2)` is true), and
-/// `dot(a, M y)` as `dot(Mᵀ a, y)`.
+/// (Ad is a homomorphism: `Ad(T1 T2) == Ad(T1) Ad(T2)` is true),
+/// `dot(a, M y)` as `dot(Mᵀ a, y)`, and a small integer power as its
+/// product ([`power_product`]: `A^3 == A A A`, `A^-2 == inv(A) inv(A)`).
 fn adjoint_inverses(s: &Sym) -> Sym {
     use crate::values::symbolic::Role;
     let go = |x: &Sym| Box::new(adjoint_inverses(x));
@@ -169,6 +197,9 @@ fn adjoint_inverses(s: &Sym) -> Sym {
         }
         Sym::Call(f, args) => Sym::Call(*f, args.iter().map(adjoint_inverses).collect()),
         Sym::Product(xs) => Sym::product(xs.iter().map(adjoint_inverses).collect()),
+        Sym::Pow(x, e) => {
+            power_product(&adjoint_inverses(x), e).unwrap_or_else(|| Sym::Pow(go(x), e.clone()))
+        }
         Sym::Transpose(x) => Sym::Transpose(go(x)),
         Sym::Neg(x) => Sym::Neg(go(x)),
         Sym::Add(x, y) => Sym::Add(go(x), go(y)),
