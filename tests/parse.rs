@@ -1031,3 +1031,17 @@ fn mech_counts_and_contacts() {
     assert!(m.links_expr.is_none());
     assert_eq!(joints(&m).len(), 4);
 }
+
+/// The book's subscripts and superscripts copied as typeset (θ₁, S₂, 2²)
+/// are errors whose help spells the name or power chasles reads: the
+/// error named the character and nothing more.
+#[test]
+fn typeset_subscripts_and_superscripts_get_the_spelling() {
+    let help = |src: &str| err(src).help.clone().unwrap_or_default();
+    let h = help("θ₁ = 30°");
+    assert!(h.contains("θ1") && h.contains("θ_1"), "{h}");
+    let h = help("S₁₂ = (0, 0, 1, 0, 0, 0)");
+    assert!(h.contains("S12") && h.contains("S_12"), "{h}");
+    let h = help("x = 2²");
+    assert!(h.contains("2^2"), "{h}");
+}

@@ -214,9 +214,14 @@ fn pair_rule(what: &'static str, ret: fn(&[Ty]) -> Kind) -> impl Fn(&[Ty]) -> Re
     move |args: &[Ty]| {
         for (i, t) in args.iter().enumerate() {
             if !Param::AnyVec.accepts(&t.kind) {
+                // (`4·1` as the Grübler line prints it, `R·p` as a product)
+                let sign = if what == "dot" { "·" } else { "×" };
                 return Err(ArgError::type_of(
                     i,
-                    format!("{what} takes vectors, not {}", t.kind.a()),
+                    format!(
+                        "{what} takes vectors, not {}; {sign} is the {what} product of two vectors: multiply with * or side by side (4*1, R * p)",
+                        t.kind.a()
+                    ),
                 ));
             }
         }

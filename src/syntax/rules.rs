@@ -344,8 +344,43 @@ fn help(text: &str, pos: usize, found: Option<char>, expected: &[String]) -> Opt
         '.' if before.ends_with(|c: char| c.is_ascii_digit()) => {
             Some("write decimals with digits after the point: 2.0 or 2".into())
         }
+        // (the book's θ₁ and x², copied as typeset)
+        '₀'..='₉' => Some(subscript_help(text, pos)),
+        '⁰'..='⁹' | '¹' | '²' | '³' => Some(
+            "a superscript power follows a name or a bracket (R², [w]³); after a number write 2^2"
+                .into(),
+        ),
         _ => None,
     }
+}
+
+/// The help for a subscript digit at `pos` (the book's θ₁, S₂): the name
+/// spelled with plain digits, `θ1` (an index, LANGUAGE.md §2), or with
+/// an underscore, `θ_1`.
+fn subscript_help(text: &str, pos: usize) -> String {
+    let digit = |c: char| ('₀'..='₉').contains(&c);
+    let rest = text.get(pos..).unwrap_or("");
+    let digits: String = rest
+        .chars()
+        .take_while(|&c| digit(c))
+        .map(|c| char::from(b'0' + (u32::from(c) - u32::from('₀')) as u8))
+        .collect();
+    let before = text.get(..pos).unwrap_or("");
+    let name: String = before
+        .chars()
+        .rev()
+        .take_while(|&c| c.is_alphanumeric() || c == '_')
+        .collect::<Vec<_>>()
+        .into_iter()
+        .rev()
+        .collect();
+    if name.is_empty() {
+        return format!("subscript digits are not part of names or numbers: write {digits}");
+    }
+    format!(
+        "subscript digits are not part of names: write {name}{digits} or {}_{digits}",
+        name.trim_end_matches('_')
+    )
 }
 
 /// The comparison a rule stands for (`==`, `≈`/`~=`), if any.

@@ -1,0 +1,2 @@
+# the book's θ₁ copied as typeset: the help spells it θ1
+θ₁ = 30°
