@@ -395,6 +395,10 @@ const OPERATORS: &[&str] = &[
     "cos(a) == 1/2",
     "sqrt(a) sqrt(a)",
     "Rotz(a) * (1, 0, 0)",
+    // a transform times a point, homogeneous (§3.3.1), planar too
+    "[Rotz(a), (1, 2, 3); 0, 1] * (1, 0, 0)",
+    "SE2(a, 1, 2) * (1, 0)",
+    "[cos(a), -sin(a), 1; sin(a), cos(a), 2; 0, 0, 1] * (1, a)",
     "exp([(0, 0, 1)] a)",
     "exp([(0, 0, 1, 0, a, 0)] 1)",
     // orders wait for their numbers (issue 21), exact numbers exactly

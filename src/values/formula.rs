@@ -166,7 +166,8 @@ pub fn binary(op: BinOp, a: &Value, b: &Value, kind: &Kind) -> Result<Value, Str
 }
 
 /// The product: scalar times matrix, matrix times matrix, and a transform
-/// times a 3-vector taken as a point (homogeneous, §3.3.1).
+/// times a point (homogeneous, §3.3.1): an SE(3) matrix times a 3-vector,
+/// and an SE(2) one (last row 0, 0, 1) times a 2-vector, as with numbers.
 pub fn mul(x: &Mat, y: &Mat) -> Result<Mat, String> {
     if x.data.len() == 1 {
         return Ok(y.scale(&x.data[0]));
@@ -174,11 +175,16 @@ pub fn mul(x: &Mat, y: &Mat) -> Result<Mat, String> {
     if y.data.len() == 1 {
         return Ok(x.scale(&y.data[0]));
     }
-    if (x.rows, x.cols, y.rows, y.cols) == (4, 4, 3, 1) {
+    let planar = (x.rows, x.cols, y.rows, y.cols) == (3, 3, 2, 1)
+        && x.data[6..]
+            .iter()
+            .map(Expr::as_f64)
+            .eq([0.0, 0.0, 1.0].map(Some));
+    if planar || (x.rows, x.cols, y.rows, y.cols) == (4, 4, 3, 1) {
         let mut p = y.data.clone();
         p.push(Expr::one());
         let q = x.mul(&Mat::column(p)).ok_or("size")?;
-        return Ok(Mat::column(q.data[..3].to_vec()));
+        return Ok(Mat::column(q.data[..y.rows].to_vec()));
     }
     x.mul(y)
         .ok_or_else(|| format!("cannot multiply matrices of sizes {}", sizes(x, y)))
