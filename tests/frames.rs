@@ -617,3 +617,28 @@ fn a_transform_refuses_free_vectors_with_numbers_and_symbols_alike() {
         "{err}"
     );
 }
+
+/// `given v_s : free` is kept when numbers are typed for v_s: the literal
+/// rule of Fig. 3.13 (`v_b = (0, 0, 1.5)` is the figure's point) read the
+/// declared velocity as a point, so `inv(T_sb) v_s` gave R^T (v_s − p) =
+/// (0, 0, 0) for v_s = (1, 0, 0), not the velocity's R^T v_s. Undeclared,
+/// the figure's literal is still a point.
+#[test]
+fn a_velocity_declared_free_stays_free_when_numbers_are_typed() {
+    let setup = "T_sb = [Rotz(0.5), (1, 0, 0); 0, 1]\ngiven v_s : free\nv_s = (1, 0, 0)\n";
+    let err = common::error(&format!("{setup}inv(T_sb) v_s\n"));
+    assert!(
+        err.contains("applies a transform to a free vector: v_s is a linear velocity"),
+        "{err}"
+    );
+    let v = common::last_numbers(&format!("{setup}T_sb.R^T v_s\n"));
+    let (c, s) = (0.5f64.cos(), 0.5f64.sin());
+    assert!(
+        (v[0] - c).abs() < 1e-12 && (v[1] + s).abs() < 1e-12,
+        "{v:?}"
+    );
+    // the figure's point, undeclared
+    let p =
+        common::last_numbers("T_sb = [Rotz(0.5), (1, 0, 0); 0, 1]\nv_b = (0, 0, 1.5)\nT_sb v_b\n");
+    assert_eq!(p, vec![1.0, 0.0, 1.5]);
+}

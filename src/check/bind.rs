@@ -28,6 +28,10 @@ pub struct Claim {
     /// (`ω_s`, `v_b`) or an axis (`x_a`); `given u : free` says it for
     /// other names ([`super::role`]).
     pub role: Option<Role>,
+    /// True when `given name : free` (or `: point`) declared the role: the
+    /// user said what the vector is, so no reading of the letter (Fig.
+    /// 3.13's literal `v_b` as a point) overrides it.
+    pub declared: bool,
 }
 
 impl Claim {
@@ -46,6 +50,7 @@ impl Claim {
             letter: book_letter(name),
             frames,
             role,
+            declared: false,
         }
     }
 

@@ -408,6 +408,7 @@ impl Env {
             .entry(Key(name))
             .or_insert_with(|| Claim::of(name.as_str()));
         claim.role = Some(role);
+        claim.declared = true;
         *claim
     }
     /// Unbinds `name` (a function's parameter, a comprehension's variable,

@@ -182,9 +182,13 @@ impl<'a> Interp<'a> {
                 crate::check::rules::settle_in_place(&mut t.ty);
                 self.bind_checked(target.name, &mut t, target.span, value.span)?;
                 // (Fig. 3.13: `v_b = (0, 0, 1.5)` is a point, as the book uses it)
-                // (only a free vector can be made a point)
+                // (only a free vector can be made a point, and not one
+                // declared so: `given v_s : free`)
                 if t.ty.free {
-                    let role = || self.env.claim(target.name).role;
+                    let role = || {
+                        let claim = self.env.claim(target.name);
+                        claim.role.filter(|_| !claim.declared)
+                    };
                     t.ty.free = !super::slips::literal_point(&target.name, role, value);
                 }
                 // A number silenced by `;` moves into its binding: nothing
