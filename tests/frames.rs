@@ -642,3 +642,27 @@ fn a_velocity_declared_free_stays_free_when_numbers_are_typed() {
         common::last_numbers("T_sb = [Rotz(0.5), (1, 0, 0); 0, 1]\nv_b = (0, 0, 1.5)\nT_sb v_b\n");
     assert_eq!(p, vec![1.0, 0.0, 1.5]);
 }
+
+/// Example 3.4's T_sc = e^{[S]θ} T_sb, checked as the book writes it: the
+/// moved frame {b'} is compared with {c}, as binding `T_sc = exp(L) T_sb`
+/// names it (`exp(L) * T_sb ≈ T_sc` was "cannot compare quantities in
+/// different frames"); two named frames still do not compare.
+#[test]
+fn a_moved_frame_compares_with_the_frame_it_is_claimed_to_be() {
+    let setup = "T_sb = [cos(30°), -sin(30°), 1; sin(30°), cos(30°), 2; 0, 0, 1]\n\
+                 T_sc = [cos(60°), -sin(60°), 2; sin(60°), cos(60°), 1; 0, 0, 1]\n\
+                 L = log(displacement(T_sb, T_sc))\n";
+    for (cmp, want) in [
+        ("exp(L) * T_sb ≈ T_sc", "true"),
+        ("T_sc ≈ exp(L) T_sb", "true"),
+        ("exp(L/2) * T_sb ≈ T_sc", "false"),
+    ] {
+        let out = printed(&format!("{setup}{cmp}\n"));
+        assert_eq!(out.lines().last(), Some(want), "{cmp}: {out}");
+    }
+    let err = common::error(&format!("{setup}T_sb ≈ T_sc\n"));
+    assert!(
+        err.contains("cannot compare quantities in different frames"),
+        "{err}"
+    );
+}

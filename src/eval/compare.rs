@@ -56,7 +56,17 @@ pub fn compare_rule(l: &Ty, r: &Ty) -> Result<Ty, RuleError> {
     // A displacement in {a} (`exp(log(T_ab))`) may equal a map out of {a}.
     let displacement_of =
         |d: &Frames, f: &Frames| matches!(d, Frames::Disp(a) if f.outer() == Some(a));
-    if !displacement_of(&l.frames, &r.frames) && !displacement_of(&r.frames, &l.frames) {
+    // A moved frame may be the frame it is compared with, as a binding
+    // names it (`T_sc = exp([S] θ) T_sb`): Example 3.4's T_sc = e^{[S]θ} T_sb
+    // compares {s}←{b'} with {s}←{c}.
+    let moved_onto = matches!(
+        (&l.frames, &r.frames),
+        (Frames::Pair(x, y), Frames::Pair(a, b)) if x == a && (y.is_moved() || b.is_moved())
+    );
+    if !moved_onto
+        && !displacement_of(&l.frames, &r.frames)
+        && !displacement_of(&r.frames, &l.frames)
+    {
         rules::same_frames("compare", l, r)?;
     }
     Ok(Ty::plain(Kind::Bool))
