@@ -191,3 +191,16 @@ fn a_list_of_points_draws() {
     assert!(out.contains("picture: point (1, 0, 0)"), "{out}");
     assert!(out.contains("list of 3 pictures"), "{out}");
 }
+
+/// `q` before it has a value, as the book's point on a screw axis: the
+/// help said "a script ends at its last line" (the habit of typing q to
+/// quit), which misleads inside `ScrewToAxis(q, s, h)`.
+#[test]
+fn an_unknown_q_is_a_point_to_give_not_a_quit() {
+    let e = error("S = ScrewToAxis(q, (0, 0, 1), 2)");
+    assert!(
+        e.contains("unknown name 'q'") && e.contains("given q : vec3"),
+        "{e}"
+    );
+    assert!(!e.contains("script ends"), "{e}");
+}

@@ -54,9 +54,11 @@ pub fn function(name: &str, args: &str) -> Option<String> {
 /// Help for an unknown name (not called), or None.
 pub fn name(name: &str) -> Option<String> {
     Some(match name {
-        "quit" | "exit" | "q" => {
+        "quit" | "exit" => {
             "a script ends at its last line; in the REPL type quit, :quit or Ctrl-D".into()
         }
+        // (q is also the book's point on a screw axis, ScrewToAxis(q, s, h))
+        "q" => "give q a value first (q = (3, 0, 0), a point on a screw axis) or declare it: given q : vec3; to leave the REPL type quit or :quit".into(),
         "help" => "in the REPL type help or :help NAME; on the command line chasles --help".into(),
         "True" | "TRUE" => "booleans are lower case: true".into(),
         "False" | "FALSE" => "booleans are lower case: false".into(),
@@ -305,6 +307,12 @@ mod tests {
         assert!(statement("import numpy as np").is_some());
         assert!(statement("x = snp.sin(1)").is_none());
         assert!(name("quit").unwrap().contains(":quit"));
+        // q is the book's point on a screw axis too: never only "quit"
+        let q = name("q").unwrap();
+        assert!(
+            q.contains("given q : vec3") && !q.contains("script ends"),
+            "{q}"
+        );
         assert_eq!(statement("x = 1 +"), None);
     }
 }
