@@ -812,3 +812,27 @@ fn the_derivative_of_given_transforms_is_zero() {
         assert_eq!(numbers_of(src), vec![0.0; 16], "{src}");
     }
 }
+
+/// `so3ToVec` and `se3ToVec` take exponential coordinates as they are,
+/// with numbers and with symbols alike (§3.6: the vector or its matrix):
+/// `so3ToVec((1, 2, θ))` was a kept call, and a derivative through it
+/// (`diff(so3ToVec(MatrixLog3(Rotz(θ))), θ)`) could not be computed.
+#[test]
+fn vector_forms_of_exponential_coordinates_pass_through_with_symbols() {
+    agree(
+        "given θ\ny = so3ToVec((1, 2, θ))\nθ = 0.7\ny",
+        "θ = 0.7\nso3ToVec((1, 2, θ))",
+    );
+    agree(
+        "given θ\ny = se3ToVec((1, 2, θ, 4, 5, 6))\nθ = 0.7\ny",
+        "θ = 0.7\nse3ToVec((1, 2, θ, 4, 5, 6))",
+    );
+    for x in ["1", "4"] {
+        agree(
+            &format!("given θ\nD = diff(so3ToVec(MatrixLog3(Rotz(θ))), θ)\nθ = {x}\nD"),
+            "(0, 0, 1)",
+        );
+    }
+    let shown = printed("given θ\nso3ToVec((1, 2, θ))", 4);
+    assert_eq!(shown[0], "(1, 2, θ)  : 3-vector", "{shown:?}");
+}

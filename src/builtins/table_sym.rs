@@ -156,6 +156,10 @@ pub fn eval_symbolic(name: &str, vals: &[Value], kind: &Kind) -> Out {
             ok(make(&Kind::Se3, sm::twist_matrix(&ms[0].data)))
         }
         ("so3ToVec" | "vee", 1) if shape(0) == (3, 3) => ok(vec3(&sm::unskew(&ms[0]))),
+        // (exponential coordinates already, as with numbers: `so3ToVec`
+        // and `se3ToVec` take the vector or its matrix, §3.6)
+        ("so3ToVec", 1) if shape(0) == (3, 1) => ok(vec3(&ms[0].data)),
+        ("se3ToVec", 1) if shape(0) == (6, 1) => ok(make(&Kind::Twist, ms[0].clone())),
         ("se3ToVec" | "vee", 1) if shape(0) == (4, 4) => {
             let mut v = sm::unskew(&ms[0].block(0..3, 0..3));
             v.extend(ms[0].block(0..3, 3..4).data);
