@@ -416,3 +416,27 @@ fn symbolic_exponents_print_parenthesized() {
         assert_eq!(a, b, "{typed} against {shown}");
     }
 }
+
+/// `screw(q, ŝ, h)` with an infinite pitch over symbols is the pure
+/// translation (0, ±ŝ), as with numbers (§3.3.2.2): it printed
+/// `(0, 0, 1, b, −a, 0)`, the pitch-0 axis, for `screw((a, b, 0),
+/// (0, 0, 1), inf)`.
+#[test]
+fn a_symbolic_screw_of_infinite_pitch_is_a_pure_translation() {
+    let src =
+        "given a, b : scalar\nscrew((a, b, 0), (0, 0, 1), inf)\nscrew((a, b, 0), (0, 1, 0), -inf)";
+    assert_eq!(
+        lines(src),
+        [
+            "(0, 0, 0, 0, 0, 1)  : screw axis",
+            "(0, 0, 0, 0, -1, 0)  : screw axis"
+        ]
+    );
+    assert_eq!(
+        lines("screw((1, 2, 0), (0, 0, 1), inf)\nscrew((1, 2, 0), (0, 1, 0), -inf)"),
+        [
+            "(0, 0, 0, 0, 0, 1)  : screw axis",
+            "(0, 0, 0, 0, -1, 0)  : screw axis"
+        ]
+    );
+}

@@ -210,6 +210,15 @@ pub fn eval_symbolic(name: &str, vals: &[Value], kind: &Kind) -> Out {
         ("screw" | "ScrewToAxis", 3) if shape(0) == (3, 1) && shape(1) == (3, 1) => {
             // S = (ŝ, −ŝ × q + h ŝ) (§3.3.2.2)
             let (q, sh, h) = (&ms[0].data, &ms[1].data, s(2)?);
+            // (an infinite pitch is a pure translation (0, ±ŝ), as with numbers)
+            if let Some(inf) = h.as_f64().filter(|x| x.is_infinite()) {
+                let mut out = vec![Expr::zero(); 3];
+                out.extend(
+                    sh.iter()
+                        .map(|e| if inf < 0.0 { e.neg() } else { e.clone() }),
+                );
+                return ok(make(kind, Mat::column(out)));
+            }
             let v = cross(sh, q);
             let mut out = sh.clone();
             out.extend(v.iter().zip(sh).map(|(a, b)| a.neg().add(&b.mul(&h))));
