@@ -13,7 +13,8 @@ use crate::values::formula::{self, make};
 use crate::values::value::Value;
 
 /// `subs(x, name, value)`: x with the symbol `name` replaced by `value` (a
-/// number or an expression), re-canonicalized.
+/// number or an expression), re-canonicalized; an error where that leaves
+/// no real value (a division by zero, √ of a negative number).
 pub(super) fn subs(v: &Value, x: &Mat, name: &Mat, by: &Mat) -> Result<Value, String> {
     let sym = match name.data.as_slice() {
         [e] => as_symbol(e),
@@ -25,7 +26,13 @@ pub(super) fn subs(v: &Value, x: &Mat, name: &Mat, by: &Mat) -> Result<Value, St
         _ => return Err("subs(x, name, value) puts a scalar in place of the symbol".into()),
     };
     let by = |s: &crate::sym::Symbol| (*s == sym).then(|| value.clone());
-    Ok(make(&v.kind(), x.map(|e| e.subst(&by).cancel())))
+    let out = x.map(|e| e.subst(&by).cancel());
+    // (`subs(a/b, b, 0)` is a division by zero, as typed first: never a
+    // term with an inf coefficient dropped)
+    if let Some(why) = out.data.iter().find_map(Expr::undefined) {
+        return Err(why);
+    }
+    Ok(make(&v.kind(), out))
 }
 
 /// `diff(x, t)` of an expression over given matrices (no scalar symbol in

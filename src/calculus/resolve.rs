@@ -381,23 +381,31 @@ pub fn formula_now(
             return Ok(v);
         }
     }
-    Ok(
-        match formula::make(kind, m.map(|e| replay::put_numbers(e, &lookup))) {
-            Value::Formula { kind, m, .. } => Value::Formula {
-                kind,
-                m,
-                how: how.as_ref().map(|r| replay::at_numbers(r, &lookup)),
-            },
-            // (numbers with symbols left in how it was made stay a formula)
-            Value::Num { kind, m: xs, exact } => match how {
-                Some(r) => Value::Formula {
-                    kind,
-                    m: m.map(|e| replay::put_numbers(e, &lookup)),
-                    how: Some(replay::at_numbers(r, &lookup)),
-                },
-                None => Value::Num { kind, m: xs, exact },
-            },
-            v => v,
+    // partly bound: refused where the numbers typed first are (a step of
+    // numbers outside its domain, a division by 0), never a canonical form
+    // with an inf or NaN coefficient or a call with no value in it
+    if let Some(failed) = how.as_ref().and_then(|r| replay::failure(r, &lookup)) {
+        return Err(failed);
+    }
+    let put = m.map(|e| replay::put_numbers(e, &lookup));
+    if let Some(why) = put.data.iter().find_map(crate::sym::Expr::undefined) {
+        return Err(replay::Failed(why));
+    }
+    Ok(match formula::make(kind, put.clone()) {
+        Value::Formula { kind, m, .. } => Value::Formula {
+            kind,
+            m,
+            how: how.as_ref().map(|r| replay::at_numbers(r, &lookup)),
         },
-    )
+        // (numbers with symbols left in how it was made stay a formula)
+        Value::Num { kind, m: xs, exact } => match how {
+            Some(r) => Value::Formula {
+                kind,
+                m: put,
+                how: Some(replay::at_numbers(r, &lookup)),
+            },
+            None => Value::Num { kind, m: xs, exact },
+        },
+        v => v,
+    })
 }

@@ -180,6 +180,24 @@ struct Memo {
     failed: Option<String>,
     /// The warnings of the steps (a builtin's, as typed first).
     warnings: Vec<Diagnostic>,
+    /// Every operand replayed, also after one with no number yet
+    /// ([`failure`]: the steps that are numbers while others wait).
+    every: bool,
+}
+
+/// The first step of recipe `r` that fails with the numbers bound so far
+/// while some symbols are still free (LANGUAGE.md §7: as typed first, a
+/// step whose operands are numbers is computed, and refused outside its
+/// domain: `cot(b)` at b = 0, `(b² − b)/b` at b = 0, whose canonical form
+/// cancelled the factor; a division by a number 0 is refused whatever the
+/// numerator). None when no step fails.
+pub(crate) fn failure(r: &Rc<Recipe>, at: Lookup) -> Option<Failed> {
+    let mut memo = Memo {
+        every: true,
+        ..Memo::default()
+    };
+    replay(r, at, &mut memo);
+    memo.failed.map(Failed)
 }
 
 fn replay(r: &Rc<Recipe>, at: Lookup, memo: &mut Memo) -> Option<Value> {
@@ -202,11 +220,21 @@ fn step(r: &Recipe, at: Lookup, memo: &mut Memo) -> Option<Value> {
             v => Some(v.clone()),
         };
     }
-    let args: Vec<Value> = r
-        .args
-        .iter()
-        .map(|a| replay(a, at, memo))
-        .collect::<Option<_>>()?;
+    let args: Vec<Value> = if memo.every {
+        let args: Vec<Option<Value>> = r.args.iter().map(|a| replay(a, at, memo)).collect();
+        if let (Step::Op(o), [_, Some(d)]) = (&r.step, args.as_slice())
+            && matches!(Op::of(o), Some(Op::Arith(crate::syntax::ast::BinOp::Div)))
+            && d.as_scalar() == Some(0.0)
+        {
+            memo.failed.get_or_insert_with(|| "division by zero".into());
+        }
+        args.into_iter().collect::<Option<_>>()?
+    } else {
+        r.args
+            .iter()
+            .map(|a| replay(a, at, memo))
+            .collect::<Option<_>>()?
+    };
     let refs: Vec<&Value> = args.iter().collect();
     let op = match &r.step {
         Step::Part(i) => {
@@ -432,9 +460,9 @@ pub(crate) fn at_numbers(r: &Rc<Recipe>, at: Lookup) -> Rc<Recipe> {
 /// value `x` was made to have there, replayed as if the number had been
 /// typed first (§7) — refused where a step is outside its domain, as the
 /// substituted canonical form, whose factors may have cancelled
-/// (`(a² − 1)/(a − 1)` is `1 + a`), would not be. None when `x` keeps
-/// other symbols or was made by no recorded steps (the canonical form is
-/// substituted).
+/// (`(a² − 1)/(a − 1)` is `1 + a`), would not be. When `x` keeps other
+/// symbols, only that refusal ([`failure`]). None when there is none or
+/// `x` was made by no recorded steps (the canonical form is substituted).
 pub(crate) fn subs_numbers(
     args: &[&Value],
     warnings: &mut Vec<Diagnostic>,
@@ -458,10 +486,11 @@ pub(crate) fn subs_numbers(
     m.data.iter().for_each(|e| e.symbols(&mut syms));
     syms.retain(|s| !crate::values::waiting::stand_in(s));
     crate::values::recipe::symbols(r, &mut syms);
-    if syms.iter().any(|s| *s != sym) {
-        return None;
-    }
     let at = |s: &Symbol| (*s == sym).then(|| (*by).clone());
+    if syms.iter().any(|s| *s != sym) {
+        // (others stay symbols: refused only where a step of numbers is)
+        return failure(r, &at).map(|Failed(msg)| Err(msg));
+    }
     match numbers(r, &at, warnings) {
         Err(Failed(msg)) => Some(Err(msg)),
         Ok(Some(v @ Value::Num { .. })) if same_shape(&v, m) => Some(Ok(v)),

@@ -61,7 +61,7 @@ impl Expr {
                         rebuild(c.f, &args)
                     }
                 };
-                t = t.mul(&f.powi(i64::from(*e)).unwrap_or_default());
+                t = t.mul(&power(&f, *e));
             }
             out = out.add(&t);
         }
@@ -98,12 +98,64 @@ impl Expr {
                         rebuild(c.f, &args)
                     }
                 };
-                t = t.mul(&f.powi(i64::from(*e)).unwrap_or_default());
+                t = t.mul(&power(&f, *e));
             }
             out = out.add(&t);
         }
         out
     }
+}
+
+impl Expr {
+    /// Why the expression has no real value, if it has none whatever its
+    /// free symbols are: a coefficient that is NaN (a power of 0 or 1/0
+    /// substituted, `subst`, `at_numbers`), or a call of
+    /// numbers outside its domain (1/0, √−1, asin 2). Numbers bound while
+    /// other symbols are free (LANGUAGE.md §7) make these where the
+    /// numbers typed first are refused; the value must be refused too.
+    pub fn undefined(&self) -> Option<String> {
+        for (m, c) in &self.terms {
+            let (re, im) = c.to_c64();
+            if re.is_nan() || im.is_nan() {
+                return Some("division by zero".into());
+            }
+            for (v, _) in m {
+                let Var::Call(call) = v else { continue };
+                if let Some(why) = call.args.iter().find_map(Expr::undefined) {
+                    return Some(why);
+                }
+                // (a call of numbers alone: its value, if it has one)
+                if eval_call(call, &|_| None).is_some_and(|x| !x.is_finite()) {
+                    return Some(match call.f {
+                        Func::Recip => "division by zero".into(),
+                        f => {
+                            let args: Vec<String> = call
+                                .args
+                                .iter()
+                                .map(|a| super::print::expr(a, Default::default()))
+                                .collect();
+                            format!("{}({}) is not a real number", f.name(), args.join(", "))
+                        }
+                    });
+                }
+            }
+        }
+        None
+    }
+}
+
+/// f^e of a factor substituted: a negative power of 0 is NaN (`1/b` at
+/// b = 0 has no value: [`Expr::undefined`] says so), never 0.
+fn power(f: &Expr, e: i32) -> Expr {
+    f.powi(i64::from(e)).unwrap_or_else(nan)
+}
+
+/// The NaN of a substitution with no value.
+fn nan() -> Expr {
+    Expr::constant(Coef::Approx {
+        re: f64::NAN,
+        im: 0.0,
+    })
 }
 
 /// A call rebuilt through its constructor (so numbers fold).
@@ -119,8 +171,9 @@ pub fn rebuild(f: Func, args: &[Expr]) -> Expr {
         Func::Abs => Expr::apply(f, x, f64::abs),
         Func::Exp => Expr::apply(f, x, f64::exp),
         Func::Sqrt => Expr::sqrt(x),
-        // 1/0 is inf; a reciprocal whose exact form does not fit stays a call
-        Func::Recip if x.is_zero() => Expr::num(f64::INFINITY),
+        // 1/0 has no value (NaN, [`Expr::undefined`]); a reciprocal whose
+        // exact form does not fit stays a call
+        Func::Recip if x.is_zero() => nan(),
         Func::Recip => x
             .recip()
             .unwrap_or_else(|| Expr::call(Func::Recip, vec![x.clone()])),

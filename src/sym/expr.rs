@@ -561,7 +561,8 @@ impl Expr {
             return e;
         }
         match (y.as_f64(), x.as_f64()) {
-            (Some(a), Some(b)) => Expr::float(a.atan2(b)),
+            // (a float zero's sign is no angle: atan2(0, 0) is 0, as typed first)
+            (Some(a), Some(b)) => Expr::float((a + 0.0).atan2(b + 0.0)),
             _ => Expr::call(Func::Atan2, vec![y.clone(), x.clone()]),
         }
     }

@@ -1,0 +1,86 @@
+//! Numbers bound while other symbols stay free (LANGUAGE.md §7): the value
+//! is what the same statements give with those numbers typed first — a
+//! formula in the free symbols, or the same refusal. A division by zero
+//! or a call outside its domain is refused, never a term silently dropped
+//! (`a/b + c` at b = 0 printed `c`), a NaN coefficient printed (`NaNe0 a`)
+//! or a float zero's sign taken for an angle (`atan2(b, b)` at b = 0
+//! printed −π).
+
+use chasles::eval::env::Mode;
+use chasles::session::{Session, Settings};
+
+/// What `src` prints and its errors, running on after an error.
+fn run(src: &str) -> (String, String) {
+    let mut s = Session::new(Settings::default());
+    let (out, err, _) = s.run_to_strings("t.chs", src, Mode::Run, true);
+    (out, err)
+}
+
+/// The last line `src` prints, which must run with no error.
+fn last(src: &str) -> String {
+    let (out, err) = run(src);
+    assert!(err.is_empty(), "{src}\n{err}");
+    out.lines().last().unwrap_or_default().to_string()
+}
+
+/// `value` over `given a, b, c` with b bound after it is made is refused
+/// with `why`, as `value` with b typed first is.
+fn refused_both_ways(value: &str, b: &str, why: &str) {
+    let later = format!("given a, b, c : scalar\ny = {value}\nb = {b}\ny");
+    let (out, err) = run(&later);
+    assert!(
+        err.contains("domain error") && err.contains(why),
+        "bound later, not refused ({why}):\n{later}\n{out}\n{err}"
+    );
+    assert!(!out.contains("NaN"), "{later}\n{out}");
+    let first = format!("given a, c : scalar\nb = {b}\n{value}");
+    let (out, err) = run(&first);
+    assert!(
+        err.contains("domain error") && err.contains(why),
+        "typed first, not refused ({why}):\n{first}\n{out}\n{err}"
+    );
+}
+
+#[test]
+fn a_division_by_a_number_zero_is_refused_while_other_symbols_are_free() {
+    refused_both_ways("a/b + c", "0", "division by zero");
+    refused_both_ways("sin(a)/b", "0", "division by zero");
+    refused_both_ways("a/(a*b)", "0", "division by zero");
+    refused_both_ways("a/(b - 1)", "1", "division by zero");
+    refused_both_ways("a/(b*b - 1)", "-1", "division by zero");
+    refused_both_ways("a/sqrt(b)", "0", "division by zero");
+    refused_both_ways("(b^2 - b)/b*a", "0", "division by zero");
+}
+
+#[test]
+fn a_call_outside_its_domain_is_refused_while_other_symbols_are_free() {
+    refused_both_ways("a*tan(b)", "pi/2", "the tangent is infinite");
+    refused_both_ways("a*cot(b)", "0", "the cotangent is infinite");
+    refused_both_ways("a*sqrt(b - 1)", "0", "sqrt(-1)");
+    refused_both_ways("a + asin(b + 1)", "1", "asin(2)");
+}
+
+#[test]
+fn atan2_of_zeros_bound_later_is_zero_as_typed_first() {
+    let later = last("given a, b : scalar\ny = a + atan2(b, b)\nb = 0\ny");
+    let first = last("given a : scalar\nb = 0\na + atan2(b, b)");
+    assert_eq!(first, "a");
+    assert_eq!(later, "a");
+}
+
+#[test]
+fn subs_of_a_number_that_divides_by_zero_is_refused() {
+    for x in ["a/b", "sin(a)/b", "a/(a*b)", "1/b + a"] {
+        let src = format!("given a, b : scalar\nsubs({x}, b, 0)");
+        let (out, err) = run(&src);
+        assert!(
+            err.contains("division by zero"),
+            "not refused:\n{src}\n{out}\n{err}"
+        );
+    }
+    let src = "given a, b : scalar\nsubs(a/(b - 1), b, 1)";
+    let (out, err) = run(src);
+    assert!(err.contains("division by zero"), "{src}\n{out}\n{err}");
+    // a substitution that leaves a value keeps it
+    assert_eq!(last("given a, b : scalar\nsubs(a/b, b, 2)"), "(1/2) a");
+}
