@@ -440,3 +440,24 @@ fn a_symbolic_screw_of_infinite_pitch_is_a_pure_translation() {
         ]
     );
 }
+
+/// `screw(q, ŝ, h)` over symbols normalizes ŝ as it does numbers: it
+/// printed `(0, 0, 2, 2 b, −2 a, 2)` for `screw((a, b, 0), (0, 0, 2), 1)`,
+/// whose value at a = 1, b = 2 is (0, 0, 1, 2, −1, 1).
+#[test]
+fn a_symbolic_screw_normalizes_its_direction() {
+    let src = "given a, b : scalar\ny = screw((a, b, 0), (0, 0, 2), 1)\nscrew((a, b, 0), (1, 2, 2), 1)\na = 1\nb = 2\ny";
+    assert_eq!(
+        lines(src),
+        [
+            "y = (0, 0, 1, b, -a, 1)  : screw axis",
+            "(1/3, 2/3, 2/3, 1/3 + (2/3) b, (2/3) (1 - a), (1/3) (2 + 2 a - b))  : screw axis",
+            "a = 1",
+            "b = 2",
+            "(0, 0, 1, 2, -1, 1)  : screw axis",
+        ]
+    );
+    assert!(
+        error("given a : scalar\nscrew((a, 0, 0), (0, 0, 0), 1)").contains("nonzero unit vector")
+    );
+}

@@ -208,8 +208,18 @@ pub fn eval_symbolic(name: &str, vals: &[Value], kind: &Kind) -> Out {
             ok(make(kind, Mat::column(v)))
         }
         ("screw" | "ScrewToAxis", 3) if shape(0) == (3, 1) && shape(1) == (3, 1) => {
-            // S = (ŝ, −ŝ × q + h ŝ) (§3.3.2.2)
-            let (q, sh, h) = (&ms[0].data, &ms[1].data, s(2)?);
+            // S = (ŝ, −ŝ × q + h ŝ) (§3.3.2.2), ŝ normalized as with numbers
+            let (q, h) = (&ms[0].data, s(2)?);
+            // (a closed form with ŝ as given is another axis where ‖ŝ‖ ≠ 1)
+            let sh = &match unit(&ms[1]).or_else(|| crate::sym::axis::unit_direction(&ms[1].data)) {
+                Some(sh) => sh,
+                None if ms[1].data.iter().all(|e| e.as_const().is_some()) => {
+                    return Some(Err(
+                        "the screw direction ŝ must be a nonzero unit vector".into()
+                    ));
+                }
+                None => return None,
+            };
             // (an infinite pitch is a pure translation (0, ±ŝ), as with numbers)
             if let Some(inf) = h.as_f64().filter(|x| x.is_infinite()) {
                 let mut out = vec![Expr::zero(); 3];
