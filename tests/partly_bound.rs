@@ -84,3 +84,24 @@ fn subs_of_a_number_that_divides_by_zero_is_refused() {
     // a substitution that leaves a value keeps it
     assert_eq!(last("given a, b : scalar\nsubs(a/b, b, 2)"), "(1/2) a");
 }
+
+/// inf and NaN have no exact form: arithmetic of them with symbols is
+/// refused (`a*inf` printed 0, `b*inf + a` printed a, `a + 0*inf`
+/// `NaNe0 + a`), and an inf kept in a vector prints as a number.
+#[test]
+fn inf_with_symbols_is_refused_not_dropped() {
+    for x in ["a*inf", "inf*a", "b*inf + a", "a + 0*inf", "a + inf"] {
+        let src = format!("given a, b : scalar\n{x}");
+        let (out, err) = run(&src);
+        assert!(
+            err.contains("inf or NaN with symbols has no closed form"),
+            "not refused:\n{src}\n{out}\n{err}"
+        );
+    }
+    assert_eq!(
+        last("given a : scalar\n(a, inf, 0)"),
+        "(a, inf, 0)  : 3-vector"
+    );
+    let (out, _) = run("a = 1\na*inf");
+    assert_eq!(out.lines().last(), Some("inf"));
+}

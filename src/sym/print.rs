@@ -402,6 +402,13 @@ fn surd_term(r: &Rat, k: u128, latex: bool) -> String {
 }
 
 fn fmt_float(x: f64, digits: usize) -> String {
+    // (inf and NaN as numbers print them, not `infe0`)
+    if x.is_nan() {
+        return "NaN".into();
+    }
+    if x.is_infinite() {
+        return if x > 0.0 { "inf" } else { "-inf" }.into();
+    }
     if x != 0.0 && !(1e-6..1e12).contains(&x.abs()) {
         let s = format!("{x:.digits$e}");
         let (m, e) = s.split_once('e').unwrap_or((&s, "0"));

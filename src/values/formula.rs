@@ -190,7 +190,8 @@ pub fn mul(x: &Mat, y: &Mat) -> Result<Mat, String> {
         .ok_or_else(|| format!("cannot multiply matrices of sizes {}", sizes(x, y)))
 }
 
-/// `a op b` over formulas ([`binary`]); None for a power of a scalar whose
+/// `a op b` over formulas ([`binary`]); an error with an inf or NaN
+/// number; None for a power of a scalar whose
 /// exponent is no integer (`2^a`, `a^0.5`): it has no exact form here and
 /// stays a tree, computed as typed first once its symbols have numbers —
 /// except a half-integer power of an exact rational, a power of its
@@ -208,6 +209,13 @@ pub fn binary_or_tree(
         }
         _ => false,
     };
+    // (inf and NaN have no exact form: `a inf` printed 0, `a + 0 inf` NaNe0 + a)
+    let not_finite = |v: &Value| matches!(v, Value::Num { m, .. } if !m.all_finite());
+    if not_finite(a) || not_finite(b) {
+        return Some(Err(
+            "inf or NaN with symbols has no closed form: bind the symbols' numbers first".into(),
+        ));
+    }
     let is_scalar = matches!(a.kind(), Kind::Scalar);
     if op == BinOp::Pow && is_scalar && !integer(b) {
         return half_power(a, b).map(|e| Ok(scalar(e)));
