@@ -327,3 +327,24 @@ fn a_cancelled_sum_prints_its_exact_value() {
         }
     }
 }
+
+/// `≈` over symbols holds at every number or is not answered `true`: a
+/// term that grows with a symbol must be close relative to its own
+/// coefficient (`1e-20 b ≈ 2e-20 b` was `true`, and false at b = 1e15),
+/// while a constant within 1e-9 and a term within 1e-9 of itself are.
+#[test]
+fn approx_over_symbols_holds_at_every_number() {
+    let undecided = "given b : scalar\n1e-20*b ≈ 2e-20*b";
+    assert_ne!(last(undecided), true, "{undecided}");
+    assert_eq!(
+        last("given b : scalar\ny = 1e-20*b ≈ 2e-20*b\nb = 1e15\ny"),
+        false
+    );
+    assert_eq!(last("given b : scalar\nb ≈ b + 1e-12"), true);
+    assert_eq!(last("given b : scalar\nb ≈ 1.0000000001*b"), true);
+    assert_eq!(
+        last("given b : scalar\nsin(1)*b ≈ 0.8414709848078965*b"),
+        true
+    );
+    assert_eq!(last("given b : scalar\nb ≈ 1.000000002*b"), false);
+}

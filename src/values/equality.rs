@@ -76,7 +76,9 @@ fn verdict(p: &Expr, q: &Expr, approx: bool, rewritten: bool) -> Option<bool> {
         exact_difference(p, q)
     };
     if differing.is_empty() {
-        return Some(true);
+        // (`1e-20 b ≈ 2e-20 b` is false at b = 1e15: a term that grows with
+        // a symbol must be close relative to itself too, else undecided)
+        return (!approx || grows_close(p, q)).then_some(true);
     }
     if differing
         .iter()
@@ -184,6 +186,21 @@ fn largest(p: &Expr, q: &Expr) -> f64 {
             re.abs().max(im.abs())
         })
         .fold(0.0f64, f64::max)
+}
+
+/// True when every term of `p` and `q` with a polynomial symbol in it
+/// (unbounded as the symbol grows, unlike cos and sin) differs by at most
+/// 1e-9 of its own coefficient: `≈` then holds at every number, as its
+/// 1e-9 · max(1, |a|, |b|) does for numbers.
+fn grows_close(p: &Expr, q: &Expr) -> bool {
+    pairs(p, q).into_iter().all(|(m, c, d)| {
+        let grows = m
+            .iter()
+            .any(|(v, _)| matches!(v, Var::Sym(s) if !s.is_phase()));
+        let ((a, b), (e, f)) = (c.to_c64(), d.to_c64());
+        let size = a.abs().max(b.abs()).max(e.abs()).max(f.abs());
+        !grows || (a - e).abs().max((b - f).abs()) <= 1e-9 * size
+    })
 }
 
 /// The monomials where `p` and `q` differ by more than 1e-9 of the
