@@ -105,3 +105,29 @@ fn inf_with_symbols_is_refused_not_dropped() {
     let (out, _) = run("a = 1\na*inf");
     assert_eq!(out.lines().last(), Some("inf"));
 }
+
+/// Symbols that cancel leave numbers, and a call of them outside its
+/// domain is refused as typed first: `csc(a - a)` printed `csc(0)`,
+/// `sqrt(a - a - 1)` `sqrt(-1)`, `log(a - a)` `log(0)`, `(a - a - 1)^(1/2)`
+/// `(-1)^0.5`.
+#[test]
+fn a_call_of_symbols_that_cancelled_is_refused_outside_its_domain() {
+    for (x, why) in [
+        ("csc(a - a)", "cosecant is infinite"),
+        ("cot(a*0)", "cotangent is infinite"),
+        ("tan(a - a + pi/2)", "tangent is infinite"),
+        ("sqrt(a - a - 1)", "sqrt(-1)"),
+        ("asin(a - a + 2)", "asin(2)"),
+        ("log(a - a)", "log of 0"),
+        ("(a - a - 1)^(1/2)", "not a real number"),
+        ("Rot((a - a, 0, 0), 1)", "zero vector"),
+    ] {
+        let src = format!("given a : scalar\n{x}");
+        let (out, err) = run(&src);
+        assert!(
+            err.contains("domain error") && err.contains(why),
+            "not refused ({why}):\n{src}\n{out}\n{err}"
+        );
+    }
+    assert_eq!(last("given a : scalar\natan2(a - a, a - a)"), "0");
+}

@@ -382,6 +382,11 @@ impl<'a> Op<'a> {
         if formula::applies(args)
             && let Some(v) = self.formula(args, kind)
         {
+            // (symbols that cancel leave numbers: `csc(a − a)` is csc 0, refused)
+            let v = v.and_then(|v| match formula::undefined(&v) {
+                Some(why) => Err(why),
+                None => Ok(v),
+            });
             // how it was made, to be replayed with numbers (§7)
             return Some(
                 v.map(|v| {
@@ -405,6 +410,13 @@ impl<'a> Op<'a> {
             && let Some(zero) = crate::builtins::constant_derivative(b.name, args, kind)
         {
             return Some(Ok(zero));
+        }
+        // (numbers the symbols cancelled to, `csc(a − a)`: refused as typed)
+        if let Some(nums) = formula::all_numbers(args)
+            && let Err(e) = self.numeric(&nums.iter().collect::<Vec<_>>(), Some(kind))
+            && !matches!(e, OpError::NotNumbers(_) | OpError::Operands)
+        {
+            return Some(Err(e));
         }
         let formulas = self.formula_is_symbolic();
         args.iter()

@@ -36,6 +36,15 @@ pub fn mat_of(v: &Value) -> Option<Mat> {
     }
 }
 
+/// Why formula `v` has no real value whatever its symbols are (an entry
+/// with a call of numbers outside its domain, [`Expr::undefined`]).
+pub fn undefined(v: &Value) -> Option<String> {
+    match v {
+        Value::Formula { m, .. } => m.data.iter().find_map(Expr::undefined),
+        _ => None,
+    }
+}
+
 /// The one expression of a scalar value.
 pub fn scalar_of(v: &Value) -> Option<Expr> {
     mat_of(v)
@@ -115,6 +124,19 @@ pub fn constant_shown(v: &Value) -> Option<Value> {
         }
         _ => None,
     }
+}
+
+/// The numbers of operands that are all numbers or formulas whose
+/// canonical form is numbers (symbols that cancelled: `a − a`); None when
+/// one has a symbol or is no number.
+pub fn all_numbers(args: &[&Value]) -> Option<Vec<Value>> {
+    args.iter()
+        .map(|v| match v {
+            Value::Num { .. } => Some((*v).clone()),
+            Value::Formula { kind, .. } if *kind != Kind::Bool => constant_shown(v),
+            _ => None,
+        })
+        .collect()
 }
 
 /// A scalar formula.
