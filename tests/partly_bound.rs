@@ -131,3 +131,26 @@ fn a_call_of_symbols_that_cancelled_is_refused_outside_its_domain() {
     }
     assert_eq!(last("given a : scalar\natan2(a - a, a - a)"), "0");
 }
+
+/// A comparison over symbols is decided again when some of them get
+/// numbers, as typed first: `a*b == 0` is false over free a and b (no
+/// identity) but `a*0 == 0` is true, and stayed false at b = 0.
+#[test]
+fn a_comparison_is_decided_again_with_some_numbers_bound() {
+    let script = |x: &str, b: &str| format!("given a, b, c : scalar\ny = ({x})\nb = {b}\ny");
+    let first = |x: &str, b: &str| format!("given a, c : scalar\nb = {b}\n{x}");
+    for (x, b, want) in [
+        ("a*b == 0", "0", "true"),
+        ("a*b == a", "1", "true"),
+        ("a*b == a", "0", "false"),
+        ("sin(a)*b ≈ 0", "0", "true"),
+        ("Rotz(a)*Rotz(b) == Rotz(a)", "0", "true"),
+        ("Rotz(a)*Rotz(b) == Rotz(c)", "1", "false"),
+    ] {
+        assert_eq!(last(&first(x, b)), want, "typed first: {x} at b = {b}");
+        assert_eq!(last(&script(x, b)), want, "bound later: {x} at b = {b}");
+    }
+    // a side with no value is refused, as typed first
+    let (out, err) = run(&script("a/b == c", "0"));
+    assert!(err.contains("division by zero"), "{out}\n{err}");
+}

@@ -387,6 +387,17 @@ pub fn formula_now(
     if let Some(failed) = how.as_ref().and_then(|r| replay::failure(r, &lookup)) {
         return Err(failed);
     }
+    // (a comparison is decided again over the symbols still free: `a*b == 0`
+    // at b = 0 is true, as typed first, though false over free a and b)
+    // (one that waits for its numbers, `values::waiting`, waits as before)
+    if *kind == Kind::Bool
+        && crate::values::waiting::sides(v).is_none()
+        && let Some(v) = how
+            .as_ref()
+            .and_then(|r| crate::decide::partly::compared(r, &lookup))
+    {
+        return v.map_err(replay::Failed);
+    }
     let put = m.map(|e| replay::put_numbers(e, &lookup));
     if let Some(why) = put.data.iter().find_map(crate::sym::Expr::undefined) {
         return Err(replay::Failed(why));

@@ -26,6 +26,7 @@ pub(crate) mod inverse;
 pub(crate) mod lift;
 pub(crate) mod log_exp;
 pub(crate) mod order;
+pub(crate) mod partly;
 pub(crate) mod powers;
 pub(crate) mod replay;
 pub(crate) mod transcendental;

@@ -1,0 +1,107 @@
+//! A comparison over symbols read while only some of them have numbers
+//! (LANGUAGE.md §7: "a bool over given names is recomputed when their
+//! numbers are bound, as any other value"). `a*b == 0` over free a and b
+//! is false (no identity), yet with b = 0 typed first it is `a*0 == 0`,
+//! true: the sides are made again from how they were made, with the
+//! numbers bound so far put in, and the comparison decided again over the
+//! symbols still free — or said to be undecided, never the stale verdict.
+
+use std::collections::HashMap;
+use std::rc::Rc;
+
+use super::replay::{self, Lookup};
+use super::witness::AtPoints;
+use crate::seam::apply::Op;
+use crate::syntax::ast::CmpOp;
+use crate::values::recipe::{Recipe, Step};
+use crate::values::value::Value;
+
+/// The bool of comparison recipe `r` with the numbers `at` gives so far,
+/// decided again over the symbols still free; undecided, the comparison
+/// waiting for the other numbers (`crate::values::waiting`), or Err when
+/// it cannot wait. None when `r` is no comparison.
+pub(crate) fn compared(r: &Rc<Recipe>, at: Lookup) -> Option<Result<Value, String>> {
+    let Step::Compare(op) = &r.step else {
+        return None;
+    };
+    let mut memo = HashMap::new();
+    let sides: Option<Vec<Value>> = r.args.iter().map(|a| value(a, at, &mut memo)).collect();
+    let waits = match sides.as_deref() {
+        Some([a, b]) => match decide(a, b, *op) {
+            Some(v) => return Some(Ok(Value::Bool(v))),
+            None => crate::values::waiting::make(*op, a, b),
+        },
+        _ => None,
+    };
+    Some(waits.ok_or_else(|| {
+        "the comparison, with numbers for only some of its symbols, cannot be decided again: \
+         it is decided once every symbol has a number"
+            .to_string()
+    }))
+}
+
+/// `a op b` over symbols as the evaluator decides it: by canonical forms,
+/// and for `==` at points where a side rests on a float; None undecided.
+fn decide(a: &Value, b: &Value, op: CmpOp) -> Option<bool> {
+    let v = super::equality::equal(a, b, op).ok()?;
+    if op != CmpOp::Eq {
+        return v;
+    }
+    match (v, super::witness::at_points(a, b, v.is_none())) {
+        (_, Some(AtPoints::Differ(_))) => Some(false),
+        (_, Some(AtPoints::Identity)) => Some(true),
+        (_, Some(AtPoints::Agree(_))) => None,
+        (Some(false), None) if super::equality::rounding_only(a, b) => None,
+        (v, None) => v,
+    }
+}
+
+/// The value recipe `r` makes with the numbers bound so far: its leaves
+/// with them put in, each step applied as the evaluator applies it (to
+/// numbers as typed first, to formulas by their exact forms). None for a
+/// step that cannot be made again so.
+fn value(
+    r: &Rc<Recipe>,
+    at: Lookup,
+    memo: &mut HashMap<*const Recipe, Option<Value>>,
+) -> Option<Value> {
+    let key = Rc::as_ptr(r);
+    if let Some(v) = memo.get(&key) {
+        return v.clone();
+    }
+    let args: Option<Vec<Value>> = r.args.iter().map(|a| value(a, at, memo)).collect();
+    let v = match (&r.step, args) {
+        (Step::Leaf(v), _) => Some(leaf(v, at)),
+        (Step::Op(o), Some(args)) => Op::of(o).and_then(|op| {
+            let refs: Vec<&Value> = args.iter().collect();
+            op.apply(&refs, &r.kind).ok()
+        }),
+        (Step::Part(i), Some(args)) => match args.as_slice() {
+            [Value::Tuple(vs)] => vs.get(*i).cloned(),
+            [Value::Num { m, .. }] if m.ncols() == 1 && *i < m.nrows() => {
+                Some(Value::scalar(m[*i]))
+            }
+            _ => None,
+        },
+        (Step::Retag | Step::Closed(_), Some(mut args)) if args.len() == 1 => args.pop(),
+        _ => None,
+    };
+    memo.insert(key, v.clone());
+    v
+}
+
+/// A leaf with the numbers bound so far put in (a formula), as it was
+/// when none of its symbols has one.
+fn leaf(v: &Value, at: Lookup) -> Value {
+    let Value::Formula { kind, m, .. } = v else {
+        return v.clone();
+    };
+    let mut syms = Vec::new();
+    m.data.iter().for_each(|e| e.symbols(&mut syms));
+    if !syms.iter().any(|s| at(s).is_some()) {
+        return v.clone();
+    }
+    replay::canonical(kind, m, at).unwrap_or_else(|| {
+        crate::values::formula::make(kind, m.map(|e| replay::put_numbers(e, at)))
+    })
+}
