@@ -461,3 +461,15 @@ fn a_symbolic_screw_normalizes_its_direction() {
         error("given a : scalar\nscrew((a, 0, 0), (0, 0, 0), 1)").contains("nonzero unit vector")
     );
 }
+
+/// An exact number no decimal is prints as itself inside a kept power:
+/// `a^(1/3)` printed `a^0.3333333333333333`, `sqrt(2)^a`
+/// `1.4142135623730951^a` (other numbers, read back); a decimal as typed
+/// stays a decimal.
+#[test]
+fn exact_numbers_in_a_kept_power_print_exactly() {
+    assert_eq!(
+        lines("given a : scalar\na^(1/3)\n(1/3)^a\nsqrt(2)^a\na^0.5\n(pi/6)^a"),
+        ["a^(1/3)", "(1/3)^a", "(√2)^a", "a^0.5", "((1/6) π)^a"]
+    );
+}

@@ -530,6 +530,9 @@ pub(crate) fn to_sym(v: &Value) -> Sym {
 /// the printed tree is its value (issue 35: `sin(1)^y` printed
 /// `0.8415^y`, a different number); matrices keep 4 digits a cell.
 fn constant_text(v: &Value) -> String {
+    if let Some(text) = crate::values::exact::not_decimal_text(v) {
+        return text;
+    }
     let short = crate::values::format::inline(v, 4);
     match v.as_scalar() {
         Some(x) if x.is_finite() && short.parse::<f64>().ok() != Some(x) => format!("{x}"),

@@ -338,6 +338,20 @@ pub fn is_short_decimal(r: &Rat) -> bool {
     d == num_bigint::BigInt::from(1) && places <= 12
 }
 
+/// The exact form of a scalar that no decimal is (1/3, √2, π/6) as it
+/// prints: a tree over symbols shows it so, not as digits that are
+/// another number (`a^(1/3)` printed `a^0.3333333333333333`). None for a
+/// decimal as typed (0.5), a float, or no scalar.
+pub fn not_decimal_text(v: &Value) -> Option<String> {
+    let m = v.exact_form().filter(|m| m.data.len() == 1)?;
+    let e = &m.data[0];
+    let decimal = e
+        .as_const()
+        .and_then(|c| c.as_rat())
+        .is_some_and(|r| is_decimal(&r));
+    (!decimal).then(|| crate::sym::print::expr(e, Default::default()))
+}
+
 /// True when `r` is a decimal: a denominator of 2s and 5s only.
 pub fn is_decimal(r: &Rat) -> bool {
     let (_, mut d) = r.parts();
