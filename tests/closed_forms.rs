@@ -473,3 +473,18 @@ fn exact_numbers_in_a_kept_power_print_exactly() {
         ["a^(1/3)", "(1/3)^a", "(√2)^a", "a^0.5", "((1/6) π)^a"]
     );
 }
+
+/// `subs(x, t, value)` of the time variable of a θ(t) in x is refused:
+/// θ at another time has no name (`subs(th*t, t, 2)` printed `2 th`, whose
+/// derivative is 2 θ̇, not the 0 of the constant θ(2)).
+#[test]
+fn subs_of_the_time_variable_of_a_function_of_time_is_refused() {
+    for x in ["th*t", "th + t", "th'*t"] {
+        let src = format!("given th(t) : scalar\nsubs({x}, t, 2)");
+        assert!(error(&src).contains("th at another t has no name"), "{src}");
+    }
+    assert_eq!(
+        lines("given th(t), a : scalar\nsubs(t^2 + a, t, 2)\nsubs(sin(th), th, a)"),
+        ["4 + a", "sin(a)"]
+    );
+}

@@ -25,6 +25,19 @@ pub(super) fn subs(v: &Value, x: &Mat, name: &Mat, by: &Mat) -> Result<Value, St
         [e] => e.clone(),
         _ => return Err("subs(x, name, value) puts a scalar in place of the symbol".into()),
     };
+    // (θ(t) at t = 2 is θ(2), no symbol here: `subs(th t, t, 2)` printed
+    // `2 th`, whose derivative is 2 θ̇)
+    let mut syms = Vec::new();
+    x.data.iter().for_each(|e| e.symbols(&mut syms));
+    if sym.time.is_none()
+        && let Some(f) = syms.iter().find(|s| s.time.as_deref() == Some(&*sym.name))
+    {
+        return Err(format!(
+            "subs(x, {0}, value) of an expression with {1}({0}) in it: {1} at another {0} has \
+             no name here; substitute {1} (and its rates) instead",
+            sym.name, f.name
+        ));
+    }
     let by = |s: &crate::sym::Symbol| (*s == sym).then(|| value.clone());
     let out = x.map(|e| e.subst(&by).cancel());
     // (`subs(a/b, b, 0)` is a division by zero, as typed first: never a
