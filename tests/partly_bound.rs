@@ -154,3 +154,15 @@ fn a_comparison_is_decided_again_with_some_numbers_bound() {
     let (out, err) = run(&script("a/b == c", "0"));
     assert!(err.contains("division by zero"), "{out}\n{err}");
 }
+
+/// A tree over given names divided by a component that becomes 0 is
+/// refused, as typed first: `a/u[1]` at u = (0, 0, 1) printed `a/0`.
+#[test]
+fn a_division_by_a_component_bound_to_zero_is_refused() {
+    let src = "given u : vec3\ngiven a : scalar\ny = a/u[1]\nu = (0, 0, 1)\ny";
+    let (out, err) = run(src);
+    assert!(err.contains("division by zero"), "{out}\n{err}");
+    assert!(!out.contains("a/0"), "{out}");
+    let src = "given u : vec3\ngiven a : scalar\ny = a/u[3]\nu = (0, 0, 2)\ny";
+    assert_eq!(last(src), "a/2");
+}

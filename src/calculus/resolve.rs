@@ -255,6 +255,11 @@ impl Resolving<'_, '_> {
         {
             return constant(v);
         }
+        // (a division by a number 0 is refused whatever is divided, as
+        // typed first: `a/u[1]` at u = (0, 0, 1) printed `a/0`)
+        if op == BinOp::Div && num(&b).and_then(Value::as_scalar) == Some(0.0) {
+            self.failed.get_or_insert_with(|| "division by zero".into());
+        }
         let (a, b) = (Box::new(a), Box::new(b));
         match op {
             BinOp::Add => Sym::Add(a, b),
