@@ -186,7 +186,7 @@ impl Interp<'_> {
             _ => 3,
         };
         let f = Frame::named(frame);
-        let ty = Ty::new(kind, Frames::Pair(f.clone(), f));
+        let ty = Ty::new(kind, Frames::Pair(f, f));
         let val = (self.mode != super::env::Mode::Check).then(|| Value::Num {
             kind,
             m: crate::values::num::Num::identity(n),
