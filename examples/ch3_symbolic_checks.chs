@@ -216,7 +216,7 @@ atan2(sin(e1) cos(e2), cos(e1) cos(e2))       # kept: cos(e2) may be negative
 log(Rotx(2 e1))                               # the note: 2 e1 in (−π, π)
 e1 = 0.5
 e2 = 2                                        # cos(e2) < 0: off the branch
-ev                                            # the numbers' angles, as typed first
+ev                                            # the numbers' angles, as typed first, with a warning
 assert ev == euler_zyx(Rotz(0.5) Roty(2))
 given th(tau) : scalar
 diff(th^2, tau)                               # 2 th th': no dot over one letter of two
@@ -271,7 +271,7 @@ given s9 : scalar
 e9 = euler_zxz(Rotx(s9))
 de9 = diff(e9, s9)
 s9 = -1
-e9
+e9                                            # (π, 1, π), with a warning: sin(s9) < 0
 de9
 
 # --- diff and subs by a symbol that already has a number ------------------------

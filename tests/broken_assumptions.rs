@@ -77,6 +77,11 @@ fn a_closed_form_read_off_its_branch_says_so() {
         ("given θ", "quat(Roty(θ))", "θ"),
         ("given θ", "MatrixLog6(RpToTrans(Rotz(θ), (1, 2, 3)))", "θ"),
         ("given θ", "log(RpToTrans(Rotz(θ), (1, 2, 3)))", "θ"),
+        ("given θ", "euler_zyx(Rotz(θ))", "θ"),
+        ("given θ", "rpy(Rotx(θ))", "θ"),
+        ("given θ", "euler_zxz(Rotz(θ) Rotx(0.5))", "θ"),
+        ("given θ", "cayley(Roty(θ))", "θ"),
+        ("given θ", "atan2(2 sin(θ), 2 cos(θ))", "θ"),
     ];
     for (given, call, sym) in cases {
         for (x, off) in [("4", true), ("-3.5", true), ("1", false), ("-2.5", false)] {

@@ -86,9 +86,9 @@ pub struct OnBranch {
     pub text: String,
     /// Whether a derivative of the closed form holds on the branch only
     /// ([`Step::Guard`]: the log of a symbolic transform). The closed
-    /// forms of the log of a rotation, `quat`, `cayley` and `atan2` are
-    /// marked only so that numbers off their branch say so (§7); their
-    /// derivatives are the call's, right on every branch.
+    /// forms of the log of a rotation, the Euler angles, `quat`, `cayley`
+    /// and `atan2` are marked only so that numbers off their branch say
+    /// so (§7); their derivatives are the call's, right on every branch.
     pub guards: bool,
 }
 

@@ -35,7 +35,11 @@ pub(in crate::seam) fn closed_form(name: &str, v: Value, args: &[&Value]) -> Val
     };
     let transform = |a: &Value| matches!(a.kind().shape(), Some((Some(4), Some(4))));
     let guards = matches!(name, "log" | "MatrixLog6") && args.first().is_some_and(|a| transform(a));
-    if !guards && !matches!(name, "log" | "MatrixLog3" | "quat" | "cayley" | "atan2") {
+    let marked = matches!(
+        name,
+        "log" | "MatrixLog3" | "quat" | "cayley" | "atan2" | "euler_zyx" | "euler_zxz" | "rpy"
+    );
+    if !guards && !marked {
         return v;
     }
     let vals: Vec<Value> = args.iter().map(|a| (*a).clone()).collect();
