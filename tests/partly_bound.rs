@@ -166,3 +166,27 @@ fn a_division_by_a_component_bound_to_zero_is_refused() {
     let src = "given u : vec3\ngiven a : scalar\ny = a/u[3]\nu = (0, 0, 2)\ny";
     assert_eq!(last(src), "a/2");
 }
+
+/// A divisor that is 0 only once the numbers are in, over symbols still
+/// free (`a b` at b = 0): its canonical form had cancelled the quotient
+/// (`(a b)/(a b) + c` is `1 + c`), so only the operations made again with
+/// the numbers see the division by zero typed first gives; a divisor the
+/// numbers leave nonzero (`a + b` at b = 0 is a) is divided by as before.
+#[test]
+fn a_cancelled_divisor_that_the_numbers_make_zero_is_refused() {
+    refused_both_ways("(a*b)/(a*b) + c", "0", "division by zero");
+    refused_both_ways("(a*b - b)/(a*b - b) + c", "0", "division by zero");
+    refused_both_ways("(sin(b)*a)/(sin(b)*a) + c", "0", "division by zero");
+    assert_eq!(
+        last("given a, b, c : scalar\ny = (a*b)/(a*b) + c\nb = 2\ny"),
+        "1 + c"
+    );
+    assert_eq!(
+        last("given a, b, c : scalar\ny = (a + b)/(a + b) + c\nb = 0\ny"),
+        "1 + c"
+    );
+    assert_eq!(
+        last("given a, b, c : scalar\ny = (1 + b)/(a + b) + c\nb = 0\ny"),
+        "1/a + c"
+    );
+}

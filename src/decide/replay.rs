@@ -200,6 +200,26 @@ pub(crate) fn failure(r: &Rc<Recipe>, at: Lookup) -> Option<Failed> {
     memo.failed.map(Failed)
 }
 
+/// The deepest divisor [`vanishes`] makes again over formulas.
+const VANISHING_DEPTH: u32 = 64;
+
+/// Whether the divisor recipe `r`, still over free symbols, is 0 with the
+/// numbers bound so far: made again by its operations over formulas with
+/// those numbers in its leaves (`a b` at b = 0 is 0, so `(a b)/(a b) + c`
+/// is a division by zero, as typed first, though its canonical form
+/// cancelled the quotient to 1 + c). False where it cannot tell.
+fn vanishes(r: &Rc<Recipe>, at: Lookup) -> bool {
+    if r.depth > VANISHING_DEPTH {
+        return false;
+    }
+    let rebased = at_numbers(r, at);
+    match crate::seam::made_again(&rebased, VANISHING_DEPTH) {
+        Some(Value::Formula { m, .. }) => m.data.iter().all(|e| e.as_f64() == Some(0.0)),
+        Some(v) => v.as_scalar() == Some(0.0),
+        None => false,
+    }
+}
+
 fn replay(r: &Rc<Recipe>, at: Lookup, memo: &mut Memo) -> Option<Value> {
     let key = Rc::as_ptr(r);
     if let Some(v) = memo.seen.get(&key) {
@@ -222,9 +242,12 @@ fn step(r: &Recipe, at: Lookup, memo: &mut Memo) -> Option<Value> {
     }
     let args: Vec<Value> = if memo.every {
         let args: Vec<Option<Value>> = r.args.iter().map(|a| replay(a, at, memo)).collect();
-        if let (Step::Op(o), [_, Some(d)]) = (&r.step, args.as_slice())
+        if let (Step::Op(o), [_, d]) = (&r.step, args.as_slice())
             && matches!(Op::of(o), Some(Op::Arith(crate::syntax::ast::BinOp::Div)))
-            && d.as_scalar() == Some(0.0)
+            && match d {
+                Some(d) => d.as_scalar() == Some(0.0),
+                None => vanishes(&r.args[1], at),
+            }
         {
             memo.failed.get_or_insert_with(|| "division by zero".into());
         }
