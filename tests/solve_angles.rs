@@ -83,15 +83,17 @@ fn every_root_checks_in_an_independent_evaluation() {
     check("tan(x) == -sqrt(3)", |x| x.tan() + 3f64.sqrt(), 2, "2πn");
     check("tan(x) == 0", f64::tan, 2, "2πn");
     check("1/cos(x) == 2", |x| 1.0 / x.cos() - 2.0, 2, "2πn");
-    check("sin(2*x) == 1/2", |x| (2.0 * x).sin() - 0.5, 4, "2πn/2");
+    check("sin(2*x) == 1/2", |x| (2.0 * x).sin() - 0.5, 4, "πn");
     check(
         "sin(x)*cos(x) == 1/4",
         |x| x.sin() * x.cos() - 0.25,
         4,
-        "2πn/2",
+        "πn",
     );
-    check("tan(x)^2 == 3", |x| x.tan().powi(2) - 3.0, 4, "2πn/2");
+    check("tan(x)^2 == 3", |x| x.tan().powi(2) - 3.0, 4, "πn");
     check("sin(3*x) == 1", |x| (3.0 * x).sin() - 1.0, 3, "2πn/3");
+    // the period in lowest terms: 2πn/4 is πn/2
+    check("sin(4*x) == 1/2", |x| (4.0 * x).sin() - 0.5, 8, "πn/2");
     // a touching root is one root: c = √(a² + b²)
     let r = check("cos(x) == 1", |x| x.cos() - 1.0, 1, "2πn");
     assert_eq!(r, vec![0.0]);

@@ -93,10 +93,12 @@ impl Interp<'_> {
             ));
         }
         if let Some(k) = solution.period_of {
-            let step = if k == 1 {
-                "2πn".to_string()
-            } else {
-                format!("2πn/{k}")
+            // (2πn/k in lowest terms: 2πn/2 is πn, 2πn/4 is πn/2)
+            let step = match (k, k % 2) {
+                (1, _) => "2πn".to_string(),
+                (2, _) => "πn".to_string(),
+                (_, 0) => format!("πn/{}", k / 2),
+                _ => format!("2πn/{k}"),
             };
             self.warnings.push(Diagnostic::note(
                 ErrorKind::Domain,
