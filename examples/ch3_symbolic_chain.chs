@@ -34,6 +34,7 @@ T_ad * T_db * T_bc                           # T_ac: {a}←{c}
 T_ad * T_de                                  # T_ae: {a}←{e}
 inv(T_ad * T_db * T_bc) * T_ad * T_de        # the book's T_ce: {c}←{e}
 derive T_ce                                  # chasles finds a chain itself
+derive T_cc                                  # the empty chain: I of {c} to itself
 
 # --- Subscript cancellation ---------------------------------------------------------
 given R_ab, R_bc : SO3

@@ -56,6 +56,13 @@ fn decide(a: &Value, b: &Value, op: CmpOp) -> Option<bool> {
     }
 }
 
+/// The value recipe `r` makes with the numbers bound so far (a formula
+/// over the symbols still free, or numbers); None where a step cannot be
+/// made again so.
+pub(crate) fn made_with(r: &Rc<Recipe>, at: Lookup) -> Option<Value> {
+    value(r, at, &mut HashMap::new())
+}
+
 /// The value recipe `r` makes with the numbers bound so far: its leaves
 /// with them put in, each step applied as the evaluator applies it (to
 /// numbers as typed first, to formulas by their exact forms). None for a
@@ -69,9 +76,22 @@ fn value(
     if let Some(v) = memo.get(&key) {
         return v.clone();
     }
+    // (recipes are at most recipe::MAX_DEPTH deep; the stack grows on the
+    // heap when it runs low, as replay's does)
+    let v = stacker::maybe_grow(64 * 1024, 1024 * 1024, || step(r, at, memo));
+    memo.insert(key, v.clone());
+    v
+}
+
+/// One step of [`value`], its operands made first.
+fn step(
+    r: &Rc<Recipe>,
+    at: Lookup,
+    memo: &mut HashMap<*const Recipe, Option<Value>>,
+) -> Option<Value> {
     let args: Option<Vec<Value>> = r.args.iter().map(|a| value(a, at, memo)).collect();
-    let v = match (&r.step, args) {
-        (Step::Leaf(v), _) => Some(leaf(v, at)),
+    match (&r.step, args) {
+        (Step::Leaf(v), _) => Some(replay::with_numbers(v, at).unwrap_or_else(|| v.clone())),
         (Step::Op(o), Some(args)) => Op::of(o).and_then(|op| {
             let refs: Vec<&Value> = args.iter().collect();
             op.apply(&refs, &r.kind).ok()
@@ -85,23 +105,5 @@ fn value(
         },
         (Step::Retag | Step::Closed(_), Some(mut args)) if args.len() == 1 => args.pop(),
         _ => None,
-    };
-    memo.insert(key, v.clone());
-    v
-}
-
-/// A leaf with the numbers bound so far put in (a formula), as it was
-/// when none of its symbols has one.
-fn leaf(v: &Value, at: Lookup) -> Value {
-    let Value::Formula { kind, m, .. } = v else {
-        return v.clone();
-    };
-    let mut syms = Vec::new();
-    m.data.iter().for_each(|e| e.symbols(&mut syms));
-    if !syms.iter().any(|s| at(s).is_some()) {
-        return v.clone();
     }
-    replay::canonical(kind, m, at).unwrap_or_else(|| {
-        crate::values::formula::make(kind, m.map(|e| replay::put_numbers(e, at)))
-    })
 }

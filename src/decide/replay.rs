@@ -205,15 +205,15 @@ const VANISHING_DEPTH: u32 = 64;
 
 /// Whether the divisor recipe `r`, still over free symbols, is 0 with the
 /// numbers bound so far: made again by its operations over formulas with
-/// those numbers in its leaves (`a b` at b = 0 is 0, so `(a b)/(a b) + c`
-/// is a division by zero, as typed first, though its canonical form
-/// cancelled the quotient to 1 + c). False where it cannot tell.
+/// those numbers in its leaves (`super::partly::made_with`: `a b` at
+/// b = 0 is 0, so `(a b)/(a b) + c` is a division by zero, as typed
+/// first, though its canonical form cancelled the quotient to 1 + c).
+/// False where it cannot tell.
 fn vanishes(r: &Rc<Recipe>, at: Lookup) -> bool {
     if r.depth > VANISHING_DEPTH {
         return false;
     }
-    let rebased = at_numbers(r, at);
-    match crate::seam::made_again(&rebased, VANISHING_DEPTH) {
+    match super::partly::made_with(r, at) {
         Some(Value::Formula { m, .. }) => m.data.iter().all(|e| e.as_f64() == Some(0.0)),
         Some(v) => v.as_scalar() == Some(0.0),
         None => false,
@@ -462,21 +462,26 @@ pub(crate) fn refusal(e: &crate::values::error::OpError) -> bool {
 /// it was read, as its canonical form does); unchanged parts are shared.
 pub(crate) fn at_numbers(r: &Rc<Recipe>, at: Lookup) -> Rc<Recipe> {
     let mut memo = HashMap::new();
-    let leaf =
-        |v: &Value| -> Option<Value> {
-            let Value::Formula { kind, m, .. } = v else {
-                return None;
-            };
-            let mut syms = Vec::new();
-            m.data.iter().for_each(|e| e.symbols(&mut syms));
-            if !syms.iter().any(|s| at(s).is_some()) {
-                return None;
-            }
-            Some(canonical(kind, m, at).unwrap_or_else(|| {
-                crate::values::formula::make(kind, m.map(|e| put_numbers(e, at)))
-            }))
-        };
+    let leaf = |v: &Value| with_numbers(v, at);
     crate::values::recipe::rebase(r, &leaf, &mut memo)
+}
+
+/// A formula leaf with the numbers bound so far put in (numbers once it
+/// has no free symbol left); None when it is no formula or none of its
+/// symbols has a number.
+pub(crate) fn with_numbers(v: &Value, at: Lookup) -> Option<Value> {
+    let Value::Formula { kind, m, .. } = v else {
+        return None;
+    };
+    let mut syms = Vec::new();
+    m.data.iter().for_each(|e| e.symbols(&mut syms));
+    if !syms.iter().any(|s| at(s).is_some()) {
+        return None;
+    }
+    Some(
+        canonical(kind, m, at)
+            .unwrap_or_else(|| crate::values::formula::make(kind, m.map(|e| put_numbers(e, at)))),
+    )
 }
 
 /// `subs(x, name, value)` with a number for the last symbol of `x`: the

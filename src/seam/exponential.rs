@@ -86,7 +86,7 @@ fn of_exp(args: &[&Value], kind: &Kind) -> Option<Result<Value, OpError>> {
 /// The value recipe `r` made, made again by its operations over formulas
 /// (its leaves as they were); None past `depth` steps or for a step that
 /// is not one operation of the seam.
-pub(crate) fn made_again(r: &Rc<Recipe>, depth: u32) -> Option<Value> {
+fn made_again(r: &Rc<Recipe>, depth: u32) -> Option<Value> {
     if r.depth > depth {
         return None;
     }

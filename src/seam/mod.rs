@@ -14,7 +14,6 @@ mod call;
 mod chain;
 pub(crate) mod exactness;
 mod exponential;
-pub(crate) use exponential::made_again;
 pub(crate) mod operation;
 mod powers;
 pub(crate) mod range;
