@@ -190,3 +190,23 @@ fn a_cancelled_divisor_that_the_numbers_make_zero_is_refused() {
         "1/a + c"
     );
 }
+
+/// A divisor made in many steps is made again whole: `x = x + b a` 3,000
+/// times, then `(a b)/(x − a) + c` at b = 0 divides by 3,000 b a = 0, as
+/// typed first (a limit of 64 steps printed `1/3000 + c`). With b = 1 the
+/// same read is a value.
+#[test]
+fn a_divisor_made_in_thousands_of_steps_is_made_again_whole() {
+    let chain = |b: &str| {
+        let mut src = String::from("given a, b, c : scalar\nx = a;\n");
+        src.push_str(&"x = x + b*a;\n".repeat(3000));
+        src.push_str(&format!("y = (a*b)/(x - a) + c;\nb = {b};\ny\n"));
+        src
+    };
+    let (out, err) = run(&chain("0"));
+    assert!(
+        err.contains("domain error") && err.contains("division by zero"),
+        "{out}\n{err}"
+    );
+    assert_eq!(last(&chain("1")), "1/3000 + c");
+}

@@ -200,19 +200,18 @@ pub(crate) fn failure(r: &Rc<Recipe>, at: Lookup) -> Option<Failed> {
     memo.failed.map(Failed)
 }
 
-/// The deepest divisor [`vanishes`] makes again over formulas.
-const VANISHING_DEPTH: u32 = 64;
-
 /// Whether the divisor recipe `r`, still over free symbols, is 0 with the
 /// numbers bound so far: made again by its operations over formulas with
 /// those numbers in its leaves (`super::partly::made_with`: `a b` at
 /// b = 0 is 0, so `(a b)/(a b) + c` is a division by zero, as typed
 /// first, though its canonical form cancelled the quotient to 1 + c).
-/// False where it cannot tell.
+/// False where it cannot tell. Any depth a recipe may have
+/// (`recipe::MAX_DEPTH`): the remaking is linear in the recipe's steps
+/// (each made once), grows its stack on the heap, and a formula grown
+/// past the symbolic budget is None here; a limit of 64 steps let a
+/// divisor made in 3,000 (`x = x + b a` again and again) through as
+/// nonzero.
 fn vanishes(r: &Rc<Recipe>, at: Lookup) -> bool {
-    if r.depth > VANISHING_DEPTH {
-        return false;
-    }
     match super::partly::made_with(r, at) {
         Some(Value::Formula { m, .. }) => m.data.iter().all(|e| e.as_f64() == Some(0.0)),
         Some(v) => v.as_scalar() == Some(0.0),
