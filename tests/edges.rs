@@ -383,3 +383,64 @@ fn a_zero_angle_has_no_axis_and_says_so() {
     );
     assert!(notes("axis_ang6((0, 0, 0, 3, 0, 4))").is_empty());
 }
+
+#[test]
+fn a_subnormal_axis_is_a_unit_axis() {
+    // θ = ‖(1e-320, 1e-320, 0)‖ is subnormal: ω̂ = ω̂θ/θ kept three digits
+    // (0.70719776…); scaled first, it is (1, 1, 0)/√2 to the last digit
+    let h = std::f64::consts::FRAC_1_SQRT_2;
+    let r = numbers("AxisAng3((1e-320, 1e-320, 0))");
+    assert!(close(&r[..3], &[h, h, 0.0], 2e-16), "{r:?}");
+    let r = numbers("AxisAng6((1e-320, 1e-320, 0, 0, 0, 0))");
+    assert!(close(&r[..6], &[h, h, 0.0, 0.0, 0.0, 0.0], 2e-16), "{r:?}");
+    let r = numbers("AxisAng6((0, 0, 0, 1e-320, 0, 1e-320))");
+    assert!(close(&r[..6], &[0.0, 0.0, 0.0, h, 0.0, h], 2e-16), "{r:?}");
+}
+
+#[test]
+fn a_slow_turn_is_a_turn_not_a_pure_translation() {
+    // V = (1e-7 x̂, ẑ): ω ≠ 0, so a turn about x̂ through q = ω × v/‖ω‖² =
+    // (0, −1e7, 0) with pitch 0 (§3.3.2.2), not the pure translation along
+    // ẑ (q = 0, h = ∞) that NearZero(‖ω‖) made of it
+    let r = numbers("screw_params((1e-7, 0, 0, 0, 0, 1))");
+    assert!(
+        close(&r, &[0.0, -1e7, 0.0, 1.0, 0.0, 0.0, 0.0], 1e-8),
+        "{r:?}"
+    );
+    let n = notes("screw_params((1e-7, 0, 0, 0, 0, 1))");
+    assert!(
+        n.len() == 1 && n[0].contains("not a pure translation") && n[0].contains("h = ∞"),
+        "{n:?}"
+    );
+    // AxisAng6 keeps the book's software's reading (θ = ‖v‖), and says
+    // that S is then no unit screw axis, and what the turn is
+    assert_eq!(
+        numbers("AxisAng6((1e-7, 0, 0, 0, 0, 1))"),
+        [1e-7, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0]
+    );
+    let n = notes("AxisAng6((1e-7, 0, 0, 0, 0, 1))");
+    assert!(
+        n.len() == 1 && n[0].contains("not a unit screw axis") && n[0].contains("-10000000"),
+        "{n:?}"
+    );
+    // ω = 0 exactly is the pure translation, with no note
+    assert_eq!(
+        numbers("screw_params((0, 0, 0, 0, 3, 4))")[3..6],
+        [0.0, 0.6, 0.8]
+    );
+    assert!(notes("screw_params((0, 0, 0, 0, 3, 4))").is_empty());
+}
+
+#[test]
+fn the_point_of_a_screw_of_large_pitch_keeps_its_digits() {
+    // S = ScrewToAxis(q, ŝ, 1e8) rounded: v is nearly 1e8 ŝ, and
+    // ŝ × v/‖ω‖ cancelled to q right to 1e-9 only. Reference: mpmath at 40
+    // digits of the typed decimals (q = ω × v/‖ω‖², h = ωᵀv/‖ω‖²).
+    let r = numbers(
+        "screw_params((0.16132283906425882, 0.912466834400418, 0.37600427885268467, \
+         16132286.961491106, 91246683.72653003, 37600425.87927317))",
+    );
+    let q = [-1.9381249808177318, 1.4723304532401601, -2.7414285992643113];
+    assert!(close(&r[..3], &q, 4e-16 * 3.0), "{r:?}");
+    assert!((r[6] - 99_999_999.999_999_99).abs() <= 1.5e-8, "{r:?}");
+}

@@ -12,9 +12,50 @@ use crate::values::value::Value;
 
 /// Notes on the call `a` (its arguments still in place) that returned `v`.
 pub fn after_call(a: &mut Args, v: &Value) {
-    if let Some(n) = half_turn(a, v).or_else(|| no_axis(a, v)) {
+    if let Some(n) = half_turn(a, v)
+        .or_else(|| no_axis(a, v))
+        .or_else(|| slow_turn(a))
+    {
         a.warnings.push(n);
     }
+}
+
+/// `AxisAng6` or `screw_params` of a twist whose ω is not zero but below
+/// the book's `NearZero` tolerance (1e-6): a turn about an axis far from
+/// the origin, close to a pure translation. `AxisAng6` reads it as the
+/// book's software does (θ = ‖v‖, so S is no unit screw axis), and
+/// `screw_params` as the mathematics does (ŝ = ω/‖ω‖, a far q); the note
+/// gives the other reading, so that neither passes for the only one.
+fn slow_turn(a: &Args) -> Option<Diagnostic> {
+    if !matches!(a.name, "AxisAng6" | "screw_params") {
+        return None;
+    }
+    let s = a.expc6(0).ok()?;
+    let w = crate::lie::norm(&s.fixed_rows::<3>(0));
+    let v = crate::lie::norm(&s.fixed_rows::<3>(3));
+    if !(w > 0.0 && crate::lie::near_zero(w) && v > 0.0) {
+        return None;
+    }
+    let text = if a.name == "AxisAng6" {
+        let (q, _, h) = crate::lie::se3::screw_params(&s);
+        let n = |x: f64| crate::values::number::fmt_num(x, 4);
+        format!(
+            "‖ω‖ = {w:.3e} is below NearZero's 1e-6, so, as the book's AxisAng6, θ = ‖v‖ and S is \
+             not a unit screw axis (ω ≠ 0); exactly, it is θ = ‖ω‖ = {w:.3e} about the axis of \
+             pitch {} through q = ({}, {}, {}) (screw_params)",
+            n(h),
+            n(q.x),
+            n(q.y),
+            n(q.z)
+        )
+    } else {
+        format!(
+            "ω ≠ 0, so this is a turn about an axis, not a pure translation (§3.3.2.2); \
+             ‖ω‖ = {w:.3e} is below NearZero's 1e-6, so it is nearly one: if ω is a rounding \
+             of 0, it is the pure translation ŝ = v/‖v‖, h = ∞"
+        )
+    };
+    Some(Diagnostic::note(ErrorKind::Domain, a.call_span, text))
 }
 
 /// `AxisAng3` or `AxisAng6` of the zero vector: θ = 0, and the axis is

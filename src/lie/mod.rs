@@ -88,6 +88,40 @@ where
     big * v.iter().map(|x| (x / big) * (x / big)).sum::<f64>().sqrt()
 }
 
+/// The unit vector `v/‖v‖` and the norm `‖v‖` of a nonzero vector, the
+/// direction found without losing digits however small or large `v` is:
+/// ω̂ = ω̂θ/θ of `AxisAng3` (§3.2.3.2) at θ = 1.4e-320, whose quotient by
+/// the subnormal θ keeps only a few digits, is scaled by the largest entry
+/// first and is a unit vector to the last digit. `v` must not be zero.
+pub fn direction<const D: usize>(
+    v: &nalgebra::SVector<f64, D>,
+) -> (nalgebra::SVector<f64, D>, f64) {
+    let n = norm(v);
+    if (1e-150..=1e150).contains(&n) || !n.is_finite() {
+        return (v / n, n);
+    }
+    let w = v / v.amax();
+    (w / w.norm(), n)
+}
+
+/// `Σ aᵢbᵢ` as if in twice the working precision (Ogita, Rump and Oishi's
+/// Dot2, with fused multiply-adds): each product's and each sum's rounding
+/// is kept and added at the end, so that a sum that cancels to a small
+/// number (the pitch of a screw whose v is nearly perpendicular to ω; an
+/// entry of RᵀR − I of a matrix near SO(3)) keeps its digits.
+pub fn dot_compensated(pairs: impl Iterator<Item = (f64, f64)>) -> f64 {
+    let (mut s, mut c) = (0.0f64, 0.0f64);
+    for (a, b) in pairs {
+        let p = a * b;
+        let pe = a.mul_add(b, -p);
+        let t = s + p;
+        let z = t - s;
+        c += pe + ((s - (t - z)) + (p - z));
+        s = t;
+    }
+    s + c
+}
+
 /// `Normalize(V)` of the book's software (§3.6): the unit vector `V/‖V‖` in
 /// the direction of `V`. `None` when V is zero or has an entry that is not
 /// finite (the direction is then undefined); a tiny or huge V is

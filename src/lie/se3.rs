@@ -229,8 +229,14 @@ pub fn axis_angle(expc: &Vec6) -> (Vec6, f64) {
     if near_zero(theta) && super::norm(&v) > 0.0 {
         theta = super::norm(&v);
     }
-    if theta > 0.0 {
+    if theta >= 1e-150 {
         (expc / theta, theta)
+    } else if theta > 0.0 {
+        // (scaled by the largest entry of the part whose norm θ is: a
+        // quotient by a subnormal θ keeps only a few digits)
+        let part = if theta == super::norm(&w) { w } else { v };
+        let big = part.amax();
+        (expc / big / super::norm(&(part / big)), theta)
     } else {
         (Vec6::zeros(), 0.0)
     }
@@ -239,26 +245,61 @@ pub fn axis_angle(expc: &Vec6) -> (Vec6, f64) {
 /// The screw parameters `(q, ŝ, h)` of a twist or screw axis `V = (ω, v)`
 /// (§3.3.2.2): `ŝ = ω/‖ω‖`, pitch `h = ŝᵀv/‖ω‖`, and `q = ω × v/‖ω‖²`, the
 /// point of the axis nearest the origin (so that `v = −ω × q + hω`). For a
-/// pure translation (ω near zero, `NearZero`) the pitch is infinite:
-/// `h = f64::INFINITY`, `q = 0`, `ŝ = v/‖v‖`. The zero twist gives
-/// `(0, 0, 0.0)`.
+/// pure translation (ω = 0, the book's case: "if ω = 0 … the pitch is
+/// infinite") `h = f64::INFINITY`, `q = 0`, `ŝ = v/‖v‖`. A small ω that is
+/// not zero is a rotation about a far axis, not a translation: (1e-7, 0, 0,
+/// 0, 0, 1) turns about x̂ through q = (0, −1e7, 0) with h = 0. The zero
+/// twist gives `(0, 0, 0.0)`.
 pub fn screw_params(v: &Vec6) -> (Vec3, Vec3, f64) {
     let (w, lin) = split(v);
-    let wn = super::norm(&w);
-    if near_zero(wn) {
-        let ln = super::norm(&lin);
-        if ln > 0.0 {
-            (Vec3::zeros(), lin / ln, f64::INFINITY)
+    if w.iter().all(|x| *x == 0.0) {
+        if super::norm(&lin) > 0.0 {
+            (Vec3::zeros(), super::direction(&lin).0, f64::INFINITY)
         } else {
             (Vec3::zeros(), Vec3::zeros(), 0.0)
         }
     } else {
-        // (with ŝ = ω/‖ω‖ first, so that ‖ω‖² is never formed)
-        let s = w / wn;
-        let q = s.cross(&lin) / wn;
-        let h = s.dot(&lin) / wn;
-        (q, s, h)
+        // ω scaled by a power of two 2⁻ᵏ to a norm near 1 (exactly, so
+        // that ‖ω‖² neither underflows nor overflows; q and h scale by
+        // 2ᵏ back), and ω × v and ωᵀv with
+        // their roundings kept: of a screw of large pitch, v is nearly
+        // hŝ, and the plain products cancel to q with the digits of h
+        // (h = 1e8 left q right to 1e-9 only).
+        let k = w.amax().log2().floor() as i32;
+        let w = scale2(&w, -k);
+        let n2 = w.norm_squared();
+        let cross = Vec3::new(
+            diff_of_products(w.y, lin.z, w.z, lin.y),
+            diff_of_products(w.z, lin.x, w.x, lin.z),
+            diff_of_products(w.x, lin.y, w.y, lin.x),
+        );
+        let q = scale2(&(cross / n2), -k);
+        let h = scale2(
+            &Vec3::new(
+                super::dot_compensated(w.iter().zip(lin.iter()).map(|(a, b)| (*a, *b))) / n2,
+                0.0,
+                0.0,
+            ),
+            -k,
+        )
+        .x;
+        (q, w / n2.sqrt(), h)
     }
+}
+
+/// `v · 2^k`, exact unless it overflows or underflows (in two steps, so
+/// that 2^k itself is never out of range).
+fn scale2(v: &Vec3, k: i32) -> Vec3 {
+    let half = k / 2;
+    v * 2f64.powi(half) * 2f64.powi(k - half)
+}
+
+/// `ab − cd` to within an ulp or two (Kahan's algorithm with a fused
+/// multiply-add: the rounding of `cd` is found exactly and put back).
+fn diff_of_products(a: f64, b: f64, c: f64, d: f64) -> f64 {
+    let cd = c * d;
+    let err = (-c).mul_add(d, cd);
+    a.mul_add(b, -cd) + err
 }
 
 /// The spatial and body twists `(V_s, V_b)` of a moving frame from `T` and

@@ -315,9 +315,8 @@ pub(crate) fn near_pi_axis<S: Storage<f64, U3, U3>>(
 /// axis ω̂ and the angle θ = ‖ω̂θ‖ (§3.2.3.2). The zero vector gives
 /// `(0, 0.0)`: the axis is undefined for θ = 0 (case (i) of §3.2.3.3).
 pub fn axis_angle(expc: &Vec3) -> (Vec3, f64) {
-    let theta = super::norm(expc);
-    if theta > 0.0 {
-        (expc / theta, theta)
+    if super::norm(expc) > 0.0 {
+        super::direction(expc)
     } else {
         (Vec3::zeros(), 0.0)
     }

@@ -3,7 +3,7 @@
 //! wrench (3.99), step by step.
 
 use super::{Quantity as Q, Step};
-use crate::lie::{Mat3, Mat4, Mat6, Vec3, Vec6, near_zero, se3, so3};
+use crate::lie::{Mat3, Mat4, Mat6, Vec3, Vec6, se3, so3};
 
 /// The steps of R⁻¹ = Rᵀ (Proposition 3.1), ending with the value of
 /// [`so3::inv`].
@@ -138,7 +138,8 @@ pub fn screw_params(sv: &Vec6) -> Vec<Step> {
     let (q, s, h) = se3::screw_params(sv);
     let w = Vec3::new(sv[0], sv[1], sv[2]);
     let mut out = Vec::new();
-    if near_zero(w.norm()) {
+    // (the book's case ω = 0 exactly, as se3::screw_params decides it)
+    if w.iter().all(|x| *x == 0.0) {
         out.push(Step::new(
             "3.3.2.2",
             "case",
