@@ -444,3 +444,30 @@ fn the_point_of_a_screw_of_large_pitch_keeps_its_digits() {
     assert!(close(&r[..3], &q, 4e-16 * 3.0), "{r:?}");
     assert!((r[6] - 99_999_999.999_999_99).abs() <= 1.5e-8, "{r:?}");
 }
+
+#[test]
+fn the_distance_of_a_computed_matrix_near_so3_keeps_its_digits() {
+    // M = Rotx(0.7) Rotz(0.3) (1 + 3e-12) in floats: the plain product
+    // RᵀR − I cancelled to five digits of ‖MᵀM − I‖_F (1.0392459e-11).
+    // Reference: mpmath at 50 digits of M's floats as --json prints them.
+    let m = "M = untag(Rotx(0.7) * Rotz(0.3)) * (1 + 3e-12)";
+    assert_eq!(
+        numbers(m),
+        [
+            0.955336489128472,
+            -0.2955202066622261,
+            0.0,
+            0.22602632125030112,
+            0.7306816499377045,
+            -0.6442176872396237,
+            0.1903793440679438,
+            0.6154446635601198,
+            0.7648421872867831
+        ]
+    );
+    let want = 1.039_243_251_086_133_7e-11;
+    let d = numbers(&format!("{m}; DistanceToSO3(M)"))[0];
+    assert!((d / want - 1.0).abs() < 1e-15, "{d} vs {want}");
+    let t = numbers(&format!("{m}; DistanceToSE3([M, (1, 2, 3); 0, 0, 0, 1])"))[0];
+    assert!((t / want - 1.0).abs() < 1e-15, "{t} vs {want}");
+}

@@ -107,6 +107,19 @@ fn distance_value(a: &Args, g: Group) -> Result<Value, Diagnostic> {
         ));
     }
     let d = convert::distance(m, g).unwrap_or(f64::INFINITY);
+    // (near the group RᵀR − I cancels: summed again with its roundings
+    // kept, so that a small distance has all its digits)
+    let d = if d < 1e-4 {
+        let n = g.size();
+        let k = if matches!(g, Group::SE3 | Group::SE2) {
+            n - 1
+        } else {
+            n
+        };
+        project::gram_distance(m.as_slice(), n, k)
+    } else {
+        d
+    };
     // (within rounding of 0: the exact matrix's own distance when it has
     // one — 1.41e-20 for [1, 1e-20, 0; 0, 1, 0; 0, 0, 1], 0 for an exact
     // rotation — where the floats' is rounding noise)

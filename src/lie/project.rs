@@ -120,6 +120,32 @@ pub fn distance_to_se3(m: &Mat4) -> f64 {
     }
 }
 
+/// The book's distance from the group (§3.6, `DistanceToSO3`,
+/// `DistanceToSE3` and their planar analogues) of the n×n matrix `m`
+/// (column-major) whose rotation block is its top-left k×k block R:
+/// ‖RᵀR − I‖_F, with, when n > k, the last row's difference from
+/// (0, …, 0, 1). Each entry of RᵀR − I is summed with `−δᵢⱼ` as one
+/// compensated sum ([`super::dot_compensated`]): near the group the plain
+/// product cancels, and a distance of 1e-12 kept only five of its digits.
+/// The sign of det R (a distance of [`FAR`]) is the caller's to decide.
+pub fn gram_distance(m: &[f64], n: usize, k: usize) -> f64 {
+    let at = |i: usize, j: usize| m[i + j * n];
+    let mut off = Vec::with_capacity(k * k + n);
+    for i in 0..k {
+        for j in 0..k {
+            let delta = if i == j { -1.0 } else { 0.0 };
+            let terms = (0..k).map(|l| (at(l, i), at(l, j)));
+            off.push(super::dot_compensated(terms.chain([(delta, 1.0)])));
+        }
+    }
+    if n > k {
+        for j in 0..n {
+            off.push(at(n - 1, j) - if j == n - 1 { 1.0 } else { 0.0 });
+        }
+    }
+    super::norm(&nalgebra::DVector::from_vec(off))
+}
+
 /// `TestIfSO3(M)`: true if [`distance_to_so3`] is below 1e-3.
 pub fn test_if_so3(m: &Mat3) -> bool {
     distance_to_so3(m).abs() < TEST_TOL
