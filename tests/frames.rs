@@ -666,3 +666,16 @@ fn a_moved_frame_compares_with_the_frame_it_is_claimed_to_be() {
         "{err}"
     );
 }
+
+#[test]
+fn destructuring_a_tuple_of_framed_values_keeps_each_ones_frames() {
+    // `(A, B) = (T_ab, T_cb)` is two bindings at once: A is {a}←{b} and
+    // B is {c}←{b}, so A * B does not cancel (it ran as an untagged
+    // product, the tuple literal's one tag being none)
+    frame_error("(A, B) = (T_ab, T_cb); A * B", "frames do not cancel");
+    frames("(A, B) = (T_ab, T_bc); A * B", &["a", "c"]);
+    frames("(X, k) = (T_bc, 2); X", &["b", "c"]);
+    frame_error("(R_cd, k) = (R_ab, 2)", "the name R_cd says");
+    // swapping evaluates both sides first
+    frames("(A, B) = (T_ab, T_bc); (A, B) = (B, A); B * A", &["a", "c"]);
+}

@@ -212,9 +212,27 @@ impl<'a> Interp<'a> {
                 Ok(o)
             }
             StmtKind::Destructure { targets, value } => {
-                let t = self.expr(value)?;
-                self.commit(t.value(), s.span)?;
-                let parts = self.split_tuple(&t, targets.len(), value.span)?;
+                let parts = match &value.kind {
+                    // `(A, B) = (T_ab, T_cb)`: each part as its own value,
+                    // keeping its own frames (a tuple's type has one tag
+                    // for all its parts, and a literal's has none)
+                    crate::syntax::ast::ExprKind::Paren(items)
+                        if items.len() == targets.len() && items.len() > 1 =>
+                    {
+                        let mut parts = Vec::with_capacity(items.len());
+                        for item in items {
+                            let t = self.expr(item)?;
+                            self.commit(t.value(), s.span)?;
+                            parts.push(t);
+                        }
+                        parts
+                    }
+                    _ => {
+                        let t = self.expr(value)?;
+                        self.commit(t.value(), s.span)?;
+                        self.split_tuple(&t, targets.len(), value.span)?
+                    }
+                };
                 let mut bound = Vec::new();
                 for (target, mut part) in targets.iter().zip(parts) {
                     self.bind_checked(target.name, &mut part, target.span, value.span)?;
