@@ -96,7 +96,19 @@ impl Report {
                 },
             },
             (Err(d), true) => {
-                let (line, col) = render::line_col_from(src, d.span.start, self.anchor);
+                // (an error in the body of a function defined earlier is
+                // this statement's: its object is at the call, so that the
+                // statement that failed is the one its line names)
+                let at = match d.span.start < self.anchor.offset {
+                    true => d
+                        .labels
+                        .iter()
+                        .rev()
+                        .find(|l| l.span.start >= self.anchor.offset)
+                        .map_or(d.span.start, |l| l.span.start),
+                    false => d.span.start,
+                };
+                let (line, col) = render::line_col_from(src, at, self.anchor);
                 let mut j = json::error(d, line, col);
                 json::add_warnings(&mut j, &self.warnings);
                 j

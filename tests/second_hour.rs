@@ -7,7 +7,7 @@ use chasles::eval::env::Mode;
 use chasles::session::{Session, Settings};
 
 mod common;
-use common::{error, same, try_json};
+use common::{error, json_lines, run, same, try_json};
 
 const R: &str = "R = Rotz(pi/6) Rotx(pi/4); p = (1, 2, 3); A = [1, 2; 3, 4]; n = 5";
 
@@ -174,6 +174,35 @@ fn an_error_in_a_function_shows_the_call() {
         e.contains("3 │ f(2)") && e.contains("in this call of f"),
         "{e}"
     );
+}
+
+#[test]
+fn an_error_in_a_function_is_the_calling_statements_json_object() {
+    // one JSON object per statement (§1): the error of `f(2)` on line 3 is
+    // line 3's, at the call, not line 1's (the definition, which held)
+    let (code, out, _) = run(&["--json", "-e", "f(x) = sqrt(x - 3)\ny = 1\nf(2)"]);
+    assert_eq!(code, 1);
+    let lines = json_lines(&out);
+    let e = lines.last().expect("an error");
+    assert_eq!(
+        (&e["line"], &e["error"]["col"]),
+        (&3.into(), &1.into()),
+        "{out}"
+    );
+    assert_eq!(e["error"]["kind"], "domain");
+    // through two functions, and in check as in run
+    let src = "T_ab = Trans((1, 0, 0))\nT_cb = Trans((0, 1, 0))\ng(X, Y) = X * Y\nh(X) = g(X, T_cb)\n\nh(T_ab)\n";
+    let path = common::scratch("function_error_line").join("f.chs");
+    std::fs::write(&path, src).unwrap();
+    for cmd in ["run", "check"] {
+        let (_, out, _) = run(&[cmd, "--json", path.to_str().unwrap()]);
+        let e = json_lines(&out).pop().expect("an error");
+        assert_eq!(
+            (&e["line"], &e["error"]["kind"]),
+            (&6.into(), &"frame".into()),
+            "{cmd}: {out}"
+        );
+    }
 }
 
 #[test]
