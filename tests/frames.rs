@@ -679,3 +679,21 @@ fn destructuring_a_tuple_of_framed_values_keeps_each_ones_frames() {
     // swapping evaluates both sides first
     frames("(A, B) = (T_ab, T_bc); (A, B) = (B, A); B * A", &["a", "c"]);
 }
+
+#[test]
+fn a_whole_exponent_of_literals_is_known_to_check() {
+    // `^` is right-associative and binds tighter than unary minus:
+    // T_ab^-1^2 is T_ab^-(1²) = inv(T_ab), which run accepted and check
+    // refused (its exponent was not a plain literal)
+    frames("T_ab^-1^2", &["b", "a"]);
+    frames("T_ab^(1 - 2)", &["b", "a"]);
+    frames("T_ab^(2 - 2)", &[]);
+    frame_error("T_ab^(1 + 1)", "frames do not cancel in a power");
+    frame_error("T_ab^(2^-1)", "frames do not cancel in a power");
+    // an exponent that is a name has no number in check: refused, saying
+    // why (it may be the −1 that run accepts)
+    let e = last("given T_ab : SE3\nn = -1\nT_ab^n\n", Mode::Check);
+    let Err((kind, msg)) = e else { panic!("{e:?}") };
+    assert_eq!(kind, "frame");
+    assert!(msg.contains("unless its exponent is −1, 0 or 1"), "{msg}");
+}

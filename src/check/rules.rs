@@ -230,6 +230,16 @@ pub fn pow(base: &Ty, exp: &Ty, literal: Option<f64>) -> Result<Ty, RuleError> {
                             "X_{a}{b} * X_{a}{b} needs {{{b}}} = {{{a}}}; powers are for displacements (X_{a}{a}) or untagged matrices"
                         ));
                     }
+                    // (an exponent with no number yet — a name, in `check` —
+                    // may be the −1, 0 or 1 for which they do cancel)
+                    if literal.is_none() {
+                        e.message = "frames do not cancel in a power unless its exponent is −1, 0 or 1, and this exponent's number is not known here".into();
+                        if let Frames::Pair(a, b) = &base.frames {
+                            e.help = Some(format!(
+                                "X_{a}{b}^n is a map between frames only for n = −1 (inv(X_{a}{b}), {{{a}}} in {{{b}}}), 0 (I) or 1; write inv(X_{a}{b}) for the inverse"
+                            ));
+                        }
+                    }
                     return Err(e);
                 }
                 Err(Clash::Transposed { .. }) => {

@@ -432,6 +432,27 @@ fn literal_number(e: &Expr) -> Option<f64> {
             op: UnOp::Neg,
             operand,
         } => literal_number(operand).map(|x| -x),
+        // (whole numbers of whole literals, exactly as run computes them:
+        // `T_cd^-1^2` is T_cd^-(1²) = inv(T_cd), `T^(1 - 2)` too, known
+        // to `check`, which has no values)
+        ExprKind::Binary { op, lhs, rhs, .. } => {
+            let (a, b) = (literal_number(lhs)?, literal_number(rhs)?);
+            let whole = |x: f64| x.fract() == 0.0 && x.abs() < 1e15;
+            if !whole(a) || !whole(b) {
+                return None;
+            }
+            // (a quotient or power of whole numbers that is not whole is
+            // no −1, 0 or 1 in floats either: `T^(2^-1)` is T^(1/2))
+            let x = match op {
+                BinOp::Add => a + b,
+                BinOp::Sub => a - b,
+                BinOp::Mul => a * b,
+                BinOp::Div if b != 0.0 => return Some(a / b),
+                BinOp::Pow if (-64.0..=64.0).contains(&b) => return Some(a.powi(b as i32)),
+                _ => return None,
+            };
+            whole(x).then_some(x)
+        }
         _ => None,
     }
 }
