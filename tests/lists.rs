@@ -162,3 +162,47 @@ fn a_sum_of_group_elements_is_a_plain_matrix_as_with_plus() {
     let (out, _, _) = j.run_to_strings("t", "sum([Rotz(k) for k in 0:1])\n", Mode::Run, false);
     assert!(out.contains("\"type\":\"matrix\""), "{out}");
 }
+
+/// The items of a range, a comprehension over a vector, a destructured
+/// vector and `sum`, `min`, `max` are exact as the same numbers written
+/// out are (LANGUAGE.md §7: "exact numbers stay exact"): each line is
+/// true, as its typed-out twin is. They were false, with a note that the
+/// sides differ by rounding only (`(0:0.1:1)[4]` was the float
+/// 0.30000000000000004 with no exact form, `max([1 + 1e-20, 1])` the
+/// float 1).
+#[test]
+fn list_items_are_exact_as_the_numbers_written_out() {
+    let lines = [
+        // typed out: 0.1·3 == 0.3, k = 2; sqrt(k)^2 == 2
+        "r = 0:0.1:1; r[4] == 0.3",
+        "[sqrt(k) for k in 1:4][2]^2 == 2",
+        "(-0.3:0.1:0.3)[4] == 0",
+        "[x^2 for x in (sqrt(2), 1)][1] == 2",
+        "(x, y) = (sqrt(2), 1); x^2 == 2",
+        "sum([0.1 for k in 1:10]) == 1",
+        "sum(0:0.1:1) == 5.5",
+        "sum((sqrt(2), sqrt(2)))^2 == 8",
+        "min([sqrt(2), 2])^2 == 2",
+        "max((sqrt(3), 1))^2 == 3",
+        "max([1 + 1e-20, 1]) == 1 + 1e-20",
+        "(max([1 + 1e-20, 1]) == 1) == false",
+        "min([1 + 1e-20, 1]) == 1",
+        "sum([k*pi/4 for k in 1:4]) == 5*pi/2",
+        // bound later, as typed first
+        "given h; r = 0:h:1; h = 0.1; r[4] == 0.3",
+        "given h; s = sum(0:h:1); h = 0.1; s == 5.5",
+    ];
+    for line in lines {
+        let mut s = Session::new(Settings::default());
+        let (out, err, n) = s.run_to_strings("t", &format!("{line}\n"), Mode::Run, false);
+        assert_eq!(n, 0, "{line}: {err}");
+        assert_eq!(out.lines().last(), Some("true"), "{line}: {out}{err}");
+    }
+    // The floats stay those of the sum written out (JSON's full precision).
+    let mut j = Session::new(Settings {
+        json: true,
+        ..Settings::default()
+    });
+    let (out, _, _) = j.run_to_strings("t", "0:0.1:0.3\n", Mode::Run, false);
+    assert!(out.contains("[0,0.1,0.2,0.30000000000000004]"), "{out}");
+}

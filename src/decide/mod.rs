@@ -12,7 +12,9 @@
 //! ranges (`inverse`), and the exact form of a logarithm of an exponential
 //! by the principal branch (`log_exp`: log e^X = X for ‖ω‖ < π); trees of the book's transforms by the algebra of
 //! their blocks (`blocks`: (T U)⁻¹ = U⁻¹ T⁻¹); the half-turn branch of a rotation's log
-//! (`turn`, §3.2.3.3) and the order of scalars (`order`). Imports
+//! (`turn`, §3.2.3.3) and the order of scalars (`order`); `sum`, `min`
+//! and `max` of items that may be exact, as the items written out
+//! (`folds`), for numbers typed first and bound later alike. Imports
 //! the operation seam ([`crate::seam`]), nothing from the interpreter.
 
 pub(crate) mod ball;
@@ -22,6 +24,7 @@ pub(crate) mod certify;
 pub(crate) mod constant;
 pub(crate) mod cyclotomic;
 pub(crate) mod equality;
+pub(crate) mod folds;
 pub(crate) mod inverse;
 pub(crate) mod lift;
 pub(crate) mod log_exp;

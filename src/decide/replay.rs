@@ -103,6 +103,12 @@ pub(crate) fn typed_first(
     use crate::values::error::OpError;
     match op {
         Op::Call(b, _) => {
+            // (`sum`, `min`, `max` of a range that waited: as typed first)
+            if let [xs] = args
+                && let Some(v) = super::folds::of_call(b.name, xs)
+            {
+                return v.map_err(OpError::Message);
+            }
             let exact = op.exact_of(args, kind);
             let site = apply::Site {
                 spans: apply::Spans::repeat(Default::default(), args.len()),
@@ -285,11 +291,7 @@ fn step(r: &Recipe, at: Lookup, memo: &mut Memo) -> Option<Value> {
             let [a, h, b] = refs.as_slice() else {
                 return None;
             };
-            return match crate::seam::range::range_items(
-                a.as_scalar()?,
-                h.as_scalar()?,
-                b.as_scalar()?,
-            ) {
+            return match crate::seam::range::range_items(a, h, b.as_scalar()?) {
                 Ok(v) => Some(v),
                 Err(e) => {
                     memo.failed.get_or_insert(e.to_string());

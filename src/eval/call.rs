@@ -183,7 +183,11 @@ impl Interp<'_> {
         // paths below are for lists, tuples and symbols, and for
         // `simplify` of a number.
         let numbers = vals.iter().all(|v| matches!(v, Value::Num { .. }));
-        if !numbers || super::tuple_call::takes_numbers(b.name) {
+        // (a vector that may be exact is summed as its entries written
+        // out would be: `crate::decide::folds`)
+        let folded =
+            matches!(b.name, "sum" | "min" | "max") && vals.iter().any(Value::may_be_exact);
+        if !numbers || folded || super::tuple_call::takes_numbers(b.name) {
             if let Some(v) = self.call_on_parts(b, op, &vals, &ty, span, base)? {
                 return Ok(Typed::new(ty, Some(v)));
             }
@@ -282,7 +286,8 @@ impl Interp<'_> {
 
     /// A call whose value comes from its arguments' parts or kinds, not
     /// from the builtin: `len`, `sum`, `min`, `max` of a range that waits
-    /// for numbers, `len` and `det` known from a symbolic argument's kind,
+    /// for numbers, `sum`, `min`, `max` of items that may be exact
+    /// ([`crate::decide::folds`]), `len` and `det` known from a symbolic argument's kind,
     /// `subs`, `simplify`, `expand` of each part of a tuple (None: the
     /// builtin itself runs).
     fn call_on_parts(
@@ -299,6 +304,16 @@ impl Interp<'_> {
             && let Some(v) = crate::values::waiting::of_range(b.name, range, ty.kind)
         {
             return Ok(Some(v));
+        }
+        if let [xs] = vals
+            && let Some(v) = crate::decide::folds::of_call(b.name, xs)
+        {
+            let kind = if b.name == "sum" {
+                ErrorKind::Type
+            } else {
+                ErrorKind::Domain
+            };
+            return v.map(Some).map_err(|m| Diagnostic::error(kind, span, m));
         }
         if let Some(v) = super::list::symbolic_len(b, &self.env.arg_tys[base..], vals) {
             return Ok(Some(v));

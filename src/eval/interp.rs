@@ -417,7 +417,10 @@ impl<'a> Interp<'a> {
         let vals: Vec<Option<Value>> = match t.val.as_deref() {
             Some(Value::Tuple(vs)) => vs.iter().cloned().map(Some).collect(),
             Some(Value::List(vs)) => vs.iter().cloned().map(Some).collect(),
-            Some(Value::Num { m, .. }) => m.iter().map(|x| Some(Value::scalar(*x))).collect(),
+            Some(v @ Value::Num { .. }) => crate::seam::shapes::entries(v)
+                .into_iter()
+                .map(Some)
+                .collect(),
             // a symbolic vector's entries, each `v[i]` (so each remembers
             // how it was made, §7)
             Some(v @ Value::Formula { .. }) if t.ty.kind.is_vector() => (1..=n)

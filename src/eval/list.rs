@@ -216,7 +216,12 @@ impl Interp<'_> {
         let a = self.bound(start)?;
         let h = match step {
             Some(s) => self.bound(s)?,
-            None => Some(Value::scalar(1.0)),
+            // (the step left out is the whole number 1, as typed)
+            None => Some(Value::Num {
+                kind: Kind::Scalar,
+                m: crate::values::num::Num::Scalar(1.0),
+                exact: crate::values::exact::Exact::Typed,
+            }),
         };
         let b = self.bound(end)?;
         let ty = Ty::plain(Kind::list(Kind::Scalar));
@@ -236,10 +241,10 @@ impl Interp<'_> {
                 )),
             };
         }
-        let (Some(a), Some(h), Some(b)) = (a.as_scalar(), h.as_scalar(), b.as_scalar()) else {
+        let (Some(x), Some(dx), Some(b)) = (a.as_scalar(), h.as_scalar(), b.as_scalar()) else {
             return Ok(Typed::new(ty, None));
         };
-        let n = range_count(a, h, b).map_err(|e| match e {
+        let n = range_count(x, dx, b).map_err(|e| match e {
             RangeFail::ZeroStep => self
                 .domain(span, e.to_string())
                 .with_help("give a nonzero step: start:step:end"),
@@ -249,7 +254,7 @@ impl Interp<'_> {
         spend(n, span)?;
         crate::budget::hold(2 * n as u64)
             .map_err(|stop| super::interp::budget_error(stop, span))?;
-        Ok(Typed::new(ty, Some(Value::List(Rc::new(items(a, h, n))))))
+        Ok(Typed::new(ty, Some(Value::List(Rc::new(items(&a, &h, n))))))
     }
 
     /// `xs[i]`: the i-th item (from 1), with the list's frames.
@@ -338,7 +343,7 @@ impl Interp<'_> {
                 )
                 .with_help("bind numbers to the given names first, then build the list (§7)"));
             }
-            Some(Value::Num { m, .. }) => Some(m.iter().map(|x| Value::scalar(*x)).collect()),
+            Some(v @ Value::Num { .. }) => Some(crate::seam::shapes::entries(&v)),
             Some(Value::Sym(_)) => {
                 return Err(Diagnostic::error(
                     ErrorKind::Type,

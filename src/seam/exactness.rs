@@ -389,13 +389,13 @@ fn scalar_only(name: &str) -> bool {
 /// How small a sum's entry must be against its larger operand for the
 /// floats to have cancelled ([`Op::cancels`]): 2⁻²⁶, half of a double's
 /// 53 bits of precision lost.
-const CANCELLED: f64 = 1.0 / 67_108_864.0;
+pub(crate) const CANCELLED: f64 = 1.0 / 67_108_864.0;
 
 /// Gives the numbers `v` the floats of its exact form (each entry the
 /// float nearest its exact value, as far as `Expr::as_f64` reads it),
 /// when it has one whose entries are all real numbers; leaves `v` as it is
 /// otherwise (no exact form, or π's powers that do not fit a float).
-fn from_exact_form(v: &mut Value) {
+pub(crate) fn from_exact_form(v: &mut Value) {
     let Some(form) = v.exact_form() else {
         return;
     };

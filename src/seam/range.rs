@@ -4,6 +4,12 @@
 
 use std::rc::Rc;
 
+use crate::check::ty::Kind;
+use crate::sym::Mat;
+use crate::sym::coef::Coef;
+use crate::sym::expr::Expr;
+use crate::values::exact::Exact;
+use crate::values::num::Num;
 use crate::values::value::Value;
 
 /// The longest list made: a range or comprehension with more items is a
@@ -62,14 +68,69 @@ pub(crate) fn range_count(a: f64, h: f64, b: f64) -> Result<usize, RangeFail> {
     Ok(n as usize)
 }
 
-/// The `n` items of the range from `a` by `h`.
-pub(crate) fn items(a: f64, h: f64, n: usize) -> Vec<Value> {
-    (0..n).map(|k| Value::scalar(a + k as f64 * h)).collect()
+/// The `n` items of the range from `a` by `h`: item k is the sum
+/// `a + k·h`, in floats as that sum written out gives them and, when `a`
+/// and `h` are exact, exact as it is (LANGUAGE.md §7: `(0:0.1:1)[4] ==
+/// 0.3` as `0.1·3 == 0.3`, `sqrt(k)` of a `k` of `1:4` as of a `k` typed;
+/// `(-0.3:0.1:0.3)[4]` is 0, its floats having cancelled, as
+/// `-0.3 + 3·0.1` is). A whole-number range is as typed (no form to keep).
+pub(crate) fn items(a: &Value, h: &Value, n: usize) -> Vec<Value> {
+    let (Some(x), Some(dx)) = (a.as_scalar(), h.as_scalar()) else {
+        return Vec::new();
+    };
+    let float = |k: usize| x + k as f64 * dx;
+    let Some((fa, fh)) = scalar_form(a).zip(scalar_form(h)) else {
+        return (0..n).map(|k| Value::scalar(float(k))).collect();
+    };
+    // (whole numbers below 2⁵³ sum exactly in floats: read as typed)
+    let whole = |e: &Expr| {
+        e.as_const()
+            .and_then(|c| c.as_rat())
+            .is_some_and(|r| r.is_integer())
+    };
+    if whole(&fa) && whole(&fh) && x.abs() + n as f64 * dx.abs() < 9.0e15 {
+        return (0..n)
+            .map(|k| Value::Num {
+                kind: Kind::Scalar,
+                m: Num::Scalar(float(k)),
+                exact: Exact::Typed,
+            })
+            .collect();
+    }
+    let forms = Rc::new((fa, fh));
+    (0..n)
+        .map(|k| {
+            let f = Rc::clone(&forms);
+            let mut v = Value::Num {
+                kind: Kind::Scalar,
+                m: Num::Scalar(float(k)),
+                exact: Exact::later(move || {
+                    let k = Coef::int(i64::try_from(k).ok()?);
+                    Some(Mat::scalar(f.0.add(&f.1.scale(&k))))
+                }),
+            };
+            let big = x.abs().max(k as f64 * dx.abs());
+            if big > 0.0 && float(k).abs() <= big * super::exactness::CANCELLED {
+                super::exactness::from_exact_form(&mut v);
+            }
+            v
+        })
+        .collect()
+}
+
+/// The exact form of a number, as one expression; None for a float.
+fn scalar_form(v: &Value) -> Option<Expr> {
+    let m = v.exact_form()?;
+    let [e] = <[Expr; 1]>::try_from(m.data).ok()?;
+    Some(e)
 }
 
 /// The list `a:h:b` as typed first, once a range that waited has its
 /// numbers ([`crate::decide::replay`]); Err why it has none.
-pub(crate) fn range_items(a: f64, h: f64, b: f64) -> Result<Value, RangeFail> {
-    let n = range_count(a, h, b)?;
+pub(crate) fn range_items(a: &Value, h: &Value, b: f64) -> Result<Value, RangeFail> {
+    let (Some(x), Some(dx)) = (a.as_scalar(), h.as_scalar()) else {
+        return Err(RangeFail::NotFinite);
+    };
+    let n = range_count(x, dx, b)?;
     Ok(Value::List(Rc::new(items(a, h, n))))
 }

@@ -1,7 +1,8 @@
 //! The rules (LANGUAGE.md §6) of the operations that take shapes apart
 //! or build them: indexing `x[i]`, the book's bracket `[x]` (3.30, 3.70)
 //! and block matrices `[a, b; c, d]`. [`super::apply::Op::rule`] uses them.
-//! With values: the zero blocks a lone `0` of `[R, p; 0, 1]` stands for.
+//! With values: the zero blocks a lone `0` of `[R, p; 0, 1]` stands for,
+//! and a vector's entries as indexing gives them.
 
 use crate::check::rules::RuleError;
 use crate::check::ty::{Frames, Kind, Ty};
@@ -145,4 +146,32 @@ pub(crate) fn zero_blocks_where(lone: impl Fn(usize, usize) -> bool, vals: &mut 
             exact: crate::values::exact::Exact::Typed,
         };
     }
+}
+
+/// The entries of a vector of numbers (a column, or a row as MATLAB
+/// writes one), each as `v[i]` gives it: with its exact form when the
+/// vector has one (`[x^2 for x in (sqrt(2), 1)]`, `(x, y) = (sqrt(2), 1)`
+/// and `min([sqrt(2), 2])` keep √2 exact, as `v[1]` does; §7). Any other
+/// matrix gives its floats, column by column.
+pub(crate) fn entries(v: &Value) -> Vec<Value> {
+    let Value::Num { m, .. } = v else {
+        return Vec::new();
+    };
+    let (rows, cols) = (m.nrows(), m.ncols());
+    if cols != 1 && rows != 1 {
+        return m.iter().map(|x| Value::scalar(*x)).collect();
+    }
+    (1..=rows.max(cols))
+        .map(|i| {
+            let at = Sel::At(i as f64);
+            let sel = if cols == 1 {
+                vec![at]
+            } else {
+                vec![Sel::At(1.0), at]
+            };
+            super::apply::Op::Index(&sel)
+                .apply(&[v], &Kind::Scalar)
+                .unwrap_or_else(|_| Value::scalar(f64::NAN))
+        })
+        .collect()
 }
