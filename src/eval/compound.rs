@@ -394,13 +394,15 @@ impl Interp<'_> {
             return Ok(0);
         };
         if x.fract() != 0.0 || !x.is_finite() || x.abs() > 1e15 {
+            // (all the digits where six would show a whole number: 4.0000000001)
+            let mut shown = crate::values::number::fmt_num(x, 6);
+            if x.is_finite() && x.abs() <= 1e15 && !shown.contains(['.', 'e']) {
+                shown = format!("{x}");
+            }
             return Err(Diagnostic::error(
                 ErrorKind::Domain,
                 e.span,
-                format!(
-                    "a count must be a whole number, not {}",
-                    crate::values::number::fmt_num(x, 6)
-                ),
+                format!("a count must be a whole number, not {shown}"),
             ));
         }
         Ok(x as i64)

@@ -206,6 +206,55 @@ fn not_in_space(kind: JointType, space: Space, part: MechPart) -> MechError {
     }
 }
 
+/// A compound joint (`RRRP`, the book's RP pair of Example 2.1 grown
+/// longer) read as ONE joint, when that leaves too few joints to connect
+/// the links (`J < N − 1`): the book also names a serial chain by its
+/// letters ("an RRRP open chain", the SCARA of Example 2.7), and the two
+/// readings give different counts (`links 5; joints RRRP; spatial` is
+/// 6(5 − 1 − 1) + 4 = 22 read as one joint, 4 read as four), so the spec
+/// is refused with both readings rather than answered with one.
+fn compound_leaves_links_apart(
+    groups: &[(i64, Joint)],
+    space: Space,
+    n: i128,
+    j: i128,
+) -> Option<MechError> {
+    if j >= n - 1 {
+        return None;
+    }
+    let (i, (count, joint)) = groups
+        .iter()
+        .enumerate()
+        .find(|(_, (_, jt))| jt.kinds.len() > 1)?;
+    let letters = joint.letters();
+    let apart = joint
+        .kinds
+        .iter()
+        .map(|k| k.symbol())
+        .collect::<Vec<_>>()
+        .join(" ");
+    let written = group_text(*count, &letters);
+    let f = joint.freedoms_in(space);
+    let s = if j == 1 { "" } else { "s" };
+    Some(
+        MechError::new(
+            MechPart::Joint(i),
+            format!(
+                "`{written}` is read as {} (as the RP pair of example 2.1), which leaves J = {j} joint{s} for N = {n} links: too few to connect them (J < N − 1 = {})",
+                if *count == 1 {
+                    format!("one compound joint with f = {f}")
+                } else {
+                    format!("{count} compound joints with f = {f} each")
+                },
+                n - 1
+            ),
+        )
+        .help(format!(
+            "a chain of separate joints is written with spaces, `{apart}` (an {letters} open chain, example 2.7); a compound joint connects just two links"
+        )),
+    )
+}
+
 /// Written count and letters, e.g. `8R`, `P`, `7RP`, `6 sliding`.
 pub(super) fn group_text(count: i64, letters: &str) -> String {
     if count == 1 {
@@ -409,6 +458,9 @@ impl Mechanism {
                         ),
                     )
                     .help("N counts every link, ground included: one joint on the ground is `links 2; joints R`"));
+                }
+                if let Some(e) = compound_leaves_links_apart(&groups, space, i128::from(n), j) {
+                    return Err(e);
                 }
                 let f: i128 = groups
                     .iter()

@@ -634,3 +634,31 @@ fn lower_case_letters_are_accepted() {
     assert_eq!(m.dof(), 6);
     assert_eq!(m.joints_text(), "6U 6P 6S");
 }
+
+#[test]
+fn error_compound_joint_leaving_links_apart() {
+    // The SCARA of example 2.7, "an RRRP open chain", written as letters:
+    // read as one compound joint it would be 6(5 − 1 − 1) + 4 = 22.
+    let e = err(Some("spatial"), Some(5), &[(1, "RRRP")], None);
+    assert_eq!(e.part, MechPart::Joint(0));
+    assert_eq!(
+        e.message,
+        "`RRRP` is read as one compound joint with f = 4 (as the RP pair of example 2.1), which leaves J = 1 joint for N = 5 links: too few to connect them (J < N − 1 = 4)"
+    );
+    assert!(e.help.as_deref().is_some_and(|h| h.contains("`R R R P`")));
+    let e = err(Some("planar"), Some(9), &[(1, "R"), (2, "RP")], None);
+    assert_eq!(e.part, MechPart::Joint(1));
+    assert!(
+        e.message
+            .starts_with("`2RP` is read as 2 compound joints with f = 2 each")
+    );
+    // Written apart it is the open chain; compound joints that connect
+    // every link (the caterpillar, example 2.1(ii)) are as before.
+    let m = mech("spatial", Some(5), &[(3, "R"), (1, "P")], None);
+    check(&m, 5, 4, 4, 4, "dof = 6(5 − 1 − 4) + 4·1 = 4");
+    let m = mech("planar", Some(3), &[(2, "R"), (1, "RP")], None);
+    check(&m, 3, 3, 4, 1, "dof = 3(3 − 1 − 3) + 2·1 + 1·2 = 1");
+    // Separate joints too few for the links are free bodies, with a note.
+    let m = mech("planar", Some(3), &[(1, "R")], None);
+    assert!(has_note(&m, "some move as free bodies"));
+}
