@@ -144,15 +144,25 @@ impl Mechanism {
             ));
         }
         if let Some(l) = &self.legs {
-            let s_joints = l.chain.iter().filter(|&&k| k == JointType::S).count();
+            let s_joints = l.chain.iter().filter(|&&k| k == JointType::S).count() as i64;
             if s_joints >= 2 && l.count >= 1 {
-                let spins = if l.count == 1 {
+                // (the links between each two S joints in a row spin alone)
+                let total = l.count * (s_joints - 1);
+                let spins = if total == 1 {
                     "1 of the dof is this idle spin".to_string()
                 } else {
-                    format!("{} of the dof are such idle spins", l.count)
+                    format!("{total} of the dof are such idle spins")
+                };
+                let has = if s_joints == 2 {
+                    "two S joints: the links between them can spin about the line through the two ball centres".to_string()
+                } else {
+                    format!(
+                        "{s_joints} S joints: the links between each two in a row can spin about the line through their ball centres, {} spins a leg",
+                        s_joints - 1
+                    )
                 };
                 notes.push(format!(
-                    "each {} leg has two S joints: the links between them can spin about the line through the two ball centres without moving the platform (example 2.6, U replaced by S); {spins}",
+                    "each {} leg has {has} without moving the platform (example 2.6, U replaced by S); {spins}",
                     l.chain_text()
                 ));
             }
@@ -229,9 +239,11 @@ impl fmt::Display for Mechanism {
         match &self.legs {
             Some(l) => writeln!(
                 f,
-                "  J = {} joints: {} legs {} ({})",
+                "  J = {} joint{}: {} leg{} {} ({})",
                 self.j,
+                s(self.j),
                 l.count,
+                s(l.count),
                 l.chain_text(),
                 self.joints_text()
             )?,

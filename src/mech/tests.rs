@@ -662,3 +662,15 @@ fn error_compound_joint_leaving_links_apart() {
     let m = mech("planar", Some(3), &[(1, "R")], None);
     assert!(has_note(&m, "some move as free bodies"));
 }
+
+#[test]
+fn every_two_s_joints_in_a_row_make_an_idle_spin() {
+    // Each SSS leg: the link between S₁ and S₂ spins about their line, and
+    // the link between S₂ and S₃ about theirs: two spins a leg.
+    let m = mech("spatial", None, &[], Some((3, "SSS")));
+    check(&m, 8, 9, 27, 15, "dof = 6(8 − 1 − 9) + 9·3 = 15");
+    assert!(has_note(&m, "6 of the dof are such idle spins"), "{m}");
+    let m = mech("spatial", None, &[], Some((1, "SRSPS")));
+    assert!(has_note(&m, "2 of the dof are such idle spins"), "{m}");
+    assert!(m.to_string().contains("J = 5 joints: 1 leg SRSPS"), "{m}");
+}
