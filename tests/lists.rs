@@ -206,3 +206,33 @@ fn list_items_are_exact_as_the_numbers_written_out() {
     let (out, _, _) = j.run_to_strings("t", "0:0.1:0.3\n", Mode::Run, false);
     assert!(out.contains("[0,0.1,0.2,0.30000000000000004]"), "{out}");
 }
+
+/// A range of exact bounds ends where its exact numbers say (LANGUAGE.md
+/// §12: the end is included "within a rounding tolerance", and exact
+/// numbers have no rounding): `1:0.5:1.9999999999` was [1, 1.5, 2], its
+/// last item past its end, as was 0.3 in `0:0.1:0.29999999999`. Ends that
+/// floats reach only within rounding (π by π/8) are still reached.
+#[test]
+fn a_range_of_exact_bounds_ends_exactly() {
+    let cases = [
+        ("1:0.5:1.9999999999", "[1, 1.5]  : list of 2 numbers"),
+        ("1:0.5:2.0000000001", "[1, 1.5, 2]  : list of 3 numbers"),
+        ("0:0.1:0.29999999999", "[0, 0.1, 0.2]  : list of 3 numbers"),
+        ("0:0.1:0.3", "[0, 0.1, 0.2, 0.3]  : list of 4 numbers"),
+        ("len(0:pi/8:pi)", "9"),
+        ("len(0:pi/3:2*pi)", "7"),
+        ("len(0:1/3:1)", "4"),
+        ("len(0:0.1:pi)", "32"),
+        ("10:-2.5:0", "[10, 7.5, 5, 2.5, 0]  : list of 5 numbers"),
+        (
+            "given h; r = 0:h:1.9999999999; h = 0.5; r",
+            "[0, 0.5, 1, 1.5]  : list of 4 numbers",
+        ),
+    ];
+    for (line, want) in cases {
+        let mut s = Session::new(Settings::default());
+        let (out, err, n) = s.run_to_strings("t", &format!("{line}\n"), Mode::Run, false);
+        assert_eq!(n, 0, "{line}: {err}");
+        assert_eq!(out.lines().last(), Some(want), "{line}: {out}");
+    }
+}

@@ -291,7 +291,7 @@ fn step(r: &Recipe, at: Lookup, memo: &mut Memo) -> Option<Value> {
             let [a, h, b] = refs.as_slice() else {
                 return None;
             };
-            return match crate::seam::range::range_items(a, h, b.as_scalar()?) {
+            return match crate::seam::range::range_items(a, h, b) {
                 Ok(v) => Some(v),
                 Err(e) => {
                     memo.failed.get_or_insert(e.to_string());

@@ -13,7 +13,7 @@ use super::interp::{Interp, Typed};
 use super::value::{Value, common_kind};
 use crate::check::ty::{Frames, Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
-use crate::seam::range::{MAX_LIST, RangeFail, items, range_count};
+use crate::seam::range::{MAX_LIST, RangeFail, count, items};
 use crate::syntax::ast::{Expr, ExprKind, Ident, Span};
 
 /// The most items that the comprehensions of one statement may evaluate
@@ -241,10 +241,10 @@ impl Interp<'_> {
                 )),
             };
         }
-        let (Some(x), Some(dx), Some(b)) = (a.as_scalar(), h.as_scalar(), b.as_scalar()) else {
+        if [&a, &h, &b].iter().any(|v| v.as_scalar().is_none()) {
             return Ok(Typed::new(ty, None));
-        };
-        let n = range_count(x, dx, b).map_err(|e| match e {
+        }
+        let n = count(&a, &h, &b).map_err(|e| match e {
             RangeFail::ZeroStep => self
                 .domain(span, e.to_string())
                 .with_help("give a nonzero step: start:step:end"),

@@ -8,6 +8,7 @@ use crate::check::ty::Kind;
 use crate::sym::Mat;
 use crate::sym::coef::Coef;
 use crate::sym::expr::Expr;
+use crate::sym::rat::Rat;
 use crate::values::exact::Exact;
 use crate::values::num::Num;
 use crate::values::value::Value;
@@ -46,8 +47,8 @@ impl std::fmt::Display for RangeFail {
     }
 }
 
-/// The number of items of `a:h:b` (MATLAB's: the end is included when
-/// within rounding, so 0:pi/8:pi has 9 items).
+/// The number of items of `a:h:b` in floats (MATLAB's: the end is
+/// included when within rounding, so 0:pi/8:pi has 9 items).
 pub(crate) fn range_count(a: f64, h: f64, b: f64) -> Result<usize, RangeFail> {
     if !(a.is_finite() && h.is_finite() && b.is_finite()) {
         return Err(RangeFail::NotFinite);
@@ -66,6 +67,50 @@ pub(crate) fn range_count(a: f64, h: f64, b: f64) -> Result<usize, RangeFail> {
         return Err(RangeFail::TooLong(n));
     }
     Ok(n as usize)
+}
+
+/// The number of items of the range `a:h:b` of values: by the exact forms
+/// of its bounds when they have them and `(b − a)/h` is a rational number
+/// (`1:0.5:1.9999999999` stops at 1.5, its end not reached, where the
+/// floats' tolerance would take 2; `0:pi/8:pi` reaches π exactly), else
+/// by the floats within rounding ([`range_count`]).
+pub(crate) fn count(a: &Value, h: &Value, b: &Value) -> Result<usize, RangeFail> {
+    let (Some(x), Some(dx), Some(y)) = (a.as_scalar(), h.as_scalar(), b.as_scalar()) else {
+        return Err(RangeFail::NotFinite);
+    };
+    let floats = range_count(x, dx, y)?;
+    let Some(steps) = exact_steps(a, h, b) else {
+        return Ok(floats);
+    };
+    if steps.is_negative() {
+        return Ok(0);
+    }
+    let n = steps.to_big().floor().to_integer() + 1;
+    match usize::try_from(n) {
+        Ok(n) if n <= MAX_LIST => Ok(n),
+        _ => Err(RangeFail::TooLong(steps.to_f64() + 1.0)),
+    }
+}
+
+/// `(b − a)/h` exactly, when the three have exact forms and the quotient
+/// is rational: the difference and the step are one term each over the
+/// same power of π (or constants).
+fn exact_steps(a: &Value, h: &Value, b: &Value) -> Option<Rat> {
+    let (fa, fh, fb) = (scalar_form(a)?, scalar_form(h)?, scalar_form(b)?);
+    let d = fb.add(&fa.scale(&Coef::int(-1)));
+    if d.terms.is_empty() {
+        return Some(Rat::int(0));
+    }
+    fn one(e: &Expr) -> Option<(&crate::sym::expr::Mono, &Coef)> {
+        let mut terms = e.terms.iter();
+        let term = terms.next()?;
+        terms.next().is_none().then_some(term)
+    }
+    let ((dm, dc), (hm, hc)) = (one(&d)?, one(&fh)?);
+    if dm != hm {
+        return None;
+    }
+    Some(dc.as_rat()?.mul(&hc.as_rat()?.inv()?))
 }
 
 /// The `n` items of the range from `a` by `h`: item k is the sum
@@ -127,10 +172,7 @@ fn scalar_form(v: &Value) -> Option<Expr> {
 
 /// The list `a:h:b` as typed first, once a range that waited has its
 /// numbers ([`crate::decide::replay`]); Err why it has none.
-pub(crate) fn range_items(a: &Value, h: &Value, b: f64) -> Result<Value, RangeFail> {
-    let (Some(x), Some(dx)) = (a.as_scalar(), h.as_scalar()) else {
-        return Err(RangeFail::NotFinite);
-    };
-    let n = range_count(x, dx, b)?;
+pub(crate) fn range_items(a: &Value, h: &Value, b: &Value) -> Result<Value, RangeFail> {
+    let n = count(a, h, b)?;
     Ok(Value::List(Rc::new(items(a, h, n))))
 }
