@@ -236,3 +236,27 @@ fn a_range_of_exact_bounds_ends_exactly() {
         assert_eq!(out.lines().last(), Some(want), "{line}: {out}");
     }
 }
+
+/// The sum of no items is the zero of their kind, as the sum of the items
+/// would be typed (a 3-vector, a twist in {s}): it was the number 0, so
+/// that `sum([(1, 0, 0) for k in 1:0]) + (1, 2, 3)` was a type error.
+#[test]
+fn an_empty_sum_is_the_zero_of_its_kind() {
+    let cases = [
+        (
+            "s = sum([(1, 0, 0) for k in 1:0]); s + (1, 2, 3)",
+            "(1, 2, 3)  : 3-vector",
+        ),
+        (
+            "V_s = (0, 0, 1, 0, 0, 0); sum([V_s for k in 1:0])",
+            "(0, 0, 0, 0, 0, 0)  : twist {s}",
+        ),
+        ("sum(1:0)", "0"),
+    ];
+    for (line, want) in cases {
+        let mut s = Session::new(Settings::default());
+        let (out, err, n) = s.run_to_strings("t", &format!("{line}\n"), Mode::Run, false);
+        assert_eq!(n, 0, "{line}: {err}");
+        assert_eq!(out.lines().last(), Some(want), "{line}: {out}");
+    }
+}

@@ -305,6 +305,23 @@ impl Interp<'_> {
         {
             return Ok(Some(v));
         }
+        // (the sum of no items is the zero of their kind: of no twists in
+        // {s}, the zero twist in {s}, not the number 0)
+        if b.name == "sum"
+            && let [Value::List(items)] = vals
+            && items.is_empty()
+            && let Some((Some(r), Some(c))) = ty.kind.shape()
+        {
+            let kind = match ty.kind {
+                Kind::SO3 | Kind::SE3 | Kind::SO2 | Kind::SE2 => Kind::Matrix(Some(r), Some(c)),
+                k => k,
+            };
+            return Ok(Some(Value::Num {
+                kind,
+                m: crate::values::num::Num::zeros(r, c),
+                exact: crate::values::exact::Exact::Typed,
+            }));
+        }
         if let [xs] = vals
             && let Some(v) = crate::decide::folds::of_call(b.name, xs)
         {
