@@ -323,6 +323,16 @@ fn help(text: &str, pos: usize, found: Option<char>, expected: &[String]) -> Opt
         '=' if before.ends_with("given") => {
             Some("`given` declares symbols: given T_ab, T_bc : SE3".into())
         }
+        '=' if before
+            .rsplit(['\n', ';'])
+            .next()
+            .is_some_and(|s| s.trim_start().starts_with("explain ")) =>
+        {
+            Some(
+            "explain takes an expression, not a binding: write `explain log(R)`; to keep the value, bind it on a line of its own, `w = log(R)`"
+                .into(),
+            )
+        }
         '=' if wants(OPERATOR) || wants(END) => Some(
             "only a name, a tuple of names `(a, b)` or a function `f(x)` can be assigned to"
                 .into(),
