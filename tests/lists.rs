@@ -187,6 +187,14 @@ fn list_items_are_exact_as_the_numbers_written_out() {
         "max([1 + 1e-20, 1]) == 1 + 1e-20",
         "(max([1 + 1e-20, 1]) == 1) == false",
         "min([1 + 1e-20, 1]) == 1",
+        // (floats far from their exact values: tan(2π) is −2.4e-16 for 0)
+        "max([tan(2*pi), -1e-20]) == 0",
+        "min([-tan(2*pi), 1e-20]) == 0",
+        // (long lists: the extreme among 8,001 items, by mpmath at 50
+        // digits sin(7.854), then sin(1.571), sin(1.570); least sin(4.712))
+        "max([sin(t) for t in 0:0.001:8]) == sin(7.854)",
+        "min([sin(t) for t in 0:0.001:8]) == sin(4.712)",
+        "max([sin(t) for t in 0:0.001:3]) == sin(1.571)",
         "sum([k*pi/4 for k in 1:4]) == 5*pi/2",
         // bound later, as typed first
         "given h; r = 0:h:1; h = 0.1; r[4] == 0.3",
