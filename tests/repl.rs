@@ -85,6 +85,36 @@ fn errors_keep_bindings() {
     assert_eq!(again, before);
 }
 
+/// An error or warning from the body of a function typed in an earlier
+/// input is shown at the call in this one: the body's offsets point into
+/// the earlier input, and read in this one they put the caret under the
+/// second `+` of `0 + 0 + f(1)` (column 10) with no call in sight.
+#[test]
+fn errors_in_a_function_typed_earlier_point_at_the_call() {
+    let mut s = Session::new(Settings::default());
+    execute(&mut s, "f(t) = t + (1, 2)");
+    let err = execute(&mut s, "y = 0 + 0 + f(1)").err;
+    assert!(err.starts_with("<input>:1:13: type error"), "{err}");
+    assert!(
+        err.contains("^^^^ in the body of f, defined in an earlier input"),
+        "{err}"
+    );
+    execute(&mut s, ":frames warn");
+    execute(&mut s, "g(A, B) = A * B");
+    execute(&mut s, "R_ab = Rotz(1); R_cd = Rotz(1)");
+    let r = execute(&mut s, "x = 1 + 2 + 3; g(R_ab, R_cd)");
+    assert!(
+        r.err
+            .contains("<input>:1:16: warning: frames do not cancel"),
+        "{}",
+        r.err
+    );
+    // Defined and called in one input, the body is shown with the call.
+    let err = execute(&mut s, "h(t) = t + (1, 2); h(1)").err;
+    assert!(err.contains("<input>:1:10: type error"), "{err}");
+    assert!(err.contains("in this call of h"), "{err}");
+}
+
 #[test]
 fn help_overview_and_topics() {
     insta::assert_snapshot!(transcript(&[":help", ":help frames", ":help mechanisms"]));

@@ -231,6 +231,10 @@ pub struct Env {
     /// them as [`Binding::absorbed`]. Kept here, as `arg_tys` is, so that
     /// its storage outlives one statement's interpreter.
     pub(super) numbers_read: Vec<(Name, Name)>,
+    /// Which source text the session runs now (each script, prelude, REPL
+    /// input or notebook cell is a new one): a function defined in another
+    /// has spans that do not point into this text ([`UserFn::source`]).
+    pub source: u64,
 }
 
 /// The numbers a value holds, as the memory budget counts them

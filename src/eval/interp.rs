@@ -310,6 +310,7 @@ impl<'a> Interp<'a> {
                     name: String::from(name.name),
                     params: params.iter().map(|p| String::from(p.name)).collect(),
                     body: body.clone(),
+                    source: self.env.source,
                 };
                 self.env
                     .fns

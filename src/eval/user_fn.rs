@@ -84,9 +84,15 @@ impl Interp<'_> {
             );
         }
         self.depth += 1;
+        let warned = self.warnings.len();
+        let elsewhere = f.source != self.env.source;
         // An error inside the body shows the call site too: the outermost
         // call of each function (recursion labels one call, not 64).
         let result = self.expr(&f.body).map_err(|mut d| {
+            if elsewhere {
+                at_call(&mut d, f, span);
+                return d;
+            }
             if d.span.start >= span.start && d.span.end <= span.end {
                 return d;
             }
@@ -94,6 +100,11 @@ impl Interp<'_> {
             d.labels.retain(|l| l.message != text);
             d.with_label(span, text)
         });
+        if elsewhere {
+            for w in &mut self.warnings[warned..] {
+                at_call(w, f, span);
+            }
+        }
         self.depth -= 1;
         for (p, old) in saved {
             match old {
@@ -105,4 +116,13 @@ impl Interp<'_> {
         }
         result
     }
+}
+
+/// A diagnostic from the body of `f`, defined in another source text (an
+/// earlier REPL input or notebook cell, a prelude): its spans point into
+/// that text, not this one, so it is placed at the call, which is here.
+fn at_call(d: &mut Diagnostic, f: &super::value::UserFn, call: Span) {
+    d.span = call;
+    d.labels.clear();
+    d.primary_label = format!("in the body of {}, defined in an earlier input", f.name);
 }

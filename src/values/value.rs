@@ -20,6 +20,9 @@ pub struct UserFn {
     pub name: String,
     pub params: Vec<String>,
     pub body: Expr,
+    /// The source text it was defined in ([`crate::eval::env::Env::source`]):
+    /// the spans of `body` point into that text only.
+    pub source: u64,
 }
 
 /// A value. Numbers of every shape are a [`Num`] (small shapes inline)
