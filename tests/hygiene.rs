@@ -115,7 +115,9 @@ fn control_characters_are_shown_escaped() {
             "\\x1b[2J\\x1b]0;pwned\\x07",
         ),
         (b"z = 1 \x1b[31m+ 2\n", "z = 1 \\x1b[31m+ 2"),
-        (b"q = nope\r\n", "q = nope"),
+        // (the \r of a CRLF ending is the line break, not echoed as `\r`)
+        (b"q = nope\r\n", "1 │ q = nope\n"),
+        (b"q = 1\r\nq + nope\r\n", "2 │ q + nope\n"),
         (b"\x9b = 1\n", ""),
     ];
     for (src, echoed) in cases {

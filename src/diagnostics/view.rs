@@ -54,6 +54,8 @@ pub fn view(src: &str, base: usize, end: usize, points: &[usize]) -> (String, Ve
                 settle(from + i, out.len(), &mut mapped);
                 match c {
                     '\t' => out.push('\t'),
+                    // a CRLF line's break, not a character of the line
+                    '\r' if from + i + 1 == stop => {}
                     c => out.push_str(&escape::controls(c.encode_utf8(&mut [0; 4]))),
                 }
             }
