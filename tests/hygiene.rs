@@ -140,6 +140,18 @@ fn control_characters_are_shown_escaped() {
     assert!(no_raw_controls(&out.stderr_bytes), "{err:?}");
     assert!(err.contains("<-e>:1:2: syntax error"), "{err}");
     assert!(err.contains("1 │ \\x1b[2J + nope\n"), "{err}");
+    // --json says what the text header says: the message escaped, not a
+    // raw NUL or ESC (they were "found '\u0000'" and "(\"\u001b[2J\")").
+    let out = chasles(&["--json"], Some(b"x = 1\0\n".as_slice()));
+    assert!(
+        out.stdout
+            .contains(r#""message":"expected an operator or end of input, found '\\0'""#),
+        "{}",
+        out.stdout
+    );
+    let out = chasles(&["--json", "-e", "y = \"\x1b[2J\" + 1"], None);
+    assert!(out.stdout.contains(r#"(\"\\x1b[2J\")"#), "{}", out.stdout);
+    assert!(!out.stdout.contains("\\u001b"), "{}", out.stdout);
 }
 
 #[test]

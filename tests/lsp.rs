@@ -425,6 +425,14 @@ fn syntax_and_domain_errors_and_warnings_under_the_command_line_flags() {
         "{d:?}"
     );
     assert_eq!(d[1]["message"], "unclosed '(' opened here");
+    // A control character in a message is escaped as `chasles check`
+    // shows it (the message held a raw NUL).
+    c.edit(2, 0, 0, 0, "x = 1\0\n");
+    let d = c.diagnostics(2);
+    assert_eq!(
+        d[0]["message"], "expected an operator or end of input, found '\\0'",
+        "{d:?}"
+    );
     assert_eq!(c.stop(), 0);
 }
 

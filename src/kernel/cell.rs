@@ -264,7 +264,8 @@ impl Notebook {
                     let shown = render::text_from(d, file, &src, r.anchor);
                     let f = Failure {
                         ename: d.kind.as_str().to_string(),
-                        evalue: d.message.clone(),
+                        // as the traceback's header: control characters escaped
+                        evalue: crate::diagnostics::escape::controls(&d.message).into_owned(),
                         traceback: shown.trim_end().lines().map(str::to_string).collect(),
                     };
                     emit(Output::Error(f.clone()));

@@ -72,7 +72,8 @@ pub fn diagnostic(
         }),
         code: Some(NumberOrString::String(d.kind.as_str().into())),
         source: Some("chasles".into()),
-        message: d.message.clone(),
+        // as the command line's header shows it: control characters escaped
+        message: crate::diagnostics::escape::controls(&d.message).into_owned(),
         related_information: (!related.is_empty()).then_some(related),
         ..Default::default()
     }

@@ -127,7 +127,7 @@ pub fn warnings(ws: &[Diagnostic]) -> J {
                     // made; were it, it is still only reported)
                     Severity::Warning | Severity::Error => "warning",
                 };
-                let mut o = json!({ "kind": kind, "message": w.message });
+                let mut o = json!({ "kind": kind, "message": shown(&w.message) });
                 if let (Some(h), Some(obj)) = (&w.help, o.as_object_mut()) {
                     obj.insert("help".into(), json!(h));
                 }
@@ -159,9 +159,15 @@ pub fn error(d: &Diagnostic, line: usize, col: usize) -> J {
         "line": line,
         "error": {
             "kind": d.kind.as_str(),
-            "message": d.message,
+            "message": shown(&d.message),
             "col": col,
             "help": d.help,
         }
     })
+}
+
+/// A message as the text header shows it: one line, its control characters
+/// escaped (`found '\0'`, LANGUAGE.md §1), so both outputs say the same.
+fn shown(message: &str) -> std::borrow::Cow<'_, str> {
+    crate::diagnostics::escape::controls(message)
 }
