@@ -436,6 +436,21 @@ fn syntax_and_domain_errors_and_warnings_under_the_command_line_flags() {
     assert_eq!(c.stop(), 0);
 }
 
+/// A leading byte-order mark is skipped as `chasles check` skips it (it
+/// was "expected an expression, found '\u{feff}'" on line 1, and every
+/// binding after it unknown); positions still count it, as the editor does.
+#[test]
+fn a_leading_byte_order_mark_is_skipped() {
+    let dir = common::scratch("bom");
+    let (mut c, _) = Client::start(&dir);
+    c.open("\u{feff}x = 1 + (1, 2)\ny = 2\n");
+    let d = c.diagnostics(1);
+    assert_eq!(d.len(), 1, "{d:?}");
+    assert_eq!(d[0]["message"], "cannot add a scalar and a 2-vector");
+    assert_eq!(d[0]["range"]["start"], json!({"line": 0, "character": 7}));
+    assert_eq!(c.stop(), 0);
+}
+
 #[test]
 fn changes_typed_quickly_are_checked_once() {
     let dir = common::scratch("debounce");

@@ -87,6 +87,7 @@ impl Analysis {
     /// Checks `text` with `settings` (frame checking as set, `strict` by
     /// default).
     pub fn of(text: &str, settings: Settings) -> Analysis {
+        let text = &*unmarked(text);
         let mut session = Session::new(settings);
         session.gate = Gate::deny();
         session.budget = Budget::new().with_timeout(CHECK_TIME);
@@ -223,6 +224,7 @@ pub fn value_summary(text: &str, def: &Def, settings: Settings) -> Option<String
     if def.kind != DefKind::Binding {
         return None;
     }
+    let text = &*unmarked(text);
     let end = crate::span::floor_boundary(text, def.statement.end);
     let mut session = Session::new(settings);
     session.gate = Gate::deny();
@@ -244,6 +246,16 @@ pub fn value_summary(text: &str, def: &Def, settings: Settings) -> Option<String
         short.push('…');
     }
     Some(short)
+}
+
+/// `text` with a leading byte-order mark read as blanks of its length, as
+/// `chasles check` skips it (LANGUAGE.md §1): every other byte keeps its
+/// offset, so spans still index the editor's text.
+fn unmarked(text: &str) -> std::borrow::Cow<'_, str> {
+    match text.strip_prefix('\u{feff}') {
+        Some(rest) => format!("{}{rest}", " ".repeat('\u{feff}'.len_utf8())).into(),
+        None => text.into(),
+    }
 }
 
 /// The byte offset of `word` in `text` standing alone (not part of a longer
