@@ -115,6 +115,26 @@ fn errors_in_a_function_typed_earlier_point_at_the_call() {
     assert!(err.contains("in this call of h"), "{err}");
 }
 
+/// Lines pasted at once with `:` commands among them run piece by piece,
+/// as a notebook cell does (the whole paste was one syntax error at the
+/// `:`), stopping at the first error with its line in the paste.
+#[test]
+fn a_pasted_input_runs_its_commands() {
+    let mut s = Session::new(Settings::default());
+    let r = execute(&mut s, "x = 7\n:digits 2\npi\ny = nope\nz = 1\n");
+    assert_eq!(r.out, "x = 7\ndigits: 2\n3.14\n");
+    assert!(
+        r.err
+            .starts_with("<input>:4:5: name error: unknown name 'nope'"),
+        "{}",
+        r.err
+    );
+    assert!(execute(&mut s, "z").err.contains("unknown name 'z'"));
+    let r = execute(&mut s, ":digits 3\n:quit\nw = 1");
+    assert_eq!((r.out.as_str(), r.quit), ("digits: 3\n", true));
+    assert!(execute(&mut s, "w").err.contains("unknown name 'w'"));
+}
+
 #[test]
 fn help_overview_and_topics() {
     insta::assert_snapshot!(transcript(&[":help", ":help frames", ":help mechanisms"]));

@@ -131,6 +131,44 @@ pub fn is_command(input: &str) -> bool {
     input.trim_start().starts_with(':')
 }
 
+/// A piece of a notebook cell or a pasted REPL input: statements (with the
+/// input's line number of their first line) or one `:` command.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Piece<'a> {
+    /// Statements, and the line of the input their first line is.
+    Statements(usize, String),
+    /// One `:` command line, trimmed.
+    Command(&'a str),
+}
+
+/// Splits a cell or an input into runs of statements and `:` command lines
+/// (a line starting with `:` while no bracket is open).
+pub fn pieces(code: &str) -> Vec<Piece<'_>> {
+    let mut out = Vec::new();
+    let mut chunk = String::new();
+    let mut first = 1;
+    for (i, line) in code.lines().enumerate() {
+        if is_command(line) && !crate::syntax::needs_more_input(&chunk) {
+            if !chunk.trim().is_empty() {
+                out.push(Piece::Statements(first, std::mem::take(&mut chunk)));
+            }
+            chunk.clear();
+            out.push(Piece::Command(line.trim()));
+            first = i + 2;
+        } else {
+            if chunk.is_empty() {
+                first = i + 1;
+            }
+            chunk.push_str(line);
+            chunk.push('\n');
+        }
+    }
+    if !chunk.trim().is_empty() {
+        out.push(Piece::Statements(first, chunk));
+    }
+    out
+}
+
 /// Runs one REPL input: a `:` command, or statements (stopping at the
 /// first error; what failed binds nothing, so earlier bindings survive).
 /// An interrupt (Ctrl-C) ends it with `interrupted`, the session as it
@@ -146,6 +184,12 @@ pub fn execute(session: &mut Session, input: &str) -> Reply {
 }
 
 fn execute_input(session: &mut Session, input: &str) -> Reply {
+    // Lines pasted at once, `:` commands among statements: each piece in
+    // turn, as a notebook cell runs them (LANGUAGE.md §13).
+    let parts = pieces(input);
+    if parts.len() > 1 {
+        return execute_pieces(session, parts);
+    }
     if is_command(input) {
         return command(session, input.trim());
     }
@@ -158,6 +202,33 @@ fn execute_input(session: &mut Session, input: &str) -> Reply {
         err,
         quit: false,
     }
+}
+
+/// The pieces of one input in order, until an error, an interrupt or
+/// `:quit`; statements numbered by their line in the input.
+fn execute_pieces(session: &mut Session, parts: Vec<Piece<'_>>) -> Reply {
+    let mut reply = Reply::default();
+    for piece in parts {
+        let (r, failed) = match piece {
+            Piece::Command(line) => (command(session, line), false),
+            Piece::Statements(first, chunk) => match bare_command(session, &chunk) {
+                Some(cmd) => (command(session, &cmd), false),
+                None => {
+                    let src = format!("{}{chunk}", "\n".repeat(first.saturating_sub(1)));
+                    let (out, err, errors) = super::save::run_recording(session, "<input>", &src);
+                    let quit = false;
+                    (Reply { out, err, quit }, errors > 0)
+                }
+            },
+        };
+        reply.out.push_str(&r.out);
+        reply.err.push_str(&r.err);
+        reply.quit |= r.quit;
+        if failed || reply.quit || session.interrupted {
+            break;
+        }
+    }
+    reply
 }
 
 /// `help`, `help NAME`, `exit`, `quit` (and Python's `help(NAME)`,

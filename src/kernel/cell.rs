@@ -14,6 +14,7 @@ use std::time::Duration;
 use crate::budget::{Budget, Interrupt};
 use crate::diagnostics::render;
 use crate::effects::Gate;
+use crate::frontend::commands::{Piece, pieces};
 use crate::frontend::{commands, complete, help, save};
 use crate::session::{Session, Settings};
 use crate::syntax::needs_more_input;
@@ -75,42 +76,6 @@ impl Default for Options {
             timeout: None,
         }
     }
-}
-
-/// A piece of a cell: statements (with the cell's line number of their
-/// first line) or one `:` command.
-#[derive(Debug, Clone, PartialEq, Eq)]
-enum Piece<'a> {
-    Statements(usize, String),
-    Command(&'a str),
-}
-
-/// Splits a cell into runs of statements and `:` command lines (a line
-/// starting with `:` while no bracket is open).
-fn pieces(code: &str) -> Vec<Piece<'_>> {
-    let mut out = Vec::new();
-    let mut chunk = String::new();
-    let mut first = 1;
-    for (i, line) in code.lines().enumerate() {
-        if commands::is_command(line) && !needs_more_input(&chunk) {
-            if !chunk.trim().is_empty() {
-                out.push(Piece::Statements(first, std::mem::take(&mut chunk)));
-            }
-            chunk.clear();
-            out.push(Piece::Command(line.trim()));
-            first = i + 2;
-        } else {
-            if chunk.is_empty() {
-                first = i + 1;
-            }
-            chunk.push_str(line);
-            chunk.push('\n');
-        }
-    }
-    if !chunk.trim().is_empty() {
-        out.push(Piece::Statements(first, chunk));
-    }
-    out
 }
 
 impl Notebook {
