@@ -79,13 +79,14 @@ impl Document {
         let want = pos.character as usize;
         let mut units = 0;
         for (i, c) in text.char_indices() {
-            if units >= want {
-                return start + i;
-            }
             units += match enc {
                 Encoding::Utf16 => c.len_utf16(),
                 Encoding::Utf8 => c.len_utf8(),
             };
+            // (past `want` only when it falls inside `c`: its start)
+            if units > want {
+                return start + i;
+            }
         }
         start + text.len()
     }
@@ -196,6 +197,11 @@ mod tests {
         let at = d.text.rfind('θ').unwrap();
         assert_eq!(d.position(at, Encoding::Utf16), Position::new(1, 12));
         assert_eq!(d.position(at + 2, Encoding::Utf8), Position::new(1, 14));
+        // Inside a character (𝜃 is two UTF-16 units, four bytes): its start.
+        let d2 = Document::new("𝜃 + 1".into(), 1);
+        assert_eq!(d2.offset(Position::new(0, 1), Encoding::Utf16), 0);
+        assert_eq!(d2.offset(Position::new(0, 2), Encoding::Utf16), 4);
+        assert_eq!(d2.offset(Position::new(0, 3), Encoding::Utf8), 0);
         // Past the line's end: clamped to it (θ = 1 is 6 bytes).
         assert_eq!(d.offset(Position::new(0, 99), Encoding::Utf16), 6);
         assert_eq!(d.lines(), 3);
