@@ -284,9 +284,14 @@ impl Notebook {
     }
 
     /// Whether a cell can run as it is: false while a bracket is open (the
-    /// notebook's console then continues the cell on the next line).
+    /// notebook's console then continues the cell on the next line). Only
+    /// the statements after the last `:` command can be open: a bracket in
+    /// a command line (`:help (`) opens nothing, as the cell runs it.
     pub fn is_complete(code: &str) -> bool {
-        code.lines().all(commands::is_command) || !needs_more_input(code)
+        match pieces(code).last() {
+            Some(Piece::Statements(_, src)) => !needs_more_input(src),
+            _ => true,
+        }
     }
 }
 

@@ -179,6 +179,11 @@ fn completion_inspection_and_completeness() {
     assert!(!Notebook::is_complete("T = [1, 0\n0, 1"));
     assert!(!Notebook::is_complete("exp([S] (theta"));
     assert!(Notebook::is_complete(":exact"));
+    // A bracket in a command line opens nothing: the cell runs as it is
+    // (it was incomplete, the console waiting for a `)` never needed).
+    assert!(Notebook::is_complete(":help (\nx = 1"));
+    assert!(!Notebook::is_complete(":help (\nx = (1"));
+    assert!(!Notebook::is_complete("x = 1\n:exact\ny = [1, 2"));
 }
 
 #[test]
