@@ -570,3 +570,49 @@ fn the_editor_grammar_lists_every_builtin() {
     // the pattern).
     assert_eq!(text, serde_json::to_string_pretty(&g).unwrap() + "\n");
 }
+
+/// A message that is not JSON ends the connection (the protocol has no
+/// way back), and the server says why on stderr, the editor's server log,
+/// instead of exiting with nothing said.
+#[test]
+fn a_message_that_is_not_json_ends_the_connection_with_a_reason() {
+    let dir = common::scratch("lsp-malformed");
+    let mut child = common::command(&["lsp"])
+        .current_dir(&dir)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("chasles lsp starts");
+    let mut stdin = child.stdin.take().unwrap();
+    let frame = |body: &str| format!("Content-Length: {}\r\n\r\n{body}", body.len());
+    let init = json!({"jsonrpc": "2.0", "id": 1, "method": "initialize",
+        "params": {"processId": null, "rootUri": null, "capabilities": {}}});
+    let initialized = json!({"jsonrpc": "2.0", "method": "initialized", "params": {}});
+    write!(
+        stdin,
+        "{}{}{}",
+        frame(&init.to_string()),
+        frame(&initialized.to_string()),
+        frame("hello")
+    )
+    .unwrap();
+    drop(stdin);
+    let start = Instant::now();
+    let status = loop {
+        if let Some(s) = child.try_wait().unwrap() {
+            break s;
+        }
+        assert!(start.elapsed() < WAIT, "chasles lsp did not exit");
+        std::thread::sleep(Duration::from_millis(20));
+    };
+    let mut err = String::new();
+    child
+        .stderr
+        .take()
+        .unwrap()
+        .read_to_string(&mut err)
+        .unwrap();
+    assert!(!status.success(), "{status:?}");
+    assert!(err.contains("chasles lsp: the connection ended"), "{err:?}");
+}

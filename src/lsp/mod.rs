@@ -64,8 +64,15 @@ pub fn serve(settings: Settings) -> i32 {
     let (conn, io) = Connection::stdio();
     let code = serve_on(&conn, settings);
     drop(conn);
-    let _ = io.join();
-    code
+    // (a message that is not JSON-RPC ends the connection: the editor is
+    // told why on stderr, its server log, not left with a bare exit)
+    match io.join() {
+        Ok(()) => code,
+        Err(e) => {
+            eprintln!("chasles lsp: the connection ended: {e}");
+            code.max(1)
+        }
+    }
 }
 
 /// Serves the protocol on `conn` (stdio, or an in-memory pair in tests).
