@@ -471,3 +471,33 @@ fn the_distance_of_a_computed_matrix_near_so3_keeps_its_digits() {
     let t = numbers(&format!("{m}; DistanceToSE3([M, (1, 2, 3); 0, 0, 0, 1])"))[0];
     assert!((t / want - 1.0).abs() < 1e-15, "{t} vs {want}");
 }
+
+/// Exponential coordinates whose angle θ = ‖ω̂θ‖ is rounded far enough to
+/// move the rotation (θ·2⁻⁵³ > 1e-9) warn that the rotation is known only
+/// so far: at (1, 2, 3)·10²⁰ no digit is left, and the value was printed
+/// as if exact. One nonzero component is an exact angle (no warning), and
+/// so is a turn of ordinary size.
+#[test]
+fn exponential_coordinates_too_large_for_their_angle_warn() {
+    for src in [
+        "MatrixExp3(VecToso3((1e20, 2e20, 3e20)))",
+        "exp([(1e12, 2e12, 3e12)])",
+        "MatrixExp6(VecTose3((3e7, 4e7, 0, 1, 2, 3)))",
+        "exp([(0, 3e7, 4e7, 1, 2, 3)])",
+    ] {
+        let (_, err) = texts(src);
+        assert!(
+            err.contains("is rounded to the nearest float: the angle, and so the rotation, is known only to about"),
+            "{src}: {err}"
+        );
+    }
+    for src in [
+        "exp([(1e12, 0, 0)])",
+        "MatrixExp3(VecToso3((0.1, 0.2, 0.3)))",
+        "exp([(0, 0, 1, 0, 2, 0)] 0.1)",
+        "exp([(3e6, 4e6, 0)])",
+    ] {
+        let (_, err) = texts(src);
+        assert!(err.is_empty(), "{src}: {err}");
+    }
+}

@@ -7,7 +7,7 @@
 use super::Args;
 use crate::check::ty::Kind;
 use crate::diagnostics::{Diagnostic, ErrorKind};
-use crate::lie::{LieGroup, Mat3, SO3};
+use crate::lie::{LieGroup, Mat3, SO3, Vec3};
 use crate::values::value::Value;
 
 /// Notes on the call `a` (its arguments still in place) that returned `v`.
@@ -15,6 +15,7 @@ pub fn after_call(a: &mut Args, v: &Value) {
     if let Some(n) = half_turn(a, v)
         .or_else(|| no_axis(a, v))
         .or_else(|| slow_turn(a))
+        .or_else(|| far_turn(a, v))
     {
         a.warnings.push(n);
     }
@@ -56,6 +57,46 @@ fn slow_turn(a: &Args) -> Option<Diagnostic> {
         )
     };
     Some(Diagnostic::note(ErrorKind::Domain, a.call_span, text))
+}
+
+/// θ·2⁻⁵³ above which [`far_turn`] warns: the rotation then moves by more
+/// than 1e-9, the contract's `≈` tolerance (θ above about 9·10⁶ rad).
+const FAR_TURN: f64 = 1e-9 * 9_007_199_254_740_992.0;
+
+/// `exp`, `MatrixExp3`, `MatrixExp6` of exponential coordinates ω̂θ whose
+/// angle θ = ‖ω̂θ‖ (§3.2.3.3, (3.51); §3.3.3.2) is so large that its
+/// rounding to the nearest float moves the result: the angle is known to
+/// θ·2⁻⁵³ only, and so is the rotation (at ω̂θ = (1, 2, 3)·10²⁰ not one
+/// digit is left; modern_robotics' MatrixExp3 does the same). Exact when
+/// one component of ω̂θ alone is nonzero (the norm is then that component).
+fn far_turn(a: &Args, v: &Value) -> Option<Diagnostic> {
+    if !matches!(a.name, "exp" | "MatrixExp3" | "MatrixExp6")
+        || !matches!(v.kind(), Kind::SO3 | Kind::SE3)
+    {
+        return None;
+    }
+    let m = a.vals.first()?.as_matrix()?;
+    let n = match m.shape() {
+        (3, 3) => 3,
+        (4, 4) => 4,
+        _ => return None,
+    };
+    // ([ω] column by column: ω₁ = m₃₂, ω₂ = m₁₃, ω₃ = m₂₁)
+    let xs = m.as_slice();
+    let w = [xs[n + 2], xs[2 * n], xs[1]];
+    let theta = crate::lie::norm(&Vec3::from(w));
+    if theta <= FAR_TURN || w.iter().filter(|x| **x != 0.0).count() < 2 {
+        return None;
+    }
+    let moved = theta / 9_007_199_254_740_992.0;
+    Some(Diagnostic::warning(
+        ErrorKind::Domain,
+        a.call_span,
+        format!(
+            "θ = ‖ω̂θ‖ = {theta:.3e} rad is rounded to the nearest float: the angle, and so the rotation, is known only to about {moved:.1e}"
+        ),
+    )
+    .with_help("give the angle apart and below 2π: Rot(ω̂, θ) or exp([ω̂] θ) with θ reduced mod 2π"))
 }
 
 /// `AxisAng3` or `AxisAng6` of the zero vector: θ = 0, and the axis is
