@@ -165,3 +165,23 @@ fn products_of_symbols_inside_angles_are_decided() {
         assert_eq!(v.as_bool(), holds, "{src}: {v}");
     }
 }
+
+#[test]
+fn a_float_multiple_of_an_angle_simplifies_without_recursing() {
+    // simplify(sin(cot(1) x)) overflowed the stack: the float multiple
+    // of x was taken for an irrational angle to rename, had no rational
+    // ratio to its own fresh symbol, stayed unrenamed, and simplify
+    // recursed into the same expression without end
+    assert_eq!(
+        text("simplify(sin(cot(1) * x))"),
+        "sin(0.64209261593433076 x)"
+    );
+    assert_eq!(
+        text("simplify(sin(atan2(1, 3 + x^2) * cot(1 + sin(0.25)/3)))"),
+        "sin(0.5312428058589197 atan2(1, 3 + x^2))"
+    );
+    assert_eq!(
+        text("simplify(sin(sqrt(6) * x)^2 + cos(sqrt(6) * x)^2)"),
+        "1"
+    );
+}

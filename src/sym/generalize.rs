@@ -42,8 +42,11 @@ fn terms(e: &Expr, out: &mut Vec<(Mono, Coef)>) {
         let Var::Call(c) = v else { continue };
         for a in &c.args {
             if matches!(c.f, Func::Sin | Func::Cos) {
+                // a float coefficient (sin(cot(1) b)) has no rational
+                // ratio to any fresh angle, not even its own: renamed it
+                // would stay odd, and `refolded` would recurse forever
                 for (m, k) in &a.terms {
-                    if odd(m, k) && !out.iter().any(|(n, j)| n == m && j == k) {
+                    if odd(m, k) && k.is_exact() && !out.iter().any(|(n, j)| n == m && j == k) {
                         out.push((m.clone(), k.clone()));
                     }
                 }
