@@ -162,3 +162,27 @@ fn a_vector_equation_keeps_the_roots_of_every_entry() {
     let e = error("given x\nsolve((1, 2, 3) == x, x)");
     assert!(e.contains("these sides are 3x1 and 1x1"), "{e}");
 }
+
+/// A root of the canonical form where the equation as typed is undefined
+/// is no root: `(x − 1)²/(x − 1)` is `x − 1` once cancelled, but at 1 it
+/// is a division by zero (as `subs` says there); solve gave 1.
+#[test]
+fn a_root_the_quotient_cancelled_is_not_a_root() {
+    for eq in [
+        "(x - 1)^2/(x - 1) == 0",
+        "x^2/x == 0",
+        "sin(x)^2/sin(x) == 0",
+    ] {
+        let e = error(&format!("given x\nsolve({eq}, x)"));
+        assert!(
+            e.contains("no root is in the domain of the equation as typed"),
+            "{eq}: {e}"
+        );
+    }
+    let (rs, note) = roots("(x - 1)^2*(x + 2)/(x - 1) == 0");
+    assert_eq!(rs, vec![-2.0]);
+    assert!(note.contains("not a root: x = 1"), "{note}");
+    // a cancelled factor that is not a root changes nothing
+    let (rs, note) = roots("(x^2 - 1)/(x - 1) == 0");
+    assert_eq!((rs, note.as_str()), (vec![-1.0], ""));
+}

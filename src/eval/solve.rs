@@ -57,10 +57,13 @@ impl Interp<'_> {
                 )
                 .with_help(HOW)
             })?;
-        let left = self.side(lhs)?;
-        let right = match rhs {
-            Some(r) => self.side(r)?,
-            None => Mat::zeros(left.rows, left.cols),
+        let (left_value, left) = self.side(lhs)?;
+        let (right_value, right) = match rhs {
+            Some(r) => {
+                let (v, m) = self.side(r)?;
+                (Some(v), m)
+            }
+            None => (None, Mat::zeros(left.rows, left.cols)),
         };
         let Some(diff) = left.add(&right, true) else {
             let (r, c) = (right.rows, right.cols);
@@ -74,13 +77,55 @@ impl Interp<'_> {
                 )
                 .with_help("solve one entry at a time: solve(M[1, 2] == 0, x)"));
         };
-        let solution = crate::sym::solve::solve_entries(&diff.data, &sym)
+        let mut solution = crate::sym::solve::solve_entries(&diff.data, &sym)
             .map_err(|m| {
                 self.domain(eq.span, format!("cannot solve for {}: {m}", sym.name))
                     .with_help(
                         "solve finds one unknown of a linear equation, the real roots of a quadratic with exact numbers, or an angle x of a cos x + b sin x = c with exact a, b, c; else give the other symbols numbers first",
                     )
             })?;
+        // a root where a side is undefined as typed (its canonical form
+        // cancelled the factor: (x − 1)²/(x − 1) is x − 1, but not at 1)
+        // is no root: subs there is a division by zero
+        let sides: Vec<&Value> = std::iter::once(&left_value).chain(&right_value).collect();
+        let mut dropped = Vec::new();
+        solution.roots.retain(|r| {
+            let at = formula::make(&Kind::Scalar, Mat::scalar(r.clone()));
+            let undefined = sides.iter().find_map(|v| {
+                let args = [*v, unknown.value()?, &at];
+                crate::decide::replay::subs_numbers(&args, &mut Vec::new())?.err()
+            });
+            if let Some(why) = &undefined {
+                dropped.push(format!(
+                    "{} = {} ({why})",
+                    sym.name,
+                    crate::sym::print::expr(r, Default::default())
+                ));
+            }
+            undefined.is_none()
+        });
+        if solution.roots.is_empty() {
+            return Err(self
+                .domain(
+                    eq.span,
+                    format!(
+                        "cannot solve for {}: no root is in the domain of the equation as typed: {}",
+                        sym.name,
+                        dropped.join(", ")
+                    ),
+                )
+                .with_help(HOW));
+        }
+        if !dropped.is_empty() {
+            self.warnings.push(Diagnostic::note(
+                ErrorKind::Domain,
+                span,
+                format!(
+                    "not a root: {}, where the equation as typed is undefined",
+                    dropped.join(", ")
+                ),
+            ));
+        }
         if let Some(c) = &solution.unless_zero {
             let c = crate::sym::print::expr(c, Default::default());
             self.warnings.push(Diagnostic::note(
@@ -123,11 +168,12 @@ impl Interp<'_> {
         })
     }
 
-    /// One side of the equation: a scalar, vector or matrix, as its
-    /// entries.
-    fn side(&mut self, e: &Ast) -> Result<Mat, Diagnostic> {
+    /// One side of the equation: its value and, a scalar, vector or
+    /// matrix, its entries.
+    fn side(&mut self, e: &Ast) -> Result<(Value, Mat), Diagnostic> {
         let t = self.expr(e)?;
-        t.value().and_then(formula::mat_of).ok_or_else(|| {
+        let v = t.value().cloned();
+        v.and_then(|v| formula::mat_of(&v).map(|m| (v, m))).ok_or_else(|| {
             self.domain(
                 e.span,
                 format!(
