@@ -9,7 +9,7 @@
 //! the assumption give the same value and no such warning.
 
 mod common;
-use common::{json, numbers};
+use common::{error, json, numbers};
 
 /// The numbers and warning messages of the last statement of `src`.
 fn last(src: &str) -> (Vec<f64>, Vec<String>) {
@@ -112,4 +112,34 @@ fn the_branch_mark_leaves_derivatives_and_identities_as_they_were() {
     assert_eq!(b, [1.0], "log(Rotz(θ)) == [ẑ] θ on its branch");
     let (b, _) = last("given θ\nexp(log(Rotz(θ))) == Rotz(θ)");
     assert_eq!(b, [1.0], "exp(log(Rotz(θ))) == Rotz(θ)");
+}
+
+/// The derivative of a closed form the chain rule cannot trace back to its
+/// call (the Euler angles of `rot_quat`, which has no rule) holds on the
+/// branch only: on it, its value; off it, a refusal. It was the closed
+/// form's derivative everywhere, silently: at u = −0.688, off the branch
+/// sin 2u > 0, (0, 2, 0), though there the angle is −2u, of rate −2.
+#[test]
+fn a_closed_form_derivative_the_chain_rule_cannot_reach_is_refused_off_its_branch() {
+    let made = "given u
+d = diff(euler_zxz(rot_quat((cos(u), -sin(u), 0, 0))), u)
+";
+    let (d, _) = last(&format!(
+        "{made}u = 0.688
+d"
+    ));
+    close(&d, &[0.0, 2.0, 0.0], "on the branch");
+    let (d, _) = last(&format!("{made}subs(d, u, 0.688)"));
+    close(&d, &[0.0, 2.0, 0.0], "subs on the branch");
+    for off in [
+        "u = -0.688
+d",
+        "subs(d, u, -0.688)",
+    ] {
+        let e = error(&format!("{made}{off}"));
+        assert!(
+            e.contains("the derivative of the closed form holds on the branch only"),
+            "{off}: {e}"
+        );
+    }
 }

@@ -90,6 +90,11 @@ pub struct OnBranch {
     /// and `atan2` are marked only so that numbers off their branch say
     /// so (§7); their derivatives are the call's, right on every branch.
     pub guards: bool,
+    /// Whether the closed form's own derivative is right off the branch
+    /// too (the log of a rotation, ω̂θ about a fixed axis: off the branch
+    /// it is ω̂(θ − 2πk), of the same derivative); else, where the chain
+    /// rule does not reach the call, that derivative is guarded.
+    pub everywhere: bool,
 }
 
 impl OnBranch {
@@ -120,6 +125,7 @@ impl OnBranch {
             angles: each(&self.angles),
             text: self.text.clone(),
             guards: self.guards,
+            everywhere: self.everywhere,
         }
     }
 
@@ -143,7 +149,11 @@ impl OnBranch {
             if x.abs() > pi + TOL {
                 return Some(false);
             }
-            sure &= x.abs() < pi - TOL;
+            // (a constant angle is what it is: the π of `(π, θ, π)` is
+            // on the branch, not near its bound)
+            let mut syms = Vec::new();
+            a.symbols(&mut syms);
+            sure &= x.abs() < pi - TOL || syms.is_empty();
         }
         sure.then_some(true)
     }

@@ -56,6 +56,7 @@ pub(in crate::seam) fn closed_form(name: &str, v: Value, args: &[&Value]) -> Val
         angles: b.angles,
         text,
         guards,
+        everywhere: matches!(name, "log" | "MatrixLog3") && !guards,
     };
     match Recipe::node(Step::Closed(Rc::new(on)), vec![r.clone()], r.kind) {
         Some(how) => Value::Formula {
@@ -69,13 +70,24 @@ pub(in crate::seam) fn closed_form(name: &str, v: Value, args: &[&Value]) -> Val
 
 impl Chain<'_> {
     /// The derivative of `call`, marked as the closed form `on` (a step of
-    /// shape `k`).
+    /// shape `k`): the call's own where the chain rule reaches it (right
+    /// on every branch), else the closed form's, guarded. Unguarded,
+    /// `diff(euler_zxz(rot_quat((cos(u), -sin(u), 0, 0))), u)` at u = −0.688
+    /// (off the branch sin 2u > 0, where the angle is −2u) was the closed
+    /// form's (0, 2, 0), not (0, −2, 0), and said nothing.
     pub(super) fn closed(&mut self, on: &Rc<OnBranch>, call: &Rc<Recipe>, k: Kind) -> Option<D> {
         if let Some(d) = self.of(call) {
             return Some(d);
         }
         let d = self.leaf(&on.form, &k)?.unwrap_or_else(|| zero(&k));
-        let rate = self.log_rate(call, k);
+        if on.everywhere {
+            return Some(Some(d));
+        }
+        let rate = if on.guards {
+            self.log_rate(call, k)
+        } else {
+            None
+        };
         guarded(on, d, rate, k)
     }
 

@@ -105,8 +105,9 @@ impl Chain<'_> {
         // (the steps alike for every shape)
         match &r.step {
             Step::Leaf(v) => return self.leaf(v, &k),
-            // (a mark only: the derivative of the call, §7)
-            Step::Closed(on) if !on.guards => return self.of(&x(0)?),
+            // (a mark only: the derivative of the call, §7; where the
+            // chain rule does not reach the call, `closed` guards the
+            // closed form's own derivative)
             Step::Closed(on) => return self.closed(on, &x(0)?, k),
             Step::Guard(on) => return self.guard(on, &x(0)?, k),
             Step::Op(Operation::Neg) => return neg(self.of(&x(0)?)?),
