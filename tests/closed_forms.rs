@@ -78,6 +78,22 @@ fn simplify_expand_and_subs() {
     assert!(error("given a : scalar\nsubs(a, 2, 3)").contains("replaces a symbol"));
 }
 
+/// A function of time put equal to a function of t brings its rates
+/// along (SymPy substitutes inside derivatives): `subs(sin(θ) + θ', θ,
+/// t^2)` is 2 t + sin(t²); it was θ̇ + sin(t²), θ̇ a rate of no function.
+/// A value free of t is a state: its rates stay other coordinates.
+#[test]
+fn subs_of_a_function_of_time_by_one_of_t_substitutes_its_rates() {
+    let out = lines(
+        "given th(t) : scalar\ngiven t : scalar\nsubs(sin(th) + th', th, t^2)\n\
+         subs(diff(sin(th) + th', t), th, t^2)\nsubs(sin(th) + th', th, 0.5)",
+    );
+    assert_eq!(
+        out,
+        ["2 t + sin(t^2)", "2 (1 + t cos(t^2))", "0.4794 + th'"]
+    );
+}
+
 #[test]
 fn exp_of_a_compound_angle_is_the_closed_form() {
     let (out, _) = outputs(

@@ -38,7 +38,33 @@ pub(super) fn subs(v: &Value, x: &Mat, name: &Mat, by: &Mat) -> Result<Value, St
             sym.name, f.name
         ));
     }
-    let by = |s: &crate::sym::Symbol| (*s == sym).then(|| value.clone());
+    // θ(t) put equal to a function of t (`subs(x, θ, t^2)`): its rates
+    // are that function's (θ̇ = 2t), as SymPy substitutes inside
+    // derivatives; they stayed θ̇, a rate of no function. (A value free of
+    // t is a state, `subs(x, θ, 0.3)`, its rates other coordinates.)
+    let mut rates: Vec<(crate::sym::Symbol, Expr)> = Vec::new();
+    let mut in_value = Vec::new();
+    value.symbols(&mut in_value);
+    if let Some(t) = &sym.time
+        && sym.dots == 0
+        && in_value.iter().any(|s| s.time.is_none() && s.name == *t)
+    {
+        let wrt = crate::sym::expr::Wrt::by(crate::sym::Symbol::new(t));
+        let (mut rate, mut d) = (sym.clone(), value.clone());
+        while syms
+            .iter()
+            .any(|s| s.name == sym.name && s.dots > rate.dots)
+        {
+            rate = rate.dot();
+            d = d.diff(&wrt).cancel();
+            rates.push((rate.clone(), d.clone()));
+        }
+    }
+    let by = |s: &crate::sym::Symbol| {
+        (*s == sym)
+            .then(|| value.clone())
+            .or_else(|| rates.iter().find_map(|(r, d)| (r == s).then(|| d.clone())))
+    };
     let out = x.map(|e| e.subst(&by).cancel());
     // (`subs(a/b, b, 0)` is a division by zero, as typed first: never a
     // term with an inf coefficient dropped)
