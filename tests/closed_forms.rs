@@ -86,11 +86,17 @@ fn simplify_expand_and_subs() {
 fn subs_of_a_function_of_time_by_one_of_t_substitutes_its_rates() {
     let out = lines(
         "given th(t) : scalar\ngiven t : scalar\nsubs(sin(th) + th', th, t^2)\n\
-         subs(diff(sin(th) + th', t), th, t^2)\nsubs(sin(th) + th', th, 0.5)",
+         subs(diff(sin(th) + th', t), th, t^2)\nsubs(sin(th) + th', th, 0.5)\n\
+         given ph(t) : scalar\nsubs(th'^2 + th'', th, 2*ph)",
     );
     assert_eq!(
         out,
-        ["2 t + sin(t^2)", "2 (1 + t cos(t^2))", "0.4794 + th'"]
+        [
+            "2 t + sin(t^2)",
+            "2 (1 + t cos(t^2))",
+            "0.4794 + th'",
+            "4 ph'^2 + 2 ph''"
+        ]
     );
 }
 

@@ -40,14 +40,17 @@ pub(super) fn subs(v: &Value, x: &Mat, name: &Mat, by: &Mat) -> Result<Value, St
     }
     // θ(t) put equal to a function of t (`subs(x, θ, t^2)`): its rates
     // are that function's (θ̇ = 2t), as SymPy substitutes inside
-    // derivatives; they stayed θ̇, a rate of no function. (A value free of
-    // t is a state, `subs(x, θ, 0.3)`, its rates other coordinates.)
+    // derivatives; they stayed θ̇, a rate of no function. So by another
+    // function of t (`subs(x, θ, 2 φ)`: θ̇ = 2φ̇). (A value free of t is a
+    // state, `subs(x, θ, 0.3)`, its rates other coordinates.)
     let mut rates: Vec<(crate::sym::Symbol, Expr)> = Vec::new();
     let mut in_value = Vec::new();
     value.symbols(&mut in_value);
     if let Some(t) = &sym.time
         && sym.dots == 0
-        && in_value.iter().any(|s| s.time.is_none() && s.name == *t)
+        && in_value
+            .iter()
+            .any(|s| (s.time.is_none() && s.name == *t) || s.time.as_ref() == Some(t))
     {
         let wrt = crate::sym::expr::Wrt::by(crate::sym::Symbol::new(t));
         let (mut rate, mut d) = (sym.clone(), value.clone());
