@@ -510,3 +510,26 @@ fn subs_of_the_time_variable_of_a_function_of_time_is_refused() {
         ["4 + a", "sin(a)"]
     );
 }
+
+/// With no symbol left, a value is a number (§7), also when its exact form
+/// divides a float by a sum with π: `subs` of a derivative that kept
+/// `abs(b − 5)` printed `0.0208/(1 + (1/2) π^2)`, JSON type "symbolic";
+/// it is the number that typing the numbers first gives.
+#[test]
+fn a_float_over_a_sum_with_pi_is_a_number_once_its_symbols_are_gone() {
+    let src = "given b, a\nd = diff((a/(2 + pi^2))/(2 + abs(b - 5)^2), a)\nsubs(d, b, 0.3)\n";
+    let mut s = Session::new(Settings {
+        json: true,
+        ..Settings::default()
+    });
+    let (out, err, n) = s.run_to_strings("t", src, Mode::Run, false);
+    assert_eq!(n, 0, "{err}");
+    let last: serde_json::Value = serde_json::from_str(out.lines().last().unwrap()).unwrap();
+    assert_eq!(last["type"], "scalar", "{out}");
+    let typed_first = 1.0 / ((2.0 + std::f64::consts::PI.powi(2)) * (2.0 + 4.7f64.powi(2)));
+    let x = last["value"].as_f64().unwrap();
+    assert!(
+        (x - typed_first).abs() <= 1e-15 * typed_first,
+        "{x} {typed_first}"
+    );
+}
