@@ -11,12 +11,18 @@ use crate::lie::{LieGroup, Mat3, SO3, Vec3};
 use crate::values::value::Value;
 
 /// Notes on the call `a` (its arguments still in place) that returned `v`.
+/// (One match on the name: every builtin call passes here, and most have
+/// no note.)
 pub fn after_call(a: &mut Args, v: &Value) {
-    if let Some(n) = half_turn(a, v)
-        .or_else(|| no_axis(a, v))
-        .or_else(|| slow_turn(a))
-        .or_else(|| far_turn(a, v))
-    {
+    let note = match a.name {
+        "log" | "MatrixLog3" | "MatrixLog6" => half_turn(a, v),
+        "AxisAng3" => no_axis(a, v),
+        "AxisAng6" => no_axis(a, v).or_else(|| slow_turn(a)),
+        "screw_params" => slow_turn(a),
+        "exp" | "MatrixExp3" | "MatrixExp6" => far_turn(a, v),
+        _ => None,
+    };
+    if let Some(n) = note {
         a.warnings.push(n);
     }
 }
@@ -28,9 +34,6 @@ pub fn after_call(a: &mut Args, v: &Value) {
 /// `screw_params` as the mathematics does (ŝ = ω/‖ω‖, a far q); the note
 /// gives the other reading, so that neither passes for the only one.
 fn slow_turn(a: &Args) -> Option<Diagnostic> {
-    if !matches!(a.name, "AxisAng6" | "screw_params") {
-        return None;
-    }
     let s = a.expc6(0).ok()?;
     let w = crate::lie::norm(&s.fixed_rows::<3>(0));
     let v = crate::lie::norm(&s.fixed_rows::<3>(3));
@@ -70,20 +73,19 @@ const FAR_TURN: f64 = 1e-9 * 9_007_199_254_740_992.0;
 /// digit is left; modern_robotics' MatrixExp3 does the same). Exact when
 /// one component of ω̂θ alone is nonzero (the norm is then that component).
 fn far_turn(a: &Args, v: &Value) -> Option<Diagnostic> {
-    if !matches!(a.name, "exp" | "MatrixExp3" | "MatrixExp6")
-        || !matches!(v.kind(), Kind::SO3 | Kind::SE3)
-    {
-        return None;
-    }
     let m = a.vals.first()?.as_matrix()?;
     let n = match m.shape() {
         (3, 3) => 3,
         (4, 4) => 4,
         _ => return None,
     };
-    // ([ω] column by column: ω₁ = m₃₂, ω₂ = m₁₃, ω₃ = m₂₁)
+    // ([ω] column by column: ω₁ = m₃₂, ω₂ = m₁₃, ω₃ = m₂₁; no component
+    // near the bound, the common case, is the first test: θ ≤ √3 max|ωᵢ|)
     let xs = m.as_slice();
     let w = [xs[n + 2], xs[2 * n], xs[1]];
+    if w.iter().all(|x| x.abs() <= FAR_TURN / 2.0) || !matches!(v.kind(), Kind::SO3 | Kind::SE3) {
+        return None;
+    }
     let theta = crate::lie::norm(&Vec3::from(w));
     if theta <= FAR_TURN || w.iter().filter(|x| **x != 0.0).count() < 2 {
         return None;

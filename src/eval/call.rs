@@ -186,8 +186,8 @@ impl Interp<'_> {
         // (a vector that may be exact is summed as its entries written
         // out would be: `crate::decide::folds`)
         let folded =
-            matches!(b.name, "sum" | "min" | "max") && vals.iter().any(Value::may_be_exact);
-        if !numbers || folded || super::tuple_call::takes_numbers(b.name) {
+            || matches!(b.name, "sum" | "min" | "max") && vals.iter().any(Value::may_be_exact);
+        if !numbers || super::tuple_call::takes_numbers(b.name) || folded() {
             if let Some(v) = self.call_on_parts(b, op, &vals, &ty, span, base)? {
                 return Ok(Typed::new(ty, Some(v)));
             }
