@@ -20,7 +20,7 @@
 # Needs an llvm-profdata that reads the profiles of rustc's LLVM:
 # rustup's (`rustup component add llvm-tools`), or Debian's
 # (`apt-get install llvm-19`; version 19 reads rustc 1.95's LLVM 22
-# profiles). Two full release builds: about 10 minutes on 2 cores.
+# profiles). Two full release builds: about 12 minutes on 2 cores.
 # Not run in CI (it only builds a faster binary of the same program).
 set -euo pipefail
 cd "$(dirname "$0")/.."
