@@ -62,6 +62,17 @@ fn slow_turn(a: &Args) -> Option<Diagnostic> {
     Some(Diagnostic::note(ErrorKind::Domain, a.call_span, text))
 }
 
+/// The first operand's entries, column by column, and its size, when it is
+/// a 3×3 or 4×4 matrix (a rotation or transform, or its Lie algebra's).
+fn square_operand<'a>(a: &'a Args) -> Option<(&'a [f64], usize)> {
+    let m = a.vals.first()?.as_matrix()?;
+    match m.shape() {
+        (3, 3) => Some((m.as_slice(), 3)),
+        (4, 4) => Some((m.as_slice(), 4)),
+        _ => None,
+    }
+}
+
 /// θ·2⁻⁵³ above which [`far_turn`] warns: the rotation then moves by more
 /// than 1e-9, the contract's `≈` tolerance (θ above about 9·10⁶ rad).
 const FAR_TURN: f64 = 1e-9 * 9_007_199_254_740_992.0;
@@ -73,15 +84,9 @@ const FAR_TURN: f64 = 1e-9 * 9_007_199_254_740_992.0;
 /// digit is left; modern_robotics' MatrixExp3 does the same). Exact when
 /// one component of ω̂θ alone is nonzero (the norm is then that component).
 fn far_turn(a: &Args, v: &Value) -> Option<Diagnostic> {
-    let m = a.vals.first()?.as_matrix()?;
-    let n = match m.shape() {
-        (3, 3) => 3,
-        (4, 4) => 4,
-        _ => return None,
-    };
+    let (xs, n) = square_operand(a)?;
     // ([ω] column by column: ω₁ = m₃₂, ω₂ = m₁₃, ω₃ = m₂₁; no component
     // near the bound, the common case, is the first test: θ ≤ √3 max|ωᵢ|)
-    let xs = m.as_slice();
     let w = [xs[n + 2], xs[2 * n], xs[1]];
     if w.iter().all(|x| x.abs() <= FAR_TURN / 2.0) || !matches!(v.kind(), Kind::SO3 | Kind::SE3) {
         return None;
@@ -137,15 +142,9 @@ fn half_turn(a: &Args, v: &Value) -> Option<Diagnostic> {
     if !applies {
         return None;
     }
-    let m = a.vals.first()?.as_matrix()?;
-    let n = match m.shape() {
-        (3, 3) => 3,
-        (4, 4) => 4,
-        _ => return None,
-    };
     // (the rotation block read from one slice, column by column: indexing
-    // `m` asks its shape anew at every entry)
-    let xs = m.as_slice();
+    // the matrix asks its shape anew at every entry)
+    let (xs, n) = square_operand(a)?;
     let r = Mat3::from_fn(|i, j| xs[j * n + i]);
     // (by the exact form where it decides: `Args::so3_log`)
     let half_turn = match a.half_turn(0) {

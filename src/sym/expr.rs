@@ -241,32 +241,6 @@ impl Expr {
             _ => None,
         }
     }
-    /// The number, when the expression is constant (π included) and real.
-    pub fn as_f64(&self) -> Option<f64> {
-        let (re, im) = match self.as_const() {
-            Some(c) => c.to_c64(),
-            // π is a number: 2 + π, once its symbols are bound, is 5.1416;
-            // and so is the reciprocal of a number, 0.0415/(1 + π²), a
-            // float divided by a sum with π (`subs` of a derivative, §7:
-            // with no symbol left the value is a number)
-            None => self.terms.iter().try_fold((0.0, 0.0), |(re, im), (m, c)| {
-                let p = m.iter().try_fold(1.0, |p, (v, e)| match v {
-                    Var::Pi => Some(p * std::f64::consts::PI.powi(*e)),
-                    Var::Call(call) if call.f == Func::Recip => match call.args.as_slice() {
-                        [x] => x
-                            .as_f64()
-                            .filter(|x| *x != 0.0)
-                            .map(|x| p * x.recip().powi(*e)),
-                        _ => None,
-                    },
-                    _ => None,
-                })?;
-                let (a, b) = c.to_c64();
-                Some((re + a * p, im + b * p))
-            })?,
-        };
-        (im.abs() <= 1e-12 * re.abs().max(1.0)).then_some(re)
-    }
     /// Terms plus nested call arguments, a coefficient beyond two machine
     /// words counting one more per word: the size that the expression
     /// limit bounds (so the work of exact big coefficients is bounded too).
