@@ -697,3 +697,69 @@ fn a_whole_exponent_of_literals_is_known_to_check() {
     assert_eq!(kind, "frame");
     assert!(msg.contains("unless its exponent is −1, 0 or 1"), "{msg}");
 }
+
+#[test]
+fn indexing_a_tuple_gives_each_part_its_own_frames() {
+    // `t = (T_ab, T_cb)` holds a {a}←{b} and a {c}←{b}: `t[1] * t[2]` is
+    // T_ab * T_cb, refused (the tuple's one tag, none, made both parts
+    // untagged, so the product ran)
+    frame_error("t = (T_ab, T_cb); t[1] * t[2]", "frames do not cancel");
+    frame_error("(T_ab, T_cb)[1] * (T_ab, T_cb)[2]", "frames do not cancel");
+    frames("t = (T_ab, T_bc); t[1] * t[2]", &["a", "c"]);
+    frames("t = (T_ab, T_cb); t[2]", &["c", "b"]);
+    frames("t = (2, p_b); t[2]", &["b"]);
+    // an index written as literal arithmetic is known without numbers
+    frame_error(
+        "t = (T_ab, T_cb); t[2 - 1] * t[1 + 1]",
+        "frames do not cancel",
+    );
+    // nested tuples, a bound tuple destructured later, a function's
+    // parameter, a binding's name
+    frame_error(
+        "n = ((T_ab, 2), T_cb); n[1][1] * n[2]",
+        "frames do not cancel",
+    );
+    frame_error(
+        "t = (T_ab, T_cb); (A, B) = t; A * B",
+        "frames do not cancel",
+    );
+    frame_error(
+        "f(x) = x[1] * x[2]; f((T_ab, T_cb))",
+        "frames do not cancel",
+    );
+    frame_error("t = (T_ab, T_cb); R_cd = t[1].R", "the name R_cd says");
+    // a builtin's tuple: its parts take the parts of its tag, as when
+    // destructured ((R, p) = TransToRp(T_ab): R is {a}←{b}, p in {a})
+    frames("TransToRp(T_ab)[1]", &["a", "b"]);
+    frames("TransToRp(T_ab)[2]", &["a"]);
+}
+
+#[test]
+fn a_tuple_part_picked_by_a_name_is_checked_when_run() {
+    // run knows k's number, so it checks the part it picks; check has no
+    // number for k and says it cannot tell which part t[k] is
+    let src = "T_ab = Trans((1, 0, 0))\nT_bc = RpToTrans(Rotz(0.3), (0, 1, 0))\nT_cb = inv(T_bc)\n\
+               t = (T_ab, T_cb)\nk = 2\nt[1] * t[k]\n";
+    let mut s = Session::new(Settings::default());
+    let (_, err, errors) = s.run_to_strings("t.chs", src, Mode::Run, false);
+    assert_eq!(errors, 1, "{err}");
+    assert!(err.contains("frames do not cancel"), "{err}");
+    let mut s = Session::new(Settings::default());
+    let (_, err, errors) = s.run_to_strings("t.chs", src, Mode::Check, false);
+    assert_eq!(errors, 0, "{err}");
+    assert!(
+        err.contains("warning: cannot tell which part of `t` `t[k]` is"),
+        "{err}"
+    );
+    // parts alike: nothing to tell apart, no warning
+    let src = "given T_ab : SE3\nt = (T_ab, T_ab)\ngiven k\nt[k] * inv(T_ab)\n";
+    let mut s = Session::new(Settings::default());
+    let (_, err, errors) = s.run_to_strings("t.chs", src, Mode::Check, false);
+    assert_eq!((errors, err.as_str()), (0, ""));
+    // and the parts' numbers are the parts'
+    let out = printed(
+        "T_ab = RpToTrans(Rotz(1), (1, 2, 3))\nT_bc = RpToTrans(Rotx(1), (0, 2, 3))\n\
+         t = (T_ab, T_bc);\nk = 2;\nt[1] * t[k] == T_ab * T_bc",
+    );
+    assert_eq!(out.lines().last(), Some("true"), "{out}");
+}

@@ -341,7 +341,7 @@ impl Frame {
 }
 
 /// The frame tag of a value (LANGUAGE.md §6).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 pub enum Frames {
     /// Untagged: matches anything.
     #[default]
@@ -423,7 +423,7 @@ impl Frames {
 
 /// A Lie algebra (§3.2.3, §3.3.2): the content a product g·X of a group
 /// element and an element X of its algebra remembers ([`Ty::algebra`]).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Algebra {
     /// so(3): skew-symmetric `[ω]` (§3.2.3.1).
     So3,
@@ -467,7 +467,7 @@ impl Algebra {
 }
 
 /// The checker's knowledge of an expression: kind and frames.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct Ty {
     pub kind: Kind,
     pub frames: Frames,
@@ -485,6 +485,11 @@ pub struct Ty {
     /// For a vector: a free vector (ω, v, f, m, an axis; [`super::role`]),
     /// which only rotates: a transform moves points, so `T * ω` is refused.
     pub free: bool,
+    /// For a tuple whose parts have types of their own (the literal
+    /// `(T_ab, T_cb)`, whose one tag is none): each part's type, so that
+    /// `t[1]` and `(A, B) = t` keep part 1's frames ([`super::parts`]).
+    /// None when the tuple's tag says its parts' ([`Frames::part`]).
+    pub parts: Option<&'static [Ty]>,
 }
 
 impl Ty {
@@ -495,6 +500,7 @@ impl Ty {
             algebra: None,
             moves: None,
             free: false,
+            parts: None,
         }
     }
     /// An untagged value of `kind`.
@@ -513,6 +519,7 @@ impl Ty {
             algebra: self.algebra,
             moves: self.moves,
             free: self.free,
+            parts: self.parts,
         }
     }
 }

@@ -55,8 +55,9 @@ impl Interp<'_> {
                             )
                             .with_help("bind numbers to the given names before indexing with them")
                         })?,
-                        // (checking without numbers: only the kinds matter)
-                        None => f64::NAN,
+                        // (checking: a literal index is known, any other
+                        // is not)
+                        None => literal_index(e).unwrap_or(f64::NAN),
                     };
                     sels.push(Sel::At(at));
                 }
@@ -71,9 +72,33 @@ impl Interp<'_> {
             .map_err(|e| Diagnostic::error(ErrorKind::Type, span, e.into_message()))?;
         let val = match t.val.as_deref() {
             Some(v) => Some(op.apply(&[v], &ty.kind).map_err(|m| op.failure(m, span))?),
-            None => None,
+            None => {
+                if matches!(sels.as_slice(), [Sel::At(x)] if x.is_nan()) && t.ty.parts_differ() {
+                    self.unknown_part(base, span);
+                }
+                None
+            }
         };
         Ok(Typed::new(refine(ty, &val), val))
+    }
+
+    /// Checking `t[k]` of a tuple whose parts differ, `k` no literal: which
+    /// part it is is known only when running, so its frames are not
+    /// checked here; a warning says so (running checks them: LANGUAGE.md §6).
+    fn unknown_part(&mut self, base: &Expr, span: Span) {
+        let shown = self.text(span).trim().to_string();
+        let tuple = self.text(base.span).trim().to_string();
+        let d = Diagnostic::warning(
+            ErrorKind::Frame,
+            span,
+            format!(
+                "cannot tell which part of `{tuple}` `{shown}` is without numbers: its kind and frames are not checked"
+            ),
+        )
+        .with_help(format!(
+            "index with a number (`{tuple}[1]`) or destructure `(a, b) = {tuple}` to have each part checked; `chasles run` checks the part it picks"
+        ));
+        self.frames.warning(d, &mut self.warnings);
     }
 
     pub(super) fn paren(&mut self, items: &[Expr], span: Span) -> Result<Typed, Diagnostic> {
@@ -136,7 +161,8 @@ impl Interp<'_> {
             };
             return Ok(Typed::new(ty, val));
         }
-        let ty = Ty::plain(Kind::tuple(ts.iter().map(|t| t.ty.kind).collect()));
+        // each part keeps its own type: `(T_ab, T_cb)[2]` is {c}←{b}
+        let ty = Ty::tuple_of(&ts.iter().map(|t| t.ty).collect::<Vec<_>>());
         let val = ts
             .iter()
             .map(|t| t.value().cloned())
@@ -473,5 +499,30 @@ fn not_inside(kind: &Kind, span: Span) -> Diagnostic {
             "a tuple is not a vector: write the 3-vector as three numbers, `(x, y, z)`, or a vector by name",
         ),
         _ => d,
+    }
+}
+
+/// The number an index written as a literal stands for (`2`, `1.5`, `-1`,
+/// `end + 1` once `end` is a number), known without evaluating it: numbers
+/// and their sums, differences and products; None for anything else.
+pub(super) fn literal_index(e: &Expr) -> Option<f64> {
+    use crate::syntax::ast::BinOp;
+    match &e.kind {
+        ExprKind::Number(x) => Some(*x),
+        ExprKind::Binary { op, lhs, rhs, .. } => {
+            let (a, b) = (literal_index(lhs)?, literal_index(rhs)?);
+            match op {
+                BinOp::Add => Some(a + b),
+                BinOp::Sub => Some(a - b),
+                BinOp::Mul => Some(a * b),
+                BinOp::Div | BinOp::Pow => None,
+            }
+        }
+        ExprKind::Unary {
+            op: crate::syntax::ast::UnOp::Neg,
+            operand,
+        } => literal_index(operand).map(|x| -x),
+        ExprKind::Paren(items) if items.len() == 1 => literal_index(&items[0]),
+        _ => None,
     }
 }

@@ -71,6 +71,9 @@ pub(super) fn refine_by(ty: Ty, val: Option<&Value>) -> Ty {
             // say what the checker said and it knew nothing more.
             if kind == ty.kind && ty.algebra.is_none() && ty.moves.is_none() {
                 ty
+            } else if ty.parts.is_some() {
+                // (a tuple's parts keep their own frames)
+                crate::check::parts::with_kinds(&ty, kind)
             } else {
                 crate::check::algebra::with_kind(&ty, kind)
             }
@@ -447,13 +450,15 @@ impl<'a> Interp<'a> {
         Ok(kinds
             .into_iter()
             .zip(vals)
-            .map(|(k, v)| {
-                let frames = t.ty.frames.part(&k);
-                let k = match &v {
-                    Some(Value::Sym(_)) | None => k,
-                    Some(v) => v.kind(),
+            .enumerate()
+            .map(|(i, (k, v))| {
+                // a tuple's part i, with its own frames (§6)
+                let part = t.ty.part(i).unwrap_or(Ty::new(k, t.ty.frames.part(&k)));
+                let ty = match &v {
+                    Some(Value::Sym(_)) | None => part,
+                    Some(v) => refine_by(part, Some(v)),
                 };
-                Typed::new(Ty::new(k, frames), v)
+                Typed::new(ty, v)
             })
             .collect())
     }

@@ -17,12 +17,17 @@ pub(crate) fn index_type(t: &Ty, sels: &[Sel]) -> Result<Ty, RuleError> {
         None => Frames::None,
     };
     Ok(match (&t.kind, sels) {
+        // part i, with its own frames (a literal's) or its part of the
+        // tuple's tag (a builtin's)
         (Kind::Tuple(ks), [Sel::At(i)])
             if i.fract() == 0.0 && *i >= 1.0 && (*i as usize) <= ks.len() =>
         {
-            Ty::plain(ks[*i as usize - 1])
+            t.part(*i as usize - 1)
+                .unwrap_or(Ty::plain(ks[*i as usize - 1]))
         }
-        (Kind::Tuple(_), _) => Ty::plain(Kind::Unknown),
+        // which part is not known (checking, an index that is no literal):
+        // the parts' one type when they share it, else nothing certain
+        (Kind::Tuple(_), _) => t.any_part().unwrap_or(Ty::plain(Kind::Unknown)),
         (k, _) if k.shape().is_none() => {
             return Err(RuleError::from(crate::check::rules::Refusal {
                 kind: Some(crate::diagnostics::ErrorKind::Type),
