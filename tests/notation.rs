@@ -358,3 +358,93 @@ fn nested_calls_read_their_own_arguments() {
         }
     }
 }
+
+/// The first error of `src` in `mode`, as (kind, message); None when it
+/// runs (or checks) cleanly.
+fn first_error(src: &str, mode: Mode) -> Option<(String, String)> {
+    let mut s = Session::new(Settings {
+        json: true,
+        ..Settings::default()
+    });
+    let (out, _, _) = s.run_to_strings("t.chs", src, mode, false);
+    out.lines()
+        .filter_map(|l| serde_json::from_str::<serde_json::Value>(l).ok())
+        .find_map(|v| {
+            let e = v.get("error")?;
+            Some((
+                e["kind"].as_str()?.to_string(),
+                e["message"].as_str()?.to_string(),
+            ))
+        })
+}
+
+/// `check` refuses an index that `run` refuses wherever the sizes and the
+/// indices are known without numbers, with the same error: `L[1]` of the
+/// 4×8 `[T_ab, T_bc]` passed `check` as a scalar, as did an index out of
+/// range of a tuple, vector or matrix, a range past a matrix's columns
+/// and a range over a tuple; `x[1.5]` said "out of range" where it is not
+/// a whole number. Found by a differential sweep of `run` against `check`.
+#[test]
+fn check_refuses_the_indices_run_refuses() {
+    let setup = "T_ab = RpToTrans(Rotz(1), (1, 2, 3))\nT_bc = RpToTrans(Rotx(1), (0, 2, 3))\n\
+                 L = [T_ab, T_bc]\nt = (T_ab, T_bc)\nv = (1, 2, 3)\nM = [1, 2; 3, 4; 5, 6]\n\
+                 xs = [k^2 for k in 1:4]\n";
+    let not_whole = "is not a whole number (indices count entries from 1, as in the book)";
+    let refused = [
+        (
+            "L[1] * L[2]",
+            "a matrix takes two indices: M[i, j], M[i, :] or M[:, j]",
+        ),
+        ("M[7]", "a matrix takes two indices"),
+        ("v[4]", "index 4 is out of range 1..3"),
+        ("v[-1]", "index -1 is out of range 1..3"),
+        ("v[end + 1]", "index 4 is outside 1..3 (the entries)"),
+        ("t[3]", "index 3 is out of range 1..2"),
+        ("t[1, 1]", "a tuple takes one index"),
+        ("t[1:2]", "cannot index a (SE(3), SE(3)) with a range"),
+        ("T_ab[5, 1]", "index 5 is out of range 1..4"),
+        ("T_ab[1:3, 5]", "index 5 is outside 1..4 (the columns)"),
+        ("M[1:4, 1]", "index 4 is outside 1..3 (the rows)"),
+        ("v[1:2:5]", "index 5 is outside 1..3 (the entries)"),
+        ("v[1.5]", not_whole),
+        ("t[1.5]", not_whole),
+        ("M[1.5, 1]", not_whole),
+        ("v[2.5:3]", not_whole),
+        ("xs[1.5]", not_whole),
+        ("xs[0]", "index 0 is outside the list"),
+    ];
+    for (x, want) in refused {
+        let src = format!("{setup}{x}\n");
+        for mode in [Mode::Run, Mode::Check] {
+            let (kind, msg) = first_error(&src, mode)
+                .unwrap_or_else(|| panic!("{x}: {mode:?} did not refuse it"));
+            assert!(msg.contains(want), "{x} ({mode:?}): {kind}: {msg}");
+            assert!(kind == "domain" || kind == "type", "{x}: {kind}");
+        }
+        // the same error in both modes
+        assert_eq!(
+            first_error(&src, Mode::Run).map(|e| e.0),
+            first_error(&src, Mode::Check).map(|e| e.0),
+            "{x}"
+        );
+    }
+    let accepted = [
+        "L[1, 8]",
+        "L[1:4, 5:8]",
+        "v[3]",
+        "v[end]",
+        "M[:, 2]",
+        "M[3, :]",
+        "t[2]",
+        "T_ab[1:3, 4]",
+        "xs[4]",
+    ];
+    for x in accepted {
+        let src = format!("{setup}{x}\n");
+        for mode in [Mode::Run, Mode::Check] {
+            assert_eq!(first_error(&src, mode), None, "{x} ({mode:?})");
+        }
+    }
+    assert_eq!(last_numbers(&format!("{setup}L[2, 8]")), [2.0]);
+    assert_eq!(last_numbers(&format!("{setup}M[1:2, 2]")), [2.0, 4.0]);
+}

@@ -73,6 +73,11 @@ impl Interp<'_> {
         let val = match t.val.as_deref() {
             Some(v) => Some(op.apply(&[v], &ty.kind).map_err(|m| op.failure(m, span))?),
             None => {
+                // checking refuses what running will: `L[1]` of a 4×8
+                // matrix, `t[3]` of a pair, `x[1.5]`
+                if let Some(m) = crate::seam::shapes::index_refusal(&t.ty.kind, &sels) {
+                    return Err(op.failure(m, span));
+                }
                 if matches!(sels.as_slice(), [Sel::At(x)] if x.is_nan()) && t.ty.parts_differ() {
                     self.unknown_part(base, span);
                 }

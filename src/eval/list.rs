@@ -275,6 +275,13 @@ impl Interp<'_> {
             ));
         };
         let ty = Ty::new(**elem, t.ty.frames);
+        // (NaN: an index checking has no number for)
+        if !i.is_nan() && (i.fract() != 0.0 || !i.is_finite()) {
+            return Err(self.domain(
+                span,
+                crate::values::error::OpError::IndexNotWhole(*i).to_string(),
+            ));
+        }
         // (a range waiting for numbers has no items yet)
         if let Some(v) = t
             .val
@@ -293,10 +300,18 @@ impl Interp<'_> {
                 .with_help("bind numbers to the given names first, then index it (§7)"));
         }
         let Some(Value::List(items)) = t.val.as_deref() else {
+            // (checking: a list's length is known only from its items, but
+            // none has an item before its first)
+            if *i < 1.0 {
+                return Err(self.domain(
+                    span,
+                    format!("index {i} is outside the list (its items are counted from 1)"),
+                ));
+            }
             return Ok(Typed::new(ty, None));
         };
         let n = items.len();
-        if !(i.fract() == 0.0 && *i >= 1.0 && *i <= n as f64) {
+        if !(*i >= 1.0 && *i <= n as f64) {
             return Err(self.domain(
                 span,
                 format!("index {i} is outside the list (it has {n} items, counted from 1)"),

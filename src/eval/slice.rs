@@ -106,7 +106,10 @@ impl Interp<'_> {
             (None, Kind::List(_)) => (None, Some(1)),
             (None, k) => k.shape().unwrap_or((None, None)),
         };
-        if args.len() > 2 || (t.value().is_some() && rows.is_none()) {
+        // (checking: a tuple, a bool… has no entries to range over either)
+        let entries = t.value().is_some() || t.ty.kind.shape().is_some();
+        let entries = entries || matches!(t.ty.kind, Kind::List(_));
+        if args.len() > 2 || (t.value().is_some() && rows.is_none()) || !entries {
             return Err(Diagnostic::error(
                 ErrorKind::Type,
                 span,
@@ -115,6 +118,7 @@ impl Interp<'_> {
         }
         let one = args.len() == 1;
         let mut picks = Vec::with_capacity(args.len());
+        let mut sizes = Vec::with_capacity(args.len());
         for (i, a) in args.iter().enumerate() {
             let n = match (one, i) {
                 (true, _) if cols == Some(1) => rows,
@@ -123,8 +127,25 @@ impl Interp<'_> {
                 _ => cols,
             };
             picks.push(self.pick(a, n)?);
+            sizes.push(n);
         }
         let Some(value) = t.value() else {
+            // Checking: positions written as literals (`v[1:4]`, `T[1:3,
+            // 5]`) against the sizes the kind knows, as running will check
+            // them (a list's length is known only from its items).
+            let whats = match one {
+                true => ["the entries", ""],
+                false => ["the rows", "the columns"],
+            };
+            if !matches!(t.ty.kind, Kind::List(_)) {
+                for ((p, n), what) in picks.iter().zip(&sizes).zip(whats) {
+                    if let Some(m) = p.at.iter().find_map(|&x| outside(x, *n, what)) {
+                        return Err(Diagnostic::error(ErrorKind::Domain, span, m));
+                    }
+                }
+            } else if let Some(m) = picks[0].at.iter().find_map(|&x| outside(x, None, "")) {
+                return Err(Diagnostic::error(ErrorKind::Domain, span, m));
+            }
             // Checking: the kind without the sizes.
             let kind = match (t.ty.kind, picks.as_slice()) {
                 (Kind::List(k), [p]) if p.single => *k,
@@ -137,16 +158,9 @@ impl Interp<'_> {
         };
         let check = |p: &Picked, n: usize, what: &str| -> Result<Vec<usize>, Diagnostic> {
             p.at.iter()
-                .map(|&x| {
-                    if x.fract() == 0.0 && x >= 1.0 && x <= n as f64 {
-                        Ok(x as usize - 1)
-                    } else {
-                        Err(Diagnostic::error(
-                            ErrorKind::Domain,
-                            span,
-                            format!("index {x} is outside 1..{n} ({what})"),
-                        ))
-                    }
+                .map(|&x| match outside(x, Some(n), what) {
+                    Some(m) => Err(Diagnostic::error(ErrorKind::Domain, span, m)),
+                    None => Ok(x as usize - 1),
                 })
                 .collect()
         };
@@ -232,6 +246,13 @@ impl Interp<'_> {
         };
         let e = with_end(e, n.map_or(f64::NAN, |n| n as f64));
         let t = self.expr(&e)?;
+        if t.value().is_none()
+            && let Some(at) = literal_positions(&e)
+        {
+            // checking: a literal's positions are known without numbers
+            let single = !matches!(e.kind, ExprKind::Range { .. });
+            return Ok(Picked { at, single });
+        }
         match t.value() {
             Some(Value::List(xs)) => Ok(Picked {
                 at: xs
@@ -255,6 +276,33 @@ impl Interp<'_> {
             }),
         }
     }
+}
+
+/// The message for position `x` of an index when it is not a whole number
+/// or is outside `1..n` (`what` names the dimension); None when it is
+/// fine or `n` is not known.
+fn outside(x: f64, n: Option<usize>, what: &str) -> Option<String> {
+    if x.fract() != 0.0 || !x.is_finite() {
+        return Some(crate::values::error::OpError::IndexNotWhole(x).to_string());
+    }
+    let n = n?;
+    (x < 1.0 || x > n as f64).then(|| format!("index {x} is outside 1..{n} ({what})"))
+}
+
+/// The positions an index written with literals picks (`2`, `1:4`,
+/// `1:2:5`), known without evaluating it; None for anything else.
+fn literal_positions(e: &Expr) -> Option<Vec<f64>> {
+    let ExprKind::Range { start, step, end } = &e.kind else {
+        return super::compound::literal_index(e).map(|x| vec![x]);
+    };
+    let a = super::compound::literal_index(start)?;
+    let h = match step {
+        Some(h) => super::compound::literal_index(h)?,
+        None => 1.0,
+    };
+    let b = super::compound::literal_index(end)?;
+    let n = crate::seam::range::range_count(a, h, b).ok()?;
+    Some((0..n).map(|i| a + i as f64 * h).collect())
 }
 
 /// `x[ranges]` of a vector or matrix over symbols (LANGUAGE.md §7): each

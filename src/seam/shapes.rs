@@ -6,7 +6,8 @@
 
 use crate::check::rules::RuleError;
 use crate::check::ty::{Frames, Kind, Ty};
-use crate::values::ops::Sel;
+use crate::values::error::OpError;
+use crate::values::ops::{Sel, position};
 use crate::values::value::Value;
 
 /// The rule of `x[i]`, `M[i, j]`, `M[:, j]`: a tuple's part, a column
@@ -39,6 +40,43 @@ pub(crate) fn index_type(t: &Ty, sels: &[Sel]) -> Result<Ty, RuleError> {
         (_, [Sel::At(_), Sel::All]) => Ty::plain(Kind::Matrix(Some(1), None)),
         _ => Ty::scalar(),
     })
+}
+
+/// The error `x[i]`, `M[i, j]` would stop with, known from the kind's
+/// sizes and the indices known without numbers (`L[1]` of a 4×8 matrix,
+/// `t[3]` of a pair, `x[1.5]`): what [`crate::values::ops::index`] says of
+/// the value, so that checking refuses what running refuses. An index
+/// that is NaN is not known.
+pub(crate) fn index_refusal(kind: &Kind, sels: &[Sel]) -> Option<OpError> {
+    let at = |x: f64, n: Option<usize>| -> Option<OpError> {
+        if x.is_nan() {
+            return None;
+        }
+        if x.fract() != 0.0 || !x.is_finite() {
+            return Some(OpError::IndexNotWhole(x));
+        }
+        position(x, n?).err()
+    };
+    if let Kind::Tuple(ks) = kind {
+        return match sels {
+            [Sel::At(i)] => at(*i, Some(ks.len())),
+            _ => Some(OpError::TupleIndex),
+        };
+    }
+    let (rows, cols) = kind.shape()?;
+    match sels {
+        [Sel::At(i)] => match (rows, cols) {
+            (_, Some(1)) => at(*i, rows),
+            (Some(1), _) => at(*i, cols),
+            (Some(_), Some(_)) => Some(OpError::MatrixIndex),
+            _ => at(*i, None),
+        },
+        [Sel::At(i), Sel::At(j)] => at(*i, rows).or_else(|| at(*j, cols)),
+        [Sel::At(i), Sel::All] => at(*i, rows),
+        [Sel::All, Sel::At(j)] => at(*j, cols),
+        [Sel::All, Sel::All] | [Sel::All] => None,
+        _ => Some(OpError::TooManyIndices),
+    }
 }
 
 /// The rule of `[x]`, one entry in brackets: the book's bracket of a 3-

@@ -105,6 +105,9 @@ pub enum OpError {
     /// A 1-based index outside `1..n`.
     #[error("index {index} is out of range 1..{n} (indices start at 1, as in the book)")]
     IndexOutOfRange { index: f64, n: usize },
+    /// A 1-based index that is not a whole number (`x[1.5]`).
+    #[error("index {0} is not a whole number (indices count entries from 1, as in the book)")]
+    IndexNotWhole(f64),
     /// `t[i, j]` of a tuple.
     #[error("a tuple takes one index")]
     TupleIndex,
@@ -186,6 +189,10 @@ mod tests {
         assert_eq!(
             OpError::IndexOutOfRange { index: 7.0, n: 6 }.to_string(),
             "index 7 is out of range 1..6 (indices start at 1, as in the book)"
+        );
+        assert_eq!(
+            OpError::IndexNotWhole(1.5).to_string(),
+            "index 1.5 is not a whole number (indices count entries from 1, as in the book)"
         );
         assert_eq!(
             OpError::NoMember {

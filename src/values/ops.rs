@@ -412,9 +412,13 @@ pub enum Sel {
 }
 
 /// The 0-based position of the book's 1-based index `x` among `n`
-/// entries, or the error a user sees for an index out of range.
-pub(super) fn position(x: f64, n: usize) -> Result<usize, OpError> {
-    if x.fract() != 0.0 || x < 1.0 || x > n as f64 {
+/// entries, or the error a user sees for an index that is not a whole
+/// number (`x[1.5]`) or is out of range.
+pub(crate) fn position(x: f64, n: usize) -> Result<usize, OpError> {
+    if x.fract() != 0.0 || !x.is_finite() {
+        return Err(OpError::IndexNotWhole(x));
+    }
+    if x < 1.0 || x > n as f64 {
         return Err(OpError::IndexOutOfRange { index: x, n });
     }
     Ok(x as usize - 1)
