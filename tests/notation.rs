@@ -448,3 +448,44 @@ fn check_refuses_the_indices_run_refuses() {
     assert_eq!(last_numbers(&format!("{setup}L[2, 8]")), [2.0]);
     assert_eq!(last_numbers(&format!("{setup}M[1:2, 2]")), [2.0, 4.0]);
 }
+
+/// `I` bound to a rotation or transform name is that group's identity
+/// (the name is the context that sizes it, §4): `R_01 = I` said "`I` has
+/// no size here".
+#[test]
+fn identity_under_a_rotation_or_transform_name() {
+    let lines = try_json("R_01 = I\nT_01 = I\nR_12 = Rotz(0.5)\nR_01 * R_12").expect("runs");
+    assert_eq!(lines[0]["type"], "SO3");
+    assert_eq!(lines[0]["frames"], serde_json::json!(["0", "1"]));
+    assert_eq!(
+        numbers(&lines[0]["value"]),
+        [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0]
+    );
+    assert_eq!(lines[1]["type"], "SE3");
+    let mut eye4 = [0.0; 16];
+    for i in 0..4 {
+        eye4[5 * i] = 1.0;
+    }
+    assert_eq!(numbers(&lines[1]["value"]), eye4);
+    assert_eq!(lines[3]["frames"], serde_json::json!(["0", "2"]));
+    let (c, s) = (0.5f64.cos(), 0.5f64.sin());
+    assert_eq!(
+        numbers(&lines[3]["value"]),
+        [c, -s, 0.0, s, c, 0.0, 0.0, 0.0, 1.0]
+    );
+    // checked alike, with the frames of the name
+    for mode in [Mode::Run, Mode::Check] {
+        assert_eq!(
+            first_error("R_01 = I\nR_21 = Rotz(1)\nR_01 * R_21", mode).map(|e| e.0),
+            Some("frame".into())
+        );
+    }
+    // a name that says no group leaves `I` unsized, and says how to size it
+    for src in ["R = I", "p_ab = I", "x = I"] {
+        let e = errors(src);
+        assert!(
+            e.contains("`I` has no size here") && e.contains("eye(3)"),
+            "{e}"
+        );
+    }
+}

@@ -20,8 +20,9 @@ use crate::syntax::ast::{Expr, ExprKind, Ident, Name, Span};
 
 impl Interp<'_> {
     /// The value of `name = value`: a pair of 3-vectors under a twist,
-    /// screw or wrench name is stacked into the 6-vector; anything else is
-    /// the value as written.
+    /// screw or wrench name is stacked into the 6-vector; `I` under a
+    /// rotation or transform name is its identity; anything else is the
+    /// value as written.
     pub(super) fn assigned(&mut self, name: Name, value: &Expr) -> Result<Typed, Diagnostic> {
         if let ExprKind::Paren(items) = &value.kind
             && let [a, b] = items.as_slice()
@@ -33,6 +34,21 @@ impl Interp<'_> {
                 return self.stacked(name, ta, tb, (a.span, b.span), value.span);
             }
             return self.paren_of(vec![ta, tb], value.span);
+        }
+        // `R_01 = I`, `T_sb = I`: the name says a rotation or a transform
+        // (§5), so `I` alone is the identity of the book's spatial group,
+        // 3×3 or 4×4 (§4: the size its context needs; planar, `eye(2)`)
+        if let ExprKind::Var(v) = &value.kind
+            && *v == **super::env::IDENTITY
+            && self.env.get(*super::env::IDENTITY).is_none()
+        {
+            let claim = self.env.claim(name);
+            let n = match (claim.letter, claim.frames) {
+                (Some('R'), crate::check::ty::Frames::Pair(..)) => Some(3),
+                (Some('T'), crate::check::ty::Frames::Pair(..)) => Some(4),
+                _ => None,
+            };
+            return self.sized_identity(n, value);
         }
         self.expr(value)
     }
