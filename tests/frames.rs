@@ -763,3 +763,17 @@ fn a_tuple_part_picked_by_a_name_is_checked_when_run() {
     );
     assert_eq!(out.lines().last(), Some("true"), "{out}");
 }
+
+#[test]
+fn a_tuple_spread_over_arguments_keeps_its_parts_frames() {
+    // `g((T_ab, T_cb))` with g(x, y) = x * y is T_ab * T_cb; the spread
+    // parts were untagged, so it ran (and `T_cd = RpToTrans(TransToRp(T_ab))`
+    // bound a {a}←{b} under the name {c}←{d})
+    frame_error(
+        "g(x, y) = x * y; t = (T_ab, T_cb); g(t)",
+        "frames do not cancel",
+    );
+    frames("g(x, y) = x * y; g((T_ab, T_bc))", &["a", "c"]);
+    frames("RpToTrans(TransToRp(T_ab))", &["a", "b"]);
+    frame_error("T_cd = RpToTrans(TransToRp(T_ab))", "the name T_cd says");
+}

@@ -405,10 +405,16 @@ pub(super) fn parts(t: &Typed) -> Vec<Typed> {
         }
         _ => vec![None; kinds.len()],
     };
+    // a tuple's parts with their frames (`(T_ab, T_cb)`'s own, or the
+    // parts of a builtin's tag: R of `TransToRp(T_ab)` is {a}←{b})
     kinds
         .into_iter()
         .zip(vals)
-        .map(|(k, val)| Typed::new(Ty::plain(k), val))
+        .enumerate()
+        .map(|(i, (k, val))| {
+            let ty = t.ty.part(i).unwrap_or(Ty::plain(k));
+            Typed::new(super::interp::refine(ty, &val), val)
+        })
         .collect()
 }
 
