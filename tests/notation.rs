@@ -489,3 +489,47 @@ fn identity_under_a_rotation_or_transform_name() {
         );
     }
 }
+
+/// Sizes and kinds `check` knows refuse what `run` refuses: a sum or
+/// product with a tuple (`2 * t` passed `check`; `run` said "expected
+/// numbers"), `cross` of a twist, `dot` of a 3- and a 6-vector. Found by
+/// the run/check differential sweep.
+#[test]
+fn check_refuses_tuple_arithmetic_and_misfit_vectors_as_run_does() {
+    let setup = "T_ab = Trans((1, 0, 0))\nt = (T_ab, 2)\nv = (1, 2, 3)\nV = (1, 2, 3, 4, 5, 6)\n";
+    let refused = [
+        ("2 * t", "cannot multiply a scalar and a (SE(3), scalar)"),
+        ("t * T_ab", "cannot multiply a (SE(3), scalar) and an SE(3)"),
+        (
+            "t + t",
+            "cannot add a (SE(3), scalar) and a (SE(3), scalar)",
+        ),
+        ("t - t", "cannot add"),
+        ("t / 2", "cannot"),
+        (
+            "cross(V, v)",
+            "argument 1 of cross must be a 3-vector, not a twist",
+        ),
+        (
+            "cross(v, V)",
+            "argument 2 of cross must be a 3-vector, not a twist",
+        ),
+        ("dot(v, V)", "dot of a 3-vector and a 6-vector"),
+    ];
+    for (x, want) in refused {
+        let src = format!("{setup}{x}\n");
+        for mode in [Mode::Run, Mode::Check] {
+            let (kind, msg) = first_error(&src, mode)
+                .unwrap_or_else(|| panic!("{x}: {mode:?} did not refuse it"));
+            assert_eq!(kind, "type", "{x} ({mode:?}): {msg}");
+            assert!(msg.contains(want), "{x} ({mode:?}): {msg}");
+        }
+    }
+    // the parts are operands
+    assert_eq!(last_numbers(&format!("{setup}2 * t[2]")), [4.0]);
+    assert_eq!(last_numbers(&format!("{setup}dot(V, V)")), [91.0]);
+    assert_eq!(
+        last_numbers(&format!("{setup}cross(v, (0, 0, 1))")),
+        [2.0, -1.0, 0.0]
+    );
+}

@@ -225,6 +225,32 @@ fn pair_rule(what: &'static str, ret: fn(&[Ty]) -> Kind) -> impl Fn(&[Ty]) -> Re
                 ));
             }
         }
+        // the sizes the kinds know, as the numbers will be checked: cross
+        // of 3-vectors, dot of two of one length
+        if what == "cross"
+            && let Some((i, t)) = args
+                .iter()
+                .enumerate()
+                .find(|(_, t)| t.kind.vec_len().is_some_and(|n| n != 3))
+        {
+            return Err(ArgError::type_of(
+                i,
+                format!(
+                    "argument {} of cross must be a 3-vector, not {}",
+                    i + 1,
+                    t.kind.a()
+                ),
+            ));
+        }
+        if what == "dot"
+            && let (Some(m), Some(n)) = (args[0].kind.vec_len(), args[1].kind.vec_len())
+            && m != n
+        {
+            return Err(ArgError::type_of(
+                1,
+                format!("dot of a {m}-vector and a {n}-vector"),
+            ));
+        }
         let frames =
             crate::check::rules::vector_pair(what, &args[0], &args[1]).map_err(|e| ArgError {
                 arg: Some(1),

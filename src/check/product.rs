@@ -19,6 +19,11 @@ pub(super) fn dims_agree(a: Option<usize>, b: Option<usize>) -> bool {
 
 /// `l * r` (and juxtaposition): kind and frames.
 pub fn mul(l: &Ty, r: &Ty, ops: Operands) -> Result<Ty, RuleError> {
+    // A tuple is no operand: its parts are (`2 * t` ran into "expected
+    // numbers" only with numbers, and passed checking).
+    if matches!(l.kind, Kind::Tuple(_)) || matches!(r.kind, Kind::Tuple(_)) {
+        return Err(super::rules::tuple_operand("multiply", &l.kind, &r.kind));
+    }
     // Scalars scale anything and leave frames alone.
     if matches!(l.kind, Kind::Scalar) {
         return Ok(r.scaled());
