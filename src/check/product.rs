@@ -22,7 +22,7 @@ pub fn mul(l: &Ty, r: &Ty, ops: Operands) -> Result<Ty, RuleError> {
     // A tuple is no operand: its parts are (`2 * t` ran into "expected
     // numbers" only with numbers, and passed checking).
     if matches!(l.kind, Kind::Tuple(_)) || matches!(r.kind, Kind::Tuple(_)) {
-        return Err(super::rules::tuple_operand("multiply", &l.kind, &r.kind));
+        return Err(tuple_operand("multiply", &l.kind, &r.kind));
     }
     // Scalars scale anything and leave frames alone.
     if matches!(l.kind, Kind::Scalar) {
@@ -70,6 +70,13 @@ pub fn mul(l: &Ty, r: &Ty, ops: Operands) -> Result<Ty, RuleError> {
     // A rotation (or any matrix but a transform) of a free vector is one.
     out.free = r.free && kind.is_vector();
     Ok(conjugation(l, r, out))
+}
+
+/// The type error of a tuple in a sum or product: a tuple is no
+/// operand, its parts are (§4).
+pub fn tuple_operand(what: &str, l: &Kind, r: &Kind) -> RuleError {
+    RuleError::typ(format!("cannot {what} {} and {}", l.a(), r.a()))
+        .with_help("a tuple is not a vector or matrix: take its parts, t[1] or (a, b) = t")
 }
 
 /// True when `l * r` would treat the vector `r` as a point: a transform

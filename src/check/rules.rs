@@ -60,7 +60,7 @@ pub fn add(l: &Ty, r: &Ty) -> Result<Ty, RuleError> {
 pub fn add_kind(l: &Kind, r: &Kind) -> Result<Kind, RuleError> {
     use Kind::*;
     if matches!(l, Tuple(_)) || matches!(r, Tuple(_)) {
-        return Err(tuple_operand("add", l, r));
+        return Err(super::product::tuple_operand("add", l, r));
     }
     if let (Adjoint { .. }, Adjoint { .. }) = (l, r) {
         return Ok(Matrix(Some(6), Some(6)));
@@ -101,13 +101,6 @@ pub fn add_kind(l: &Kind, r: &Kind) -> Result<Kind, RuleError> {
             }
         }
     }
-}
-
-/// The type error of a tuple in a sum or product: a tuple is no
-/// operand, its parts are (§4).
-pub fn tuple_operand(what: &str, l: &Kind, r: &Kind) -> RuleError {
-    RuleError::typ(format!("cannot {what} {} and {}", l.a(), r.a()))
-        .with_help("a tuple is not a vector or matrix: take its parts, t[1] or (a, b) = t")
 }
 
 /// `-x`.
