@@ -533,3 +533,43 @@ fn check_refuses_tuple_arithmetic_and_misfit_vectors_as_run_does() {
         [2.0, -1.0, 0.0]
     );
 }
+
+/// A row of blocks whose heights the kinds know to differ is refused by
+/// `check` as by `run` (`[T_ab, v]` passed `check`); a lone `0`, as tall
+/// as its row needs, still fits anywhere.
+#[test]
+fn check_refuses_a_row_of_blocks_of_different_heights() {
+    let setup =
+        "T_ab = Trans((1, 0, 0))\nR_ab = Rotz(0.3)\nv = (1, 2, 3)\nV = (1, 2, 3, 4, 5, 6)\n";
+    for (x, want) in [
+        (
+            "[T_ab, v]",
+            "row 1 of the bracket joins blocks of 4 and 3 rows",
+        ),
+        (
+            "[R_ab, V; 0, 1]",
+            "row 1 of the bracket joins blocks of 3 and 6 rows",
+        ),
+    ] {
+        let src = format!("{setup}{x}\n");
+        for mode in [Mode::Run, Mode::Check] {
+            let (kind, msg) = first_error(&src, mode)
+                .unwrap_or_else(|| panic!("{x}: {mode:?} did not refuse it"));
+            assert_eq!(
+                (kind.as_str(), msg.as_str()),
+                ("type", want),
+                "{x} ({mode:?})"
+            );
+        }
+    }
+    for x in ["[R_ab, v; 0, 1]", "[R_ab, 0; 0, R_ab]", "[v; V]", "[0, v]"] {
+        let src = format!("{setup}{x}\n");
+        for mode in [Mode::Run, Mode::Check] {
+            assert_eq!(first_error(&src, mode), None, "{x} ({mode:?})");
+        }
+    }
+    assert_eq!(
+        last_numbers(&format!("{setup}[R_ab, v; 0, 1][1:3, 4]")),
+        [1.0, 2.0, 3.0]
+    );
+}

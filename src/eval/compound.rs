@@ -218,6 +218,15 @@ impl Interp<'_> {
             .map_err(|e| Diagnostic::error(ErrorKind::Type, span, e.into_message()))?;
         let ty = transform_block(&rows, &trows).unwrap_or(ty);
         if !self.running() {
+            // checking refuses a row of blocks of heights the kinds know
+            // to differ (`[T_ab, v]`), as running will
+            let kinds: Vec<Vec<Kind>> = trows
+                .iter()
+                .map(|r| r.iter().map(|t| t.ty.kind).collect())
+                .collect();
+            if let Some(m) = crate::seam::shapes::block_refusal(&kinds) {
+                return Err(op.failure(m, span));
+            }
             return Ok(Typed::new(ty, None));
         }
         let mut vrows: Vec<Vec<Value>> = trows

@@ -79,6 +79,26 @@ pub(crate) fn index_refusal(kind: &Kind, sels: &[Sel]) -> Option<OpError> {
     }
 }
 
+/// The error a block matrix `[a, b; c, d]` of entries of these kinds
+/// would stop with, row by row, as far as the kinds know: a row whose
+/// blocks have different heights (`[T_ab, v]`). A scalar may be a lone
+/// `0`, as tall as its row needs, so it is left out.
+pub(crate) fn block_refusal(rows: &[Vec<Kind>]) -> Option<OpError> {
+    for (i, row) in rows.iter().enumerate() {
+        let mut heights = row
+            .iter()
+            .filter(|k| !matches!(k, Kind::Scalar))
+            .filter_map(|k| k.shape().and_then(|s| s.0));
+        let Some(first) = heights.next() else {
+            continue;
+        };
+        if let Some(other) = heights.find(|&h| h != first) {
+            return Some(OpError::RowHeights(i + 1, first, other));
+        }
+    }
+    None
+}
+
 /// The rule of `[x]`, one entry in brackets: the book's bracket of a 3-
 /// or 6-vector is in so(3) or se(3) (3.30, 3.70), in the vector's frame;
 /// anything else is itself.
