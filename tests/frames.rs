@@ -777,3 +777,28 @@ fn a_tuple_spread_over_arguments_keeps_its_parts_frames() {
     frames("RpToTrans(TransToRp(T_ab))", &["a", "b"]);
     frame_error("T_cd = RpToTrans(TransToRp(T_ab))", "the name T_cd says");
 }
+
+#[test]
+fn tuples_compare_part_by_part() {
+    // each part with its own kind and frames, as the values compare:
+    // check passed `(T_ab, T_cb) == (1, T_ab)` (it compared the lengths
+    // only), which run refuses
+    frame_error("(T_ab, 1) == (T_cb, 1)", "different frames");
+    for r in both("(T_ab, T_cb) == (1, T_ab)") {
+        match r {
+            Err((kind, msg)) => {
+                assert_eq!(kind, "type", "{msg}");
+                assert!(
+                    msg.contains("cannot compare an SE(3) with a scalar"),
+                    "{msg}"
+                );
+            }
+            Ok(x) => panic!("expected a type error, got {x:?}"),
+        }
+    }
+    for r in both("(T_ab, 1) == (T_ab, 1)") {
+        assert_eq!(r, Ok((vec![], "bool".to_string())));
+    }
+    let out = printed("T_ab = Trans((1, 0, 0));\n(T_ab, 1) == (T_ab, 1)\n(T_ab, 1) == (T_ab, 2)");
+    assert_eq!(out.lines().collect::<Vec<_>>(), ["true", "false"], "{out}");
+}

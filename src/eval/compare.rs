@@ -37,7 +37,17 @@ pub fn compare_rule(l: &Ty, r: &Ty) -> Result<Ty, RuleError> {
     let comparable = match (&l.kind, &r.kind) {
         (Kind::Unknown, _) | (_, Kind::Unknown) => true,
         (Kind::Bool, Kind::Bool) => true,
-        (Kind::Tuple(a), Kind::Tuple(b)) => a.len() == b.len(),
+        // part by part, each with its own kind and frames, as the values
+        // are compared
+        (Kind::Tuple(a), Kind::Tuple(b)) if a.len() == b.len() => {
+            for i in 0..a.len() {
+                if let (Some(x), Some(y)) = (l.part(i), r.part(i)) {
+                    compare_rule(&x, &y)?;
+                }
+            }
+            return Ok(Ty::plain(Kind::Bool));
+        }
+        (Kind::Tuple(_), Kind::Tuple(_)) => false,
         (Kind::Mechanism | Kind::Function, _) | (_, Kind::Mechanism | Kind::Function) => false,
         (a, b) => match (a.shape(), b.shape()) {
             (Some((ar, ac)), Some((br, bc))) => agree(ar, br) && agree(ac, bc),
