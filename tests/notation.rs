@@ -573,3 +573,42 @@ fn check_refuses_a_row_of_blocks_of_different_heights() {
         [1.0, 2.0, 3.0]
     );
 }
+
+/// `eye(n)` and `zeros(r, c)` of literal sizes have, when checked, the
+/// kind their numbers will have: `eye(3) * T_ab` and `zeros(2, 3) *
+/// zeros(2, 3)` passed `check` (sizes unknown) where `run` refuses them.
+#[test]
+fn check_knows_the_size_of_eye_and_zeros_of_literal_sizes() {
+    let setup = "T_ab = Trans((1, 0, 0))\nM = [1, 2; 3, 4; 5, 6]\n";
+    for (x, want) in [
+        ("eye(3) * T_ab", "cannot multiply an SO(3) by an SE(3)"),
+        (
+            "zeros(2, 3) * zeros(2, 3)",
+            "cannot multiply a 2×3 matrix by a 2×3 matrix",
+        ),
+        ("zeros(3) + M", "cannot add a 3×3 matrix and a 3×2 matrix"),
+        ("eye(3)[4, 1]", "index 4 is out of range 1..3"),
+    ] {
+        let src = format!("{setup}{x}\n");
+        for mode in [Mode::Run, Mode::Check] {
+            let (_, msg) = first_error(&src, mode)
+                .unwrap_or_else(|| panic!("{x}: {mode:?} did not refuse it"));
+            assert!(msg.contains(want), "{x} ({mode:?}): {msg}");
+        }
+    }
+    for x in [
+        "eye(4) * T_ab",
+        "T_cd = eye(4)",
+        "zeros(3, 2) + M",
+        "M * eye(2)",
+    ] {
+        let src = format!("{setup}{x}\n");
+        for mode in [Mode::Run, Mode::Check] {
+            assert_eq!(first_error(&src, mode), None, "{x} ({mode:?})");
+        }
+    }
+    assert_eq!(
+        last_numbers(&format!("{setup}zeros(3, 2) + M")),
+        [1.0, 2.0, 3.0, 4.0, 5.0, 6.0]
+    );
+}

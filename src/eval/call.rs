@@ -175,6 +175,9 @@ impl Interp<'_> {
             }
         };
         if !self.running() {
+            // (`eye(3)`, `zeros(2, 3)` of literal sizes: the kind their
+            // numbers will have, so checking knows their shape)
+            let ty = literal_matrix(b.name, args).map_or(ty, Ty::plain);
             return Ok(Typed::new(ty, None));
         }
         self.warnings
@@ -350,4 +353,24 @@ fn unit_axis(name: &str) -> Option<[f64; 3]> {
         "z" => Some([0.0, 0.0, 1.0]),
         _ => None,
     }
+}
+
+/// The kind of `eye(n)` or `zeros(r, c)` (`zeros(n)` is n×n) whose sizes
+/// are literal whole numbers, small enough to make: as its numbers
+/// classify (`eye(3)` is SO(3), `zeros(3, 1)` a 3-vector). None for any
+/// other call, or sizes that are not literal.
+fn literal_matrix(name: &str, args: &[crate::syntax::ast::Expr]) -> Option<Kind> {
+    const MOST: f64 = 64.0;
+    let size = |e: &crate::syntax::ast::Expr| {
+        super::compound::literal_index(e)
+            .filter(|x| x.fract() == 0.0 && (1.0..=MOST).contains(x))
+            .map(|x| x as usize)
+    };
+    let m = match (name, args) {
+        ("eye", [n]) => crate::values::num::Num::identity(size(n)?),
+        ("zeros", [n]) => crate::values::num::Num::zeros(size(n)?, size(n)?),
+        ("zeros", [r, c]) => crate::values::num::Num::zeros(size(r)?, size(c)?),
+        _ => return None,
+    };
+    Some(crate::values::convert::classify(&m))
 }
