@@ -268,3 +268,48 @@ fn an_empty_sum_is_the_zero_of_its_kind() {
         assert_eq!(out.lines().last(), Some(want), "{line}: {out}");
     }
 }
+
+/// The first error's message of `src` in `mode`, None when it is clean.
+fn first_error(src: &str, mode: Mode) -> Option<String> {
+    let mut s = Session::new(Settings::default());
+    let (_, err, n) = s.run_to_strings("t.chs", src, mode, false);
+    (n > 0).then_some(err)
+}
+
+/// A list of tuples keeps its items' parts' frames (`zs[1][1] * T_cb` ran
+/// T_ab * T_cb, the items' parts untagged), through an index, `end`, a
+/// comprehension over it and destructuring; and `check` gives an item
+/// picked by `end` the list's frames, as `run` does (it gave none).
+#[test]
+fn items_of_a_list_keep_their_frames() {
+    let setup = "T_ab = Trans((1, 0, 0))\nT_bc = RpToTrans(Rotz(0.3), (0, 1, 0))\nT_cb = inv(T_bc)\n\
+                 zs = [(T_ab, T_cb) for k in 1:2]\nps = [T_ab * (k, 0, 0) for k in 1:3]\n";
+    for x in [
+        "zs[1][1] * zs[1][2]",
+        "z = zs[2]; z[1] * z[2]",
+        "zs[end][1] * zs[end][2]",
+        "[z[1] * z[2] for z in zs]",
+        "(A, B) = zs[1]; A * B",
+        "T_cb * ps[end]",
+        "T_cb * ps[2]",
+    ] {
+        let src = format!("{setup}{x}\n");
+        for mode in [Mode::Run, Mode::Check] {
+            let e = first_error(&src, mode).unwrap_or_else(|| panic!("{x}: {mode:?} ran it"));
+            assert!(e.contains("frames do not cancel"), "{x} ({mode:?}): {e}");
+        }
+    }
+    let src = format!(
+        "{setup}ws = [(T_ab, T_bc) for k in 1:2]\n[w[1] * w[2] for w in ws][2] == T_ab * T_bc\n"
+    );
+    let mut s = Session::new(Settings::default());
+    let (out, err, n) = s.run_to_strings("t.chs", &src, Mode::Run, false);
+    assert_eq!(n, 0, "{err}");
+    assert_eq!(out.lines().last(), Some("true"), "{out}");
+    for mode in [Mode::Run, Mode::Check] {
+        assert_eq!(
+            first_error(&format!("{setup}inv(T_ab) * ps[end]\n"), mode),
+            None
+        );
+    }
+}

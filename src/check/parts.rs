@@ -69,6 +69,30 @@ impl Ty {
     }
 }
 
+impl Ty {
+    /// The type of a list whose items all have type `item` (a
+    /// comprehension's body): the item's kind and frames, and the item's
+    /// own type kept when it is a tuple with parts of their own
+    /// (`[(T_ab, T_cb) for k in 1:2]`).
+    pub fn list_of(item: Ty, kind: Kind) -> Ty {
+        let mut t = Ty::new(Kind::list(kind), item.frames);
+        if item.parts.is_some() && item.kind == kind {
+            t.parts = Some(intern(&[item]));
+        }
+        t
+    }
+
+    /// The type of an item of kind `kind` of a list typed `self`: the item
+    /// type the list keeps ([`Ty::list_of`]), else `kind` with the list's
+    /// frames.
+    pub fn item(&self, kind: Kind) -> Ty {
+        match (self.kind, self.parts) {
+            (Kind::List(_), Some([item])) if item.kind == kind => *item,
+            _ => Ty::new(kind, self.frames),
+        }
+    }
+}
+
 /// A tuple's parts' types with the kinds the values say (evaluation may
 /// know a part's kind better than the checker: `Unknown` becomes SE(3)).
 pub fn with_kinds(t: &Ty, kind: Kind) -> Ty {

@@ -11,7 +11,7 @@ use std::rc::Rc;
 use super::env::{Binding, Mode};
 use super::interp::{Interp, Typed};
 use super::value::{Value, common_kind};
-use crate::check::ty::{Frames, Kind, Ty};
+use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
 use crate::seam::range::{MAX_LIST, RangeFail, count, items};
 use crate::syntax::ast::{Expr, ExprKind, Ident, Span};
@@ -274,7 +274,7 @@ impl Interp<'_> {
                 "a list takes one index: xs[i], counting from 1",
             ));
         };
-        let ty = Ty::new(**elem, t.ty.frames);
+        let ty = t.ty.item(**elem);
         // (NaN: an index checking has no number for)
         if !i.is_nan() && (i.fract() != 0.0 || !i.is_finite()) {
             return Err(self.domain(
@@ -318,12 +318,12 @@ impl Interp<'_> {
             ));
         }
         let v = items[*i as usize - 1].clone();
-        Ok(Typed::new(Ty::new(v.kind(), t.ty.frames), Some(v)))
+        Ok(Typed::new(t.ty.item(v.kind()), Some(v)))
     }
 
     /// What a comprehension variable runs over: a list's elements or a
     /// vector's entries.
-    fn over(&mut self, e: &Expr) -> Result<(Kind, Frames, Option<Vec<Value>>), Diagnostic> {
+    fn over(&mut self, e: &Expr) -> Result<(Ty, Option<Vec<Value>>), Diagnostic> {
         let t = self.expr(e)?;
         let elem = match &t.ty.kind {
             Kind::List(k) => **k,
@@ -338,9 +338,9 @@ impl Interp<'_> {
                 .with_help("write [f(k) for k in 0:4]"));
             }
         };
-        let frames = match &t.ty.kind {
-            Kind::List(_) => t.ty.frames,
-            _ => Frames::None,
+        let ty = match &t.ty.kind {
+            Kind::List(_) => t.ty.item(elem),
+            _ => Ty::plain(elem),
         };
         let vals = match t.val.map(|v| *v) {
             Some(Value::List(vs)) => Some(vs.as_ref().clone()),
@@ -368,7 +368,7 @@ impl Interp<'_> {
             }
             _ => None,
         };
-        Ok((elem, frames, vals))
+        Ok((ty, vals))
     }
 
     /// `[body for a in r1, b in r2]`.
@@ -380,8 +380,8 @@ impl Interp<'_> {
     ) -> Result<Typed, Diagnostic> {
         let mut domains = Vec::new();
         for (name, e) in vars {
-            let (k, f, vals) = self.over(e)?;
-            domains.push((String::from(name.name), Ty::new(k, f), vals));
+            let (ty, vals) = self.over(e)?;
+            domains.push((String::from(name.name), ty, vals));
         }
         let names: Vec<String> = domains.iter().map(|d| d.0.clone()).collect();
         let saved: Vec<(String, Option<Binding>)> = names
@@ -433,7 +433,7 @@ impl Interp<'_> {
         let checked = self.expr(body);
         self.mode = mode;
         let body_ty = checked?;
-        let list_ty = |k: Kind| Ty::new(Kind::list(k), body_ty.ty.frames);
+        let list_ty = |k: Kind| Ty::list_of(body_ty.ty, k);
         if mode == Mode::Check {
             return Ok(Typed::new(list_ty(body_ty.ty.kind), None));
         }
@@ -483,7 +483,11 @@ impl Interp<'_> {
             'all: loop {
                 for (i, (n, ty, _)) in domains.iter().enumerate() {
                     let v = lists[i][at[i]].clone();
-                    let ty = Ty::new(v.kind(), ty.frames);
+                    // (a tuple keeps its parts' frames)
+                    let ty = match ty.parts {
+                        Some(_) => super::interp::refine_by(*ty, Some(&v)),
+                        None => Ty::new(v.kind(), ty.frames),
+                    };
                     self.env.set(
                         n,
                         Binding {

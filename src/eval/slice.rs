@@ -146,15 +146,23 @@ impl Interp<'_> {
             } else if let Some(m) = picks[0].at.iter().find_map(|&x| outside(x, None, "")) {
                 return Err(Diagnostic::error(ErrorKind::Domain, span, m));
             }
-            // Checking: the kind without the sizes.
-            let kind = match (t.ty.kind, picks.as_slice()) {
-                (Kind::List(k), [p]) if p.single => *k,
-                (k @ Kind::List(_), _) => k,
-                (_, [p]) | (_, [p, Picked { single: true, .. }]) if p.single => Kind::Scalar,
-                (_, [_] | [_, Picked { single: true, .. }]) => Kind::Vector(None),
-                _ => Kind::Matrix(None, None),
+            // Checking: the kind without the sizes, with the frames
+            // running gives it (an item of a list, entries of a vector,
+            // part of a column in the matrix's outer frame).
+            let outer = match t.ty.frames.outer() {
+                Some(a) => Frames::One(*a),
+                None => Frames::None,
             };
-            return Ok(Typed::new(Ty::plain(kind), None));
+            let ty = match (t.ty.kind, picks.as_slice()) {
+                (Kind::List(k), [p]) if p.single => t.ty.item(*k),
+                (Kind::List(_), _) => t.ty,
+                (_, [p]) | (_, [p, Picked { single: true, .. }]) if p.single => Ty::scalar(),
+                (k, [_]) if k.is_vector() => Ty::new(Kind::Vector(None), t.ty.frames),
+                (_, [_]) => Ty::plain(Kind::Vector(None)),
+                (_, [_, Picked { single: true, .. }]) => Ty::new(Kind::Vector(None), outer),
+                _ => Ty::plain(Kind::Matrix(None, None)),
+            };
+            return Ok(Typed::new(ty, None));
         };
         let check = |p: &Picked, n: usize, what: &str| -> Result<Vec<usize>, Diagnostic> {
             p.at.iter()
@@ -168,7 +176,7 @@ impl Interp<'_> {
             let at = check(&picks[0], xs.len(), "the list's items")?;
             if picks[0].single {
                 return Ok(Typed::new(
-                    Ty::new(list_elem(t.ty.kind), t.ty.frames),
+                    t.ty.item(list_elem(t.ty.kind)),
                     Some(xs[at[0]].clone()),
                 ));
             }
@@ -280,8 +288,12 @@ impl Interp<'_> {
 
 /// The message for position `x` of an index when it is not a whole number
 /// or is outside `1..n` (`what` names the dimension); None when it is
-/// fine or `n` is not known.
+/// fine or not known (`n` unknown, or `x` NaN: `end` of a size checking
+/// does not know).
 fn outside(x: f64, n: Option<usize>, what: &str) -> Option<String> {
+    if x.is_nan() {
+        return None;
+    }
     if x.fract() != 0.0 || !x.is_finite() {
         return Some(crate::values::error::OpError::IndexNotWhole(x).to_string());
     }
