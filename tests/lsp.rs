@@ -571,11 +571,47 @@ fn the_editor_grammar_lists_every_builtin() {
     assert_eq!(text, serde_json::to_string_pretty(&g).unwrap() + "\n");
 }
 
-/// A message that is not JSON ends the connection (the protocol has no
-/// way back), and the server says why on stderr, the editor's server log,
-/// instead of exiting with nothing said.
+/// A message whose body is not JSON-RPC is answered with JSON-RPC's error
+/// (−32700 not JSON, −32600 not a message) and the server goes on: the
+/// hover asked after it is answered, and `shutdown` then `exit` end the
+/// server with 0.
 #[test]
-fn a_message_that_is_not_json_ends_the_connection_with_a_reason() {
+fn a_message_that_is_not_json_is_answered_and_the_server_goes_on() {
+    let dir = common::scratch("lsp-not-json");
+    let (mut c, _) = Client::start(&dir);
+    let body = "hello";
+    write!(c.stdin, "Content-Length: {}\r\n\r\n{body}", body.len()).unwrap();
+    c.send(json!({"id": 41, "params": {}}));
+    let answers: Vec<Value> = (0..2).map(|_| c.next("the errors")).collect();
+    assert_eq!(answers[0]["error"]["code"], -32700, "{answers:?}");
+    assert_eq!(answers[0]["id"], Value::Null);
+    assert_eq!(answers[1]["error"]["code"], -32600, "{answers:?}");
+    assert_eq!(answers[1]["id"], 41);
+    c.open("T_ab = eye(4)\nT_cb = eye(4)\nT_ab * T_cb\n");
+    let d = c.diagnostics(1);
+    assert!(
+        d.iter()
+            .any(|d| d["code"] == "frame" && d["range"]["start"]["line"] == 2),
+        "{d:?}"
+    );
+    assert_eq!(c.request("shutdown", Value::Null), Value::Null);
+    c.notify("exit", Value::Null);
+    let start = Instant::now();
+    let status = loop {
+        if let Some(s) = c.child.try_wait().unwrap() {
+            break s;
+        }
+        assert!(start.elapsed() < WAIT, "chasles lsp did not exit");
+        std::thread::sleep(Duration::from_millis(20));
+    };
+    assert!(status.success(), "{status:?}");
+}
+
+/// A header that cannot be read leaves no way to find the next message:
+/// the connection ends, and the server says why on stderr, the editor's
+/// server log, instead of exiting with nothing said.
+#[test]
+fn a_header_that_cannot_be_read_ends_the_connection_with_a_reason() {
     let dir = common::scratch("lsp-malformed");
     let mut child = common::command(&["lsp"])
         .current_dir(&dir)
@@ -591,10 +627,9 @@ fn a_message_that_is_not_json_ends_the_connection_with_a_reason() {
     let initialized = json!({"jsonrpc": "2.0", "method": "initialized", "params": {}});
     write!(
         stdin,
-        "{}{}{}",
+        "{}{}Content-Length: five\r\n\r\nhello",
         frame(&init.to_string()),
         frame(&initialized.to_string()),
-        frame("hello")
     )
     .unwrap();
     drop(stdin);
@@ -615,4 +650,5 @@ fn a_message_that_is_not_json_ends_the_connection_with_a_reason() {
         .unwrap();
     assert!(!status.success(), "{status:?}");
     assert!(err.contains("chasles lsp: the connection ended"), "{err:?}");
+    assert!(err.contains("Content-Length"), "{err:?}");
 }

@@ -14,6 +14,7 @@
 pub mod analysis;
 pub mod features;
 pub mod text;
+pub mod transport;
 
 use std::collections::HashMap;
 use std::time::{Duration, Instant};
@@ -61,10 +62,10 @@ struct Server<'a> {
 /// returns the exit code (0 after `shutdown`, 1 otherwise, 2 when the
 /// handshake fails).
 pub fn serve(settings: Settings) -> i32 {
-    let (conn, io) = Connection::stdio();
+    let (conn, io) = transport::stdio();
     let code = serve_on(&conn, settings);
     drop(conn);
-    // (a message that is not JSON-RPC ends the connection: the editor is
+    // (a header that cannot be read ends the connection: the editor is
     // told why on stderr, its server log, not left with a bare exit)
     match io.join() {
         Ok(()) => code,
