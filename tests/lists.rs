@@ -313,3 +313,45 @@ fn items_of_a_list_keep_their_frames() {
         );
     }
 }
+
+/// Fractions of fractions and of numbers as typed are made at once and
+/// held inline (no recipe keeps the operands: `[k/100 for k in
+/// 1:100000]` held 380 bytes an item), and stay exact: they compare, sum
+/// and print (`--exact`) as before, 37/100 of integers as a fraction and
+/// 0.1·3 as the decimal 0.3.
+#[test]
+fn fractions_in_lists_stay_exact_and_print_as_before() {
+    let lines = [
+        "sum([k/100 for k in 1:100]) == 101/2",
+        "sum([k/100 for k in 1:100]) == 50.5",
+        "[k/100 for k in 1:100][37] == 0.37",
+        "[k/3 for k in 1:9][2] == 2/3",
+        "[k/3 for k in 1:9][2] * 3 == 2",
+        "([k/3 for k in 1:9][1] == 0.3333333333333333) == false",
+        "sum([k/3 for k in 1:3]) == 2",
+        "(0:1/3:1)[2] + (0:1/3:1)[3] == 1",
+        "(1e13 + 0.1) - 1e13 == 0.1",
+        "x = (1e13 + 0.1) - 1e13; x == 0.1",
+        "k = 7; (k/100 - 0.07) == 0",
+        "max([k/7 for k in 1:10]) == 10/7",
+        "min([k/7 - 1 for k in 1:10]) == -6/7",
+        "[RpToTrans(Rotz(k/100), (k/1000, 0, 0)) for k in 1:3][2][1, 4] == 0.002",
+    ];
+    for line in lines {
+        let mut s = Session::new(Settings::default());
+        let (out, err, n) = s.run_to_strings("t", &format!("{line}\n"), Mode::Run, false);
+        assert_eq!(n, 0, "{line}: {err}");
+        assert_eq!(out.lines().last(), Some("true"), "{line}: {out}{err}");
+    }
+    let mut e = Session::new(Settings {
+        exact: true,
+        ..Settings::default()
+    });
+    let src = "[k/100 for k in 1:3]\n[k/3 for k in 1:3]\n0.1*3\n1/16\n0.0625*1\n(0:0.1:1)[4]\n(1e13 + 0.1) - 1e13\n";
+    let (out, err, n) = e.run_to_strings("t", src, Mode::Run, false);
+    assert_eq!(n, 0, "{err}");
+    assert_eq!(
+        out,
+        "[1/100, 1/50, 3/100]  : list of 3 numbers\n[1/3, 2/3, 1]  : list of 3 numbers\n0.3\n1/16\n0.0625\n0.3\n0.1\n"
+    );
+}

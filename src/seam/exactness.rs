@@ -11,9 +11,10 @@ use std::sync::OnceLock;
 use super::apply::Op;
 use crate::check::ty::Kind;
 use crate::sym::Mat;
+use crate::sym::coef::Rat;
 use crate::syntax::ast::BinOp;
 use crate::values::error::OpError;
-use crate::values::exact::{Exact, Operands, Operation, Pending};
+use crate::values::exact::{Exact, Fraction, Operands, Operation, Pending};
 use crate::values::formula;
 use crate::values::value::Value;
 
@@ -53,12 +54,41 @@ impl Op<'_> {
             && b.may_be_exact()
         {
             let cancels = SUM && self.cancels(&args);
-            *exact = self.exact_of_pair(a, b, kind);
+            *exact = match self.fraction(&args, kind) {
+                Some(r) => Exact::Ratio(r),
+                None => self.exact_of_pair(a, b, kind),
+            };
             if cancels {
                 from_exact_form(&mut v);
             }
         }
         Ok(v)
+    }
+
+    /// The exact form of `a + b`, `a - b`, `a b` or `a / b` of two numbers
+    /// whose exact forms are fractions at hand (as typed, [`Rat::typed_quick`],
+    /// or [`Exact::Ratio`]), made at once as a fraction held inline; None
+    /// for anything else (a recipe then keeps the operands). The fraction
+    /// is the one the recipe would make, typed mark and all (the sum and
+    /// product of [`Rat`], as the symbolic path adds and multiplies the
+    /// coefficients): `[k/100 for k in 1:100000]` holds no recipe.
+    #[inline]
+    fn fraction(self, args: &[&Value; 2], kind: &Kind) -> Option<Fraction> {
+        let Op::Arith(op @ (BinOp::Add | BinOp::Sub | BinOp::Mul | BinOp::Div)) = self else {
+            return None;
+        };
+        if *kind != Kind::Scalar {
+            return None;
+        }
+        let (x, y) = (held_fraction(args[0])?, held_fraction(args[1])?);
+        let r = match op {
+            BinOp::Add => x.add(&y),
+            BinOp::Sub => x.add(&y.neg()),
+            BinOp::Mul => x.mul(&y),
+            _ if y.is_zero() => return None,
+            _ => x.mul(&y.inv()?),
+        };
+        Fraction::of(&r)
     }
 
     /// True when this is a sum or difference of numbers (that may be
@@ -235,6 +265,24 @@ impl Op<'_> {
     }
 }
 
+/// The exact form of a scalar when it is a fraction at hand: a number
+/// as typed that [`Rat::typed_quick`] reads, or a fraction held inline.
+#[inline]
+fn held_fraction(v: &Value) -> Option<Rat> {
+    match v {
+        Value::Num {
+            kind: Kind::Scalar,
+            m: crate::values::num::Num::Scalar(x),
+            exact,
+        } => match exact {
+            Exact::Typed => Rat::typed_quick(*x),
+            Exact::Ratio(r) => Some(r.rat()),
+            _ => None,
+        },
+        _ => None,
+    }
+}
+
 /// Which results of a builtin keep an exact form's recipe ([`exact_name`],
 /// [`scalar_only`]).
 #[derive(Clone, Copy, PartialEq, Eq, Debug)]
@@ -271,7 +319,7 @@ fn exact_call(b: &crate::builtins::Builtin) -> bool {
 /// when the form is first asked for): the operation's exact path
 /// ([`Op::formula`]) over the operands' exact forms; None when an operand
 /// or the result has none.
-fn run(op: &Operation, vals: &[&Value], kind: &Kind) -> Option<Mat> {
+pub(super) fn run(op: &Operation, vals: &[&Value], kind: &Kind) -> Option<Mat> {
     let forms = vals
         .iter()
         .map(|v| {

@@ -9,7 +9,7 @@ use crate::sym::Mat;
 use crate::sym::coef::Coef;
 use crate::sym::expr::Expr;
 use crate::sym::rat::Rat;
-use crate::values::exact::Exact;
+use crate::values::exact::{Exact, Fraction};
 use crate::values::num::Num;
 use crate::values::value::Value;
 
@@ -142,17 +142,32 @@ pub(crate) fn items(a: &Value, h: &Value, n: usize) -> Vec<Value> {
             })
             .collect();
     }
+    // (fractions a and h: each item's a + k·h is a fraction, made at once
+    // and held inline, as `Rat` adds and multiplies the coefficients the
+    // recipe's sum would; a recipe where it does not fit)
+    let rat = |e: &Expr| e.as_const().and_then(|c| c.as_rat());
+    let fractions = rat(&fa).zip(rat(&fh));
     let forms = Rc::new((fa, fh));
     (0..n)
         .map(|k| {
-            let f = Rc::clone(&forms);
+            let inline = fractions.as_ref().and_then(|(ra, rh)| {
+                let r = ra.add(&rh.mul(&Rat::int(i64::try_from(k).ok()?)));
+                Fraction::of(&r)
+            });
+            let exact = match inline {
+                Some(r) => Exact::Ratio(r),
+                None => {
+                    let f = Rc::clone(&forms);
+                    Exact::later(move || {
+                        let k = Coef::int(i64::try_from(k).ok()?);
+                        Some(Mat::scalar(f.0.add(&f.1.scale(&k))))
+                    })
+                }
+            };
             let mut v = Value::Num {
                 kind: Kind::Scalar,
                 m: Num::Scalar(float(k)),
-                exact: Exact::later(move || {
-                    let k = Coef::int(i64::try_from(k).ok()?);
-                    Some(Mat::scalar(f.0.add(&f.1.scale(&k))))
-                }),
+                exact,
             };
             let big = x.abs().max(k as f64 * dx.abs());
             if big > 0.0 && float(k).abs() <= big * super::exactness::CANCELLED {
@@ -175,4 +190,154 @@ fn scalar_form(v: &Value) -> Option<Expr> {
 pub(crate) fn range_items(a: &Value, h: &Value, b: &Value) -> Result<Value, RangeFail> {
     let n = count(a, h, b)?;
     Ok(Value::List(Rc::new(items(a, h, n))))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::seam::apply::Op;
+    use crate::seam::exactness::run;
+    use crate::values::exact::Operation;
+
+    /// A sum, difference, product or quotient of fractions at hand is the
+    /// fraction the recipe makes, typed mark and all (so `--exact` prints
+    /// it alike: 37/100 from integers, 0.37 from a typed 0.37), held
+    /// inline; and again of such results.
+    #[test]
+    fn fractions_at_hand_are_made_at_once_as_the_recipe_makes_them() {
+        use crate::sym::coef::Rat;
+        use crate::syntax::ast::BinOp::{Add, Div, Mul, Sub};
+        let typed = |x: f64| {
+            let mut v = Value::scalar(x);
+            v.set_exact(Exact::Typed);
+            v
+        };
+        let form_of = |v: &Value| -> (Rat, bool) {
+            let m = v.exact_form().expect("exact");
+            let r = m.data[0]
+                .as_const()
+                .and_then(|c| c.as_rat())
+                .expect("a fraction");
+            let t = r.is_typed();
+            (r, t)
+        };
+        let xs = [0.0, 1.0, -3.0, 100.0, 0.1, 0.37, -2.5, 7.0, 0.125, 1e6];
+        let mut inline = 0;
+        for &x in &xs {
+            for &y in &xs {
+                for op in [Add, Sub, Mul, Div] {
+                    let (a, b) = (typed(x), typed(y));
+                    let recipe = run(&Operation::Arith(op), &[&a, &b], &Kind::Scalar);
+                    let Ok(v) = Op::Arith(op).apply_pair(
+                        Box::new(a.clone()),
+                        Box::new(b.clone()),
+                        &Kind::Scalar,
+                    ) else {
+                        continue;
+                    };
+                    let Some(recipe) = recipe else {
+                        continue;
+                    };
+                    let want = recipe.data[0]
+                        .as_const()
+                        .and_then(|c| c.as_rat())
+                        .expect("rat");
+                    assert_eq!(
+                        form_of(&v),
+                        (want.clone(), want.is_typed()),
+                        "{x} {op:?} {y}"
+                    );
+                    if let Value::Num {
+                        exact: Exact::Ratio(_),
+                        ..
+                    } = &v
+                    {
+                        inline += 1;
+                        // and once more, of the fraction held inline
+                        let again = run(&Operation::Arith(op), &[&v, &b], &Kind::Scalar);
+                        let w = Op::Arith(op).apply_pair(
+                            Box::new(v.clone()),
+                            Box::new(b.clone()),
+                            &Kind::Scalar,
+                        );
+                        if let (Some(again), Ok(w)) = (again, w) {
+                            let want = again.data[0].as_const().and_then(|c| c.as_rat());
+                            let want = want.expect("rat");
+                            assert_eq!(form_of(&w), (want.clone(), want.is_typed()));
+                        }
+                    }
+                }
+            }
+        }
+        assert!(inline > 300, "{inline}");
+        // 37/100 of integers is a fraction, not a typed decimal
+        let v = Op::Arith(Div)
+            .apply_pair(Box::new(typed(37.0)), Box::new(typed(100.0)), &Kind::Scalar)
+            .expect("a quotient");
+        assert_eq!(form_of(&v), (Rat::new(37, 100).expect("37/100"), false));
+        // 0.1 · 3 is 3/10 as typed, its floats 0.30000000000000004
+        let v = Op::Arith(Mul)
+            .apply_pair(Box::new(typed(0.1)), Box::new(typed(3.0)), &Kind::Scalar)
+            .expect("a product");
+        assert_eq!(form_of(&v), (Rat::new(3, 10).expect("3/10"), true));
+        assert_eq!(v.as_scalar(), Some(0.1 * 3.0));
+        assert!(matches!(
+            v,
+            Value::Num {
+                exact: Exact::Ratio(_),
+                ..
+            }
+        ));
+        assert_eq!(std::mem::size_of::<Exact>(), 16);
+    }
+
+    /// A range of fractions holds its items' fractions inline, each the
+    /// a + k·h its recipe made, typed mark and all.
+    #[test]
+    fn a_range_of_fractions_holds_them_inline_as_its_recipe_made_them() {
+        let typed = |x: f64| {
+            let mut v = Value::scalar(x);
+            v.set_exact(Exact::Typed);
+            v
+        };
+        let third = Op::Arith(crate::syntax::ast::BinOp::Div)
+            .apply_pair(Box::new(typed(1.0)), Box::new(typed(3.0)), &Kind::Scalar)
+            .expect("1/3");
+        for (a, h) in [
+            (typed(0.0), typed(0.1)),
+            (typed(-0.3), typed(0.1)),
+            (typed(2.0), third.clone()),
+            (third, typed(0.25)),
+            (typed(1.5), typed(-0.001)),
+        ] {
+            let (fa, fh) = (scalar_form(&a).expect("a"), scalar_form(&h).expect("h"));
+            let vs = items(&a, &h, 40);
+            assert_eq!(vs.len(), 40);
+            for (k, v) in vs.iter().enumerate() {
+                assert!(
+                    matches!(
+                        v,
+                        Value::Num {
+                            exact: Exact::Ratio(_),
+                            ..
+                        }
+                    ),
+                    "{k}"
+                );
+                let want = fa.add(&fh.scale(&Coef::int(k as i64)));
+                let got = scalar_form(v).expect("exact");
+                assert_eq!(got, want, "{k}");
+                let typed_mark =
+                    |e: &Expr| e.as_const().and_then(|c| c.as_rat()).map(|r| r.is_typed());
+                assert_eq!(typed_mark(&got), typed_mark(&want), "{k}");
+            }
+        }
+        // (0:0.1:1)[4] is 3/10 exactly, its float 0.30000000000000004
+        let v = &items(&typed(0.0), &typed(0.1), 11)[3];
+        assert_eq!(v.as_scalar(), Some(3.0 * 0.1));
+        assert_eq!(
+            scalar_form(v),
+            Some(Expr::constant(Coef::rat(Rat::new(3, 10).expect("3/10"))))
+        );
+    }
 }

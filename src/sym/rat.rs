@@ -386,6 +386,37 @@ impl Rat {
         let digits: BigInt = format!("{int}{frac}").parse().ok()?;
         Some(Rat::decimal(&digits, exp - frac.len() as i32))
     }
+    /// [`Rat::typed`] without text or big integers, for the usual
+    /// numbers: an integer below 9·10¹⁵, or a decimal of at most 15
+    /// significant digits and 15 places (`0.1`, `0.866`, `123.456`). None
+    /// when it cannot tell at once (ask [`Rat::typed`]). The decimal found
+    /// is the one with the fewest places whose quotient n/10ʲ rounds to
+    /// `x` (a correctly rounded division of exact floats), so it reads back
+    /// as `x`; with 15 significant digits or fewer no other decimal of as
+    /// few digits does, so it is the shortest that `{:e}` prints.
+    #[inline]
+    pub fn typed_quick(x: f64) -> Option<Rat> {
+        if x == x.trunc() && x.abs() < 9.0e15 {
+            return Some(Rat::int(x as i64));
+        }
+        if !x.is_finite() {
+            return None;
+        }
+        let mut p = 1.0_f64;
+        let mut den: i64 = 1;
+        for _ in 0..15 {
+            p *= 10.0;
+            den *= 10;
+            let n = (x * p).round();
+            if n.abs() >= 1e15 {
+                return None;
+            }
+            if n / p == x {
+                return Rat::new(n as i128, i128::from(den)).map(|r| r.marked(true));
+            }
+        }
+        None
+    }
     /// The decimal `digits · 10^exp` exactly (a number as typed: `0.866`
     /// is 866/1000, `1e-13` is 1/10¹³), marked as typed.
     pub fn decimal(digits: &BigInt, exp: i32) -> Rat {

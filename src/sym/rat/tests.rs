@@ -93,3 +93,48 @@ fn floats_and_decimals() {
     );
     assert_eq!(Rat::decimal(&BigInt::from(15), 2), Rat::int(1500));
 }
+
+#[test]
+fn typed_quick_agrees_with_typed() {
+    let mut xs = vec![
+        0.1,
+        0.2,
+        0.3,
+        0.866,
+        -2.5,
+        123.456,
+        1e-5,
+        0.30000000000000004,
+        1.0 / 3.0,
+        0.1 + 0.2,
+        2.0,
+        -7.0,
+        1e-13,
+        12345.678901234,
+        0.999999999999999,
+        1e20,
+        3.14159,
+    ];
+    for k in 1..3000 {
+        xs.push(f64::from(k) / 100.0);
+        xs.push(f64::from(k) / 1000.0);
+        xs.push(f64::from(k) * 0.1);
+        xs.push(-f64::from(k) / 7.0);
+        xs.push(f64::from(k) * 0.001 + 0.5);
+    }
+    let mut found = 0;
+    for x in xs {
+        if let Some(q) = Rat::typed_quick(x) {
+            found += 1;
+            let t = Rat::typed(x).expect("finite");
+            assert_eq!(q, t, "{x}");
+            assert_eq!(q.is_typed(), t.is_typed(), "{x}");
+        }
+    }
+    // (most of them are decimals it reads at once)
+    assert!(found > 10_000, "{found}");
+    assert_eq!(Rat::typed_quick(0.37), Rat::new(37, 100));
+    assert!(Rat::typed_quick(0.37).is_some_and(|r| r.is_typed()));
+    assert_eq!(Rat::typed_quick(1.0 / 3.0), None);
+    assert_eq!(Rat::typed_quick(f64::NAN), None);
+}
