@@ -81,6 +81,45 @@ fn max_memory_caps_the_whole_run() {
 }
 
 #[test]
+fn the_recipes_of_exact_numbers_count_against_the_budget() {
+    // Each sine of an exact t keeps its recipe (for `==` to bound it):
+    // ~260 bytes an item, counted as numbers of 8 bytes. 5,001 of them
+    // pass 1 MB, though their floats alone are 80 kB; 500,001 took 1.1 GB
+    // uncounted.
+    let out = bounded(&[
+        "--max-memory",
+        "1M",
+        "-e",
+        "xs = [sin(t) for t in 0:0.001:5]",
+    ]);
+    assert_eq!(out.code, Some(1), "{}", out.stderr);
+    let message = out.stderr.lines().next().unwrap_or("");
+    assert!(
+        message.starts_with("<-e>:1:6: domain error: this would hold ")
+            && message.ends_with("; --max-memory allows at most 125,000 numbers (1 MB)"),
+        "{message}"
+    );
+    let wanted: u64 = message["<-e>:1:6: domain error: this would hold ".len()..]
+        .split(' ')
+        .next()
+        .unwrap_or("")
+        .replace(',', "")
+        .parse()
+        .expect("a count");
+    assert!((125_000..400_000).contains(&wanted), "{wanted}");
+    // Fractions are held inline, no recipe: the range itself and the
+    // list of its items fit (2 numbers an item).
+    let out = bounded(&[
+        "--max-memory",
+        "1M",
+        "-e",
+        "xs = [t for t in 0:0.001:5]\nsum(xs) == 12502.5",
+    ]);
+    assert_eq!(out.code, Some(0), "{}", out.stderr);
+    assert!(out.stdout.ends_with("true\n"), "{}", out.stdout);
+}
+
+#[test]
 fn timeout_stops_a_long_script() {
     let dir = std::env::temp_dir().join(format!("chasles-budget-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("a temp dir");

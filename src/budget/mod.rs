@@ -4,7 +4,11 @@
 //! by Ctrl-C, or by a Jupyter `interrupt_request` from another thread), a
 //! deadline (`--timeout`, the REPL preview's few milliseconds) and a count
 //! of the numbers a statement holds, capped for one statement and for the
-//! whole run.
+//! whole run. What a value holds besides its numbers counts as numbers
+//! of 8 bytes (`eval::env::numbers`): the recipe that keeps an exact
+//! number's form, at about its bytes, fixed when it is made
+//! (`values::exact::Exact::weight`: a node, its operands, what no one
+//! else holds under them).
 //!
 //! A front end makes a [`Budget`] and [`Budget::enter`]s it on the thread
 //! that evaluates; every layer below (statements, comprehensions, ranges,

@@ -239,13 +239,17 @@ pub struct Env {
 
 /// The numbers a value holds, as the memory budget counts them
 /// ([`crate::budget`]): its entries, a list's or tuple's items' own, a
-/// picture's items', one for anything else. A list bound to two names
-/// counts twice.
+/// picture's items', one for anything else; and the recipe of an exact
+/// form, a number for each 8 of its bytes ([`Exact::weight`]: `[sin(t)
+/// for t in 0:0.001:500]` holds each sine's recipe). A list bound to two
+/// names counts twice.
+///
+/// [`Exact::weight`]: crate::values::exact::Exact::weight
 #[inline]
 pub fn numbers(v: &Value) -> u64 {
     // (a number, vector or matrix in place; the containers out of line)
     match v {
-        Value::Num { m, .. } => m.len() as u64,
+        Value::Num { m, exact, .. } => m.len() as u64 + exact.weight() / 8,
         _ => numbers_within(v),
     }
 }
@@ -253,7 +257,7 @@ pub fn numbers(v: &Value) -> u64 {
 /// [`numbers`] of a value that is not one array of numbers.
 fn numbers_within(v: &Value) -> u64 {
     match v {
-        Value::Num { m, .. } => m.len() as u64,
+        Value::Num { m, exact, .. } => m.len() as u64 + exact.weight() / 8,
         Value::Tuple(vs) => vs.iter().map(numbers).sum(),
         Value::List(vs) => vs.iter().map(numbers).sum::<u64>() + vs.len() as u64,
         Value::Formula { m, .. } => (m.rows * m.cols) as u64,

@@ -20,6 +20,9 @@ use std::rc::Rc;
 
 use super::num::Num;
 pub use super::operation::Operation;
+pub use fraction::Fraction;
+
+mod fraction;
 use super::value::Value;
 use crate::check::ty::Kind;
 use crate::sym::Mat;
@@ -44,38 +47,6 @@ pub enum Exact {
     Ratio(Fraction),
 }
 
-/// A reduced fraction num/den (den > 0) small enough to sit inline in an
-/// [`Exact`] (a denominator below 2³²: the value stays 104 bytes), with
-/// the typed mark its [`Rat`] carries (`0.37` as typed prints as a
-/// decimal, `37/100` computed from integers as a fraction: the same form
-/// the recipe would have made).
-#[derive(Clone, Copy, PartialEq, Eq, Debug)]
-pub struct Fraction {
-    num: i64,
-    den: u32,
-    typed: bool,
-}
-
-impl Fraction {
-    /// `r` inline, when it is a small fraction whose denominator fits.
-    pub fn of(r: &Rat) -> Option<Fraction> {
-        let (num, den) = r.small()?;
-        Some(Fraction {
-            num,
-            den: u32::try_from(den).ok()?,
-            typed: r.is_typed(),
-        })
-    }
-    /// The fraction as a [`Rat`], its typed mark with it.
-    pub fn rat(self) -> Rat {
-        Rat::Small {
-            num: self.num,
-            den: i64::from(self.den),
-            typed: self.typed,
-        }
-    }
-}
-
 impl std::fmt::Debug for Exact {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
@@ -86,7 +57,7 @@ impl std::fmt::Debug for Exact {
                 Some(None) => f.write_str("Float"),
                 None => f.write_str("Later"),
             },
-            Exact::Ratio(r) => write!(f, "Ratio({}/{})", r.num, r.den),
+            Exact::Ratio(r) => write!(f, "Ratio({:?})", r.rat()),
         }
     }
 }
@@ -99,6 +70,35 @@ pub struct Later {
     /// The longest chain of recipes still waiting under this one (0 once
     /// the form is known); bounded by [`MAX_PENDING_DEPTH`].
     depth: u32,
+    /// About how many bytes this holds, as the memory budget counts them
+    /// ([`Exact::weight`]): fixed when it is made.
+    bytes: u32,
+}
+
+/// The bytes of a [`Later`] node with its reference counts, as the
+/// memory budget counts them ([`Exact::weight`]).
+const NODE_BYTES: u64 = std::mem::size_of::<Later>() as u64 + 16;
+
+/// The bytes of a closure's box and what it captures, estimated (a
+/// range's item: its k and a shared pair of forms).
+const CLOSURE_BYTES: u64 = 32;
+
+/// The bytes of one term of an exact form (its place in the map, its
+/// monomial and coefficient), estimated.
+const TERM_BYTES: u64 = 96;
+
+/// About the bytes an exact form `m` holds ([`Exact::weight`]).
+fn form_bytes(m: &Mat) -> u64 {
+    let entry = std::mem::size_of::<Expr>() as u64;
+    m.data
+        .iter()
+        .map(|e| entry + TERM_BYTES * e.terms.len() as u64)
+        .sum()
+}
+
+/// [`Exact::weight`] as a node's field holds it.
+fn clamp(bytes: u64) -> u32 {
+    u32::try_from(bytes).unwrap_or(u32::MAX)
 }
 
 /// The longest chain of waiting recipes kept (`x = x + 0.1` typed
@@ -151,6 +151,24 @@ impl Operands {
             Operands::Copied(vs) => vs.iter().map(pending_depth).max().unwrap_or(0),
         }
     }
+    /// About the bytes the operands hold beyond the recipe's node, as the
+    /// memory budget counts them ([`Exact::weight`]): each operand's
+    /// value, and the recipe under it when no one else holds it (one that
+    /// a binding or another item also holds is counted there, once).
+    fn bytes(&self) -> u64 {
+        let value = std::mem::size_of::<Value>() as u64;
+        let own = |v: &Value| match v {
+            Value::Num {
+                exact: Exact::Later(l),
+                ..
+            } if Rc::strong_count(l) == 1 => u64::from(l.bytes),
+            _ => 0,
+        };
+        match self {
+            Operands::Pair(a, b) => 2 * value + own(a) + own(b),
+            Operands::Copied(vs) => vs.iter().map(|v| value + own(v)).sum(),
+        }
+    }
     /// The operands in order.
     pub fn refs(&self) -> Vec<&Value> {
         match self {
@@ -164,11 +182,13 @@ impl Exact {
     /// A form known now (a formula whose entries are all exact numbers).
     pub fn known(m: Mat) -> Exact {
         let form = OnceCell::new();
+        let bytes = clamp(NODE_BYTES + form_bytes(&m));
         let _ = form.set(is_exact(&m).then_some(m));
         Exact::Later(Rc::new(Later {
             form,
             make: Cell::new(None),
             depth: 0,
+            bytes,
         }))
     }
     /// A form computed by `p` when first asked for; at once when the
@@ -183,10 +203,12 @@ impl Exact {
                 None => Exact::Float,
             };
         }
+        let bytes = clamp(NODE_BYTES + p.args.bytes());
         Exact::Later(Rc::new(Later {
             form: OnceCell::new(),
             make: Cell::new(Some(Make::Op(p))),
             depth,
+            bytes,
         }))
     }
     /// A form computed by `make` when first asked for (None: no exact
@@ -197,7 +219,24 @@ impl Exact {
             form: OnceCell::new(),
             make: Cell::new(Some(Make::Fn(Box::new(make)))),
             depth: 0,
+            bytes: clamp(NODE_BYTES + CLOSURE_BYTES),
         }))
+    }
+    /// About how many bytes this exact form holds beyond the value it
+    /// belongs to, as the memory budget counts them (`eval::env::numbers`,
+    /// 8 bytes a number): none for a float, numbers as typed or a
+    /// fraction held inline; for a recipe, its node, its operands' values
+    /// and the recipes under them that no one else holds; for a form
+    /// known at once, its terms (an estimate: [`TERM_BYTES`] a term). Fixed
+    /// when the form is made (a form worked out later, kept beside its
+    /// recipe, is not counted), so that the bindings' count stays what it
+    /// was when they were bound.
+    #[inline]
+    pub fn weight(&self) -> u64 {
+        match self {
+            Exact::Later(l) => u64::from(l.bytes),
+            _ => 0,
+        }
     }
     /// `f` of the recipe this value was made by, when it has no exact
     /// form but was made by an operation over operands that may have one
@@ -543,48 +582,4 @@ pub fn block(m: &Mat, st: crate::sym::print::Style, indent: usize, one_line: boo
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn decimals_are_read_as_typed() {
-        assert_eq!(decimal(0.866), Rat::new(433, 500));
-        assert_eq!(decimal(0.1), Rat::new(1, 10));
-        assert_eq!(decimal(-2.5), Rat::new(-5, 2));
-        assert_eq!(decimal(3.0), Some(Rat::int(3)));
-        let tiny = decimal(1e-13).expect("finite");
-        assert_eq!(tiny.mul(&Rat::int(10_000_000_000_000)), Rat::ONE);
-        assert_eq!(decimal(f64::NAN), None);
-        assert!(is_short_decimal(&Rat::new(433, 500).unwrap()));
-        assert!(!is_short_decimal(&Rat::new(1, 3).unwrap()));
-    }
-
-    #[test]
-    fn a_recipe_runs_once_and_a_float_has_no_form() {
-        thread_local!(static CALLS: Cell<u32> = const { Cell::new(0) });
-        fn pi(_: &Operation, _: &[&Value], _: &Kind) -> Option<Mat> {
-            CALLS.with(|c| c.set(c.get() + 1));
-            Some(Mat::scalar(Expr::pi()))
-        }
-        let m = Num::Scalar(0.5);
-        let e = Exact::pending(Pending {
-            op: Operation::Neg,
-            args: Operands::of(&[Value::scalar(0.5)]),
-            kind: Kind::Scalar,
-            run: pi,
-        });
-        assert_eq!(e.form(&m), Some(Mat::scalar(Expr::pi())));
-        assert_eq!(e.clone().form(&m), Some(Mat::scalar(Expr::pi())));
-        assert_eq!(CALLS.with(Cell::get), 1);
-        assert_eq!(Exact::Float.form(&m), None);
-        assert_eq!(
-            Exact::Typed.form(&m),
-            Some(Mat::scalar(Expr::constant(Coef::rat(
-                Rat::new(1, 2).unwrap()
-            ))))
-        );
-        // A float coefficient is no exact form.
-        let approx = Mat::scalar(Expr::constant(Coef::Approx { re: 0.3, im: 0.0 }));
-        assert_eq!(Exact::known(approx).form(&m), None);
-    }
-}
+mod tests;
