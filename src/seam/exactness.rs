@@ -66,8 +66,9 @@ impl Op<'_> {
     }
 
     /// The exact form of `a + b`, `a - b`, `a b` or `a / b` of two numbers
-    /// whose exact forms are fractions at hand (as typed, [`Rat::typed_quick`],
-    /// or [`Exact::Ratio`]), made at once as a fraction held inline; None
+    /// whose exact forms are fractions at hand (whole numbers as typed,
+    /// fractions held inline, [`Exact::Ratio`], and decimals as typed
+    /// beside one), made at once as a fraction held inline; None
     /// for anything else (a recipe then keeps the operands). The fraction
     /// is the one the recipe would make, typed mark and all (the sum and
     /// product of [`Rat`], as the symbolic path adds and multiplies the
@@ -77,8 +78,31 @@ impl Op<'_> {
         let Op::Arith(op @ (BinOp::Add | BinOp::Sub | BinOp::Mul | BinOp::Div)) = self else {
             return None;
         };
-        if *kind != Kind::Scalar {
+        if !matches!(kind, Kind::Scalar) {
             return None;
+        }
+        // (in machine words where they fit, else as `Rat` does; decimals
+        // as typed beside a fraction: `0.1 k` of two numbers typed keeps
+        // its recipe, as a statement's literals cost no reading of digits)
+        let inline = |v: &Value| {
+            matches!(
+                v,
+                Value::Num {
+                    exact: Exact::Ratio(_),
+                    ..
+                }
+            )
+        };
+        let decimals = inline(args[0]) || inline(args[1]);
+        let (a, b) = (at_hand(args[0], decimals)?, at_hand(args[1], decimals)?);
+        let quick = match op {
+            BinOp::Add => a.add(b),
+            BinOp::Sub => a.sub(b),
+            BinOp::Mul => a.mul(b),
+            _ => a.div(b),
+        };
+        if quick.is_some() {
+            return quick;
         }
         let (x, y) = (held_fraction(args[0])?, held_fraction(args[1])?);
         let r = match op {
@@ -262,6 +286,28 @@ impl Op<'_> {
             Op::Call(b, _) => exact_call(b),
             _ => true,
         }
+    }
+}
+
+/// [`held_fraction`] in machine words: a whole number as typed, a
+/// fraction held inline, and with `decimals` a decimal as typed
+/// ([`Fraction::typed`]).
+#[inline]
+fn at_hand(v: &Value, decimals: bool) -> Option<Fraction> {
+    match v {
+        Value::Num {
+            kind: Kind::Scalar,
+            m: crate::values::num::Num::Scalar(x),
+            exact,
+        } => match exact {
+            Exact::Typed => match Fraction::whole(*x) {
+                None if decimals => Fraction::typed(*x),
+                whole => whole,
+            },
+            Exact::Ratio(r) => Some(*r),
+            _ => None,
+        },
+        _ => None,
     }
 }
 

@@ -269,18 +269,33 @@ mod tests {
                 }
             }
         }
-        assert!(inline > 300, "{inline}");
+        assert!(inline > 100, "{inline}");
         // 37/100 of integers is a fraction, not a typed decimal
         let v = Op::Arith(Div)
             .apply_pair(Box::new(typed(37.0)), Box::new(typed(100.0)), &Kind::Scalar)
             .expect("a quotient");
         assert_eq!(form_of(&v), (Rat::new(37, 100).expect("37/100"), false));
-        // 0.1 · 3 is 3/10 as typed, its floats 0.30000000000000004
+        // 0.1 · 3 is 3/10 as typed, its floats 0.30000000000000004: of
+        // two numbers typed, a recipe; beside a fraction, inline
         let v = Op::Arith(Mul)
             .apply_pair(Box::new(typed(0.1)), Box::new(typed(3.0)), &Kind::Scalar)
             .expect("a product");
         assert_eq!(form_of(&v), (Rat::new(3, 10).expect("3/10"), true));
         assert_eq!(v.as_scalar(), Some(0.1 * 3.0));
+        assert!(matches!(
+            v,
+            Value::Num {
+                exact: Exact::Later(_),
+                ..
+            }
+        ));
+        let w = Op::Arith(Div)
+            .apply_pair(Box::new(typed(3.0)), Box::new(typed(1.0)), &Kind::Scalar)
+            .expect("a quotient");
+        let v = Op::Arith(Mul)
+            .apply_pair(Box::new(typed(0.1)), Box::new(w), &Kind::Scalar)
+            .expect("a product");
+        assert_eq!(form_of(&v), (Rat::new(3, 10).expect("3/10"), true));
         assert!(matches!(
             v,
             Value::Num {

@@ -144,29 +144,35 @@ impl Operands {
     pub fn of<V: std::borrow::Borrow<Value>>(args: &[V]) -> Operands {
         Operands::Copied(args.iter().map(|v| v.borrow().clone()).collect())
     }
-    /// The longest chain of waiting recipes under the operands.
-    fn max_depth(&self) -> u32 {
-        match self {
-            Operands::Pair(a, b) => pending_depth(a).max(pending_depth(b)),
-            Operands::Copied(vs) => vs.iter().map(pending_depth).max().unwrap_or(0),
-        }
-    }
-    /// About the bytes the operands hold beyond the recipe's node, as the
-    /// memory budget counts them ([`Exact::weight`]): each operand's
-    /// value, and the recipe under it when no one else holds it (one that
-    /// a binding or another item also holds is counted there, once).
-    fn bytes(&self) -> u64 {
-        let value = std::mem::size_of::<Value>() as u64;
-        let own = |v: &Value| match v {
+    /// The longest chain of waiting recipes under the operands, and about
+    /// the bytes they hold beyond the recipe's node, as the memory budget
+    /// counts them ([`Exact::weight`]): each operand's value, and the
+    /// recipe under it when no one else holds it (one that a binding or
+    /// another item also holds is counted there, once). One pass.
+    #[inline]
+    fn under(&self) -> (u32, u32) {
+        const VALUE: u32 = std::mem::size_of::<Value>() as u32;
+        let one = |v: &Value| match v {
             Value::Num {
                 exact: Exact::Later(l),
                 ..
-            } if Rc::strong_count(l) == 1 => u64::from(l.bytes),
-            _ => 0,
+            } => {
+                let own = if Rc::strong_count(l) == 1 { l.bytes } else { 0 };
+                // (a form found missing keeps its recipe, [`Exact::with_recipe`]:
+                // it still counts, so that kept recipes stay as short as
+                // waiting ones; a form known counts 0)
+                let depth = match l.form.get() {
+                    Some(Some(_)) => 0,
+                    _ => l.depth,
+                };
+                (depth, VALUE.saturating_add(own))
+            }
+            _ => (0, VALUE),
         };
+        let both = |(d, b): (u32, u32), (e, c): (u32, u32)| (d.max(e), b.saturating_add(c));
         match self {
-            Operands::Pair(a, b) => 2 * value + own(a) + own(b),
-            Operands::Copied(vs) => vs.iter().map(|v| value + own(v)).sum(),
+            Operands::Pair(a, b) => both(one(a), one(b)),
+            Operands::Copied(vs) => vs.iter().map(one).fold((0, 0), both),
         }
     }
     /// The operands in order.
@@ -195,7 +201,8 @@ impl Exact {
     /// chain of waiting recipes under it is longer than
     /// [`MAX_PENDING_DEPTH`].
     pub fn pending(p: Pending) -> Exact {
-        let depth = 1 + p.args.max_depth();
+        let (under, bytes) = p.args.under();
+        let depth = 1 + under;
         if depth > MAX_PENDING_DEPTH {
             let form = (p.run)(&p.op, &p.args.refs(), &p.kind).filter(is_exact);
             return match form {
@@ -203,7 +210,7 @@ impl Exact {
                 None => Exact::Float,
             };
         }
-        let bytes = clamp(NODE_BYTES + p.args.bytes());
+        let bytes = clamp(NODE_BYTES + u64::from(bytes));
         Exact::Later(Rc::new(Later {
             form: OnceCell::new(),
             make: Cell::new(Some(Make::Op(p))),
@@ -308,20 +315,6 @@ impl Exact {
                 })
                 .clone(),
         }
-    }
-}
-
-/// The chain of waiting recipes under a value's exact form (0 when it
-/// is known or there is none).
-fn pending_depth(v: &Value) -> u32 {
-    match v {
-        // (a form found missing keeps its recipe, [`Exact::with_recipe`]:
-        // it still counts, so that kept recipes stay as short as waiting ones)
-        Value::Num {
-            exact: Exact::Later(l),
-            ..
-        } if !matches!(l.form.get(), Some(Some(_))) => l.depth,
-        _ => 0,
     }
 }
 

@@ -88,3 +88,49 @@ fn a_recipe_runs_once_and_a_float_has_no_form() {
     let approx = Mat::scalar(Expr::constant(Coef::Approx { re: 0.3, im: 0.0 }));
     assert_eq!(Exact::known(approx).form(&m), None);
 }
+
+/// Fractions in machine words are the fractions of [`Rat`], typed mark
+/// and all: as typed, and their sums, differences, products, quotients.
+#[test]
+fn fractions_in_words_are_those_of_rat() {
+    let mut xs = vec![
+        0.0, 1.0, -3.0, 0.1, 0.37, -2.5, 0.5, 0.125, 0.4, 1e6, 7.0, 123.456,
+    ];
+    for k in 1..200 {
+        xs.push(f64::from(k) * 0.01);
+        xs.push(-f64::from(k) / 8.0);
+    }
+    let mut fractions = Vec::new();
+    for &x in &xs {
+        let quick = Fraction::typed(x);
+        let slow = Rat::typed(x).expect("finite");
+        if let Some(f) = quick {
+            assert_eq!(f.rat(), slow, "{x}");
+            assert_eq!(f.rat().is_typed(), slow.is_typed(), "{x}");
+            fractions.push(f);
+        }
+    }
+    assert!(fractions.len() > 350, "{}", fractions.len());
+    // (and fractions from integers: 1/3, −2/7)
+    fractions.push(Fraction::of(&Rat::new(1, 3).expect("1/3")).expect("inline"));
+    fractions.push(Fraction::of(&Rat::new(-2, 7).expect("-2/7")).expect("inline"));
+    let same = |f: Option<Fraction>, r: Option<Rat>, what: &str| {
+        let Some(f) = f else { return };
+        let r = r.expect(what);
+        assert_eq!(f.rat(), r, "{what}");
+        assert_eq!(f.rat().is_typed(), r.is_typed(), "{what}");
+    };
+    let pick = |i: usize| fractions[(i * 7919) % fractions.len()];
+    for i in 0..3000 {
+        let (a, b) = (pick(i), pick(i + 1 + i / 3));
+        let (x, y) = (a.rat(), b.rat());
+        same(a.add(b), Some(x.add(&y)), "+");
+        same(a.sub(b), Some(x.add(&y.neg())), "-");
+        same(a.mul(b), Some(x.mul(&y)), "*");
+        if !y.is_zero() {
+            same(a.div(b), y.inv().map(|v| x.mul(&v)), "/");
+        } else {
+            assert_eq!(a.div(b), None);
+        }
+    }
+}
