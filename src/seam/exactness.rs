@@ -96,10 +96,10 @@ impl Op<'_> {
         let decimals = inline(args[0]) || inline(args[1]);
         let (a, b) = (at_hand(args[0], decimals)?, at_hand(args[1], decimals)?);
         let quick = match op {
-            BinOp::Add => a.add(b),
-            BinOp::Sub => a.sub(b),
-            BinOp::Mul => a.mul(b),
-            _ => a.div(b),
+            BinOp::Add => a.plus(b),
+            BinOp::Sub => a.minus(b),
+            BinOp::Mul => a.times(b),
+            _ => a.over(b),
         };
         if quick.is_some() {
             return quick;

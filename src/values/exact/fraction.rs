@@ -57,7 +57,7 @@ impl Fraction {
             p *= 10.0;
             den *= 10;
             let y = x * p;
-            if !(y.abs() < 1e15) {
+            if y.is_nan() || y.abs() >= 1e15 {
                 return None;
             }
             // (the nearest integer; a miss only gives None)
@@ -80,27 +80,27 @@ impl Fraction {
     }
     /// `self + o`.
     #[inline]
-    pub fn add(self, o: Fraction) -> Option<Fraction> {
+    pub fn plus(self, o: Fraction) -> Option<Fraction> {
         let (p, q, r, s) = self.words(o);
         reduced(p * s + r * q, (q * s) as u128, self.typed || o.typed)
     }
     /// `self − o`.
     #[inline]
-    pub fn sub(self, o: Fraction) -> Option<Fraction> {
+    pub fn minus(self, o: Fraction) -> Option<Fraction> {
         if o.num == i64::MIN {
             return None;
         }
-        self.add(Fraction { num: -o.num, ..o })
+        self.plus(Fraction { num: -o.num, ..o })
     }
     /// `self · o`.
     #[inline]
-    pub fn mul(self, o: Fraction) -> Option<Fraction> {
+    pub fn times(self, o: Fraction) -> Option<Fraction> {
         let (p, q, r, s) = self.words(o);
         reduced(p * r, (q * s) as u128, self.typed || o.typed)
     }
     /// `self / o`; None for o = 0.
     #[inline]
-    pub fn div(self, o: Fraction) -> Option<Fraction> {
+    pub fn over(self, o: Fraction) -> Option<Fraction> {
         if o.num == 0 || o.num == i64::MIN {
             return None;
         }
@@ -110,7 +110,7 @@ impl Fraction {
             den: u32::try_from(den).ok()?,
             typed: o.typed && den != 1,
         };
-        self.mul(inverse)
+        self.times(inverse)
     }
     /// The numerators and denominators of two fractions, widened.
     #[inline]

@@ -124,13 +124,13 @@ fn fractions_in_words_are_those_of_rat() {
     for i in 0..3000 {
         let (a, b) = (pick(i), pick(i + 1 + i / 3));
         let (x, y) = (a.rat(), b.rat());
-        same(a.add(b), Some(x.add(&y)), "+");
-        same(a.sub(b), Some(x.add(&y.neg())), "-");
-        same(a.mul(b), Some(x.mul(&y)), "*");
+        same(a.plus(b), Some(x.add(&y)), "+");
+        same(a.minus(b), Some(x.add(&y.neg())), "-");
+        same(a.times(b), Some(x.mul(&y)), "*");
         if !y.is_zero() {
-            same(a.div(b), y.inv().map(|v| x.mul(&v)), "/");
+            same(a.over(b), y.inv().map(|v| x.mul(&v)), "/");
         } else {
-            assert_eq!(a.div(b), None);
+            assert_eq!(a.over(b), None);
         }
     }
 }
