@@ -52,7 +52,7 @@
 //! them the sum: [`Ty::moves`]), so they too compose alike under every
 //! bracketing.
 
-use super::ty::{Frame, Frames, Kind, Ty};
+use super::ty::{Frame, Frames, Kind, Moves, Ty};
 
 /// One end of a map.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -147,7 +147,7 @@ pub enum Clash {
 /// ([`Ty::moves`] counts the displacements of an untagged product).
 pub fn factor_of(t: &Ty) -> Factor {
     let shape = Shape::of(&t.kind);
-    match (&t.frames, shape, t.moves) {
+    match (&t.frames, shape, t.moves.map(Moves::get)) {
         (Frames::None, Shape::Operator | Shape::Quantity, Some(k)) => Factor::Untagged(k),
         _ => factor(&t.frames, shape),
     }
@@ -271,7 +271,7 @@ pub fn with_kind(t: &Ty, kind: Kind) -> Ty {
     let mut out = Ty::new(kind, t.frames);
     out.free = t.free && kind.is_vector();
     if let Factor::Untagged(k) = factor_of(t) {
-        out.moves = unusual(k, &out.kind);
+        out.moves = unusual(k, &out.kind).map(Moves::new);
     }
     out
 }
@@ -280,7 +280,7 @@ pub fn with_kind(t: &Ty, kind: Kind) -> Ty {
 /// n times those of X (as [`product`] counts X·X·…·X), when not the usual.
 pub fn untagged_power(x: &Ty, n: Option<i64>, kind: &Kind) -> Option<u32> {
     let (Factor::Untagged(k), Some(n)) = (factor_of(x), n) else {
-        return x.moves;
+        return x.moves.map(Moves::get);
     };
     let n = u32::try_from(n.unsigned_abs()).unwrap_or(u32::MAX);
     unusual(k.saturating_mul(n), kind)

@@ -7,21 +7,46 @@
 
 use super::ty::{Kind, Ty};
 
-/// Every list of part types made so far, stored once for the whole
-/// process so that [`Ty`] stays `Copy` (as [`Kind::tuple`]'s kinds).
-static PARTS: std::sync::LazyLock<
-    std::sync::Mutex<std::collections::HashSet<&'static [Ty], foldhash::fast::FixedState>>,
-> = std::sync::LazyLock::new(Default::default);
+/// A list of part types, interned for the whole process and named by its
+/// number, so that [`Ty`] stays `Copy` and small (it moves through every
+/// node of every statement: a slice reference in it cost the 100k-statement
+/// script ~80 instructions a statement, issue 40).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Parts(std::num::NonZeroU32);
 
-fn intern(parts: &[Ty]) -> &'static [Ty] {
-    // The set is only added to, so it is whole even after a panic.
-    let mut set = PARTS.lock().unwrap_or_else(|e| e.into_inner());
-    if let Some(&p) = set.get(parts) {
+/// Every list of part types made so far, by its contents and by number.
+#[derive(Default)]
+struct Table {
+    ids: std::collections::HashMap<&'static [Ty], Parts, foldhash::fast::FixedState>,
+    all: Vec<&'static [Ty]>,
+}
+
+static PARTS: std::sync::LazyLock<std::sync::Mutex<Table>> =
+    std::sync::LazyLock::new(Default::default);
+
+fn table() -> std::sync::MutexGuard<'static, Table> {
+    // The table is only added to, so it is whole even after a panic.
+    PARTS.lock().unwrap_or_else(|e| e.into_inner())
+}
+
+fn intern(parts: &[Ty]) -> Parts {
+    let mut t = table();
+    if let Some(&p) = t.ids.get(parts) {
         return p;
     }
-    let p: &'static [Ty] = Box::leak(parts.to_vec().into_boxed_slice());
-    set.insert(p);
+    let list: &'static [Ty] = Box::leak(parts.to_vec().into_boxed_slice());
+    t.all.push(list);
+    let n = u32::try_from(t.all.len()).expect("fewer than 2^32 tuple types");
+    let p = Parts(std::num::NonZeroU32::new(n).expect("counted from 1"));
+    t.ids.insert(list, p);
     p
+}
+
+impl Parts {
+    /// The part types this number stands for.
+    pub fn get(self) -> &'static [Ty] {
+        table().all[self.0.get() as usize - 1]
+    }
 }
 
 impl Ty {
@@ -44,7 +69,7 @@ impl Ty {
         };
         let kind = *kinds.get(i)?;
         match self.parts {
-            Some(parts) => parts.get(i).copied(),
+            Some(parts) => parts.get().get(i).copied(),
             None => Some(Ty::new(kind, self.frames.part(&kind))),
         }
     }
@@ -86,7 +111,7 @@ impl Ty {
     /// type the list keeps ([`Ty::list_of`]), else `kind` with the list's
     /// frames.
     pub fn item(&self, kind: Kind) -> Ty {
-        match (self.kind, self.parts) {
+        match (self.kind, self.parts.map(Parts::get)) {
             (Kind::List(_), Some([item])) if item.kind == kind => *item,
             _ => Ty::new(kind, self.frames),
         }
@@ -97,7 +122,7 @@ impl Ty {
 /// know a part's kind better than the checker: `Unknown` becomes SE(3)).
 pub fn with_kinds(t: &Ty, kind: Kind) -> Ty {
     let mut out = Ty::new(kind, t.frames);
-    if let (Some(parts), Kind::Tuple(kinds)) = (t.parts, kind)
+    if let (Some(parts), Kind::Tuple(kinds)) = (t.parts.map(Parts::get), kind)
         && parts.len() == kinds.len()
     {
         let refined: Vec<Ty> = parts

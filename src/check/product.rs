@@ -66,7 +66,7 @@ pub fn mul(l: &Ty, r: &Ty, ops: Operands) -> Result<Ty, RuleError> {
         Err(Clash::Transposed { left }) => return Err(transposed_factor(l, r, left, ops)),
     };
     let mut out = Ty::new(kind, frames);
-    out.moves = moves;
+    out.moves = moves.map(super::ty::Moves::new);
     // A rotation (or any matrix but a transform) of a free vector is one.
     out.free = r.free && kind.is_vector();
     Ok(conjugation(l, r, out))

@@ -264,7 +264,7 @@ pub fn pow(base: &Ty, exp: &Ty, literal: Option<f64>) -> Result<Ty, RuleError> {
             };
             let moves = algebra::untagged_power(base, n, &kind);
             let mut out = Ty::new(kind, frames);
-            out.moves = moves;
+            out.moves = moves.map(super::ty::Moves::new);
             Ok(out)
         }
     }

@@ -466,6 +466,25 @@ impl Algebra {
     }
 }
 
+/// How many displacements an untagged product stands for ([`Ty::moves`]),
+/// in four bytes with its `None` (a type moves through every node of every
+/// statement, issue 40): kept as k + 1, saturating, as the count itself
+/// saturates in [`super::algebra`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Moves(std::num::NonZeroU32);
+
+impl Moves {
+    /// `k` displacements (at most `u32::MAX - 1`: a product longer than
+    /// that is counted as that long).
+    pub fn new(k: u32) -> Moves {
+        Moves(std::num::NonZeroU32::MIN.saturating_add(k))
+    }
+    /// The number of displacements.
+    pub fn get(self) -> u32 {
+        self.0.get() - 1
+    }
+}
+
 /// The checker's knowledge of an expression: kind and frames.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct Ty {
@@ -481,7 +500,7 @@ pub struct Ty {
     /// untagged rotation or transform is one displacement of the frame it
     /// meets, an untagged [`Kind::So3`]/[`Kind::Se3`] matrix none), so that
     /// `A * B * T_sb` moves {b} alike under every bracketing.
-    pub moves: Option<u32>,
+    pub moves: Option<Moves>,
     /// For a vector: a free vector (ω, v, f, m, an axis; [`super::role`]),
     /// which only rotates: a transform moves points, so `T * ω` is refused.
     pub free: bool,
@@ -489,7 +508,7 @@ pub struct Ty {
     /// `(T_ab, T_cb)`, whose one tag is none): each part's type, so that
     /// `t[1]` and `(A, B) = t` keep part 1's frames ([`super::parts`]).
     /// None when the tuple's tag says its parts' ([`Frames::part`]).
-    pub parts: Option<&'static [Ty]>,
+    pub parts: Option<super::parts::Parts>,
 }
 
 impl Ty {

@@ -538,4 +538,11 @@ mod tests {
         assert_eq!(size_of::<Result<Ty, RuleError>>(), size_of::<Ty>());
         assert_eq!(size_of::<Result<(), Diagnostic>>(), size_of::<usize>());
     }
+
+    /// A type moves through every node of every statement: a tuple's part
+    /// types are a number in it, not a slice ([`crate::check::parts`]).
+    #[test]
+    fn a_type_stays_small() {
+        assert!(size_of::<Ty>() <= 72, "{}", size_of::<Ty>());
+    }
 }

@@ -82,7 +82,7 @@ fn row_products_of_untagged_operators_count_their_displacements() {
     let (f, moves) = product(&u, &uu, &SE3).unwrap();
     assert_eq!((f, moves), (Frames::None, Some(2)));
     let mut two = Ty::new(SE3, Frames::None);
-    two.moves = Some(2);
+    two.moves = Some(crate::check::ty::Moves::new(2));
     let left = product(&two, &t, &SE3).unwrap().0;
     let inner = Ty::new(SE3, product(&uu, &t, &SE3).unwrap().0);
     let right = product(&u, &inner, &SE3).unwrap().0;
