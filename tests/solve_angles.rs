@@ -186,3 +186,74 @@ fn a_root_the_quotient_cancelled_is_not_a_root() {
     let (rs, note) = roots("(x^2 - 1)/(x - 1) == 0");
     assert_eq!((rs, note.as_str()), (vec![-1.0], ""));
 }
+
+/// An equation whose sides are one canonical form once a factor is
+/// cancelled holds where the sides are defined as typed, not everywhere:
+/// `x/x == 1` is undefined at x = 0 (subs says division by zero there),
+/// and solve said it "holds for every x". Each excluded point is checked
+/// by the same substitution as typed; a step whose domain is not known
+/// here (a square root, a sine in a divisor) says "where both sides are
+/// defined", and an equation with no division still holds for every x.
+#[test]
+fn an_identity_holds_only_where_the_sides_are_defined() {
+    let cases = [
+        (
+            "x/x == 1",
+            "holds for every x ≠ 0: at x = 0 a side is undefined",
+        ),
+        (
+            "x^2/x == x",
+            "holds for every x ≠ 0: at x = 0 a side is undefined",
+        ),
+        (
+            "(x^2 - 1)/(x - 1) == x + 1",
+            "holds for every x ≠ 1: at x = 1",
+        ),
+        ("1/x == 1/x", "holds for every x ≠ 0"),
+        ("x^-1 * x == 1", "holds for every x ≠ 0"),
+        ("(x, x/x) == (x, 1)", "holds for every x ≠ 0"),
+        ("(x - a)/(x - a) == 1", "holds for every x ≠ a"),
+        (
+            "x/x + (x - 2)/(x - 2) == 2",
+            "holds for every x except x = 0 (division by zero) and x = 2 (division by zero)",
+        ),
+        (
+            "1/(x^2 - 2) == 1/(x^2 - 2)",
+            "except x = -√2 (division by zero) and x = √2 (division by zero)",
+        ),
+        (
+            "sin(x)/sin(x) == 1",
+            "holds for every x where both sides are defined as typed",
+        ),
+        (
+            "sqrt(x)^2 == x",
+            "holds for every x where both sides are defined as typed",
+        ),
+        (
+            "x/x + sqrt(x)^2 == 1 + x",
+            "where both sides are defined as typed (not at x = 0 (division by zero))",
+        ),
+        (
+            "x + 1 == x + 1",
+            "holds for every x: both sides are the same",
+        ),
+        ("a/a == 1", "holds for every x: both sides are the same"),
+        (
+            "Rotz(x) Rotz(x)^T == eye(3)",
+            "holds for every x: both sides are the same",
+        ),
+    ];
+    for (eq, want) in cases {
+        let e = error(&format!("given x, a\nsolve({eq}, x)"));
+        assert!(e.contains(want), "{eq}: {e}");
+        if !want.contains("every x:") {
+            assert!(!e.contains("every x:"), "{eq}: {e}");
+        }
+    }
+    // the point excluded is excluded by subs too, and x/x is 1 elsewhere
+    let e = error("given x\nsubs(x/x, x, 0)");
+    assert!(e.contains("division by zero"), "{e}");
+    let j = json("given x\nsubs(x/x, x, 3)\nsimplify(x/x)");
+    assert_eq!(j[0]["value"], 1.0);
+    assert_eq!(j[1]["value"], 1.0);
+}

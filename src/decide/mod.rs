@@ -14,7 +14,8 @@
 //! their blocks (`blocks`: (T U)⁻¹ = U⁻¹ T⁻¹); the half-turn branch of a rotation's log
 //! (`turn`, §3.2.3.3) and the order of scalars (`order`); `sum`, `min`
 //! and `max` of items that may be exact, as the items written out
-//! (`folds`), for numbers typed first and bound later alike. Imports
+//! (`folds`), for numbers typed first and bound later alike; where a
+//! value is defined as typed in one unknown (`domain`: `x/x` not at 0). Imports
 //! the operation seam ([`crate::seam`]), nothing from the interpreter.
 
 pub(crate) mod ball;
@@ -23,6 +24,7 @@ pub(crate) mod blocks;
 pub(crate) mod certify;
 pub(crate) mod constant;
 pub(crate) mod cyclotomic;
+pub(crate) mod domain;
 pub(crate) mod equality;
 pub(crate) mod folds;
 pub(crate) mod inverse;

@@ -7,6 +7,7 @@ use super::value::Value;
 use crate::check::ty::{Kind, Ty};
 use crate::diagnostics::{Diagnostic, ErrorKind};
 use crate::sym::Expr;
+use crate::sym::Symbol;
 use crate::sym::expr::as_symbol;
 use crate::sym::matrix::Mat;
 use crate::syntax::ast::{CmpOp, Expr as Ast, ExprKind, Span};
@@ -77,6 +78,19 @@ impl Interp<'_> {
                 )
                 .with_help("solve one entry at a time: solve(M[1, 2] == 0, x)"));
         };
+        if diff.data.iter().all(|e| e.terms.is_empty()) {
+            let sides: Vec<&Value> = std::iter::once(&left_value).chain(&right_value).collect();
+            return Err(self
+                .domain(
+                    eq.span,
+                    format!(
+                        "cannot solve for {}: {}",
+                        sym.name,
+                        holds_always(&sides, unknown.value(), &sym)
+                    ),
+                )
+                .with_help(HOW));
+        }
         let mut solution = crate::sym::solve::solve_entries(&diff.data, &sym)
             .map_err(|m| {
                 self.domain(eq.span, format!("cannot solve for {}: {m}", sym.name))
@@ -183,5 +197,67 @@ impl Interp<'_> {
             )
             .with_help("solve one entry at a time: solve(M[1, 2] == 0, x)")
         })
+    }
+}
+
+/// Why an equation whose sides have one canonical form is not solved:
+/// it holds for every x where its sides are defined as typed — not
+/// at a zero of a divisor the canonical form cancelled (`x/x == 1`
+/// holds for every x ≠ 0: [`crate::decide::domain`]), each checked
+/// by substituting it as typed where it is a number.
+fn holds_always(sides: &[&Value], unknown: Option<&Value>, sym: &Symbol) -> String {
+    let mut points: Vec<(Expr, String)> = Vec::new();
+    let mut complete = true;
+    for v in sides {
+        let ex = crate::decide::domain::excluded(v, sym);
+        complete &= ex.complete;
+        for p in ex.points {
+            if points.iter().any(|(q, _)| *q == p) {
+                continue;
+            }
+            let why = if p.as_const().is_some() {
+                let at = formula::make(&Kind::Scalar, Mat::scalar(p.clone()));
+                let undefined = sides.iter().find_map(|v| {
+                    let args = [*v, unknown?, &at];
+                    crate::decide::replay::subs_numbers(&args, &mut Vec::new())?.err()
+                });
+                match undefined {
+                    Some(why) => why,
+                    // (a zero of a divisor the replay does not
+                    // refuse: not claimed either way)
+                    None => {
+                        complete = false;
+                        continue;
+                    }
+                }
+            } else {
+                "division by zero".to_string()
+            };
+            points.push((p, why));
+        }
+    }
+    let x = &sym.name;
+    let show = |e: &Expr| crate::sym::print::expr(e, Default::default());
+    let why = points
+        .iter()
+        .map(|(p, why)| format!("{x} = {} ({why})", show(p)))
+        .collect::<Vec<_>>()
+        .join(" and ");
+    match (points.as_slice(), complete) {
+        ([], true) => format!("the equation holds for every {x}: both sides are the same"),
+        ([(p, one)], true) => format!(
+            "the equation holds for every {x} ≠ {}: at {x} = {} a side is undefined as typed ({one}), elsewhere both sides are the same",
+            show(p),
+            show(p)
+        ),
+        (_, true) => format!(
+            "the equation holds for every {x} except {why}, where a side is undefined as typed; elsewhere both sides are the same"
+        ),
+        ([], false) => format!(
+            "the equation holds for every {x} where both sides are defined as typed: their simplified forms are the same"
+        ),
+        (_, false) => format!(
+            "the equation holds for every {x} where both sides are defined as typed (not at {why}): their simplified forms are the same"
+        ),
     }
 }
