@@ -197,6 +197,63 @@ fn roots_of_squares_are_absolute_values() {
     assert_eq!(lines("given x : scalar\nsqrt(x^2 + 1)"), ["sqrt(1 + x^2)"]);
 }
 
+/// A half-integer power of a symbol is a power of its square root, as
+/// `sqrt` prints and as SymPy writes it: `a^(1/2)` printed `a^0.5` and
+/// `diff(a^(1/2), a)` stayed unevaluated; now it is `sqrt(a)`, with
+/// `sqrt`'s derivative 1/(2 sqrt(a)) (SymPy: `diff(a**Rational(3, 2), a)`
+/// is `3*sqrt(a)/2`, of `a**Rational(-1, 2)` `-1/(2*a**(3/2))`). A
+/// monomial over its own root folds (`a/sqrt(a)` is `sqrt(a)`). The
+/// domain is sqrt's: a negative base is refused as typed.
+#[test]
+fn half_integer_powers_are_square_roots() {
+    assert_eq!(
+        lines(
+            "given a : scalar\na^(1/2)\na^0.5\na^(3/2)\na^(-1/2)\na^(5/2)\n(1 + a^2)^(1/2)\n(a^2)^(1/2)"
+        ),
+        [
+            "sqrt(a)",
+            "sqrt(a)",
+            "a sqrt(a)",
+            "1/sqrt(a)",
+            "a^2 sqrt(a)",
+            "sqrt(1 + a^2)",
+            "abs(a)"
+        ]
+    );
+    assert_eq!(
+        lines(
+            "given a : scalar\ndiff(a^(1/2), a)\ndiff(sqrt(a), a)\ndiff(a^(3/2), a)\ndiff(a^(-1/2), a)\ndiff(a^(5/2), a)"
+        ),
+        [
+            "(1/2)/sqrt(a)",
+            "(1/2)/sqrt(a)",
+            "(3/2) sqrt(a)",
+            "-(1/2)/(a sqrt(a))",
+            "(5/2) a sqrt(a)"
+        ]
+    );
+    assert_eq!(
+        lines(
+            "given a, b : scalar\na/sqrt(a)\na^2/sqrt(a)\na/sqrt(a)^3\na b/sqrt(a b)\na/sqrt(a b)\na^(1/2) == sqrt(a)\ndiff(a^(3/2), a) == (3/2) sqrt(a)"
+        ),
+        [
+            "sqrt(a)",
+            "a sqrt(a)",
+            "1/sqrt(a)",
+            "sqrt(a b)",
+            "a/sqrt(a b)",
+            "true",
+            "true"
+        ]
+    );
+    // numbers as typed first: 9^(3/2) = 27, and a negative base refused
+    assert_eq!(lines("given a : scalar\nsubs(a^(3/2), a, 9)"), ["27"]);
+    let e = error("given a : scalar\ny = a^(1/2)\na = -4\ny");
+    assert!(e.contains("not a real number"), "{e}");
+    // other rational powers are kept as typed
+    assert_eq!(lines("given a : scalar\na^(1/3)"), ["a^(1/3)"]);
+}
+
 #[test]
 fn inverse_maps_of_a_symbolic_rotation_on_their_branch() {
     let (out, err) = outputs(
@@ -486,13 +543,21 @@ fn a_symbolic_screw_normalizes_its_direction() {
 
 /// An exact number no decimal is prints as itself inside a kept power:
 /// `a^(1/3)` printed `a^0.3333333333333333`, `sqrt(2)^a`
-/// `1.4142135623730951^a` (other numbers, read back); a decimal as typed
-/// stays a decimal.
+/// `1.4142135623730951^a` (other numbers, read back). A half-integer
+/// power, 0.5 as typed (exactly 1/2, §7) too, is a square root
+/// (`half_integer_powers_are_square_roots`).
 #[test]
 fn exact_numbers_in_a_kept_power_print_exactly() {
     assert_eq!(
-        lines("given a : scalar\na^(1/3)\n(1/3)^a\nsqrt(2)^a\na^0.5\n(pi/6)^a"),
-        ["a^(1/3)", "(1/3)^a", "(√2)^a", "a^0.5", "((1/6) π)^a"]
+        lines("given a : scalar\na^(1/3)\n(1/3)^a\nsqrt(2)^a\na^0.5\n(pi/6)^a\na^0.3"),
+        [
+            "a^(1/3)",
+            "(1/3)^a",
+            "(√2)^a",
+            "sqrt(a)",
+            "((1/6) π)^a",
+            "a^0.3"
+        ]
     );
 }
 

@@ -343,7 +343,12 @@ impl Expr {
     /// axes, half angles ([`super::half`]) and (when a factor had one) phases folded. Each fold maps term by term, so a sum of
     /// raw products folds to the sum of the folded products.
     pub(super) fn folded(self, phases: bool) -> Expr {
-        let out = self.fold_exps().fold_roots().fold_units().fold_halves();
+        let out = self
+            .fold_exps()
+            .fold_roots()
+            .fold_root_quotients()
+            .fold_units()
+            .fold_halves();
         if phases {
             return out.fold_phases();
         }

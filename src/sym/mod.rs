@@ -32,6 +32,7 @@ pub mod print;
 pub mod probe;
 pub mod rat;
 pub mod rational;
+mod root_quotient;
 pub mod shape;
 pub mod shortest;
 pub mod sign;

@@ -245,16 +245,32 @@ pub fn binary_or_tree(
     Some(binary(op, a, b, kind))
 }
 
-/// a^(n/2) for an exact rational a ≥ 0 (> 0 when n < 0) and an odd n:
-/// (√a)ⁿ, exact when √a is; None for any other power.
+/// a^(n/2) for an odd n: (√a)ⁿ. For an exact rational a ≥ 0 (> 0 when
+/// n < 0), exact when √a is; for a symbolic a, `sqrt(a)` to the n, as
+/// the book and SymPy write it (`a^(1/2)` is `sqrt(a)`, `a^(-1/2)` is
+/// `1/sqrt(a)`, `a^(3/2)` is `a sqrt(a)`), with the same domain (a ≥ 0,
+/// as typed: the replay refuses a negative base); None for any other
+/// power.
 fn half_power(a: &Value, b: &Value) -> Option<Expr> {
-    let x = scalar_of(a)?.as_const()?.as_rat()?;
     let n = scalar_of(b)?
         .as_const()?
         .as_rat()?
         .mul(&crate::sym::coef::Rat::int(2))
         .as_int()?;
-    if x.is_negative() || (x.is_zero() && n < 0) || n.unsigned_abs() > 1 << 20 {
+    if n.unsigned_abs() > 1 << 20 {
+        return None;
+    }
+    let base = scalar_of(a)?;
+    let Some(x) = base.as_const() else {
+        // (a power past the integer bound of `pow`, or an integer one,
+        // is left to it or to the tree)
+        if n % 2 == 0 || n.unsigned_abs() >= 1 << 10 {
+            return None;
+        }
+        return Expr::sqrt(&base).powi(n);
+    };
+    let x = x.as_rat()?;
+    if x.is_negative() || (x.is_zero() && n < 0) {
         return None;
     }
     Expr::sqrt(&Expr::constant(crate::sym::coef::Coef::rat(x))).powi(n)
