@@ -322,3 +322,36 @@ fn quotient_and_root_angles_fold_and_decide() {
                T_12[1, 4] == v2 t sin(phi) - r sin(phi) - r";
     assert_eq!(last(src), "true");
 }
+
+/// The Pythagorean identity holds for any argument, not only for symbols
+/// and products of them: `sin(sin a)^2 + cos(sin a)^2 == 1` was `cannot
+/// decide` and printed itself (the argument sin a is a sum of e^{±ia},
+/// no term of which is real alone, so none was renamed to a fresh angle;
+/// now the whole trigonometric part of the argument is). Sines and
+/// cosines of different arguments still differ.
+#[test]
+fn the_pythagorean_identity_holds_for_any_argument() {
+    for (entry, want) in [
+        ("sin(sin(a))^2 + cos(sin(a))^2", "1"),
+        ("simplify(sin(sin(a))^2 + cos(sin(a))^2)", "1"),
+        ("sin(sin(a) + b)^2 + cos(sin(a) + b)^2", "1"),
+        ("sin(cos(a) sin(b))^2 + cos(cos(a) sin(b))^2", "1"),
+        ("sin(a sin(a))^2 + cos(a sin(a))^2", "1"),
+        ("r sin(sin(a)/2)^2 + r cos(sin(a)/2)^2 + b", "b + r"),
+    ] {
+        assert_eq!(reads_back("given a, b, r", entry, ""), want, "{entry}");
+    }
+    for (eq, want) in [
+        ("sin(sin(a))^2 + cos(sin(a))^2 == 1", "true"),
+        ("sin(sin(sin(a)))^2 + cos(sin(sin(a)))^2 == 1", "true"),
+        ("2 sin(sin(a)) cos(sin(a)) == sin(2 sin(a))", "true"),
+        ("cos(2 sin(a)) == 1 - 2 sin(sin(a))^2", "true"),
+        ("sin(sin(a))^2 + cos(sin(a))^2 == 2", "false"),
+        ("sin(a)^2 + cos(b)^2 == 1", "false"),
+        ("sin(sin(a))^2 + cos(sin(b))^2 == 1", "false"),
+        ("sin(sin(a))^2 + cos(cos(a))^2 == 1", "false"),
+        ("cos(sin(a)) == cos(sin(b))", "false"),
+    ] {
+        assert_eq!(last(&format!("given a, b\n{eq}")), want, "{eq}");
+    }
+}

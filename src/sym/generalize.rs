@@ -20,6 +20,83 @@ use num_traits::{One, Zero};
 /// there, and its symbol.
 type Fresh = (Mono, Coef, Symbol);
 
+/// One fresh angle for a sum: the part of a sine's or cosine's argument
+/// that is itself a trigonometric polynomial (the `sin(a)` of
+/// `sin(sin(a))`, whose e^{±ia} terms are not real alone, so no term of it
+/// is renamed), w standing for it — one w for every such part that is a
+/// rational multiple of it (`sin(2 sin a)` is sin(2w)) — and its symbol.
+type FreshSum = (Expr, Symbol);
+
+/// The terms of argument `a` that hold an angle's e^{iθ} (its
+/// trigonometric part; real as a whole, as the argument is).
+fn trig_part(a: &Expr) -> Expr {
+    let mut out = Expr::zero();
+    for (m, c) in &a.terms {
+        if m.iter().any(|(v, _)| matches!(v, Var::Z(_))) {
+            out.push(m.clone(), c.clone());
+        }
+    }
+    out
+}
+
+/// r with p = r q, rational; None when p is no rational multiple of q.
+fn multiple(p: &Expr, q: &Expr) -> Option<Rat> {
+    let (m, c) = q.terms.iter().next()?;
+    let r = ratio(p.terms.get(m)?, c)?;
+    (q.scale(&Coef::rat(r.clone())) == *p).then_some(r)
+}
+
+/// The trigonometric parts of the arguments of the sines and cosines of
+/// `e` (not nested in another call's argument: those are renamed with
+/// the call, or not at all).
+fn sums(e: &Expr, out: &mut Vec<Expr>) {
+    for (v, _) in e.terms.keys().flatten() {
+        let Var::Call(c) = v else { continue };
+        if !matches!(c.f, Func::Sin | Func::Cos) {
+            continue;
+        }
+        for a in &c.args {
+            let p = trig_part(a);
+            if p.is_zero() || !p.terms.values().all(Coef::is_exact) {
+                continue;
+            }
+            if !out.contains(&p) {
+                out.push(p);
+            }
+        }
+    }
+}
+
+/// The fresh angles of the trigonometric parts: one per class of rational
+/// multiples, w the first part over the least common denominator of the
+/// ratios (so every part is an integer multiple of w).
+fn fresh_sums(found: &[Expr]) -> Vec<FreshSum> {
+    let mut classes: Vec<(Expr, Vec<Rat>)> = Vec::new();
+    for p in found {
+        match classes
+            .iter_mut()
+            .find_map(|(base, rs)| multiple(p, base).map(|r| (rs, r)))
+        {
+            Some((rs, r)) => rs.push(r),
+            None => classes.push((p.clone(), vec![Rat::ONE])),
+        }
+    }
+    classes
+        .into_iter()
+        .enumerate()
+        .filter_map(|(i, (base, rs))| {
+            let mut den = num_bigint::BigInt::from(1);
+            for r in &rs {
+                let (_, d) = r.parts();
+                den = num_integer::Integer::lcm(&den, &d);
+            }
+            let den = i128::try_from(den).ok()?;
+            let w = base.scale(&Coef::rat(Rat::new(1, den)?));
+            Some((w, Symbol::new(&format!("\u{1}sum angle {i}"))))
+        })
+        .collect()
+}
+
 /// True for a term of an argument that is not a plain angle: a product
 /// or quotient of symbols (or of π and symbols, `x y`, `v t/r`), a real
 /// call such as `√x` or `1/(a + b)` in it, or a symbol with an
@@ -94,7 +171,7 @@ fn fresh(found: &[(Mono, Coef)]) -> Vec<Fresh> {
 
 /// `e` with each odd term in a sine's or cosine's argument written as an
 /// integer multiple of its fresh symbol.
-fn rewrite(e: &Expr, names: &[Fresh]) -> Expr {
+fn rewrite(e: &Expr, names: &[Fresh], parts: &[FreshSum]) -> Expr {
     let mut out = Expr::zero();
     for (m, c) in &e.terms {
         let mut t = Expr::constant(c.clone());
@@ -105,9 +182,9 @@ fn rewrite(e: &Expr, names: &[Fresh]) -> Expr {
                         .args
                         .iter()
                         .map(|a| {
-                            let a = rewrite(a, names);
+                            let a = rewrite(a, names, parts);
                             if matches!(call.f, Func::Sin | Func::Cos) {
-                                renamed(&a, names)
+                                renamed(&a, names, parts)
                             } else {
                                 a
                             }
@@ -125,9 +202,19 @@ fn rewrite(e: &Expr, names: &[Fresh]) -> Expr {
 }
 
 /// An argument with its odd terms renamed.
-fn renamed(a: &Expr, names: &[Fresh]) -> Expr {
+fn renamed(a: &Expr, names: &[Fresh], parts: &[FreshSum]) -> Expr {
     let mut out = Expr::zero();
+    let trig = trig_part(a);
+    let part = parts
+        .iter()
+        .find_map(|(p, s)| multiple(&trig, p).map(|r| (r, s)));
+    if let Some((r, s)) = &part {
+        out = Expr::symbol((*s).clone()).scale(&Coef::rat(r.clone()));
+    }
     for (m, c) in &a.terms {
+        if part.is_some() && trig.terms.contains_key(m) {
+            continue;
+        }
         let multiple = names
             .iter()
             .find_map(|(n, w, s)| (n == m).then(|| ratio(c, w).map(|r| (r, s))).flatten());
@@ -149,14 +236,25 @@ pub fn linearized(p: &Expr, q: &Expr) -> Option<(Expr, Expr)> {
     let mut found = Vec::new();
     terms(p, &mut found);
     terms(q, &mut found);
-    if found.is_empty() || found.len() > 8 {
+    let mut found_sums = Vec::new();
+    sums(p, &mut found_sums);
+    sums(q, &mut found_sums);
+    let (names, parts) = angles(&found, &found_sums)?;
+    Some((rewrite(p, &names, &parts), rewrite(q, &names, &parts)))
+}
+
+/// The fresh angles of the odd terms and of the trigonometric parts
+/// found; None when there is none, or too many to try.
+fn angles(found: &[(Mono, Coef)], found_sums: &[Expr]) -> Option<(Vec<Fresh>, Vec<FreshSum>)> {
+    if found.len() > 8 || found_sums.len() > 4 {
         return None;
     }
-    let names = fresh(&found);
-    if names.is_empty() || names.len() > 4 {
+    let names = fresh(found);
+    let parts = fresh_sums(found_sums);
+    if (names.is_empty() && parts.is_empty()) || names.len() + parts.len() > 4 {
         return None;
     }
-    Some((rewrite(p, &names), rewrite(q, &names)))
+    Some((names, parts))
 }
 
 /// `e` made again through fresh angles: its odd terms renamed (module
@@ -176,19 +274,18 @@ pub fn refolded(e: &Expr, make: &dyn Fn(&Expr) -> Expr) -> Option<Expr> {
     }
     let mut found = Vec::new();
     terms(e, &mut found);
-    if found.is_empty() || found.len() > 8 {
-        return None;
-    }
-    let names = fresh(&found);
-    if names.is_empty() || names.len() > 4 {
-        return None;
-    }
-    let general = make(&rewrite(e, &names));
+    let mut found_sums = Vec::new();
+    sums(e, &mut found_sums);
+    let (names, parts) = angles(&found, &found_sums)?;
+    let general = make(&rewrite(e, &names, &parts));
     let angle = |s: &Symbol| {
-        names.iter().find(|(_, _, n)| n == s).map(|(m, w, _)| {
-            let mut a = Expr::zero();
-            a.push(m.clone(), w.clone());
-            a
+        let part = parts.iter().find(|(_, n)| n == s).map(|(p, _)| p.clone());
+        part.or_else(|| {
+            names.iter().find(|(_, _, n)| n == s).map(|(m, w, _)| {
+                let mut a = Expr::zero();
+                a.push(m.clone(), w.clone());
+                a
+            })
         })
     };
     let mut out = Expr::zero();
