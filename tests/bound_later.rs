@@ -836,3 +836,78 @@ fn vector_forms_of_exponential_coordinates_pass_through_with_symbols() {
     let shown = printed("given θ\nso3ToVec((1, 2, θ))", 4);
     assert_eq!(shown[0], "(1, 2, θ)  : 3-vector", "{shown:?}");
 }
+
+/// `subs(x, θ, by)` of a value kept as a tree over a given vector (`R =
+/// exp([u] θ)` with `given u : vec3`) is the substitution typed first once
+/// u has numbers: it was refused ("the substitution of a kept call is not
+/// known"). `by` is put for θ in each formula before the numbers are (θ's
+/// own number is not what is substituted, one `by` holds is), then the
+/// tree is read as any is; a substitution outside its domain is refused as
+/// typed first, and the broken unit-axis assumption is still said.
+#[test]
+fn subs_of_a_kept_tree_is_the_substitution_typed_first() {
+    agree(
+        "given u : vec3\ngiven th\nR = exp([u] th)\nS = subs(R, th, 1)\nu = (0, 0, 1)\nS",
+        "u = (0, 0, 1)\nexp([u] 1)",
+    );
+    // θ's number, bound too, is not what is put in
+    agree(
+        "given u : vec3\ngiven th\nR = exp([u] th)\nS = subs(R, th, 1)\nth = 5\nu = (0, 0, 1)\nS",
+        "Rotz(1)",
+    );
+    let cases = [
+        ("S = subs(u[1] th, th, 1)\nu = (0.6, 0, 0.8)\nS", 0.6),
+        (
+            "S = subs(u[2] th + a, th, a^2)\nu = (0, 2, 1)\na = 3\nS",
+            21.0,
+        ),
+        (
+            "S = subs(u[1] th, th, th + 1)\nth = 2\nu = (3, 0, 1)\nS",
+            9.0,
+        ),
+        ("S = subs(u[1] th, th, u[2])\nu = (3, 5, 1)\nS", 15.0),
+        (
+            "S = subs(u[1] v[1] th, th, 2)\nu = (3, 0, 1)\nv = (5, 0, 0)\nS",
+            30.0,
+        ),
+    ];
+    for (src, want) in cases {
+        let src = format!("given u, v : vec3\ngiven th, a\n{src}");
+        assert_eq!(numbers_of(&src), vec![want], "{src}");
+    }
+    // partly bound: the numbers put in, the substitution made
+    let shown = printed(
+        "given u : vec3\ngiven th, a\nS = subs(u[2] th + a, th, a^2)\nu = (0, 2, 1)\nS",
+        4,
+    );
+    assert_eq!(
+        shown.last().map(String::as_str),
+        Some("2 a^2 + a"),
+        "{shown:?}"
+    );
+    // outside the domain as typed first: refused
+    for src in [
+        "S = subs(u[1]/th, th, 0)\nu = (3, 0, 1)\nS",
+        "S = subs(th/u[1], th, 2)\nu = (0, 0, 1)\nS",
+    ] {
+        let e = refusal(&format!("given u : vec3\ngiven th\n{src}"));
+        assert!(e.contains("division by zero"), "{src}: {e}");
+    }
+    // a subs inside another, or by a component of the vector bound, is
+    // still refused (its leaves would not keep the order), never a number
+    for src in [
+        "X = subs(subs(u[1] th, u[1], 0.5), th, 0.3)\nu = (0, 0, 2)\nX",
+        "X = subs(subs(u[1] th, th, 2), th, 3)\nu = (5, 0, 0)\nX",
+    ] {
+        let e = refusal(&format!("given u : vec3\ngiven th\n{src}"));
+        assert!(e.contains("kept call is not known"), "{src}: {e}");
+    }
+    // a non-unit axis: the value typed first (Rotz(2)), with the warning
+    let src = "given u : vec3\ngiven th\nR = exp([u] th)\nS = subs(R, th, 1)\nu = (0, 0, 2)\nS";
+    let mut s = Session::new(Settings::default());
+    let (out, err, n) = s.run_to_strings("t.chs", src, Mode::Run, false);
+    assert_eq!(n, 0, "{err}");
+    assert!(err.contains("u = (0, 0, 2) breaks it"), "{err}");
+    assert!(out.contains("-0.4161"), "{out}");
+    agree(&format!("{src}\nS"), "u = (0, 0, 2)\nexp([u] 1)");
+}

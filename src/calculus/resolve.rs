@@ -28,6 +28,9 @@ struct Resolving<'a, 'w> {
     env: &'a dyn Bindings,
     warnings: &'w mut Vec<Diagnostic>,
     failed: Option<String>,
+    /// The symbol and what is put for it in every formula read (the
+    /// operand of a `subs` kept as a call: [`Resolving::substituted`]).
+    put: Option<[Value; 2]>,
 }
 
 /// `s` with every `given` name that is now bound to numbers replaced by
@@ -40,6 +43,7 @@ pub fn resolve(s: &Sym, env: &dyn Bindings, warnings: &mut Vec<Diagnostic>) -> R
         env,
         warnings,
         failed: None,
+        put: None,
     };
     let out = r.go(s);
     match r.failed {
@@ -65,12 +69,28 @@ impl Resolving<'_, '_> {
 
     fn go(&mut self, s: &Sym) -> Sym {
         match s {
+            // (a name substituted stands in a formula, never as a tree's
+            // leaf: refused rather than read with its own number)
+            Sym::Name(_) if self.put.is_some() && self.puts_name(s) => {
+                self.kept_call("subs");
+                s.clone()
+            }
             Sym::Name(n) => match self.env.binding(Name::new(n)).and_then(|b| b.val) {
                 Some(v @ Value::Num { .. }) => to_sym(v),
                 _ if n == "deg" => to_sym(&Value::scalar(std::f64::consts::PI / 180.0)),
                 _ => s.clone(),
             },
             Sym::Const(v, _) => match &**v {
+                v @ Value::Formula { .. } if self.put.is_some() => match self.put_in(v) {
+                    Some(v) => match formula_now(&v, self.env, self.warnings) {
+                        Ok(x) => to_sym(&x),
+                        Err(Failed(why)) => {
+                            self.failed.get_or_insert(why);
+                            s.clone()
+                        }
+                    },
+                    None => s.clone(),
+                },
                 v @ Value::Formula { .. } => match formula_now(v, self.env, self.warnings) {
                     Ok(x) => to_sym(&x),
                     Err(Failed(why)) => {
@@ -169,6 +189,18 @@ impl Resolving<'_, '_> {
                     None => Sym::Vector(parts),
                 }
             }
+            Sym::Call(fun, args) if matches!(fun.name, "diff" | "subs") && self.put.is_some() => {
+                self.kept_call(fun.name);
+                s.clone()
+            }
+            Sym::Call(fun, args)
+                if fun.name == "subs"
+                    && num(&args[0]).is_none()
+                    && let [x, name, by] = args.as_slice()
+                    && plain_symbol(name) =>
+            {
+                self.substituted(s, [x, name, by])
+            }
             Sym::Call(fun, args)
                 if matches!(fun.name, "diff" | "subs") && num(&args[0]).is_none() =>
             {
@@ -178,19 +210,7 @@ impl Resolving<'_, '_> {
                 // never computed from what is left.
                 let x = self.go(&args[0]);
                 if x != args[0] {
-                    if self.failed.is_none() {
-                        self.failed = Some(format!(
-                            "{}(…) of an expression with no closed form cannot be computed with \
-                             numbers (the {} of a kept call is not known); write it in a form the \
-                             engine has (sqrt(u) for u^(1/2), whole powers, the book's maps)",
-                            fun.name,
-                            if fun.name == "diff" {
-                                "derivative"
-                            } else {
-                                "substitution"
-                            }
-                        ));
-                    }
+                    self.kept_call(fun.name);
                     return s.clone();
                 }
                 let mut rest: Vec<Sym> = args[1..].iter().map(|a| self.go(a)).collect();
@@ -211,6 +231,107 @@ impl Resolving<'_, '_> {
                     None => Sym::Call(*fun, args),
                 }
             }
+        }
+    }
+
+    /// `subs(x, name, by)` kept as a call (x a tree over `given` names,
+    /// `subs(R, θ, 1)` of `R = exp([u] θ)` with u a given vector): `by`
+    /// put for the symbol in each formula of x *before* the numbers bound
+    /// since are put in (the symbol's own number, if it has one, is not
+    /// what is substituted; one that `by` holds is), then x read as any
+    /// tree is — the substitution commutes with the tree's operations, so
+    /// this is the value typed first with `by` in place of the symbol.
+    /// Refused as before where `by` is no formula or number, or x holds
+    /// another `diff` or `subs` (whose order the leaves would not keep).
+    fn substituted(&mut self, s: &Sym, [x, name, by]: [&Sym; 3]) -> Sym {
+        // (no number bound since reaches x: the call is kept as it was)
+        let mut dry = Resolving {
+            env: self.env,
+            warnings: &mut Vec::new(),
+            failed: None,
+            put: None,
+        };
+        // (a refusal in the dry run is not kept: the number it read may be
+        // the substituted symbol's own, which the substitution replaces)
+        if dry.go(x) == *x && dry.failed.is_none() {
+            let rest: Vec<Sym> = [x, name, by]
+                .iter()
+                .enumerate()
+                .map(|(i, a)| if i == 0 { (*a).clone() } else { self.go(a) })
+                .collect();
+            return match s {
+                Sym::Call(fun, _) => Sym::Call(*fun, rest),
+                _ => s.clone(),
+            };
+        }
+        let by = self.go(by);
+        let (Sym::Const(n, _), Sym::Const(b, _)) = (name, &by) else {
+            self.kept_call("subs");
+            return s.clone();
+        };
+        let mut inner = Resolving {
+            env: self.env,
+            warnings: &mut *self.warnings,
+            failed: None,
+            put: Some([(**n).clone(), (**b).clone()]),
+        };
+        let out = inner.go(x);
+        if let Some(why) = inner.failed {
+            self.failed.get_or_insert(why);
+            return s.clone();
+        }
+        out
+    }
+
+    /// A formula with `by` put for the symbol `subs` substitutes
+    /// ([`Resolving::substituted`]); None (and refused) where it cannot
+    /// be.
+    fn put_in(&mut self, v: &Value) -> Option<Value> {
+        let [name, by] = self.put.as_ref()?;
+        let refs = [v, name, by];
+        let made = crate::decide::replay::subs_numbers(&refs, self.warnings)
+            .map(|r| r.map_err(crate::values::error::OpError::Message))
+            .or_else(|| {
+                crate::builtins::lookup("subs")
+                    .and_then(|b| Op::Call(b, "subs").exact_or_symbolic(&refs, &v.kind()))
+            });
+        match made {
+            Some(Ok(v)) => Some(v),
+            // (refused as the substitution typed so is: subs(3/θ, θ, 0))
+            Some(Err(e)) => {
+                self.failed.get_or_insert(e.to_string());
+                None
+            }
+            None => {
+                self.kept_call("subs");
+                None
+            }
+        }
+    }
+
+    /// Whether tree leaf `s` is the name of the symbol being substituted.
+    fn puts_name(&self, s: &Sym) -> bool {
+        let (Sym::Name(n), Some([Value::Formula { m, .. }, _])) = (s, &self.put) else {
+            return false;
+        };
+        matches!(m.data.as_slice(), [e] if crate::sym::expr::as_symbol(e)
+            .is_some_and(|sym| formula::binding_name(&sym) == *n))
+    }
+
+    /// The refusal of `diff` or `subs` of a kept call whose operand the
+    /// numbers changed.
+    fn kept_call(&mut self, fun: &str) {
+        if self.failed.is_none() {
+            self.failed = Some(format!(
+                "{fun}(…) of an expression with no closed form cannot be computed with \
+                 numbers (the {} of a kept call is not known); write it in a form the \
+                 engine has (sqrt(u) for u^(1/2), whole powers, the book's maps)",
+                if fun == "diff" {
+                    "derivative"
+                } else {
+                    "substitution"
+                }
+            ));
         }
     }
 
@@ -424,4 +545,22 @@ pub fn formula_now(
         },
         v => v,
     })
+}
+
+/// Whether the name a `subs` kept as a call substitutes is a plain scalar
+/// symbol (not a component `w[3]` of a given vector, which stands in the
+/// tree as the vector's name, nor a rate or a function of time, whose
+/// numbers are bound under other names).
+fn plain_symbol(s: &Sym) -> bool {
+    let Sym::Const(v, _) = s else {
+        return false;
+    };
+    let Value::Formula { m, .. } = &**v else {
+        return false;
+    };
+    let [e] = m.data.as_slice() else {
+        return false;
+    };
+    crate::sym::expr::as_symbol(e)
+        .is_some_and(|sym| sym.index == 0 && sym.dots == 0 && sym.time.is_none())
 }
