@@ -151,6 +151,10 @@ pub fn eval_symbolic(name: &str, vals: &[Value], kind: &Kind) -> Out {
             }
             ok(make(kind, a))
         }
+        ("ad" | "lie_bracket", 1) if shape(0) == (6, 1) => ok(make(
+            &Kind::Matrix(Some(6), Some(6)),
+            sm::small_adjoint(&ms[0].data),
+        )),
         ("VecToso3", 1) if shape(0) == (3, 1) => ok(make(&Kind::So3, sm::skew(&ms[0].data))),
         ("VecTose3", 1) if shape(0) == (6, 1) => {
             ok(make(&Kind::Se3, sm::twist_matrix(&ms[0].data)))

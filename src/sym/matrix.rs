@@ -419,6 +419,17 @@ pub fn adjoint(t: &Mat) -> Option<Mat> {
     Some(a)
 }
 
+/// The small adjoint \[ad_V\] = \[\[ω\], 0; \[v\], \[ω\]\] of a twist V = (ω, v)
+/// (Definition 8.1, used with (3.82): d Ad_T = Ad_T \[ad_V\]).
+pub fn small_adjoint(v: &[Expr]) -> Mat {
+    let (w, lin) = (skew(&v[..3]), skew(&v[3..6]));
+    let mut a = Mat::zeros(6, 6);
+    a.put(0, 0, &w);
+    a.put(3, 0, &lin);
+    a.put(3, 3, &w);
+    a
+}
+
 /// The inverse of an adjoint \[Ad_T\] = \[R, 0; \[p\]R, R\] in closed form,
 /// \[Ad_T\]⁻¹ = \[Ad_{T⁻¹}\] = \[Rᵀ, 0; −Rᵀ(\[p\]R)Rᵀ, Rᵀ\] (Proposition
 /// 3.20), kept only when it is the inverse (`a` times it is exactly I):
