@@ -54,7 +54,13 @@ impl Op<'_> {
             && b.may_be_exact()
         {
             let cancels = SUM && self.cancels(&args);
-            *exact = match self.fraction(&args, kind) {
+            // (only a scalar can be a fraction: a product of matrices
+            // does not make the call)
+            let fraction = match kind {
+                Kind::Scalar => self.fraction(&args, kind),
+                _ => None,
+            };
+            *exact = match fraction {
                 Some(r) => Exact::Ratio(r),
                 None => self.exact_of_pair(a, b, kind),
             };
