@@ -495,6 +495,53 @@ fn explicit_conversions_read_any_matrix_of_their_size() {
     assert!(err.contains("SO3(M) reads a matrix as a rotation"), "{err}");
 }
 
+/// An untyped 3×3 within 1e-2 of both SO(3) and SE(2) and in neither is
+/// read as the nearer by `log`, and the reading is said, with the
+/// distances and how to choose the other (§5); `explain log` reads it the
+/// same way (it read such a matrix as a rotation while `log` gave se(2)).
+/// A name chooses: R_ab is a rotation, with no note.
+#[test]
+fn a_3x3_near_both_so3_and_se2_says_which_reading_log_took() {
+    let (out, err) = text_and_err("M = diag(1, 1, 1.000000001)\nlog(M)\n");
+    assert!(out.ends_with("0, 0, 0]  : se(2)\n"), "{out}");
+    assert!(
+        err.contains(
+            "note: this 3×3 is 2.00e-9 from SO(3) and 1.00e-9 from SE(2): read as SE(2), the nearer"
+        ),
+        "{err}"
+    );
+    assert!(err.contains("SO3(M) reads it as a rotation"), "{err}");
+    let (out, err) = text_and_err("R_ab = diag(1, 1, 1.000000001)\nlog(R_ab)\n");
+    assert!(out.ends_with("0, 0, 0]  : so(3) {a}\n"), "{out}");
+    assert!(!err.contains("read as"), "{err}");
+    let (out, err) = text_and_err("log(SO3(diag(1, 1, 1.000000001)))\n");
+    assert!(
+        out.ends_with(": so(3)\n") && !err.contains("read as"),
+        "{out}{err}"
+    );
+    // The reading and the value: a quarter turn with x = 0.001 is 1e-9
+    // from SE(2), 1.41e-3 from SO(3); as SE(2) the translation is kept.
+    let m = "M = [0, -1, 0.001; 1, 0, 0; 0, 0, 1.000000001]\n";
+    let (out, err) = text_and_err(&format!("{m}log(M)[1, 3]\n"));
+    assert!(out.ends_with("\n0.0008\n"), "{out}");
+    assert!(
+        err.contains("1.41e-3 from SO(3) and 1.00e-9 from SE(2): read as SE(2)"),
+        "{err}"
+    );
+    let (out, _) = text_and_err(&format!("{m}explain log(M)\n"));
+    assert!(out.contains("SE(2) as SE(3)"), "{out}");
+    // In SE(2) exactly (within 1e-9), no note.
+    let (out, err) = text_and_err("log([0, -1, 0.001; 1, 0, 0; 0, 0, 1])\n");
+    assert!(out.ends_with(": se(2)\n") && err.is_empty(), "{out}{err}");
+    // JSON carries the note.
+    let last = last_json("M = diag(1, 1, 1.000000001)\nlog(M)\n", Mode::Run);
+    assert_eq!(last["type"], "se2", "{last}");
+    assert!(
+        last["warnings"].to_string().contains("read as SE(2)"),
+        "{last}"
+    );
+}
+
 #[test]
 fn type_labels_only_for_members_of_the_set() {
     // [ω]² is symmetric, not so(3); a power of a plain matrix is a plain matrix.

@@ -8,6 +8,7 @@ use super::Args;
 use crate::check::ty::Kind;
 use crate::diagnostics::{Diagnostic, ErrorKind};
 use crate::lie::{LieGroup, Mat3, SO3, Vec3};
+use crate::values::convert::Group;
 use crate::values::value::Value;
 
 /// Notes on the call `a` (its arguments still in place) that returned `v`.
@@ -166,4 +167,23 @@ fn half_turn(a: &Args, v: &Value) -> Option<Diagnostic> {
         a.call_span,
         format!("θ = π: ω̂ is the book's, from {eq} (§3.2.3.3); −ω̂ is an equally valid answer"),
     ))
+}
+
+/// An untyped 3×3 within 1e-2 of both SO(3) and SE(2) and in neither
+/// (LANGUAGE.md §5): which reading `log` took, the nearer, and how to
+/// choose the other.
+pub fn read_as(span: crate::span::Span, group: Group, d3: f64, d2: f64) -> Diagnostic {
+    let other = match group {
+        Group::SE2 => "SO3(M) reads it as a rotation",
+        _ => "SE2(M) reads it as a planar transform",
+    };
+    Diagnostic::note(
+        ErrorKind::Domain,
+        span,
+        format!(
+            "this 3×3 is {d3:.2e} from SO(3) and {d2:.2e} from SE(2): read as {}, the nearer",
+            group.name()
+        ),
+    )
+    .with_help(format!("{other}; a name R_ab or T_ab also chooses"))
 }

@@ -186,14 +186,16 @@ fn eval_log(a: &mut Args) -> Result<Value, Diagnostic> {
     match (kind, shape) {
         (Kind::SE2, _) => Ok(Value::of(Kind::Se2, se2::hat(&a.se2(0)?.log()))),
         (_, (3, 3)) => {
-            // Read as SO(3) if it is (or nearly is) one, else as SE(2) (§5).
-            let m = a.mat(0)?.clone();
-            let d3 = convert::distance(&m, Group::SO3).unwrap_or(f64::INFINITY);
-            let d2 = convert::distance(&m, Group::SE2).unwrap_or(f64::INFINITY);
-            if d2 < d3 && d2 <= convert::PROJECT_TOL {
-                Ok(Value::of(Kind::Se2, se2::hat(&a.se2(0)?.log())))
-            } else {
-                Ok(Value::of(Kind::So3, so3::hat(&a.so3_log(0)?)))
+            // Read as SO(3) if it is one, else as SE(2); near both, the
+            // nearer, and the reading said (§5).
+            let (group, both) = convert::read_3x3(a.mat(0)?);
+            if let Some((d3, d2)) = both {
+                a.warnings
+                    .push(crate::builtins::notes::read_as(a.call_span, group, d3, d2));
+            }
+            match group {
+                Group::SE2 => Ok(Value::of(Kind::Se2, se2::hat(&a.se2(0)?.log()))),
+                _ => Ok(Value::of(Kind::So3, so3::hat(&a.so3_log(0)?))),
             }
         }
         (_, (4, 4)) => Ok(Value::of(Kind::Se3, se3::hat(&a.se3_log(0)?))),

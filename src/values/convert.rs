@@ -132,6 +132,28 @@ pub fn membership(m: &Num, group: Group) -> Membership {
     }
 }
 
+/// How an untyped 3×3 is read where a group element is wanted (`log`,
+/// `explain`, LANGUAGE.md §5): SO(3) if it is one, else SE(2) if it is one;
+/// within 1e-2 of both and in neither, the nearer, with `Some((d_so3,
+/// d_se2))` so that the caller says which reading was taken (the two give
+/// different kinds, so(3) or se(2)); near one only, that one (projected);
+/// else SO(3), whose error gives the distance.
+pub fn read_3x3(m: &Num) -> (Group, Option<(f64, f64)>) {
+    let d3 = distance(m, Group::SO3).unwrap_or(f64::INFINITY);
+    let d2 = distance(m, Group::SE2).unwrap_or(f64::INFINITY);
+    if d3 <= ACCEPT_TOL {
+        return (Group::SO3, None);
+    }
+    if d2 <= ACCEPT_TOL {
+        return (Group::SE2, None);
+    }
+    let both = (d3 <= PROJECT_TOL && d2 <= PROJECT_TOL).then_some((d3, d2));
+    match d2 < d3 && d2 <= PROJECT_TOL {
+        true => (Group::SE2, both),
+        false => (Group::SO3, both),
+    }
+}
+
 /// The kind a freshly written matrix gets: SO(3) if it is a rotation, else
 /// SE(2) if it is a planar transform (3×3); SE(3) (4×4), SO(2) (2×2); else a
 /// plain matrix (LANGUAGE.md §5).

@@ -138,11 +138,16 @@ fn transform(v: &Value) -> Option<Mat4> {
 }
 
 /// An SE(2) matrix (by its kind, or a 3×3 that is not a rotation and
-/// reads as one, LANGUAGE.md §5) embedded in SE(3), as Example 3.4 does.
+/// reads as one as `log` reads it, LANGUAGE.md §5) embedded in SE(3), as Example 3.4 does.
 fn planar(v: &Value) -> Option<Mat4> {
     let m = mat::<3, 3>(v)?;
-    let se2 = crate::lie::SE2::distance(&m) <= 1e-2;
-    if !(v.kind() == Kind::SE2 || (se2 && SO3::distance(&m) > 1e-2)) {
+    let read = || {
+        let Value::Num { m, .. } = v else {
+            return false;
+        };
+        crate::values::convert::read_3x3(m).0 == crate::values::convert::Group::SE2
+    };
+    if !(v.kind() == Kind::SE2 || (v.kind() != Kind::SO3 && read())) {
         return None;
     }
     let mut t = Mat4::identity();
