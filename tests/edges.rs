@@ -501,3 +501,71 @@ fn exponential_coordinates_too_large_for_their_angle_warn() {
         assert!(err.is_empty(), "{src}: {err}");
     }
 }
+
+/// ProjectToSO3 of a matrix with many nearest rotations gives one of them
+/// and says it is not unique: 0 (every rotation), −I (det < 0 and equal
+/// singular values: every half turn; chasles gave diag(1, −1, −1),
+/// modern_robotics gives diag(−1, −1, 1), now both), a rank-1 matrix (every
+/// rotation taking its row direction to its column direction). A rank-1
+/// matrix whose determinant was rounding noise (4.7e-19) got a reflection,
+/// det −1, labelled SO(3). A unique nearest rotation says nothing.
+#[test]
+fn projection_ties_are_said_and_answered_with_a_nearest_rotation() {
+    let tie = "the nearest rotation is not unique";
+    for (src, want) in [
+        (
+            "ProjectToSO3(zeros(3, 3))",
+            "the matrix is 0, and every rotation is as near",
+        ),
+        (
+            "ProjectToSO3(-eye(3))",
+            "det < 0 and the two smallest singular values of the matrix are equal (σ₂ = σ₃ = 1)",
+        ),
+        (
+            "ProjectToSO3([0, 2, 0; 0, 0, 0; 0, 0, 0])",
+            "has rank 1 (singular values 2, 0, 0)",
+        ),
+        (
+            "ProjectToSE3([-1, 0, 0, 1; 0, -1, 0, 2; 0, 0, -1, 3; 0, 0, 0, 1])",
+            "singular values of the rotation block are equal",
+        ),
+    ] {
+        let (_, err) = texts(src);
+        assert!(err.contains(tie) && err.contains(want), "{src}: {err}");
+    }
+    let r = numbers("ProjectToSO3(-eye(3))");
+    assert_eq!(r, [-1.0, 0.0, 0.0, 0.0, -1.0, 0.0, 0.0, 0.0, 1.0]);
+    let t = numbers("ProjectToSE3([-1, 0, 0, 1; 0, -1, 0, 2; 0, 0, -1, 3; 0, 0, 0, 1])");
+    assert_eq!(
+        &t[..12],
+        [-1.0, 0.0, 0.0, 1.0, 0.0, -1.0, 0.0, 2.0, 0.0, 0.0, 1.0, 3.0]
+    );
+    // [0, 2, 0; 0, 0, 0; 0, 0, 0] = 2 x̂ ŷᵀ: the nearest rotations take ŷ to
+    // x̂ (‖R − M‖² = ‖M‖² + 3 − 2·2 = 3)
+    let r = numbers("ProjectToSO3([0, 2, 0; 0, 0, 0; 0, 0, 0])");
+    assert!((r[1] - 1.0).abs() < 1e-15, "{r:?}");
+    let m = "[0.1366963853729478, 0.8500276686476482, -1.1714031011733639; \
+             -0.02899153119641787, -0.18027984870398495, 0.24843941160984825; \
+             0.01915951075732261, 0.11914078208464096, -0.16418510450630905]";
+    let d = numbers(&format!("det(ProjectToSO3({m}))"))[0];
+    assert!((d - 1.0).abs() < 1e-14, "{d}");
+    let (_, err) = texts(&format!("ProjectToSO3({m})"));
+    assert!(
+        err.contains("has rank 1 (singular values 1.5, 0, 0)"),
+        "{err}"
+    );
+    // det < 0 with σ₂ > σ₃ is unique: turned about the smallest, no warning
+    let (out, err) = texts("ProjectToSO3([-1, 0, 0; 0, -1, 0; 0, 0, -0.999])");
+    assert!(err.is_empty(), "{err}");
+    assert!(
+        out.starts_with("[-1,  0, 0\n  0, -1, 0\n  0,  0, 1]"),
+        "{out}"
+    );
+    for src in [
+        "ProjectToSO3([0.675, 0.150, 0.720; 0.370, 0.771, -0.511; -0.630, 0.619, 0.472])",
+        "ProjectToSO3([1, 0, 0; 0, 1, 0; 0, 0, 0])",
+    ] {
+        let (_, err) = texts(src);
+        assert!(err.is_empty(), "{src}: {err}");
+    }
+}

@@ -187,3 +187,35 @@ pub fn read_as(span: crate::span::Span, group: Group, d3: f64, d2: f64) -> Diagn
     )
     .with_help(format!("{other}; a name R_ab or T_ab also chooses"))
 }
+
+/// `ProjectToSO3`/`ProjectToSE3` of a matrix whose rotation block has many
+/// nearest rotations ([`crate::lie::project::so3_tie`]): the answer is one.
+pub fn projection_tie(
+    span: crate::span::Span,
+    g: Group,
+    tie: crate::lie::project::Tie,
+) -> Diagnostic {
+    use crate::lie::project::Tie;
+    let fmt = |x: f64| crate::values::number::fmt_num(x, 4);
+    let block = match g {
+        Group::SE3 => "the rotation block",
+        _ => "the matrix",
+    };
+    let why = match tie {
+        Tie::Zero => format!("{block} is 0, and every rotation is as near"),
+        Tie::RankOne { sigma } => format!(
+            "{block} has rank 1 (singular values {}, 0, 0): every rotation taking its row space's direction to its column space's is as near",
+            fmt(sigma)
+        ),
+        Tie::Reflection { sigma } => format!(
+            "det < 0 and the two smallest singular values of {block} are equal (σ₂ = σ₃ = {}): the reflection is undone along any direction of their plane, each as near",
+            fmt(sigma)
+        ),
+    };
+    Diagnostic::warning(
+        ErrorKind::Domain,
+        span,
+        format!("the nearest rotation is not unique: {why}; this is one of them"),
+    )
+    .with_help("ProjectToSO3 (§3.6) is meaningful for matrices near SO(3); another equally near answer is as right")
+}

@@ -138,7 +138,7 @@ fn test_below(v: &Value, g: Group, d: f64) -> bool {
         .unwrap_or(d.abs() < project::TEST_TOL)
 }
 
-fn projection(a: &Args, g: Group) -> Result<Value, Diagnostic> {
+fn projection(a: &mut Args, g: Group) -> Result<Value, Diagnostic> {
     let m = a.mat(0)?;
     if m.shape() != (g.size(), g.size()) || m.iter().any(|x| !x.is_finite()) {
         return Err(a.error(
@@ -147,9 +147,16 @@ fn projection(a: &Args, g: Group) -> Result<Value, Diagnostic> {
             format!("expected a {0}×{0} matrix of finite numbers", g.size()),
         ));
     }
+    let m = m.clone();
+    // (a rotation block with many nearest rotations: one of them, said)
+    let block = Mat3::from_fn(|i, j| m.to_dmatrix()[(i, j)]);
+    if let Some(tie) = project::so3_tie(&block) {
+        let span = a.call_span;
+        a.warnings.push(super::notes::projection_tie(span, g, tie));
+    }
     Ok(Value::Num {
         kind: g.kind(),
-        m: convert::project(m, g),
+        m: convert::project(&m, g),
         exact: Default::default(),
     })
 }
@@ -405,7 +412,7 @@ pub(super) fn builtins() -> Vec<Builtin> {
             aliases: &["project_to_so3"],
             signature: "ProjectToSO3(mat: 3×3) -> SO3",
             section: "§3.6",
-            doc: "the rotation nearest a 3×3 matrix (SVD)",
+            doc: "the rotation nearest a 3×3 matrix (SVD); where many are as near (0, −I, rank 1: singular values σ₂ + sσ₃ = 0, s the sign of det) one of them, with a warning",
             example: "ProjectToSO3([0.675, 0.150, 0.720; 0.370, 0.771, -0.511; -0.630, 0.619, 0.472])",
             area: Tests,
             typing: Typing::Fixed {

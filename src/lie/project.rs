@@ -34,13 +34,58 @@ pub fn project_to_so3(m: &Mat3) -> Mat3 {
         return Mat3::identity();
     };
     if (u * vt).determinant() < 0.0 {
+        // (the last of equal smallest values: for −I, diag(−1, −1, 1),
+        // modern_robotics' answer; any is as near, [`so3_tie`])
         let k = (0..3)
+            .rev()
             .min_by(|&i, &j| svd.singular_values[i].total_cmp(&svd.singular_values[j]))
             .unwrap_or(2);
         let col = -u.column(k);
         u.set_column(k, &col);
     }
     u * vt
+}
+
+/// Why the rotation nearest M is not unique, when it is not.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Tie {
+    /// M = 0: every rotation is as near.
+    Zero,
+    /// σ₂ = σ₃ = 0 (rank 1): every rotation taking v₁ to u₁.
+    RankOne {
+        /// σ₁, the one nonzero singular value.
+        sigma: f64,
+    },
+    /// det M < 0 and σ₂ = σ₃: the reflection is undone along any direction
+    /// of their plane.
+    Reflection {
+        /// σ₂ = σ₃.
+        sigma: f64,
+    },
+}
+
+/// Whether [`project_to_so3`]'s answer is one of many equally near
+/// rotations. With M = U Σ Vᵀ, σ₁ ≥ σ₂ ≥ σ₃ ≥ 0, and s = det(U Vᵀ) (the
+/// sign of det M), the rotations maximising tr(RᵀM) are U W Vᵀ with W
+/// maximising σ₁w₁₁ + σ₂w₂₂ + sσ₃w₃₃ over {W : det W = s}; the maximiser
+/// W = diag(1, 1, s) is unique iff σ₂ + sσ₃ > 0 — ties are M = 0, rank one,
+/// and det M < 0 with σ₂ = σ₃ (−I: every half turn).
+/// Decided within 1e-12·σ₁, about the rounding of the singular values.
+pub fn so3_tie(m: &Mat3) -> Option<Tie> {
+    let svd = m.svd(true, true);
+    let (Some(u), Some(vt)) = (svd.u, svd.v_t) else {
+        return None;
+    };
+    let s = svd.singular_values;
+    let tol = 1e-12 * s[0];
+    if s[0] == 0.0 {
+        return Some(Tie::Zero);
+    }
+    if s[1] + s[2] <= tol {
+        return Some(Tie::RankOne { sigma: s[0] });
+    }
+    let reflected = (u * vt).determinant() < 0.0;
+    (reflected && s[1] - s[2] <= tol).then_some(Tie::Reflection { sigma: s[1] })
 }
 
 /// The condition number ‖M‖_F‖M⁻¹‖_F above which [`polar_newton`] leaves
@@ -57,7 +102,12 @@ const POLAR_CONDITION: f64 = 1e6;
 /// 0 in every iterate.
 fn polar_newton(m: &Mat3) -> Option<Mat3> {
     let det = m.determinant();
-    if det.is_nan() || det <= 0.0 {
+    // (a determinant of rounding size: a rank-deficient M, whose cofactor
+    // inverse is rounding noise of moderate size — the condition test
+    // below then passed, and a rank-1 M converged to a reflection. With
+    // κ ≤ 1e6, det M = σ₁σ₂σ₃ ≥ 1e-12σ₁³ ≥ 1.9e-13‖M‖³.)
+    let scale = m.norm().powi(3);
+    if det.is_nan() || det <= 1e-14 * scale {
         return None;
     }
     let mut x = *m;
@@ -75,7 +125,9 @@ fn polar_newton(m: &Mat3) -> Option<Mat3> {
         let step = (next - x).norm();
         x = next;
         if last {
-            return Some(x);
+            // (a rotation, or the SVD decides)
+            let gap = (x.transpose() * x - Mat3::identity()).norm();
+            return (gap < 1e-12 && x.determinant() > 0.0).then_some(x);
         }
         scaled = step >= 1e-3;
         // the error after a step of size s is about s²: one more step past
@@ -268,6 +320,47 @@ mod tests {
         let flat = Mat3::new(1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1e-9);
         assert!(polar_newton(&flat).is_none());
         assert!((project_to_so3(&flat) - Mat3::identity()).norm() < 1e-15);
+    }
+
+    /// −I: the last of the equal singular values' columns is turned, as
+    /// modern_robotics does; the answer is a half turn, as near as any.
+    #[test]
+    fn ties_are_found_and_answered_with_one_of_the_nearest() {
+        let minus = -Mat3::identity();
+        let r = project_to_so3(&minus);
+        assert_eq!(r, Mat3::new(-1.0, 0.0, 0.0, 0.0, -1.0, 0.0, 0.0, 0.0, 1.0));
+        assert_eq!(so3_tie(&minus), Some(Tie::Reflection { sigma: 1.0 }));
+        assert_eq!(so3_tie(&Mat3::zeros()), Some(Tie::Zero));
+        let rank_one = Mat3::new(0.0, 2.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+        assert_eq!(so3_tie(&rank_one), Some(Tie::RankOne { sigma: 2.0 }));
+        // A rank-1 M with det M = 4.7e-19 from rounding: Newton's
+        // iteration on its noise gave a reflection (det −1).
+        let m = Mat3::new(
+            0.1366963853729478,
+            0.8500276686476482,
+            -1.1714031011733639,
+            -0.02899153119641787,
+            -0.18027984870398495,
+            0.24843941160984825,
+            0.01915951075732261,
+            0.11914078208464096,
+            -0.16418510450630905,
+        );
+        let r = project_to_so3(&m);
+        assert!((r.determinant() - 1.0).abs() < 1e-14, "{r}");
+        assert!(matches!(so3_tie(&m), Some(Tie::RankOne { .. })));
+        // as near as the best: ‖R − M‖² = ‖M‖² + 3 − 2σ₁
+        let best = m.norm_squared() + 3.0 - 2.0 * 1.5;
+        assert!(((r - m).norm_squared() - best).abs() < 1e-13);
+        // unique: a rank-2 matrix, a reflection with σ₂ > σ₃, a rotation
+        for m in [
+            Mat3::new(1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0),
+            Mat3::new(-1.0, 0.0, 0.0, 0.0, -1.0, 0.0, 0.0, 0.0, -0.999),
+            Mat3::new(1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, -0.5),
+            Mat3::identity(),
+        ] {
+            assert_eq!(so3_tie(&m), None, "{m}");
+        }
     }
 
     #[test]
