@@ -612,3 +612,124 @@ fn check_knows_the_size_of_eye_and_zeros_of_literal_sizes() {
         [1.0, 2.0, 3.0, 4.0, 5.0, 6.0]
     );
 }
+
+/// A scalar in a row of blocks is 1×1 unless it is a lone `0`, which is
+/// the zero block its row and column need (§4): `[1, v]`, `[z, v]` with
+/// z = 0, `[-0, v]` and `[a, v]` with a given passed `check` and `run`
+/// refuses them. Rows of widths the kinds know to differ are refused by
+/// `check` as by `run` (`[R, 0; 1, 1]`). Over given names, `run` refused
+/// nothing: `[T, p]` with T : SE3 was a "4×5 matrix", `[R_ab, p; 0, 0, 1]`
+/// a 4×4 one; now both modes refuse them with the numbers' message.
+#[test]
+fn a_scalar_beside_a_block_is_one_by_one_unless_a_lone_zero() {
+    let setup = "R = Rotz(0.3)\nv = (1, 2, 3)\nz = 0\ngiven a\ngiven T : SE3\ngiven R_ab : SO3\ngiven p : vec3\n";
+    for (x, want) in [
+        (
+            "[1, v]",
+            "row 1 of the bracket joins blocks of 1 and 3 rows",
+        ),
+        (
+            "[z, v]",
+            "row 1 of the bracket joins blocks of 1 and 3 rows",
+        ),
+        (
+            "[-0, v]",
+            "row 1 of the bracket joins blocks of 1 and 3 rows",
+        ),
+        (
+            "[1 - 1, v]",
+            "row 1 of the bracket joins blocks of 1 and 3 rows",
+        ),
+        (
+            "[a, v]",
+            "row 1 of the bracket joins blocks of 1 and 3 rows",
+        ),
+        (
+            "[R, 1; 0, 1]",
+            "row 1 of the bracket joins blocks of 3 and 1 rows",
+        ),
+        // (the lone 0 is as tall as its row's tallest: run compares with it)
+        (
+            "[0, 1, v]",
+            "row 1 of the bracket joins blocks of 3 and 1 rows",
+        ),
+        (
+            "[R, 0; 1, 1]",
+            "rows of the bracket have different widths: 4 and 2 (row 2)",
+        ),
+        (
+            "[R, v; 0, 0, 1]",
+            "rows of the bracket have different widths: 4 and 3 (row 2)",
+        ),
+        (
+            "[T, a]",
+            "row 1 of the bracket joins blocks of 4 and 1 rows",
+        ),
+        (
+            "[T, p]",
+            "row 1 of the bracket joins blocks of 4 and 3 rows",
+        ),
+        (
+            "[R_ab, p; 0, 0, 1]",
+            "rows of the bracket have different widths: 4 and 3 (row 2)",
+        ),
+    ] {
+        let src = format!("{setup}{x}\n");
+        for mode in [Mode::Run, Mode::Check] {
+            let (kind, msg) = first_error(&src, mode)
+                .unwrap_or_else(|| panic!("{x}: {mode:?} did not refuse it"));
+            assert_eq!(
+                (kind.as_str(), msg.as_str()),
+                ("type", want),
+                "{x} ({mode:?})"
+            );
+        }
+    }
+    for x in [
+        "[0, v]",
+        "[0.0, v]",
+        "[R, 0; 0, 1]",
+        "[1, 0; 0, R]",
+        "[R, 0; 0, R]",
+        "[1, 2; v, v]",
+        "[R_ab, p; 0, 1]",
+        "[R_ab, p; 0, 0, 0, 1]",
+        "[a, a; a, a]",
+    ] {
+        let src = format!("{setup}{x}\n");
+        for mode in [Mode::Run, Mode::Check] {
+            assert_eq!(first_error(&src, mode), None, "{x} ({mode:?})");
+        }
+    }
+    assert_eq!(
+        last_numbers(&format!("{setup}[0, v]")),
+        [0.0, 1.0, 0.0, 2.0, 0.0, 3.0]
+    );
+}
+
+/// An index that is a given name with no number (alone or plus or minus a
+/// literal) is refused by `check` as by `run`; once the name has a number
+/// both pass.
+#[test]
+fn check_refuses_an_index_that_has_no_number_yet() {
+    for (x, shown) in [("v[n]", "n"), ("v[n + 1]", "n + 1"), ("v[3 - n]", "3 - n")] {
+        let src = format!("given n\nv = (1, 2, 3)\n{x}\n");
+        for mode in [Mode::Run, Mode::Check] {
+            let (kind, msg) = first_error(&src, mode)
+                .unwrap_or_else(|| panic!("{x}: {mode:?} did not refuse it"));
+            assert_eq!(
+                (kind.as_str(), msg.as_str()),
+                (
+                    "domain",
+                    format!("an index must be a number: `{shown}` has no number yet").as_str()
+                ),
+                "{x} ({mode:?})"
+            );
+        }
+    }
+    let src = "given n\nn = 2\nv = (1, 2, 3)\nv[n + 1]\n";
+    for mode in [Mode::Run, Mode::Check] {
+        assert_eq!(first_error(src, mode), None, "{mode:?}");
+    }
+    assert_eq!(last_numbers(src), [3.0]);
+}

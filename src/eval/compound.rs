@@ -43,20 +43,23 @@ impl Interp<'_> {
                     }
                     // (an index over symbols would pick an entry that is
                     // not known yet: refused, never read as NaN)
+                    let waits = || {
+                        Diagnostic::error(
+                            ErrorKind::Domain,
+                            e.span,
+                            format!(
+                                "an index must be a number: `{}` has no number yet",
+                                self.text(e.span).trim()
+                            ),
+                        )
+                        .with_help("bind numbers to the given names before indexing with them")
+                    };
                     let at = match it.value() {
-                        Some(v) => v.as_scalar().ok_or_else(|| {
-                            Diagnostic::error(
-                                ErrorKind::Domain,
-                                e.span,
-                                format!(
-                                    "an index must be a number: `{}` has no number yet",
-                                    self.text(e.span).trim()
-                                ),
-                            )
-                            .with_help("bind numbers to the given names before indexing with them")
-                        })?,
-                        // (checking: a literal index is known, any other
-                        // is not)
+                        Some(v) => v.as_scalar().ok_or_else(waits)?,
+                        // (checking: a given name with no number is refused
+                        // as running refuses it; a literal index is known,
+                        // any other is not)
+                        None if self.unbound_symbol(e) => return Err(waits()),
                         None => literal_index(e).unwrap_or(f64::NAN),
                     };
                     sels.push(Sel::At(at));
@@ -85,6 +88,31 @@ impl Interp<'_> {
             }
         };
         Ok(Typed::new(refine(ty, &val), val))
+    }
+
+    /// Checking: whether the index `e` is a `given` scalar that has no
+    /// number yet, alone or plus or minus a literal (`n`, `n + 1`, `2 - n`):
+    /// running refuses it. (Other expressions over symbols are left to
+    /// running: `n - n` is a number.)
+    fn unbound_symbol(&self, e: &Expr) -> bool {
+        use crate::syntax::ast::BinOp;
+        match &e.kind {
+            ExprKind::Var(n) => self
+                .env
+                .get(*n)
+                .is_some_and(|b| b.symbolic && b.ty.kind == Kind::Scalar),
+            ExprKind::Binary {
+                op: BinOp::Add | BinOp::Sub,
+                lhs,
+                rhs,
+                ..
+            } => {
+                (self.unbound_symbol(lhs) && literal_index(rhs).is_some())
+                    || (literal_index(lhs).is_some() && self.unbound_symbol(rhs))
+            }
+            ExprKind::Paren(items) if items.len() == 1 => self.unbound_symbol(&items[0]),
+            _ => false,
+        }
     }
 
     /// Checking `t[k]` of a tuple whose parts differ, `k` no literal: which
@@ -217,16 +245,33 @@ impl Interp<'_> {
             .rule(&tys, Hints::default())
             .map_err(|e| Diagnostic::error(ErrorKind::Type, span, e.into_message()))?;
         let ty = transform_block(&rows, &trows).unwrap_or(ty);
-        if !self.running() {
-            // checking refuses a row of blocks of heights the kinds know
-            // to differ (`[T_ab, v]`), as running will
-            let kinds: Vec<Vec<Kind>> = trows
+        // checking refuses a row of blocks of heights the kinds know to
+        // differ (`[T_ab, v]`), or rows of widths, as running will; and so
+        // does running over given names, whose symbols have no numbers to
+        // compare (`[T, p]` with T : SE3 was a "4×5 matrix")
+        let names = || {
+            trows
                 .iter()
-                .map(|r| r.iter().map(|t| t.ty.kind).collect())
+                .flatten()
+                .any(|t| matches!(t.value(), Some(Value::Sym(_))))
+        };
+        if !self.running() || names() {
+            let lone = |e: &Expr| matches!(e.kind, ExprKind::Number(x) if x == 0.0);
+            let kinds: Vec<Vec<(Kind, bool)>> = trows
+                .iter()
+                .zip(&rows)
+                .map(|(r, es)| {
+                    r.iter()
+                        .zip(es.iter())
+                        .map(|(t, e)| (t.ty.kind, lone(e)))
+                        .collect()
+                })
                 .collect();
             if let Some(m) = crate::seam::shapes::block_refusal(&kinds) {
                 return Err(op.failure(m, span));
             }
+        }
+        if !self.running() {
             return Ok(Typed::new(ty, None));
         }
         let mut vrows: Vec<Vec<Value>> = trows

@@ -80,23 +80,70 @@ pub(crate) fn index_refusal(kind: &Kind, sels: &[Sel]) -> Option<OpError> {
 }
 
 /// The error a block matrix `[a, b; c, d]` of entries of these kinds
-/// would stop with, row by row, as far as the kinds know: a row whose
-/// blocks have different heights (`[T_ab, v]`). A scalar may be a lone
-/// `0`, as tall as its row needs, so it is left out.
-pub(crate) fn block_refusal(rows: &[Vec<Kind>]) -> Option<OpError> {
+/// would stop with, as far as the kinds know, in the order running finds
+/// them (`crate::values::ops::brackets`): a row whose blocks have different
+/// heights (`[T_ab, v]`, `[1, v]`), then a row of another width than the
+/// first (`[R, 0; 1, 1]`). Each entry is its kind and whether it is a lone
+/// `0`, which stands for the zero block its row's height and its column's
+/// width need (`zero_blocks_where`); any other scalar is 1×1. A row with an
+/// entry of unknown height is judged by the heights known.
+pub(crate) fn block_refusal(rows: &[Vec<(Kind, bool)>]) -> Option<OpError> {
+    // (all 1×1: a vector or a matrix of numbers, no blocks to fill)
+    let blocks = rows
+        .iter()
+        .flatten()
+        .any(|(k, _)| k.shape() != Some((Some(1), Some(1))));
+    let lone = |i: usize, j: usize| blocks && rows[i][j].1;
+    let dims = |k: &Kind| k.shape().unwrap_or((None, None));
+    let mut filled: Vec<Vec<(Option<usize>, Option<usize>)>> = Vec::with_capacity(rows.len());
     for (i, row) in rows.iter().enumerate() {
-        let mut heights = row
-            .iter()
-            .filter(|k| !matches!(k, Kind::Scalar))
-            .filter_map(|k| k.shape().and_then(|s| s.0));
-        let Some(first) = heights.next() else {
-            continue;
+        let known: Vec<Option<usize>> = (0..row.len())
+            .filter(|&j| !lone(i, j))
+            .map(|j| dims(&row[j].0).0)
+            .collect();
+        let height = match known.iter().all(Option::is_some) {
+            true => Some(known.iter().flatten().copied().max().unwrap_or(1)),
+            false => None,
         };
-        if let Some(other) = heights.find(|&h| h != first) {
-            return Some(OpError::RowHeights(i + 1, first, other));
+        let mut cells = Vec::with_capacity(row.len());
+        for (j, (k, _)) in row.iter().enumerate() {
+            if !lone(i, j) {
+                cells.push(dims(k));
+                continue;
+            }
+            let mut width = Some(1);
+            for (r, other) in rows.iter().enumerate() {
+                if other.len() == row.len() && !lone(r, j) {
+                    width = width.zip(dims(&other[j].0).1).map(|(a, b)| a.max(b));
+                }
+            }
+            cells.push((height, width));
         }
+        // (running compares each block with the row's first)
+        let heights: Vec<usize> = match height {
+            Some(_) => cells.iter().filter_map(|c| c.0).collect(),
+            None => (0..row.len())
+                .filter(|&j| !lone(i, j))
+                .filter_map(|j| cells[j].0)
+                .collect(),
+        };
+        if let Some((first, rest)) = heights.split_first()
+            && let Some(other) = rest.iter().find(|&&h| h != *first)
+        {
+            return Some(OpError::RowHeights(i + 1, *first, *other));
+        }
+        filled.push(cells);
     }
-    None
+    let widths: Vec<Option<usize>> = filled
+        .iter()
+        .map(|cells| cells.iter().try_fold(0, |w, c| c.1.map(|x| w + x)))
+        .collect();
+    let first = *widths.first()?;
+    let first = first?;
+    widths.iter().enumerate().find_map(|(i, w)| {
+        w.filter(|&w| w != first)
+            .map(|w| OpError::RowWidths(first, w, i + 1))
+    })
 }
 
 /// The rule of `[x]`, one entry in brackets: the book's bracket of a 3-
