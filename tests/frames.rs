@@ -542,6 +542,52 @@ fn a_3x3_near_both_so3_and_se2_says_which_reading_log_took() {
     );
 }
 
+/// A tuple written out and bound to a framed name: the name claims its
+/// parts' frames, so a part that says otherwise is the frame error a
+/// single value would be (`q_ab = (T_ab, T_cb)` was accepted and tagged
+/// {a}←{b}), in run and check, with numbers and with symbols. Parts in
+/// the name's frames (R_ab, a vector in {a} or {b}), untagged parts and
+/// scalars pass; an untagged part takes the name's frames, as `T_ab = M`.
+#[test]
+fn a_framed_name_claims_the_frames_of_a_tuples_parts() {
+    for setup in [NUMBERS, "given T_ab, T_cb : SE3\n"] {
+        for (x, want) in [
+            (
+                "q_ab = (T_ab, T_cb)",
+                "part 2 of the tuple is {b} in {c}, but the name q_ab says {b} in {a}",
+            ),
+            (
+                "q_cd = (T_ab, 1)",
+                "part 1 of the tuple is {b} in {a}, but the name q_cd says {d} in {c}",
+            ),
+        ] {
+            for mode in [Mode::Run, Mode::Check] {
+                assert_eq!(
+                    last(&format!("{setup}{x}\n"), mode),
+                    Err(("frame".into(), want.into())),
+                    "{setup}{x} ({mode:?})"
+                );
+            }
+        }
+    }
+    let ok = "R_ab = Rotz(0.3)\np_a = (1, 2, 3)\np_b = (1, 0, 0)\nM = eye(4)\n";
+    for (x, frames) in [
+        ("q_ab = (R_ab, p_a)\nq_ab[2]", vec!["a"]),
+        ("q_ab = (R_ab, p_b)\nq_ab[2]", vec!["b"]),
+        ("q_ab = (M, 1)\nq_ab[1]", vec!["a", "b"]),
+        ("q_ab = (R_ab, 2)\nq_ab[1]", vec!["a", "b"]),
+    ] {
+        for mode in [Mode::Run, Mode::Check] {
+            let got = last(&format!("{ok}{x}\n"), mode);
+            let want: Vec<String> = frames.iter().map(|f| f.to_string()).collect();
+            assert!(
+                matches!(&got, Ok((f, _)) if *f == want),
+                "{x} ({mode:?}): {got:?}"
+            );
+        }
+    }
+}
+
 #[test]
 fn type_labels_only_for_members_of_the_set() {
     // [ω]² is symmetric, not so(3); a power of a plain matrix is a plain matrix.
@@ -798,8 +844,9 @@ fn a_tuple_part_picked_by_a_name_is_checked_when_run() {
         err.contains("warning: cannot tell which part of `t` `t[k]` is"),
         "{err}"
     );
-    // parts alike: nothing to tell apart, no warning
-    let src = "given T_ab : SE3\nt = (T_ab, T_ab)\ngiven k\nt[k] * inv(T_ab)\n";
+    // parts alike: nothing to tell apart, no warning (k a number check
+    // does not know; a given k has none, refused by both)
+    let src = "given T_ab : SE3\nt = (T_ab, T_ab)\nk = len(t)\nt[k] * inv(T_ab)\n";
     let mut s = Session::new(Settings::default());
     let (_, err, errors) = s.run_to_strings("t.chs", src, Mode::Check, false);
     assert_eq!((errors, err.as_str()), (0, ""));

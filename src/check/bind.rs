@@ -279,6 +279,15 @@ pub fn bind_in_place(
         None => ty.free && kind.is_vector(),
     };
     let claim = claim.frames_for(&kind);
+    // A tuple written out (`(T_ab, T_cb)`) has no tag of its own: the name
+    // claims its parts' frames, which must not say otherwise.
+    if let (Kind::Tuple(_), Frames::None) = (kind, ty.frames)
+        && let Some(e) = tuple_refusal(name, &claim, ty)
+    {
+        ty.kind = kind;
+        ty.frames = claim;
+        return Err(e);
+    }
     let mut warning = None;
     let frames = match (claim, ty.frames) {
         (Frames::None, f) => f,
@@ -308,6 +317,44 @@ pub fn bind_in_place(
     ty.kind = kind;
     ty.frames = frames;
     Ok(warning)
+}
+
+/// `q_ab = (T_ab, T_cb)`: the first part of the tuple whose frames are not
+/// the name's. Under {a}←{b} a part may be {a}←{b} (or {a}←{b'}, a
+/// displacement in {a}), a vector in {a} or {b}, or untagged; under {a},
+/// anything whose outer frame is {a}.
+fn tuple_refusal(name: &str, claim: &Frames, ty: &Ty) -> Option<RuleError> {
+    let Kind::Tuple(kinds) = ty.kind else {
+        return None;
+    };
+    let fits = |part: &Frames| match (claim, part) {
+        (Frames::None, _) | (_, Frames::None) => true,
+        (Frames::Pair(x, y), Frames::Pair(a, b)) => x == a && (y == b || b.is_moved()),
+        (Frames::Pair(x, _), Frames::Disp(a)) => x == a,
+        (Frames::Pair(x, y), Frames::One(a)) => x == a || y == a,
+        (Frames::One(x), Frames::One(a) | Frames::Disp(a) | Frames::Pair(a, _)) => x == a,
+        _ => false,
+    };
+    let (i, part) = (0..kinds.len())
+        .filter_map(|i| ty.part(i).map(|p| (i, p)))
+        .find(|(_, p)| !fits(&p.frames))?;
+    let mut e = RuleError::from(crate::check::rules::Refusal {
+        kind: Some(ErrorKind::Frame),
+        message: format!(
+            "part {} of the tuple is {}, but the name {name} says {}",
+            i + 1,
+            describe(&part.frames),
+            describe(claim)
+        ),
+        ..Default::default()
+    });
+    e.lhs = format!("says {}", describe(claim));
+    e.rhs = format!("part {} is {}", i + 1, describe(&part.frames));
+    e.help = Some(format!(
+        "a name's frames claim every part's: name the tuple without a frame subscript ({} = ...), or give each part its own name",
+        base_name(name)
+    ));
+    Some(e)
 }
 
 fn mismatch(name: &str, claim: &Frames, frames: &Frames) -> RuleError {
