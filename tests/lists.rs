@@ -245,6 +245,43 @@ fn a_range_of_exact_bounds_ends_exactly() {
     }
 }
 
+/// A range whose bounds have no exact form is counted in floats, its end
+/// included within 1e-10 of a step count; no item passes the end: where
+/// the last sum does, the last item is the end itself, as MATLAB's colon
+/// makes it. `a:(b - a)/3:b` (a = sin(19/37)/5, b = a + exp(19/37)) ended
+/// at a + 3h = b + 2.2e-16, past b. Exact bounds are counted exactly
+/// (0:pi/10:pi 11 items, 0:0.1:0.3 4, 1:-0.1:0.7 4, each ending at its end).
+#[test]
+fn no_item_of_a_float_range_passes_its_end() {
+    let setup = "a = sin(19/37)/5\nb = a + exp(19/37)\nh = (b - a)/3\n";
+    for (line, want) in [
+        ("(a:h:b)[end] - b", "0"),
+        ("(a:h:b)[end] > b", "false"),
+        ("len(a:h:b)", "4"),
+        ("(a:h:b)[end] == b", "true"),
+        ("(a:h:b)[3] == a + 2*h", "true"),
+        ("[acos((x - a)/(b - a)) for x in a:h:b][end]", "0"),
+        // a descending range, and one whose end is off a step count by
+        // 1e-13 (within 1e-10: reached, and the end is the last item)
+        ("len(b:-h:a)", "4"),
+        ("(b:-h:a)[end] >= a", "true"),
+        ("len(a:h:b*(1 - 1e-13))", "4"),
+        ("(a:h:b*(1 - 1e-13))[end] == b*(1 - 1e-13)", "true"),
+        // off by more than 1e-10 of a step: not reached
+        ("len(a:h:b - 1e-9)", "3"),
+        ("len(0:pi/10:pi)", "11"),
+        ("(0:pi/10:pi)[end] == pi", "true"),
+        ("len(0:0.1:0.3)", "4"),
+        ("1:-0.1:0.7", "[1, 0.9, 0.8, 0.7]  : list of 4 numbers"),
+        ("(1:-0.1:0.7)[end] == 0.7", "true"),
+    ] {
+        let mut s = Session::new(Settings::default());
+        let (out, err, n) = s.run_to_strings("t", &format!("{setup}{line}\n"), Mode::Run, false);
+        assert_eq!(n, 0, "{line}: {err}");
+        assert_eq!(out.lines().last(), Some(want), "{line}: {out}");
+    }
+}
+
 /// The sum of no items is the zero of their kind, as the sum of the items
 /// would be typed (a 3-vector, a twist in {s}): it was the number 0, so
 /// that `sum([(1, 0, 0) for k in 1:0]) + (1, 2, 3)` was a type error.

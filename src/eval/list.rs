@@ -254,7 +254,10 @@ impl Interp<'_> {
         spend(n, span)?;
         crate::budget::hold(2 * n as u64)
             .map_err(|stop| super::interp::budget_error(stop, span))?;
-        Ok(Typed::new(ty, Some(Value::List(Rc::new(items(&a, &h, n))))))
+        Ok(Typed::new(
+            ty,
+            Some(Value::List(Rc::new(items(&a, &h, &b, n)))),
+        ))
     }
 
     /// `xs[i]`: the i-th item (from 1), with the list's frames.

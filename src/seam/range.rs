@@ -47,8 +47,13 @@ impl std::fmt::Display for RangeFail {
     }
 }
 
-/// The number of items of `a:h:b` in floats (MATLAB's: the end is
-/// included when within rounding, so 0:pi/8:pi has 9 items).
+/// The number of items of `a:h:b` in floats: ⌊s + 1e-10·(1 + |s|)⌋ + 1
+/// with s = (b − a)/h (none when s < −1e-10·(1 + |s|)), the end included
+/// when within 1e-10 of a step count (so 0:pi/8:pi has 9 items, and an end
+/// computed with accumulated rounding is kept). MATLAB's colon includes
+/// the end within 2ε·max(|a|, |b|) only; an end off a step count by more
+/// than that and less than 1e-10 (relative) is reached here and not there,
+/// and [`items`] then makes it the last item, so that none passes it.
 pub(crate) fn range_count(a: f64, h: f64, b: f64) -> Result<usize, RangeFail> {
     if !(a.is_finite() && h.is_finite() && b.is_finite()) {
         return Err(RangeFail::NotFinite);
@@ -119,7 +124,30 @@ fn exact_steps(a: &Value, h: &Value, b: &Value) -> Option<Rat> {
 /// 0.3` as `0.1·3 == 0.3`, `sqrt(k)` of a `k` of `1:4` as of a `k` typed;
 /// `(-0.3:0.1:0.3)[4]` is 0, its floats having cancelled, as
 /// `-0.3 + 3·0.1` is). A whole-number range is as typed (no form to keep).
-pub(crate) fn items(a: &Value, h: &Value, n: usize) -> Vec<Value> {
+///
+/// When the count is by the floats ([`count`]: a bound with no exact
+/// form), the end is reached within rounding, and the last item's sum
+/// passes it, the last item is the end `b` itself, as MATLAB's colon
+/// makes it: no item lies beyond the end (`0:s/7:s` with s = sin(1) ended
+/// 1 ulp past s, whose acos was then out of domain).
+pub(crate) fn items(a: &Value, h: &Value, b: &Value, n: usize) -> Vec<Value> {
+    let mut out = sums(a, h, n);
+    let (Some(dx), Some(y)) = (h.as_scalar(), b.as_scalar()) else {
+        return out;
+    };
+    if let Some(last) = out.last_mut()
+        && last
+            .as_scalar()
+            .is_some_and(|x| (x - y) * dx.signum() > 0.0)
+        && exact_steps(a, h, b).is_none()
+    {
+        *last = b.clone();
+    }
+    out
+}
+
+/// The items `a + k·h`, k < n ([`items`] before its end is settled).
+fn sums(a: &Value, h: &Value, n: usize) -> Vec<Value> {
     let (Some(x), Some(dx)) = (a.as_scalar(), h.as_scalar()) else {
         return Vec::new();
     };
@@ -189,7 +217,7 @@ fn scalar_form(v: &Value) -> Option<Expr> {
 /// numbers ([`crate::decide::replay`]); Err why it has none.
 pub(crate) fn range_items(a: &Value, h: &Value, b: &Value) -> Result<Value, RangeFail> {
     let n = count(a, h, b)?;
-    Ok(Value::List(Rc::new(items(a, h, n))))
+    Ok(Value::List(Rc::new(items(a, h, b, n))))
 }
 
 #[cfg(test)]
