@@ -354,7 +354,9 @@ mod tests {
             (typed(1.5), typed(-0.001)),
         ] {
             let (fa, fh) = (scalar_form(&a).expect("a"), scalar_form(&h).expect("h"));
-            let vs = items(&a, &h, 40);
+            // (an end past the 40th item: none is moved onto it)
+            let far = typed(1e9_f64.copysign(h.as_scalar().expect("h")));
+            let vs = items(&a, &h, &far, 40);
             assert_eq!(vs.len(), 40);
             for (k, v) in vs.iter().enumerate() {
                 assert!(
@@ -376,7 +378,7 @@ mod tests {
             }
         }
         // (0:0.1:1)[4] is 3/10 exactly, its float 0.30000000000000004
-        let v = &items(&typed(0.0), &typed(0.1), 11)[3];
+        let v = &items(&typed(0.0), &typed(0.1), &typed(1.0), 11)[3];
         assert_eq!(v.as_scalar(), Some(3.0 * 0.1));
         assert_eq!(
             scalar_form(v),
