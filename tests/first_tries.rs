@@ -32,14 +32,19 @@ fn a_symbolic_block_transform_is_in_se3() {
 
 /// A block that is not the book's transform keeps its matrix kind: a
 /// last row other than `0, 1`, or a top-left block that is not a rotation.
+/// `[R, p; 1, 1]` is refused, as with numbers: only a lone 0 stretches to
+/// the block that fits (LANGUAGE.md §3), so its rows are 4 and 2 wide.
 #[test]
 fn other_blocks_stay_matrices() {
     let j = json(
         "given R : SO3\ngiven p : vec3\ngiven W : so3\n[R, p; 0, 2]\n[W, p; 0, 1]\n[R, p; 1, 1]",
     );
-    for line in &j {
+    for line in &j[..2] {
         assert_eq!(line["kind"], "matrix", "{line:?}");
     }
+    assert_eq!(j[2]["error"]["kind"], "type", "{:?}", j[2]);
+    let message = j[2]["error"]["message"].as_str().unwrap_or("");
+    assert!(message.contains("different widths: 4 and 2"), "{message}");
 }
 
 /// With numbers bound later, the block and its inverse are the values
