@@ -733,3 +733,133 @@ fn check_refuses_an_index_that_has_no_number_yet() {
     }
     assert_eq!(last_numbers(src), [3.0]);
 }
+
+/// Found by a differential sweep of `check` against `run` on random
+/// scripts of the book's names: `check` gave a slice of literal positions
+/// no length (`T_bc[1:3]` was an n-vector, so `M[3, 3] - T_bc[1:3]`,
+/// `det(F_a[1:3])` and `[M[1:3], 2]` passed it), a stack of columns
+/// `[p_a; p_b]` and a row's transpose `p_a.T.T` were r×1 matrices (run: a
+/// 6-vector, a 3-vector, in every message). Now both refuse with run's
+/// words, and `an n-vector` is spelled so.
+#[test]
+fn check_knows_the_sizes_of_slices_stacks_and_transposes() {
+    let setup = "T_bc = RpToTrans(Roty(0.4), (0, 1, 0))\nF_a = wrench((0, 0, 1), (0, 1, 0))\n\
+                 M = [1, 2, 3; 4, 5, 6; 7, 8, 10]\np_a = (1, 2, 3)\np_b = (3, 2, 1)\n";
+    for (x, kind, want) in [
+        (
+            "M[3, 3] - T_bc[1:3]",
+            "type",
+            "cannot add a scalar and a 3-vector",
+        ),
+        (
+            "det(F_a[1:3])",
+            "type",
+            "argument 1 of det must be a square matrix, not a 3-vector",
+        ),
+        (
+            "[M[1:3], 2]",
+            "type",
+            "row 1 of the bracket joins blocks of 3 and 1 rows",
+        ),
+        (
+            "M[1:2, :] * p_a.T",
+            "type",
+            "cannot multiply a 2×3 matrix by a 1×3 matrix",
+        ),
+        (
+            "log([p_a; p_b])",
+            "type",
+            "log takes a rotation or transform (SO(3), SE(3), SO(2), SE(2)), not a 6-vector",
+        ),
+        (
+            "R_ac = p_a.T.T",
+            "type",
+            "R_ac names a rotation, in SO(3) or SO(2), but the value is a 3-vector",
+        ),
+    ] {
+        let src = format!("{setup}{x}\n");
+        for mode in [Mode::Run, Mode::Check] {
+            let got = first_error(&src, mode);
+            assert_eq!(
+                got,
+                Some((kind.to_string(), want.to_string())),
+                "{x} ({mode:?})"
+            );
+        }
+    }
+    for x in [
+        "T_bc[1:3, 4] + p_b",
+        "M[1:2, 2:3] * M[2:3, 1:2]",
+        "[p_a; p_b][4:6] + p_b",
+    ] {
+        let src = format!("{setup}{x}\n");
+        for mode in [Mode::Run, Mode::Check] {
+            assert_eq!(first_error(&src, mode), None, "{x} ({mode:?})");
+        }
+    }
+    // a size checking does not know: an n-vector
+    let src = "T_bc = RpToTrans(Roty(0.4), (0, 1, 0))\nk = len(1:3)\ninv(T_bc[1:k])\n";
+    assert_eq!(
+        first_error(src, Mode::Check),
+        Some(("type".into(), "cannot invert an n-vector".into()))
+    );
+}
+
+/// A given name's entries, as its numbers' are: `T_ab[2]` of a given SE(3)
+/// printed `T_ab[2]` (numbers: 'a matrix takes two indices'), and a range
+/// of a given name was refused by `run` ('cannot index an SE(3) with a
+/// range') where `check` passed it. Now `T_ab[1:3, 4]` is the vector of
+/// its entries, in {a}, made numbers when T_ab gets them; a vector's slice
+/// keeps its frame, over symbols as over numbers.
+#[test]
+fn a_given_names_entries_are_indexed_as_its_numbers() {
+    let setup = "given T_ab : SE3\ngiven p_a : vec3\ngiven V_b : twist\np_b = (1, 2, 3)\n";
+    for (x, kind, want) in [
+        (
+            "T_ab[2]",
+            "domain",
+            "a matrix takes two indices: M[i, j], M[i, :] or M[:, j]",
+        ),
+        (
+            "T_ab[5, 1]",
+            "domain",
+            "index 5 is out of range 1..4 (indices start at 1, as in the book)",
+        ),
+        (
+            "p_a[1:3] + p_b",
+            "frame",
+            "cannot add quantities in different frames",
+        ),
+        (
+            "V_b[4:6] + T_ab[1:3, 4]",
+            "frame",
+            "cannot add quantities in different frames",
+        ),
+        (
+            "det(T_ab[1:3, 4])",
+            "type",
+            "argument 1 of det must be a square matrix, not a 3-vector",
+        ),
+    ] {
+        let src = format!("{setup}{x}\n");
+        for mode in [Mode::Run, Mode::Check] {
+            assert_eq!(
+                first_error(&src, mode),
+                Some((kind.to_string(), want.to_string())),
+                "{x} ({mode:?})"
+            );
+        }
+    }
+    let src = format!(
+        "{setup}x = T_ab[1:3, 4]\nR = T_ab[1:3, 1:3]\nT_ab = RpToTrans(Rotz(0.3), (1, 2, 3))\nx\nR[2, 1]\n"
+    );
+    for mode in [Mode::Run, Mode::Check] {
+        assert_eq!(first_error(&src, mode), None, "{mode:?}");
+    }
+    let lines = try_json(&src).unwrap();
+    let x = &lines[lines.len() - 2];
+    assert_eq!(numbers(&x["value"]), [1.0, 2.0, 3.0]);
+    assert_eq!(x["frames"], serde_json::json!(["a"]));
+    let r = numbers(&lines[lines.len() - 1]["value"]);
+    assert!((r[0] - 0.3f64.sin()).abs() < 1e-15, "{r:?}");
+}

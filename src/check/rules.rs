@@ -164,9 +164,11 @@ pub fn transpose(t: &Ty) -> Result<Ty, RuleError> {
         Kind::Scalar => Kind::Scalar,
         Kind::Unknown => Kind::Unknown,
         k => match k.shape() {
+            // (a row's transpose is a column: a vector, as the numbers
+            // are classified; `v.T.T` is v again)
             Some((r, c)) => {
-                if c == Some(1) && r != Some(1) {
-                    Kind::Vector(r)
+                if r == Some(1) && c != Some(1) {
+                    Kind::Vector(c)
                 } else {
                     Kind::Matrix(c, r)
                 }

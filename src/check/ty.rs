@@ -201,8 +201,11 @@ impl Kind {
             && !name.starts_with("screw")
             && !name.starts_with("scalar")
             && !name.starts_with("string");
-        let vowel =
-            vowel || name.starts_with("8-") || name.starts_with("11-") || name.starts_with("18-");
+        // (an n-vector, an n×3 matrix: a size checking does not know)
+        let vowel = vowel
+            || ["8-", "11-", "18-", "n-", "n×"]
+                .iter()
+                .any(|p| name.starts_with(p));
         format!("{} {name}", if vowel { "an" } else { "a" })
     }
 }

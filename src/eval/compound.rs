@@ -74,7 +74,17 @@ impl Interp<'_> {
             .rule(&[&t.ty], Hints::default())
             .map_err(|e| Diagnostic::error(ErrorKind::Type, span, e.into_message()))?;
         let val = match t.val.as_deref() {
-            Some(v) => Some(op.apply(&[v], &ty.kind).map_err(|m| op.failure(m, span))?),
+            Some(v) => {
+                // (a given name's symbol has no entries to refuse with:
+                // `T_ab[2]` of a given SE(3) is refused by its kind, as
+                // numbers are)
+                if let Value::Sym(_) = v
+                    && let Some(m) = crate::seam::shapes::index_refusal(&t.ty.kind, &sels)
+                {
+                    return Err(op.failure(m, span));
+                }
+                Some(op.apply(&[v], &ty.kind).map_err(|m| op.failure(m, span))?)
+            }
             None => {
                 // checking refuses what running will: `L[1]` of a 4×8
                 // matrix, `t[3]` of a pair, `x[1.5]`

@@ -70,6 +70,16 @@ fn with_end(e: &Expr, n: f64) -> Expr {
 struct Picked {
     at: Vec<f64>,
     single: bool,
+    /// Checking: whether `at` is every position picked (literals, `end`
+    /// of a known size), so that the slice's length is `at.len()`.
+    known: bool,
+}
+
+impl Picked {
+    /// How many positions are picked, when checking knows.
+    fn len(&self) -> Option<usize> {
+        (self.known && self.at.iter().all(|x| x.is_finite())).then_some(self.at.len())
+    }
 }
 
 impl Interp<'_> {
@@ -99,6 +109,8 @@ impl Interp<'_> {
                 Some(m) if v.kind() != Kind::Bool => (Some(m.rows), Some(m.cols)),
                 _ => (None, None),
             },
+            // (a given name: its kind's size, its entries `T_ab[i, j]`)
+            (Some(Value::Sym(_)), k) => k.shape().unwrap_or((None, None)),
             (Some(v), _) => match v.as_matrix() {
                 Some(m) => (Some(m.nrows()), Some(m.ncols())),
                 None => (None, None),
@@ -153,13 +165,16 @@ impl Interp<'_> {
                 Some(a) => Frames::One(*a),
                 None => Frames::None,
             };
+            // (the length when the positions are known: `T_bc[1:3]` is a
+            // 3-vector, as running makes it)
             let ty = match (t.ty.kind, picks.as_slice()) {
                 (Kind::List(k), [p]) if p.single => t.ty.item(*k),
                 (Kind::List(_), _) => t.ty,
                 (_, [p]) | (_, [p, Picked { single: true, .. }]) if p.single => Ty::scalar(),
-                (k, [_]) if k.is_vector() => Ty::new(Kind::Vector(None), t.ty.frames),
-                (_, [_]) => Ty::plain(Kind::Vector(None)),
-                (_, [_, Picked { single: true, .. }]) => Ty::new(Kind::Vector(None), outer),
+                (k, [p]) if k.is_vector() => Ty::new(Kind::Vector(p.len()), t.ty.frames),
+                (_, [p]) => Ty::plain(Kind::Vector(p.len())),
+                (_, [p, Picked { single: true, .. }]) => Ty::new(Kind::Vector(p.len()), outer),
+                (_, [p, q]) => Ty::plain(Kind::Matrix(p.len(), q.len())),
                 _ => Ty::plain(Kind::Matrix(None, None)),
             };
             return Ok(Typed::new(ty, None));
@@ -183,7 +198,7 @@ impl Interp<'_> {
             let items: Vec<Value> = at.iter().map(|&k| xs[k].clone()).collect();
             return Ok(Typed::new(t.ty, Some(Value::List(Rc::new(items)))));
         }
-        if let Value::Formula { .. } = value
+        if let Value::Formula { .. } | Value::Sym(_) = value
             && let (Some(r), Some(c)) = (rows, cols)
         {
             let (rs, cs) = if one {
@@ -198,7 +213,17 @@ impl Interp<'_> {
                     check(&picks[1], c, "the columns")?,
                 )
             };
-            return symbolic(value, (&rs, &cs), (one, c), &picks, span);
+            // (the frames the numbers' slice has, below)
+            let mut sliced = symbolic(value, (&rs, &cs), (one, c), &picks, span)?;
+            sliced.ty.frames = match (sliced.ty.kind, one) {
+                (Kind::Vector(_), true) if c == 1 => t.ty.frames,
+                (Kind::Vector(_), false) => match t.ty.frames.outer() {
+                    Some(a) => Frames::One(*a),
+                    None => Frames::None,
+                },
+                _ => Frames::None,
+            };
+            return Ok(sliced);
         }
         let Some(m) = value.as_matrix() else {
             return Err(Diagnostic::error(
@@ -248,7 +273,12 @@ impl Interp<'_> {
         let e = match a {
             IndexArg::All(_) => {
                 let at = (1..=n.unwrap_or(0)).map(|k| k as f64).collect();
-                return Ok(Picked { at, single: false });
+                let known = n.is_some();
+                return Ok(Picked {
+                    at,
+                    single: false,
+                    known,
+                });
             }
             IndexArg::Expr(e) => e,
         };
@@ -259,7 +289,11 @@ impl Interp<'_> {
         {
             // checking: a literal's positions are known without numbers
             let single = !matches!(e.kind, ExprKind::Range { .. });
-            return Ok(Picked { at, single });
+            return Ok(Picked {
+                at,
+                single,
+                known: true,
+            });
         }
         match t.value() {
             Some(Value::List(xs)) => Ok(Picked {
@@ -268,10 +302,12 @@ impl Interp<'_> {
                     .map(|x| x.as_scalar().unwrap_or(f64::NAN))
                     .collect(),
                 single: false,
+                known: true,
             }),
             Some(v) if v.as_scalar().is_some() => Ok(Picked {
                 at: vec![v.as_scalar().unwrap_or(f64::NAN)],
                 single: true,
+                known: true,
             }),
             Some(_) => Err(Diagnostic::error(
                 ErrorKind::Type,
@@ -281,6 +317,7 @@ impl Interp<'_> {
             None => Ok(Picked {
                 at: Vec::new(),
                 single: !matches!(t.ty.kind, Kind::List(_)),
+                known: false,
             }),
         }
     }

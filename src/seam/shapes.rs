@@ -205,7 +205,12 @@ pub(crate) fn block_type(widths: &[usize], args: &[&Ty]) -> Ty {
         start += n;
     }
     let width: Option<usize> = columns.into_iter().sum();
-    Ty::new(Kind::Matrix(height, width), frames)
+    // (one column is a vector, as the numbers are classified: `[p_a; p_b]`
+    // is a 6-vector)
+    match width {
+        Some(1) => Ty::new(Kind::Vector(height), frames),
+        _ => Ty::new(Kind::Matrix(height, width), frames),
+    }
 }
 
 /// `[R, p; 0, 1]` with its values: each entry that `lone(i, j)` says was
