@@ -830,6 +830,12 @@ fn a_given_names_entries_are_indexed_as_its_numbers() {
             "frame",
             "cannot add quantities in different frames",
         ),
+        // (a vector of formulas: its slice printed (1 + cos(t), …) {b})
+        (
+            "given t\nq_a = (cos(t), sin(t), 0)\nq_a[1:3] + p_b",
+            "frame",
+            "cannot add quantities in different frames",
+        ),
         (
             "V_b[4:6] + T_ab[1:3, 4]",
             "frame",
