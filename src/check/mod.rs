@@ -13,6 +13,7 @@ mod free;
 mod hints;
 mod kind_eq;
 pub mod name;
+mod part_list;
 pub mod parts;
 mod product;
 pub mod role;

@@ -7,12 +7,7 @@
 
 use super::ty::{Kind, Ty};
 
-/// A list of part types, interned for the whole process and named by its
-/// number, so that [`Ty`] stays `Copy` and small (it moves through every
-/// node of every statement: a slice reference in it cost the 100k-statement
-/// script ~80 instructions a statement, issue 40).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub struct Parts(std::num::NonZeroU32);
+pub use super::part_list::Parts;
 
 /// Every list of part types made so far, by its contents and by number.
 #[derive(Default)]

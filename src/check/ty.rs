@@ -511,7 +511,7 @@ pub struct Ty {
     /// `(T_ab, T_cb)`, whose one tag is none): each part's type, so that
     /// `t[1]` and `(A, B) = t` keep part 1's frames ([`super::parts`]).
     /// None when the tuple's tag says its parts' ([`Frames::part`]).
-    pub parts: Option<super::parts::Parts>,
+    pub parts: Option<super::part_list::Parts>,
 }
 
 impl Ty {

@@ -234,7 +234,7 @@ impl Exact {
     /// 8 bytes a number): none for a float, numbers as typed or a
     /// fraction held inline; for a recipe, its node, its operands' values
     /// and the recipes under them that no one else holds; for a form
-    /// known at once, its terms (an estimate: [`TERM_BYTES`] a term). Fixed
+    /// known at once, its terms (an estimate: 96 bytes a term). Fixed
     /// when the form is made (a form worked out later, kept beside its
     /// recipe, is not counted), so that the bindings' count stays what it
     /// was when they were bound.

@@ -3,7 +3,7 @@
 use crate::sym::coef::Rat;
 
 /// A reduced fraction num/den (den > 0) small enough to sit inline in an
-/// [`Exact`] (a denominator below 2³²: the value stays 104 bytes), with
+/// [`super::Exact`] (a denominator below 2³²: the value stays 104 bytes), with
 /// the typed mark its [`Rat`] carries (`0.37` as typed prints as a
 /// decimal, `37/100` computed from integers as a fraction: the same form
 /// the recipe would have made).
