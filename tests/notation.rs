@@ -359,6 +359,16 @@ fn nested_calls_read_their_own_arguments() {
     }
 }
 
+/// Each of `cases` after `setup` passes both `run` and `check`.
+fn passes_both(setup: &str, cases: &[&str]) {
+    for x in cases {
+        let src = format!("{setup}{x}\n");
+        for mode in [Mode::Run, Mode::Check] {
+            assert_eq!(first_error(&src, mode), None, "{x} ({mode:?})");
+        }
+    }
+}
+
 /// The first error of `src` in `mode`, as (kind, message); None when it
 /// runs (or checks) cleanly.
 fn first_error(src: &str, mode: Mode) -> Option<(String, String)> {
@@ -439,12 +449,7 @@ fn check_refuses_the_indices_run_refuses() {
         "T_ab[1:3, 4]",
         "xs[4]",
     ];
-    for x in accepted {
-        let src = format!("{setup}{x}\n");
-        for mode in [Mode::Run, Mode::Check] {
-            assert_eq!(first_error(&src, mode), None, "{x} ({mode:?})");
-        }
-    }
+    passes_both(setup, &accepted);
     assert_eq!(last_numbers(&format!("{setup}L[2, 8]")), [2.0]);
     assert_eq!(last_numbers(&format!("{setup}M[1:2, 2]")), [2.0, 4.0]);
 }
@@ -562,12 +567,10 @@ fn check_refuses_a_row_of_blocks_of_different_heights() {
             );
         }
     }
-    for x in ["[R_ab, v; 0, 1]", "[R_ab, 0; 0, R_ab]", "[v; V]", "[0, v]"] {
-        let src = format!("{setup}{x}\n");
-        for mode in [Mode::Run, Mode::Check] {
-            assert_eq!(first_error(&src, mode), None, "{x} ({mode:?})");
-        }
-    }
+    passes_both(
+        setup,
+        &["[R_ab, v; 0, 1]", "[R_ab, 0; 0, R_ab]", "[v; V]", "[0, v]"],
+    );
     assert_eq!(
         last_numbers(&format!("{setup}[R_ab, v; 0, 1][1:3, 4]")),
         [1.0, 2.0, 3.0]
@@ -596,17 +599,15 @@ fn check_knows_the_size_of_eye_and_zeros_of_literal_sizes() {
             assert!(msg.contains(want), "{x} ({mode:?}): {msg}");
         }
     }
-    for x in [
-        "eye(4) * T_ab",
-        "T_cd = eye(4)",
-        "zeros(3, 2) + M",
-        "M * eye(2)",
-    ] {
-        let src = format!("{setup}{x}\n");
-        for mode in [Mode::Run, Mode::Check] {
-            assert_eq!(first_error(&src, mode), None, "{x} ({mode:?})");
-        }
-    }
+    passes_both(
+        setup,
+        &[
+            "eye(4) * T_ab",
+            "T_cd = eye(4)",
+            "zeros(3, 2) + M",
+            "M * eye(2)",
+        ],
+    );
     assert_eq!(
         last_numbers(&format!("{setup}zeros(3, 2) + M")),
         [1.0, 2.0, 3.0, 4.0, 5.0, 6.0]
@@ -685,22 +686,20 @@ fn a_scalar_beside_a_block_is_one_by_one_unless_a_lone_zero() {
             );
         }
     }
-    for x in [
-        "[0, v]",
-        "[0.0, v]",
-        "[R, 0; 0, 1]",
-        "[1, 0; 0, R]",
-        "[R, 0; 0, R]",
-        "[1, 2; v, v]",
-        "[R_ab, p; 0, 1]",
-        "[R_ab, p; 0, 0, 0, 1]",
-        "[a, a; a, a]",
-    ] {
-        let src = format!("{setup}{x}\n");
-        for mode in [Mode::Run, Mode::Check] {
-            assert_eq!(first_error(&src, mode), None, "{x} ({mode:?})");
-        }
-    }
+    passes_both(
+        setup,
+        &[
+            "[0, v]",
+            "[0.0, v]",
+            "[R, 0; 0, 1]",
+            "[1, 0; 0, R]",
+            "[R, 0; 0, R]",
+            "[1, 2; v, v]",
+            "[R_ab, p; 0, 1]",
+            "[R_ab, p; 0, 0, 0, 1]",
+            "[a, a; a, a]",
+        ],
+    );
     assert_eq!(
         last_numbers(&format!("{setup}[0, v]")),
         [0.0, 1.0, 0.0, 2.0, 0.0, 3.0]
@@ -787,16 +786,14 @@ fn check_knows_the_sizes_of_slices_stacks_and_transposes() {
             );
         }
     }
-    for x in [
-        "T_bc[1:3, 4] + p_b",
-        "M[1:2, 2:3] * M[2:3, 1:2]",
-        "[p_a; p_b][4:6] + p_b",
-    ] {
-        let src = format!("{setup}{x}\n");
-        for mode in [Mode::Run, Mode::Check] {
-            assert_eq!(first_error(&src, mode), None, "{x} ({mode:?})");
-        }
-    }
+    passes_both(
+        setup,
+        &[
+            "T_bc[1:3, 4] + p_b",
+            "M[1:2, 2:3] * M[2:3, 1:2]",
+            "[p_a; p_b][4:6] + p_b",
+        ],
+    );
     // a size checking does not know: an n-vector
     let src = "T_bc = RpToTrans(Roty(0.4), (0, 1, 0))\nk = len(1:3)\ninv(T_bc[1:k])\n";
     assert_eq!(

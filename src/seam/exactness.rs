@@ -300,19 +300,25 @@ impl Op<'_> {
 /// ([`Fraction::typed`]).
 #[inline]
 fn at_hand(v: &Value, decimals: bool) -> Option<Fraction> {
+    match scalar_exact(v)? {
+        (x, Exact::Typed) => match Fraction::whole(x) {
+            None if decimals => Fraction::typed(x),
+            whole => whole,
+        },
+        (_, Exact::Ratio(r)) => Some(*r),
+        _ => None,
+    }
+}
+
+/// A scalar's number and exact form; None for any other value.
+#[inline]
+fn scalar_exact(v: &Value) -> Option<(f64, &Exact)> {
     match v {
         Value::Num {
             kind: Kind::Scalar,
             m: crate::values::num::Num::Scalar(x),
             exact,
-        } => match exact {
-            Exact::Typed => match Fraction::whole(*x) {
-                None if decimals => Fraction::typed(*x),
-                whole => whole,
-            },
-            Exact::Ratio(r) => Some(*r),
-            _ => None,
-        },
+        } => Some((*x, exact)),
         _ => None,
     }
 }
@@ -321,16 +327,9 @@ fn at_hand(v: &Value, decimals: bool) -> Option<Fraction> {
 /// as typed that [`Rat::typed_quick`] reads, or a fraction held inline.
 #[inline]
 fn held_fraction(v: &Value) -> Option<Rat> {
-    match v {
-        Value::Num {
-            kind: Kind::Scalar,
-            m: crate::values::num::Num::Scalar(x),
-            exact,
-        } => match exact {
-            Exact::Typed => Rat::typed_quick(*x),
-            Exact::Ratio(r) => Some(r.rat()),
-            _ => None,
-        },
+    match scalar_exact(v)? {
+        (x, Exact::Typed) => Rat::typed_quick(x),
+        (_, Exact::Ratio(r)) => Some(r.rat()),
         _ => None,
     }
 }
