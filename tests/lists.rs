@@ -392,3 +392,40 @@ fn fractions_in_lists_stay_exact_and_print_as_before() {
         "[1/100, 1/50, 3/100]  : list of 3 numbers\n[1/3, 2/3, 1]  : list of 3 numbers\n0.3\n1/16\n0.0625\n0.3\n0.1\n"
     );
 }
+
+/// A list made of given names has their kind, in `run` as in `check`:
+/// `[R_ab for k in 1:2]` was a list of "values" when running, so its item
+/// took any operation (`Ad(xs[1])` printed `Ad(R_ab)`, an SE(3) times an
+/// so(3) ran) where `check` and the numbers refuse. Bound later, the items
+/// are the numbers.
+#[test]
+fn a_list_of_given_names_has_their_kind() {
+    let setup = "given R_ab : SO3\ngiven T_bc : SE3\ngiven M : so3\nxs = [R_ab for k in 1:2]\n";
+    for (x, want) in [
+        (
+            "Ad(xs[1])",
+            "argument 1 of Adjoint must be an SE(3), not an SO(3)",
+        ),
+        (
+            "[Ad(x) for x in xs]",
+            "argument 1 of Adjoint must be an SE(3), not an SO(3)",
+        ),
+        (
+            "[T_bc for k in 1:2][2] * M",
+            "cannot multiply an SE(3) by an so(3)",
+        ),
+    ] {
+        let src = format!("{setup}{x}\n");
+        for mode in [Mode::Run, Mode::Check] {
+            let e = first_error(&src, mode).unwrap_or_else(|| panic!("{x}: {mode:?} ran it"));
+            assert!(e.contains(want), "{x} ({mode:?}): {e}");
+        }
+    }
+    let src = format!("{setup}xs[2].T * xs[1]\nR_ab = Rotz(0.3)\nxs[2] == Rotz(0.3)\n");
+    let mut s = Session::new(Settings::default());
+    let (out, err, n) = s.run_to_strings("t.chs", &src, Mode::Run, false);
+    assert_eq!(n, 0, "{err}");
+    // (it printed `R_ab.T R_ab  : value {b}←{b}`)
+    assert!(out.contains("\nI  : SO(3) {b}←{b}\n"), "{out}");
+    assert_eq!(out.lines().last(), Some("true"), "{out}");
+}

@@ -321,7 +321,13 @@ impl Interp<'_> {
             ));
         }
         let v = items[*i as usize - 1].clone();
-        Ok(Typed::new(t.ty.item(v.kind()), Some(v)))
+        // (a given name's symbol knows no kind of its own: the list's, as
+        // checking gives it — `[R_ab for k in 1:2][1]` is an SO(3))
+        let kind = match &v {
+            Value::Sym(_) if **elem != Kind::Unknown => **elem,
+            v => v.kind(),
+        };
+        Ok(Typed::new(t.ty.item(kind), Some(v)))
     }
 
     /// What a comprehension variable runs over: a list's elements or a
@@ -459,7 +465,10 @@ impl Interp<'_> {
         let result = self.comprehend_items(body, domains, &lists, &mut at, &mut out, total, span);
         crate::budget::release_to(mark);
         result?;
-        let kind = if out.is_empty() {
+        // (a given name's symbol knows no kind of its own: the body's, as
+        // checking gives it — `[R_ab for k in 1:2]` is a list of SO(3))
+        let symbols = out.iter().any(|v| matches!(v, Value::Sym(_)));
+        let kind = if out.is_empty() || symbols {
             body_ty.ty.kind
         } else {
             common_kind(&out)
@@ -487,9 +496,10 @@ impl Interp<'_> {
                 for (i, (n, ty, _)) in domains.iter().enumerate() {
                     let v = lists[i][at[i]].clone();
                     // (a tuple keeps its parts' frames)
-                    let ty = match ty.parts {
-                        Some(_) => super::interp::refine_by(*ty, Some(&v)),
-                        None => Ty::new(v.kind(), ty.frames),
+                    let ty = match (ty.parts, &v) {
+                        (Some(_), _) => super::interp::refine_by(*ty, Some(&v)),
+                        (None, Value::Sym(_)) if ty.kind != Kind::Unknown => *ty,
+                        (None, _) => Ty::new(v.kind(), ty.frames),
                     };
                     self.env.set(
                         n,
