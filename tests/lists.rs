@@ -393,7 +393,8 @@ fn fractions_in_lists_stay_exact_and_print_as_before() {
     );
 }
 
-/// A list made of given names has their kind, in `run` as in `check`:
+/// A list made of given names (or of tuples of them) has their kind, in
+/// `run` as in `check`:
 /// `[R_ab for k in 1:2]` was a list of "values" when running, so its item
 /// took any operation (`Ad(xs[1])` printed `Ad(R_ab)`, an SE(3) times an
 /// so(3) ran) where `check` and the numbers refuse. Bound later, the items
@@ -413,6 +414,11 @@ fn a_list_of_given_names_has_their_kind() {
         (
             "[T_bc for k in 1:2][2] * M",
             "cannot multiply an SE(3) by an so(3)",
+        ),
+        // (a tuple of them: it was a "(value, value)")
+        (
+            "T_ac = [(T_bc, T_bc) for k in 1:2][1]",
+            "T_ac names a transform, in SE(3) or SE(2), but the value is a (SE(3), SE(3))",
         ),
     ] {
         let src = format!("{setup}{x}\n");

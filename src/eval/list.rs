@@ -324,7 +324,7 @@ impl Interp<'_> {
         // (a given name's symbol knows no kind of its own: the list's, as
         // checking gives it — `[R_ab for k in 1:2][1]` is an SO(3))
         let kind = match &v {
-            Value::Sym(_) if **elem != Kind::Unknown => **elem,
+            v if symbol_made(v) && **elem != Kind::Unknown => **elem,
             v => v.kind(),
         };
         Ok(Typed::new(t.ty.item(kind), Some(v)))
@@ -467,7 +467,7 @@ impl Interp<'_> {
         result?;
         // (a given name's symbol knows no kind of its own: the body's, as
         // checking gives it — `[R_ab for k in 1:2]` is a list of SO(3))
-        let symbols = out.iter().any(|v| matches!(v, Value::Sym(_)));
+        let symbols = out.iter().any(symbol_made);
         let kind = if out.is_empty() || symbols {
             body_ty.ty.kind
         } else {
@@ -498,7 +498,7 @@ impl Interp<'_> {
                     // (a tuple keeps its parts' frames)
                     let ty = match (ty.parts, &v) {
                         (Some(_), _) => super::interp::refine_by(*ty, Some(&v)),
-                        (None, Value::Sym(_)) if ty.kind != Kind::Unknown => *ty,
+                        (None, v) if symbol_made(v) && ty.kind != Kind::Unknown => *ty,
                         (None, _) => Ty::new(v.kind(), ty.frames),
                     };
                     self.env.set(
@@ -553,5 +553,16 @@ impl Interp<'_> {
             }
         }
         Ok(())
+    }
+}
+
+/// A given name's symbol, or a tuple holding one: a value that knows no
+/// kind of its own (`(T_bc, T_bc)` over given names is a tuple of
+/// "values"), whose static kind the list keeps.
+fn symbol_made(v: &Value) -> bool {
+    match v {
+        Value::Sym(_) => true,
+        Value::Tuple(parts) => parts.iter().any(symbol_made),
+        _ => false,
     }
 }
