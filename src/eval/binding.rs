@@ -37,6 +37,7 @@ impl Interp<'_> {
 
     /// Checks a binding's name against the value's frames (§3) and gives
     /// the value the kind its name implies (`V_b` a twist, `F_a` a wrench).
+    #[inline(always)]
     pub(super) fn bind_checked(
         &mut self,
         name: crate::syntax::name::Name,

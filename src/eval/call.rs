@@ -17,6 +17,7 @@ impl Interp<'_> {
     /// `name(args)` (LANGUAGE.md §4): a user function's call, a bound
     /// name's value times a parenthesis, or a builtin's call; an unknown
     /// name is an error that suggests the nearest one.
+    #[inline(always)]
     pub(super) fn call(
         &mut self,
         name: Name,

@@ -62,7 +62,7 @@ pub(super) fn refine(ty: Ty, val: &Option<Value>) -> Ty {
 }
 
 /// [`refine`] by a value held elsewhere (a boxed result).
-#[inline]
+#[inline(always)]
 pub(super) fn refine_by(ty: Ty, val: Option<&Value>) -> Ty {
     match val {
         Some(v @ (Value::Num { .. } | Value::Tuple(_) | Value::Formula { .. })) => {
@@ -143,7 +143,7 @@ impl<'a> Interp<'a> {
     /// Whether a statement that has computed `val` may take effect: the
     /// budget is not spent (a loop it stopped may have left a partial
     /// result) and the session has room to hold the value.
-    #[inline]
+    #[inline(always)]
     fn commit(&self, val: Option<&Value>, span: Span) -> Result<(), Diagnostic> {
         crate::budget::check()
             .and_then(|()| crate::budget::room(val.map_or(0, super::env::numbers)))

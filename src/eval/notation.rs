@@ -65,6 +65,7 @@ fn dims(t: &Typed) -> Option<(usize, usize)> {
 impl Interp<'_> {
     /// Both operands of `op`, the one holding a free `I` evaluated second
     /// with the size the other gives it.
+    #[inline(always)]
     pub(super) fn operands(
         &mut self,
         op: BinOp,

@@ -129,6 +129,7 @@ impl<'a> Op<'a> {
     }
 
     /// [`Op::rule`] of the operators (all but brackets and calls).
+    #[inline(always)]
     fn operator_rule(self, args: &[&Ty], hints: Hints) -> Result<Ty, RuleError> {
         match (self, args) {
             (Op::Neg, [t]) => rules::neg(t),
@@ -152,6 +153,7 @@ impl<'a> Op<'a> {
     /// None when symbols are re-evaluated with numbers (the operation then
     /// finds the kind from its operands). Blocks take rows:
     /// [`block_numeric`].
+    #[inline(always)]
     pub fn numeric(self, args: &[&Value], kind: Option<&Kind>) -> Result<Value, OpError> {
         let unknown = &Kind::Unknown;
         match (self, args) {
@@ -459,7 +461,7 @@ pub fn block(rows: &[Vec<Value>]) -> Option<Result<Value, OpError>> {
 /// [`Op::Call`]'s rule: the table row's [`Builtin::check`] (a refusal
 /// names the argument, with the signature as help), then
 /// [`rules::settle`].
-#[inline]
+#[inline(always)]
 fn call_rule(b: &Builtin, args: &[Ty]) -> Result<Ty, RuleError> {
     let ty = b.check(args).map_err(|e| {
         RuleError::from(crate::check::rules::Refusal {

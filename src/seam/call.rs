@@ -34,6 +34,7 @@ pub fn call(b: &Builtin, vals: Vec<Value>, site: Site) -> Result<Value, Diagnost
 /// [`call`], giving back the arguments as they were (a builtin only reads
 /// them): the recipe of the result's exact form keeps them, with no copy
 /// ([`super::apply::Op::exact_of_owned`]).
+#[inline(always)]
 pub fn call_keeping(
     b: &Builtin,
     vals: Vec<Value>,

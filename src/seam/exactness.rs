@@ -189,6 +189,7 @@ impl Op<'_> {
     /// [`Op::exact_of`] operands the evaluator gives away (a builtin
     /// call's arguments after the call): a recipe keeps them as they are,
     /// in the vector that held them (no copy of a 4×4 per `exp`).
+    #[inline(always)]
     pub fn exact_of_owned(self, args: Vec<Value>, kind: &Kind) -> Exact {
         match self.exactness(&args) {
             Some(e) => e,
@@ -198,6 +199,7 @@ impl Op<'_> {
 
     /// [`Op::exact_of`] two operands the evaluator gives away: a recipe
     /// keeps them as they are, boxed (no copy of a 4×4 per product).
+    #[inline(always)]
     pub fn exact_of_pair(self, a: Box<Value>, b: Box<Value>, kind: &Kind) -> Exact {
         match self.exactness(&[&*a, &*b]) {
             Some(e) => e,

@@ -200,6 +200,7 @@ impl Exact {
     /// A form computed by `p` when first asked for; at once when the
     /// chain of waiting recipes under it is longer than
     /// [`MAX_PENDING_DEPTH`].
+    #[inline(always)]
     pub fn pending(p: Pending) -> Exact {
         let (under, bytes) = p.args.under();
         let depth = 1 + under;
