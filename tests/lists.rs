@@ -435,3 +435,44 @@ fn a_list_of_given_names_has_their_kind() {
     assert!(out.contains("\nI  : SO(3) {b}←{b}\n"), "{out}");
     assert_eq!(out.lines().last(), Some("true"), "{out}");
 }
+
+/// `check` knows a list's length where it is written with literals — a
+/// range of whole literal bounds, a comprehension over such ranges or
+/// literal vectors, a slice by literal positions — and refuses an index
+/// outside it in the words `run` uses: `(0:4)[9]` and
+/// `ys = [k^2 for k in 1:3]; ys[4]` passed `check` while `run` refused
+/// them. An index inside, or a length bound later, still passes.
+#[test]
+fn check_knows_a_literal_lists_length() {
+    for src in [
+        "(0:4)[9]",
+        "(0:4)[0]",
+        "(5:-1:1)[6]",
+        "(1:0)[1]",
+        "ys = [k^2 for k in 1:3]\nys[4]",
+        "ys = [j * k for k in 1:3, j in [1, 2]]\nys[7]",
+        "zs = [[k, k] for k in 0:2:6]\nzs[5]",
+        "(0:4)[2:9]",
+        "(0:4)[end + 1]",
+        "xs = (0:4)[2:end]\nxs[5]",
+    ] {
+        let src = format!("{src}\n");
+        let run = first_error(&src, Mode::Run).unwrap_or_else(|| panic!("{src}: run ran it"));
+        let check =
+            first_error(&src, Mode::Check).unwrap_or_else(|| panic!("{src}: check passed it"));
+        let message = |e: &str| e.lines().next().map(|l| l.to_string());
+        assert_eq!(message(&check), message(&run), "{src}");
+        assert!(run.contains("outside"), "{src}: {run}");
+    }
+    for src in [
+        "(0:4)[5]",
+        "ys = [j * k for k in 1:3, j in [1, 2]]\nys[6]",
+        "xs = (0:4)[2:end]\nxs[4]",
+        "given n\nxs = 1:n\nn = 2\nxs[2]",
+    ] {
+        let src = format!("{src}\n");
+        for mode in [Mode::Run, Mode::Check] {
+            assert_eq!(first_error(&src, mode), None, "{src} ({mode:?})");
+        }
+    }
+}

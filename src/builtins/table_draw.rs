@@ -27,7 +27,7 @@ fn drawable(k: &Kind) -> bool {
             ) || r.is_none()
                 || c.is_none()
         }
-        Kind::List(k) => drawable(k),
+        Kind::List(k, _) => drawable(k),
         Kind::Tuple(ks) => ks.iter().all(drawable),
         _ => false,
     }

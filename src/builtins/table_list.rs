@@ -27,7 +27,7 @@ fn elements(a: &Args, i: usize) -> Result<Rc<Vec<Value>>, Diagnostic> {
 }
 
 fn listish(k: &Kind) -> bool {
-    matches!(k, Kind::List(_) | Kind::Tuple(_) | Kind::Unknown) || k.is_vector()
+    matches!(k, Kind::List(..) | Kind::Tuple(_) | Kind::Unknown) || k.is_vector()
 }
 
 fn len_rule(args: &[Ty]) -> Result<Ty, ArgError> {
@@ -53,7 +53,7 @@ fn eval_len(a: &mut Args) -> Result<Value, Diagnostic> {
 /// SO(3) is not closed under addition); of a vector, a number.
 fn sum_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     match &args[0].kind {
-        Kind::List(k) => rules::add_kind(k, k)
+        Kind::List(k, _) => rules::add_kind(k, k)
             .map(|kind| Ty::new(kind, args[0].frames))
             .map_err(|e| ArgError::type_of(0, format!("sum of a list: {}", e.message.clone()))),
         Kind::Unknown => Ok(Ty::plain(Kind::Unknown)),
@@ -84,7 +84,7 @@ fn eval_sum(a: &mut Args) -> Result<Value, Diagnostic> {
 /// `min`/`max` of numbers.
 fn extreme_rule(args: &[Ty]) -> Result<Ty, ArgError> {
     match &args[0].kind {
-        Kind::List(k) if matches!(**k, Kind::Scalar | Kind::Unknown) => Ok(Ty::scalar()),
+        Kind::List(k, _) if matches!(**k, Kind::Scalar | Kind::Unknown) => Ok(Ty::scalar()),
         Kind::Unknown => Ok(Ty::scalar()),
         k if k.is_vector() => Ok(Ty::scalar()),
         k => Err(ArgError::type_of(

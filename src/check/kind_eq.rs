@@ -2,7 +2,8 @@
 //! every node of every statement (a result's kind against its checked one,
 //! a binding's against its name's), so `==` is written out to be inlined:
 //! only tuple and list kinds, whose parts are interned, compare their parts
-//! out of line. It is the relation a derived `==` would give, and the
+//! out of line. It is the relation a derived `==` would give, but for a
+//! list's known length, which is not compared ([`Kind::List`]); the
 //! matches are over every variant, so that a new one must say how it
 //! compares and hashes.
 
@@ -11,8 +12,9 @@ use super::ty::Kind;
 /// Kinds are compared at every node (a result's kind against its checked
 /// one, a binding's against its name's): the comparison is inlined, and
 /// only tuple and list kinds, whose parts are interned, compare their
-/// parts out of line. The same relation as a derived `==`; the match is
-/// over every variant, so that a new one must say how it compares.
+/// parts out of line. The same relation as a derived `==` but for a
+/// list's known length; the match is over every variant, so that a new
+/// one must say how it compares.
 impl PartialEq for Kind {
     #[inline(always)]
     fn eq(&self, other: &Kind) -> bool {
@@ -27,14 +29,17 @@ impl PartialEq for Kind {
             (Matrix(a, b), Matrix(c, d)) => a == c && b == d,
             (Adjoint { transposed: a }, Adjoint { transposed: b }) => a == b,
             (Tuple(a), Tuple(b)) => same_parts(a, b),
-            (List(a), List(b)) => same_parts(std::slice::from_ref(*a), std::slice::from_ref(*b)),
+            // (a list's known length is not part of its kind: [`Kind::List`])
+            (List(a, _), List(b, _)) => {
+                same_parts(std::slice::from_ref(*a), std::slice::from_ref(*b))
+            }
             (
                 Scalar | Bool | SO3 | SE3 | So3 | Se3 | SO2 | SE2 | So2 | Se2 | Twist | Screw
                 | Wrench | Mechanism | Function | Picture | Text | Unknown,
                 _,
             ) => true,
             // (the discriminants are equal: never reached)
-            (Vector(_) | Matrix(..) | Adjoint { .. } | Tuple(_) | List(_), _) => false,
+            (Vector(_) | Matrix(..) | Adjoint { .. } | Tuple(_) | List(..), _) => false,
         }
     }
 }
@@ -49,7 +54,7 @@ impl std::hash::Hash for Kind {
             Matrix(r, c) => (r, c).hash(state),
             Adjoint { transposed } => transposed.hash(state),
             Tuple(ks) => ks.hash(state),
-            List(k) => k.hash(state),
+            List(k, _) => k.hash(state),
             Scalar | Bool | SO3 | SE3 | So3 | Se3 | SO2 | SE2 | So2 | Se2 | Twist | Screw
             | Wrench | Mechanism | Function | Picture | Text | Unknown => {}
         }

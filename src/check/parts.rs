@@ -89,6 +89,24 @@ impl Ty {
     }
 }
 
+impl Kind {
+    /// The kind of a list of `len` elements of kind `elem`, `len` known
+    /// without numbers (None: not known; [`Kind::List`]).
+    pub fn list_of_len(elem: Kind, len: Option<usize>) -> Kind {
+        match Kind::list(elem) {
+            Kind::List(k, _) => Kind::List(k, len.and_then(|n| u32::try_from(n).ok())),
+            k => k,
+        }
+    }
+    /// The number of items of a list kind, when checking knows it.
+    pub fn list_len(&self) -> Option<usize> {
+        match self {
+            Kind::List(_, n) => n.map(|n| n as usize),
+            _ => None,
+        }
+    }
+}
+
 impl Ty {
     /// The type of a list whose items all have type `item` (a
     /// comprehension's body): the item's kind and frames, and the item's
@@ -107,7 +125,7 @@ impl Ty {
     /// frames.
     pub fn item(&self, kind: Kind) -> Ty {
         match (self.kind, self.parts.map(Parts::get)) {
-            (Kind::List(_), Some([item])) if item.kind == kind => *item,
+            (Kind::List(..), Some([item])) if item.kind == kind => *item,
             _ => Ty::new(kind, self.frames),
         }
     }

@@ -110,7 +110,7 @@ pub fn neg(t: &Ty) -> Result<Ty, RuleError> {
         | Kind::Tuple(_)
         | Kind::Bool
         | Kind::Function
-        | Kind::List(_)
+        | Kind::List(..)
         | Kind::Picture
         | Kind::Text => Err(RuleError::typ(format!("cannot negate {}", t.kind.a()))),
         _ => Ok(t.scaled()),

@@ -48,8 +48,11 @@ pub enum Kind {
     Function,
     /// A list of values of one kind (LANGUAGE.md §12): `0:4`,
     /// `[f(k) for k in 0:4]`; `Unknown` elements when they differ.
-    /// The element kind is interned ([`Kind::list`]).
-    List(&'static Kind),
+    /// The element kind is interned ([`Kind::list`]); then the number of
+    /// items when known without numbers (`0:4` has 5: [`Kind::list_len`]),
+    /// so that `check` refuses `(0:4)[9]` as `run` does. Not part of the
+    /// kind: lists of any length compare equal (`check::kind_eq`).
+    List(&'static Kind, Option<u32>),
     /// A picture made by `draw` (§12).
     Picture,
     /// A string, `"name.svg"`: file names for `save` and picture titles.
@@ -83,7 +86,7 @@ impl Kind {
     }
     /// The kind of a list whose elements have kind `elem` (LANGUAGE.md §12).
     pub fn list(elem: Kind) -> Kind {
-        Kind::List(&intern(vec![elem])[0])
+        Kind::List(&intern(vec![elem])[0], None)
     }
     /// The type name of the JSON schema (LANGUAGE.md §1).
     pub fn json_name(&self) -> &'static str {
@@ -106,7 +109,7 @@ impl Kind {
             Kind::Adjoint { .. } => "adjoint",
             Kind::Mechanism => "mechanism",
             Kind::Tuple(_) => "tuple",
-            Kind::List(_) => "list",
+            Kind::List(..) => "list",
             Kind::Picture => "picture",
             Kind::Text => "string",
         }
@@ -244,11 +247,11 @@ impl fmt::Display for Kind {
                 write!(f, ")")
             }
             Kind::Function => write!(f, "function"),
-            Kind::List(k) => match **k {
+            Kind::List(k, _) => match **k {
                 Kind::Unknown => write!(f, "list"),
                 Kind::Scalar => write!(f, "list of numbers"),
                 Kind::Screw => write!(f, "list of screw axes"),
-                Kind::List(_) => write!(f, "list of lists"),
+                Kind::List(..) => write!(f, "list of lists"),
                 Kind::Vector(_)
                 | Kind::Matrix(..)
                 | Kind::Twist

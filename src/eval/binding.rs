@@ -47,7 +47,7 @@ impl Interp<'_> {
     ) -> Result<(), Diagnostic> {
         // Lists, pictures and strings take no frames from their names (§12):
         // theirs come from what they hold.
-        if matches!(t.ty.kind, Kind::List(_) | Kind::Picture | Kind::Text) {
+        if matches!(t.ty.kind, Kind::List(..) | Kind::Picture | Kind::Text) {
             return Ok(());
         }
         let claim = self.env.claim(name);

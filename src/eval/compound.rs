@@ -66,7 +66,7 @@ impl Interp<'_> {
                 }
             }
         }
-        if let Kind::List(_) = &t.ty.kind {
+        if let Kind::List(..) = &t.ty.kind {
             return self.list_item(t, &sels, span);
         }
         let op = Op::Index(&sels);

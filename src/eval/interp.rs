@@ -393,7 +393,7 @@ impl<'a> Interp<'a> {
         let kinds: Vec<Kind> = match &t.ty.kind {
             Kind::Tuple(ks) => ks.to_vec(),
             // A list's length is known only from its value.
-            Kind::List(k) => match t.val.as_deref() {
+            Kind::List(k, _) => match t.val.as_deref() {
                 Some(Value::List(vs)) => vs.iter().map(Value::kind).collect(),
                 _ => vec![**k; n],
             },

@@ -57,7 +57,7 @@ fn too_long(span: Span, n: f64) -> Diagnostic {
 /// The help for arithmetic on a list, a picture or a string.
 pub fn elementwise_help(k: &Kind) -> Option<String> {
     match k {
-        Kind::List(_) => Some(
+        Kind::List(..) => Some(
             "a list is not a vector: apply the operation to each element, [2 * x for x in xs]"
                 .into(),
         ),
@@ -122,6 +122,10 @@ pub(super) fn numbers_only(
     Ok(())
 }
 
+/// What a comprehension variable runs over: its items' type, their
+/// values when running, and how many there are when checking knows it.
+type Domain = (Ty, Option<Vec<Value>>, Option<usize>);
+
 impl Interp<'_> {
     /// Lists, pictures or strings as operands of arithmetic: a type error
     /// at `op` naming the first such operand.
@@ -132,7 +136,7 @@ impl Interp<'_> {
     ) -> Result<(), Diagnostic> {
         for (t, side) in operands {
             // Most operands are numbers: asked first, without a call.
-            if !matches!(t.ty.kind, Kind::List(_) | Kind::Picture | Kind::Text) {
+            if !matches!(t.ty.kind, Kind::List(..) | Kind::Picture | Kind::Text) {
                 continue;
             }
             let Some(help) = elementwise_help(&t.ty.kind) else {
@@ -224,7 +228,8 @@ impl Interp<'_> {
             }),
         };
         let b = self.bound(end)?;
-        let ty = Ty::plain(Kind::list(Kind::Scalar));
+        let len = super::slice::literal_len(start, step, end);
+        let ty = Ty::plain(Kind::list_of_len(Kind::Scalar, len));
         let (Some(a), Some(h), Some(b)) = (a, h, b) else {
             return Ok(Typed::new(ty, None));
         };
@@ -267,7 +272,7 @@ impl Interp<'_> {
         sels: &[super::ops::Sel],
         span: Span,
     ) -> Result<Typed, Diagnostic> {
-        let Kind::List(elem) = &t.ty.kind else {
+        let Kind::List(elem, _) = &t.ty.kind else {
             return Err(self.domain(span, "not a list"));
         };
         let [super::ops::Sel::At(i)] = sels else {
@@ -303,8 +308,18 @@ impl Interp<'_> {
                 .with_help("bind numbers to the given names first, then index it (§7)"));
         }
         let Some(Value::List(items)) = t.val.as_deref() else {
-            // (checking: a list's length is known only from its items, but
-            // none has an item before its first)
+            // (checking: a list's length is known from its items, or from
+            // its literal bounds (`(0:4)[9]`, [`Kind::list_len`]); none has
+            // an item before its first)
+            if let Some(n) = t.ty.kind.list_len()
+                && !i.is_nan()
+                && !(*i >= 1.0 && *i <= n as f64)
+            {
+                return Err(self.domain(
+                    span,
+                    format!("index {i} is outside the list (it has {n} items, counted from 1)"),
+                ));
+            }
             if *i < 1.0 {
                 return Err(self.domain(
                     span,
@@ -332,10 +347,16 @@ impl Interp<'_> {
 
     /// What a comprehension variable runs over: a list's elements or a
     /// vector's entries.
-    fn over(&mut self, e: &Expr) -> Result<(Ty, Option<Vec<Value>>), Diagnostic> {
+    /// With it, how many items it has when checking knows that without
+    /// numbers (`0:4`, `[1, 2, 3]`: [`Kind::list_len`]).
+    fn over(&mut self, e: &Expr) -> Result<Domain, Diagnostic> {
         let t = self.expr(e)?;
+        let len = match t.ty.kind {
+            Kind::Vector(n) => n,
+            k => k.list_len(),
+        };
         let elem = match &t.ty.kind {
-            Kind::List(k) => **k,
+            Kind::List(k, _) => **k,
             Kind::Vector(_) => Kind::Scalar,
             Kind::Unknown => Kind::Unknown,
             k => {
@@ -348,7 +369,7 @@ impl Interp<'_> {
             }
         };
         let ty = match &t.ty.kind {
-            Kind::List(_) => t.ty.item(elem),
+            Kind::List(..) => t.ty.item(elem),
             _ => Ty::plain(elem),
         };
         let vals = match t.val.map(|v| *v) {
@@ -377,7 +398,7 @@ impl Interp<'_> {
             }
             _ => None,
         };
-        Ok((ty, vals))
+        Ok((ty, vals, len))
     }
 
     /// `[body for a in r1, b in r2]`.
@@ -388,8 +409,11 @@ impl Interp<'_> {
         span: Span,
     ) -> Result<Typed, Diagnostic> {
         let mut domains = Vec::new();
+        // (the number of items, when every domain's is known)
+        let mut len = Some(1usize);
         for (name, e) in vars {
-            let (ty, vals) = self.over(e)?;
+            let (ty, vals, n) = self.over(e)?;
+            len = len.zip(n).and_then(|(a, b)| a.checked_mul(b));
             domains.push((String::from(name.name), ty, vals));
         }
         let names: Vec<String> = domains.iter().map(|d| d.0.clone()).collect();
@@ -414,7 +438,14 @@ impl Interp<'_> {
                 }
             }
         }
-        result
+        // (its length, known without numbers: `[f(k) for k in 1:3][4]`
+        // is refused by checking as by running)
+        result.map(|mut t| {
+            if let Kind::List(k, None) = t.ty.kind {
+                t.ty.kind = Kind::List(k, len.and_then(|n| u32::try_from(n).ok()));
+            }
+            t
+        })
     }
 
     fn comprehend(

@@ -115,12 +115,12 @@ impl Interp<'_> {
                 Some(m) => (Some(m.nrows()), Some(m.ncols())),
                 None => (None, None),
             },
-            (None, Kind::List(_)) => (None, Some(1)),
+            (None, k @ Kind::List(..)) => (k.list_len(), Some(1)),
             (None, k) => k.shape().unwrap_or((None, None)),
         };
         // (checking: a tuple, a bool… has no entries to range over either)
         let entries = t.value().is_some() || t.ty.kind.shape().is_some();
-        let entries = entries || matches!(t.ty.kind, Kind::List(_));
+        let entries = entries || matches!(t.ty.kind, Kind::List(..));
         if args.len() > 2 || (t.value().is_some() && rows.is_none()) || !entries {
             return Err(Diagnostic::error(
                 ErrorKind::Type,
@@ -144,18 +144,23 @@ impl Interp<'_> {
         let Some(value) = t.value() else {
             // Checking: positions written as literals (`v[1:4]`, `T[1:3,
             // 5]`) against the sizes the kind knows, as running will check
-            // them (a list's length is known only from its items).
+            // them (a list's length when its bounds are literal:
+            // [`Kind::list_len`]).
             let whats = match one {
                 true => ["the entries", ""],
                 false => ["the rows", "the columns"],
             };
-            if !matches!(t.ty.kind, Kind::List(_)) {
+            if !matches!(t.ty.kind, Kind::List(..)) {
                 for ((p, n), what) in picks.iter().zip(&sizes).zip(whats) {
                     if let Some(m) = p.at.iter().find_map(|&x| outside(x, *n, what)) {
                         return Err(Diagnostic::error(ErrorKind::Domain, span, m));
                     }
                 }
-            } else if let Some(m) = picks[0].at.iter().find_map(|&x| outside(x, None, "")) {
+            } else if let Some(m) = picks[0]
+                .at
+                .iter()
+                .find_map(|&x| outside(x, sizes[0], "the list's items"))
+            {
                 return Err(Diagnostic::error(ErrorKind::Domain, span, m));
             }
             // Checking: the kind without the sizes, with the frames
@@ -168,8 +173,12 @@ impl Interp<'_> {
             // (the length when the positions are known: `T_bc[1:3]` is a
             // 3-vector, as running makes it)
             let ty = match (t.ty.kind, picks.as_slice()) {
-                (Kind::List(k), [p]) if p.single => t.ty.item(*k),
-                (Kind::List(_), _) => t.ty,
+                (Kind::List(k, _), [p]) if p.single => t.ty.item(*k),
+                (Kind::List(k, _), [p]) => Ty {
+                    kind: Kind::list_of_len(*k, p.len()),
+                    ..t.ty
+                },
+                (Kind::List(..), _) => t.ty,
                 (_, [p]) | (_, [p, Picked { single: true, .. }]) if p.single => Ty::scalar(),
                 (k, [p]) if k.is_vector() => Ty::new(Kind::Vector(p.len()), t.ty.frames),
                 (_, [p]) => Ty::plain(Kind::Vector(p.len())),
@@ -316,7 +325,7 @@ impl Interp<'_> {
             )),
             None => Ok(Picked {
                 at: Vec::new(),
-                single: !matches!(t.ty.kind, Kind::List(_)),
+                single: !matches!(t.ty.kind, Kind::List(..)),
                 known: false,
             }),
         }
@@ -352,6 +361,20 @@ fn literal_positions(e: &Expr) -> Option<Vec<f64>> {
     let b = super::compound::literal_index(end)?;
     let n = crate::seam::range::range_count(a, h, b).ok()?;
     Some((0..n).map(|i| a + i as f64 * h).collect())
+}
+
+/// The number of items of the range `start:step:end` written with whole
+/// literal numbers (`0:4` has 5, `10:-2:1` 5), known without evaluating
+/// it, as running counts them ([`crate::seam::range::count`]: whole
+/// bounds and step count exactly in floats); None for any other range
+/// (a bound named, a fraction, a step of zero, too long a list).
+pub(super) fn literal_len(start: &Expr, step: Option<&Expr>, end: &Expr) -> Option<usize> {
+    let whole = |e: &Expr| super::compound::literal_index(e).filter(|x| x.fract() == 0.0);
+    let h = match step {
+        Some(h) => whole(h)?,
+        None => 1.0,
+    };
+    crate::seam::range::range_count(whole(start)?, h, whole(end)?).ok()
 }
 
 /// `x[ranges]` of a vector or matrix over symbols (LANGUAGE.md §7): each
@@ -442,7 +465,7 @@ fn symbolic(
 /// The kind of a list's elements.
 fn list_elem(k: Kind) -> Kind {
     match k {
-        Kind::List(e) => *e,
+        Kind::List(e, _) => *e,
         other => other,
     }
 }
