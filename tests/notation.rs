@@ -614,6 +614,46 @@ fn check_knows_the_size_of_eye_and_zeros_of_literal_sizes() {
     );
 }
 
+/// A size bound to a name written with literals is known to `check` as
+/// the literal is: `k = 3; eye(k) * T_ab` passed `check` ("3 statements
+/// checked, frames consistent") where `run` refuses it; `n = 4; (0:n)[9]`
+/// likewise. A name bound anew (again, as a parameter, by a comprehension,
+/// by `given`) is no longer known, and passes as it runs.
+#[test]
+fn check_knows_a_size_bound_to_a_literal() {
+    let setup = "T_ab = Trans((1, 0, 0))\nk = 3\n";
+    for (x, want) in [
+        ("eye(k) * T_ab", "cannot multiply an SO(3) by an SE(3)"),
+        (
+            "m = k; eye(m) * T_ab",
+            "cannot multiply an SO(3) by an SE(3)",
+        ),
+        ("eye(k - 1) * T_ab", "cannot multiply an SO(2) by an SE(3)"),
+        (
+            "zeros(k, 1) * T_ab",
+            "cannot multiply a 3-vector by an SE(3)",
+        ),
+        ("(0:k)[9]", "index 9 is outside the list (it has 4 items"),
+    ] {
+        let src = format!("{setup}{x}\n");
+        for mode in [Mode::Run, Mode::Check] {
+            let (_, msg) = first_error(&src, mode)
+                .unwrap_or_else(|| panic!("{x}: {mode:?} did not refuse it"));
+            assert!(msg.contains(want), "{x} ({mode:?}): {msg}");
+        }
+    }
+    passes_both(
+        setup,
+        &[
+            "eye(k + 1) * T_ab",
+            "k = 4; eye(k) * T_ab",
+            "f(k) = eye(k) * T_ab; f(4)",
+            "[eye(k) * T_ab for k in 4:4]",
+            "(0:k)[4]",
+        ],
+    );
+}
+
 /// A scalar in a row of blocks is 1×1 unless it is a lone `0`, which is
 /// the zero block its row and column need (§4): `[1, v]`, `[z, v]` with
 /// z = 0, `[-0, v]` and `[a, v]` with a given passed `check` and `run`

@@ -178,7 +178,7 @@ impl Interp<'_> {
         if !self.running() {
             // (`eye(3)`, `zeros(2, 3)` of literal sizes: the kind their
             // numbers will have, so checking knows their shape)
-            let ty = literal_matrix(b.name, args).map_or(ty, Ty::plain);
+            let ty = literal_matrix(b.name, args, |e| self.known_number(e)).map_or(ty, Ty::plain);
             return Ok(Typed::new(ty, None));
         }
         self.warnings
@@ -357,13 +357,18 @@ fn unit_axis(name: &str) -> Option<[f64; 3]> {
 }
 
 /// The kind of `eye(n)` or `zeros(r, c)` (`zeros(n)` is n×n) whose sizes
-/// are literal whole numbers, small enough to make: as its numbers
-/// classify (`eye(3)` is SO(3), `zeros(3, 1)` a 3-vector). None for any
-/// other call, or sizes that are not literal.
-fn literal_matrix(name: &str, args: &[crate::syntax::ast::Expr]) -> Option<Kind> {
+/// are whole numbers written with literals (`known`: `eye(3)`, or `eye(k)`
+/// after `k = 3`), small enough to make: as its numbers classify (`eye(3)`
+/// is SO(3), `zeros(3, 1)` a 3-vector). None for any other call, or sizes
+/// not known so.
+fn literal_matrix(
+    name: &str,
+    args: &[crate::syntax::ast::Expr],
+    known: impl Fn(&crate::syntax::ast::Expr) -> Option<f64>,
+) -> Option<Kind> {
     const MOST: f64 = 64.0;
     let size = |e: &crate::syntax::ast::Expr| {
-        super::compound::literal_index(e)
+        known(e)
             .filter(|x| x.fract() == 0.0 && (1.0..=MOST).contains(x))
             .map(|x| x as usize)
     };

@@ -235,6 +235,9 @@ pub struct Env {
     /// input or notebook cell is a new one): a function defined in another
     /// has spans that do not point into this text ([`UserFn::source`]).
     pub source: u64,
+    /// The names bound to a number written with literals, each with the
+    /// stamp of that binding (`super::literals`).
+    pub(super) literals: NameMap<(u64, f64)>,
 }
 
 /// The numbers a value holds, as the memory budget counts them

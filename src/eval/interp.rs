@@ -202,11 +202,13 @@ impl<'a> Interp<'a> {
                 {
                     let warning = super::outcome::not_finite(v, s.span);
                     self.bind_from(target.name, &t.ty, t.val.take().map(Stored::Moved));
+                    self.note_literal(target.name, value);
                     self.note_reliance(target.name);
                     self.warnings.extend(warning);
                     return Ok(out(Names::One([target.name]), t));
                 }
                 self.bind_value(target.name, &t);
+                self.note_literal(target.name, value);
                 let mut o = out(Names::One([target.name]), t);
                 self.shown(&mut o.val, s.span);
                 // (after it is shown: showing a closed form notes the axes

@@ -228,7 +228,7 @@ impl Interp<'_> {
             }),
         };
         let b = self.bound(end)?;
-        let len = super::slice::literal_len(start, step, end);
+        let len = super::slice::literal_len((start, step, end), |e| self.known_number(e));
         let ty = Ty::plain(Kind::list_of_len(Kind::Scalar, len));
         let (Some(a), Some(h), Some(b)) = (a, h, b) else {
             return Ok(Typed::new(ty, None));

@@ -16,6 +16,7 @@ mod hold;
 pub mod interp;
 mod key;
 pub mod list;
+mod literals;
 mod lower;
 mod naming;
 mod notation;

@@ -364,12 +364,15 @@ fn literal_positions(e: &Expr) -> Option<Vec<f64>> {
 }
 
 /// The number of items of the range `start:step:end` written with whole
-/// literal numbers (`0:4` has 5, `10:-2:1` 5), known without evaluating
-/// it, as running counts them ([`crate::seam::range::count`]: whole
+/// numbers `known` without evaluating them (`0:4` has 5, `10:-2:1` 5;
+/// `0:k` after `k = 4` 5: [`Interp::known_number`]), as running counts them ([`crate::seam::range::count`]: whole
 /// bounds and step count exactly in floats); None for any other range
 /// (a bound named, a fraction, a step of zero, too long a list).
-pub(super) fn literal_len(start: &Expr, step: Option<&Expr>, end: &Expr) -> Option<usize> {
-    let whole = |e: &Expr| super::compound::literal_index(e).filter(|x| x.fract() == 0.0);
+pub(super) fn literal_len(
+    (start, step, end): (&Expr, Option<&Expr>, &Expr),
+    known: impl Fn(&Expr) -> Option<f64>,
+) -> Option<usize> {
+    let whole = |e: &Expr| known(e).filter(|x| x.fract() == 0.0);
     let h = match step {
         Some(h) => whole(h)?,
         None => 1.0,

@@ -1,0 +1,60 @@
+//! Names bound to a number written with literals (`k = 3`), known to the
+//! checker without numbers, so that `chasles check` sizes `eye(k)` (the
+//! 3×3 identity, in SO(3) as its numbers are) and counts `0:k` as it does
+//! `eye(3)` and `0:3`: `k = 3; eye(k) * T_ab` is refused by `check` as by
+//! `run`. A name bound anew (again, as a parameter, by a comprehension)
+//! is no longer known: each note holds the stamp of the binding it was
+//! made for ([`super::env::Binding::stamp`]).
+
+use super::env::Env;
+use super::interp::Interp;
+use super::key::AsKey;
+use crate::syntax::ast::{Expr, ExprKind};
+use crate::syntax::name::Name;
+
+impl Env {
+    /// The number `name`'s binding was written as, when it was a literal
+    /// (and the binding is still that one).
+    fn literal_of(&self, name: Name) -> Option<f64> {
+        let (stamp, x) = self.literals.get(&name.key())?;
+        (self.get(name)?.stamp == *stamp).then_some(*x)
+    }
+}
+
+impl Interp<'_> {
+    /// The number `e` writes with literals and names bound so
+    /// ([`super::compound::literal_index`]: `2`, `-1`, `k + 1` with
+    /// `k = 3`), known without evaluating it; None for anything else.
+    pub(super) fn known_number(&self, e: &Expr) -> Option<f64> {
+        use crate::syntax::ast::BinOp;
+        match &e.kind {
+            ExprKind::Var(name) => self.env.literal_of(*name),
+            ExprKind::Binary { op, lhs, rhs, .. } => {
+                let (a, b) = (self.known_number(lhs)?, self.known_number(rhs)?);
+                match op {
+                    BinOp::Add => Some(a + b),
+                    BinOp::Sub => Some(a - b),
+                    BinOp::Mul => Some(a * b),
+                    BinOp::Div | BinOp::Pow => None,
+                }
+            }
+            ExprKind::Unary {
+                op: crate::syntax::ast::UnOp::Neg,
+                operand,
+            } => self.known_number(operand).map(|x| -x),
+            ExprKind::Paren(items) if items.len() == 1 => self.known_number(&items[0]),
+            _ => super::compound::literal_index(e),
+        }
+    }
+
+    /// Notes that `name` was just bound to `value`, if that is a number
+    /// written with literals ([`Interp::known_number`]). (A note of an
+    /// earlier binding of it is stale by its stamp.)
+    pub(super) fn note_literal(&mut self, name: Name, value: &Expr) {
+        if let Some(x) = self.known_number(value)
+            && let Some(stamp) = self.env.get(name).map(|b| b.stamp)
+        {
+            self.env.literals.insert(name.key(), (stamp, x));
+        }
+    }
+}
