@@ -257,3 +257,55 @@ fn an_identity_holds_only_where_the_sides_are_defined() {
     assert_eq!(j[0]["value"], 1.0);
     assert_eq!(j[1]["value"], 1.0);
 }
+
+/// A divisor with no real zero excludes no x: `1/(x^2 + 1) == 1/(x^2 +
+/// 1)` said it holds "for every x where both sides are defined as typed",
+/// though x² + 1 > 0 for every real x; now "for every x". Even powers of
+/// one sign with a constant (x⁴ + 1, 2x² + 3), or a quadratic of negative
+/// discriminant (x² + 2x + 5), are never 0; a divisor with real zeros, or
+/// whose sign is not known (another symbol in it), is as before.
+#[test]
+fn a_divisor_with_no_real_zero_excludes_no_x() {
+    let cases = [
+        (
+            "1/(x^2 + 1) == 1/(x^2 + 1)",
+            "holds for every x: both sides are the same",
+        ),
+        (
+            "(x^2 + 1)/(x^2 + 1) == 1",
+            "holds for every x: both sides are the same",
+        ),
+        (
+            "x/(x^4 + 1) == x/(x^4 + 1)",
+            "holds for every x: both sides are the same",
+        ),
+        (
+            "1/(x^2 + 2*x + 5) == 1/(x^2 + 2*x + 5)",
+            "holds for every x: both sides are the same",
+        ),
+        (
+            "1/(x^2 + 1)^2 == 1/(x^2 + 1)^2",
+            "holds for every x: both sides are the same",
+        ),
+        (
+            "1/(x^2 + 2*x + 1) == 1/(x^2 + 2*x + 1)",
+            "holds for every x ≠ -1",
+        ),
+        (
+            "1/(x^2 - 1) == 1/(x^2 - 1)",
+            "except x = -1 (division by zero) and x = 1 (division by zero)",
+        ),
+        (
+            "1/(x^2 + a) == 1/(x^2 + a)",
+            "holds for every x where both sides are defined as typed",
+        ),
+        (
+            "x/x == 1",
+            "holds for every x ≠ 0: at x = 0 a side is undefined",
+        ),
+    ];
+    for (eq, want) in cases {
+        let e = error(&format!("given x, a\nsolve({eq}, x)"));
+        assert!(e.contains(want), "{eq}: {e}");
+    }
+}

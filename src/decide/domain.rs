@@ -151,6 +151,10 @@ fn zeros_of(r: &Rc<Recipe>, x: &Symbol, out: &mut Excluded) {
         out.complete = false;
         return;
     };
+    // (x² + 1 has no real zero: nothing excluded, and nothing unknown)
+    if crate::sym::solve::never_zero(e, x) {
+        return;
+    }
     match crate::sym::solve::solve(e, x) {
         Ok(s) if s.unless_zero.is_none() && s.period_of.is_none() => {
             for p in s.roots {

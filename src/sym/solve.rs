@@ -130,6 +130,37 @@ pub fn solve(e: &Expr, x: &Symbol) -> Result<Solution, String> {
     }
 }
 
+/// Whether `e`, a polynomial in `x` whose coefficients are exact real
+/// numbers, is never 0 at a real x, so that a division by it is defined
+/// for every real x: only even powers of x, with coefficients of one sign
+/// and a constant term not 0 (x² + 1, 2x⁴ + x² + 3: each term ≥ 0 and
+/// the constant > 0), or a quadratic a x² + b x + c whose discriminant
+/// b² − 4ac is < 0 (x² + 2x + 5). The signs are exact
+/// ([`super::sign::sign_with_pi`]); false whenever they are not known (a
+/// coefficient with another symbol in it, x inside a function).
+pub fn never_zero(e: &Expr, x: &Symbol) -> bool {
+    let Ok(cs) = coefficients(e, x) else {
+        return false;
+    };
+    let sign = |c: &Expr| super::sign::sign_with_pi(c).filter(|s| *s != 0);
+    let Some(constant) = cs.get(&0).and_then(sign) else {
+        return false;
+    };
+    if cs
+        .iter()
+        .all(|(k, c)| k % 2 == 0 && sign(c) == Some(constant))
+    {
+        return true;
+    }
+    match (cs.keys().next_back(), cs.get(&2), cs.get(&1)) {
+        (Some(2), Some(a), Some(b)) => {
+            let disc = b.mul(b).sub(&a.mul(&cs[&0]).scale(&Coef::int(4)));
+            sign(&disc) == Some(-1)
+        }
+        _ => false,
+    }
+}
+
 /// The real roots of every `es[i] = 0` at once (the entries of a vector
 /// or matrix equation, Exercise 3.7(b)'s v₂ = e^{[ω̂]θ} v₁): the roots of
 /// the first entry [`solve`] solves, kept where every other entry is 0 at
@@ -309,6 +340,23 @@ mod tests {
         let s = solve(&e, &f).unwrap();
         assert_eq!(s.roots, vec![Expr::int(6)]);
         assert_eq!(s.unless_zero, Some(n));
+    }
+
+    #[test]
+    fn a_polynomial_never_zero_is_told_by_exact_signs() {
+        let x2 = sx().mul(&sx());
+        let no = |e: &Expr| never_zero(e, &x());
+        // x² + 1, −x² − 1, x⁴ + x² + 3, x² + 2x + 5 (b² − 4ac = −16)
+        assert!(no(&x2.add(&Expr::int(1))));
+        assert!(no(&x2.add(&Expr::int(1)).neg()));
+        assert!(no(&x2.mul(&x2).add(&x2).add(&Expr::int(3))));
+        assert!(no(&x2.add(&sx().scale(&Coef::int(2))).add(&Expr::int(5))));
+        // x² − 1, x², x² + 2x + 1, x³ + 1, x² + n: zeros, or not known
+        assert!(!no(&x2.sub(&Expr::int(1))));
+        assert!(!no(&x2));
+        assert!(!no(&x2.add(&sx().scale(&Coef::int(2))).add(&Expr::int(1))));
+        assert!(!no(&x2.mul(&sx()).add(&Expr::int(1))));
+        assert!(!no(&x2.add(&Expr::symbol(Symbol::new("n")))));
     }
 
     #[test]
