@@ -254,6 +254,42 @@ fn half_integer_powers_are_square_roots() {
     assert_eq!(lines("given a : scalar\na^(1/3)"), ["a^(1/3)"]);
 }
 
+/// A sum over its own square root folds as a monomial does:
+/// `(a + 1)/sqrt(a + 1)` printed `a/sqrt(1 + a) + 1/sqrt(1 + a)` (and
+/// `== sqrt(a + 1)` could not be decided without numbers), where
+/// `a/sqrt(a)` is `sqrt(a)`; now `sqrt(1 + a)`, by whatever path the
+/// terms come (a sum, a derivative: SymPy's `diff((a + 1)**Rational(3,
+/// 2), a)` is `3*sqrt(a + 1)/2`). A numerator the sum does not divide is
+/// kept. Numbers bound later are read as typed: at a = −1 the quotient
+/// is still a division by zero, though sqrt(0) is 0.
+#[test]
+fn a_sum_over_its_square_root_folds() {
+    assert_eq!(
+        lines(
+            "given a : scalar\n(a + 1)/sqrt(a + 1)\na/sqrt(1 + a) + 1/sqrt(1 + a)\n(2*a + 2)/sqrt(a + 1)\n\
+             (a^2 + 2*a + 1)/sqrt(a + 1)\n(a + 1)/sqrt(a + 1)^3\ndiff(sqrt(a + 1)^3, a)\n\
+             (a + 2)/sqrt(a + 1)\n(a + 1)/sqrt(a + 1) == sqrt(a + 1)"
+        ),
+        [
+            "sqrt(1 + a)",
+            "sqrt(1 + a)",
+            "2 sqrt(1 + a)",
+            "sqrt(1 + a) (1 + a)",
+            "1/sqrt(1 + a)",
+            "(3/2) sqrt(1 + a)",
+            "a/sqrt(1 + a) + 2/sqrt(1 + a)",
+            "true"
+        ]
+    );
+    // the numbers agree with the numbers typed first (a = 0.7: 1.3038)
+    assert_eq!(
+        lines("given a : scalar\ny = (a + 1)/sqrt(a + 1);\na = 0.7;\ny"),
+        lines("a = 0.7;\n(a + 1)/sqrt(a + 1)")
+    );
+    let e = error("given a : scalar\ny = (a + 1)/sqrt(a + 1)\na = -1\ny");
+    assert!(e.contains("division by zero"), "{e}");
+}
+
 #[test]
 fn inverse_maps_of_a_symbolic_rotation_on_their_branch() {
     let (out, err) = outputs(

@@ -144,8 +144,18 @@ impl Expr {
     /// that they multiply: `(a + b) · 1/(a + b)` = 1, `2 sin t · 1/(2 cos t)`
     /// stays (a tangent), `sin 2t · 1/(cos t)` = 2 sin t; terms over
     /// reciprocals of sums are put over one denominator first
-    /// ([`super::together::together`]).
+    /// ([`super::together::together`]). Terms over a square root of a
+    /// sum that the sum divides fold first: `(a + 1)/sqrt(a + 1)` =
+    /// `sqrt(a + 1)` ([`Expr::fold_root_sums`]).
     pub fn cancel(&self) -> Expr {
+        if self.has_root_quotient() {
+            return self.clone().fold_root_sums().cancel_recips();
+        }
+        self.cancel_recips()
+    }
+
+    /// [`Expr::cancel`] of the kept reciprocals.
+    fn cancel_recips(&self) -> Expr {
         if !self.has_recip() {
             return self.clone();
         }

@@ -4,7 +4,9 @@
 //! powers the rest of the monomial holds. Both sides are defined for
 //! the same numbers (the argument > 0), so the fold is an identity there;
 //! without it `diff(a^(3/2), a)` printed `(1/2) a/sqrt(a) + sqrt(a)` and
-//! `== (3/2) sqrt(a)` could not be decided.
+//! `== (3/2) sqrt(a)` could not be decided. Terms over the root of a
+//! sum fold together when their numerators add up to a multiple of it
+//! (`(a + 1)/sqrt(a + 1)` is `sqrt(1 + a)`: [`Expr::fold_root_sums`]).
 
 use super::Expr;
 use super::coef::Coef;
@@ -62,4 +64,73 @@ fn plain_monomial(u: &Expr) -> Option<&Mono> {
 fn holds(m: &Mono, u: &Mono) -> bool {
     u.iter()
         .all(|(v, k)| m.iter().any(|(w, e)| w == v && e >= k))
+}
+
+/// Whether `v` is a square root of a sum (`sqrt(1 + a)`).
+fn root_of_sum(v: &Var) -> bool {
+    matches!(v, Var::Call(c) if c.f == Func::Sqrt && c.args[0].terms.len() > 1)
+}
+
+impl Expr {
+    /// Whether some term divides by a square root of a sum
+    /// (`a/sqrt(1 + a)`): [`Expr::fold_root_sums`] has work to do.
+    pub fn has_root_quotient(&self) -> bool {
+        self.terms
+            .keys()
+            .flatten()
+            .any(|(v, e)| *e < 0 && root_of_sum(v))
+    }
+
+    /// The terms over one negative power of the square root √u of a sum
+    /// whose numerators add up to a multiple of u, folded as the module
+    /// folds a monomial's: u·q/√u^k = q/√u^(k−2), since √u·√u = u for the
+    /// principal root. `(a + 1)/sqrt(a + 1)` printed `a/sqrt(1 + a) +
+    /// 1/sqrt(1 + a)`; it is `sqrt(1 + a)`. Domain: the left side is
+    /// defined where u > 0 (a negative power of √u), and there both sides
+    /// are the same number; at u = 0 the right side may be defined where
+    /// the left is not, the cancellation `x/x` = 1 also makes (`solve`
+    /// reads the domain from the expression as typed,
+    /// `crate::decide::domain`). Numerators that do not add up to a
+    /// multiple of u (`(a + 2)/sqrt(a + 1)`) are left as they are.
+    pub fn fold_root_sums(self) -> Expr {
+        if !self.has_root_quotient() {
+            return self;
+        }
+        let mut out = Expr::default();
+        // (each root and power, with the sum of the numerators over it)
+        let mut groups: Vec<((Var, i32), Expr)> = Vec::new();
+        for (mut m, c) in self.terms {
+            let Some(i) = m.iter().position(|(v, e)| *e < 0 && root_of_sum(v)) else {
+                out.push(m, c);
+                continue;
+            };
+            let root = m.remove(i);
+            match groups.iter_mut().find(|(r, _)| *r == root) {
+                Some((_, num)) => num.push(m, c),
+                None => {
+                    let mut num = Expr::default();
+                    num.push(m, c);
+                    groups.push((root, num));
+                }
+            }
+        }
+        for ((v, mut e), mut num) in groups {
+            let Var::Call(call) = &v else {
+                continue;
+            };
+            while e < 0 {
+                match num.div_exact(&call.args[0]) {
+                    Some(q) => {
+                        num = q;
+                        e += 2;
+                    }
+                    None => break,
+                }
+            }
+            let mut power = Expr::default();
+            power.push(if e == 0 { Vec::new() } else { vec![(v, e)] }, Coef::one());
+            out = out.add(&num.mul(&power));
+        }
+        out
+    }
 }

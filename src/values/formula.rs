@@ -179,7 +179,12 @@ pub fn binary(op: BinOp, a: &Value, b: &Value, kind: &Kind) -> Result<Value, Str
         BinOp::Pow => return pow(&x, &y, a.kind(), kind),
     };
     // a quotient's common factors cancel: (a² − b²)/(a − b) = a + b
-    let m = if m.data.iter().any(Expr::has_recip) {
+    // (and a sum over its square root: (a + 1)/sqrt(a + 1) = sqrt(a + 1))
+    let m = if m
+        .data
+        .iter()
+        .any(|e| e.has_recip() || e.has_root_quotient())
+    {
         m.map(Expr::cancel)
     } else {
         m
