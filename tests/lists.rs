@@ -476,3 +476,36 @@ fn check_knows_a_literal_lists_length() {
         }
     }
 }
+
+/// A list of given names' symbols prints the kind of its items as a list
+/// of their numbers does: `[R_ab for k in 1:2]` with `R_ab : SO3` printed
+/// `list of 2 values {a}←{b}` (with `R_ab = Rotz(0.3)`: `list of 2 SO(3)
+/// {a}←{b}`), and a list of tuples of them `list of 2 (value, value)s`.
+#[test]
+fn a_list_of_given_names_prints_their_kind() {
+    for (src, want) in [
+        (
+            "given R_ab : SO3\n[R_ab for k in 1:2]\n",
+            "[R_ab, R_ab]  : list of 2 SO(3) {a}←{b}",
+        ),
+        (
+            "given R_ab : SO3\n[R_ab for k in 1:1]\n",
+            "[R_ab]  : list of 1 SO(3) {a}←{b}",
+        ),
+        (
+            "given T_bc : SE3\n[(T_bc, 1) for k in 1:2]\n",
+            "[(T_bc, 1), (T_bc, 1)]  : list of 2 (SE(3), scalar)s",
+        ),
+        ("given a\n[a for k in 1:1]\n", "[a]  : list of 1 number"),
+    ] {
+        let mut s = Session::new(Settings::default());
+        let (out, err, n) = s.run_to_strings("t.chs", src, Mode::Run, false);
+        assert_eq!(n, 0, "{src}: {err}");
+        assert_eq!(out.lines().last(), Some(want), "{src}: {out}");
+    }
+    // as with the numbers
+    let mut s = Session::new(Settings::default());
+    let src = "R_ab = Rotz(0.3);\n[R_ab for k in 1:2]\n";
+    let (out, _, _) = s.run_to_strings("t.chs", src, Mode::Run, false);
+    assert!(out.starts_with("list of 2 SO(3) {a}←{b}:"), "{out}");
+}

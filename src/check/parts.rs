@@ -98,6 +98,15 @@ impl Kind {
             k => k,
         }
     }
+    /// Whether the kind is, or has a part that is, [`Kind::Unknown`] (the
+    /// kind of a given name's symbol, or a tuple of them).
+    pub fn has_unknown(&self) -> bool {
+        match self {
+            Kind::Unknown => true,
+            Kind::Tuple(parts) => parts.iter().any(Kind::has_unknown),
+            _ => false,
+        }
+    }
     /// The number of items of a list kind, when checking knows it.
     pub fn list_len(&self) -> Option<usize> {
         match self {

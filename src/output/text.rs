@@ -11,22 +11,26 @@ use crate::values::number::Ascii;
 use crate::values::value::Value;
 use std::fmt::Write;
 
-/// The label of a list: `list of 5 SE(3) {s}←{b'}`.
+/// The label of a list: `list of 5 SE(3) {s}←{b'}`; of given names'
+/// symbols, which know no kind, the list's (`list of 2 SO(3)`).
 fn list_label(ty: &Ty, vs: &[Value]) -> String {
-    let kind = crate::values::value::common_kind(vs);
+    let kind = match (crate::values::value::common_kind(vs), ty.kind) {
+        (k, Kind::List(s, _)) if k.has_unknown() => *s,
+        (k, _) => k,
+    };
     let n = vs.len();
     let what = match kind {
         _ if n == 0 => "empty list".to_string(),
-        Kind::Unknown => format!("list of {n} values"),
         Kind::Scalar if n == 1 => "list of 1 number".to_string(),
+        Kind::Unknown if n == 1 => "list of 1 value".to_string(),
+        Kind::Unknown => format!("list of {n} values"),
         k => Kind::list(k)
             .to_string()
             .replacen("list of ", &format!("list of {n} "), 1),
     };
-    if ty.frames.is_none() {
-        what
-    } else {
-        format!("{what} {}", ty.frames)
+    match ty.frames.is_none() {
+        true => what,
+        false => format!("{what} {}", ty.frames),
     }
 }
 
