@@ -509,3 +509,27 @@ fn a_list_of_given_names_prints_their_kind() {
     let (out, _, _) = s.run_to_strings("t.chs", src, Mode::Run, false);
     assert!(out.starts_with("list of 2 SO(3) {a}←{b}:"), "{out}");
 }
+
+/// A range waiting for numbers has no items to slice: `(1:n)[2:3]` with
+/// `given n` printed `(1, n)` (the range's step and end, not its items:
+/// with n = 4 they are 2 and 3), `(1:2:n)[end]` printed `n` (with n = 4
+/// it is 3) and `(1:n)[2:9]` said 'index 4 is outside 1..3 (the
+/// entries)'; each is refused as `(1:n)[2]` is. Bound first, the slice is
+/// of the items.
+#[test]
+fn a_range_waiting_for_numbers_has_no_slices() {
+    for x in ["(1:n)[2:3]", "(1:2:n)[end]", "(1:n)[2:9]", "(1:n)[2]"] {
+        let src = format!("given n\n{x}\n");
+        let e = first_error(&src, Mode::Run).unwrap_or_else(|| panic!("{x}: ran"));
+        assert!(e.contains("has no items until n has a number"), "{x}: {e}");
+    }
+    let mut s = Session::new(Settings::default());
+    let src = "given n\nxs = 1:2:n;\nn = 8;\nxs[2:3]\nxs[end]\n";
+    let (out, err, n) = s.run_to_strings("t.chs", src, Mode::Run, false);
+    assert_eq!(n, 0, "{err}");
+    assert_eq!(
+        out.lines().collect::<Vec<_>>(),
+        ["[3, 5]  : list of 2 numbers", "7"],
+        "{out}"
+    );
+}

@@ -103,6 +103,20 @@ impl Interp<'_> {
         span: Span,
     ) -> Result<Typed, Diagnostic> {
         let t = self.expr(base)?;
+        // (a range waiting for numbers has no items yet: its formula's
+        // entries are its bounds, not its items)
+        if let Some(v) = t.value().filter(|v| crate::values::waiting::is_range(v)) {
+            return Err(Diagnostic::error(
+                ErrorKind::Domain,
+                span,
+                format!(
+                    "the range {} has no items until {}",
+                    crate::values::format::inline(v, 4),
+                    crate::values::waiting::once(v)
+                ),
+            )
+            .with_help("bind numbers to the given names first, then index it (§7)"));
+        }
         let (rows, cols) = match (t.value(), t.ty.kind) {
             (Some(Value::List(xs)), _) => (Some(xs.len()), Some(1)),
             (Some(v @ Value::Formula { .. }), _) => match crate::values::formula::mat_of(v) {
