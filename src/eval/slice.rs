@@ -379,9 +379,13 @@ fn literal_positions(e: &Expr) -> Option<Vec<f64>> {
 
 /// The number of items of the range `start:step:end` written with whole
 /// numbers `known` without evaluating them (`0:4` has 5, `10:-2:1` 5;
-/// `0:k` after `k = 4` 5: [`Interp::known_number`]), as running counts them ([`crate::seam::range::count`]: whole
-/// bounds and step count exactly in floats); None for any other range
-/// (a bound named, a fraction, a step of zero, too long a list).
+/// `0:k` after `k = 4` 5: [`Interp::known_number`]), as running counts
+/// them ([`crate::seam::range::count`]: whole bounds and step count
+/// exactly in floats); None for any other range (a bound named, a
+/// fraction, a step of zero, too long a list). A literal whose float is
+/// whole but whose typed decimal is not (`2.9999999999999999`) counts
+/// here at most one more than running's exact count: checking then
+/// passes an index running refuses, never the other way.
 pub(super) fn literal_len(
     (start, step, end): (&Expr, Option<&Expr>, &Expr),
     known: impl Fn(&Expr) -> Option<f64>,
