@@ -288,6 +288,22 @@ fn a_sum_over_its_square_root_folds() {
     );
     let e = error("given a : scalar\ny = (a + 1)/sqrt(a + 1)\na = -1\ny");
     assert!(e.contains("division by zero"), "{e}");
+    // a root over its argument: `sqrt(a)/a == 1/sqrt(a)` could not be
+    // decided without numbers (both defined for a > 0 alone)
+    assert_eq!(
+        lines(
+            "given a, b : scalar\nsqrt(a)/a\nsqrt(a)^3/a^2\nsqrt(a b)/(a b)\nsqrt(a)/a^2\nsqrt(a b)/a\n\
+             sqrt(a)/a == 1/sqrt(a)"
+        ),
+        [
+            "1/sqrt(a)",
+            "1/sqrt(a)",
+            "1/sqrt(a b)",
+            "1/(a sqrt(a))",
+            "sqrt(a b)/a",
+            "true"
+        ]
+    );
 }
 
 #[test]

@@ -1,7 +1,8 @@
 //! A monomial over a square root of itself: `a/sqrt(a)` is `sqrt(a)`,
 //! `a²/sqrt(a)` is `a sqrt(a)`, `a b/sqrt(a b)³` is `1/sqrt(a b)` — where
 //! the root's argument is a product of symbols (coefficient 1) whose
-//! powers the rest of the monomial holds. Both sides are defined for
+//! powers the rest of the monomial holds (and `sqrt(a)/a` is
+//! `1/sqrt(a)`, where it divides by them). Both sides are defined for
 //! the same numbers (the argument > 0), so the fold is an identity there;
 //! without it `diff(a^(3/2), a)` printed `(1/2) a/sqrt(a) + sqrt(a)` and
 //! `== (3/2) sqrt(a)` could not be decided. Terms over the root of a
@@ -14,9 +15,11 @@ use super::expr::{Func, Mono, Var};
 
 impl Expr {
     /// Each monomial's factors of a square root's argument moved into the
-    /// root's negative odd power (see the module).
+    /// root's negative odd power (see the module); and out of a positive
+    /// one over them: `sqrt(a)/a` is `1/sqrt(a)` (both defined for a > 0
+    /// alone, so an identity everywhere).
     pub(super) fn fold_root_quotients(self) -> Expr {
-        let over_root = |v: &Var, e: i32| e < 0 && matches!(v, Var::Call(c) if c.f == Func::Sqrt);
+        let over_root = |v: &Var, e: i32| e != 0 && matches!(v, Var::Call(c) if c.f == Func::Sqrt);
         if !self.terms.keys().flatten().any(|(v, e)| over_root(v, *e)) {
             return self;
         }
@@ -39,6 +42,14 @@ impl Expr {
                         }
                     }
                     m[i].1 += 2;
+                }
+                while m[i].1 > 0 && owes(&m, u) {
+                    for (v, k) in u {
+                        if let Some(f) = m.iter_mut().find(|(w, _)| w == v) {
+                            f.1 += k;
+                        }
+                    }
+                    m[i].1 -= 2;
                 }
             }
             m.retain(|(_, e)| *e != 0);
@@ -64,6 +75,13 @@ fn plain_monomial(u: &Expr) -> Option<&Mono> {
 fn holds(m: &Mono, u: &Mono) -> bool {
     u.iter()
         .all(|(v, k)| m.iter().any(|(w, e)| w == v && e >= k))
+}
+
+/// Whether monomial `m` divides by every factor of `u` to at least its
+/// power.
+fn owes(m: &Mono, u: &Mono) -> bool {
+    u.iter()
+        .all(|(v, k)| m.iter().any(|(w, e)| w == v && *e <= -k))
 }
 
 /// Whether `v` is a square root of a sum (`sqrt(1 + a)`).
