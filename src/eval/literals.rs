@@ -50,7 +50,13 @@ impl Interp<'_> {
     /// Notes that `name` was just bound to `value`, if that is a number
     /// written with literals ([`Interp::known_number`]). (A note of an
     /// earlier binding of it is stale by its stamp.)
+    /// Only checking reads the notes (running has the numbers), so a run
+    /// makes none: no work on the statement loop's hot path (issue 40).
+    #[inline]
     pub(super) fn note_literal(&mut self, name: Name, value: &Expr) {
+        if self.running() {
+            return;
+        }
         if let Some(x) = self.known_number(value)
             && let Some(stamp) = self.env.get(name).map(|b| b.stamp)
         {
