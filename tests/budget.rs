@@ -117,6 +117,29 @@ fn the_recipes_of_exact_numbers_count_against_the_budget() {
     ]);
     assert_eq!(out.code, Some(0), "{}", out.stderr);
     assert!(out.stdout.ends_with("true\n"), "{}", out.stdout);
+    // A 3-vector of fractions holds them inline, no recipe over copies
+    // of its entries: 5,000 fit in 1 MB (3 numbers an item and its place
+    // in the list; as recipes they were 315,000 numbers), 40,000 do not.
+    let out = bounded(&[
+        "--max-memory",
+        "1M",
+        "-e",
+        "xs = [(k/1000, 0, 0) for k in 1:5000]\nxs[4000] == (4, 0, 0)",
+    ]);
+    assert_eq!(out.code, Some(0), "{}", out.stderr);
+    assert!(out.stdout.ends_with("true\n"), "{}", out.stdout);
+    let out = bounded(&[
+        "--max-memory",
+        "1M",
+        "-e",
+        "xs = [(k/1000, 0, 0) for k in 1:40000]",
+    ]);
+    assert_eq!(out.code, Some(1), "{}", out.stderr);
+    assert!(
+        out.stderr.contains("this would hold 160,000 numbers"),
+        "{}",
+        out.stderr
+    );
 }
 
 #[test]

@@ -393,6 +393,58 @@ fn fractions_in_lists_stay_exact_and_print_as_before() {
     );
 }
 
+/// A 3-vector written of fractions and numbers as typed (`(k/1000, 0, 0)`,
+/// a position p of (3.62)) holds its entries' fractions at once, not a
+/// recipe over copies of its entries: it compares exactly, prints its
+/// fractions under `--exact`, and a transform made of it keeps its exact
+/// entries, as when the recipe made them; with a symbol or a float entry
+/// it is what it was.
+#[test]
+fn vectors_of_fractions_stay_exact_and_print_as_before() {
+    let lines = [
+        "k = 7; (k/1000, 0, 0) == (0.007, 0, 0)",
+        "k = 7; (k/1000, 0, 0) == (7/1000, 0, 0)",
+        "k = 7; ((k/1000, 0, 0) == (0.0070000000000000001, 0, 0)) == false",
+        "k = 7; ((k/1000, 0, 0) == (7/1000, 0, 1e-30)) == false",
+        "k = 7; (k/3, 1, 0.5) == (7/3, 1, 1/2)",
+        "k = 7; (k/3, 1, 0.5)[1] * 3 == 7",
+        "k = 7; (k/3, 0.1, 1e-13) == (7/3, 1/10, 1/10000000000000)",
+        "k = 7; (-k/3, 0, 0) == -(k/3, 0, 0)",
+        "k = 7; (k/1000, 0, 0) + (0.1, 0.2, 0) == (0.107, 0.2, 0)",
+        "k = 7; norm((3/5 * k/7, 4/5, 0)) == 1",
+        "k = 7; RpToTrans(Rotz(k/100), (k/1000, 0, 0))[1, 4] == k/1000",
+        "k = 7; RpToTrans(Rotz(k/100), (k/1000, 0, 0)).p == (k/1000, 0, 0)",
+        "k = 7; RpToTrans(Rotz(k/100), (k/1000, 0, 0)) == RpToTrans(Rotz(0.07), (0.007, 0, 0))",
+        "k = 7; (RpToTrans(Rotz(k/100), (k/1000, 0, 0)) == RpToTrans(Rotz(0.07), (0.0070000000000000001, 0, 0))) == false",
+        "[RpToTrans(Rotz(k/100), (k/1000, 0, 0)) for k in 1:3][2][1, 4] == 2/1000",
+        "[(k/100, 1/3, 0) for k in 1:3][2] == (0.02, 1/3, 0)",
+        "k = 7; (k/3, exp(0), 0) == (7/3, 1, 0)",
+        "k = 7; ((k/3, 1, 0) == (7/3 + 1e-20, 1, 0)) == false",
+    ];
+    for line in lines {
+        let mut s = Session::new(Settings::default());
+        let (out, err, n) = s.run_to_strings("t", &format!("{line}\n"), Mode::Run, false);
+        assert_eq!(n, 0, "{line}: {err}");
+        assert_eq!(out.lines().last(), Some("true"), "{line}: {out}{err}");
+    }
+    let mut e = Session::new(Settings {
+        exact: true,
+        ..Settings::default()
+    });
+    let src = "k = 7\n(k/1000, 0, 0)\n(k/3, 0.1, 1e-13)\n[(k/100, 1/3, 0) for k in 1:3]\n\
+               RpToTrans(Rotz(pi/6), (k/1000, 1/3, 0))\n(0.1, 0.2, 0) + (k/1000, 0, 0)\n\
+               given a\n(k/1000, a, 0) + (a, 0, 1/3)\n";
+    let (out, err, n) = e.run_to_strings("t", src, Mode::Run, false);
+    assert_eq!(n, 0, "{err}");
+    assert_eq!(
+        out,
+        "k = 7\n(7/1000, 0, 0)  : 3-vector\n(7/3, 0.1, 1e-13)  : 3-vector\n\
+         [(1/100, 1/3, 0), (1/50, 1/3, 0), (3/100, 1/3, 0)]  : list of 3 3-vectors\n\
+         [√3/2, -1/2, 0, 7/1000\n  1/2, √3/2, 0,    1/3\n    0,    0, 1,      0\n    0,    0, 0,      1]  : SE(3)\n\
+         (0.107, 0.2, 0)  : 3-vector\n(7/1000 + a, a, 1/3)  : 3-vector\n"
+    );
+}
+
 /// A list made of given names (or of tuples of them) has their kind, in
 /// `run` as in `check`:
 /// `[R_ab for k in 1:2]` was a list of "values" when running, so its item

@@ -14,7 +14,7 @@ use crate::sym::Mat;
 use crate::sym::coef::Rat;
 use crate::syntax::ast::BinOp;
 use crate::values::error::OpError;
-use crate::values::exact::{Exact, Fraction, Operands, Operation, Pending};
+use crate::values::exact::{Exact, Fraction, Fractions3, Operands, Operation, Pending};
 use crate::values::formula;
 use crate::values::value::Value;
 
@@ -182,7 +182,13 @@ impl Op<'_> {
     pub fn exact_of<V: std::borrow::Borrow<Value>>(self, args: &[V], kind: &Kind) -> Exact {
         match self.exactness(args) {
             Some(e) => e,
-            None => self.pending(Operands::of(args), kind),
+            None => match self {
+                Op::Vector => match fractions(args) {
+                    Some(rs) => Exact::Ratios(rs),
+                    None => self.pending(Operands::of(args), kind),
+                },
+                _ => self.pending(Operands::of(args), kind),
+            },
         }
     }
 
@@ -295,6 +301,19 @@ impl Op<'_> {
             _ => true,
         }
     }
+}
+
+/// The entries of a 3-vector `(a, b, c)` as fractions held inline, when
+/// every entry is a fraction at hand ([`at_hand`], decimals as typed
+/// included) small enough to pack ([`Fractions3`]): its exact form at
+/// once ([`Exact::Ratios`]), the one its recipe would make. None for
+/// anything else, or another length (a recipe then keeps copies of the
+/// entries).
+#[inline(never)]
+fn fractions<V: std::borrow::Borrow<Value>>(args: &[V]) -> Option<Fractions3> {
+    let [a, b, c] = args else { return None };
+    let one = |v: &V| at_hand(v.borrow(), true);
+    Fractions3::of([one(a)?, one(b)?, one(c)?])
 }
 
 /// [`held_fraction`] in machine words: a whole number as typed, a
@@ -514,65 +533,4 @@ pub(crate) fn from_exact_form(v: &mut Value) {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::builtins::{lookup, table};
-
-    #[test]
-    fn the_table_of_exact_calls_agrees_with_the_names() {
-        for b in table() {
-            assert_eq!(exact_call(b), exact_name(b.name), "{}", b.name);
-            assert_eq!(call_keeps(b), Keeps::of(b.name), "{}", b.name);
-        }
-        let keeps = |n| call_keeps(lookup(n).expect("a builtin"));
-        assert_eq!(keeps("exp"), Keeps::OfNumberOrMotion);
-        assert_eq!(keeps("log"), Keeps::OfNumber);
-        assert_eq!(keeps("atan2"), Keeps::OfNumber);
-        assert_eq!(keeps("Rotz"), Keeps::Always);
-        assert_eq!(keeps("MatrixLog6"), Keeps::Never);
-        let row = |n| lookup(n).expect("a builtin");
-        assert!(exact_call(row("sqrt")) && exact_call(row("Rotz")));
-        assert!(exact_call(row("exp")) && exact_call(row("Ad")));
-        assert!(!exact_call(row("MatrixLog6")));
-    }
-
-    /// A product of numbers as typed keeps its operands, not copies, and
-    /// its exact form is the product of theirs (`[S] 0.1` as in issue
-    /// 14's benchmark).
-    #[test]
-    fn a_product_keeps_its_operands_and_is_exact() {
-        let as_typed = |mut v: Value| {
-            v.set_exact(Exact::Typed);
-            v
-        };
-        let typed = |x: f64| as_typed(Value::scalar(x));
-        let m = Box::new(as_typed(Value::vector(Kind::Vector(Some(2)), &[1.0, 3.0])));
-        let e = Op::Arith(crate::syntax::ast::BinOp::Mul).exact_of_pair(
-            m,
-            Box::new(typed(0.1)),
-            &Kind::Vector(Some(2)),
-        );
-        let Exact::Later(_) = &e else {
-            panic!("a recipe: {e:?}")
-        };
-        let form = e
-            .form(&crate::values::num::Num::vector(&[
-                0.1,
-                0.30000000000000004,
-            ]))
-            .expect("exact");
-        let tenth = |n| {
-            crate::sym::Expr::constant(crate::sym::coef::Coef::rat(
-                crate::sym::coef::Rat::new(n, 10).expect("a fraction"),
-            ))
-        };
-        assert_eq!(form.data, vec![tenth(1), tenth(3)]);
-        // A float operand: no recipe.
-        let f = Op::Arith(crate::syntax::ast::BinOp::Mul).exact_of_pair(
-            Box::new(Value::scalar(0.1)),
-            Box::new(typed(2.0)),
-            &Kind::Scalar,
-        );
-        assert!(f.is_float());
-    }
-}
+mod tests;

@@ -42,7 +42,9 @@ impl Decided {
                 Exact::Float => (m[0], None, false),
                 // (the float decides as the decimal would)
                 Exact::Typed => (m[0], None, true),
-                Exact::Later(_) | Exact::Ratio(_) => (m[0], v.exact_form().and_then(one), false),
+                Exact::Later(_) | Exact::Ratio(_) | Exact::Ratios(_) => {
+                    (m[0], v.exact_form().and_then(one), false)
+                }
             },
             Value::Formula { m, .. } if m.rows == 1 && m.cols == 1 => {
                 let e = m.get(0, 0);

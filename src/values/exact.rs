@@ -20,7 +20,7 @@ use std::rc::Rc;
 
 use super::num::Num;
 pub use super::operation::Operation;
-pub use fraction::Fraction;
+pub use fraction::{Fraction, Fractions3};
 
 mod fraction;
 use super::value::Value;
@@ -45,6 +45,12 @@ pub enum Exact {
     /// typed (`k/100` of a `k` of `1:100000`), and a range's items a + k·h
     /// of fractions. No allocation, where a recipe kept both operands.
     Ratio(Fraction),
+    /// Fractions known at once, the entries of a 3-vector (ω, v or a
+    /// position p of (3.62)) written of fractions held inline and numbers
+    /// as typed (`(k/1000, 0, 0)`), packed inline ([`Fractions3`]): no
+    /// allocation, where a recipe kept a copy of each entry's value. Its
+    /// form is the recipe's, typed marks and all.
+    Ratios(Fractions3),
 }
 
 impl std::fmt::Debug for Exact {
@@ -58,6 +64,10 @@ impl std::fmt::Debug for Exact {
                 None => f.write_str("Later"),
             },
             Exact::Ratio(r) => write!(f, "Ratio({:?})", r.rat()),
+            Exact::Ratios(rs) => {
+                let rats = rs.get().map(Fraction::rat);
+                write!(f, "Ratios({rats:?})")
+            }
         }
     }
 }
@@ -100,6 +110,9 @@ fn form_bytes(m: &Mat) -> u64 {
 fn clamp(bytes: u64) -> u32 {
     u32::try_from(bytes).unwrap_or(u32::MAX)
 }
+
+// (an exact form is 16 bytes, so that a value is 104: `num.rs`)
+const _: () = assert!(std::mem::size_of::<Exact>() == 16);
 
 /// The longest chain of waiting recipes kept (`x = x + 0.1` typed
 /// 200,000 times): past it, the form is worked out at once, so working
@@ -233,7 +246,8 @@ impl Exact {
     /// About how many bytes this exact form holds beyond the value it
     /// belongs to, as the memory budget counts them (`eval::env::numbers`,
     /// 8 bytes a number): none for a float, numbers as typed or a
-    /// fraction held inline; for a recipe, its node, its operands' values
+    /// fraction or fractions held inline; for a recipe, its node, its
+    /// operands' values
     /// and the recipes under them that no one else holds; for a form
     /// known at once, its terms (an estimate: 96 bytes a term). Fixed
     /// when the form is made (a form worked out later, kept beside its
@@ -292,6 +306,7 @@ impl Exact {
             Exact::Float => None,
             Exact::Typed => typed(m),
             Exact::Ratio(r) => Some(Mat::scalar(Expr::constant(Coef::rat(r.rat())))),
+            Exact::Ratios(rs) => Some(rs.form()),
             Exact::Later(l) => l
                 .form
                 .get_or_init(|| {

@@ -159,3 +159,47 @@ fn gcd(mut a: u64, mut b: u64) -> u64 {
         }
     }
 }
+
+/// Three small fractions packed in the twelve bytes a [`Fraction`] leaves
+/// beside its mark: the entries of a 3-vector held inline in an
+/// [`super::Exact`] (`(k/1000, 0, 0)`, a position p of (3.62)), with no
+/// allocation and nothing to drop. Each entry is a word: its numerator
+/// (below 2²⁰ in size), its denominator (at most 1024) and its typed mark.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub struct Fractions3([u32; 3]);
+
+/// The bits of an entry of [`Fractions3`] below the numerator: 10 for
+/// the denominator less one, 1 for the mark.
+const DEN_BITS: u32 = 10;
+
+impl Fractions3 {
+    /// `rs` packed, when each fits (a numerator below 2²⁰ in size, a
+    /// denominator at most 1024).
+    #[inline]
+    pub fn of(rs: [Fraction; 3]) -> Option<Fractions3> {
+        let word = |r: Fraction| -> Option<u32> {
+            let den = r.den.checked_sub(1).filter(|d| *d < 1 << DEN_BITS)?;
+            let num = i32::try_from(r.num)
+                .ok()
+                .filter(|n| n.unsigned_abs() < 1 << 20)?;
+            Some(((num as u32) << (DEN_BITS + 1)) | (u32::from(r.typed) << DEN_BITS) | den)
+        };
+        Some(Fractions3([word(rs[0])?, word(rs[1])?, word(rs[2])?]))
+    }
+    /// The exact form of the 3-vector whose entries these are: what the
+    /// recipe of `(a, b, c)` makes, the column of the entries' constants.
+    pub fn form(self) -> crate::sym::Mat {
+        use crate::sym::{coef::Coef, expr::Expr};
+        let entry = |r: Fraction| Expr::constant(Coef::rat(r.rat()));
+        crate::sym::Mat::column(self.get().map(entry).to_vec())
+    }
+    /// The three fractions, in order.
+    #[inline]
+    pub fn get(self) -> [Fraction; 3] {
+        self.0.map(|w| Fraction {
+            num: i64::from((w as i32) >> (DEN_BITS + 1)),
+            den: (w & ((1 << DEN_BITS) - 1)) + 1,
+            typed: w & (1 << DEN_BITS) != 0,
+        })
+    }
+}

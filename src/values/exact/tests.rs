@@ -33,6 +33,9 @@ fn a_recipe_weighs_its_node_its_operands_and_what_only_it_holds() {
     assert_eq!(Exact::Typed.weight(), 0);
     let half = Fraction::of(&Rat::new(1, 2).expect("1/2")).expect("inline");
     assert_eq!(Exact::Ratio(half).weight(), 0);
+    // (a 3-vector's fractions, packed inline: nothing)
+    let thirds = Exact::Ratios(Fractions3::of([half; 3]).expect("small"));
+    assert_eq!(thirds.weight(), 0);
     let leaf = recipe(Operands::of(&[Value::scalar(0.5)]));
     assert_eq!(leaf.weight(), NODE_BYTES + value);
     let with = |e: Exact| Value::Num {
@@ -133,4 +136,42 @@ fn fractions_in_words_are_those_of_rat() {
             assert_eq!(a.over(b), None);
         }
     }
+}
+
+/// Three fractions packed inline are the three fractions, marks and signs
+/// kept; one past the bounds (a numerator of 2²⁰, a denominator of 1025)
+/// is not packed.
+#[test]
+fn three_fractions_pack_and_unpack_as_they_were() {
+    let f = |p: i128, q: i128, typed: bool| {
+        Fraction::of(&Rat::new(p, q).expect("a fraction").marked(typed)).expect("inline")
+    };
+    for rs in [
+        [f(7, 1000, false), f(0, 1, false), f(-3, 1, false)],
+        [
+            f(-1_048_575, 1024, true),
+            f(1_048_575, 1, false),
+            f(37, 100, true),
+        ],
+        [f(-1, 3, false), f(99_999, 1000, false), f(1, 1024, true)],
+    ] {
+        let packed = Fractions3::of(rs).expect("small");
+        assert_eq!(packed.get(), rs);
+        assert_eq!(
+            packed.get().map(|r| r.rat().is_typed()),
+            rs.map(|r| r.rat().is_typed())
+        );
+    }
+    assert_eq!(
+        Fractions3::of([f(1_048_576, 1, false), f(0, 1, false), f(0, 1, false)]),
+        None
+    );
+    assert_eq!(
+        Fractions3::of([f(1, 1025, false), f(0, 1, false), f(0, 1, false)]),
+        None
+    );
+    assert_eq!(
+        Fractions3::of([f(-1_048_576, 3, false), f(0, 1, false), f(0, 1, false)]),
+        None
+    );
 }
