@@ -21,8 +21,8 @@ impl<'a> Op<'a> {
             Op::Inverse => Operation::Inverse,
             Op::Transpose => Operation::Transpose,
             Op::Member(part) => Operation::Member(part),
-            Op::Index(sels) => Operation::Index(sels.to_vec()),
-            Op::Block(widths) => Operation::Block(widths.to_vec()),
+            Op::Index(sels) => Operation::Index(sels.into()),
+            Op::Block(widths) => Operation::Block(widths.into()),
             Op::Vector => Operation::Vector,
             // (most calls name the builtin by the table's own text of the
             // name, `Env::builtin`: found by its address, no text compared)

@@ -28,10 +28,10 @@ pub enum Operation {
     /// `T.R`, `T.p`, `V.w`, `V.v`, `F.m`, `F.f`: a part of a value.
     Member(Part),
     /// `x[i]`, `M[i, j]`, `M[:, j]` (1-based).
-    Index(Vec<Sel>),
+    Index(Box<[Sel]>),
     /// `[x]` (the bracket of 3.30, 3.70) and `[a, b; c, d]`: the number of
     /// entries of each row.
-    Block(Vec<usize>),
+    Block(Box<[usize]>),
     /// `(a, b, c)`: a column vector of scalars.
     Vector,
     /// A builtin, by the name it was called with (`Ad` or `Adjoint`).

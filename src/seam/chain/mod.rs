@@ -337,7 +337,7 @@ impl Chain<'_> {
                 let row = matrix(1, 3, &[0.0; 3], Kind::Matrix(Some(1), Some(3)));
                 let parts = vec![dr, dp, row, number(0.0)];
                 Some(Some(node_k(
-                    Step::Op(Operation::Block(vec![2, 2])),
+                    Step::Op(Operation::Block(Box::new([2, 2]))),
                     parts,
                     k,
                 )?))

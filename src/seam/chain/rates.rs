@@ -87,7 +87,11 @@ pub(super) fn of(
         }
         _ => return None,
     };
-    let m = node_k(Step::Op(Operation::Block(vec![3])), columns.to_vec(), M3)?;
+    let m = node_k(
+        Step::Op(Operation::Block(Box::new([3]))),
+        columns.to_vec(),
+        M3,
+    )?;
     let m_inv = node_k(Step::Op(Operation::Call("inv")), vec![m], M3)?;
     let rt = node_k(Step::Op(Operation::Transpose), vec![rot.clone()], M3)?;
     arith(BinOp::Mul, m_inv, unskew(arith(BinOp::Mul, dr, rt)?)?)
@@ -154,7 +158,7 @@ pub(super) fn det(m: &Rc<Recipe>, dm: &Rc<Recipe>, n: usize) -> Option<Rc<Recipe
     }
     let column = |x: &Rc<Recipe>, j: usize| {
         node_k(
-            Step::Op(Operation::Index(vec![Sel::All, Sel::At(j as f64)])),
+            Step::Op(Operation::Index(Box::new([Sel::All, Sel::At(j as f64)]))),
             vec![x.clone()],
             Kind::Vector(Some(n)),
         )
@@ -165,7 +169,7 @@ pub(super) fn det(m: &Rc<Recipe>, dm: &Rc<Recipe>, n: usize) -> Option<Rc<Recipe
             .map(|k| column(if k == j { dm } else { m }, k))
             .collect::<Option<Vec<_>>>()?;
         let mj = node_k(
-            Step::Op(Operation::Block(vec![n])),
+            Step::Op(Operation::Block(Box::new([n]))),
             columns,
             Kind::Matrix(Some(n), Some(n)),
         )?;

@@ -59,7 +59,7 @@ fn a_recipe_weighs_its_node_its_operands_and_what_only_it_holds() {
     let known = Exact::known(Mat::scalar(Expr::pi()));
     assert_eq!(
         known.weight(),
-        NODE_BYTES + form_bytes(&Mat::scalar(Expr::pi()))
+        NODE_BYTES + BOX_BYTES + form_bytes(&Mat::scalar(Expr::pi()))
     );
 }
 
@@ -174,4 +174,13 @@ fn three_fractions_pack_and_unpack_as_they_were() {
         Fractions3::of([f(-1_048_576, 3, false), f(0, 1, false), f(0, 1, false)]),
         None
     );
+}
+
+/// An exact form is 16 bytes, so that a value is 104 (`num.rs`), and a
+/// recipe's node 112, a size class of 128 bytes with its counts (a 3-vector's
+/// fractions packed inline, a form once known boxed).
+#[test]
+fn an_exact_form_and_a_node_keep_their_sizes() {
+    assert_eq!(std::mem::size_of::<Exact>(), 16);
+    assert_eq!(std::mem::size_of::<Later>(), 112);
 }
