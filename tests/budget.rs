@@ -83,14 +83,14 @@ fn max_memory_caps_the_whole_run() {
 #[test]
 fn the_recipes_of_exact_numbers_count_against_the_budget() {
     // Each sine of an exact t keeps its recipe (for `==` to bound it):
-    // ~260 bytes an item, counted as numbers of 8 bytes. 5,001 of them
-    // pass 1 MB, though their floats alone are 80 kB; 500,001 took 1.1 GB
-    // uncounted.
+    // 128 bytes an item (the recipe's node, t held in it), counted as
+    // numbers of 8 bytes. 10,001 of them pass 1 MB, though their floats
+    // alone are 80 kB; 500,001 took 1.1 GB uncounted.
     let out = bounded(&[
         "--max-memory",
         "1M",
         "-e",
-        "xs = [sin(t) for t in 0:0.001:5]",
+        "xs = [sin(t) for t in 0:0.001:10]",
     ]);
     assert_eq!(out.code, Some(1), "{}", out.stderr);
     let message = out.stderr.lines().next().unwrap_or("");

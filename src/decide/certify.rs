@@ -13,6 +13,7 @@
 //! with no recipe (a numeric matrix exponential, a float read from a
 //! file) gets no verdict here: it compares as floats (§7).
 
+use crate::values::exact::deref;
 use std::collections::HashMap;
 
 use super::ball::{self, Ball};
@@ -184,11 +185,10 @@ fn same(a: &Value, b: &Value, depth: u32) -> bool {
         f.with_recipe(|q| {
             k == l
                 && format!("{:?}", p.op) == format!("{:?}", q.op)
-                && p.args.refs().len() == q.args.refs().len()
-                && p.args
-                    .refs()
+                && deref(&p.args.refs()).len() == deref(&q.args.refs()).len()
+                && deref(&p.args.refs())
                     .iter()
-                    .zip(q.args.refs())
+                    .zip(deref(&q.args.refs()))
                     .all(|(u, v)| same(u, v, depth + 1))
         })
         .unwrap_or(false)
@@ -229,7 +229,7 @@ pub(crate) fn balls(v: &Value, prec: usize, memo: &mut Memo) -> Option<Balls> {
                     .collect::<Option<_>>()?,
             },
             None => exact.with_recipe(|p| {
-                for a in p.args.refs() {
+                for a in deref(&p.args.refs()) {
                     if let Value::Num { m, .. } = a {
                         scale = m.iter().fold(scale, |s, x| s.max(x.abs()));
                     }
@@ -260,9 +260,7 @@ pub(crate) fn balls(v: &Value, prec: usize, memo: &mut Memo) -> Option<Balls> {
 /// The balls of operation `p` over its operands' balls; None for an
 /// operation or a shape not bounded here.
 fn operation(p: &Pending, prec: usize, memo: &mut Memo) -> Option<Balls> {
-    let args = p
-        .args
-        .refs()
+    let args = deref(&p.args.refs())
         .into_iter()
         .map(|v| balls(v, prec, memo))
         .collect::<Option<Vec<Balls>>>()?;

@@ -7,6 +7,7 @@
 //! The same for numbers typed first and for a range that waited for its
 //! numbers (`super::replay`).
 
+use crate::values::exact::deref;
 use std::rc::Rc;
 
 use crate::check::rules;
@@ -162,7 +163,7 @@ fn reach(v: &Value) -> f64 {
     let x = m.iter().fold(0f64, |s, x| s.max(x.abs()));
     let operands = exact
         .peek_recipe(|p| {
-            p.args.refs().iter().fold(0f64, |s, a| match a {
+            deref(&p.args.refs()).iter().fold(0f64, |s, a| match a {
                 Value::Num { m, .. } => m.iter().fold(s, |s, x| s.max(x.abs())),
                 _ => f64::INFINITY,
             })

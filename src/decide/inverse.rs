@@ -14,6 +14,7 @@ use super::certify::{Memo, PRECISIONS, Verdict, balls};
 use crate::check::ty::Kind;
 use crate::seam::apply::Op;
 use crate::values::exact::Operation;
+use crate::values::exact::deref;
 use crate::values::value::Value;
 
 /// True when `a == b` is proven by the principal range of an inverse
@@ -32,7 +33,7 @@ fn one_way(inv: &Value, c: &Value, depth: u32) -> bool {
         return false;
     }
     let found = exact
-        .with_recipe(|p| match (&p.op, p.args.refs().as_slice()) {
+        .with_recipe(|p| match (&p.op, deref(&p.args.refs()).as_slice()) {
             (Operation::Call(name), [y]) => {
                 Some((crate::builtins::lookup(name)?.name, (*y).clone()))
             }

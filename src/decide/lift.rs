@@ -11,6 +11,7 @@
 //! sides are equal, proven. Anything else proves nothing
 //! ([`super::certify`] then bounds the difference).
 
+use crate::values::exact::deref;
 use std::collections::HashMap;
 
 use super::cyclotomic::{coef_poly, conductor_of, cyclotomic};
@@ -429,7 +430,7 @@ fn lifted(v: &Value, lift: &mut Lift, depth: u32) -> Option<Mat> {
         .with_recipe(|p| {
             let angle = angle_of(&p.op);
             let mut forms = Vec::new();
-            for (i, a) in p.args.refs().into_iter().enumerate() {
+            for (i, a) in deref(&p.args.refs()).into_iter().enumerate() {
                 let mut m = lifted(a, lift, depth + 1)?;
                 // (an exponential's angle, read as a sine's is: motion.rs)
                 motion::read_angle(&p.op, i, &mut m, lift);
@@ -504,7 +505,7 @@ fn fingerprint(v: &Value, depth: u32) -> Option<String> {
     let out = exact
         .with_recipe(|p| {
             let mut s = format!("{:?}:{kind:?}(", p.op);
-            for a in p.args.refs() {
+            for a in deref(&p.args.refs()) {
                 s += &fingerprint(a, depth + 1)?;
                 s.push(',');
                 if s.len() > MAX_PRINT {

@@ -30,6 +30,7 @@ use crate::check::ty::Kind;
 use crate::sym::coef::{Coef, Rat};
 use crate::sym::matrix::{skew, twist_matrix, unskew};
 use crate::sym::{Expr, Mat};
+use crate::values::exact::deref;
 use crate::values::exact::{Exact, Operation, is_exact};
 use crate::values::value::Value;
 
@@ -163,7 +164,7 @@ fn exponent(e: &Value) -> Option<(Kind, Value)> {
             if !matches!(exp, "exp" | "MatrixExp3" | "MatrixExp6") {
                 return None;
             }
-            match p.args.refs().as_slice() {
+            match deref(&p.args.refs()).as_slice() {
                 [x] => Some((*x).clone()),
                 _ => None,
             }

@@ -403,7 +403,8 @@ fn of_recipe(
     memo: &mut HashMap<*const (), Option<Form>>,
     depth: u32,
 ) -> Option<Form> {
-    let args: Vec<&Value> = p.args.refs();
+    let owned = p.args.refs();
+    let args: Vec<&Value> = crate::values::exact::deref(&owned);
     let arg =
         |i: usize, memo: &mut HashMap<_, _>| args.get(i).and_then(|a| form(a, memo, depth + 1));
     match &p.op {

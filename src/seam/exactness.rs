@@ -199,7 +199,7 @@ impl Op<'_> {
     pub fn exact_of_owned(self, args: Vec<Value>, kind: &Kind) -> Exact {
         match self.exactness(&args) {
             Some(e) => e,
-            None => self.pending(Operands::Copied(args.into_boxed_slice()), kind),
+            None => self.pending(Operands::owned(args), kind),
         }
     }
 

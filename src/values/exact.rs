@@ -23,11 +23,13 @@ pub use super::operation::Operation;
 pub use fraction::{Fraction, Fractions3};
 
 mod fraction;
+mod operands;
 use super::value::Value;
 use crate::check::ty::Kind;
 use crate::sym::Mat;
 use crate::sym::coef::{Coef, Rat};
 use crate::sym::expr::{Expr, Var};
+pub use operands::{Operand, Operands, deref};
 
 /// What is known of a numeric value's exact form.
 #[derive(Clone, Default)]
@@ -147,58 +149,6 @@ pub struct Pending {
     pub run: fn(&Operation, &[&Value], &Kind) -> Option<Mat>,
 }
 
-/// The operands of a [`Pending`] recipe: the two operands of an operator
-/// moved in as the evaluator held them (boxed: no copy), or copies.
-pub enum Operands {
-    Pair(Box<Value>, Box<Value>),
-    Copied(Box<[Value]>),
-}
-
-impl Operands {
-    /// Copies of the operands `args`.
-    pub fn of<V: std::borrow::Borrow<Value>>(args: &[V]) -> Operands {
-        Operands::Copied(args.iter().map(|v| v.borrow().clone()).collect())
-    }
-    /// The longest chain of waiting recipes under the operands, and about
-    /// the bytes they hold beyond the recipe's node, as the memory budget
-    /// counts them ([`Exact::weight`]): each operand's value, and the
-    /// recipe under it when no one else holds it (one that a binding or
-    /// another item also holds is counted there, once). One pass.
-    #[inline]
-    fn under(&self) -> (u32, u32) {
-        const VALUE: u32 = std::mem::size_of::<Value>() as u32;
-        let one = |v: &Value| match v {
-            Value::Num {
-                exact: Exact::Later(l),
-                ..
-            } => {
-                let own = if Rc::strong_count(l) == 1 { l.bytes } else { 0 };
-                // (a form found missing keeps its recipe, [`Exact::with_recipe`]:
-                // it still counts, so that kept recipes stay as short as
-                // waiting ones; a form known counts 0)
-                let depth = match l.form.get() {
-                    Some(Some(_)) => 0,
-                    _ => l.depth,
-                };
-                (depth, VALUE.saturating_add(own))
-            }
-            _ => (0, VALUE),
-        };
-        let both = |(d, b): (u32, u32), (e, c): (u32, u32)| (d.max(e), b.saturating_add(c));
-        match self {
-            Operands::Pair(a, b) => both(one(a), one(b)),
-            Operands::Copied(vs) => vs.iter().map(one).fold((0, 0), both),
-        }
-    }
-    /// The operands in order.
-    pub fn refs(&self) -> Vec<&Value> {
-        match self {
-            Operands::Pair(a, b) => vec![a, b],
-            Operands::Copied(vs) => vs.iter().collect(),
-        }
-    }
-}
-
 impl Exact {
     /// A form known now (a formula whose entries are all exact numbers).
     pub fn known(m: Mat) -> Exact {
@@ -220,7 +170,7 @@ impl Exact {
         let (under, bytes) = p.args.under();
         let depth = 1 + under;
         if depth > MAX_PENDING_DEPTH {
-            let form = (p.run)(&p.op, &p.args.refs(), &p.kind).filter(is_exact);
+            let form = (p.run)(&p.op, &deref(&p.args.refs()), &p.kind).filter(is_exact);
             return match form {
                 Some(m) => Exact::known(m),
                 None => Exact::Float,
@@ -318,7 +268,8 @@ impl Exact {
                     stacker::maybe_grow(64 * 1024, 1024 * 1024, || {
                         let m = match l.make.take()? {
                             Make::Op(p) => {
-                                let m = (p.run)(&p.op, &p.args.refs(), &p.kind).filter(is_exact);
+                                let m = (p.run)(&p.op, &deref(&p.args.refs()), &p.kind)
+                                    .filter(is_exact);
                                 // (no exact form: the recipe is kept, for
                                 // `==` to bound the value, `decide::certify`)
                                 if m.is_none() {

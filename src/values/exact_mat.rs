@@ -23,6 +23,7 @@ use crate::lie::{Vec3, so3::HalfTurn};
 use crate::sym::Mat;
 use crate::sym::coef::{Coef, Rat};
 use crate::sym::expr::Expr;
+use crate::values::exact::deref;
 
 /// The exact form of a numeric value that may have one (None at once for
 /// a float: nothing is computed).
@@ -266,10 +267,11 @@ pub fn entry_forms(v: &Value) -> Option<Vec<Option<Expr>>> {
     }
     exact
         .with_recipe(|p| {
-            let entries = p.args.refs().iter().all(|a| a.as_scalar().is_some());
+            let entries = deref(&p.args.refs())
+                .iter()
+                .all(|a| a.as_scalar().is_some());
             (entries && matches!(p.op, Operation::Vector | Operation::Block(_))).then(|| {
-                p.args
-                    .refs()
+                deref(&p.args.refs())
                     .into_iter()
                     .map(|a| form(a).and_then(|f| f.data.into_iter().next()))
                     .collect()

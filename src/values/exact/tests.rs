@@ -184,3 +184,35 @@ fn an_exact_form_and_a_node_keep_their_sizes() {
     assert_eq!(std::mem::size_of::<Exact>(), 16);
     assert_eq!(std::mem::size_of::<Later>(), 112);
 }
+
+/// A lone number as typed or a fraction held inline is kept in the
+/// recipe's node (no box of a value): it weighs the node alone, and is
+/// read back as the value it was, kind, float and exact form.
+#[test]
+fn a_lone_fraction_is_kept_in_the_node() {
+    let third = Fraction::of(&Rat::new(1, 3).expect("1/3")).expect("inline");
+    for exact in [Exact::Ratio(third), Exact::Typed] {
+        let v = Value::Num {
+            kind: Kind::Scalar,
+            m: Num::Scalar(1.0 / 3.0),
+            exact: exact.clone(),
+        };
+        let args = Operands::of(&[v.clone()]);
+        assert!(matches!(args, Operands::Scalar(..)));
+        let back = args.refs();
+        let [b] = back.as_slice() else {
+            panic!("one operand")
+        };
+        assert_eq!(&**b, &v);
+        assert_eq!(
+            format!("{:?}", b.exact_form()),
+            format!("{:?}", v.exact_form())
+        );
+        assert_eq!(Operands::owned(vec![v]).under(), (0, 0));
+    }
+    // (a float, or more than one operand: copies)
+    assert!(matches!(
+        Operands::of(&[Value::scalar(0.5)]),
+        Operands::Copied(_)
+    ));
+}
