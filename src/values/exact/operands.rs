@@ -10,7 +10,7 @@ use crate::check::ty::Kind;
 use crate::values::num::Num;
 use crate::values::value::Value;
 
-/// The operands of a [`Pending`] recipe: the two operands of an operator
+/// The operands of a [`super::Pending`] recipe: the two operands of an operator
 /// moved in as the evaluator held them (boxed: no copy), copies, or a
 /// lone number held in the node.
 pub enum Operands {
