@@ -197,7 +197,7 @@ fn a_lone_fraction_is_kept_in_the_node() {
             m: Num::Scalar(1.0 / 3.0),
             exact: exact.clone(),
         };
-        let args = Operands::of(&[v.clone()]);
+        let args = Operands::of(std::slice::from_ref(&v));
         assert!(matches!(args, Operands::Scalar(..)));
         let back = args.refs();
         let [b] = back.as_slice() else {
