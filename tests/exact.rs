@@ -348,3 +348,26 @@ fn approx_over_symbols_holds_at_every_number() {
     );
     assert_eq!(last("given b : scalar\nb ≈ 1.000000002*b"), false);
 }
+
+/// `abs` of an exact number is exact: `abs(-7/3) == 7/3` said "cannot
+/// decide … the two sides agree to 153 digits" (|x| was taken as its
+/// float), as did `abs(-sqrt(2)) == sqrt(2)` and `abs(-pi/3) == pi/3`.
+/// The sign is found by exact bounds, so a number just off another
+/// (`pi - 3.14159`) gets the right side, and a float stays a float.
+#[test]
+fn the_absolute_value_of_an_exact_number_is_exact() {
+    for (src, want) in [
+        ("abs(-7/3) == 7/3", true),
+        ("k = 7; abs(-k/3) == 7/3", true),
+        ("abs(-sqrt(2)) == sqrt(2)", true),
+        ("abs(-pi/3) == pi/3", true),
+        ("abs(3.14159 - pi) == pi - 3.14159", true),
+        ("abs(sqrt(2) - 1.5) == 1.5 - sqrt(2)", true),
+        ("abs(0.1 - 0.3) == 0.2", true),
+        ("abs(-7/3) == 2.3333333333333335", false),
+        ("abs(-7/3) == -7/3", false),
+    ] {
+        assert_eq!(last(src), serde_json::Value::Bool(want), "{src}");
+    }
+    assert!(close(number("abs(-7/3)"), 7.0 / 3.0));
+}
