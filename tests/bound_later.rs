@@ -124,6 +124,30 @@ fn destructured_parts_are_replayed() {
     );
 }
 
+/// A tuple that holds one part of a builtin's tuple is not that tuple:
+/// `(TransToRp(T)[1], -1)` printed (R, p) once `a` had its number, the -1
+/// lost (found by the differential sweep, session 32).
+#[test]
+fn a_tuple_holding_one_part_of_a_call_keeps_its_other_items() {
+    agree(
+        "given a\nX = (TransToRp(Trans((a, 1, 2)))[1], -1)\na = 0.5\nX",
+        "a = 0.5\nX = (TransToRp(Trans((a, 1, 2)))[1], -1)\nX",
+    );
+    agree(
+        "given a\nX = (TransToRp(Trans((a, 1, 2)))[1], 7, 8)\na = 0.5\nX",
+        "a = 0.5\nX = (TransToRp(Trans((a, 1, 2)))[1], 7, 8)\nX",
+    );
+    agree(
+        "given a\nP = TransToRp(RpToTrans(Rotz(a), (a, 1, 2)))\nZ = (P[1], 5)\na = 0.5\nZ",
+        "a = 0.5\nP = TransToRp(RpToTrans(Rotz(a), (a, 1, 2)))\nZ = (P[1], 5)\nZ",
+    );
+    // the parts in their places are still the call's value
+    agree(
+        "given a\nP = TransToRp(RpToTrans(Rotz(a), (a, 1, 2)))\nZ = (P[1], P[2])\na = 0.5\nZ",
+        "a = 0.5\nP = TransToRp(RpToTrans(Rotz(a), (a, 1, 2)))\nZ = (P[1], P[2])\nZ",
+    );
+}
+
 #[test]
 fn lists_and_comprehensions_are_replayed() {
     agree(

@@ -67,6 +67,7 @@ pub fn now(
             let whole = parts_of_one(vs);
             if let Some(whole) = &whole
                 && let Some(x) = numbers(whole, env, warnings)?
+                && is_made_of(&x, vs)
             {
                 return Ok(x);
             }
@@ -129,6 +130,32 @@ fn parts_of_one(vs: &[Value]) -> Option<Rc<recipe::Recipe>> {
         }
     }
     whole
+}
+
+/// True when `whole`, the value of the one operation a tuple's items are
+/// parts of ([`parts_of_one`]), is that tuple: as many parts, and the items
+/// that are numbers equal to its parts there. `(TransToRp(T)[1], -1)` is
+/// not `TransToRp(T)`, though its one formula is a part of it.
+fn is_made_of(whole: &Value, vs: &[Value]) -> bool {
+    let part = |i: usize| -> Option<Value> {
+        match whole {
+            Value::Tuple(ws) => ws.get(i).cloned(),
+            Value::Num { m, .. } if m.ncols() == 1 => (i < m.nrows()).then(|| Value::scalar(m[i])),
+            _ => None,
+        }
+    };
+    let len = match whole {
+        Value::Tuple(ws) => ws.len(),
+        Value::Num { m, .. } if m.ncols() == 1 => m.nrows(),
+        _ => return false,
+    };
+    len == vs.len()
+        && vs.iter().enumerate().all(|(i, v)| match v {
+            Value::Num { m, .. } => {
+                matches!(part(i), Some(Value::Num { m: w, .. }) if w == *m)
+            }
+            _ => true,
+        })
 }
 
 /// The value of recipe `r` once every symbol it reads has a number
