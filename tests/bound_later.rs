@@ -244,6 +244,47 @@ fn close(x: f64, y: f64) {
     assert!((x - y).abs() <= 8.0 * f64::EPSILON * y.abs(), "{x} ≠ {y}");
 }
 
+/// The rate of a point moved by a transform, d(T p) = Ṫ p + R ṗ (§3.3.1),
+/// replayed with its numbers: the point's rate is a free vector, not moved
+/// by T's translation. `diff(RpToTrans(eye(3), (0, 2 a, 0)) * (0, 0, a), a)`
+/// printed (0, 2 + 2a, 1) once a had its number, though it prints (0, 2, 1)
+/// over symbols (found by the differential sweep, session 32).
+#[test]
+fn the_rate_of_a_moved_point_is_not_moved_by_the_translation() {
+    let a = 0.37f64;
+    let vec = |src: &str| -> Vec<f64> {
+        let Value::Num { m, .. } = ans(src) else {
+            panic!("not numbers: {src}")
+        };
+        (0..m.nrows()).map(|i| m[i]).collect()
+    };
+    let cases: [(&str, [f64; 3]); 3] = [
+        (
+            "RpToTrans(eye(3), (0, 2*a, 0)) * (0, 0, a)",
+            [0.0, 2.0, 1.0],
+        ),
+        (
+            "RpToTrans(Rotz(a), (pi/4, 2*a, -1)) * (0.3, 2, a)",
+            [
+                -2.0 * a.cos() - 0.3 * a.sin(),
+                2.0 + 0.3 * a.cos() - 2.0 * a.sin(),
+                1.0,
+            ],
+        ),
+        // a matrix literal over symbols (no kind to tell it is a transform)
+        (
+            "[1, 0, 0, 2*a; 0, 1, 0, 0; 0, 0, 1, 0; 0, 0, 0, 1] * (a, 1, 1)",
+            [3.0, 0.0, 0.0],
+        ),
+    ];
+    for (x, want) in cases {
+        let got = vec(&format!("given a\nD = diff({x}, a)\na = 0.37\nD"));
+        for (g, w) in got.iter().zip(want) {
+            assert!((g - w).abs() <= 1e-12, "{x}: {got:?} ≠ {want:?}");
+        }
+    }
+}
+
 /// A derivative of a scalar replays the chain rule over how the scalar
 /// was made (d u^n = n u^(n−1) du, d sin u = cos u du, …), not its
 /// expanded form: `diff((sin a + cos b)^30, a)` bound later printed

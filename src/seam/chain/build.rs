@@ -145,6 +145,27 @@ pub(super) fn times(f: Option<Rc<Recipe>>, du: D) -> Option<D> {
     }
 }
 
+/// `u dv`, the second term of d(u v): where `u` is a homogeneous
+/// transform acting on a point `v` (one row fewer, `T p` of §3.3.1), the
+/// point's rate is a free vector, turned by u's rotation and not moved
+/// by its translation: d(T p) = Ṫ p + R ṗ, written u dv − u 0.
+pub(super) fn times_point(u: Rc<Recipe>, v: &Rc<Recipe>, dv: D) -> Option<D> {
+    // (a matrix literal over symbols has no kind to tell: u dv − u 0 is
+    // u dv for a linear u too)
+    let homogeneous = match (u.kind.shape(), v.kind.shape()) {
+        (Some((Some(r), Some(c))), Some((Some(n), Some(1)))) => r == c && n + 1 == r,
+        (None | Some((None, _) | (_, None)), Some((_, Some(1)))) => v.kind.is_vector(),
+        _ => false,
+    };
+    let Some(dv) = dv else { return Some(None) };
+    let moved = arith(BinOp::Mul, u.clone(), dv)?;
+    if !homogeneous {
+        return Some(Some(moved));
+    }
+    let origin = arith(BinOp::Mul, u, zero(&v.kind))?;
+    Some(Some(arith(BinOp::Sub, moved, origin)?))
+}
+
 /// `du f` (0 when du is): the order of a matrix product kept.
 pub(super) fn times_after(du: D, f: Rc<Recipe>) -> Option<D> {
     match du {

@@ -194,7 +194,7 @@ impl Chain<'_> {
                 match op {
                     BinOp::Add => plus(du, dv),
                     BinOp::Sub => plus(du, neg(dv)?),
-                    BinOp::Mul => plus(times_after(du, v)?, times(Some(u), dv)?),
+                    BinOp::Mul => plus(times_after(du, v.clone())?, times_point(u, &v, dv)?),
                     // M / s = M (1/s)
                     BinOp::Div if v.kind == Kind::Scalar => quotient(u, &v, du, dv),
                     // d(M^n) = Σ M^j dM M^(n−1−j), for a whole n ≥ 1
