@@ -141,6 +141,11 @@ fn a_tuple_holding_one_part_of_a_call_keeps_its_other_items() {
         "given a\nP = TransToRp(RpToTrans(Rotz(a), (a, 1, 2)))\nZ = (P[1], 5)\na = 0.5\nZ",
         "a = 0.5\nP = TransToRp(RpToTrans(Rotz(a), (a, 1, 2)))\nZ = (P[1], 5)\nZ",
     );
+    // a symbol beside it, though a is p's second entry
+    agree(
+        "given a, b\nX = (TransToRp(RpToTrans(Roty(a + b), (0.3, a, b)))[1], a)\na = 1e-9\nb = 0.37\nX",
+        "a = 1e-9\nb = 0.37\nX = (TransToRp(RpToTrans(Roty(a + b), (0.3, a, b)))[1], a)\nX",
+    );
     // the parts in their places are still the call's value
     agree(
         "given a\nP = TransToRp(RpToTrans(Rotz(a), (a, 1, 2)))\nZ = (P[1], P[2])\na = 0.5\nZ",

@@ -67,7 +67,7 @@ pub fn now(
             let whole = parts_of_one(vs);
             if let Some(whole) = &whole
                 && let Some(x) = numbers(whole, env, warnings)?
-                && is_made_of(&x, vs)
+                && is_made_of(&x, vs, env)
             {
                 return Ok(x);
             }
@@ -134,9 +134,10 @@ fn parts_of_one(vs: &[Value]) -> Option<Rc<recipe::Recipe>> {
 
 /// True when `whole`, the value of the one operation a tuple's items are
 /// parts of ([`parts_of_one`]), is that tuple: as many parts, and the items
-/// that are numbers equal to its parts there. `(TransToRp(T)[1], -1)` is
-/// not `TransToRp(T)`, though its one formula is a part of it.
-fn is_made_of(whole: &Value, vs: &[Value]) -> bool {
+/// that are not its parts (numbers, symbols) equal to its parts there as of
+/// now. `(TransToRp(T)[1], -1)` and `(TransToRp(T)[1], a)` are not
+/// `TransToRp(T)`, though their one formula is a part of it.
+fn is_made_of(whole: &Value, vs: &[Value], env: &dyn Bindings) -> bool {
     let part = |i: usize| -> Option<Value> {
         match whole {
             Value::Tuple(ws) => ws.get(i).cloned(),
@@ -151,10 +152,12 @@ fn is_made_of(whole: &Value, vs: &[Value]) -> bool {
     };
     len == vs.len()
         && vs.iter().enumerate().all(|(i, v)| match v {
-            Value::Num { m, .. } => {
-                matches!(part(i), Some(Value::Num { m: w, .. }) if w == *m)
-            }
-            _ => true,
+            // (a formula made as a part is part i of `whole`: parts_of_one)
+            Value::Formula { how: Some(r), .. } if matches!(r.step, recipe::Step::Part(_)) => true,
+            v => match (now(v, env, &mut Vec::new()), part(i)) {
+                (Ok(Value::Num { m, .. }), Some(Value::Num { m: w, .. })) => m == w,
+                _ => false,
+            },
         })
 }
 
