@@ -210,3 +210,36 @@ fn a_divisor_made_in_thousands_of_steps_is_made_again_whole() {
     );
     assert_eq!(last(&chain("1")), "1/3000 + c");
 }
+
+/// `subs` of a call kept over a given symbol, with the other numbers typed
+/// first, is the call at the number put in: `b = 0.2; subs(MatrixExp3((c,
+/// b, 2)), c, 0.5)` printed `subs(MatrixExp3((c, 0.2, 2)), c, 0.5)` (the
+/// same with b given and bound after is the rotation). Found by the
+/// differential sweep, session 32.
+#[test]
+fn subs_of_a_kept_call_with_a_number_is_the_call_at_that_number() {
+    let cases = [
+        (
+            "subs(MatrixExp3((c, b, 2)), c, 0.5)",
+            "MatrixExp3((0.5, 0.2, 2))",
+        ),
+        ("subs(Rot((c, 1, 2), c), c, 0)", "Rot((0, 1, 2), 0)"),
+        (
+            "subs(trace(Ad(exp(VecTose3((-1, 2, c, b, 0.25, 1))))), c, -1)",
+            "trace(Ad(exp(VecTose3((-1, 2, -1, b, 0.25, 1)))))",
+        ),
+    ];
+    for (x, typed) in cases {
+        let got = last(&format!("given c\nb = 0.2\n{x}"));
+        assert!(!got.contains("subs") && !got.contains('c'), "{x}: {got}");
+        let (now, first) = (
+            run(&format!("given c\nb = 0.2\n{x}")).0,
+            run(&format!("b = 0.2\n{typed}")).0,
+        );
+        assert_eq!(
+            now.lines().skip(1).collect::<Vec<_>>(),
+            first.lines().skip(1).collect::<Vec<_>>(),
+            "{x}"
+        );
+    }
+}

@@ -52,6 +52,39 @@ pub fn resolve(s: &Sym, env: &dyn Bindings, warnings: &mut Vec<Diagnostic>) -> R
     }
 }
 
+/// `subs(x, name, by)` of a tree `x` over `given` names (a call kept as
+/// such, `MatrixExp3((c, 1, 2))` with c given) and a number `by`: `by` put
+/// for the symbol in each formula of x, then x read as the numbers typed
+/// first give it ([`Resolving::substituted`]). The value when that leaves
+/// numbers; None when it does not or cannot be read so (the call is kept,
+/// to be read when the numbers are bound).
+pub fn subs_tree(
+    x: &Sym,
+    name: &Value,
+    by: &Value,
+    env: &dyn Bindings,
+    warnings: &mut Vec<Diagnostic>,
+) -> Option<Value> {
+    if !matches!(by, Value::Num { .. }) || !plain_symbol(&to_sym(name)) {
+        return None;
+    }
+    let mut own = Vec::new();
+    let mut r = Resolving {
+        env,
+        warnings: &mut own,
+        failed: None,
+        put: Some([name.clone(), by.clone()]),
+    };
+    let out = r.go(x);
+    match (r.failed, out) {
+        (None, Sym::Const(v, _)) if matches!(*v, Value::Num { .. }) => {
+            warnings.extend(own);
+            Some(*v)
+        }
+        _ => None,
+    }
+}
+
 impl Resolving<'_, '_> {
     /// `op` on numbers, as typed first; None (and the failure kept) when
     /// it fails with them.

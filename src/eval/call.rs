@@ -208,6 +208,20 @@ impl Interp<'_> {
             let subs = (b.name == "subs")
                 .then(|| crate::decide::replay::subs_numbers(&refs, &mut self.warnings))
                 .flatten()
+                // (of a call kept over given names: its formulas substituted)
+                .or_else(|| match refs.as_slice() {
+                    [Value::Sym(x), name, by] if b.name == "subs" => {
+                        crate::calculus::resolve::subs_tree(
+                            x,
+                            name,
+                            by,
+                            self.env,
+                            &mut self.warnings,
+                        )
+                        .map(Ok)
+                    }
+                    _ => None,
+                })
                 .map(|v| {
                     v.map(|v| super::substitute::retag(v, &ty.kind))
                         .map_err(crate::values::error::OpError::Message)
