@@ -153,6 +153,24 @@ fn a_tuple_holding_one_part_of_a_call_keeps_its_other_items() {
     );
 }
 
+/// A column of a rotation kept as a call is a 3-vector: `Trans(MatrixExp3((a,
+/// 1, 2))[:, 2])` was refused ("Trans takes a 3-vector p": the column was
+/// an n-vector), though with a typed first it is a transform (found by the
+/// differential sweep, session 32).
+#[test]
+fn a_column_of_a_kept_rotation_is_a_three_vector() {
+    for x in [
+        "Trans(MatrixExp3((a, 1, 2))[:, 2])",
+        "Trans(Rot((a, 1, 2), 1)[:, 1])",
+        "MatrixExp3((a, 1, 2))[2, :] * (1, 2, 3)",
+    ] {
+        agree(
+            &format!("given a\nX = {x}\na = 0.3\nX"),
+            &format!("a = 0.3\nX = {x}\nX"),
+        );
+    }
+}
+
 #[test]
 fn lists_and_comprehensions_are_replayed() {
     agree(

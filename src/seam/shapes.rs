@@ -36,8 +36,12 @@ pub(crate) fn index_type(t: &Ty, sels: &[Sel]) -> Result<Ty, RuleError> {
                 ..Default::default()
             }));
         }
-        (_, [Sel::All, Sel::At(_)]) => Ty::new(Kind::Vector(None), outer),
-        (_, [Sel::At(_), Sel::All]) => Ty::plain(Kind::Matrix(Some(1), None)),
+        // (as long as the kind's columns and rows are: R[:, 2] of a
+        // rotation is a 3-vector, with symbols too)
+        (k, [Sel::All, Sel::At(_)]) => Ty::new(Kind::Vector(k.shape().and_then(|s| s.0)), outer),
+        (k, [Sel::At(_), Sel::All]) => {
+            Ty::plain(Kind::Matrix(Some(1), k.shape().and_then(|s| s.1)))
+        }
         _ => Ty::scalar(),
     })
 }
