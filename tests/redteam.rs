@@ -539,6 +539,23 @@ fn subs_of_a_tuple_acts_on_each_part() {
     }
 }
 
+/// `subs` of a tuple of numbers only, with the symbol given, is the tuple:
+/// `given c; subs((1, [1, 2; 3, 4]), c, 1)` printed `subs((1, [1, 2; 3,
+/// 4]), c, 1)` (a tuple of numbers made from symbols bound first, in the
+/// differential sweep of session 32).
+#[test]
+fn subs_of_a_tuple_of_numbers_is_the_tuple() {
+    for x in [
+        "(1, [1, 2; 3, 4])",
+        "(1, [1, 2; 3, 4], 0)",
+        "(1/2, Rotz(pi/2))",
+    ] {
+        let out = common::printed(&format!("given c\nsubs({x}, c, 1)"));
+        assert!(!out.contains("subs"), "{x}: {out}");
+        assert_eq!(out, common::printed(x), "{x}");
+    }
+}
+
 /// `subs` of a comparison over symbols is the comparison of its sides
 /// with the value put in, decided as typed first: of a waiting bool it
 /// gave its two sides stacked (a 2-vector), of a decided one the number 1.

@@ -18,7 +18,7 @@ pub(super) fn takes_numbers(name: &str) -> bool {
     name == "simplify"
 }
 
-/// `name(x, rest…)` for a tuple `x` with a symbolic part, part by part;
+/// `name(x, rest…)` for a tuple `x`, part by part (numbers are themselves);
 /// `simplify` of a number ([`takes_numbers`]); None for any other call.
 pub(super) fn each_part(
     op: Op,
@@ -67,11 +67,9 @@ pub(super) fn each_part(
     let [Value::Tuple(parts), rest @ ..] = vals else {
         return None;
     };
-    if !matches!(name, "subs" | "simplify" | "expand")
-        || !parts
-            .iter()
-            .any(|p| matches!(p, Value::Sym(_) | Value::Formula { .. }))
-    {
+    // (a tuple of numbers only is itself, part by part: `subs((1, M), c,
+    // 1)` with c given is (1, M), not the call kept)
+    if !matches!(name, "subs" | "simplify" | "expand") {
         return None;
     }
     let mut out = Vec::with_capacity(parts.len());
