@@ -243,3 +243,39 @@ fn subs_of_a_kept_call_with_a_number_is_the_call_at_that_number() {
         );
     }
 }
+
+/// `subs` of a closed form at a number off its branch, while another
+/// symbol is free, is not the closed form there: `given a, c;
+/// subs(MatrixLog6(RpToTrans(Rotz(c), (a, 1, 2))), c, 0)` printed (0, 0, 0,
+/// 0, 0, 2) (its form for 1 − cos c > 0 at c = 0; the log of the pure
+/// translation is (0, 0, 0, a, 1, 2)); at c = 2π it said "division by
+/// zero". Both now say they cannot decide; with a typed first, or on the
+/// branch (c = 0.5, and c = π, one of the book's two logs), a value.
+/// Found by the differential sweep, session 32.
+#[test]
+fn subs_off_a_closed_forms_branch_with_symbols_free_cannot_decide() {
+    let log6 = "MatrixLog6(RpToTrans(Rotz(c), (a, 1, 2)))";
+    // (the branch's note goes with the errors)
+    let last = |src: &str| run(src).0.lines().last().unwrap_or_default().to_string();
+    for c in ["0", "2*pi"] {
+        let (out, err) = run(&format!("given a, c\nsubs({log6}, c, {c})"));
+        assert!(
+            err.contains("cannot decide") && err.contains("branch") && !out.contains('('),
+            "c = {c}: {out}\n{err}"
+        );
+    }
+    assert_eq!(
+        last(&format!("given c\na = 0.5\nsubs({log6}, c, 0)")),
+        "(0, 0, 0, 0.5, 1, 2)  : 6-vector"
+    );
+    let both = |c: &str| {
+        (
+            last(&format!("given a, c\nX = subs({log6}, c, {c})\na = 0.5\nX")),
+            last(&format!("given c\na = 0.5\nsubs({log6}, c, {c})")),
+        )
+    };
+    for c in ["0.5", "pi"] {
+        let (later, first) = both(c);
+        assert_eq!(later, first, "c = {c}");
+    }
+}

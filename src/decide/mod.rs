@@ -21,6 +21,7 @@
 pub(crate) mod ball;
 pub(crate) mod balls;
 pub(crate) mod blocks;
+pub(crate) mod branch_at;
 pub(crate) mod certify;
 pub(crate) mod constant;
 pub(crate) mod cyclotomic;

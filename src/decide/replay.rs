@@ -517,6 +517,18 @@ pub(crate) fn subs_numbers(
     crate::values::recipe::symbols(r, &mut syms);
     let at = |s: &Symbol| (*s == sym).then(|| (*by).clone());
     if syms.iter().any(|s| *s != sym) {
+        // (a closed form's branch left at the number: its form there is
+        // not the call's, and the call waits for the other numbers)
+        if let Some(x) = by.as_scalar()
+            && let Some(branch) = super::branch_at::left_at(r, &sym, x)
+        {
+            return Some(Err(format!(
+                "cannot decide: {} = {} is not inside the branch of the closed form ({branch}), \
+                 where it is not the call's value; bind the other symbols first",
+                crate::sym::print::symbol(&sym, Default::default()),
+                crate::values::number::fmt_num(x, 4)
+            )));
+        }
         // (others stay symbols: refused only where a step of numbers is)
         return failure(r, &at).map(|Failed(msg)| Err(msg));
     }
