@@ -279,3 +279,25 @@ fn subs_off_a_closed_forms_branch_with_symbols_free_cannot_decide() {
         assert_eq!(later, first, "c = {c}");
     }
 }
+
+/// The same closed form read with c bound and a free: `c = 0` then `X`
+/// printed (0, 0, 0, 0, 0, 2); now it cannot decide until a has its number,
+/// and then it is the log of the pure translation, as typed first.
+#[test]
+fn a_closed_form_read_off_its_branch_with_symbols_free_cannot_decide() {
+    let src = "given a, c\nX = MatrixLog6(RpToTrans(Rotz(c), (a, 1, 2)))\nc = 0\nX";
+    let (out, err) = run(src);
+    assert!(
+        err.contains("cannot decide") && err.contains("branch"),
+        "{out}\n{err}"
+    );
+    let later = run(&format!("{src}\na = 0.5\nX")).0;
+    assert_eq!(
+        later.lines().last(),
+        Some("(0, 0, 0, 0.5, 1, 2)  : 6-vector"),
+        "{later}"
+    );
+    // on the branch, the form with a free, as before
+    let on = run("given a, c\nX = MatrixLog6(RpToTrans(Rotz(c), (a, 1, 2)))\nc = 0.5\nX").0;
+    assert!(on.lines().last().is_some_and(|l| l.contains('a')), "{on}");
+}

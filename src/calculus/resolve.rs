@@ -24,13 +24,13 @@ use std::rc::Rc;
 
 /// Where a tree is resolved: the session's bindings, the warnings of the
 /// operations computed, and the first that failed with its numbers.
-struct Resolving<'a, 'w> {
-    env: &'a dyn Bindings,
-    warnings: &'w mut Vec<Diagnostic>,
-    failed: Option<String>,
+pub(super) struct Resolving<'a, 'w> {
+    pub(super) env: &'a dyn Bindings,
+    pub(super) warnings: &'w mut Vec<Diagnostic>,
+    pub(super) failed: Option<String>,
     /// The symbol and what is put for it in every formula read (the
     /// operand of a `subs` kept as a call: [`Resolving::substituted`]).
-    put: Option<[Value; 2]>,
+    pub(super) put: Option<[Value; 2]>,
 }
 
 /// `s` with every `given` name that is now bound to numbers replaced by
@@ -52,39 +52,6 @@ pub fn resolve(s: &Sym, env: &dyn Bindings, warnings: &mut Vec<Diagnostic>) -> R
     }
 }
 
-/// `subs(x, name, by)` of a tree `x` over `given` names (a call kept as
-/// such, `MatrixExp3((c, 1, 2))` with c given) and a number `by`: `by` put
-/// for the symbol in each formula of x, then x read as the numbers typed
-/// first give it ([`Resolving::substituted`]). The value when that leaves
-/// numbers; None when it does not or cannot be read so (the call is kept,
-/// to be read when the numbers are bound).
-pub fn subs_tree(
-    x: &Sym,
-    name: &Value,
-    by: &Value,
-    env: &dyn Bindings,
-    warnings: &mut Vec<Diagnostic>,
-) -> Option<Value> {
-    if !matches!(by, Value::Num { .. }) || !plain_symbol(&to_sym(name)) {
-        return None;
-    }
-    let mut own = Vec::new();
-    let mut r = Resolving {
-        env,
-        warnings: &mut own,
-        failed: None,
-        put: Some([name.clone(), by.clone()]),
-    };
-    let out = r.go(x);
-    match (r.failed, out) {
-        (None, Sym::Const(v, _)) if matches!(*v, Value::Num { .. }) => {
-            warnings.extend(own);
-            Some(*v)
-        }
-        _ => None,
-    }
-}
-
 impl Resolving<'_, '_> {
     /// `op` on numbers, as typed first; None (and the failure kept) when
     /// it fails with them.
@@ -100,7 +67,7 @@ impl Resolving<'_, '_> {
         }
     }
 
-    fn go(&mut self, s: &Sym) -> Sym {
+    pub(super) fn go(&mut self, s: &Sym) -> Sym {
         match s {
             // (a name substituted stands in a formula, never as a tree's
             // leaf: refused rather than read with its own number)
@@ -546,6 +513,14 @@ pub fn formula_now(
     if let Some(failed) = how.as_ref().and_then(|r| replay::failure(r, &lookup)) {
         return Err(failed);
     }
+    // (numbers off a closed form's branch, other symbols free)
+    let at = |s: &Symbol| lookup(s).and_then(|v| v.as_scalar());
+    if let Some(why) = how
+        .as_ref()
+        .and_then(|r| crate::decide::branch_at::refusal(r, &at))
+    {
+        return Err(replay::Failed(why));
+    }
     // (a comparison is decided again over the symbols still free: `a*b == 0`
     // at b = 0 is true, as typed first, though false over free a and b)
     // (one that waits for its numbers, `values::waiting`, waits as before)
@@ -584,7 +559,7 @@ pub fn formula_now(
 /// symbol (not a component `w[3]` of a given vector, which stands in the
 /// tree as the vector's name, nor a rate or a function of time, whose
 /// numbers are bound under other names).
-fn plain_symbol(s: &Sym) -> bool {
+pub(super) fn plain_symbol(s: &Sym) -> bool {
     let Sym::Const(v, _) = s else {
         return false;
     };

@@ -520,7 +520,7 @@ pub(crate) fn subs_numbers(
         // (a closed form's branch left at the number: its form there is
         // not the call's, and the call waits for the other numbers)
         if let Some(x) = by.as_scalar()
-            && let Some(branch) = super::branch_at::left_at(r, &sym, x)
+            && let Some(branch) = super::branch_at::left_at(r, &|s| (*s == sym).then_some(x))
         {
             return Some(Err(format!(
                 "cannot decide: {} = {} is not inside the branch of the closed form ({branch}), \

@@ -211,14 +211,8 @@ impl Interp<'_> {
                 // (of a call kept over given names: its formulas substituted)
                 .or_else(|| match refs.as_slice() {
                     [Value::Sym(x), name, by] if b.name == "subs" => {
-                        crate::calculus::resolve::subs_tree(
-                            x,
-                            name,
-                            by,
-                            self.env,
-                            &mut self.warnings,
-                        )
-                        .map(Ok)
+                        crate::calculus::put::subs_tree(x, name, by, self.env, &mut self.warnings)
+                            .map(Ok)
                     }
                     _ => None,
                 })
