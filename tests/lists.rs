@@ -585,3 +585,24 @@ fn a_range_waiting_for_numbers_has_no_slices() {
         "{out}"
     );
 }
+
+/// `subs` of a list acts on each item, as of a tuple:
+/// `subs([cos(k*a + b) for k in 1:3], a, 0.37)` was kept as a call
+/// (`subs([cos(a + b), …], a, 0.37)`, never numbers, even once b had its
+/// number; found by the differential sweep, session 32).
+#[test]
+fn subs_of_a_list_acts_on_each_item() {
+    let run = |src: &str| {
+        let mut s = Session::new(Settings::default());
+        let (out, err, n) = s.run_to_strings("t", src, Mode::Run, false);
+        assert_eq!(n, 0, "{src}\n{err}");
+        out.lines().last().unwrap_or_default().to_string()
+    };
+    let later = run("given a, b\nX = subs([cos(k*a + b) for k in 1:3], a, 0.37)\nb = 1\nX");
+    let first = run("a = 0.37\nb = 1\n[cos(k*a + b) for k in 1:3]");
+    assert_eq!(later, first);
+    assert_eq!(
+        run("given a\nsubs([(2*a) * k for k in 1:3], a, 1)"),
+        "[2, 4, 6]  : list of 3 numbers"
+    );
+}

@@ -1,4 +1,4 @@
-//! `subs`, `simplify` and `expand` of a tuple over symbols
+//! `subs`, `simplify` and `expand` of a tuple (or a list) over symbols
 //! (`TransToRp(T)`'s R and p, `AxisAng3(v)`'s ω̂ and θ; LANGUAGE.md §7):
 //! each part as if it had been given alone, so that the tuple's parts are
 //! numbers once their symbols have them, as typed first. A part that is
@@ -64,8 +64,11 @@ pub(super) fn each_part(
             Err(m) => Err(OpError::Message(m)),
         });
     }
-    let [Value::Tuple(parts), rest @ ..] = vals else {
-        return None;
+    // (a list, `[f(k a) for k in 1:3]`, item by item alike)
+    let (parts, rest, list): (&[Value], _, _) = match vals {
+        [Value::Tuple(parts), rest @ ..] => (parts, rest, false),
+        [Value::List(parts), rest @ ..] => (parts, rest, true),
+        _ => return None,
     };
     // (a tuple of numbers only is itself, part by part: `subs((1, M), c,
     // 1)` with c given is (1, M), not the call kept)
@@ -92,7 +95,11 @@ pub(super) fn each_part(
             None => p.clone(),
         });
     }
-    Some(Ok(Value::Tuple(out)))
+    Some(Ok(if list {
+        Value::List(std::rc::Rc::new(out))
+    } else {
+        Value::Tuple(out)
+    }))
 }
 
 /// The comparison and the two sides of a waiting bool as values (each
