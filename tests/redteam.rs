@@ -556,6 +556,21 @@ fn subs_of_a_tuple_of_numbers_is_the_tuple() {
     }
 }
 
+/// `subs` of a tuple whose part is a call kept over a given symbol puts the
+/// number in that part too: `subs((exp(VecToso3((a, a, 0.3))), a), a,
+/// -1.2)` printed `(subs(exp([0, -0.3, a; …]), a, -1.2), -1.2)` (found by
+/// the differential sweep, session 32).
+#[test]
+fn subs_of_a_tuple_reaches_a_part_kept_as_a_call() {
+    let x = "(exp(VecToso3((a, a, 0.3))), a)";
+    let later = common::printed(&format!("given a\nsubs({x}, a, -1.2)"));
+    assert!(!later.contains("subs"), "{later}");
+    assert_eq!(
+        later,
+        common::printed(&format!("a = -1.2\n{x}")).replacen("a = -1.2\n", "", 1)
+    );
+}
+
 /// `subs` of a comparison over symbols is the comparison of its sides
 /// with the value put in, decided as typed first: of a waiting bool it
 /// gave its two sides stacked (a 2-vector), of a decided one the number 1.

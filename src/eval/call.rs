@@ -347,7 +347,7 @@ impl Interp<'_> {
         if let Some(v) = super::list::symbolic_len(b, &self.env.arg_tys[base..], vals) {
             return Ok(Some(v));
         }
-        match super::tuple_call::each_part(op, b.name, vals, &mut self.warnings) {
+        match super::tuple_call::each_part(op, b.name, vals, self.env, &mut self.warnings) {
             Some(v) => v.map(Some).map_err(|m| op.failure(m, span)),
             None => Ok(None),
         }

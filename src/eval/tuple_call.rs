@@ -24,6 +24,7 @@ pub(super) fn each_part(
     op: Op,
     name: &str,
     vals: &[Value],
+    env: &dyn crate::calculus::Bindings,
     warnings: &mut Vec<Diagnostic>,
 ) -> Option<Result<Value, OpError>> {
     // (a constant: the exact short number it is proven to be, §7; else
@@ -50,7 +51,7 @@ pub(super) fn each_part(
         let parts = vec![l, r];
         let mut args = vec![Value::Tuple(parts)];
         args.extend(rest.iter().cloned());
-        let Some(Ok(Value::Tuple(sides))) = each_part(op, name, &args, warnings) else {
+        let Some(Ok(Value::Tuple(sides))) = each_part(op, name, &args, env, warnings) else {
             return None;
         };
         let [a, b] = sides.as_slice() else {
@@ -83,6 +84,13 @@ pub(super) fn each_part(
         let subs = (name == "subs")
             .then(|| crate::decide::replay::subs_numbers(&refs, warnings))
             .flatten()
+            // (a part kept as a call over given names: its formulas)
+            .or_else(|| match refs.as_slice() {
+                [Value::Sym(x), n, by] if name == "subs" => {
+                    crate::calculus::put::subs_tree(x, n, by, env, warnings).map(Ok)
+                }
+                _ => None,
+            })
             .map(|v| {
                 v.map(|v| crate::calculus::substitute::retag(v, &kind))
                     .map_err(OpError::Message)
