@@ -588,6 +588,18 @@ fn subs_of_a_comparison_is_a_comparison() {
     assert_eq!(out.lines().last(), Some("true"), "{out}");
 }
 
+/// `subs` of a comparison decided false over its symbol (not an identity)
+/// with a number for it is decided again at that number: `subs(2*a == a^2,
+/// a, 0)` printed false; 0 == 0 is true (found by the differential sweep,
+/// session 32).
+#[test]
+fn subs_of_a_comparison_decided_over_its_symbol_is_decided_again() {
+    let out = common::printed("given a\nsubs(2*a == a^2, a, 0)");
+    assert_eq!(out.lines().last(), Some("true"), "{out}");
+    let out = common::printed("given a\nsubs(2*a == a^2, a, 1)");
+    assert_eq!(out.lines().last(), Some("false"), "{out}");
+}
+
 /// An index over symbols is refused, naming the symbol (it printed
 /// "index NaN is out of range"); bound first it picks the entry.
 #[test]
