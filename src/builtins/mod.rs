@@ -17,6 +17,7 @@ mod table_habits;
 mod table_list;
 mod table_math;
 mod table_repr;
+pub use table_repr::gimbal_reading;
 mod table_rotations;
 mod table_scalar;
 mod table_screw;

@@ -41,25 +41,40 @@ type Extract = (
 fn angles(a: &mut Args, (f, decided, pair): Extract) -> Result<Value, Diagnostic> {
     let r = a.so3(0)?;
     let m = r.matrix();
-    let [p, q] = pair;
-    let near = m[p].hypot(m[q]) < 1e-12;
-    let refined = near.then(|| a.entries(0)).flatten().and_then(|e| {
-        let x = Mat3::from_row_slice(&e.floats);
-        let at = |(i, j): (usize, usize)| e.zero[i * 3 + j];
-        // (the entries of the matrix as read, not of one projected)
-        let lock = match (at(p), at(q)) {
-            (Some(true), Some(true)) => true,
-            (Some(false), _) | (_, Some(false)) => false,
-            _ => return None,
-        };
-        ((x - m).amax() <= 1e-12).then(|| decided(&x, lock))
-    });
+    let refined = gimbal_reading(m, pair, || a.entries(0)).map(|(x, lock)| decided(&x, lock));
     let out = refined.unwrap_or_else(|| f(m));
     if let Some(note) = out.note {
         a.warnings
             .push(Diagnostic::warning(ErrorKind::Domain, a.call_span, note));
     }
     Ok(Value::num(v3(), &out.angles))
+}
+
+/// Gimbal lock of the Euler-type angles of `m` (App. B: cos b = 0 for ZYX
+/// and roll–pitch–yaw, sin b = 0 for ZXZ, the two entries `pair` both 0)
+/// as the builtins decide it: near the lock (the two entries below 1e-12
+/// in floats) by the rotation's `entries` (exact form or certified),
+/// giving the entries' floats and the decision; None where the floats
+/// decide (away from the lock, or the entries do not settle it). `explain`
+/// takes the same branch through this.
+pub fn gimbal_reading(
+    m: &Mat3,
+    [p, q]: [(usize, usize); 2],
+    entries: impl FnOnce() -> Option<crate::values::exact_mat::Entries>,
+) -> Option<(Mat3, bool)> {
+    if m[p].hypot(m[q]) >= 1e-12 {
+        return None;
+    }
+    let e = entries()?;
+    let x = Mat3::from_row_slice(&e.floats);
+    let at = |(i, j): (usize, usize)| e.zero[i * 3 + j];
+    // (the entries of the matrix as read, not of one projected)
+    let lock = match (at(p), at(q)) {
+        (Some(true), Some(true)) => true,
+        (Some(false), _) | (_, Some(false)) => false,
+        _ => return None,
+    };
+    ((x - m).amax() <= 1e-12).then_some((x, lock))
 }
 
 fn se2_rule(args: &[Ty]) -> Result<Ty, ArgError> {

@@ -454,12 +454,29 @@ fn call_steps(name: &str, args: &[Value]) -> Option<Vec<Step>> {
             steps::motion::screw_axis(&q, &(s / n), h)
         }
         "screw_params" => steps::motion::screw_params(&mat::<6, 1>(a0)?),
-        "euler_zyx" => steps::orient::euler(&rotation(a0)?, Euler::Zyx, None),
-        "euler_zxz" => steps::orient::euler(&rotation(a0)?, Euler::Zxz, None),
-        "rpy" => steps::orient::euler(&rotation(a0)?, Euler::Rpy, None),
+        "euler_zyx" => euler(a0, Euler::Zyx)?,
+        "euler_zxz" => euler(a0, Euler::Zxz)?,
+        "rpy" => euler(a0, Euler::Rpy)?,
         "quat" => steps::orient::quat(&rotation(a0)?),
         "cayley" => steps::orient::cayley(&rotation(a0)?),
         _ => return None,
+    })
+}
+
+/// The steps of an Euler-type extraction (App. B) with gimbal lock decided
+/// as the builtin decides it (by the rotation's exact form or certified
+/// entries near the lock), so the steps end at the builtin's angles.
+fn euler(a0: &Value, which: Euler) -> Option<Vec<Step>> {
+    let r = rotation(a0)?;
+    let pair = match which {
+        Euler::Zxz => [(0, 2), (1, 2)],
+        Euler::Zyx | Euler::Rpy => [(0, 0), (1, 0)],
+    };
+    let entries =
+        || crate::values::exact_mat::exact_entries(a0).or_else(|| crate::decide::turn::entries(a0));
+    Some(match crate::builtins::gimbal_reading(&r, pair, entries) {
+        Some((x, lock)) => steps::orient::euler(&x, which, Some(lock)),
+        None => steps::orient::euler(&r, which, None),
     })
 }
 
