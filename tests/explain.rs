@@ -473,3 +473,37 @@ fn euler_steps_take_the_gimbal_branch_of_the_value() {
         assert_eq!(shown, value, "{f}");
     }
 }
+
+/// At small θ the shown G(θ) (3.88) and (1 − cos θ)[ω̂]² (3.51) keep
+/// their (1 − cos θ) = 2 sin²(θ/2) and θ − sin θ terms: p = G(θ)v (3.89)
+/// holds with the shown G and v (v = vθ/θ is large, so a G that lost
+/// (1 − cos θ) = 3e-19 to cancellation was off by 1e-8 in G(θ)v).
+#[test]
+fn small_angle_g_and_rodrigues_terms_keep_their_digits() {
+    let s = Vec6::new(
+        3.690818798153363e-10,
+        6.804176418606463e-10,
+        -5.7700577213906866e-11,
+        -26.725970898898634,
+        17.31817383181878,
+        28.894629513963952,
+    );
+    let steps = steps::exp::exp6(&s);
+    let (g, v, p) = (
+        matrix(step(&steps, "G")),
+        vector(step(&steps, "v")),
+        vector(step(&steps, "p")),
+    );
+    assert!((g * v - p).amax() < 1e-13 * p.amax(), "{} vs {p}", g * v);
+    for theta in [1e-9, 1e-6, 1e-3] {
+        let w = Vec3::new(0.0, 0.6, 0.8);
+        let steps = steps::exp::exp3(&(w * theta));
+        let got = matrix(step(&steps, "cos_term"));
+        let half = (theta / 2.0).sin();
+        let want = 2.0 * half * half * so3::hat(&w) * so3::hat(&w);
+        assert!(
+            (got - want).amax() <= 1e-15 * want.amax(),
+            "θ {theta}: {got} vs {want}"
+        );
+    }
+}

@@ -44,8 +44,23 @@ fn rodrigues_terms(w: &Vec3, theta: f64, out: &mut Vec<Step>) {
         "cos_term",
         "(1 − cos θ)[ω̂]²",
         r"(1 - \cos\theta)[\hat\omega]^2",
-        Q::Matrix3((1.0 - theta.cos()) * wm * wm),
+        Q::Matrix3(one_minus_cos(theta) * wm * wm),
     ));
+}
+
+/// 1 − cos θ as 2 sin²(θ/2) (series below 1e-4, [`so3::rodrigues_coeffs`]):
+/// 1.0 - theta.cos() keeps no digit below θ ≈ 1e-8 (it is 0 at θ = 1e-9,
+/// not 5e-19), and the (1 − cos θ) terms of (3.51) and (3.88) are shown
+/// to full relative accuracy.
+fn one_minus_cos(theta: f64) -> f64 {
+    so3::rodrigues_coeffs(theta).1 * theta * theta
+}
+
+/// θ − sin θ without cancellation (its series below θ = 1e-2, as
+/// `se3::exp` computes it): θ − theta.sin() is 0 at θ = 1e-9, not 1.7e-28.
+fn theta_minus_sin(theta: f64) -> f64 {
+    let a = so3::rodrigues_coeffs(theta).0;
+    se3::g_coeff(theta, a) * theta * theta * theta
 }
 
 const RODRIGUES_NOTE: &str = "chasles sums the three terms entry by entry as (3.52) with \
@@ -158,7 +173,7 @@ pub fn exp6(sv: &Vec6) -> Vec<Step> {
         .note(RODRIGUES_NOTE),
     );
     let wm = so3::hat(&w);
-    let g = Mat3::identity() * theta + (1.0 - theta.cos()) * wm + (theta - theta.sin()) * wm * wm;
+    let g = Mat3::identity() * theta + one_minus_cos(theta) * wm + theta_minus_sin(theta) * wm * wm;
     let mut step = Step::new(
         "3.88",
         "G",
