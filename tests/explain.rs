@@ -507,3 +507,29 @@ fn small_angle_g_and_rodrigues_terms_keep_their_digits() {
         );
     }
 }
+
+/// θ = π − 1e-9: tr R rounds to −1 exactly, yet R ≠ Rᵀ and the logarithm
+/// takes case (iii) (§3.2.3.3). The shown trace −1 and the case's "tr R ≠
+/// −1" would contradict each other; the case says why both hold. And a
+/// half turn whose float trace is not −1 says why case (ii) holds.
+#[test]
+fn the_case_explains_a_trace_that_rounds_against_it() {
+    let lines = common::json("explain log(Rot((1, 2, 3), pi - 1e-9))");
+    let steps = lines[0]["steps"].as_array().unwrap();
+    assert_eq!(steps[0]["name"], "trace");
+    assert_eq!(steps[0]["value"].as_f64(), Some(-1.0));
+    assert_eq!(steps[1]["value"], "general");
+    let note = steps[1]["note"].as_str().unwrap_or_default();
+    assert!(note.contains("R ≠ Rᵀ"), "{:?}", steps[1]);
+    // 2ω̂ω̂ᵀ − I for ω̂ = (1, 1, 1)/√3 in floats: symmetric, tr R = −1 + 6e-16
+    let lines = common::json(
+        "explain log([-0.33333333333333315, 0.6666666666666669, 0.6666666666666669; \
+         0.6666666666666669, -0.33333333333333315, 0.6666666666666669; \
+         0.6666666666666669, 0.6666666666666669, -0.33333333333333315])",
+    );
+    let steps = lines[0]["steps"].as_array().unwrap();
+    assert_ne!(steps[0]["value"].as_f64(), Some(-1.0));
+    assert_eq!(steps[1]["value"], "half_turn_3.58");
+    let note = steps[1]["note"].as_str().unwrap_or_default();
+    assert!(note.contains("R = Rᵀ"), "{:?}", steps[1]);
+}

@@ -66,7 +66,7 @@ fn rotation_steps(r: &Mat3, d: &HalfTurn, out: &mut Vec<Step>) -> LogParts {
         let (k, eq) = half_turn_formula(r);
         let sub = |n: usize| ['₁', '₂', '₃'][n];
         let kk = sub(k);
-        out.push(Step::new(
+        let mut case = Step::new(
             "3.2.3.3",
             "case",
             format!("case (ii): tr R = −1, so θ = π; ω̂ by ({eq}) since 1 + r{kk}{kk} ≠ 0"),
@@ -78,7 +78,15 @@ fn rotation_steps(r: &Mat3, d: &HalfTurn, out: &mut Vec<Step>) -> LogParts {
                 1 => "half_turn_3.59",
                 _ => "half_turn_3.60",
             }),
-        ));
+        );
+        if r.trace() != -1.0 {
+            case = case.note(format!(
+                "tr R = {} is −1 up to the rounding of R's entries: R = Rᵀ (sin θ = ‖R − Rᵀ‖/(2√2) \
+                 is 0 to rounding), so θ = π",
+                r.trace()
+            ));
+        }
+        out.push(case);
         out.push(Step::new(
             "3.2.3.3",
             "theta",
@@ -113,13 +121,22 @@ fn rotation_steps(r: &Mat3, d: &HalfTurn, out: &mut Vec<Step>) -> LogParts {
         );
         return parts;
     }
-    out.push(Step::new(
+    let mut case = Step::new(
         "3.2.3.3",
         "case",
         "case (iii): R ≠ I and tr R ≠ −1, so θ ∈ (0, π)",
         r"\text{case (iii): } R \ne I,\ \operatorname{tr} R \ne -1,\ \theta \in (0, \pi)",
         Q::Case("general"),
-    ));
+    );
+    if r.trace() <= -1.0 {
+        case = case.note(format!(
+            "tr R rounds to {} here, but R ≠ Rᵀ (sin θ = ‖R − Rᵀ‖/(2√2) = {:.3e} ≠ 0): θ is just \
+             below π, not π, so case (iii)",
+            r.trace(),
+            d.skew.norm()
+        ));
+    }
+    out.push(case);
     let book = d.cos.clamp(-1.0, 1.0).acos();
     let mut step = Step::new(
         "3.54",
