@@ -533,3 +533,26 @@ fn the_case_explains_a_trace_that_rounds_against_it() {
     let note = steps[1]["note"].as_str().unwrap_or_default();
     assert!(note.contains("R = Rᵀ"), "{:?}", steps[1]);
 }
+
+/// Rotz(π − 1e-12) Roty(π − 1e-12) turns by π − 1e-24: its floats are a
+/// half turn, and certified arithmetic on its recipe tells MatrixLog3 the
+/// sign of ω̂. explain decides θ = π the same way, so it shows case (iii)
+/// with the value's ω̂, not case (ii) with −ω̂ and a value of the other sign.
+#[test]
+fn half_turn_decided_by_the_recipe_matches_the_value() {
+    let lines = common::json("R = Rotz(pi - 1e-12) Roty(pi - 1e-12)\nexplain MatrixLog3(R)");
+    let steps = lines[1]["steps"].as_array().unwrap();
+    let by = |name: &str| steps.iter().find(|s| s["name"] == name).unwrap();
+    assert_eq!(by("case")["value"], "general", "{steps:?}");
+    let (theta, w) = (
+        by("theta")["value"].as_f64().unwrap(),
+        common::numbers(&by("omega_hat")["value"]),
+    );
+    let value = common::numbers(&lines[1]["value"]);
+    for (wi, vi) in w.iter().zip(&value) {
+        assert!(
+            (wi * theta - vi).abs() < 1e-15,
+            "ω̂θ {w:?}·{theta} vs {value:?}"
+        );
+    }
+}

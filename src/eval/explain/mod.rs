@@ -386,7 +386,7 @@ fn refusal(e: &Expr) -> Diagnostic {
 /// The steps of a builtin call on numbers, by the builtin's name.
 fn call_steps(name: &str, args: &[Value]) -> Option<Vec<Step>> {
     let a0 = args.first()?;
-    let half = crate::values::exact_mat::half_turn(a0);
+    let half = half_turn(a0);
     Some(match name {
         "log" => {
             if let Some(t) = a0
@@ -478,6 +478,14 @@ fn euler(a0: &Value, which: Euler) -> Option<Vec<Step>> {
         Some((x, lock)) => steps::orient::euler(&x, which, Some(lock)),
         None => steps::orient::euler(&r, which, None),
     })
+}
+
+/// The θ = π decision of a logarithm's argument as the builtins take it
+/// (`Args::half_turn`): by its exact form, else by certified arithmetic on
+/// its recipe (Rotz(π − 1e-12) Roty(π − 1e-12) is θ = π − 1e-24, not π),
+/// so the steps take the case and the sign of ω̂ the value took.
+fn half_turn(v: &Value) -> Option<crate::lie::so3::HalfTurn> {
+    crate::values::exact_mat::half_turn(v).or_else(|| crate::decide::turn::half_turn(v))
 }
 
 /// Grübler's formula (2.4) with this mechanism's counts.
