@@ -556,3 +556,132 @@ fn half_turn_decided_by_the_recipe_matches_the_value() {
         );
     }
 }
+
+/// The `case` step that decides the SO(3) logarithm (the last one), with
+/// its note.
+fn rotation_case(o: &chasles::eval::interp::Outcome) -> (String, Option<String>) {
+    let s = o.steps().iter().rfind(|s| s.name == "case").expect("case");
+    match &s.value {
+        Value::Str(c) => (c.to_string(), s.note.clone()),
+        other => panic!("case is {other:?}"),
+    }
+}
+
+/// The relations between the shown steps of a logarithm of `r` (§3.2.3.3,
+/// and §3.3.3.2 when `p` is the translation): θ is the angle of R to
+/// rounding (atan2(sin θ, cos θ), accurate also where cos⁻¹ of (3.54) is
+/// not), case (ii) only for R = Rᵀ to rounding, a trace that rounds to −1
+/// in case (iii) explained, ω̂ a unit vector with e^{[ω̂]θ} = R, and
+/// v = G⁻¹(θ)p (3.93) with the book's G⁻¹ (3.94).
+fn check_log_steps(o: &chasles::eval::interp::Outcome, r: &Mat3, p: Option<&Vec3>, what: &str) {
+    let num = |name: &str| floats(shown(o, name));
+    let (case, note) = rotation_case(o);
+    if case == "identity" || case == "pure_translation" {
+        assert!((r - Mat3::identity()).amax() <= 1e-15, "{what}: {case}");
+        return;
+    }
+    let tr = num("trace")[0];
+    assert!((tr - r.trace()).abs() <= 4e-16, "{what}: tr {tr}");
+    let th = num("theta")[0];
+    let sin = so3::vee(&(r - r.transpose())).norm() / 2.0;
+    let reference = sin.atan2((tr - 1.0) / 2.0);
+    assert!(
+        (th - reference).abs() <= 4e-15,
+        "{what}: θ {th} vs {reference}"
+    );
+    if case.starts_with("half_turn") {
+        // (sin θ = ‖vee(R − Rᵀ)‖/2 at most 4ε, so3::HALF_TURN_SKEW)
+        assert!(sin <= 1e-15, "{what}: {case} with sin θ = {sin:e}");
+        // "θ = π": exactly, or a note says by how much the value's θ is not
+        let said = o.steps().iter().find(|s| s.name == "theta").unwrap();
+        assert!(
+            th == PI || said.note.is_some(),
+            "{what}: θ = π shown as {th}"
+        );
+    } else {
+        assert_eq!(case, "general", "{what}");
+        assert!(
+            tr > -1.0 || note.is_some(),
+            "{what}: tr R = {tr} in case (iii)"
+        );
+    }
+    let w = Vec3::from_column_slice(&num("omega_hat"));
+    assert!((w.norm() - 1.0).abs() <= 1e-14, "{what}: ‖ω̂‖ {}", w.norm());
+    let tol = if th == PI { 1e-9 } else { 1e-13 };
+    assert!(
+        (so3::exp(&(w * th)) - r).amax() <= tol,
+        "{what}: e^[ω̂]θ ≠ R"
+    );
+    if let (Some(p), true) = (p, th > 1e-6) {
+        let g = Mat3::from_column_slice(&num("G_inv"));
+        let book = book_g_inv(&w, th);
+        assert!((g - book).amax() <= 1e-12 * book.amax(), "{what}: G⁻¹");
+        let v = Vec3::from_column_slice(&num("v"));
+        let want = book * p;
+        assert!(
+            (v - want).amax() <= 1e-12 / th * (1.0 + want.amax()),
+            "{what}: v {v} vs {want}"
+        );
+    }
+}
+
+/// Seeded random rotations and transforms at the hard cases (θ → 0,
+/// θ → π, θ = π exactly, a float half turn 2ω̂ω̂ᵀ − I, R = I) through the
+/// language: the steps of explain log R, log T, MatrixExp6 and rpy agree
+/// with each other by the book's equations, and end with the value.
+#[test]
+fn explained_steps_agree_with_each_other_at_the_hard_cases() {
+    let mut rng = 0x9e37_79b9_7f4a_7c15u64;
+    let mut next = move || {
+        rng ^= rng << 13;
+        rng ^= rng >> 7;
+        rng ^= rng << 17;
+        (rng >> 11) as f64 / (1u64 << 53) as f64
+    };
+    for i in 0..240 {
+        let w = Vec3::new(next() - 0.5, next() - 0.5, next() - 0.5).normalize();
+        let small = 10f64.powf(-12.0 + 9.0 * next());
+        let theta = [next() * PI, small, PI - small, PI, 0.0, PI - 1e-15][i % 6];
+        let r = if i % 12 == 3 {
+            2.0 * w * w.transpose() - Mat3::identity()
+        } else {
+            so3::exp(&(w * theta))
+        };
+        let p = Vec3::new(next() - 0.5, next() - 0.5, next() - 0.5) * 10.0;
+        let t = se3::from_rp(&r, &p);
+        let setup = format!("T = {}\nR = T.R", matrix_literal(&t));
+        let what = format!("case {i}: θ = {theta:e}");
+        let o = last_outcome(&format!("{setup}\nexplain log(R)"));
+        check_log_steps(&o, &r, None, &what);
+        let o = last_outcome(&format!("{setup}\nexplain log(T)"));
+        check_log_steps(&o, &r, Some(&p), &what);
+        // (3.89): p = G(θ)v with the shown G and v, back to T
+        let o = last_outcome(&format!("{setup}\nexplain MatrixExp6(MatrixLog6(T))"));
+        if o.steps().iter().any(|s| s.name == "G") {
+            let g = Mat3::from_column_slice(&floats(shown(&o, "G")));
+            let v = Vec3::from_column_slice(&floats(shown(&o, "v")));
+            let got = Vec3::from_column_slice(&floats(shown(&o, "p")));
+            assert!(
+                (g * v - got).amax() <= 1e-12 * (1.0 + got.amax()),
+                "{what}: G v ≠ p"
+            );
+        }
+        let back = floats(shown(&o, "T"));
+        let want: Vec<f64> = t.as_slice().to_vec();
+        let err = back
+            .iter()
+            .zip(&want)
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0, f64::max);
+        assert!(err <= 1e-9, "{what}: exp(log T) off by {err}");
+        // App. B: the shown angles are the value's and give R back
+        let o = last_outcome(&format!("{setup}\nexplain rpy(R)"));
+        let a: Vec<f64> = ["roll", "pitch", "yaw"]
+            .iter()
+            .map(|n| floats(shown(&o, n))[0])
+            .collect();
+        assert_eq!(a, floats(&o.steps().last().unwrap().value), "{what}");
+        let back = so3::rotz(a[2]) * so3::roty(a[1]) * so3::rotx(a[0]);
+        assert!((back - r).amax() <= 1e-7, "{what}: rpy does not give R");
+    }
+}

@@ -87,13 +87,22 @@ fn rotation_steps(r: &Mat3, d: &HalfTurn, out: &mut Vec<Step>) -> LogParts {
             ));
         }
         out.push(case);
-        out.push(Step::new(
+        let mut step = Step::new(
             "3.2.3.3",
             "theta",
             "θ = π",
             r"\theta = \pi",
             Q::Scalar(theta),
-        ));
+        );
+        if theta != std::f64::consts::PI {
+            step = step.note(format!(
+                "R − Rᵀ is rounding noise (sin θ = {:.1e}), so θ = π; chasles keeps θ = atan2(sin θ, \
+                 cos θ) = {theta:?}, which is π to within {:.0e}",
+                parts.sin,
+                std::f64::consts::PI - theta
+            ));
+        }
+        out.push(step);
         let w = so3::near_pi_axis(r, d.cos, &d.skew, true);
         let (text, latex) = match k {
             2 => (
