@@ -591,13 +591,31 @@ fn subs_of_a_comparison_is_a_comparison() {
 /// `subs` of a comparison decided false over its symbol (not an identity)
 /// with a number for it is decided again at that number: `subs(2*a == a^2,
 /// a, 0)` printed false; 0 == 0 is true (found by the differential sweep,
-/// session 32).
+/// session 32). With other symbols free, over them, and again once they
+/// have numbers.
 #[test]
 fn subs_of_a_comparison_decided_over_its_symbol_is_decided_again() {
     let out = common::printed("given a\nsubs(2*a == a^2, a, 0)");
     assert_eq!(out.lines().last(), Some("true"), "{out}");
     let out = common::printed("given a\nsubs(2*a == a^2, a, 1)");
     assert_eq!(out.lines().last(), Some("false"), "{out}");
+    // With another symbol free: at a = 0, 0 == 0 whatever b is (it printed
+    // false, the verdict over both symbols, even once b had its number);
+    // at a = 1, 2 == b is decided again when b is bound, as typed first.
+    for (src, want) in [
+        ("given a, b\nX = subs(2*a == a*b, a, 0)\nX", "true"),
+        (
+            "given a, b\nX = subs(2*a == a*b, a, 0)\nb = -0.7\nX",
+            "true",
+        ),
+        ("given a, b\nX = subs(2*a == a*b, a, 1)\nX", "false"),
+        ("given a, b\nX = subs(2*a == a*b, a, 1)\nb = 2\nX", "true"),
+        ("given a, b\nX = subs(2*a == a*b, a, 1)\nb = 3\nX", "false"),
+        ("given a, b\nsubs(a*b == 0, a, 0)", "true"),
+    ] {
+        let out = common::printed(src);
+        assert_eq!(out.lines().last(), Some(want), "{src}\n{out}");
+    }
 }
 
 /// An index over symbols is refused, naming the symbol (it printed

@@ -40,6 +40,28 @@ pub(crate) fn compared(r: &Rc<Recipe>, at: Lookup) -> Option<Result<Value, Strin
     }))
 }
 
+/// `subs` of comparison recipe `r` with the numbers `at` gives (a number
+/// put for a symbol, others left free): [`compared`], but a verdict over
+/// sides still holding symbols stays the comparison's formula
+/// ([`crate::values::recipe::compared`]), decided again when their numbers
+/// are bound. `subs(2*a == a*b, a, 1)` is false over b (2 = b is no
+/// identity) and true once b = 2, as `a = 1` typed first gives; at a = 0,
+/// 0 == 0 is true whatever b is (it printed false: the verdict over both
+/// symbols). None when `r` is no comparison.
+pub(crate) fn substituted(r: &Rc<Recipe>, at: Lookup) -> Option<Result<Value, String>> {
+    let Step::Compare(op) = &r.step else {
+        return None;
+    };
+    let mut memo = HashMap::new();
+    let sides: Option<Vec<Value>> = r.args.iter().map(|a| value(a, at, &mut memo)).collect();
+    if let Some([a, b]) = sides.as_deref()
+        && let Some(v) = decide(a, b, *op)
+    {
+        return Some(Ok(crate::values::recipe::compared(v, *op, a, b)));
+    }
+    compared(r, at)
+}
+
 /// `a op b` over symbols as the evaluator decides it: by canonical forms,
 /// and for `==` at points where a side rests on a float; None undecided.
 fn decide(a: &Value, b: &Value, op: CmpOp) -> Option<bool> {

@@ -37,9 +37,10 @@ pub(super) fn each_part(
             crate::decide::constant::simplest(v).unwrap_or_else(|| v.clone())
         ));
     }
-    // (a comparison decided over free symbols, with a number put for its
-    // one symbol: decided again, as typed first — `2 a == a^2` is false
-    // over a, but at a = 0 it is true)
+    // (a comparison decided over free symbols, with a number put for one
+    // of them: decided again, as typed first — `2 a == a^2` is false over
+    // a, but at a = 0 it is true; `2 a == a b` at a = 0 is true whatever
+    // b is, and at a = 1 false over b but true once b = 2)
     if let [
         Value::Formula { how: Some(r), .. },
         Value::Formula { m, .. },
@@ -48,12 +49,7 @@ pub(super) fn each_part(
         && name == "subs"
         && let [e] = m.data.as_slice()
         && let Some(sym) = crate::sym::expr::as_symbol(e)
-        && {
-            let mut syms = Vec::new();
-            crate::values::recipe::symbols(r, &mut syms);
-            syms.iter().all(|s| *s == sym)
-        }
-        && let Some(v) = crate::decide::partly::compared(r, &|s| (*s == sym).then(|| by.clone()))
+        && let Some(v) = crate::decide::partly::substituted(r, &|s| (*s == sym).then(|| by.clone()))
     {
         return Some(v.map_err(OpError::Message));
     }
