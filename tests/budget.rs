@@ -82,16 +82,12 @@ fn max_memory_caps_the_whole_run() {
 
 #[test]
 fn the_recipes_of_exact_numbers_count_against_the_budget() {
+    let in_1m = |src: &str| bounded(&["--max-memory", "1M", "-e", src]);
     // Each sine of an exact t keeps its recipe (for `==` to bound it):
     // 128 bytes an item (the recipe's node, t held in it), counted as
     // numbers of 8 bytes. 10,001 of them pass 1 MB, though their floats
     // alone are 80 kB; 500,001 took 1.1 GB uncounted.
-    let out = bounded(&[
-        "--max-memory",
-        "1M",
-        "-e",
-        "xs = [sin(t) for t in 0:0.001:10]",
-    ]);
+    let out = in_1m("xs = [sin(t) for t in 0:0.001:10]");
     assert_eq!(out.code, Some(1), "{}", out.stderr);
     let message = out.stderr.lines().next().unwrap_or("");
     assert!(
@@ -109,31 +105,16 @@ fn the_recipes_of_exact_numbers_count_against_the_budget() {
     assert!((125_000..400_000).contains(&wanted), "{wanted}");
     // Fractions are held inline, no recipe: the range itself and the
     // list of its items fit (2 numbers an item).
-    let out = bounded(&[
-        "--max-memory",
-        "1M",
-        "-e",
-        "xs = [t for t in 0:0.001:5]\nsum(xs) == 12502.5",
-    ]);
+    let out = in_1m("xs = [t for t in 0:0.001:5]\nsum(xs) == 12502.5");
     assert_eq!(out.code, Some(0), "{}", out.stderr);
     assert!(out.stdout.ends_with("true\n"), "{}", out.stdout);
     // A 3-vector of fractions holds them inline, no recipe over copies
     // of its entries: 5,000 fit in 1 MB (3 numbers an item and its place
     // in the list; as recipes they were 315,000 numbers), 40,000 do not.
-    let out = bounded(&[
-        "--max-memory",
-        "1M",
-        "-e",
-        "xs = [(k/1000, 0, 0) for k in 1:5000]\nxs[4000] == (4, 0, 0)",
-    ]);
+    let out = in_1m("xs = [(k/1000, 0, 0) for k in 1:5000]\nxs[4000] == (4, 0, 0)");
     assert_eq!(out.code, Some(0), "{}", out.stderr);
     assert!(out.stdout.ends_with("true\n"), "{}", out.stdout);
-    let out = bounded(&[
-        "--max-memory",
-        "1M",
-        "-e",
-        "xs = [(k/1000, 0, 0) for k in 1:40000]",
-    ]);
+    let out = in_1m("xs = [(k/1000, 0, 0) for k in 1:40000]");
     assert_eq!(out.code, Some(1), "{}", out.stderr);
     assert!(
         out.stderr.contains("this would hold 160,000 numbers"),

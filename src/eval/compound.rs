@@ -60,7 +60,7 @@ impl Interp<'_> {
                         // as running refuses it; a literal index is known,
                         // any other is not)
                         None if self.unbound_symbol(e) => return Err(waits()),
-                        None => literal_index(e).unwrap_or(f64::NAN),
+                        None => super::literals::literal_index(e).unwrap_or(f64::NAN),
                     };
                     sels.push(Sel::At(at));
                 }
@@ -117,8 +117,8 @@ impl Interp<'_> {
                 rhs,
                 ..
             } => {
-                (self.unbound_symbol(lhs) && literal_index(rhs).is_some())
-                    || (literal_index(lhs).is_some() && self.unbound_symbol(rhs))
+                (self.unbound_symbol(lhs) && super::literals::literal_index(rhs).is_some())
+                    || (super::literals::literal_index(lhs).is_some() && self.unbound_symbol(rhs))
             }
             ExprKind::Paren(items) if items.len() == 1 => self.unbound_symbol(&items[0]),
             _ => false,
@@ -568,30 +568,5 @@ fn not_inside(kind: &Kind, span: Span) -> Diagnostic {
             "a tuple is not a vector: write the 3-vector as three numbers, `(x, y, z)`, or a vector by name",
         ),
         _ => d,
-    }
-}
-
-/// The number an index written as a literal stands for (`2`, `1.5`, `-1`,
-/// `end + 1` once `end` is a number), known without evaluating it: numbers
-/// and their sums, differences and products; None for anything else.
-pub(super) fn literal_index(e: &Expr) -> Option<f64> {
-    use crate::syntax::ast::BinOp;
-    match &e.kind {
-        ExprKind::Number(x) => Some(*x),
-        ExprKind::Binary { op, lhs, rhs, .. } => {
-            let (a, b) = (literal_index(lhs)?, literal_index(rhs)?);
-            match op {
-                BinOp::Add => Some(a + b),
-                BinOp::Sub => Some(a - b),
-                BinOp::Mul => Some(a * b),
-                BinOp::Div | BinOp::Pow => None,
-            }
-        }
-        ExprKind::Unary {
-            op: crate::syntax::ast::UnOp::Neg,
-            operand,
-        } => literal_index(operand).map(|x| -x),
-        ExprKind::Paren(items) if items.len() == 1 => literal_index(&items[0]),
-        _ => None,
     }
 }

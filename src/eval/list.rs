@@ -291,21 +291,8 @@ impl Interp<'_> {
             ));
         }
         // (a range waiting for numbers has no items yet)
-        if let Some(v) = t
-            .val
-            .as_deref()
-            .filter(|v| crate::values::waiting::is_range(v))
-        {
-            return Err(self
-                .domain(
-                    span,
-                    format!(
-                        "the range {} has no items until {}",
-                        crate::values::format::inline(v, 4),
-                        crate::values::waiting::once(v)
-                    ),
-                )
-                .with_help("bind numbers to the given names first, then index it (§7)"));
+        if let Some(d) = super::slice::unindexable_range(t.val.as_deref(), span) {
+            return Err(d);
         }
         let Some(Value::List(items)) = t.val.as_deref() else {
             // (checking: a list's length is known from its items, or from

@@ -105,17 +105,8 @@ impl Interp<'_> {
         let t = self.expr(base)?;
         // (a range waiting for numbers has no items yet: its formula's
         // entries are its bounds, not its items)
-        if let Some(v) = t.value().filter(|v| crate::values::waiting::is_range(v)) {
-            return Err(Diagnostic::error(
-                ErrorKind::Domain,
-                span,
-                format!(
-                    "the range {} has no items until {}",
-                    crate::values::format::inline(v, 4),
-                    crate::values::waiting::once(v)
-                ),
-            )
-            .with_help("bind numbers to the given names first, then index it (§7)"));
+        if let Some(d) = unindexable_range(t.value(), span) {
+            return Err(d);
         }
         let (rows, cols) = match (t.value(), t.ty.kind) {
             (Some(Value::List(xs)), _) => (Some(xs.len()), Some(1)),
@@ -365,14 +356,14 @@ fn outside(x: f64, n: Option<usize>, what: &str) -> Option<String> {
 /// `1:2:5`), known without evaluating it; None for anything else.
 fn literal_positions(e: &Expr) -> Option<Vec<f64>> {
     let ExprKind::Range { start, step, end } = &e.kind else {
-        return super::compound::literal_index(e).map(|x| vec![x]);
+        return super::literals::literal_index(e).map(|x| vec![x]);
     };
-    let a = super::compound::literal_index(start)?;
+    let a = super::literals::literal_index(start)?;
     let h = match step {
-        Some(h) => super::compound::literal_index(h)?,
+        Some(h) => super::literals::literal_index(h)?,
         None => 1.0,
     };
-    let b = super::compound::literal_index(end)?;
+    let b = super::literals::literal_index(end)?;
     let n = crate::seam::range::range_count(a, h, b).ok()?;
     Some((0..n).map(|i| a + i as f64 * h).collect())
 }
@@ -489,4 +480,23 @@ fn list_elem(k: Kind) -> Kind {
         Kind::List(e, _) => *e,
         other => other,
     }
+}
+
+/// The refusal of indexing `v` when it is a range waiting for numbers
+/// (`(1:n)[2]` with `n` given, §7, §12): it has no items yet, its
+/// formula's entries are its bounds. None for any other value.
+pub(super) fn unindexable_range(v: Option<&Value>, span: Span) -> Option<Diagnostic> {
+    let v = v.filter(|v| crate::values::waiting::is_range(v))?;
+    Some(
+        Diagnostic::error(
+            ErrorKind::Domain,
+            span,
+            format!(
+                "the range {} has no items until {}",
+                crate::values::format::inline(v, 4),
+                crate::values::waiting::once(v)
+            ),
+        )
+        .with_help("bind numbers to the given names first, then index it (§7)"),
+    )
 }

@@ -67,6 +67,17 @@ fn sums(e: &Expr, out: &mut Vec<Expr>) {
     }
 }
 
+/// The least common denominator of ratios `rs` (the w of a class of
+/// rational multiples is its first member over it); None past i128.
+fn common_denominator(rs: &[Rat]) -> Option<i128> {
+    let mut den = num_bigint::BigInt::from(1);
+    for r in rs {
+        let (_, d) = r.parts();
+        den = num_integer::Integer::lcm(&den, &d);
+    }
+    i128::try_from(den).ok()
+}
+
 /// The fresh angles of the trigonometric parts: one per class of rational
 /// multiples, w the first part over the least common denominator of the
 /// ratios (so every part is an integer multiple of w).
@@ -85,12 +96,7 @@ fn fresh_sums(found: &[Expr]) -> Vec<FreshSum> {
         .into_iter()
         .enumerate()
         .filter_map(|(i, (base, rs))| {
-            let mut den = num_bigint::BigInt::from(1);
-            for r in &rs {
-                let (_, d) = r.parts();
-                den = num_integer::Integer::lcm(&den, &d);
-            }
-            let den = i128::try_from(den).ok()?;
+            let den = common_denominator(&rs)?;
             let w = base.scale(&Coef::rat(Rat::new(1, den)?));
             Some((w, Symbol::new(&format!("\u{1}sum angle {i}"))))
         })
@@ -157,12 +163,7 @@ fn fresh(found: &[(Mono, Coef)]) -> Vec<Fresh> {
         .into_iter()
         .enumerate()
         .filter_map(|(i, (m, base, rs))| {
-            let mut den = num_bigint::BigInt::from(1);
-            for r in &rs {
-                let (_, d) = r.parts();
-                den = num_integer::Integer::lcm(&den, &d);
-            }
-            let den = i128::try_from(den).ok()?;
+            let den = common_denominator(&rs)?;
             let w = base.mul(&Coef::rat(Rat::new(1, den)?));
             Some((m, w, Symbol::new(&format!("\u{1}angle {i}"))))
         })

@@ -1,3 +1,4 @@
+"""Sums up given_run.py's mismatch files: python3 given_summary.py FILE... (counts by kind, one example each)."""
 import json,collections,sys
 c=collections.Counter(); ex={}
 for f in sys.argv[1:]:
