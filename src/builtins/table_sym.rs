@@ -283,19 +283,12 @@ pub fn eval_symbolic(name: &str, vals: &[Value], kind: &Kind) -> Out {
                 branch::atan2(&y, &x).map_or_else(|| Expr::atan2(&y, &x), |(t, _)| t),
             ))
         }
-        // |x| of an exact number whose sign the bounds tell (−7/3, −√2,
-        // −π/3): the number or its negative, exact, as typed first
-        // (`abs(-7/3) == 7/3` could not be decided: |x| was its float).
-        ("abs", 1) if let Some(sign) = s(0).and_then(|x| crate::sym::sign::sign_with_pi(&x)) => {
-            let x = s(0)?;
-            ok(scalar(if sign < 0 { x.neg() } else { x }))
-        }
-        ("asin" | "acos" | "atan" | "abs", 1) => {
+        ("abs", 1) => ok(scalar(Expr::abs(&s(0)?))),
+        ("asin" | "acos" | "atan", 1) => {
             let (f, g): (Func, fn(f64) -> f64) = match name {
                 "asin" => (Func::Asin, f64::asin),
                 "acos" => (Func::Acos, f64::acos),
-                "atan" => (Func::Atan, f64::atan),
-                _ => (Func::Abs, f64::abs),
+                _ => (Func::Atan, f64::atan),
             };
             ok(scalar(Expr::apply(f, &s(0)?, g)))
         }

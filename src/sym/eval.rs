@@ -195,7 +195,7 @@ pub fn rebuild(f: Func, args: &[Expr]) -> Expr {
         Func::Asin => Expr::apply(f, x, f64::asin),
         Func::Acos => Expr::apply(f, x, f64::acos),
         Func::Atan => Expr::apply(f, x, f64::atan),
-        Func::Abs => Expr::apply(f, x, f64::abs),
+        Func::Abs => Expr::abs(x),
         Func::Exp => Expr::apply(f, x, f64::exp),
         Func::Sqrt => Expr::sqrt(x),
         // 1/0 has no value (NaN, [`Expr::undefined`]); a reciprocal whose

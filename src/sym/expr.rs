@@ -519,6 +519,17 @@ impl Expr {
             _ => Expr::call(f, vec![x.clone()]),
         }
     }
+    /// |x|: x or −x for an exact number whose sign the exact bounds tell
+    /// (−7/3, −√2, −π/3: [`super::sign::sign_with_pi`]), so that
+    /// `abs(-7/3) == 7/3` is decided; else the float of a number, or the
+    /// call kept over symbols.
+    pub fn abs(x: &Expr) -> Expr {
+        match super::sign::sign_with_pi(x) {
+            Some(sign) if sign < 0 => x.neg(),
+            Some(_) => x.clone(),
+            None => Expr::apply(Func::Abs, x, f64::abs),
+        }
+    }
     /// √x: exact for p/q with a square-free part among 1, 2, 3, 6; |p| for
     /// the square of an expression p.
     pub fn sqrt(x: &Expr) -> Expr {
