@@ -13,13 +13,16 @@ pub use crate::span::Span;
 /// Frame subscripts are read from the text by [`super::ident::name_frames`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct Ident {
+    /// The name, interned, with its subscripts as typed.
     pub name: Name,
+    /// Where the name is written in the source.
     pub span: Span,
 }
 
 /// One statement of a script or one REPL entry.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Stmt {
+    /// What the statement does: evaluate, bind, declare, define, assert….
     pub kind: StmtKind,
     /// The whole statement, without its terminator.
     pub span: Span,
@@ -29,35 +32,56 @@ pub struct Stmt {
     pub silent: bool,
 }
 
+/// The forms a statement takes (LANGUAGE.md §3).
 #[derive(Debug, Clone, PartialEq)]
 pub enum StmtKind {
     /// `expr` — evaluate and print.
     Expr(Expr),
     /// `name = expr` — bind; the name's frame subscript is checked against
     /// the value's frames.
-    Assign { target: Ident, value: Expr },
+    Assign {
+        /// The name bound, e.g. `T_sb`.
+        target: Ident,
+        /// The right-hand side.
+        value: Expr,
+    },
     /// `(w, theta) = axis_ang3(expc)` — destructure a tuple of any arity.
-    Destructure { targets: Vec<Ident>, value: Expr },
+    Destructure {
+        /// The names on the left, one per element of the tuple, in order.
+        targets: Vec<Ident>,
+        /// The right-hand side, which must give a tuple of as many elements.
+        value: Expr,
+    },
     /// `given T_ab, T_bc : SE3` — symbols with a type and frames, no numbers.
     /// `ty` is the type name as written (`scalar vec3 vec6 SO3 SE3 SO2 SE2
     /// so3 se3 twist screw wrench`); the checker validates it.
     /// `times[i]` is the time variable of a function of time,
     /// `given theta(t) : scalar` (§7).
     Given {
+        /// The symbols declared, e.g. `T_ab`, `T_bc`.
         names: Vec<Ident>,
+        /// The type name after `:`, as written.
         ty: Ident,
+        /// One per name: `Some(t)` for `theta(t)`, `None` for a constant.
         times: Vec<Option<Ident>>,
     },
     /// `f(x, y) = expr` — a user function. The parameters are a boxed
     /// slice (two words, not a vector's three) so that a statement fits in
     /// 128 bytes and moves without a call to `memcpy`.
     FnDef {
+        /// The function's name, `f`.
         name: Ident,
+        /// The parameter names in order, `x, y`.
         params: Box<[Ident]>,
+        /// The right-hand side, evaluated at each call with the parameters
+        /// bound to the arguments.
         body: Expr,
     },
     /// `derive T_ce` — search the known transforms for a chain from {c} to {e}.
-    Derive { target: Ident },
+    Derive {
+        /// The transform to find, whose subscript names its two frames.
+        target: Ident,
+    },
     /// `assert cond` — stops the script (an `assert` error) when `cond` is
     /// false, showing both sides of a comparison (LANGUAGE.md §3).
     Assert(Expr),
@@ -69,10 +93,13 @@ pub enum StmtKind {
 /// An expression node with its span.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Expr {
+    /// What the expression is: literal, name, operation, call….
     pub kind: ExprKind,
+    /// The whole expression's text.
     pub span: Span,
 }
 
+/// A prefix operator on one operand.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum UnOp {
     /// `-x`
@@ -81,12 +108,17 @@ pub enum UnOp {
     Pos,
 }
 
+/// An arithmetic operator on two operands; its meaning (matrix product,
+/// composition of transforms, scaling) depends on the operands' kinds.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum BinOp {
+    /// `a + b`.
     Add,
+    /// `a - b`.
     Sub,
     /// `*`, and juxtaposition (`2 pi`, `[S] theta`) with `implicit: true`.
     Mul,
+    /// `a / b`.
     Div,
     /// `^`, right-associative; `T^-1` is the inverse.
     Pow,
@@ -151,6 +183,8 @@ pub enum IndexArg {
     All(Span),
 }
 
+/// The forms an expression takes; the book's notation is already resolved
+/// into these by the parser.
 #[derive(Debug, Clone, PartialEq)]
 pub enum ExprKind {
     /// A numeric literal, `pi`/`π` already resolved to 3.14159….
@@ -160,11 +194,19 @@ pub enum ExprKind {
     /// A name (variable, symbol, or `ans`).
     Var(Name),
     /// `-x`, `+x`.
-    Unary { op: UnOp, operand: Box<Expr> },
+    Unary {
+        /// Which sign.
+        op: UnOp,
+        /// The expression it applies to.
+        operand: Box<Expr>,
+    },
     /// `a + b`, `a * b`, `a b` (implicit), `a ^ b`.
     Binary {
+        /// Which operator.
         op: BinOp,
+        /// The left operand.
         lhs: Box<Expr>,
+        /// The right operand.
         rhs: Box<Expr>,
         /// The operator token; for juxtaposition, the gap between operands.
         op_span: Span,
@@ -173,20 +215,36 @@ pub enum ExprKind {
     },
     /// `a == b`, `a ≈ b`: a bool. Looser than every other operator.
     Compare {
+        /// Which comparison.
         op: CmpOp,
+        /// The left side.
         lhs: Box<Expr>,
+        /// The right side.
         rhs: Box<Expr>,
+        /// The operator token.
         op_span: Span,
     },
     /// `x deg` or `x°`: degrees to radians.
     Degrees(Box<Expr>),
     /// `f(a, b)`.
-    Call { func: Ident, args: Vec<Expr> },
+    Call {
+        /// The function's name: a builtin or a user function.
+        func: Ident,
+        /// The arguments in order.
+        args: Vec<Expr>,
+    },
     /// `x.T`, `T.R`, `T.p`, `V.w`, `V.v`, `F.m`, `F.f`.
-    Member { base: Box<Expr>, member: Ident },
+    Member {
+        /// The value read from, `T` in `T.R`.
+        base: Box<Expr>,
+        /// The part's name after the dot, `R` in `T.R`.
+        member: Ident,
+    },
     /// `x[i]`, `M[i, j]`, `M[:, j]` — 1-based.
     Index {
+        /// The vector, matrix or list indexed.
         base: Box<Expr>,
+        /// The subscripts between the brackets: one, or row and column.
         args: Vec<IndexArg>,
     },
     /// `(a, b, c)` with two or more elements: a vector when all are scalars
@@ -205,14 +263,19 @@ pub enum ExprKind {
     /// `0:4`, `0:pi/8:pi`: a MATLAB range (LANGUAGE.md §12), `start:end`
     /// or `start:step:end`, inclusive of the end within rounding.
     Range {
+        /// The first element.
         start: Box<Expr>,
+        /// The middle of `start:step:end`; `None` for `start:end` (step 1).
         step: Option<Box<Expr>>,
+        /// The last element, included when the steps reach it.
         end: Box<Expr>,
     },
     /// `[body for k in r]`, `[body for a in r1, b in r2]`: a list
     /// comprehension over ranges or lists, the first variable outermost.
     Comprehension {
+        /// The expression evaluated for each element.
         body: Box<Expr>,
+        /// Each `name in source` in order, the first outermost.
         vars: Vec<(Ident, Expr)>,
     },
 }
@@ -289,5 +352,6 @@ pub struct JointGroupSyntax {
     pub count_expr: Option<Expr>,
     /// The joint letters, e.g. `"RP"`.
     pub letters: String,
+    /// The whole token, count included.
     pub span: Span,
 }
