@@ -17,13 +17,18 @@ pub const PROJECT_TOL: f64 = 1e-2;
 /// A group a plain matrix can be read as.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Group {
+    /// SO(3), the 3×3 rotation matrices (Definition 3.1).
     SO3,
+    /// SE(3), the 4×4 homogeneous transformations (Definition 3.4, (3.62)).
     SE3,
+    /// SO(2), the 2×2 rotation matrices (Definition 3.2).
     SO2,
+    /// SE(2), the 3×3 planar transformations (Definition 3.5).
     SE2,
 }
 
 impl Group {
+    /// The kind a matrix read as this group takes.
     pub fn kind(self) -> Kind {
         match self {
             Group::SO3 => Kind::SO3,
@@ -32,6 +37,8 @@ impl Group {
             Group::SE2 => Kind::SE2,
         }
     }
+    /// The side of its square matrices: 3 for SO(3) and SE(2), 4 for
+    /// SE(3), 2 for SO(2).
     pub fn size(self) -> usize {
         match self {
             Group::SO3 | Group::SE2 => 3,
@@ -39,6 +46,7 @@ impl Group {
             Group::SO2 => 2,
         }
     }
+    /// The group as the book writes it, `SO(3)`, for messages.
     pub fn name(self) -> &'static str {
         match self {
             Group::SO3 => "SO(3)",
@@ -64,7 +72,12 @@ pub enum Membership {
     /// Within [`PROJECT_TOL`]: the projection and the distance.
     Projected(Num, f64),
     /// Too far: the distance (and the determinant of the rotation block).
-    Outside { distance: f64, det: f64 },
+    Outside {
+        /// DistanceToSO3/SE3 of the matrix (§3.6), beyond [`PROJECT_TOL`].
+        distance: f64,
+        /// det of the rotation block (negative for a reflection).
+        det: f64,
+    },
 }
 
 fn mat2(m: &Num) -> Mat2 {

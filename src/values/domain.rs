@@ -168,7 +168,9 @@ impl Decided {
 /// (tan, sec) or the sine (cot, csc).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Zero {
+    /// Where cos x = 0 (x an odd multiple of π/2): the poles of tan and sec.
     Cos,
+    /// Where sin x = 0 (x a multiple of π): the poles of cot and csc.
     Sin,
 }
 

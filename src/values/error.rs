@@ -40,13 +40,24 @@ pub enum OpError {
         "too much work: {work:.1e} multiply-adds ({what}; at most {:.0e})",
         MAX_WORK
     )]
-    TooMuchWork { work: u64, what: String },
+    TooMuchWork {
+        /// The multiply-adds it would cost.
+        work: u64,
+        /// The operation, as the message names it (`the inverse of a
+        /// 5000×5000 matrix`).
+        what: String,
+    },
     /// A result of more than [`MAX_ELEMENTS`] entries (rows, columns).
     #[error(
         "a {rows}×{cols} result is too large (at most {} entries)",
         MAX_ELEMENTS
     )]
-    TooLarge { rows: usize, cols: usize },
+    TooLarge {
+        /// Rows of the result.
+        rows: usize,
+        /// Columns of the result.
+        cols: usize,
+    },
     /// `x / d` with a `d` that is not a number.
     #[error("the divisor must be a number")]
     DivisorNotANumber,
@@ -60,7 +71,11 @@ pub enum OpError {
         real_root.as_ref().map(|r| format!("; its real root is -({r})")).unwrap_or_default()
     )]
     NotReal {
+        /// The whole power as text, `(-8)^0.333…` (not only its base,
+        /// despite the name).
         base: String,
+        /// `|b|^e` as text, whose negation is the real root, when the
+        /// exponent is p/q with p and q odd (q up to 9).
         real_root: Option<String>,
     },
     /// `X ^ e` with a matrix that is not square.
@@ -101,10 +116,20 @@ pub enum OpError {
     InverseOfNonSquare(usize, usize),
     /// `x.name` where the value has no such part (§3.3.1: `T.R`, `T.p`).
     #[error("a {kind} has no member .{name}")]
-    NoMember { kind: Kind, name: &'static str },
+    NoMember {
+        /// The kind of the value the member was asked of.
+        kind: Kind,
+        /// The member's name after the dot.
+        name: &'static str,
+    },
     /// A 1-based index outside `1..n`.
     #[error("index {index} is out of range 1..{n} (indices start at 1, as in the book)")]
-    IndexOutOfRange { index: f64, n: usize },
+    IndexOutOfRange {
+        /// The index as given (1-based).
+        index: f64,
+        /// How many entries the index counts among: the largest valid index.
+        n: usize,
+    },
     /// A 1-based index that is not a whole number (`x[1.5]`).
     #[error("index {0} is not a whole number (indices count entries from 1, as in the book)")]
     IndexNotWhole(f64),

@@ -19,6 +19,7 @@ pub const ILL_CONDITIONED: f64 = 1e-10;
 /// An inverse and how well it is determined.
 #[derive(Debug, Clone)]
 pub struct Inverse {
+    /// The inverse matrix A⁻¹.
     pub m: DMatrix<f64>,
     /// The reciprocal condition number in the 1-norm, in (0, 1].
     pub rcond: f64,

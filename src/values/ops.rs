@@ -407,7 +407,10 @@ pub fn member(v: &Value, name: &'static str) -> Result<Value, OpError> {
 /// One subscript after evaluation: a 1-based index or `:`.
 #[derive(Debug, Clone, Copy)]
 pub enum Sel {
+    /// The book's 1-based index as evaluated (not yet checked whole or in
+    /// range).
     At(f64),
+    /// `:`, every row or column.
     All,
 }
 
@@ -479,6 +482,10 @@ pub fn bracket(x: &Value) -> Result<Value, OpError> {
     })
 }
 
+/// The value of a bracket literal `[ ... ]` from its evaluated rows: one
+/// element is the book's bracket `[ω]` (3.30) or `[V]` (3.70) of a 3- or
+/// 6-vector ([`bracket`]); one row of scalars is a column vector; anything
+/// else is MATLAB block concatenation (`[R, p; 0, 0, 0, 1]`, (3.62)).
 pub fn brackets(rows: &[Vec<Value>]) -> Result<Value, OpError> {
     if rows.len() == 1 && rows[0].len() == 1 {
         return bracket(&rows[0][0]);

@@ -190,7 +190,9 @@ impl OnBranch {
 /// A recipe: a step over the recipes of its operands, with the kind the
 /// checker gave its result.
 pub struct Recipe {
+    /// The operation (or leaf) that made the value.
     pub step: Step,
+    /// The recipes of its operands, in the operation's order.
     pub args: Vec<Rc<Recipe>>,
     /// The result's kind as checked (what the numeric operation is given,
     /// as when the numbers are typed first).

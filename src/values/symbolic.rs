@@ -12,8 +12,12 @@ use std::fmt;
 /// §3.3.2), or neither. The builtin table gives each builtin its role.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Role {
+    /// Neither: the call is kept as written and cancels with nothing.
     Plain,
+    /// An inverse, `X⁻¹`: `inv(inv(X)) = X`, and `X inv(X)` cancels.
     Inverse,
+    /// The adjoint map `[Ad_T]` (Definition 3.6): `Ad(X) Ad(inv(X))` cancels, as
+    /// `[Ad_T]⁻¹ = [Ad_{T⁻¹}]`.
     Adjoint,
 }
 
@@ -21,7 +25,9 @@ pub enum Role {
 /// (printed as written, `Ad` or `Adjoint`) and its [`Role`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Fun {
+    /// The builtin's name as called, printed back as written.
     pub name: &'static str,
+    /// How the builtin simplifies in products.
     pub role: Role,
 }
 
@@ -31,11 +37,17 @@ pub struct Fun {
 /// (`.T` is the transpose, an operation of its own.)
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Part {
+    /// `T.R`: the rotation R ∈ SO(3) of T = (R, p) (3.62).
     R,
+    /// `T.p`: the position p ∈ ℝ³ of T = (R, p) (3.62).
     P,
+    /// `V.w`: the angular velocity ω of a twist V = (ω, v) (3.70).
     W,
+    /// `V.v`: the linear part v of a twist V = (ω, v) (3.70).
     V,
+    /// `F.m`: the moment m of a wrench F = (m, f) (3.97).
     M,
+    /// `F.f`: the force f of a wrench F = (m, f) (3.97).
     F,
 }
 
@@ -77,16 +89,29 @@ pub enum Tree<C> {
     Const(Box<C>, String),
     /// The identity (what cancelled products leave).
     Identity,
+    /// The product of two or more factors in order, `T_ab T_bc`: flat (no
+    /// factor is a product or the identity), adjacent inverse pairs
+    /// cancelled; built by [`Tree::product`].
     Product(Vec<Tree<C>>),
+    /// `inv(X)`, the inverse X⁻¹ of one factor (products are inverted
+    /// factor by factor by [`Tree::inverse`]); printed `inv(X)`.
     Inv(Box<Tree<C>>),
+    /// `-x`.
     Neg(Box<Tree<C>>),
+    /// `a + b`.
     Add(Box<Tree<C>>, Box<Tree<C>>),
+    /// `a - b`.
     Sub(Box<Tree<C>>, Box<Tree<C>>),
+    /// `a / b`.
     Div(Box<Tree<C>>, Box<Tree<C>>),
+    /// `a ^ b`, base then exponent.
     Pow(Box<Tree<C>>, Box<Tree<C>>),
     /// `[x]`, the book's bracket.
     Bracket(Box<Tree<C>>),
+    /// `x.T`, the transpose (pushed through products by
+    /// [`Tree::transpose`]).
     Transpose(Box<Tree<C>>),
+    /// `T.R`, `V.w`, …: a part of a symbolic value.
     Member(Box<Tree<C>>, Part),
     /// A builtin applied to symbolic arguments, `Ad(T_ab)`.
     Call(Fun, Vec<Tree<C>>),
@@ -136,6 +161,8 @@ impl<C: PartialEq> PartialEq for Tree<C> {
 /// repeated doubles the expression each time (memory and time explode),
 /// and printing a very deep one would exhaust the stack.
 pub const MAX_SYM_NODES: usize = 10_000;
+/// The deepest symbolic expression kept (nesting levels), the other half
+/// of the bound of [`MAX_SYM_NODES`].
 pub const MAX_SYM_DEPTH: usize = 1_000;
 
 impl<C: Clone + PartialEq> Tree<C> {

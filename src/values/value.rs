@@ -17,8 +17,11 @@ pub type Sym = Tree<Value>;
 /// A user function `f(x, y) = body`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct UserFn {
+    /// The name it was defined under, `f`.
     pub name: String,
+    /// The parameter names in order, bound to the arguments at each call.
     pub params: Vec<String>,
+    /// The right-hand side, evaluated at each call.
     pub body: Expr,
     /// The source text it was defined in ([`crate::eval::env::Env::source`]):
     /// the spans of `body` point into that text only.
@@ -30,14 +33,22 @@ pub struct UserFn {
 /// vector n×1).
 #[derive(Debug, Clone)]
 pub enum Value {
+    /// A number, vector or matrix: a scalar, ω, V, R ∈ SO(3), T ∈ SE(3)….
     Num {
+        /// What the book calls it (which group or space it belongs to).
         kind: Kind,
+        /// The numbers, in a fixed-size shape when small.
         m: Num,
         /// The exact form of the numbers, while they have one (§3, §7).
         exact: Exact,
     },
+    /// `true` or `false`: a literal, or the verdict of a comparison.
     Bool(bool),
+    /// Several values together, `(w, theta)` of `axis_ang3` (§3.2.3),
+    /// read by a destructuring assignment.
     Tuple(Vec<Value>),
+    /// A mechanism literal `mech < ... >` (chapter 2), for Grübler's
+    /// formula (2.4) and its C-space.
     Mech(Rc<Mechanism>),
     /// An expression over `given` symbols (LANGUAGE.md §7).
     Sym(Sym),
@@ -46,8 +57,11 @@ pub enum Value {
     /// how it was made, replayed with numbers once its symbols have them
     /// ([`super::recipe`]; None for a leaf: a `given` symbol, a derivative).
     Formula {
+        /// What the book calls it, as for [`Value::Num`].
         kind: Kind,
+        /// The entries as symbolic scalars.
         m: crate::sym::Mat,
+        /// How it was made, to replay with numbers.
         how: Option<Rc<super::recipe::Recipe>>,
     },
     /// A list (LANGUAGE.md §12): a range `0:4` or a comprehension.
@@ -83,6 +97,7 @@ impl PartialEq for Value {
 }
 
 impl Value {
+    /// A plain real number (kind scalar, no exact form).
     pub fn scalar(x: f64) -> Value {
         Value::Num {
             kind: Kind::Scalar,
@@ -206,6 +221,8 @@ impl Value {
     pub fn may_be_exact(&self) -> bool {
         matches!(self, Value::Num { exact, .. } if !exact.is_float())
     }
+    /// True for an expression over `given` symbols ([`Value::Sym`]); a
+    /// [`Value::Formula`] is not counted.
     pub fn is_symbolic(&self) -> bool {
         matches!(self, Value::Sym(_))
     }
@@ -276,10 +293,13 @@ pub enum Style {
 /// drawn frame: `T_sa` draws {a} in {s}) and a label for untagged values.
 #[derive(Debug, Clone)]
 pub struct Drawn {
+    /// The value drawn.
     pub value: Value,
+    /// Its kind and frames as the checker inferred them.
     pub ty: Ty,
     /// The argument as written, for untagged values (`w_hat`).
     pub label: String,
+    /// Drawn as the book draws its kind, or as an arrow or a point.
     pub style: Style,
 }
 
@@ -287,6 +307,7 @@ pub struct Drawn {
 /// `beside(p1, p2)` puts several side by side.
 #[derive(Debug, Clone, Default)]
 pub struct Panel {
+    /// The values drawn in it, in the order given.
     pub items: Vec<Drawn>,
     /// `view(az, el)` in radians, MATLAB's convention; `None` for the default.
     pub view: Option<(f64, f64)>,
@@ -298,6 +319,7 @@ pub struct Panel {
 /// was written (set by the session when it writes the file).
 #[derive(Debug, Clone, Default)]
 pub struct Picture {
+    /// The drawings, left to right.
     pub panels: Vec<Panel>,
     /// `save(pic, "name.svg")`: the file asked for.
     pub save_to: Option<String>,

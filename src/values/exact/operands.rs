@@ -14,7 +14,11 @@ use crate::values::value::Value;
 /// moved in as the evaluator held them (boxed: no copy), copies, or a
 /// lone number held in the node.
 pub enum Operands {
+    /// The two operands of a binary operator, moved in as the evaluator
+    /// held them.
     Pair(Box<Value>, Box<Value>),
+    /// Copies of the operands (or a builtin call's arguments given away),
+    /// in order.
     Copied(Box<[Value]>),
     /// A lone scalar operand as typed (None) or a fraction held inline
     /// (`sin(t)` of a range's item, the θ of `Rotz(k/100)`): its float and
