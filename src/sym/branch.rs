@@ -16,7 +16,10 @@ use num_traits::{One, Zero};
 /// (−π, π).
 #[derive(Debug, Clone, Default)]
 pub struct Branch {
+    /// Expressions assumed > 0 on this branch (`cos(b)` for ZYX angles).
     pub positive: Vec<Expr>,
+    /// Angles assumed in (−π, π), the range where the closed form (a
+    /// matrix log's θ, §3.2.3.3; a ZYX angle) gives back the angle itself.
     pub angles: Vec<Expr>,
 }
 

@@ -21,8 +21,20 @@ pub use super::surd::Surd;
 #[derive(Debug, Clone, PartialEq)]
 #[allow(clippy::large_enum_variant)]
 pub enum Coef {
-    Exact { re: Surd, im: Surd },
-    Approx { re: f64, im: f64 },
+    /// re + i·im, each exact.
+    Exact {
+        /// The real part.
+        re: Surd,
+        /// The imaginary part.
+        im: Surd,
+    },
+    /// re + i·im in floating point.
+    Approx {
+        /// The real part.
+        re: f64,
+        /// The imaginary part.
+        im: f64,
+    },
 }
 
 impl Eq for Coef {}

@@ -15,18 +15,21 @@ use std::sync::Arc;
 use super::coef::{Coef, Rat};
 use num_traits::{One, Zero};
 
-/// A real symbol: a `given` name, possibly a function of time (`given
-/// theta(t) : scalar`: `time` names its variable t), differentiated `dots`
-/// times (θ̇ has one). The time variable t itself is a plain symbol. A
-/// component of a `given` vector, `w[2]`, has its 1-based `index`; `unit`
-/// marks ω̂₁, ω̂₂, ω̂₃ of an axis assumed to be a unit vector, where
-/// ω̂₁² + ω̂₂² + ω̂₃² = 1 holds ([`super::axis`]).
+/// A real symbol: a `given` name, a function of time or a rate of one, or
+/// a component of either. The time variable t itself is a plain symbol.
 #[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub struct Symbol {
+    /// The name as declared, `theta`.
     pub name: Arc<str>,
+    /// For a function of time (`given theta(t) : scalar`), its variable t.
     pub time: Option<Arc<str>>,
+    /// How many times it is differentiated by time (θ̇ has one).
     pub dots: u8,
+    /// The 1-based index of a component of a `given` vector, `w[2]`; 0
+    /// otherwise.
     pub index: u8,
+    /// One of ω̂₁, ω̂₂, ω̂₃ of an axis assumed to be a unit vector, where
+    /// ω̂₁² + ω̂₂² + ω̂₃² = 1 holds ([`super::axis`]).
     pub unit: bool,
 }
 
@@ -68,15 +71,25 @@ impl Symbol {
 /// A function kept as a call.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Func {
+    /// sin of an argument not linear in angles (else it is a sum of z's).
     Sin,
+    /// cos of an argument not linear in angles.
     Cos,
+    /// tan x.
     Tan,
+    /// asin x, in [−π/2, π/2].
     Asin,
+    /// acos x, in [0, π], as in θ = acos((tr R − 1)/2) (§3.2.3.3).
     Acos,
+    /// atan x.
     Atan,
+    /// atan2(y, x), the angle of (x, y): two arguments, y first.
     Atan2,
+    /// The non-negative square root.
     Sqrt,
+    /// |x|.
     Abs,
+    /// eˣ of a real x.
     Exp,
     /// 1/x of a sum.
     Recip,
@@ -107,7 +120,9 @@ impl Func {
 /// comparison, not a walk of their arguments.
 #[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub struct Call {
+    /// The function applied.
     pub f: Func,
+    /// Its arguments in canonical form (two for atan2, else one).
     pub args: Vec<Expr>,
 }
 
@@ -121,6 +136,7 @@ pub enum Var {
     Sym(Symbol),
     /// e^{iθ} of a symbol θ.
     Z(Symbol),
+    /// A function kept as a call, shared.
     Call(Arc<Call>),
 }
 
@@ -130,6 +146,7 @@ pub type Mono = Vec<(Var, i32)>;
 /// A canonical expression: monomials to nonzero coefficients.
 #[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord, Default, Hash)]
 pub struct Expr {
+    /// Each monomial with its coefficient; the empty map is 0.
     pub terms: BTreeMap<Mono, Coef>,
 }
 
@@ -143,7 +160,9 @@ pub const MAX_DEPTH: usize = 100;
 /// a Lagrangian).
 #[derive(Debug, Clone, PartialEq)]
 pub enum Wrt {
+    /// By a plain symbol t: the total derivative d/dt (the chain rule).
     Time(Symbol),
+    /// By a function of time or a rate, q or q̇: the partial derivative.
     Sym(Symbol),
 }
 

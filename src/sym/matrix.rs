@@ -10,8 +10,11 @@ use num_traits::{One, Zero};
 /// A rows × cols matrix of expressions, row-major.
 #[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord)]
 pub struct Mat {
+    /// Number of rows.
     pub rows: usize,
+    /// Number of columns.
     pub cols: usize,
+    /// The rows × cols entries, row by row (entry (i, j) at i·cols + j).
     pub data: Vec<Expr>,
 }
 

@@ -11,17 +11,22 @@ use num_traits::One;
 /// The output form.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Mode {
+    /// Plain text: `cos(theta1)`, `sqrt(2)`, `π`.
     #[default]
     Text,
     /// The book's shorthand: c₁ = cos θ1, s₁₂ = sin(θ1 + θ2).
     Short,
+    /// LaTeX source: `\sqrt{2}`, `\pi`.
     Latex,
 }
 
 /// How to print: the form and the decimals of inexact coefficients.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Style {
+    /// Text, the book's shorthand or LaTeX.
     pub mode: Mode,
+    /// Decimal places of a coefficient with no exact form (trailing zeros
+    /// dropped).
     pub digits: usize,
 }
 

@@ -23,7 +23,14 @@ use num_traits::{One, Signed, ToPrimitive};
 #[derive(Clone)]
 pub enum Rat {
     /// num/den, reduced, den > 0; `typed`: made from a typed decimal.
-    Small { num: i64, den: i64, typed: bool },
+    Small {
+        /// The numerator.
+        num: i64,
+        /// The denominator, > 0.
+        den: i64,
+        /// Made from a typed decimal: printed as one (`0.425`).
+        typed: bool,
+    },
     /// A fraction too large for [`Rat::Small`].
     Big(Box<BigRational>),
 }

@@ -30,8 +30,12 @@ type Cost = (usize, usize);
 /// angle) powers of cos θ and sin θ with sin² or with cos² eliminated.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Power {
+    /// Cosines and sines of angle sums, the book's c₁₂ = cos(θ1 + θ2).
     Linear,
+    /// Powers of cos θ, sin² θ replaced by 1 − cos² θ (sin θ at most
+    /// once in a term).
     Cos,
+    /// Powers of sin θ, cos² θ replaced by 1 − sin² θ.
     Sin,
 }
 
