@@ -21,8 +21,11 @@ use crate::values::value::Value;
 /// error kind and the message. The interpreter adds the span and signature.
 #[derive(Debug, Clone)]
 pub struct ArgError {
+    /// The 0-based argument at fault; None for the call as a whole.
     pub arg: Option<usize>,
+    /// The kind of error (usually a type error).
     pub kind: ErrorKind,
+    /// The message a user sees.
     pub message: String,
 }
 
@@ -87,11 +90,18 @@ impl FromIterator<Span> for Spans {
 
 /// The evaluated arguments of one call.
 pub struct Args<'a> {
+    /// The builtin's book name ([`super::Builtin::name`]), for messages.
     pub name: &'static str,
+    /// Its signature, shown as help under an argument error.
     pub signature: &'static str,
+    /// The argument values in order.
     pub vals: Vec<Value>,
+    /// Where each argument stands in the text.
     pub spans: Spans,
+    /// The whole call, for errors about no one argument.
     pub call_span: Span,
+    /// Where warnings go (a near-group matrix projected, a conditioning
+    /// note), shown with the result.
     pub warnings: &'a mut Vec<Diagnostic>,
     /// Each argument's static kind and frames, and its source text (what
     /// `draw` labels and frames a picture with); empty where unknown.
@@ -106,9 +116,11 @@ pub struct Args<'a> {
 }
 
 impl Args<'_> {
+    /// How many arguments the call has.
     pub fn len(&self) -> usize {
         self.vals.len()
     }
+    /// True for a call with no arguments, `f()`.
     pub fn is_empty(&self) -> bool {
         self.vals.is_empty()
     }

@@ -38,19 +38,31 @@ use crate::values::value::Value;
 /// The topic a builtin belongs to, for `:help`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Area {
+    /// Rotations: so(3) and SO(3), `[ω]`, exp and log (§3.2).
     Rotations,
+    /// Transforms: SE(3) and SE(2), `RpToTrans`, `TransInv` (§3.1, §3.3.1).
     Transforms,
+    /// Twists, screw axes, wrenches and adjoints (§3.3.2–§3.4).
     Twists,
+    /// Other orientation representations: Euler angles, quaternions
+    /// (Appendix B).
     Representations,
+    /// Membership tests and projections onto SO(3)/SE(3) (§3.6).
     Tests,
+    /// Linear algebra on any matrix: the matrix exp and log, inv, det,
+    /// trace, norm, cross, dot…
     LinearAlgebra,
+    /// Scalar functions (sin, atan2, sqrt…) and the calculus on symbols
+    /// (diff, subs, simplify, solve).
     Scalars,
+    /// Mechanisms: Grübler's formula and C-space (chapter 2).
     Mechanisms,
     /// Lists, ranges and pictures (LANGUAGE.md §12).
     Pictures,
 }
 
 impl Area {
+    /// Every area, in the order `:help` lists them.
     pub const ALL: [Area; 9] = [
         Area::Rotations,
         Area::Transforms,
@@ -62,6 +74,7 @@ impl Area {
         Area::Mechanisms,
         Area::Pictures,
     ];
+    /// The heading `:help` shows for the area, with its sections.
     pub fn title(self) -> &'static str {
         match self {
             Area::Rotations => "rotations, so(3) and SO(3) (§3.2)",
@@ -80,6 +93,7 @@ impl Area {
 /// What an argument must be, checked without numbers.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Param {
+    /// A scalar (an angle θ, a length, a pitch h).
     Scalar,
     /// A vector of this length (a twist, screw or wrench is a 6-vector).
     Vec(usize),
@@ -188,14 +202,20 @@ pub enum FrameRule {
 pub enum Typing {
     /// Fixed parameters, a fixed result kind, a frame rule.
     Fixed {
+        /// What each argument must be, in order; their count is the arity.
         params: &'static [Param],
+        /// The result's kind, whatever the arguments.
         ret: fn() -> Kind,
+        /// How the result's frames follow from the arguments'.
         frames: FrameRule,
     },
     /// Overloaded or shape-dependent: a rule of its own. `arity` is
     /// (min, max) arguments.
     Custom {
+        /// The fewest and most arguments accepted.
         arity: (usize, usize),
+        /// The result's kind and frames from the arguments', or why the
+        /// arguments are refused.
         rule: fn(&[Ty]) -> Result<Ty, ArgError>,
     },
 }
@@ -214,8 +234,11 @@ pub struct Builtin {
     pub doc: &'static str,
     /// A runnable example.
     pub example: &'static str,
+    /// The `:help` topic it is listed under.
     pub area: Area,
+    /// How the checker types a call without numbers.
     pub typing: Typing,
+    /// The implementation on evaluated arguments.
     pub eval: fn(&mut Args) -> Result<Value, Diagnostic>,
 }
 
