@@ -77,7 +77,9 @@ impl End {
 /// A framed factor as a map from coordinates at `inn` to coordinates at `out`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Arrow {
+    /// Where its results are expressed: {a} of T_ab.
     pub out: End,
+    /// Where its inputs are expressed: {b} of T_ab.
     pub inn: End,
 }
 
@@ -140,7 +142,10 @@ pub enum Clash {
     /// factor's outer frame.
     Inner(Frame, Frame),
     /// A transposed transform is a factor (`left` says which side).
-    Transposed { left: bool },
+    Transposed {
+        /// True when it is the left factor.
+        left: bool,
+    },
 }
 
 /// The factor of a value, by the first table of the module

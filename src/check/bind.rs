@@ -230,7 +230,10 @@ pub fn named_group(name: &str, kind: &Kind) -> Option<Kind> {
 /// frame to its unmoved letter.
 #[derive(Debug, Clone)]
 pub struct Bound {
+    /// The binding's type: the value's, with the kind and frames its name
+    /// claims.
     pub ty: Ty,
+    /// The renaming warning, if any.
     pub warning: Option<RuleError>,
 }
 
@@ -243,7 +246,10 @@ pub fn bind(name: &str, ty: &Ty) -> Result<Bound, RuleError> {
 /// value when frames are not checked (its kind, the frames it claims).
 #[derive(Debug, Clone)]
 pub struct Refused {
+    /// Why the name does not fit the value.
     pub error: RuleError,
+    /// The type the name gives the value anyway (its kind, the frames it
+    /// claims), used when frames are not checked (`--frames warn|off`).
     pub ty: Ty,
 }
 

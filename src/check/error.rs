@@ -50,11 +50,20 @@ impl From<Refusal> for RuleError {
 /// What a [`RuleError`] says: the texts of the diagnostic's parts.
 #[derive(Debug, Clone, Default)]
 pub struct Refusal {
+    /// Type, frame, domain…; None: the reader's default (a type error for
+    /// an operation, a frame warning for a binding).
     pub kind: Option<ErrorKind>,
+    /// The headline: what is wrong.
     pub message: String,
+    /// The label under the left operand (`{b} in {a}`), or under the name
+    /// of a binding; empty for none.
     pub lhs: String,
+    /// The label under the right operand, or the bound value; empty for none.
     pub rhs: String,
+    /// The label on the operator (`inner frames must agree: b ≠ c`); empty
+    /// for none.
     pub op: String,
+    /// A `help:` line suggesting the fix (`did you mean inv(T_cb)?`).
     pub help: Option<String>,
     /// The operand the refusal is about, when it is one argument of a
     /// builtin call (its table row's check); None: the operation. (Small,
@@ -87,7 +96,9 @@ impl RuleError {
 /// (`did you mean inv(T_cb)?`).
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Operands<'a> {
+    /// The left operand.
     pub lhs: Operand<'a>,
+    /// The right operand.
     pub rhs: Operand<'a>,
 }
 

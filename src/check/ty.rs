@@ -11,7 +11,9 @@ pub use super::name::Name;
 /// every node).
 #[derive(Debug, Clone, Copy, Eq)]
 pub enum Kind {
+    /// A real number: an angle θ, a length, a pitch h.
     Scalar,
+    /// `true` or `false`: a literal, or the verdict of a comparison.
     Bool,
     /// A column n-vector.
     Vector(Option<usize>),
@@ -25,9 +27,13 @@ pub enum Kind {
     So3,
     /// A twist matrix `[V]` ∈ se(3) (§3.3.2).
     Se3,
+    /// A planar rotation R ∈ SO(2) (Definition 3.2).
     SO2,
+    /// A planar transform T ∈ SE(2) (Definition 3.5).
     SE2,
+    /// A 2×2 skew-symmetric matrix ∈ so(2), the algebra of SO(2).
     So2,
+    /// A 3×3 planar twist matrix ∈ se(2), the algebra of SE(2).
     Se2,
     /// A twist V = (ω, v) (§3.3.2).
     Twist,
@@ -35,9 +41,9 @@ pub enum Kind {
     Screw,
     /// A wrench F = (m, f) (§3.4).
     Wrench,
-    /// The 6×6 adjoint `[Ad_T]` (Definition 3.6); `transposed` for
-    /// `[Ad_T]ᵀ`, which acts on wrenches (Prop. 3.17).
+    /// The 6×6 adjoint `[Ad_T]` (Definition 3.6).
     Adjoint {
+        /// `[Ad_T]ᵀ`, which acts on wrenches (Prop. 3.17).
         transposed: bool,
     },
     /// A mechanism (chapter 2).
@@ -379,12 +385,15 @@ impl Frames {
         }
     }
 
+    /// {a}←{b}, the tag of T_ab.
     pub fn pair(a: &str, b: &str) -> Frames {
         Frames::Pair(Frame::named(a), Frame::named(b))
     }
+    /// In {a}, the tag of a twist V_a.
     pub fn one(a: &str) -> Frames {
         Frames::One(Frame::named(a))
     }
+    /// True for an untagged value.
     pub fn is_none(&self) -> bool {
         matches!(self, Frames::None)
     }
@@ -494,7 +503,9 @@ impl Moves {
 /// The checker's knowledge of an expression: kind and frames.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct Ty {
+    /// What it is (SO(3), a twist, a scalar…).
     pub kind: Kind,
+    /// Its frame tag: {a}←{b}, in {a}, or none.
     pub frames: Frames,
     /// For a plain matrix that is a group element times an element of its
     /// Lie algebra, g·X or X·g (`T_sb [V_b]` = Ṫ_sb, (3.75)), the algebra:
@@ -518,6 +529,7 @@ pub struct Ty {
 }
 
 impl Ty {
+    /// A value of `kind` tagged `frames`, nothing more known.
     pub fn new(kind: Kind, frames: Frames) -> Ty {
         Ty {
             kind,
@@ -532,6 +544,7 @@ impl Ty {
     pub fn plain(kind: Kind) -> Ty {
         Ty::new(kind, Frames::None)
     }
+    /// An untagged scalar.
     pub fn scalar() -> Ty {
         Ty::plain(Kind::Scalar)
     }
