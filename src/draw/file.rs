@@ -7,7 +7,9 @@ use crate::values::value::Picture;
 /// SVG or PNG, by the file name's ending.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Format {
+    /// A `.svg` file: the picture as drawn, vector graphics.
     Svg,
+    /// A `.png` file: the SVG rendered to pixels.
     Png,
 }
 

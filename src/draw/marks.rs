@@ -19,25 +19,55 @@ pub type P3 = Vector3<f64>;
 pub enum Mark {
     /// A frame's axes: origin and the unit x̂, ŷ, ẑ (ẑ left out in the plane).
     Frame {
+        /// The frame's origin: p of T = (R, p) (3.62); 0 for a rotation.
         origin: P3,
+        /// The unit axes x̂, ŷ, ẑ: the columns of R.
         axes: [P3; 3],
+        /// `{b}` for a value tagged {a}←{b}, or the name as written; may be
+        /// empty.
         label: String,
     },
     /// A screw axis: the line through q along ŝ, with its pitch.
     Screw {
+        /// A point on the axis, q = ω × v/‖ω‖² (§3.3.2.2); 0 for a pure
+        /// translation.
         q: P3,
+        /// The unit direction ŝ of the axis: ω/‖ω‖, or v/‖v‖ when ω = 0.
         s: P3,
+        /// The pitch h = ωᵀv/‖ω‖²; infinite for a pure translation.
         pitch: f64,
+        /// The label beside the axis; may be empty.
         label: String,
     },
     /// An arrow from `from` along `dir` (a vector, a pure translation).
-    Arrow { from: P3, dir: P3, label: String },
+    Arrow {
+        /// The tail: the origin, or p of `arrow(p, v)`.
+        from: P3,
+        /// The arrow itself, tail to head.
+        dir: P3,
+        /// The label at the arrow; may be empty.
+        label: String,
+    },
     /// A point.
-    Dot { at: P3, label: String },
+    Dot {
+        /// Where the point is.
+        at: P3,
+        /// The label beside it; empty for an item of a list.
+        label: String,
+    },
     /// The fixed point of a planar motion.
-    Centre { at: P3, label: String },
+    Centre {
+        /// The point c in the plane with v = −ω × c, about which the planar
+        /// twist rotates (§3.3.2.1).
+        at: P3,
+        /// `centre of V` (or `centre`).
+        label: String,
+    },
     /// The origins of a list of frames in order: the path they follow.
-    Path { points: Vec<P3> },
+    Path {
+        /// The frames' origins, in the list's order.
+        points: Vec<P3>,
+    },
 }
 
 /// A panel's marks, its reference frame and whether it lies in the plane.
