@@ -18,11 +18,19 @@ pub mod view;
 /// `kind error:` header.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum ErrorKind {
+    /// The text does not parse.
     Syntax,
+    /// An unknown name (a "did you mean" suggestion may follow).
     Name,
+    /// A value of the wrong kind or shape: a rotation where a twist is
+    /// wanted, a transform times a free vector (`T * ω`), `.R` of a vector.
     Type,
+    /// Frames that do not cancel, `T_ab * T_cb` (LANGUAGE.md §6).
     Frame,
+    /// A value outside where an operation is defined: a matrix too far
+    /// from SO(3), a singular inverse, division by zero.
     Domain,
+    /// A builtin called with the wrong number of arguments.
     Arity,
     /// A failed `assert` (LANGUAGE.md §3).
     Assert,
@@ -46,7 +54,10 @@ impl ErrorKind {
 /// Whether a diagnostic stops the statement or is only reported.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Severity {
+    /// The statement stops; nothing is bound.
     Error,
+    /// Reported beside the result, which stands (a matrix projected onto
+    /// SO(3), gimbal lock).
     Warning,
     /// A remark on a correct result (printed as `note:`).
     Note,
@@ -55,7 +66,9 @@ pub enum Severity {
 /// A secondary label: a span with a short note under it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Label {
+    /// The text the label points at (an operand).
     pub span: Span,
+    /// The note, `{b} in {a}`.
     pub message: String,
 }
 
@@ -84,14 +97,19 @@ impl std::ops::DerefMut for Diagnostic {
 /// What a [`Diagnostic`] says and where.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Detail {
+    /// The kind of error, shown as `kind error:` and in JSON.
     pub kind: ErrorKind,
+    /// Error, warning or note.
     pub severity: Severity,
+    /// The headline.
     pub message: String,
     /// Where the caret goes.
     pub span: Span,
     /// A note under the primary caret (may be empty).
     pub primary_label: String,
+    /// Notes under other spans, such as both operands of a frame error.
     pub labels: Vec<Label>,
+    /// The `help:` line: a fix to try.
     pub help: Option<String>,
 }
 
