@@ -23,7 +23,12 @@ use crate::syntax::needs_more_input;
 #[derive(Debug, Clone, PartialEq)]
 pub enum Output {
     /// Text on stdout (a command's answer) or stderr (warnings).
-    Stream { stderr: bool, text: String },
+    Stream {
+        /// True for stderr (warnings), false for stdout.
+        stderr: bool,
+        /// The text, newlines included.
+        text: String,
+    },
     /// A value: its MIME bundle (`text/plain`, `text/latex`, …).
     Data(Map<String, J>),
     /// The error that ended the cell.
@@ -35,8 +40,11 @@ pub enum Output {
 /// diagnostic (header, source line, carets, help), one line per entry.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Failure {
+    /// The error kind, `frame`.
     pub ename: String,
+    /// The message.
     pub evalue: String,
+    /// The rendered diagnostic, one line per entry.
     pub traceback: Vec<String>,
 }
 
@@ -44,6 +52,7 @@ pub struct Failure {
 /// history and the execution count.
 #[derive(Debug, Default)]
 pub struct Notebook {
+    /// The bindings and settings every cell runs in.
     pub session: Session,
     /// The cells run with `store_history`, in order; cell `i` is
     /// execution count `i + 1`.
@@ -60,9 +69,13 @@ pub struct Notebook {
 /// no end, so the time of one run is the time of one cell.
 #[derive(Debug, Clone)]
 pub struct Options {
+    /// `--frames`, `--digits`, … as for a script.
     pub settings: Settings,
+    /// Where `save` may write (`--no-write`, `--write-dir`).
     pub gate: Gate,
+    /// `--max-memory` and the interrupt flag.
     pub budget: Budget,
+    /// `--timeout`, applied to each cell; None: no limit.
     pub timeout: Option<Duration>,
 }
 
