@@ -38,6 +38,7 @@ pub enum FrameMode {
 }
 
 impl FrameMode {
+    /// The mode `--frames` names (`strict`, `warn`, `off`), or None.
     pub fn parse(s: &str) -> Option<FrameMode> {
         match s {
             "strict" => Some(FrameMode::Strict),
@@ -46,6 +47,7 @@ impl FrameMode {
             _ => None,
         }
     }
+    /// The mode's name as `--frames` takes it.
     pub fn as_str(self) -> &'static str {
         match self {
             FrameMode::Strict => "strict",
@@ -94,7 +96,10 @@ pub enum Mode {
 /// A name's binding: its static type and (when running) its value.
 #[derive(Debug, Clone)]
 pub struct Binding {
+    /// The kind and frames the checker gave the name.
     pub ty: Ty,
+    /// The value (for a `given` symbol, the symbol itself); None when only
+    /// checked, with no numbers.
     pub val: Option<Value>,
     /// True for `given` symbols.
     pub symbolic: bool,
@@ -142,7 +147,9 @@ impl Binding {
 /// A value a binding is made from ([`Env::set_made`]): lent, and
 /// copied into the binding (its numbers shared), or given, and moved in.
 pub enum Stored<'a> {
+    /// Lent: copied into the binding, its numbers shared.
     Copied(&'a Value),
+    /// Given: moved into the binding.
     Moved(Box<Value>),
 }
 
@@ -194,7 +201,9 @@ pub struct Relied {
 /// so an error never leaves a partial change behind.
 #[derive(Debug, Clone, Default)]
 pub struct Env {
+    /// Each bound name (values, `given` symbols, `ans`) with its binding.
     pub vars: NameMap<Binding>,
+    /// The user functions `f(x) = …` by name.
     pub fns: NameMap<Rc<UserFn>>,
     /// What each name bound so far says about its value (the frames of its
     /// subscript, its book letter), read once per name.
@@ -280,6 +289,8 @@ fn binding_numbers(b: &Binding) -> u64 {
 }
 
 impl Env {
+    /// The binding of `name`; while [`Env::hold`] is in force, a `given`
+    /// name bound to a number is read as its symbol.
     #[inline]
     pub fn get(&self, name: impl AsKey) -> Option<&Binding> {
         let key = name.key();
@@ -303,6 +314,8 @@ impl Env {
     pub fn get_unheld(&self, name: impl AsKey) -> Option<&Binding> {
         self.vars.get(&name.key())
     }
+    /// Binds `name` to `b`, replacing any binding it had (a rebound name is
+    /// no longer held).
     #[inline]
     pub fn set(&mut self, name: impl AsKey, mut b: Binding) {
         let key = name.key();

@@ -12,11 +12,13 @@ use crate::check::ty::{Frame, Frames, Kind};
 /// A bound value X_ab that maps coordinates in {b} to {a}.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Edge {
+    /// The bound name, `T_sb`.
     pub name: String,
     /// The frame the value maps to ({a} of X_ab).
     pub from: Frame,
     /// The frame the value maps from ({b} of X_ab).
     pub to: Frame,
+    /// SO(3), SE(3), … of the value.
     pub kind: Kind,
 }
 
@@ -38,8 +40,13 @@ type Pairs = BTreeMap<(String, String), Vec<String>>;
 /// outermost frame meets them), and the quantities of each frame.
 #[derive(Debug, Clone, Default)]
 pub struct Component {
+    /// Its frames' names, sorted.
     pub frames: Vec<String>,
+    /// Each frame pair ({a}, {b}) with the names of the values X_ab
+    /// joining them, in the order a walk from the outermost frame meets them.
     pub edges: Vec<((String, String), Vec<String>)>,
+    /// For each frame, the names of the quantities (points, twists,
+    /// wrenches) expressed in it.
     pub quantities: BTreeMap<String, Vec<String>>,
 }
 

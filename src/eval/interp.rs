@@ -19,7 +19,9 @@ pub use super::outcome::{Names, Outcome};
 /// (in `chasles check` of nothing at all).
 #[derive(Debug, Clone)]
 pub struct Typed {
+    /// Its kind and frames, as the checker inferred them.
     pub ty: Ty,
+    /// Its value; None when only checking.
     pub val: Option<Box<Value>>,
 }
 
@@ -40,9 +42,13 @@ impl Typed {
 
 /// Runs statements against an environment.
 pub struct Interp<'a> {
+    /// The session's bindings, read and added to.
     pub env: &'a mut Env,
+    /// The source text the statements' spans point into.
     pub src: &'a str,
+    /// Check only, or check and evaluate.
     pub mode: Mode,
+    /// What a frame mismatch is: an error, a warning or nothing (`--frames`).
     pub frames: FrameMode,
     /// Warnings of the current statement.
     pub warnings: Vec<Diagnostic>,
@@ -93,6 +99,7 @@ pub fn budget_error(stop: crate::budget::Stop, span: Span) -> Diagnostic {
 pub const MAX_CALL_DEPTH: usize = 64;
 
 impl<'a> Interp<'a> {
+    /// An interpreter over `env` for statements parsed from `src`.
     pub fn new(env: &'a mut Env, src: &'a str, mode: Mode, frames: FrameMode) -> Interp<'a> {
         Interp {
             env,

@@ -9,10 +9,12 @@ use crate::syntax::ast::{Name, Span};
 /// What a successful statement produced, for printing.
 #[derive(Debug, Clone)]
 pub struct Outcome {
+    /// The whole statement, without its terminator.
     pub span: Span,
     /// The bound names (one for `x = ..`, several for `(a, b) = ..`,
     /// none for a bare expression).
     pub names: Names,
+    /// The value's kind and frames.
     pub ty: Ty,
     /// The value, boxed as [`super::interp::Typed`]'s is (none when checking).
     pub val: Option<Box<Value>>,
