@@ -93,7 +93,9 @@ impl Operand for &Ty {
 /// written (for help text) and a literal exponent (`X^-1`).
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Hints<'a> {
+    /// Both operands as written.
     pub operands: Operands<'a>,
+    /// The exponent of `X ^ e` when known: a literal, or its value.
     pub exponent: Option<f64>,
 }
 

@@ -13,9 +13,13 @@ use crate::values::value::Value;
 /// Where a builtin call stands, for its messages: the arguments' spans
 /// and source texts, the call's span, and the statement's warnings.
 pub struct Site<'w> {
+    /// Where each argument stands.
     pub spans: Spans,
+    /// The whole call.
     pub call_span: Span,
+    /// Each argument's static type and source text; empty where unknown.
     pub typed: Vec<(Ty, String)>,
+    /// The statement's warnings, added to.
     pub warnings: &'w mut Vec<Diagnostic>,
     /// The θ = π decision of a logarithm by certified arithmetic
     /// (`crate::decide::turn`, given by the caller; None: by the floats).
