@@ -36,13 +36,17 @@ pub enum Effect {
     Picture {
         /// `save`'s name or the printed picture's file.
         to: PictureTo,
+        /// The picture to draw.
         picture: Rc<Picture>,
     },
     /// Bytes as they are (the REPL's `:save`); without `overwrite` an
     /// existing file is kept and the write fails.
     Write {
+        /// The file asked for (`~/` already expanded).
         path: PathBuf,
+        /// The contents.
         bytes: Vec<u8>,
+        /// Replace an existing file (`:save!`) rather than fail.
         overwrite: bool,
     },
 }
