@@ -9,11 +9,14 @@
 /// A half-open byte range `start..end` into the source text.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 pub struct Span {
+    /// Byte offset where it starts.
     pub start: usize,
+    /// Byte offset just past its end.
     pub end: usize,
 }
 
 impl Span {
+    /// The bytes `start..end`.
     pub fn new(start: usize, end: usize) -> Span {
         Span { start, end }
     }
@@ -31,11 +34,14 @@ impl Span {
 /// the end of a long script does not rescan the whole script.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Anchor {
+    /// A byte offset into the source.
     pub offset: usize,
+    /// The 1-based line it lies on.
     pub line: usize,
 }
 
 impl Anchor {
+    /// The start of the text: offset 0 on line 1.
     pub const START: Anchor = Anchor { offset: 0, line: 1 };
 }
 
@@ -105,6 +111,7 @@ pub struct Lines<'a> {
 }
 
 impl<'a> Lines<'a> {
+    /// A cursor at the start of `src`, line 1.
     pub fn new(src: &'a str) -> Lines<'a> {
         Lines {
             src: src.as_bytes(),
