@@ -18,9 +18,11 @@ use crate::syntax;
 /// Output settings.
 #[derive(Debug, Clone, Copy)]
 pub struct Settings {
+    /// `--frames strict|warn|off` (LANGUAGE.md §6).
     pub frames: FrameMode,
     /// Decimals in text output (LANGUAGE.md §10).
     pub digits: usize,
+    /// `--json`: one JSON object per statement (LANGUAGE.md §1), not text.
     pub json: bool,
     /// Print values near simple closed forms as `1/√2`, `π/6` (the REPL's
     /// `:exact`; text output only).
@@ -56,7 +58,9 @@ impl Settings {
 /// The result of one statement.
 #[derive(Debug, Clone)]
 pub struct Report {
+    /// What it produced, or the error that stopped it (nothing bound).
     pub result: Result<Outcome, Diagnostic>,
+    /// Its warnings and notes, in order.
     pub warnings: Vec<Diagnostic>,
     /// Where the statement's line starts, and its number: the statement's
     /// line ([`Report::line`]), and where its diagnostics number lines
@@ -162,7 +166,9 @@ impl Report {
 /// binds nothing).
 #[derive(Debug, Clone, Default)]
 pub struct Session {
+    /// The bindings and user functions so far.
     pub env: Env,
+    /// How values print and frames are checked.
     pub settings: Settings,
     /// The statements that ran without error, in order, as typed — what
     /// the REPL's `:save` writes and `:history` lists (scripts leave it
@@ -194,6 +200,8 @@ pub struct Session {
 }
 
 impl Session {
+    /// An empty session with `settings`, the default gate (pictures kept
+    /// in memory) and a fresh budget.
     pub fn new(settings: Settings) -> Session {
         Session {
             env: Env::default(),
