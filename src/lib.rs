@@ -88,6 +88,7 @@
 //! - [`cli`], [`repl`], [`kernel`], [`lsp`]: the dispatcher and the front
 //!   ends.
 #![forbid(unsafe_code)]
+#![warn(missing_docs)]
 // Errors carry spans, labels and help text; they are rare, so their size is not worth boxing.
 #![allow(clippy::result_large_err)]
 
