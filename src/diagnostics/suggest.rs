@@ -20,9 +20,19 @@ pub fn edit_distance(a: &str, b: &str) -> usize {
 /// or one that differs only in case or underscores. A candidate that
 /// shares nothing with the name (`S` → `I`: every character replaced) is
 /// no suggestion.
+///
+/// The answer depends on the set of candidates only, never on their order:
+/// ties (`R_sc` is one edit from both `R_sa` and `R_sb`) go to the shorter,
+/// then the first in text order. Callers pass the bindings of a session,
+/// kept in a hash map whose order differs from one process to the next, and
+/// `chasles check` and `chasles lsp` must name the same suggestion.
 pub fn did_you_mean<'a>(name: &str, candidates: &[&'a str]) -> Option<&'a str> {
     let squash = |s: &str| s.to_lowercase().replace('_', "");
-    if let Some(c) = candidates.iter().find(|c| squash(c) == squash(name)) {
+    if let Some(c) = candidates
+        .iter()
+        .filter(|c| squash(c) == squash(name))
+        .min_by_key(|c| (c.len(), **c))
+    {
         return Some(c);
     }
     let limit = (name.chars().count() / 3).max(1);
@@ -30,7 +40,7 @@ pub fn did_you_mean<'a>(name: &str, candidates: &[&'a str]) -> Option<&'a str> {
         .iter()
         .map(|c| (edit_distance(name, c), *c))
         .filter(|(d, c)| *d <= limit && *d < name.chars().count().max(c.chars().count()))
-        .min_by_key(|(d, c)| (*d, c.len()))
+        .min_by_key(|(d, c)| (*d, c.len(), *c))
         .map(|(_, c)| c)
 }
 
@@ -52,5 +62,19 @@ mod tests {
         assert_eq!(did_you_mean("qqqq", &["MatrixLog3"]), None);
         assert_eq!(did_you_mean("S", &["I", "e"]), None);
         assert_eq!(did_you_mean("x", &["x1", "I"]), Some("x1"));
+    }
+
+    /// A session's bindings come in hash-map order, different in every
+    /// process: the suggestion must not depend on it (`chasles check` and
+    /// `chasles lsp` named `R_sa` and `R_sb` for one unknown `R_sc`).
+    #[test]
+    fn ties_do_not_depend_on_the_order_of_the_candidates() {
+        let names = ["R_sb", "Rotz", "R_sa", "T_sc", "p_sc"];
+        let mut reversed = names;
+        reversed.reverse();
+        assert_eq!(did_you_mean("R_sc", &names), Some("R_sa"));
+        assert_eq!(did_you_mean("R_sc", &reversed), Some("R_sa"));
+        assert_eq!(did_you_mean("tab", &["T_ab", "Ta_b"]), Some("T_ab"));
+        assert_eq!(did_you_mean("tab", &["Ta_b", "T_ab"]), Some("T_ab"));
     }
 }
