@@ -197,6 +197,13 @@ pub struct Session {
     /// keeps a run on one thread: `CHASLES_THREADS=1`, for measurement
     /// and for the tests that compare the two.
     pub read_ahead: bool,
+    /// The lines of the session's script before the source being run: 0
+    /// for a script; in the REPL, the lines `:save` would write so far
+    /// ([`crate::frontend::save::run_recording_each`] sets it). A picture
+    /// printed but not saved is `draw-LINE.svg` by its statement's line in
+    /// that script, so that two inputs do not write one file, and `:save`
+    /// reruns to the same files (LANGUAGE.md §§11, 12).
+    pub lines_before: usize,
 }
 
 impl Session {
@@ -213,6 +220,7 @@ impl Session {
             interrupted: false,
             quiet: false,
             read_ahead: std::env::var_os("CHASLES_THREADS").is_none_or(|n| n != "1"),
+            lines_before: 0,
         }
     }
 
@@ -359,7 +367,7 @@ impl Session {
                             // Only a picture has more to do (checked here,
                             // without the call, for every other value).
                             if matches!(o.val.as_deref(), Some(Value::Picture(_))) {
-                                match Session::picture(o, anchor.line) {
+                                match Session::picture(o, self.lines_before + anchor.line) {
                                     Err(d) => report.result = Err(d),
                                     Ok(e) => report.effects.extend(e),
                                 }

@@ -374,3 +374,49 @@ fn hints() {
         start.elapsed()
     );
 }
+
+/// Each input is line 1 of its own source: printed pictures were all
+/// `draw-1.svg`, each input's overwriting the last one's, and `:save`'s
+/// script, rerun, wrote other files. A picture is named by the line its
+/// statement has in the script `:save` writes, as `chasles run` of that
+/// script names it (found by the front-end sweep, tests/frontends_agree.rs).
+#[test]
+fn printed_pictures_are_named_by_their_line_in_the_saved_script() {
+    let dir = common::scratch("repl-pictures");
+    let mut s = Session::new(Settings::default());
+    s.gate = chasles::effects::Gate::anywhere(Some(dir.join("repl")));
+    std::fs::create_dir_all(dir.join("repl")).unwrap();
+    let mut shown = String::new();
+    for input in [
+        "draw(Rotz(1))",
+        "x = 1; y = 2",
+        "T_ab * T_cb",
+        "M = [1, 0\n     0, 1]",
+        "draw(Rotz(2))",
+    ] {
+        shown.push_str(&execute(&mut s, input).out);
+    }
+    assert!(shown.contains("draw-2.svg"), "{shown}");
+    assert!(shown.contains("draw-7.svg"), "{shown}");
+    let mut files: Vec<String> = std::fs::read_dir(dir.join("repl"))
+        .unwrap()
+        .map(|f| f.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    files.sort();
+    assert_eq!(files, ["draw-2.svg", "draw-7.svg"]);
+    // The saved script, rerun, writes the same files.
+    execute(&mut s, &format!(":save {}", dir.join("s.chs").display()));
+    let (code, _, err) = common::run(&[
+        "run",
+        "--draw-dir",
+        &dir.join("run").to_string_lossy(),
+        &dir.join("s.chs").to_string_lossy(),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let mut rerun: Vec<String> = std::fs::read_dir(dir.join("run"))
+        .unwrap()
+        .map(|f| f.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    rerun.sort();
+    assert_eq!(rerun, files);
+}

@@ -31,6 +31,9 @@ pub fn run_recording_each(
     mut each: impl FnMut(&Report),
 ) -> usize {
     let mut accepted = Vec::new();
+    // (a picture printed in this input is named by its line in `:save`'s
+    // script, the header and the accepted statements before it)
+    session.lines_before = script_lines(session);
     let n = session.run(src, Mode::Run, false, |r| {
         each(r);
         if let Ok(outcome) = &r.result
@@ -44,6 +47,15 @@ pub fn run_recording_each(
     });
     session.accepted.extend(accepted);
     n
+}
+
+/// The lines of the script `:save` would write now.
+fn script_lines(session: &Session) -> usize {
+    1 + session
+        .accepted
+        .iter()
+        .map(|s| s.matches('\n').count() + 1)
+        .sum::<usize>()
 }
 
 /// `:history`: the accepted statements, numbered.
