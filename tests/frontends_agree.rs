@@ -739,19 +739,30 @@ fn repl(text: &str) -> Printed {
     p
 }
 
-/// A notebook session given the inputs of `text` as cells.
-fn notebook(text: &str) -> Printed {
+/// A notebook session given the inputs of `text` as cells: what it
+/// prints, and the `application/json` of each value, its line the
+/// script's.
+fn notebook(text: &str) -> (Printed, Vec<Value>) {
     let mut nb = Notebook::with(Options {
         gate: Gate::deny(),
         ..Options::default()
     });
     let mut p = Printed::default();
+    let mut json = Vec::new();
     for (line, input) in inputs(text) {
         let cell = format!("In[{}]", nb.next_count());
         nb.execute(&input, true, &mut |o| match o {
             Output::Data(b) => {
                 p.out.push_str(b["text/plain"].as_str().unwrap());
                 p.out.push('\n');
+                if let Some(j) = b.get("application/json") {
+                    // (read back from its text, as run's lines are: the
+                    // test's reading of a float may be off by a unit in the
+                    // last place, the same on both sides)
+                    let mut j: Value = serde_json::from_str(&j.to_string()).unwrap();
+                    j["line"] = json!(j["line"].as_u64().unwrap() as usize + line - 1);
+                    json.push(j);
+                }
             }
             Output::Stream { text, .. } => {
                 for (_, l, c, d) in rendered(&text, |n| n == cell) {
@@ -767,7 +778,31 @@ fn notebook(text: &str) -> Printed {
         })
         .ok();
     }
-    p
+    (p, json)
+}
+
+/// `chasles run --json --keep-going --no-write` of `files`: each file's
+/// objects that carry a value, without their `"file"`.
+fn run_json(files: &[&String]) -> Vec<Vec<Value>> {
+    let mut args = vec!["run", "--json", "--keep-going", "--no-write"];
+    args.extend(files.iter().map(|f| f.as_str()));
+    let (_, out, err) = common::run(&args);
+    assert!(!err.contains("panicked"), "{err}");
+    let mut by: BTreeMap<String, Vec<Value>> = BTreeMap::new();
+    for line in out.lines() {
+        let mut j: Value = serde_json::from_str(line).expect("a JSON line");
+        if j.get("value").is_none() {
+            continue;
+        }
+        let f = j.as_object_mut().unwrap().remove("file").unwrap();
+        by.entry(f.as_str().unwrap().to_string())
+            .or_default()
+            .push(j);
+    }
+    files
+        .iter()
+        .map(|f| by.remove(f.as_str()).unwrap_or_default())
+        .collect()
 }
 
 /// Why the REPL and a notebook cannot print what `run` prints for `text`,
@@ -857,7 +892,8 @@ fn the_repl_and_a_notebook_print_what_run_prints() {
     let ran = run_all(&dir, &files);
     let mut wrong = Vec::new();
     let (mut compared, mut skipped) = (0, BTreeMap::<&str, usize>::new());
-    for ((name, text), want) in cases.iter().zip(&ran) {
+    let mut in_notebook = Vec::new();
+    for (((name, text), want), file) in cases.iter().zip(&ran).zip(&files) {
         if let Some(why) = by_design(text, want) {
             *skipped.entry(why).or_default() += 1;
             continue;
@@ -866,17 +902,49 @@ fn the_repl_and_a_notebook_print_what_run_prints() {
         // (by default each case goes to one of the two, in turn, to stay
         // fast; CHASLES_SWEEP gives every case to both)
         let both = std::env::var_os("CHASLES_SWEEP").is_some();
-        let mut fronts = Vec::new();
-        if both || compared % 2 == 1 {
-            fronts.push(("REPL", repl(text)));
+        if (both || compared % 2 == 1)
+            && let Some(d) = compare(text, &repl(text), want, false)
+        {
+            wrong.push(format!("{name}: REPL\n{d}"));
         }
         if both || compared % 2 == 0 {
-            fronts.push(("notebook", notebook(text)));
-        }
-        for (who, got) in fronts {
-            if let Some(d) = compare(text, &got, want, who == "notebook") {
-                wrong.push(format!("{name}: {who}\n{d}"));
+            let (got, json) = notebook(text);
+            if let Some(d) = compare(text, &got, want, true) {
+                wrong.push(format!("{name}: notebook\n{d}"));
             }
+            in_notebook.push((name, file, json));
+        }
+    }
+    // The notebook's application/json is what `run --json` prints.
+    let json_files: Vec<&String> = in_notebook.iter().map(|c| c.1).collect();
+    for ((name, file, got), mut want) in in_notebook.iter().zip(run_json(&json_files)) {
+        // (a printed picture is shown inline, with no file to skip, §13)
+        let text = &cases[files.iter().position(|f| f == *file).unwrap()].1;
+        let lines: Vec<&str> = text.lines().collect();
+        for j in &mut want {
+            let line = j["line"].as_u64().unwrap() as usize;
+            let saves = lines.get(line - 1).is_some_and(|l| l.contains("save("));
+            let obj = j.as_object_mut().unwrap();
+            if let Some(Value::Array(ws)) = obj.get_mut("warnings") {
+                ws.retain(|w| {
+                    saves
+                        || !w["message"]
+                            .as_str()
+                            .unwrap()
+                            .contains("not written: writing files is turned off")
+                });
+                if ws.is_empty() {
+                    obj.remove("warnings");
+                }
+            }
+        }
+        if *got != want {
+            let i = got.iter().zip(&want).take_while(|(a, b)| a == b).count();
+            wrong.push(format!(
+                "{name}: notebook's application/json\n  notebook: {:?}\n  run --json: {:?}",
+                got.get(i),
+                want.get(i)
+            ));
         }
     }
     eprintln!("REPL or notebook vs run: {compared} scripts; not compared, by design: {skipped:?}");
