@@ -110,7 +110,7 @@ fn insert(rng: &mut Rng, t: &str, lines: &[&'static str]) -> String {
 
 /// One variant of `t` by a mutation picked at random; its name.
 fn variant(rng: &mut Rng, t: &str) -> (&'static str, String) {
-    match rng.below(10) {
+    match rng.below(11) {
         0 => ("frames swapped", swap_frames(rng, t)),
         1 => {
             let mut ls: Vec<String> = t.split('\n').map(str::to_string).collect();
@@ -197,7 +197,22 @@ fn variant(rng: &mut Rng, t: &str) -> (&'static str, String) {
             ),
         ),
         8 => ("CRLF", t.replace("\r\n", "\n").replace('\n', "\r\n")),
-        _ => ("byte-order mark", format!("\u{feff}{t}")),
+        9 => ("byte-order mark", format!("\u{feff}{t}")),
+        _ => (
+            "ans, explain, derive, brackets in comments",
+            insert(
+                rng,
+                t,
+                &[
+                    "Rotz(1)\nans * ans\nans[1, 2]",
+                    "explain log(Rotz(2))\nexplain T_zz * T_ab",
+                    "given T_ab, T_bc : SE3\nderive T_ac\nderive T_aq",
+                    "x = 1 # see (3.5 and [w\ny = [1, 2] # [\nx + y",
+                    "f(t) = t + (1, 2)\nf(1)\nf(2, 3)",
+                    "assert Rotz(1) ≈ Rotz(1.1)\nassert 1 == 1",
+                ],
+            ),
+        ),
     }
 }
 
@@ -984,4 +999,28 @@ fn difference(got: &Printed, want: &Printed) -> String {
         ));
     }
     s
+}
+
+/// `chasles check` and `chasles run` name the same fix for an unknown
+/// name: the help's `given` type was SE3 for every name in check mode and
+/// scalar in run mode for a name without an underscore (`given ω̂ : SE3`
+/// from `check` and the editor, `given ω̂ : scalar` from `run`), found by
+/// tests/sweeps/frontends_sweep.py comparing run with check.
+#[test]
+fn check_and_run_name_the_same_fix_for_an_unknown_name() {
+    let dir = common::scratch("unknown-names");
+    let text = "ω̂ * 2\nv + 1\nR_cd * (1, 0, 0)\ntheta_1 + 1\nV_s\nS1\nx = 2 x_max\n";
+    let file = dir.join("unknown.chs").to_string_lossy().into_owned();
+    std::fs::write(&file, text).unwrap();
+    let files = [file.clone()];
+    let checked = diagnostics_of(&["check"], &files);
+    let ran = diagnostics_of(&["run", "--keep-going"], &files);
+    let (checked, ran) = (placed(text, &checked[&file]), placed(text, &ran[&file]));
+    assert_eq!(checked.len(), 7, "{checked:?}");
+    assert_eq!(checked, ran);
+    let helps: Vec<&str> = checked.iter().map(|d| d.help.as_deref().unwrap()).collect();
+    assert!(helps[0].ends_with("given ω̂ : vec3"), "{helps:?}");
+    assert!(helps[1].ends_with("given v : scalar"), "{helps:?}");
+    assert!(helps[2].ends_with("given R_cd : SO3"), "{helps:?}");
+    assert!(helps[3].ends_with("given theta_1 : scalar"), "{helps:?}");
 }

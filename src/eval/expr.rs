@@ -368,7 +368,7 @@ impl Interp<'_> {
         if let Some(s) = suggest::did_you_mean(name, &candidates) {
             d = d.with_help(format!("did you mean '{s}'?"));
         } else {
-            d = d.with_help(super::slips::declare_it(name, self.mode == Mode::Check));
+            d = d.with_help(super::slips::declare_it(name));
         }
         Err(d)
     }

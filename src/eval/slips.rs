@@ -145,15 +145,64 @@ pub(super) fn function_as_value(name: &str) -> String {
 }
 
 /// The help for an unknown name with no near spelling: give it a value or
-/// declare it with `given` (§7) — a transform for a frame-tagged name or
-/// in `check` mode, most often a scalar otherwise.
-pub(super) fn declare_it(name: &str, checking: bool) -> String {
-    let ty = if checking || name.contains('_') {
-        "SE3"
-    } else {
-        "scalar"
+/// declare it with `given` (§7), with the type the name reads as in the
+/// book's letters — `R_ab` SO3, `T_ab` SE3, `V_s` twist, `S1`, `B_b` screw,
+/// `F_b` wrench, a vector with one frame (`p_b`, `w_s`) or a hat (`ω̂`)
+/// vec3, a plain name (`x`, `theta_1`) scalar. The same whatever the mode:
+/// `chasles check` (and the editor, which checks) and `chasles run` give
+/// one help for one script (it said `given v : SE3` in `check` and
+/// `given v : scalar` in `run`, and `given theta_1 : SE3` for any name with
+/// an underscore).
+pub(super) fn declare_it(name: &str) -> String {
+    use crate::syntax::ident::{NameFrames, base_name, name_frames};
+    let base = base_name(name);
+    let letter = base
+        .chars()
+        .next()
+        .filter(|_| base.chars().skip(1).all(|c| c.is_ascii_digit()));
+    let ty = match (name_frames(name), letter) {
+        (NameFrames::Pair(..), Some('R')) => "SO3",
+        (NameFrames::Pair(..), Some('p')) => "vec3",
+        (NameFrames::Pair(..), _) => "SE3",
+        (_, Some('V')) => "twist",
+        (_, Some('S' | 'B')) => "screw",
+        (_, Some('F')) => "wrench",
+        (NameFrames::One(_), _) => "vec3",
+        (NameFrames::None, _) if name.contains('\u{302}') => "vec3",
+        (NameFrames::None, _) => "scalar",
     };
     format!("give it a value first ({name} = ...) or declare it: given {name} : {ty}")
+}
+
+#[cfg(test)]
+mod declare_it_tests {
+    use super::declare_it;
+
+    #[test]
+    fn the_type_is_read_from_the_name_alone() {
+        let ty = |n: &str| declare_it(n).rsplit(": ").next().unwrap().to_string();
+        for (name, want) in [
+            ("T_cb", "SE3"),
+            ("R_cd", "SO3"),
+            ("Ad_sb", "SE3"),
+            ("p_sb", "vec3"),
+            ("V_s", "twist"),
+            ("V", "twist"),
+            ("S1", "screw"),
+            ("B_b", "screw"),
+            ("F_a", "wrench"),
+            ("w_b", "vec3"),
+            ("p_{cam}", "vec3"),
+            ("ω̂", "vec3"),
+            ("x", "scalar"),
+            ("f", "scalar"),
+            ("theta_1", "scalar"),
+            ("x_max", "scalar"),
+            ("Sum", "scalar"),
+        ] {
+            assert_eq!(ty(name), want, "{name}");
+        }
+    }
 }
 
 /// A numeric 3×3 argument that the rule refused because its numbers were
