@@ -569,6 +569,13 @@ fn incremental(old: &str, new: &str) -> Value {
     while !old.is_char_boundary(old.len() - b) || !new.is_char_boundary(new.len() - b) {
         b -= 1;
     }
+    // (a position between the \r and the \n of a line break is no position
+    // of the protocol's: a client never sends one)
+    let crlf_at = |i: usize| i > 0 && ob.get(i - 1..=i) == Some(b"\r\n".as_slice());
+    let a = if crlf_at(a) { a - 1 } else { a };
+    if b > 0 && crlf_at(old.len() - b) {
+        b -= 1;
+    }
     let pos = |i: usize| {
         let before = &old[..i];
         let line = before.matches('\n').count();
@@ -1023,4 +1030,27 @@ fn check_and_run_name_the_same_fix_for_an_unknown_name() {
     assert!(helps[1].ends_with("given v : scalar"), "{helps:?}");
     assert!(helps[2].ends_with("given R_cd : SO3"), "{helps:?}");
     assert!(helps[3].ends_with("given theta_1 : scalar"), "{helps:?}");
+}
+
+/// `explain` of what has no book algorithm by its shape alone (a name, a
+/// number, a negation, a user function's call) is refused by `chasles
+/// check` and the editor as `run` refuses it: check computed no steps and
+/// said nothing (found by tests/sweeps/frontends_sweep.py comparing run
+/// with check). One that depends on the numbers (`explain 1 + 2`) is
+/// refused by `run` only.
+#[test]
+fn check_refuses_an_explain_with_no_algorithm_as_run_does() {
+    let dir = common::scratch("explain-shape");
+    let text = "x = 3\nexplain x\nexplain (2)\nexplain -Rotz(1)\nf(t) = t\nexplain f(1)\n\
+                explain log(Rotz(1))\nm = mech < links 4; joints R R R R; planar >\nexplain m\n";
+    let file = dir.join("explain.chs").to_string_lossy().into_owned();
+    std::fs::write(&file, text).unwrap();
+    let files = [file.clone()];
+    let checked = placed(text, &diagnostics_of(&["check"], &files)[&file]);
+    let ran = placed(
+        text,
+        &diagnostics_of(&["run", "--keep-going"], &files)[&file],
+    );
+    assert_eq!(checked.len(), 4, "{checked:?}");
+    assert_eq!(checked, ran);
 }

@@ -191,7 +191,13 @@ impl Interp<'_> {
     /// The steps of `explain e`, whose value (already computed) is `t`.
     pub(super) fn explain(&mut self, e: &Expr, t: &Typed) -> Result<Vec<Shown>, Diagnostic> {
         let Some(value) = t.value() else {
-            return Ok(Vec::new()); // checking: no numbers
+            // Checking, no numbers: what has no algorithm by its shape
+            // alone is refused as `run` refuses it (`check` reports every
+            // error it can decide, LANGUAGE.md §1).
+            return match no_algorithm_by_shape(e, t) {
+                true => Err(refusal(e)),
+                false => Ok(Vec::new()),
+            };
         };
         let mut steps = match self.steps_of(e, value)? {
             Some(s) => s,
@@ -370,6 +376,26 @@ fn same_numbers(a: &Value, b: &Value) -> bool {
         }
         _ => a == b,
     }
+}
+
+/// Whether `e` has no book algorithm whatever its numbers: at its top (in
+/// parentheses) neither a builtin's call nor an operator (`explain x`,
+/// `explain 2`, `explain -R`, `explain f(1)` of a user function), and not
+/// a mechanism ([`Interp::steps_of`] finds no steps for it, whatever the
+/// values).
+fn no_algorithm_by_shape(e: &Expr, t: &Typed) -> bool {
+    let mut top = e;
+    while let ExprKind::Paren(items) = &top.kind
+        && items.len() == 1
+    {
+        top = &items[0];
+    }
+    let algorithm = match &top.kind {
+        ExprKind::Call { func, .. } => crate::builtins::lookup(&func.name).is_some(),
+        ExprKind::Binary { .. } => true,
+        _ => false,
+    };
+    !algorithm && t.ty.kind != Kind::Mechanism && t.ty.kind != Kind::Function
 }
 
 /// The error for an expression with no book algorithm at its top.
