@@ -2,7 +2,6 @@
 //! between, as the checker carries them (LANGUAGE.md §6; §3.1's {a}, {b}).
 
 use super::name::Name;
-use super::ty::Kind;
 
 /// One reference frame: a name and how many displacements have moved it
 /// (LANGUAGE.md §6). `exp([S_s] θ) * T_sb` is {s}←{b'}: {b} moved once. A
@@ -102,18 +101,6 @@ pub enum Frames {
 }
 
 impl Frames {
-    /// The frames of one part of a tuple tagged `self`: none for a scalar
-    /// (θ of `AxisAng3`), the outer frame for a vector part of a
-    /// pair-tagged tuple (p of `TransToRp(T_ab)` is in {a}), else the same
-    /// (ω̂ of coordinates in {s} is in {s}; R of T_ab is {a}←{b}).
-    pub fn part(&self, k: &Kind) -> Frames {
-        match (self, k) {
-            (_, Kind::Scalar) => Frames::None,
-            (Frames::Pair(a, _), k) if k.is_vector() => Frames::One(*a),
-            (f, _) => *f,
-        }
-    }
-
     /// {a}←{b}, the tag of T_ab.
     pub fn pair(a: &str, b: &str) -> Frames {
         Frames::Pair(Frame::named(a), Frame::named(b))

@@ -276,6 +276,22 @@ impl fmt::Display for Kind {
     }
 }
 
+/// What a frame tag says of a value's parts: it needs the kinds, so it
+/// lives with them ([`super::frames`] knows no kinds).
+impl Frames {
+    /// The frames of one part of a tuple tagged `self`: none for a scalar
+    /// (θ of `AxisAng3`), the outer frame for a vector part of a
+    /// pair-tagged tuple (p of `TransToRp(T_ab)` is in {a}), else the same
+    /// (ω̂ of coordinates in {s} is in {s}; R of T_ab is {a}←{b}).
+    pub fn part(&self, k: &Kind) -> Frames {
+        match (self, k) {
+            (_, Kind::Scalar) => Frames::None,
+            (Frames::Pair(a, _), k) if k.is_vector() => Frames::One(*a),
+            (f, _) => *f,
+        }
+    }
+}
+
 /// A Lie algebra (§3.2.3, §3.3.2): the content a product g·X of a group
 /// element and an element X of its algebra remembers ([`Ty::algebra`]).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
