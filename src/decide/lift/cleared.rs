@@ -3,7 +3,8 @@
 //! `sin 2/(cos 2 + 1)` against `tan 1` — each a quotient whose lifted
 //! form keeps a reciprocal, so equal numbers had different forms.
 
-use super::{exact, reduced, z_of};
+use super::exact;
+use super::field::{reduced, z_of};
 use crate::sym::expr::{Expr, Var};
 
 /// True when p = q once both are multiplied by every kept denominator
