@@ -76,6 +76,37 @@ fn identities_made_from_exact_numbers_are_true() {
     }
 }
 
+/// Angles with square roots, √2 or 0.3√2 + π/3: each root is a symbol of
+/// its own in the proof (`decide::lift`), so the angle-sum identities hold
+/// as for rational angles. They said "cannot decide: the two sides agree
+/// to 152 digits" (an angle √2 and an angle 2√2 were unrelated atoms), an
+/// error that stopped the script; sides a hair apart stay false. (A matrix
+/// exponential of an axis-angle of irrational norm, `exp([ẑ] √2)`, stays
+/// a float, LANGUAGE.md §7.)
+#[test]
+fn angles_with_square_roots_add_as_angles() {
+    for src in [
+        "a = sqrt(2)\ncos(2*a) == cos(a)^2 - sin(a)^2",
+        "a = sqrt(2)\n2*sin(a)*cos(a) == sin(2*a)",
+        "a = sqrt(2)\nRotz(a)*Rotz(a) == Rotz(2*a)",
+        "a = sqrt(2)\nsin(a + pi/3) == sin(a)*cos(pi/3) + cos(a)*sin(pi/3)",
+        "a = sqrt(2)\nb = sqrt(3)\ncos(a + b) == cos(a)*cos(b) - sin(a)*sin(b)",
+        "a = sqrt(2)\nRotz(a + pi/5)*Rotz(1 - pi/5) == Rotz(a + 1)",
+        "a = 0.3*sqrt(2)\nRotz(a)*Rotz(a/3) == Rotz(4*a/3)",
+        "x = 0.7\nsin(sqrt(6)*x)^2 + cos(sqrt(6)*x)^2 == 1",
+    ] {
+        assert_eq!(last(src), serde_json::json!(true), "{src}");
+    }
+    for src in [
+        "a = sqrt(2)\ncos(2*a) == cos(a)^2 - sin(a)^2 + 1e-40",
+        "a = sqrt(2)\nRotz(a)*Rotz(a) == Rotz(2*a + 1e-30)",
+        "a = 0.3*sqrt(2)\nRotz(a)*Rotz(a/3) == Rotz(4*a/3 + 1e-30)",
+        "cos(sqrt(2)) == cos(sqrt(3))",
+    ] {
+        assert_eq!(last(src), serde_json::json!(false), "{src}");
+    }
+}
+
 /// Square roots written in the cyclotomic field of the angles (Gauss
 /// sums: √5 = ζ − ζ² − ζ³ + ζ⁴, ζ = e^{2πi/5}), so a side with surds and a side
 /// with roots of unity have one canonical form when equal.

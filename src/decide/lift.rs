@@ -59,9 +59,11 @@ fn verdict_of(a: &Value, b: &Value, squared: bool) -> Option<Result<(), Expr>> {
     // plus one of ρ = π/L: angles then add as the powers of e^{iμ} and
     // e^{iρ} multiply, Rotx(-π) Rotx(1 deg) == Rotx(-π + 1 deg))
     let split = lift.split()?;
+    let roots = lift.roots.clone();
     let mut lift = Lift {
         split: Some(split),
         squared,
+        roots: roots.clone(),
         ..Lift::default()
     };
     let mut tried = proof(a, b, &mut lift);
@@ -72,6 +74,7 @@ fn verdict_of(a: &Value, b: &Value, squared: bool) -> Option<Result<(), Expr>> {
         let mut wider = Lift {
             split: Some((split.0, l)),
             squared,
+            roots,
             ..Lift::default()
         };
         tried = proof(a, b, &mut wider).or(tried);
@@ -101,6 +104,10 @@ struct Lift {
     wider: Option<i64>,
     /// The sides' squares are compared ([`squares_equal`]).
     squared: bool,
+    /// Each square root √k met in an angle, with the least common
+    /// denominator of its coefficients there: in a split, its symbol
+    /// σₖ stands for √k/D, so that its multiples are whole (as μ's are).
+    roots: Vec<(u128, i64)>,
 }
 
 impl Lift {
@@ -151,13 +158,70 @@ impl Lift {
                         .add(&symbol(RHO).scale(&scaled(&b, l))),
                 )
             }
-            // (an exact angle not a + bπ, √2 or π², is a symbol of its own)
+            // (an exact angle a + bπ with square roots in a and b
+            // rational, √2 or 1 + √2 + π/3: its rational part read as a
+            // rational angle's, each c√k of a as c σₖ, σₖ a symbol that
+            // stands for √k, so that cos(2√2) and cos²√2 − sin²√2 meet)
+            (None, split)
+                if let Some((r, b)) = surd_and_pi(x).and_then(|(a, b)| Some((a, b.as_rat()?))) =>
+            {
+                let b = turns(b);
+                let rational = r
+                    .terms()
+                    .find(|(k, _)| *k == 1)
+                    .map_or(Rat::ZERO, |(_, c)| c.clone());
+                let whole = match split {
+                    Some((m, l)) => symbol(MU)
+                        .scale(&Coef::rat(rational.mul(&Rat::int(m))))
+                        .add(&symbol(RHO).scale(&Coef::rat(b.mul(&Rat::int(l))))),
+                    None => {
+                        let at = Expr::constant(Coef::rat(rational.clone()))
+                            .add(&Expr::constant(Coef::rat(b.clone())).mul(&Expr::pi()));
+                        self.angles.get_or_insert_with(Vec::new).push((rational, b));
+                        at.mul(&symbol(NU))
+                    }
+                };
+                let mut roots = Expr::default();
+                for (k, c) in r.terms().filter(|(k, _)| *k > 1) {
+                    let d = self.root_denominator(k, c, split.is_some())?;
+                    let symbol = symbol(&format!("{ROOT}{k}/{d}⟩"));
+                    roots = roots.add(&symbol.scale(&Coef::rat(c.mul(&Rat::int(d)))));
+                }
+                Some(whole.add(&roots))
+            }
+            // (any other exact angle, π², is a symbol of its own)
             (None, _) => Some(self.named(format!("{x:?}"))),
             (Some(ab), None) => {
                 self.angles.get_or_insert_with(Vec::new).push(ab);
                 Some(x.mul(&symbol(NU)))
             }
         }
+    }
+
+    /// D of the symbol σₖ = √k/D that a coefficient `c` of √k in an angle
+    /// is a multiple of: 1 unless `split`, then the least common
+    /// denominator of the coefficients of √k met before the split (the
+    /// same for every angle of the split; None for one larger than i64).
+    /// Each coefficient met is noted.
+    fn root_denominator(&mut self, k: u128, c: &Rat, split: bool) -> Option<i64> {
+        let den = c.parts().1;
+        match self.roots.iter_mut().find(|(j, _)| *j == k) {
+            Some((_, d)) => {
+                let l = num_integer::Integer::lcm(&num_bigint::BigInt::from(*d), &den);
+                if !split {
+                    *d = i64::try_from(l).ok()?;
+                }
+            }
+            None => self.roots.push((k, i64::try_from(den).ok()?)),
+        }
+        Some(match split {
+            true => self
+                .roots
+                .iter()
+                .find(|(j, _)| *j == k)
+                .map_or(1, |(_, d)| *d),
+            false => 1,
+        })
     }
 
     /// The symbol that stands for the number printed `print` (an atom).
@@ -246,11 +310,13 @@ fn proof(a: &Value, b: &Value, lift: &mut Lift) -> Option<Result<(), Expr>> {
 
 /// The names of the lift's own symbols, which no typed name can be
 /// (identifiers hold no ⟨): ν scales every angle, μ = 1/M and ρ = π/L
-/// split them, and ⟨αn⟩ is a number read as a symbol of its own.
+/// split them, ⟨αn⟩ is a number read as a symbol of its own and ⟨√k⟩
+/// stands for √k in an angle.
 const NU: &str = "⟨ν⟩";
 const MU: &str = "⟨μ⟩";
 const RHO: &str = "⟨ρ⟩";
 const ATOM: &str = "⟨α";
+const ROOT: &str = "⟨√";
 
 /// The symbol `name` (ν, μ, ρ: they stand for numbers in the angles).
 fn symbol(name: &str) -> Expr {
