@@ -263,3 +263,25 @@ fn derive_of_a_frame_to_itself_is_the_identity() {
         assert_eq!(l["frames"], serde_json::json!([f, f]), "{l}");
     }
 }
+
+/// A numeric identity among `given` transforms is no factor of the
+/// printed product (LANGUAGE.md §7: expressions over symbols print
+/// simplified, as `inv(T_ab) * T_ab` prints `I`): `T_ab * T_bc` with
+/// `T_bc = eye(4)` printed `T_ab [1, 0, 0, 0; …; 0, 0, 0, 1]`, and
+/// `derive T_ce` through it printed the identity matrix in its value. A
+/// scalar symbol times `eye(3)` stays the matrix.
+#[test]
+fn a_numeric_identity_in_a_product_over_symbols_is_no_factor() {
+    let src = "given T_ab, T_db, T_de : SE3\nT_bc = eye(4)\nT_ab * T_bc\nderive T_ce\ngiven R : SO3\neye(3) * R * eye(3)\ngiven t\nt * eye(3)";
+    let out = chasles(&["-e", src], None);
+    assert_eq!(out.code, Some(0), "{}", out.stderr);
+    let lines: Vec<&str> = out.stdout.lines().collect();
+    assert!(lines.contains(&"T_ab  : SE(3) {a}←{c}"), "{}", out.stdout);
+    assert!(
+        lines.contains(&"T_ce = inv(T_db) T_de  : SE(3) {c}←{e}"),
+        "{}",
+        out.stdout
+    );
+    assert!(lines.contains(&"R  : SO(3)"), "{}", out.stdout);
+    assert!(lines.contains(&"[t, 0, 0"), "{}", out.stdout);
+}

@@ -145,6 +145,16 @@ impl Interp<'_> {
             };
             acc = Some(match acc {
                 None => v,
+                // (a numeric identity beside symbols is no factor)
+                Some(a)
+                    if let Some(o) = crate::seam::transform::identity_factor(
+                        BinOp::Mul,
+                        (&a, &kind),
+                        (&v, &kind),
+                    ) =>
+                {
+                    o
+                }
                 Some(Value::Sym(a)) => {
                     Value::Sym(super::value::Sym::times(a, crate::seam::apply::to_sym(&v)))
                 }

@@ -395,6 +395,8 @@ impl Interp<'_> {
             },
             exponent: literal_number(rhs).or_else(|| r.val.as_deref().and_then(Value::as_scalar)),
         };
+        let identity_factor = |op, a, b| crate::seam::transform::identity_factor(op, a, b);
+        let bin = op;
         let op = Op::Arith(op);
         let rule = |a: &Ty, b: &Ty| op.rule(&[a, b], hints);
         let ty = match rule(&l.ty, &r.ty) {
@@ -406,6 +408,11 @@ impl Interp<'_> {
             }
         };
         let val = match (l.val, r.val) {
+            (Some(a), Some(b))
+                if let Some(v) = identity_factor(bin, (&a, &l.ty.kind), (&b, &r.ty.kind)) =>
+            {
+                Some(v)
+            }
             (Some(a), Some(b)) => Some(
                 op.apply_pair(a, b, &ty.kind)
                     .map_err(|m| op.failure(m, op_span))?,

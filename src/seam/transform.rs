@@ -11,6 +11,25 @@ use crate::syntax::ast::BinOp;
 use crate::values::symbolic::Part;
 use crate::values::value::{Sym, Value};
 
+/// The other factor of a product over symbols whose one factor is a
+/// numeric identity matrix (`T_ab * T_bc` with `T_bc = eye(4)` is `T_ab`,
+/// §7: printed simplified, as `inv(T_ab) * T_ab` is `I`); not when the
+/// other factor may be a scalar (`det(T) * eye(3)` is a matrix). The
+/// operands with their checked kinds.
+pub(crate) fn identity_factor(op: BinOp, a: (&Value, &Kind), b: (&Value, &Kind)) -> Option<Value> {
+    let identity = |v: &Value| match v {
+        Value::Num { m, .. } => m.shape().0 >= 2 && m.is_identity(0.0),
+        _ => false,
+    };
+    if op != BinOp::Mul {
+        return None;
+    }
+    [(a, b), (b, a)]
+        .into_iter()
+        .find(|((i, _), (o, k))| identity(i) && matches!(o, Value::Sym(_)) && !k.maybe_scalar())
+        .map(|(_, (o, _))| o.clone())
+}
+
 /// Operation `op` on `args` (its result typed `kind`) in closed form over
 /// transform blocks: the inverse of a block typed SE(3) (`inv(T)`,
 /// `T^-1`), the product of two typed SE(3), a block times a point. None
