@@ -264,6 +264,42 @@ fn contact_words_suggest_rolling_or_sliding() {
     );
 }
 
+/// A count written as a decimal is a number like any other count (§9:
+/// counts may be expressions): `links 2.0` is 2 links, `links 2.5` the
+/// domain error `links n` with n = 2.5 gives. Both were a syntax error at
+/// the point whose help said to write "2.0 or 2" — what was written; in
+/// `joints 2.5R` the help now says a count is a whole number.
+#[test]
+fn a_decimal_count_is_read_as_a_number() {
+    assert_eq!(
+        numbers("dof(mech < links 4.0; joints 4R; planar >)"),
+        numbers("dof(mech < links 4; joints 4R; planar >)")
+    );
+    assert_eq!(numbers("dof(mech < legs 6.0 UPS; spatial >)"), [6.0]);
+    for src in [
+        "mech < links 2.5; joints R; planar >",
+        "n = 2.5\nmech < links n; joints R; planar >",
+    ] {
+        let (code, _, err) = run(&["-e", src]);
+        assert_eq!(code, 1, "{src}");
+        assert!(
+            err.contains("domain error: a count must be a whole number, not 2.5"),
+            "{src}: {err}"
+        );
+    }
+    let (code, _, err) = run(&["-e", "mech < links 4; joints 2.5R; planar >"]);
+    assert_eq!(code, 1);
+    assert!(err.contains("syntax error"), "{err}");
+    assert!(
+        err.contains("help: a count is a whole number: 2, not 2.5"),
+        "{err}"
+    );
+    assert!(!err.contains("2.0 or 2"), "{err}");
+    // (a number with no digit after its point keeps that help)
+    let (_, _, err) = run(&["-e", "x = (2., 1)"]);
+    assert!(!err.contains("a count is a whole number"), "{err}");
+}
+
 #[test]
 fn identity_takes_the_size_a_call_fixes() {
     // frame(I, p) is Trans(p); Ad(I) the 6×6 identity; RotInv(I) = I

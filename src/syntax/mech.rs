@@ -77,6 +77,10 @@ impl Cx {
                     kind: ExprKind::Number(self.int(&p)? as f64),
                     span,
                 },
+                Rule::mech_decimal => Expr {
+                    kind: ExprKind::Number(p.as_str().parse().map_err(|_| self.internal(span))?),
+                    span,
+                },
                 Rule::mech_name => Expr {
                     kind: ExprKind::Var(p.as_str().into()),
                     span,

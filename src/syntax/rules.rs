@@ -121,6 +121,7 @@ pub(crate) fn rule_name(rule: Rule) -> &'static str {
         | Rule::legs_count
         | Rule::mech_term
         | Rule::mech_factor
+        | Rule::mech_decimal
         | Rule::mech_name => "a whole number",
         Rule::mech_op | Rule::mech_infix | Rule::mech_juxt => OPERATOR,
         Rule::chain => "the joints of a leg, such as UPS",
@@ -351,8 +352,21 @@ fn help(text: &str, pos: usize, found: Option<char>, expected: &[String]) -> Opt
         '{' | '}' => Some(
             "braces only appear in frame subscripts, T_{world,cam}, and superscripts, R^{T}".into(),
         ),
-        '.' if before.ends_with(|c: char| c.is_ascii_digit()) => {
+        // (`2.` with no digit after the point; `2.5` where a whole number
+        // is wanted, `joints 2.5R`, is no decimal to mend)
+        '.' if before.ends_with(|c: char| c.is_ascii_digit())
+            && !text
+                .get(pos + 1..)
+                .is_some_and(|t| t.starts_with(|c: char| c.is_ascii_digit())) =>
+        {
             Some("write decimals with digits after the point: 2.0 or 2".into())
+        }
+        '.' if before.ends_with(|c: char| c.is_ascii_digit())
+            && expected
+                .iter()
+                .any(|e| e.contains("whole number") || e.contains("joint")) =>
+        {
+            Some("a count is a whole number: 2, not 2.5".into())
         }
         // (the book's θ₁ and x², copied as typeset)
         '₀'..='₉' => Some(subscript_help(text, pos)),
