@@ -320,6 +320,30 @@ fn printed_pictures_are_written_where_the_line_says() {
     assert!(stray.is_empty());
 }
 
+/// `view(30, 45)`, MATLAB's habit (degrees), is 30 and 45 radians here,
+/// as every angle (§2): the view is made, with a warning that says so and
+/// gives `view(30 deg, 45 deg)` (it was silent: a picture seen from
+/// azimuth 1718.87°). Angles within a turn are not warned about.
+#[test]
+fn a_view_in_degrees_is_warned_to_be_radians() {
+    let dir = scratch("view-degrees");
+    let (code, out, err) = run_in(&["--no-write", "-e", "draw(Rotz(1), view(30, 45))"], &dir);
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(
+        err.contains("warning: view takes radians, as every angle in chasles: view(30, 45) is azimuth 1718.87°, elevation 2578.31°"),
+        "{err}"
+    );
+    assert!(
+        err.contains("help: for degrees, as MATLAB's view(az, el), write view(30 deg, 45 deg)"),
+        "{err}"
+    );
+    for src in ["view(30 deg, 45 deg)", "view(-3, 1.5)", "view(0, pi/2)"] {
+        let (code, _, err) = run_in(&["-e", src], &dir);
+        assert_eq!(code, 0, "{src}");
+        assert!(!err.contains("radians"), "{src}: {err}");
+    }
+}
+
 #[test]
 fn bad_input_is_a_clear_error_and_no_file() {
     let dir = scratch("cli-errors");

@@ -201,6 +201,25 @@ fn eval_view(a: &mut Args) -> Result<Value, Diagnostic> {
     if !(az.is_finite() && el.is_finite()) {
         return Err(a.domain("a view needs finite angles"));
     }
+    // (MATLAB's view(30, 45) is in degrees; here, as every angle, radians)
+    if az.abs() > 2.0 * std::f64::consts::PI || el.abs() > std::f64::consts::PI {
+        let num = |x: f64| crate::values::number::fmt_num(x, 4);
+        let (az_text, el_text) = (num(az), num(el));
+        a.warnings.push(
+            Diagnostic::warning(
+                ErrorKind::Domain,
+                a.call_span,
+                format!(
+                    "view takes radians, as every angle in chasles: view({az_text}, {el_text}) is azimuth {}°, elevation {}°",
+                    angle_text(az),
+                    angle_text(el)
+                ),
+            )
+            .with_help(format!(
+                "for degrees, as MATLAB's view(az, el), write view({az_text} deg, {el_text} deg)"
+            )),
+        );
+    }
     if first == 1 {
         let mut p = (*picture_of(a, 0)?).clone();
         p.panels.iter_mut().for_each(|q| q.view = Some((az, el)));
