@@ -194,3 +194,17 @@ fn bound_later_is_refused_as_typed_first() {
         }
     }
 }
+
+/// An unknown type after `given` is named as written: `SE3(3)` was
+/// reported as 'SE33' (the parentheses of `SE(3)` dropped from it).
+#[test]
+fn an_unknown_given_type_is_named_as_written() {
+    for (src, says) in [
+        ("given X : SE3(3)", "type error: unknown type 'SE3(3)'"),
+        ("given X : SE(4)", "type error: unknown type 'SE(4)'"),
+        ("given X : 4-vector", "type error: unknown type '4-vector'"),
+    ] {
+        let err = error(src);
+        assert!(err.contains(says), "{src}\n{err}");
+    }
+}

@@ -282,7 +282,8 @@ impl<'a> Interp<'a> {
                     Diagnostic::error(
                         ErrorKind::Type,
                         ty.span,
-                        format!("unknown type '{}'", ty.name),
+                        // (as written: `SE3(3)` is no `SE33`)
+                        format!("unknown type '{}'", self.text(ty.span).trim()),
                     )
                     .with_help(
                         "given types: scalar vec3 vec6 SO3 SE3 SO2 SE2 so3 se3 twist screw wrench; free, point (a free vector, a point)",
