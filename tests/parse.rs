@@ -1045,3 +1045,25 @@ fn typeset_subscripts_and_superscripts_get_the_spelling() {
     let h = help("x = 2²");
     assert!(h.contains("2^2"), "{h}");
 }
+
+/// A no-break space (copied from a PDF of the book) or a zero-width one is
+/// named in the syntax error, with its code point and a help: the error
+/// said "found ' '", a character that prints as the space it is not.
+#[test]
+fn invisible_spaces_are_named() {
+    for (src, what) in [
+        ("x = 1\u{a0}+ 2", "found a no-break space (U+00A0)"),
+        ("x = 1 \u{200b}", "found a zero-width space (U+200B)"),
+        ("\u{a0}x = 1", "found a no-break space (U+00A0)"),
+        ("y = Rotz(\u{2009}1)", "found a typographic space (U+2009)"),
+    ] {
+        let e = err(src);
+        assert!(e.message.ends_with(what), "{src:?}: {}", e.message);
+        let help = e.help.clone().unwrap_or_default();
+        assert!(
+            help.contains("looks like a space but is not one")
+                && help.contains("write a plain space"),
+            "{src:?}: {help}"
+        );
+    }
+}

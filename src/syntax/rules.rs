@@ -248,6 +248,7 @@ pub(crate) fn pest_error(err: pest::error::Error<Rule>, text: &str, off: usize) 
         None => "end of input".to_string(),
         Some('\n') => "end of line".to_string(),
         Some(' ' | '\t') => "a space".to_string(),
+        Some(c) if let Some(what) = invisible(c) => format!("{what} (U+{:04X})", c as u32),
         Some(c) => format!("'{c}'"),
     };
     let message = if names.is_empty() {
@@ -307,10 +308,30 @@ fn or_list(items: &[String]) -> String {
     }
 }
 
+/// What an invisible or space-like character is, named where printing it
+/// would show nothing or a plain-looking space (a no-break space copied
+/// from a PDF of the book).
+fn invisible(c: char) -> Option<&'static str> {
+    Some(match c {
+        '\u{a0}' | '\u{202f}' => "a no-break space",
+        '\u{2000}'..='\u{200a}' => "a typographic space",
+        '\u{200b}' => "a zero-width space",
+        '\u{200c}' | '\u{200d}' | '\u{2060}' => "a zero-width joiner",
+        '\u{feff}' => "a zero-width no-break space (a byte-order mark)",
+        '\u{3000}' => "an ideographic space",
+        _ => return None,
+    })
+}
+
 /// A hint for common mistakes at `pos`.
 fn help(text: &str, pos: usize, found: Option<char>, expected: &[String]) -> Option<String> {
     let before = text.get(..pos).unwrap_or("").trim_end();
     let wants = |s: &str| expected.iter().any(|e| e == s);
+    if let Some(what) = found.and_then(invisible) {
+        return Some(format!(
+            "{what} looks like a space but is not one (text copied from a PDF or a web page carries them): write a plain space, or delete it"
+        ));
+    }
     match found? {
         c if c.is_alphabetic() && before.starts_with("given") && wants("':'") => Some(
             "the type follows a colon: given T_ab, T_bc : SE3 (scalars need none: given α, β)"
