@@ -301,3 +301,41 @@ fn a_closed_form_read_off_its_branch_with_symbols_free_cannot_decide() {
     let on = run("given a, c\nX = MatrixLog6(RpToTrans(Rotz(c), (a, 1, 2)))\nc = 0.5\nX").0;
     assert!(on.lines().last().is_some_and(|l| l.contains('a')), "{on}");
 }
+
+/// A closed form singular at the numbers bound, where the expression as
+/// typed is defined: the value is the expression made again with the
+/// numbers, as typed first. `exp([S] a)^-1` with S = (a, 2a, a, a b, a, 2)
+/// (a non-unit axis, θ' = √6 a²) has terms in 1/a; at a = 0, b free, it
+/// said "division by zero", and typed first it is the identity. A
+/// quotient the numbers make a division by zero is still refused.
+#[test]
+fn a_closed_form_singular_where_the_expression_is_defined_is_made_again() {
+    let both = |value: &str, bound: &str| {
+        let later = format!("given a, b : scalar\ny = {value}\n{bound}\ny");
+        let first = format!("given a, b : scalar\n{bound}\n{value}");
+        (last(&later), last(&first))
+    };
+    for (value, bound, want) in [
+        ("exp([(a, 2a, a, a*b, a, 2)] a)^-1", "a = 0", None),
+        ("inv(exp([(a, 2a, a, a*b, a, 2)] a))", "a = 0", None),
+        ("exp([(a, 2a, 2a, b, 0, 0)] 1)", "a = 0", None),
+        ("exp([(a, 2a, 2a, 1, 0, 0)] b)^-1", "a = 0", None),
+        (
+            "MatrixExp6(VecTose3((a, 2a, 2a, 1, 0, 0)*b))",
+            "a = 0",
+            None,
+        ),
+        ("exp([(a, 2a, 2a)] b)^-1 * Rotz(a)", "a = 0", None),
+        ("Rot((1, a, a), b)^-1", "a = 0", None),
+        ("(a^2 - b^2)/(a - b)", "a = 0", Some("b")),
+    ] {
+        let (later, first) = both(value, bound);
+        assert_eq!(later, first, "{value} at {bound}");
+        if let Some(want) = want {
+            assert_eq!(later, want, "{value} at {bound}");
+        }
+    }
+    let (later, first) = both("exp([(a, 2a, a, a*b, a, 2)] a)^-1", "a = 0");
+    assert!(later.ends_with(": SE(3)") && first == later, "{later}");
+    refused_both_ways("(a^2 - a*b)/b", "0", "division by zero");
+}

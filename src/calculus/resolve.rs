@@ -534,7 +534,14 @@ pub fn formula_now(
     }
     let put = m.map(|e| replay::put_numbers(e, &lookup));
     if let Some(why) = put.data.iter().find_map(crate::sym::Expr::undefined) {
-        return Err(replay::Failed(why));
+        // (a closed form singular where the expression as typed is not:
+        // the inverse of exp([S] a) with a non-unit axis divides by a, and
+        // at a = 0 it is the identity, as typed first — made again from
+        // its recipe with the numbers in its leaves)
+        return match how.as_ref().and_then(|r| remade(r, &lookup)) {
+            Some(v) => Ok(v),
+            None => Err(replay::Failed(why)),
+        };
     }
     Ok(match formula::make(kind, put.clone()) {
         Value::Formula { kind, m, .. } => Value::Formula {
@@ -553,6 +560,19 @@ pub fn formula_now(
         },
         v => v,
     })
+}
+
+/// The value recipe `r` makes with the numbers `lookup` gives put into its
+/// leaves, each step applied as the evaluator applies it (as if the
+/// numbers had been typed first: `crate::decide::partly::made_with`);
+/// None where a step cannot be made again so or what it makes is itself
+/// undefined.
+fn remade(r: &Rc<recipe::Recipe>, lookup: replay::Lookup) -> Option<Value> {
+    match crate::decide::partly::made_with(r, lookup)? {
+        Value::Formula { m, .. } if m.data.iter().any(|e| e.undefined().is_some()) => None,
+        v @ (Value::Formula { .. } | Value::Num { .. }) => Some(v),
+        _ => None,
+    }
 }
 
 /// Whether the name a `subs` kept as a call substitutes is a plain scalar

@@ -229,6 +229,8 @@ impl<'a> Op<'a> {
                 let vals: Vec<Value> = args.iter().map(|v| (*v).clone()).collect();
                 crate::builtins::eval_symbolic(b.name, &vals, kind)
             }
+            // (as the evaluator's [`block`]: `[S]` of a 6-vector formula is se(3))
+            (Op::Block(widths), _) => Some(formula::brackets(&rows_of(widths, args))),
             _ => None,
         }
     }
@@ -481,16 +483,21 @@ fn call_rule(b: &Builtin, args: &[Ty]) -> Result<Ty, RuleError> {
 /// [`ops::brackets`].
 #[inline(never)]
 fn block_of_entries(widths: &[usize], args: &[&Value]) -> Result<Value, OpError> {
+    block_numeric(&rows_of(widths, args))
+}
+
+/// The entries of `[ ... ]` ([`Op::Block`]) row by row, `widths` giving
+/// each row's length.
+fn rows_of(widths: &[usize], args: &[&Value]) -> Vec<Vec<Value>> {
     let mut rest = args;
-    let rows: Vec<Vec<Value>> = widths
+    widths
         .iter()
         .map(|&n| {
             let (row, tail) = rest.split_at(n.min(rest.len()));
             rest = tail;
             row.iter().map(|v| (*v).clone()).collect()
         })
-        .collect();
-    block_numeric(&rows)
+        .collect()
 }
 
 /// `[ ... ]` on numbers: [`ops::brackets`], with its exact form when
