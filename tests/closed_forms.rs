@@ -197,6 +197,35 @@ fn roots_of_squares_are_absolute_values() {
     assert_eq!(lines("given x : scalar\nsqrt(x^2 + 1)"), ["sqrt(1 + x^2)"]);
 }
 
+/// |−x| = |x| and |x|² = x² for the real symbols `given` declares: `abs(-a)`
+/// printed `abs(-a)`, and `abs(a)*abs(a)`, `abs(a)^2` printed `abs(a)^2`.
+/// One canonical form, so `abs(a - b) == abs(b - a)` is decided; an odd
+/// power keeps one |x|.
+#[test]
+fn absolute_values_are_canonical_over_real_symbols() {
+    assert_eq!(
+        lines(
+            "given a, b : scalar\nabs(-a)\nabs(a)*abs(a)\nabs(a)^2\nabs(-a)^4\nabs(a)^3\nabs(a)^-2\nabs(a - b) - abs(b - a)\nsqrt(a^2)^2"
+        ),
+        [
+            "abs(a)",
+            "a^2",
+            "a^2",
+            "a^4",
+            "a^2 abs(a)",
+            "1/a^2",
+            "0",
+            "a^2"
+        ]
+    );
+    assert_eq!(
+        lines("given a, b : scalar\nabs(a - b) == abs(b - a)\nabs(-a) == abs(a)"),
+        ["true", "true"]
+    );
+    // with the numbers bound later, as typed first
+    assert_eq!(lines("given a : scalar\ny = abs(-a)^3;\na = -2;\ny"), ["8"]);
+}
+
 /// A half-integer power of a symbol is a power of its square root, as
 /// `sqrt` prints and as SymPy writes it: `a^(1/2)` printed `a^0.5` and
 /// `diff(a^(1/2), a)` stayed unevaluated; now it is `sqrt(a)`, with

@@ -374,10 +374,15 @@ impl Expr {
         out
     }
 
-    /// √x · √x = x: a square root's even powers become powers of x.
+    /// √x · √x = x: a square root's even powers become powers of x; and
+    /// |x|·|x| = x² for a real x (symbols and calls are real): an absolute
+    /// value's even powers become powers of x.
     fn fold_roots(self) -> Expr {
-        let is_root =
-            |v: &Var, e: i32| matches!(v, Var::Call(c) if c.f == Func::Sqrt) && e.abs() >= 2;
+        let is_root = |v: &Var, e: i32| {
+            e.abs() >= 2
+                && matches!(v, Var::Call(c) if c.f == Func::Sqrt
+                    || (c.f == Func::Abs && c.args[0].conj() == c.args[0]))
+        };
         if !self.terms.keys().flatten().any(|(v, e)| is_root(v, *e)) {
             return self;
         }
@@ -388,7 +393,13 @@ impl Expr {
             for (v, e) in m {
                 match &v {
                     Var::Call(call) if is_root(&v, e) => {
-                        let inner = call.args[0].powi(i64::from(e / 2)).unwrap_or_default();
+                        // (√x^e = x^(e/2) √x^(e % 2); |x|^e = x^(e − e % 2) |x|^(e % 2))
+                        let half = if call.f == Func::Abs {
+                            e - e % 2
+                        } else {
+                            e / 2
+                        };
+                        let inner = call.args[0].powi(i64::from(half)).unwrap_or_default();
                         t = t.mul(&inner);
                         if e % 2 != 0 {
                             rest.push((v.clone(), e % 2));
@@ -541,13 +552,27 @@ impl Expr {
     /// |x|: x or −x for an exact number whose sign the exact bounds tell
     /// (−7/3, −√2, −π/3: [`super::sign::sign_with_pi`]), so that
     /// `abs(-7/3) == 7/3` is decided; else the float of a number, or the
-    /// call kept over symbols.
+    /// call kept over symbols, of the sign of x whose leading coefficient
+    /// is positive (|−x| = |x|: `abs(-a)` is `abs(a)`, one canonical form).
     pub fn abs(x: &Expr) -> Expr {
         match super::sign::sign_with_pi(x) {
             Some(sign) if sign < 0 => x.neg(),
             Some(_) => x.clone(),
+            None if x.as_f64().is_none() && x.leads_negative() => {
+                Expr::call(Func::Abs, vec![x.neg()])
+            }
             None => Expr::apply(Func::Abs, x, f64::abs),
         }
+    }
+    /// Whether the leading term's coefficient is a negative real.
+    fn leads_negative(&self) -> bool {
+        self.terms
+            .iter()
+            .next()
+            .is_some_and(|(_, c)| match c.as_real() {
+                Some(r) => r.signum() < 0.0,
+                None => matches!(c.to_c64(), (re, im) if im == 0.0 && re < 0.0),
+            })
     }
     /// √x: exact for p/q with a square-free part among 1, 2, 3, 6; |p| for
     /// the square of an expression p.

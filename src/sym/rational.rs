@@ -270,13 +270,8 @@ impl Expr {
             }
             return Some(Expr::constant(if re < 0.0 { c.neg() } else { c }));
         }
-        // |p| = |−p|: the sign that makes the leading coefficient positive
-        let (_, lead) = p.terms.iter().next()?;
-        let p = match lead.as_real() {
-            Some(s) if s.signum() < 0.0 => p.neg(),
-            _ => p,
-        };
-        Some(Expr::call(Func::Abs, vec![p]))
+        // (|p| = |−p|: Expr::abs keeps the sign whose leading coefficient is positive)
+        Some(Expr::abs(&p))
     }
 
     /// A p with p² = self, found term by term from the leading term.
