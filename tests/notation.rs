@@ -683,8 +683,8 @@ fn a_size_over_a_given_symbol_is_refused_by_check_and_run() {
     }
     // a size read through another name: run names its symbol (check has
     // no value to read, as for any size it cannot tell)
-    let (_, msg) = first_error(&format!("{setup}m = k + 1\neye(m) * T_ab\n"), Mode::Run)
-        .expect("refused");
+    let (_, msg) =
+        first_error(&format!("{setup}m = k + 1\neye(m) * T_ab\n"), Mode::Run).expect("refused");
     assert!(msg.contains("the given k"), "{msg}");
     passes_both(
         setup,
@@ -947,4 +947,50 @@ fn a_given_names_entries_are_indexed_as_its_numbers() {
     assert_eq!(x["frames"], serde_json::json!(["a"]));
     let r = numbers(&lines[lines.len() - 1]["value"]);
     assert!((r[0] - 0.3f64.sin()).abs() < 1e-15, "{r:?}");
+}
+
+/// The rotation block of a transform is its R, an SO(3) between the
+/// transform's frames, with symbols and with numbers alike (§5: a label is
+/// printed when the value is in that set): `MatrixExp6(…)[1:3, 1:3]` was a
+/// 3×3 matrix typed first and SO(3) with the numbers bound later (a kept
+/// call's entries, classified); `T_ab[1:3, 1:3]` had no frames, so
+/// `R_ba = T_ab[1:3, 1:3]` passed. Other blocks stay matrices.
+#[test]
+fn the_rotation_block_of_a_transform_is_its_rotation() {
+    let kind = |src: &str| {
+        let lines = try_json(src).unwrap_or_else(|e| panic!("{src}\n{e}"));
+        let last = &lines[lines.len() - 1];
+        let ty = last["type"].as_str().unwrap_or_default().to_string();
+        match ty.as_str() {
+            "symbolic" => last["kind"].as_str().unwrap_or_default().to_string(),
+            _ => ty,
+        }
+    };
+    for x in [
+        "MatrixExp6([(0, 0, 1, 1, 0, 0)]*a)[1:3, 1:3]",
+        "MatrixExp6([(a, 0, 1, 1, 0, 0)])[1:3, 1:3]",
+        "RpToTrans(Rotz(a), (1, 2, 3))[1:3, 1:3]",
+        "Trans((a, 2, 3))[1:3, 1:3]",
+    ] {
+        let first = kind(&format!("a = 1\n{x}"));
+        let over = kind(&format!("given a\n{x}"));
+        let later = kind(&format!("given a\nX = {x}\na = 1\nX"));
+        assert_eq!(
+            (first.as_str(), over.as_str(), later.as_str()),
+            ("SO3", "SO3", "SO3"),
+            "{x}"
+        );
+    }
+    let setup = "given T_ab : SE3\ngiven S_ab : SE2\n";
+    for x in ["T_ab[1:3, 1:3]", "S_ab[1:2, 1:2]"] {
+        let lines = try_json(&format!("{setup}{x}")).unwrap();
+        let last = &lines[lines.len() - 1];
+        assert_eq!(last["frames"], serde_json::json!(["a", "b"]), "{x}: {last}");
+    }
+    let (kind_of, msg) = first_error(&format!("{setup}R_ba = T_ab[1:3, 1:3]\n"), Mode::Check)
+        .expect("check refuses the frames");
+    assert_eq!(kind_of, "frame", "{msg}");
+    passes_both(setup, &["R_ab = T_ab[1:3, 1:3]; R_ab^T * T_ab[1:3, 4]"]);
+    assert_eq!(kind("T = Trans((1, 2, 3))\nT[2:3, 2:3]"), "matrix");
+    assert_eq!(kind("given a\nRotz(a)[1:2, 1:2]"), "matrix");
 }

@@ -188,7 +188,11 @@ impl Interp<'_> {
                 (k, [p]) if k.is_vector() => Ty::new(Kind::Vector(p.len()), t.ty.frames),
                 (_, [p]) => Ty::plain(Kind::Vector(p.len())),
                 (_, [p, Picked { single: true, .. }]) => Ty::new(Kind::Vector(p.len()), outer),
-                (_, [p, q]) => Ty::plain(Kind::Matrix(p.len(), q.len())),
+                (_, [p, q]) => match (known_positions(p), known_positions(q)) {
+                    (Some(rs), Some(cs)) => rotation_block(&t.ty, &rs, &cs),
+                    _ => None,
+                }
+                .unwrap_or(Ty::plain(Kind::Matrix(p.len(), q.len()))),
                 _ => Ty::plain(Kind::Matrix(None, None)),
             };
             return Ok(Typed::new(ty, None));
@@ -227,15 +231,23 @@ impl Interp<'_> {
                     check(&picks[1], c, "the columns")?,
                 )
             };
+            let block = (!one).then(|| rotation_block(&t.ty, &rs, &cs)).flatten();
             // (the frames the numbers' slice has, below)
-            let mut sliced = symbolic(value, (&rs, &cs), (one, c), &picks, span)?;
+            let mut sliced = symbolic(
+                value,
+                (&rs, &cs),
+                (one, c),
+                &picks,
+                block.map(|b| b.kind),
+                span,
+            )?;
             sliced.ty.frames = match (sliced.ty.kind, one) {
                 (Kind::Vector(_), true) if c == 1 => t.ty.frames,
                 (Kind::Vector(_), false) => match t.ty.frames.outer() {
                     Some(a) => Frames::One(*a),
                     None => Frames::None,
                 },
-                _ => Frames::None,
+                _ => block.map_or(Frames::None, |b| b.frames),
             };
             return Ok(sliced);
         }
@@ -272,7 +284,10 @@ impl Interp<'_> {
         let (kind, frames) = match (picks[0].single, picks[1].single) {
             (true, true) => return Ok(Typed::new(Ty::scalar(), Some(Value::scalar(sub[(0, 0)])))),
             (false, true) => (Kind::Vector(Some(rs.len())), outer),
-            _ => (Kind::Matrix(Some(rs.len()), Some(cs.len())), Frames::None),
+            _ => match rotation_block(&t.ty, &rs, &cs) {
+                Some(b) => (b.kind, b.frames),
+                None => (Kind::Matrix(Some(rs.len()), Some(cs.len())), Frames::None),
+            },
         };
         let val = Some(Value::Num {
             kind,
@@ -399,6 +414,7 @@ fn symbolic(
     (rs, cs): (&[usize], &[usize]),
     (one, cols): (bool, usize),
     picks: &[Picked],
+    block: Option<Kind>,
     span: Span,
 ) -> Result<Typed, Diagnostic> {
     use super::ops::Sel;
@@ -452,8 +468,9 @@ fn symbolic(
     }
     .map_err(|e| Diagnostic::error(ErrorKind::Domain, span, e.to_string()))?;
     // (a matrix, as the numbers typed first give it: a 2×2 block of a
-    // rotation is no SO(2) for being one at these numbers)
-    let kind = Kind::Matrix(Some(rs.len()), Some(cs.len()));
+    // rotation is no SO(2) for being one at these numbers; the rotation
+    // block of a transform is its R, `rotation_block`)
+    let kind = block.unwrap_or(Kind::Matrix(Some(rs.len()), Some(cs.len())));
     let v = match v {
         Value::Formula {
             m, how: Some(r), ..
@@ -472,6 +489,36 @@ fn symbolic(
         v => v,
     };
     Ok(Typed::new(Ty::plain(kind), Some(v)))
+}
+
+/// The type of the block of rows `rs` and columns `cs` (0-based, in the
+/// order picked) of a value typed `t`, when it is the rotation block of a
+/// transform: `T[1:3, 1:3]` of an SE(3) is `T.R`, an SO(3) between T's
+/// frames, and `[1:2, 1:2]` of an SE(2) its SO(2) — with symbols and with
+/// numbers alike (`MatrixExp6(…)[1:3, 1:3]` was a 3×3 matrix typed first
+/// and SO(3) with the numbers bound later). None for any other block.
+fn rotation_block(t: &Ty, rs: &[usize], cs: &[usize]) -> Option<Ty> {
+    let n = match t.kind {
+        Kind::SE3 => 3,
+        Kind::SE2 => 2,
+        _ => return None,
+    };
+    let leading = |xs: &[usize]| xs.len() == n && xs.iter().enumerate().all(|(i, &x)| i == x);
+    if !(leading(rs) && leading(cs)) {
+        return None;
+    }
+    crate::check::rules::member(t, "R").ok()
+}
+
+/// The 0-based positions checking knows an index picks (literals), None
+/// when they are not all known whole numbers.
+fn known_positions(p: &Picked) -> Option<Vec<usize>> {
+    if !p.known {
+        return None;
+    }
+    p.at.iter()
+        .map(|&x| (x.fract() == 0.0 && x >= 1.0).then(|| x as usize - 1))
+        .collect()
 }
 
 /// The kind of a list's elements.
