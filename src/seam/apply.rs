@@ -199,7 +199,7 @@ impl<'a> Op<'a> {
                     .collect();
                 Ok(Value::vector(Kind::Vector(Some(xs.len())), &xs))
             }
-            (Op::Block(widths), _) => block_of_entries(widths, args),
+            (Op::Block(widths), _) => block_numeric(&super::shapes::rows_of(widths, args)),
             (Op::Call(b, _), _) => call_nowhere(b, args.iter().map(|v| (*v).clone()).collect()),
             _ => Err(OpError::Operands),
         }
@@ -230,7 +230,7 @@ impl<'a> Op<'a> {
                 crate::builtins::eval_symbolic(b.name, &vals, kind)
             }
             // (as the evaluator's [`block`]: `[S]` of a 6-vector formula is se(3))
-            (Op::Block(widths), _) => Some(formula::brackets(&rows_of(widths, args))),
+            (Op::Block(widths), _) => Some(formula::brackets(&super::shapes::rows_of(widths, args))),
             _ => None,
         }
     }
@@ -477,27 +477,6 @@ fn call_rule(b: &Builtin, args: &[Ty]) -> Result<Ty, RuleError> {
         })
     })?;
     rules::settle(ty, b.name)
-}
-
-/// [`Op::Block`] on numbers given its entries row by row: the rows, then
-/// [`ops::brackets`].
-#[inline(never)]
-fn block_of_entries(widths: &[usize], args: &[&Value]) -> Result<Value, OpError> {
-    block_numeric(&rows_of(widths, args))
-}
-
-/// The entries of `[ ... ]` ([`Op::Block`]) row by row, `widths` giving
-/// each row's length.
-fn rows_of(widths: &[usize], args: &[&Value]) -> Vec<Vec<Value>> {
-    let mut rest = args;
-    widths
-        .iter()
-        .map(|&n| {
-            let (row, tail) = rest.split_at(n.min(rest.len()));
-            rest = tail;
-            row.iter().map(|v| (*v).clone()).collect()
-        })
-        .collect()
 }
 
 /// `[ ... ]` on numbers: [`ops::brackets`], with its exact form when

@@ -294,3 +294,17 @@ pub(crate) fn entries(v: &Value) -> Vec<Value> {
         })
         .collect()
 }
+
+/// The entries of `[ ... ]` ([`super::apply::Op::Block`]) row by row,
+/// `widths` giving each row's length.
+pub(super) fn rows_of(widths: &[usize], args: &[&Value]) -> Vec<Vec<Value>> {
+    let mut rest = args;
+    widths
+        .iter()
+        .map(|&n| {
+            let (row, tail) = rest.split_at(n.min(rest.len()));
+            rest = tail;
+            row.iter().map(|v| (*v).clone()).collect()
+        })
+        .collect()
+}

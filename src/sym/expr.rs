@@ -374,46 +374,6 @@ impl Expr {
         out
     }
 
-    /// √x · √x = x: a square root's even powers become powers of x; and
-    /// |x|·|x| = x² for a real x (symbols and calls are real): an absolute
-    /// value's even powers become powers of x.
-    fn fold_roots(self) -> Expr {
-        let is_root = |v: &Var, e: i32| {
-            e.abs() >= 2
-                && matches!(v, Var::Call(c) if c.f == Func::Sqrt
-                    || (c.f == Func::Abs && c.args[0].conj() == c.args[0]))
-        };
-        if !self.terms.keys().flatten().any(|(v, e)| is_root(v, *e)) {
-            return self;
-        }
-        let mut out = Expr::zero();
-        for (m, c) in self.terms {
-            let mut rest: Mono = Vec::new();
-            let mut t = Expr::constant(c);
-            for (v, e) in m {
-                match &v {
-                    Var::Call(call) if is_root(&v, e) => {
-                        // (√x^e = x^(e/2) √x^(e % 2); |x|^e = x^(e − e % 2) |x|^(e % 2))
-                        let half = if call.f == Func::Abs {
-                            e - e % 2
-                        } else {
-                            e / 2
-                        };
-                        let inner = call.args[0].powi(i64::from(half)).unwrap_or_default();
-                        t = t.mul(&inner);
-                        if e % 2 != 0 {
-                            rest.push((v.clone(), e % 2));
-                        }
-                    }
-                    _ => rest.push((v, e)),
-                }
-            }
-            let mut r = Expr::zero();
-            r.push(rest, Coef::one());
-            out = out.add(&t.mul(&r));
-        }
-        out
-    }
     /// The complex conjugate (symbols and calls are real; z̄ = z⁻¹).
     pub fn conj(&self) -> Expr {
         let mut out = Expr::zero();
