@@ -999,3 +999,55 @@ fn subs_of_a_kept_tree_is_the_substitution_typed_first() {
     assert!(out.contains("-0.4161"), "{out}");
     agree(&format!("{src}\nS"), "u = (0, 0, 2)\nexp([u] 1)");
 }
+
+/// A product over given names that cancels to `I` (`inv(T) * T`, `R^T R`,
+/// `TransInv(Trans(p)) Trans(p)`) is the numbers' identity once those
+/// names have numbers, as typed first: it stayed `I`, JSON type
+/// "symbolic", after every number was bound (the cancelled identity had
+/// forgotten what it was made of). While one is free it is still `I`.
+#[test]
+fn an_identity_that_cancelled_is_a_number_once_its_names_are_bound() {
+    for (given, x, bind) in [
+        (
+            "given p : vec3",
+            "TransInv(Trans(p)) * Trans(p)",
+            "p = (1, 2, 3)",
+        ),
+        (
+            "given T_ab : SE3",
+            "inv(T_ab) * T_ab",
+            "T_ab = Trans((1, 2, 3))",
+        ),
+        ("given R : SO3", "R^T * R", "R = Rotz(1)"),
+        (
+            "given R : SO3\ngiven a",
+            "(R Rotz(a))^T (R Rotz(a))",
+            "R = Rotz(1)\na = 2",
+        ),
+    ] {
+        // (the identity exactly; typed first, the product's rounding)
+        let (later, first) = (
+            ans(&format!("{given}\nX = {x}\n{bind}\nX")),
+            ans(&format!("{given}\n{bind}\n{x}")),
+        );
+        match (&later, &first) {
+            (Value::Num { kind, m, .. }, Value::Num { kind: k, m: f, .. }) => {
+                assert_eq!(kind, k, "{x}");
+                assert_eq!(m.shape(), f.shape(), "{x}");
+                let (m, f) = (m.to_dmatrix().into_owned(), f.to_dmatrix().into_owned());
+                assert!((m - f).abs().max() <= 1e-15, "{x}: {later:?} {first:?}");
+            }
+            _ => panic!("{x}: bound later {later:?}, typed first {first:?}"),
+        }
+        let json = common::try_json(&format!("{given}\nX = {x}\n{bind}\nX")).unwrap();
+        let last = &json[json.len() - 1];
+        assert_ne!(last["type"], "symbolic", "{x}: {last}");
+        // (before the numbers, and with one still free, the book's I)
+        let json = common::try_json(&format!("{given}\nX = {x}\nX")).unwrap();
+        assert_eq!(json[json.len() - 1]["value"], "I", "{x}");
+    }
+    let json =
+        common::try_json("given R : SO3\ngiven a\nX = (R Rotz(a))^T (R Rotz(a))\nR = Rotz(1)\nX")
+            .unwrap();
+    assert_eq!(json[json.len() - 1]["value"], "I");
+}

@@ -480,7 +480,7 @@ pub fn known_by_kind(name: &str, args: &[Value], tys: &[crate::check::ty::Ty]) -
     let x = match (name, k, s) {
         ("det", Kind::SO3 | Kind::SO2 | Kind::SE3 | Kind::SE2, _) => 1.0,
         ("trace", Kind::So3 | Kind::So2, _) => 0.0,
-        ("trace", _, Tree::Identity) => match k.shape()? {
+        ("trace", _, Tree::Identity(_)) => match k.shape()? {
             (Some(n), Some(m)) if n == m => n as f64,
             _ => return None,
         },

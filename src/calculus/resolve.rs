@@ -100,7 +100,7 @@ impl Resolving<'_, '_> {
                 },
                 _ => s.clone(),
             },
-            Sym::Identity => s.clone(),
+            Sym::Identity(_) => s.clone(),
             Sym::Product(fs) => {
                 let mut out: Vec<Sym> = Vec::new();
                 for f in fs.iter() {

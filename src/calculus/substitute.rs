@@ -40,7 +40,7 @@ pub fn current(
     Ok(Some(match v {
         Value::Sym(s) if !b.symbolic => match resolve(s, env, warnings)? {
             Sym::Const(v, _) => retag(*v, &b.kind),
-            s => Value::Sym(s),
+            s => identity_now(&s, &b.kind, env).unwrap_or(Value::Sym(s)),
         },
         v @ Value::Formula { .. } if !b.symbolic => resolve::formula_now(v, env, warnings)?,
         v @ (Value::Tuple(_) | Value::List(_)) if b.derived => now(v, env, warnings)?,
@@ -185,4 +185,32 @@ pub fn retag(v: Value, kind: &Kind) -> Value {
         (Value::Num { m, exact, .. }, k) => Value::Num { kind: *k, m, exact },
         (v, _) => v,
     }
+}
+
+/// The identity a product over `given` names cancelled to (`inv(T) * T`:
+/// `I`, `crate::values::symbolic::Tree::Identity`) once every one of those
+/// names has numbers: the numbers' identity of the kind's size, as typed
+/// first (§7: the value *is* a number then, and its JSON type the
+/// kind's, not "symbolic"). None while a name is free, or for any other
+/// value.
+fn identity_now(s: &Sym, kind: &Kind, env: &dyn Bindings) -> Option<Value> {
+    let Sym::Identity(names) = s else {
+        return None;
+    };
+    let numbers = |n: &String| {
+        env.binding(crate::syntax::name::Name::new(n))
+            .is_some_and(|b| !b.symbolic && matches!(b.val, Some(Value::Num { .. })))
+    };
+    if names.is_empty() || !names.iter().all(numbers) {
+        return None;
+    }
+    let n = match kind.shape()? {
+        (Some(r), Some(c)) if r == c => r,
+        _ => return None,
+    };
+    Some(Value::Num {
+        kind: *kind,
+        m: crate::values::num::Num::identity(n),
+        exact: crate::values::exact::Exact::Typed,
+    })
 }

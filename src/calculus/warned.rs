@@ -149,7 +149,7 @@ fn tree(s: &Sym, out: &mut Vec<Symbol>) {
             }
         }
         Sym::Const(v, _) => depends(v, out),
-        Sym::Identity => {}
+        Sym::Identity(_) => {}
         Sym::Product(xs) | Sym::Vector(xs) | Sym::Call(_, xs) => {
             xs.iter().for_each(|x| tree(x, out))
         }

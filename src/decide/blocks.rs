@@ -237,7 +237,7 @@ impl Atoms<'_> {
     /// [`Atoms::poly`] one level down.
     fn poly_of(&mut self, s: &Sym) -> Option<Poly> {
         Some(match s {
-            Sym::Identity => Poly::one(),
+            Sym::Identity(_) => Poly::one(),
             Sym::Const(v, _) => match constant(v) {
                 Some(c) => Poly::constant(c),
                 None => Poly::atom(self.atom(s)),
@@ -314,7 +314,7 @@ impl Atoms<'_> {
                     vec![vec![r.clone(), Poly::default()], vec![pr, r]],
                 ))
             }
-            Sym::Identity => Some((Cut::Any, diagonal(Poly::one()))),
+            Sym::Identity(_) => Some((Cut::Any, diagonal(Poly::one()))),
             Sym::Const(v, _) if v.as_scalar().is_none() => match constant(v)? {
                 c @ (0 | 1) => Some((Cut::Any, diagonal(Poly::constant(c)))),
                 _ => None,
@@ -401,8 +401,8 @@ mod tests {
     fn a_rotation_cancels_its_transpose_and_nothing_else_does() {
         let rt_r = Sym::Product(vec![name("R").transpose(), name("R")]);
         let xt_x = Sym::Product(vec![name("X").transpose(), name("X")]);
-        assert!(equal(&rt_r, &Sym::Identity, &rotation));
-        assert!(!equal(&xt_x, &Sym::Identity, &rotation));
+        assert!(equal(&rt_r, &Sym::identity(), &rotation));
+        assert!(!equal(&xt_x, &Sym::identity(), &rotation));
         // (R^T (R + X) - R^T X is I: products distribute)
         let sum = Sym::Sub(
             Box::new(Sym::Product(vec![
@@ -411,7 +411,7 @@ mod tests {
             ])),
             Box::new(Sym::Product(vec![name("R").transpose(), name("X")])),
         );
-        assert!(equal(&sum, &Sym::Identity, &rotation));
+        assert!(equal(&sum, &Sym::identity(), &rotation));
     }
 
     #[test]

@@ -100,7 +100,7 @@ pub fn rounding_note(span: Span) -> Diagnostic {
 pub fn symbolic_equal(a: &Sym, b: &Sym, _op: CmpOp) -> Option<bool> {
     // What cancelled products leave (`inv(T) * T`, `A^0`) is the identity `I`.
     let identity = |s: &Sym| match s {
-        Sym::Identity => true,
+        Sym::Identity(_) => true,
         Sym::Const(v, _) => v
             .as_matrix()
             .is_some_and(|m| m.is_square() && m.nrows() > 1 && m.is_identity(0.0)),
@@ -188,7 +188,7 @@ fn adjoint_inverses(s: &Sym) -> Sym {
             let (a, b) = (adjoint_inverses(&args[0]), adjoint_inverses(&args[1]));
             match b {
                 Sym::Product(mut fs) if fs.len() > 1 => {
-                    let y = fs.pop().unwrap_or(Sym::Identity);
+                    let y = fs.pop().unwrap_or_else(Sym::identity);
                     let moved = Sym::times(Sym::product(fs).transpose(), a);
                     Sym::Call(*f, vec![moved, y])
                 }
@@ -386,7 +386,7 @@ pub fn with_kinds(s: &Sym, kind_of: &dyn Fn(&str) -> Option<Kind>) -> Sym {
         Sym::Call(f, args) if f.name == "dot" && args.len() == 2 => {
             match (go(&args[0]), go(&args[1])) {
                 (a, Sym::Product(mut fs)) if fs.len() > 1 => {
-                    let y = fs.pop().unwrap_or(Sym::Identity);
+                    let y = fs.pop().unwrap_or_else(Sym::identity);
                     let moved = go(&Sym::times(Sym::product(fs).transpose(), a));
                     Sym::Call(*f, vec![moved, y])
                 }

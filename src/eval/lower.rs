@@ -59,7 +59,7 @@ fn worth_lowering(s: &Sym, leaf: &dyn Fn(&str) -> Option<Leaf>, asks: &mut bool)
             }
             _ => false,
         },
-        Sym::Identity => false,
+        Sym::Identity(_) => false,
         // (a comparison decided in closed form: `dot(u, u) == 1`)
         Sym::Compare(_, a, b) => {
             *asks = true;
@@ -182,7 +182,7 @@ fn lower(s: &Sym, leaf: &dyn Fn(&str) -> Option<Leaf>, assumed: &Assumed) -> Opt
             }
         },
         Sym::Const(v, _) => Some((**v).clone()),
-        Sym::Identity => None,
+        Sym::Identity(_) => None,
         Sym::Compare(op, a, b) => {
             let mut both = share_units(vec![go(a)?, go(b)?]).into_iter();
             let (x, y) = (both.next()?, both.next()?);

@@ -230,7 +230,9 @@ impl<'a> Op<'a> {
                 crate::builtins::eval_symbolic(b.name, &vals, kind)
             }
             // (as the evaluator's [`block`]: `[S]` of a 6-vector formula is se(3))
-            (Op::Block(widths), _) => Some(formula::brackets(&super::shapes::rows_of(widths, args))),
+            (Op::Block(widths), _) => {
+                Some(formula::brackets(&super::shapes::rows_of(widths, args)))
+            }
             _ => None,
         }
     }
@@ -239,7 +241,7 @@ impl<'a> Op<'a> {
     /// symbolic tree, simplified where the book's identities allow
     /// (`inv(inv(X)) = X`, `(A B)ᵀ = Bᵀ Aᵀ`).
     pub fn symbolic(self, mut args: Vec<Sym>) -> Sym {
-        let one = |args: &mut Vec<Sym>| args.pop().unwrap_or(Sym::Identity);
+        let one = |args: &mut Vec<Sym>| args.pop().unwrap_or_else(Sym::identity);
         match self {
             Op::Neg => Sym::Neg(Box::new(one(&mut args))),
             Op::Degrees => Sym::times(one(&mut args), Sym::Name("deg".into())),
@@ -298,7 +300,7 @@ impl<'a> Op<'a> {
                     && matches!(args.as_slice(), [Sym::Call(f, a)] if f.name == "log" && a.len() == 1) =>
                 {
                     match one(&mut args) {
-                        Sym::Call(_, mut a) => a.pop().unwrap_or(Sym::Identity),
+                        Sym::Call(_, mut a) => a.pop().unwrap_or_else(Sym::identity),
                         other => other,
                     }
                 }
@@ -410,7 +412,7 @@ impl<'a> Op<'a> {
         }
         // the transform `[R, p; 0, 1]`: inverse, products, points (3.62–3.64)
         if let Some(t) = super::transform::of_op(self, args, kind) {
-            return Some(Ok(Value::Sym(t)));
+            return Some(Ok(Value::Sym(super::transform::cancelled(t, args))));
         }
         if let Op::Call(b, _) = self
             && let Some(zero) = crate::builtins::constant_derivative(b.name, args, kind)
@@ -432,7 +434,7 @@ impl<'a> Op<'a> {
                 Ok(
                     match self.symbolic(args.iter().map(|v| to_sym(v)).collect()) {
                         Sym::Const(v, _) => *v,
-                        s => Value::Sym(s),
+                        s => Value::Sym(super::transform::cancelled(s, args)),
                     },
                 )
             })

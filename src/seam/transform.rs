@@ -66,7 +66,7 @@ pub(super) fn of_op(op: Op, args: &[&Value], kind: &Kind) -> Option<Sym> {
 fn rotations(a: &Sym, b: &Sym) -> Option<Sym> {
     let factors = |s: &Sym| match s {
         Sym::Product(fs) => fs.clone(),
-        Sym::Identity => Vec::new(),
+        Sym::Identity(_) => Vec::new(),
         other => vec![other.clone()],
     };
     let (mut left, right) = (factors(a), factors(b));
@@ -186,7 +186,7 @@ fn rotate(r: &Sym, v: &Sym) -> Sym {
     {
         return signed(neg, Sym::product(rest.to_vec()));
     }
-    if matches!(r, Sym::Identity) {
+    if matches!(r, Sym::Identity(_)) {
         return signed(neg, v);
     }
     signed(neg, Sym::times(r.clone(), v))
@@ -226,13 +226,13 @@ fn product(a: &Sym, b: &Sym) -> Option<Sym> {
     let (r1, p1, last) = parts(a)?;
     let (r2, p2, _) = parts(b)?;
     let r = if inverse_rotations(r1, r2) {
-        Sym::Identity
+        Sym::identity()
     } else {
         Sym::times(r1.clone(), r2.clone())
     };
     let p = plus(rotate(r1, p2), p1);
-    if matches!(r, Sym::Identity) && is_const(&p, 0.0) {
-        return Some(Sym::Identity);
+    if matches!(r, Sym::Identity(_)) && is_const(&p, 0.0) {
+        return Some(Sym::identity());
     }
     Some(Sym::Block(vec![vec![r, p], last.clone()]))
 }
@@ -306,4 +306,46 @@ pub fn known(
             ))
         }
     }
+}
+
+/// `s`, the result of an operation on `args`, with the `given` names of
+/// the operands when it is all they cancelled to, the identity
+/// (`inv(T) * T`, `R^T R`): it is then the numbers' identity once those
+/// names all have numbers, as typed first (LANGUAGE.md §7;
+/// `crate::calculus::substitute::current`). Any other result as it is.
+pub(super) fn cancelled(s: Sym, args: &[&Value]) -> Sym {
+    if !matches!(&s, Sym::Identity(ns) if ns.is_empty()) {
+        return s;
+    }
+    let mut names: Vec<String> = Vec::new();
+    let mut add = |n: String| {
+        if n != "deg" && !names.contains(&n) {
+            names.push(n);
+        }
+    };
+    let formula = |v: &Value, add: &mut dyn FnMut(String)| {
+        if let Value::Formula { m, .. } = v {
+            let mut syms = Vec::new();
+            m.data.iter().for_each(|e| e.symbols(&mut syms));
+            syms.iter()
+                .for_each(|s| add(s.name.to_string() + &"'".repeat(usize::from(s.dots))));
+        }
+    };
+    for a in args {
+        match a {
+            Value::Sym(t) => {
+                t.any(&mut |node| {
+                    match node {
+                        Sym::Name(n) => add(n.clone()),
+                        Sym::Identity(ns) => ns.iter().for_each(|n| add(n.clone())),
+                        Sym::Const(v, _) => formula(v, &mut add),
+                        _ => {}
+                    }
+                    false
+                });
+            }
+            v => formula(v, &mut add),
+        }
+    }
+    Sym::Identity(names)
 }

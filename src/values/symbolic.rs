@@ -87,8 +87,12 @@ pub enum Tree<C> {
     /// A number or matrix inside a symbolic expression, with its compact
     /// text (for printing only; constants compare by value).
     Const(Box<C>, String),
-    /// The identity (what cancelled products leave).
-    Identity,
+    /// The identity (what cancelled products leave), with the `given`
+    /// names of the operands it cancelled from when it is all an
+    /// operation left (`inv(T) * T`: T; `crate::seam::apply`), so that it
+    /// is the numbers' identity once they all have numbers (§7); empty
+    /// elsewhere. Identities compare equal whatever their names.
+    Identity(Vec<String>),
     /// The product of two or more factors in order, `T_ab T_bc`: flat (no
     /// factor is a product or the identity), adjacent inverse pairs
     /// cancelled; built by [`Tree::product`].
@@ -137,7 +141,7 @@ impl<C: PartialEq> PartialEq for Tree<C> {
             (Const(a, _), Const(b, _)) => a == b,
             (Vector(a), Vector(b)) => a == b,
             (Index(a, i), Index(b, j)) => a == b && i == j,
-            (Identity, Identity) => true,
+            (Identity(_), Identity(_)) => true,
             (Product(a), Product(b)) => a == b,
             (Inv(a), Inv(b))
             | (Neg(a), Neg(b))
@@ -165,6 +169,13 @@ pub const MAX_SYM_NODES: usize = 10_000;
 /// of the bound of [`MAX_SYM_NODES`].
 pub const MAX_SYM_DEPTH: usize = 1_000;
 
+impl<C> Tree<C> {
+    /// The identity `I`, cancelled from no names.
+    pub fn identity() -> Tree<C> {
+        Tree::Identity(Vec::new())
+    }
+}
+
 impl<C: Clone + PartialEq> Tree<C> {
     /// True when the expression has more than [`MAX_SYM_NODES`] nodes or is
     /// deeper than [`MAX_SYM_DEPTH`] (counted without recursion, stopping
@@ -178,7 +189,7 @@ impl<C: Clone + PartialEq> Tree<C> {
                 return true;
             }
             match s {
-                Tree::Name(_) | Tree::Const(..) | Tree::Identity => {}
+                Tree::Name(_) | Tree::Const(..) | Tree::Identity(_) => {}
                 Tree::Product(v) | Tree::Call(_, v) | Tree::Vector(v) => {
                     todo.extend(v.iter().map(|c| (c, depth + 1)))
                 }
@@ -205,7 +216,7 @@ impl<C: Clone + PartialEq> Tree<C> {
     /// The operands of this node (none for a leaf).
     pub fn children(&self) -> Vec<&Tree<C>> {
         match self {
-            Tree::Name(_) | Tree::Const(..) | Tree::Identity => Vec::new(),
+            Tree::Name(_) | Tree::Const(..) | Tree::Identity(_) => Vec::new(),
             Tree::Product(v) | Tree::Call(_, v) | Tree::Vector(v) => v.iter().collect(),
             Tree::Block(rows) => rows.iter().flatten().collect(),
             Tree::Inv(a)
@@ -238,7 +249,7 @@ impl<C: Clone + PartialEq> Tree<C> {
     pub fn inverse(self) -> Tree<C> {
         match self {
             Tree::Inv(x) => *x,
-            Tree::Identity => Tree::Identity,
+            Tree::Identity(ns) => Tree::Identity(ns),
             Tree::Product(fs) => Tree::product(fs.into_iter().rev().map(Tree::inverse).collect()),
             other => Tree::Inv(Box::new(other)),
         }
@@ -250,7 +261,7 @@ impl<C: Clone + PartialEq> Tree<C> {
     pub fn transpose(self) -> Tree<C> {
         match self {
             Tree::Transpose(x) => *x,
-            Tree::Identity => Tree::Identity,
+            Tree::Identity(ns) => Tree::Identity(ns),
             Tree::Product(fs) => Tree::product(fs.into_iter().rev().map(Tree::transpose).collect()),
             other => Tree::Transpose(Box::new(other)),
         }
@@ -269,7 +280,7 @@ impl<C: Clone + PartialEq> Tree<C> {
         while let Some(f) = stack.pop() {
             match f {
                 Tree::Product(inner) => stack.extend(inner.into_iter().rev()),
-                Tree::Identity => {}
+                Tree::Identity(_) => {}
                 f => {
                     if out.last().is_some_and(|last| last.cancels(&f)) {
                         out.pop();
@@ -280,8 +291,8 @@ impl<C: Clone + PartialEq> Tree<C> {
             }
         }
         match out.len() {
-            0 => Tree::Identity,
-            1 => out.pop().unwrap_or(Tree::Identity),
+            0 => Tree::identity(),
+            1 => out.pop().unwrap_or_else(Tree::identity),
             _ => Tree::Product(out),
         }
     }
@@ -346,7 +357,7 @@ impl<C: Clone + PartialEq> fmt::Display for Tree<C> {
         match self {
             Tree::Name(n) => write!(f, "{n}"),
             Tree::Const(_, text) => write!(f, "{text}"),
-            Tree::Identity => write!(f, "I"),
+            Tree::Identity(_) => write!(f, "I"),
             Tree::Product(fs) => {
                 for (i, x) in fs.iter().enumerate() {
                     if i > 0 {
@@ -495,7 +506,7 @@ mod tests {
         let power = Sym::times(v_a.transpose(), f_a);
         assert_eq!(power.to_string(), "V_b.T F_b");
         assert_eq!(n("R").transpose().transpose(), n("R"));
-        assert_eq!(Sym::Identity.transpose().to_string(), "I");
+        assert_eq!(Sym::identity().transpose().to_string(), "I");
     }
 
     #[test]
