@@ -410,12 +410,11 @@ impl Interp<'_> {
     /// each once, in order.
     fn given_names(&self, e: &Expr, out: &mut Vec<String>) {
         match &e.kind {
-            ExprKind::Var(n) => {
+            ExprKind::Var(n)
                 if self.env.get(*n).is_some_and(|b| b.symbolic)
-                    && !out.iter().any(|x| x == n.as_str())
-                {
-                    out.push(n.as_str().to_string());
-                }
+                    && !out.iter().any(|x| x == n.as_str()) =>
+            {
+                out.push(n.as_str().to_string());
             }
             ExprKind::Unary { operand, .. } => self.given_names(operand, out),
             ExprKind::Binary { lhs, rhs, .. } => {
