@@ -338,4 +338,16 @@ fn a_closed_form_singular_where_the_expression_is_defined_is_made_again() {
     let (later, first) = both("exp([(a, 2a, a, a*b, a, 2)] a)^-1", "a = 0");
     assert!(later.ends_with(": SE(3)") && first == later, "{later}");
     refused_both_ways("(a^2 - a*b)/b", "0", "division by zero");
+    // `subs` of the number with b free, as typed first
+    for value in [
+        "exp([(a, 2a, a, a*b, a, 2)] a)^-1",
+        "exp([(a, 2a, 2a, b, 0, 0)] 1)",
+    ] {
+        let (_, first) = both(value, "a = 0");
+        assert_eq!(
+            last(&format!("given a, b : scalar\nsubs({value}, a, 0)")),
+            first,
+            "subs({value}, a, 0)"
+        );
+    }
 }

@@ -530,7 +530,24 @@ pub(crate) fn subs_numbers(
             )));
         }
         // (others stay symbols: refused only where a step of numbers is)
-        return failure(r, &at).map(|Failed(msg)| Err(msg));
+        if let Some(Failed(msg)) = failure(r, &at) {
+            return Some(Err(msg));
+        }
+        // (a canonical form singular at the number where the expression as
+        // typed is not, `exp([S] a)^-1` of a non-unit axis at a = 0: made
+        // again from its recipe with the number, as typed first)
+        let singular = m
+            .data
+            .iter()
+            .any(|e| put_numbers(e, &at).undefined().is_some());
+        return singular
+            .then(|| super::partly::made_with(r, &at))
+            .flatten()
+            .filter(|v| match v {
+                Value::Formula { m, .. } => m.data.iter().all(|e| e.undefined().is_none()),
+                v => matches!(v, Value::Num { .. }),
+            })
+            .map(Ok);
     }
     match numbers(r, &at, warnings) {
         Err(Failed(msg)) => Some(Err(msg)),
