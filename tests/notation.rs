@@ -654,48 +654,6 @@ fn check_knows_a_size_bound_to_a_literal() {
     );
 }
 
-/// A size over a `given` symbol with no number has no number of rows:
-/// `given k; eye(k) * T_ab` passed `check` and `run` printed `eye(k) T_ab :
-/// n×4 matrix` (an n in no script; the product is defined only at k = 4),
-/// and with k = 3 bound since, a 3×3 times a 4×4. Both modes now refuse the
-/// size, naming the symbol; with its number bound first, or through a
-/// function's parameter or a comprehension's variable, it is a size.
-#[test]
-fn a_size_over_a_given_symbol_is_refused_by_check_and_run() {
-    let setup = "given k, j\ngiven T_ab : SE3\n";
-    for x in [
-        "eye(k) * T_ab",
-        "T_ab * eye(k)",
-        "eye(k)",
-        "zeros(k, 4) + T_ab",
-        "zeros(2, k + 1)",
-        "eye(2*k - j)",
-    ] {
-        let src = format!("{setup}{x}\n");
-        for mode in [Mode::Run, Mode::Check] {
-            let (kind, msg) = first_error(&src, mode)
-                .unwrap_or_else(|| panic!("{x}: {mode:?} did not refuse it"));
-            assert!(
-                kind == "domain" && msg.contains("the given k") && msg.contains("no number"),
-                "{x} ({mode:?}): {msg}"
-            );
-        }
-    }
-    // a size read through another name: run names its symbol (check has
-    // no value to read, as for any size it cannot tell)
-    let (_, msg) =
-        first_error(&format!("{setup}m = k + 1\neye(m) * T_ab\n"), Mode::Run).expect("refused");
-    assert!(msg.contains("the given k"), "{msg}");
-    passes_both(
-        setup,
-        &[
-            "k = 4; eye(k) * T_ab",
-            "f(k) = eye(k) * T_ab; f(4)",
-            "[eye(k) * T_ab for k in 4:4]",
-        ],
-    );
-}
-
 /// A scalar in a row of blocks is 1×1 unless it is a lone `0`, which is
 /// the zero block its row and column need (§4): `[1, v]`, `[z, v]` with
 /// z = 0, `[-0, v]` and `[a, v]` with a given passed `check` and `run`

@@ -175,10 +175,6 @@ impl Interp<'_> {
                 }
             }
         };
-        // (`eye(k)` with k given: a matrix of no size yet, refused by both)
-        if let Some(d) = self.symbolic_size(b.name, args, &vals) {
-            return Err(d);
-        }
         if !self.running() {
             // (`eye(3)`, `zeros(2, 3)` of literal sizes: the kind their
             // numbers will have, so checking knows their shape)
@@ -355,84 +351,6 @@ impl Interp<'_> {
             Some(v) => v.map(Some).map_err(|m| op.failure(m, span)),
             None => Ok(None),
         }
-    }
-}
-
-impl Interp<'_> {
-    /// The refusal of `eye(n)` or `zeros(r, c)` whose size is a `given`
-    /// symbol with no number yet (running: a size that holds symbols;
-    /// checking: a size written with a given name): a matrix has a size,
-    /// and every product or sum with it is checked by it (§7: expressions
-    /// over symbols are checked exactly like numbers). `given k; eye(k) *
-    /// T_ab` passed both as an "n×4 matrix", its n in no script, and with
-    /// k = 3 bound since it was a 3×3 times a 4×4. None for any other call.
-    fn symbolic_size(&self, name: &str, args: &[Expr], vals: &[Value]) -> Option<Diagnostic> {
-        if !matches!(name, "eye" | "zeros") {
-            return None;
-        }
-        let index = match self.running() {
-            true => vals.iter().position(crate::values::recipe::holds_symbols),
-            false => args.iter().position(|a| self.mentions_given(a)),
-        }?;
-        let at = args.get(index)?;
-        let mut names = Vec::new();
-        self.given_names(at, &mut names);
-        // (a size read through another name, `m = k + 1`: its symbols)
-        if let (true, Some(Value::Formula { m, .. })) = (names.is_empty(), vals.get(index)) {
-            let mut syms = Vec::new();
-            m.data.iter().for_each(|e| e.symbols(&mut syms));
-            names.extend(
-                syms.iter()
-                    .map(|s| crate::sym::print::symbol(s, Default::default())),
-            );
-        }
-        let which = match names.as_slice() {
-            [] => "given symbols, which have no numbers yet".to_string(),
-            [one] => format!("the given {one}, which has no number yet"),
-            more => format!("the given {}, which have no numbers yet", more.join(", ")),
-        };
-        Some(
-            Diagnostic::error(
-                ErrorKind::Domain,
-                at.span,
-                format!(
-                    "the size of {name}(…) is over {which}: a matrix needs a whole number of \
-                     rows and columns, and every product or sum with it is checked by them"
-                ),
-            )
-            .with_help(format!(
-                "bind numbers to the given names first, or write the size, {name}(4) (§7)"
-            )),
-        )
-    }
-
-    /// The names `e` reads that are still bound to their `given` symbols,
-    /// each once, in order.
-    fn given_names(&self, e: &Expr, out: &mut Vec<String>) {
-        match &e.kind {
-            ExprKind::Var(n)
-                if self.env.get(*n).is_some_and(|b| b.symbolic)
-                    && !out.iter().any(|x| x == n.as_str()) =>
-            {
-                out.push(n.as_str().to_string());
-            }
-            ExprKind::Unary { operand, .. } => self.given_names(operand, out),
-            ExprKind::Binary { lhs, rhs, .. } => {
-                self.given_names(lhs, out);
-                self.given_names(rhs, out);
-            }
-            ExprKind::Paren(xs) | ExprKind::Call { args: xs, .. } => {
-                xs.iter().for_each(|x| self.given_names(x, out))
-            }
-            _ => {}
-        }
-    }
-
-    /// Whether `e` reads a name still bound to its `given` symbol.
-    fn mentions_given(&self, e: &Expr) -> bool {
-        let mut names = Vec::new();
-        self.given_names(e, &mut names);
-        !names.is_empty()
     }
 }
 
