@@ -351,3 +351,28 @@ fn a_closed_form_singular_where_the_expression_is_defined_is_made_again() {
         );
     }
 }
+
+/// A product whose sizes the checker could not know (`eye(k) T_ab` over a
+/// given k) is refused as typed first once the numbers make it one the
+/// product's rule refuses: at k = 3 it printed a 3×3 times T_ab, labelled
+/// an "n×4 matrix"; at k = 4 it is a value, as typed first.
+#[test]
+fn a_product_the_numbers_make_undefined_is_refused_as_typed_first() {
+    for (x, why) in [
+        ("eye(k) * T_ab", "cannot multiply an SO(3) by an SE(3)"),
+        ("T_ab * eye(k)", "cannot multiply an SE(3) by an SO(3)"),
+        ("T_ab * zeros(k, 2)", "cannot multiply"),
+    ] {
+        let later = format!("given k\ngiven T_ab : SE3\ny = {x}\nk = 3\ny");
+        let (out, err) = run(&later);
+        assert!(
+            err.contains("domain error") && err.contains(why),
+            "{later}\n{out}\n{err}"
+        );
+        let first = format!("given T_ab : SE3\nk = 3\n{x}");
+        let (out, err) = run(&first);
+        assert!(err.contains(why), "{first}\n{out}\n{err}");
+    }
+    let (_, err) = run("given k\ngiven T_ab : SE3\ny = eye(k) * T_ab\nk = 4\ny");
+    assert!(err.is_empty(), "{err}");
+}

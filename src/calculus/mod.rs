@@ -11,6 +11,7 @@
 //! [`crate::eval`].
 
 pub(crate) mod held;
+mod kinds;
 pub(crate) mod put;
 pub(crate) mod resolve;
 pub(crate) mod substitute;

@@ -117,7 +117,17 @@ impl Resolving<'_, '_> {
                             out.pop();
                             out.push(constant(v));
                         }
-                        None => out.push(f),
+                        None => {
+                            // (numbers beside a name: their kinds multiply
+                            // as typed first, `eye(k) T` at k = 3 is refused)
+                            if let Some(why) = out
+                                .last()
+                                .and_then(|a| super::kinds::unmultiplied(self.env, a, &f))
+                            {
+                                self.failed.get_or_insert(why);
+                            }
+                            out.push(f)
+                        }
                     }
                 }
                 Sym::product(out)
@@ -538,7 +548,10 @@ pub fn formula_now(
         // the inverse of exp([S] a) with a non-unit axis divides by a, and
         // at a = 0 it is the identity, as typed first — made again from
         // its recipe with the numbers in its leaves)
-        return match how.as_ref().and_then(|r| remade(r, &lookup)) {
+        return match how
+            .as_ref()
+            .and_then(|r| crate::decide::partly::made_defined(r, &lookup))
+        {
             Some(v) => Ok(v),
             None => Err(replay::Failed(why)),
         };
@@ -560,19 +573,6 @@ pub fn formula_now(
         },
         v => v,
     })
-}
-
-/// The value recipe `r` makes with the numbers `lookup` gives put into its
-/// leaves, each step applied as the evaluator applies it (as if the
-/// numbers had been typed first: `crate::decide::partly::made_with`);
-/// None where a step cannot be made again so or what it makes is itself
-/// undefined.
-fn remade(r: &Rc<recipe::Recipe>, lookup: replay::Lookup) -> Option<Value> {
-    match crate::decide::partly::made_with(r, lookup)? {
-        Value::Formula { m, .. } if m.data.iter().any(|e| e.undefined().is_some()) => None,
-        v @ (Value::Formula { .. } | Value::Num { .. }) => Some(v),
-        _ => None,
-    }
 }
 
 /// Whether the name a `subs` kept as a call substitutes is a plain scalar

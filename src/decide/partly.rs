@@ -85,6 +85,19 @@ pub(crate) fn made_with(r: &Rc<Recipe>, at: Lookup) -> Option<Value> {
     value(r, at, &mut HashMap::new())
 }
 
+/// [`made_with`] where what it makes is defined: a value of numbers, or a
+/// formula none of whose entries is undefined at the numbers (a closed
+/// form singular at a number where the expression as typed is not,
+/// `exp([S] a)^-1` of a non-unit axis at a = 0, is made again so, as
+/// typed first). None otherwise.
+pub(crate) fn made_defined(r: &Rc<Recipe>, at: Lookup) -> Option<Value> {
+    match made_with(r, at)? {
+        Value::Formula { m, .. } if m.data.iter().any(|e| e.undefined().is_some()) => None,
+        v @ (Value::Formula { .. } | Value::Num { .. }) => Some(v),
+        _ => None,
+    }
+}
+
 /// The value recipe `r` makes with the numbers bound so far: its leaves
 /// with them put in, each step applied as the evaluator applies it (to
 /// numbers as typed first, to formulas by their exact forms). None for a

@@ -541,12 +541,8 @@ pub(crate) fn subs_numbers(
             .iter()
             .any(|e| put_numbers(e, &at).undefined().is_some());
         return singular
-            .then(|| super::partly::made_with(r, &at))
+            .then(|| super::partly::made_defined(r, &at))
             .flatten()
-            .filter(|v| match v {
-                Value::Formula { m, .. } => m.data.iter().all(|e| e.undefined().is_none()),
-                v => matches!(v, Value::Num { .. }),
-            })
             .map(Ok);
     }
     match numbers(r, &at, warnings) {
