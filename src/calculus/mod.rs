@@ -2,8 +2,9 @@
 //! them numeric … exactly as if the numbers had been typed first"), below
 //! the interpreter: a value made over `given` symbols read with the numbers
 //! bound since (`substitute`, over the trees of `resolve`), the warnings of
-//! such reads once per binding of their numbers (`warned`), and what
-//! `diff` and `subs` by a symbol that has a number may read (`held`). It
+//! such reads once per binding of their numbers (`warned`), what
+//! `diff` and `subs` by a symbol that has a number may read (`held`), and
+//! `diff` of a call kept over symbols once its numbers are bound (`kept`). It
 //! sees the session's bindings only through [`Bindings`], which the
 //! interpreter's environment ([`crate::eval::env::Env`]) implements; it
 //! replays recipes with numbers through [`crate::decide`]'s replay and
@@ -11,6 +12,7 @@
 //! [`crate::eval`].
 
 pub(crate) mod held;
+mod kept;
 mod kinds;
 pub(crate) mod put;
 pub(crate) mod resolve;

@@ -200,6 +200,25 @@ impl Resolving<'_, '_> {
                 }
             }
             Sym::Call(fun, args) if matches!(fun.name, "diff" | "subs") && self.put.is_some() => {
+                // (subs(diff(x, a), a, 0.37): the derivative at the number, kept.rs)
+                if let (Some([name, v]), [x, by]) = (&self.put, args.as_slice())
+                    && fun.name == "diff"
+                    && self.failed.is_none()
+                    && let Some(d) = super::kept::put_derivative(
+                        self.env,
+                        &mut *self.warnings,
+                        [name, v],
+                        [x, by],
+                    )
+                {
+                    return match d {
+                        Ok(v) => constant(v),
+                        Err(why) => {
+                            self.failed = Some(why);
+                            s.clone()
+                        }
+                    };
+                }
                 self.kept_call(fun.name);
                 s.clone()
             }
@@ -220,6 +239,37 @@ impl Resolving<'_, '_> {
                 // never computed from what is left.
                 let x = self.go(&args[0]);
                 if x != args[0] {
+                    // (diff with every number bound: its numbers, by the
+                    // chain rule through the kept calls, kept.rs)
+                    if fun.name == "diff"
+                        && self.failed.is_none()
+                        && let Some(d) = self.kept_derivative(&args[0], &args[1])
+                    {
+                        return match d {
+                            Ok(v) => constant(v),
+                            Err(why) => {
+                                self.failed = Some(why);
+                                s.clone()
+                            }
+                        };
+                    }
+                    // (other symbols still free: the numbers put in but
+                    // by's own, which waits in a subs of the derivative)
+                    if fun.name == "diff" && self.failed.is_none() {
+                        match super::kept::partly(
+                            self.env,
+                            &mut *self.warnings,
+                            *fun,
+                            [&args[0], &args[1]],
+                        ) {
+                            Ok(Some(d)) => return d,
+                            Ok(None) => {}
+                            Err(why) => {
+                                self.failed = Some(why);
+                                return s.clone();
+                            }
+                        }
+                    }
                     self.kept_call(fun.name);
                     return s.clone();
                 }

@@ -104,7 +104,9 @@ fn walk(r: &Rc<Recipe>, x: &Symbol, out: &mut Excluded, seen: &mut HashSet<*cons
         Step::Part(_) | Step::Retag | Step::Closed(_) => {
             r.args.iter().for_each(|a| walk(a, x, out, seen))
         }
-        Step::Range(_) | Step::Compare(_) | Step::Guard(_) | Step::LogRate => out.complete = false,
+        Step::Range(_) | Step::Compare(_) | Step::Guard(_) | Step::LogRate | Step::Rate(..) => {
+            out.complete = false
+        }
     }
 }
 

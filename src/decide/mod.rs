@@ -15,7 +15,8 @@
 //! (`turn`, §3.2.3.3) and the order of scalars (`order`); `sum`, `min`
 //! and `max` of items that may be exact, as the items written out
 //! (`folds`), for numbers typed first and bound later alike; where a
-//! value is defined as typed in one unknown (`domain`: `x/x` not at 0). Imports
+//! value is defined as typed in one unknown (`domain`: `x/x` not at 0); the
+//! rate of a builtin at numbers, for the derivative of a kept call (`rate`). Imports
 //! the operation seam ([`crate::seam`]), nothing from the interpreter.
 
 pub(crate) mod ball;
@@ -34,6 +35,7 @@ pub(crate) mod log_exp;
 pub(crate) mod order;
 pub(crate) mod partly;
 pub(crate) mod powers;
+pub(crate) mod rate;
 pub(crate) mod replay;
 pub(crate) mod transcendental;
 pub(crate) mod turn;

@@ -373,6 +373,16 @@ fn step(r: &Recipe, at: Lookup, memo: &mut Memo) -> Option<Value> {
                 }
             };
         }
+        // the rate of a call at numbers (rate.rs)
+        Step::Rate(name, part) => {
+            let [x, dx] = refs.as_slice() else {
+                return None;
+            };
+            return super::rate::of(name, *part, x, dx, r.kind).unwrap_or_else(|why| {
+                memo.failed.get_or_insert(why);
+                None
+            });
+        }
         Step::Op(o) => Op::of(o)?,
     };
     // (the kind as the checker gives it for these numbers typed first)

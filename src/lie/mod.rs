@@ -18,6 +18,7 @@
 //! - [`steps`]: the same algorithms recording the book's steps (`explain`,
 //!   LANGUAGE.md §14);
 //! - [`dlog`]: the rates of the exponential coordinates (log R, log T);
+//! - [`rates`]: the rates of exp, the norm, the direction and `AxisAng6`;
 //! - [`group`]: the groups as types ([`SO3`], [`SE3`], [`SO2`], [`SE2`])
 //!   with the [`LieGroup`] operations, over the functions above.
 #![deny(missing_docs)]
@@ -26,6 +27,7 @@ pub mod dlog;
 pub mod group;
 pub mod matexp;
 pub mod project;
+pub mod rates;
 pub mod repr;
 pub mod se2;
 pub mod se3;

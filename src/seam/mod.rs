@@ -12,6 +12,7 @@
 pub mod apply;
 mod call;
 mod chain;
+pub(crate) use chain::of_kept;
 pub(crate) mod exactness;
 mod exponential;
 pub(crate) mod operation;

@@ -68,6 +68,15 @@ pub enum Step {
     /// [`crate::lie::dlog::se3_log_rate`], right on every branch of the
     /// logarithm; refused at a half turn, where the logarithm jumps.
     LogRate,
+    /// The rate of builtin `name` (part `i` of the tuple it gives, if
+    /// `Some(i)`) at its one operand, the first, moving with the second,
+    /// that operand's rate: from the numbers (`decide::rate`, over
+    /// [`crate::lie::rates`]), where no closed step gives the derivative
+    /// (the exponential of an so(3) matrix over symbols, `AxisAng6`, a
+    /// norm), for a `diff` of a call kept over symbols. Refused where the
+    /// call has no derivative at the numbers (a norm at 0, a log at a
+    /// half turn).
+    Rate(&'static str, Option<usize>),
 }
 
 /// A closed form over symbols that holds on a branch (LANGUAGE.md §7: the

@@ -16,12 +16,14 @@
 
 mod build;
 mod guard;
+mod kept;
 mod rates;
 mod subs;
 
 use build::*;
 
 use guard::closed_form;
+pub(crate) use kept::of_kept;
 use subs::substituted;
 
 use std::collections::HashMap;
@@ -53,6 +55,7 @@ pub(super) fn derivative(x: &Value, by: &Value) -> Option<Rc<Recipe>> {
         by,
         memo: &mut memo,
         top: (Rc::as_ptr(r), kind),
+        rates: false,
     }
     .of(r)?;
     Some(d.unwrap_or_else(|| zero(&kind)))
@@ -81,6 +84,9 @@ struct Chain<'a> {
     /// The recipe differentiated, with its shape (from the value where
     /// the recipe's kind leaves it open).
     top: (*const Recipe, Kind),
+    /// Whether the rates at numbers may stand where no closed step
+    /// reaches (kept.rs: the derivative of a call kept over symbols).
+    rates: bool,
 }
 impl Chain<'_> {
     /// The derivative of `r`; None where the rule does not reach.
@@ -96,6 +102,14 @@ impl Chain<'_> {
     }
 
     fn step(&mut self, r: &Rc<Recipe>) -> Option<D> {
+        match self.rule(r) {
+            None if self.rates => self.rated(r),
+            d => d,
+        }
+    }
+
+    /// The derivative of `r` by the closed steps of the chain rule.
+    fn rule(&mut self, r: &Rc<Recipe>) -> Option<D> {
         let k = match shape(r) {
             Some(k) => k,
             None if Rc::as_ptr(r) == self.top.0 => self.top.1,
