@@ -12,9 +12,10 @@
 //! call has no derivative at the numbers (a norm at 0, a log at a half
 //! turn) that is the refusal.
 
+use std::collections::HashMap;
 use std::rc::Rc;
 
-use super::resolve::{Resolving, bound, formula_now};
+use super::resolve::{Resolving, bound, constant, formula_now};
 use super::{Bindings, Bound};
 use crate::check::ty::Kind;
 use crate::decide::replay::{self, Failed};
@@ -22,7 +23,7 @@ use crate::seam::apply::Op;
 use crate::syntax::ast::BinOp;
 use crate::syntax::name::Name;
 use crate::values::ops::Sel;
-use crate::values::recipe::{Operation, Recipe, Step};
+use crate::values::recipe::{self, Operation, Recipe, Step};
 use crate::values::symbolic::{Fun, Role};
 use crate::values::value::{Sym, Value};
 
@@ -63,7 +64,7 @@ impl Bindings for Put<'_> {
 /// `subs(diff(x, by), name, v)` with `v` a number, once every other
 /// symbol has one: the derivative at those numbers with v for the
 /// symbol (None where that is not known, as [`Resolving::kept_derivative`]).
-pub(super) fn put_derivative(
+fn put_derivative(
     env: &dyn Bindings,
     warnings: &mut Vec<crate::diagnostics::Diagnostic>,
     [name, v]: [&Value; 2],
@@ -100,7 +101,7 @@ pub(super) fn put_derivative(
 /// have numbers: [`put_derivative`]). Ok(None) where no symbol but `by`
 /// is free (the derivative was known then, or not at all) or x holds a
 /// function of time or a rate (whose numbers the chain rule reads).
-pub(super) fn partly(
+fn partly(
     env: &dyn Bindings,
     warnings: &mut Vec<crate::diagnostics::Diagnostic>,
     fun: Fun,
@@ -179,6 +180,52 @@ fn for_symbols(x: &Sym, f: &mut impl FnMut(&crate::sym::Symbol)) {
 }
 
 impl Resolving<'_, '_> {
+    /// `diff(x, by)` kept as a call (`s`, of operands `args`) whose
+    /// operand the numbers bound since changed: its numbers, where every
+    /// symbol has one; the tree that waits for the rest, where some are
+    /// free ([`partly`]); the refusal, where the call has no derivative at
+    /// the numbers. None where it is not known (refused as before).
+    pub(super) fn bound_diff(&mut self, s: &Sym, fun: Fun, args: &[Sym]) -> Option<Sym> {
+        let [x, by] = args else { return None };
+        if self.failed.is_some() {
+            return None;
+        }
+        if let Some(d) = self.kept_derivative(x, by) {
+            return Some(self.settle(s, d));
+        }
+        match partly(self.env, &mut *self.warnings, fun, [x, by]) {
+            Ok(d) => d,
+            Err(why) => {
+                self.failed = Some(why);
+                Some(s.clone())
+            }
+        }
+    }
+
+    /// `diff(x, by)` (`s`, of operands `args`) inside a `subs` kept as a
+    /// call that puts a number for a symbol ([`put_derivative`]).
+    pub(super) fn put_diff(&mut self, s: &Sym, args: &[Sym]) -> Option<Sym> {
+        let ([x, by], Some([name, v])) = (args, self.put.clone()) else {
+            return None;
+        };
+        if self.failed.is_some() {
+            return None;
+        }
+        let d = put_derivative(self.env, &mut *self.warnings, [&name, &v], [x, by])?;
+        Some(self.settle(s, d))
+    }
+
+    /// The derivative's numbers as a constant, or `s` with the refusal kept.
+    fn settle(&mut self, s: &Sym, d: Result<Value, String>) -> Sym {
+        match d {
+            Ok(v) => constant(v),
+            Err(why) => {
+                self.failed = Some(why);
+                s.clone()
+            }
+        }
+    }
+
     /// `diff(x, by)` of the tree `x` with every symbol now a number: the
     /// derivative's numbers (Ok), or why there are none at these numbers
     /// (Err); None where it is not known (a symbol without a number, a
@@ -205,7 +252,7 @@ impl Resolving<'_, '_> {
             Sym::Const(v, _) => match &**v {
                 v @ Value::Formula { .. } => {
                     let x = formula_now(v, self.env, &mut Vec::new()).ok()?;
-                    numbers(&x).then(|| (Recipe::of(v), x))
+                    numbers(&x).then(|| (shaped(&Recipe::of(v), &mut HashMap::new()), x))
                 }
                 v if numbers(v) => Some((Recipe::leaf(v.clone()), v.clone())),
                 _ => None,
@@ -307,6 +354,68 @@ impl Resolving<'_, '_> {
         let r = Recipe::node(step, args.into_iter().map(|(r, _)| r).collect(), v.kind())?;
         Some((r, v))
     }
+}
+
+/// Recipe `r` with each `[x]` of a vector, recorded with no kind (the
+/// check left it open), given the kind its vector gives it: [ω] is in
+/// so(3), [V] in se(3). The chain rule takes a product's shape from its
+/// operands' (`[ω] a`); unchanged parts are shared.
+fn shaped(r: &Rc<Recipe>, memo: &mut HashMap<*const Recipe, Rc<Recipe>>) -> Rc<Recipe> {
+    if let Some(x) = memo.get(&Rc::as_ptr(r)) {
+        return x.clone();
+    }
+    let out = stacker::maybe_grow(64 * 1024, 1024 * 1024, || {
+        let args: Vec<Rc<Recipe>> = r.args.iter().map(|a| shaped(a, memo)).collect();
+        let kind = match (&r.step, args.as_slice()) {
+            (Step::Op(Operation::Block(w)), [x]) if **w == [1] && recipe::vague(&r.kind) => {
+                match (x.kind.is_vector(), x.kind.vec_len()) {
+                    (true, Some(3)) => Kind::So3,
+                    (true, Some(6)) => Kind::Se3,
+                    _ => r.kind,
+                }
+            }
+            (Step::Op(Operation::Block(w)), _) if r.kind == Kind::Unknown => {
+                block_kind(w, &args).unwrap_or(r.kind)
+            }
+            _ => r.kind,
+        };
+        if kind == r.kind && args.iter().zip(&r.args).all(|(a, b)| Rc::ptr_eq(a, b)) {
+            return r.clone();
+        }
+        Recipe::node(r.step.clone(), args, kind).unwrap_or_else(|| r.clone())
+    });
+    memo.insert(Rc::as_ptr(r), out.clone());
+    out
+}
+
+/// The shape of a block matrix `[R, p; 0, 1]` of operands `args` (row by
+/// row, `widths` in each row) recorded with no kind: each row as high as
+/// its first block, the first row as wide as its blocks together. None
+/// where a block's shape is open, or a lone 0 (a zero block of the shape
+/// that fits) stands in the first row or column.
+fn block_kind(widths: &[usize], args: &[Rc<Recipe>]) -> Option<Kind> {
+    let size = |r: &Rc<Recipe>| match (&r.step, r.kind.shape()?) {
+        (Step::Leaf(v), _) if v.as_scalar() == Some(0.0) => None,
+        (_, (Some(h), Some(w))) => Some((h, w)),
+        _ => None,
+    };
+    let (mut rows, mut cols, mut at) = (0, 0, 0);
+    for (i, &n) in widths.iter().enumerate() {
+        let row = args.get(at..at + n)?;
+        at += n;
+        rows += size(row.first()?)?.0;
+        if i == 0 {
+            cols = row
+                .iter()
+                .map(|b| size(b).map(|s| s.1))
+                .sum::<Option<usize>>()?;
+        }
+    }
+    Some(match (rows, cols) {
+        (1, 1) => Kind::Scalar,
+        (n, 1) => Kind::Vector(Some(n)),
+        (r, c) => Kind::Matrix(Some(r), Some(c)),
+    })
 }
 
 /// Whether a lone 0 was made a zero block (its numbers changed shape).

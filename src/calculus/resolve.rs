@@ -201,23 +201,10 @@ impl Resolving<'_, '_> {
             }
             Sym::Call(fun, args) if matches!(fun.name, "diff" | "subs") && self.put.is_some() => {
                 // (subs(diff(x, a), a, 0.37): the derivative at the number, kept.rs)
-                if let (Some([name, v]), [x, by]) = (&self.put, args.as_slice())
-                    && fun.name == "diff"
-                    && self.failed.is_none()
-                    && let Some(d) = super::kept::put_derivative(
-                        self.env,
-                        &mut *self.warnings,
-                        [name, v],
-                        [x, by],
-                    )
+                if fun.name == "diff"
+                    && let Some(d) = self.put_diff(s, args)
                 {
-                    return match d {
-                        Ok(v) => constant(v),
-                        Err(why) => {
-                            self.failed = Some(why);
-                            s.clone()
-                        }
-                    };
+                    return d;
                 }
                 self.kept_call(fun.name);
                 s.clone()
@@ -239,36 +226,11 @@ impl Resolving<'_, '_> {
                 // never computed from what is left.
                 let x = self.go(&args[0]);
                 if x != args[0] {
-                    // (diff with every number bound: its numbers, by the
-                    // chain rule through the kept calls, kept.rs)
+                    // (diff with the numbers bound, or some of them: kept.rs)
                     if fun.name == "diff"
-                        && self.failed.is_none()
-                        && let Some(d) = self.kept_derivative(&args[0], &args[1])
+                        && let Some(d) = self.bound_diff(s, *fun, args)
                     {
-                        return match d {
-                            Ok(v) => constant(v),
-                            Err(why) => {
-                                self.failed = Some(why);
-                                s.clone()
-                            }
-                        };
-                    }
-                    // (other symbols still free: the numbers put in but
-                    // by's own, which waits in a subs of the derivative)
-                    if fun.name == "diff" && self.failed.is_none() {
-                        match super::kept::partly(
-                            self.env,
-                            &mut *self.warnings,
-                            *fun,
-                            [&args[0], &args[1]],
-                        ) {
-                            Ok(Some(d)) => return d,
-                            Ok(None) => {}
-                            Err(why) => {
-                                self.failed = Some(why);
-                                return s.clone();
-                            }
-                        }
+                        return d;
                     }
                     self.kept_call(fun.name);
                     return s.clone();
@@ -469,7 +431,7 @@ fn num(s: &Sym) -> Option<&Value> {
 
 /// A computed value as a constant, its kind recognized by its entries when
 /// the operation could not tell it.
-fn constant(v: Value) -> Sym {
+pub(super) fn constant(v: Value) -> Sym {
     let v = match v {
         Value::Num {
             kind: Kind::Unknown,

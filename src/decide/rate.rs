@@ -75,7 +75,16 @@ pub(crate) fn of(
         }
         ("norm", None) | ("AxisAng3", Some(1)) => match rates::norm_rate(&col(&x), &col(&dx)) {
             Some(d) => DMatrix::from_element(1, 1, d),
+            // (at 0 moving with rate 0, ‖x‖ grows as the square of the
+            // step: its rate is 0)
+            None if dx.iter().all(|d| *d == 0.0) => DMatrix::zeros(1, 1),
             None => return Err(corner(name)),
+        },
+        // d|u| = sign(u) du (0 at u = 0 moving with rate 0, as the norm)
+        ("abs", None) if x.shape() == (1, 1) => match (x[(0, 0)], dx[(0, 0)]) {
+            (u, du) if u != 0.0 => DMatrix::from_element(1, 1, u.signum() * du),
+            (_, 0.0) => DMatrix::zeros(1, 1),
+            _ => return Err(corner(name)),
         },
         ("Normalize", None) | ("AxisAng3", Some(0)) => {
             match rates::direction_rate(&col(&x), &col(&dx)) {
@@ -109,8 +118,11 @@ pub(crate) fn of(
     }))
 }
 
-/// The refusal of a norm or direction at a zero vector.
+/// The refusal of a norm or direction at a zero vector (abs at 0).
 fn corner(name: &str) -> String {
+    if name == "abs" {
+        return "abs(…) has no derivative where its operand is 0 and moves (a corner)".into();
+    }
     format!(
         "{name}(…) has no derivative where its vector is 0 (a norm has a corner there, and \
          a direction none)"

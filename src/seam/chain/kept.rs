@@ -73,7 +73,7 @@ impl Chain<'_> {
                     }
                     (
                         name @ ("exp" | "MatrixExp3" | "MatrixExp6" | "log" | "MatrixLog3"
-                        | "MatrixLog6" | "norm" | "Normalize"),
+                        | "MatrixLog6" | "norm" | "Normalize" | "abs"),
                         [u],
                     ) => self.rate(name, None, u, k),
                     // d Trans(p) = [0, dp; 0, 0]
@@ -86,6 +86,24 @@ impl Chain<'_> {
                         let parts = vec![zero(&m), dp, row, super::build::number(0.0)];
                         let block = Step::Op(Operation::Block(Box::new([2, 2])));
                         Some(Some(node_k(block, parts, k)?))
+                    }
+                    _ => None,
+                }
+            }
+            // M^0 = I, M^-1 = inv(M): d(M⁻¹) = −M⁻¹ dM M⁻¹
+            Step::Op(Operation::Arith(BinOp::Pow)) => {
+                let [m, n] = r.args.as_slice() else {
+                    return None;
+                };
+                let Step::Leaf(n) = &n.step else { return None };
+                match n.as_scalar()? {
+                    0.0 => Some(None),
+                    -1.0 => {
+                        let Some(dm) = self.of(m)? else {
+                            return Some(None);
+                        };
+                        let left = arith(BinOp::Mul, r.clone(), dm)?;
+                        super::build::neg(Some(arith(BinOp::Mul, left, r.clone())?))
                     }
                     _ => None,
                 }
