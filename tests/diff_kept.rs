@@ -173,3 +173,28 @@ fn the_rotation_about_a_symbolic_axis_has_its_derivative() {
         );
     }
 }
+
+/// The symbol a derivative is by stays a symbol while the value waits:
+/// `diff(x, a)` of an x free of a, read at a = 0.5 with b free, printed
+/// `diff(x, 0.5)` and was refused once b had a number; it is 0. And a
+/// substitution into a derivative over the substituted symbol alone is
+/// the derivative's numbers at once (it stayed the call `subs(diff(…))`).
+#[test]
+fn a_derivative_waits_for_its_symbols_not_for_its_own_number() {
+    let zero = run(
+        "given a, b\nY = diff(inv(Ad(RpToTrans(Rotz(2), (2, b, 2)))), a)\na = 0.5\nX = Y\nb = 1\nX",
+    )
+    .expect("numbers");
+    assert!(
+        zero.len() == 36 && zero.iter().all(|x| *x == 0.0),
+        "{zero:?}"
+    );
+    let call = "Rot((2*a, a, -1), atan2(pi/4, a - 1))";
+    let d = run(&format!("given a, b\nY = subs(diff({call}, a), a, 0.5)\nY")).expect("numbers");
+    let h = 1e-6;
+    let at = |x: f64| run(&format!("a = {x:?}\n{call}")).expect("numbers");
+    let (p, m) = (at(0.5 + h), at(0.5 - h));
+    for i in 0..9 {
+        assert!((d[i] - (p[i] - m[i]) / (2.0 * h)).abs() < 1e-8, "entry {i}");
+    }
+}

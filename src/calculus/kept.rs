@@ -215,6 +215,27 @@ impl Resolving<'_, '_> {
         Some(self.settle(s, d))
     }
 
+    /// `subs(diff(x, by), name, v)` (`s`) that no number bound since
+    /// changes, with v a number: the derivative at v where x waits for no
+    /// other symbol (`subs(diff(Rot((2 a, a, -1), a), a), a, 0.5)` stayed
+    /// that call for good); None where it waits.
+    pub(super) fn put_diff_now(&mut self, s: &Sym, [x, name, by]: [&Sym; 3]) -> Option<Sym> {
+        let (Sym::Call(f, args), Sym::Const(name, _)) = (x, name) else {
+            return None;
+        };
+        if f.name != "diff" || self.failed.is_some() {
+            return None;
+        }
+        let Sym::Const(v, _) = self.go(by) else {
+            return None;
+        };
+        let [x, by] = args.as_slice() else {
+            return None;
+        };
+        let d = put_derivative(self.env, &mut *self.warnings, [name, &v], [x, by])?;
+        Some(self.settle(s, d))
+    }
+
     /// The derivative's numbers as a constant, or `s` with the refusal kept.
     fn settle(&mut self, s: &Sym, d: Result<Value, String>) -> Sym {
         match d {

@@ -235,8 +235,10 @@ impl Resolving<'_, '_> {
                     self.kept_call(fun.name);
                     return s.clone();
                 }
-                let mut rest: Vec<Sym> = args[1..].iter().map(|a| self.go(a)).collect();
-                rest.insert(0, x);
+                // (the symbol diff and subs act by stays one: diff(x, a)
+                // of an x free of a, read at a = 0.5, is no diff(x, 0.5))
+                let mut rest: Vec<Sym> = args[2..].iter().map(|a| self.go(a)).collect();
+                rest.splice(0..0, [x, args[1].clone()]);
                 Sym::Call(*fun, rest)
             }
             Sym::Call(fun, args) => {
@@ -276,10 +278,15 @@ impl Resolving<'_, '_> {
         // (a refusal in the dry run is not kept: the number it read may be
         // the substituted symbol's own, which the substitution replaces)
         if dry.go(x) == *x && dry.failed.is_none() {
+            // (a derivative over the substituted symbol only: kept.rs)
+            if let Some(d) = self.put_diff_now(s, [x, name, by]) {
+                return d;
+            }
+            // (the name substituted stays a symbol, whatever its number)
             let rest: Vec<Sym> = [x, name, by]
                 .iter()
                 .enumerate()
-                .map(|(i, a)| if i == 0 { (*a).clone() } else { self.go(a) })
+                .map(|(i, a)| if i < 2 { (*a).clone() } else { self.go(a) })
                 .collect();
             return match s {
                 Sym::Call(fun, _) => Sym::Call(*fun, rest),
