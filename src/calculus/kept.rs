@@ -325,7 +325,7 @@ impl Resolving<'_, '_> {
                 let args = args.iter().map(|a| self.made(a)).collect::<Option<_>>()?;
                 self.step(Op::Call(b, fun.name), None, args)
             }
-            Sym::Call(..) | Sym::Identity | Sym::Compare(..) => None,
+            Sym::Call(..) | Sym::Identity(_) | Sym::Compare(..) => None,
         }
     }
 

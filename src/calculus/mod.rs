@@ -11,6 +11,7 @@
 //! applies operations through [`crate::seam`]. Imports nothing from
 //! [`crate::eval`].
 
+mod formula_now;
 pub(crate) mod held;
 mod kept;
 mod kinds;

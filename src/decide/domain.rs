@@ -6,11 +6,14 @@
 //! (`crate::values::recipe`) still has the divisions: each divisor that
 //! mentions x is solved for its zeros; a step whose domain this cannot
 //! tell (a square root, an arc sine, a tangent, a matrix inverse) makes
-//! the answer partial, said as "where it is defined".
+//! the answer partial, said as "where it is defined". Also the refusal
+//! of a group element whose numbers are not finite ([`not_finite_group`]).
 
 use std::collections::HashSet;
 use std::rc::Rc;
 
+use crate::check::ty::Kind;
+use crate::diagnostics::{Diagnostic, ErrorKind};
 use crate::sym::expr::{Func, Var};
 use crate::sym::{Expr, Symbol};
 use crate::syntax::ast::BinOp;
@@ -85,9 +88,7 @@ fn walk(r: &Rc<Recipe>, x: &Symbol, out: &mut Excluded, seen: &mut HashSet<*cons
         Step::Op(op) => {
             match op {
                 Operation::Arith(BinOp::Div) => zeros_of(&r.args[1], x, out),
-                Operation::Inverse if r.kind == crate::check::ty::Kind::Scalar => {
-                    zeros_of(&r.args[0], x, out)
-                }
+                Operation::Inverse if r.kind == Kind::Scalar => zeros_of(&r.args[0], x, out),
                 Operation::Arith(BinOp::Pow) => match exponent(&r.args[1]) {
                     Some(k) if k >= 0.0 && k.fract() == 0.0 => {}
                     Some(k) if k.fract() == 0.0 && !mentions(&r.args[1], x) => {
@@ -174,4 +175,36 @@ fn has(e: &Expr, x: &Symbol) -> bool {
     let mut found = Vec::new();
     e.symbols(&mut found);
     found.contains(x)
+}
+
+/// A rotation, transform, Lie-algebra element or adjoint with an inf or NaN
+/// entry is not one: a domain error (`Rotz(inf)`), rather than a NaN matrix
+/// labelled SO(3).
+pub(crate) fn not_finite_group(
+    v: &Value,
+    name: &str,
+    span: crate::span::Span,
+) -> Result<(), Diagnostic> {
+    if let Value::Num { kind, m, .. } = v
+        && matches!(
+            kind,
+            Kind::SO3
+                | Kind::SE3
+                | Kind::SO2
+                | Kind::SE2
+                | Kind::So3
+                | Kind::Se3
+                | Kind::So2
+                | Kind::Se2
+                | Kind::Adjoint { .. }
+        )
+        && !m.all_finite()
+    {
+        return Err(Diagnostic::error(
+            ErrorKind::Domain,
+            span,
+            format!("{name} gives no finite {kind}: an argument is inf or NaN"),
+        ));
+    }
+    Ok(())
 }

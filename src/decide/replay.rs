@@ -122,7 +122,7 @@ pub(crate) fn typed_first(
             let mut v =
                 apply::call(b, vals, site).map_err(|d| OpError::Message(d.into_message()))?;
             v.set_call_exact(exact);
-            not_finite_group(&v, b.name, Default::default())
+            super::domain::not_finite_group(&v, b.name, Default::default())
                 .map_err(|d| OpError::Message(d.into_message()))?;
             Ok(v)
         }
@@ -567,36 +567,4 @@ pub(crate) fn subs_numbers(
 pub(crate) fn same_shape(v: &Value, m: &Mat) -> bool {
     matches!(v, Value::Num { m: xs, .. } if xs.shape() == (m.rows, m.cols))
         || matches!(v, Value::Bool(_) | Value::List(_))
-}
-
-/// A rotation, transform, Lie-algebra element or adjoint with an inf or NaN
-/// entry is not one: a domain error (`Rotz(inf)`), rather than a NaN matrix
-/// labelled SO(3).
-pub(crate) fn not_finite_group(
-    v: &Value,
-    name: &str,
-    span: crate::span::Span,
-) -> Result<(), Diagnostic> {
-    if let Value::Num { kind, m, .. } = v
-        && matches!(
-            kind,
-            Kind::SO3
-                | Kind::SE3
-                | Kind::SO2
-                | Kind::SE2
-                | Kind::So3
-                | Kind::Se3
-                | Kind::So2
-                | Kind::Se2
-                | Kind::Adjoint { .. }
-        )
-        && !m.all_finite()
-    {
-        return Err(Diagnostic::error(
-            crate::diagnostics::ErrorKind::Domain,
-            span,
-            format!("{name} gives no finite {kind}: an argument is inf or NaN"),
-        ));
-    }
-    Ok(())
 }

@@ -256,7 +256,7 @@ impl Interp<'_> {
             _ => None,
         };
         v.set_call_exact(log.unwrap_or_else(|| op.exact_of_owned(vals, &ty.kind)));
-        crate::decide::replay::not_finite_group(&v, b.name, span)?;
+        crate::decide::domain::not_finite_group(&v, b.name, span)?;
         let val = Some(v);
         Ok(Typed::new(refine(ty, &val), val))
     }
