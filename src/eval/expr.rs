@@ -408,8 +408,11 @@ impl Interp<'_> {
             }
         };
         let val = match (l.val, r.val) {
+            // (only a product with a given name's symbol can have one:
+            // numbers, the hot path, skip it)
             (Some(a), Some(b))
-                if let Some(v) = identity_factor(bin, (&a, &l.ty.kind), (&b, &r.ty.kind)) =>
+                if (matches!(*a, Value::Sym(_)) || matches!(*b, Value::Sym(_)))
+                    && let Some(v) = identity_factor(bin, (&a, &l.ty.kind), (&b, &r.ty.kind)) =>
             {
                 Some(v)
             }

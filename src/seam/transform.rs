@@ -26,7 +26,7 @@ pub(crate) fn identity_factor(op: BinOp, a: (&Value, &Kind), b: (&Value, &Kind))
     }
     [(a, b), (b, a)]
         .into_iter()
-        .find(|((i, _), (o, k))| identity(i) && matches!(o, Value::Sym(_)) && !k.maybe_scalar())
+        .find(|((i, _), (o, k))| matches!(o, Value::Sym(_)) && !k.maybe_scalar() && identity(i))
         .map(|(_, (o, _))| o.clone())
 }
 
