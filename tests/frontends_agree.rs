@@ -24,16 +24,13 @@
 mod common;
 
 use std::collections::BTreeMap;
-use std::io::{BufRead, BufReader, Read, Write};
 use std::path::{Path, PathBuf};
-use std::process::{Child, ChildStdin, Stdio};
-use std::sync::mpsc::{Receiver, channel};
-use std::time::Duration;
 
 use chasles::effects::Gate;
 use chasles::kernel::cell::{Notebook, Options, Output};
 use chasles::repl::commands::execute;
 use chasles::session::{Session, Settings};
+use common::lsp::Client;
 use serde_json::{Value, json};
 
 const SEED: u64 = 0x5eed_0033;
@@ -384,116 +381,8 @@ fn placed(text: &str, found: &[(String, usize, usize, Diag)]) -> Vec<Diag> {
 
 // ------------------------------------------------------------ chasles lsp
 
-/// A client of one `chasles lsp` process.
-struct Lsp {
-    child: Child,
-    stdin: ChildStdin,
-    rx: Receiver<Value>,
-    id: i64,
-    pending: Vec<Value>,
-}
-
-const WAIT: Duration = Duration::from_secs(60);
-
-impl Lsp {
-    fn start() -> Lsp {
-        let mut child = common::command(&["lsp"])
-            .stdin(Stdio::piped())
-            .stdout(Stdio::piped())
-            .stderr(Stdio::inherit())
-            .spawn()
-            .expect("chasles lsp starts");
-        let stdin = child.stdin.take().unwrap();
-        let mut out = BufReader::new(child.stdout.take().unwrap());
-        let (tx, rx) = channel();
-        std::thread::spawn(move || {
-            loop {
-                let mut len = None;
-                loop {
-                    let mut line = String::new();
-                    if out.read_line(&mut line).unwrap_or(0) == 0 {
-                        return;
-                    }
-                    let line = line.trim_end();
-                    if line.is_empty() {
-                        break;
-                    }
-                    if let Some(n) = line.strip_prefix("Content-Length: ") {
-                        len = n.parse::<usize>().ok();
-                    }
-                }
-                let mut body = vec![0; len.expect("a Content-Length header")];
-                if out.read_exact(&mut body).is_err() {
-                    return;
-                }
-                if tx.send(serde_json::from_slice(&body).unwrap()).is_err() {
-                    return;
-                }
-            }
-        });
-        let mut c = Lsp {
-            child,
-            stdin,
-            rx,
-            id: 0,
-            pending: Vec::new(),
-        };
-        c.request(
-            "initialize",
-            json!({"processId": null, "rootUri": null, "capabilities": {}}),
-        );
-        c.notify("initialized", json!({}));
-        c
-    }
-
-    fn send(&mut self, v: Value) {
-        let body = v.to_string();
-        write!(self.stdin, "Content-Length: {}\r\n\r\n{body}", body.len()).unwrap();
-        self.stdin.flush().unwrap();
-    }
-
-    fn notify(&mut self, method: &str, params: Value) {
-        self.send(json!({"jsonrpc": "2.0", "method": method, "params": params}));
-    }
-
-    fn next(&mut self) -> Value {
-        self.rx
-            .recv_timeout(WAIT)
-            .expect("chasles lsp answers within a minute")
-    }
-
-    fn request(&mut self, method: &str, params: Value) -> Value {
-        self.id += 1;
-        let id = self.id;
-        self.send(json!({"jsonrpc": "2.0", "id": id, "method": method, "params": params}));
-        loop {
-            let v = self.next();
-            if v["id"] == json!(id) {
-                return v["result"].clone();
-            }
-            self.pending.push(v);
-        }
-    }
-
-    fn diagnostics(&mut self, uri: &str, version: i64) -> Vec<Value> {
-        let is_it = |v: &Value| {
-            v["method"] == "textDocument/publishDiagnostics"
-                && v["params"]["uri"] == uri
-                && v["params"]["version"] == json!(version)
-        };
-        let v = match self.pending.iter().position(is_it) {
-            Some(i) => self.pending.remove(i),
-            None => loop {
-                let v = self.next();
-                if is_it(&v) {
-                    break v;
-                }
-                self.pending.push(v);
-            },
-        };
-        v["params"]["diagnostics"].as_array().unwrap().clone()
-    }
-
+/// This file's step over the shared client ([`common::lsp`]).
+impl Client {
     /// A change to `uri` at `version`, checked at once (a request on a
     /// changed document checks it first, without the debounce).
     fn change(&mut self, uri: &str, version: i64, change: Value) {
@@ -505,13 +394,6 @@ impl Lsp {
             "textDocument/documentSymbol",
             json!({"textDocument": {"uri": uri}}),
         );
-    }
-}
-
-impl Drop for Lsp {
-    fn drop(&mut self) {
-        let _ = self.child.kill();
-        let _ = self.child.wait();
     }
 }
 
@@ -620,7 +502,7 @@ fn the_language_server_publishes_what_check_prints() {
     let cases = cases(per_script(), true);
     let files = write_cases(&dir, &cases);
     let checked = diagnostics_of(&["check"], &files);
-    let mut lsp = Lsp::start();
+    let mut lsp = Client::start_with(None, &["lsp"]).0;
     let mut wrong = Vec::new();
     let (mut opened, mut edited) = (0, 0);
     for (i, ((name, text), file)) in cases.iter().zip(&files).enumerate() {
@@ -629,7 +511,7 @@ fn the_language_server_publishes_what_check_prints() {
             "textDocument/didOpen",
             json!({"textDocument": {"uri": uri, "languageId": "chasles", "version": 1, "text": text}}),
         );
-        let got = from_lsp(text, &lsp.diagnostics(&uri, 1));
+        let got = from_lsp(text, &lsp.diagnostics_of(&uri, 1));
         let want = placed(text, &checked[file]);
         opened += 1;
         if got != want {
@@ -646,7 +528,7 @@ fn the_language_server_publishes_what_check_prints() {
             (3, json!({"text": text}), text, file),
         ] {
             lsp.change(&uri, version, change);
-            let got = from_lsp(text, &lsp.diagnostics(&uri, version));
+            let got = from_lsp(text, &lsp.diagnostics_of(&uri, version));
             let want = placed(text, &checked[file]);
             edited += 1;
             if got != want {

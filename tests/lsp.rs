@@ -4,137 +4,27 @@
 
 mod common;
 
-use std::io::{BufRead, BufReader, Read, Write};
+use std::io::{Read, Write};
 use std::path::Path;
-use std::process::{Child, ChildStdin, Stdio};
-use std::sync::mpsc::{Receiver, channel};
+use std::process::Stdio;
 use std::time::{Duration, Instant};
 
+use common::lsp::{Client, WAIT};
 use serde_json::{Value, json};
-
-/// How long one answer may take (generous: CI's machine is small and shared).
-const WAIT: Duration = Duration::from_secs(60);
 
 const URI: &str = "file:///work/frames.chs";
 
-/// A client speaking to one server process.
-struct Client {
-    child: Child,
-    stdin: ChildStdin,
-    rx: Receiver<Value>,
-    next_id: i64,
-    /// Notifications read while waiting for something else.
-    pending: Vec<Value>,
-}
-
+/// This file's steps over the shared client ([`common::lsp`]): one
+/// document, `URI`.
 impl Client {
     /// Starts `chasles lsp` in `dir` and initializes it.
     fn start(dir: &Path) -> (Client, Value) {
-        Client::start_with(dir, &["lsp"])
-    }
-
-    /// Starts `chasles ARGS` (flags, then `lsp`) in `dir` and initializes it.
-    fn start_with(dir: &Path, args: &[&str]) -> (Client, Value) {
-        let mut child = common::command(args)
-            .current_dir(dir)
-            .stdin(Stdio::piped())
-            .stdout(Stdio::piped())
-            .stderr(Stdio::inherit())
-            .spawn()
-            .expect("chasles lsp starts");
-        let stdin = child.stdin.take().unwrap();
-        let mut out = BufReader::new(child.stdout.take().unwrap());
-        let (tx, rx) = channel();
-        std::thread::spawn(move || {
-            loop {
-                let mut len = None;
-                loop {
-                    let mut line = String::new();
-                    if out.read_line(&mut line).unwrap_or(0) == 0 {
-                        return;
-                    }
-                    let line = line.trim_end();
-                    if line.is_empty() {
-                        break;
-                    }
-                    if let Some(n) = line.strip_prefix("Content-Length: ") {
-                        len = n.parse::<usize>().ok();
-                    }
-                }
-                let mut body = vec![0; len.expect("a Content-Length header")];
-                if out.read_exact(&mut body).is_err() {
-                    return;
-                }
-                let v: Value = serde_json::from_slice(&body).expect("a JSON message");
-                if tx.send(v).is_err() {
-                    return;
-                }
-            }
-        });
-        let mut c = Client {
-            child,
-            stdin,
-            rx,
-            next_id: 0,
-            pending: Vec::new(),
-        };
-        let init = c.request(
-            "initialize",
-            json!({"processId": null, "rootUri": null, "capabilities": {}}),
-        );
-        c.notify("initialized", json!({}));
-        (c, init)
-    }
-
-    fn send(&mut self, v: Value) {
-        let body = v.to_string();
-        write!(self.stdin, "Content-Length: {}\r\n\r\n{body}", body.len()).unwrap();
-        self.stdin.flush().unwrap();
-    }
-
-    fn next(&mut self, what: &str) -> Value {
-        self.rx.recv_timeout(WAIT).unwrap_or_else(|_| {
-            panic!("no answer from chasles lsp within {WAIT:?} waiting for {what}")
-        })
-    }
-
-    fn notify(&mut self, method: &str, params: Value) {
-        self.send(json!({"jsonrpc": "2.0", "method": method, "params": params}));
-    }
-
-    /// Sends a request and returns its result (failing on an error reply).
-    fn request(&mut self, method: &str, params: Value) -> Value {
-        self.next_id += 1;
-        let id = self.next_id;
-        self.send(json!({"jsonrpc": "2.0", "id": id, "method": method, "params": params}));
-        loop {
-            let v = self.next(method);
-            if v["id"] == json!(id) {
-                assert!(v.get("error").is_none(), "{method} failed: {v}");
-                return v["result"].clone();
-            }
-            self.pending.push(v);
-        }
+        Client::start_with(Some(dir), &["lsp"])
     }
 
     /// The diagnostics published for `URI` at `version`.
     fn diagnostics(&mut self, version: i64) -> Vec<Value> {
-        let is_it = |v: &Value| {
-            v["method"] == "textDocument/publishDiagnostics"
-                && v["params"]["uri"] == URI
-                && v["params"]["version"] == json!(version)
-        };
-        if let Some(i) = self.pending.iter().position(is_it) {
-            let v = self.pending.remove(i);
-            return v["params"]["diagnostics"].as_array().unwrap().clone();
-        }
-        loop {
-            let v = self.next("publishDiagnostics");
-            if is_it(&v) {
-                return v["params"]["diagnostics"].as_array().unwrap().clone();
-            }
-            self.pending.push(v);
-        }
+        self.diagnostics_of(URI, version)
     }
 
     fn open(&mut self, text: &str) {
@@ -169,17 +59,7 @@ impl Client {
     fn stop(mut self) -> i32 {
         assert_eq!(self.request("shutdown", Value::Null), Value::Null);
         self.notify("exit", Value::Null);
-        let start = Instant::now();
-        loop {
-            if let Some(s) = self.child.try_wait().unwrap() {
-                return s.code().unwrap_or(-1);
-            }
-            assert!(
-                start.elapsed() < WAIT,
-                "chasles lsp did not exit after `exit`"
-            );
-            std::thread::sleep(Duration::from_millis(20));
-        }
+        self.exit_code("`exit`")
     }
 }
 
@@ -397,7 +277,7 @@ fn a_script_that_would_run_for_minutes_and_write_files_is_only_checked() {
 fn syntax_and_domain_errors_and_warnings_under_the_command_line_flags() {
     let dir = common::scratch("kinds");
     // `--frames warn` before `lsp` applies: a frame mismatch is a warning.
-    let (mut c, _) = Client::start_with(&dir, &["--frames", "warn", "lsp"]);
+    let (mut c, _) = Client::start_with(Some(&dir), &["--frames", "warn", "lsp"]);
     c.open(
         "dof(mech < links 4; joints 4S; planar >)\nx = (1, 2\ny = 1\ngiven T_ab, T_cb : SE3\nT_ab * T_cb\n",
     );
@@ -509,15 +389,7 @@ fn exit_without_shutdown_is_an_error_and_a_bad_request_is_answered() {
     // Hover on a document never opened: no answer, no crash.
     assert_eq!(c.at("textDocument/hover", 0, 0), Value::Null);
     c.notify("exit", Value::Null);
-    let start = Instant::now();
-    let code = loop {
-        if let Some(s) = c.child.try_wait().unwrap() {
-            break s.code();
-        }
-        assert!(start.elapsed() < WAIT);
-        std::thread::sleep(Duration::from_millis(20));
-    };
-    assert_eq!(code, Some(1));
+    assert_eq!(c.exit_code("`exit`"), 1);
 }
 
 /// The TextMate grammar (editors/vscode/) colours every builtin as one: its
@@ -596,15 +468,7 @@ fn a_message_that_is_not_json_is_answered_and_the_server_goes_on() {
     );
     assert_eq!(c.request("shutdown", Value::Null), Value::Null);
     c.notify("exit", Value::Null);
-    let start = Instant::now();
-    let status = loop {
-        if let Some(s) = c.child.try_wait().unwrap() {
-            break s;
-        }
-        assert!(start.elapsed() < WAIT, "chasles lsp did not exit");
-        std::thread::sleep(Duration::from_millis(20));
-    };
-    assert!(status.success(), "{status:?}");
+    assert_eq!(c.exit_code("`exit`"), 0);
 }
 
 /// A header that cannot be read leaves no way to find the next message:

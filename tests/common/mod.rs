@@ -3,7 +3,8 @@
 //! so that a hang fails instead of blocking), running a script through a
 //! fresh [`Session`] and reading what it printed or its JSON lines
 //! (LANGUAGE.md §1), the numbers of a JSON value, random points, a scratch
-//! folder, and (in [`pty`]) the steps of a session on a pseudo-terminal.
+//! folder, (in [`lsp`]) a client of `chasles lsp`, and (in [`pty`]) the steps
+//! of a session on a pseudo-terminal.
 //!
 //! Each test file is its own crate and uses only a part of these, hence
 //! the `dead_code` allowance.
@@ -19,6 +20,7 @@ use std::time::{Duration, Instant};
 use chasles::eval::env::Mode;
 use chasles::session::{Session, Settings};
 
+pub mod lsp;
 #[cfg(unix)]
 pub mod pty;
 
