@@ -723,7 +723,19 @@ fn by_design(text: &str, ran: &Printed) -> Option<&'static str> {
     {
         return Some("a bare REPL command");
     }
+    // (an input the REPL read on past its first line, where `run` found a
+    // syntax error: `x = 1 (` takes the next lines into one input, while
+    // `run` reports the error and reads them as statements of their own)
+    let read_on = ins.iter().any(|(line, i)| {
+        let last = line + i.lines().count() - 1;
+        last > *line
+            && ran
+                .diags
+                .iter()
+                .any(|d| d.2 == "syntax error" && (*line..=last).contains(&d.0))
+    });
     let unclosed = ran.diags.iter().any(|d| d.3.starts_with("unclosed"))
+        || read_on
         || ins
             .last()
             .is_some_and(|(_, i)| chasles::syntax::needs_more_input(i));
